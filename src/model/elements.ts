@@ -1,0 +1,71 @@
+// Elements placed on a network grid. Every element occupies one cell except boxes (see boxLayout).
+import type { ElementId } from './ids';
+
+export const CONTACT_TYPES = ['NO', 'NC', 'P', 'N', 'NOT'] as const;
+/** NO `| |`, NC `|/|`, P `|P|`, N `|N|`, NOT `|NOT|` (inverting contact, no variable). */
+export type ContactType = (typeof CONTACT_TYPES)[number];
+
+export const COIL_TYPES = ['COIL', 'NEG', 'SET', 'RESET', 'M', 'SM', 'RM', 'P', 'N'] as const;
+/** COIL `( )`, NEG `(/)`, SET `(S)`, RESET `(R)`, M/SM/RM retentive, P `(P)`, N `(N)`. */
+export type CoilType = (typeof COIL_TYPES)[number];
+
+interface Placed {
+  readonly id: ElementId;
+  readonly row: number;
+  readonly col: number;
+}
+
+/** A horizontal link: copies the state on its left to its right. */
+export interface LinkElement extends Placed {
+  readonly kind: 'link';
+}
+
+export interface ContactElement extends Placed {
+  readonly kind: 'contact';
+  readonly contact: ContactType;
+  /** Variable name, `Instance.Pin`, or a bit of a word `Word.3`; empty for NOT. */
+  readonly variable: string;
+}
+
+export interface CoilElement extends Placed {
+  readonly kind: 'coil';
+  readonly coil: CoilType;
+  readonly variable: string;
+}
+
+/** `-->>LABEL`: when powered, execution continues at the network labelled LABEL. */
+export interface JumpElement extends Placed {
+  readonly kind: 'jump';
+  readonly target: string;
+}
+
+/** `<RETURN>`: when powered, the POU ends for this scan. */
+export interface ReturnElement extends Placed {
+  readonly kind: 'return';
+}
+
+/**
+ * A function or function block box. Top-left cell at (row, col); size from boxLayout().
+ * Pins not wired on the grid take an operand: a variable name, `Instance.Pin`, or a literal
+ * (`T#5s`, `10`, `TRUE`, `INT#-3`, `2.5`). Outputs not wired may be assigned to a variable.
+ */
+export interface BoxElement extends Placed {
+  readonly kind: 'box';
+  /** Standard block name (TON, CTU, ADD, INT_TO_REAL, ...). */
+  readonly blockType: string;
+  /** FB instance name (declared in the variable table with type = blockType); absent for functions. */
+  readonly instance?: string;
+  /** Number of extensible inputs (ADD, AND, MUX, ...); defaults to the signature's minimum. */
+  readonly inputCount?: number;
+  readonly inputs: Readonly<Record<string, string>>;
+  readonly outputs: Readonly<Record<string, string>>;
+}
+
+export type LdElement = LinkElement | ContactElement | CoilElement | JumpElement | ReturnElement | BoxElement;
+export type ElementKind = LdElement['kind'];
+
+/** A vertical link joining point (row, boundary) to point (row + 1, boundary). */
+export interface VLink {
+  readonly row: number;
+  readonly boundary: number;
+}

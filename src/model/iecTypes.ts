@@ -1,0 +1,114 @@
+// The elementary IEC 61131-3 types Rungsmith supports (LD-SEMANTICS.md section 8).
+
+export const ELEMENTARY_TYPES = [
+  'BOOL',
+  'SINT',
+  'INT',
+  'DINT',
+  'LINT',
+  'USINT',
+  'UINT',
+  'UDINT',
+  'ULINT',
+  'BYTE',
+  'WORD',
+  'DWORD',
+  'LWORD',
+  'REAL',
+  'LREAL',
+  'TIME',
+] as const;
+export type ElementaryType = (typeof ELEMENTARY_TYPES)[number];
+
+export const isElementaryType = (t: string): t is ElementaryType =>
+  (ELEMENTARY_TYPES as readonly string[]).includes(t);
+
+export type IntegerType = 'SINT' | 'INT' | 'DINT' | 'LINT' | 'USINT' | 'UINT' | 'UDINT' | 'ULINT';
+export type BitStringType = 'BOOL' | 'BYTE' | 'WORD' | 'DWORD' | 'LWORD';
+export type RealType = 'REAL' | 'LREAL';
+
+/** Bit width and signedness of integer and bit-string types. */
+export const INT_INFO: Record<IntegerType | Exclude<BitStringType, 'BOOL'>, { bits: 8 | 16 | 32 | 64; signed: boolean }> = {
+  SINT: { bits: 8, signed: true },
+  INT: { bits: 16, signed: true },
+  DINT: { bits: 32, signed: true },
+  LINT: { bits: 64, signed: true },
+  USINT: { bits: 8, signed: false },
+  UINT: { bits: 16, signed: false },
+  UDINT: { bits: 32, signed: false },
+  ULINT: { bits: 64, signed: false },
+  BYTE: { bits: 8, signed: false },
+  WORD: { bits: 16, signed: false },
+  DWORD: { bits: 32, signed: false },
+  LWORD: { bits: 64, signed: false },
+};
+
+/** Generic type classes used in block signatures (IEC 61131-3 table 11). */
+export type GenericType = 'ANY' | 'ANY_ELEMENTARY' | 'ANY_MAGNITUDE' | 'ANY_NUM' | 'ANY_INT' | 'ANY_REAL' | 'ANY_BIT';
+export type PinType = ElementaryType | GenericType;
+
+const INTS: readonly ElementaryType[] = ['SINT', 'INT', 'DINT', 'LINT', 'USINT', 'UINT', 'UDINT', 'ULINT'];
+const REALS: readonly ElementaryType[] = ['REAL', 'LREAL'];
+const BITS: readonly ElementaryType[] = ['BOOL', 'BYTE', 'WORD', 'DWORD', 'LWORD'];
+
+/** The concrete types a generic type admits. */
+export const GENERIC_MEMBERS: Record<GenericType, readonly ElementaryType[]> = {
+  ANY: ELEMENTARY_TYPES,
+  ANY_ELEMENTARY: ELEMENTARY_TYPES,
+  ANY_MAGNITUDE: [...INTS, ...REALS, 'TIME'],
+  ANY_NUM: [...INTS, ...REALS],
+  ANY_INT: INTS,
+  ANY_REAL: REALS,
+  ANY_BIT: BITS,
+};
+
+/**
+ * Value representation shared by engine, simulator, CLI and UI:
+ * BOOL -> boolean; 64-bit integer and bit-string types (LINT, ULINT, LWORD) -> bigint;
+ * other integers and bit strings -> number; REAL/LREAL -> number (REAL held rounded to 32 bits);
+ * TIME -> number of milliseconds (signed).
+ */
+export type Value = boolean | number | bigint;
+
+/** IEC directly represented variable: %IX0.0, %QX1.7, %MX2.3, %IW0, %QW3, %MW10, %ID.., %MD... */
+export const LOCATION_RE = /^%([IQM])([XBWDL]?)(\d+)(?:\.(\d+))?$/;
+
+export interface ParsedLocation {
+  area: 'I' | 'Q' | 'M';
+  size: 'X' | 'B' | 'W' | 'D' | 'L';
+  index: number;
+  bit?: number;
+}
+
+/** Parses an IEC location; returns undefined when the text is not a valid location. */
+export function parseLocation(text: string): ParsedLocation | undefined {
+  const m = LOCATION_RE.exec(text.trim().toUpperCase());
+  if (!m) return undefined;
+  const size = (m[2] || 'X') as ParsedLocation['size'];
+  const index = Number(m[3]);
+  const bit = m[4] !== undefined ? Number(m[4]) : undefined;
+  if (size === 'X') {
+    if (m[2] === '' && bit === undefined) return undefined; // "%I3" is ambiguous; require %IX3.0 style
+    if (bit !== undefined && bit > 7) return undefined;
+  } else if (bit !== undefined) return undefined;
+  return { area: m[1] as ParsedLocation['area'], size, index, ...(bit !== undefined ? { bit } : {}) };
+}
+
+/** The IEC types a location can hold: X -> BOOL, B -> 8 bit, W -> 16 bit, D -> 32 bit, L -> 64 bit. */
+export function locationAdmits(loc: ParsedLocation, type: string): boolean {
+  switch (loc.size) {
+    case 'X':
+      return type === 'BOOL';
+    case 'B':
+      return ['BYTE', 'SINT', 'USINT'].includes(type);
+    case 'W':
+      return ['WORD', 'INT', 'UINT'].includes(type);
+    case 'D':
+      return ['DWORD', 'DINT', 'UDINT', 'REAL', 'TIME'].includes(type);
+    case 'L':
+      return ['LWORD', 'LINT', 'ULINT', 'LREAL'].includes(type);
+  }
+}
+
+/** IEC identifier: letter or underscore, then letters, digits, single underscores. */
+export const IDENTIFIER_RE = /^[A-Za-z_][A-Za-z0-9_]*$/;

@@ -1,0 +1,188 @@
+// Loading a project file: schema validation (zod) plus structural checks, with located messages.
+import { z } from 'zod';
+import { COIL_TYPES, CONTACT_TYPES } from './elements';
+import { elementCells } from './factory';
+import { PROJECT_FORMAT, PROJECT_VERSION, type Project } from './project';
+
+const id = z.string().min(1);
+const int = z.number().int();
+const nonNeg = int.min(0);
+const extensions = z.record(z.string(), z.unknown()).optional();
+
+const placed = { id, row: nonNeg, col: nonNeg };
+const element = z.discriminatedUnion('kind', [
+  z.object({ ...placed, kind: z.literal('link') }).strict(),
+  z.object({ ...placed, kind: z.literal('contact'), contact: z.enum(CONTACT_TYPES), variable: z.string() }).strict(),
+  z.object({ ...placed, kind: z.literal('coil'), coil: z.enum(COIL_TYPES), variable: z.string() }).strict(),
+  z.object({ ...placed, kind: z.literal('jump'), target: z.string() }).strict(),
+  z.object({ ...placed, kind: z.literal('return') }).strict(),
+  z
+    .object({
+      ...placed,
+      kind: z.literal('box'),
+      blockType: z.string().min(1),
+      instance: z.string().optional(),
+      inputCount: int.min(1).max(64).optional(),
+      inputs: z.record(z.string(), z.string()),
+      outputs: z.record(z.string(), z.string()),
+    })
+    .strict(),
+]);
+
+const variableSchema = z
+  .object({
+    name: z.string().min(1),
+    type: z.string().min(1),
+    varClass: z.enum(['local', 'input', 'output', 'inOut', 'external', 'temp']),
+    location: z.string().optional(),
+    initial: z.string().optional(),
+    retain: z.boolean(),
+    constant: z.boolean().optional(),
+    comment: z.string(),
+  })
+  .strict();
+
+const networkSchema = z
+  .object({
+    id,
+    label: z.string().optional(),
+    title: z.string(),
+    comment: z.string(),
+    rows: int.min(1).max(10_000),
+    cols: int.min(1).max(1_000),
+    elements: z.array(element),
+    vlinks: z.array(z.object({ row: nonNeg, boundary: nonNeg }).strict()),
+    collapsed: z.boolean().optional(),
+    extensions,
+  })
+  .strict();
+
+const pouSchema = z
+  .object({
+    id,
+    name: z.string().min(1),
+    kind: z.enum(['PROGRAM', 'FUNCTION_BLOCK', 'FUNCTION']),
+    returnType: z.string().optional(),
+    language: z.literal('LD'),
+    comment: z.string(),
+    variables: z.array(variableSchema),
+    networks: z.array(networkSchema),
+    extensions,
+  })
+  .strict();
+
+export const projectSchema = z
+  .object({
+    format: z.literal(PROJECT_FORMAT),
+    version: z.literal(PROJECT_VERSION),
+    name: z.string(),
+    description: z.string(),
+    profile: z.enum(['iec', 'openplc']),
+    pous: z.array(pouSchema),
+    globals: z.array(variableSchema),
+    tasks: z.array(
+      z
+        .object({
+          name: z.string().min(1),
+          cycleMs: z.number().positive(),
+          priority: int,
+          programs: z.array(z.object({ instance: z.string().min(1), pou: z.string().min(1) }).strict()),
+        })
+        .strict(),
+    ),
+    extensions,
+  })
+  .strict();
+
+export interface LoadError {
+  /** JSON path to the offending value, e.g. `pous[0].networks[3].elements[2].row`. */
+  readonly path: string;
+  readonly message: string;
+}
+
+export type LoadResult = { ok: true; project: Project } | { ok: false; errors: LoadError[] };
+
+const formatPath = (path: readonly PropertyKey[]): string =>
+  path.reduce<string>((acc, k) => (typeof k === 'number' ? `${acc}[${k}]` : acc ? `${acc}.${String(k)}` : String(k)), '') ||
+  '(root)';
+
+/** Validates parsed JSON as a project. Never throws. */
+export function validateProject(data: unknown): LoadResult {
+  if (typeof data === 'object' && data !== null) {
+    const d = data as Record<string, unknown>;
+    if (d.format !== PROJECT_FORMAT) {
+      return { ok: false, errors: [{ path: 'format', message: `not a Rungsmith project (format must be "${PROJECT_FORMAT}")` }] };
+    }
+    if (typeof d.version === 'number' && d.version > PROJECT_VERSION) {
+      return {
+        ok: false,
+        errors: [{ path: 'version', message: `project format version ${d.version} is newer than this Rungsmith supports (${PROJECT_VERSION})` }],
+      };
+    }
+  }
+  const parsed = projectSchema.safeParse(data);
+  if (!parsed.success) {
+    return { ok: false, errors: parsed.error.issues.slice(0, 20).map((i) => ({ path: formatPath(i.path), message: i.message })) };
+  }
+  const project = parsed.data as unknown as Project; // ids are branded after validation
+  const errors = structuralErrors(project);
+  return errors.length ? { ok: false, errors } : { ok: true, project };
+}
+
+/** Parses project file text (JSON). Never throws. */
+export function loadProject(text: string): LoadResult {
+  let data: unknown;
+  try {
+    data = JSON.parse(text);
+  } catch (e) {
+    return { ok: false, errors: [{ path: '(file)', message: `not valid JSON: ${(e as Error).message}` }] };
+  }
+  return validateProject(data);
+}
+
+export const saveProject = (project: Project): string => `${JSON.stringify(project, null, 2)}\n`;
+
+function structuralErrors(project: Project): LoadError[] {
+  const errors: LoadError[] = [];
+  const pouNames = new Set<string>();
+  const ids = new Set<string>();
+  const seenId = (value: string, path: string) => {
+    if (ids.has(value)) errors.push({ path, message: `duplicate id "${value}"` });
+    ids.add(value);
+  };
+  project.pous.forEach((pou, pi) => {
+    const pp = `pous[${pi}]`;
+    seenId(pou.id, `${pp}.id`);
+    const key = pou.name.toUpperCase();
+    if (pouNames.has(key)) errors.push({ path: `${pp}.name`, message: `duplicate POU name "${pou.name}"` });
+    pouNames.add(key);
+    pou.networks.forEach((net, ni) => {
+      const np = `${pp}.networks[${ni}]`;
+      seenId(net.id, `${np}.id`);
+      const occupied = new Map<string, number>();
+      net.elements.forEach((el, ei) => {
+        const ep = `${np}.elements[${ei}]`;
+        seenId(el.id, `${ep}.id`);
+        for (const c of elementCells(el)) {
+          if (c.row >= net.rows || c.col >= net.cols) {
+            errors.push({ path: ep, message: `element at row ${el.row}, column ${el.col} lies outside the ${net.rows}x${net.cols} grid` });
+            break;
+          }
+          const k = `${c.row}:${c.col}`;
+          const other = occupied.get(k);
+          if (other !== undefined) {
+            errors.push({ path: ep, message: `cell row ${c.row}, column ${c.col} already holds elements[${other}]` });
+            break;
+          }
+          occupied.set(k, ei);
+        }
+      });
+      net.vlinks.forEach((v, vi) => {
+        if (v.row + 1 >= net.rows || v.boundary > net.cols) {
+          errors.push({ path: `${np}.vlinks[${vi}]`, message: `vertical link at row ${v.row}, boundary ${v.boundary} lies outside the grid` });
+        }
+      });
+    });
+  });
+  return errors.slice(0, 50);
+}

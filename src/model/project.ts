@@ -1,0 +1,77 @@
+// The project: plain serialisable data (JSON), versioned. See docs in README "Project format".
+import type { LdElement, VLink } from './elements';
+import type { NetworkId, PouId } from './ids';
+
+export const PROJECT_FORMAT = 'rungsmith-project';
+export const PROJECT_VERSION = 1;
+
+export type VarClass = 'local' | 'input' | 'output' | 'inOut' | 'external' | 'temp';
+
+export interface Variable {
+  readonly name: string;
+  /** An elementary type (BOOL, INT, TIME, ...) or a function block type (TON, CTU, ...) for FB instances. */
+  readonly type: string;
+  readonly varClass: VarClass;
+  /** IEC location such as %IX0.0, %QX0.1, %MW3. */
+  readonly location?: string;
+  /** Initial value as IEC literal text (TRUE, 10, T#5s, 2.5). */
+  readonly initial?: string;
+  readonly retain: boolean;
+  readonly constant?: boolean;
+  readonly comment: string;
+}
+
+export interface Network {
+  readonly id: NetworkId;
+  /** Jump target: identifier or unsigned integer; unique in the POU. */
+  readonly label?: string;
+  readonly title: string;
+  readonly comment: string;
+  readonly rows: number;
+  readonly cols: number;
+  readonly elements: readonly LdElement[];
+  readonly vlinks: readonly VLink[];
+  readonly collapsed?: boolean;
+  /** Vendor data kept for round trips (e.g. PLCopen addData); never interpreted. */
+  readonly extensions?: Readonly<Record<string, unknown>>;
+}
+
+export type PouKind = 'PROGRAM' | 'FUNCTION_BLOCK' | 'FUNCTION';
+
+export interface Pou {
+  readonly id: PouId;
+  readonly name: string;
+  readonly kind: PouKind;
+  /** FUNCTION only. */
+  readonly returnType?: string;
+  readonly language: 'LD';
+  readonly comment: string;
+  readonly variables: readonly Variable[];
+  readonly networks: readonly Network[];
+  readonly extensions?: Readonly<Record<string, unknown>>;
+}
+
+export interface Task {
+  readonly name: string;
+  /** Cyclic interval in milliseconds. */
+  readonly cycleMs: number;
+  readonly priority: number;
+  /** Program instances run by this task. */
+  readonly programs: readonly { readonly instance: string; readonly pou: string }[];
+}
+
+export type Profile = 'iec' | 'openplc';
+
+export interface Project {
+  readonly format: typeof PROJECT_FORMAT;
+  readonly version: typeof PROJECT_VERSION;
+  readonly name: string;
+  readonly description: string;
+  /** Semantics profile (LD-SEMANTICS.md section 10). */
+  readonly profile: Profile;
+  readonly pous: readonly Pou[];
+  /** Global variables (configuration/resource level in PLCopen). */
+  readonly globals: readonly Variable[];
+  readonly tasks: readonly Task[];
+  readonly extensions?: Readonly<Record<string, unknown>>;
+}
