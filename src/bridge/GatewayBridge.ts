@@ -1,0 +1,90 @@
+/**
+ * GatewayBridge: what the running simulation uses to take its I/O from the gateway.
+ *
+ *   const bridge = new GatewayBridge(client);          // client: a connected GatewayClient (role controller)
+ *   bridge.inputImage(bindings?)  -> Record<address, Value>
+ *       The latest input values by IEC address (%IX0.0 -> true, %IW2 -> 1234), for the next scan's
+ *       input read. With `bindings` (from checkBindings) each value is converted to its variable's
+ *       type (a WORD 65535 read into an INT variable gives -1).
+ *   bridge.sendOutputs(values)     values: Record<address, Value>, the scan's output image.
+ *       Call after every scan (or every scan that changed it: the bridge re-sends the last image
+ *       every `heartbeatMs` so the gateway's lease stays fed while the simulation runs). Addresses
+ *       the gateway does not have as outputs are left out; values wrap to the point's 16 bits.
+ *   bridge.stop()                  pause/stop: the gateway writes the safe state; heartbeats end.
+ *   bridge.onInputs(cb)            cb(changed: Record<address, Value>) when inputs change; returns unsubscribe.
+ *   bridge.canDrive                true when connected as controller and armed.
+ *
+ * Nothing is sent unless the client holds the controller lease; an observer only reads.
+ */
+import type { Value } from '../model/iecTypes';
+import { canonicalAddress, type WireValue } from '../protocol/points';
+import type { GatewayClient } from './GatewayClient';
+import type { Binding } from './mapping';
+import { fromWire, toWire } from './wireValues';
+
+export class GatewayBridge {
+  private lastOutputs: Record<string, WireValue> | undefined;
+  private lastSentAt = 0;
+  private heartbeat: ReturnType<typeof setInterval> | undefined;
+
+  constructor(
+    private readonly client: GatewayClient,
+    private readonly heartbeatMs = 100,
+  ) {}
+
+  get canDrive(): boolean {
+    return this.client.isController && this.client.snapshot.status?.armed !== false;
+  }
+
+  inputImage(bindings?: readonly Binding[]): Record<string, Value> {
+    const { values, points } = this.client.snapshot;
+    const image: Record<string, Value> = {};
+    for (const p of points) {
+      const v = values[p.address];
+      if (p.dir === 'in' && v !== undefined) image[p.address] = v;
+    }
+    for (const b of bindings ?? []) {
+      const v = values[b.address];
+      if (b.point.dir === 'in' && v !== undefined) image[b.address] = fromWire(b.varType, v);
+    }
+    return image;
+  }
+
+  sendOutputs(values: Readonly<Record<string, Value>>): void {
+    const types = new Map(this.client.snapshot.points.filter((p) => p.dir === 'out').map((p) => [p.address, p.type]));
+    const wire: Record<string, WireValue> = { ...this.lastOutputs };
+    for (const [text, value] of Object.entries(values)) {
+      const address = canonicalAddress(text);
+      const type = address ? types.get(address) : undefined;
+      if (address && type) wire[address] = toWire(type, value);
+    }
+    this.lastOutputs = wire;
+    this.push();
+    this.heartbeat ??= setInterval(() => {
+      if (Date.now() - this.lastSentAt >= this.heartbeatMs * 0.9) this.push();
+    }, this.heartbeatMs);
+  }
+
+  stop(): void {
+    clearInterval(this.heartbeat);
+    this.heartbeat = undefined;
+    this.lastOutputs = undefined;
+    this.client.stop();
+  }
+
+  onInputs(cb: (changed: Record<string, Value>) => void): () => void {
+    return this.client.onMessage((m) => {
+      if (m.t === 'inputs' || m.t === 'image') {
+        const inputs = this.client.snapshot.points.filter((p) => p.dir === 'in');
+        const changed: Record<string, Value> = {};
+        for (const p of inputs) if (m.values[p.address] !== undefined) changed[p.address] = m.values[p.address] as WireValue;
+        if (Object.keys(changed).length) cb(changed);
+      }
+    });
+  }
+
+  private push(): void {
+    if (!this.lastOutputs) return;
+    if (this.client.sendOutputs(this.lastOutputs)) this.lastSentAt = Date.now();
+  }
+}

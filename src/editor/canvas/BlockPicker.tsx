@@ -1,0 +1,86 @@
+// The searchable block picker (key B): every standard function block and library function.
+// Type to filter, arrows to choose, Enter to place the box at the cursor.
+import { useMemo, useState } from 'react';
+import { useDocumentStore } from '../../store/documentStore';
+import { useUi, useUiStore } from '../../store/uiStore';
+import { placeAt } from '../commands/editorActions';
+import { boxTemplate, searchBlocks } from '../palette/paletteItems';
+
+export function BlockPicker({ onDone }: { readonly onDone: () => void }) {
+  const doc = useDocumentStore();
+  const ui = useUiStore();
+  const picker = useUi((s) => s.blockPicker);
+  const [query, setQuery] = useState('');
+  const [active, setActive] = useState(0);
+  const results = useMemo(() => searchBlocks(query).slice(0, 200), [query]);
+  if (!picker) return null;
+  const index = Math.min(active, results.length - 1);
+
+  const close = () => {
+    ui.getState().closeBlockPicker();
+    setQuery('');
+    setActive(0);
+    onDone();
+  };
+  const choose = (i: number) => {
+    const sig = results[i];
+    if (!sig) return;
+    ui.getState().closeBlockPicker();
+    setQuery('');
+    setActive(0);
+    placeAt({ doc, ui }, picker.network, picker.cell, boxTemplate(sig));
+    if (!ui.getState().editing) onDone();
+  };
+
+  return (
+    <div className="rs-block-picker" role="dialog" aria-label="Choose a block" data-testid="block-picker">
+      <input
+        autoFocus
+        role="combobox"
+        aria-expanded
+        aria-controls="rs-block-picker-list"
+        aria-activedescendant={results[index] ? `rs-block-${results[index].name}` : undefined}
+        aria-label="Search blocks"
+        placeholder="Search blocks: TON, ADD, INT_TO_REAL…"
+        value={query}
+        onChange={(e) => {
+          setQuery(e.target.value);
+          setActive(0);
+        }}
+        onKeyDown={(e) => {
+          e.stopPropagation();
+          if (e.key === 'ArrowDown' || e.key === 'ArrowUp') {
+            e.preventDefault();
+            const step = e.key === 'ArrowDown' ? 1 : -1;
+            setActive((index + step + results.length) % Math.max(1, results.length));
+          } else if (e.key === 'Enter') {
+            e.preventDefault();
+            choose(index);
+          } else if (e.key === 'Escape') {
+            e.preventDefault();
+            close();
+          }
+        }}
+        onBlur={close}
+      />
+      <ul id="rs-block-picker-list" role="listbox" aria-label="Blocks">
+        {results.map((sig, i) => (
+          <li
+            key={sig.name}
+            id={`rs-block-${sig.name}`}
+            role="option"
+            aria-selected={i === index}
+            onMouseDown={(e) => e.preventDefault()}
+            onMouseEnter={() => setActive(i)}
+            onClick={() => choose(i)}
+          >
+            <span className="rs-mono rs-block-name">{sig.name}</span>
+            <span className="rs-block-kind">{sig.kind === 'fb' ? 'FB' : 'function'}</span>
+            <span className="rs-block-desc">{sig.description}</span>
+          </li>
+        ))}
+        {results.length === 0 && <li className="rs-empty">No block matches “{query}”.</li>}
+      </ul>
+    </div>
+  );
+}

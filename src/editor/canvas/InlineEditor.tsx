@@ -1,0 +1,125 @@
+// The name field that opens over an element on the canvas (after placing it, Enter, or a
+// double-click): the variable of a contact or coil, the instance of a function block, the
+// label a jump goes to. Enter commits and moves the cursor on; Escape leaves the name as it was.
+import { useMemo, type KeyboardEvent } from 'react';
+import type { LdElement } from '../../model/elements';
+import type { NetworkId } from '../../model/ids';
+import { selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
+import { useUi, useUiStore } from '../../store/uiStore';
+import { advancePast, type EditorContext } from '../commands/editorActions';
+import { VariableInput } from '../inspector/VariableInput';
+import { CELL_H, CELL_W, headerHeight, RAIL_X, type CanvasLayout } from './geometry';
+
+export interface InlineEditorProps {
+  readonly layout: CanvasLayout;
+  readonly zoom: number;
+  readonly scrollLeft: number;
+  readonly scrollTop: number;
+  readonly onDone: () => void;
+}
+
+function currentName(el: LdElement): string {
+  switch (el.kind) {
+    case 'contact':
+    case 'coil':
+      return el.variable;
+    case 'box':
+      return el.instance ?? '';
+    case 'jump':
+      return el.target;
+    case 'link':
+    case 'return':
+      return '';
+  }
+}
+
+export function InlineEditor({ layout, zoom, scrollLeft, scrollTop, onDone }: InlineEditorProps) {
+  const doc = useDocumentStore();
+  const ui = useUiStore();
+  const editing = useUi((s) => s.editing);
+  const networks = useDocument(selectNetworks);
+  const found = useMemo(() => {
+    if (!editing) return undefined;
+    for (let i = 0; i < networks.length; i++) {
+      const el = networks[i]!.elements.find((e) => e.id === editing.element);
+      if (el) return { index: i, network: networks[i]!, el };
+    }
+    return undefined;
+  }, [editing, networks]);
+  const labels = useMemo(() => networks.map((n) => n.label).filter((l): l is string => Boolean(l)), [networks]);
+  if (!found || found.network.collapsed) return null;
+  const { el, network, index } = found;
+  const ctx: EditorContext = { doc, ui };
+
+  const close = (advance: boolean) => {
+    ui.getState().stopEditing();
+    if (advance) {
+      const now = doc.getState().project.pous.flatMap((p) => p.networks).find((n) => n.id === network.id);
+      const latest = now?.elements.find((e) => e.id === el.id);
+      if (latest) advancePast(ctx, network.id as NetworkId, latest);
+    }
+    onDone();
+  };
+  const commit = (text: string) => {
+    const name = text.trim();
+    if (el.kind === 'contact' || el.kind === 'coil') doc.getState().updateElement(el.id, { variable: name });
+    else if (el.kind === 'box') doc.getState().updateElement(el.id, { instance: name });
+    else if (el.kind === 'jump') doc.getState().updateElement(el.id, { target: name });
+    close(true);
+  };
+
+  const x = (RAIL_X + el.col * CELL_W) * zoom - scrollLeft;
+  const y = (layout.tops[index]! + headerHeight(network) + el.row * CELL_H + 4) * zoom - scrollTop;
+  const width = Math.max(140, CELL_W * zoom + 40);
+  const style = { left: x - 20, top: y, width };
+  const what = el.kind === 'box' ? `Instance name of ${el.blockType}` : el.kind === 'jump' ? 'Jump target label' : `Variable of the ${el.kind}`;
+
+  if (el.kind === 'jump') {
+    return (
+      <div className="rs-inline-editor" style={style}>
+        <input
+          autoFocus
+          aria-label={what}
+          data-testid="inline-editor"
+          className="rs-cell-input rs-mono"
+          list="rs-network-labels"
+          defaultValue={el.target}
+          onKeyDown={(e) => {
+            e.stopPropagation();
+            if (e.key === 'Enter') commit(e.currentTarget.value);
+            else if (e.key === 'Escape') close(false);
+          }}
+          onBlur={() => close(false)}
+        />
+        <datalist id="rs-network-labels">
+          {labels.map((l) => (
+            <option key={l} value={l} />
+          ))}
+        </datalist>
+      </div>
+    );
+  }
+  const role = el.kind === 'box' ? ({ kind: 'instance', blockType: el.blockType } as const) : el.kind === 'coil' ? ({ kind: 'coil' } as const) : ({ kind: 'contact' } as const);
+  // Enter on an unchanged name: VariableInput commits nothing, so close here and move on.
+  const onKeyDownCapture = (e: KeyboardEvent) => {
+    if (e.key !== 'Enter') return;
+    setTimeout(() => {
+      if (ui.getState().editing?.element === el.id) close(true);
+    }, 0);
+  };
+  return (
+    <div className="rs-inline-editor" style={style} onKeyDownCapture={onKeyDownCapture}>
+      <VariableInput
+        value={currentName(el)}
+        role={role}
+        autoFocus
+        commitOnBlur={false}
+        aria-label={what}
+        data-testid="inline-editor"
+        placeholder={el.kind === 'box' ? 'instance' : 'variable'}
+        onCommit={commit}
+        onCancel={() => close(false)}
+      />
+    </div>
+  );
+}

@@ -1,0 +1,221 @@
+// The ladder canvas: networks stacked vertically, only the visible ones rendered (a Konva stage
+// the size of the viewport, kept in place with position: sticky inside a native scroll area, so
+// scrollbars, wheel and touch scrolling are the browser's own).
+import { useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
+import { Layer, Stage } from 'react-konva';
+import type { ElementId } from '../../model/ids';
+import { selectActivePou, selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
+import { clampZoom, selectCursor, selectSelection, selectTheme, selectZoom, useUi, useUiStore } from '../../store/uiStore';
+import type { EditorContext } from '../commands/editorActions';
+import { useDiagnosticsByNetwork } from '../problems/useDiagnostics';
+import { readCanvasTheme, type CanvasTheme } from '../theme/canvasTheme';
+import { BlockPicker } from './BlockPicker';
+import { CanvasEmpty } from './CanvasEmpty';
+import { CELL_H, CELL_W, headerHeight, layoutNetworks, RAIL_X, visibleRange } from './geometry';
+import { InlineEditor } from './InlineEditor';
+import { markersByNetwork } from './markers';
+import { NetworkHeader } from './NetworkHeader';
+import { NetworkShape } from './NetworkShape';
+import { useCanvasPointer, type PointerView } from './useCanvasPointer';
+import './canvas.css';
+
+const EMPTY_SET: ReadonlySet<ElementId> = new Set();
+/** Content pixels rendered above and below the viewport. */
+const OVERSCAN = 240;
+
+export function LadderCanvas() {
+  const doc = useDocumentStore();
+  const ui = useUiStore();
+  const ctx = useMemo<EditorContext>(() => ({ doc, ui }), [doc, ui]);
+  const networks = useDocument(selectNetworks);
+  const pou = useDocument(selectActivePou);
+  const zoom = useUi(selectZoom);
+  const selection = useUi(selectSelection);
+  const cursor = useUi(selectCursor);
+  const themeName = useUi(selectTheme);
+  const tool = useUi((s) => s.tool);
+  const focusRequest = useUi((s) => s.focusRequest);
+  const layout = useMemo(() => layoutNetworks(networks), [networks]);
+  const diagnostics = useDiagnosticsByNetwork(pou?.name);
+  const markers = useMemo(() => markersByNetwork(networks, diagnostics), [networks, diagnostics]);
+
+  const scrollRef = useRef<HTMLDivElement>(null);
+  const [scroll, setScroll] = useState({ left: 0, top: 0 });
+  const [size, setSize] = useState({ width: 800, height: 600 });
+  const [theme, setTheme] = useState<CanvasTheme | undefined>(undefined);
+  const view = useRef<PointerView>({ layout, networks, zoom });
+  view.current = { layout, networks, zoom };
+  const spaceHeld = useRef(false);
+  const zoomAnchor = useRef<{ x: number; y: number; offsetX: number; offsetY: number } | undefined>(undefined);
+  const { drag, band, hover, handlers } = useCanvasPointer(ctx, scrollRef, view, spaceHeld);
+
+  useLayoutEffect(() => {
+    if (scrollRef.current) setTheme(readCanvasTheme(scrollRef.current));
+  }, [themeName]);
+
+  useLayoutEffect(() => {
+    const el = scrollRef.current;
+    if (!el) return undefined;
+    const measure = () => {
+      setSize({ width: el.clientWidth, height: el.clientHeight });
+      ui.getState().setViewport({ width: el.clientWidth, height: el.clientHeight });
+    };
+    measure();
+    const ro = new ResizeObserver(measure);
+    ro.observe(el);
+    return () => ro.disconnect();
+  }, [ui]);
+
+  // Ctrl+wheel and trackpad pinch (which Chromium reports as Ctrl+wheel) zoom around the pointer.
+  useEffect(() => {
+    const el = scrollRef.current;
+    if (!el) return undefined;
+    const onWheel = (e: WheelEvent) => {
+      if (!e.ctrlKey && !e.metaKey) return;
+      e.preventDefault();
+      const rect = el.getBoundingClientRect();
+      const z = ui.getState().viewport.zoom;
+      const offsetX = e.clientX - rect.left;
+      const offsetY = e.clientY - rect.top;
+      zoomAnchor.current = { x: (offsetX + el.scrollLeft) / z, y: (offsetY + el.scrollTop) / z, offsetX, offsetY };
+      ui.getState().setZoom(clampZoom(z * Math.exp(-e.deltaY * 0.0015)));
+    };
+    el.addEventListener('wheel', onWheel, { passive: false });
+    return () => el.removeEventListener('wheel', onWheel);
+  }, [ui]);
+
+  useLayoutEffect(() => {
+    const el = scrollRef.current;
+    const a = zoomAnchor.current;
+    if (!el || !a) return;
+    zoomAnchor.current = undefined;
+    el.scrollLeft = a.x * zoom - a.offsetX;
+    el.scrollTop = a.y * zoom - a.offsetY;
+  }, [zoom]);
+
+  // "Click to jump" from the problems list, and new networks: scroll the cell to the middle.
+  useLayoutEffect(() => {
+    const el = scrollRef.current;
+    if (!el || !focusRequest) return;
+    const i = networks.findIndex((n) => n.id === focusRequest.network);
+    const n = networks[i];
+    if (!n) return;
+    if (n.collapsed) doc.getState().updateNetwork(n.id, { collapsed: false });
+    const y = layout.tops[i]! + headerHeight(n) + focusRequest.cell.row * CELL_H;
+    const x = RAIL_X + focusRequest.cell.col * CELL_W;
+    el.scrollTop = Math.max(0, (y - 80) * zoom - el.clientHeight / 3);
+    el.scrollLeft = Math.max(0, x * zoom - el.clientWidth / 2);
+    el.focus({ preventScroll: true });
+    // Only a new request scrolls; later layout changes must not pull the view back.
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [focusRequest]);
+
+  // Keep the keyboard cursor on screen.
+  useLayoutEffect(() => {
+    const el = scrollRef.current;
+    if (!el || !cursor) return;
+    const i = networks.findIndex((n) => n.id === cursor.network);
+    const n = networks[i];
+    if (!n) return;
+    const top = (layout.tops[i]! + headerHeight(n) + cursor.row * CELL_H) * zoom;
+    const left = (RAIL_X + cursor.col * CELL_W) * zoom;
+    const margin = 24;
+    if (top < el.scrollTop + margin) el.scrollTop = top - (i > 0 && cursor.row === 0 ? headerHeight(n) * zoom : 0) - margin;
+    else if (top + CELL_H * zoom > el.scrollTop + el.clientHeight - margin) el.scrollTop = top + CELL_H * zoom - el.clientHeight + margin;
+    if (left < el.scrollLeft) el.scrollLeft = left - margin;
+    else if (left + CELL_W * zoom > el.scrollLeft + el.clientWidth) el.scrollLeft = left + CELL_W * zoom - el.clientWidth + margin;
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [cursor]);
+
+  const { first, last } = visibleRange(layout, scroll.top / zoom - OVERSCAN, (scroll.top + size.height) / zoom + OVERSCAN);
+  const selectedSet = useMemo(() => new Set(selection.elements), [selection]);
+  const refocus = () => scrollRef.current?.focus({ preventScroll: true });
+  const visible: number[] = [];
+  for (let i = first; i <= last; i++) visible.push(i);
+
+  return (
+    <div
+      ref={scrollRef}
+      className={`rs-canvas rs-tool-${tool.kind}`}
+      tabIndex={0}
+      role="application"
+      aria-label="Ladder diagram: arrows move the cursor, letters place elements (see the palette tooltips)"
+      aria-roledescription="ladder editor"
+      data-testid="ladder-canvas"
+      onScroll={(e) => {
+        const t = e.currentTarget;
+        setScroll({ left: t.scrollLeft, top: t.scrollTop });
+      }}
+      onKeyDown={(e) => {
+        if (e.key === ' ' && e.target === e.currentTarget) {
+          spaceHeld.current = true;
+          e.preventDefault();
+        }
+      }}
+      onKeyUp={(e) => {
+        if (e.key === ' ') spaceHeld.current = false;
+      }}
+    >
+      <div className="rs-canvas-sticky" style={{ width: size.width, height: size.height }} {...handlers}>
+        {theme && (
+          <Stage width={size.width} height={size.height} listening={false}>
+            <Layer x={-scroll.left} y={-scroll.top} scaleX={zoom} scaleY={zoom} listening={false}>
+              {visible.map((i) => {
+                const n = networks[i]!;
+                return (
+                  <NetworkShape
+                    key={n.id}
+                    network={n}
+                    index={i}
+                    top={layout.tops[i]!}
+                    theme={theme}
+                    selected={selection.network === n.id ? selectedSet : EMPTY_SET}
+                    cursor={cursor?.network === n.id ? cursor : undefined}
+                    hover={hover?.index === i ? hover.cell : undefined}
+                    markers={markers.get(i)?.markers ?? NO_MARKERS}
+                    drag={drag?.network === n.id ? drag : undefined}
+                  />
+                );
+              })}
+            </Layer>
+          </Stage>
+        )}
+        <div className="rs-headers" style={{ transform: `translate(${-scroll.left}px, ${-scroll.top}px) scale(${zoom})` }}>
+          {visible.map((i) => {
+            const n = networks[i]!;
+            const m = markers.get(i);
+            return (
+              <NetworkHeader
+                key={n.id}
+                network={n}
+                index={i}
+                count={networks.length}
+                top={layout.tops[i]!}
+                width={layout.totalWidth}
+                errors={m?.errors ?? 0}
+                warnings={m?.warnings ?? 0}
+              />
+            );
+          })}
+          {band && (
+            <div
+              className="rs-band"
+              style={{
+                left: Math.min(band.from.x, band.to.x),
+                top: Math.min(band.from.y, band.to.y),
+                width: Math.abs(band.to.x - band.from.x),
+                height: Math.abs(band.to.y - band.from.y),
+              }}
+            />
+          )}
+        </div>
+        <InlineEditor layout={layout} zoom={zoom} scrollLeft={scroll.left} scrollTop={scroll.top} onDone={refocus} />
+        <BlockPicker onDone={refocus} />
+        {networks.length === 0 && <CanvasEmpty />}
+      </div>
+      <div style={{ width: layout.totalWidth * zoom, height: Math.max(0, layout.totalHeight * zoom - size.height) }} />
+    </div>
+  );
+}
+
+const NO_MARKERS: readonly never[] = [];

@@ -1,0 +1,191 @@
+// The header above a network: number, label, title, comment, collapse toggle, reorder handle and
+// buttons. Plain DOM over the canvas so every control is a real, accessible form element.
+import { memo, useState, type DragEvent, type KeyboardEvent } from 'react';
+import type { Network } from '../../model/project';
+import { useDocumentStore } from '../../store/documentStore';
+import { useUiStore } from '../../store/uiStore';
+import { commentLines, COMMENT_LINE_H, headerHeight, RAIL_X } from './geometry';
+
+const DRAG_TYPE = 'application/x-rungsmith-network';
+
+interface FieldProps {
+  readonly value: string;
+  readonly onCommit: (v: string) => void;
+  readonly label: string;
+  readonly testId: string;
+  readonly placeholder: string;
+  readonly className: string;
+  readonly multiline?: number;
+}
+
+/** A field that edits locally and commits once, on Enter (Ctrl+Enter in a comment) or leaving it; Escape reverts. */
+function CommitField({ value, onCommit, label, testId, placeholder, className, multiline }: FieldProps) {
+  const [draft, setDraft] = useState<string | undefined>(undefined);
+  const commit = () => {
+    if (draft !== undefined && draft !== value) onCommit(draft);
+    setDraft(undefined);
+  };
+  const onKeyDown = (e: KeyboardEvent<HTMLInputElement | HTMLTextAreaElement>) => {
+    e.stopPropagation();
+    if (e.key === 'Escape') {
+      setDraft(undefined);
+      e.currentTarget.blur();
+    } else if (e.key === 'Enter' && (!multiline || e.ctrlKey || e.metaKey)) {
+      e.preventDefault();
+      commit();
+      e.currentTarget.blur();
+    }
+  };
+  const common = {
+    'aria-label': label,
+    'data-testid': testId,
+    placeholder,
+    className,
+    value: draft ?? value,
+    spellCheck: false,
+    onBlur: commit,
+    onKeyDown,
+  };
+  return multiline ? (
+    <textarea {...common} rows={multiline} style={{ height: multiline * COMMENT_LINE_H }} onChange={(e) => setDraft(e.target.value)} />
+  ) : (
+    <input {...common} onChange={(e) => setDraft(e.target.value)} />
+  );
+}
+
+export interface NetworkHeaderProps {
+  readonly network: Network;
+  readonly index: number;
+  readonly count: number;
+  readonly top: number;
+  readonly width: number;
+  readonly errors: number;
+  readonly warnings: number;
+}
+
+export const NetworkHeader = memo(function NetworkHeader({ network: n, index, count, top, width, errors, warnings }: NetworkHeaderProps) {
+  const doc = useDocumentStore();
+  const ui = useUiStore();
+  const [dropTarget, setDropTarget] = useState(false);
+  const no = index + 1;
+  const update = (patch: Parameters<ReturnType<typeof doc.getState>['updateNetwork']>[1]) => doc.getState().updateNetwork(n.id, patch);
+
+  const onDrop = (e: DragEvent) => {
+    const from = Number(e.dataTransfer.getData(DRAG_TYPE));
+    setDropTarget(false);
+    if (!Number.isInteger(from) || from === index) return;
+    e.preventDefault();
+    doc.getState().moveNetwork(from, index);
+  };
+
+  return (
+    <div
+      className={`rs-network-header${dropTarget ? ' rs-drop-target' : ''}`}
+      style={{ top, left: RAIL_X - 20, width: Math.max(420, width - RAIL_X), height: headerHeight(n) - 4 }}
+      role="group"
+      aria-label={`Network ${no}${n.label ? ` (${n.label})` : ''}`}
+      data-testid={`network-header-${index}`}
+      onDragOver={(e) => {
+        if (!e.dataTransfer.types.includes(DRAG_TYPE)) return;
+        e.preventDefault();
+        setDropTarget(true);
+      }}
+      onDragLeave={() => setDropTarget(false)}
+      onDrop={onDrop}
+    >
+      <div className="rs-network-titlebar">
+        <span
+          className="rs-drag-handle"
+          draggable
+          role="button"
+          tabIndex={-1}
+          aria-label={`Drag to reorder network ${no}`}
+          title="Drag to reorder"
+          onDragStart={(e) => {
+            e.dataTransfer.setData(DRAG_TYPE, String(index));
+            e.dataTransfer.effectAllowed = 'move';
+          }}
+        >
+          ⠿
+        </span>
+        <button
+          type="button"
+          className="rs-icon-button"
+          aria-expanded={!n.collapsed}
+          aria-label={`${n.collapsed ? 'Expand' : 'Collapse'} network ${no}`}
+          title={n.collapsed ? 'Expand' : 'Collapse'}
+          onClick={() => update({ collapsed: !n.collapsed })}
+        >
+          {n.collapsed ? '▸' : '▾'}
+        </button>
+        <button
+          type="button"
+          className="rs-network-number"
+          title="Put the cursor in this network"
+          onClick={() => ui.getState().focusCell(n.id, { row: 0, col: 0 })}
+        >
+          Network {no}
+        </button>
+        <CommitField
+          value={n.label ?? ''}
+          onCommit={(label) => update({ label: label.trim() })}
+          label={`Label of network ${no}`}
+          testId={`network-label-${n.id}`}
+          placeholder="label"
+          className="rs-network-label rs-mono"
+        />
+        <CommitField
+          value={n.title}
+          onCommit={(title) => update({ title })}
+          label={`Title of network ${no}`}
+          testId={`network-title-${n.id}`}
+          placeholder="Title"
+          className="rs-network-title"
+        />
+        {errors + warnings > 0 && (
+          <span className={errors ? 'rs-badge rs-badge-error' : 'rs-badge rs-badge-warning'} title="Problems in this network">
+            {errors > 0 ? `${errors} error${errors > 1 ? 's' : ''}` : `${warnings} warning${warnings > 1 ? 's' : ''}`}
+          </span>
+        )}
+        <span className="rs-spacer" />
+        <button type="button" className="rs-icon-button" aria-label={`Move network ${no} up`} title="Move up" disabled={index === 0} onClick={() => doc.getState().moveNetwork(index, index - 1)}>
+          ↑
+        </button>
+        <button
+          type="button"
+          className="rs-icon-button"
+          aria-label={`Move network ${no} down`}
+          title="Move down"
+          disabled={index === count - 1}
+          onClick={() => doc.getState().moveNetwork(index, index + 1)}
+        >
+          ↓
+        </button>
+        <button
+          type="button"
+          className="rs-icon-button"
+          aria-label={`Insert network after network ${no}`}
+          title="Insert a network below"
+          onClick={() => {
+            const id = doc.getState().insertNetwork(index + 1);
+            ui.getState().focusCell(id, { row: 0, col: 0 });
+          }}
+        >
+          +
+        </button>
+        <button type="button" className="rs-icon-button rs-danger" aria-label={`Delete network ${no}`} title="Delete network (undo brings it back)" onClick={() => doc.getState().deleteNetwork(n.id)}>
+          ✕
+        </button>
+      </div>
+      <CommitField
+        value={n.comment}
+        onCommit={(comment) => update({ comment })}
+        label={`Comment of network ${no}`}
+        testId={`network-comment-${n.id}`}
+        placeholder="Comment"
+        className="rs-network-comment"
+        multiline={commentLines(n)}
+      />
+    </div>
+  );
+});

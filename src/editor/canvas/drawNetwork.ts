@@ -1,0 +1,124 @@
+// Draws one network's grid (rails, vertical links, elements and the overlays: selection,
+// cursor, diagnostic markers, drag ghost) with the grid's top-left at the context origin.
+import type { NetworkPower } from '../../engine/api';
+import { elementSize } from '../../model/factory';
+import type { Cell } from '../../model/grid';
+import type { ElementId } from '../../model/ids';
+import type { Network } from '../../model/project';
+import type { CanvasTheme } from '../theme/canvasTheme';
+import { drawElement } from './drawSymbols';
+import { CELL_H, CELL_W, GRID_PAD_BOTTOM, WIRE_Y } from './geometry';
+
+export interface CellMarker {
+  readonly cell: Cell;
+  readonly severity: 'error' | 'warning';
+}
+
+export interface NetworkPaint {
+  readonly selected: ReadonlySet<ElementId>;
+  readonly cursor: Cell | undefined;
+  readonly hover: Cell | undefined;
+  readonly markers: readonly CellMarker[];
+  /** Simulation power flow, aligned with network.elements / network.vlinks. */
+  readonly power?: NetworkPower;
+  readonly liveValues?: ReadonlyMap<ElementId, string>;
+  /** Elements being dragged and the offset in cells. */
+  readonly drag?: { readonly ids: ReadonlySet<ElementId>; readonly dRow: number; readonly dCol: number; readonly blocked: boolean };
+}
+
+type Ctx = CanvasRenderingContext2D;
+
+export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: NetworkPaint) {
+  const w = n.cols * CELL_W;
+  const h = n.rows * CELL_H;
+  ctx.fillStyle = t.networkBg;
+  ctx.fillRect(0, 0, w, h + GRID_PAD_BOTTOM);
+  // Cell corners as small dots: enough to read the grid without clutter.
+  ctx.fillStyle = t.grid;
+  for (let r = 0; r <= n.rows; r++) for (let c = 1; c < n.cols; c++) ctx.fillRect(c * CELL_W - 1, r * CELL_H - 1, 2, 2);
+  if (paint.hover) {
+    ctx.fillStyle = t.hover;
+    ctx.fillRect(paint.hover.col * CELL_W, paint.hover.row * CELL_H, CELL_W, CELL_H);
+  }
+  // Power rails: the left one is always ON.
+  ctx.lineCap = 'butt';
+  ctx.strokeStyle = paint.power ? t.energised : t.rail;
+  ctx.lineWidth = 4;
+  ctx.beginPath();
+  ctx.moveTo(0, 4);
+  ctx.lineTo(0, h - 4);
+  ctx.stroke();
+  ctx.strokeStyle = t.rail;
+  ctx.beginPath();
+  ctx.moveTo(w, 4);
+  ctx.lineTo(w, h - 4);
+  ctx.stroke();
+  n.vlinks.forEach((v, j) => {
+    const on = Boolean(paint.power?.vlinks[j]);
+    ctx.strokeStyle = on ? t.energised : t.wire;
+    ctx.lineWidth = on ? 3 : 1.5;
+    ctx.beginPath();
+    ctx.moveTo(v.boundary * CELL_W, v.row * CELL_H + WIRE_Y);
+    ctx.lineTo(v.boundary * CELL_W, (v.row + 1) * CELL_H + WIRE_Y);
+    ctx.stroke();
+    ctx.fillStyle = on ? t.energised : t.wire;
+    ctx.fillRect(v.boundary * CELL_W - 2, v.row * CELL_H + WIRE_Y - 2, 4, 4);
+    ctx.fillRect(v.boundary * CELL_W - 2, (v.row + 1) * CELL_H + WIRE_Y - 2, 4, 4);
+  });
+  n.elements.forEach((el, i) => {
+    const dragged = paint.drag?.ids.has(el.id);
+    ctx.save();
+    if (dragged) ctx.globalAlpha = 0.35;
+    ctx.translate(el.col * CELL_W, el.row * CELL_H);
+    const live = paint.liveValues?.get(el.id);
+    drawElement(ctx, t, el, { ...(paint.power ? { power: paint.power.elements[i] ?? 0 } : {}), ...(live ? { liveValue: live } : {}) });
+    ctx.restore();
+  });
+  for (const el of n.elements) {
+    if (!paint.selected.has(el.id)) continue;
+    const s = elementSize(el);
+    ctx.fillStyle = t.selectionFill;
+    ctx.strokeStyle = t.selection;
+    ctx.lineWidth = 2;
+    ctx.fillRect(el.col * CELL_W + 2, el.row * CELL_H + 2, s.cols * CELL_W - 4, s.rows * CELL_H - 4);
+    ctx.strokeRect(el.col * CELL_W + 2, el.row * CELL_H + 2, s.cols * CELL_W - 4, s.rows * CELL_H - 4);
+  }
+  for (const m of paint.markers) {
+    const x = m.cell.col * CELL_W;
+    const y = m.cell.row * CELL_H;
+    ctx.strokeStyle = m.severity === 'error' ? t.error : t.warning;
+    ctx.fillStyle = ctx.strokeStyle;
+    ctx.lineWidth = 2;
+    ctx.setLineDash([5, 3]);
+    ctx.strokeRect(x + 3, y + 3, CELL_W - 6, CELL_H - 6);
+    ctx.setLineDash([]);
+    ctx.beginPath();
+    ctx.moveTo(x + CELL_W - 16, y + 3);
+    ctx.lineTo(x + CELL_W - 3, y + 3);
+    ctx.lineTo(x + CELL_W - 3, y + 16);
+    ctx.closePath();
+    ctx.fill();
+  }
+  if (paint.drag) {
+    const { dRow, dCol, blocked } = paint.drag;
+    for (const el of n.elements) {
+      if (!paint.drag.ids.has(el.id)) continue;
+      ctx.save();
+      ctx.translate((el.col + dCol) * CELL_W, (el.row + dRow) * CELL_H);
+      ctx.globalAlpha = 0.85;
+      drawElement(ctx, t, el);
+      const s = elementSize(el);
+      ctx.strokeStyle = blocked ? t.error : t.selection;
+      ctx.setLineDash([4, 3]);
+      ctx.lineWidth = 1.5;
+      ctx.strokeRect(1, 1, s.cols * CELL_W - 2, s.rows * CELL_H - 2);
+      ctx.setLineDash([]);
+      ctx.restore();
+    }
+  }
+  if (paint.cursor) {
+    ctx.strokeStyle = t.cursor;
+    ctx.lineWidth = 2.5;
+    ctx.strokeRect(paint.cursor.col * CELL_W + 1, paint.cursor.row * CELL_H + 1, CELL_W - 2, CELL_H - 2);
+  }
+}

@@ -1,0 +1,208 @@
+// Pointer tools on the canvas as a small state machine:
+//   idle --down on element--> pressing --moved 4px--> dragging --up--> moveElements (one undo step)
+//   idle --down on empty cell--> banding (rubber band) --up--> select elements inside
+//   idle --middle button or Space held--> panning --up--> idle
+// With a placing tool, a click places the element; with the vertical link tool, a click toggles
+// the vertical link nearest to the pointer.
+import { useRef, useState, type PointerEvent as ReactPointerEvent, type RefObject } from 'react';
+import { elementSize } from '../../model/factory';
+import type { Cell } from '../../model/grid';
+import type { ElementId, NetworkId } from '../../model/ids';
+import type { Network } from '../../model/project';
+import { elementAt } from '../../store/networkEdits';
+import { needsName, placeAt, type EditorContext } from '../commands/editorActions';
+import { CELL_H, CELL_W, gridOrigin, hitTest, type CanvasLayout, type PixelPoint } from './geometry';
+
+export interface DragState {
+  readonly network: NetworkId;
+  readonly ids: ReadonlySet<ElementId>;
+  readonly dRow: number;
+  readonly dCol: number;
+  readonly blocked: boolean;
+}
+
+export interface BandState {
+  readonly index: number;
+  readonly from: PixelPoint;
+  readonly to: PixelPoint;
+}
+
+type Machine =
+  | { readonly kind: 'idle' }
+  | { readonly kind: 'pressing'; readonly index: number; readonly start: PixelPoint; readonly startCell: Cell; readonly ids: ElementId[] }
+  | { readonly kind: 'dragging'; readonly index: number; readonly start: PixelPoint; readonly startCell: Cell; readonly ids: ElementId[] }
+  | { readonly kind: 'banding'; readonly index: number; readonly start: PixelPoint }
+  | { readonly kind: 'panning'; readonly clientX: number; readonly clientY: number; readonly left: number; readonly top: number };
+
+export interface PointerView {
+  readonly layout: CanvasLayout;
+  readonly networks: readonly Network[];
+  readonly zoom: number;
+}
+
+/** Cell offset of a content point from a start point, in whole cells (snapping). */
+const cellDelta = (a: PixelPoint, b: PixelPoint) => ({ dRow: Math.round((b.y - a.y) / CELL_H), dCol: Math.round((b.x - a.x) / CELL_W) });
+
+function canMove(n: Network, ids: readonly ElementId[], dRow: number, dCol: number): boolean {
+  const set = new Set(ids);
+  const taken = new Map<string, boolean>();
+  for (const e of n.elements) {
+    if (set.has(e.id)) continue;
+    const s = elementSize(e);
+    for (let r = 0; r < s.rows; r++) for (let c = 0; c < s.cols; c++) taken.set(`${e.row + r}:${e.col + c}`, e.kind === 'link');
+  }
+  for (const e of n.elements) {
+    if (!set.has(e.id)) continue;
+    if (e.row + dRow < 0 || e.col + dCol < 0) return false;
+    const s = elementSize(e);
+    for (let r = 0; r < s.rows; r++)
+      for (let c = 0; c < s.cols; c++) if (taken.get(`${e.row + dRow + r}:${e.col + dCol + c}`) === false) return false;
+  }
+  return true;
+}
+
+export function useCanvasPointer(ctx: EditorContext, scrollRef: RefObject<HTMLDivElement | null>, view: RefObject<PointerView>, spaceHeld: RefObject<boolean>) {
+  const machine = useRef<Machine>({ kind: 'idle' });
+  const [drag, setDrag] = useState<DragState | undefined>(undefined);
+  const [band, setBand] = useState<BandState | undefined>(undefined);
+  const [hover, setHover] = useState<{ index: number; cell: Cell } | undefined>(undefined);
+
+  const contentPoint = (e: { clientX: number; clientY: number }): PixelPoint => {
+    const el = scrollRef.current!;
+    const rect = el.getBoundingClientRect();
+    const z = view.current.zoom;
+    return { x: (e.clientX - rect.left + el.scrollLeft) / z, y: (e.clientY - rect.top + el.scrollTop) / z };
+  };
+
+  const onPointerDown = (e: ReactPointerEvent<HTMLDivElement>) => {
+    if (!(e.target instanceof HTMLCanvasElement)) return;
+    const el = scrollRef.current!;
+    el.focus({ preventScroll: true });
+    if (e.button === 1 || (e.button === 0 && spaceHeld.current)) {
+      e.preventDefault();
+      e.currentTarget.setPointerCapture(e.pointerId);
+      machine.current = { kind: 'panning', clientX: e.clientX, clientY: e.clientY, left: el.scrollLeft, top: el.scrollTop };
+      return;
+    }
+    if (e.button !== 0) return;
+    const { layout, networks } = view.current;
+    const p = contentPoint(e);
+    const hit = hitTest(layout, networks, p);
+    if (hit.area !== 'grid') return;
+    const n = networks[hit.index]!;
+    const ui = ctx.ui.getState();
+    ui.setStatus('');
+    const tool = ui.tool;
+    if (tool.kind === 'place') {
+      placeAt(ctx, n.id, hit.cell, tool.template);
+      return;
+    }
+    if (tool.kind === 'vlink') {
+      if (hit.boundary > 0 && hit.boundary < n.cols) ctx.doc.getState().toggleVLink(n.id, { row: hit.wireRow, boundary: hit.boundary });
+      else ui.setStatus('The power rails already join every row; put vertical links between cells.');
+      return;
+    }
+    e.currentTarget.setPointerCapture(e.pointerId);
+    ui.setCursor({ network: n.id, row: hit.cell.row, col: hit.cell.col });
+    const target = elementAt(n, hit.cell);
+    if (target) {
+      let ids: ElementId[];
+      if (e.shiftKey || e.ctrlKey || e.metaKey) {
+        ui.toggleSelected(n.id, target.id);
+        ids = [...ctx.ui.getState().selection.elements];
+      } else {
+        const sel = ui.selection;
+        ids = sel.network === n.id && sel.elements.includes(target.id) ? [...sel.elements] : [target.id];
+        ui.select(n.id, ids);
+      }
+      machine.current = { kind: 'pressing', index: hit.index, start: p, startCell: hit.cell, ids };
+    } else {
+      if (!e.shiftKey) ui.select(n.id, []);
+      machine.current = { kind: 'banding', index: hit.index, start: p };
+    }
+  };
+
+  const onPointerMove = (e: ReactPointerEvent<HTMLDivElement>) => {
+    const m = machine.current;
+    const el = scrollRef.current;
+    if (!el) return;
+    if (m.kind === 'panning') {
+      el.scrollLeft = m.left - (e.clientX - m.clientX);
+      el.scrollTop = m.top - (e.clientY - m.clientY);
+      return;
+    }
+    const p = contentPoint(e);
+    const { layout, networks } = view.current;
+    if (m.kind === 'pressing' || m.kind === 'dragging') {
+      if (m.kind === 'pressing' && Math.hypot(p.x - m.start.x, p.y - m.start.y) < 4) return;
+      const n = networks[m.index];
+      if (!n) return;
+      const { dRow, dCol } = cellDelta(m.start, p);
+      machine.current = { ...m, kind: 'dragging' };
+      if (drag?.dRow !== dRow || drag?.dCol !== dCol || drag?.network !== n.id) {
+        setDrag({ network: n.id, ids: new Set(m.ids), dRow, dCol, blocked: !canMove(n, m.ids, dRow, dCol) });
+      }
+      return;
+    }
+    if (m.kind === 'banding') {
+      setBand({ index: m.index, from: m.start, to: p });
+      return;
+    }
+    const hit = hitTest(layout, networks, p);
+    const next = hit.area === 'grid' && hit.cell.col < (networks[hit.index]?.cols ?? 0) ? { index: hit.index, cell: hit.cell } : undefined;
+    if (next?.index !== hover?.index || next?.cell.row !== hover?.cell.row || next?.cell.col !== hover?.cell.col) setHover(next);
+  };
+
+  const finish = (e: ReactPointerEvent<HTMLDivElement>) => {
+    const m = machine.current;
+    machine.current = { kind: 'idle' };
+    if (e.currentTarget.hasPointerCapture(e.pointerId)) e.currentTarget.releasePointerCapture(e.pointerId);
+    const { layout, networks } = view.current;
+    if (m.kind === 'dragging') {
+      const n = networks[m.index];
+      const { dRow, dCol } = cellDelta(m.start, contentPoint(e));
+      setDrag(undefined);
+      if (n && (dRow !== 0 || dCol !== 0)) {
+        const moved = ctx.doc.getState().moveElements(n.id, m.ids, dRow, dCol);
+        if (moved) ctx.ui.getState().setCursor({ network: n.id, row: m.startCell.row + dRow, col: m.startCell.col + dCol });
+        else ctx.ui.getState().setStatus('Cannot move there: another element is in the way.');
+      }
+    } else if (m.kind === 'banding') {
+      setBand(undefined);
+      const n = networks[m.index];
+      const p = contentPoint(e);
+      if (!n || Math.hypot(p.x - m.start.x, p.y - m.start.y) < 4) return;
+      const o = gridOrigin(n);
+      const top = layout.tops[m.index]! + o.y;
+      const x1 = Math.min(m.start.x, p.x) - o.x;
+      const x2 = Math.max(m.start.x, p.x) - o.x;
+      const y1 = Math.min(m.start.y, p.y) - top;
+      const y2 = Math.max(m.start.y, p.y) - top;
+      const inside = n.elements.filter((el) => {
+        const s = elementSize(el);
+        const cx = (el.col + s.cols / 2) * CELL_W;
+        const cy = (el.row + s.rows / 2) * CELL_H;
+        return cx >= x1 && cx <= x2 && cy >= y1 && cy <= y2;
+      });
+      const ui = ctx.ui.getState();
+      const keep = e.shiftKey && ui.selection.network === n.id ? ui.selection.elements : [];
+      ui.select(n.id, [...new Set([...keep, ...inside.map((el) => el.id)])]);
+    }
+  };
+
+  const onDoubleClick = (e: React.MouseEvent<HTMLDivElement>) => {
+    if (!(e.target instanceof HTMLCanvasElement)) return;
+    const { layout, networks } = view.current;
+    const hit = hitTest(layout, networks, contentPoint(e));
+    if (hit.area !== 'grid') return;
+    const el = elementAt(networks[hit.index]!, hit.cell);
+    if (el && needsName(el)) ctx.ui.getState().startEditing(el.id);
+  };
+
+  return {
+    drag,
+    band,
+    hover,
+    handlers: { onPointerDown, onPointerMove, onPointerUp: finish, onPointerCancel: finish, onDoubleClick, onPointerLeave: () => setHover(undefined) },
+  };
+}

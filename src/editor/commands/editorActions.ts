@@ -1,0 +1,188 @@
+// What the editor's commands do, over the document and UI stores. Shared by shortcuts, menus,
+// the palette and the canvas's pointer tools, so every path behaves the same.
+import { elementSize } from '../../model/factory';
+import type { LdElement } from '../../model/elements';
+import type { Cell } from '../../model/grid';
+import type { ElementId, NetworkId } from '../../model/ids';
+import type { Network } from '../../model/project';
+import { selectNetworks, type DocumentStore } from '../../store/documentStore';
+import { elementAt, type ElementTemplate } from '../../store/networkEdits';
+import type { CursorCell, UiStore } from '../../store/uiStore';
+
+export interface EditorContext {
+  readonly doc: DocumentStore;
+  readonly ui: UiStore;
+}
+
+export const networksOf = (ctx: EditorContext): readonly Network[] => selectNetworks(ctx.doc.getState());
+export const networkById = (ctx: EditorContext, id: NetworkId | undefined): Network | undefined =>
+  id ? networksOf(ctx).find((n) => n.id === id) : undefined;
+
+/** Elements that take a name typed right after placing them. */
+export const needsName = (el: Pick<LdElement, 'kind'> & Partial<{ contact: string; instance: string }>): boolean =>
+  el.kind === 'coil' || el.kind === 'jump' || (el.kind === 'contact' && el.contact !== 'NOT') || (el.kind === 'box' && el.instance !== undefined);
+
+/** The cursor, placed on the first open network when there is none (a network is added if needed). */
+export function ensureCursor(ctx: EditorContext): CursorCell {
+  const ui = ctx.ui.getState();
+  const nets = networksOf(ctx);
+  const current = ui.cursor && nets.find((n) => n.id === ui.cursor!.network && !n.collapsed);
+  if (ui.cursor && current) return ui.cursor;
+  let target = nets.find((n) => !n.collapsed);
+  if (!target) {
+    const id = ctx.doc.getState().addNetwork();
+    target = networksOf(ctx).find((n) => n.id === id)!;
+  }
+  const cursor = { network: target.id, row: 0, col: 0 };
+  ctx.ui.getState().setCursor(cursor);
+  return cursor;
+}
+
+/** Places a template at a cell (inserting in series on another element), selects it, and opens the name editor when it takes one. */
+export function placeAt(ctx: EditorContext, network: NetworkId, cell: Cell, t: ElementTemplate): ElementId | undefined {
+  const id = ctx.doc.getState().placeElement(network, cell, t);
+  const ui = ctx.ui.getState();
+  if (!id) {
+    ui.setStatus('No room there: a box is in the way.');
+    return undefined;
+  }
+  ui.select(network, [id]);
+  const el = networkById(ctx, network)?.elements.find((e) => e.id === id);
+  if (!el) return id;
+  ui.setCursor({ network, row: el.row, col: el.col });
+  if (needsName(el)) ui.startEditing(id);
+  else advancePast(ctx, network, el);
+  return id;
+}
+
+/** Moves the cursor to the cell right of an element (after placing or naming it). */
+export function advancePast(ctx: EditorContext, network: NetworkId, el: LdElement) {
+  const n = networkById(ctx, network);
+  if (!n) return;
+  const col = Math.min(n.cols - 1, el.col + elementSize(el).cols);
+  ctx.ui.getState().setCursor({ network, row: el.row, col });
+}
+
+export function placeAtCursor(ctx: EditorContext, t: ElementTemplate): ElementId | undefined {
+  const c = ensureCursor(ctx);
+  return placeAt(ctx, c.network, c, t);
+}
+
+/** Moves the cursor by cells; past the top/bottom row it continues in the previous/next open network. */
+export function moveCursor(ctx: EditorContext, dRow: number, dCol: number) {
+  const c = ensureCursor(ctx);
+  const nets = networksOf(ctx);
+  let index = nets.findIndex((n) => n.id === c.network);
+  let row = c.row + dRow;
+  let col = c.col + dCol;
+  let n = nets[index]!;
+  while (row < 0 || row >= n.rows) {
+    const step = row < 0 ? -1 : 1;
+    let next = index + step;
+    while (nets[next]?.collapsed) next += step;
+    const target = nets[next];
+    if (!target) {
+      row = Math.max(0, Math.min(n.rows - 1, row));
+      break;
+    }
+    index = next;
+    n = target;
+    row = step < 0 ? n.rows - 1 : 0;
+  }
+  col = Math.max(0, Math.min(n.cols - 1, col));
+  ctx.ui.getState().setCursor({ network: n.id, row, col });
+  const el = elementAt(n, { row, col });
+  ctx.ui.getState().select(n.id, el ? [el.id] : []);
+}
+
+/** The elements a command acts on: the selection, else the element under the cursor. */
+export function targets(ctx: EditorContext): { network: NetworkId; ids: ElementId[] } | undefined {
+  const ui = ctx.ui.getState();
+  const sel = ui.selection;
+  if (sel.network && sel.elements.length > 0 && networkById(ctx, sel.network)) return { network: sel.network, ids: [...sel.elements] };
+  if (!ui.cursor) return undefined;
+  const n = networkById(ctx, ui.cursor.network);
+  const el = n && elementAt(n, ui.cursor);
+  return n && el ? { network: n.id, ids: [el.id] } : undefined;
+}
+
+export function deleteTargets(ctx: EditorContext) {
+  const t = targets(ctx);
+  if (!t) return;
+  ctx.doc.getState().deleteElements(t.network, t.ids);
+  ctx.ui.getState().select(t.network, []);
+}
+
+export function wrapTargetsInBranch(ctx: EditorContext) {
+  const t = targets(ctx);
+  if (!t) return ctx.ui.getState().setStatus('Select the elements to put a parallel branch around.');
+  ctx.doc.getState().wrapInParallelBranch(t.network, t.ids);
+}
+
+export function duplicateTargets(ctx: EditorContext) {
+  const t = targets(ctx);
+  if (!t) return;
+  const ids = ctx.doc.getState().duplicateElements(t.network, t.ids);
+  ctx.ui.getState().select(t.network, ids);
+}
+
+/** Enter: edit the name of the element under the cursor (or the single selected element). */
+export function editAtCursor(ctx: EditorContext) {
+  const t = targets(ctx);
+  const n = t && networkById(ctx, t.network);
+  const el = n?.elements.find((e) => e.id === t?.ids[0]);
+  if (!el) return;
+  if (!needsName(el)) return ctx.ui.getState().setStatus(el.kind === 'box' ? 'Edit the pins in the Inspector.' : 'This element has no name to edit.');
+  ctx.ui.getState().startEditing(el.id);
+}
+
+/** Vertical link down from the cursor cell's left edge (or right edge). */
+export function toggleVLinkAtCursor(ctx: EditorContext, side: 'left' | 'right') {
+  const c = ensureCursor(ctx);
+  const boundary = side === 'left' ? c.col : c.col + 1;
+  ctx.doc.getState().toggleVLink(c.network, { row: c.row, boundary });
+}
+
+export function selectAllInNetwork(ctx: EditorContext) {
+  const c = ctx.ui.getState().cursor ?? ensureCursor(ctx);
+  const n = networkById(ctx, c.network);
+  if (n) ctx.ui.getState().select(n.id, n.elements.map((e) => e.id));
+}
+
+/** Network the cursor or selection is in (else the last one). */
+export function currentNetworkIndex(ctx: EditorContext): number {
+  const nets = networksOf(ctx);
+  const ui = ctx.ui.getState();
+  const id = ui.cursor?.network ?? ui.selection.network;
+  const i = nets.findIndex((n) => n.id === id);
+  return i >= 0 ? i : nets.length - 1;
+}
+
+export function insertNetworkBelow(ctx: EditorContext) {
+  const id = ctx.doc.getState().insertNetwork(currentNetworkIndex(ctx) + 1);
+  ctx.ui.getState().focusCell(id, { row: 0, col: 0 });
+}
+
+export function deleteCurrentNetwork(ctx: EditorContext) {
+  const nets = networksOf(ctx);
+  const i = currentNetworkIndex(ctx);
+  const n = nets[i];
+  if (!n) return;
+  ctx.doc.getState().deleteNetwork(n.id);
+  const next = networksOf(ctx)[Math.min(i, nets.length - 2)];
+  ctx.ui.getState().clearSelection();
+  ctx.ui.getState().setCursor(next ? { network: next.id, row: 0, col: 0 } : undefined);
+}
+
+export function escape(ctx: EditorContext) {
+  const ui = ctx.ui.getState();
+  if (ui.blockPicker) return ui.closeBlockPicker();
+  if (ui.tool.kind !== 'select') return ui.setTool({ kind: 'select' });
+  ui.select(undefined, []);
+}
+
+/** Zoom so the widest network fits the visible width. */
+export function zoomToFit(ctx: EditorContext, contentWidth: number) {
+  const ui = ctx.ui.getState();
+  ui.setZoom(Math.min(1.5, (ui.viewport.width - 24) / Math.max(1, contentWidth)));
+}

@@ -1,0 +1,72 @@
+// Global keyboard shortcuts from the command registry. Typing in a field never triggers them.
+import { useEffect } from 'react';
+import { parseClip } from '../../store/clipboard';
+import { copyText, pasteInPage, pasteText } from './clipboardActions';
+import type { EditorContext } from './editorActions';
+import { matches, parseKeys } from './keys';
+import { COMMANDS } from './registry';
+
+const BINDINGS = COMMANDS.flatMap((command) => (command.keys ?? []).map((k) => ({ spec: parseKeys(k), command })));
+
+export function isTypingTarget(target: EventTarget | null): boolean {
+  if (!(target instanceof HTMLElement)) return false;
+  const tag = target.tagName;
+  return tag === 'INPUT' || tag === 'TEXTAREA' || tag === 'SELECT' || target.isContentEditable;
+}
+
+export function useShortcuts(ctx: EditorContext) {
+  useEffect(() => {
+    // Ctrl+V: the browser follows the key with a paste event carrying the system clipboard;
+    // when it does not (no permission), paste the in-page copy instead.
+    let pendingPaste: ReturnType<typeof setTimeout> | undefined;
+
+    const onKeyDown = (e: KeyboardEvent) => {
+      if (e.defaultPrevented || isTypingTarget(e.target)) return;
+      const ui = ctx.ui.getState();
+      if (ui.editing || ui.blockPicker) return;
+      const binding = BINDINGS.find((b) => matches(b.spec, e));
+      if (!binding) return;
+      if (binding.command.id === 'edit.paste') {
+        if (pendingPaste) clearTimeout(pendingPaste);
+        pendingPaste = setTimeout(() => {
+          pendingPaste = undefined;
+          pasteInPage(ctx);
+        }, 50);
+        return;
+      }
+      if (binding.command.enabled && !binding.command.enabled(ctx)) return;
+      e.preventDefault();
+      ui.setStatus('');
+      binding.command.run(ctx);
+    };
+
+    const onPaste = (e: ClipboardEvent) => {
+      if (isTypingTarget(e.target)) return;
+      if (pendingPaste) clearTimeout(pendingPaste);
+      pendingPaste = undefined;
+      const text = e.clipboardData?.getData('text/plain');
+      e.preventDefault();
+      if (text && parseClip(text)) pasteText(ctx, text);
+      else pasteInPage(ctx);
+    };
+
+    const onCopy = (e: ClipboardEvent) => {
+      if (isTypingTarget(e.target)) return;
+      const text = copyText(ctx);
+      if (text && e.clipboardData) {
+        e.clipboardData.setData('text/plain', text);
+        e.preventDefault();
+      }
+    };
+
+    window.addEventListener('keydown', onKeyDown);
+    document.addEventListener('paste', onPaste);
+    document.addEventListener('copy', onCopy);
+    return () => {
+      if (pendingPaste) clearTimeout(pendingPaste);
+      window.removeEventListener('keydown', onKeyDown);
+      document.removeEventListener('paste', onPaste);
+      document.removeEventListener('copy', onCopy);
+    };
+  }, [ctx]);
+}

@@ -1,0 +1,59 @@
+// The File menu: New, Open, Save and the built-in examples, as commands shaped like the command
+// registry's EditorCommand (src/editor/commands/registry.ts): { id, label, group, keys?, inMenu, run(ctx) }
+// where ctx only needs { doc } (an EditorContext fits).
+//
+// The shell must also mount <FilesHost /> (src/editor/files/FilesHost.tsx) once, inside the
+// DocumentStoreProvider: it restores the autosave on start, keeps autosaving, and renders the
+// file picker, the "discard unsaved changes?" dialog, open errors and notices.
+import type { DocumentStore } from '../../store/documentStore';
+import { newProject, openProjectFile, saveProjectFile } from './fileActions';
+
+export interface FileCommandContext {
+  readonly doc: DocumentStore;
+}
+
+export interface FileMenuCommand {
+  readonly id: string;
+  readonly label: string;
+  /** 'File' for New/Open/Save, 'Examples' for the example projects (a submenu or a second menu). */
+  readonly group: 'File' | 'Examples';
+  /** Shortcut specs as in commands/keys.ts; the first is the one shown. */
+  readonly keys?: readonly string[];
+  readonly inMenu: true;
+  /** Tooltip / menu hint. */
+  readonly description: string;
+  run(ctx: FileCommandContext): void;
+}
+
+export const FILE_COMMANDS: readonly FileMenuCommand[] = [
+  {
+    id: 'file.new',
+    label: 'New project',
+    group: 'File',
+    keys: ['mod+alt+n'],
+    inMenu: true,
+    description: 'Start an empty project (asks before discarding unsaved changes)',
+    run: ({ doc }) => newProject(doc),
+  },
+  {
+    id: 'file.open',
+    label: 'Open…',
+    group: 'File',
+    keys: ['mod+o'],
+    inMenu: true,
+    description: 'Open a Rungsmith project file (.json)',
+    run: () => openProjectFile(),
+  },
+  {
+    id: 'file.save',
+    label: 'Save',
+    group: 'File',
+    keys: ['mod+s'],
+    inMenu: true,
+    description: 'Download the project as a .json file',
+    run: ({ doc }) => saveProjectFile(doc),
+  },
+];
+
+/** Everything for the File menu, New/Open/Save first, then the examples. */
+export const FILE_MENU_COMMANDS: readonly FileMenuCommand[] = [...FILE_COMMANDS];

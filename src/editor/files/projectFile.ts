@@ -1,0 +1,34 @@
+// Saving the project as a .json download and reading an uploaded one.
+import { loadProject, saveProject, type LoadResult } from '../../model/load';
+import type { Project } from '../../model/project';
+
+/** A file name from the project name: "Motor start/stop" -> "Motor_start_stop.json". */
+export function projectFileName(project: Project): string {
+  const base = project.name.trim().replace(/[^A-Za-z0-9._-]+/g, '_').replace(/^_+|_+$/g, '');
+  return `${base || 'project'}.json`;
+}
+
+/** Offers the project as a download through the browser. */
+export function downloadProject(project: Project): string {
+  const name = projectFileName(project);
+  const url = URL.createObjectURL(new Blob([saveProject(project)], { type: 'application/json' }));
+  const a = document.createElement('a');
+  a.href = url;
+  a.download = name;
+  a.style.display = 'none';
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  // Revoke after the click has been handled; the download keeps its own reference.
+  setTimeout(() => URL.revokeObjectURL(url), 10_000);
+  return name;
+}
+
+/** Reads and validates an uploaded project file. Never throws. */
+export async function readProjectFile(file: File): Promise<LoadResult> {
+  try {
+    return loadProject(await file.text());
+  } catch (e) {
+    return { ok: false, errors: [{ path: '(file)', message: `could not read ${file.name}: ${(e as Error).message}` }] };
+  }
+}

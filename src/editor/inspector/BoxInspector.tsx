@@ -1,0 +1,92 @@
+// A function or function block box: instance, number of inputs, and the operand of every pin
+// (a variable, `Instance.Pin`, or a literal such as T#5s).
+import { blockSignature } from '../../model/blocks';
+import { boxLayout } from '../../model/boxLayout';
+import type { BoxElement } from '../../model/elements';
+import type { ElementId } from '../../model/ids';
+import { useDocumentStore } from '../../store/documentStore';
+import { patchElement, type KindPatch } from './patchElement';
+import { BindingField } from './BindingField';
+import { CommitInput } from '../variables/CommitInput';
+
+/** Operands with `pin` set to `text`, or removed when the text is empty. */
+function withOperand(rec: Readonly<Record<string, string>>, pin: string, text: string): Record<string, string> {
+  const out = { ...rec };
+  if (text.trim() === '') delete out[pin];
+  else out[pin] = text.trim();
+  return out;
+}
+
+export function BoxInspector({ box }: { box: BoxElement }) {
+  const store = useDocumentStore();
+  const signature = blockSignature(box.blockType);
+  const layout = boxLayout(box);
+  if (!signature || !layout) {
+    return <p className="rs-error-text">"{box.blockType}" is not a standard function or function block; delete the box or load a project that defines it.</p>;
+  }
+  const update = (id: ElementId, patch: KindPatch) => patchElement(store, id, patch);
+  const isFb = signature.kind === 'fb';
+  const powerIn = isFb ? layout.inputs.find((p) => p.type === 'BOOL')?.name : 'EN';
+  const powerOut = isFb ? layout.outputs.find((p) => p.type === 'BOOL')?.name : 'ENO';
+  const ext = signature.extensible;
+  return (
+    <>
+      <p className="rs-inspector-where">{signature.description}</p>
+      {isFb && (
+        <BindingField
+          label="Instance"
+          value={box.instance ?? ''}
+          role={{ kind: 'instance', blockType: signature.name }}
+          placeholder={`e.g. ${signature.name === 'TON' ? 'T1' : `${signature.name}_1`}`}
+          testId="inspector-instance"
+          onCommit={(instance) => update(box.id, { instance })}
+        />
+      )}
+      {ext && (
+        <div className="rs-field">
+          <label htmlFor={`inputs-${box.id}`}>Inputs</label>
+          <CommitInput
+            id={`inputs-${box.id}`}
+            type="number"
+            min={ext.min}
+            max={ext.max}
+            className="rs-cell-input"
+            value={String(layout.inputs.filter((p) => p.name.startsWith(ext.prefix) && /^\d+$/.test(p.name.slice(ext.prefix.length))).length)}
+            onCommit={(text) => {
+              const n = Math.round(Number(text));
+              if (Number.isFinite(n)) update(box.id, { inputCount: Math.max(ext.min, Math.min(ext.max, n)) });
+            }}
+          />
+        </div>
+      )}
+      <h3>Inputs</h3>
+      {layout.inputs
+        .filter((pin) => pin.name !== 'EN')
+        .map((pin) => (
+          <BindingField
+            key={pin.name}
+            label={`${pin.name} : ${pin.type}`}
+            value={box.inputs[pin.name] ?? ''}
+            role={{ kind: 'pin', pinType: pin.type, direction: 'input' }}
+            placeholder={pin.name === powerIn ? 'power flow from the left' : 'variable or literal'}
+            testId={`pin-${pin.name}`}
+            onCommit={(text) => update(box.id, { inputs: withOperand(box.inputs, pin.name, text) })}
+          />
+        ))}
+      <h3>Outputs</h3>
+      {layout.outputs
+        .filter((pin) => pin.name !== 'ENO')
+        .map((pin) => (
+          <BindingField
+            key={pin.name}
+            label={`${pin.name} : ${pin.type}`}
+            value={box.outputs[pin.name] ?? ''}
+            role={{ kind: 'pin', pinType: pin.type, direction: 'output' }}
+            placeholder={pin.name === powerOut ? 'power flow to the right' : 'assign to a variable'}
+            testId={`pin-${pin.name}`}
+            onCommit={(text) => update(box.id, { outputs: withOperand(box.outputs, pin.name, text) })}
+          />
+        ))}
+    </>
+  );
+}

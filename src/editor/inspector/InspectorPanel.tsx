@@ -1,0 +1,45 @@
+// The inspector: the selected element, else the selected network, else the project.
+import { selectActivePou, useDocument } from '../../store/documentStore';
+import { selectSelection, useUi } from '../../store/uiStore';
+import { ElementInspector } from './ElementInspector';
+import { NetworkInspector } from './NetworkInspector';
+import { ProjectInspector } from './ProjectInspector';
+import { elementTitle } from './elementWords';
+import './inspector.css';
+
+export function InspectorPanel() {
+  const pou = useDocument(selectActivePou);
+  const selection = useUi(selectSelection);
+  const index = pou && selection.network ? pou.networks.findIndex((n) => n.id === selection.network) : -1;
+  const network = pou?.networks[index];
+  const labels = (pou?.networks ?? []).flatMap((n) => (n.label ? [n.label] : []));
+  const elements = network ? network.elements.filter((e) => selection.elements.includes(e.id)) : [];
+
+  let body;
+  if (!network) body = <ProjectInspector />;
+  else if (elements.length === 1 && elements[0]) {
+    body = <ElementInspector key={elements[0].id} element={elements[0]} network={network} networkIndex={index} labels={labels} />;
+  } else if (elements.length > 1) {
+    body = (
+      <div data-testid="multi-inspector">
+        <h2>{elements.length} elements selected</h2>
+        <ul>
+          {elements.map((e) => (
+            <li key={e.id}>
+              {elementTitle(e)}
+              {(e.kind === 'contact' || e.kind === 'coil') && e.variable ? ` ${e.variable}` : ''}
+            </li>
+          ))}
+        </ul>
+      </div>
+    );
+  } else {
+    const others = (pou?.networks ?? []).filter((n) => n.id !== network.id).flatMap((n) => (n.label ? [n.label] : []));
+    body = <NetworkInspector key={network.id} network={network} index={index} otherLabels={others} />;
+  }
+  return (
+    <section className="rs-inspector" aria-label="Inspector" data-testid="inspector-panel">
+      {body}
+    </section>
+  );
+}

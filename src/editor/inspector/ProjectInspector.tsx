@@ -1,0 +1,42 @@
+// Nothing selected: the project itself (name, description, semantics profile).
+import type { Profile } from '../../model/project';
+import { selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
+import { CommitInput } from '../variables/CommitInput';
+
+export function ProjectInspector() {
+  const store = useDocumentStore();
+  const project = useDocument(selectProject);
+  const networks = project.pous.reduce((n, p) => n + p.networks.length, 0);
+  return (
+    <div data-testid="project-inspector">
+      <h2>Project</h2>
+      <p className="rs-inspector-where">
+        {project.pous.length} POU{project.pous.length === 1 ? '' : 's'}, {networks} network{networks === 1 ? '' : 's'}. Select an element or a network to
+        edit it.
+      </p>
+      <div className="rs-field">
+        <label htmlFor="project-name">Name</label>
+        <CommitInput id="project-name" className="rs-cell-input" value={project.name} onCommit={(name) => store.getState().updateProject({ name })} />
+        <label htmlFor="project-profile">Semantics</label>
+        <select
+          id="project-profile"
+          className="rs-cell-input"
+          value={project.profile}
+          onChange={(e) => store.getState().setProjectProfile(e.target.value as Profile)}
+        >
+          <option value="iec">IEC 61131-3 (standard)</option>
+          <option value="openplc">OpenPLC / MATIEC</option>
+        </select>
+      </div>
+      <div className="rs-field">
+        <label htmlFor="project-description">Description</label>
+        <textarea
+          id="project-description"
+          key={project.description}
+          defaultValue={project.description}
+          onBlur={(e) => e.target.value !== project.description && store.getState().updateProject({ description: e.target.value })}
+        />
+      </div>
+    </div>
+  );
+}

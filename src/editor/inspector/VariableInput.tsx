@@ -1,0 +1,170 @@
+// A name field with completion from the variable table (an ARIA combobox). Typing an undeclared
+// name offers to declare it right in the list ("Declare Motor : BOOL output at %QX0.0"); choosing
+// that declares the variable and binds it as one undo step.
+//
+// Used by the inspector and by the canvas's inline editor:
+//   <VariableInput value={el.variable} role={{ kind: 'contact' }} onCommit={(name) => ...} onCancel={...} autoFocus />
+// onCommit gets the final text (trimmed); it is called inside a document batch when a declaration
+// was chosen, so the caller's own edit joins the same undo step.
+import { useId, useMemo, useState, type KeyboardEvent } from 'react';
+import { parseLiteral } from '../../engine/values/literals';
+import { selectActivePou, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
+import { declareChoices, type DeclareChoice } from './declareOffer';
+import { candidatesFor, rankCandidates, resolveName, type BindingRole, type Candidate } from './operands';
+import './inspector.css';
+
+export interface VariableInputProps {
+  readonly value: string;
+  readonly role: BindingRole;
+  readonly onCommit: (text: string) => void;
+  /** Escape with the list closed. */
+  readonly onCancel?: () => void;
+  /** Leaving the field commits the text (inspector); false: leaving cancels (inline editor). Default true. */
+  readonly commitOnBlur?: boolean;
+  readonly autoFocus?: boolean;
+  readonly placeholder?: string;
+  readonly 'aria-label'?: string;
+  readonly 'data-testid'?: string;
+  readonly className?: string;
+}
+
+type Option = { readonly kind: 'candidate'; readonly candidate: Candidate } | { readonly kind: 'declare'; readonly choice: DeclareChoice };
+
+/** Input pins accept literals (`T#5s`, `10`), which need no completion and no declaration. */
+const isLiteralFor = (role: BindingRole, text: string) => role.kind === 'pin' && role.direction === 'input' && parseLiteral(text.trim()).ok;
+
+export function VariableInput(props: VariableInputProps) {
+  const { value, role, onCommit, onCancel, commitOnBlur = true } = props;
+  const store = useDocumentStore();
+  const project = useDocument(selectProject);
+  const pou = useDocument(selectActivePou);
+  const listId = useId();
+  const [draft, setDraft] = useState<string | undefined>(undefined);
+  const [open, setOpen] = useState(false);
+  const [active, setActive] = useState(0);
+  const text = draft ?? value;
+
+  const options = useMemo<Option[]>(() => {
+    if (!pou || isLiteralFor(role, text)) return [];
+    const ranked = rankCandidates(text, candidatesFor(project, pou, role)).map((candidate) => ({ kind: 'candidate' as const, candidate }));
+    const resolution = resolveName(project, pou, text);
+    const declares =
+      resolution.status === 'undeclared' ? declareChoices(project, text, role).map((choice) => ({ kind: 'declare' as const, choice })) : [];
+    return [...ranked, ...declares];
+  }, [project, pou, role, text]);
+  const shown = open && options.length > 0;
+  const activeIndex = Math.min(active, options.length - 1);
+
+  const finish = (final: string) => {
+    setDraft(undefined);
+    setOpen(false);
+    setActive(0);
+    if (final.trim() !== value.trim()) onCommit(final.trim());
+  };
+  const choose = (option: Option) => {
+    if (option.kind === 'candidate') return finish(option.candidate.text);
+    const name = option.choice.variable.name;
+    store.getState().batch('declareVariable', () => {
+      store.getState().addVariable(option.choice.variable);
+      setDraft(undefined);
+      setOpen(false);
+      setActive(0);
+      onCommit(name);
+    });
+  };
+
+  const onKeyDown = (e: KeyboardEvent<HTMLInputElement>) => {
+    e.stopPropagation(); // typing here never triggers canvas shortcuts
+    if (e.key === 'ArrowDown' || e.key === 'ArrowUp') {
+      e.preventDefault();
+      if (!shown) return setOpen(true);
+      const step = e.key === 'ArrowDown' ? 1 : -1;
+      setActive((activeIndex + step + options.length) % options.length);
+    } else if (e.key === 'Enter') {
+      e.preventDefault();
+      const option = shown ? options[activeIndex] : undefined;
+      if (option) choose(option);
+      else finish(text);
+    } else if (e.key === 'Escape') {
+      e.preventDefault();
+      if (shown) setOpen(false);
+      else {
+        setDraft(undefined);
+        onCancel?.();
+      }
+    } else if (e.key === 'Tab' && shown) {
+      const option = options[activeIndex];
+      if (option?.kind === 'candidate') {
+        e.preventDefault();
+        setDraft(option.candidate.text);
+        setOpen(false);
+      }
+    }
+  };
+
+  return (
+    <div className={`rs-varinput ${props.className ?? ''}`}>
+      <input
+        role="combobox"
+        aria-label={props['aria-label'] ?? 'Variable'}
+        aria-expanded={shown}
+        aria-controls={listId}
+        aria-autocomplete="list"
+        aria-activedescendant={shown ? `${listId}-${activeIndex}` : undefined}
+        data-testid={props['data-testid']}
+        className="rs-cell-input rs-mono"
+        autoFocus={props.autoFocus}
+        spellCheck={false}
+        autoComplete="off"
+        placeholder={props.placeholder}
+        value={text}
+        onChange={(e) => {
+          setDraft(e.target.value);
+          setOpen(true);
+          setActive(0);
+        }}
+        onFocus={() => setOpen(true)}
+        onBlur={() => {
+          if (commitOnBlur) finish(text);
+          else {
+            setDraft(undefined);
+            setOpen(false);
+            onCancel?.();
+          }
+        }}
+        onKeyDown={onKeyDown}
+      />
+      {shown && (
+        <ul id={listId} role="listbox" className="rs-completions" aria-label="Suggestions">
+          {options.map((option, i) => (
+            <li
+              key={option.kind === 'candidate' ? `c:${option.candidate.text}` : `d:${option.choice.label}`}
+              id={`${listId}-${i}`}
+              role="option"
+              aria-selected={i === activeIndex}
+              className={option.kind === 'declare' ? 'rs-completion rs-declare' : 'rs-completion'}
+              onMouseDown={(e) => e.preventDefault()} // keep focus in the field
+              onMouseEnter={() => setActive(i)}
+              onClick={() => choose(option)}
+            >
+              {option.kind === 'candidate' ? (
+                <>
+                  <span className="rs-mono">{option.candidate.text}</span>
+                  <span className="rs-completion-type">{option.candidate.type}</span>
+                  <span className="rs-completion-detail">{option.candidate.detail}</span>
+                </>
+              ) : (
+                <>
+                  <span>
+                    Declare <span className="rs-mono">{option.choice.variable.name}</span>
+                  </span>
+                  <span className="rs-completion-type">{option.choice.label}</span>
+                </>
+              )}
+            </li>
+          ))}
+        </ul>
+      )}
+    </div>
+  );
+}

@@ -1,0 +1,128 @@
+// Everything the palette can place, with its keyboard shortcut (the same shortcut the command
+// registry binds). Blocks (every standard FB and library function) come from src/model/blocks.ts.
+import { boxLayoutFor } from '../../model/boxLayout';
+import { FB_SIGNATURES, FUNCTION_SIGNATURES, type BlockSignature } from '../../model/blocks';
+import type { CoilType, ContactType } from '../../model/elements';
+import type { ElementTemplate } from '../../store/networkEdits';
+
+export interface PaletteItem {
+  /** Stable id, also the command id suffix: 'contact-NO' -> command 'place.contact-NO'. */
+  readonly id: string;
+  readonly label: string;
+  /** The IEC symbol as text, shown on the palette button. */
+  readonly symbol: string;
+  readonly group: 'Contacts' | 'Coils' | 'Wires' | 'Control';
+  readonly template: ElementTemplate;
+  /** Key spec for the command registry (see commands/keys.ts), e.g. 'shift+c'. */
+  readonly keys?: string;
+  readonly description: string;
+}
+
+const contact = (c: ContactType, label: string, symbol: string, keys: string | undefined, description: string): PaletteItem => ({
+  id: `contact-${c}`,
+  label,
+  symbol,
+  group: 'Contacts',
+  template: { kind: 'contact', contact: c, variable: '' },
+  ...(keys ? { keys } : {}),
+  description,
+});
+
+const coil = (c: CoilType, label: string, symbol: string, keys: string | undefined, description: string): PaletteItem => ({
+  id: `coil-${c}`,
+  label,
+  symbol,
+  group: 'Coils',
+  template: { kind: 'coil', coil: c, variable: '' },
+  ...(keys ? { keys } : {}),
+  description,
+});
+
+export const PALETTE_ITEMS: readonly PaletteItem[] = [
+  contact('NO', 'Normally open contact', '-| |-', 'c', 'Passes power when the variable is TRUE.'),
+  contact('NC', 'Normally closed contact', '-|/|-', 'shift+c', 'Passes power when the variable is FALSE.'),
+  contact('P', 'Positive transition contact', '-|P|-', 'p', 'Passes power for one evaluation when the variable rises.'),
+  contact('N', 'Negative transition contact', '-|N|-', 'shift+p', 'Passes power for one evaluation when the variable falls.'),
+  contact('NOT', 'Inverting contact', '-|NOT|-', 'i', 'Inverts the power flow (no variable).'),
+  coil('COIL', 'Coil', '-( )-', 'o', 'Writes the power flow to the variable.'),
+  coil('NEG', 'Negated coil', '-(/)-', 'shift+o', 'Writes the inverted power flow to the variable.'),
+  coil('SET', 'Set coil', '-(S)-', 's', 'Sets the variable TRUE while powered (latch).'),
+  coil('RESET', 'Reset coil', '-(R)-', 'r', 'Resets the variable FALSE while powered (unlatch).'),
+  coil('M', 'Retentive coil', '-(M)-', 'm', 'A coil whose variable is kept over a warm restart.'),
+  coil('SM', 'Retentive set coil', '-(SM)-', 'shift+s', 'A set coil whose variable is retentive.'),
+  coil('RM', 'Retentive reset coil', '-(RM)-', 'shift+r', 'A reset coil whose variable is retentive.'),
+  coil('P', 'Positive transition coil', '-(P)-', undefined, 'TRUE for one evaluation when the power flow rises.'),
+  coil('N', 'Negative transition coil', '-(N)-', undefined, 'TRUE for one evaluation when the power flow falls.'),
+  {
+    id: 'link',
+    label: 'Horizontal link',
+    symbol: '———',
+    group: 'Wires',
+    template: { kind: 'link' },
+    keys: 'h',
+    description: 'A wire: copies the state on its left to its right.',
+  },
+  {
+    id: 'jump',
+    label: 'Jump',
+    symbol: '->>L',
+    group: 'Control',
+    template: { kind: 'jump', target: '' },
+    keys: 'j',
+    description: 'When powered, execution continues at the network with this label.',
+  },
+  {
+    id: 'return',
+    label: 'Return',
+    symbol: '<RET>',
+    group: 'Control',
+    template: { kind: 'return' },
+    keys: 'shift+j',
+    description: 'When powered, the POU ends for this scan.',
+  },
+];
+
+/** The template of a box for a block: inputs/outputs empty, FB instance to be named. */
+export function boxTemplate(sig: BlockSignature): ElementTemplate {
+  const layout = boxLayoutFor(sig.name);
+  return {
+    kind: 'box',
+    blockType: sig.name,
+    ...(sig.kind === 'fb' ? { instance: '' } : {}),
+    ...(sig.extensible && layout ? { inputCount: sig.extensible.min } : {}),
+    inputs: {},
+    outputs: {},
+  };
+}
+
+export const ALL_BLOCKS: readonly BlockSignature[] = [...FB_SIGNATURES, ...FUNCTION_SIGNATURES];
+
+const CATEGORY_ORDER: readonly BlockSignature['category'][] = [
+  'timer',
+  'counter',
+  'edge',
+  'bistable',
+  'move',
+  'arithmetic',
+  'comparison',
+  'bitwise',
+  'selection',
+  'conversion',
+];
+
+/** Blocks whose name, category or description matches the query, FBs and common blocks first. */
+export function searchBlocks(query: string): BlockSignature[] {
+  const q = query.trim().toUpperCase();
+  const rank = (s: BlockSignature) => {
+    if (!q) return 0;
+    if (s.name === q) return 0;
+    if (s.name.startsWith(q)) return 1;
+    if (s.name.includes(q)) return 2;
+    if (s.category.toUpperCase().includes(q) || s.description.toUpperCase().includes(q)) return 3;
+    return -1;
+  };
+  return ALL_BLOCKS.map((s) => ({ s, r: rank(s) }))
+    .filter((x) => x.r >= 0)
+    .sort((a, b) => a.r - b.r || CATEGORY_ORDER.indexOf(a.s.category) - CATEGORY_ORDER.indexOf(b.s.category))
+    .map((x) => x.s);
+}

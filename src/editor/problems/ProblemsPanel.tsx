@@ -1,0 +1,84 @@
+// The problems list: every diagnostic with severity, rule id, network, cell and message.
+// Clicking one (or Enter on it) shows the place on the canvas and selects the element.
+import { useMemo, useState } from 'react';
+import type { Diagnostic } from '../../engine/api';
+import type { Project } from '../../model/project';
+import { elementCells } from '../../model/factory';
+import { useDocumentStore } from '../../store/documentStore';
+import { useUiStore } from '../../store/uiStore';
+import { countBySeverity, diagnosticCell, diagnosticNetwork, sortDiagnostics } from './describe';
+import { useDiagnostics } from './useDiagnostics';
+import './problems.css';
+
+/** The network and cell a diagnostic points at, resolved against the document. */
+function placeOf(project: Project, d: Diagnostic) {
+  const pou = project.pous.find((p) => p.name === d.pou);
+  const network = pou?.networks[d.network];
+  if (!pou || !network) return { pou, network: undefined, cell: undefined, element: undefined };
+  const element = d.elementId ? network.elements.find((e) => e.id === d.elementId) : undefined;
+  const cell = d.cell ?? (element ? elementCells(element)[0] : undefined);
+  return { pou, network, cell, element };
+}
+
+export function ProblemsPanel() {
+  const diagnostics = useDiagnostics();
+  const documentStore = useDocumentStore();
+  const uiStore = useUiStore();
+  const [showWarnings, setShowWarnings] = useState(true);
+  const sorted = useMemo(() => sortDiagnostics(diagnostics), [diagnostics]);
+  const { errors, warnings } = countBySeverity(diagnostics);
+  const shown = showWarnings ? sorted : sorted.filter((d) => d.severity === 'error');
+  const manyPous = new Set(diagnostics.map((d) => d.pou)).size > 1;
+
+  const jump = (d: Diagnostic) => {
+    const doc = documentStore.getState();
+    const { pou, network, cell, element } = placeOf(doc.project, d);
+    if (!pou || !network) return;
+    if (pou.id !== doc.activePouId) doc.setActivePou(pou.id);
+    const ui = uiStore.getState();
+    if (element) ui.select(network.id, [element.id]);
+    else ui.select(network.id, []);
+    ui.focusCell(network.id, cell ?? { row: 0, col: 0 });
+  };
+
+  return (
+    <section className="rs-problems" aria-label="Problems" data-testid="problems-panel">
+      <header className="rs-problems-head">
+        <span data-testid="problems-summary" aria-live="polite">
+          {diagnostics.length === 0 ? 'No problems' : `${errors} error${errors === 1 ? '' : 's'}, ${warnings} warning${warnings === 1 ? '' : 's'}`}
+        </span>
+        <label className="rs-problems-toggle">
+          <input type="checkbox" checked={showWarnings} onChange={(e) => setShowWarnings(e.target.checked)} />
+          Show warnings
+        </label>
+      </header>
+      {shown.length > 0 && (
+        <ul className="rs-problems-list" aria-label="Problem list">
+          {shown.map((d, i) => (
+            <li key={`${d.rule}:${d.pou}:${d.network}:${d.elementId ?? ''}:${d.cell?.row ?? ''}:${d.cell?.col ?? ''}:${i}`}>
+              <button
+                type="button"
+                className={`rs-problem rs-${d.severity}`}
+                data-testid="problem"
+                data-rule={d.rule}
+                title="Show this place on the canvas"
+                onClick={() => jump(d)}
+              >
+                <span className="rs-problem-severity" aria-label={d.severity}>
+                  {d.severity === 'error' ? '⨯' : '!'}
+                </span>
+                <span className="rs-problem-rule">{d.rule}</span>
+                <span className="rs-problem-where">
+                  {manyPous ? `${d.pou} · ` : ''}
+                  {diagnosticNetwork(d)}
+                  {d.cell ? ` · ${diagnosticCell(d)}` : ''}
+                </span>
+                <span className="rs-problem-message">{d.message}</span>
+              </button>
+            </li>
+          ))}
+        </ul>
+      )}
+    </section>
+  );
+}

@@ -1,0 +1,97 @@
+// Every %I input of the program with a switch (toggle) and a push-button (TRUE while held);
+// word inputs take a typed value. Changes reach the PLC at its next input read.
+import { useMemo, useState } from 'react';
+import { parseLocation } from '../../model/iecTypes';
+import { selectProject, useDocument } from '../../store/documentStore';
+import { forcedText, liveText } from './liveValues';
+import { useSim, useSimStore } from './simContext';
+import './sim.css';
+
+interface InputRow {
+  readonly name: string;
+  readonly type: string;
+  readonly location: string;
+  readonly comment: string;
+}
+
+export function InputsPanel() {
+  const project = useDocument(selectProject);
+  const inputs = useMemo<InputRow[]>(() => {
+    const pou = project.pous.find((p) => p.kind === 'PROGRAM');
+    const all = [...(pou?.variables ?? []), ...project.globals];
+    return all
+      .filter((v) => v.location && parseLocation(v.location)?.area === 'I')
+      .map((v) => ({ name: v.name, type: v.type.toUpperCase(), location: v.location!, comment: v.comment }));
+  }, [project]);
+  return (
+    <div className="rs-sim-panel" data-testid="inputs-panel">
+      {inputs.length === 0 ? (
+        <p className="rs-sim-empty">The program declares no inputs (%I addresses).</p>
+      ) : (
+        <table className="rs-sim-table" aria-label="Inputs">
+          <tbody>
+            {inputs.map((row) => (row.type === 'BOOL' ? <BoolInput key={row.name} row={row} /> : <WordInput key={row.name} row={row} />))}
+          </tbody>
+        </table>
+      )}
+    </div>
+  );
+}
+
+function Label({ row }: { row: InputRow }) {
+  return (
+    <td title={row.comment || undefined}>
+      <span className="rs-sim-name">{row.name}</span> <span className="rs-sim-unit">{row.location}</span>
+    </td>
+  );
+}
+
+function BoolInput({ row }: { row: InputRow }) {
+  const sim = useSimStore();
+  const value = useSim((s) => liveText(s, row.name));
+  const forced = useSim((s) => forcedText(s, row.name));
+  const on = value === 'TRUE';
+  const release = () => sim.getState().releaseInput(row.name);
+  return (
+    <tr data-testid={`input-${row.name}`}>
+      <Label row={row} />
+      <td>
+        <button type="button" role="switch" aria-checked={on} aria-label={`${row.name} switch`} disabled={value === undefined}
+          className={`rs-sim-switch${on ? ' rs-sim-on' : ''}`} onClick={() => sim.getState().toggleInput(row.name)} data-testid="input-switch">
+          {value === undefined ? '—' : on ? 'ON' : 'OFF'}
+        </button>
+      </td>
+      <td>
+        <button type="button" className="rs-sim-btn" disabled={value === undefined} title="Push-button: ON while the mouse button is held"
+          onPointerDown={(e) => {
+            e.currentTarget.setPointerCapture(e.pointerId);
+            sim.getState().pressInput(row.name);
+          }}
+          onPointerUp={release} onPointerCancel={release} data-testid="input-hold">
+          Hold
+        </button>
+      </td>
+      <td>{forced !== undefined && <span className="rs-sim-forced-tag" title={`forced to ${forced}`}>forced {forced}</span>}</td>
+    </tr>
+  );
+}
+
+function WordInput({ row }: { row: InputRow }) {
+  const sim = useSimStore();
+  const value = useSim((s) => liveText(s, row.name));
+  const forced = useSim((s) => forcedText(s, row.name));
+  const [text, setText] = useState('');
+  const write = () => text.trim() && sim.getState().write(row.name, { text });
+  return (
+    <tr data-testid={`input-${row.name}`}>
+      <Label row={row} />
+      <td>{value ?? '—'}</td>
+      <td>
+        <input className="rs-sim-text rs-sim-narrow" aria-label={`New value for ${row.name}`} placeholder={row.type} value={text}
+          onChange={(e) => setText(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && write()} />
+        <button type="button" className="rs-sim-btn" disabled={value === undefined} onClick={write}>Set</button>
+      </td>
+      <td>{forced !== undefined && <span className="rs-sim-forced-tag" title={`forced to ${forced}`}>forced {forced}</span>}</td>
+    </tr>
+  );
+}

@@ -1,0 +1,68 @@
+// Right-click menu on a contact or coil while simulating: force, unforce, watch, trend.
+// The canvas opens it with simStore.openContextMenu({ x, y, variable }) (page coordinates).
+import { useEffect, useRef, useState } from 'react';
+import type { SimState } from '../../store/simStore';
+import { forcedText, liveText } from './liveValues';
+import { useSim, useSimStore } from './simContext';
+import './sim.css';
+
+const selectMenu = (s: SimState) => s.contextMenu;
+
+export function SimContextMenu() {
+  const menu = useSim(selectMenu);
+  return menu ? <OpenMenu key={`${menu.variable}@${menu.x},${menu.y}`} x={menu.x} y={menu.y} variable={menu.variable} /> : null;
+}
+
+function OpenMenu({ x, y, variable }: { x: number; y: number; variable: string }) {
+  const sim = useSimStore();
+  const ref = useRef<HTMLDivElement>(null);
+  const type = useSim((s) => s.layout?.variables[s.variableIndex.get(variable.toUpperCase()) ?? -1]?.type);
+  const value = useSim((s) => liveText(s, variable));
+  const forced = useSim((s) => forcedText(s, variable));
+  const [text, setText] = useState('');
+  const close = () => sim.getState().closeContextMenu();
+  useEffect(() => {
+    ref.current?.querySelector<HTMLElement>('[role="menuitem"]')?.focus();
+    const onDown = (e: PointerEvent) => {
+      if (!ref.current?.contains(e.target as Node)) sim.getState().closeContextMenu();
+    };
+    const onKey = (e: KeyboardEvent) => e.key === 'Escape' && sim.getState().closeContextMenu();
+    window.addEventListener('pointerdown', onDown, true);
+    window.addEventListener('keydown', onKey);
+    return () => {
+      window.removeEventListener('pointerdown', onDown, true);
+      window.removeEventListener('keydown', onKey);
+    };
+  }, [sim]);
+  const act = (fn: () => void) => () => {
+    fn();
+    close();
+  };
+  const s = sim.getState();
+  return (
+    <div ref={ref} className="rs-sim-menu" role="menu" aria-label={`Simulation: ${variable}`} style={{ left: x, top: y }} data-testid="sim-context-menu">
+      <div className="rs-sim-menu-title">
+        {variable} {value !== undefined && <span className="rs-sim-unit">= {value}</span>}
+        {forced !== undefined && <span className="rs-sim-forced-tag"> forced {forced}</span>}
+      </div>
+      {type === 'BOOL' ? (
+        <>
+          <button type="button" role="menuitem" onClick={act(() => s.force(variable, { value: true }))}>Force TRUE</button>
+          <button type="button" role="menuitem" onClick={act(() => s.force(variable, { value: false }))}>Force FALSE</button>
+        </>
+      ) : (
+        <div className="rs-sim-menu-row">
+          <input className="rs-sim-text rs-sim-narrow" aria-label={`Force ${variable} to`} placeholder={type ?? 'value'} value={text}
+            onChange={(e) => setText(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && text.trim() && act(() => s.force(variable, { text }))()} />
+          <button type="button" role="menuitem" disabled={!text.trim()} onClick={act(() => s.force(variable, { text }))}>Force</button>
+        </div>
+      )}
+      <button type="button" role="menuitem" disabled={forced === undefined} onClick={act(() => s.unforce(variable))}>Unforce</button>
+      <button type="button" role="menuitem" onClick={act(() => s.unforceAll())}>Remove all forces</button>
+      <button type="button" role="menuitem" onClick={act(() => s.addWatch(variable))}>Add to watch</button>
+      <button type="button" role="menuitem" onClick={act(() => s.toggleTrend(variable))}>
+        {s.trendNames.some((n) => n.toUpperCase() === variable.toUpperCase()) ? 'Remove from trend' : 'Add to trend'}
+      </button>
+    </div>
+  );
+}

@@ -1,0 +1,123 @@
+// Run/Pause/Step/Reset controls and the status line (mode, scan, PLC time, execution time).
+import { useEffect, useState } from 'react';
+import { useDocumentStore } from '../../store/documentStore';
+import type { SimState } from '../../store/simStore';
+import { SimNotices } from './SimNotices';
+import { useSim, useSimStore } from './simContext';
+import { useOnlineChange } from './useOnlineChange';
+import './sim.css';
+
+const selectMode = (s: SimState) => s.mode;
+const selectScan = (s: SimState) => s.scan;
+const selectTime = (s: SimState) => s.timeMs;
+const selectCycle = (s: SimState) => s.cycleMs;
+const selectExecLast = (s: SimState) => s.exec.lastMs;
+const selectExecAvg = (s: SimState) => s.exec.avgMs;
+const selectExecMax = (s: SimState) => s.exec.maxMs;
+const selectOverruns = (s: SimState) => s.overruns;
+
+const MODE_LABEL = { stopped: 'Stopped', running: 'Running', paused: 'Paused', faulted: 'Faulted' } as const;
+
+export const formatMs = (ms: number): string => (ms < 1 ? `${(ms * 1000).toFixed(0)} µs` : `${ms.toFixed(ms < 10 ? 2 : 1)} ms`);
+export const formatPlcTime = (ms: number): string => (ms < 10_000 ? `${ms} ms` : `${(ms / 1000).toFixed(2)} s`);
+
+export function SimToolbar() {
+  const sim = useSimStore();
+  const documents = useDocumentStore();
+  const mode = useSim(selectMode);
+  const [stepCount, setStepCount] = useState('10');
+  useOnlineChange();
+  useEffect(() => {
+    // Keep the scripting handle even if the shell assigned window.rungsmith after the store was made.
+    const w = window as unknown as { rungsmith?: Record<string, unknown> };
+    if (w.rungsmith?.simStore !== sim) w.rungsmith = { ...(w.rungsmith ?? {}), simStore: sim };
+  }, [sim]);
+
+  const project = () => documents.getState().project;
+  const running = mode === 'running';
+  const faulted = mode === 'faulted';
+  const n = Number.parseInt(stepCount, 10);
+  const stepN = Number.isFinite(n) && n >= 1 ? Math.min(n, 1_000_000) : undefined;
+
+  return (
+    <div className="rs-sim-toolbar" role="toolbar" aria-label="Simulation" data-testid="sim-toolbar">
+      <button type="button" className="rs-sim-btn rs-sim-run" title="Run: compile the document and scan in real time"
+        disabled={running || faulted} onClick={() => sim.getState().run(project())} data-testid="sim-run">
+        ▶ Run
+      </button>
+      <button type="button" className="rs-sim-btn" title="Pause after the current scan" disabled={!running}
+        onClick={() => sim.getState().pause()} data-testid="sim-pause">
+        ❚❚ Pause
+      </button>
+      <button type="button" className="rs-sim-btn" title="Step one scan (virtual clock: time advances by one cycle)"
+        disabled={running || faulted} onClick={() => sim.getState().step(project(), 1)} data-testid="sim-step-scan">
+        Step scan
+      </button>
+      <span className="rs-sim-group">
+        <button type="button" className="rs-sim-btn" title="Step N scans" disabled={running || faulted || stepN === undefined}
+          onClick={() => stepN && sim.getState().step(project(), stepN)} data-testid="sim-step-n">
+          Step
+        </button>
+        <input className="rs-sim-number" aria-label="Scans to step" value={stepCount} inputMode="numeric"
+          onChange={(e) => setStepCount(e.target.value)} data-testid="sim-step-count" />
+        <span className="rs-sim-unit">scans</span>
+      </span>
+      <button type="button" className="rs-sim-btn" title="Step one network (the next network is highlighted)"
+        disabled={running || faulted} onClick={() => sim.getState().stepNetwork(project())} data-testid="sim-step-network">
+        Step network
+      </button>
+      <button type="button" className="rs-sim-btn" title="Reset (cold restart): every variable to its initial value"
+        onClick={() => sim.getState().reset()} data-testid="sim-reset">
+        ■ Reset
+      </button>
+      <button type="button" className="rs-sim-btn" title="Warm restart: RETAIN and M/SM/RM variables keep their values"
+        onClick={() => sim.getState().warmRestart()} data-testid="sim-warm">
+        Warm restart
+      </button>
+      <CycleInput />
+      <SimStatus />
+      <SimNotices />
+    </div>
+  );
+}
+
+function CycleInput() {
+  const sim = useSimStore();
+  const cycle = useSim(selectCycle);
+  const [text, setText] = useState(String(cycle));
+  useEffect(() => setText(String(cycle)), [cycle]);
+  const commit = () => {
+    const value = Number(text);
+    if (Number.isFinite(value) && value >= 0 && value <= 60_000) sim.getState().setCycle(Math.round(value));
+    else setText(String(cycle));
+  };
+  return (
+    <label className="rs-sim-group" title="Cycle time: a scan starts every cycle (0 = as fast as possible)">
+      <span className="rs-sim-unit">Cycle</span>
+      <input className="rs-sim-number" aria-label="Cycle time in ms" value={text} inputMode="numeric" data-testid="sim-cycle"
+        onChange={(e) => setText(e.target.value)} onBlur={commit} onKeyDown={(e) => e.key === 'Enter' && commit()} />
+      <span className="rs-sim-unit">ms</span>
+    </label>
+  );
+}
+
+function SimStatus() {
+  const mode = useSim(selectMode);
+  const scan = useSim(selectScan);
+  const time = useSim(selectTime);
+  const last = useSim(selectExecLast);
+  const avg = useSim(selectExecAvg);
+  const max = useSim(selectExecMax);
+  const overruns = useSim(selectOverruns);
+  return (
+    <span className="rs-sim-status" data-testid="sim-status" aria-live="polite">
+      <span className={`rs-sim-mode rs-sim-mode-${mode}`} data-testid="sim-mode">{MODE_LABEL[mode]}</span>
+      <span title="Scans since the last cold restart">scan <b data-testid="sim-scan">{scan}</b></span>
+      <span title="PLC time at the start of the last scan">t <b data-testid="sim-time">{formatPlcTime(time)}</b></span>
+      <span title="Execution time per scan: last / average / maximum">
+        exec {formatMs(last)} / {formatMs(avg)} / {formatMs(max)}
+      </span>
+      {overruns > 0 && <span title="Scans dropped because the worker could not keep the cycle">overruns {overruns}</span>}
+    </span>
+  );
+}

@@ -1,0 +1,98 @@
+// Trend (timing diagram) of chosen signals over the last N scans, drawn with uPlot.
+import { useEffect, useMemo, useRef, useState } from 'react';
+import uPlot from 'uplot';
+import 'uplot/dist/uPlot.min.css';
+import type { SimState } from '../../store/simStore';
+import { useSim, useSimStore } from './simContext';
+import { trendData, trendOptions, type TrendSignal } from './trendChart';
+import { useWatchCandidates } from './useWatchCandidates';
+import './sim.css';
+
+const selectTrend = (s: SimState) => s.trend;
+const selectTrendNames = (s: SimState) => s.trendNames;
+const selectCapacity = (s: SimState) => s.trendCapacity;
+
+export function TrendPanel() {
+  const sim = useSimStore();
+  const names = useSim(selectTrendNames);
+  const capacity = useSim(selectCapacity);
+  const candidates = useWatchCandidates();
+  const [adding, setAdding] = useState('');
+  const [capacityText, setCapacityText] = useState(String(capacity));
+  useEffect(() => setCapacityText(String(capacity)), [capacity]);
+  const add = () => {
+    const known = candidates.find((c) => c.name.toUpperCase() === adding.trim().toUpperCase());
+    if (known && !names.some((n) => n.toUpperCase() === known.name.toUpperCase())) sim.getState().toggleTrend(known.name);
+    setAdding('');
+  };
+  const commitCapacity = () => {
+    const n = Number.parseInt(capacityText, 10);
+    if (Number.isFinite(n) && n > 0) sim.getState().setTrendCapacity(n);
+    else setCapacityText(String(capacity));
+  };
+  return (
+    <div className="rs-sim-panel rs-sim-trend" data-testid="trend-panel">
+      <div className="rs-sim-panel-bar">
+        <input className="rs-sim-text" list="rs-trend-candidates" placeholder="Signal to trend" aria-label="Signal to trend" value={adding}
+          onChange={(e) => setAdding(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && add()} data-testid="trend-add-name" />
+        <datalist id="rs-trend-candidates">
+          {candidates.map((c) => <option key={c.name} value={c.name}>{c.type}</option>)}
+        </datalist>
+        <button type="button" className="rs-sim-btn" onClick={add} data-testid="trend-add">Add signal</button>
+        <label className="rs-sim-group">
+          <span className="rs-sim-unit">last</span>
+          <input className="rs-sim-number" aria-label="Scans shown in the trend" value={capacityText} inputMode="numeric"
+            onChange={(e) => setCapacityText(e.target.value)} onBlur={commitCapacity} onKeyDown={(e) => e.key === 'Enter' && commitCapacity()} />
+          <span className="rs-sim-unit">scans</span>
+        </label>
+        {names.map((n) => (
+          <button key={n} type="button" className="rs-sim-chip" title={`Remove ${n} from the trend`} onClick={() => sim.getState().toggleTrend(n)}>
+            {n} ×
+          </button>
+        ))}
+      </div>
+      {names.length === 0 ? (
+        <p className="rs-sim-empty">Add signals to see them scan by scan: BOOL as digital traces, numbers as lines.</p>
+      ) : (
+        <TrendChart types={candidates} />
+      )}
+    </div>
+  );
+}
+
+function TrendChart({ types }: { types: readonly { name: string; type: string }[] }) {
+  const sim = useSimStore();
+  const trend = useSim(selectTrend);
+  const host = useRef<HTMLDivElement>(null);
+  const plot = useRef<uPlot | undefined>(undefined);
+  const signals = useMemo<TrendSignal[]>(
+    () => trend.names.map((name) => ({ name, type: types.find((t) => t.name.toUpperCase() === name.toUpperCase())?.type ?? 'LREAL' })),
+    [trend.names, types],
+  );
+  const signalKey = signals.map((s) => `${s.name}:${s.type}`).join(',');
+
+  useEffect(() => {
+    const el = host.current;
+    if (!el) return;
+    const text = getComputedStyle(el).color || '#333';
+    const width = Math.max(200, el.clientWidth);
+    const height = Math.max(120, el.clientHeight - 40);
+    const chart = new uPlot(trendOptions(signals, width, height, () => sim.getState().trend, text), trendData(signals, sim.getState().trend), el);
+    plot.current = chart;
+    const resize = new ResizeObserver(() => chart.setSize({ width: Math.max(200, el.clientWidth), height: Math.max(120, el.clientHeight - 40) }));
+    resize.observe(el);
+    return () => {
+      resize.disconnect();
+      chart.destroy();
+      plot.current = undefined;
+    };
+    // Rebuilt only when the signal set changes; data updates go through setData below.
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [signalKey, sim]);
+
+  useEffect(() => {
+    plot.current?.setData(trendData(signals, trend));
+  }, [trend, signals]);
+
+  return <div ref={host} className="rs-sim-chart" data-testid="trend-chart" />;
+}

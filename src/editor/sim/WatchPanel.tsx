@@ -1,0 +1,94 @@
+// Watch table: chosen variables with live values; write a value once, force or unforce it, trend it.
+import { useState } from 'react';
+import type { SimState } from '../../store/simStore';
+import { forcedText, liveText } from './liveValues';
+import { useSim, useSimStore } from './simContext';
+import { useWatchCandidates } from './useWatchCandidates';
+import './sim.css';
+
+const selectWatch = (s: SimState) => s.watch;
+const selectForcedCount = (s: SimState) => s.forced.size;
+
+export function WatchPanel() {
+  const sim = useSimStore();
+  const watch = useSim(selectWatch);
+  const forcedCount = useSim(selectForcedCount);
+  const candidates = useWatchCandidates();
+  const [adding, setAdding] = useState('');
+  const add = () => {
+    const name = adding.trim();
+    if (!name) return;
+    const known = candidates.find((c) => c.name.toUpperCase() === name.toUpperCase());
+    sim.getState().addWatch(known?.name ?? name);
+    setAdding('');
+  };
+  return (
+    <div className="rs-sim-panel" data-testid="watch-panel">
+      <div className="rs-sim-panel-bar">
+        <input className="rs-sim-text" list="rs-watch-candidates" placeholder="Variable or Instance.PIN" aria-label="Variable to watch"
+          value={adding} onChange={(e) => setAdding(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && add()} data-testid="watch-add-name" />
+        <datalist id="rs-watch-candidates">
+          {candidates.map((c) => (
+            <option key={c.name} value={c.name}>{`${c.type}${c.location ? ` ${c.location}` : ''}`}</option>
+          ))}
+        </datalist>
+        <button type="button" className="rs-sim-btn" onClick={add} data-testid="watch-add">Add to watch</button>
+        <button type="button" className="rs-sim-btn" disabled={forcedCount === 0} onClick={() => sim.getState().unforceAll()}
+          title="Remove every force" data-testid="unforce-all">
+          Remove all forces{forcedCount > 0 ? ` (${forcedCount})` : ''}
+        </button>
+      </div>
+      {watch.length === 0 ? (
+        <p className="rs-sim-empty">No variables watched. Add one above, or right-click a contact or coil on the canvas while simulating.</p>
+      ) : (
+        <table className="rs-sim-table" aria-label="Watch">
+          <thead>
+            <tr><th>Variable</th><th>Type</th><th>Value</th><th>New value</th><th /></tr>
+          </thead>
+          <tbody>
+            {watch.map((name) => (
+              <WatchRow key={name} name={name} type={candidates.find((c) => c.name.toUpperCase() === name.toUpperCase())?.type ?? '?'} />
+            ))}
+          </tbody>
+        </table>
+      )}
+    </div>
+  );
+}
+
+function WatchRow({ name, type }: { name: string; type: string }) {
+  const sim = useSimStore();
+  const value = useSim((s) => liveText(s, name));
+  const forced = useSim((s) => forcedText(s, name));
+  const inTrend = useSim((s) => s.trendNames.some((n) => n.toUpperCase() === name.toUpperCase()));
+  const [text, setText] = useState('');
+  const input = () => ({ text: text.trim() || (type === 'BOOL' ? (value === 'TRUE' ? 'FALSE' : 'TRUE') : '') });
+  return (
+    <tr data-testid={`watch-row-${name}`}>
+      <td>{name}</td>
+      <td>{type}</td>
+      <td className={forced !== undefined ? 'rs-sim-forced' : undefined} data-testid="watch-value"
+        title={forced !== undefined ? `forced to ${forced}` : undefined}>
+        {value ?? '—'}
+        {forced !== undefined && <span className="rs-sim-forced-tag"> F</span>}
+      </td>
+      <td>
+        <input className="rs-sim-text rs-sim-narrow" aria-label={`New value for ${name}`} value={text}
+          placeholder={type === 'BOOL' ? 'TRUE/FALSE' : type} onChange={(e) => setText(e.target.value)}
+          onKeyDown={(e) => e.key === 'Enter' && sim.getState().write(name, input())} data-testid="watch-input" />
+      </td>
+      <td className="rs-sim-actions">
+        <button type="button" className="rs-sim-btn" title="Write the value once (an input: at the next input read)"
+          onClick={() => sim.getState().write(name, input())} data-testid="watch-write">Write</button>
+        <button type="button" className="rs-sim-btn" title="Force: the variable keeps this value whatever the program or inputs do"
+          onClick={() => sim.getState().force(name, input())} data-testid="watch-force">Force</button>
+        <button type="button" className="rs-sim-btn" disabled={forced === undefined}
+          onClick={() => sim.getState().unforce(name)} data-testid="watch-unforce">Unforce</button>
+        <label className="rs-sim-check" title="Show in the trend">
+          <input type="checkbox" checked={inTrend} onChange={() => sim.getState().toggleTrend(name)} /> Trend
+        </label>
+        <button type="button" className="rs-sim-icon" aria-label={`Stop watching ${name}`} onClick={() => sim.getState().removeWatch(name)}>×</button>
+      </td>
+    </tr>
+  );
+}

@@ -1,0 +1,34 @@
+// Access to the simulation store from components. The app has one simulation (one worker), created
+// on first use; a test or an embedding can provide its own store with <SimStoreProvider>.
+import { createContext, createElement, useContext, type ReactNode } from 'react';
+import { useStore } from 'zustand';
+import { createWorkerTransport } from '../../sim/host';
+import { createSimStore, type SimState, type SimStore } from '../../store/simStore';
+
+let appStore: SimStore | undefined;
+
+/** The app's simulation store (its worker starts with the first command). */
+export function getAppSimStore(): SimStore {
+  if (!appStore) {
+    appStore = createSimStore(createWorkerTransport());
+    // Scripting aid and test handle, next to the document and UI stores (README "Scripting").
+    const w = window as unknown as { rungsmith?: Record<string, unknown> };
+    w.rungsmith = { ...(w.rungsmith ?? {}), simStore: appStore };
+  }
+  return appStore;
+}
+
+const SimStoreContext = createContext<SimStore | undefined>(undefined);
+
+export function SimStoreProvider({ store, children }: { store: SimStore; children?: ReactNode }) {
+  return createElement(SimStoreContext.Provider, { value: store }, children);
+}
+
+export function useSimStore(): SimStore {
+  return useContext(SimStoreContext) ?? getAppSimStore();
+}
+
+/** Subscribes to one slice of the simulation state; pass a module-level selector. */
+export function useSim<T>(selector: (s: SimState) => T): T {
+  return useStore(useSimStore(), selector);
+}

@@ -1,0 +1,93 @@
+// Per-network simulation overlay for the canvas: the network's power bytes (NetworkPower, aligned
+// with the document's elements and vlinks, matched by id so an edited network never shows the
+// wrong bytes) and the live value text of each element. Each hook's selector returns a string, so
+// a network re-renders only when its own state changed.
+import { useMemo } from 'react';
+import type { NetworkPower } from '../../engine/api';
+import { blockSignature } from '../../model/blocks';
+import type { LdElement } from '../../model/elements';
+import type { ElementId } from '../../model/ids';
+import type { Network } from '../../model/project';
+import type { SimState } from '../../store/simStore';
+import { isForced, liveText } from './liveValues';
+import { useSim } from './simContext';
+
+function powerKey(s: SimState, network: Network): string {
+  if (!s.live || !s.layout) return '';
+  const n = s.layout.networkIds.indexOf(network.id);
+  if (n < 0) return '';
+  let key = s.executed[n] ? '1' : '0';
+  for (const el of network.elements) {
+    const i = s.elementIndex.get(el.id);
+    key += String.fromCharCode(i === undefined ? 0 : (s.elements[i] ?? 0));
+  }
+  key += ':';
+  for (const v of network.vlinks) {
+    const i = s.vlinkIndex.get(`${network.id}/${v.row}|${v.boundary}`);
+    key += String.fromCharCode(i === undefined ? 0 : (s.vlinks[i] ?? 0));
+  }
+  return key;
+}
+
+/** The network's power flow, or undefined when not simulating (or the network is not in the running program). */
+export function useNetworkPower(network: Network): NetworkPower | undefined {
+  const key = useSim((s) => powerKey(s, network));
+  return useMemo(() => {
+    if (!key) return undefined;
+    const colon = key.indexOf(':', 1 + network.elements.length);
+    const elements = Uint8Array.from(key.slice(1, colon), (c) => c.charCodeAt(0));
+    const vlinks = Uint8Array.from(key.slice(colon + 1), (c) => c.charCodeAt(0));
+    return { elements, vlinks, executed: key[0] === '1' };
+  }, [key, network.elements.length]);
+}
+
+const FORCED_MARK = ' [F]';
+
+const withForce = (s: SimState, name: string, text: string | undefined) =>
+  text === undefined ? undefined : isForced(s, name) ? `${text}${FORCED_MARK}` : text;
+
+/** Text shown under an element while simulating: its variable's state, an FB's outputs, a function's assigned outputs. */
+export function elementLiveText(s: SimState, el: LdElement): string | undefined {
+  switch (el.kind) {
+    case 'contact':
+    case 'coil':
+      return el.variable ? withForce(s, el.variable, liveText(s, el.variable)) : undefined;
+    case 'box': {
+      const signature = blockSignature(el.blockType);
+      if (!signature) return undefined;
+      const parts: string[] = [];
+      if (signature.kind === 'fb' && el.instance) {
+        for (const pin of signature.outputs) {
+          const text = withForce(s, `${el.instance}.${pin.name}`, liveText(s, `${el.instance}.${pin.name}`));
+          if (text !== undefined) parts.push(`${pin.name}=${text}`);
+        }
+      } else {
+        for (const [pin, target] of Object.entries(el.outputs)) {
+          const text = target ? withForce(s, target, liveText(s, target)) : undefined;
+          if (text !== undefined) parts.push(`${pin}=${text}`);
+        }
+      }
+      return parts.length > 0 ? parts.join(' ') : undefined;
+    }
+    case 'link':
+    case 'jump':
+    case 'return':
+      return undefined;
+  }
+}
+
+function liveKey(s: SimState, network: Network): string {
+  if (!s.live) return '';
+  const entries: [string, string][] = [];
+  for (const el of network.elements) {
+    const text = elementLiveText(s, el);
+    if (text !== undefined) entries.push([el.id, text]);
+  }
+  return entries.length > 0 ? JSON.stringify(entries) : '';
+}
+
+/** Live value text by element id, or undefined when not simulating. */
+export function useNetworkLiveValues(network: Network): ReadonlyMap<ElementId, string> | undefined {
+  const key = useSim((s) => liveKey(s, network));
+  return useMemo(() => (key ? new Map(JSON.parse(key) as [ElementId, string][]) : undefined), [key]);
+}

@@ -1,0 +1,27 @@
+// Editing while the simulation runs is an online change: the edited document is compiled and, if it
+// has no errors, swapped in at the next scan boundary (values carried over by name). If it has
+// errors, the last good program keeps running and the errors are shown.
+import { useEffect } from 'react';
+import { useDocumentStore } from '../../store/documentStore';
+import { useSimStore } from './simContext';
+
+const DEBOUNCE_MS = 300;
+
+export function useOnlineChange(): void {
+  const documents = useDocumentStore();
+  const sim = useSimStore();
+  useEffect(() => {
+    let timer: ReturnType<typeof setTimeout> | undefined;
+    const unsubscribe = documents.subscribe((state, previous) => {
+      if (state.project === previous.project) return;
+      const s = sim.getState();
+      if (!s.layout || (s.mode === 'stopped' && s.scan === 0)) return;
+      clearTimeout(timer);
+      timer = setTimeout(() => sim.getState().documentChanged(documents.getState().project), DEBOUNCE_MS);
+    });
+    return () => {
+      clearTimeout(timer);
+      unsubscribe();
+    };
+  }, [documents, sim]);
+}

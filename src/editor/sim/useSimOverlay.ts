@@ -1,0 +1,62 @@
+// Narrow hooks for the canvas: each element reads only its own power byte and live value, so a
+// frame re-renders only the elements whose state changed. All return undefined when not simulating.
+import type { SimState } from '../../store/simStore';
+import { isForced, liveText } from './liveValues';
+import { useSim } from './simContext';
+
+/** Power-flow bits (api.ts NetworkPower): 1 = left side energised, 2 = right side energised, 4 = executed. */
+export const POWER_IN = 1;
+export const POWER_OUT = 2;
+export const POWER_EXECUTED = 4;
+
+export function useElementPower(elementId: string): number | undefined {
+  return useSim((s) => {
+    if (!s.live) return undefined;
+    const i = s.elementIndex.get(elementId);
+    return i === undefined ? undefined : s.elements[i];
+  });
+}
+
+export function useVLinkPower(networkId: string, row: number, boundary: number): number | undefined {
+  return useSim((s) => {
+    if (!s.live) return undefined;
+    const i = s.vlinkIndex.get(`${networkId}/${row}|${boundary}`);
+    return i === undefined ? undefined : s.vlinks[i];
+  });
+}
+
+/** Live value text of a variable or `Instance.PIN` (TRUE, T#1s200ms, 42), undefined when not simulating. */
+export function useLiveText(name: string | undefined): string | undefined {
+  return useSim((s) => (s.live && name ? liveText(s, name) : undefined));
+}
+
+export function useIsForced(name: string | undefined): boolean {
+  return useSim((s) => (name ? isForced(s, name) : false));
+}
+
+const networkIndex = (s: SimState, networkId: string) => s.layout?.networkIds.indexOf(networkId) ?? -1;
+
+/** The network the debugger will execute next (stepping or stopped at a breakpoint). */
+export function useIsCurrentNetwork(networkId: string): boolean {
+  return useSim((s) => {
+    if (s.mode === 'running' || s.mode === 'stopped' || !s.live) return false;
+    const current = s.breakpointHit ?? s.nextNetwork;
+    return current >= 0 && networkIndex(s, networkId) === current;
+  });
+}
+
+export function useHasBreakpoint(networkId: string): boolean {
+  return useSim((s) => s.breakpoints.includes(networkId));
+}
+
+/** False when a jump or return skipped the network in the last scan. */
+export function useNetworkExecuted(networkId: string): boolean | undefined {
+  return useSim((s) => {
+    if (!s.live) return undefined;
+    const n = networkIndex(s, networkId);
+    return n < 0 ? undefined : s.executed[n] === 1;
+  });
+}
+
+/** True while the simulation has a program that is running or paused (editing applies as an online change). */
+export const useSimActive = (): boolean => useSim((s) => s.mode !== 'stopped' || s.scan > 0);

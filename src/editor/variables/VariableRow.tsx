@@ -1,0 +1,138 @@
+// One row of the variable table: every field edits the document as one undoable step on commit.
+import { FB_SIGNATURES } from '../../model/blocks';
+import { ELEMENTARY_TYPES, parseLocation } from '../../model/iecTypes';
+import type { Variable, VarClass } from '../../model/project';
+import { CommitInput } from './CommitInput';
+import { canonicalLocation, type VariableField } from './validation';
+
+export const CLASS_LABELS: Record<VarClass, string> = {
+  local: 'VAR',
+  input: 'VAR_INPUT',
+  output: 'VAR_OUTPUT',
+  inOut: 'VAR_IN_OUT',
+  external: 'VAR_EXTERNAL',
+  temp: 'VAR_TEMP',
+};
+
+const FIELD_WORDS: Record<VariableField, string> = {
+  name: 'Name',
+  type: 'Type',
+  varClass: 'Class',
+  location: 'Address',
+  initial: 'Initial value',
+  retain: 'RETAIN',
+  constant: 'CONSTANT',
+};
+
+interface Props {
+  readonly variable: Variable;
+  readonly issues: Partial<Record<VariableField, string>>;
+  readonly showClass: boolean;
+  readonly focusName: boolean;
+  readonly onChange: (patch: Partial<Variable>) => void;
+  readonly onDelete: () => void;
+}
+
+/** Empty text clears an optional field; an address is written in its canonical spelling. */
+const optional = (text: string): string | undefined => (text.trim() === '' ? undefined : text.trim());
+const normaliseLocation = (text: string): string | undefined => {
+  const t = optional(text);
+  const loc = t ? parseLocation(t) : undefined;
+  return loc ? canonicalLocation(loc) : t;
+};
+
+export function VariableRow({ variable: v, issues, showClass, focusName, onChange, onDelete }: Props) {
+  const typeKnown = (ELEMENTARY_TYPES as readonly string[]).includes(v.type) || FB_SIGNATURES.some((s) => s.name === v.type);
+  const invalid = (field: VariableField) => (issues[field] ? { 'aria-invalid': true, title: issues[field] } : {});
+  const messages = (Object.keys(issues) as VariableField[]).map((f) => `${FIELD_WORDS[f]}: ${issues[f]}`);
+  return (
+    <>
+      <tr data-testid={`variable-row-${v.name}`} className={messages.length ? 'rs-var-row rs-has-issue' : 'rs-var-row'}>
+        <td>
+          <CommitInput
+            aria-label="Name"
+            className="rs-cell-input rs-var-name"
+            value={v.name}
+            autoFocus={focusName}
+            onFocus={(e) => focusName && e.currentTarget.select()}
+            spellCheck={false}
+            onCommit={(name) => onChange({ name: name.trim() })}
+            {...invalid('name')}
+          />
+        </td>
+        <td>
+          <select aria-label="Type" className="rs-cell-input" value={v.type} onChange={(e) => onChange({ type: e.target.value })} {...invalid('type')}>
+            {!typeKnown && <option value={v.type}>{v.type || '(choose)'}</option>}
+            <optgroup label="Elementary types">
+              {ELEMENTARY_TYPES.map((t) => (
+                <option key={t} value={t}>
+                  {t}
+                </option>
+              ))}
+            </optgroup>
+            <optgroup label="Function block instances">
+              {FB_SIGNATURES.map((s) => (
+                <option key={s.name} value={s.name}>
+                  {s.name}
+                </option>
+              ))}
+            </optgroup>
+          </select>
+        </td>
+        {showClass && (
+          <td>
+            <select aria-label="Class" className="rs-cell-input" value={v.varClass} onChange={(e) => onChange({ varClass: e.target.value as VarClass })}>
+              {(Object.keys(CLASS_LABELS) as VarClass[]).map((c) => (
+                <option key={c} value={c}>
+                  {CLASS_LABELS[c]}
+                </option>
+              ))}
+            </select>
+          </td>
+        )}
+        <td>
+          <CommitInput
+            aria-label="Address"
+            className="rs-cell-input rs-mono"
+            placeholder="%IX0.0"
+            spellCheck={false}
+            value={v.location ?? ''}
+            onCommit={(text) => onChange({ location: normaliseLocation(text) })}
+            {...invalid('location')}
+          />
+        </td>
+        <td>
+          <CommitInput
+            aria-label="Initial value"
+            className="rs-cell-input rs-mono"
+            spellCheck={false}
+            value={v.initial ?? ''}
+            onCommit={(text) => onChange({ initial: optional(text) })}
+            {...invalid('initial')}
+          />
+        </td>
+        <td className="rs-center">
+          <input type="checkbox" aria-label="RETAIN" checked={v.retain} onChange={(e) => onChange({ retain: e.target.checked })} {...invalid('retain')} />
+        </td>
+        <td className="rs-center">
+          <input type="checkbox" aria-label="CONSTANT" checked={v.constant === true} onChange={(e) => onChange({ constant: e.target.checked || undefined })} />
+        </td>
+        <td>
+          <CommitInput aria-label="Comment" className="rs-cell-input" value={v.comment} onCommit={(comment) => onChange({ comment })} />
+        </td>
+        <td>
+          <button type="button" className="rs-icon-button" aria-label={`Delete variable ${v.name}`} title={`Delete variable ${v.name}`} onClick={onDelete}>
+            ×
+          </button>
+        </td>
+      </tr>
+      {messages.length > 0 && (
+        <tr className="rs-var-issues">
+          <td colSpan={showClass ? 9 : 8} role="alert" data-testid="variable-issue">
+            {messages.join(' · ')}
+          </td>
+        </tr>
+      )}
+    </>
+  );
+}

@@ -1,0 +1,12 @@
+// checkProject: every rule of LD-SEMANTICS.md section 9 (and the LD-E/LD-W checks) over every
+// POU of a project, as located diagnostics for the editor's problem list and `rungsmith check`.
+import type { Project } from '../model/project';
+import type { Diagnostic } from './api';
+import { lowerPou } from './compile/pou';
+
+export function checkProject(project: Project): Diagnostic[] {
+  const out: Diagnostic[] = [];
+  const globals: Diagnostic[] = [];
+  project.pous.forEach((pou, i) => lowerPou(project, pou, project.profile, out, i === 0 ? globals : []));
+  return [...globals, ...out];
+}

@@ -1,0 +1,243 @@
+// Function and function block boxes: instance (LD-R10), pin wiring and operands (LD-R10), types
+// (LD-R11, with the implicit widenings of values/types.canWiden), and the operation to generate.
+import { GENERIC_MEMBERS, isElementaryType, type ElementaryType, type GenericType } from '../../model/iecTypes';
+import type { BoxElement } from '../../model/elements';
+import { resolveFunction } from '../library/functions';
+import { parseLiteral } from '../values/literals';
+import { canWiden } from '../values/types';
+import type { PouContext } from './context';
+import type { GraphNode } from './graph';
+import type { ArgIR, Op, OutIR, Source } from './ir';
+import { accessWords, type NetMap } from './lower';
+import { describeElement, type Reporter } from './report';
+import { storeOf, type Access } from './symbols';
+import type { PlacedPin } from '../../model/boxLayout';
+
+const admitsType = (pinType: string, t: ElementaryType): boolean =>
+  isElementaryType(pinType) ? pinType === t : (GENERIC_MEMBERS[pinType as GenericType] ?? []).includes(t);
+
+interface InputInfo {
+  readonly pin: PlacedPin;
+  /** Wired source or operand; undefined when the pin is left open. */
+  src?: Source;
+  /** Known type of the source (undefined: an untyped literal or a data line not typed yet). */
+  type?: ElementaryType;
+  /** Operand text when the pin takes a literal that must be re-read at the resolved type. */
+  literal?: string;
+}
+
+export function lowerBox(ctx: PouContext, node: GraphNode, nets: NetMap, network: number, r: Reporter): Op | undefined {
+  const el = node.el as BoxElement;
+  const layout = node.layout;
+  const name = describeElement(el);
+  if (!layout) {
+    r.error('LD-E01', `${name} uses "${el.blockType}", which is not a standard function or function block`, el);
+    return undefined;
+  }
+  const sig = layout.signature;
+  const isFb = sig.kind === 'fb';
+  const before = r.errors;
+  for (const key of Object.keys(el.inputs)) {
+    if (!layout.inputs.some((p) => p.name === key.toUpperCase()))
+      r.error('LD-E04', `${name} has no input "${key}" (inputs: ${layout.inputs.map((p) => p.name).join(', ')})`, el);
+  }
+  for (const key of Object.keys(el.outputs)) {
+    if (!layout.outputs.some((p) => p.name === key.toUpperCase()))
+      r.error('LD-E04', `${name} has no output "${key}" (outputs: ${layout.outputs.map((p) => p.name).join(', ')})`, el);
+  }
+  const operandOf = (rec: Readonly<Record<string, string>>, pin: string): string => {
+    const key = Object.keys(rec).find((k) => k.toUpperCase() === pin);
+    return key === undefined ? '' : (rec[key] ?? '').trim();
+  };
+
+  // LD-R10: the FB instance.
+  let fbIndex = -1;
+  if (isFb) {
+    const inst = (el.instance ?? '').trim();
+    const sym = inst ? ctx.symbols.lookup(inst) : undefined;
+    if (!inst) r.error('LD-R10', `${name} has no instance name; declare a ${sig.name} variable and name it on the block`, el);
+    else if (!sym) r.error('LD-R10', `${name}: the instance "${inst}" is not declared; add a variable "${inst}" of type ${sig.name}`, el);
+    else if (sym.kind !== 'fb' || sym.type !== sig.name)
+      r.error('LD-R10', `${name}: "${inst}" is declared as ${sym.kind === 'fb' ? sym.type : sym.type}, not ${sig.name}`, el);
+    else {
+      const first = ctx.fbCalls.get(sym);
+      if (first)
+        r.error('LD-R10', `${name} calls the instance "${inst}" a second time (first at network ${first.network + 1}); each box needs its own instance`, el);
+      else ctx.fbCalls.set(sym, { network, row: el.row, col: el.col });
+      fbIndex = sym.index;
+    }
+  }
+
+  // Inputs: wire, operand, or (EN of a function only) nothing.
+  const powerPin = layout.inputs.find((p) => p.type === 'BOOL')?.name;
+  const infos: InputInfo[] = [];
+  for (const pin of layout.inputs) {
+    const t = node.inputs.find((x) => x.pin === pin.name)!;
+    const wired = nets.isWired(t.net);
+    const operand = operandOf(el.inputs, pin.name);
+    const info: InputInfo = { pin };
+    infos.push(info);
+    if (wired && operand) {
+      r.error('LD-R10', `input ${pin.name} of ${name} is both wired and given "${operand}"; keep one`, el);
+      continue;
+    }
+    if (wired) {
+      const data = nets.data.get(t.net);
+      if (data) {
+        info.src = data;
+        info.type = data.from === 'data' ? data.type : data.from === 'access' ? data.access.type : 'BOOL';
+      } else if (nets.dataPending.has(t.net)) continue;
+      else {
+        info.src = { from: 'power', net: nets.powerNet(t.net) };
+        info.type = 'BOOL';
+      }
+      if (!admitsType(pin.type, info.type)) {
+        r.error('LD-R11', `input ${pin.name} of ${name} needs ${pin.type} but its line carries ${info.type}`, el);
+      }
+      continue;
+    }
+    if (operand) {
+      const expected = isElementaryType(pin.type) ? pin.type : undefined;
+      const res = ctx.symbols.resolve(operand, { ...(expected ? { expected } : {}), literals: true, implicitLocations: true });
+      if (!res.ok) {
+        r.error(res.unknown ? 'LD-E02' : 'LD-E03', `input ${pin.name} of ${name}: ${res.message}`, el);
+        continue;
+      }
+      info.src = { from: 'access', access: res.access };
+      if (res.access.kind === 'const' && !/#/.test(operand) && !isElementaryType(pin.type)) info.literal = operand;
+      else info.type = res.access.type;
+      if (res.access.kind === 'const' && isElementaryType(pin.type)) info.type = pin.type;
+      continue;
+    }
+    if (pin.name === 'EN') continue; // a function whose EN is not connected always runs
+    r.error(
+      'LD-R10',
+      pin.name === powerPin && isFb
+        ? `input ${pin.name} of ${name} takes the power flow but is not connected; wire it or give it a BOOL variable`
+        : `input ${pin.name} of ${name} has no value; wire it or write a variable or a literal beside it`,
+      el,
+    );
+  }
+
+  // Outputs.
+  const outputs = layout.outputs.map((pin) => {
+    const t = node.outputs.find((x) => x.pin === pin.name)!;
+    return { pin, net: t.net, wired: nets.isWired(t.net), operand: operandOf(el.outputs, pin.name) };
+  });
+
+  if (isFb) {
+    const args: ArgIR[] = [];
+    for (const info of infos) {
+      const pinType = info.pin.type as ElementaryType;
+      if (!info.src) continue;
+      if (info.type && !canWiden(info.type, pinType) && info.src.from !== 'power') {
+        r.error('LD-R11', `input ${info.pin.name} of ${name} needs ${pinType}; ${describeSource(info.src)} is ${info.type}`, el);
+      }
+      args.push({ pin: info.pin.name, type: pinType, src: info.src });
+    }
+    const outs: OutIR[] = [];
+    for (const o of outputs) {
+      const type = o.pin.type as ElementaryType;
+      const out = lowerOutput(ctx, nets, el, name, o, type, fbIndex >= 0 ? { kind: 'pin', fb: ctx.symbols.fbs[fbIndex]!, pin: o.pin.name, type, dir: 'out' } : undefined, r);
+      if (out) outs.push(out);
+    }
+    if (r.errors > before || fbIndex < 0) return undefined;
+    return { op: 'fb', node: node.index, fb: fbIndex, args, outs };
+  }
+
+  // Function: resolve generic pins from the argument types.
+  const argInfos = infos.filter((i) => i.pin.name !== 'EN');
+  const outPin = outputs.find((o) => o.pin.name !== 'ENO')!;
+  let hint: ElementaryType | undefined;
+  if (outPin.operand) {
+    const res = ctx.symbols.resolve(outPin.operand, { literals: false, implicitLocations: true });
+    if (res.ok) hint = res.access.type;
+  }
+  if (r.errors > before) return undefined;
+  const resolved = resolveFunction(sig.name, argInfos.map((i) => i.type), ctx.profile, hint);
+  if (!resolved.ok) {
+    r.error('LD-R11', `${name}: ${resolved.message}`, el);
+    return undefined;
+  }
+  const fn = resolved.fn;
+  const args: ArgIR[] = [];
+  argInfos.forEach((info, i) => {
+    const type = fn.argTypes[i]!;
+    let src = info.src!;
+    if (info.literal !== undefined) {
+      const lit = parseLiteral(info.literal, type);
+      if (!lit.ok) return void r.error('LD-E03', `input ${info.pin.name} of ${name}: ${lit.message}`, el);
+      src = { from: 'access', access: { kind: 'const', type, value: lit.value, text: info.literal } };
+    } else if (info.type && !canWiden(info.type, type)) {
+      return void r.error('LD-R11', `input ${info.pin.name} of ${name} needs ${type}; ${describeSource(src)} is ${info.type}`, el);
+    }
+    args.push({ pin: info.pin.name, type, src });
+  });
+  const enInfo = infos.find((i) => i.pin.name === 'EN');
+  const outType = fn.outType;
+  const out = lowerOutput(ctx, nets, el, name, outPin, outType, undefined, r);
+  const enoPin = outputs.find((o) => o.pin.name === 'ENO')!;
+  const eno = lowerOutput(ctx, nets, el, name, enoPin, 'BOOL', undefined, r);
+  if (r.errors > before || !out || !eno) return undefined;
+  const fnIndex = ctx.functions.length;
+  ctx.functions.push(fn);
+  return { op: 'function', node: node.index, name: fn.name, fn: fnIndex, ...(enInfo?.src ? { en: enInfo.src } : {}), args, out, eno };
+}
+
+function lowerOutput(
+  ctx: PouContext,
+  nets: NetMap,
+  el: BoxElement,
+  name: string,
+  o: { pin: PlacedPin; net: number; wired: boolean; operand: string },
+  type: ElementaryType,
+  fbPin: Access | undefined,
+  r: Reporter,
+): OutIR | undefined {
+  let dst: Access | undefined;
+  if (o.operand) {
+    const res = ctx.symbols.resolve(o.operand, { literals: false, implicitLocations: true });
+    if (!res.ok) {
+      r.error(res.unknown ? 'LD-E02' : 'LD-R11', `output ${o.pin.name} of ${name}: ${res.message}`, el);
+      return undefined;
+    }
+    const a = res.access;
+    if (a.kind === 'pin' && a.dir === 'out') return void r.error('LD-R11', `output ${o.pin.name} of ${name} cannot write ${accessWords(a)}, an output of another block`, el);
+    if ((a.kind === 'var' || a.kind === 'bit') && a.v.constant) return void r.error('LD-R11', `output ${o.pin.name} of ${name} cannot write "${a.v.name}", which is CONSTANT`, el);
+    if (!canWiden(type, a.type)) return void r.error('LD-R11', `output ${o.pin.name} of ${name} gives ${type} but ${accessWords(a)} is ${a.type}`, el);
+    dst = a;
+  }
+  const g = nets.g.nets[o.net]!;
+  if (type === 'BOOL') {
+    nets.dataPending.delete(o.net);
+    return { pin: o.pin.name, type, net: nets.powerNet(o.net), ...(dst ? { dst } : {}) };
+  }
+  if (!o.wired) return { pin: o.pin.name, type, ...(dst ? { dst } : {}) };
+  // A data line: one source, read only by block inputs.
+  if (g.sources.length > 1 || g.leftRail) {
+    r.error('LD-R11', `output ${o.pin.name} of ${name} carries ${type}; its line is joined to other outputs or to the rail`, el);
+    return undefined;
+  }
+  for (const s of g.sinks) {
+    const sinkEl = nets.g.nodes[s.node]!.el;
+    if (sinkEl.kind !== 'box') r.error('LD-R11', `${describeElement(sinkEl)} is on the ${type} line from output ${o.pin.name} of ${name}; contacts and coils need BOOL power flow`, sinkEl);
+  }
+  if (g.rightRail) r.error('LD-R11', `output ${o.pin.name} of ${name} carries ${type} to the right rail; only power flow may reach the rail`, el);
+  let data: { store: ReturnType<typeof storeOf>; slot: number } | undefined;
+  let source: Source;
+  if (fbPin) source = { from: 'access', access: fbPin };
+  else {
+    const store = storeOf(type);
+    data = { store, slot: ctx.symbols.counts[store]++ };
+    ctx.dataSlots.push({ ...data, type });
+    source = { from: 'data', ...data, type };
+  }
+  nets.data.set(o.net, source);
+  return { pin: o.pin.name, type, ...(data ? { data } : {}), ...(dst ? { dst } : {}) };
+}
+
+function describeSource(src: Source): string {
+  if (src.from === 'power') return 'its line';
+  if (src.from === 'data') return 'the wired value';
+  return accessWords(src.access);
+}

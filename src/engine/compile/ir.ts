@@ -1,0 +1,68 @@
+// The checked, ordered form of a network that code generation turns into JavaScript.
+import type { CoilType, ContactType } from '../../model/elements';
+import type { ElementaryType, Value } from '../../model/iecTypes';
+import type { Access, Store } from './symbols';
+
+/** Where a value comes from: a power-flow net (BOOL), a data slot fed by a box output, or an operand. */
+export type Source =
+  | { readonly from: 'power'; readonly net: number }
+  | { readonly from: 'data'; readonly store: Store; readonly slot: number; readonly type: ElementaryType }
+  | { readonly from: 'access'; readonly access: Access };
+
+export interface ArgIR {
+  readonly pin: string;
+  /** Type the block expects at this pin (after resolving generic pins). */
+  readonly type: ElementaryType;
+  readonly src: Source;
+}
+
+export interface OutIR {
+  readonly pin: string;
+  readonly type: ElementaryType;
+  /** BOOL output wired as power flow. */
+  readonly net?: number;
+  /** Non-BOOL output wired to other blocks: the persistent slot that carries it. */
+  readonly data?: { readonly store: Store; readonly slot: number };
+  /** Output assigned to a variable written beside the pin. */
+  readonly dst?: Access;
+}
+
+export type Op =
+  | { readonly op: 'contact'; readonly node: number; readonly contact: ContactType; readonly src?: Access; readonly inNet: number; readonly outNet: number; readonly edge?: number }
+  | { readonly op: 'coil'; readonly node: number; readonly coil: CoilType; readonly dst: Access; readonly inNet: number; readonly outNet: number; readonly edge?: number }
+  | { readonly op: 'jump'; readonly node: number; readonly inNet: number; readonly target: number }
+  | { readonly op: 'return'; readonly node: number; readonly inNet: number }
+  | {
+      readonly op: 'function';
+      readonly node: number;
+      readonly name: string;
+      /** Index in the program's function table. */
+      readonly fn: number;
+      /** EN: a net, an operand, or undefined (not connected: always runs). */
+      readonly en?: Source;
+      readonly args: readonly ArgIR[];
+      readonly out: OutIR;
+      readonly eno: OutIR;
+    }
+  | {
+      readonly op: 'fb';
+      readonly node: number;
+      readonly fb: number;
+      readonly args: readonly ArgIR[];
+      readonly outs: readonly OutIR[];
+    };
+
+export interface NetworkIR {
+  readonly index: number;
+  readonly label?: string;
+  readonly ops: readonly Op[];
+  /** Number of power-flow nets (locals in the generated code). */
+  readonly netCount: number;
+  /** Nets that hold a left-rail point (always ON). */
+  readonly railNets: readonly number[];
+  /** Net of every element terminal for the power snapshot: element index -> [input net, output net] (-1 = none). */
+  readonly elementNets: readonly (readonly [number, number])[];
+  readonly vlinkNets: readonly number[];
+  /** Constants used by the generated code (literals that are not plain numbers/booleans). */
+  readonly constants: readonly Value[];
+}

@@ -1,0 +1,213 @@
+// One network: graph, structural rules, evaluation order, then each element's operands and types
+// (LD-R07, LD-R08, LD-R10, LD-R11, LD-R12, LD-R13) and the ordered operations for code generation.
+import type { CoilElement, ContactElement } from '../../model/elements';
+import type { Network } from '../../model/project';
+import type { CoilFamily, PouContext } from './context';
+import { buildGraph, type NetworkGraph } from './graph';
+import type { NetworkIR, Op, Source } from './ir';
+import { evaluationOrder } from './order';
+import { describeElement, type Reporter } from './report';
+import { checkStructure } from './structure';
+import type { Access } from './symbols';
+import { lowerBox } from './box';
+
+/** Maps graph nets to what the generated code reads for them. */
+export class NetMap {
+  private readonly power = new Map<number, number>();
+  /** Graph net -> value source when the net carries a non-BOOL value from a box output. */
+  readonly data = new Map<number, Source>();
+  /** Nets driven by a block output that is not BOOL by signature, before that block is lowered. */
+  readonly dataPending = new Set<number>();
+  constructor(readonly g: NetworkGraph) {
+    for (const node of g.nodes) {
+      for (const t of node.outputs) if (node.layout?.outputs.find((p) => p.name === t.pin)?.type !== 'BOOL') this.dataPending.add(t.net);
+    }
+  }
+
+  /** The power-flow local for a graph net (allocated on first use). */
+  powerNet(net: number): number {
+    let id = this.power.get(net);
+    if (id === undefined) {
+      id = this.power.size;
+      this.power.set(net, id);
+    }
+    return id;
+  }
+  hasPower(net: number): boolean {
+    return this.power.has(net);
+  }
+  get powerCount(): number {
+    return this.power.size;
+  }
+  railNets(): number[] {
+    return [...this.power].filter(([net]) => this.g.nets[net]!.leftRail).map(([, id]) => id);
+  }
+  /** True when something besides the terminal itself is attached to the net (a wire or another element). */
+  isWired(net: number): boolean {
+    const n = this.g.nets[net]!;
+    return n.leftRail || n.links.length + n.vlinks.length > 0 || n.sources.length + n.sinks.length > 1;
+  }
+}
+
+const FAMILY: Record<CoilElement['coil'], CoilFamily> = {
+  COIL: 'assign',
+  M: 'assign',
+  NEG: 'negated',
+  P: 'pulse',
+  N: 'pulse',
+  SET: 'latch',
+  RESET: 'latch',
+  SM: 'latch',
+  RM: 'latch',
+};
+
+export function lowerNetwork(ctx: PouContext, network: Network, index: number, r: Reporter): NetworkIR | undefined {
+  const g = buildGraph(network);
+  const structureOk = checkStructure(network, g, r);
+  let order = structureOk ? evaluationOrder(g) : undefined;
+  if (structureOk && !order) r.error('LD-R01', 'an element feeds its own input through a wire going back to the left; power must flow left to right');
+  if (!order) {
+    order = g.nodes.map((_, i) => i).sort((a, b) => g.nodes[a]!.el.row - g.nodes[b]!.el.row || g.nodes[a]!.el.col - g.nodes[b]!.el.col);
+  }
+  const nets = new NetMap(g);
+  const ops: Op[] = [];
+  const errorsBefore = r.errors;
+  for (const ni of order) {
+    const node = g.nodes[ni]!;
+    const el = node.el;
+    const inNet = node.inputs[0] ? nets.powerNet(node.inputs[0].net) : -1;
+    switch (el.kind) {
+      case 'contact': {
+        const src = el.contact === 'NOT' ? undefined : contactOperand(ctx, el, r);
+        const edge = el.contact === 'P' || el.contact === 'N' ? ctx.edgeCount++ : undefined;
+        const outNet = nets.powerNet(node.outputs[0]!.net);
+        ops.push({ op: 'contact', node: node.index, contact: el.contact, ...(src ? { src } : {}), inNet, outNet, ...(edge !== undefined ? { edge } : {}) });
+        break;
+      }
+      case 'coil': {
+        const dst = coilOperand(ctx, el, index, r);
+        const edge = el.coil === 'P' || el.coil === 'N' ? ctx.edgeCount++ : undefined;
+        const outNet = nets.powerNet(node.outputs[0]!.net);
+        if (dst) ops.push({ op: 'coil', node: node.index, coil: el.coil, dst, inNet, outNet, ...(edge !== undefined ? { edge } : {}) });
+        break;
+      }
+      case 'jump': {
+        const target = ctx.labels.get(el.target.trim().toUpperCase());
+        if (el.target.trim() === '') r.error('LD-R07', `${describeElement(el)} names no label; write the label of the network to continue at`, el);
+        else if (target === undefined)
+          r.error('LD-R07', `${describeElement(el)} has no target: no network of ${ctx.pouName} is labelled "${el.target}"`, el);
+        else ops.push({ op: 'jump', node: node.index, inNet, target });
+        break;
+      }
+      case 'return':
+        ops.push({ op: 'return', node: node.index, inNet });
+        break;
+      case 'box': {
+        const op = lowerBox(ctx, node, nets, index, r);
+        if (op) ops.push(op);
+        break;
+      }
+    }
+  }
+  if (!structureOk || r.errors > errorsBefore) return undefined;
+
+  const elementNets = network.elements.map((el, i): [number, number] => {
+    if (el.kind === 'link') {
+      const net = g.linkNet[i]!;
+      return net >= 0 && nets.hasPower(net) ? [nets.powerNet(net), nets.powerNet(net)] : [-1, -1];
+    }
+    const node = g.nodes.find((n) => n.index === i);
+    if (!node) return [-1, -1];
+    const pin = (ts: typeof node.inputs, name: string | undefined) => {
+      const t = name === undefined ? ts[0] : ts.find((x) => x.pin === name);
+      return t && nets.hasPower(t.net) ? nets.powerNet(t.net) : -1;
+    };
+    if (el.kind !== 'box') return [pin(node.inputs, undefined), pin(node.outputs, undefined)];
+    const pIn = node.layout?.inputs.find((p) => p.type === 'BOOL')?.name;
+    const pOut = node.layout?.outputs.find((p) => p.type === 'BOOL')?.name;
+    return [pIn ? pin(node.inputs, pIn) : -1, pOut ? pin(node.outputs, pOut) : -1];
+  });
+  const vlinkNets = network.vlinks.map((_, i) => {
+    const net = g.vlinkNet[i]!;
+    return net >= 0 && nets.hasPower(net) ? nets.powerNet(net) : -1;
+  });
+  return {
+    index,
+    ...(network.label ? { label: network.label } : {}),
+    ops,
+    netCount: nets.powerCount,
+    railNets: nets.railNets(),
+    elementNets,
+    vlinkNets,
+    constants: [],
+  };
+}
+
+function contactOperand(ctx: PouContext, el: ContactElement, r: Reporter): Access | undefined {
+  const edge = el.contact === 'P' || el.contact === 'N';
+  if (el.variable.trim() === '') {
+    r.error('LD-R08', `${describeElement(el)} names no variable; write a BOOL variable on it`, el);
+    return undefined;
+  }
+  const res = ctx.symbols.resolve(el.variable, { expected: 'BOOL', literals: !edge, implicitLocations: true });
+  if (!res.ok) {
+    const constant = /constant/.test(res.message) || /^(TRUE|FALSE)$/i.test(el.variable.trim());
+    r.error('LD-R08', edge && constant ? `${describeElement(el)} names a constant; a transition contact needs a BOOL variable` : `${describeElement(el)}: ${res.message}`, el);
+    return undefined;
+  }
+  if (res.access.type !== 'BOOL') {
+    r.error('LD-R08', `${describeElement(el)} names ${res.access.type} ${accessWords(res.access)}; a contact needs a BOOL variable, an FB's BOOL pin or a bit like Word.3`, el);
+    return undefined;
+  }
+  return res.access;
+}
+
+function coilOperand(ctx: PouContext, el: CoilElement, network: number, r: Reporter): Access | undefined {
+  if (el.variable.trim() === '') {
+    r.error('LD-R08', `${describeElement(el)} names no variable; write a BOOL variable on it`, el);
+    return undefined;
+  }
+  const res = ctx.symbols.resolve(el.variable, { expected: 'BOOL', literals: false, implicitLocations: true });
+  if (!res.ok) {
+    r.error('LD-R08', `${describeElement(el)}: ${res.message}${/constant/.test(res.message) ? '; a coil must write a BOOL variable' : ''}`, el);
+    return undefined;
+  }
+  const a = res.access;
+  if (a.type !== 'BOOL') {
+    r.error('LD-R08', `${describeElement(el)} names ${a.type} ${accessWords(a)}; a coil needs a BOOL variable, an FB's BOOL input or a bit like Word.3`, el);
+    return undefined;
+  }
+  if (a.kind === 'pin' && a.dir === 'out') {
+    r.error('LD-R08', `${describeElement(el)} writes the output ${a.fb.name}.${a.pin}, which only the block itself sets`, el);
+    return undefined;
+  }
+  if ((a.kind === 'var' || a.kind === 'bit') && a.v.constant) {
+    r.error('LD-R08', `${describeElement(el)} writes "${a.v.name}", which is declared CONSTANT`, el);
+    return undefined;
+  }
+  if (a.kind === 'var' || a.kind === 'bit') {
+    const v = a.v;
+    if (v.location?.area === 'I')
+      r.warning('LD-R13', `${describeElement(el)} writes the input ${v.locationText}; the next input read overwrites it`, el);
+    if (el.coil === 'M' || el.coil === 'SM' || el.coil === 'RM') ctx.retentiveCoilVars.add(v);
+    if (a.kind === 'var') {
+      let families = ctx.coilWrites.get(v);
+      if (!families) ctx.coilWrites.set(v, (families = new Map()));
+      if (!families.has(FAMILY[el.coil])) families.set(FAMILY[el.coil], { network, row: el.row, col: el.col });
+    }
+  }
+  return a;
+}
+
+export function accessWords(a: Access): string {
+  switch (a.kind) {
+    case 'var':
+      return `"${a.v.name}"`;
+    case 'bit':
+      return `bit ${a.bit} of "${a.v.name}"`;
+    case 'pin':
+      return `"${a.fb.name}.${a.pin}"`;
+    case 'const':
+      return `constant ${a.text}`;
+  }
+}

@@ -1,0 +1,73 @@
+// A whole POU: variable table, labels (LD-R06), every network, then the program-wide warnings
+// (LD-R12) and empty networks (LD-W01).
+import { IDENTIFIER_RE } from '../../model/iecTypes';
+import type { Pou, Profile, Project } from '../../model/project';
+import type { Diagnostic } from '../api';
+import { newPouContext, type CoilFamily, type PouContext } from './context';
+import type { NetworkIR } from './ir';
+import { lowerNetwork } from './lower';
+import { Reporter } from './report';
+import { buildSymbols } from './symbols';
+
+export interface LoweredPou {
+  readonly ctx: PouContext;
+  /** One entry per network; undefined where the network has errors. */
+  readonly networks: readonly (NetworkIR | undefined)[];
+  /** No error anywhere in the POU (its variables and networks). */
+  readonly ok: boolean;
+}
+
+const FAMILY_WORDS: Record<CoilFamily, string> = {
+  assign: '( )',
+  negated: '(/)',
+  pulse: '(P)/(N)',
+  latch: '(S)/(R)',
+};
+
+/** Checks and lowers one POU. Diagnostics about the project's globals go to `globalsOut`. */
+export function lowerPou(project: Project, pou: Pou, profile: Profile, out: Diagnostic[], globalsOut: Diagnostic[]): LoweredPou {
+  const start = out.length;
+  const varReporter = new Reporter(out, pou.name, -1);
+  const symbols = buildSymbols(project, pou, varReporter, new Reporter(globalsOut, 'globals', -1));
+
+  // LD-R06: labels are identifiers or unsigned integers, unique in the POU.
+  const labels = new Map<string, number>();
+  pou.networks.forEach((net, i) => {
+    const label = net.label?.trim();
+    if (!label) return;
+    const r = new Reporter(out, pou.name, i, label);
+    if (!IDENTIFIER_RE.test(label) && !/^\d+$/.test(label)) {
+      r.error('LD-R06', `the label "${label}" is not valid; use a name (letters, digits, _) or an unsigned number`);
+      return;
+    }
+    const key = label.toUpperCase();
+    const first = labels.get(key);
+    if (first !== undefined) r.error('LD-R06', `the label "${label}" is already used by network ${first + 1}; labels must be unique in ${pou.name}`);
+    else labels.set(key, i);
+  });
+
+  const ctx = newPouContext(pou.name, profile, symbols, labels);
+  const networks = pou.networks.map((net, i) => {
+    const r = new Reporter(out, pou.name, i, net.label?.trim());
+    if (net.elements.length === 0 && net.vlinks.length === 0) {
+      r.warning('LD-W01', 'this network is empty; draw a rung in it or delete it');
+      return { index: i, ops: [], netCount: 0, railNets: [], elementNets: [], vlinkNets: [], constants: [], ...(net.label ? { label: net.label } : {}) } satisfies NetworkIR;
+    }
+    return lowerNetwork(ctx, net, i, r);
+  });
+
+  // LD-R12: a variable written by coils of different kinds.
+  for (const [v, families] of ctx.coilWrites) {
+    if (families.size < 2) continue;
+    const places = [...families.values()];
+    const second = places[1]!;
+    const net = pou.networks[second.network];
+    new Reporter(out, pou.name, second.network, net?.label?.trim()).warning(
+      'LD-R12',
+      `"${v.name}" is written by coils of different kinds (${[...families.keys()].map((f) => FAMILY_WORDS[f]).join(' and ')}); legal, but the last one in each scan wins — check this is intended`,
+      { row: second.row, col: second.col },
+    );
+  }
+  const ok = !out.slice(start).some((d) => d.severity === 'error') && !globalsOut.some((d) => d.severity === 'error');
+  return { ctx, networks, ok };
+}

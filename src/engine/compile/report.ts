@@ -1,0 +1,90 @@
+// Located diagnostics worded for a PLC programmer: rule id, POU, network, cell, element.
+import type { Cell } from '../../model/grid';
+import type { ElementId } from '../../model/ids';
+import type { LdElement } from '../../model/elements';
+import type { Diagnostic, RuleId } from '../api';
+
+/** R1C4: 1-based row and column as the editor shows them. */
+export const cellName = (row: number, col: number): string => `R${row + 1}C${col + 1}`;
+
+const CONTACT_WORDS = { NO: 'contact', NC: 'normally closed contact', P: 'rising-edge contact', N: 'falling-edge contact', NOT: 'inverting contact' } as const;
+const COIL_WORDS = {
+  COIL: 'coil',
+  NEG: 'negated coil',
+  SET: 'set coil',
+  RESET: 'reset coil',
+  M: 'retentive coil',
+  SM: 'retentive set coil',
+  RM: 'retentive reset coil',
+  P: 'rising-edge coil',
+  N: 'falling-edge coil',
+} as const;
+
+/** "the contact "Start"", "the TON block "T1"", "the line at R2C3". */
+export function describeElement(el: LdElement): string {
+  switch (el.kind) {
+    case 'contact':
+      return el.contact === 'NOT' ? `the inverting contact at ${cellName(el.row, el.col)}` : `the ${CONTACT_WORDS[el.contact]} "${el.variable}"`;
+    case 'coil':
+      return `the ${COIL_WORDS[el.coil]} "${el.variable}"`;
+    case 'jump':
+      return `the jump to "${el.target}"`;
+    case 'return':
+      return `the RETURN at ${cellName(el.row, el.col)}`;
+    case 'box':
+      return el.instance ? `the ${el.blockType} block "${el.instance}"` : `the ${el.blockType} block at ${cellName(el.row, el.col)}`;
+    case 'link':
+      return `the line at ${cellName(el.row, el.col)}`;
+  }
+}
+
+export interface Located {
+  readonly id?: ElementId;
+  readonly row: number;
+  readonly col: number;
+}
+
+/** Collects the diagnostics of one network (or of the POU's variable table when network = -1). */
+export class Reporter {
+  constructor(
+    private readonly out: Diagnostic[],
+    readonly pou: string,
+    readonly network: number,
+    readonly networkLabel?: string,
+  ) {}
+
+  /** Errors reported through this reporter so far. */
+  errors = 0;
+
+  error(rule: RuleId, message: string, at?: Located): void {
+    this.errors++;
+    this.add('error', rule, message, at);
+  }
+
+  warning(rule: RuleId, message: string, at?: Located): void {
+    this.add('warning', rule, message, at);
+  }
+
+  private add(severity: Diagnostic['severity'], rule: RuleId, message: string, at?: Located): void {
+    const cell: Cell | undefined = at ? { row: at.row, col: at.col } : undefined;
+    this.out.push({
+      severity,
+      rule,
+      pou: this.pou,
+      network: this.network,
+      ...(this.networkLabel !== undefined && this.networkLabel !== '' ? { networkLabel: this.networkLabel } : {}),
+      ...(cell ? { cell } : {}),
+      ...(at?.id !== undefined ? { elementId: at.id } : {}),
+      message,
+    });
+  }
+}
+
+/** One line for terminals and logs: `error LD-R03 Main/network 2:R1C4 the contact ...`. */
+export function formatDiagnostic(d: Diagnostic): string {
+  const where =
+    d.network < 0
+      ? `${d.pou}/variables`
+      : `${d.pou}/network ${d.network + 1}${d.networkLabel ? ` (${d.networkLabel})` : ''}${d.cell ? `:${cellName(d.cell.row, d.cell.col)}` : ''}`;
+  return `${d.severity} ${d.rule} ${where} ${d.message}`;
+}

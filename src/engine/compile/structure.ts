@@ -1,0 +1,193 @@
+// Structural rules of one network (LD-SEMANTICS.md section 9): LD-R01 right-to-left flow,
+// LD-R02 short circuit, LD-R03 open ends, LD-R04 coils at the right end, LD-R05 one jump,
+// LD-R09 transition coils off the left rail, the wiring half of LD-R10.
+// Returns false when the network cannot be ordered or executed (any error found here).
+import type { LdElement, VLink } from '../../model/elements';
+import type { Network } from '../../model/project';
+import type { GraphNode, Net, NetworkGraph } from './graph';
+import { netIsUsed } from './graph';
+import { cellName, describeElement, type Reporter } from './report';
+
+const isCoil = (el: LdElement) => el.kind === 'coil';
+const isTransitionCoil = (el: LdElement) => el.kind === 'coil' && (el.coil === 'P' || el.coil === 'N');
+
+/** The pin that carries power flow into a box: EN for functions, the first BOOL input for FBs. */
+export function powerInputPin(node: GraphNode): string | undefined {
+  return node.layout?.inputs.find((p) => p.type === 'BOOL')?.name;
+}
+export function powerOutputPin(node: GraphNode): string | undefined {
+  return node.layout?.outputs.find((p) => p.type === 'BOOL')?.name;
+}
+
+export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): boolean {
+  const before = r.errors;
+  const width = g.cols + 1;
+  const at = (p: number) => ({ row: Math.floor(p / width), col: Math.min(p % width, g.cols - 1) });
+
+  for (const m of g.misplaced) {
+    const el = network.elements[m.index]!;
+    r.error('LD-E30', `${describeElement(el)} ${m.reason}`, el);
+  }
+  for (const i of g.badVlinks) {
+    const v = network.vlinks[i]!;
+    r.error('LD-E31', `the vertical link at row ${v.row + 1}, boundary ${v.boundary} lies outside the grid`, { row: v.row, col: v.boundary });
+  }
+
+  // Wires attached to each point, to find dangling ends.
+  const linkRight = new Int32Array(g.rows * width).fill(-1); // link element index starting at p
+  const linkLeft = new Int32Array(g.rows * width).fill(-1); // link element index ending at p
+  const vUp = new Int32Array(g.rows * width).fill(-1);
+  const vDown = new Int32Array(g.rows * width).fill(-1);
+  const terminals = new Uint8Array(g.rows * width);
+  network.elements.forEach((el, i) => {
+    if (el.kind !== 'link' || g.linkNet[i]! < 0) return;
+    const p = el.row * width + el.col;
+    linkRight[p] = i;
+    linkLeft[p + 1] = i;
+  });
+  network.vlinks.forEach((v: VLink, i) => {
+    if (g.vlinkNet[i]! < 0) return;
+    const p = v.row * width + v.boundary;
+    vDown[p] = i;
+    vUp[p + width] = i;
+  });
+  for (const n of g.nodes) for (const t of [...n.inputs, ...n.outputs]) terminals[t.row * width + t.boundary] = 1;
+
+  // LD-R03: dangling wire ends.
+  const reportedLinks = new Set<number>();
+  for (let p = 0; p < g.rows * width; p++) {
+    const b = p % width;
+    if (b === 0 || b === g.cols || terminals[p]) continue;
+    const wires = [linkRight[p], linkLeft[p], vUp[p], vDown[p]].filter((x) => x! >= 0).length;
+    if (wires !== 1) continue;
+    const { row } = at(p);
+    if (linkLeft[p]! >= 0 || linkRight[p]! >= 0) {
+      const i = linkLeft[p]! >= 0 ? linkLeft[p]! : linkRight[p]!;
+      if (reportedLinks.has(i)) continue;
+      reportedLinks.add(i);
+      const el = network.elements[i]!;
+      const side = linkLeft[p]! >= 0 ? 'right' : 'left';
+      r.error('LD-R03', `the line at ${cellName(el.row, el.col)} ends in nothing on its ${side}; connect it or delete it`, el);
+    } else {
+      const v = vUp[p]! >= 0 ? vUp[p]! : vDown[p]!;
+      r.error('LD-R03', `the vertical line at ${cellName(row, b)} ends in nothing; connect it to a line or an element`, {
+        row: network.vlinks[v]!.row,
+        col: Math.max(0, b - 1),
+      });
+    }
+  }
+
+  for (const net of g.nets) {
+    if (!netIsUsed(net)) continue;
+    const hasSource = net.leftRail || net.sources.length > 0;
+    const hasSink = net.rightRail || net.sinks.length > 0;
+    const nodeOf = (i: number) => g.nodes[i]!;
+    // LD-R03: element sides left open.
+    if (!hasSource) {
+      for (const s of net.sinks) {
+        const n = nodeOf(s.node);
+        if (n.el.kind === 'box') {
+          if (net.links.length || net.vlinks.length)
+            r.error('LD-R03', `input ${s.pin} of ${describeElement(n.el)} is wired to a line that starts nowhere; connect the line on its left`, n.el);
+        } else r.error('LD-R03', `${describeElement(n.el)} has an open left side; connect it to the left rail or to an element on its left`, n.el);
+      }
+    }
+    if (!hasSink) {
+      for (const s of net.sources) {
+        const n = nodeOf(s.node);
+        if (n.el.kind === 'contact')
+          r.error('LD-R03', `${describeElement(n.el)} has an open right side; connect it to a coil, a block input or the right rail`, n.el);
+      }
+    }
+    if (!hasSource || !hasSink) continue;
+
+    checkFlowDirection(g, net, r, linkRight, vUp, vDown);
+
+    // LD-R02 short circuit; LD-R09 transition coils on the left rail.
+    const coilSinks = net.sinks.filter((s) => isCoil(nodeOf(s.node).el));
+    if (net.leftRail && net.rightRail) {
+      r.error('LD-R02', `short circuit: a bare line joins the left rail to the right rail at row ${Math.floor(net.points[0]! / width) + 1}; put a contact or coil on it`, at(net.points.find((p) => p % width === g.cols) ?? net.points[0]!));
+    }
+    if (net.leftRail) {
+      for (const s of coilSinks) {
+        const el = nodeOf(s.node).el;
+        if (isTransitionCoil(el)) r.error('LD-R09', `${describeElement(el)} is connected directly to the left rail; a transition coil needs a condition before it`, el);
+        else r.error('LD-R02', `short circuit: ${describeElement(el)} is connected to the left rail by a bare line; put a contact before it`, el);
+      }
+    }
+    if (net.rightRail && !net.leftRail) {
+      for (const s of net.sinks) {
+        const el = nodeOf(s.node).el;
+        r.error('LD-R02', `short circuit: a bare line to the right rail bypasses ${describeElement(el)}; remove the line or put an element on it`, el);
+      }
+    }
+    // LD-R04: after a coil only further coils or the right rail.
+    if (net.sources.some((s) => isCoil(nodeOf(s.node).el))) {
+      const coilSource = nodeOf(net.sources.find((s) => isCoil(nodeOf(s.node).el))!.node).el;
+      for (const s of net.sinks) {
+        const el = nodeOf(s.node).el;
+        if (!isCoil(el))
+          r.error('LD-R04', `${describeElement(el)} stands after ${describeElement(coilSource)}; only coils (or the right rail) may follow a coil`, el);
+      }
+    }
+  }
+
+  // LD-R05: at most one jump per network.
+  const jumps = g.nodes.filter((n) => n.el.kind === 'jump');
+  for (const extra of jumps.slice(1)) r.error('LD-R05', `${describeElement(extra.el)} is a second jump in this network; a network holds at most one jump`, extra.el);
+
+  // LD-R10 (wiring): one power-flow line into a box.
+  for (const n of g.nodes) {
+    if (n.el.kind !== 'box' || !n.layout) continue;
+    const power = powerInputPin(n);
+    const powerNet = n.inputs.find((t) => t.pin === power)?.net;
+    if (powerNet === undefined) continue;
+    for (const t of n.inputs) {
+      if (t.pin === power || t.net !== powerNet) continue;
+      r.error('LD-R10', `the power flow enters ${describeElement(n.el)} twice: ${power} and ${t.pin} share one line; feed ${t.pin} from its own line or give it an operand`, n.el);
+    }
+  }
+  return r.errors === before;
+}
+
+/**
+ * LD-R01: every source of a net must reach every sink of the net moving only rightwards along
+ * horizontal links (vertical links go both ways). Otherwise part of the net carries power from
+ * right to left (a feedback branch or a U-turn), which the language forbids.
+ */
+function checkFlowDirection(
+  g: NetworkGraph,
+  net: Net,
+  r: Reporter,
+  linkRight: Int32Array,
+  vUp: Int32Array,
+  vDown: Int32Array,
+): void {
+  const width = g.cols + 1;
+  const starts = [...net.sources.map((s) => s.point), ...net.points.filter((p) => p % width === 0)];
+  const targets: { point: number; el?: LdElement }[] = [
+    ...net.sinks.map((s) => ({ point: s.point, el: g.nodes[s.node]!.el })),
+    ...net.points.filter((p) => p % width === g.cols).map((point) => ({ point })),
+  ];
+  if (targets.length === 0 || starts.length === 0) return;
+  const seen = new Uint8Array(g.rows * width);
+  const blamed = new Set<number>();
+  for (const start of starts) {
+    seen.fill(0);
+    const stack = [start];
+    seen[start] = 1;
+    while (stack.length) {
+      const p = stack.pop()!;
+      const next = [linkRight[p]! >= 0 ? p + 1 : -1, vDown[p]! >= 0 ? p + width : -1, vUp[p]! >= 0 ? p - width : -1];
+      for (const q of next) if (q >= 0 && !seen[q]) (seen[q] = 1), stack.push(q);
+    }
+    for (const t of targets) {
+      if (seen[t.point] || blamed.has(t.point)) continue;
+      blamed.add(t.point);
+      const row = Math.floor(t.point / width);
+      if (t.el) r.error('LD-R01', `${describeElement(t.el)} is fed from its right: power would flow right to left through the branch at row ${row + 1}; redraw the branch so it runs left to right`, t.el);
+      else r.error('LD-R01', `the line reaching the right rail at row ${row + 1} carries power right to left; redraw the branch so it runs left to right`, { row, col: g.cols - 1 });
+    }
+  }
+}
+

@@ -1,0 +1,330 @@
+// Standard function blocks (IEC 61131-3 tables 43-46) as small classes whose public fields are the
+// IEC pins, so compiled networks can write `t.IN = x; t.PT = 5000; t.execute(now); y = t.Q;`
+// without allocating. Each `execute` follows the ST body of MATIEC's library (lib/timer.txt,
+// counter.txt, edge_detection.txt, bistable.txt), which transcribes the standard; the only
+// profile-dependent part is the counters' counting limit (see profiles.ts).
+import { blockSignature } from '../../model/blocks';
+import type { ElementaryType, Value } from '../../model/iecTypes';
+import type { Profile } from '../../model/project';
+import { normalize } from '../values/types';
+import { counterLimits, type CounterLimits } from './profiles';
+
+export interface FbInstance {
+  readonly fbType: string;
+  /** Runs the body once; `nowMs` is the time at the start of the scan (MATIEC's CURRENT_TIME). */
+  execute(nowMs: number): void;
+  /** Restores every pin and internal state to its initial value (cold restart). */
+  reset(): void;
+  get(pin: string): Value;
+  /** Writes a pin, brought into the pin's type (e.g. PV wraps as an INT). */
+  set(pin: string, v: Value): void;
+  /** Pin names: inputs, then outputs, in signature order. */
+  pins(): readonly string[];
+}
+
+const pinTypes = new Map<string, ReadonlyMap<string, ElementaryType>>();
+
+function pinTypesOf(fbType: string): ReadonlyMap<string, ElementaryType> {
+  let map = pinTypes.get(fbType);
+  if (!map) {
+    const sig = blockSignature(fbType);
+    if (!sig) throw new Error(`no signature for function block ${fbType}`);
+    map = new Map([...sig.inputs, ...sig.outputs].map((p) => [p.name, p.type as ElementaryType]));
+    pinTypes.set(fbType, map);
+  }
+  return map;
+}
+
+abstract class StandardFb implements FbInstance {
+  abstract readonly fbType: string;
+  abstract execute(nowMs: number): void;
+  abstract reset(): void;
+
+  private pinType(pin: string): ElementaryType {
+    const t = pinTypesOf(this.fbType).get(pin.toUpperCase());
+    if (!t) throw new Error(`${this.fbType} has no pin "${pin}" (pins: ${this.pins().join(', ')})`);
+    return t;
+  }
+
+  get(pin: string): Value {
+    this.pinType(pin);
+    return (this as unknown as Record<string, Value>)[pin.toUpperCase()]!;
+  }
+
+  set(pin: string, v: Value): void {
+    const t = this.pinType(pin);
+    (this as unknown as Record<string, Value>)[pin.toUpperCase()] = normalize(t, v);
+  }
+
+  pins(): readonly string[] {
+    return [...pinTypesOf(this.fbType).keys()];
+  }
+}
+
+/** STATE values of the timers' state machine in MATIEC's timer.txt. */
+const RESET = 0;
+const COUNTING = 1;
+const SET = 2;
+
+abstract class Timer extends StandardFb {
+  IN = false;
+  PT = 0;
+  Q = false;
+  ET = 0;
+  STATE = RESET;
+  PREV_IN = false;
+  START_TIME = 0;
+
+  reset(): void {
+    this.IN = false;
+    this.PT = 0;
+    this.Q = false;
+    this.ET = 0;
+    this.STATE = RESET;
+    this.PREV_IN = false;
+    this.START_TIME = 0;
+  }
+}
+
+/** On-delay: Q goes ON once IN has been ON for PT (seen at a scan start); ET stops at PT. */
+export class TON extends Timer {
+  readonly fbType = 'TON';
+  execute(now: number): void {
+    if (this.STATE === RESET && !this.PREV_IN && this.IN) {
+      // Rising edge: start timing. ET is not updated in this scan (it is still 0).
+      this.STATE = COUNTING;
+      this.Q = false;
+      this.START_TIME = now;
+    } else if (!this.IN) {
+      this.ET = 0;
+      this.Q = false;
+      this.STATE = RESET;
+    } else if (this.STATE === COUNTING) {
+      if (this.START_TIME + this.PT <= now) {
+        this.STATE = SET;
+        this.Q = true;
+        this.ET = this.PT;
+      } else this.ET = now - this.START_TIME;
+    }
+    this.PREV_IN = this.IN;
+  }
+}
+
+/** Off-delay: Q follows IN ON and stays ON for PT after IN goes OFF; ET holds PT until IN comes back. */
+export class TOF extends Timer {
+  readonly fbType = 'TOF';
+  execute(now: number): void {
+    if (this.STATE === RESET && this.PREV_IN && !this.IN) {
+      this.STATE = COUNTING;
+      this.START_TIME = now;
+    } else if (this.IN) {
+      this.ET = 0;
+      this.STATE = RESET;
+    } else if (this.STATE === COUNTING) {
+      if (this.START_TIME + this.PT <= now) {
+        this.STATE = SET;
+        this.ET = this.PT;
+      } else this.ET = now - this.START_TIME;
+    }
+    this.Q = this.IN || this.STATE === COUNTING;
+    this.PREV_IN = this.IN;
+  }
+}
+
+/** Pulse: a rising edge of IN gives Q ON for PT; edges during the pulse are ignored (not retriggerable). */
+export class TP extends Timer {
+  readonly fbType = 'TP';
+  execute(now: number): void {
+    if (this.STATE === RESET && !this.PREV_IN && this.IN) {
+      this.STATE = COUNTING;
+      this.Q = true;
+      this.START_TIME = now;
+    } else if (this.STATE === COUNTING) {
+      if (this.START_TIME + this.PT <= now) {
+        this.STATE = SET;
+        this.Q = false;
+        this.ET = this.PT;
+      } else this.ET = now - this.START_TIME;
+    }
+    // ET stays at PT after the pulse while IN is still ON, and resets once IN is OFF.
+    if (this.STATE === SET && !this.IN) {
+      this.ET = 0;
+      this.STATE = RESET;
+    }
+    this.PREV_IN = this.IN;
+  }
+}
+
+/** Up counter. CU counts on its rising edge (an internal R_TRIG, as MATIEC's CU_T). */
+export class CTU extends StandardFb {
+  readonly fbType = 'CTU';
+  CU = false;
+  R = false;
+  PV = 0;
+  Q = false;
+  CV = 0;
+  /** Edge memory of CU (MATIEC: CU_T.M). */
+  CU_M = false;
+  constructor(private readonly limits: CounterLimits) {
+    super();
+  }
+  execute(_nowMs: number): void {
+    const edge = this.CU && !this.CU_M;
+    this.CU_M = this.CU;
+    if (this.R) this.CV = 0;
+    else if (edge && this.CV < this.limits.upTo(this.PV)) this.CV += 1;
+    this.Q = this.CV >= this.PV;
+  }
+  reset(): void {
+    this.CU = this.R = this.Q = this.CU_M = false;
+    this.PV = this.CV = 0;
+  }
+}
+
+/** Down counter. CD counts on its rising edge; LD loads PV. */
+export class CTD extends StandardFb {
+  readonly fbType = 'CTD';
+  CD = false;
+  LD = false;
+  PV = 0;
+  Q = false;
+  CV = 0;
+  /** Edge memory of CD (MATIEC: CD_T.M). */
+  CD_M = false;
+  constructor(private readonly limits: CounterLimits) {
+    super();
+  }
+  execute(_nowMs: number): void {
+    const edge = this.CD && !this.CD_M;
+    this.CD_M = this.CD;
+    if (this.LD) this.CV = this.PV;
+    else if (edge && this.CV > this.limits.downTo) this.CV -= 1;
+    this.Q = this.CV <= 0;
+  }
+  reset(): void {
+    this.CD = this.LD = this.Q = this.CD_M = false;
+    this.PV = this.CV = 0;
+  }
+}
+
+/** Up-down counter: R wins over LD; edges of CU and CD in the same scan cancel out. */
+export class CTUD extends StandardFb {
+  readonly fbType = 'CTUD';
+  CU = false;
+  CD = false;
+  R = false;
+  LD = false;
+  PV = 0;
+  QU = false;
+  QD = false;
+  CV = 0;
+  CU_M = false;
+  CD_M = false;
+  constructor(private readonly limits: CounterLimits) {
+    super();
+  }
+  execute(_nowMs: number): void {
+    const down = this.CD && !this.CD_M;
+    this.CD_M = this.CD;
+    const up = this.CU && !this.CU_M;
+    this.CU_M = this.CU;
+    if (this.R) this.CV = 0;
+    else if (this.LD) this.CV = this.PV;
+    else if (!(up && down)) {
+      if (up && this.CV < this.limits.upTo(this.PV)) this.CV += 1;
+      else if (down && this.CV > this.limits.downTo) this.CV -= 1;
+    }
+    this.QU = this.CV >= this.PV;
+    this.QD = this.CV <= 0;
+  }
+  reset(): void {
+    this.CU = this.CD = this.R = this.LD = this.QU = this.QD = this.CU_M = this.CD_M = false;
+    this.PV = this.CV = 0;
+  }
+}
+
+/** Rising edge: Q := CLK AND NOT M; M := CLK. M starts FALSE, so CLK ON at the first call gives a pulse. */
+export class R_TRIG extends StandardFb {
+  readonly fbType = 'R_TRIG';
+  CLK = false;
+  Q = false;
+  M = false;
+  execute(_nowMs: number): void {
+    this.Q = this.CLK && !this.M;
+    this.M = this.CLK;
+  }
+  reset(): void {
+    this.CLK = this.Q = this.M = false;
+  }
+}
+
+/** Falling edge: Q := NOT CLK AND NOT M; M := NOT CLK. M starts FALSE, so CLK OFF at the first call gives a pulse. */
+export class F_TRIG extends StandardFb {
+  readonly fbType = 'F_TRIG';
+  CLK = false;
+  Q = false;
+  M = false;
+  execute(_nowMs: number): void {
+    this.Q = !this.CLK && !this.M;
+    this.M = !this.CLK;
+  }
+  reset(): void {
+    this.CLK = this.Q = this.M = false;
+  }
+}
+
+/** Set-dominant bistable: Q1 := S1 OR (NOT R AND Q1). */
+export class SR extends StandardFb {
+  readonly fbType = 'SR';
+  S1 = false;
+  R = false;
+  Q1 = false;
+  execute(_nowMs: number): void {
+    this.Q1 = this.S1 || (!this.R && this.Q1);
+  }
+  reset(): void {
+    this.S1 = this.R = this.Q1 = false;
+  }
+}
+
+/** Reset-dominant bistable: Q1 := NOT R1 AND (S OR Q1). */
+export class RS extends StandardFb {
+  readonly fbType = 'RS';
+  S = false;
+  R1 = false;
+  Q1 = false;
+  execute(_nowMs: number): void {
+    this.Q1 = !this.R1 && (this.S || this.Q1);
+  }
+  reset(): void {
+    this.S = this.R1 = this.Q1 = false;
+  }
+}
+
+/** A fresh instance of a standard FB (name case-insensitive), or undefined for an unknown type. */
+export function createFb(type: string, profile: Profile): FbInstance | undefined {
+  switch (type.toUpperCase()) {
+    case 'TON':
+      return new TON();
+    case 'TOF':
+      return new TOF();
+    case 'TP':
+      return new TP();
+    case 'CTU':
+      return new CTU(counterLimits(profile));
+    case 'CTD':
+      return new CTD(counterLimits(profile));
+    case 'CTUD':
+      return new CTUD(counterLimits(profile));
+    case 'R_TRIG':
+      return new R_TRIG();
+    case 'F_TRIG':
+      return new F_TRIG();
+    case 'SR':
+      return new SR();
+    case 'RS':
+      return new RS();
+    default:
+      return undefined;
+  }
+}

@@ -1,0 +1,220 @@
+// Resolution of a standard function call to a concrete, typed implementation. Signatures come from
+// model/blocks.ts: poly pins share one concrete type, the narrowest type every typed argument widens
+// to (canWiden); untyped literals (argType undefined) adopt that type, or `outTypeHint` when no
+// argument is typed. Behaviour per function lives in arithmetic.ts, bitwise.ts, select.ts, convert.ts.
+import { blockSignature, conversionTypes, type BlockSignature, type PinSignature } from '../../model/blocks';
+import { GENERIC_MEMBERS, isElementaryType, type ElementaryType, type GenericType, type Value } from '../../model/iecTypes';
+import type { Profile } from '../../model/project';
+import { canWiden, commonType, isSignedType } from '../values/types';
+import { absolute, arithmetic, negate, type ArithOp } from './arithmetic';
+import { complement, logic, shift, type LogicOp, type ShiftOp } from './bitwise';
+import { conversion } from './convert';
+import type { FnContext, FnImpl, FnImpl1, FnImpl2, ResolvedFunction } from './fnTypes';
+import { compare, extreme, limit, multiplex, select, type CompareOp } from './select';
+
+export type { FnContext, ResolvedFunction } from './fnTypes';
+
+export type ResolveResult = { ok: true; fn: ResolvedFunction } | { ok: false; message: string };
+
+const VERB: Record<string, string> = {
+  ADD: 'add',
+  SUB: 'subtract',
+  MUL: 'multiply',
+  DIV: 'divide',
+  MOD: 'take the remainder of',
+  ABS: 'take the absolute value of',
+  NEG: 'negate',
+  AND: 'combine',
+  OR: 'combine',
+  XOR: 'combine',
+  NOT: 'invert',
+  SHL: 'shift',
+  SHR: 'shift',
+  ROL: 'rotate',
+  ROR: 'rotate',
+  SEL: 'select between',
+  MUX: 'select between',
+  MAX: 'compare',
+  GT: 'compare',
+  GE: 'compare',
+  EQ: 'compare',
+  NE: 'compare',
+  LE: 'compare',
+  LT: 'compare',
+  MIN: 'compare',
+  LIMIT: 'limit',
+  MOVE: 'copy',
+};
+
+/** Type an untyped literal takes when neither a typed argument nor a hint says more. */
+const LITERAL_DEFAULT: Record<GenericType, ElementaryType> = {
+  ANY: 'INT',
+  ANY_ELEMENTARY: 'INT',
+  ANY_MAGNITUDE: 'INT',
+  ANY_NUM: 'INT',
+  ANY_INT: 'INT',
+  ANY_REAL: 'REAL',
+  ANY_BIT: 'BOOL',
+};
+
+const admits = (pinType: PinSignature['type'], t: ElementaryType): boolean =>
+  isElementaryType(pinType) ? pinType === t : GENERIC_MEMBERS[pinType].includes(t);
+
+const listTypes = (types: readonly ElementaryType[]): string => {
+  const distinct = [...new Set(types)];
+  return distinct.length === 1 ? distinct[0]! : `${distinct.slice(0, -1).join(', ')} and ${distinct[distinct.length - 1]}`;
+};
+
+/** The input pins of a call with `count` inputs, extensible series expanded (ADD: IN1..INn; MUX: K, IN0..INn-1). */
+function expandInputs(sig: BlockSignature, count: number): readonly PinSignature[] | string {
+  const ext = sig.extensible;
+  if (!ext) {
+    if (count === sig.inputs.length) return sig.inputs;
+    return `${sig.name} takes ${sig.inputs.length} input${sig.inputs.length === 1 ? '' : 's'} (${sig.inputs.map((p) => p.name).join(', ')}), not ${count}`;
+  }
+  const series = new RegExp(`^${ext.prefix}\\d+$`);
+  const fixed = sig.inputs.filter((p) => !series.test(p.name));
+  const repeated = sig.inputs[sig.inputs.length - 1]!;
+  const n = count - fixed.length;
+  if (n < ext.min || n > ext.max) {
+    const first = `${ext.prefix}${ext.start}`;
+    return `${sig.name} takes ${fixed.length ? `${fixed.map((p) => p.name).join(', ')} and ` : ''}${ext.min} to ${ext.max} inputs ${first}.., not ${n}`;
+  }
+  return [...fixed, ...Array.from({ length: n }, (_, i) => ({ ...repeated, name: `${ext.prefix}${ext.start + i}` }))];
+}
+
+const fold =
+  (op: FnImpl2): FnImpl =>
+  (ctx, args) => {
+    let acc = op(ctx, args[0]!, args[1]!);
+    for (let i = 2; i < args.length; i++) acc = op(ctx, acc, args[i]!);
+    return acc;
+  };
+const fromImpl2 =
+  (op: FnImpl2): FnImpl =>
+  (ctx, args) =>
+    op(ctx, args[0]!, args[1]!);
+const fromImpl1 =
+  (op: FnImpl1): FnImpl =>
+  (ctx, args) =>
+    op(ctx, args[0]!);
+
+type Impls = { impl: FnImpl; impl1?: FnImpl1; impl2?: FnImpl2 } | string;
+
+function implement(name: string, t: ElementaryType, argTypes: readonly ElementaryType[], profile: Profile): Impls {
+  const one = (f: FnImpl1): Impls => ({ impl: fromImpl1(f), impl1: f });
+  const two = (f: FnImpl2, extensible: boolean): Impls => ({ impl: extensible ? fold(f) : fromImpl2(f), impl2: f });
+  const conv = conversionTypes(name);
+  if (conv) return one(conversion(conv.from, conv.to, profile));
+  switch (name) {
+    case 'MOVE':
+      return one((_c, a) => a);
+    case 'ADD':
+    case 'SUB':
+    case 'MUL':
+    case 'DIV':
+    case 'MOD': {
+      const op = arithmetic(name as ArithOp, t, profile);
+      if (!op) return `${name} cannot ${VERB[name]} ${t} values`;
+      return two(op, name === 'ADD' || name === 'MUL');
+    }
+    case 'ABS':
+      return one(absolute(t));
+    case 'NEG':
+      if (!isSignedType(t) || t === 'TIME') return `NEG cannot negate ${t}: it is unsigned`;
+      return one(negate(t));
+    case 'GT':
+    case 'GE':
+    case 'EQ':
+    case 'NE':
+    case 'LE':
+    case 'LT': {
+      const c = compare(name as CompareOp, t);
+      return argTypes.length === 2 ? { impl: c.impl, impl2: c.impl2 } : { impl: c.impl };
+    }
+    case 'MAX':
+    case 'MIN': {
+      const e = extreme(name, t);
+      return argTypes.length === 2 ? { impl: e.impl, impl2: e.impl2 } : { impl: e.impl };
+    }
+    case 'AND':
+    case 'OR':
+    case 'XOR':
+      return two(logic(name as LogicOp, t), true);
+    case 'NOT':
+      return one(complement(t));
+    case 'SHL':
+    case 'SHR':
+    case 'ROL':
+    case 'ROR':
+      return two(shift(name as ShiftOp, t), false);
+    case 'SEL':
+      return { impl: select };
+    case 'MUX':
+      return { impl: multiplex(t) };
+    case 'LIMIT':
+      return { impl: limit(t, profile) };
+    default:
+      return `${name} has no implementation`;
+  }
+}
+
+/**
+ * Resolves a call of a standard function. `argTypes` are the types of the inputs in expanded
+ * order without EN (undefined = untyped literal). The implementation expects values of the
+ * returned `argTypes` (widen typed arguments with values/types.widen) and sets ctx.error for ENO.
+ */
+export function resolveFunction(
+  name: string,
+  argTypes: readonly (ElementaryType | undefined)[],
+  profile: Profile,
+  outTypeHint?: ElementaryType,
+): ResolveResult {
+  const sig = blockSignature(name);
+  if (!sig || sig.kind !== 'function') return { ok: false, message: `${name} is not a standard function` };
+  const fname = sig.name;
+  const pins = expandInputs(sig, argTypes.length);
+  if (typeof pins === 'string') return { ok: false, message: pins };
+  const out = sig.outputs[0]!;
+
+  // The shared type of the poly pins.
+  const polyIndexes = pins.flatMap((p, i) => (p.poly ? [i] : []));
+  const typed = polyIndexes.flatMap((i) => (argTypes[i] ? [argTypes[i]] : []));
+  const generic = (pins[polyIndexes[0] ?? 0]?.type ?? out.type) as PinSignature['type'];
+  let poly: ElementaryType | undefined;
+  if (typed.length) {
+    poly = commonType(typed);
+    if (!poly || !admits(generic, poly)) {
+      const what = typed.length === 1 ? typed[0]! : listTypes(typed);
+      return { ok: false, message: `${fname} cannot ${VERB[fname] ?? 'use'} ${what}` };
+    }
+  } else if (polyIndexes.length || out.poly) {
+    poly = outTypeHint && admits(generic, outTypeHint) ? outTypeHint : isElementaryType(generic) ? generic : LITERAL_DEFAULT[generic];
+  }
+
+  const concrete: ElementaryType[] = [];
+  for (const [i, pin] of pins.entries()) {
+    const arg = argTypes[i];
+    if (pin.poly) {
+      concrete.push(poly!);
+    } else if (isElementaryType(pin.type)) {
+      if (arg && !canWiden(arg, pin.type)) return { ok: false, message: `${fname} input ${pin.name} needs ${pin.type}, not ${arg}` };
+      concrete.push(pin.type);
+    } else {
+      if (arg && !admits(pin.type, arg)) return { ok: false, message: `${fname} input ${pin.name} needs an integer (${pin.type}), not ${arg}` };
+      concrete.push(arg ?? LITERAL_DEFAULT[pin.type]);
+    }
+  }
+  const outType = out.poly ? poly! : (out.type as ElementaryType);
+  const impls = implement(fname, poly ?? outType, concrete, profile);
+  if (typeof impls === 'string') return { ok: false, message: impls };
+  const fn: ResolvedFunction = { name: fname, argTypes: concrete, outType, inputNames: pins.map((p) => p.name), ...impls };
+  return { ok: true, fn };
+}
+
+/** Calls a resolved function once with a fresh context (for tests, constant folding and tools). */
+export function callFunction(fn: ResolvedFunction, args: readonly Value[]): { value: Value; eno: boolean } {
+  const ctx: FnContext = { error: false };
+  const value = fn.impl(ctx, args);
+  return { value, eno: !ctx.error };
+}

@@ -1,0 +1,82 @@
+// Semantics profiles (LD-SEMANTICS.md section 10): where the standard's text and MATIEC (the compiler
+// under Beremiz and OpenPLC Runtime) give different results for the same program.
+//
+// Found by reading MATIEC's lib/counter.txt, lib/C/iec_std_lib.h and lib/C/iec_std_functions.h:
+//
+// | id                   | iec (standard text)                         | openplc (MATIEC)                                   |
+// | counter-up-limit     | CTU/CTUD count up while CV < 32767 (INT max)| count up only while CV < PV                        |
+// | counter-down-limit   | CTD/CTUD count down while CV > -32768       | count down only while CV > 0                       |
+// | time-conversion-unit | TIME_TO_<int/bits/real> gives ms, and       | gives seconds (timespec tv_sec; REAL with fraction)|
+// |                      | <int/bits/real>_TO_TIME reads ms            | and reads seconds                                  |
+// | mod-by-zero          | MOD(x, 0) = 0 with ENO OFF                  | MOD(x, 0) = 0 with ENO ON (TEST_EN, no condition)  |
+// | conversion-range     | out-of-range conversion turns ENO OFF       | C cast: ENO stays ON                               |
+// |                      | (the value is the same wrapped result)      |                                                    |
+// | limit-crossed        | LIMIT = MIN(MAX(IN, MN), MX): MX if MN > MX | IN > MN ? (IN < MX ? IN : MX) : MN: MN if MN >= IN |
+//
+// Same in both (checked): timers, edge detection, bistables; DIV by zero (ENO OFF, result 0);
+// REAL_TO_<int> rounds to nearest with ties to even (MATIEC __real_round); negative REAL to an
+// unsigned type gives 0; <num>_TO_BOOL is TRUE for any non-zero value; integer arithmetic wraps.
+// Not emulated (undefined behaviour in MATIEC's C, differs between x86 and ARM targets): shifts by
+// N >= the type's width (here: 0 for SHL/SHR), DINT/LINT minimum DIV -1 (a crash there, wraps here).
+import type { Profile } from '../../model/project';
+
+export interface ProfileDifference {
+  readonly id: string;
+  readonly summary: string;
+  readonly iec: string;
+  readonly openplc: string;
+}
+
+export const PROFILE_DIFFERENCES: readonly ProfileDifference[] = [
+  {
+    id: 'counter-up-limit',
+    summary: 'Where CTU and CTUD stop counting up',
+    iec: 'Count up while CV < 32767 (the INT maximum); CV can pass PV.',
+    openplc: 'Count up only while CV < PV; CV stops at PV.',
+  },
+  {
+    id: 'counter-down-limit',
+    summary: 'Where CTD and CTUD stop counting down',
+    iec: 'Count down while CV > -32768 (the INT minimum); CV can go below 0.',
+    openplc: 'Count down only while CV > 0; CV stops at 0.',
+  },
+  {
+    id: 'time-conversion-unit',
+    summary: 'Unit of TIME_TO_* and *_TO_TIME conversions',
+    iec: 'Milliseconds: TIME_TO_DINT(T#1s500ms) = 1500, DINT_TO_TIME(250) = T#250ms.',
+    openplc: 'Seconds: TIME_TO_DINT(T#1s500ms) = 1, DINT_TO_TIME(250) = T#4m10s, TIME_TO_REAL(T#1s500ms) = 1.5.',
+  },
+  {
+    id: 'mod-by-zero',
+    summary: 'MOD with IN2 = 0',
+    iec: 'OUT = 0 and ENO goes OFF (an error).',
+    openplc: 'OUT = 0 and ENO stays ON.',
+  },
+  {
+    id: 'conversion-range',
+    summary: 'Conversions whose value does not fit the target type',
+    iec: 'ENO goes OFF; OUT is the wrapped value (INT_TO_SINT(300) = 44, REAL_TO_UINT(-1.0) = 0).',
+    openplc: 'ENO stays ON; OUT is the same wrapped value (a C cast).',
+  },
+  {
+    id: 'limit-crossed',
+    summary: 'LIMIT when MN is greater than MX',
+    iec: 'OUT = MIN(MAX(IN, MN), MX), which is MX.',
+    openplc: 'OUT = MN unless IN > MN (then MX, as IN > MX too).',
+  },
+];
+
+export interface CounterLimits {
+  /** CV may count up while CV < upTo(PV). */
+  upTo(pv: number): number;
+  /** CV may count down while CV > downTo. */
+  readonly downTo: number;
+}
+
+const IEC_LIMITS: CounterLimits = { upTo: () => 32767, downTo: -32768 };
+const OPENPLC_LIMITS: CounterLimits = { upTo: (pv) => pv, downTo: 0 };
+
+export const counterLimits = (profile: Profile): CounterLimits => (profile === 'openplc' ? OPENPLC_LIMITS : IEC_LIMITS);
+
+/** Milliseconds per unit of a number converted to or from TIME. */
+export const timeConversionUnitMs = (profile: Profile): number => (profile === 'openplc' ? 1000 : 1);

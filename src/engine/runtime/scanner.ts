@@ -1,0 +1,341 @@
+// The scan cycle (LD-SEMANTICS.md section 7): input image -> networks (jumps, returns) -> output
+// image, on a virtual clock (scan k starts at (k-1) x cycleMs) or an injected real clock, with a
+// watchdog, forcing, cold/warm restart, stepping one network at a time and power snapshots.
+import type { Value } from '../../model/iecTypes';
+import type { Fault, NetworkPower, Plc, PlcOptions, PowerSnapshot, ScanReport, StepReport } from '../api';
+import type { FnContext } from '../library/fnTypes';
+import { FACTORY_PARAMS, generateNetwork, slotKey } from '../compile/codegen';
+import type { CompiledProgram } from '../compile/program';
+import type { Access, VarSymbol } from '../compile/symbols';
+import { coerce, Memory } from './memory';
+
+type NetworkFn = (now: number) => number;
+
+// Wall clock for the watchdog and execMs (the engine core has no DOM or Node typings).
+const perf = (globalThis as { performance?: { now(): number } }).performance;
+const now: () => number = perf ? () => perf.now() : () => Date.now();
+
+export class ScanPlc implements Plc {
+  readonly pou: string;
+  readonly profile: CompiledProgram['profile'];
+  private readonly mem: Memory;
+  private readonly nets: NetworkFn[];
+  /** Power-flow net values per network, written by the generated code. */
+  private readonly power: Uint8Array[];
+  /** Scan number in which each network last ran. */
+  private readonly ranIn: Int32Array;
+  private readonly ctx: FnContext = { error: false };
+  private readonly inputs: VarSymbol[];
+  private readonly inputImage: Value[];
+  private readonly outputsVars: VarSymbol[];
+  private readonly outputImage: Value[];
+  private readonly forces = new Map<VarSymbol, Value>();
+  /** Networks that write each slot (`b:3`), to regenerate when its variable is (un)forced. */
+  private readonly writers = new Map<string, Set<number>>();
+  private readonly maxEvals: number;
+  private readonly maxScanMs: number;
+  private count = 0;
+  private time = 0;
+  private cursor = -1;
+  private evals = 0;
+  /** Network whose jump last went backwards in this scan (named by the watchdog). */
+  private backJump = -1;
+  private scanStart = 0;
+  private lastExecMs = 0;
+  private clockOrigin = 0;
+  private currentFault: Fault | undefined;
+
+  constructor(
+    private readonly program: CompiledProgram,
+    private readonly opts: PlcOptions,
+  ) {
+    this.pou = program.pou;
+    this.profile = program.profile;
+    this.mem = new Memory(program);
+    this.power = program.networks.map((n) => new Uint8Array(Math.max(1, n.netCount)));
+    this.ranIn = new Int32Array(program.networks.length).fill(-1);
+    const vars = program.symbols.vars;
+    this.inputs = vars.filter((v) => v.location?.area === 'I');
+    this.inputImage = this.inputs.map((v) => v.initial);
+    this.outputsVars = vars.filter((v) => v.location?.area === 'Q');
+    this.outputImage = this.outputsVars.map((v) => v.initial);
+    this.maxEvals = opts.maxNetworkEvaluations ?? 100 * program.networks.length + 10_000;
+    this.maxScanMs = opts.maxScanMs ?? 1000;
+    program.networks.forEach((ir) => {
+      for (const op of ir.ops) {
+        const dsts: (Access | undefined)[] = op.op === 'coil' ? [op.dst] : op.op === 'function' ? [op.out.dst, op.eno.dst] : op.op === 'fb' ? op.outs.map((o) => o.dst) : [];
+        for (const d of dsts) {
+          if (d?.kind !== 'var' && d?.kind !== 'bit') continue;
+          const key = slotKey(d.v.store, d.v.slot);
+          if (!this.writers.has(key)) this.writers.set(key, new Set());
+          this.writers.get(key)!.add(ir.index);
+        }
+      }
+    });
+    this.nets = program.networks.map((_, i) => this.build(i));
+    this.coldRestart();
+  }
+
+  private build(index: number): NetworkFn {
+    const forced = new Set([...this.forces.keys()].map((v) => slotKey(v.store, v.slot)));
+    const gen = generateNetwork(this.program.networks[index]!, this.program.functions, forced);
+    const factory = new Function(...FACTORY_PARAMS, gen.body) as (...args: unknown[]) => NetworkFn;
+    const m = this.mem;
+    return factory(m.b, m.n, m.g, m.fbs, this.program.functions, m.edges, this.power[index], gen.constants, this.ctx);
+  }
+
+  get scanCount(): number {
+    return this.count;
+  }
+  get timeMs(): number {
+    return this.time;
+  }
+  get fault(): Fault | undefined {
+    return this.currentFault;
+  }
+  get nextNetwork(): number {
+    return this.cursor >= 0 ? this.cursor : -1;
+  }
+
+  // ---- scan cycle ----
+
+  private startScan(): void {
+    this.count++;
+    this.time = this.opts.clock ? this.opts.clock.now() - this.clockOrigin : (this.count - 1) * this.opts.cycleMs;
+    this.scanStart = now();
+    // 1. Input image: inputs do not change during the scan; forced inputs keep their forced value.
+    for (let i = 0; i < this.inputs.length; i++) {
+      const v = this.inputs[i]!;
+      if (!this.forces.has(v)) this.mem.store(v, this.inputImage[i]!);
+    }
+    this.cursor = this.nets.length > 0 ? 0 : -2;
+    this.evals = 0;
+    this.backJump = -1;
+  }
+
+  private endScan(): void {
+    // 3. Output image, in one operation.
+    for (let i = 0; i < this.outputsVars.length; i++) this.outputImage[i] = this.mem.load(this.outputsVars[i]!);
+    this.cursor = -1;
+    this.lastExecMs = now() - this.scanStart;
+  }
+
+  /** Runs networks from the cursor; stops after one when `single`. Returns the network run last. */
+  private run(single: boolean): number {
+    const nets = this.nets;
+    const count = nets.length;
+    const ranIn = this.ranIn;
+    const scan = this.count;
+    const t = this.time;
+    const maxEvals = this.maxEvals;
+    let evals = this.evals;
+    let i = this.cursor;
+    let last = -1;
+    while (i >= 0 && i < count) {
+      ranIn[i] = scan;
+      last = i;
+      const next = nets[i]!(t);
+      evals++;
+      if (next <= i && next >= 0) this.backJump = i;
+      if (evals >= maxEvals || ((evals & 1023) === 0 && now() - this.scanStart > this.maxScanMs)) {
+        this.evals = evals;
+        this.trip(i);
+        return last;
+      }
+      i = next;
+      if (single) break;
+    }
+    this.evals = evals;
+    this.cursor = i >= 0 && i < count ? i : -2;
+    return last;
+  }
+
+  private trip(at: number): void {
+    const network = this.backJump >= 0 ? this.backJump : at;
+    const label = this.program.networks[network]!.label;
+    const where = `network ${network + 1}${label ? ` (label ${label})` : ''}`;
+    const limit = this.evals >= this.maxEvals ? `${this.maxEvals.toLocaleString('en-US')} network evaluations` : `${this.maxScanMs} ms`;
+    this.currentFault = {
+      kind: 'watchdog',
+      pou: this.pou,
+      network,
+      ...(label ? { networkLabel: label } : {}),
+      message: `watchdog: scan exceeded ${limit}; ${this.backJump >= 0 ? `looping in ${where}` : `stopped at ${where}`}`,
+    };
+    this.cursor = -1;
+    this.lastExecMs = now() - this.scanStart;
+  }
+
+  private report(): ScanReport {
+    return { scan: this.count, timeMs: this.time, execMs: this.lastExecMs, ...(this.currentFault ? { fault: this.currentFault } : {}) };
+  }
+
+  scan(): ScanReport {
+    this.runScans(1);
+    return this.report();
+  }
+
+  scans(n: number): ScanReport {
+    this.runScans(n);
+    return this.report();
+  }
+
+  private runScans(n: number): void {
+    for (let k = 0; k < n && !this.currentFault; k++) {
+      if (this.cursor === -1) this.startScan();
+      this.run(false);
+      if (this.currentFault) return;
+      this.endScan();
+    }
+  }
+
+  runUntil(cond: (plc: Plc) => boolean, maxScans: number): boolean {
+    for (let k = 0; k < maxScans && !this.currentFault; k++) {
+      this.runScans(1);
+      if (!this.currentFault && cond(this)) return true;
+    }
+    return false;
+  }
+
+  stepNetwork(): StepReport {
+    if (this.currentFault) return { executed: -1, next: -1, scanDone: false, fault: this.currentFault };
+    if (this.cursor === -1) this.startScan();
+    const executed = this.cursor >= 0 ? this.run(true) : -1;
+    if (this.currentFault) return { executed, next: -1, scanDone: false, fault: this.currentFault };
+    if (this.cursor === -2) {
+      this.endScan();
+      return { executed, next: -1, scanDone: true };
+    }
+    return { executed, next: this.cursor, scanDone: false };
+  }
+
+  clearFault(): void {
+    this.currentFault = undefined;
+    this.cursor = -1;
+  }
+
+  // ---- variables ----
+
+  private access(name: string): Access {
+    const res = this.program.symbols.resolve(name, { literals: false, implicitLocations: false });
+    if (!res.ok) throw new Error(`${name}: ${res.message}`);
+    return res.access;
+  }
+
+  read(name: string): Value {
+    return this.mem.read(this.access(name));
+  }
+
+  write(name: string, value: Value): void {
+    const a = this.access(name);
+    const v = coerce(a.type, value, `"${name}"`);
+    if (a.kind === 'var' && a.v.location?.area === 'I') {
+      this.inputImage[this.inputs.indexOf(a.v)] = v;
+      return;
+    }
+    if ((a.kind === 'var' || a.kind === 'bit') && this.forces.has(a.v)) return; // a forced value wins
+    this.mem.write(a, v);
+  }
+
+  private forceTarget(name: string): VarSymbol {
+    const a = this.access(name);
+    if (a.kind !== 'var') throw new Error(`${name}: only variables can be forced (not FB pins or bits)`);
+    return a.v;
+  }
+
+  force(name: string, value: Value): void {
+    const v = this.forceTarget(name);
+    const val = coerce(v.type, value, `"${name}"`);
+    const fresh = !this.forces.has(v);
+    this.forces.set(v, val);
+    this.mem.store(v, val);
+    if (fresh) this.rebuildWriters(v);
+  }
+
+  unforce(name: string): void {
+    const v = this.forceTarget(name);
+    if (this.forces.delete(v)) this.rebuildWriters(v);
+  }
+
+  unforceAll(): void {
+    const vars = [...this.forces.keys()];
+    this.forces.clear();
+    for (const v of vars) this.rebuildWriters(v);
+  }
+
+  forced(): ReadonlyMap<string, Value> {
+    return new Map([...this.forces].map(([v, val]) => [v.name, val]));
+  }
+
+  /** Regenerates the networks that write a variable, so a forced one is no longer written. */
+  private rebuildWriters(v: VarSymbol): void {
+    for (const i of this.writers.get(slotKey(v.store, v.slot)) ?? []) this.nets[i] = this.build(i);
+  }
+
+  setInputs(values: Readonly<Record<string, Value>>): void {
+    for (const [loc, value] of Object.entries(values)) {
+      const v = this.program.symbols.atLocation(loc, false);
+      const index = v ? this.inputs.indexOf(v) : -1;
+      if (!v || index < 0) throw new Error(`${loc}: no input variable is declared at this location`);
+      this.inputImage[index] = coerce(v.type, value, loc);
+    }
+  }
+
+  outputs(): Record<string, Value> {
+    const out: Record<string, Value> = {};
+    this.outputsVars.forEach((v, i) => (out[v.locationText!] = this.outputImage[i]!));
+    return out;
+  }
+
+  variableNames(): string[] {
+    const names = this.program.symbols.vars.map((v) => v.name);
+    for (const fb of this.program.symbols.fbs) for (const pin of this.mem.fbs[fb.index]!.pins()) names.push(`${fb.name}.${pin}`);
+    return names;
+  }
+
+  values(): Record<string, Value> {
+    const out: Record<string, Value> = {};
+    for (const v of this.program.symbols.vars) out[v.name] = this.mem.load(v);
+    return out;
+  }
+
+  // ---- restarts ----
+
+  private resetCommon(): void {
+    this.cursor = -1;
+    this.currentFault = undefined;
+    this.ranIn.fill(-1);
+    for (const p of this.power) p.fill(0);
+    for (const [v, val] of this.forces) this.mem.store(v, val);
+    this.outputsVars.forEach((v, i) => (this.outputImage[i] = this.mem.load(v)));
+  }
+
+  coldRestart(): void {
+    this.mem.initialise();
+    this.count = 0;
+    this.time = 0;
+    this.clockOrigin = this.opts.clock?.now() ?? 0;
+    this.resetCommon();
+  }
+
+  warmRestart(): void {
+    const fbs = new Set(this.program.symbols.fbs.filter((f) => f.retain).map((f) => f.index));
+    this.mem.initialise({ vars: this.program.retentive, fbs });
+    this.resetCommon();
+  }
+
+  snapshot(): PowerSnapshot {
+    const networks: NetworkPower[] = this.program.networks.map((ir, i) => {
+      const shape = this.program.shapes[i]!;
+      const executed = this.ranIn[i] === this.count && this.count > 0;
+      const p = this.power[i]!;
+      const on = (net: number) => (executed && net >= 0 ? p[net]! : 0);
+      const elements = new Uint8Array(shape.elements);
+      const vlinks = new Uint8Array(shape.vlinks);
+      ir.elementNets.forEach(([a, b], k) => (elements[k] = on(a) | (on(b) << 1) | (executed ? 4 : 0)));
+      ir.vlinkNets.forEach((net, k) => (vlinks[k] = on(net)));
+      return { elements, vlinks, executed };
+    });
+    return { scan: this.count, timeMs: this.time, pou: this.pou, networks };
+  }
+}

@@ -1,0 +1,195 @@
+// IEC 61131-3 literals (tables 5-8) and the text forms of values for display and CSV.
+//
+// Decisions (tests in tests/engine/values/literals.test.ts):
+// - An untyped integer adopts `expected` (range-checked); without one it is the smallest of
+//   INT, DINT, LINT, ULINT that holds it.
+// - An untyped real is REAL (rounded to 32 bits) unless LREAL is expected.
+// - With `expected`, the result always has type `expected`: a typed literal (INT#5) must widen
+//   to it (canWiden), else it is refused.
+// - Based literals (16#FF) have no sign and must fit the type as numbers: SINT#16#FF is refused.
+// - TIME literals are held in whole milliseconds (finer parts rounded to the nearest ms).
+import { ELEMENTARY_TYPES, isElementaryType, type ElementaryType, type Value } from '../../model/iecTypes';
+import { canWiden, isRealType, isSizedType, normalize, typeRange, widen, type SizedType } from './types';
+import { formatTime, parseTimeBody } from './time';
+import { realDisplay, shortestLreal, shortestReal } from './realText';
+
+export type LiteralResult = { ok: true; value: Value; type: ElementaryType } | { ok: false; message: string };
+export type ValueResult = { ok: true; value: Value } | { ok: false; message: string };
+
+type Raw =
+  | { kind: 'bool'; value: boolean }
+  | { kind: 'int'; value: bigint }
+  | { kind: 'real'; value: number }
+  | { kind: 'time'; ms: number }
+  | { kind: 'error'; message: string };
+
+const DECIMAL = /^[+-]?\d(?:_?\d)*$/;
+const BASED = /^(2|8|16)#([0-9A-Fa-f](?:_?[0-9A-Fa-f])*)$/;
+const REAL_TEXT = /^[+-]?\d(?:_?\d)*(?:\.\d(?:_?\d)*)?(?:[eE][+-]?\d(?:_?\d)*)?$/;
+const BASE_DIGITS: Record<string, RegExp> = { '2': /^[01_]+$/, '8': /^[0-7_]+$/, '16': /^[0-9A-Fa-f_]+$/ };
+const TIME_PREFIX = /^(?:T|TIME)#/i;
+const UNSUPPORTED_PREFIX = /^(LTIME|LT|TOD|TIME_OF_DAY|D|DATE|DT|DATE_AND_TIME|STRING|WSTRING)#/i;
+
+function parseInteger(text: string): Raw | undefined {
+  if (DECIMAL.test(text)) return { kind: 'int', value: BigInt(text.replaceAll('_', '')) };
+  const based = BASED.exec(text);
+  if (based) {
+    const base = based[1]!;
+    if (!BASE_DIGITS[base]!.test(based[2]!)) return { kind: 'error', message: `"${text}" has digits that base ${base} does not allow` };
+    const prefix = base === '16' ? '0x' : base === '8' ? '0o' : '0b';
+    return { kind: 'int', value: BigInt(prefix + based[2]!.replaceAll('_', '')) };
+  }
+  if (/^[+-]\d+#/.test(text)) return { kind: 'error', message: `"${text}": a based number (16#.., 8#.., 2#..) cannot have a sign` };
+  return undefined;
+}
+
+/** Reads the literal's own form, before any type is applied. */
+function parseRaw(text: string): Raw {
+  const upper = text.toUpperCase();
+  if (upper === 'TRUE') return { kind: 'bool', value: true };
+  if (upper === 'FALSE') return { kind: 'bool', value: false };
+  if (TIME_PREFIX.test(text)) {
+    const t = parseTimeBody(text.slice(text.indexOf('#') + 1));
+    return t.ok ? { kind: 'time', ms: t.ms } : { kind: 'error', message: t.message };
+  }
+  const int = parseInteger(text);
+  if (int) return int;
+  if (REAL_TEXT.test(text)) return { kind: 'real', value: Number(text.replaceAll('_', '')) };
+  return { kind: 'error', message: `"${text}" is not a value: write TRUE/FALSE, a number (42, -7, 16#FF, 1.5), or a TIME (T#1s500ms)` };
+}
+
+const describe = (raw: Raw, text: string): string => {
+  switch (raw.kind) {
+    case 'bool':
+      return `${text} is a BOOL`;
+    case 'int':
+      return `${text} is an integer`;
+    case 'real':
+      return `${text} is a real number`;
+    case 'time':
+      return `${text} is a TIME`;
+    case 'error':
+      return raw.message;
+  }
+};
+
+const rangeText = (t: SizedType): string => {
+  const { min, max } = typeRange(t);
+  return `${min}..${max}`;
+};
+
+/** Gives an untyped literal the type `type`, or says in plain words why it cannot have it. */
+function applyType(raw: Raw, type: ElementaryType, text: string): LiteralResult {
+  if (raw.kind === 'error') return { ok: false, message: raw.message };
+  if (type === 'BOOL') {
+    if (raw.kind === 'bool') return { ok: true, value: raw.value, type };
+    if (raw.kind === 'int' && (raw.value === 0n || raw.value === 1n)) return { ok: true, value: raw.value === 1n, type };
+    return { ok: false, message: `${describe(raw, text)}, not a BOOL (use TRUE, FALSE, 1 or 0)` };
+  }
+  if (type === 'TIME') {
+    if (raw.kind === 'time') return { ok: true, value: raw.ms, type };
+    return { ok: false, message: `${describe(raw, text)}, not a TIME (write a TIME as T#5s, T#500ms or T#1m30s)` };
+  }
+  if (isRealType(type)) {
+    if (raw.kind === 'int') return { ok: true, value: normalize(type, Number(raw.value)), type };
+    if (raw.kind === 'real') {
+      const value = normalize(type, raw.value) as number;
+      if (!Number.isFinite(value)) return { ok: false, message: `${text} is too large for ${type}` };
+      return { ok: true, value, type };
+    }
+    return { ok: false, message: `${describe(raw, text)}, not a ${type} number` };
+  }
+  if (isSizedType(type)) {
+    if (raw.kind !== 'int') {
+      const hint = raw.kind === 'real' ? `; ${type} needs a whole number` : '';
+      return { ok: false, message: `${describe(raw, text)}, not ${article(type)} ${type}${hint}` };
+    }
+    const { min, max } = typeRange(type);
+    if (raw.value < min || raw.value > max) return { ok: false, message: `${text} does not fit ${type} (${rangeText(type)})` };
+    return { ok: true, value: normalize(type, raw.value), type };
+  }
+  return { ok: false, message: `${type} values cannot be written as literals` };
+}
+
+const article = (type: string): string => (/^[AEIOU]/.test(type) ? 'an' : 'a');
+
+/** Type an untyped literal takes when nothing is expected of it. */
+function naturalType(raw: Raw): ElementaryType | undefined {
+  switch (raw.kind) {
+    case 'bool':
+      return 'BOOL';
+    case 'time':
+      return 'TIME';
+    case 'real':
+      return 'REAL';
+    case 'int':
+      return (['INT', 'DINT', 'LINT', 'ULINT'] as const).find((t) => raw.value >= typeRange(t).min && raw.value <= typeRange(t).max);
+    case 'error':
+      return undefined;
+  }
+}
+
+/**
+ * Parses an IEC literal: TRUE, 0, 1, -5, 1_000, 16#FF, 8#17, 2#1010_1010, INT#-5, UINT#16#FF, BOOL#1,
+ * 1.5, -2.0E3, REAL#1.5, T#1s500ms, TIME#-2h, t#1.5s.
+ */
+export function parseLiteral(text: string, expected?: ElementaryType): LiteralResult {
+  const trimmed = text.trim();
+  if (trimmed === '') return { ok: false, message: 'the value is empty' };
+  if (UNSUPPORTED_PREFIX.test(trimmed)) {
+    return { ok: false, message: `"${trimmed}": ${trimmed.slice(0, trimmed.indexOf('#')).toUpperCase()} values are not supported (types: ${ELEMENTARY_TYPES.join(', ')})` };
+  }
+  const typed = /^([A-Za-z_][A-Za-z0-9_]*)#(.+)$/.exec(trimmed);
+  let result: LiteralResult;
+  if (typed && !TIME_PREFIX.test(trimmed)) {
+    const typeName = typed[1]!.toUpperCase();
+    if (!isElementaryType(typeName)) return { ok: false, message: `"${typed[1]}" in "${trimmed}" is not a known type` };
+    const body = typed[2]!;
+    const raw = typeName === 'TIME' ? parseRaw(`T#${body}`) : parseRaw(body);
+    if (raw.kind === 'bool' && typeName !== 'BOOL') return { ok: false, message: `${trimmed}: TRUE/FALSE are BOOL values, not ${typeName}` };
+    result = applyType(raw, typeName, trimmed);
+  } else {
+    const raw = parseRaw(trimmed);
+    if (expected) return applyType(raw, expected, trimmed);
+    const natural = naturalType(raw);
+    if (!natural) return { ok: false, message: raw.kind === 'error' ? raw.message : `${trimmed} is too large for any integer type` };
+    result = applyType(raw, natural, trimmed);
+  }
+  if (!result.ok || !expected || result.type === expected) return result;
+  if (!canWiden(result.type, expected)) return { ok: false, message: `${trimmed} is ${article(result.type)} ${result.type}, but ${expected} is needed here` };
+  return { ok: true, value: widen(result.type, expected, result.value), type: expected };
+}
+
+/** Text for the user: TRUE/FALSE, decimal integers, REAL in the shortest form that reads back exactly (2.0, 0.1), T#1s500ms. */
+export function formatValue(type: ElementaryType, v: Value): string {
+  if (type === 'BOOL') return v === true || v === 1 || v === 1n ? 'TRUE' : 'FALSE';
+  if (type === 'TIME') return formatTime(Number(v));
+  if (type === 'REAL') return realDisplay(shortestReal(Number(v)));
+  if (type === 'LREAL') return realDisplay(shortestLreal(Number(v)));
+  return String(v);
+}
+
+/** Text for CSV traces: BOOL 0/1, integers in decimal, REAL/LREAL in the shortest digits that read back exactly, TIME in ms. */
+export function csvValue(type: ElementaryType, v: Value): string {
+  if (type === 'BOOL') return v === true || v === 1 || v === 1n ? '1' : '0';
+  if (type === 'REAL') return shortestReal(Number(v));
+  if (type === 'LREAL') return shortestLreal(Number(v));
+  return String(v);
+}
+
+/**
+ * Reads a value typed by a user or found in a CSV stimulus file: 0/1/true/false/on/off for BOOL,
+ * plain numbers (a TIME as a number of ms), or any IEC literal that fits the type.
+ */
+export function parseValueText(type: ElementaryType, text: string): ValueResult {
+  const trimmed = text.trim();
+  if (type === 'BOOL') {
+    const lower = trimmed.toLowerCase();
+    if (lower === 'on') return { ok: true, value: true };
+    if (lower === 'off') return { ok: true, value: false };
+  }
+  if (type === 'TIME' && /^[+-]?\d+(?:\.\d+)?$/.test(trimmed)) return { ok: true, value: normalize('TIME', Number(trimmed)) };
+  if (isSizedType(type) && /^[+-]?\d+\.0*$/.test(trimmed)) return parseValueText(type, trimmed.replace(/\.0*$/, ''));
+  const r = parseLiteral(trimmed, type);
+  return r.ok ? { ok: true, value: r.value } : { ok: false, message: r.message };
+}

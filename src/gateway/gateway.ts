@@ -1,0 +1,122 @@
+// Composes the gateway: devices, I/O hub, HTTP (the app) and the WebSocket endpoint /io on 127.0.0.1.
+import { randomUUID } from 'node:crypto';
+import { createServer, type IncomingMessage, type Server } from 'node:http';
+import type { AddressInfo, Socket } from 'node:net';
+import { resolve } from 'node:path';
+import { WebSocketServer } from 'ws';
+import { IO_PATH, MAX_FRAME_BYTES, type GatewayMessageBody } from '../protocol/messages';
+import type { Quality, WireValue } from '../protocol/points';
+import { resolveConfig, type ResolvedConfig } from './config';
+import type { Device, Values } from './device';
+import { IoHub } from './ioHub';
+import { ModbusTcpDevice } from './modbusDevice';
+import { defaultHosts, defaultOrigins, hostAllowed, newToken, originAllowed } from './security';
+import { Session } from './session';
+import { SimulatedDevice } from './simulatedDevice';
+import { serveStatic } from './staticFiles';
+
+export const MAX_CLIENTS = 8;
+/** Frames between 64 KiB and this get an error reply; beyond it `ws` closes the connection (1009). */
+const HARD_FRAME_LIMIT = 16 * MAX_FRAME_BYTES;
+
+export interface GatewayOptions {
+  /** TCP port on 127.0.0.1; 0 picks a free one. */
+  readonly port: number;
+  readonly config?: ResolvedConfig;
+  /** Directory of the built app to serve, or null to serve only /io. */
+  readonly distDir?: string | null;
+  /** Fixed token; otherwise config.token, else a random 256-bit one. */
+  readonly token?: string;
+  readonly log?: (line: string) => void;
+}
+
+export interface RunningGateway {
+  readonly port: number;
+  readonly token: string;
+  /** The URL to open: http://127.0.0.1:PORT/#token=… */
+  readonly url: string;
+  readonly hub: IoHub;
+  readonly simulated: SimulatedDevice | undefined;
+  /** Safe state on every device, then close everything. */
+  close(): Promise<void>;
+}
+
+export async function startGateway(opts: GatewayOptions): Promise<RunningGateway> {
+  const config = opts.config ?? resolveConfig({});
+  const log = opts.log ?? (() => undefined);
+  const token = opts.token ?? config.token ?? newToken();
+  const simulated = config.devices.length === 0 ? new SimulatedDevice(config.simulated.modbusPort) : undefined;
+  const devices: Device[] = simulated ? [simulated] : config.devices.map((d) => new ModbusTcpDevice(d));
+
+  const sessions = new Set<Session>();
+  let seq = 0;
+  const broadcast = (body: GatewayMessageBody) => {
+    for (const s of sessions) if (s.role) s.send(body);
+  };
+  const toRecord = (m: Values) => Object.fromEntries(m) as Record<string, WireValue>;
+  const hub = new IoHub(devices, { watchdogMs: config.watchdogMs, autoRearm: config.autoRearm }, {
+    inputs: (values, quality: ReadonlyMap<string, Quality>) =>
+      broadcast({ t: 'inputs', seq: ++seq, values: toRecord(values), quality: Object.fromEntries(quality) }),
+    written: (values) => broadcast({ t: 'written', seq: ++seq, values: toRecord(values) }),
+    status: () => broadcast({ t: 'status', ...hub.status() }),
+    log,
+  });
+  await hub.start();
+
+  const distDir = opts.distDir === undefined || opts.distDir === null ? null : resolve(opts.distDir);
+  let allowedHosts = new Set<string>();
+  let allowedOrigins = new Set<string>();
+  const server: Server = createServer((req, res) => {
+    if (!hostAllowed(req.headers.host, allowedHosts)) {
+      res.writeHead(403, { 'Content-Type': 'text/plain' }).end('Host not allowed\n');
+      return;
+    }
+    serveStatic(distDir, req, res);
+  });
+  const wss = new WebSocketServer({ noServer: true, maxPayload: HARD_FRAME_LIMIT, perMessageDeflate: false });
+  wss.on('error', () => undefined);
+
+  const reject = (socket: Socket, status: number, text: string) => {
+    socket.end(`HTTP/1.1 ${status} ${text}\r\nConnection: close\r\nContent-Type: text/plain\r\nContent-Length: ${text.length + 1}\r\n\r\n${text}\n`);
+  };
+  server.on('upgrade', (req: IncomingMessage, socket: Socket, head: Buffer) => {
+    socket.on('error', () => socket.destroy());
+    const path = (req.url ?? '').split('?')[0];
+    if (path !== IO_PATH) return reject(socket, 404, 'Not Found');
+    if (!hostAllowed(req.headers.host, allowedHosts)) return reject(socket, 403, 'Forbidden');
+    if (!originAllowed(req.headers.origin, allowedOrigins)) {
+      log(`refused WebSocket from origin ${req.headers.origin}`);
+      return reject(socket, 403, 'Forbidden');
+    }
+    if (wss.clients.size >= MAX_CLIENTS) return reject(socket, 503, 'Service Unavailable');
+    wss.handleUpgrade(req, socket, head, (ws) => {
+      const session = new Session(randomUUID().slice(0, 8), ws, { hub, token, simulated, nextSeq: () => ++seq, log });
+      sessions.add(session);
+      ws.on('close', () => sessions.delete(session));
+    });
+  });
+  server.on('clientError', (_err, socket) => socket.destroy());
+
+  await new Promise<void>((ok, fail) => {
+    server.once('error', fail);
+    server.listen(opts.port, '127.0.0.1', () => {
+      server.off('error', fail);
+      ok();
+    });
+  });
+  const port = (server.address() as AddressInfo).port;
+  allowedHosts = new Set([...defaultHosts(port), ...config.allowedHosts].map((h) => h.toLowerCase()));
+  allowedOrigins = new Set([...defaultOrigins(port), ...config.allowedOrigins].map((o) => o.toLowerCase().replace(/\/$/, '')));
+
+  let closing: Promise<void> | undefined;
+  const close = () =>
+    (closing ??= (async () => {
+      await hub.shutdown();
+      for (const c of wss.clients) c.close(1001, 'gateway shutting down');
+      wss.close();
+      server.closeAllConnections();
+      await new Promise<void>((ok) => server.close(() => ok()));
+    })());
+
+  return { port, token, url: `http://127.0.0.1:${port}/#token=${token}`, hub, simulated, close };
+}

@@ -1,0 +1,116 @@
+// `npm start` / `npx rungsmith-gateway`: one process on 127.0.0.1 serving the app and /io.
+import { spawnSync } from 'node:child_process';
+import { existsSync, readdirSync, statSync } from 'node:fs';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { ConfigError, loadConfigFile, resolveConfig, type ResolvedConfig } from './config';
+import { startGateway, type RunningGateway } from './gateway';
+
+const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
+
+const USAGE = `usage: rungsmith-gateway [--port N] [--config FILE] [--sim-port N] [--build-if-needed] [--no-app]
+  --port N            HTTP + WebSocket port on 127.0.0.1 (default: PORT or 8080; 0 picks a free port)
+  --config FILE       JSON config naming Modbus TCP devices (docs/GATEWAY-CONFIG.md)
+  --sim-port N        Modbus TCP port of the simulated device on 127.0.0.1 (default 5020, 0: free port)
+  --build-if-needed   run "vite build" when dist/ is missing or older than the sources
+  --no-app            serve only the WebSocket endpoint /io
+env: RUNGSMITH_TOKEN fixes the token (else config "token", else a random 256-bit one)`;
+
+interface Args {
+  port?: number;
+  config?: string;
+  simPort?: number;
+  build: boolean;
+  app: boolean;
+}
+
+function parseArgs(argv: readonly string[]): Args {
+  const args: Args = { build: false, app: true };
+  const int = (flag: string, text: string | undefined) => {
+    const n = Number(text);
+    if (text === undefined || !Number.isInteger(n) || n < 0 || n > 65535) throw new ConfigError(flag, `needs a port number 0-65535, got ${JSON.stringify(text ?? '')}`);
+    return n;
+  };
+  for (let i = 0; i < argv.length; i++) {
+    const a = argv[i];
+    if (a === '--port') args.port = int('--port', argv[++i]);
+    else if (a === '--sim-port') args.simPort = int('--sim-port', argv[++i]);
+    else if (a === '--config') {
+      const file = argv[++i];
+      if (!file) throw new ConfigError('--config', 'needs a file name');
+      args.config = file;
+    } else if (a === '--build-if-needed') args.build = true;
+    else if (a === '--no-app') args.app = false;
+    else if (a === '--help' || a === '-h') {
+      process.stdout.write(USAGE + '\n');
+      process.exit(0);
+    } else throw new ConfigError(String(a), `unknown option\n${USAGE}`);
+  }
+  return args;
+}
+
+function newestMtime(path: string): number {
+  if (!existsSync(path)) return 0;
+  const st = statSync(path);
+  if (!st.isDirectory()) return st.mtimeMs;
+  return readdirSync(path).reduce((m, name) => Math.max(m, newestMtime(join(path, name))), st.mtimeMs);
+}
+
+function buildIfNeeded(): void {
+  const built = existsSync(join(ROOT, 'dist/index.html')) ? statSync(join(ROOT, 'dist/index.html')).mtimeMs : 0;
+  const sources = Math.max(...['src', 'public', 'index.html', 'vite.config.ts', 'package.json'].map((p) => newestMtime(join(ROOT, p))));
+  if (built >= sources) return;
+  process.stderr.write(built ? 'dist/ is older than the sources: building the app…\n' : 'dist/ is missing: building the app…\n');
+  const vite = join(ROOT, 'node_modules/vite/bin/vite.js');
+  const r = spawnSync(process.execPath, [vite, 'build', '--logLevel', 'warn'], { cwd: ROOT, stdio: ['ignore', 2, 2] });
+  if (r.status !== 0) throw new Error('vite build failed; see the messages above');
+}
+
+async function main(): Promise<void> {
+  const args = parseArgs(process.argv.slice(2));
+  const base: ResolvedConfig = args.config ? loadConfigFile(args.config) : resolveConfig({});
+  const config: ResolvedConfig = args.simPort !== undefined ? { ...base, simulated: { modbusPort: args.simPort } } : base;
+  if (args.build && args.app) buildIfNeeded();
+  const envPort = process.env.PORT !== undefined && process.env.PORT !== '' ? Number(process.env.PORT) : undefined;
+  if (envPort !== undefined && (!Number.isInteger(envPort) || envPort < 0 || envPort > 65535)) throw new ConfigError('PORT', `is not a port number: ${process.env.PORT}`);
+  const port = args.port ?? envPort ?? config.port ?? 8080;
+  const token = process.env.RUNGSMITH_TOKEN || undefined;
+  if (token !== undefined && token.length < 16) throw new ConfigError('RUNGSMITH_TOKEN', 'needs at least 16 characters');
+  const log = (line: string) => process.stderr.write(`[gateway] ${line}\n`);
+  const distDir = args.app ? join(ROOT, 'dist') : null;
+
+  let gw: RunningGateway | undefined;
+  let exiting = false;
+  const shutdown = async (why: string, code: number) => {
+    if (exiting) return;
+    exiting = true;
+    log(`${why}: writing the safe state, then exiting`);
+    const hardStop = setTimeout(() => process.exit(code || 1), 5000);
+    try {
+      await gw?.close();
+    } finally {
+      clearTimeout(hardStop);
+      process.exit(code);
+    }
+  };
+  process.on('SIGINT', () => void shutdown('SIGINT', 0));
+  process.on('SIGTERM', () => void shutdown('SIGTERM', 0));
+  process.on('uncaughtException', (e) => {
+    log(`uncaught error: ${e.stack ?? e.message}`);
+    void shutdown('uncaught error', 1);
+  });
+  process.on('unhandledRejection', (e) => {
+    log(`unhandled rejection: ${e instanceof Error ? (e.stack ?? e.message) : String(e)}`);
+    void shutdown('unhandled rejection', 1);
+  });
+
+  gw = await startGateway({ port, config, distDir, token, log });
+  const sim = gw.simulated?.modbusServerPort;
+  log(gw.simulated ? `simulated I/O device (16 DI, 16 DO, 4 AI, 4 AO)${sim ? `, Modbus TCP on 127.0.0.1:${sim}` : ''}` : `${config.devices.length} Modbus TCP device(s)`);
+  process.stdout.write(`Rungsmith gateway: open ${gw.url}\n`);
+}
+
+main().catch((e: unknown) => {
+  process.stderr.write(`rungsmith-gateway: ${e instanceof Error ? e.message : String(e)}\n`);
+  process.exit(2);
+});

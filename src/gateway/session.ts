@@ -1,0 +1,193 @@
+// One WebSocket client: hello/auth, validation of every message, dispatch to the hub.
+import type { WebSocket } from 'ws';
+import {
+  clientMessageSchema,
+  describeIssues,
+  MAX_FRAME_BYTES,
+  PROTOCOL_VERSION,
+  type ClientMessage,
+  type ErrorCode,
+  type GatewayMessageBody,
+  type Role,
+} from '../protocol/messages';
+import type { IoHub } from './ioHub';
+import { RateLimiter, tokenMatches } from './security';
+import type { SimulatedDevice } from './simulatedDevice';
+
+export const MESSAGES_PER_SECOND = 200;
+export const HELLO_TIMEOUT_MS = 5000;
+/** Close code for policy violations: auth failures and floods. */
+export const POLICY_VIOLATION = 1008;
+
+export interface SessionContext {
+  readonly hub: IoHub;
+  readonly token: string;
+  readonly simulated: SimulatedDevice | undefined;
+  nextSeq(): number;
+  log(line: string): void;
+}
+
+export class Session {
+  role: Role | null = null;
+  private readonly limiter = new RateLimiter(MESSAGES_PER_SECOND);
+  private readonly helloTimer: NodeJS.Timeout;
+  private closed = false;
+
+  constructor(
+    readonly id: string,
+    private readonly ws: WebSocket,
+    private readonly ctx: SessionContext,
+  ) {
+    this.helloTimer = setTimeout(() => this.refuseAndClose('not-hello', 'no hello within 5 s', null), HELLO_TIMEOUT_MS);
+    ws.on('message', (data, isBinary) => this.receive(data as Buffer | Buffer[] | ArrayBuffer, isBinary));
+    ws.on('close', () => this.closeDown());
+    ws.on('error', () => this.closeDown()); // oversized frames and socket errors must not crash the gateway
+  }
+
+  send(body: GatewayMessageBody): void {
+    if (this.closed || this.ws.readyState !== this.ws.OPEN) return;
+    // A client that stopped reading is dropped rather than buffered without bound.
+    if (this.ws.bufferedAmount > 8 * 1024 * 1024) {
+      this.ws.close(1013, 'client too slow');
+      return;
+    }
+    this.ws.send(JSON.stringify({ v: PROTOCOL_VERSION, ...body }));
+  }
+
+  private refuse(code: ErrorCode, message: string, ref: number | string | null): void {
+    this.send({ t: 'error', code, message, ref });
+  }
+
+  private refuseAndClose(code: ErrorCode, message: string, ref: number | string | null): void {
+    this.refuse(code, message, ref);
+    this.ws.close(POLICY_VIOLATION, message.slice(0, 120));
+    this.closeDown();
+  }
+
+  private receive(data: Buffer | Buffer[] | ArrayBuffer, isBinary: boolean): void {
+    if (this.closed) return;
+    if (!this.limiter.take()) {
+      this.ctx.log(`session ${this.id}: closed for flooding (over ${MESSAGES_PER_SECOND} messages/s)`);
+      this.refuseAndClose('flood', `more than ${MESSAGES_PER_SECOND} messages per second`, null);
+      return;
+    }
+    const buf = Buffer.isBuffer(data) ? data : Array.isArray(data) ? Buffer.concat(data) : Buffer.from(data);
+    if (buf.length > MAX_FRAME_BYTES) {
+      this.refuse('too-large', `frame of ${buf.length} bytes is over the 64 KiB limit`, null);
+      return;
+    }
+    if (isBinary) {
+      this.refuse('bad-message', 'binary frames are not part of the protocol; send JSON text', null);
+      return;
+    }
+    let raw: unknown;
+    try {
+      raw = JSON.parse(buf.toString('utf8'), noPrototypeKeys);
+    } catch (e) {
+      if (e instanceof PrototypeKeyError) this.refuse('bad-message', e.message, null);
+      else this.refuse('bad-json', 'the frame is not valid JSON', null);
+      return;
+    }
+    const ref = refOf(raw);
+    const parsed = clientMessageSchema.safeParse(raw);
+    if (this.role === null) {
+      this.helloStep(parsed.success ? parsed.data : undefined, raw, ref);
+      return;
+    }
+    if (!parsed.success) {
+      this.refuse('bad-message', explain(raw, describeIssues(parsed.error)), ref);
+      return;
+    }
+    void this.dispatch(parsed.data, ref);
+  }
+
+  private helloStep(msg: ClientMessage | undefined, raw: unknown, ref: number | string | null): void {
+    if (!msg || msg.t !== 'hello') {
+      const why = msg ? `"${msg.t}" before "hello"` : explain(raw, 'not a valid hello');
+      this.refuseAndClose('not-hello', `send hello with token and role first (${why})`, ref);
+      return;
+    }
+    if (!tokenMatches(this.ctx.token, msg.token)) {
+      this.ctx.log(`session ${this.id}: refused, wrong token`);
+      this.refuseAndClose('bad-token', 'wrong token: open the URL the gateway printed (…/#token=…)', 'hello');
+      return;
+    }
+    clearTimeout(this.helloTimer);
+    const hub = this.ctx.hub;
+    this.role = hub.claim(this.id, msg.role);
+    this.ctx.log(`session ${this.id}: ${this.role}${msg.role !== this.role ? ' (controller lease is taken)' : ''}`);
+    this.send({ t: 'welcome', session: this.id, role: this.role, points: hub.pointList(), devices: hub.devices.map((d) => d.info) });
+    this.send({ t: 'image', seq: this.ctx.nextSeq(), ...hub.image() });
+    this.send({ t: 'status', ...hub.status() });
+  }
+
+  private async dispatch(msg: ClientMessage, ref: number | string | null): Promise<void> {
+    const hub = this.ctx.hub;
+    switch (msg.t) {
+      case 'hello':
+        this.refuse('already-hello', 'this session already said hello', ref);
+        return;
+      case 'resync':
+        this.send({ t: 'image', seq: this.ctx.nextSeq(), ...hub.image() });
+        return;
+      case 'simulate': {
+        if (!this.ctx.simulated) {
+          this.refuse('not-simulated', 'this gateway has no simulated device; inputs come from the field', ref);
+          return;
+        }
+        const checked = hub.check(msg.values, 'in', true);
+        if (!(checked instanceof Map)) return this.refuse(checked.code, checked.message, ref);
+        this.ctx.simulated.setInputs(checked);
+        return;
+      }
+      case 'outputs':
+      case 'stop':
+      case 'arm':
+        break;
+    }
+    if (!hub.isController(this.id)) {
+      this.refuse('not-controller', `"${msg.t}" needs the controller lease; this session is an observer`, ref);
+      return;
+    }
+    if (msg.t === 'stop') return hub.stop('controller sent stop');
+    if (msg.t === 'arm') return hub.arm();
+    const checked = hub.check(msg.values, 'out', false);
+    if (!(checked instanceof Map)) return this.refuse(checked.code, checked.message, ref);
+    const result = hub.outputs(checked);
+    if (result === 'disarmed') {
+      this.refuse('disarmed', 'outputs are held in the safe state after a watchdog trip; send "arm" to resume', ref);
+    }
+  }
+
+  private closeDown(): void {
+    if (this.closed) return;
+    this.closed = true;
+    clearTimeout(this.helloTimer);
+    void this.ctx.hub.release(this.id);
+  }
+}
+
+class PrototypeKeyError extends Error {}
+
+/** Keys that would rewrite an object's prototype once copied are refused outright. */
+function noPrototypeKeys(key: string, value: unknown): unknown {
+  if (key === '__proto__' || key === 'constructor' || key === 'prototype') throw new PrototypeKeyError(`key "${key}" is not allowed`);
+  return value;
+}
+
+function refOf(raw: unknown): number | string | null {
+  if (typeof raw !== 'object' || raw === null) return null;
+  const r = raw as { seq?: unknown; t?: unknown };
+  if (typeof r.seq === 'number' && Number.isFinite(r.seq)) return r.seq;
+  if (typeof r.t === 'string') return r.t.slice(0, 32);
+  return null;
+}
+
+function explain(raw: unknown, detail: string): string {
+  if (typeof raw !== 'object' || raw === null || Array.isArray(raw)) return 'a message is a JSON object {"v":1,"t":...}';
+  const r = raw as { v?: unknown; t?: unknown };
+  if (r.v !== PROTOCOL_VERSION) return `protocol version ${JSON.stringify(r.v)} is not supported; this gateway speaks v1`;
+  if (typeof r.t !== 'string') return 'missing message type "t"';
+  if (!['hello', 'outputs', 'stop', 'arm', 'resync', 'simulate'].includes(r.t)) return `unknown message type "${r.t.slice(0, 32)}"`;
+  return `bad "${r.t}": ${detail}`;
+}

@@ -1,0 +1,141 @@
+// The built-in simulated I/O device: 16 DI, 16 DO, 4 AI, 4 AO on the OpenPLC default map, also
+// served as a Modbus TCP server on loopback so mbpoll or a plant simulator can drive its inputs.
+import type { AddressInfo, Server } from 'node:net';
+import type { Quality, WireValue } from '../protocol/points';
+import type { Device, DeviceListener, Values } from './device';
+import { freeLoopbackPort, ModbusServer } from './modbusLib';
+import { expandPoints, type DevicePoint } from './pointMap';
+
+export const SIMULATED_DEVICE_ID = 'sim';
+/** Writable windows for driving the simulated inputs over Modbus (OpenPLC leaves these free). */
+export const SIM_INPUT_COIL_BASE = 800; // coil 800+n sets discrete input n (%IX bit n)
+export const SIM_INPUT_REGISTER_BASE = 2048; // holding register 2048+n sets input register n (%IWn)
+
+const SIM_POINTS: readonly DevicePoint[] = expandPoints(
+  [
+    { address: '%IX0.0', count: 16, hold: false },
+    { address: '%QX0.0', count: 16, hold: false },
+    { address: '%IW0', count: 4, hold: false },
+    { address: '%QW0', count: 4, hold: false },
+  ],
+  'simulated device',
+);
+
+const ILLEGAL_ADDRESS = { modbusErrorCode: 0x02, msg: 'Illegal data address' };
+const ILLEGAL_FUNCTION = { modbusErrorCode: 0x01, msg: 'Outputs belong to the controller' };
+
+export class SimulatedDevice implements Device {
+  readonly info = { id: SIMULATED_DEVICE_ID, kind: 'simulated' as const, target: 'simulated' };
+  readonly points = SIM_POINTS;
+  readonly state = 'online' as const;
+  readonly error = null;
+  private readonly values = new Map<string, WireValue>(SIM_POINTS.map((p) => [p.address, p.type === 'BOOL' ? false : 0]));
+  private readonly byTable = new Map<string, DevicePoint>(SIM_POINTS.map((p) => [`${p.table}:${p.register}`, p]));
+  private listener: DeviceListener | undefined;
+  private server: ModbusServer | undefined;
+  private port: number | undefined;
+
+  /** @param modbusPort loopback port of the Modbus server (0: any free port; null: no server). */
+  constructor(private readonly modbusPort: number | null) {}
+
+  /** The loopback port the Modbus server listens on, once started. */
+  get modbusServerPort(): number | undefined {
+    return this.port;
+  }
+
+  inputValues(): Values {
+    return new Map([...this.values].filter(([a]) => a.startsWith('%I')));
+  }
+  inputQuality(): ReadonlyMap<string, Quality> {
+    return new Map(SIM_POINTS.filter((p) => p.dir === 'in').map((p) => [p.address, 'good' as const]));
+  }
+  writtenValues(): Values {
+    return new Map([...this.values].filter(([a]) => a.startsWith('%Q')));
+  }
+  queueDepth(): number {
+    return 0;
+  }
+
+  async start(listener: DeviceListener): Promise<void> {
+    this.listener = listener;
+    if (this.modbusPort === null) return;
+    await this.startModbusServer(this.modbusPort === 0 ? await freeLoopbackPort() : this.modbusPort);
+  }
+
+  /** Sets simulated inputs (already validated by the caller); notifies changed ones. */
+  setInputs(values: Values): void {
+    const changed = new Map<string, WireValue>();
+    for (const [address, value] of values) {
+      if (this.values.get(address) !== value) changed.set(address, value);
+      this.values.set(address, value);
+    }
+    if (changed.size) this.listener?.inputs(changed, new Map([...changed.keys()].map((a) => [a, 'good' as const])));
+  }
+
+  setOutputs(values: Values): Promise<void> {
+    const changed = new Map<string, WireValue>();
+    for (const [address, value] of values) {
+      if (this.values.get(address) !== value) changed.set(address, value);
+      this.values.set(address, value);
+    }
+    if (changed.size) this.listener?.written(changed);
+    return Promise.resolve();
+  }
+
+  async close(): Promise<void> {
+    const server = this.server;
+    this.server = undefined;
+    if (!server) return;
+    for (const sock of server.socks.keys()) sock.destroy();
+    await new Promise<void>((resolve) => server.close(() => resolve()));
+  }
+
+  private read(table: DevicePoint['table'], register: number): WireValue {
+    const p = this.byTable.get(`${table}:${register}`);
+    if (p) return this.values.get(p.address) ?? 0;
+    // Read-back of the input drive windows.
+    if (table === 'coils' && register >= SIM_INPUT_COIL_BASE) return this.read('discreteInputs', register - SIM_INPUT_COIL_BASE);
+    if (table === 'holdingRegisters' && register >= SIM_INPUT_REGISTER_BASE) return this.read('inputRegisters', register - SIM_INPUT_REGISTER_BASE);
+    throw ILLEGAL_ADDRESS;
+  }
+
+  private drive(table: 'discreteInputs' | 'inputRegisters', register: number, value: WireValue): void {
+    const p = this.byTable.get(`${table}:${register}`);
+    if (!p) throw ILLEGAL_ADDRESS;
+    this.setInputs(new Map([[p.address, value]]));
+  }
+
+  private startModbusServer(port: number): Promise<void> {
+    const bit = (v: WireValue) => v === true;
+    const word = (v: WireValue) => (typeof v === 'number' ? v & 0xffff : v ? 1 : 0);
+    const vector = {
+      getCoil: (addr: number) => bit(this.read('coils', addr)),
+      getDiscreteInput: (addr: number) => bit(this.read('discreteInputs', addr)),
+      getInputRegister: (addr: number) => word(this.read('inputRegisters', addr)),
+      getHoldingRegister: (addr: number) => word(this.read('holdingRegisters', addr)),
+      setCoil: (addr: number, value: boolean) => {
+        if (addr < SIM_INPUT_COIL_BASE) throw this.byTable.has(`coils:${addr}`) ? ILLEGAL_FUNCTION : ILLEGAL_ADDRESS;
+        this.drive('discreteInputs', addr - SIM_INPUT_COIL_BASE, value);
+      },
+      setRegister: (addr: number, value: number) => {
+        if (addr < SIM_INPUT_REGISTER_BASE) throw this.byTable.has(`holdingRegisters:${addr}`) ? ILLEGAL_FUNCTION : ILLEGAL_ADDRESS;
+        this.drive('inputRegisters', addr - SIM_INPUT_REGISTER_BASE, value & 0xffff);
+      },
+    };
+    return new Promise((resolve, reject) => {
+      const server = new ModbusServer(vector, { host: '127.0.0.1', port, unitID: 255 });
+      this.server = server;
+      const inner = (server as unknown as { _server: Server })._server;
+      const fail = (err: Error) => reject(new Error(`simulated device: cannot listen on 127.0.0.1:${port} for Modbus TCP (${err.message})`));
+      inner.once('error', fail);
+      inner.once('listening', () => {
+        inner.off('error', fail);
+        this.port = (inner.address() as AddressInfo).port;
+        resolve();
+      });
+      server.on('socketError', () => undefined);
+      server.on('serverError', () => undefined);
+      server.on('error', () => undefined);
+    });
+  }
+}

@@ -1,0 +1,359 @@
+// One network grid → PLCopen LD objects with real coordinates, relPosition on every pin and wire
+// points on every connection (first point at the consumer, last at the producer).
+import { boxLayout } from '../model/boxLayout';
+import type { BoxElement, CoilElement, ContactElement, LdElement } from '../model/elements';
+import type { Network } from '../model/project';
+import {
+  BOX_MARGIN_X,
+  BOX_MARGIN_Y,
+  CELL_W,
+  COMMENT_H,
+  ELEMENT_H,
+  ELEMENT_W,
+  LEFT_X,
+  RAIL_W,
+  ROW_H,
+  boundaryX,
+  rowY,
+  type Point,
+} from './geometry';
+import { elementPins, gridGraph, type Source } from './gridGraph';
+import { RS_CONTACT, RS_COIL, RS_NETWORK, preserved, type PreservedNetwork } from './types';
+import { escapeAttr, type XmlWriter } from './xml/write';
+
+export interface IdAllocator {
+  next(): number;
+}
+
+interface Placed {
+  readonly id: number;
+  /** Absolute pin positions by pin name. */
+  readonly pins: Map<string, Point>;
+  /** Pin name written in formalParameter when this element is a connection's source (blocks only). */
+  readonly formal?: (pin: string) => string;
+}
+
+const pt = (x: number, y: number): Point => ({ x, y });
+const rel = (w: XmlWriter, p: Point, origin: Point) => w.empty('relPosition', { x: p.x - origin.x, y: p.y - origin.y });
+
+function contactAttrs(el: ContactElement): Record<string, string | undefined> {
+  return {
+    negated: el.contact === 'NC' ? 'true' : 'false',
+    edge: el.contact === 'P' ? 'rising' : el.contact === 'N' ? 'falling' : undefined,
+  };
+}
+
+function coilAttrs(el: CoilElement): Record<string, string | undefined> {
+  const c = el.coil;
+  return {
+    negated: c === 'NEG' ? 'true' : 'false',
+    storage: c === 'SET' || c === 'SM' ? 'set' : c === 'RESET' || c === 'RM' ? 'reset' : undefined,
+    edge: c === 'P' ? 'rising' : c === 'N' ? 'falling' : undefined,
+  };
+}
+
+/** Pins of a box: from its standard layout, or from its operand names for blocks Rungsmith does not know. */
+function boxPins(el: BoxElement): { inputs: { name: string; off: number }[]; outputs: { name: string; off: number }[]; rows: number } {
+  const layout = boxLayout(el);
+  if (layout) {
+    return {
+      inputs: layout.inputs.map((p) => ({ name: p.name, off: p.rowOffset })),
+      outputs: layout.outputs.map((p) => ({ name: p.name, off: p.rowOffset })),
+      rows: layout.rows,
+    };
+  }
+  const inputs = Object.keys(el.inputs).map((name, off) => ({ name, off }));
+  const outputs = Object.keys(el.outputs).map((name, off) => ({ name, off }));
+  return { inputs, outputs, rows: Math.max(1, inputs.length, outputs.length) };
+}
+
+/** Writes the LD objects of one network starting at y = top; returns the y below it. */
+export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAllocator): number {
+  const g = gridGraph(net);
+  const keep = preserved<PreservedNetwork>(net.extensions);
+  if (net.comment || net.title) {
+    const id = ids.next();
+    w.open('comment', { localId: id, height: COMMENT_H - 10, width: Math.max(net.cols, 4) * CELL_W }, () => {
+      w.empty('position', { x: LEFT_X, y: top });
+      w.formatted('content', net.comment);
+      if (net.title) {
+        w.open('addData', undefined, () =>
+          w.raw(`<data name="${RS_NETWORK}" handleUnknown="discard"><network xmlns="" title="${escapeAttr(net.title)}"/></data>`),
+        );
+      }
+    });
+    top += COMMENT_H;
+  }
+  if (net.label !== undefined && net.label !== '') {
+    const id = ids.next();
+    w.open('label', { localId: id, height: 20, width: Math.max(40, net.label.length * 8), label: net.label }, () =>
+      w.empty('position', { x: LEFT_X, y: top }),
+    );
+    top += 30;
+  }
+  for (const raw of keep?.objects ?? []) w.raw(raw.replace(/localId="\d+"/, `localId="${ids.next()}"`));
+
+  const railId = ids.next();
+  const placed: Placed[] = net.elements.map((el) => placeElement(el, top, ids));
+  const railRows = new Set<number>();
+  g.sources.forEach((pins, ei) =>
+    pins.forEach((srcs, pin) => {
+      if (srcs.some((s) => s.kind === 'rail')) railRows.add(Math.round((placed[ei]!.pins.get(pin)!.y - top - ROW_H / 2) / ROW_H));
+    }),
+  );
+  if (!railRows.size) railRows.add(0);
+  const railX = LEFT_X - RAIL_W;
+  const height = net.rows * ROW_H;
+  w.open('leftPowerRail', { localId: railId, height, width: RAIL_W }, () => {
+    w.empty('position', { x: railX, y: top });
+    for (const r of [...railRows].sort((a, b) => a - b)) {
+      w.open('connectionPointOut', { formalParameter: '' }, () => w.empty('relPosition', { x: RAIL_W, y: rowY(0, r) }));
+    }
+  });
+
+  const sourcePoint = (s: Source, consumer: Point): { ref: number; formal?: string; at: Point } => {
+    if (s.kind === 'rail') return { ref: railId, at: pt(LEFT_X, consumer.y) };
+    const p = placed[s.el]!;
+    return { ref: p.id, formal: p.formal?.(s.pin), at: p.pins.get(s.pin)! };
+  };
+  const writeConnections = (consumer: Point, origin: Point, srcs: readonly Source[] | undefined, barX: number | undefined) => {
+    w.open('connectionPointIn', undefined, () => {
+      rel(w, consumer, origin);
+      for (const s of srcs ?? []) {
+        const { ref, formal, at } = sourcePoint(s, consumer);
+        w.open('connection', { refLocalId: ref, formalParameter: formal }, () => {
+          w.empty('position', { x: consumer.x, y: consumer.y });
+          if (at.y !== consumer.y) {
+            const xm = barX !== undefined && barX <= consumer.x && barX >= at.x ? barX : Math.round((consumer.x + at.x) / 2);
+            w.empty('position', { x: xm, y: consumer.y });
+            w.empty('position', { x: xm, y: at.y });
+          }
+          w.empty('position', { x: at.x, y: at.y });
+        });
+      }
+    });
+  };
+  const barOf = (row: number, boundary: number): number | undefined => {
+    const b = g.barBoundary.get(g.netOf(row, boundary));
+    return b === undefined ? undefined : boundaryX(b);
+  };
+
+  net.elements.forEach((el, ei) => {
+    const p = placed[ei]!;
+    const srcOf = (pin: string) => g.sources.get(ei)?.get(pin);
+    const pins = elementPins(el);
+    const inBar = (pin: string) => {
+      const pp = pins.inputs.find((x) => x.pin === pin);
+      return pp ? barOf(pp.row, pp.boundary) : undefined;
+    };
+    writeElement(w, el, p, ids, srcOf, inBar, writeConnections, keep?.elementData?.[el.id]);
+  });
+
+  const rightRows = [...g.rightRail.keys()].sort((a, b) => a - b);
+  w.open('rightPowerRail', { localId: ids.next(), height, width: RAIL_W }, () => {
+    const origin = pt(boundaryX(net.cols), top);
+    w.empty('position', { x: origin.x, y: origin.y });
+    for (const r of rightRows) writeConnections(pt(origin.x, rowY(top, r)), origin, g.rightRail.get(r), barOf(r, net.cols));
+    if (!rightRows.length) w.open('connectionPointIn', undefined, () => w.empty('relPosition', { x: 0, y: ROW_H / 2 }));
+  });
+  return top + height;
+}
+
+function placeElement(el: LdElement, top: number, ids: IdAllocator): Placed {
+  const x0 = boundaryX(el.col);
+  const y = rowY(top, el.row);
+  switch (el.kind) {
+    case 'contact':
+    case 'coil': {
+      const left = x0 + Math.floor((CELL_W - ELEMENT_W) / 2);
+      const pins = new Map([
+        ['in', pt(left, y)],
+        ['out', pt(left + ELEMENT_W, y)],
+      ]);
+      const notContact = el.kind === 'contact' && el.contact === 'NOT';
+      if (notContact) {
+        return {
+          id: ids.next(),
+          pins: new Map([
+            ['in', pt(x0 + 10, y)],
+            ['out', pt(x0 + CELL_W - 10, y)],
+          ]),
+          formal: () => 'OUT',
+        };
+      }
+      return { id: ids.next(), pins };
+    }
+    case 'jump':
+    case 'return':
+      return { id: ids.next(), pins: new Map([['in', pt(x0 + 8, y)]]) };
+    case 'link':
+      return { id: -1, pins: new Map() };
+    case 'box': {
+      const bp = boxPins(el);
+      const left = x0 + BOX_MARGIN_X;
+      const right = x0 + 2 * CELL_W - BOX_MARGIN_X;
+      const pins = new Map<string, Point>();
+      for (const i of bp.inputs) pins.set(i.name, pt(left, rowY(top, el.row + i.off)));
+      for (const o of bp.outputs) pins.set(o.name, pt(right, rowY(top, el.row + o.off)));
+      return { id: ids.next(), pins, formal: (pin) => pin };
+    }
+  }
+}
+
+type Connect = (consumer: Point, origin: Point, srcs: readonly Source[] | undefined, barX: number | undefined) => void;
+
+function writeElement(
+  w: XmlWriter,
+  el: LdElement,
+  p: Placed,
+  ids: IdAllocator,
+  srcOf: (pin: string) => readonly Source[] | undefined,
+  inBar: (pin: string) => number | undefined,
+  connect: Connect,
+  data: readonly string[] | undefined,
+): void {
+  const addData = (extra?: string) => {
+    const all = [...(extra ? [extra] : []), ...(data ?? [])];
+    if (all.length) w.open('addData', undefined, () => all.forEach((d) => w.raw(d)));
+  };
+  switch (el.kind) {
+    case 'link':
+      return;
+    case 'contact':
+    case 'coil': {
+      if (el.kind === 'contact' && el.contact === 'NOT') {
+        const inP = p.pins.get('in')!;
+        const origin = pt(inP.x, inP.y - 15);
+        w.open('block', { localId: p.id, width: CELL_W - 20, height: 30, typeName: 'NOT' }, () => {
+          w.empty('position', { x: origin.x, y: origin.y });
+          w.open('inputVariables', undefined, () =>
+            w.open('variable', { formalParameter: 'IN' }, () => connect(inP, origin, srcOf('in'), inBar('in'))),
+          );
+          w.empty('inOutVariables');
+          w.open('outputVariables', undefined, () =>
+            w.open('variable', { formalParameter: 'OUT' }, () =>
+              w.open('connectionPointOut', undefined, () => rel(w, p.pins.get('out')!, origin)),
+            ),
+          );
+          addData(`<data name="${RS_CONTACT}" handleUnknown="discard"><contact xmlns="" type="NOT"/></data>`);
+        });
+        return;
+      }
+      const inP = p.pins.get('in')!;
+      const origin = pt(inP.x, inP.y - ELEMENT_H / 2);
+      const attrs = el.kind === 'contact' ? contactAttrs(el) : coilAttrs(el);
+      const retentive = el.kind === 'coil' && (el.coil === 'M' || el.coil === 'SM' || el.coil === 'RM');
+      w.open(el.kind, { localId: p.id, height: ELEMENT_H, width: ELEMENT_W, ...attrs }, () => {
+        w.empty('position', { x: origin.x, y: origin.y });
+        connect(inP, origin, srcOf('in'), inBar('in'));
+        w.open('connectionPointOut', undefined, () => rel(w, p.pins.get('out')!, origin));
+        w.leaf('variable', el.variable);
+        addData(retentive ? `<data name="${RS_COIL}" handleUnknown="discard"><coil xmlns="" type="${el.coil}"/></data>` : undefined);
+      });
+      return;
+    }
+    case 'jump':
+    case 'return': {
+      const inP = p.pins.get('in')!;
+      const origin = pt(inP.x, inP.y - ELEMENT_H / 2);
+      w.open(el.kind, { localId: p.id, height: ELEMENT_H, width: CELL_W - 16, label: el.kind === 'jump' ? el.target : undefined }, () => {
+        w.empty('position', { x: origin.x, y: origin.y });
+        connect(inP, origin, srcOf('in'), inBar('in'));
+        addData();
+      });
+      return;
+    }
+    case 'box':
+      writeBox(w, el, p, ids, srcOf, inBar, connect, addData);
+      return;
+  }
+}
+
+function writeBox(
+  w: XmlWriter,
+  el: BoxElement,
+  p: Placed,
+  ids: IdAllocator,
+  srcOf: (pin: string) => readonly Source[] | undefined,
+  inBar: (pin: string) => number | undefined,
+  connect: Connect,
+  addData: () => void,
+): void {
+  const bp = boxPins(el);
+  const first = bp.inputs[0] ?? bp.outputs[0];
+  const firstPin = first ? p.pins.get(first.name)! : pt(boundaryX(el.col) + BOX_MARGIN_X, 0);
+  const origin = pt(firstPin.x, firstPin.y - ROW_H / 2 - (first?.off ?? 0) * ROW_H + BOX_MARGIN_Y);
+  const width = 2 * CELL_W - 2 * BOX_MARGIN_X;
+  // Operands: literals and variables beside unwired pins become in/outVariables joined to the pin.
+  const operandIn = new Map<string, number>();
+  const operandOut: { pin: string; id: number; text: string }[] = [];
+  for (const i of bp.inputs) {
+    const text = el.inputs[i.name];
+    if (text !== undefined && text !== '' && !srcOf(i.name)) operandIn.set(i.name, ids.next());
+  }
+  for (const o of bp.outputs) {
+    const text = el.outputs[o.name];
+    if (text !== undefined && text !== '') operandOut.push({ pin: o.name, id: ids.next(), text });
+  }
+  w.open(
+    'block',
+    { localId: p.id, width, height: bp.rows * ROW_H - 2 * BOX_MARGIN_Y, typeName: el.blockType, instanceName: el.instance || undefined },
+    () => {
+      w.empty('position', { x: origin.x, y: origin.y });
+      w.open('inputVariables', undefined, () => {
+        for (const i of bp.inputs) {
+          const at = p.pins.get(i.name)!;
+          w.open('variable', { formalParameter: i.name }, () => {
+            const opId = operandIn.get(i.name);
+            if (opId !== undefined) {
+              w.open('connectionPointIn', undefined, () => {
+                rel(w, at, origin);
+                w.open('connection', { refLocalId: opId }, () => {
+                  w.empty('position', { x: at.x, y: at.y });
+                  w.empty('position', { x: at.x - 10, y: at.y });
+                });
+              });
+            } else connect(at, origin, srcOf(i.name), inBar(i.name));
+          });
+        }
+      });
+      w.empty('inOutVariables');
+      w.open('outputVariables', undefined, () => {
+        for (const o of bp.outputs) {
+          w.open('variable', { formalParameter: o.name }, () =>
+            w.open('connectionPointOut', undefined, () => rel(w, p.pins.get(o.name)!, origin)),
+          );
+        }
+      });
+      addData();
+    },
+  );
+  for (const i of bp.inputs) {
+    const opId = operandIn.get(i.name);
+    if (opId === undefined) continue;
+    const at = p.pins.get(i.name)!;
+    const vw = Math.max(30, el.inputs[i.name]!.length * 7);
+    const vo = pt(at.x - 10 - vw, at.y - 10);
+    w.open('inVariable', { localId: opId, height: 20, width: vw, negated: 'false' }, () => {
+      w.empty('position', { x: vo.x, y: vo.y });
+      w.open('connectionPointOut', undefined, () => w.empty('relPosition', { x: vw, y: 10 }));
+      w.leaf('expression', el.inputs[i.name]!);
+    });
+  }
+  for (const o of operandOut) {
+    const at = p.pins.get(o.pin)!;
+    const vw = Math.max(30, o.text.length * 7);
+    const vo = pt(at.x + 10, at.y - 10);
+    w.open('outVariable', { localId: o.id, height: 20, width: vw, negated: 'false' }, () => {
+      w.empty('position', { x: vo.x, y: vo.y });
+      w.open('connectionPointIn', undefined, () => {
+        w.empty('relPosition', { x: 0, y: 10 });
+        w.open('connection', { refLocalId: p.id, formalParameter: o.pin }, () => {
+          w.empty('position', { x: vo.x, y: at.y });
+          w.empty('position', { x: at.x, y: at.y });
+        });
+      });
+      w.leaf('expression', o.text);
+    });
+  }
+}

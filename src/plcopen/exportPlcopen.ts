@@ -1,0 +1,103 @@
+// A whole project → one PLCopen TC6 XML v2.01 document.
+import type { Pou, Project } from '../model/project';
+import { formatInterval } from './durations';
+import { writeNetwork } from './exportBody';
+import { writeType, writeVarLists } from './exportInterface';
+import { NETWORK_GAP, SCALING } from './geometry';
+import { TC6_0201, XHTML_NS, preserved, type PreservedPou, type PreservedProject } from './types';
+import { XmlWriter } from './xml/write';
+
+export interface ExportOptions {
+  /** Timestamp written in fileHeader/contentHeader (default: now). */
+  readonly now?: Date;
+}
+
+const POU_TYPE = { PROGRAM: 'program', FUNCTION_BLOCK: 'functionBlock', FUNCTION: 'function' } as const;
+
+const isoSeconds = (d: Date): string => d.toISOString().slice(0, 19);
+
+/** Variables written by retentive coils (M, SM, RM) in a POU, upper-cased. */
+function retainedByCoil(pou: Pou): Set<string> {
+  const out = new Set<string>();
+  for (const net of pou.networks)
+    for (const el of net.elements)
+      if (el.kind === 'coil' && (el.coil === 'M' || el.coil === 'SM' || el.coil === 'RM')) out.add(el.variable.trim().toUpperCase());
+  return out;
+}
+
+function writePou(w: XmlWriter, pou: Pou, globalsRetainedByCoil: Set<string>): void {
+  const byCoil = retainedByCoil(pou);
+  const local = new Set([...byCoil].filter((n) => pou.variables.some((v) => v.name.toUpperCase() === n)));
+  for (const n of byCoil) if (!local.has(n)) globalsRetainedByCoil.add(n);
+  w.open('pou', { name: pou.name, pouType: POU_TYPE[pou.kind] }, () => {
+    w.open('interface', undefined, () => {
+      if (pou.kind === 'FUNCTION') w.open('returnType', undefined, () => writeType(w, pou.returnType || 'BOOL'));
+      writeVarLists(w, pou.variables, local);
+    });
+    w.open('body', undefined, () => {
+      if (!pou.networks.length) {
+        w.empty('LD');
+        return;
+      }
+      w.open('LD', undefined, () => {
+        let next = 1;
+        const ids = { next: () => next++ };
+        let top = NETWORK_GAP;
+        for (const net of pou.networks) top = writeNetwork(w, net, top, ids) + NETWORK_GAP;
+      });
+    });
+    const keep = preserved<PreservedPou>(pou.extensions);
+    if (keep?.addData?.length) w.open('addData', undefined, () => keep.addData!.forEach((d) => w.raw(d)));
+    if (pou.comment) w.formatted('documentation', pou.comment);
+  });
+}
+
+/** Serialises the project as PLCopen TC6 XML v2.01 (validates against tc6_xml_v201.xsd). */
+export function exportPlcopen(project: Project, options: ExportOptions = {}): string {
+  const now = isoSeconds(options.now ?? new Date());
+  const keep = preserved<PreservedProject>(project.extensions);
+  const w = new XmlWriter();
+  const ns: Record<string, string> = { xmlns: TC6_0201, 'xmlns:xhtml': XHTML_NS, 'xmlns:xsd': 'http://www.w3.org/2001/XMLSchema' };
+  for (const [prefix, uri] of Object.entries(keep?.namespaces ?? {})) if (!(`xmlns:${prefix}` in ns)) ns[`xmlns:${prefix}`] = uri;
+  const globalsByCoil = new Set<string>();
+  const pous = new XmlWriter();
+  // POUs first (into their own writer) to learn which globals retentive coils write.
+  w.open('project', ns, () => {
+    w.empty('fileHeader', { companyName: 'Rungsmith', productName: project.name || 'Untitled', productVersion: '1', creationDateTime: now });
+    w.open('contentHeader', { name: project.name || 'Untitled', modificationDateTime: now }, () => {
+      if (project.description) w.leaf('Comment', project.description);
+      w.open('coordinateInfo', undefined, () => {
+        for (const lang of ['fbd', 'ld', 'sfc']) w.open(lang, undefined, () => w.empty('scaling', { x: SCALING, y: SCALING }));
+      });
+    });
+    w.open('types', undefined, () => {
+      if (keep?.dataTypes?.length) w.open('dataTypes', undefined, () => keep.dataTypes!.forEach((d) => w.raw(d)));
+      else w.empty('dataTypes');
+      w.open('pous', undefined, () => {
+        for (const pou of project.pous) writePou(pous, pou, globalsByCoil);
+        pous
+          .toString()
+          .split('\n')
+          .filter((l) => l.length)
+          .forEach((l) => w.raw(l));
+        for (const raw of keep?.otherPous ?? []) w.raw(raw);
+      });
+    });
+    w.open('instances', undefined, () =>
+      w.open('configurations', undefined, () =>
+        w.open('configuration', { name: keep?.configuration || 'Config0' }, () => {
+          w.open('resource', { name: keep?.resource || 'Res0' }, () => {
+            project.tasks.forEach((t) =>
+              w.open('task', { name: t.name, priority: t.priority, interval: formatInterval(t.cycleMs) }, () => {
+                for (const p of t.programs) w.empty('pouInstance', { name: p.instance, typeName: p.pou });
+              }),
+            );
+          });
+          if (project.globals.length) writeVarLists(w, project.globals, globalsByCoil, true);
+        }),
+      ),
+    );
+    if (keep?.addData?.length) w.open('addData', undefined, () => keep.addData!.forEach((d) => w.raw(d)));
+  });
+  return `<?xml version="1.0" encoding="utf-8"?>\n${w.toString()}`;
+}

@@ -1,0 +1,106 @@
+// The connections a network grid draws, as a graph: for every element input pin wired on the
+// grid, the element output pins (or the left rail) feeding it. Points joined by horizontal links,
+// vertical links and the left rail form one net (the same rule as the engine's compiler).
+import { boxLayout } from '../model/boxLayout';
+import type { LdElement } from '../model/elements';
+import type { Network } from '../model/project';
+
+export type Source = { readonly kind: 'rail' } | { readonly kind: 'pin'; readonly el: number; readonly pin: string };
+
+export interface PinPoint {
+  readonly pin: string;
+  readonly row: number;
+  readonly boundary: number;
+}
+
+/** Input and output pins of an element with their grid points. 1-cell elements use pins "in"/"out". */
+export function elementPins(el: LdElement): { inputs: PinPoint[]; outputs: PinPoint[] } {
+  switch (el.kind) {
+    case 'contact':
+    case 'coil':
+      return { inputs: [{ pin: 'in', row: el.row, boundary: el.col }], outputs: [{ pin: 'out', row: el.row, boundary: el.col + 1 }] };
+    case 'jump':
+    case 'return':
+      return { inputs: [{ pin: 'in', row: el.row, boundary: el.col }], outputs: [] };
+    case 'link':
+      return { inputs: [], outputs: [] };
+    case 'box': {
+      const layout = boxLayout(el);
+      if (!layout) return { inputs: [], outputs: [] };
+      return {
+        inputs: layout.inputs.map((p) => ({ pin: p.name, row: el.row + p.rowOffset, boundary: el.col })),
+        outputs: layout.outputs.map((p) => ({ pin: p.name, row: el.row + p.rowOffset, boundary: el.col + layout.cols })),
+      };
+    }
+  }
+}
+
+export interface GridGraph {
+  /** sources.get(elementIndex).get(pin): what feeds that input pin; only pins whose net has a source. */
+  readonly sources: Map<number, Map<string, Source[]>>;
+  /** Rows at which a net with a source reaches the right rail, with that net's sources. */
+  readonly rightRail: Map<number, Source[]>;
+  /** Every net id by point key row*(cols+1)+boundary, for diagnostics and routing. */
+  readonly netOf: (row: number, boundary: number) => number;
+  /** Boundaries of vertical links per net (to route wires through the drawn bar). */
+  readonly barBoundary: Map<number, number>;
+}
+
+export function gridGraph(net: Network): GridGraph {
+  const W = net.cols + 1;
+  const n = net.rows * W;
+  const parent = new Int32Array(n);
+  for (let i = 0; i < n; i++) parent[i] = i;
+  const find = (a: number): number => {
+    while (parent[a]! !== a) {
+      parent[a] = parent[parent[a]!]!;
+      a = parent[a]!;
+    }
+    return a;
+  };
+  const union = (a: number, b: number) => {
+    const ra = find(a);
+    const rb = find(b);
+    if (ra !== rb) parent[Math.max(ra, rb)] = Math.min(ra, rb);
+  };
+  const inGrid = (r: number, b: number) => r >= 0 && r < net.rows && b >= 0 && b <= net.cols;
+  for (let r = 1; r < net.rows; r++) union(0, r * W); // the left rail joins every row at boundary 0
+  for (const el of net.elements) if (el.kind === 'link' && inGrid(el.row, el.col + 1)) union(el.row * W + el.col, el.row * W + el.col + 1);
+  for (const v of net.vlinks) if (inGrid(v.row + 1, v.boundary)) union(v.row * W + v.boundary, (v.row + 1) * W + v.boundary);
+
+  const producers = new Map<number, Source[]>();
+  const railNet = net.rows > 0 ? find(0) : -1;
+  if (railNet >= 0) producers.set(railNet, [{ kind: 'rail' }]);
+  const pins = net.elements.map(elementPins);
+  pins.forEach((p, ei) => {
+    for (const o of p.outputs) {
+      if (!inGrid(o.row, o.boundary)) continue;
+      const id = find(o.row * W + o.boundary);
+      let list = producers.get(id);
+      if (!list) producers.set(id, (list = []));
+      list.push({ kind: 'pin', el: ei, pin: o.pin });
+    }
+  });
+  const sources = new Map<number, Map<string, Source[]>>();
+  pins.forEach((p, ei) => {
+    for (const i of p.inputs) {
+      if (!inGrid(i.row, i.boundary)) continue;
+      const list = producers.get(find(i.row * W + i.boundary));
+      if (!list) continue;
+      const own = list.filter((s) => s.kind === 'rail' || s.el !== ei);
+      if (!own.length) continue;
+      let m = sources.get(ei);
+      if (!m) sources.set(ei, (m = new Map()));
+      m.set(i.pin, own);
+    }
+  });
+  const rightRail = new Map<number, Source[]>();
+  for (let r = 0; r < net.rows; r++) {
+    const id = find(r * W + net.cols);
+    const list = producers.get(id);
+    if (list && id !== railNet) rightRail.set(r, list);
+  }
+  const barBoundary = new Map<number, number>();
+  for (const v of net.vlinks) if (inGrid(v.row + 1, v.boundary)) barBoundary.set(find(v.row * W + v.boundary), v.boundary);
+  return { sources, rightRail, netOf: (r, b) => find(r * W + b), barBoundary };
+}

@@ -1,0 +1,225 @@
+// An LD body → the networks of a POU: connected components ordered like Beremiz runs them
+// (executionOrderId first, then top to bottom), labels and comments attached to the network below.
+import type { LdElement } from '../model/elements';
+import { newNetwork } from '../model/factory';
+import type { Network } from '../model/project';
+import { gridGraph, type Source } from './gridGraph';
+import { prepareLayout, type LaidOut } from './layout';
+import { buildLdGraph, type Finding, type GNode, type GSource } from './ldGraph';
+import { readLdObjects, type RawObject } from './ldObjects';
+import { RS_NETWORK, type PreservedNetwork } from './types';
+import { child, childrenNamed, type XmlElement } from './xml/parse';
+
+export interface BodyResult {
+  readonly networks: Network[];
+}
+
+const MIN_COLS = 3;
+
+interface Group {
+  readonly nodes: number[];
+  readonly key: readonly number[];
+  readonly kind: 'network' | 'label' | 'comment' | 'vendor';
+  readonly obj?: RawObject;
+}
+
+function compareKeys(a: readonly number[], b: readonly number[]): number {
+  for (let i = 0; i < Math.max(a.length, b.length); i++) {
+    const d = (a[i] ?? 0) - (b[i] ?? 0);
+    if (d) return d;
+  }
+  return 0;
+}
+
+/** Imports one LD body into networks. Throws LdGraphError for broken references. */
+export function importLdBody(body: XmlElement, raw: (el: XmlElement) => string, warn: (f: Finding) => void): BodyResult {
+  const objects = readLdObjects(body);
+  const graph = buildLdGraph(objects, raw, warn);
+  const { nodes } = graph;
+  const hasGeometry = objects.some((o) => o.pos.x !== 0 || o.pos.y !== 0);
+
+  // Connected components over wires between nodes (rails do not join networks).
+  const parent = nodes.map((_, i) => i);
+  const find = (a: number): number => {
+    while (parent[a] !== a) {
+      parent[a] = parent[parent[a]!]!;
+      a = parent[a]!;
+    }
+    return a;
+  };
+  for (const n of nodes)
+    for (const srcs of n.inputs.values())
+      for (const s of srcs) if (s.kind === 'node') parent[find(n.index)] = find(s.node);
+  const comps = new Map<number, number[]>();
+  for (const n of nodes) {
+    const r = find(n.index);
+    let list = comps.get(r);
+    if (!list) comps.set(r, (list = []));
+    list.push(n.index);
+  }
+  const keyOf = (objs: readonly { obj: RawObject; order: number }[]): number[] => {
+    const eo = Math.min(...objs.map((o) => (o.obj.executionOrderId > 0 ? o.obj.executionOrderId : Infinity)));
+    if (eo !== Infinity) return [0, eo];
+    if (hasGeometry) return [1, Math.min(...objs.map((o) => o.obj.pos.y)), Math.min(...objs.map((o) => o.obj.pos.x))];
+    return [1, Math.min(...objs.map((o) => o.order))];
+  };
+  const orderOf = new Map(objects.map((o, i) => [o, i]));
+  const groups: Group[] = [];
+  for (const list of comps.values()) groups.push({ nodes: list, kind: 'network', key: keyOf(list.map((i) => ({ obj: nodes[i]!.obj, order: orderOf.get(nodes[i]!.obj) ?? nodes[i]!.order }))) });
+  const single = (o: RawObject, kind: Group['kind'], lift: number): Group => {
+    const k = keyOf([{ obj: o, order: orderOf.get(o)! }]);
+    // A label or comment drawn beside the first row of its network still belongs to it.
+    if (hasGeometry && k[0] === 1) k[1] = k[1]! - lift;
+    return { nodes: [], kind, key: k, obj: o };
+  };
+  for (const o of graph.labels) groups.push(single(o, 'label', 20));
+  for (const o of graph.comments) groups.push(single(o, 'comment', 20));
+  for (const o of graph.vendor) groups.push(single(o, 'vendor', 20));
+  groups.sort((a, b) => compareKeys(a.key, b.key));
+
+  // Columns per network first: every network of the POU shares one width, coils on one right rail.
+  const prepared = new Map<Group, ReturnType<typeof prepareLayout>>();
+  let cols = MIN_COLS;
+  for (const g of groups) {
+    if (g.kind !== 'network') continue;
+    const p = prepareLayout(nodes, g.nodes);
+    prepared.set(g, p);
+    cols = Math.max(cols, p.needCols);
+  }
+
+  const networks: Network[] = [];
+  let pendingLabel: RawObject | undefined;
+  let pendingComments: RawObject[] = [];
+  let pendingVendor: string[] = [];
+  const flushEmpty = () => {
+    if (!pendingLabel) return;
+    networks.push(newNetwork({ rows: 1, cols, label: pendingLabel.text, ...commentsOf(pendingComments) }));
+    pendingLabel = undefined;
+    pendingComments = [];
+  };
+  for (const g of groups) {
+    if (g.kind === 'label') {
+      flushEmpty();
+      pendingLabel = g.obj;
+      continue;
+    }
+    if (g.kind === 'comment') {
+      pendingComments.push(g.obj!);
+      continue;
+    }
+    if (g.kind === 'vendor') {
+      pendingVendor.push(raw(g.obj!.xml));
+      continue;
+    }
+    const laid = prepared.get(g)!.run(cols);
+    verify(nodes, g.nodes, laid, warn);
+    const keep: PreservedNetwork = {
+      ...(pendingVendor.length ? { objects: pendingVendor } : {}),
+      ...elementData(nodes, g.nodes, laid),
+    };
+    networks.push(
+      newNetwork({
+        rows: laid.rows,
+        cols: laid.cols,
+        elements: laid.elements,
+        vlinks: laid.vlinks,
+        ...(pendingLabel ? { label: pendingLabel.text } : {}),
+        ...commentsOf(pendingComments),
+        ...(keep.objects || keep.elementData ? { extensions: { plcopen: keep } } : {}),
+      }),
+    );
+    pendingLabel = undefined;
+    pendingComments = [];
+    pendingVendor = [];
+  }
+  flushEmpty();
+  if (pendingComments.length || pendingVendor.length) {
+    const last = networks.pop();
+    const extra = commentsOf(pendingComments);
+    const keep: PreservedNetwork = { objects: pendingVendor };
+    if (last) {
+      networks.push({
+        ...last,
+        comment: [last.comment, extra.comment].filter(Boolean).join('\n'),
+        title: last.title || extra.title,
+        ...(pendingVendor.length ? { extensions: { plcopen: { ...(last.extensions?.plcopen as object), objects: pendingVendor } } } : {}),
+      });
+    } else networks.push(newNetwork({ rows: 1, cols, ...extra, ...(pendingVendor.length ? { extensions: { plcopen: keep } } : {}) }));
+  }
+  return { networks };
+}
+
+function commentsOf(list: readonly RawObject[]): { comment: string; title: string } {
+  let title = '';
+  const texts: string[] = [];
+  for (const o of list) {
+    const add = child(o.xml, 'addData');
+    const mine = add ? childrenNamed(add, 'data').find((d) => d.attrs.name === RS_NETWORK) : undefined;
+    const t = mine?.children[0]?.attrs.title;
+    if (t) title = t;
+    if (o.text) texts.push(o.text);
+  }
+  return { comment: texts.join('\n'), title };
+}
+
+function elementData(nodes: readonly GNode[], members: readonly number[], laid: LaidOut): Pick<PreservedNetwork, 'elementData'> {
+  const out: Record<string, readonly string[]> = {};
+  for (const i of members) {
+    const d = nodes[i]!.data;
+    const id = laid.elementOf.get(i);
+    if (d && id) out[id] = d;
+  }
+  return Object.keys(out).length ? { elementData: out } : {};
+}
+
+const describe = (n: GNode): string => {
+  switch (n.kind) {
+    case 'contact':
+      return n.contact === 'NOT' ? 'NOT contact' : `contact "${n.variable}"`;
+    case 'coil':
+      return `coil "${n.variable}"`;
+    case 'box':
+      return `block ${n.instance ?? n.blockType}`;
+    case 'jump':
+      return `jump to ${n.target}`;
+    case 'return':
+      return 'return';
+  }
+};
+
+/** Checks that the grid draws exactly the wiring of the file; reports elements whose inputs differ. */
+function verify(nodes: readonly GNode[], members: readonly number[], laid: LaidOut, warn: (f: Finding) => void): void {
+  const net = newNetwork({ rows: laid.rows, cols: laid.cols, elements: laid.elements, vlinks: laid.vlinks });
+  const g = gridGraph(net);
+  const indexOfElement = new Map<string, number>();
+  laid.elements.forEach((e: LdElement, i) => indexOfElement.set(e.id, i));
+  const nodeOfElement = new Map<number, number>();
+  for (const i of members) {
+    const id = laid.elementOf.get(i);
+    if (id) nodeOfElement.set(indexOfElement.get(id)!, i);
+  }
+  const key = (s: Source | GSource): string => {
+    if (s.kind === 'rail') return 'rail';
+    if (s.kind === 'pin') return `${nodeOfElement.get(s.el)}:${s.pin}`;
+    return `${s.node}:${s.pin}`;
+  };
+  const memberSet = new Set(members);
+  for (const i of members) {
+    const n = nodes[i]!;
+    const ei = indexOfElement.get(laid.elementOf.get(i)!);
+    if (ei === undefined) continue;
+    const drawn = g.sources.get(ei) ?? new Map<string, Source[]>();
+    const pins = new Set([...n.inputs.keys(), ...drawn.keys()]);
+    for (const pin of pins) {
+      const want = new Set((n.inputs.get(pin) ?? []).filter((s) => s.kind === 'rail' || memberSet.has(s.node)).map(key));
+      const got = new Set((drawn.get(pin) ?? []).map(key));
+      if (want.size !== got.size || [...want].some((k) => !got.has(k))) {
+        warn({
+          message: `${describe(n)}${pin === 'in' || pin === 'out' ? '' : ` pin ${pin}`}: this wiring cannot be drawn exactly on the ladder grid; check its connections`,
+          obj: n.obj,
+        });
+        break;
+      }
+    }
+  }
+}

@@ -1,0 +1,124 @@
+// PLCopen declarations → model variables, and configurations → tasks.
+import type { Task, VarClass, Variable } from '../model/project';
+import { parseInterval } from './durations';
+import { RS_VARIABLE } from './types';
+import { child, childrenNamed, deepText, type XmlElement } from './xml/parse';
+
+export type Warn = (message: string, el?: XmlElement) => void;
+
+const CLASS_OF: Record<string, VarClass> = {
+  localVars: 'local',
+  inputVars: 'input',
+  outputVars: 'output',
+  inOutVars: 'inOut',
+  externalVars: 'external',
+  tempVars: 'temp',
+  globalVars: 'local',
+};
+
+const TYPE_ALIASES: Record<string, string> = { string: 'STRING', wstring: 'WSTRING' };
+
+/** The type text of a `<type>` (or returnType) element. */
+export function readType(typeEl: XmlElement | undefined, warn: Warn): string {
+  const t = typeEl?.children[0];
+  if (!t) return 'BOOL';
+  if (t.name === 'derived') return t.attrs.name ?? 'BOOL';
+  if (TYPE_ALIASES[t.name]) return TYPE_ALIASES[t.name]!;
+  if (t.name === 'array' || t.name === 'struct' || t.name === 'enum' || t.name === 'subrangeSigned' || t.name === 'subrangeUnsigned' || t.name === 'pointer') {
+    warn(`a ${t.name} type is not supported by Rungsmith; the variable keeps the name of its base type`, t);
+    const base = descendType(t);
+    return base ?? t.name.toUpperCase();
+  }
+  return t.name.toUpperCase();
+}
+
+function descendType(el: XmlElement): string | undefined {
+  const base = child(el, 'baseType')?.children[0];
+  if (!base) return undefined;
+  if (base.name === 'derived') return base.attrs.name;
+  return TYPE_ALIASES[base.name] ?? base.name.toUpperCase();
+}
+
+function initialValue(v: XmlElement, warn: Warn): string | undefined {
+  const iv = child(v, 'initialValue');
+  if (!iv) return undefined;
+  const simple = child(iv, 'simpleValue');
+  if (simple) return simple.attrs.value;
+  warn(`the initial value of "${v.attrs.name}" (array or structure) is not supported and was dropped`, iv);
+  return undefined;
+}
+
+/** Every variable of the var lists under `parent` (an interface, resource or configuration). */
+export function readVarLists(parent: XmlElement, warn: Warn, only?: readonly string[]): Variable[] {
+  const out: Variable[] = [];
+  for (const list of parent.children) {
+    const cls = CLASS_OF[list.name];
+    if (cls === undefined || (only && !only.includes(list.name))) {
+      if (list.name === 'accessVars') warn('VAR_ACCESS declarations are not supported and were dropped', list);
+      continue;
+    }
+    const retain = list.attrs.retain === 'true' || list.attrs.persistent === 'true';
+    const constant = list.attrs.constant === 'true';
+    for (const v of childrenNamed(list, 'variable')) {
+      const add = child(v, 'addData');
+      const byCoil = add ? childrenNamed(add, 'data').some((d) => d.attrs.name === RS_VARIABLE && d.children[0]?.attrs.retainByCoil === 'true') : false;
+      const doc = child(v, 'documentation');
+      const init = initialValue(v, warn);
+      out.push({
+        name: v.attrs.name ?? '',
+        type: readType(child(v, 'type'), warn),
+        varClass: cls,
+        ...(v.attrs.address ? { location: v.attrs.address } : {}),
+        ...(init !== undefined ? { initial: init } : {}),
+        retain: retain && !byCoil,
+        ...(constant ? { constant: true } : {}),
+        comment: doc ? deepText(doc).trim() : '',
+      });
+    }
+  }
+  return out;
+}
+
+export interface InstancesResult {
+  readonly tasks: Task[];
+  readonly globals: Variable[];
+  readonly configuration?: string;
+  readonly resource?: string;
+}
+
+/** Tasks and global variables from `instances/configurations`. */
+export function readInstances(instances: XmlElement | undefined, warn: Warn): InstancesResult {
+  const tasks: Task[] = [];
+  const globals: Variable[] = [];
+  let configuration: string | undefined;
+  let resource: string | undefined;
+  const configs = instances ? childrenNamed(child(instances, 'configurations') ?? instances, 'configuration') : [];
+  for (const conf of configs) {
+    configuration ??= conf.attrs.name;
+    globals.push(...readVarLists(conf, warn, ['globalVars']));
+    for (const res of childrenNamed(conf, 'resource')) {
+      resource ??= res.attrs.name;
+      for (const t of childrenNamed(res, 'task')) {
+        let cycleMs = 10;
+        const interval = t.attrs.interval;
+        if (interval) {
+          const ms = parseInterval(interval);
+          if (ms === undefined || ms <= 0) warn(`task ${t.attrs.name}: interval "${interval}" is not a duration; using 10 ms`, t);
+          else cycleMs = ms;
+        } else warn(`task ${t.attrs.name}: event task (single="${t.attrs.single ?? ''}") runs cyclically every 10 ms in Rungsmith`, t);
+        const programs = childrenNamed(t, 'pouInstance')
+          .map((pi) => ({ instance: pi.attrs.name ?? '', pou: pi.attrs.typeName || pi.attrs.type || '' }))
+          .filter((p) => {
+            if (!p.pou) warn(`task ${t.attrs.name}: program instance "${p.instance}" names no POU; dropped`, t);
+            return p.pou && p.instance;
+          });
+        const priority = Number.parseInt(t.attrs.priority ?? '0', 10);
+        tasks.push({ name: t.attrs.name ?? `task${tasks.length}`, cycleMs, priority: Number.isFinite(priority) ? priority : 0, programs });
+      }
+      for (const pi of childrenNamed(res, 'pouInstance'))
+        warn(`program instance "${pi.attrs.name}" is not attached to a task; it is not run`, pi);
+      globals.push(...readVarLists(res, warn, ['globalVars']));
+    }
+  }
+  return { tasks, globals, ...(configuration ? { configuration } : {}), ...(resource ? { resource } : {}) };
+}

@@ -1,0 +1,372 @@
+// Interpreting an LD body: power-flow nodes (contacts, coils, blocks, jumps, returns) with the
+// sources of every input pin resolved (continuations followed, block output pins named, data
+// variables folded into block operands), then split into networks (connected components).
+import { blockSignature } from '../model/blocks';
+import { boxLayoutFor } from '../model/boxLayout';
+import type { CoilType, ContactType } from '../model/elements';
+import type { RawConnection, RawObject, RawPin } from './ldObjects';
+import { RS_COIL, RS_CONTACT } from './types';
+import { child, childrenNamed, type XmlElement } from './xml/parse';
+
+export type GSource = { readonly kind: 'rail' } | { readonly kind: 'node'; readonly node: number; readonly pin: string };
+
+export interface GNode {
+  readonly index: number;
+  readonly obj: RawObject;
+  readonly kind: 'contact' | 'coil' | 'box' | 'jump' | 'return';
+  contact?: ContactType;
+  coil?: CoilType;
+  variable?: string;
+  target?: string;
+  blockType?: string;
+  instance?: string;
+  inputCount?: number;
+  /** Wired input pins (model pin names: "in" for 1-cell elements) and their sources. */
+  readonly inputs: Map<string, GSource[]>;
+  readonly operandsIn: Record<string, string>;
+  readonly operandsOut: Record<string, string>;
+  /** Position hints from the file (0,0 in files without geometry). */
+  readonly x: number;
+  readonly y: number;
+  readonly order: number;
+  feedsRightRail: boolean;
+  /** Raw `<data>` elements of the object's addData kept for the round trip. */
+  data?: string[];
+}
+
+export interface Finding {
+  readonly message: string;
+  readonly obj?: RawObject;
+}
+
+export interface LdGraph {
+  readonly nodes: GNode[];
+  readonly labels: RawObject[];
+  readonly comments: RawObject[];
+  readonly vendor: RawObject[];
+}
+
+export class LdGraphError extends Error {
+  constructor(
+    message: string,
+    readonly obj: RawObject | undefined,
+  ) {
+    super(message);
+  }
+}
+
+const RAIL: GSource = { kind: 'rail' };
+const isTrue = (s: string) => /^(TRUE|BOOL#TRUE|BOOL#1)$/i.test(s.trim());
+
+/** The Rungsmith addData marker value (`type` attribute) on an object, if any. */
+function rsMarker(obj: RawObject, name: string): string | undefined {
+  const add = child(obj.xml, 'addData');
+  if (!add) return undefined;
+  for (const d of childrenNamed(add, 'data')) if (d.attrs.name === name) return d.children[0]?.attrs.type;
+  return undefined;
+}
+
+/** Builds the node graph of one LD body. `raw` gives the source text of an element (for preserved data). */
+export function buildLdGraph(objects: readonly RawObject[], raw: (el: XmlElement) => string, warn: (f: Finding) => void): LdGraph {
+  const byId = new Map<string, RawObject>();
+  for (const o of objects) {
+    if (!o.localId) {
+      if (o.kind !== 'addData' && o.kind !== 'documentation') throw new LdGraphError(`<${o.kind}> has no localId`, o);
+      continue;
+    }
+    if (byId.has(o.localId)) throw new LdGraphError(`localId ${o.localId} is used twice (<${byId.get(o.localId)!.kind}> and <${o.kind}>)`, o);
+    byId.set(o.localId, o);
+  }
+  const connectors = new Map<string, RawObject>();
+  for (const o of objects) if (o.kind === 'connector') connectors.set(o.text.toUpperCase(), o);
+
+  const nodes: GNode[] = [];
+  const nodeOf = new Map<RawObject, GNode>();
+  const labels: RawObject[] = [];
+  const comments: RawObject[] = [];
+  const vendor: RawObject[] = [];
+  const newNode = (obj: RawObject, kind: GNode['kind'], order: number): GNode => {
+    const n: GNode = {
+      index: nodes.length,
+      obj,
+      kind,
+      inputs: new Map(),
+      operandsIn: {},
+      operandsOut: {},
+      x: obj.pos.x,
+      y: obj.pos.y,
+      order,
+      feedsRightRail: false,
+    };
+    nodes.push(n);
+    nodeOf.set(obj, n);
+    return n;
+  };
+
+  objects.forEach((o, order) => {
+    switch (o.kind) {
+      case 'contact': {
+        const a = o.attrs;
+        const c: ContactType = a.edge === 'rising' ? 'P' : a.edge === 'falling' ? 'N' : a.negated === 'true' ? 'NC' : 'NO';
+        if ((a.edge === 'rising' || a.edge === 'falling') && a.negated === 'true')
+          warn({ message: `contact "${o.text}" is both negated and edge-triggered; Rungsmith keeps the edge (${c}) and drops the negation`, obj: o });
+        const n = newNode(o, 'contact', order);
+        n.contact = c;
+        n.variable = o.text;
+        break;
+      }
+      case 'coil': {
+        const a = o.attrs;
+        const marker = rsMarker(o, RS_COIL) as CoilType | undefined;
+        let c: CoilType = 'COIL';
+        if (a.storage === 'set') c = 'SET';
+        else if (a.storage === 'reset') c = 'RESET';
+        else if (a.edge === 'rising') c = 'P';
+        else if (a.edge === 'falling') c = 'N';
+        else if (a.negated === 'true') c = 'NEG';
+        if (marker === 'M' || marker === 'SM' || marker === 'RM') c = marker;
+        const n = newNode(o, 'coil', order);
+        n.coil = c;
+        n.variable = o.text;
+        break;
+      }
+      case 'block':
+        if (rsMarker(o, RS_CONTACT) === 'NOT') {
+          const n = newNode(o, 'contact', order);
+          n.contact = 'NOT';
+          n.variable = '';
+        } else newNode(o, 'box', order);
+        break;
+      case 'jump': {
+        const n = newNode(o, 'jump', order);
+        n.target = o.text;
+        break;
+      }
+      case 'return':
+        newNode(o, 'return', order);
+        break;
+      case 'label':
+        labels.push(o);
+        break;
+      case 'comment':
+        comments.push(o);
+        break;
+      case 'vendorElement':
+      case 'error':
+        vendor.push(o);
+        warn({ message: `<${o.kind}> kept unchanged for export; Rungsmith does not interpret it`, obj: o });
+        break;
+      default:
+        break;
+    }
+  });
+
+  // Every reference, through continuations, to the objects producing it.
+  const resolve = (c: RawConnection, consumer: RawObject, seen = new Set<string>()): { obj: RawObject | 'rail'; pin?: string }[] => {
+    const src = byId.get(c.ref);
+    if (!src) throw new LdGraphError(`<${consumer.kind}> localId ${consumer.localId} is connected to localId ${c.ref}, which does not exist`, consumer);
+    switch (src.kind) {
+      case 'leftPowerRail':
+        return [{ obj: 'rail' }];
+      case 'continuation': {
+        const conn = connectors.get(src.text.toUpperCase());
+        if (!conn) {
+          warn({ message: `continuation "${src.text}" has no connector of that name; its wire is dropped`, obj: src });
+          return [];
+        }
+        if (seen.has(conn.localId)) throw new LdGraphError(`connector "${src.text}" feeds itself`, conn);
+        seen.add(conn.localId);
+        return conn.inputs[0]!.connections.flatMap((cc) => resolve(cc, conn, seen));
+      }
+      case 'contact':
+      case 'coil':
+      case 'inVariable':
+      case 'inOutVariable':
+        return [{ obj: src }];
+      case 'block': {
+        if (c.formal) return [{ obj: src, pin: c.formal }];
+        const first = src.outputs.find((p) => p.pin.toUpperCase() !== 'ENO') ?? src.outputs[0];
+        return [{ obj: src, pin: first?.pin ?? 'OUT' }];
+      }
+      default:
+        throw new LdGraphError(
+          `<${consumer.kind}> localId ${consumer.localId} is connected to <${src.kind}> localId ${src.localId}, which has no output`,
+          consumer,
+        );
+    }
+  };
+
+  // Variables standing for data: an inVariable read by a block pin is that pin's operand; elsewhere it
+  // becomes a normally-open contact. An outVariable written by a block pin is that pin's operand;
+  // fed by power flow it becomes a coil.
+  const asContact = new Map<RawObject, GNode>();
+  const dataContact = (o: RawObject): GSource => {
+    if (isTrue(o.text)) return RAIL;
+    let n = asContact.get(o);
+    if (!n) {
+      n = newNode(o, 'contact', o.executionOrderId);
+      n.contact = 'NO';
+      n.variable = o.text;
+      n.inputs.set('in', [RAIL]);
+      asContact.set(o, n);
+      warn({ message: `variable "${o.text}" used as power flow became a normally-open contact`, obj: o });
+    }
+    return { kind: 'node', node: n.index, pin: 'out' };
+  };
+
+  const pinName = (n: GNode, pin: string): string | undefined => {
+    if (n.kind !== 'box') return n.kind === 'contact' && n.contact === 'NOT' ? (pin.toUpperCase() === 'OUT' ? 'out' : 'in') : 'out';
+    return pin.toUpperCase();
+  };
+  const sourcesOf = (pin: RawPin, consumer: RawObject, operandTarget?: (text: string) => void): GSource[] => {
+    const out: GSource[] = [];
+    const all = pin.connections.flatMap((c) => resolve(c, consumer));
+    for (const r of all) {
+      if (r.obj === 'rail') out.push(RAIL);
+      else if (r.obj.kind === 'inVariable' || r.obj.kind === 'inOutVariable') {
+        if (operandTarget && all.length === 1) operandTarget(r.obj.text);
+        else out.push(dataContact(r.obj));
+      } else {
+        const n = nodeOf.get(r.obj);
+        if (!n) continue;
+        if (n.kind === 'box' && !blockSignature(n.obj.text)) {
+          warn({ message: `the wire from block ${n.obj.text} (localId ${n.obj.localId}) cannot be kept: Rungsmith does not know its pins`, obj: consumer });
+          continue;
+        }
+        out.push({ kind: 'node', node: n.index, pin: pinName(n, r.pin ?? 'out')! });
+      }
+    }
+    return out;
+  };
+
+  for (const n of [...nodes]) {
+    const o = n.obj;
+    if (n.kind === 'box') buildBox(n, o, sourcesOf, warn);
+    else if (n.kind === 'contact' && n.contact === 'NOT' && o.kind === 'block') {
+      const src = sourcesOf(o.inputs[0] ?? { pin: 'IN', connections: [], negated: false }, o);
+      if (src.length) n.inputs.set('in', src);
+    } else if (!asContact.has(o)) {
+      const pin = o.inputs[0];
+      if (pin) {
+        const src = sourcesOf(pin, o);
+        if (src.length) n.inputs.set('in', src);
+      }
+    }
+  }
+
+  // Data variables written in the body.
+  for (const o of objects) {
+    if (o.kind !== 'outVariable' && o.kind !== 'inOutVariable') continue;
+    const pin = o.inputs[0];
+    if (!pin || !pin.connections.length) continue;
+    const all = pin.connections.flatMap((c) => resolve(c, o));
+    const single = all.length === 1 ? all[0]! : undefined;
+    if (single && single.obj !== 'rail' && single.obj.kind === 'block') {
+      const n = nodeOf.get(single.obj)!;
+      const p = (single.pin ?? 'OUT').toUpperCase();
+      if (n.operandsOut[p] === undefined) {
+        n.operandsOut[p] = o.text;
+        continue;
+      }
+      if (n.blockType || blockSignature(single.obj.text)) {
+        warn({ message: `block output ${single.obj.attrs.instanceName ?? single.obj.text}.${p} is written to "${n.operandsOut[p]}" and "${o.text}"; Rungsmith keeps the first`, obj: o });
+        continue;
+      }
+    }
+    const coil = newNode(o, 'coil', o.executionOrderId);
+    coil.coil = 'COIL';
+    coil.variable = o.text;
+    const src = sourcesOf(pin, o);
+    if (src.length) coil.inputs.set('in', src);
+    warn({ message: `variable "${o.text}" written by power flow became a coil`, obj: o });
+  }
+
+  // Right rails only collect wires; remember who reaches them (for drawing).
+  for (const o of objects) {
+    if (o.kind !== 'rightPowerRail') continue;
+    for (const pin of o.inputs)
+      for (const c of pin.connections)
+        for (const r of resolve(c, o)) {
+          if (r.obj === 'rail') continue;
+          const n = nodeOf.get(r.obj) ?? asContact.get(r.obj);
+          if (n) n.feedsRightRail = true;
+        }
+  }
+
+  // Unknown addData on graphical objects is kept per object.
+  for (const n of nodes) {
+    const add = child(n.obj.xml, 'addData');
+    if (!add) continue;
+    const keep: string[] = [];
+    for (const d of childrenNamed(add, 'data')) {
+      if (d.attrs.name === RS_COIL || d.attrs.name === RS_CONTACT) continue;
+      if (d.attrs.handleUnknown === 'discard') warn({ message: `addData "${d.attrs.name}" dropped (handleUnknown="discard")`, obj: n.obj });
+      else keep.push(raw(d));
+    }
+    if (keep.length) n.data = keep;
+  }
+  return { nodes, labels, comments, vendor };
+}
+
+function buildBox(
+  n: GNode,
+  o: RawObject,
+  sourcesOf: (pin: RawPin, consumer: RawObject, operandTarget?: (text: string) => void) => GSource[],
+  warn: (f: Finding) => void,
+): void {
+  const typeName = o.text;
+  const sig = blockSignature(typeName);
+  const instance = o.attrs.instanceName;
+  n.instance = instance || undefined;
+  if (!sig) {
+    n.blockType = typeName;
+    for (const pin of o.inputs) {
+      const name = pin.pin;
+      let operand: string | undefined;
+      const src = sourcesOf(pin, o, (t) => (operand = t));
+      if (operand !== undefined) n.operandsIn[name] = operand;
+      else if (src.length) warn({ message: `block ${instance ?? typeName}: the wire into pin ${name} is dropped (Rungsmith does not know block type ${typeName})`, obj: o });
+    }
+    for (const pin of o.outputs) if (pin.expression) n.operandsOut[pin.pin] = pin.expression;
+    warn({ message: `block type ${typeName} is not a standard block Rungsmith can simulate; kept with its operands`, obj: o });
+    return;
+  }
+  n.blockType = sig.name;
+  if (sig.kind === 'fb' && !instance) warn({ message: `function block ${sig.name} has no instance name`, obj: o });
+  if (sig.kind === 'function' && instance) n.instance = undefined;
+  if (sig.extensible) {
+    const { prefix } = sig.extensible;
+    const count = o.inputs.filter((p) => p.pin.toUpperCase().startsWith(prefix) && /^\d+$/.test(p.pin.slice(prefix.length))).length;
+    if (count > 0 && count !== sig.extensible.min) n.inputCount = count;
+  }
+  const layout = boxLayoutFor(sig.name, n.inputCount);
+  const known = new Set(layout?.inputs.map((p) => p.name) ?? []);
+  let hasEn = false;
+  for (const pin of o.inputs) {
+    const name = pin.pin.toUpperCase();
+    if (name === 'EN') hasEn = true;
+    if (!known.has(name)) {
+      if (pin.connections.length) warn({ message: `block ${instance ?? sig.name}: pin ${pin.pin} is not a pin of ${sig.name}; its wire is dropped`, obj: o });
+      continue;
+    }
+    if (pin.negated) warn({ message: `block ${instance ?? sig.name}: negation of input ${name} is dropped`, obj: o });
+    if (pin.edge) {
+      const counterPin = sig.category === 'counter' && (name === 'CU' || name === 'CD');
+      warn({
+        message: counterPin
+          ? `block ${instance ?? sig.name}: edge qualifier on ${name} dropped (the counter already counts rising edges)`
+          : `block ${instance ?? sig.name}: ${pin.edge} edge qualifier on input ${name} is dropped`,
+        obj: o,
+      });
+    }
+    let operand: string | undefined;
+    const src = sourcesOf(pin, o, (t) => (operand = t));
+    if (operand !== undefined) n.operandsIn[name] = operand;
+    else if (src.length) n.inputs.set(name, src);
+  }
+  if (sig.kind === 'function' && !hasEn) n.inputs.set('EN', [RAIL]);
+  for (const pin of o.outputs) {
+    if (pin.negated) warn({ message: `block ${instance ?? sig.name}: negation of output ${pin.pin} is dropped`, obj: o });
+    if (pin.expression) n.operandsOut[pin.pin.toUpperCase()] = pin.expression;
+  }
+}

@@ -1,0 +1,42 @@
+// The UI side of the simulation worker: sends commands, delivers the worker's messages to listeners.
+// The worker is created lazily, on the first command, so merely opening the editor costs nothing.
+import type { HostMessage, WorkerMessage } from './protocol';
+
+export interface SimTransport {
+  send(message: HostMessage): void;
+  /** Returns an unsubscribe function. */
+  listen(listener: (message: WorkerMessage) => void): () => void;
+  terminate(): void;
+}
+
+/** A transport over the real Web Worker (browser only). */
+export function createWorkerTransport(): SimTransport {
+  let worker: Worker | undefined;
+  const listeners = new Set<(message: WorkerMessage) => void>();
+  const ensure = (): Worker => {
+    if (worker) return worker;
+    const created = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: 'rungsmith-sim' });
+    created.onmessage = (event: MessageEvent<WorkerMessage>) => {
+      for (const listener of listeners) listener(event.data);
+    };
+    created.onerror = (event: ErrorEvent) => {
+      const message: WorkerMessage = { type: 'error', message: `the simulator stopped: ${event.message || 'worker error'}` };
+      for (const listener of listeners) listener(message);
+    };
+    worker = created;
+    return created;
+  };
+  return {
+    send(message) {
+      ensure().postMessage(message);
+    },
+    listen(listener) {
+      listeners.add(listener);
+      return () => listeners.delete(listener);
+    },
+    terminate() {
+      worker?.terminate();
+      worker = undefined;
+    },
+  };
+}

@@ -1,0 +1,133 @@
+// Messages between the UI (host.ts) and the simulation worker (worker.ts -> SimSession).
+// Both sides are in this repository and built together, so messages are typed, not validated;
+// the version lets a stale cached worker be detected.
+//
+// Gateway seam (issue 6): a bridge feeds each scan's input image with `setInputs` (IEC locations,
+// applied at the next input read, exactly like a PLC's input card) and receives the output image
+// with `outputs` events after every scan that changed it, once it sent `subscribeOutputs`.
+import type { Diagnostic, Fault } from '../engine/api';
+import type { Value } from '../model/iecTypes';
+import type { Project } from '../model/project';
+
+export const SIM_PROTOCOL_VERSION = 1;
+
+export type SimMode = 'stopped' | 'running' | 'paused' | 'faulted';
+
+/** A value typed by the user ("TRUE", "T#2s", "42") or an already typed value. */
+export type SimValueInput = { readonly value: Value } | { readonly text: string };
+
+/** Commands that run the program may carry the document to compile first; a compile error refuses the command. */
+interface WithProject {
+  readonly project?: Project;
+}
+
+export type HostMessage =
+  /** Compile the document. When a program is loaded already this is an online change, applied at the next scan boundary. */
+  | { readonly type: 'load'; readonly project: Project }
+  | ({ readonly type: 'run' } & WithProject)
+  | { readonly type: 'pause' }
+  | ({ readonly type: 'step'; readonly scans: number } & WithProject)
+  | ({ readonly type: 'stepNetwork' } & WithProject)
+  /** Cold restart: every variable to its initial value, scan count 0, mode stopped. Forces stay. */
+  | { readonly type: 'reset' }
+  /** Warm restart: RETAIN and M/SM/RM variables keep their values; a running PLC keeps running. */
+  | { readonly type: 'warmRestart' }
+  /** Cycle time in ms (0 = as fast as possible). Applies from the next scan. */
+  | { readonly type: 'setCycle'; readonly cycleMs: number }
+  /** 0-based network indexes; execution pauses before any of them. */
+  | { readonly type: 'setBreakpoints'; readonly networks: readonly number[] }
+  | { readonly type: 'write'; readonly name: string; readonly input: SimValueInput }
+  | { readonly type: 'force'; readonly name: string; readonly input: SimValueInput }
+  | { readonly type: 'unforce'; readonly name: string }
+  | { readonly type: 'unforceAll' }
+  /** Signals sampled after every scan for the trend; `capacity` scans are kept. */
+  | { readonly type: 'setTrend'; readonly names: readonly string[]; readonly capacity: number }
+  /** Gateway: input image by IEC location (%IX0.0 -> true), applied at the next input read. */
+  | { readonly type: 'setInputs'; readonly values: Readonly<Record<string, Value>> }
+  /** Gateway: start or stop `outputs` events. */
+  | { readonly type: 'subscribeOutputs'; readonly enabled: boolean };
+
+export type VariableRole = 'input' | 'output' | 'memory' | 'local' | 'pin';
+
+export interface SimVariable {
+  /** `Start`, `T1.ET` for an FB pin. */
+  readonly name: string;
+  /** Elementary type (BOOL, INT, TIME ...). */
+  readonly type: string;
+  readonly location?: string;
+  readonly role: VariableRole;
+}
+
+/** What the loaded program looks like; frames are aligned with it. */
+export interface SimLayout {
+  readonly pou: string;
+  /** Document network ids in order, so the canvas can find a network's power by id. */
+  readonly networkIds: readonly string[];
+  /** elementOffsets[n] = index of network n's first element byte in a frame's `elements`; length networks + 1. */
+  readonly elementOffsets: readonly number[];
+  readonly vlinkOffsets: readonly number[];
+  /** Element ids of all networks, packed like a frame's `elements` (so the canvas finds a byte by id). */
+  readonly elementIds: readonly string[];
+  /** Vertical links of all networks as `row|boundary`, packed like a frame's `vlinks`. */
+  readonly vlinkKeys: readonly string[];
+  /** Every readable name, aligned with a frame's `values`. */
+  readonly variables: readonly SimVariable[];
+  readonly cycleMs: number;
+}
+
+export interface ExecStats {
+  readonly lastMs: number;
+  readonly avgMs: number;
+  readonly maxMs: number;
+}
+
+export interface TrendSamples {
+  readonly names: readonly string[];
+  /** Scan number of each sample. */
+  readonly scans: readonly number[];
+  readonly timesMs: readonly number[];
+  /** series[i][k]: value of names[i] after scans[k]; BOOL as 0/1. */
+  readonly series: readonly (readonly number[])[];
+}
+
+/** State of the simulation, posted at display rate while running and after every command. */
+export interface SimFrame {
+  readonly mode: SimMode;
+  readonly scan: number;
+  readonly timeMs: number;
+  readonly cycleMs: number;
+  readonly exec: ExecStats;
+  readonly fault?: Fault;
+  /** Network that executes next when stepping (-1 at a scan boundary). */
+  readonly nextNetwork: number;
+  /** Set when execution stopped at a breakpoint before this network. */
+  readonly breakpointHit?: number;
+  /** Scans dropped because the worker could not keep the cycle. */
+  readonly overruns: number;
+  /** Power bytes (api.ts NetworkPower), all networks packed, see SimLayout offsets. Transferred. */
+  readonly elements: Uint8Array;
+  readonly vlinks: Uint8Array;
+  /** 1 when the network ran in the last (or current) scan. */
+  readonly executed: Uint8Array;
+  /** Aligned with SimLayout.variables. */
+  readonly values: readonly Value[];
+  readonly forced: readonly (readonly [string, Value])[];
+  /** New trend samples since the previous frame. */
+  readonly trend?: TrendSamples;
+}
+
+export type WorkerMessage =
+  | {
+      readonly type: 'compiled';
+      readonly ok: boolean;
+      /** True when the program replaced a loaded one (online change). */
+      readonly online: boolean;
+      readonly diagnostics: readonly Diagnostic[];
+      readonly layout?: SimLayout;
+    }
+  | { readonly type: 'frame'; readonly frame: SimFrame }
+  /** A command failed (unknown variable, bad value ...): shown to the user. */
+  | { readonly type: 'error'; readonly message: string }
+  /** Gateway: output image by IEC location after a scan that changed it. */
+  | { readonly type: 'outputs'; readonly scan: number; readonly timeMs: number; readonly outputs: Readonly<Record<string, Value>> }
+  | { readonly type: 'ready'; readonly version: number };

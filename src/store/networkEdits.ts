@@ -1,0 +1,266 @@
+// Pure edits of one network's grid. The document store turns their results into diffs.
+//
+// Placing: an element goes on the cell it is dropped on; horizontal links under it are
+// replaced. Insert in series (placing on a cell that holds a contact, coil, box...): the new
+// element goes at that element's left edge `c`, and every element whose left edge is at or
+// right of `c` (on every row) moves right by the new element's width; vertical links right of
+// boundary `c` move with them (links *at* `c` stay on the left, so the new element sits after a
+// branch join). On other rows, where a connection crossed boundary `c` (something ended at `c`
+// — the left rail, an element or a vertical link — and something started at `c`), horizontal
+// links fill the gap so every other path keeps its meaning. `cols` grows when needed.
+import { boxLayout } from '../model/boxLayout';
+import type { LdElement, VLink } from '../model/elements';
+import { elementCells, elementSize } from '../model/factory';
+import { cellKey, type Cell } from '../model/grid';
+import type { ElementId } from '../model/ids';
+import type { Network } from '../model/project';
+
+type DistributiveOmit<T, K extends PropertyKey> = T extends unknown ? Omit<T, K> : never;
+/** An element before it has an id and a place: `{ kind: 'contact', contact: 'NO', variable: 'Start' }`. */
+export type ElementTemplate = DistributiveOmit<LdElement, 'id' | 'row' | 'col'>;
+
+export const placed = (t: ElementTemplate, id: ElementId, row: number, col: number): LdElement =>
+  ({ ...t, id, row, col }) as LdElement;
+
+export const templateSize = (t: ElementTemplate) => elementSize(placed(t, '' as ElementId, 0, 0));
+
+/** Which element covers each cell, by cellKey. */
+export function occupancy(n: Network, ignore?: ReadonlySet<ElementId>): Map<string, LdElement> {
+  const map = new Map<string, LdElement>();
+  for (const el of n.elements) {
+    if (ignore?.has(el.id)) continue;
+    for (const c of elementCells(el)) map.set(cellKey(c.row, c.col), el);
+  }
+  return map;
+}
+
+export const elementAt = (n: Network, cell: Cell): LdElement | undefined => occupancy(n).get(cellKey(cell.row, cell.col));
+
+function grow(n: Network, elements: readonly LdElement[], vlinks: readonly VLink[]): Network {
+  let rows = n.rows;
+  let cols = n.cols;
+  for (const el of elements) {
+    const s = elementSize(el);
+    rows = Math.max(rows, el.row + s.rows);
+    cols = Math.max(cols, el.col + s.cols);
+  }
+  for (const v of vlinks) {
+    rows = Math.max(rows, v.row + 2);
+    cols = Math.max(cols, v.boundary);
+  }
+  return { ...n, elements, vlinks, rows, cols };
+}
+
+/** Cells an element would cover at (row, col). */
+function cellsAt(t: ElementTemplate, row: number, col: number): Cell[] {
+  return elementCells(placed(t, '' as ElementId, row, col));
+}
+
+/**
+ * Places an element at `cell` when every cell it covers is free or a horizontal link (the links
+ * go). Returns undefined when another element is in the way (the caller inserts in series).
+ */
+export function placeElement(n: Network, cell: Cell, t: ElementTemplate, id: ElementId): Network | undefined {
+  if (cell.row < 0 || cell.col < 0) return undefined;
+  const occ = occupancy(n);
+  const replaced = new Set<ElementId>();
+  for (const c of cellsAt(t, cell.row, cell.col)) {
+    const el = occ.get(cellKey(c.row, c.col));
+    if (!el) continue;
+    if (el.kind !== 'link') return undefined;
+    replaced.add(el.id);
+  }
+  const kept = n.elements.filter((e) => !replaced.has(e.id));
+  return grow(n, [...kept, placed(t, id, cell.row, cell.col)], n.vlinks);
+}
+
+/** Does element `el` connect to the point on row `row` at its left (side 'in') or right ('out') edge? */
+function pinOnRow(el: LdElement, row: number, side: 'in' | 'out'): boolean {
+  if (el.kind !== 'box') return el.row === row;
+  const layout = boxLayout(el);
+  if (!layout) return el.row === row;
+  const pins = side === 'in' ? layout.inputs : layout.outputs;
+  return pins.some((p) => el.row + p.rowOffset === row);
+}
+
+/** Insert in series at `cell` (see the file comment). Undefined when a box straddling the insertion column is in the way. */
+export function insertInSeries(n: Network, cell: Cell, t: ElementTemplate, id: ElementId): Network | undefined {
+  const occupant = elementAt(n, cell);
+  if (!occupant || occupant.kind === 'link') {
+    const direct = placeElement(n, cell, t, id);
+    if (direct) return direct;
+  }
+  const { rows: h, cols: w } = templateSize(t);
+  const c = occupant && occupant.kind !== 'link' ? occupant.col : cell.col;
+  const row = cell.row;
+  const lastRow = Math.max(n.rows, row + h);
+  const bridgeRows: number[] = [];
+  for (let r = 0; r < lastRow; r++) {
+    if (r >= row && r < row + h) continue;
+    const endsHere =
+      c === 0 ||
+      n.elements.some((e) => e.col + elementSize(e).cols === c && pinOnRow(e, r, 'out')) ||
+      n.vlinks.some((v) => v.boundary === c && (v.row === r || v.row + 1 === r));
+    const startsHere = n.elements.some((e) => e.col === c && pinOnRow(e, r, 'in'));
+    if (endsHere && startsHere) bridgeRows.push(r);
+  }
+  const shifted = n.elements.map((e) => (e.col >= c ? { ...e, col: e.col + w } : e));
+  const vlinks = n.vlinks.map((v) => (v.boundary > c ? { ...v, boundary: v.boundary + w } : v));
+  const after: Network = { ...n, elements: shifted, vlinks, cols: n.cols + w };
+  const occ = occupancy(after);
+  if (cellsAt(t, row, c).some((x) => occ.has(cellKey(x.row, x.col)))) return undefined;
+  const bridges: LdElement[] = [];
+  for (const r of bridgeRows) {
+    for (let k = 0; k < w; k++) bridges.push({ kind: 'link', id: newBridgeId(id, r, k), row: r, col: c + k });
+  }
+  const result = grow(after, [...shifted, placed(t, id, row, c), ...bridges], vlinks);
+  return { ...result, cols: Math.max(n.cols, usedCols(result)) };
+}
+
+const newBridgeId = (base: ElementId, row: number, k: number) => `${base}_b${row}_${k}` as ElementId;
+
+function usedCols(n: Network): number {
+  let cols = 0;
+  for (const e of n.elements) cols = Math.max(cols, e.col + elementSize(e).cols);
+  for (const v of n.vlinks) cols = Math.max(cols, v.boundary);
+  return cols;
+}
+
+/** Bounding box of some elements: rows top..bottom (inclusive), boundaries left..right. */
+export function boundsOf(elements: readonly LdElement[]): { top: number; bottom: number; left: number; right: number } | undefined {
+  if (elements.length === 0) return undefined;
+  let top = Infinity;
+  let bottom = -Infinity;
+  let left = Infinity;
+  let right = -Infinity;
+  for (const e of elements) {
+    const s = elementSize(e);
+    top = Math.min(top, e.row);
+    bottom = Math.max(bottom, e.row + s.rows - 1);
+    left = Math.min(left, e.col);
+    right = Math.max(right, e.col + s.cols);
+  }
+  return { top, bottom, left, right };
+}
+
+/**
+ * Wraps the selected elements in a parallel branch: a new row is inserted below them (rows
+ * below move down; vertical links crossing into them are extended through the new row), holding
+ * horizontal links from the selection's left edge to its right edge, joined by vertical links at
+ * both ends (none at a power rail, which already joins every row).
+ */
+export function wrapInParallelBranch(n: Network, ids: readonly ElementId[], newId: () => ElementId): Network | undefined {
+  const set = new Set(ids);
+  const sel = n.elements.filter((e) => set.has(e.id));
+  const b = boundsOf(sel);
+  if (!b) return undefined;
+  let newRow = b.bottom + 1;
+  // Never split a box that spans the row boundary.
+  while (n.elements.some((e) => e.row < newRow && e.row + elementSize(e).rows > newRow)) newRow++;
+  const elements: LdElement[] = n.elements.map((e) => (e.row >= newRow ? { ...e, row: e.row + 1 } : e));
+  const vlinks: VLink[] = [];
+  for (const v of n.vlinks) {
+    if (v.row >= newRow) vlinks.push({ ...v, row: v.row + 1 });
+    else {
+      vlinks.push(v);
+      if (v.row === newRow - 1) vlinks.push({ row: newRow, boundary: v.boundary });
+    }
+  }
+  for (let col = b.left; col < b.right; col++) elements.push({ kind: 'link', id: newId(), row: newRow, col });
+  const cols = Math.max(n.cols, b.right);
+  for (const boundary of [b.left, b.right]) {
+    if (boundary === 0 || boundary === cols) continue;
+    for (let r = b.top; r < newRow; r++) {
+      if (!vlinks.some((v) => v.row === r && v.boundary === boundary)) vlinks.push({ row: r, boundary });
+    }
+  }
+  return grow({ ...n, rows: n.rows + 1, cols }, elements, vlinks);
+}
+
+/** Moves elements by whole cells; horizontal links in the way go. Undefined if off-grid or blocked. */
+export function moveElements(n: Network, ids: readonly ElementId[], dRow: number, dCol: number): Network | undefined {
+  const set = new Set(ids);
+  if (dRow === 0 && dCol === 0) return n;
+  const moved = n.elements.filter((e) => set.has(e.id)).map((e) => ({ ...e, row: e.row + dRow, col: e.col + dCol }));
+  if (moved.length === 0 || moved.some((e) => e.row < 0 || e.col < 0)) return undefined;
+  const occ = occupancy(n, set);
+  const replaced = new Set<ElementId>();
+  for (const el of moved) {
+    for (const c of elementCells(el)) {
+      const other = occ.get(cellKey(c.row, c.col));
+      if (!other) continue;
+      if (other.kind !== 'link') return undefined;
+      replaced.add(other.id);
+    }
+  }
+  const byId = new Map(moved.map((e) => [e.id, e]));
+  const elements = n.elements.filter((e) => !replaced.has(e.id)).map((e) => byId.get(e.id) ?? e);
+  return grow(n, elements, n.vlinks);
+}
+
+export function deleteElements(n: Network, ids: readonly ElementId[]): Network {
+  const set = new Set(ids);
+  return { ...n, elements: n.elements.filter((e) => !set.has(e.id)) };
+}
+
+export function addVLink(n: Network, v: VLink): Network {
+  if (v.row < 0 || v.boundary < 0 || n.vlinks.some((w) => w.row === v.row && w.boundary === v.boundary)) return n;
+  return grow(n, n.elements, [...n.vlinks, v]);
+}
+
+export function removeVLink(n: Network, v: VLink): Network {
+  return { ...n, vlinks: n.vlinks.filter((w) => w.row !== v.row || w.boundary !== v.boundary) };
+}
+
+/** A copied piece of a network: positions relative to the copied area's top-left cell. */
+export interface ClipContent {
+  readonly elements: readonly LdElement[];
+  readonly vlinks: readonly VLink[];
+}
+
+/** The selected elements and the vertical links inside their area, moved to (0, 0). */
+export function copyElements(n: Network, ids: readonly ElementId[]): ClipContent | undefined {
+  const set = new Set(ids);
+  const sel = n.elements.filter((e) => set.has(e.id));
+  const b = boundsOf(sel);
+  if (!b) return undefined;
+  return {
+    elements: sel.map((e) => ({ ...e, row: e.row - b.top, col: e.col - b.left })),
+    vlinks: n.vlinks
+      .filter((v) => v.row >= b.top && v.row < b.bottom && v.boundary >= b.left && v.boundary <= b.right)
+      .map((v) => ({ row: v.row - b.top, boundary: v.boundary - b.left })),
+  };
+}
+
+/**
+ * Pastes at `at` (new ids); horizontal links under the pasted cells go. When another element is
+ * in the way, the paste goes below everything in the network instead, at the same column.
+ * Returns the network and the pasted elements' ids.
+ */
+export function pasteElements(n: Network, clip: ClipContent, at: Cell, newId: () => ElementId): { network: Network; ids: ElementId[] } {
+  const fits = (row: number) => {
+    const occ = occupancy(n);
+    return clip.elements.every((e) =>
+      elementCells({ ...e, row: e.row + row, col: e.col + at.col }).every((c) => {
+        const o = occ.get(cellKey(c.row, c.col));
+        return !o || o.kind === 'link';
+      }),
+    );
+  };
+  const below = Math.max(0, ...n.elements.map((e) => e.row + elementSize(e).rows), ...n.vlinks.map((v) => v.row + 2));
+  const row = fits(at.row) ? at.row : below;
+  const pasted = clip.elements.map((e) => ({ ...e, id: newId(), row: e.row + row, col: e.col + at.col }));
+  const occ = occupancy(n);
+  const replaced = new Set<ElementId>();
+  for (const el of pasted) for (const c of elementCells(el)) {
+    const o = occ.get(cellKey(c.row, c.col));
+    if (o) replaced.add(o.id);
+  }
+  const vlinks = [...n.vlinks];
+  for (const v of clip.vlinks) {
+    const moved = { row: v.row + row, boundary: v.boundary + at.col };
+    if (!vlinks.some((w) => w.row === moved.row && w.boundary === moved.boundary)) vlinks.push(moved);
+  }
+  const network = grow(n, [...n.elements.filter((e) => !replaced.has(e.id)), ...pasted], vlinks);
+  return { network, ids: pasted.map((e) => e.id) };
+}

@@ -1,0 +1,305 @@
+// Simulation state for the UI: mirrors the worker's frames and sends its commands.
+// Nothing here enters the document or its undo history (STYLE.md: simulation values and forced
+// I/O never enter the history).
+//
+// One store per editor, `createSimStore(transport)`; components read it with `useSim(selector)`
+// (src/editor/sim/simContext.ts) through narrow selectors. Commands that run the program take the
+// current document, which is compiled first when it changed since the last command.
+import { createStore, type StoreApi } from 'zustand';
+import type { Diagnostic, Fault } from '../engine/api';
+import type { Value } from '../model/iecTypes';
+import type { Project } from '../model/project';
+import type { SimTransport } from '../sim/host';
+import type { ExecStats, HostMessage, SimFrame, SimLayout, SimMode, SimValueInput, TrendSamples, WorkerMessage } from '../sim/protocol';
+import { appendTrend, emptyTrend, type TrendBuffer } from '../sim/trendBuffer';
+
+export const DEFAULT_CYCLE_MS = 10;
+export const DEFAULT_TREND_SCANS = 500;
+
+export interface CompileRefusal {
+  readonly diagnostics: readonly Diagnostic[];
+  /** True when an edit made while running did not compile (the last good program keeps running). */
+  readonly online: boolean;
+}
+
+export interface SimContextMenu {
+  readonly x: number;
+  readonly y: number;
+  readonly variable: string;
+}
+
+export interface SimState {
+  readonly mode: SimMode;
+  readonly scan: number;
+  readonly timeMs: number;
+  readonly cycleMs: number;
+  readonly exec: ExecStats;
+  readonly fault: Fault | undefined;
+  readonly nextNetwork: number;
+  readonly breakpointHit: number | undefined;
+  readonly overruns: number;
+  readonly layout: SimLayout | undefined;
+  /** True when power flow and live values should be drawn (a program is loaded and has run). */
+  readonly live: boolean;
+  readonly elementIndex: ReadonlyMap<string, number>;
+  readonly vlinkIndex: ReadonlyMap<string, number>;
+  readonly variableIndex: ReadonlyMap<string, number>;
+  readonly elements: Uint8Array;
+  readonly vlinks: Uint8Array;
+  readonly executed: Uint8Array;
+  readonly values: readonly Value[];
+  /** Forced values by upper-case name. */
+  readonly forced: ReadonlyMap<string, Value>;
+  readonly breakpoints: readonly string[];
+  readonly watch: readonly string[];
+  readonly trendNames: readonly string[];
+  readonly trendCapacity: number;
+  readonly trend: TrendBuffer;
+  readonly refusal: CompileRefusal | undefined;
+  readonly notice: string | undefined;
+  readonly contextMenu: SimContextMenu | undefined;
+
+  run(project: Project): void;
+  pause(): void;
+  step(project: Project, scans: number): void;
+  stepNetwork(project: Project): void;
+  reset(): void;
+  warmRestart(): void;
+  setCycle(cycleMs: number): void;
+  /** The document changed: compiled and applied as an online change when a program is loaded. */
+  documentChanged(project: Project): void;
+  toggleBreakpoint(networkId: string): void;
+  clearBreakpoints(): void;
+  write(name: string, input: SimValueInput): void;
+  force(name: string, input: SimValueInput): void;
+  unforce(name: string): void;
+  unforceAll(): void;
+  /** Flips a BOOL input (a switch). */
+  toggleInput(name: string): void;
+  /** Push-button: TRUE while held. */
+  pressInput(name: string): void;
+  releaseInput(name: string): void;
+  addWatch(name: string): void;
+  removeWatch(name: string): void;
+  toggleTrend(name: string): void;
+  setTrendCapacity(scans: number): void;
+  openContextMenu(menu: SimContextMenu): void;
+  closeContextMenu(): void;
+  dismissNotice(): void;
+  /** Gateway seam (issue 6): input image by IEC location, applied at the next input read. */
+  setInputs(values: Readonly<Record<string, Value>>): void;
+  /** Gateway seam: output image after every scan that changed it. Returns an unsubscribe function. */
+  onOutputs(listener: (outputs: Readonly<Record<string, Value>>, scan: number) => void): () => void;
+}
+
+export type SimStore = StoreApi<SimState>;
+
+const sameName = (a: string, b: string) => a.toUpperCase() === b.toUpperCase();
+
+export function createSimStore(transport: SimTransport): SimStore {
+  let sentProject: Project | undefined;
+  const outputListeners = new Set<(outputs: Readonly<Record<string, Value>>, scan: number) => void>();
+  const send = (message: HostMessage) => transport.send(message);
+
+  /** The document, when it changed since it was last sent. */
+  const fresh = (project: Project): Project | undefined => {
+    if (project === sentProject) return undefined;
+    sentProject = project;
+    return project;
+  };
+  const sendBreakpoints = () => {
+    const { layout, breakpoints } = store.getState();
+    if (!layout) return;
+    const networks = breakpoints.map((id) => layout.networkIds.indexOf(id)).filter((i) => i >= 0);
+    send({ type: 'setBreakpoints', networks });
+  };
+  const sendTrend = () => {
+    const { layout, trendNames, trendCapacity } = store.getState();
+    if (!layout) return;
+    const known = trendNames.filter((n) => layout.variables.some((v) => sameName(v.name, n)));
+    send({ type: 'setTrend', names: known, capacity: trendCapacity });
+  };
+
+  const store: SimStore = createStore<SimState>()((set, get) => {
+    const currentValue = (name: string): Value | undefined => {
+      const i = get().variableIndex.get(name.toUpperCase());
+      return i === undefined ? undefined : get().values[i];
+    };
+
+    return {
+      mode: 'stopped',
+      scan: 0,
+      timeMs: 0,
+      cycleMs: DEFAULT_CYCLE_MS,
+      exec: { lastMs: 0, avgMs: 0, maxMs: 0 },
+      fault: undefined,
+      nextNetwork: -1,
+      breakpointHit: undefined,
+      overruns: 0,
+      layout: undefined,
+      live: false,
+      elementIndex: new Map(),
+      vlinkIndex: new Map(),
+      variableIndex: new Map(),
+      elements: new Uint8Array(0),
+      vlinks: new Uint8Array(0),
+      executed: new Uint8Array(0),
+      values: [],
+      forced: new Map(),
+      breakpoints: [],
+      watch: [],
+      trendNames: [],
+      trendCapacity: DEFAULT_TREND_SCANS,
+      trend: emptyTrend([]),
+      refusal: undefined,
+      notice: undefined,
+      contextMenu: undefined,
+
+      run: (project) => {
+        set({ refusal: undefined, notice: undefined });
+        send({ type: 'run', ...withProject(fresh(project)) });
+      },
+      pause: () => send({ type: 'pause' }),
+      step: (project, scans) => {
+        set({ refusal: undefined, notice: undefined });
+        send({ type: 'step', scans, ...withProject(fresh(project)) });
+      },
+      stepNetwork: (project) => {
+        set({ refusal: undefined, notice: undefined });
+        send({ type: 'stepNetwork', ...withProject(fresh(project)) });
+      },
+      reset: () => {
+        set({ notice: undefined, trend: emptyTrend(get().trendNames) });
+        send({ type: 'reset' });
+      },
+      warmRestart: () => {
+        set({ notice: undefined });
+        send({ type: 'warmRestart' });
+      },
+      setCycle: (cycleMs) => {
+        set({ cycleMs });
+        send({ type: 'setCycle', cycleMs });
+      },
+      documentChanged: (project) => {
+        if (!get().layout || project === sentProject) return;
+        sentProject = project;
+        send({ type: 'load', project });
+      },
+      toggleBreakpoint: (networkId) => {
+        const { breakpoints } = get();
+        set({ breakpoints: breakpoints.includes(networkId) ? breakpoints.filter((b) => b !== networkId) : [...breakpoints, networkId] });
+        sendBreakpoints();
+      },
+      clearBreakpoints: () => {
+        set({ breakpoints: [] });
+        sendBreakpoints();
+      },
+      write: (name, input) => send({ type: 'write', name, input }),
+      force: (name, input) => send({ type: 'force', name, input }),
+      unforce: (name) => send({ type: 'unforce', name }),
+      unforceAll: () => send({ type: 'unforceAll' }),
+      toggleInput: (name) => send({ type: 'write', name, input: { value: currentValue(name) !== true } }),
+      pressInput: (name) => send({ type: 'write', name, input: { value: true } }),
+      releaseInput: (name) => send({ type: 'write', name, input: { value: false } }),
+      addWatch: (name) => {
+        if (get().watch.some((w) => sameName(w, name))) return;
+        set({ watch: [...get().watch, name] });
+      },
+      removeWatch: (name) => set({ watch: get().watch.filter((w) => !sameName(w, name)) }),
+      toggleTrend: (name) => {
+        const { trendNames } = get();
+        const next = trendNames.some((n) => sameName(n, name)) ? trendNames.filter((n) => !sameName(n, name)) : [...trendNames, name];
+        set({ trendNames: next, trend: emptyTrend(next) });
+        sendTrend();
+      },
+      setTrendCapacity: (scans) => {
+        const capacity = Math.max(10, Math.min(100_000, Math.floor(scans)));
+        set({ trendCapacity: capacity, trend: emptyTrend(get().trendNames) });
+        sendTrend();
+      },
+      openContextMenu: (menu) => set({ contextMenu: menu }),
+      closeContextMenu: () => set({ contextMenu: undefined }),
+      dismissNotice: () => set({ notice: undefined, refusal: undefined }),
+      setInputs: (values) => send({ type: 'setInputs', values }),
+      onOutputs: (listener) => {
+        outputListeners.add(listener);
+        if (outputListeners.size === 1) send({ type: 'subscribeOutputs', enabled: true });
+        return () => {
+          outputListeners.delete(listener);
+          if (outputListeners.size === 0) send({ type: 'subscribeOutputs', enabled: false });
+        };
+      },
+    };
+
+    function withProject(project: Project | undefined): { project?: Project } {
+      return project ? { project } : {};
+    }
+  });
+
+  transport.listen((message: WorkerMessage) => {
+    switch (message.type) {
+      case 'compiled':
+        if (!message.ok) {
+          // The worker keeps the previous program; compile this document again next time.
+          sentProject = undefined;
+          store.setState({ refusal: { diagnostics: message.diagnostics, online: message.online } });
+          return;
+        }
+        if (message.layout) {
+          store.setState({ refusal: undefined, ...indexLayout(message.layout) });
+          // Breakpoints and trend signals are kept by network id / name; send them for the new program.
+          sendBreakpoints();
+          sendTrend();
+        }
+        return;
+      case 'frame':
+        store.setState(applyFrame(store.getState(), message.frame));
+        return;
+      case 'error':
+        store.setState({ notice: message.message });
+        return;
+      case 'outputs':
+        for (const listener of outputListeners) listener(message.outputs, message.scan);
+        return;
+      case 'ready':
+        return;
+    }
+  });
+  return store;
+}
+
+function indexLayout(layout: SimLayout): Pick<SimState, 'layout' | 'elementIndex' | 'vlinkIndex' | 'variableIndex'> {
+  const elementIndex = new Map<string, number>();
+  layout.elementIds.forEach((id, i) => elementIndex.set(id, i));
+  const vlinkIndex = new Map<string, number>();
+  layout.networkIds.forEach((networkId, n) => {
+    for (let i = layout.vlinkOffsets[n]!; i < layout.vlinkOffsets[n + 1]!; i++) vlinkIndex.set(`${networkId}/${layout.vlinkKeys[i]}`, i);
+  });
+  const variableIndex = new Map<string, number>();
+  layout.variables.forEach((v, i) => variableIndex.set(v.name.toUpperCase(), i));
+  return { layout, elementIndex, vlinkIndex, variableIndex };
+}
+
+function applyFrame(state: SimState, frame: SimFrame): Partial<SimState> {
+  const forced = new Map<string, Value>();
+  for (const [name, value] of frame.forced) forced.set(name.toUpperCase(), value);
+  return {
+    mode: frame.mode,
+    scan: frame.scan,
+    timeMs: frame.timeMs,
+    cycleMs: frame.cycleMs,
+    exec: frame.exec,
+    fault: frame.fault,
+    nextNetwork: frame.nextNetwork,
+    breakpointHit: frame.breakpointHit,
+    overruns: frame.overruns,
+    live: state.layout !== undefined && (frame.mode !== 'stopped' || frame.scan > 0 || frame.nextNetwork !== -1),
+    elements: frame.elements,
+    vlinks: frame.vlinks,
+    executed: frame.executed,
+    values: frame.values,
+    forced,
+    ...(frame.trend ? { trend: appendTrend(state.trend, frame.trend as TrendSamples, state.trendCapacity) } : {}),
+    ...(frame.mode === 'stopped' && frame.scan === 0 ? { trend: emptyTrend(state.trendNames) } : {}),
+  };
+}

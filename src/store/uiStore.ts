@@ -1,0 +1,134 @@
+// UI state of one editor: selection, tool, cursor cell, viewport, theme, inline editing.
+// None of it enters the undo history; changing it never clears the redo stack.
+//
+// State
+//   selection    { network, elements: ElementId[] } — the selected elements (one network at a time)
+//   cursor       { network, row, col } | undefined — the keyboard cursor cell (drawn on the canvas)
+//   tool         'select' | 'vlink' | { place: template } (see src/editor/palette/tools.ts)
+//   viewport     { zoom, scrollLeft, scrollTop, width, height } in CSS pixels of the canvas scroll area
+//   theme        'light' | 'dark'
+//   focusRequest { network, cell, seq } — set by focusCell(); the canvas scrolls there and moves the cursor
+//   editing      { element } | undefined — the element whose variable is being typed inline
+//   blockPicker  { network, cell } | undefined — the searchable block picker is open for that cell
+import { createElement, createContext, useContext, type ReactNode } from 'react';
+import { createStore, useStore, type StoreApi } from 'zustand';
+import type { Cell } from '../model/grid';
+import type { ElementId, NetworkId } from '../model/ids';
+import type { ElementTemplate } from './networkEdits';
+
+export type Tool = { readonly kind: 'select' } | { readonly kind: 'vlink' } | { readonly kind: 'place'; readonly template: ElementTemplate; readonly name: string };
+export type Theme = 'light' | 'dark';
+
+export interface Selection {
+  readonly network: NetworkId | undefined;
+  readonly elements: readonly ElementId[];
+}
+
+export interface CursorCell extends Cell {
+  readonly network: NetworkId;
+}
+
+export interface Viewport {
+  readonly zoom: number;
+  readonly scrollLeft: number;
+  readonly scrollTop: number;
+  /** Size of the visible canvas area in CSS pixels (written by the canvas). */
+  readonly width: number;
+  readonly height: number;
+}
+
+export const MIN_ZOOM = 0.25;
+export const MAX_ZOOM = 3;
+
+export interface UiState {
+  readonly selection: Selection;
+  readonly cursor: CursorCell | undefined;
+  readonly tool: Tool;
+  readonly viewport: Viewport;
+  readonly theme: Theme;
+  readonly focusRequest: { readonly network: NetworkId; readonly cell: Cell; readonly seq: number } | undefined;
+  readonly editing: { readonly element: ElementId } | undefined;
+  readonly blockPicker: { readonly network: NetworkId; readonly cell: Cell } | undefined;
+  /** A short message for the status bar ("Nothing to paste"), cleared by the next action. */
+  readonly status: string;
+
+  select(network: NetworkId | undefined, elements: readonly ElementId[]): void;
+  toggleSelected(network: NetworkId, element: ElementId): void;
+  clearSelection(): void;
+  setCursor(cursor: CursorCell | undefined): void;
+  setTool(tool: Tool): void;
+  setViewport(patch: Partial<Viewport>): void;
+  setZoom(zoom: number): void;
+  setTheme(theme: Theme): void;
+  focusCell(network: NetworkId, cell: Cell): void;
+  startEditing(element: ElementId): void;
+  stopEditing(): void;
+  openBlockPicker(network: NetworkId, cell: Cell): void;
+  closeBlockPicker(): void;
+  setStatus(text: string): void;
+}
+
+export type UiStore = StoreApi<UiState>;
+
+export const clampZoom = (z: number) => Math.min(MAX_ZOOM, Math.max(MIN_ZOOM, Math.round(z * 100) / 100));
+
+export function createUiStore(initial: Partial<Pick<UiState, 'theme'>> = {}): UiStore {
+  let seq = 0;
+  return createStore<UiState>()((set, get) => ({
+    selection: { network: undefined, elements: [] },
+    cursor: undefined,
+    tool: { kind: 'select' },
+    viewport: { zoom: 1, scrollLeft: 0, scrollTop: 0, width: 800, height: 600 },
+    theme: initial.theme ?? 'light',
+    focusRequest: undefined,
+    editing: undefined,
+    blockPicker: undefined,
+    status: '',
+
+    select: (network, elements) => set({ selection: { network, elements: [...elements] } }),
+    toggleSelected: (network, element) => {
+      const sel = get().selection;
+      if (sel.network !== network) return set({ selection: { network, elements: [element] } });
+      const has = sel.elements.includes(element);
+      set({ selection: { network, elements: has ? sel.elements.filter((e) => e !== element) : [...sel.elements, element] } });
+    },
+    clearSelection: () => set({ selection: { network: undefined, elements: [] } }),
+    setCursor: (cursor) => set({ cursor }),
+    setTool: (tool) => set({ tool }),
+    setViewport: (patch) => set({ viewport: { ...get().viewport, ...patch } }),
+    setZoom: (zoom) => set({ viewport: { ...get().viewport, zoom: clampZoom(zoom) } }),
+    setTheme: (theme) => set({ theme }),
+    focusCell: (network, cell) => {
+      seq += 1;
+      set({ focusRequest: { network, cell, seq }, cursor: { network, ...cell } });
+    },
+    startEditing: (element) => set({ editing: { element } }),
+    stopEditing: () => set({ editing: undefined }),
+    openBlockPicker: (network, cell) => set({ blockPicker: { network, cell } }),
+    closeBlockPicker: () => set({ blockPicker: undefined }),
+    setStatus: (status) => set({ status }),
+  }));
+}
+
+export const selectSelection = (s: UiState) => s.selection;
+export const selectCursor = (s: UiState) => s.cursor;
+export const selectTool = (s: UiState) => s.tool;
+export const selectZoom = (s: UiState) => s.viewport.zoom;
+export const selectTheme = (s: UiState) => s.theme;
+
+const UiStoreContext = createContext<UiStore | null>(null);
+
+export function UiStoreProvider({ store, children }: { store: UiStore; children?: ReactNode }) {
+  return createElement(UiStoreContext.Provider, { value: store }, children);
+}
+
+export function useUiStore(): UiStore {
+  const store = useContext(UiStoreContext);
+  if (!store) throw new Error('useUiStore needs a <UiStoreProvider> above it');
+  return store;
+}
+
+/** Subscribes to one slice of the UI state: `useUi(selectSelection)`. */
+export function useUi<T>(selector: (s: UiState) => T): T {
+  return useStore(useUiStore(), selector);
+}

@@ -1,0 +1,209 @@
+// Real peers for gateway tests: Debian's pymodbus server, mbpoll, and a ws client speaking protocol v1.
+import { execFile, spawn, type ChildProcessWithoutNullStreams } from 'node:child_process';
+import { createServer, type AddressInfo } from 'node:net';
+import { createInterface } from 'node:readline';
+import { fileURLToPath } from 'node:url';
+import WebSocket from 'ws';
+import { gatewayMessageSchema, type GatewayMessage } from '../../src/protocol/messages';
+
+const SERVER_SCRIPT = fileURLToPath(new URL('./fixtures/modbus_server.py', import.meta.url));
+
+export function freePort(): Promise<number> {
+  return new Promise((resolve, reject) => {
+    const srv = createServer();
+    srv.once('error', reject);
+    srv.listen(0, '127.0.0.1', () => {
+      const { port } = srv.address() as AddressInfo;
+      srv.close(() => resolve(port));
+    });
+  });
+}
+
+export type Table = 'di' | 'co' | 'ir' | 'hr';
+
+/** Debian's python3-pymodbus Modbus TCP server on a loopback port, driven over stdin. */
+export class PyModbusServer {
+  private readonly lines: string[] = [];
+  private waiters: ((line: string) => void)[] = [];
+  private constructor(
+    readonly port: number,
+    private readonly proc: ChildProcessWithoutNullStreams,
+  ) {
+    createInterface({ input: proc.stdout }).on('line', (line) => {
+      const w = this.waiters.shift();
+      if (w) w(line);
+      else this.lines.push(line);
+    });
+    proc.stderr.resume();
+  }
+
+  static async start(port: number): Promise<PyModbusServer> {
+    const proc = spawn('/usr/bin/python3', [SERVER_SCRIPT, String(port)], { stdio: ['pipe', 'pipe', 'pipe'] });
+    const server = new PyModbusServer(port, proc);
+    const first = await server.nextLine(10_000);
+    if (first !== 'READY') throw new Error(`pymodbus server did not start: ${first}`);
+    return server;
+  }
+
+  private nextLine(timeoutMs = 5000): Promise<string> {
+    const queued = this.lines.shift();
+    if (queued !== undefined) return Promise.resolve(queued);
+    return new Promise((resolve, reject) => {
+      const timer = setTimeout(() => reject(new Error('pymodbus server did not answer')), timeoutMs);
+      this.waiters.push((line) => {
+        clearTimeout(timer);
+        resolve(line);
+      });
+    });
+  }
+
+  async set(table: Table, address: number, values: readonly number[]): Promise<void> {
+    this.proc.stdin.write(`set ${table} ${address} ${values.join(' ')}\n`);
+    const r = await this.nextLine();
+    if (r !== 'OK') throw new Error(r);
+  }
+
+  async get(table: Table, address: number, count: number): Promise<number[]> {
+    this.proc.stdin.write(`get ${table} ${address} ${count}\n`);
+    const r = await this.nextLine();
+    const m = /^\w+ \d+ ([\d,-]+)$/.exec(r);
+    if (!m?.[1]) throw new Error(r);
+    return m[1].split(',').map(Number);
+  }
+
+  kill(): Promise<void> {
+    if (this.proc.exitCode !== null || this.proc.signalCode !== null) return Promise.resolve();
+    return new Promise((resolve) => {
+      this.proc.once('exit', () => resolve());
+      this.proc.kill('SIGKILL');
+    });
+  }
+}
+
+/** Runs Debian's mbpoll once (zero-based references) and returns its stdout. */
+export function mbpoll(port: number, args: readonly string[]): Promise<string> {
+  return new Promise((resolve, reject) => {
+    execFile('mbpoll', ['-m', 'tcp', '-a', '1', '-0', '-1', '-p', String(port), ...args], { timeout: 10_000 }, (err, stdout, stderr) => {
+      if (err) reject(new Error(`mbpoll failed: ${stderr || err.message}`));
+      else resolve(stdout);
+    });
+  });
+}
+
+/** Values printed by `mbpoll` for a read, as numbers in reference order. */
+export function mbpollValues(stdout: string): number[] {
+  return [...stdout.matchAll(/^\[\d+\]:\s+(-?\d+)/gm)].map((m) => Number(m[1]));
+}
+
+/** A protocol v1 client over a real WebSocket, recording every gateway message. */
+export class TestClient {
+  readonly messages: GatewayMessage[] = [];
+  readonly invalid: string[] = [];
+  closeCode: number | undefined;
+  private listeners: (() => void)[] = [];
+  private constructor(readonly ws: WebSocket) {
+    ws.on('message', (data) => {
+      const text = (data as Buffer).toString();
+      const parsed = gatewayMessageSchema.safeParse(JSON.parse(text));
+      if (parsed.success) this.messages.push(parsed.data);
+      else this.invalid.push(text);
+      this.listeners.forEach((l) => l());
+    });
+    ws.on('close', (code) => {
+      this.closeCode = code;
+      this.listeners.forEach((l) => l());
+    });
+    ws.on('error', () => undefined);
+  }
+
+  static connect(port: number, headers: Record<string, string> = {}): Promise<TestClient> {
+    return new Promise((resolve, reject) => {
+      const ws = new WebSocket(`ws://127.0.0.1:${port}/io`, { headers });
+      const client = new TestClient(ws);
+      ws.once('open', () => resolve(client));
+      ws.once('unexpected-response', (_req, res) => reject(new Error(`HTTP ${res.statusCode}`)));
+      ws.once('error', reject);
+    });
+  }
+
+  static async hello(port: number, token: string, role: 'controller' | 'observer'): Promise<TestClient> {
+    const c = await TestClient.connect(port);
+    c.send({ t: 'hello', token, role });
+    await c.waitFor((m) => m.t === 'status');
+    return c;
+  }
+
+  send(body: Record<string, unknown>): void {
+    this.ws.send(JSON.stringify({ v: 1, ...body }));
+  }
+
+  sendRaw(data: string | Buffer): void {
+    this.ws.send(data);
+  }
+
+  /** Resolves with the first message (from `from` on) matching `pred`. */
+  waitFor<T extends GatewayMessage>(pred: (m: GatewayMessage) => m is T, timeoutMs?: number, from?: number): Promise<T>;
+  waitFor(pred: (m: GatewayMessage) => boolean, timeoutMs?: number, from?: number): Promise<GatewayMessage>;
+  waitFor(pred: (m: GatewayMessage) => boolean, timeoutMs = 5000, from = 0): Promise<GatewayMessage> {
+    return new Promise((resolve, reject) => {
+      const check = () => {
+        const found = this.messages.slice(from).find(pred);
+        if (found) {
+          done();
+          resolve(found);
+        } else if (this.closeCode !== undefined) {
+          done();
+          reject(new Error(`connection closed (${this.closeCode}) before the expected message`));
+        }
+      };
+      const timer = setTimeout(() => {
+        done();
+        reject(new Error(`no matching message within ${timeoutMs} ms; last: ${JSON.stringify(this.messages.slice(-3))}`));
+      }, timeoutMs);
+      const done = () => {
+        clearTimeout(timer);
+        this.listeners = this.listeners.filter((l) => l !== check);
+      };
+      this.listeners.push(check);
+      check();
+    });
+  }
+
+  waitClosed(timeoutMs = 5000): Promise<number> {
+    return new Promise((resolve, reject) => {
+      if (this.closeCode !== undefined) return resolve(this.closeCode);
+      const timer = setTimeout(() => reject(new Error('connection still open')), timeoutMs);
+      this.ws.once('close', (code) => {
+        clearTimeout(timer);
+        resolve(code);
+      });
+    });
+  }
+
+  /** The current value of every point, folded from image, inputs and written messages. */
+  values(): Record<string, boolean | number> {
+    const out: Record<string, boolean | number> = {};
+    for (const m of this.messages) if (m.t === 'image' || m.t === 'inputs' || m.t === 'written') Object.assign(out, m.values);
+    return out;
+  }
+
+  quality(): Record<string, string> {
+    const out: Record<string, string> = {};
+    for (const m of this.messages) if (m.t === 'image' || m.t === 'inputs') Object.assign(out, m.quality);
+    return out;
+  }
+
+  close(): void {
+    this.ws.close();
+  }
+}
+
+/** Polls `check` until it returns true (a state to reach, not a timing assertion). */
+export async function eventually(check: () => boolean | Promise<boolean>, timeoutMs = 5000, what = 'condition'): Promise<void> {
+  const end = Date.now() + timeoutMs;
+  while (Date.now() < end) {
+    if (await check()) return;
+    await new Promise((r) => setTimeout(r, 20));
+  }
+  throw new Error(`${what} not reached within ${timeoutMs} ms`);
+}
