@@ -79,7 +79,7 @@ async function main(): Promise<void> {
   const log = (line: string) => process.stderr.write(`[gateway] ${line}\n`);
   const distDir = args.app ? join(ROOT, 'dist') : null;
 
-  let gw: RunningGateway | undefined;
+  const running: { gw?: RunningGateway } = {};
   let exiting = false;
   const shutdown = async (why: string, code: number) => {
     if (exiting) return;
@@ -87,7 +87,7 @@ async function main(): Promise<void> {
     log(`${why}: writing the safe state, then exiting`);
     const hardStop = setTimeout(() => process.exit(code || 1), 5000);
     try {
-      await gw?.close();
+      await running.gw?.close();
     } finally {
       clearTimeout(hardStop);
       process.exit(code);
@@ -104,7 +104,8 @@ async function main(): Promise<void> {
     void shutdown('unhandled rejection', 1);
   });
 
-  gw = await startGateway({ port, config, distDir, token, log });
+  const gw = await startGateway({ port, config, distDir, token, log });
+  running.gw = gw;
   const sim = gw.simulated?.modbusServerPort;
   log(gw.simulated ? `simulated I/O device (16 DI, 16 DO, 4 AI, 4 AO)${sim ? `, Modbus TCP on 127.0.0.1:${sim}` : ''}` : `${config.devices.length} Modbus TCP device(s)`);
   process.stdout.write(`Rungsmith gateway: open ${gw.url}\n`);

@@ -66,11 +66,11 @@ export function expandPoints(entries: readonly PointEntry[], where: string): Dev
       const address = nthAddress(first, k);
       const register = start + k;
       if (register > 65535) throw new ConfigError(at, `register ${register} of ${address} is beyond 65535`);
+      if (out.some((p) => p.address === address)) throw new ConfigError(at, `${address} is mapped twice`);
       const key = `${table}:${register}`;
       const clash = used.get(key);
       if (clash && dir === 'out') throw new ConfigError(at, `${address} and ${clash} both write ${table} ${register}`);
       used.set(key, address);
-      if (out.some((p) => p.address === address)) throw new ConfigError(at, `${address} is mapped twice`);
       out.push({ address, type, dir, hold: e.hold, table, register });
     }
   });

@@ -90,7 +90,7 @@ function trafficLight(): Project {
     network(title, `${lamp} lamp.`, [...contacts, ...line(0, contacts.length, COLS - 2), coil(0, lamp)], { rows: 1 });
   return program(
     'Traffic light',
-    'Three on-delay timers in a chain: red for 5 s, green for 4 s, yellow for 1 s, then red again.',
+    'Three on-delay timers in a chain: red for 5 s, green for 4 s, yellow for 1 s, then red again (the restart takes two scans: the end of yellow resets the chain in the next scan).',
     [
       v('Red', 'BOOL', 'Red lamp', '%QX0.0'),
       v('Yellow', 'BOOL', 'Yellow lamp', '%QX0.1'),
@@ -105,7 +105,7 @@ function trafficLight(): Project {
       timerNet('Yellow phase', 'Yellow starts when the green phase is over.', contact(0, 0, 'GreenTime.Q'), 'YellowTime', 'T#1s'),
       lampNet('Red lamp', 'Red', [contact(0, 0, 'RedTime.Q', 'NC')]),
       lampNet('Green lamp', 'Green', [contact(0, 0, 'RedTime.Q'), contact(0, 1, 'GreenTime.Q', 'NC')]),
-      lampNet('Yellow lamp', 'Yellow', [contact(0, 0, 'GreenTime.Q'), contact(0, 1, 'YellowTime.Q', 'NC')]),
+      lampNet('Yellow lamp', 'Yellow', [contact(0, 0, 'GreenTime.Q')]),
     ],
   );
 }

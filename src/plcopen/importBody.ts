@@ -6,6 +6,7 @@ import type { Network } from '../model/project';
 import { gridGraph, type Source } from './gridGraph';
 import { prepareLayout, type LaidOut } from './layout';
 import { buildLdGraph, type Finding, type GNode, type GSource } from './ldGraph';
+import { splitSharedSources } from './ldNormalize';
 import { readLdObjects, type RawObject } from './ldObjects';
 import { RS_NETWORK, type PreservedNetwork } from './types';
 import { child, childrenNamed, type XmlElement } from './xml/parse';
@@ -35,6 +36,7 @@ function compareKeys(a: readonly number[], b: readonly number[]): number {
 export function importLdBody(body: XmlElement, raw: (el: XmlElement) => string, warn: (f: Finding) => void): BodyResult {
   const objects = readLdObjects(body);
   const graph = buildLdGraph(objects, raw, warn);
+  splitSharedSources(graph.nodes, warn);
   const { nodes } = graph;
   const hasGeometry = objects.some((o) => o.pos.x !== 0 || o.pos.y !== 0);
 

@@ -157,9 +157,28 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
   for (const i of members) indeg.set(i, deps.get(i)!.size);
   const queue = members.filter((i) => indeg.get(i) === 0);
   const topo: number[] = [];
+  // A bar (or a direct join) right at the edge of a multi-row box would touch its other pins:
+  // such nets get their bar one boundary further right, with a link from the box.
+  const tall = (node: number) => shapes.get(node)!.h > 1;
+  const gap = new Map<Net, number>();
+  for (const net of nets.values()) {
+    const tallProducer = net.producers.some((p) => tall(p.node));
+    const tallConsumer = net.consumers.some((c) => tall(c.node));
+    const many = net.producers.length + (net.rail ? 1 : 0) > 1;
+    gap.set(net, (tallProducer && (net.consumers.length > 1 || many || tallConsumer)) || (tallConsumer && many) ? 1 : 0);
+  }
+  const barOf = (net: Net): number => {
+    let b = 0;
+    for (const p of net.producers) if (col.has(p.node)) b = Math.max(b, col.get(p.node)! + shapes.get(p.node)!.w);
+    return net.producers.length ? b + gap.get(net)! : 0;
+  };
   const settle = (i: number) => {
     let c = 0;
-    for (const d of deps.get(i)!) if (col.has(d)) c = Math.max(c, col.get(d)! + shapes.get(d)!.w);
+    for (const p of shapes.get(i)!.inputs) {
+      const net = inNet(i, p.pin);
+      // Boundary 0 is the left rail on every row: an input that is not wired stays off it.
+      c = Math.max(c, net ? barOf(net) : 1);
+    }
     col.set(i, c);
     topo.push(i);
   };
@@ -189,14 +208,11 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
   }
   let needCols = 1;
   for (const i of members) needCols = Math.max(needCols, col.get(i)! + shapes.get(i)!.w);
+  for (const net of nets.values()) if (net.consumers.length) needCols = Math.max(needCols, barOf(net) + 1);
 
   const run = (cols: number): LaidOut => {
     for (const [i, t] of tail) col.set(i, Math.max(col.get(i)!, cols - t));
-    for (const net of nets.values()) {
-      let b = 0;
-      for (const p of net.producers) b = Math.max(b, col.get(p.node)! + shapes.get(p.node)!.w);
-      net.b = b;
-    }
+    for (const net of nets.values()) net.b = barOf(net);
     return placeRows(all, members, shapes, col, nets, inNet, outNet, cols);
   };
   return { nodes: members, needCols, run };

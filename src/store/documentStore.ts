@@ -55,8 +55,9 @@ import * as edits from './networkEdits';
 import type { ClipContent, ElementTemplate } from './networkEdits';
 import { declaresLocally, renameInElement } from './variableEdits';
 
-type DistributivePartial<T> = T extends unknown ? Partial<T> : never;
-export type ElementPatch = DistributivePartial<Omit<LdElement, 'id' | 'kind'>>;
+type DistributivePatch<T> = T extends unknown ? Partial<Omit<T, 'id' | 'kind'>> : never;
+/** Fields of one element kind: `{ variable: 'Start' }`, `{ inputs: { PT: 'T#5s' } }`, `{ row: 2 }`. */
+export type ElementPatch = DistributivePatch<LdElement>;
 export type NetworkPatch = Partial<Pick<NetworkProps, 'label' | 'title' | 'comment' | 'collapsed' | 'rows' | 'cols'>>;
 
 export interface DocumentState {

@@ -54,8 +54,11 @@ describe('example projects', () => {
     expect(at(8900)).toBe('Green');
     expect(at(9000)).toBe('Yellow');
     expect(at(9900)).toBe('Yellow');
-    expect(at(10000)).toBe('Red');
-    expect(at(15100)).toBe('Green');
+    expect(at(10000)).toBe('Yellow'); // YellowTime.Q is ON; the chain resets in the next scan
+    expect(at(10100)).toBe('Red');
+    // The red timer restarts one scan later (its IN was OFF for one scan): 10200 + 5000.
+    expect(at(15100)).toBe('Red');
+    expect(at(15200)).toBe('Green');
     // Exactly one lamp at any time.
     expect(seen.every((s) => ['Red', 'Green', 'Yellow'].includes(s.split(':')[1]!))).toBe(true);
   });

@@ -156,6 +156,10 @@ export function LadderCanvas() {
         if (e.key === ' ') spaceHeld.current = false;
       }}
     >
+      <div
+        className="rs-canvas-content"
+        style={{ width: Math.max(size.width, layout.totalWidth * zoom), height: Math.max(size.height, layout.totalHeight * zoom) }}
+      >
       <div className="rs-canvas-sticky" style={{ width: size.width, height: size.height }} {...handlers}>
         {theme && (
           <Stage width={size.width} height={size.height} listening={false}>
@@ -213,7 +217,7 @@ export function LadderCanvas() {
         <BlockPicker onDone={refocus} />
         {networks.length === 0 && <CanvasEmpty />}
       </div>
-      <div style={{ width: layout.totalWidth * zoom, height: Math.max(0, layout.totalHeight * zoom - size.height) }} />
+      </div>
     </div>
   );
 }

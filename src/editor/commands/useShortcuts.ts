@@ -4,9 +4,19 @@ import { parseClip } from '../../store/clipboard';
 import { copyText, pasteInPage, pasteText } from './clipboardActions';
 import type { EditorContext } from './editorActions';
 import { matches, parseKeys } from './keys';
+import { FILE_MENU_COMMANDS } from '../files/FileMenu';
 import { COMMANDS } from './registry';
 
-const BINDINGS = COMMANDS.flatMap((command) => (command.keys ?? []).map((k) => ({ spec: parseKeys(k), command })));
+interface Bound {
+  readonly id: string;
+  readonly keys?: readonly string[];
+  run(ctx: EditorContext): void;
+  enabled?(ctx: EditorContext): boolean;
+}
+
+const BINDINGS = [...COMMANDS, ...(FILE_MENU_COMMANDS as readonly Bound[])].flatMap((command: Bound) =>
+  (command.keys ?? []).map((k) => ({ spec: parseKeys(k), command })),
+);
 
 export function isTypingTarget(target: EventTarget | null): boolean {
   if (!(target instanceof HTMLElement)) return false;

@@ -20,6 +20,7 @@ export class NetMap {
   readonly dataPending = new Set<number>();
   constructor(readonly g: NetworkGraph) {
     for (const node of g.nodes) {
+      if (node.el.kind !== 'box') continue;
       for (const t of node.outputs) if (node.layout?.outputs.find((p) => p.name === t.pin)?.type !== 'BOOL') this.dataPending.add(t.net);
     }
   }

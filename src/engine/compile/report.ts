@@ -22,19 +22,20 @@ const COIL_WORDS = {
 
 /** "the contact "Start"", "the TON block "T1"", "the line at R2C3". */
 export function describeElement(el: LdElement): string {
+  const at = cellName(el.row, el.col);
   switch (el.kind) {
     case 'contact':
-      return el.contact === 'NOT' ? `the inverting contact at ${cellName(el.row, el.col)}` : `the ${CONTACT_WORDS[el.contact]} "${el.variable}"`;
+      return el.contact === 'NOT' || el.variable.trim() === '' ? `the ${CONTACT_WORDS[el.contact]} at ${at}` : `the ${CONTACT_WORDS[el.contact]} "${el.variable}"`;
     case 'coil':
-      return `the ${COIL_WORDS[el.coil]} "${el.variable}"`;
+      return el.variable.trim() === '' ? `the ${COIL_WORDS[el.coil]} at ${at}` : `the ${COIL_WORDS[el.coil]} "${el.variable}"`;
     case 'jump':
-      return `the jump to "${el.target}"`;
+      return el.target.trim() === '' ? `the jump at ${at}` : `the jump to "${el.target}"`;
     case 'return':
-      return `the RETURN at ${cellName(el.row, el.col)}`;
+      return `the RETURN at ${at}`;
     case 'box':
-      return el.instance ? `the ${el.blockType} block "${el.instance}"` : `the ${el.blockType} block at ${cellName(el.row, el.col)}`;
+      return el.instance ? `the ${el.blockType} block "${el.instance}"` : `the ${el.blockType} block at ${at}`;
     case 'link':
-      return `the line at ${cellName(el.row, el.col)}`;
+      return `the line at ${at}`;
   }
 }
 

@@ -106,7 +106,8 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
     // LD-R02 short circuit; LD-R09 transition coils on the left rail.
     const coilSinks = net.sinks.filter((s) => isCoil(nodeOf(s.node).el));
     if (net.leftRail && net.rightRail) {
-      r.error('LD-R02', `short circuit: a bare line joins the left rail to the right rail at row ${Math.floor(net.points[0]! / width) + 1}; put a contact or coil on it`, at(net.points.find((p) => p % width === g.cols) ?? net.points[0]!));
+      const railPoint = net.points.find((p) => p % width === g.cols)!;
+      r.error('LD-R02', `short circuit: a bare line joins the left rail to the right rail at row ${Math.floor(railPoint / width) + 1}; put a contact or coil on it`, at(railPoint));
     }
     if (net.leftRail) {
       for (const s of coilSinks) {

@@ -36,8 +36,12 @@ export function complement(t: ElementaryType): FnImpl1 {
 export function shift(op: ShiftOp, t: ElementaryType): FnImpl2 {
   if (t === 'BOOL') {
     // A single bit: shifting by N >= 1 brings in a 0, rotating leaves it (as MATIEC's SHL__BOOL).
-    if (op === 'SHL' || op === 'SHR') return (ctx, a, n) => (num(n) < 0 ? ((ctx.error = true), a) : num(n) === 0 ? a : false);
-    return (ctx, a, n) => (num(n) < 0 ? ((ctx.error = true), a) : a);
+    const moves = op === 'SHL' || op === 'SHR';
+    return (ctx, a, nv) => {
+      const n = num(nv);
+      if (n < 0) ctx.error = true;
+      return moves && n > 0 ? false : a;
+    };
   }
   if (t === 'LWORD') {
     return (ctx, a, nv) => {

@@ -189,7 +189,8 @@ export function resolveFunction(
       return { ok: false, message: `${fname} cannot ${VERB[fname] ?? 'use'} ${what}` };
     }
   } else if (polyIndexes.length || out.poly) {
-    poly = outTypeHint && admits(generic, outTypeHint) ? outTypeHint : isElementaryType(generic) ? generic : LITERAL_DEFAULT[generic];
+    // The hint is the type of the variable OUT is written to: it only says something when OUT shares the poly type.
+    poly = out.poly && outTypeHint && admits(generic, outTypeHint) ? outTypeHint : isElementaryType(generic) ? generic : LITERAL_DEFAULT[generic];
   }
 
   const concrete: ElementaryType[] = [];

@@ -145,7 +145,7 @@ export function parseLiteral(text: string, expected?: ElementaryType): LiteralRe
     const typeName = typed[1]!.toUpperCase();
     if (!isElementaryType(typeName)) return { ok: false, message: `"${typed[1]}" in "${trimmed}" is not a known type` };
     const body = typed[2]!;
-    const raw = typeName === 'TIME' ? parseRaw(`T#${body}`) : parseRaw(body);
+    const raw = parseRaw(body);
     if (raw.kind === 'bool' && typeName !== 'BOOL') return { ok: false, message: `${trimmed}: TRUE/FALSE are BOOL values, not ${typeName}` };
     result = applyType(raw, typeName, trimmed);
   } else {
@@ -158,6 +158,16 @@ export function parseLiteral(text: string, expected?: ElementaryType): LiteralRe
   if (!result.ok || !expected || result.type === expected) return result;
   if (!canWiden(result.type, expected)) return { ok: false, message: `${trimmed} is ${article(result.type)} ${result.type}, but ${expected} is needed here` };
   return { ok: true, value: widen(result.type, expected, result.value), type: expected };
+}
+
+/**
+ * True for literals that take their type from where they are used: plain and based integers
+ * (42, 16#FF, 2#1010) and reals (1.5). Typed literals (INT#5, T#1s) and TRUE/FALSE carry their own type.
+ */
+export function isUntypedLiteral(text: string): boolean {
+  const t = text.trim();
+  const raw = parseRaw(t);
+  return (raw.kind === 'int' || raw.kind === 'real') && !/^[A-Za-z_]/.test(t);
 }
 
 /** Text for the user: TRUE/FALSE, decimal integers, REAL in the shortest form that reads back exactly (2.0, 0.1), T#1s500ms. */

@@ -28,6 +28,8 @@ describe('resolveFunction', () => {
     expect(resolved('ADD', [undefined, undefined]).outType).toBe('INT');
     expect(resolved('AND', [undefined, undefined]).outType).toBe('BOOL');
     expect(resolved('SHL', ['WORD', undefined]).argTypes).toEqual(['WORD', 'INT']);
+    // A comparison's BOOL output says nothing about the type of its inputs.
+    expect(resolved('GT', [undefined, undefined], 'iec', 'BOOL').argTypes).toEqual(['INT', 'INT']);
   });
 
   it('expands extensible inputs and names them', () => {

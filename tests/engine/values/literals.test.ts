@@ -1,7 +1,7 @@
 // IEC literals as typed beside a pin or in a variable's initial value, and the text forms of values.
 import { describe, expect, it } from 'vitest';
 import type { ElementaryType, Value } from '../../../src/model/iecTypes';
-import { csvValue, formatValue, parseLiteral, parseValueText } from '../../../src/engine/values/literals';
+import { csvValue, formatValue, isUntypedLiteral, parseLiteral, parseValueText } from '../../../src/engine/values/literals';
 
 const ok = (text: string, expected?: ElementaryType) => {
   const r = parseLiteral(text, expected);
@@ -193,5 +193,12 @@ describe('parseValueText reads stimulus and "write value" input', () => {
     expect(parseValueText('SINT', '200')).toEqual({ ok: false, message: '200 does not fit SINT (-128..127)' });
     expect(parseValueText('BOOL', 'maybe')).toMatchObject({ ok: false });
     expect(parseValueText('INT', '1.5')).toMatchObject({ ok: false, message: expect.stringMatching(/whole number/) });
+  });
+});
+
+describe('isUntypedLiteral', () => {
+  it('tells literals that adopt the type of their use (42, 16#FF, 1.5) from typed ones (INT#5, T#1s, TRUE)', () => {
+    for (const t of ['42', '-7', '16#FF', '2#1010', '8#17', '1.5', '1.0E3']) expect(isUntypedLiteral(t), t).toBe(true);
+    for (const t of ['INT#5', 'T#1s', 'TIME#2s', 'TRUE', 'REAL#1.5', 'Motor', '16#FG']) expect(isUntypedLiteral(t), t).toBe(false);
   });
 });

@@ -1,0 +1,127 @@
+// The top bar's menus, built from the command registry (and the File commands), with the
+// shortcut of each command shown beside it.
+import { useEffect, useRef, useState, type KeyboardEvent } from 'react';
+import type { EditorContext } from '../commands/editorActions';
+import { keyLabel } from '../commands/keys';
+import { COMMANDS, type CommandGroup } from '../commands/registry';
+import { FILE_MENU_COMMANDS } from '../files/FileMenu';
+
+interface MenuItem {
+  readonly id: string;
+  readonly label: string;
+  readonly shortcut?: string;
+  readonly title?: string;
+  readonly separatorBefore?: boolean;
+  enabled(): boolean;
+  run(): void;
+}
+
+interface Menu {
+  readonly name: string;
+  readonly items: readonly MenuItem[];
+}
+
+function buildMenus(ctx: EditorContext): Menu[] {
+  const fileItems: MenuItem[] = FILE_MENU_COMMANDS.map((c, i) => ({
+    id: c.id,
+    label: c.group === 'Examples' ? `Example: ${c.label}` : c.label,
+    ...(c.keys?.[0] ? { shortcut: keyLabel(c.keys[0]) } : {}),
+    title: c.description,
+    separatorBefore: i > 0 && c.group !== FILE_MENU_COMMANDS[i - 1]!.group,
+    enabled: () => true,
+    run: () => c.run(ctx),
+  }));
+  const group = (g: CommandGroup): MenuItem[] =>
+    COMMANDS.filter((c) => c.group === g && c.inMenu).map((c) => ({
+      id: c.id,
+      label: c.label,
+      ...(c.keys?.[0] ? { shortcut: keyLabel(c.keys[0]) } : {}),
+      enabled: () => (c.enabled ? c.enabled(ctx) : true),
+      run: () => c.run(ctx),
+    }));
+  return [
+    { name: 'File', items: fileItems },
+    { name: 'Edit', items: group('Edit') },
+    { name: 'Insert', items: group('Insert') },
+    { name: 'Network', items: group('Network') },
+    { name: 'View', items: group('View') },
+  ];
+}
+
+export function MenuBar({ ctx }: { readonly ctx: EditorContext }) {
+  const [open, setOpen] = useState<string | undefined>(undefined);
+  const ref = useRef<HTMLElement>(null);
+  const menus = buildMenus(ctx);
+
+  useEffect(() => {
+    if (!open) return undefined;
+    const onDown = (e: MouseEvent) => {
+      if (!ref.current?.contains(e.target as Node)) setOpen(undefined);
+    };
+    document.addEventListener('mousedown', onDown);
+    return () => document.removeEventListener('mousedown', onDown);
+  }, [open]);
+
+  useEffect(() => {
+    if (open) ref.current?.querySelector<HTMLElement>('[role="menuitem"]:not([disabled])')?.focus();
+  }, [open]);
+
+  const onMenuKeyDown = (e: KeyboardEvent) => {
+    e.stopPropagation();
+    const items = [...(ref.current?.querySelectorAll<HTMLElement>('[role="menuitem"]:not([disabled])') ?? [])];
+    const i = items.indexOf(document.activeElement as HTMLElement);
+    if (e.key === 'Escape') {
+      setOpen(undefined);
+      document.getElementById(`rs-menu-${open}`)?.focus();
+    } else if (e.key === 'ArrowDown' || e.key === 'ArrowUp') {
+      e.preventDefault();
+      items[(i + (e.key === 'ArrowDown' ? 1 : -1) + items.length) % items.length]?.focus();
+    } else if (e.key === 'ArrowRight' || e.key === 'ArrowLeft') {
+      const m = menus.findIndex((x) => x.name === open);
+      setOpen(menus[(m + (e.key === 'ArrowRight' ? 1 : -1) + menus.length) % menus.length]!.name);
+    }
+  };
+
+  return (
+    <nav className="rs-menubar" ref={ref} aria-label="Main menu">
+      {menus.map((menu) => (
+        <div key={menu.name} className="rs-menu">
+          <button
+            id={`rs-menu-${menu.name}`}
+            type="button"
+            className="rs-menu-button"
+            aria-haspopup="menu"
+            aria-expanded={open === menu.name}
+            data-testid={`menu-${menu.name.toLowerCase()}`}
+            onClick={() => setOpen(open === menu.name ? undefined : menu.name)}
+            onMouseEnter={() => open && setOpen(menu.name)}
+          >
+            {menu.name}
+          </button>
+          {open === menu.name && (
+            <div role="menu" aria-label={menu.name} className="rs-menu-list" onKeyDown={onMenuKeyDown}>
+              {menu.items.map((item) => (
+                <button
+                  key={item.id}
+                  type="button"
+                  role="menuitem"
+                  className={`rs-menu-item${item.separatorBefore ? ' rs-separator' : ''}`}
+                  disabled={!item.enabled()}
+                  title={item.title}
+                  data-testid={`menuitem-${item.id}`}
+                  onClick={() => {
+                    setOpen(undefined);
+                    item.run();
+                  }}
+                >
+                  <span>{item.label}</span>
+                  {item.shortcut && <kbd>{item.shortcut}</kbd>}
+                </button>
+              ))}
+            </div>
+          )}
+        </div>
+      ))}
+    </nav>
+  );
+}

@@ -1,0 +1,50 @@
+// A panel with tabs (WAI-ARIA tabs pattern): the right side panel and the bottom panel.
+import { useState, type KeyboardEvent } from 'react';
+import type { PanelSlot } from './panels';
+
+export function TabbedPanel({ panels, label, className }: { readonly panels: readonly PanelSlot[]; readonly label: string; readonly className: string }) {
+  const [active, setActive] = useState(panels[0]?.id ?? '');
+  const current = panels.find((p) => p.id === active) ?? panels[0];
+  const onKeyDown = (e: KeyboardEvent) => {
+    if (e.key !== 'ArrowLeft' && e.key !== 'ArrowRight') return;
+    e.preventDefault();
+    const i = panels.findIndex((p) => p.id === current?.id);
+    const next = panels[(i + (e.key === 'ArrowRight' ? 1 : -1) + panels.length) % panels.length];
+    if (next) {
+      setActive(next.id);
+      document.getElementById(`rs-tab-${next.id}`)?.focus();
+    }
+  };
+  return (
+    <section className={`rs-tabbed ${className}`} aria-label={label}>
+      <div role="tablist" aria-label={label} className="rs-tablist" onKeyDown={onKeyDown}>
+        {panels.map((p) => (
+          <button
+            key={p.id}
+            id={`rs-tab-${p.id}`}
+            role="tab"
+            type="button"
+            aria-selected={p.id === current?.id}
+            aria-controls={`rs-tabpanel-${p.id}`}
+            tabIndex={p.id === current?.id ? 0 : -1}
+            data-testid={`tab-${p.id}`}
+            className="rs-tab"
+            onClick={() => setActive(p.id)}
+          >
+            {p.title}
+          </button>
+        ))}
+      </div>
+      {panels.map((p) => {
+        const Component = p.component;
+        const shown = p.id === current?.id;
+        // Panels stay mounted so their state (filters, scroll) survives switching tabs.
+        return (
+          <div key={p.id} id={`rs-tabpanel-${p.id}`} role="tabpanel" aria-labelledby={`rs-tab-${p.id}`} className="rs-tabpanel" hidden={!shown}>
+            <Component />
+          </div>
+        );
+      })}
+    </section>
+  );
+}

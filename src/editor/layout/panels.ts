@@ -1,0 +1,40 @@
+// Slots of the app shell. Other parts of the editor add themselves by adding an entry here:
+// a tab in the right side panel or the bottom panel, an item in the top bar, or a host component
+// mounted once (dialogs, background work such as autosave).
+import type { ComponentType } from 'react';
+import { FilesHost } from '../files/FilesHost';
+import { HardwarePanel } from '../hardware/HardwarePanel';
+import { InspectorPanel } from '../inspector/InspectorPanel';
+import { ProblemsPanel } from '../problems/ProblemsPanel';
+import { VariablesPanel } from '../variables/VariablesPanel';
+import type { NetworkOverlayHook } from '../canvas/overlay';
+
+export interface PanelSlot {
+  readonly id: string;
+  readonly title: string;
+  readonly component: ComponentType;
+}
+
+export interface BarSlot {
+  readonly id: string;
+  readonly component: ComponentType;
+}
+
+/** Tabs of the right side panel; the first is open at start. */
+export const RIGHT_PANELS: readonly PanelSlot[] = [
+  { id: 'inspector', title: 'Inspector', component: InspectorPanel },
+  { id: 'variables', title: 'Variables', component: VariablesPanel },
+  { id: 'hardware', title: 'Hardware', component: HardwarePanel },
+];
+
+/** Tabs of the bottom panel; the first is open at start. */
+export const BOTTOM_PANELS: readonly PanelSlot[] = [{ id: 'problems', title: 'Problems', component: ProblemsPanel }];
+
+/** Items in the top bar, after the menus (e.g. simulation controls). */
+export const TOP_BAR_ITEMS: readonly BarSlot[] = [];
+
+/** Mounted once inside the stores' providers. */
+export const HOSTS: readonly BarSlot[] = [{ id: 'files', component: FilesHost }];
+
+/** Power flow and live values on the canvas (see src/editor/canvas/overlay.ts); undefined: none. */
+export const CANVAS_OVERLAY: NetworkOverlayHook | undefined = undefined;

@@ -1,0 +1,132 @@
+// The palette: pick a tool, then click a cell on the canvas (or press the shortcut shown in each
+// tooltip to place at the keyboard cursor). Blocks come from a searchable list of every standard
+// function block and library function.
+import { useMemo, useState } from 'react';
+import type { BlockSignature } from '../../model/blocks';
+import { useUi, useUiStore, type Tool } from '../../store/uiStore';
+import type { EditorContext } from '../commands/editorActions';
+import { keyLabel } from '../commands/keys';
+import { commandById } from '../commands/registry';
+import { boxTemplate, PALETTE_ITEMS, searchBlocks, type PaletteItem } from './paletteItems';
+import './palette.css';
+
+const GROUPS: readonly PaletteItem['group'][] = ['Contacts', 'Coils', 'Wires', 'Control'];
+
+const shortcutText = (keys: string | undefined) => (keys ? ` (${keyLabel(keys)})` : '');
+
+function isActive(tool: Tool, id: string): boolean {
+  if (tool.kind !== 'place') return false;
+  return tool.name === id;
+}
+
+export function Palette({ ctx }: { readonly ctx: EditorContext }) {
+  const ui = useUiStore();
+  const tool = useUi((s) => s.tool);
+  const [query, setQuery] = useState('');
+  const blocks = useMemo(() => searchBlocks(query), [query]);
+
+  const arm = (name: string, t: Tool) => {
+    const current = ui.getState().tool;
+    // Clicking the active tool again returns to selecting.
+    ui.getState().setTool(current.kind === 'place' && current.name === name ? { kind: 'select' } : t);
+  };
+  const armBlock = (sig: BlockSignature) => arm(`block-${sig.name}`, { kind: 'place', name: `block-${sig.name}`, template: boxTemplate(sig) });
+  const runCommand = (id: string) => commandById(id)?.run(ctx);
+
+  return (
+    <nav className="rs-palette" aria-label="Palette" data-testid="palette">
+      <div className="rs-palette-group" role="group" aria-label="Tools">
+        <button
+          type="button"
+          className="rs-palette-item"
+          aria-pressed={tool.kind === 'select'}
+          data-testid="palette-select"
+          title="Select and move (Esc): click, Shift+click, drag a rubber band, drag to move"
+          onClick={() => ui.getState().setTool({ kind: 'select' })}
+        >
+          <span className="rs-palette-symbol">↖</span>
+          <span>Select</span>
+        </button>
+        <button
+          type="button"
+          className="rs-palette-item"
+          aria-pressed={tool.kind === 'vlink'}
+          data-testid="palette-vlink"
+          title={`Vertical link tool: click between two rows on a cell edge to add or remove a vertical link (at the cursor: V left edge, Shift+V right edge)`}
+          onClick={() => ui.getState().setTool(tool.kind === 'vlink' ? { kind: 'select' } : { kind: 'vlink' })}
+        >
+          <span className="rs-palette-symbol">┃</span>
+          <span>Vertical link</span>
+        </button>
+      </div>
+      {GROUPS.map((group) => (
+        <div key={group} className="rs-palette-group" role="group" aria-label={group}>
+          <h2 className="rs-palette-heading">{group}</h2>
+          {PALETTE_ITEMS.filter((item) => item.group === group).map((item) => (
+            <button
+              key={item.id}
+              type="button"
+              className="rs-palette-item"
+              aria-pressed={isActive(tool, item.id)}
+              aria-label={item.label}
+              data-testid={`palette-${item.id}`}
+              title={`${item.label}${shortcutText(item.keys)}: ${item.description}`}
+              onClick={() => arm(item.id, { kind: 'place', name: item.id, template: item.template })}
+            >
+              <span className="rs-palette-symbol rs-mono">{item.symbol}</span>
+              <span>{item.label}</span>
+            </button>
+          ))}
+        </div>
+      ))}
+      <div className="rs-palette-group" role="group" aria-label="Network">
+        <h2 className="rs-palette-heading">Network</h2>
+        <button type="button" className="rs-palette-item" data-testid="palette-label" title="Label of the cursor's network, a jump target (L)" onClick={() => runCommand('network.label')}>
+          <span className="rs-palette-symbol rs-mono">L:</span>
+          <span>Label</span>
+        </button>
+        <button type="button" className="rs-palette-item" data-testid="palette-comment" title="Comment above the cursor's network (K)" onClick={() => runCommand('network.comment')}>
+          <span className="rs-palette-symbol">“ ”</span>
+          <span>Comment</span>
+        </button>
+        <button type="button" className="rs-palette-item" data-testid="palette-network" title="Insert a network below the cursor's network (N)" onClick={() => runCommand('network.insert')}>
+          <span className="rs-palette-symbol">＋</span>
+          <span>New network</span>
+        </button>
+      </div>
+      <div className="rs-palette-group rs-palette-blocks" role="group" aria-label="Blocks">
+        <h2 className="rs-palette-heading">Blocks</h2>
+        <input
+          type="search"
+          className="rs-palette-search"
+          aria-label="Search blocks"
+          placeholder="Search: TON, ADD, INT_TO…"
+          title="Filter function blocks and functions (B opens the block picker at the cursor)"
+          value={query}
+          onChange={(e) => setQuery(e.target.value)}
+          onKeyDown={(e) => {
+            e.stopPropagation();
+            if (e.key === 'Enter' && blocks[0]) armBlock(blocks[0]);
+          }}
+        />
+        <ul className="rs-palette-block-list" aria-label="Blocks">
+          {blocks.map((sig) => (
+            <li key={sig.name}>
+              <button
+                type="button"
+                className="rs-palette-item rs-palette-block"
+                aria-pressed={isActive(tool, `block-${sig.name}`)}
+                data-testid={`palette-block-${sig.name}`}
+                title={`${sig.name} (${sig.kind === 'fb' ? 'function block' : 'function'}): ${sig.description} — B opens the picker at the cursor`}
+                onClick={() => armBlock(sig)}
+              >
+                <span className="rs-mono">{sig.name}</span>
+                <span className="rs-palette-kind">{sig.kind === 'fb' ? 'FB' : 'fn'}</span>
+              </button>
+            </li>
+          ))}
+        </ul>
+      </div>
+    </nav>
+  );
+}

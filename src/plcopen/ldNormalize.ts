@@ -1,0 +1,76 @@
+// On a ladder grid every point of a wire joins everything drawn there, so two inputs that share
+// some but not all of their sources (A feeds X and Y, B feeds only X) cannot be drawn as wired in
+// the file. PLCopen graphs allow it. Rungsmith redraws such wiring by duplicating the shared
+// contacts (a contact only reads its variable, so a copy behaves the same) — as a PLC programmer
+// would draw it.
+import type { Finding, GNode, GSource } from './ldGraph';
+
+const srcKey = (s: GSource) => (s.kind === 'rail' ? 'R' : `${s.node}>${s.pin}`);
+
+export function splitSharedSources(nodes: GNode[], warn: (f: Finding) => void): void {
+  for (let round = 0; round < 4; round++) if (!splitOnce(nodes, warn)) return;
+}
+
+function splitOnce(nodes: GNode[], warn: (f: Finding) => void): boolean {
+  const parent = new Map<string, string>();
+  const find = (k: string): string => {
+    let r = k;
+    for (let p = parent.get(r); p !== undefined && p !== r; p = parent.get(r)) r = p;
+    return r;
+  };
+  const union = (a: string, b: string) => {
+    if (!parent.has(a)) parent.set(a, a);
+    if (!parent.has(b)) parent.set(b, b);
+    const ra = find(a);
+    const rb = find(b);
+    if (ra !== rb) parent.set(ra, rb);
+  };
+  for (const n of nodes) for (const [pin, srcs] of n.inputs) for (const s of srcs) union(`${n.index}<${pin}`, srcKey(s));
+  // Consumers per net.
+  const byNet = new Map<string, { node: GNode; pin: string; key: string; srcs: GSource[] }[]>();
+  for (const n of nodes)
+    for (const [pin, srcs] of n.inputs) {
+      if (!srcs.length) continue;
+      const root = find(`${n.index}<${pin}`);
+      let list = byNet.get(root);
+      if (!list) byNet.set(root, (list = []));
+      list.push({ node: n, pin, key: srcs.map(srcKey).sort().join(' '), srcs });
+    }
+  let changed = false;
+  for (const consumers of byNet.values()) {
+    const groups = new Map<string, typeof consumers>();
+    for (const c of consumers) {
+      let g = groups.get(c.key);
+      if (!g) groups.set(c.key, (g = []));
+      g.push(c);
+    }
+    if (groups.size < 2) continue;
+    const ordered = [...groups.values()].sort((a, b) => b.length - a.length || b[0]!.srcs.length - a[0]!.srcs.length);
+    for (const group of ordered.slice(1)) {
+      const outside = new Set(consumers.filter((c) => !group.includes(c)).flatMap((c) => c.srcs.map(srcKey)));
+      const copies = new Map<string, GSource>();
+      for (const s of group[0]!.srcs) {
+        const k = srcKey(s);
+        if (!outside.has(k) || s.kind === 'rail') continue;
+        const orig = nodes[s.node]!;
+        if (orig.kind !== 'contact') continue; // not copyable: verification reports it
+        const copy: GNode = {
+          ...orig,
+          index: nodes.length,
+          inputs: new Map([...orig.inputs].map(([p, v]) => [p, [...v]])),
+          operandsIn: { ...orig.operandsIn },
+          operandsOut: { ...orig.operandsOut },
+          feedsRightRail: false,
+          y: orig.y + 0.5,
+        };
+        nodes.push(copy);
+        copies.set(k, { kind: 'node', node: copy.index, pin: s.pin });
+        warn({ message: `contact "${orig.variable}" drawn twice so that the ladder grid shows the file's wiring exactly`, obj: orig.obj });
+      }
+      if (!copies.size) continue;
+      changed = true;
+      for (const c of group) c.node.inputs.set(c.pin, c.srcs.map((s) => copies.get(srcKey(s)) ?? s));
+    }
+  }
+  return changed;
+}

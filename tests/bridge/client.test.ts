@@ -1,0 +1,98 @@
+// The browser client and bridge against a real gateway (the `ws` package stands in for the browser's WebSocket).
+import WebSocket from 'ws';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { gatewaySocketUrl, tokenFromFragment } from '../../src/bridge/connection';
+import { GatewayBridge } from '../../src/bridge/GatewayBridge';
+import { GatewayClient, type SocketLike } from '../../src/bridge/GatewayClient';
+import { resolveConfig } from '../../src/gateway/config';
+import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
+import { eventually } from '../gateway/helpers';
+
+const factory = (url: string) => new WebSocket(url) as unknown as SocketLike;
+const config = resolveConfig({ watchdogMs: 300, simulated: { modbusPort: null } });
+
+describe('gateway URL and token', () => {
+  it('derives the socket URL from the page URL and reads the token from the fragment', () => {
+    expect(gatewaySocketUrl('http://127.0.0.1:8080/#token=abc')).toBe('ws://127.0.0.1:8080/io');
+    expect(gatewaySocketUrl('127.0.0.1:9000')).toBe('ws://127.0.0.1:9000/io');
+    expect(gatewaySocketUrl('https://localhost:8443/app')).toBe('wss://localhost:8443/io');
+    expect(gatewaySocketUrl('not a url at all')).toBeUndefined();
+    expect(tokenFromFragment('#token=Xy_z-1')).toBe('Xy_z-1');
+    expect(tokenFromFragment('#other=1')).toBeUndefined();
+  });
+});
+
+describe('GatewayClient and GatewayBridge', () => {
+  let gw: RunningGateway;
+  beforeAll(async () => {
+    gw = await startGateway({ port: 0, config, distDir: null });
+  });
+  afterAll(() => gw?.close());
+
+  const client = (role: 'controller' | 'observer', token = gw.token) =>
+    new GatewayClient({ socketUrl: `ws://127.0.0.1:${gw.port}/io`, token, role, socketFactory: factory, retryFirstMs: 50 });
+
+  it('connects, gets the points and the image, and feeds inputs to the bridge', async () => {
+    const c = client('controller');
+    c.connect();
+    await eventually(() => c.snapshot.link === 'open' && c.snapshot.status !== null, 3000, 'open');
+    expect(c.snapshot.role).toBe('controller');
+    expect(c.snapshot.points).toHaveLength(40);
+    const bridge = new GatewayBridge(c, 50);
+    const seen: Record<string, unknown>[] = [];
+    const off = bridge.onInputs((changed) => seen.push(changed));
+    c.simulate({ '%IX0.4': true, '%IW1': 65535 });
+    await eventually(() => bridge.inputImage()['%IX0.4'] === true, 3000, 'input');
+    expect(bridge.inputImage()['%IW1']).toBe(65535);
+    expect(bridge.inputImage([{ pou: 'Main', variable: 'Level', varType: 'INT', address: '%IW1', point: { address: '%IW1', type: 'WORD', dir: 'in', device: 'sim' } }])['%IW1']).toBe(-1);
+    expect(seen.some((s) => s['%IX0.4'] === true)).toBe(true);
+    off();
+
+    bridge.sendOutputs({ '%qx0.6': true, '%QW2': -2, '%IX0.0': true, '%QX9.9': true });
+    await eventually(() => gw.simulated?.writtenValues().get('%QX0.6') === true, 3000, 'output written');
+    expect(gw.simulated?.writtenValues().get('%QW2')).toBe(65534);
+    expect(gw.simulated?.inputValues().get('%IX0.0')).toBe(false); // inputs are not outputs
+    // Heartbeats keep the 300 ms lease fed while the simulation sends nothing new.
+    await new Promise((r) => setTimeout(r, 700));
+    expect(c.snapshot.status?.watchdog.state).toBe('fed');
+    expect(gw.simulated?.writtenValues().get('%QX0.6')).toBe(true);
+
+    bridge.stop();
+    await eventually(() => c.snapshot.values['%QX0.6'] === false && c.snapshot.status?.watchdog.state === 'idle', 3000, 'stopped');
+    c.disconnect();
+    expect(c.snapshot.link).toBe('idle');
+  });
+
+  it('becomes an observer when another controller holds the lease, and sends nothing as observer', async () => {
+    const a = client('controller');
+    const b = client('controller');
+    a.connect();
+    await eventually(() => a.snapshot.link === 'open', 3000, 'a open');
+    b.connect();
+    await eventually(() => b.snapshot.link === 'open', 3000, 'b open');
+    expect(b.snapshot.role).toBe('observer');
+    expect(b.sendOutputs({ '%QX0.0': true })).toBe(false);
+    a.disconnect();
+    b.disconnect();
+  });
+
+  it('stops retrying when the gateway refuses the token, and says why', async () => {
+    const c = client('controller', 'definitely-not-the-token');
+    c.connect();
+    await eventually(() => c.snapshot.link === 'refused', 3000, 'refused');
+    expect(c.snapshot.problem).toMatch(/wrong token/);
+  });
+
+  it('reconnects after the gateway restarts on the same port', async () => {
+    const port = gw.port;
+    const c = client('observer');
+    c.connect();
+    await eventually(() => c.snapshot.link === 'open', 3000, 'open');
+    await gw.close();
+    await eventually(() => c.snapshot.link === 'retrying', 3000, 'retrying');
+    gw = await startGateway({ port, config, distDir: null, token: gw.token });
+    await eventually(() => c.snapshot.link === 'open', 5000, 'open again');
+    expect(c.snapshot.points).toHaveLength(40);
+    c.disconnect();
+  });
+});
