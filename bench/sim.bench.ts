@@ -60,22 +60,19 @@ async function scanRate(page: Page): Promise<{ scansPerS: number; overruns: numb
 }
 
 async function frameTimes(page: Page): Promise<{ median: number; p95: number; frames: number }> {
-  const deltas = await page.evaluate(
-    (ms) =>
-      new Promise<number[]>((resolve) => {
-        const out: number[] = [];
-        let last = performance.now();
-        const end = last + ms;
-        const tick = (t: number) => {
-          out.push(t - last);
-          last = t;
-          if (t < end) requestAnimationFrame(tick);
-          else resolve(out);
-        };
-        requestAnimationFrame(tick);
-      }),
-    MEASURE_MS,
-  );
+  // A string, not a function: tsx would wrap named arrow functions in a helper the page lacks.
+  const deltas = (await page.evaluate(`new Promise((resolve) => {
+    const out = [];
+    let last = performance.now();
+    const end = last + ${MEASURE_MS};
+    const tick = (t) => {
+      out.push(t - last);
+      last = t;
+      if (t < end) requestAnimationFrame(tick);
+      else resolve(out);
+    };
+    requestAnimationFrame(tick);
+  })`)) as number[];
   const sorted = deltas.slice(1).sort((x, y) => x - y);
   return { median: percentile(sorted, 0.5), p95: percentile(sorted, 0.95), frames: sorted.length };
 }

@@ -15,6 +15,12 @@
  *   bridge.canDrive                true when connected as controller and armed.
  *
  * Nothing is sent unless the client holds the controller lease; an observer only reads.
+ *
+ * The page's bridge is `gatewayLink.bridge` (src/bridge/gatewayLink.ts; undefined while no link is
+ * open; `gatewayLink.subscribe` notifies changes). `attachSimulation` (src/bridge/simulationLink.ts)
+ * wires it to the simulation store's setInputs/onOutputs seams in one call, and
+ * `checkBindings(project, gatewayLink.snapshot().points)` (src/bridge/mapping.ts) gives the
+ * bindings and the mismatches to report before Run.
  */
 import type { Value } from '../model/iecTypes';
 import { canonicalAddress, type WireValue } from '../protocol/points';

@@ -2,10 +2,8 @@
 import { readFileSync } from 'node:fs';
 import { z } from 'zod';
 import { POINT_TYPES } from '../protocol/points';
+import { ConfigError, MODBUS_TABLES } from './configTypes';
 import { expandPoints, type DevicePoint } from './pointMap';
-
-export const MODBUS_TABLES = ['coils', 'discreteInputs', 'inputRegisters', 'holdingRegisters'] as const;
-export type ModbusTable = (typeof MODBUS_TABLES)[number];
 
 const pointEntrySchema = z.strictObject({
   address: z.string().min(1),
@@ -15,7 +13,6 @@ const pointEntrySchema = z.strictObject({
   type: z.enum(POINT_TYPES).optional(),
   hold: z.boolean().default(false),
 });
-export type PointEntry = z.infer<typeof pointEntrySchema>;
 
 const idSchema = z.string().regex(/^[A-Za-z0-9_.-]{1,40}$/, 'use 1-40 letters, digits, "_", "-" or "."');
 
@@ -53,13 +50,6 @@ export interface ResolvedDevice extends ModbusDeviceConfig {
 }
 export interface ResolvedConfig extends Omit<GatewayConfigFile, 'devices'> {
   readonly devices: readonly ResolvedDevice[];
-}
-
-export class ConfigError extends Error {
-  constructor(readonly where: string, message: string) {
-    super(`${where}: ${message}`);
-    this.name = 'ConfigError';
-  }
 }
 
 const pathText = (path: readonly PropertyKey[]) =>

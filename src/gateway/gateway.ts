@@ -79,6 +79,7 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
   const reject = (socket: Socket, status: number, text: string) => {
     socket.end(`HTTP/1.1 ${status} ${text}\r\nConnection: close\r\nContent-Type: text/plain\r\nContent-Length: ${text.length + 1}\r\n\r\n${text}\n`);
   };
+  let connections = 0;
   server.on('upgrade', (req: IncomingMessage, socket: Socket, head: Buffer) => {
     socket.on('error', () => socket.destroy());
     const path = (req.url ?? '').split('?')[0];
@@ -88,7 +89,9 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
       log(`refused WebSocket from origin ${req.headers.origin}`);
       return reject(socket, 403, 'Forbidden');
     }
-    if (wss.clients.size >= MAX_CLIENTS) return reject(socket, 503, 'Service Unavailable');
+    if (connections >= MAX_CLIENTS) return reject(socket, 503, 'Service Unavailable');
+    connections++; // counted from the handshake on, so simultaneous handshakes cannot exceed the limit
+    socket.once('close', () => connections--);
     wss.handleUpgrade(req, socket, head, (ws) => {
       const session = new Session(randomUUID().slice(0, 8), ws, { hub, token, simulated, nextSeq: () => ++seq, log });
       sessions.add(session);
@@ -104,6 +107,7 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
       ok();
     });
   });
+  server.on('error', (e) => log(`HTTP server error: ${e.message}`));
   const port = (server.address() as AddressInfo).port;
   allowedHosts = new Set([...defaultHosts(port), ...config.allowedHosts].map((h) => h.toLowerCase()));
   allowedOrigins = new Set([...defaultOrigins(port), ...config.allowedOrigins].map((o) => o.toLowerCase().replace(/\/$/, '')));

@@ -3,7 +3,8 @@ import { spawnSync } from 'node:child_process';
 import { existsSync, readdirSync, statSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { ConfigError, loadConfigFile, resolveConfig, type ResolvedConfig } from './config';
+import { loadConfigFile, resolveConfig, type ResolvedConfig } from './config';
+import { ConfigError } from './configTypes';
 import { startGateway, type RunningGateway } from './gateway';
 
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '../..');

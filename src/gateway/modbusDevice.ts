@@ -44,6 +44,7 @@ export class ModbusTcpDevice implements Device {
   private nextConnectAt = 0;
   private timer: NodeJS.Timeout | undefined;
   private closed = false;
+  private writesSincePoll = 0;
 
   constructor(private readonly cfg: ResolvedDevice) {
     this.info = { id: cfg.id, kind: 'modbus-tcp' as const, target: `${cfg.host}:${cfg.port} unit ${cfg.unitId}` };
@@ -116,9 +117,12 @@ export class ModbusTcpDevice implements Device {
         if (started < this.nextConnectAt) throw new Error(this.error ?? 'not connected');
         await this.connect();
       }
+      const writtenSincePoll = this.writesSincePoll > 0;
+      this.writesSincePoll = 0;
       await this.enqueue(async () => {
-        if (this.rewrite) await this.writeAll();
         await this.readAll();
+        // Rewrite every poll so the coupler's own watchdog stays fed, unless a fresh image just went out.
+        if (this.rewrite && !writtenSincePoll) await this.writeAll(true);
       });
       this.pollSucceeded();
     } catch (e) {
@@ -175,7 +179,7 @@ export class ModbusTcpDevice implements Device {
     }
   }
 
-  private async writeAll(): Promise<void> {
+  private async writeAll(fromPoll = false): Promise<void> {
     const client = this.client;
     if (!client?.isOpen) throw new Error('not connected');
     const changed = new Map<string, WireValue>();
@@ -189,6 +193,7 @@ export class ModbusTcpDevice implements Device {
         this.written.set(p.address, v);
       });
     }
+    if (!fromPoll) this.writesSincePoll++;
     if (changed.size) this.listener?.written(changed);
   }
 

@@ -1,6 +1,6 @@
 // Groups a device's points into the few Modbus requests that read or write them.
 import type { PointType, WireValue } from '../protocol/points';
-import type { ModbusTable } from './config';
+import type { ModbusTable } from './configTypes';
 import type { DevicePoint } from './pointMap';
 
 export interface RequestBlock {

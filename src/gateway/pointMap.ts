@@ -1,7 +1,7 @@
 // From IEC addresses to Modbus tables: the OpenPLC default map, overridable per config entry.
 import { canonicalAddress, dirOf, type PointDir, type PointType } from '../protocol/points';
 import { parseLocation } from '../model/iecTypes';
-import { ConfigError, type ModbusTable, type PointEntry } from './config';
+import { ConfigError, type ModbusTable, type PointEntry } from './configTypes';
 
 export interface DevicePoint {
   readonly address: string;

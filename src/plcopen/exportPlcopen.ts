@@ -25,10 +25,15 @@ function retainedByCoil(pou: Pou): Set<string> {
   return out;
 }
 
-function writePou(w: XmlWriter, pou: Pou, globalsRetainedByCoil: Set<string>): void {
+/** Variables of the POU written by retentive coils; those not declared in it are globals (added to `globals`). */
+function splitRetainedByCoil(pou: Pou, globals: Set<string>): Set<string> {
   const byCoil = retainedByCoil(pou);
   const local = new Set([...byCoil].filter((n) => pou.variables.some((v) => v.name.toUpperCase() === n)));
-  for (const n of byCoil) if (!local.has(n)) globalsRetainedByCoil.add(n);
+  for (const n of byCoil) if (!local.has(n)) globals.add(n);
+  return local;
+}
+
+function writePou(w: XmlWriter, pou: Pou, local: ReadonlySet<string>): void {
   w.open('pou', { name: pou.name, pouType: POU_TYPE[pou.kind] }, () => {
     w.open('interface', undefined, () => {
       if (pou.kind === 'FUNCTION') w.open('returnType', undefined, () => writeType(w, pou.returnType || 'BOOL'));
@@ -60,8 +65,7 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
   const ns: Record<string, string> = { xmlns: TC6_0201, 'xmlns:xhtml': XHTML_NS, 'xmlns:xsd': 'http://www.w3.org/2001/XMLSchema' };
   for (const [prefix, uri] of Object.entries(keep?.namespaces ?? {})) if (!(`xmlns:${prefix}` in ns)) ns[`xmlns:${prefix}`] = uri;
   const globalsByCoil = new Set<string>();
-  const pous = new XmlWriter();
-  // POUs first (into their own writer) to learn which globals retentive coils write.
+  const localByCoil = project.pous.map((pou) => splitRetainedByCoil(pou, globalsByCoil));
   w.open('project', ns, () => {
     w.empty('fileHeader', { companyName: 'Rungsmith', productName: project.name || 'Untitled', productVersion: '1', creationDateTime: now });
     w.open('contentHeader', { name: project.name || 'Untitled', modificationDateTime: now }, () => {
@@ -74,12 +78,7 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
       if (keep?.dataTypes?.length) w.open('dataTypes', undefined, () => keep.dataTypes!.forEach((d) => w.raw(d)));
       else w.empty('dataTypes');
       w.open('pous', undefined, () => {
-        for (const pou of project.pous) writePou(pous, pou, globalsByCoil);
-        pous
-          .toString()
-          .split('\n')
-          .filter((l) => l.length)
-          .forEach((l) => w.raw(l));
+        project.pous.forEach((pou, i) => writePou(w, pou, localByCoil[i]!));
         for (const raw of keep?.otherPous ?? []) w.raw(raw);
       });
     });

@@ -42,7 +42,7 @@ export function importPlcopen(xmlText: string): ImportResult {
 function importChecked(text: string): ImportResult {
   const root = parseXml(text);
   const lineOf = lineLocator(text);
-  const raw = (el: XmlElement) => text.slice(el.offset, el.end);
+  const raw = (el: XmlElement) => rawElement(text, el);
   const at = (el: XmlElement | undefined) => (el ? { line: lineOf(el.offset), element: el.name, ...(el.attrs.localId ? { localId: el.attrs.localId } : {}) } : {});
   const warnings: ImportIssue[] = [];
   let currentPou: string | undefined;
@@ -94,6 +94,9 @@ function importChecked(text: string): ImportResult {
     }
   };
 
+  // A file Rungsmith wrote holds the LD of SFC actions/transitions twice: inside the chart and as the
+  // program imported from it. The program wins, so repeated round trips do not multiply programs.
+  const fileNames = new Set(pouEls.map((p) => (p.attrs.name ?? '').toUpperCase()));
   for (const pouEl of pouEls) {
     const name = pouEl.attrs.name ?? '';
     currentPou = name;
@@ -108,20 +111,28 @@ function importChecked(text: string): ImportResult {
     const doc = child(pouEl, 'documentation');
     const comment = doc ? deepText(doc).trim() : '';
     const addData = child(pouEl, 'addData');
-    const keepPou: PreservedPou = addData ? { addData: childrenNamed(addData, 'data').filter((d) => d.attrs.handleUnknown !== 'discard').map(raw) } : {};
+    const pouData = addData ? childrenNamed(addData, 'data') : [];
+    for (const d of pouData) if (d.attrs.handleUnknown === 'discard') warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
+    const keepPou: PreservedPou = { addData: pouData.filter((d) => d.attrs.handleUnknown !== 'discard').map(raw) };
     const base = { kind, language: 'LD' as const, comment, variables, ...(returnType ? { returnType } : {}) };
     if (!lang) throw new ImportFailure({ ...at(pouEl), pou: name, message: `POU "${name}" has no body in a known language (LD, ST, IL, FBD, SFC)` });
     if (lang.name === 'LD') {
       const networks = importLd(name, lang, 'POU body');
       pous.push({ id: newId<'PouId'>('p') as PouId, name, ...base, networks, ...(keepPou.addData?.length ? { extensions: { plcopen: keepPou } } : {}) });
     } else {
-      keepProject.otherPous.push(raw(pouEl));
-      warn(`POU "${name}" is written in ${lang.name}: kept unchanged for export, but Rungsmith only edits and simulates LD`, pouEl);
+      if (ns === TC6_V10 && lang.name !== 'ST' && lang.name !== 'IL') {
+        // v1.0 graphical bodies differ from v2.01 (SFC actions, FBD blocks): they cannot be carried over.
+        warn(`POU "${name}" is written in ${lang.name} in the legacy v1.0 format: it cannot be carried into a v2.01 export and was dropped`, pouEl);
+      } else {
+        keepProject.otherPous.push(ns === TC6_V10 ? upgradeLegacyText(raw(pouEl)) : raw(pouEl));
+        warn(`POU "${name}" is written in ${lang.name}: kept unchanged for export, but Rungsmith only edits and simulates LD`, pouEl);
+      }
     }
     // LD inside SFC actions and transitions: each becomes a POU of its own.
     for (const action of childrenNamed(child(pouEl, 'actions') ?? pouEl, 'action')) {
       const ld = child(child(action, 'body') ?? action, 'LD');
       if (!ld) continue;
+      if (fileNames.has(`${name}_${action.attrs.name ?? 'action'}`.toUpperCase())) continue;
       const pname = uniqueName(pous, `${name}_${action.attrs.name ?? 'action'}`);
       warn(`the LD of action "${action.attrs.name}" of ${lang.name} POU "${name}" was imported as program "${pname}" (the chart itself is not simulated)`, action);
       pous.push({ id: newId<'PouId'>('p') as PouId, name: pname, ...base, kind: 'PROGRAM', returnType: undefined, networks: importLd(pname, ld, `action ${action.attrs.name} of ${name}`) });
@@ -130,6 +141,7 @@ function importChecked(text: string): ImportResult {
       const ld = child(child(tr, 'body') ?? tr, 'LD');
       if (!ld) continue;
       const tname = tr.attrs.name ?? 'transition';
+      if (fileNames.has(`${name}_${tname}`.toUpperCase())) continue;
       const pname = uniqueName(pous, `${name}_${tname}`);
       warn(`the LD of transition "${tname}" of ${lang.name} POU "${name}" was imported as program "${pname}" with a BOOL output "${tname}"`, tr);
       const vars = variables.some((v) => v.name.toUpperCase() === tname.toUpperCase())
@@ -179,6 +191,23 @@ function importChecked(text: string): ImportResult {
   }
   const report: ImportReport = { namespace: ns || '(none)', producer, pous: reportPous, warnings };
   return { ok: true, project, report };
+}
+
+/** The source text of an element, its continuation lines dedented by the element's own indentation. */
+function rawElement(text: string, el: XmlElement): string {
+  const lineStart = text.lastIndexOf('\n', el.offset - 1) + 1;
+  const lead = text.slice(lineStart, el.offset);
+  const indent = /^[ \t]*$/.test(lead) ? lead.length : 0;
+  const lines = text.slice(el.offset, el.end).replace(/\r\n?/g, '\n').split('\n');
+  return lines.map((l, i) => (i === 0 ? l : l.replace(new RegExp(`^[ \\t]{0,${indent}}`), ''))).join('\n');
+}
+
+/** TC6 v1.0 wrote formatted text as bare CDATA; v2.01 wants it inside <xhtml:p> (Beremiz upgrades the same way). */
+function upgradeLegacyText(xml: string): string {
+  return xml.replace(
+    /<(content|documentation|ST|IL|alternativeText)>(\s*)<!\[CDATA\[([\s\S]*?)\]\]>(\s*)<\/\1>/g,
+    (_m, tag: string, _a: string, body: string) => `<${tag}><xhtml:p><![CDATA[${body}]]></xhtml:p></${tag}>`,
+  );
 }
 
 function uniqueName(pous: readonly Pou[], wanted: string): string {

@@ -4,6 +4,10 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { gatewaySocketUrl, tokenFromFragment } from '../../src/bridge/connection';
 import { GatewayBridge } from '../../src/bridge/GatewayBridge';
 import { GatewayClient, type SocketLike } from '../../src/bridge/GatewayClient';
+import { checkBindings } from '../../src/bridge/mapping';
+import { attachSimulation } from '../../src/bridge/simulationLink';
+import { newPou, newProject, variable } from '../../src/model/factory';
+import type { Value } from '../../src/model/iecTypes';
 import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
 import { eventually } from '../gateway/helpers';
@@ -61,6 +65,37 @@ describe('GatewayClient and GatewayBridge', () => {
     await eventually(() => c.snapshot.values['%QX0.6'] === false && c.snapshot.status?.watchdog.state === 'idle', 3000, 'stopped');
     c.disconnect();
     expect(c.snapshot.link).toBe('idle');
+  });
+
+  it('links a simulation: gateway inputs reach its input image typed per variable, its outputs reach the device', async () => {
+    const c = client('controller');
+    c.connect();
+    await eventually(() => c.snapshot.link === 'open', 3000, 'open');
+    const bridge = new GatewayBridge(c, 50);
+    const received: Record<string, unknown>[] = [];
+    let emit: ((o: Readonly<Record<string, Value>>, scan: number) => void) | undefined;
+    const sim = {
+      setInputs: (v: Readonly<Record<string, Value>>) => received.push({ ...v }),
+      onOutputs: (l: (o: Readonly<Record<string, Value>>, scan: number) => void) => {
+        emit = l;
+        return () => (emit = undefined);
+      },
+    };
+    const report = checkBindings(
+      newProject('Motor', { pous: [newPou('Main', { variables: [variable('Start', 'BOOL', { location: '%IX0.0' }), variable('Level', 'INT', { location: '%IW0' }), variable('Motor', 'BOOL', { location: '%QX0.0' })] })] }),
+      c.snapshot.points,
+    );
+    const detach = attachSimulation(sim, bridge, report.bindings);
+    expect(received[0]).toMatchObject({ '%IX0.0': false, '%IW0': 0 });
+    c.simulate({ '%IX0.0': true, '%IW0': 65000 });
+    await eventually(() => received.some((r) => r['%IX0.0'] === true && r['%IW0'] === 65000 - 65536), 3000, 'typed inputs');
+    emit?.({ '%QX0.0': true }, 1);
+    await eventually(() => gw.simulated?.writtenValues().get('%QX0.0') === true, 3000, 'output on the device');
+    detach();
+    expect(emit).toBeUndefined();
+    bridge.stop();
+    await eventually(() => gw.simulated?.writtenValues().get('%QX0.0') === false, 3000, 'safe state');
+    c.disconnect();
   });
 
   it('becomes an observer when another controller holds the lease, and sends nothing as observer', async () => {

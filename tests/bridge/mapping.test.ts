@@ -3,6 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { checkBindings, IO_RULES } from '../../src/bridge/mapping';
 import { fromWire, toWire } from '../../src/bridge/wireValues';
 import { newPou, newProject, variable } from '../../src/model/factory';
+import type { Variable } from '../../src/model/project';
 import type { PointInfo } from '../../src/protocol/points';
 
 const points: PointInfo[] = [
@@ -13,7 +14,7 @@ const points: PointInfo[] = [
   { address: '%QW0', type: 'INT', dir: 'out', device: 'plant' },
 ];
 
-const project = (vars: Parameters<typeof newPou>[1]['variables'], globals: Parameters<typeof newProject>[1]['globals'] = []) =>
+const project = (vars: readonly Variable[], globals: readonly Variable[] = []) =>
   newProject('Test', { pous: [newPou('Main', { variables: vars })], globals });
 
 describe('checkBindings', () => {

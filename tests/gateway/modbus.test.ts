@@ -4,7 +4,7 @@ import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
 import { eventually, freePort, PyModbusServer, TestClient } from './helpers';
 
-const WATCHDOG_MS = 300;
+const WATCHDOG_MS = 500;
 const POLL_MS = 50;
 
 describe('gateway with a Modbus TCP device', () => {
@@ -84,12 +84,12 @@ describe('gateway with a Modbus TCP device', () => {
     const feed = setInterval(() => c.send({ t: 'outputs', seq: 2, values: { '%QX0.2': true } }), 50);
     try {
       await eventually(async () => (await plant.get('co', 2, 1))[0] === 1, 3000, 'coil rewritten');
+      expect(await plant.get('co', 2, 1)).toEqual([1]);
     } finally {
       clearInterval(feed);
       c.send({ t: 'stop' });
       c.close();
     }
-    expect(await plant.get('co', 2, 1)).toEqual([1]);
   });
 
   it('drives every coil to 0 when the lease expires, except hold points, and stays disarmed until arm', async () => {

@@ -5,6 +5,7 @@ import type { Network } from '../../model/project';
 import { useDocumentStore } from '../../store/documentStore';
 import { useUiStore } from '../../store/uiStore';
 import { commentLines, COMMENT_LINE_H, headerHeight, RAIL_X } from './geometry';
+import { NetworkSimMarker } from '../sim/NetworkSimMarker';
 
 const DRAG_TYPE = 'application/x-rungsmith-network';
 
@@ -108,6 +109,7 @@ export const NetworkHeader = memo(function NetworkHeader({ network: n, index, co
         >
           ⠿
         </span>
+        <NetworkSimMarker network={n} index={index} />
         <button
           type="button"
           className="rs-icon-button"

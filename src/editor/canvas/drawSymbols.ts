@@ -8,7 +8,7 @@ import { CELL_H, CELL_W, WIRE_Y } from './geometry';
 export const FONT = '12px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
 export const FONT_BOLD = 'bold 12px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
 export const FONT_SMALL = '11px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
-const MONO = '12px ui-monospace, "SF Mono", Menlo, Consolas, monospace';
+const MONO_SMALL = '11px ui-monospace, "SF Mono", Menlo, Consolas, monospace';
 
 /** Power flow byte of an element (NetworkPower): bit 0 input side energised, bit 1 output side. */
 export interface ElementPaint {
@@ -131,7 +131,7 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint) 
   const w = CELL_W * 2;
   const left = 18;
   const right = w - 18;
-  const top = WIRE_Y - 16;
+  const top = WIRE_Y - 24;
   const bottom = (rows - 1) * CELL_H + WIRE_Y + 14;
   ctx.fillStyle = t.boxFill;
   ctx.strokeStyle = layout ? t.symbol : t.error;
@@ -142,7 +142,7 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint) 
   ctx.textAlign = 'center';
   ctx.fillStyle = t.symbol;
   ctx.font = FONT_BOLD;
-  ctx.fillText(elide(ctx, el.blockType, right - left - 8), w / 2, top + 14);
+  ctx.fillText(elide(ctx, el.blockType, right - left - 8), w / 2, top + 13);
   if (layout?.signature.kind === 'fb') {
     ctx.font = FONT;
     ctx.fillStyle = el.instance ? t.operand : t.muted;
@@ -199,16 +199,17 @@ function drawLink(ctx: Ctx, t: CanvasTheme, paint: ElementPaint) {
   line(ctx, 0, WIRE_Y, CELL_W, WIRE_Y);
 }
 
+/** Jump and return labels may run into the next cell: they end a rung, nothing sits right of them. */
 function drawJumpOrReturn(ctx: Ctx, t: CanvasTheme, text: string, paint: ElementPaint, missing: boolean) {
   const on = Boolean(paint.power && paint.power & 1);
   ctx.strokeStyle = wireColour(t, on);
   ctx.lineWidth = on ? 3 : 1.5;
-  line(ctx, 0, WIRE_Y, 14, WIRE_Y);
-  ctx.font = `bold ${MONO}`;
+  line(ctx, 0, WIRE_Y, 8, WIRE_Y);
+  ctx.font = `bold ${MONO_SMALL}`;
   ctx.textAlign = 'left';
   ctx.textBaseline = 'middle';
   ctx.fillStyle = missing ? t.muted : t.symbol;
-  ctx.fillText(elide(ctx, text, CELL_W - 16), 16, WIRE_Y + 1);
+  ctx.fillText(elide(ctx, text, CELL_W * 2 - 14), 10, WIRE_Y + 1);
   ctx.textBaseline = 'alphabetic';
 }
 

@@ -9,7 +9,7 @@ export interface PixelPoint {
   readonly y: number;
 }
 
-export const CELL_W = 88;
+export const CELL_W = 72;
 export const CELL_H = 64;
 /** Height of the wire inside a cell, leaving room for the variable name above it. */
 export const WIRE_Y = 40;

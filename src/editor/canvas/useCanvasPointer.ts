@@ -4,7 +4,7 @@
 //   idle --middle button or Space held--> panning --up--> idle
 // With a placing tool, a click places the element; with the vertical link tool, a click toggles
 // the vertical link nearest to the pointer.
-import { useRef, useState, type PointerEvent as ReactPointerEvent, type RefObject } from 'react';
+import { useRef, useState, type MouseEvent, type PointerEvent as ReactPointerEvent, type RefObject } from 'react';
 import { elementSize } from '../../model/factory';
 import type { Cell } from '../../model/grid';
 import type { ElementId, NetworkId } from '../../model/ids';
@@ -190,7 +190,7 @@ export function useCanvasPointer(ctx: EditorContext, scrollRef: RefObject<HTMLDi
     }
   };
 
-  const onDoubleClick = (e: React.MouseEvent<HTMLDivElement>) => {
+  const onDoubleClick = (e: MouseEvent<HTMLDivElement>) => {
     if (!(e.target instanceof HTMLCanvasElement)) return;
     const { layout, networks } = view.current;
     const hit = hitTest(layout, networks, contentPoint(e));
@@ -203,6 +203,18 @@ export function useCanvasPointer(ctx: EditorContext, scrollRef: RefObject<HTMLDi
     drag,
     band,
     hover,
-    handlers: { onPointerDown, onPointerMove, onPointerUp: finish, onPointerCancel: finish, onDoubleClick, onPointerLeave: () => setHover(undefined) },
+    handlers: {
+      onPointerDown,
+      onPointerMove,
+      onPointerUp: finish,
+      onPointerCancel: finish,
+      onDoubleClick,
+      onPointerLeave: () => setHover(undefined),
+      // Focus is managed in onPointerDown; the browser's own focus-on-mousedown would take it away
+      // from a name editor that just opened.
+      onMouseDown: (e: MouseEvent<HTMLDivElement>) => {
+        if (e.target instanceof HTMLCanvasElement) e.preventDefault();
+      },
+    },
   };
 }

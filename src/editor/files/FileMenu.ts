@@ -5,8 +5,9 @@
 // The shell must also mount <FilesHost /> (src/editor/files/FilesHost.tsx) once, inside the
 // DocumentStoreProvider: it restores the autosave on start, keeps autosaving, and renders the
 // file picker, the "discard unsaved changes?" dialog, open errors and notices.
+import { EXAMPLES } from '../../model/examples';
 import type { DocumentStore } from '../../store/documentStore';
-import { newProject, openProjectFile, saveProjectFile } from './fileActions';
+import { loadWithConsent, newProject, openProjectFile, saveProjectFile } from './fileActions';
 
 export interface FileCommandContext {
   readonly doc: DocumentStore;
@@ -55,5 +56,15 @@ export const FILE_COMMANDS: readonly FileMenuCommand[] = [
   },
 ];
 
+/** One command per built-in example; each builds a fresh copy (new ids) when chosen. */
+export const EXAMPLE_COMMANDS: readonly FileMenuCommand[] = EXAMPLES.map((example) => ({
+  id: `example.${example.id}`,
+  label: example.title,
+  group: 'Examples',
+  inMenu: true,
+  description: example.description,
+  run: ({ doc }) => loadWithConsent(doc, example.build(), `Opening the example "${example.title}"`, `Opened the example "${example.title}".`),
+}));
+
 /** Everything for the File menu, New/Open/Save first, then the examples. */
-export const FILE_MENU_COMMANDS: readonly FileMenuCommand[] = [...FILE_COMMANDS];
+export const FILE_MENU_COMMANDS: readonly FileMenuCommand[] = [...FILE_COMMANDS, ...EXAMPLE_COMMANDS];

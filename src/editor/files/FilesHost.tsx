@@ -1,6 +1,6 @@
 // Mount once inside the DocumentStoreProvider: autosave + recovery, the hidden file picker used by
 // File > Open, the "discard unsaved changes?" dialog, open errors and short notices.
-import { useEffect, useRef } from 'react';
+import { useCallback, useEffect, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import { useDocumentStore } from '../../store/documentStore';
 import { openChosenFile } from './fileActions';
@@ -16,6 +16,7 @@ export function FilesHost() {
     filesUi.getState().setOpenPicker(() => input.current?.click());
     return () => filesUi.getState().setOpenPicker(undefined);
   }, []);
+  useFileDrop(useCallback((file: File) => void openChosenFile(store, file), [store]));
   return (
     <>
       <input
@@ -39,11 +40,35 @@ export function FilesHost() {
   );
 }
 
+/** A project file dropped anywhere on the page opens like File > Open (other drags pass through). */
+function useFileDrop(open: (file: File) => void) {
+  useEffect(() => {
+    const carriesFiles = (e: DragEvent) => e.dataTransfer?.types.includes('Files') === true;
+    const onDragOver = (e: DragEvent) => {
+      if (!carriesFiles(e)) return;
+      e.preventDefault();
+      if (e.dataTransfer) e.dataTransfer.dropEffect = 'copy';
+    };
+    const onDrop = (e: DragEvent) => {
+      if (!carriesFiles(e)) return;
+      e.preventDefault();
+      const file = e.dataTransfer?.files[0];
+      if (file) open(file);
+    };
+    window.addEventListener('dragover', onDragOver);
+    window.addEventListener('drop', onDrop);
+    return () => {
+      window.removeEventListener('dragover', onDragOver);
+      window.removeEventListener('drop', onDrop);
+    };
+  }, [open]);
+}
+
 function Notice() {
   const notice = useStore(filesUi, (s) => s.notice);
   useEffect(() => {
     if (!notice) return undefined;
-    const timer = setTimeout(() => filesUi.getState().setNotice(''), 12_000);
+    const timer = setTimeout(() => filesUi.getState().setNotice(''), 8000);
     return () => clearTimeout(timer);
   }, [notice]);
   if (!notice) return null;
@@ -112,14 +137,29 @@ function OpenFailureDialog() {
   );
 }
 
+/** "Autosaved at 14:02:31": shown for a moment after each write (errors stay), just above the status bar. */
 function AutosaveStatus() {
   const at = useStore(filesUi, (s) => s.autosavedAt);
   const error = useStore(filesUi, (s) => s.autosaveError);
+  const pending = useStore(filesUi, (s) => s.autosavePending);
   const dirty = useStore(useDocumentStore(), (s) => s.dirty);
+  const [fresh, setFresh] = useState(false);
+  useEffect(() => {
+    if (!at) return undefined;
+    setFresh(true);
+    const timer = setTimeout(() => setFresh(false), 2500);
+    return () => clearTimeout(timer);
+  }, [at]);
   const text = error || (at ? `Autosaved in this browser at ${new Date(at).toLocaleTimeString()}${dirty ? ' · not saved to a file' : ''}` : '');
   if (!text) return null;
   return (
-    <div className={error ? 'rs-autosave rs-error-text' : 'rs-autosave'} data-testid="autosave-status" data-saved-at={at ?? ''} role="status">
+    <div
+      className={`rs-autosave${error ? ' rs-error-text' : ''}${error || fresh ? ' rs-shown' : ''}`}
+      data-testid="autosave-status"
+      data-saved-at={at ?? ''}
+      data-pending={pending}
+      role="status"
+    >
       {text}
     </div>
   );

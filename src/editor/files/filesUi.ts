@@ -23,6 +23,8 @@ export interface FilesUiState {
   /** When the autosave last reached IndexedDB (ms since epoch), or an error text. */
   readonly autosavedAt: number | undefined;
   readonly autosaveError: string;
+  /** A change is waiting to be written (or being written). */
+  readonly autosavePending: boolean;
   /** Opens the browser's file picker; set by <FilesHost> while mounted. */
   readonly openPicker: (() => void) | undefined;
 
@@ -31,6 +33,7 @@ export interface FilesUiState {
   showOpenFailure(f: OpenFailure | undefined): void;
   setNotice(text: string): void;
   setAutosaved(at: number | undefined, error?: string): void;
+  setAutosavePending(pending: boolean): void;
   setOpenPicker(fn: (() => void) | undefined): void;
 }
 
@@ -40,11 +43,13 @@ export const filesUi = createStore<FilesUiState>()((set) => ({
   notice: '',
   autosavedAt: undefined,
   autosaveError: '',
+  autosavePending: false,
   openPicker: undefined,
   confirm: (confirmation) => set({ confirmation }),
   closeConfirmation: () => set({ confirmation: undefined }),
   showOpenFailure: (openFailure) => set({ openFailure }),
   setNotice: (notice) => set({ notice }),
   setAutosaved: (autosavedAt, autosaveError = '') => set({ autosavedAt, autosaveError }),
+  setAutosavePending: (autosavePending) => set({ autosavePending }),
   setOpenPicker: (openPicker) => set({ openPicker }),
 }));

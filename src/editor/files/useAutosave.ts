@@ -47,21 +47,29 @@ export function useAutosave(store: DocumentStore): void {
   useEffect(() => {
     if (!ready) return undefined;
     let timer: ReturnType<typeof setTimeout> | undefined;
+    let inFlight = 0;
     let written: { project: unknown; dirty: boolean } | undefined;
+    const settle = () => filesUi.getState().setAutosavePending(timer !== undefined || inFlight > 0);
     const write = () => {
       timer = undefined;
       const { project, dirty } = store.getState();
-      if (written && written.project === project && written.dirty === dirty) return;
+      if (written && written.project === project && written.dirty === dirty) return settle();
       written = { project, dirty };
+      inFlight += 1;
+      settle();
       writeAutosave(makeAutosaveRecord(project, dirty, Date.now())).then(
         () => filesUi.getState().setAutosaved(Date.now()),
         (e: unknown) => filesUi.getState().setAutosaved(undefined, `Autosave failed: ${(e as Error).message}`),
-      );
+      ).finally(() => {
+        inFlight -= 1;
+        settle();
+      });
     };
     const unsubscribe = store.subscribe((s, prev) => {
       if (s.project === prev.project && s.dirty === prev.dirty) return;
       if (timer) clearTimeout(timer);
       timer = setTimeout(write, AUTOSAVE_DELAY_MS);
+      filesUi.getState().setAutosavePending(true);
     });
     const flush = () => {
       if (timer) {

@@ -17,6 +17,7 @@ export function PointsTable() {
   }, [report]);
   if (view.link !== 'open') return null;
   const simulated = new Set(view.devices.filter((d) => d.kind === 'simulated').map((d) => d.id));
+  const manyDevices = view.devices.length > 1;
   return (
     <section className="rs-hw-section" aria-label="I/O points">
       {report.problems.length > 0 && (
@@ -34,7 +35,7 @@ export function PointsTable() {
             <th>Address</th>
             <th>Variable</th>
             <th>Type</th>
-            <th>Device</th>
+            {manyDevices && <th>Device</th>}
             <th>Value</th>
             <th>Quality</th>
           </tr>
@@ -42,7 +43,7 @@ export function PointsTable() {
         <tbody>
           {view.points.map((p) => (
             <PointRow key={p.address} point={p} value={view.values[p.address]} quality={view.quality[p.address]}
-              variables={names.get(p.address)} settable={p.dir === 'in' && simulated.has(p.device)} />
+              variables={names.get(p.address)} settable={p.dir === 'in' && simulated.has(p.device)} showDevice={manyDevices} />
           ))}
         </tbody>
       </table>
@@ -56,9 +57,10 @@ interface RowProps {
   readonly quality: string | undefined;
   readonly variables: readonly string[] | undefined;
   readonly settable: boolean;
+  readonly showDevice: boolean;
 }
 
-function PointRow({ point, value, quality, variables, settable }: RowProps) {
+function PointRow({ point, value, quality, variables, settable, showDevice }: RowProps) {
   return (
     <tr data-testid={`hw-point-${point.address}`} className={quality === 'stale' ? 'rs-hw-stale' : undefined}>
       <td>
@@ -66,7 +68,7 @@ function PointRow({ point, value, quality, variables, settable }: RowProps) {
       </td>
       <td>{variables?.join(', ') ?? ''}</td>
       <td>{point.type}</td>
-      <td>{point.device}</td>
+      {showDevice && <td>{point.device}</td>}
       <td>{settable ? <SimulatedInput point={point} value={value} /> : <span data-testid="hw-value">{showValue(value)}</span>}</td>
       <td className={`rs-hw-quality-${quality ?? 'none'}`}>{quality ?? '—'}</td>
     </tr>

@@ -3,9 +3,7 @@
 import { blockSignature } from '../../model/blocks';
 import { boxLayout } from '../../model/boxLayout';
 import type { BoxElement } from '../../model/elements';
-import type { ElementId } from '../../model/ids';
 import { useDocumentStore } from '../../store/documentStore';
-import { patchElement, type KindPatch } from './patchElement';
 import { BindingField } from './BindingField';
 import { CommitInput } from '../variables/CommitInput';
 
@@ -24,7 +22,7 @@ export function BoxInspector({ box }: { box: BoxElement }) {
   if (!signature || !layout) {
     return <p className="rs-error-text">"{box.blockType}" is not a standard function or function block; delete the box or load a project that defines it.</p>;
   }
-  const update = (id: ElementId, patch: KindPatch) => patchElement(store, id, patch);
+  const update = store.getState().updateElement;
   const isFb = signature.kind === 'fb';
   const powerIn = isFb ? layout.inputs.find((p) => p.type === 'BOOL')?.name : 'EN';
   const powerOut = isFb ? layout.outputs.find((p) => p.type === 'BOOL')?.name : 'ENO';

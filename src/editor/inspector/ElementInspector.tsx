@@ -1,9 +1,7 @@
 // The selected element: what it is, where it is, and its variable / type / target.
 import { COIL_TYPES, CONTACT_TYPES, type CoilType, type ContactType, type LdElement } from '../../model/elements';
 import type { Network } from '../../model/project';
-import type { ElementId } from '../../model/ids';
 import { useDocumentStore } from '../../store/documentStore';
-import { patchElement, type KindPatch } from './patchElement';
 import { CommitInput } from '../variables/CommitInput';
 import { BindingField } from './BindingField';
 import { BoxInspector } from './BoxInspector';
@@ -18,7 +16,7 @@ interface Props {
 
 export function ElementInspector({ element: el, network, networkIndex, labels }: Props) {
   const store = useDocumentStore();
-  const update = (id: ElementId, patch: KindPatch) => patchElement(store, id, patch);
+  const update = store.getState().updateElement;
   return (
     <div data-testid="element-inspector">
       <h2>{elementTitle(el)}</h2>

@@ -35,16 +35,12 @@ export function TabbedPanel({ panels, label, className }: { readonly panels: rea
           </button>
         ))}
       </div>
-      {panels.map((p) => {
-        const Component = p.component;
-        const shown = p.id === current?.id;
-        // Panels stay mounted so their state (filters, scroll) survives switching tabs.
-        return (
-          <div key={p.id} id={`rs-tabpanel-${p.id}`} role="tabpanel" aria-labelledby={`rs-tab-${p.id}`} className="rs-tabpanel" hidden={!shown}>
-            <Component />
-          </div>
-        );
-      })}
+      {current && (
+        // Only the open tab is mounted: a hidden panel costs nothing on big projects.
+        <div id={`rs-tabpanel-${current.id}`} role="tabpanel" aria-labelledby={`rs-tab-${current.id}`} className="rs-tabpanel">
+          <current.component />
+        </div>
+      )}
     </section>
   );
 }

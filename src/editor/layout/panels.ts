@@ -8,6 +8,13 @@ import { InspectorPanel } from '../inspector/InspectorPanel';
 import { ProblemsPanel } from '../problems/ProblemsPanel';
 import { VariablesPanel } from '../variables/VariablesPanel';
 import type { NetworkOverlayHook } from '../canvas/overlay';
+import { useSimNetworkOverlay } from '../sim/canvasOverlay';
+import { InputsPanel } from '../sim/InputsPanel';
+import { SimHostMount } from '../sim/SimHostMount';
+import { SimToolbar } from '../sim/SimToolbar';
+import { SimulationPanel } from '../sim/SimulationPanel';
+import { TrendPanel } from '../sim/TrendPanel';
+import { WatchPanel } from '../sim/WatchPanel';
 
 export interface PanelSlot {
   readonly id: string;
@@ -25,16 +32,25 @@ export const RIGHT_PANELS: readonly PanelSlot[] = [
   { id: 'inspector', title: 'Inspector', component: InspectorPanel },
   { id: 'variables', title: 'Variables', component: VariablesPanel },
   { id: 'hardware', title: 'Hardware', component: HardwarePanel },
+  { id: 'inputs', title: 'Inputs', component: InputsPanel },
 ];
 
 /** Tabs of the bottom panel; the first is open at start. */
-export const BOTTOM_PANELS: readonly PanelSlot[] = [{ id: 'problems', title: 'Problems', component: ProblemsPanel }];
+export const BOTTOM_PANELS: readonly PanelSlot[] = [
+  { id: 'problems', title: 'Problems', component: ProblemsPanel },
+  { id: 'watch', title: 'Watch', component: WatchPanel },
+  { id: 'trend', title: 'Trend', component: TrendPanel },
+  { id: 'breakpoints', title: 'Breakpoints & forces', component: SimulationPanel },
+];
 
 /** Items in the top bar, after the menus (e.g. simulation controls). */
-export const TOP_BAR_ITEMS: readonly BarSlot[] = [];
+export const TOP_BAR_ITEMS: readonly BarSlot[] = [{ id: 'simulation', component: SimToolbar }];
 
 /** Mounted once inside the stores' providers. */
-export const HOSTS: readonly BarSlot[] = [{ id: 'files', component: FilesHost }];
+export const HOSTS: readonly BarSlot[] = [
+  { id: 'files', component: FilesHost },
+  { id: 'simulation', component: SimHostMount },
+];
 
 /** Power flow and live values on the canvas (see src/editor/canvas/overlay.ts); undefined: none. */
-export const CANVAS_OVERLAY: NetworkOverlayHook | undefined = undefined;
+export const CANVAS_OVERLAY: NetworkOverlayHook | undefined = useSimNetworkOverlay;

@@ -1,52 +1,37 @@
-// Live diagnostics of the open project: checkProject runs shortly after the document stops
-// changing, never while a stroke is being drawn, and one result is shared by every caller
-// (problems list, canvas markers) for the same project version.
+// Live diagnostics of the open project: checked shortly after the document stops changing, in a
+// Web Worker, so drawing never waits for the checks. One result per project version is shared
+// by every caller (problems list, canvas markers, status bar).
 import { useEffect, useMemo, useState } from 'react';
 import type { Diagnostic } from '../../engine/api';
-import { checkProject } from '../../engine/check';
 import type { Project } from '../../model/project';
 import { selectProject, useDocument } from '../../store/documentStore';
+import { checkedDiagnostics, onChecked, requestCheck } from './checker';
 
 /** Wait after the last change before checking again, ms. */
-export const CHECK_DELAY_MS = 200;
+export const CHECK_DELAY_MS = 150;
 
-const cache = new WeakMap<Project, readonly Diagnostic[]>();
+const NONE: readonly Diagnostic[] = [];
 
-/** The diagnostics of a project version, computed once. A checker failure is reported, not thrown. */
-export function diagnosticsOf(project: Project): readonly Diagnostic[] {
-  const hit = cache.get(project);
-  if (hit) return hit;
-  let result: readonly Diagnostic[];
-  try {
-    result = checkProject(project);
-  } catch (e) {
-    result = [
-      {
-        severity: 'error',
-        rule: 'LD-E000',
-        pou: project.pous[0]?.name ?? '',
-        network: -1,
-        message: `The checker stopped on this program (${(e as Error).message}); please report it with the project file.`,
-      },
-    ];
-  }
-  cache.set(project, result);
-  return result;
-}
-
-/** The current diagnostics (of the project as it was CHECK_DELAY_MS after its last change). */
+/** The diagnostics of the latest checked version of the open project (empty until the first check). */
 export function useDiagnostics(): readonly Diagnostic[] {
   const project = useDocument(selectProject);
-  const [checked, setChecked] = useState<{ project: Project | undefined; diagnostics: readonly Diagnostic[] }>({
-    project: undefined,
-    diagnostics: [],
-  });
+  const [shown, setShown] = useState<{ project: Project | undefined; diagnostics: readonly Diagnostic[] }>({ project: undefined, diagnostics: NONE });
   useEffect(() => {
-    if (checked.project === project) return undefined;
-    const timer = setTimeout(() => setChecked({ project, diagnostics: diagnosticsOf(project) }), cache.has(project) ? 0 : CHECK_DELAY_MS);
-    return () => clearTimeout(timer);
-  }, [project, checked.project]);
-  return checked.diagnostics;
+    if (shown.project === project) return undefined;
+    const take = () => {
+      const diagnostics = checkedDiagnostics(project);
+      if (diagnostics) setShown({ project, diagnostics });
+      return diagnostics !== undefined;
+    };
+    if (take()) return undefined;
+    const unsubscribe = onChecked(take);
+    const timer = setTimeout(() => requestCheck(project), CHECK_DELAY_MS);
+    return () => {
+      clearTimeout(timer);
+      unsubscribe();
+    };
+  }, [project, shown.project]);
+  return shown.diagnostics;
 }
 
 /** Diagnostics of one POU grouped by network index, for cell markers on the canvas. */

@@ -13,7 +13,7 @@ const where = (d: Pick<Diagnostic, 'network' | 'networkLabel'>) =>
   d.network < 0 ? 'variables' : `network ${d.network + 1}${d.networkLabel ? ` (${d.networkLabel})` : ''}`;
 
 export const describeFault = (f: Fault) =>
-  `${f.kind === 'watchdog' ? 'Watchdog fault' : 'Runtime fault'} in ${f.pou} ${where(f)}: ${f.message}`;
+  `${f.kind === 'watchdog' ? 'Watchdog fault' : 'Runtime fault'} in ${f.pou} ${where(f)}: ${f.message.replace(/^watchdog:\s*/, '')}`;
 
 const MAX_LISTED = 5;
 

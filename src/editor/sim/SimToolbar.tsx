@@ -4,7 +4,6 @@ import { useDocumentStore } from '../../store/documentStore';
 import type { SimState } from '../../store/simStore';
 import { SimNotices } from './SimNotices';
 import { useSim, useSimStore } from './simContext';
-import { useOnlineChange } from './useOnlineChange';
 import './sim.css';
 
 const selectMode = (s: SimState) => s.mode;
@@ -18,7 +17,11 @@ const selectOverruns = (s: SimState) => s.overruns;
 
 const MODE_LABEL = { stopped: 'Stopped', running: 'Running', paused: 'Paused', faulted: 'Faulted' } as const;
 
-export const formatMs = (ms: number): string => (ms < 1 ? `${(ms * 1000).toFixed(0)} µs` : `${ms.toFixed(ms < 10 ? 2 : 1)} ms`);
+/** Last / average / maximum execution time in one unit, chosen by the maximum. */
+export function formatExec(last: number, avg: number, max: number): string {
+  if (max < 1) return `${[last, avg, max].map((v) => (v * 1000).toFixed(0)).join(' / ')} µs`;
+  return `${[last, avg, max].map((v) => v.toFixed(max < 10 ? 2 : 1)).join(' / ')} ms`;
+}
 export const formatPlcTime = (ms: number): string => (ms < 10_000 ? `${ms} ms` : `${(ms / 1000).toFixed(2)} s`);
 
 export function SimToolbar() {
@@ -26,7 +29,6 @@ export function SimToolbar() {
   const documents = useDocumentStore();
   const mode = useSim(selectMode);
   const [stepCount, setStepCount] = useState('10');
-  useOnlineChange();
   useEffect(() => {
     // Keep the scripting handle even if the shell assigned window.rungsmith after the store was made.
     const w = window as unknown as { rungsmith?: Record<string, unknown> };
@@ -49,7 +51,7 @@ export function SimToolbar() {
         onClick={() => sim.getState().pause()} data-testid="sim-pause">
         ❚❚ Pause
       </button>
-      <button type="button" className="rs-sim-btn" title="Step one scan (virtual clock: time advances by one cycle)"
+      <button type="button" className="rs-sim-btn" title="Step one scan (virtual clock: PLC time advances by one cycle)"
         disabled={running || faulted} onClick={() => sim.getState().step(project(), 1)} data-testid="sim-step-scan">
         Step scan
       </button>
@@ -70,13 +72,15 @@ export function SimToolbar() {
         onClick={() => sim.getState().reset()} data-testid="sim-reset">
         ■ Reset
       </button>
-      <button type="button" className="rs-sim-btn" title="Warm restart: RETAIN and M/SM/RM variables keep their values"
+      <button type="button" className="rs-sim-btn" title="Warm restart: RETAIN and M/SM/RM variables keep their values, the others restart"
         onClick={() => sim.getState().warmRestart()} data-testid="sim-warm">
         Warm restart
       </button>
       <CycleInput />
       <SimStatus />
-      <SimNotices />
+      <div className="rs-sim-notices">
+        <SimNotices />
+      </div>
     </div>
   );
 }
@@ -115,7 +119,7 @@ function SimStatus() {
       <span title="Scans since the last cold restart">scan <b data-testid="sim-scan">{scan}</b></span>
       <span title="PLC time at the start of the last scan">t <b data-testid="sim-time">{formatPlcTime(time)}</b></span>
       <span title="Execution time per scan: last / average / maximum">
-        exec {formatMs(last)} / {formatMs(avg)} / {formatMs(max)}
+        exec <b data-testid="sim-exec">{formatExec(last, avg, max)}</b>
       </span>
       {overruns > 0 && <span title="Scans dropped because the worker could not keep the cycle">overruns {overruns}</span>}
     </span>

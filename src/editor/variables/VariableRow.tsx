@@ -1,5 +1,5 @@
 // One row of the variable table: every field edits the document as one undoable step on commit.
-import { FB_SIGNATURES } from '../../model/blocks';
+import { FB_SIGNATURES, isFbType } from '../../model/blocks';
 import { ELEMENTARY_TYPES, parseLocation } from '../../model/iecTypes';
 import type { Variable, VarClass } from '../../model/project';
 import { CommitInput } from './CommitInput';
@@ -79,22 +79,11 @@ export function VariableRow({ variable: v, issues, showClass, focusName, onChang
             </optgroup>
           </select>
         </td>
-        {showClass && (
-          <td>
-            <select aria-label="Class" className="rs-cell-input" value={v.varClass} onChange={(e) => onChange({ varClass: e.target.value as VarClass })}>
-              {(Object.keys(CLASS_LABELS) as VarClass[]).map((c) => (
-                <option key={c} value={c}>
-                  {CLASS_LABELS[c]}
-                </option>
-              ))}
-            </select>
-          </td>
-        )}
         <td>
           <CommitInput
             aria-label="Address"
             className="rs-cell-input rs-mono"
-            placeholder="%IX0.0"
+            placeholder={isFbType(v.type) ? '' : v.type === 'BOOL' ? '%QX0.0' : '%MW0'}
             spellCheck={false}
             value={v.location ?? ''}
             onCommit={(text) => onChange({ location: normaliseLocation(text) })}
@@ -111,6 +100,17 @@ export function VariableRow({ variable: v, issues, showClass, focusName, onChang
             {...invalid('initial')}
           />
         </td>
+        {showClass && (
+          <td>
+            <select aria-label="Class" className="rs-cell-input" value={v.varClass} onChange={(e) => onChange({ varClass: e.target.value as VarClass })}>
+              {(Object.keys(CLASS_LABELS) as VarClass[]).map((c) => (
+                <option key={c} value={c}>
+                  {CLASS_LABELS[c]}
+                </option>
+              ))}
+            </select>
+          </td>
+        )}
         <td className="rs-center">
           <input type="checkbox" aria-label="RETAIN" checked={v.retain} onChange={(e) => onChange({ retain: e.target.checked })} {...invalid('retain')} />
         </td>

@@ -79,9 +79,9 @@ export function VariablesPanel() {
             <tr>
               <th>Name</th>
               <th>Type</th>
-              {!showGlobals && <th>Class</th>}
               <th>Address</th>
               <th>Initial</th>
+              {!showGlobals && <th>Class</th>}
               <th title="Keeps its value over a warm restart">RETAIN</th>
               <th title="Read-only">CONST</th>
               <th>Comment</th>

@@ -1,17 +1,17 @@
-// Network -> straight-line JavaScript. Each network becomes one function over preallocated
-// storage (BOOL variables in a Uint8Array, other numbers in a Float64Array, 64-bit integers in an
-// array of bigints, FB instances as objects) that returns the index of the next network to run.
-// Power-flow nets are locals (0/1); nothing is allocated while a scan runs.
+// Networks -> straight-line JavaScript over preallocated storage (BOOL variables in a Uint8Array,
+// other numbers in a Float64Array, 64-bit integers in an array of bigints, FB instances as
+// objects). A run of networks becomes one function returning the index of the next network to
+// run (jumps, RETURN). Power-flow nets are locals (0/1); nothing is allocated while a scan runs.
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { ArgIR, NetworkIR, Op, OutIR, Source } from './ir';
 import { storeOf, type Access } from './symbols';
 
 /** What the generated factory receives, in this order. */
-export const FACTORY_PARAMS = ['b', 'n', 'g', 'fb', 'fns', 'e', 'P', 'K', 'ctx'] as const;
+export const FACTORY_PARAMS = ['b', 'n', 'g', 'fb', 'fns', 'e', 'P', 'K', 'ctx', 'R', 'X'] as const;
 
 export interface GeneratedNetwork {
-  /** Body of `new Function(...FACTORY_PARAMS, body)`; returns the network function `(now) => next`. */
+  /** Body of `new Function(...FACTORY_PARAMS, body)`; returns the segment function `(now, scan) => next`. */
   readonly body: string;
   /** Values the code reads from K (bigints and non-finite numbers). */
   readonly constants: readonly Value[];
@@ -141,19 +141,37 @@ class Emitter {
   }
 }
 
-export function generateNetwork(ir: NetworkIR, functions: readonly ResolvedFunction[], forced: ForcedSlots): GeneratedNetwork {
+/**
+ * One function for a run of consecutive networks (a segment): `(now, scan) => next network`.
+ * Networks are inlined one after another, so a scan makes one call per segment, not per network.
+ * A network whose jump or RETURN fires leaves the segment early; X[0] tells how many networks ran
+ * (for the watchdog) and R[k] records the scan in which network k last ran (for the snapshot).
+ */
+export function generateSegment(irs: readonly NetworkIR[], functions: readonly ResolvedFunction[], forced: ForcedSlots): GeneratedNetwork {
   const em = new Emitter(forced, functions);
   const L = em.lines;
-  const rails = new Set(ir.railNets);
-  const nets = Array.from({ length: ir.netCount }, (_, i) => `n${i} = ${rails.has(i) ? 1 : 0}`);
-  L.push(`let ${[...nets, `next = ${ir.index + 1}`, 'go = 0', 't = 0', 'r', 'eno = 0'].join(', ')};`);
-  for (const op of ir.ops) emitOp(em, op);
-  for (let i = 0; i < ir.netCount; i++) L.push(`P[${i}] = n${i};`);
-  L.push('return next;');
+  const first = irs[0]!.index;
+  L.push('let t = 0, r, eno = 0, next = 0;');
+  irs.forEach((ir, k) => {
+    const rails = new Set(ir.railNets);
+    const nets = Array.from({ length: ir.netCount }, (_, i) => `n${i} = ${rails.has(i) ? 1 : 0}`);
+    const controls = ir.ops.some((op) => op.op === 'jump' || op.op === 'return');
+    const power = em.hoist(`P[${ir.index}]`, 'p');
+    L.push(`{ // network ${ir.index + 1}`);
+    L.push(`R[${ir.index}] = scan;`);
+    if (nets.length) L.push(`let ${nets.join(', ')};`);
+    if (controls) L.push(`let go = 0; next = ${ir.index + 1};`);
+    for (const op of ir.ops) emitOp(em, op);
+    for (let i = 0; i < ir.netCount; i++) L.push(`${power}[${i}] = n${i};`);
+    if (controls) L.push(`if (next !== ${ir.index + 1}) { X[0] = ${k + 1}; return next; }`);
+    L.push('}');
+  });
+  L.push(`X[0] = ${irs.length};`);
+  L.push(`return ${irs[irs.length - 1]!.index + 1};`);
   const body = [
     '"use strict";',
     ...em.head,
-    `return function network_${ir.index + 1}(now) {`,
+    `return function networks_${first + 1}_to_${irs[irs.length - 1]!.index + 1}(now, scan) {`,
     ...L.filter((l) => l !== '').map((l) => `  ${l}`),
     '};',
   ].join('\n');
@@ -165,19 +183,22 @@ function emitOp(em: Emitter, op: Op): void {
   switch (op.op) {
     case 'contact': {
       const i = `n${op.inNet}`;
-      const o = `n${op.outNet}`;
       const v = op.src ? em.readBit(op.src) : '0';
+      // With an own result: `nK = ...; nOut |= nK;` else straight into the (OR-ed) output net.
+      const o = op.ownNet !== undefined ? `n${op.ownNet}` : `n${op.outNet}`;
+      const set = op.ownNet !== undefined ? '=' : '|=';
+      const tail = op.ownNet !== undefined ? ` n${op.outNet} |= ${o};` : '';
       switch (op.contact) {
         case 'NO':
-          return void L.push(`${o} |= ${i} & ${v};`);
+          return void L.push(`${o} ${set} ${i} & ${v};${tail}`);
         case 'NC':
-          return void L.push(`${o} |= ${i} & (${v} ^ 1);`);
+          return void L.push(`${o} ${set} ${i} & (${v} ^ 1);${tail}`);
         case 'NOT':
-          return void L.push(`${o} |= ${i} ^ 1;`);
+          return void L.push(`${o} ${set} ${i} ^ 1;${tail}`);
         case 'P':
-          return void L.push(`t = ${v}; ${o} |= ${i} & t & (e[${op.edge}] ^ 1); e[${op.edge}] = t;`);
+          return void L.push(`t = ${v}; ${o} ${set} ${i} & t & (e[${op.edge}] ^ 1); e[${op.edge}] = t;${tail}`);
         case 'N':
-          return void L.push(`t = ${v} ^ 1; ${o} |= ${i} & t & (e[${op.edge}] ^ 1); e[${op.edge}] = t;`);
+          return void L.push(`t = ${v} ^ 1; ${o} ${set} ${i} & t & (e[${op.edge}] ^ 1); e[${op.edge}] = t;${tail}`);
       }
       return;
     }

@@ -28,7 +28,17 @@ export interface OutIR {
 }
 
 export type Op =
-  | { readonly op: 'contact'; readonly node: number; readonly contact: ContactType; readonly src?: Access; readonly inNet: number; readonly outNet: number; readonly edge?: number }
+  | {
+      readonly op: 'contact';
+      readonly node: number;
+      readonly contact: ContactType;
+      readonly src?: Access;
+      readonly inNet: number;
+      readonly outNet: number;
+      /** The contact's own result when other outputs join its right side (for the power display). */
+      readonly ownNet?: number;
+      readonly edge?: number;
+    }
   | { readonly op: 'coil'; readonly node: number; readonly coil: CoilType; readonly dst: Access; readonly inNet: number; readonly outNet: number; readonly edge?: number }
   | { readonly op: 'jump'; readonly node: number; readonly inNet: number; readonly target: number }
   | { readonly op: 'return'; readonly node: number; readonly inNet: number }

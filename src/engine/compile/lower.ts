@@ -41,7 +41,7 @@ export class NetMap {
     return this.power.size;
   }
   railNets(): number[] {
-    return [...this.power].filter(([net]) => this.g.nets[net]!.leftRail).map(([, id]) => id);
+    return [...this.power].filter(([net]) => net >= 0 && this.g.nets[net]!.leftRail).map(([, id]) => id);
   }
   /** True when something besides the terminal itself is attached to the net (a wire or another element). */
   isWired(net: number): boolean {
@@ -81,8 +81,21 @@ export function lowerNetwork(ctx: PouContext, network: Network, index: number, r
       case 'contact': {
         const src = el.contact === 'NOT' ? undefined : contactOperand(ctx, el, r);
         const edge = el.contact === 'P' || el.contact === 'N' ? ctx.edgeCount++ : undefined;
-        const outNet = nets.powerNet(node.outputs[0]!.net);
-        ops.push({ op: 'contact', node: node.index, contact: el.contact, ...(src ? { src } : {}), inNet, outNet, ...(edge !== undefined ? { edge } : {}) });
+        const outGraphNet = node.outputs[0]!.net;
+        const outNet = nets.powerNet(outGraphNet);
+        // Where other outputs join this contact's right side, keep its own result for the power display.
+        const joined = g.nets[outGraphNet]!.sources.length > 1 || g.nets[outGraphNet]!.leftRail;
+        const ownNet = joined ? nets.powerNet(-1 - ni) : undefined;
+        ops.push({
+          op: 'contact',
+          node: node.index,
+          contact: el.contact,
+          ...(src ? { src } : {}),
+          inNet,
+          outNet,
+          ...(ownNet !== undefined ? { ownNet } : {}),
+          ...(edge !== undefined ? { edge } : {}),
+        });
         break;
       }
       case 'coil': {
@@ -123,6 +136,11 @@ export function lowerNetwork(ctx: PouContext, network: Network, index: number, r
       const t = name === undefined ? ts[0] : ts.find((x) => x.pin === name);
       return t && nets.hasPower(t.net) ? nets.powerNet(t.net) : -1;
     };
+    if (el.kind === 'contact') {
+      const ni = g.nodes.indexOf(node);
+      return [pin(node.inputs, undefined), nets.hasPower(-1 - ni) ? nets.powerNet(-1 - ni) : pin(node.outputs, undefined)];
+    }
+    if (el.kind === 'coil') return [pin(node.inputs, undefined), pin(node.inputs, undefined)]; // a coil passes its left link on
     if (el.kind !== 'box') return [pin(node.inputs, undefined), pin(node.outputs, undefined)];
     const pIn = node.layout?.inputs.find((p) => p.type === 'BOOL')?.name;
     const pOut = node.layout?.outputs.find((p) => p.type === 'BOOL')?.name;

@@ -4,12 +4,17 @@
 import type { Value } from '../../model/iecTypes';
 import type { Fault, NetworkPower, Plc, PlcOptions, PowerSnapshot, ScanReport, StepReport } from '../api';
 import type { FnContext } from '../library/fnTypes';
-import { FACTORY_PARAMS, generateNetwork, slotKey } from '../compile/codegen';
+import { FACTORY_PARAMS, generateSegment, slotKey } from '../compile/codegen';
 import type { CompiledProgram } from '../compile/program';
 import type { Access, VarSymbol } from '../compile/symbols';
 import { coerce, Memory } from './memory';
 
-type NetworkFn = (now: number) => number;
+/** Runs a segment of consecutive networks: `(time, scan) => next network` (-1 after RETURN). */
+type SegmentFn = (now: number, scan: number) => number;
+
+/** Most networks inlined in one generated function (V8 optimises functions up to a size). */
+const SEGMENT_OPS = 400;
+const SEGMENT_NETWORKS = 64;
 
 // Wall clock for the watchdog and execMs (the engine core has no DOM or Node typings).
 const perf = (globalThis as { performance?: { now(): number } }).performance;
@@ -19,7 +24,14 @@ export class ScanPlc implements Plc {
   readonly pou: string;
   readonly profile: CompiledProgram['profile'];
   private readonly mem: Memory;
-  private readonly nets: NetworkFn[];
+  /** Segment functions by their first network; undefined inside a segment. */
+  private readonly segments: (SegmentFn | undefined)[];
+  /** First network of the segment holding each network. */
+  private readonly segmentOf: Int32Array;
+  /** One-network functions for stepping, built on first use. */
+  private readonly singles: (SegmentFn | undefined)[];
+  /** Networks run by the last segment call (written by generated code). */
+  private readonly ran = new Int32Array(1);
   /** Power-flow net values per network, written by the generated code. */
   private readonly power: Uint8Array[];
   /** Scan number in which each network last ran. */
@@ -72,16 +84,46 @@ export class ScanPlc implements Plc {
         }
       }
     });
-    this.nets = program.networks.map((_, i) => this.build(i));
+    const count = program.networks.length;
+    this.segments = new Array<SegmentFn | undefined>(count).fill(undefined);
+    this.singles = new Array<SegmentFn | undefined>(count).fill(undefined);
+    this.segmentOf = new Int32Array(count);
+    const targets = new Set(program.networks.flatMap((ir) => ir.ops.flatMap((op) => (op.op === 'jump' ? [op.target] : []))));
+    let start = 0;
+    let ops = 0;
+    for (let i = 0; i < count; i++) {
+      const size = program.networks[i]!.ops.length + 1;
+      if (i > start && (targets.has(i) || ops + size > SEGMENT_OPS || i - start >= SEGMENT_NETWORKS)) {
+        start = i;
+        ops = 0;
+      }
+      this.segmentOf[i] = start;
+      ops += size;
+    }
+    for (let i = 0; i < count; i++) if (this.segmentOf[i] === i) this.segments[i] = this.buildSegment(i);
     this.coldRestart();
   }
 
-  private build(index: number): NetworkFn {
+  private segmentEnd(first: number): number {
+    let end = first + 1;
+    while (end < this.segmentOf.length && this.segmentOf[end] === first) end++;
+    return end;
+  }
+
+  private build(first: number, end: number): SegmentFn {
     const forced = new Set([...this.forces.keys()].map((v) => slotKey(v.store, v.slot)));
-    const gen = generateNetwork(this.program.networks[index]!, this.program.functions, forced);
-    const factory = new Function(...FACTORY_PARAMS, gen.body) as (...args: unknown[]) => NetworkFn;
+    const gen = generateSegment(this.program.networks.slice(first, end), this.program.functions, forced);
+    const factory = new Function(...FACTORY_PARAMS, gen.body) as (...args: unknown[]) => SegmentFn;
     const m = this.mem;
-    return factory(m.b, m.n, m.g, m.fbs, this.program.functions, m.edges, this.power[index], gen.constants, this.ctx);
+    return factory(m.b, m.n, m.g, m.fbs, this.program.functions, m.edges, this.power, gen.constants, this.ctx, this.ranIn, this.ran);
+  }
+
+  private buildSegment(first: number): SegmentFn {
+    return this.build(first, this.segmentEnd(first));
+  }
+
+  private single(i: number): SegmentFn {
+    return (this.singles[i] ??= this.build(i, i + 1));
   }
 
   get scanCount(): number {
@@ -108,7 +150,7 @@ export class ScanPlc implements Plc {
       const v = this.inputs[i]!;
       if (!this.forces.has(v)) this.mem.store(v, this.inputImage[i]!);
     }
-    this.cursor = this.nets.length > 0 ? 0 : -2;
+    this.cursor = this.segmentOf.length > 0 ? 0 : -2;
     this.evals = 0;
     this.backJump = -1;
   }
@@ -122,9 +164,9 @@ export class ScanPlc implements Plc {
 
   /** Runs networks from the cursor; stops after one when `single`. Returns the network run last. */
   private run(single: boolean): number {
-    const nets = this.nets;
-    const count = nets.length;
-    const ranIn = this.ranIn;
+    const count = this.segmentOf.length;
+    const segments = this.segments;
+    const ran = this.ran;
     const scan = this.count;
     const t = this.time;
     const maxEvals = this.maxEvals;
@@ -132,14 +174,14 @@ export class ScanPlc implements Plc {
     let i = this.cursor;
     let last = -1;
     while (i >= 0 && i < count) {
-      ranIn[i] = scan;
-      last = i;
-      const next = nets[i]!(t);
-      evals++;
-      if (next <= i && next >= 0) this.backJump = i;
-      if (evals >= maxEvals || ((evals & 1023) === 0 && now() - this.scanStart > this.maxScanMs)) {
+      const fn = single ? this.single(i) : (segments[i] ?? this.single(i));
+      const next = fn(t, scan);
+      evals += ran[0]!;
+      last = i + ran[0]! - 1;
+      if (next <= last && next >= 0) this.backJump = last;
+      if (evals >= maxEvals || ((evals & 1023) < ran[0]! && now() - this.scanStart > this.maxScanMs)) {
         this.evals = evals;
-        this.trip(i);
+        this.trip(last);
         return last;
       }
       i = next;
@@ -269,7 +311,11 @@ export class ScanPlc implements Plc {
 
   /** Regenerates the networks that write a variable, so a forced one is no longer written. */
   private rebuildWriters(v: VarSymbol): void {
-    for (const i of this.writers.get(slotKey(v.store, v.slot)) ?? []) this.nets[i] = this.build(i);
+    for (const i of this.writers.get(slotKey(v.store, v.slot)) ?? []) {
+      this.singles[i] = undefined;
+      const first = this.segmentOf[i]!;
+      this.segments[first] = this.buildSegment(first);
+    }
   }
 
   setInputs(values: Readonly<Record<string, Value>>): void {

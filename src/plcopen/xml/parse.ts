@@ -86,7 +86,7 @@ export function parseXml(src: string): XmlElement {
     if (lt === -1) {
       const rest = src.slice(pos);
       if (stack.length) fail(`the file ends inside <${stack[stack.length - 1]!.qname}>`, len);
-      if (rest.trim()) fail('text after the end of the document');
+      if (rest.trim()) fail(root ? 'text after the end of the document' : 'this is not XML: no element found');
       break;
     }
     if (lt > pos) {

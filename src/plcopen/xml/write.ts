@@ -56,7 +56,8 @@ export class XmlWriter {
 
   /** Pre-formed XML, e.g. preserved vendor data, re-indented at the current depth. */
   raw(xml: string): this {
-    this.lines.push(this.pad() + xml);
+    const pad = this.pad();
+    for (const line of xml.split('\n')) this.lines.push(pad + line);
     return this;
   }
 

@@ -1,0 +1,120 @@
+// Editor benchmark: a generated 1,000-network project (~10,000 elements) loaded into the built
+// app in Chromium. Prints time to first render, frame times while scrolling (rAF deltas with the
+// frame-rate cap off, so a delta is the real cost of a frame), and the time from one edit
+// command to the next painted frame. Run with `npm run bench:editor` (builds first).
+import { existsSync } from 'node:fs';
+import { chromium } from 'playwright-core';
+import { preview } from 'vite';
+import { CHROMIUM_ARGS, CHROMIUM_PATH } from '../tests/e2e/browser';
+import type { LdElement } from '../src/model/elements';
+import { newNetwork, newPou, newProject, variable } from '../src/model/factory';
+import type { ElementId } from '../src/model/ids';
+import type { Network, Project, Variable } from '../src/model/project';
+
+const NETWORKS = 1000;
+
+/** A seal-in style rung per network: 3 contacts, 6 links, a coil and a parallel contact (11 elements). */
+function generate(): Project {
+  const networks: Network[] = [];
+  const variables: Variable[] = [];
+  for (let i = 0; i < NETWORKS; i++) {
+    const id = (k: string) => `b${i}_${k}` as ElementId;
+    const names = [`Start${i}`, `Stop${i}`, `Guard${i}`, `Motor${i}`];
+    for (const n of names) variables.push(variable(n, 'BOOL'));
+    const elements: LdElement[] = [
+      { kind: 'contact', contact: 'NO', variable: names[0]!, id: id('a'), row: 0, col: 0 },
+      { kind: 'contact', contact: 'NC', variable: names[1]!, id: id('b'), row: 0, col: 1 },
+      { kind: 'contact', contact: 'NO', variable: names[2]!, id: id('c'), row: 0, col: 2 },
+      ...[3, 4, 5, 6, 7, 8].map((col) => ({ kind: 'link' as const, id: id(`l${col}`), row: 0, col })),
+      { kind: 'coil', coil: 'COIL', variable: names[3]!, id: id('q'), row: 0, col: 9 },
+      { kind: 'contact', contact: 'NO', variable: names[3]!, id: id('m'), row: 1, col: 0 },
+    ];
+    networks.push(newNetwork({ title: `Motor ${i}`, comment: i % 5 === 0 ? `Seal-in circuit number ${i}` : '', rows: 2, elements, vlinks: [{ row: 0, boundary: 1 }] }));
+  }
+  return newProject('Bench', { pous: [newPou('Main', { networks, variables })] });
+}
+
+const percentile = (sorted: number[], p: number) => sorted[Math.min(sorted.length - 1, Math.floor((sorted.length - 1) * p))]!;
+const round = (n: number) => Math.round(n * 10) / 10;
+
+async function main() {
+  if (!existsSync('dist/index.html')) throw new Error('dist/ is missing: run "npm run bench:editor" (it builds first).');
+  const project = generate();
+  const elementCount = project.pous[0]!.networks.reduce((n, net) => n + net.elements.length, 0);
+  const server = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'warn' });
+  const address = server.httpServer.address();
+  if (!address || typeof address === 'string') throw new Error('preview server has no port');
+  const browser = await chromium.launch({
+    executablePath: CHROMIUM_PATH,
+    args: [...CHROMIUM_ARGS, '--disable-gpu-vsync', '--disable-frame-rate-limit'],
+    headless: true,
+  });
+  try {
+    const page = await browser.newPage({ viewport: { width: 1440, height: 900 } });
+    await page.goto(`http://127.0.0.1:${address.port}/`);
+    await page.getByTestId('ladder-canvas').waitFor();
+    await page.evaluate(() => new Promise((r) => setTimeout(r, 300)));
+
+    const firstRender = await page.evaluate((p: Project) => {
+      const store = window.rungsmith!.documentStore!.getState();
+      const t0 = performance.now();
+      store.loadProject(p);
+      return new Promise<number>((resolve) => requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - t0), 0)));
+    }, project);
+    // Let the live checks of the loaded project finish before measuring scrolling.
+    await page.evaluate(() => new Promise((r) => setTimeout(r, 1500)));
+
+    const frames = await page.evaluate(async () => {
+      const el = document.querySelector<HTMLElement>('[data-testid="ladder-canvas"]')!;
+      const deltas: number[] = [];
+      const step = 40;
+      let last = await new Promise<number>((r) => requestAnimationFrame(r));
+      for (let n = 0; n < 600; n++) {
+        el.scrollTop += step;
+        const t = await new Promise<number>((r) => requestAnimationFrame(r));
+        deltas.push(t - last);
+        last = t;
+      }
+      return { deltas, scrolled: el.scrollTop };
+    });
+
+    const edits = await page.evaluate(async () => {
+      const doc = window.rungsmith!.documentStore!;
+      const ui = window.rungsmith!.uiStore!.getState();
+      const el = document.querySelector<HTMLElement>('[data-testid="ladder-canvas"]')!;
+      const times: number[] = [];
+      for (let k = 0; k < 15; k++) {
+        const s = doc.getState();
+        const nets = s.project.pous[0]!.networks;
+        // A network in view: the one at the top of the scrolled canvas.
+        const target = nets[Math.min(nets.length - 1, Math.floor(el.scrollTop / 180) + 1)]!;
+        const t0 = performance.now();
+        s.insertInSeries(target.id, { row: 0, col: 1 }, { kind: 'contact', contact: 'NO', variable: `Extra${k}` });
+        await new Promise<void>((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
+        times.push(performance.now() - t0);
+        ui.setStatus('');
+        await new Promise((r) => setTimeout(r, 30));
+      }
+      return times;
+    });
+
+    const sorted = [...frames.deltas].sort((a, b) => a - b);
+    const median = percentile(sorted, 0.5);
+    const p95 = percentile(sorted, 0.95);
+    const editSorted = [...edits].sort((a, b) => a - b);
+    const edit = percentile(editSorted, 0.5);
+    console.log(`project: ${NETWORKS} networks, ${elementCount} elements`);
+    console.log(`first render: ${round(firstRender)} ms (load command to first painted frame)`);
+    console.log(`scrolling: ${frames.deltas.length} frames over ${frames.scrolled} px, frame median ${round(median)} ms, p95 ${round(p95)} ms, max ${round(sorted[sorted.length - 1]!)} ms`);
+    console.log(`edit (insert a contact in series, command to painted frame): median ${round(edit)} ms, max ${round(editSorted[editSorted.length - 1]!)} ms over ${edits.length} edits`);
+    console.log(`bench:editor first-render-ms=${Math.round(firstRender)} p95-frame-ms=${round(p95)} edit-ms=${round(edit)}`);
+  } finally {
+    await browser.close();
+    await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
+  }
+}
+
+main().catch((e: unknown) => {
+  console.error(e);
+  process.exit(1);
+});

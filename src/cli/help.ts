@@ -1,0 +1,42 @@
+// Help texts of the `rungsmith` command.
+export const HELP = {
+  main: `Usage: rungsmith <command> [options] FILE
+
+Commands:
+  check FILE                 check a project (.json) or PLCopen XML (.xml) against the LD rules
+  simulate FILE [options]    run scans on a virtual clock and print a CSV trace
+  export FILE.json -o OUT.xml    write a project as PLCopen TC6 XML v2.01
+  import FILE.xml -o OUT.json    read PLCopen XML into a Rungsmith project
+
+Run "rungsmith <command> --help" for the options of a command.
+Exit codes: 0 ok, 1 the program has errors, 2 bad usage or unreadable input.`,
+  check: `Usage: rungsmith check FILE
+
+Checks every POU of FILE (a .json project or a PLCopen .xml file) and prints one line per
+diagnostic:  SEVERITY RULE-ID pou/network:cell message
+Exits with 1 if there is any error, 0 otherwise (warnings alone exit 0).`,
+  simulate: `Usage: rungsmith simulate FILE [--pou NAME] [--inputs STIM.csv] [--scans N] [--cycle 10ms]
+                          [--watch a,b,T1.Q] [--profile iec|openplc]
+
+Runs N scans of a PROGRAM on the virtual clock and writes CSV to stdout:
+  scan,time_ms,<watched...>   one row per scan after it ran; scan k starts at (k-1) x cycle.
+  BOOL as 0/1, integers in decimal, REAL with enough digits to read back, TIME in ms.
+
+Options:
+  --pou NAME        the PROGRAM to run (default: the first one run by a task)
+  --inputs FILE     stimulus CSV: header scan,<var>,...; a row sets those variables just before the
+                    input read of that scan (1-based); an empty cell leaves the value as it is
+  --scans N         number of scans (default: the last stimulus scan, at least 10)
+  --cycle TIME      scan cycle, e.g. 10ms, 0.5s, T#100ms (default: the task's interval, else 10ms)
+  --watch LIST      comma-separated variables or FB pins (T1.Q); default: every variable of the
+                    POU in declaration order, FB instances as INSTANCE.PIN
+  --profile NAME    semantics profile: iec (default: the project's) or openplc
+Errors (unknown variable, bad value, invalid program) go to stderr with a non-zero exit.`,
+  export: `Usage: rungsmith export FILE.json -o OUT.xml
+
+Writes the project as one PLCopen TC6 XML v2.01 document (to stdout without -o).`,
+  import: `Usage: rungsmith import FILE.xml -o OUT.json
+
+Reads PLCopen TC6 XML (v2.01, v2.0 from CODESYS/TwinCAT, legacy v1.0) into a Rungsmith project
+(to stdout without -o). What was dropped or changed is listed on stderr.`,
+} as const;

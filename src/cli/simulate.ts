@@ -1,0 +1,112 @@
+// `rungsmith simulate`: N scans on the virtual clock, a CSV trace of the watched values on stdout.
+import { formatDiagnostic } from '../engine/compile/report';
+import { compileProgram, createPlc, type CompiledProgram } from '../engine/plc';
+import { csvValue, parseValueText } from '../engine/values/literals';
+import type { ElementaryType } from '../model/iecTypes';
+import type { Profile, Project } from '../model/project';
+import { parseInterval } from '../plcopen/durations';
+import { UsageError, type CliIo } from './io';
+import { parseStimulus, type Stimulus } from './stimulus';
+
+export interface SimulateOptions {
+  readonly pou?: string;
+  readonly stimulus?: { readonly text: string; readonly file: string };
+  readonly scans?: number;
+  readonly cycle?: string;
+  readonly watch?: string;
+  readonly profile?: Profile;
+}
+
+/** 10ms, 10, T#10ms, 0.5s → milliseconds. */
+export function parseCycle(text: string): number {
+  const t = text.trim();
+  const ms = /^\d+(\.\d+)?$/.test(t) ? Number(t) : parseInterval(/^T(IME)?#/i.test(t) ? t : `T#${t}`);
+  if (ms === undefined || !(ms > 0)) throw new UsageError(`--cycle "${text}" is not a cycle time; write it like 10ms, 0.5s or T#100ms`);
+  return ms;
+}
+
+function programName(project: Project, wanted: string | undefined): string {
+  if (wanted) return wanted;
+  for (const t of project.tasks)
+    for (const p of t.programs) {
+      const pou = project.pous.find((x) => x.name.toUpperCase() === p.pou.toUpperCase() && x.kind === 'PROGRAM');
+      if (pou) return pou.name;
+    }
+  const first = project.pous.find((p) => p.kind === 'PROGRAM');
+  if (!first) throw new UsageError('the project has no PROGRAM to simulate');
+  return first.name;
+}
+
+/** Default watch: the POU's variables in declaration order, FB instances as INSTANCE.PIN. */
+function defaultWatch(project: Project, pouName: string, names: readonly string[]): string[] {
+  const pou = project.pous.find((p) => p.name.toUpperCase() === pouName.toUpperCase())!;
+  const out: string[] = [];
+  for (const v of pou.variables) {
+    const pins = names.filter((n) => n.toUpperCase().startsWith(`${v.name.toUpperCase()}.`));
+    if (pins.length) out.push(...pins);
+    else if (names.some((n) => n.toUpperCase() === v.name.toUpperCase())) out.push(v.name);
+  }
+  return out;
+}
+
+function typeOf(program: CompiledProgram, name: string): ElementaryType {
+  const r = program.symbols.resolve(name, { literals: false, implicitLocations: false });
+  if (!r.ok) throw new UsageError(`unknown variable "${name}": ${r.message}`);
+  if (r.access.kind === 'const') throw new UsageError(`"${name}" is a constant, not a variable`);
+  return r.access.type;
+}
+
+export function simulate(io: CliIo, project: Project, opts: SimulateOptions): number {
+  const pou = programName(project, opts.pou);
+  const { program, diagnostics } = compileProgram(project, { pou, ...(opts.profile ? { profile: opts.profile } : {}) });
+  for (const d of diagnostics) if (d.severity === 'warning') io.err(`${formatDiagnostic(d)}\n`);
+  if (!program) {
+    for (const d of diagnostics) if (d.severity === 'error') io.err(`${formatDiagnostic(d)}\n`);
+    io.err(`the program ${pou} has errors; it cannot be simulated\n`);
+    return 1;
+  }
+  const task = project.tasks.find((t) => t.programs.some((p) => p.pou.toUpperCase() === pou.toUpperCase()));
+  const cycleMs = opts.cycle !== undefined ? parseCycle(opts.cycle) : (task?.cycleMs ?? 10);
+  const plc = createPlc(program, { cycleMs });
+  const names = plc.variableNames();
+  const watch = opts.watch !== undefined ? opts.watch.split(',').map((s) => s.trim()).filter(Boolean) : defaultWatch(project, pou, names);
+  const types = watch.map((w) => typeOf(program, w));
+  const stim: Stimulus | undefined = opts.stimulus ? parseStimulus(opts.stimulus.text, opts.stimulus.file) : undefined;
+  const stimTypes = new Map<string, ElementaryType>();
+  for (const c of stim?.columns ?? []) {
+    try {
+      stimTypes.set(c, typeOf(program, c));
+    } catch (e) {
+      throw new UsageError(`${opts.stimulus!.file}: column "${c}": ${(e as Error).message}`);
+    }
+  }
+  const lastStim = stim?.rows.length ? stim.rows[stim.rows.length - 1]!.scan : 0;
+  const scans = opts.scans ?? Math.max(lastStim, 10);
+  const lines: string[] = [['scan', 'time_ms', ...watch].join(',')];
+  let next = 0;
+  for (let k = 1; k <= scans; k++) {
+    while (stim && next < stim.rows.length && stim.rows[next]!.scan === k) {
+      const row = stim.rows[next++]!;
+      for (const [name, text] of row.values) {
+        const parsed = parseValueText(stimTypes.get(name)!, text);
+        if (!parsed.ok) throw new UsageError(`${opts.stimulus!.file} line ${row.line}, column ${name}: ${parsed.message}`);
+        try {
+          plc.write(name, parsed.value);
+        } catch (e) {
+          throw new UsageError(`${opts.stimulus!.file} line ${row.line}, column ${name}: ${(e as Error).message}`);
+        }
+      }
+    }
+    const report = plc.scan();
+    if (report.fault) {
+      io.out(`${lines.join('\n')}\n`);
+      io.err(`fault in scan ${k}: ${report.fault.message}\n`);
+      return 1;
+    }
+    const row = [String(k), String((k - 1) * cycleMs)];
+    watch.forEach((w, i) => row.push(csvValue(types[i]!, plc.read(w))));
+    lines.push(row.join(','));
+  }
+  io.out(`${lines.join('\n')}\n`);
+  return 0;
+}

@@ -1,0 +1,38 @@
+// Debugger marks in a network's header: the breakpoint toggle, "next" when execution is paused
+// before this network (with a frame around the whole network), "skipped" when a jump skipped it.
+import type { Network } from '../../model/project';
+import { gridHeight, headerHeight } from '../canvas/geometry';
+import { useSimStore } from './simContext';
+import { useHasBreakpoint, useIsCurrentNetwork, useNetworkExecuted } from './useSimOverlay';
+
+export function NetworkSimMarker({ network, index }: { network: Network; index: number }) {
+  const sim = useSimStore();
+  const breakpoint = useHasBreakpoint(network.id);
+  const current = useIsCurrentNetwork(network.id);
+  const executed = useNetworkExecuted(network.id);
+  const no = index + 1;
+  return (
+    <>
+      <button
+        type="button"
+        className={`rs-sim-bp${breakpoint ? ' rs-sim-bp-on' : ''}`}
+        aria-pressed={breakpoint}
+        aria-label={`Toggle breakpoint on network ${no}`}
+        title={breakpoint ? 'Breakpoint: execution pauses before this network (click to remove)' : 'Set a breakpoint: execution pauses before this network'}
+        onClick={() => sim.getState().toggleBreakpoint(network.id)}
+        data-testid={`network-breakpoint-${index}`}
+      >
+        ●
+      </button>
+      {current && (
+        <>
+          <span className="rs-sim-next-badge" data-testid={`network-next-${index}`}>▶ runs next</span>
+          <div className="rs-sim-current-frame" style={{ height: headerHeight(network) + gridHeight(network) - 4 }} aria-hidden />
+        </>
+      )}
+      {executed === false && (
+        <span className="rs-sim-skipped" title="A jump or return skipped this network in the last scan">skipped</span>
+      )}
+    </>
+  );
+}

@@ -1,0 +1,85 @@
+// Page object for drawing on the ladder canvas in a real browser: cell positions on screen from
+// the editor's own geometry, and the document read through window.rungsmith.
+import type { Page } from 'playwright-core';
+import { CELL_H, CELL_W, headerHeight, layoutNetworks, RAIL_X } from '../../src/editor/canvas/geometry';
+import type { Network } from '../../src/model/project';
+
+export interface ElementSummary {
+  readonly kind: string;
+  readonly row: number;
+  readonly col: number;
+  readonly name?: string;
+  readonly type?: string;
+}
+
+export class DrawPage {
+  constructor(readonly page: Page) {}
+
+  canvas() {
+    return this.page.getByTestId('ladder-canvas');
+  }
+
+  async networks(): Promise<Network[]> {
+    return this.page.evaluate(() => {
+      const s = window.rungsmith!.documentStore!.getState();
+      return JSON.parse(JSON.stringify(s.project.pous.find((p) => p.id === s.activePouId)!.networks)) as Network[];
+    });
+  }
+
+  /** Elements of network `index` as (kind, row, col, name, type), sorted by position. */
+  async elements(index: number): Promise<ElementSummary[]> {
+    const n = (await this.networks())[index]!;
+    return n.elements
+      .map((e) => {
+        const name = e.kind === 'contact' || e.kind === 'coil' ? e.variable : e.kind === 'jump' ? e.target : undefined;
+        const type = e.kind === 'contact' ? e.contact : e.kind === 'coil' ? e.coil : undefined;
+        return { kind: e.kind, row: e.row, col: e.col, ...(name !== undefined ? { name } : {}), ...(type ? { type } : {}) };
+      })
+      .sort((a, b) => a.row - b.row || a.col - b.col);
+  }
+
+  /** Screen position of the middle of a cell (the canvas scrolled to show it first). */
+  async cellPoint(index: number, row: number, col: number): Promise<{ x: number; y: number }> {
+    const networks = await this.networks();
+    const layout = layoutNetworks(networks);
+    const n = networks[index]!;
+    const contentX = RAIL_X + col * CELL_W + CELL_W / 2;
+    const contentY = layout.tops[index]! + headerHeight(n) + row * CELL_H + CELL_H / 2;
+    const { zoom, left, top, boxX, boxY } = await this.canvas().evaluate((el, p) => {
+      const z = window.rungsmith!.uiStore!.getState().viewport.zoom;
+      // Bring the cell into view like a user scrolling to it.
+      if (p.y * z < el.scrollTop || p.y * z > el.scrollTop + el.clientHeight - 40) el.scrollTop = p.y * z - el.clientHeight / 2;
+      const r = el.getBoundingClientRect();
+      return { zoom: z, left: el.scrollLeft, top: el.scrollTop, boxX: r.left, boxY: r.top };
+    }, { x: contentX, y: contentY });
+    await this.page.waitForTimeout(0);
+    return { x: boxX + contentX * zoom - left, y: boxY + contentY * zoom - top };
+  }
+
+  async clickCell(index: number, row: number, col: number) {
+    const p = await this.cellPoint(index, row, col);
+    await this.page.mouse.click(p.x, p.y);
+  }
+
+  async pickPalette(id: string) {
+    await this.page.getByTestId(`palette-${id}`).click();
+  }
+
+  /** Types a name into the inline editor that opened over a new element, and confirms it. */
+  async typeName(name: string) {
+    const input = this.page.getByTestId('inline-editor');
+    await input.waitFor();
+    await input.fill(name);
+    await this.page.keyboard.press('Enter');
+    await input.waitFor({ state: 'detached' });
+  }
+
+  async menu(menu: string, item: string) {
+    await this.page.getByTestId(`menu-${menu.toLowerCase()}`).click();
+    await this.page.getByRole('menuitem', { name: item }).click();
+  }
+
+  async problemsSummary(): Promise<string> {
+    return (await this.page.getByTestId('problems-summary').textContent()) ?? '';
+  }
+}

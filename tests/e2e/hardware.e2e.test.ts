@@ -1,0 +1,67 @@
+// The Hardware panel in a real Chromium, against the gateway serving the built app.
+import type { Browser, Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { resolveConfig } from '../../src/gateway/config';
+import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
+import { eventually, mbpoll, mbpollValues } from '../gateway/helpers';
+import { collectPageErrors, launchChromium } from './browser';
+
+describe('Hardware panel', () => {
+  let gw: RunningGateway;
+  let browser: Browser;
+  let page: Page;
+  let errors: string[];
+
+  beforeAll(async () => {
+    gw = await startGateway({ port: 0, config: resolveConfig({ simulated: { modbusPort: 0 } }), distDir: 'dist' });
+    browser = await launchChromium();
+    page = await browser.newPage();
+    errors = collectPageErrors(page);
+  });
+  afterAll(async () => {
+    await browser?.close();
+    await gw?.close();
+  });
+
+  it('opens from the gateway URL, connects with the token from the fragment and shows the simulated points', async () => {
+    await page.goto(gw.url);
+    await page.getByTestId('tab-hardware').click();
+    const panel = page.getByTestId('hardware-panel');
+    await expect.poll(() => panel.getByTestId('hw-url').inputValue()).toBe(`http://127.0.0.1:${gw.port}/`);
+    await panel.getByTestId('hw-connect').click();
+    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
+    await expect.poll(() => panel.getByTestId('hw-device-sim').textContent()).toContain('online');
+    expect(await panel.getByTestId('hw-points').locator('tbody tr').count()).toBe(40);
+    expect(await panel.getByTestId('hw-watchdog').textContent()).toContain('armed');
+  });
+
+  it('sets a simulated input from the panel, visible to mbpoll as a discrete input', async () => {
+    const row = page.getByTestId('hw-point-%IX0.3');
+    await row.getByTestId('hw-switch').click();
+    await expect.poll(() => row.getByTestId('hw-switch').getAttribute('aria-checked')).toBe('true');
+    const port = gw.simulated?.modbusServerPort ?? 0;
+    expect(mbpollValues(await mbpoll(port, ['-t', '1', '-r', '0', '-c', '4', '127.0.0.1']))).toEqual([0, 0, 0, 1]);
+
+    const word = page.getByTestId('hw-point-%IW1').getByTestId('hw-word');
+    await word.fill('4321');
+    await word.press('Enter');
+    await eventually(async () => mbpollValues(await mbpoll(port, ['-t', '3', '-r', '1', '127.0.0.1']))[0] === 4321, 5000, 'register set');
+  });
+
+  it('shows outputs written by another controller live, and the panel as observer cannot re-arm', async () => {
+    // Reconnect this page as observer while a test client holds the lease.
+    const panel = page.getByTestId('hardware-panel');
+    await panel.getByTestId('hw-connect').click();
+    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Not connected');
+    await panel.getByTestId('hw-role').selectOption('observer');
+    await panel.getByTestId('hw-connect').click();
+    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as observer');
+    expect(await panel.getByTestId('hw-arm').isDisabled()).toBe(true);
+    gw.hub.claim('test-controller', 'controller');
+    gw.hub.outputs(new Map([['%QX0.5', true]]));
+    await expect.poll(() => page.getByTestId('hw-point-%QX0.5').getByTestId('hw-value').textContent()).toBe('TRUE');
+    await gw.hub.stop('test over');
+    await gw.hub.release('test-controller');
+    expect(errors).toEqual([]);
+  });
+});

@@ -1,0 +1,92 @@
+// Page object for the editor's panels (variables, inspector, problems) and the File menu.
+import type { Browser, Locator, Page } from 'playwright-core';
+import type { Project } from '../../src/model/project';
+import type { UiState } from '../../src/store/uiStore';
+import { collectPageErrors } from './browser';
+
+export class EditorPage {
+  readonly errors: string[];
+  constructor(readonly page: Page) {
+    this.errors = collectPageErrors(page);
+  }
+
+  static async open(browser: Browser, url: string): Promise<EditorPage> {
+    const context = await browser.newContext({ acceptDownloads: true });
+    const page = await context.newPage();
+    const editor = new EditorPage(page);
+    await page.goto(url);
+    await page.getByRole('heading', { name: /Rungsmith/ }).first().waitFor();
+    return editor;
+  }
+
+  async close() {
+    await this.page.context().close();
+  }
+
+  tab(name: 'Inspector' | 'Variables' | 'Problems'): Promise<void> {
+    return this.page.getByRole('tab', { name, exact: true }).click();
+  }
+
+  get variables(): Locator {
+    return this.page.getByTestId('variables-panel');
+  }
+
+  get problems(): Locator {
+    return this.page.getByTestId('problems-panel');
+  }
+
+  get inspector(): Locator {
+    return this.page.getByTestId('inspector-panel');
+  }
+
+  variableRow(name: string): Locator {
+    return this.variables.getByTestId(`variable-row-${name}`);
+  }
+
+  /** Adds a row with "Add variable", names it and fills the given fields, committing each with Enter. */
+  async declare(name: string, fields: { type?: string; address?: string; initial?: string; comment?: string } = {}) {
+    await this.variables.getByRole('button', { name: 'Add variable' }).click();
+    const nameField = this.variables.locator('input[aria-label="Name"]:focus');
+    await nameField.fill(name);
+    await nameField.press('Enter');
+    const row = this.variableRow(name);
+    if (fields.type) await row.getByLabel('Type').selectOption(fields.type);
+    if (fields.address !== undefined) await this.fill(row.getByLabel('Address'), fields.address);
+    if (fields.initial !== undefined) await this.fill(row.getByLabel('Initial value'), fields.initial);
+    if (fields.comment !== undefined) await this.fill(row.getByLabel('Comment'), fields.comment);
+  }
+
+  async fill(field: Locator, text: string) {
+    await field.click();
+    await field.fill(text);
+    await field.press('Enter');
+  }
+
+  async menu(menu: string, item: string) {
+    await this.page.getByTestId(`menu-${menu.toLowerCase()}`).click();
+    await this.page.getByRole('menuitem', { name: item }).click();
+  }
+
+  /** File > Open… with a file the user picks in the browser's file chooser. */
+  async openFile(name: string, text: string) {
+    const chooser = this.page.waitForEvent('filechooser');
+    await this.menu('File', 'Open…');
+    await (await chooser).setFiles({ name, mimeType: 'application/json', buffer: Buffer.from(text) });
+  }
+
+  project(): Promise<Project> {
+    return this.page.evaluate(() => window.rungsmith!.documentStore!.getState().project);
+  }
+
+  selection(): Promise<UiState['selection']> {
+    return this.page.evaluate(() => window.rungsmith!.uiStore!.getState().selection);
+  }
+
+  /** Waits until the autosave has written the current document to IndexedDB. */
+  async waitForAutosave() {
+    await this.page.waitForFunction(() => {
+      const status = document.querySelector('[data-testid="autosave-status"]');
+      return status?.getAttribute('data-pending') === 'false' && Number(status.getAttribute('data-saved-at')) > 0;
+    });
+  }
+}

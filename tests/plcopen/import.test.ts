@@ -1,0 +1,118 @@
+// Importing PLCopen files: the constructs real tools write and those no real file had yet.
+import { describe, expect, it } from 'vitest';
+import { checkProject } from '../../src/engine/check';
+import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
+import { importPlcopen } from '../../src/plcopen/importPlcopen';
+import { imported, run } from './fixtures';
+import { schemaErrors } from './xsd';
+
+const noErrors = (p: Parameters<typeof checkProject>[0]) => checkProject(p).filter((d) => d.severity === 'error');
+
+describe('PLCopen import: hand-written fixtures', () => {
+  it('jump, label and return: networks in order, the label on the network after it, behaviour kept', () => {
+    const { project, report } = imported('jump-label-return.xml');
+    expect(report.warnings).toEqual([]);
+    const nets = project.pous[0]!.networks;
+    expect(nets.map((n) => n.label ?? '')).toEqual(['', '', 'OVER', '', '']);
+    expect(nets[0]!.elements.find((e) => e.kind === 'jump')).toMatchObject({ target: 'OVER' });
+    expect(nets[3]!.elements.some((e) => e.kind === 'return')).toBe(true);
+    expect(project.tasks).toEqual([{ name: 'Fast', cycleMs: 5, priority: 0, programs: [{ instance: 'inst0', pou: 'Main' }] }]);
+    expect(noErrors(project)).toEqual([]);
+    const plc = run(project, 'Main');
+    plc.write('Skip', true);
+    plc.scan();
+    expect([plc.read('A'), plc.read('B'), plc.read('C')]).toEqual([false, true, true]);
+    plc.write('Skip', false);
+    plc.write('Stop', true);
+    plc.scan();
+    expect([plc.read('A'), plc.read('B'), plc.read('C')]).toEqual([true, true, true]);
+    plc.coldRestart();
+    plc.write('Stop', true);
+    plc.scan();
+    expect(plc.read('C')).toBe(false); // RETURN ended the POU before the last network
+  });
+
+  it('connector and continuation join into one network; the continuation fans out', () => {
+    const { project } = imported('connector-continuation.xml');
+    expect(project.pous[0]!.networks).toHaveLength(1);
+    const plc = run(project, 'Main');
+    for (const [a, b] of [[false, false], [true, false], [true, true], [false, true]] as const) {
+      plc.write('A', a);
+      plc.write('B', b);
+      plc.scan();
+      expect(plc.read('Y')).toBe(a && !b);
+      expect(plc.read('Z')).toBe(!(a && !b));
+    }
+  });
+
+  it('edge contacts and edge coils; executionOrderId > 0 decides the network order', () => {
+    const { project } = imported('edges-and-order.xml');
+    const nets = project.pous[0]!.networks;
+    const coils = (i: number) => nets[i]!.elements.flatMap((e) => (e.kind === 'coil' ? [`${e.coil}:${e.variable}`] : []));
+    expect(coils(0)).toEqual(['P:Pulse', 'COIL:Copy']);
+    expect(coils(1)).toEqual(['COIL:Rise']);
+    expect(coils(2)).toEqual(['COIL:Fall']);
+    expect(nets[1]!.elements.find((e) => e.kind === 'contact')).toMatchObject({ contact: 'P' });
+    expect(nets[2]!.elements.find((e) => e.kind === 'contact')).toMatchObject({ contact: 'N' });
+    const plc = run(project, 'Main');
+    const seen: string[] = [];
+    for (const v of [false, true, true, false, false]) {
+      plc.write('In', v);
+      plc.scan();
+      seen.push(['Pulse', 'Rise', 'Fall'].map((n) => (plc.read(n) ? 1 : 0)).join(''));
+    }
+    // A falling-edge element sees its variable FALSE at its very first evaluation as a fall (IEC F_TRIG).
+    expect(seen).toEqual(['001', '110', '000', '001', '000']);
+  });
+
+  it('keeps vendor addData and vendor elements, drops handleUnknown="discard" and says so', async () => {
+    const { project, report } = imported('adddata.xml');
+    expect(report.warnings.map((w) => w.message)).toContain('addData "http://example.com/acme/cache" dropped (handleUnknown="discard")');
+    const xml = exportPlcopen(project);
+    expect(await schemaErrors(xml)).toEqual([]);
+    for (const kept of ['<acme:tag color="red">keep me</acme:tag>', '<acme:lamp/>', '<acme:pouInfo version="3"/>', '<acme:project id="42"/>', 'xmlns:acme="http://example.com/acme"'])
+      expect(xml).toContain(kept);
+    expect(xml).not.toContain('acme:cache');
+    const again = importPlcopen(xml);
+    expect(again.ok && exportPlcopen(again.project, { now: new Date(0) })).toBe(exportPlcopen(project, { now: new Date(0) }));
+  });
+
+  it('CODESYS style (tc6_0200, CRLF, no geometry at all) imports into a readable layout from the wiring', () => {
+    const { project, report } = imported('codesys-zero-geometry.xml');
+    expect(report.namespace).toBe('http://www.plcopen.org/xml/tc6_0200');
+    expect(report.warnings.filter((w) => /cannot be drawn/.test(w.message))).toEqual([]);
+    const pou = project.pous[0]!;
+    expect(pou.networks.map((n) => n.comment)).toEqual(['Motor seal-in', 'Lamp after 2 s of running', 'Count lamp scans']);
+    // Rows by branch structure: the seal-in branch sits under Start, the box pins on their own rows.
+    expect(pou.networks.map((n) => n.rows)).toEqual([2, 2, 3]);
+    const seal = pou.networks[0]!;
+    expect(seal.elements.filter((e) => e.kind === 'contact').map((e) => [e.row, e.col])).toEqual([[0, 0], [1, 0], [0, 1]]);
+    expect(seal.vlinks).toEqual([{ row: 0, boundary: 1 }]);
+    expect(noErrors(project)).toEqual([]);
+    const plc = run(project, 'PLC_PRG', 500);
+    plc.write('Start', true);
+    plc.scan();
+    plc.write('Start', false);
+    plc.scans(3);
+    expect(plc.read('Motor')).toBe(true);
+    expect(plc.read('Lamp')).toBe(false);
+    plc.scans(1);
+    expect(plc.read('Lamp')).toBe(true); // 2 s after the motor started: scan 1 at 0 ms, scan 5 at 2000 ms
+    expect(plc.read('Count')).toBe(1);
+    expect(plc.read('Elapsed')).toBe(2000);
+  });
+
+  it('LD inside SFC actions and transitions becomes programs; other languages are kept and reported', async () => {
+    const { project, report } = imported('sfc-ld-actions.xml');
+    expect(project.pous.map((p) => p.name)).toEqual(['Sequence_Light', 'Sequence_Started', 'Nothing']);
+    expect(project.pous[1]!.variables.map((v) => v.name)).toEqual(['Go', 'Lamp', 'Started']);
+    expect(project.pous[2]!.networks).toEqual([]);
+    const text = report.warnings.map((w) => w.message).join('\n');
+    expect(text).toContain('POU "Main" is written in ST');
+    expect(text).toContain('the chart itself is not simulated');
+    const xml = exportPlcopen(project);
+    expect(await schemaErrors(xml)).toEqual([]);
+    const again = importPlcopen(xml);
+    expect(again.ok && again.project.pous.map((p) => p.name)).toEqual(['Sequence_Light', 'Sequence_Started', 'Nothing']);
+  });
+});
