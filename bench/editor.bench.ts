@@ -29,19 +29,32 @@ function generate(): Project {
       { kind: 'coil', coil: 'COIL', variable: names[3]!, id: id('q'), row: 0, col: 9 },
       { kind: 'contact', contact: 'NO', variable: names[3]!, id: id('m'), row: 1, col: 0 },
     ];
-    networks.push(newNetwork({ title: `Motor ${i}`, comment: i % 5 === 0 ? `Seal-in circuit number ${i}` : '', rows: 2, elements, vlinks: [{ row: 0, boundary: 1 }] }));
+    networks.push(
+      newNetwork({
+        title: `Motor ${i}`,
+        comment: i % 5 === 0 ? `Seal-in circuit number ${i}` : '',
+        rows: 2,
+        elements,
+        vlinks: [{ row: 0, boundary: 1 }],
+      }),
+    );
   }
   return newProject('Bench', { pous: [newPou('Main', { networks, variables })] });
 }
 
-const percentile = (sorted: number[], p: number) => sorted[Math.min(sorted.length - 1, Math.floor((sorted.length - 1) * p))]!;
+const percentile = (sorted: number[], p: number) =>
+  sorted[Math.min(sorted.length - 1, Math.floor((sorted.length - 1) * p))]!;
 const round = (n: number) => Math.round(n * 10) / 10;
 
 async function main() {
-  if (!existsSync('dist/index.html')) throw new Error('dist/ is missing: run "npm run bench:editor" (it builds first).');
+  if (!existsSync('dist/index.html'))
+    throw new Error('dist/ is missing: run "npm run bench:editor" (it builds first).');
   const project = generate();
   const elementCount = project.pous[0]!.networks.reduce((n, net) => n + net.elements.length, 0);
-  const server = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'warn' });
+  const server = await preview({
+    preview: { port: 0, host: '127.0.0.1', strictPort: false },
+    logLevel: 'warn',
+  });
   const address = server.httpServer.address();
   if (!address || typeof address === 'string') throw new Error('preview server has no port');
   const browser = await chromium.launch({
@@ -59,7 +72,9 @@ async function main() {
       const store = window.rungsmith!.documentStore!.getState();
       const t0 = performance.now();
       store.loadProject(p);
-      return new Promise<number>((resolve) => requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - t0), 0)));
+      return new Promise<number>((resolve) =>
+        requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - t0), 0)),
+      );
     }, project);
     // Let the live checks of the loaded project finish before measuring scrolling.
     await page.evaluate(() => new Promise((r) => setTimeout(r, 1500)));
@@ -89,7 +104,11 @@ async function main() {
         // A network in view: the one at the top of the scrolled canvas.
         const target = nets[Math.min(nets.length - 1, Math.floor(el.scrollTop / 180) + 1)]!;
         const t0 = performance.now();
-        s.insertInSeries(target.id, { row: 0, col: 1 }, { kind: 'contact', contact: 'NO', variable: `Extra${k}` });
+        s.insertInSeries(
+          target.id,
+          { row: 0, col: 1 },
+          { kind: 'contact', contact: 'NO', variable: `Extra${k}` },
+        );
         await new Promise<void>((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
         times.push(performance.now() - t0);
         ui.setStatus('');
@@ -105,9 +124,15 @@ async function main() {
     const edit = percentile(editSorted, 0.5);
     console.log(`project: ${NETWORKS} networks, ${elementCount} elements`);
     console.log(`first render: ${round(firstRender)} ms (load command to first painted frame)`);
-    console.log(`scrolling: ${frames.deltas.length} frames over ${frames.scrolled} px, frame median ${round(median)} ms, p95 ${round(p95)} ms, max ${round(sorted[sorted.length - 1]!)} ms`);
-    console.log(`edit (insert a contact in series, command to painted frame): median ${round(edit)} ms, max ${round(editSorted[editSorted.length - 1]!)} ms over ${edits.length} edits`);
-    console.log(`bench:editor first-render-ms=${Math.round(firstRender)} p95-frame-ms=${round(p95)} edit-ms=${round(edit)}`);
+    console.log(
+      `scrolling: ${frames.deltas.length} frames over ${frames.scrolled} px, frame median ${round(median)} ms, p95 ${round(p95)} ms, max ${round(sorted[sorted.length - 1]!)} ms`,
+    );
+    console.log(
+      `edit (insert a contact in series, command to painted frame): median ${round(edit)} ms, max ${round(editSorted[editSorted.length - 1]!)} ms over ${edits.length} edits`,
+    );
+    console.log(
+      `bench:editor first-render-ms=${Math.round(firstRender)} p95-frame-ms=${round(p95)} edit-ms=${round(edit)}`,
+    );
   } finally {
     await browser.close();
     await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));

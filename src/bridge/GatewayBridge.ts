@@ -10,7 +10,8 @@
  *       Call after every scan (or every scan that changed it: the bridge re-sends the last image
  *       every `heartbeatMs` so the gateway's lease stays fed while the simulation runs). Addresses
  *       the gateway does not have as outputs are left out; values wrap to the point's 16 bits.
- *   bridge.stop()                  pause/stop: the gateway writes the safe state; heartbeats end.
+ *   bridge.attach(sim, bindings)   on Run: wire the simulation store's setInputs/onOutputs (one at a time).
+ *   bridge.stop()                  pause/stop: detach, the gateway writes the safe state; heartbeats end.
  *   bridge.onInputs(cb)            cb(changed: Record<address, Value>) when inputs change; returns unsubscribe.
  *   bridge.canDrive                true when connected as controller and armed.
  *
@@ -26,12 +27,14 @@ import type { Value } from '../model/iecTypes';
 import { canonicalAddress, type WireValue } from '../protocol/points';
 import type { GatewayClient } from './GatewayClient';
 import type { Binding } from './mapping';
+import { attachSimulation, type SimulationPorts } from './simulationLink';
 import { fromWire, toWire } from './wireValues';
 
 export class GatewayBridge {
   private lastOutputs: Record<string, WireValue> | undefined;
   private lastSentAt = 0;
   private heartbeat: ReturnType<typeof setInterval> | undefined;
+  private detachSimulation: (() => void) | undefined;
 
   constructor(
     private readonly client: GatewayClient,
@@ -71,7 +74,25 @@ export class GatewayBridge {
     }, this.heartbeatMs);
   }
 
+  /**
+   * Exchanges images with a running simulation (see simulationLink.ts). One simulation at a time:
+   * attaching again replaces the previous link. Returns the function that detaches it.
+   */
+  attach(sim: SimulationPorts, bindings: readonly Binding[]): () => void {
+    this.detachSimulation?.();
+    const detach = attachSimulation(sim, this, bindings);
+    const once = () => {
+      if (this.detachSimulation !== once) return;
+      this.detachSimulation = undefined;
+      detach();
+    };
+    this.detachSimulation = once;
+    return once;
+  }
+
+  /** Pause/stop: detaches the simulation, ends heartbeats, and the gateway writes the safe state. */
   stop(): void {
+    this.detachSimulation?.();
     clearInterval(this.heartbeat);
     this.heartbeat = undefined;
     this.lastOutputs = undefined;

@@ -30,7 +30,8 @@ export interface GatewayView {
   readonly problem: string | null;
 }
 
-const EMPTY: GatewayView = {
+/** The view of a client that is not connected. */
+export const IDLE_VIEW: GatewayView = {
   link: 'idle',
   role: null,
   session: null,
@@ -69,7 +70,7 @@ export interface GatewayClientOptions {
 const OPEN = 1;
 
 export class GatewayClient {
-  private view: GatewayView = EMPTY;
+  private view: GatewayView = IDLE_VIEW;
   private socket: SocketLike | undefined;
   private readonly listeners = new Set<(v: GatewayView) => void>();
   private readonly messageListeners = new Set<(m: GatewayMessage) => void>();
@@ -110,7 +111,7 @@ export class GatewayClient {
     const s = this.socket;
     this.socket = undefined;
     s?.close(1000, 'disconnect');
-    this.update({ ...EMPTY });
+    this.update({ ...IDLE_VIEW });
   }
 
   get isController(): boolean {
@@ -165,7 +166,7 @@ export class GatewayClient {
       if (ev.code === 1008) {
         this.wanted = false;
         const why = this.view.lastError?.message ?? ev.reason;
-        this.update({ ...EMPTY, link: 'refused', lastError: this.view.lastError, problem: `refused by the gateway: ${why || 'policy violation'}` });
+        this.update({ ...IDLE_VIEW, link: 'refused', lastError: this.view.lastError, problem: `refused by the gateway: ${why || 'policy violation'}` });
         return;
       }
       this.lost(ev.code === 1006 ? `no gateway at ${this.opts.socketUrl}` : `connection closed (${ev.code}${ev.reason ? `: ${ev.reason}` : ''})`);
@@ -174,7 +175,7 @@ export class GatewayClient {
 
   private lost(problem: string): void {
     if (!this.wanted) {
-      this.update({ ...EMPTY, problem });
+      this.update({ ...IDLE_VIEW, problem });
       return;
     }
     const wait = this.retryMs;

@@ -3,7 +3,7 @@
 import type { Role } from '../protocol/messages';
 import { gatewaySocketUrl } from './connection';
 import { GatewayBridge } from './GatewayBridge';
-import { GatewayClient, type GatewayView, type SocketFactory } from './GatewayClient';
+import { GatewayClient, IDLE_VIEW, type GatewayView, type SocketFactory } from './GatewayClient';
 
 export interface LinkTarget {
   /** The gateway's page URL (http://127.0.0.1:8080/) or host:port. */
@@ -12,12 +12,10 @@ export interface LinkTarget {
   readonly role: Role;
 }
 
-const IDLE: GatewayView = new GatewayClient({ socketUrl: 'ws://127.0.0.1/io', token: '-', role: 'observer' }).snapshot;
-
 export class GatewayLink {
   private current: { client: GatewayClient; bridge: GatewayBridge; unsubscribe: () => void } | undefined;
   private readonly listeners = new Set<() => void>();
-  private view: GatewayView = IDLE;
+  private view: GatewayView = IDLE_VIEW;
 
   constructor(private readonly socketFactory?: SocketFactory) {}
 
@@ -42,7 +40,7 @@ export class GatewayLink {
       c.unsubscribe();
       c.client.disconnect();
     }
-    this.set(IDLE);
+    this.set(IDLE_VIEW);
   }
 
   get client(): GatewayClient | undefined {

@@ -101,9 +101,12 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
   server.on('clientError', (_err, socket) => socket.destroy());
 
   await new Promise<void>((ok, fail) => {
-    server.once('error', fail);
+    server.once('error', (e: NodeJS.ErrnoException) => {
+      void hub.shutdown();
+      fail(e.code === 'EADDRINUSE' ? new Error(`port ${opts.port} on 127.0.0.1 is in use; choose another with --port N or PORT`) : e);
+    });
     server.listen(opts.port, '127.0.0.1', () => {
-      server.off('error', fail);
+      server.removeAllListeners('error');
       ok();
     });
   });

@@ -69,7 +69,7 @@ export class ModbusTcpDevice implements Device {
     return this.written;
   }
   queueDepth(): number {
-    return this.depth;
+    return Math.max(0, this.depth - 1); // waiting behind the request on the wire
   }
 
   start(listener: DeviceListener): Promise<void> {

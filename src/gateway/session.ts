@@ -39,7 +39,15 @@ export class Session {
     private readonly ctx: SessionContext,
   ) {
     this.helloTimer = setTimeout(() => this.refuseAndClose('not-hello', 'no hello within 5 s', null), HELLO_TIMEOUT_MS);
-    ws.on('message', (data, isBinary) => this.receive(data as Buffer | Buffer[] | ArrayBuffer, isBinary));
+    ws.on('message', (data, isBinary) => {
+      try {
+        this.receive(data as Buffer | Buffer[] | ArrayBuffer, isBinary);
+      } catch (e) {
+        // A bug must cost one message, not the gateway: refuse it and keep serving.
+        this.ctx.log(`session ${this.id}: internal error: ${e instanceof Error ? (e.stack ?? e.message) : String(e)}`);
+        this.refuse('bad-message', 'the gateway could not handle this message', null);
+      }
+    });
     ws.on('close', () => this.closeDown());
     ws.on('error', () => this.closeDown()); // oversized frames and socket errors must not crash the gateway
   }
@@ -98,7 +106,9 @@ export class Session {
       this.refuse('bad-message', explain(raw, describeIssues(parsed.error)), ref);
       return;
     }
-    void this.dispatch(parsed.data, ref);
+    this.dispatch(parsed.data, ref).catch((e: unknown) => {
+      this.ctx.log(`session ${this.id}: ${parsed.data.t} failed: ${e instanceof Error ? e.message : String(e)}`);
+    });
   }
 
   private helloStep(msg: ClientMessage | undefined, raw: unknown, ref: number | string | null): void {

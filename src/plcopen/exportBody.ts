@@ -107,7 +107,7 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
   w.open('leftPowerRail', { localId: railId, height, width: RAIL_W }, () => {
     w.empty('position', { x: railX, y: top });
     for (const r of [...railRows].sort((a, b) => a - b)) {
-      w.open('connectionPointOut', { formalParameter: '' }, () => w.empty('relPosition', { x: RAIL_W, y: rowY(0, r) }));
+      w.line(() => w.open('connectionPointOut', { formalParameter: '' }, () => w.empty('relPosition', { x: RAIL_W, y: rowY(0, r) })));
     }
   });
 
@@ -116,8 +116,8 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
     const p = placed[s.el]!;
     return { ref: p.id, formal: p.formal?.(s.pin), at: p.pins.get(s.pin)! };
   };
-  const writeConnections = (consumer: Point, origin: Point, srcs: readonly Source[] | undefined, barX: number | undefined) => {
-    w.open('connectionPointIn', undefined, () => {
+  const writeConnections = (consumer: Point, origin: Point, srcs: readonly Source[] | undefined, barX: number | undefined) =>
+    w.line(() => w.open('connectionPointIn', undefined, () => {
       rel(w, consumer, origin);
       for (const s of srcs ?? []) {
         const { ref, formal, at } = sourcePoint(s, consumer);
@@ -131,8 +131,7 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
           w.empty('position', { x: at.x, y: at.y });
         });
       }
-    });
-  };
+    }));
   const barOf = (row: number, boundary: number): number | undefined => {
     const b = g.barBoundary.get(g.netOf(row, boundary));
     return b === undefined ? undefined : boundaryX(b);
@@ -154,7 +153,7 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
     const origin = pt(boundaryX(net.cols), top);
     w.empty('position', { x: origin.x, y: origin.y });
     for (const r of rightRows) writeConnections(pt(origin.x, rowY(top, r)), origin, g.rightRail.get(r), barOf(r, net.cols));
-    if (!rightRows.length) w.open('connectionPointIn', undefined, () => w.empty('relPosition', { x: 0, y: ROW_H / 2 }));
+    if (!rightRows.length) w.line(() => w.open('connectionPointIn', undefined, () => w.empty('relPosition', { x: 0, y: ROW_H / 2 })));
   });
   return top + height;
 }
@@ -227,13 +226,11 @@ function writeElement(
         w.open('block', { localId: p.id, width: CELL_W - 20, height: 30, typeName: 'NOT' }, () => {
           w.empty('position', { x: origin.x, y: origin.y });
           w.open('inputVariables', undefined, () =>
-            w.open('variable', { formalParameter: 'IN' }, () => connect(inP, origin, srcOf('in'), inBar('in'))),
+            w.line(() => w.open('variable', { formalParameter: 'IN' }, () => connect(inP, origin, srcOf('in'), inBar('in')))),
           );
           w.empty('inOutVariables');
           w.open('outputVariables', undefined, () =>
-            w.open('variable', { formalParameter: 'OUT' }, () =>
-              w.open('connectionPointOut', undefined, () => rel(w, p.pins.get('out')!, origin)),
-            ),
+            w.line(() => w.open('variable', { formalParameter: 'OUT' }, () => w.open('connectionPointOut', undefined, () => rel(w, p.pins.get('out')!, origin)))),
           );
           addData(`<data name="${RS_CONTACT}" handleUnknown="discard"><contact xmlns="" type="NOT"/></data>`);
         });
@@ -246,7 +243,7 @@ function writeElement(
       w.open(el.kind, { localId: p.id, height: ELEMENT_H, width: ELEMENT_W, ...attrs }, () => {
         w.empty('position', { x: origin.x, y: origin.y });
         connect(inP, origin, srcOf('in'), inBar('in'));
-        w.open('connectionPointOut', undefined, () => rel(w, p.pins.get('out')!, origin));
+        w.line(() => w.open('connectionPointOut', undefined, () => rel(w, p.pins.get('out')!, origin)));
         w.leaf('variable', el.variable);
         addData(retentive ? `<data name="${RS_COIL}" handleUnknown="discard"><coil xmlns="" type="${el.coil}"/></data>` : undefined);
       });
@@ -303,7 +300,7 @@ function writeBox(
       w.open('inputVariables', undefined, () => {
         for (const i of bp.inputs) {
           const at = p.pins.get(i.name)!;
-          w.open('variable', { formalParameter: i.name }, () => {
+          w.line(() => w.open('variable', { formalParameter: i.name }, () => {
             const opId = operandIn.get(i.name);
             if (opId !== undefined) {
               w.open('connectionPointIn', undefined, () => {
@@ -314,15 +311,13 @@ function writeBox(
                 });
               });
             } else connect(at, origin, srcOf(i.name), inBar(i.name));
-          });
+          }));
         }
       });
       w.empty('inOutVariables');
       w.open('outputVariables', undefined, () => {
         for (const o of bp.outputs) {
-          w.open('variable', { formalParameter: o.name }, () =>
-            w.open('connectionPointOut', undefined, () => rel(w, p.pins.get(o.name)!, origin)),
-          );
+          w.line(() => w.open('variable', { formalParameter: o.name }, () => w.open('connectionPointOut', undefined, () => rel(w, p.pins.get(o.name)!, origin))));
         }
       });
       addData();
@@ -336,7 +331,7 @@ function writeBox(
     const vo = pt(at.x - 10 - vw, at.y - 10);
     w.open('inVariable', { localId: opId, height: 20, width: vw, negated: 'false' }, () => {
       w.empty('position', { x: vo.x, y: vo.y });
-      w.open('connectionPointOut', undefined, () => w.empty('relPosition', { x: vw, y: 10 }));
+      w.line(() => w.open('connectionPointOut', undefined, () => w.empty('relPosition', { x: vw, y: 10 })));
       w.leaf('expression', el.inputs[i.name]!);
     });
   }
@@ -346,13 +341,15 @@ function writeBox(
     const vo = pt(at.x + 10, at.y - 10);
     w.open('outVariable', { localId: o.id, height: 20, width: vw, negated: 'false' }, () => {
       w.empty('position', { x: vo.x, y: vo.y });
-      w.open('connectionPointIn', undefined, () => {
-        w.empty('relPosition', { x: 0, y: 10 });
-        w.open('connection', { refLocalId: p.id, formalParameter: o.pin }, () => {
-          w.empty('position', { x: vo.x, y: at.y });
-          w.empty('position', { x: at.x, y: at.y });
-        });
-      });
+      w.line(() =>
+        w.open('connectionPointIn', undefined, () => {
+          w.empty('relPosition', { x: 0, y: 10 });
+          w.open('connection', { refLocalId: p.id, formalParameter: o.pin }, () => {
+            w.empty('position', { x: vo.x, y: at.y });
+            w.empty('position', { x: at.x, y: at.y });
+          });
+        }),
+      );
       w.leaf('expression', o.text);
     });
   }

@@ -6,7 +6,7 @@
 import { boxLayoutFor } from '../model/boxLayout';
 import type { LdElement, VLink } from '../model/elements';
 import { newId, type ElementId } from '../model/ids';
-import type { GNode, GSource } from './ldGraph';
+import type { GNode } from './ldGraph';
 
 interface PinSpec {
   readonly pin: string;
@@ -76,68 +76,101 @@ const KEY = 4096;
 export function prepareLayout(all: readonly GNode[], members: readonly number[]): Prepared {
   const shapes = new Map<number, Shape>();
   for (const i of members) shapes.set(i, shapeOf(all[i]!));
-  // Nets: union of each wired input pin with its sources.
-  const parent = new Map<string, string>();
-  const find = (k: string): string => {
-    let r = k;
-    while (parent.get(r) !== undefined && parent.get(r) !== r) r = parent.get(r)!;
-    let c = k;
-    while (c !== r) {
-      const nx = parent.get(c)!;
-      parent.set(c, r);
-      c = nx;
-    }
-    return r;
+  // Nets: union of each wired input pin with its sources. Ports are numbered: 0 is the left rail,
+  // then each member's input pins and output pins in shape order.
+  const local = new Map<number, number>();
+  members.forEach((i, li) => local.set(i, li));
+  const inBase = new Int32Array(members.length);
+  const outBase = new Int32Array(members.length);
+  let ports = 1;
+  members.forEach((i, li) => {
+    const sh = shapes.get(i)!;
+    inBase[li] = ports;
+    ports += sh.inputs.length;
+    outBase[li] = ports;
+    ports += sh.outputs.length;
+  });
+  const pinIndex = (list: readonly PinSpec[], pin: string) => {
+    for (let k = 0; k < list.length; k++) if (list[k]!.pin === pin) return k;
+    return -1;
   };
-  const union = (a: string, b: string) => {
-    if (!parent.has(a)) parent.set(a, a);
-    if (!parent.has(b)) parent.set(b, b);
+  const inPort = (node: number, pin: string): number => {
+    const li = local.get(node);
+    if (li === undefined) return -1;
+    const k = pinIndex(shapes.get(node)!.inputs, pin);
+    return k < 0 ? -1 : inBase[li]! + k;
+  };
+  const outPort = (node: number, pin: string): number => {
+    const li = local.get(node);
+    if (li === undefined) return -1;
+    const k = pinIndex(shapes.get(node)!.outputs, pin);
+    return k < 0 ? -1 : outBase[li]! + k;
+  };
+  const parent = new Int32Array(ports);
+  for (let k = 0; k < ports; k++) parent[k] = k;
+  const touched = new Uint8Array(ports);
+  const find = (a: number): number => {
+    while (parent[a]! !== a) {
+      parent[a] = parent[parent[a]!]!;
+      a = parent[a]!;
+    }
+    return a;
+  };
+  const union = (a: number, b: number) => {
+    touched[a] = 1;
+    touched[b] = 1;
     const ra = find(a);
     const rb = find(b);
-    if (ra !== rb) parent.set(ra, rb);
+    if (ra !== rb) parent[ra] = rb;
   };
-  const outKey = (s: GSource) => (s.kind === 'rail' ? 'R' : `${s.node}>${s.pin}`);
-  const inKey = (node: number, pin: string) => `${node}<${pin}`;
-  const memberSet = new Set(members);
   for (const i of members) {
     for (const [pin, srcs] of all[i]!.inputs) {
-      const k = inKey(i, pin);
-      if (!parent.has(k)) parent.set(k, k);
-      for (const s of srcs) if (s.kind === 'rail' || memberSet.has(s.node)) union(k, outKey(s));
+      const k = inPort(i, pin);
+      if (k < 0) continue;
+      touched[k] = 1;
+      for (const s of srcs) {
+        const o = s.kind === 'rail' ? 0 : outPort(s.node, s.pin);
+        if (o >= 0) union(k, o);
+      }
     }
   }
-  const nets = new Map<string, Net>();
-  const netOfKey = new Map<string, Net>();
-  const netFor = (k: string): Net | undefined => {
-    if (!parent.has(k)) return undefined;
+  const netOfRoot = new Map<number, Net>();
+  const netOfPort: (Net | undefined)[] = new Array(ports);
+  const nets = new Map<number, Net>();
+  const netFor = (k: number): Net | undefined => {
+    if (k < 0 || !touched[k]) return undefined;
     const root = find(k);
-    let net = nets.get(root);
+    let net = netOfRoot.get(root);
     if (!net) {
-      net = { id: nets.size, producers: [], consumers: [], rail: false, rightRail: false, b: 0, min: Infinity, max: -Infinity };
-      nets.set(root, net);
+      net = { id: netOfRoot.size, producers: [], consumers: [], rail: false, rightRail: false, b: 0, min: Infinity, max: -Infinity };
+      netOfRoot.set(root, net);
+      nets.set(net.id, net);
     }
-    netOfKey.set(k, net);
+    netOfPort[k] = net;
     return net;
   };
-  if (parent.has('R')) netFor('R')!.rail = true;
+  if (touched[0]) netFor(0)!.rail = true;
   for (const i of members) {
     const sh = shapes.get(i)!;
-    for (const p of sh.inputs) netFor(inKey(i, p.pin))?.consumers.push({ node: i, pin: p.pin });
-    for (const p of sh.outputs) {
-      const net = netFor(`${i}>${p.pin}`);
-      if (net) net.producers.push({ node: i, pin: p.pin });
-    }
+    for (const p of sh.inputs) netFor(inPort(i, p.pin))?.consumers.push({ node: i, pin: p.pin });
+    for (const p of sh.outputs) netFor(outPort(i, p.pin))?.producers.push({ node: i, pin: p.pin });
     if (all[i]!.feedsRightRail) {
       const o = sh.outputs[0];
       if (o) {
-        const k = `${i}>${o.pin}`;
-        if (!parent.has(k)) parent.set(k, k);
+        const k = outPort(i, o.pin);
+        touched[k] = 1;
         netFor(k)!.rightRail = true;
       }
     }
   }
-  const inNet = (node: number, pin: string) => netOfKey.get(inKey(node, pin));
-  const outNet = (node: number, pin: string) => netOfKey.get(`${node}>${pin}`);
+  const inNet = (node: number, pin: string) => {
+    const k = inPort(node, pin);
+    return k < 0 ? undefined : netOfPort[k];
+  };
+  const outNet = (node: number, pin: string) => {
+    const k = outPort(node, pin);
+    return k < 0 ? undefined : netOfPort[k];
+  };
 
   // Columns: longest path (Kahn over "producers of my input nets").
   const deps = new Map<number, Set<number>>();
@@ -223,7 +256,7 @@ function placeRows(
   members: readonly number[],
   shapes: Map<number, Shape>,
   col: Map<number, number>,
-  nets: Map<string, Net>,
+  nets: Map<number, Net>,
   inNet: (node: number, pin: string) => Net | undefined,
   outNet: (node: number, pin: string) => Net | undefined,
   cols: number,
@@ -237,6 +270,10 @@ function placeRows(
   const vlinks = new Map<number, VLink>();
   const forced: number[] = [];
   let maxRow = -1;
+  // Element ids: one fresh prefix per network and a counter (as unique as newId, far cheaper).
+  const prefix = newId<'ElementId'>('e');
+  let counter = 0;
+  const nextId = () => `${prefix}_${(counter++).toString(36)}` as ElementId;
 
   const pointOk = (r: number, b: number, net: Net) => {
     if (b === cols) return true;
@@ -262,7 +299,7 @@ function placeRows(
       const k = r * KEY + c;
       if (cellOwner.get(k) === undefined) {
         cellOwner.set(k, -(net.id + 1));
-        elements.push({ id: newId<'ElementId'>('e') as ElementId, kind: 'link', row: r, col: c });
+        elements.push({ id: nextId(), kind: 'link', row: r, col: c });
       }
     }
     for (let b = a; b <= z; b++) if (b !== 0 && b !== cols) pointNet.set(r * KEY + b, net.id);
@@ -316,7 +353,7 @@ function placeRows(
       if (net && (net.consumers.length || net.producers.length > 1)) claimRun(r + p.off, end, Math.max(net.b, end), net);
       else if (end !== cols) pointNet.set((r + p.off) * KEY + end, blockedId--);
     }
-    const id = newId<'ElementId'>('e') as ElementId;
+    const id = nextId();
     elementOf.set(i, id);
     const base = { id, row: r, col: c };
     switch (n.kind) {

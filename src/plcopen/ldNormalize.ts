@@ -11,7 +11,23 @@ export function splitSharedSources(nodes: GNode[], warn: (f: Finding) => void): 
   for (let round = 0; round < 4; round++) if (!splitOnce(nodes, warn)) return;
 }
 
+/** True when some source feeds two input pins whose source lists differ (the only case to redraw). */
+function anyMismatch(nodes: readonly GNode[]): boolean {
+  const firstUse = new Map<string, readonly GSource[]>();
+  for (const n of nodes)
+    for (const srcs of n.inputs.values())
+      for (const s of srcs) {
+        if (s.kind === 'rail') continue;
+        const k = srcKey(s);
+        const prev = firstUse.get(k);
+        if (!prev) firstUse.set(k, srcs);
+        else if (prev !== srcs && (prev.length !== srcs.length || prev.some((p, i) => srcKey(p) !== srcKey(srcs[i]!)))) return true;
+      }
+  return false;
+}
+
 function splitOnce(nodes: GNode[], warn: (f: Finding) => void): boolean {
+  if (!anyMismatch(nodes)) return false;
   const parent = new Map<string, string>();
   const find = (k: string): string => {
     let r = k;

@@ -74,6 +74,8 @@ export class SimSession {
   private cancelTimer: (() => void) | undefined;
   private lastFrameWall = -Infinity;
   private readonly trend = new TrendRecorder();
+  /** Signals the UI asked for; the trend samples those the loaded program has. */
+  private trendRequest: { names: string[]; capacity: number } = { names: [], capacity: 1 };
   private outputsSubscribed = false;
   private lastOutputs: Record<string, Value> | undefined;
   private gatewayInputs: Record<string, Value> = {};
@@ -142,8 +144,8 @@ export class SimSession {
         this.postFrame();
         return;
       case 'setTrend':
-        for (const name of m.names) this.plc?.read(name); // throws on an unknown name before anything changes
-        this.trend.configure(m.names, m.capacity);
+        this.trendRequest = { names: [...m.names], capacity: m.capacity };
+        this.configureTrend();
         return;
       case 'setInputs':
         this.gatewayInputs = { ...this.gatewayInputs, ...m.values };
@@ -228,9 +230,16 @@ export class SimSession {
     this.layout = next.layout;
     this.fingerprint = next.fingerprint;
     this.lastOutputs = undefined;
+    this.configureTrend();
     if (!online) this.resetCounters();
     this.deps.post({ type: 'compiled', ok: true, online, diagnostics, layout: next.layout });
     this.postFrame();
+  }
+
+  private configureTrend(): void {
+    const known = new Map((this.layout?.variables ?? []).map((v) => [v.name.toUpperCase(), v.name]));
+    const names = this.trendRequest.names.flatMap((n) => known.get(n.toUpperCase()) ?? []);
+    this.trend.configure(names, this.trendRequest.capacity);
   }
 
   private requirePlc(): Plc {

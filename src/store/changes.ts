@@ -12,8 +12,20 @@ export type ProjectProps = Pick<Project, 'name' | 'description' | 'profile'>;
 export type VariableScope = PouId | 'globals';
 
 export type Change =
-  | { readonly type: 'element.add'; readonly pou: PouId; readonly network: NetworkId; readonly index: number; readonly element: LdElement }
-  | { readonly type: 'element.remove'; readonly pou: PouId; readonly network: NetworkId; readonly index: number; readonly element: LdElement }
+  | {
+      readonly type: 'element.add';
+      readonly pou: PouId;
+      readonly network: NetworkId;
+      readonly index: number;
+      readonly element: LdElement;
+    }
+  | {
+      readonly type: 'element.remove';
+      readonly pou: PouId;
+      readonly network: NetworkId;
+      readonly index: number;
+      readonly element: LdElement;
+    }
   | {
       readonly type: 'element.update';
       readonly pou: PouId;
@@ -21,8 +33,20 @@ export type Change =
       readonly before: LdElement;
       readonly after: LdElement;
     }
-  | { readonly type: 'vlink.add'; readonly pou: PouId; readonly network: NetworkId; readonly index: number; readonly vlink: VLink }
-  | { readonly type: 'vlink.remove'; readonly pou: PouId; readonly network: NetworkId; readonly index: number; readonly vlink: VLink }
+  | {
+      readonly type: 'vlink.add';
+      readonly pou: PouId;
+      readonly network: NetworkId;
+      readonly index: number;
+      readonly vlink: VLink;
+    }
+  | {
+      readonly type: 'vlink.remove';
+      readonly pou: PouId;
+      readonly network: NetworkId;
+      readonly index: number;
+      readonly vlink: VLink;
+    }
   | {
       readonly type: 'network.update';
       readonly pou: PouId;
@@ -31,13 +55,43 @@ export type Change =
       readonly after: Partial<NetworkProps>;
     }
   | { readonly type: 'network.add'; readonly pou: PouId; readonly index: number; readonly network: Network }
-  | { readonly type: 'network.remove'; readonly pou: PouId; readonly index: number; readonly network: Network }
+  | {
+      readonly type: 'network.remove';
+      readonly pou: PouId;
+      readonly index: number;
+      readonly network: Network;
+    }
   | { readonly type: 'network.move'; readonly pou: PouId; readonly from: number; readonly to: number }
-  | { readonly type: 'variable.add'; readonly scope: VariableScope; readonly index: number; readonly variable: Variable }
-  | { readonly type: 'variable.remove'; readonly scope: VariableScope; readonly index: number; readonly variable: Variable }
-  | { readonly type: 'variable.update'; readonly scope: VariableScope; readonly index: number; readonly before: Variable; readonly after: Variable }
-  | { readonly type: 'project.update'; readonly before: Partial<ProjectProps>; readonly after: Partial<ProjectProps> }
-  | { readonly type: 'pou.update'; readonly pou: PouId; readonly before: Partial<Pick<Pou, 'name' | 'comment'>>; readonly after: Partial<Pick<Pou, 'name' | 'comment'>> };
+  | {
+      readonly type: 'variable.add';
+      readonly scope: VariableScope;
+      readonly index: number;
+      readonly variable: Variable;
+    }
+  | {
+      readonly type: 'variable.remove';
+      readonly scope: VariableScope;
+      readonly index: number;
+      readonly variable: Variable;
+    }
+  | {
+      readonly type: 'variable.update';
+      readonly scope: VariableScope;
+      readonly index: number;
+      readonly before: Variable;
+      readonly after: Variable;
+    }
+  | {
+      readonly type: 'project.update';
+      readonly before: Partial<ProjectProps>;
+      readonly after: Partial<ProjectProps>;
+    }
+  | {
+      readonly type: 'pou.update';
+      readonly pou: PouId;
+      readonly before: Partial<Pick<Pou, 'name' | 'comment'>>;
+      readonly after: Partial<Pick<Pou, 'name' | 'comment'>>;
+    };
 
 export function invertChange(c: Change): Change {
   switch (c.type) {
@@ -82,7 +136,12 @@ const insertAt = <T>(list: readonly T[], index: number, item: T): T[] => {
 };
 const removeAt = <T>(list: readonly T[], index: number): T[] => list.filter((_, i) => i !== index);
 
-function updateNetwork(project: Project, pouId: PouId, networkId: NetworkId, fn: (n: Network) => Network): Project {
+function updateNetwork(
+  project: Project,
+  pouId: PouId,
+  networkId: NetworkId,
+  fn: (n: Network) => Network,
+): Project {
   return updatePou(project, pouId, (pou) => ({
     ...pou,
     networks: pou.networks.map((n) => (n.id === networkId ? fn(n) : n)),
@@ -94,7 +153,11 @@ function updatePou(project: Project, pouId: PouId, fn: (p: Pou) => Pou): Project
   return { ...project, pous };
 }
 
-function updateVariables(project: Project, scope: VariableScope, fn: (vars: readonly Variable[]) => Variable[]): Project {
+function updateVariables(
+  project: Project,
+  scope: VariableScope,
+  fn: (vars: readonly Variable[]) => Variable[],
+): Project {
   if (scope === 'globals') return { ...project, globals: fn(project.globals) };
   return updatePou(project, scope, (pou) => ({ ...pou, variables: fn(pou.variables) }));
 }
@@ -105,24 +168,39 @@ const sameVLink = (a: VLink, b: VLink) => a.row === b.row && a.boundary === b.bo
 export function applyChange(project: Project, c: Change): Project {
   switch (c.type) {
     case 'element.add':
-      return updateNetwork(project, c.pou, c.network, (n) => ({ ...n, elements: insertAt(n.elements, c.index, c.element) }));
+      return updateNetwork(project, c.pou, c.network, (n) => ({
+        ...n,
+        elements: insertAt(n.elements, c.index, c.element),
+      }));
     case 'element.remove':
-      return updateNetwork(project, c.pou, c.network, (n) => ({ ...n, elements: n.elements.filter((e) => e.id !== c.element.id) }));
+      return updateNetwork(project, c.pou, c.network, (n) => ({
+        ...n,
+        elements: n.elements.filter((e) => e.id !== c.element.id),
+      }));
     case 'element.update':
       return updateNetwork(project, c.pou, c.network, (n) => ({
         ...n,
         elements: n.elements.map((e) => (e.id === c.before.id ? c.after : e)),
       }));
     case 'vlink.add':
-      return updateNetwork(project, c.pou, c.network, (n) => ({ ...n, vlinks: insertAt(n.vlinks, c.index, c.vlink) }));
+      return updateNetwork(project, c.pou, c.network, (n) => ({
+        ...n,
+        vlinks: insertAt(n.vlinks, c.index, c.vlink),
+      }));
     case 'vlink.remove':
-      return updateNetwork(project, c.pou, c.network, (n) => ({ ...n, vlinks: n.vlinks.filter((v) => !sameVLink(v, c.vlink)) }));
+      return updateNetwork(project, c.pou, c.network, (n) => ({
+        ...n,
+        vlinks: n.vlinks.filter((v) => !sameVLink(v, c.vlink)),
+      }));
     case 'network.update':
       return updateNetwork(project, c.pou, c.network, (n) => withProps(n, c.after));
     case 'network.add':
       return updatePou(project, c.pou, (p) => ({ ...p, networks: insertAt(p.networks, c.index, c.network) }));
     case 'network.remove':
-      return updatePou(project, c.pou, (p) => ({ ...p, networks: p.networks.filter((n) => n.id !== c.network.id) }));
+      return updatePou(project, c.pou, (p) => ({
+        ...p,
+        networks: p.networks.filter((n) => n.id !== c.network.id),
+      }));
     case 'network.move':
       return updatePou(project, c.pou, (p) => {
         const moved = p.networks[c.from];
@@ -152,7 +230,8 @@ function withProps(n: Network, props: Partial<NetworkProps>): Network {
   return out as unknown as Network;
 }
 
-export const applyChanges = (project: Project, changes: readonly Change[]): Project => changes.reduce(applyChange, project);
+export const applyChanges = (project: Project, changes: readonly Change[]): Project =>
+  changes.reduce(applyChange, project);
 
 /**
  * The changes that turn network `before` into `after` (same id). Elements are matched by id and
@@ -183,7 +262,15 @@ export function diffNetwork(pou: PouId, before: Network, after: Network): Change
   after.vlinks.forEach((v, i) => {
     if (!has(before.vlinks, v)) changes.push({ type: 'vlink.add', pou, network, index: i, vlink: v });
   });
-  const keys: (keyof NetworkProps)[] = ['label', 'title', 'comment', 'rows', 'cols', 'collapsed', 'extensions'];
+  const keys: (keyof NetworkProps)[] = [
+    'label',
+    'title',
+    'comment',
+    'rows',
+    'cols',
+    'collapsed',
+    'extensions',
+  ];
   const b: Record<string, unknown> = {};
   const a: Record<string, unknown> = {};
   for (const k of keys) {
@@ -193,8 +280,13 @@ export function diffNetwork(pou: PouId, before: Network, after: Network): Change
     }
   }
   if (Object.keys(a).length > 0) {
-    changes.push({ type: 'network.update', pou, network, before: b as Partial<NetworkProps>, after: a as Partial<NetworkProps> });
+    changes.push({
+      type: 'network.update',
+      pou,
+      network,
+      before: b as Partial<NetworkProps>,
+      after: a as Partial<NetworkProps>,
+    });
   }
   return changes;
 }
-

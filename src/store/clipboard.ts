@@ -17,7 +17,13 @@ export interface Clip extends ClipContent {
 }
 
 export const clipText = (content: ClipContent, variables: readonly Variable[] = []): string =>
-  JSON.stringify({ format: CLIP_FORMAT, version: CLIP_VERSION, elements: content.elements, vlinks: content.vlinks, variables } satisfies Clip);
+  JSON.stringify({
+    format: CLIP_FORMAT,
+    version: CLIP_VERSION,
+    elements: content.elements,
+    vlinks: content.vlinks,
+    variables,
+  } satisfies Clip);
 
 /** The clip in `text`, or undefined when the text is not a valid Rungsmith clip. */
 export function parseClip(text: string): Clip | undefined {
@@ -29,18 +35,42 @@ export function parseClip(text: string): Clip | undefined {
   }
   if (typeof data !== 'object' || data === null) return undefined;
   const d = data as Record<string, unknown>;
-  if (d.format !== CLIP_FORMAT || d.version !== CLIP_VERSION || !Array.isArray(d.elements) || !Array.isArray(d.vlinks)) return undefined;
+  if (
+    d.format !== CLIP_FORMAT ||
+    d.version !== CLIP_VERSION ||
+    !Array.isArray(d.elements) ||
+    !Array.isArray(d.vlinks)
+  )
+    return undefined;
   // Validate the elements and declarations by loading them as a one-network project.
   const probe = newProject('clip');
   const pou = probe.pous[0]!;
   const vlinks = d.vlinks as VLink[];
-  const rows = 1 + Math.max(0, ...(d.elements as { row?: number }[]).map((e) => (e.row ?? 0) + 16), ...vlinks.map((v) => (v.row ?? 0) + 2));
-  const cols = 1 + Math.max(0, ...(d.elements as { col?: number }[]).map((e) => (e.col ?? 0) + 2), ...vlinks.map((v) => v.boundary ?? 0));
+  const rows =
+    1 +
+    Math.max(
+      0,
+      ...(d.elements as { row?: number }[]).map((e) => (e.row ?? 0) + 16),
+      ...vlinks.map((v) => (v.row ?? 0) + 2),
+    );
+  const cols =
+    1 +
+    Math.max(
+      0,
+      ...(d.elements as { col?: number }[]).map((e) => (e.col ?? 0) + 2),
+      ...vlinks.map((v) => v.boundary ?? 0),
+    );
   const net = { ...newNetwork(), rows, cols, elements: d.elements, vlinks: d.vlinks };
   const variables = Array.isArray(d.variables) ? d.variables : [];
   const result = validateProject({ ...probe, pous: [{ ...pou, variables, networks: [net] }] });
   if (!result.ok) return undefined;
   const loaded = result.project.pous[0]!;
   const n = loaded.networks[0]!;
-  return { format: CLIP_FORMAT, version: CLIP_VERSION, elements: n.elements, vlinks: n.vlinks, variables: loaded.variables };
+  return {
+    format: CLIP_FORMAT,
+    version: CLIP_VERSION,
+    elements: n.elements,
+    vlinks: n.vlinks,
+    variables: loaded.variables,
+  };
 }

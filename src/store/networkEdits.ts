@@ -34,7 +34,8 @@ export function occupancy(n: Network, ignore?: ReadonlySet<ElementId>): Map<stri
   return map;
 }
 
-export const elementAt = (n: Network, cell: Cell): LdElement | undefined => occupancy(n).get(cellKey(cell.row, cell.col));
+export const elementAt = (n: Network, cell: Cell): LdElement | undefined =>
+  occupancy(n).get(cellKey(cell.row, cell.col));
 
 function grow(n: Network, elements: readonly LdElement[], vlinks: readonly VLink[]): Network {
   let rows = n.rows;
@@ -83,8 +84,16 @@ function pinOnRow(el: LdElement, row: number, side: 'in' | 'out'): boolean {
   return pins.some((p) => el.row + p.rowOffset === row);
 }
 
-/** Insert in series at `cell` (see the file comment). Undefined when a box straddling the insertion column is in the way. */
-export function insertInSeries(n: Network, cell: Cell, t: ElementTemplate, id: ElementId): Network | undefined {
+/**
+ * Insert in series at `cell` (see the file comment). Undefined when there is no room: a box
+ * straddles the insertion column, or a path crosses it on a row a new multi-row box would cover.
+ */
+export function insertInSeries(
+  n: Network,
+  cell: Cell,
+  t: ElementTemplate,
+  id: ElementId,
+): Network | undefined {
   const occupant = elementAt(n, cell);
   if (!occupant || occupant.kind === 'link') {
     const direct = placeElement(n, cell, t, id);
@@ -96,13 +105,16 @@ export function insertInSeries(n: Network, cell: Cell, t: ElementTemplate, id: E
   const lastRow = Math.max(n.rows, row + h);
   const bridgeRows: number[] = [];
   for (let r = 0; r < lastRow; r++) {
-    if (r >= row && r < row + h) continue;
+    if (r === row) continue;
     const endsHere =
       c === 0 ||
       n.elements.some((e) => e.col + elementSize(e).cols === c && pinOnRow(e, r, 'out')) ||
       n.vlinks.some((v) => v.boundary === c && (v.row === r || v.row + 1 === r));
     const startsHere = n.elements.some((e) => e.col === c && pinOnRow(e, r, 'in'));
-    if (endsHere && startsHere) bridgeRows.push(r);
+    if (!endsHere || !startsHere) continue;
+    // A path crossing where the new box's lower rows go would meet its pins: no room.
+    if (r > row && r < row + h) return undefined;
+    bridgeRows.push(r);
   }
   const shifted = n.elements.map((e) => (e.col >= c ? { ...e, col: e.col + w } : e));
   const vlinks = n.vlinks.map((v) => (v.boundary > c ? { ...v, boundary: v.boundary + w } : v));
@@ -127,7 +139,9 @@ function usedCols(n: Network): number {
 }
 
 /** Bounding box of some elements: rows top..bottom (inclusive), boundaries left..right. */
-export function boundsOf(elements: readonly LdElement[]): { top: number; bottom: number; left: number; right: number } | undefined {
+export function boundsOf(
+  elements: readonly LdElement[],
+): { top: number; bottom: number; left: number; right: number } | undefined {
   if (elements.length === 0) return undefined;
   let top = Infinity;
   let bottom = -Infinity;
@@ -149,7 +163,11 @@ export function boundsOf(elements: readonly LdElement[]): { top: number; bottom:
  * horizontal links from the selection's left edge to its right edge, joined by vertical links at
  * both ends (none at a power rail, which already joins every row).
  */
-export function wrapInParallelBranch(n: Network, ids: readonly ElementId[], newId: () => ElementId): Network | undefined {
+export function wrapInParallelBranch(
+  n: Network,
+  ids: readonly ElementId[],
+  newId: () => ElementId,
+): Network | undefined {
   const set = new Set(ids);
   const sel = n.elements.filter((e) => set.has(e.id));
   const b = boundsOf(sel);
@@ -178,10 +196,17 @@ export function wrapInParallelBranch(n: Network, ids: readonly ElementId[], newI
 }
 
 /** Moves elements by whole cells; horizontal links in the way go. Undefined if off-grid or blocked. */
-export function moveElements(n: Network, ids: readonly ElementId[], dRow: number, dCol: number): Network | undefined {
+export function moveElements(
+  n: Network,
+  ids: readonly ElementId[],
+  dRow: number,
+  dCol: number,
+): Network | undefined {
   const set = new Set(ids);
   if (dRow === 0 && dCol === 0) return n;
-  const moved = n.elements.filter((e) => set.has(e.id)).map((e) => ({ ...e, row: e.row + dRow, col: e.col + dCol }));
+  const moved = n.elements
+    .filter((e) => set.has(e.id))
+    .map((e) => ({ ...e, row: e.row + dRow, col: e.col + dCol }));
   if (moved.length === 0 || moved.some((e) => e.row < 0 || e.col < 0)) return undefined;
   const occ = occupancy(n, set);
   const replaced = new Set<ElementId>();
@@ -204,7 +229,8 @@ export function deleteElements(n: Network, ids: readonly ElementId[]): Network {
 }
 
 export function addVLink(n: Network, v: VLink): Network {
-  if (v.row < 0 || v.boundary < 0 || n.vlinks.some((w) => w.row === v.row && w.boundary === v.boundary)) return n;
+  if (v.row < 0 || v.boundary < 0 || n.vlinks.some((w) => w.row === v.row && w.boundary === v.boundary))
+    return n;
   return grow(n, n.elements, [...n.vlinks, v]);
 }
 
@@ -237,7 +263,12 @@ export function copyElements(n: Network, ids: readonly ElementId[]): ClipContent
  * in the way, the paste goes below everything in the network instead, at the same column.
  * Returns the network and the pasted elements' ids.
  */
-export function pasteElements(n: Network, clip: ClipContent, at: Cell, newId: () => ElementId): { network: Network; ids: ElementId[] } {
+export function pasteElements(
+  n: Network,
+  clip: ClipContent,
+  at: Cell,
+  newId: () => ElementId,
+): { network: Network; ids: ElementId[] } {
   const fits = (row: number) => {
     const occ = occupancy(n);
     return clip.elements.every((e) =>
@@ -247,15 +278,20 @@ export function pasteElements(n: Network, clip: ClipContent, at: Cell, newId: ()
       }),
     );
   };
-  const below = Math.max(0, ...n.elements.map((e) => e.row + elementSize(e).rows), ...n.vlinks.map((v) => v.row + 2));
+  const below = Math.max(
+    0,
+    ...n.elements.map((e) => e.row + elementSize(e).rows),
+    ...n.vlinks.map((v) => v.row + 2),
+  );
   const row = fits(at.row) ? at.row : below;
   const pasted = clip.elements.map((e) => ({ ...e, id: newId(), row: e.row + row, col: e.col + at.col }));
   const occ = occupancy(n);
   const replaced = new Set<ElementId>();
-  for (const el of pasted) for (const c of elementCells(el)) {
-    const o = occ.get(cellKey(c.row, c.col));
-    if (o) replaced.add(o.id);
-  }
+  for (const el of pasted)
+    for (const c of elementCells(el)) {
+      const o = occ.get(cellKey(c.row, c.col));
+      if (o) replaced.add(o.id);
+    }
   const vlinks = [...n.vlinks];
   for (const v of clip.vlinks) {
     const moved = { row: v.row + row, boundary: v.boundary + at.col };

@@ -64,6 +64,8 @@ export interface SimState {
   step(project: Project, scans: number): void;
   stepNetwork(project: Project): void;
   reset(): void;
+  /** Another project was opened: stop, forget the program (the next Run compiles the new one). */
+  unload(): void;
   warmRestart(): void;
   setCycle(cycleMs: number): void;
   /** The document changed: compiled and applied as an online change when a program is loaded. */
@@ -114,10 +116,8 @@ export function createSimStore(transport: SimTransport): SimStore {
     send({ type: 'setBreakpoints', networks });
   };
   const sendTrend = () => {
-    const { layout, trendNames, trendCapacity } = store.getState();
-    if (!layout) return;
-    const known = trendNames.filter((n) => layout.variables.some((v) => sameName(v.name, n)));
-    send({ type: 'setTrend', names: known, capacity: trendCapacity });
+    const { trendNames, trendCapacity } = store.getState();
+    send({ type: 'setTrend', names: trendNames, capacity: trendCapacity });
   };
 
   const store: SimStore = createStore<SimState>()((set, get) => {
@@ -170,6 +170,23 @@ export function createSimStore(transport: SimTransport): SimStore {
       },
       reset: () => {
         set({ notice: undefined, trend: emptyTrend(get().trendNames) });
+        send({ type: 'reset' });
+      },
+      unload: () => {
+        sentProject = undefined;
+        set({
+          notice: undefined,
+          refusal: undefined,
+          live: false,
+          layout: undefined,
+          elementIndex: new Map(),
+          vlinkIndex: new Map(),
+          variableIndex: new Map(),
+          breakpoints: [],
+          trend: emptyTrend(get().trendNames),
+        });
+        send({ type: 'unforceAll' });
+        send({ type: 'setBreakpoints', networks: [] });
         send({ type: 'reset' });
       },
       warmRestart: () => {
@@ -247,9 +264,8 @@ export function createSimStore(transport: SimTransport): SimStore {
         }
         if (message.layout) {
           store.setState({ refusal: undefined, ...indexLayout(message.layout) });
-          // Breakpoints and trend signals are kept by network id / name; send them for the new program.
+          // Breakpoints are kept by network id; send their indexes in the new program.
           sendBreakpoints();
-          sendTrend();
         }
         return;
       case 'frame':

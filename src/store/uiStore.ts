@@ -16,7 +16,10 @@ import type { Cell } from '../model/grid';
 import type { ElementId, NetworkId } from '../model/ids';
 import type { ElementTemplate } from './networkEdits';
 
-export type Tool = { readonly kind: 'select' } | { readonly kind: 'vlink' } | { readonly kind: 'place'; readonly template: ElementTemplate; readonly name: string };
+export type Tool =
+  | { readonly kind: 'select' }
+  | { readonly kind: 'vlink' }
+  | { readonly kind: 'place'; readonly template: ElementTemplate; readonly name: string };
 export type Theme = 'light' | 'dark';
 
 export interface Selection {
@@ -46,7 +49,8 @@ export interface UiState {
   readonly tool: Tool;
   readonly viewport: Viewport;
   readonly theme: Theme;
-  readonly focusRequest: { readonly network: NetworkId; readonly cell: Cell; readonly seq: number } | undefined;
+  readonly focusRequest:
+    { readonly network: NetworkId; readonly cell: Cell; readonly seq: number } | undefined;
   readonly editing: { readonly element: ElementId } | undefined;
   readonly blockPicker: { readonly network: NetworkId; readonly cell: Cell } | undefined;
   /** A short message for the status bar ("Nothing to paste"), cleared by the next action. */
@@ -90,7 +94,12 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme'>> = {}): Ui
       const sel = get().selection;
       if (sel.network !== network) return set({ selection: { network, elements: [element] } });
       const has = sel.elements.includes(element);
-      set({ selection: { network, elements: has ? sel.elements.filter((e) => e !== element) : [...sel.elements, element] } });
+      set({
+        selection: {
+          network,
+          elements: has ? sel.elements.filter((e) => e !== element) : [...sel.elements, element],
+        },
+      });
     },
     clearSelection: () => set({ selection: { network: undefined, elements: [] } }),
     setCursor: (cursor) => set({ cursor }),

@@ -11,7 +11,11 @@ export function renameOperand(operand: string, from: string, to: string): string
   return dot < 0 ? to : `${to}${trimmed.slice(dot)}`;
 }
 
-function renameInRecord(rec: Readonly<Record<string, string>>, from: string, to: string): Readonly<Record<string, string>> {
+function renameInRecord(
+  rec: Readonly<Record<string, string>>,
+  from: string,
+  to: string,
+): Readonly<Record<string, string>> {
   let changed = false;
   const out: Record<string, string> = {};
   for (const [pin, operand] of Object.entries(rec)) {

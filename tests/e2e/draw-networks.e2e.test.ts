@@ -15,7 +15,10 @@ beforeAll(async () => {
   page = await browser.newPage({ viewport: { width: 1440, height: 900 } });
   errors = collectPageErrors(page);
   await page.goto(inject('appUrl'));
-  await page.getByRole('heading', { name: /Rungsmith/ }).first().waitFor();
+  await page
+    .getByRole('heading', { name: /Rungsmith/ })
+    .first()
+    .waitFor();
   draw = new DrawPage(page);
 });
 
@@ -56,6 +59,13 @@ test('networks: insert, title, label, comment, collapse, reorder, delete and und
 
   await page.getByRole('button', { name: 'Move network 1 down' }).click();
   expect(await titles()).toEqual(['Second', 'First']);
+  // Reorder by dragging network 2's handle onto network 1's header.
+  await page
+    .getByRole('button', { name: 'Drag to reorder network 2' })
+    .dragTo(page.getByRole('group', { name: /^Network 1( |$)/ }));
+  expect(await titles()).toEqual(['First', 'Second']);
+  await page.getByRole('button', { name: 'Move network 2 up' }).click();
+  expect(await titles()).toEqual(['Second', 'First']);
 
   await page.getByRole('button', { name: 'Delete network 2' }).click();
   expect(await titles()).toEqual(['Second']);
@@ -89,7 +99,9 @@ test('dragging elements moves them by whole cells as one undo step', async () =>
   const steps = await page.evaluate(() => window.rungsmith!.documentStore!.getState().history.undo.length);
   await page.keyboard.press('Control+z');
   expect((await draw.elements(0)).map((e) => `${e.name}@${e.row},${e.col}`)).toEqual(['A@0,0', 'B@0,1']);
-  expect(await page.evaluate(() => window.rungsmith!.documentStore!.getState().history.undo.length)).toBe(steps - 1);
+  expect(await page.evaluate(() => window.rungsmith!.documentStore!.getState().history.undo.length)).toBe(
+    steps - 1,
+  );
 });
 
 test('the block picker places a function block and declares its instance', async () => {
@@ -100,7 +112,9 @@ test('the block picker places a function block and declares its instance', async
   await draw.typeName('DelayTimer');
   const box = (await draw.networks())[0]!.elements.find((e) => e.kind === 'box');
   expect(box).toMatchObject({ blockType: 'TON', instance: 'DelayTimer', row: 0, col: 1 });
-  const vars = await page.evaluate(() => window.rungsmith!.documentStore!.getState().project.pous[0]!.variables.map((v) => `${v.name}:${v.type}`));
+  const vars = await page.evaluate(() =>
+    window.rungsmith!.documentStore!.getState().project.pous[0]!.variables.map((v) => `${v.name}:${v.type}`),
+  );
   expect(vars).toContain('DelayTimer:TON');
 });
 
@@ -110,7 +124,9 @@ test('zooming with Ctrl+wheel keeps clicks on the right cell', async () => {
   await page.keyboard.down('Control');
   await page.mouse.wheel(0, -300);
   await page.keyboard.up('Control');
-  await expect.poll(() => page.evaluate(() => window.rungsmith!.uiStore!.getState().viewport.zoom)).toBeGreaterThan(1.2);
+  await expect
+    .poll(() => page.evaluate(() => window.rungsmith!.uiStore!.getState().viewport.zoom))
+    .toBeGreaterThan(1.2);
   await draw.pickPalette('coil-SET');
   await draw.clickCell(0, 1, 5);
   await draw.typeName('Alarm');

@@ -14,7 +14,10 @@ beforeAll(async () => {
   page = await browser.newPage({ viewport: { width: 1440, height: 900 } });
   errors = collectPageErrors(page);
   await page.goto(inject('appUrl'));
-  await page.getByRole('heading', { name: /Rungsmith/ }).first().waitFor();
+  await page
+    .getByRole('heading', { name: /Rungsmith/ })
+    .first()
+    .waitFor();
   await page.evaluate(() => window.rungsmith!.documentStore!.getState().newProject('Seal-in'));
   draw = new DrawPage(page);
 });
@@ -57,7 +60,9 @@ test('drawing a seal-in rung with the mouse', async () => {
   expect(await draw.elements(0)).toEqual(SEAL_IN);
   expect((await draw.networks())[0]!.vlinks).toEqual([{ row: 0, boundary: 1 }]);
   // Naming each element offered to declare it (BOOL); the checks then find nothing wrong.
-  const vars = await page.evaluate(() => window.rungsmith!.documentStore!.getState().project.pous[0]!.variables.map((v) => `${v.name}:${v.type}`));
+  const vars = await page.evaluate(() =>
+    window.rungsmith!.documentStore!.getState().project.pous[0]!.variables.map((v) => `${v.name}:${v.type}`),
+  );
   expect(vars.sort()).toEqual(['Motor:BOOL', 'Start:BOOL', 'Stop:BOOL']);
   await expect.poll(() => draw.problemsSummary()).toBe('No problems');
 });
@@ -93,7 +98,9 @@ test('drawing the same rung with the keyboard only', async () => {
   expect(await draw.elements(1)).toEqual(SEAL_IN);
   expect((await draw.networks())[1]!.vlinks).toEqual([{ row: 0, boundary: 1 }]);
   await expect.poll(() => draw.problemsSummary()).toBe('No problems');
-  await expect.poll(() => page.getByTestId('cursor-position').textContent()).toBe('Network 2, row 2, column 2');
+  await expect
+    .poll(() => page.getByTestId('cursor-position').textContent())
+    .toBe('Network 2, row 2, column 2');
 });
 
 test('copy and paste a rung into a new network, then delete a contact and see the problem', async () => {

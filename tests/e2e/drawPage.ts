@@ -22,7 +22,9 @@ export class DrawPage {
   async networks(): Promise<Network[]> {
     return this.page.evaluate(() => {
       const s = window.rungsmith!.documentStore!.getState();
-      return JSON.parse(JSON.stringify(s.project.pous.find((p) => p.id === s.activePouId)!.networks)) as Network[];
+      return JSON.parse(
+        JSON.stringify(s.project.pous.find((p) => p.id === s.activePouId)!.networks),
+      ) as Network[];
     });
   }
 
@@ -31,9 +33,16 @@ export class DrawPage {
     const n = (await this.networks())[index]!;
     return n.elements
       .map((e) => {
-        const name = e.kind === 'contact' || e.kind === 'coil' ? e.variable : e.kind === 'jump' ? e.target : undefined;
+        const name =
+          e.kind === 'contact' || e.kind === 'coil' ? e.variable : e.kind === 'jump' ? e.target : undefined;
         const type = e.kind === 'contact' ? e.contact : e.kind === 'coil' ? e.coil : undefined;
-        return { kind: e.kind, row: e.row, col: e.col, ...(name !== undefined ? { name } : {}), ...(type ? { type } : {}) };
+        return {
+          kind: e.kind,
+          row: e.row,
+          col: e.col,
+          ...(name !== undefined ? { name } : {}),
+          ...(type ? { type } : {}),
+        };
       })
       .sort((a, b) => a.row - b.row || a.col - b.col);
   }
@@ -45,13 +54,17 @@ export class DrawPage {
     const n = networks[index]!;
     const contentX = RAIL_X + col * CELL_W + CELL_W / 2;
     const contentY = layout.tops[index]! + headerHeight(n) + row * CELL_H + CELL_H / 2;
-    const { zoom, left, top, boxX, boxY } = await this.canvas().evaluate((el, p) => {
-      const z = window.rungsmith!.uiStore!.getState().viewport.zoom;
-      // Bring the cell into view like a user scrolling to it.
-      if (p.y * z < el.scrollTop || p.y * z > el.scrollTop + el.clientHeight - 40) el.scrollTop = p.y * z - el.clientHeight / 2;
-      const r = el.getBoundingClientRect();
-      return { zoom: z, left: el.scrollLeft, top: el.scrollTop, boxX: r.left, boxY: r.top };
-    }, { x: contentX, y: contentY });
+    const { zoom, left, top, boxX, boxY } = await this.canvas().evaluate(
+      (el, p) => {
+        const z = window.rungsmith!.uiStore!.getState().viewport.zoom;
+        // Bring the cell into view like a user scrolling to it.
+        if (p.y * z < el.scrollTop || p.y * z > el.scrollTop + el.clientHeight - 40)
+          el.scrollTop = p.y * z - el.clientHeight / 2;
+        const r = el.getBoundingClientRect();
+        return { zoom: z, left: el.scrollLeft, top: el.scrollTop, boxX: r.left, boxY: r.top };
+      },
+      { x: contentX, y: contentY },
+    );
     await this.page.waitForTimeout(0);
     return { x: boxX + contentX * zoom - left, y: boxY + contentY * zoom - top };
   }

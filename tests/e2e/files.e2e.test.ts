@@ -27,9 +27,14 @@ test('after a reload the work is restored from the browser autosave', async () =
 
   await editor.page.reload();
   await editor.page.getByTestId('file-notice').waitFor();
-  expect(await editor.page.getByTestId('file-notice').textContent()).toMatch(/Restored "Untitled" .*not yet saved to a file/);
+  expect(await editor.page.getByTestId('file-notice').textContent()).toMatch(
+    /Restored "Untitled" .*not yet saved to a file/,
+  );
   const vars = (await editor.project()).pous[0]?.variables;
-  expect(vars?.map((v) => `${v.name} ${v.location ?? ''} ${v.comment}`.trim())).toEqual(['Start %IX0.0', 'Motor %QX0.0 Conveyor motor']);
+  expect(vars?.map((v) => `${v.name} ${v.location ?? ''} ${v.comment}`.trim())).toEqual([
+    'Start %IX0.0',
+    'Motor %QX0.0 Conveyor motor',
+  ]);
   // Still unsaved to a file, so the project name shows the unsaved mark.
   expect(await editor.page.getByTestId('project-name').textContent()).toContain('•');
   await editor.tab('Variables');
@@ -53,11 +58,23 @@ test('opening a corrupt or invalid file shows located errors and keeps the open 
 
   // Valid JSON, but an element lies outside its network: the error names where.
   const bad = newProject('Bad', {
-    pous: [newPou('Main', { networks: [newNetwork({ rows: 1, cols: 2, elements: [{ id: 'x' as ElementId, kind: 'link', row: 3, col: 0 }] })] })],
+    pous: [
+      newPou('Main', {
+        networks: [
+          newNetwork({
+            rows: 1,
+            cols: 2,
+            elements: [{ id: 'x' as ElementId, kind: 'link', row: 3, col: 0 }],
+          }),
+        ],
+      }),
+    ],
   });
   await editor.openFile('bad.json', saveProject(bad));
   await dialog.waitFor();
-  expect(await dialog.textContent()).toMatch(/pous\[0\]\.networks\[0\]\.elements\[0\]: element at row 3, column 0 lies outside the 1x2 grid/);
+  expect(await dialog.textContent()).toMatch(
+    /pous\[0\]\.networks\[0\]\.elements\[0\]: element at row 3, column 0 lies outside the 1x2 grid/,
+  );
   await editor.page.keyboard.press('Escape');
   await dialog.waitFor({ state: 'detached' });
   expect(await editor.project()).toEqual(before);
@@ -88,6 +105,13 @@ test('"New" asks before discarding unsaved work; Save downloads the project as .
   await editor.menu('File', 'New project');
   await expect.poll(async () => (await editor.project()).pous[0]?.variables.length).toBe(0);
   await editor.declare('Lamp');
+  // Ctrl+S saves from anywhere outside a text field.
+  await editor.page.getByRole('heading', { name: 'Rungsmith' }).click();
+  const again = editor.page.waitForEvent('download');
+  await editor.page.keyboard.press('Control+s');
+  const second = loadProject(await readFile((await (await again).path())!, 'utf8'));
+  expect(second.ok && second.project.pous[0]?.variables.map((v) => v.name)).toEqual(['Lamp']);
+  await editor.declare('Fan');
   await editor.menu('File', 'New project');
   await ask.getByRole('button', { name: 'Discard and start new' }).click();
   await expect.poll(async () => (await editor.project()).pous[0]?.variables.length).toBe(0);
@@ -101,9 +125,33 @@ test('every built-in example loads from the File menu and shows no problems', as
   for (const example of EXAMPLES) {
     await editor.menu('File', `Example: ${example.title}`);
     await expect.poll(async () => (await editor.project()).name).toBe(example.build().name);
-    await expect.poll(() => editor.problems.getByTestId('problems-summary').textContent()).toBe('No problems');
+    await expect
+      .poll(() => editor.problems.getByTestId('problems-summary').textContent())
+      .toBe('No problems');
     expect(await editor.problems.getByTestId('problem').count()).toBe(0);
   }
+  expect(editor.errors).toEqual([]);
+  await editor.close();
+});
+
+test('a project file dropped on the page opens like File > Open', async () => {
+  const editor = await EditorPage.open(browser, inject('appUrl'));
+  const example = EXAMPLES.find((x) => x.id === 'parts-counter')!.build();
+  await editor.page.evaluate(
+    ([name, text]) => {
+      const data = new DataTransfer();
+      data.items.add(new File([text], name, { type: 'application/json' }));
+      const target = document.querySelector('main') ?? document.body;
+      target.dispatchEvent(
+        new DragEvent('dragover', { dataTransfer: data, bubbles: true, cancelable: true }),
+      );
+      target.dispatchEvent(new DragEvent('drop', { dataTransfer: data, bubbles: true, cancelable: true }));
+    },
+    ['counter.json', saveProject(example)] as const,
+  );
+  await expect.poll(async () => (await editor.project()).name).toBe(example.name);
+  expect(await editor.page.getByTestId('file-notice').textContent()).toContain('Opened counter.json');
+  expect(await editor.project()).toEqual(example);
   expect(editor.errors).toEqual([]);
   await editor.close();
 });

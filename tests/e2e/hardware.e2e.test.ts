@@ -5,6 +5,7 @@ import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
 import { eventually, mbpoll, mbpollValues } from '../gateway/helpers';
 import { collectPageErrors, launchChromium } from './browser';
+import { SimPage } from './simPage';
 
 describe('Hardware panel', () => {
   let gw: RunningGateway;
@@ -63,5 +64,40 @@ describe('Hardware panel', () => {
     await gw.hub.stop('test over');
     await gw.hub.release('test-controller');
     expect(errors).toEqual([]);
+  });
+
+  it('runs the motor example on the simulated device: Start from the panel lights the Motor coil and its Modbus coil', async () => {
+    const journey = await browser.newPage({ viewport: { width: 1440, height: 900 } });
+    const journeyErrors = collectPageErrors(journey);
+    await journey.goto(gw.url);
+    const sim = new SimPage(journey);
+    await sim.openExample('Motor start/stop (seal-in)');
+    await journey.getByTestId('tab-hardware').click();
+    const panel = journey.getByTestId('hardware-panel');
+    await panel.getByTestId('hw-connect').click();
+    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
+    // The example's Start, Stop and Motor are bound to the gateway's points: no mapping problems.
+    expect(await panel.getByTestId('hw-mapping').count()).toBe(0);
+    await expect.poll(() => panel.getByTestId('hw-point-%IX0.0').locator('td').nth(1).textContent()).toBe('Start');
+
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    const port = gw.simulated?.modbusServerPort ?? 0;
+    const start = panel.getByTestId('hw-point-%IX0.0').getByTestId('hw-switch');
+    await start.click(); // Start pressed
+    await sim.waitForValue('Start', true);
+    await sim.waitForValue('Motor', true);
+    await start.click(); // Start released: Motor seals in
+    await sim.waitForValue('Start', false);
+    await expect.poll(() => sim.wireLit(0, 0, 9)).toBe(true);
+    expect(await sim.value('Motor')).toBe(true);
+    await expect.poll(() => panel.getByTestId('hw-point-%QX0.0').getByTestId('hw-value').textContent()).toBe('TRUE');
+    expect(mbpollValues(await mbpoll(port, ['-t', '0', '-r', '0', '-c', '2', '127.0.0.1']))).toEqual([1, 0]);
+
+    // Pause: the gateway writes the safe state.
+    await sim.button('pause').click();
+    await eventually(async () => mbpollValues(await mbpoll(port, ['-t', '0', '-r', '0', '127.0.0.1']))[0] === 0, 5000, 'safe state after pause');
+    expect(journeyErrors).toEqual([]);
+    await journey.close();
   });
 });

@@ -28,7 +28,10 @@ function sealInWithoutMotor(): string {
     { id: id('m1'), kind: 'coil', coil: 'COIL', variable: 'Motor', row: 0, col: 3 },
   ];
   const main = newPou('Main', {
-    variables: [variable('Start', 'BOOL', { location: '%IX0.0' }), variable('Stop', 'BOOL', { location: '%IX0.1' })],
+    variables: [
+      variable('Start', 'BOOL', { location: '%IX0.0' }),
+      variable('Stop', 'BOOL', { location: '%IX0.1' }),
+    ],
     networks: [newNetwork({ rows: 1, cols: 4, elements, title: 'Motor' })],
   });
   return saveProject(newProject('Conveyor', { pous: [main] }));
@@ -41,21 +44,32 @@ test('declaring variables in the table, with mistakes shown inline until fixed',
   await editor.declare('Start', { address: '%IX0.0', comment: 'Start push button' });
   await editor.declare('Stop', { address: '%ix0.0' });
   // Same address twice (whatever the spelling): the second row says so.
-  await expect.poll(() => editor.variableRow('Stop').locator('xpath=following-sibling::tr[1]').textContent()).toContain(
-    'Address: %IX0.0 is already used by "Start" in row 1',
-  );
+  await expect
+    .poll(() => editor.variableRow('Stop').locator('xpath=following-sibling::tr[1]').textContent())
+    .toContain('Address: %IX0.0 is already used by "Start" in row 1');
   await editor.fill(editor.variableRow('Stop').getByLabel('Address'), '%IX0.1');
   await editor.declare('Motor', { address: '%QW0' });
-  await expect.poll(() => editor.variables.getByTestId('variable-issue').allTextContents()).toEqual([
-    'Address: %QW0 holds a 16-bit word, which does not fit type BOOL',
-  ]);
+  await expect
+    .poll(() => editor.variables.getByTestId('variable-issue').allTextContents())
+    .toEqual(['Address: %QW0 holds a 16-bit word, which does not fit type BOOL']);
   await editor.fill(editor.variableRow('Motor').getByLabel('Address'), '%QX0.0');
   await editor.declare('Count', { type: 'INT', initial: '70000' });
   await expect.poll(() => editor.variables.getByTestId('variable-issue').count()).toBe(1);
-  expect(await editor.variables.getByTestId('variable-issue').textContent()).toMatch(/Initial value: .*70000/);
+  expect(await editor.variables.getByTestId('variable-issue').textContent()).toMatch(
+    /Initial value: .*70000/,
+  );
   await editor.fill(editor.variableRow('Count').getByLabel('Initial value'), '10');
   await editor.declare('1st');
-  await expect.poll(() => editor.variables.getByTestId('variable-issue').textContent()).toMatch(/Name: "1st" is not an IEC identifier/);
+  await expect
+    .poll(() => editor.variables.getByTestId('variable-issue').textContent())
+    .toMatch(/Name: "1st" is not an IEC identifier/);
+  // The engine reports it too; clicking that problem brings the row back into view and focus.
+  await editor.tab('Problems');
+  const nameProblem = editor.problems.getByTestId('problem').filter({ hasText: 'LD-E11' });
+  expect(await nameProblem.textContent()).toMatch(/LD-E11.*variables.*"1st"/);
+  await nameProblem.click();
+  await expect.poll(() => editor.page.evaluate(() => (document.activeElement as HTMLInputElement | null)?.value)).toBe('1st');
+  expect(await editor.page.getByRole('tab', { name: 'Variables', exact: true }).getAttribute('aria-selected')).toBe('true');
   await editor.variables.getByRole('button', { name: 'Delete variable 1st' }).click();
 
   await expect.poll(() => editor.variables.getByTestId('variable-issue').count()).toBe(0);
@@ -69,7 +83,9 @@ test('declaring variables in the table, with mistakes shown inline until fixed',
 
   // A name already taken is refused with the reason, and the row keeps its old name.
   await editor.fill(editor.variableRow('Count').getByLabel('Name'), 'MOTOR');
-  expect(await editor.variables.getByRole('alert').first().textContent()).toContain('Cannot rename "Count" to "MOTOR"');
+  expect(await editor.variables.getByRole('alert').first().textContent()).toContain(
+    'Cannot rename "Count" to "MOTOR"',
+  );
   vars = (await editor.project()).pous[0]?.variables;
   expect(vars?.map((v) => v.name)).toEqual(['Start', 'Stop', 'Motor', 'Count']);
   expect(editor.errors).toEqual([]);
@@ -101,7 +117,9 @@ test('a rule violation is listed with its rule id, jumps to the element, and dis
   await offer.getByRole('button', { name: 'BOOL output at %QX0.0' }).click();
 
   await editor.tab('Problems');
-  await expect.poll(() => editor.problems.getByTestId('problem').filter({ hasText: 'LD-R08' }).count()).toBe(0);
+  await expect
+    .poll(() => editor.problems.getByTestId('problem').filter({ hasText: 'LD-R08' }).count())
+    .toBe(0);
   expect(await editor.problems.getByTestId('problems-summary').textContent()).toBe('No problems');
   const motor = (await editor.project()).pous[0]?.variables.find((v) => v.name === 'Motor');
   expect(motor).toMatchObject({ type: 'BOOL', location: '%QX0.0' });
@@ -112,6 +130,10 @@ test('a rule violation is listed with its rule id, jumps to the element, and dis
   await expect
     .poll(async () => (await editor.project()).pous[0]?.networks[0]?.elements.find((e) => e.id === 'm1'))
     .toMatchObject({ variable: 'Conveyor' });
+  // The table shows where a variable is used and takes you there.
+  await editor.uiSelect(undefined, []);
+  await editor.variableRow('Start').getByRole('button', { name: 'Show uses of Start' }).click();
+  expect((await editor.selection()).elements).toEqual(['c1']);
   expect(editor.errors).toEqual([]);
   await editor.close();
 });
@@ -128,29 +150,36 @@ test('typing the variable of a coil completes from the table and offers to decla
   await field.click();
   await field.fill('St');
   const options = editor.inspector.getByRole('listbox', { name: 'Suggestions' }).getByRole('option');
-  await expect.poll(() => options.allTextContents()).toEqual([
-    'StopBOOL%IX0.1',
-    'StartBOOL%IX0.0',
-    'Declare StBOOL',
-    'Declare StBOOL output at %QX0.0',
-    'Declare StBOOL memory at %MX0.0',
-  ]);
+  await expect
+    .poll(() => options.allTextContents())
+    .toEqual([
+      'StopBOOL%IX0.1',
+      'StartBOOL%IX0.0',
+      'Declare StBOOL',
+      'Declare StBOOL output at %QX0.0',
+      'Declare StBOOL memory at %MX0.0',
+    ]);
   await field.fill('Pump');
-  await expect.poll(() => options.allTextContents()).toEqual([
-    'Declare PumpBOOL',
-    'Declare PumpBOOL output at %QX0.0',
-    'Declare PumpBOOL memory at %MX0.0',
-  ]);
+  await expect
+    .poll(() => options.allTextContents())
+    .toEqual(['Declare PumpBOOL', 'Declare PumpBOOL output at %QX0.0', 'Declare PumpBOOL memory at %MX0.0']);
   await field.press('ArrowDown');
   await field.press('Enter');
   const project = await editor.project();
-  expect(project.pous[0]?.networks[0]?.elements.find((e) => e.id === 'm1')).toMatchObject({ variable: 'Pump' });
-  expect(project.pous[0]?.variables.find((v) => v.name === 'Pump')).toMatchObject({ type: 'BOOL', location: '%QX0.0' });
+  expect(project.pous[0]?.networks[0]?.elements.find((e) => e.id === 'm1')).toMatchObject({
+    variable: 'Pump',
+  });
+  expect(project.pous[0]?.variables.find((v) => v.name === 'Pump')).toMatchObject({
+    type: 'BOOL',
+    location: '%QX0.0',
+  });
   // Declaring and binding was one step: one undo takes both back.
   await editor.page.getByTestId('menu-edit').click();
   await editor.page.getByRole('menuitem', { name: 'Undo' }).click();
   const undone = await editor.project();
-  expect(undone.pous[0]?.networks[0]?.elements.find((e) => e.id === 'm1')).toMatchObject({ variable: 'Motor' });
+  expect(undone.pous[0]?.networks[0]?.elements.find((e) => e.id === 'm1')).toMatchObject({
+    variable: 'Motor',
+  });
   expect(undone.pous[0]?.variables.map((v) => v.name)).toEqual(['Start', 'Stop']);
   expect(editor.errors).toEqual([]);
   await editor.close();

@@ -15,7 +15,10 @@ export class EditorPage {
     const page = await context.newPage();
     const editor = new EditorPage(page);
     await page.goto(url);
-    await page.getByRole('heading', { name: /Rungsmith/ }).first().waitFor();
+    await page
+      .getByRole('heading', { name: /Rungsmith/ })
+      .first()
+      .waitFor();
     return editor;
   }
 
@@ -44,7 +47,10 @@ export class EditorPage {
   }
 
   /** Adds a row with "Add variable", names it and fills the given fields, committing each with Enter. */
-  async declare(name: string, fields: { type?: string; address?: string; initial?: string; comment?: string } = {}) {
+  async declare(
+    name: string,
+    fields: { type?: string; address?: string; initial?: string; comment?: string } = {},
+  ) {
     await this.variables.getByRole('button', { name: 'Add variable' }).click();
     const nameField = this.variables.locator('input[aria-label="Name"]:focus');
     await nameField.fill(name);
@@ -82,11 +88,21 @@ export class EditorPage {
     return this.page.evaluate(() => window.rungsmith!.uiStore!.getState().selection);
   }
 
+  /** Clears or sets the selection directly (a test set-up step, not what is being tested). */
+  uiSelect(network: string | undefined, elements: string[]): Promise<void> {
+    return this.page.evaluate(
+      ([n, els]) => window.rungsmith!.uiStore!.getState().select(n as never, els as never),
+      [network, elements] as const,
+    );
+  }
+
   /** Waits until the autosave has written the current document to IndexedDB. */
   async waitForAutosave() {
     await this.page.waitForFunction(() => {
       const status = document.querySelector('[data-testid="autosave-status"]');
-      return status?.getAttribute('data-pending') === 'false' && Number(status.getAttribute('data-saved-at')) > 0;
+      return (
+        status?.getAttribute('data-pending') === 'false' && Number(status.getAttribute('data-saved-at')) > 0
+      );
     });
   }
 }

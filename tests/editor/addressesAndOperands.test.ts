@@ -16,11 +16,19 @@ describe('next free address', () => {
       ['b', 'BOOL', { location: '%IX0.1' }],
     ]);
     expect(nextFreeAddress(project, 'I', 'BOOL')).toBe('%IX0.2');
-    const full = withVars(Array.from({ length: 8 }, (_, i) => [`i${i}`, 'BOOL', { location: `%QX0.${i}` }] as Parameters<typeof variable>));
+    const full = withVars(
+      Array.from(
+        { length: 8 },
+        (_, i) => [`i${i}`, 'BOOL', { location: `%QX0.${i}` }] as Parameters<typeof variable>,
+      ),
+    );
     expect(nextFreeAddress(full.project, 'Q', 'BOOL')).toBe('%QX1.0');
   });
   test('picks words for 16-bit types and ignores other areas', () => {
-    const { project } = withVars([['w', 'INT', { location: '%MW0' }], ['x', 'INT', { location: '%IW1' }]]);
+    const { project } = withVars([
+      ['w', 'INT', { location: '%MW0' }],
+      ['x', 'INT', { location: '%IW1' }],
+    ]);
     expect(nextFreeAddress(project, 'M', 'INT')).toBe('%MW1');
     expect(nextFreeAddress(project, 'Q', 'INT')).toBe('%QW0');
     expect(nextFreeAddress(project, 'I', 'TON')).toBeUndefined();
@@ -43,14 +51,19 @@ describe('completion', () => {
     expect(candidatesFor(project, pou, { kind: 'coil' }).map((c) => c.text)).not.toContain('T1.Q');
   });
   test('an FB box is offered instances of its type only', () => {
-    expect(candidatesFor(project, pou, { kind: 'instance', blockType: 'TON' }).map((c) => c.text)).toEqual(['T1']);
+    expect(candidatesFor(project, pou, { kind: 'instance', blockType: 'TON' }).map((c) => c.text)).toEqual([
+      'T1',
+    ]);
   });
   test('names starting with the typed text come before names containing it', () => {
     const ranked = rankCandidates('st', candidatesFor(project, pou, { kind: 'contact' })).map((c) => c.text);
     expect(ranked).toEqual(['Stop', 'Start', 'Restart']);
   });
   test('resolves plain names, FB pins and word bits', () => {
-    const words = withVars([['Status', 'WORD'], ['T1', 'TON']]);
+    const words = withVars([
+      ['Status', 'WORD'],
+      ['T1', 'TON'],
+    ]);
     expect(resolveName(words.project, words.pou, 'status')).toEqual({ status: 'declared', type: 'WORD' });
     expect(resolveName(words.project, words.pou, 'T1.q')).toEqual({ status: 'declared', type: 'BOOL' });
     expect(resolveName(words.project, words.pou, 'Status.15')).toEqual({ status: 'declared', type: 'BOOL' });
@@ -64,14 +77,23 @@ describe('declare it?', () => {
   test('a contact offers BOOL, an input at the next free bit, or memory', () => {
     const choices = declareChoices(project, 'Stop', { kind: 'contact' });
     expect(choices.map((c) => c.label)).toEqual(['BOOL', 'BOOL input at %IX0.1', 'BOOL memory at %MX0.0']);
-    expect(choices[1]?.variable).toMatchObject({ name: 'Stop', type: 'BOOL', location: '%IX0.1', varClass: 'local' });
+    expect(choices[1]?.variable).toMatchObject({
+      name: 'Stop',
+      type: 'BOOL',
+      location: '%IX0.1',
+      varClass: 'local',
+    });
   });
   test('a coil offers an output address', () => {
-    expect(declareChoices(project, 'Motor', { kind: 'coil' }).map((c) => c.label)).toContain('BOOL output at %QX0.0');
+    expect(declareChoices(project, 'Motor', { kind: 'coil' }).map((c) => c.label)).toContain(
+      'BOOL output at %QX0.0',
+    );
   });
   test('an FB instance is declared with the block type', () => {
     expect(suggestedType({ kind: 'instance', blockType: 'ctu' })).toBe('CTU');
-    expect(declareChoices(project, 'C1', { kind: 'instance', blockType: 'CTU' }).map((c) => c.label)).toEqual(['CTU']);
+    expect(declareChoices(project, 'C1', { kind: 'instance', blockType: 'CTU' }).map((c) => c.label)).toEqual(
+      ['CTU'],
+    );
   });
   test('no offer for a name that cannot be declared', () => {
     expect(declareChoices(project, '2x', { kind: 'contact' })).toEqual([]);

@@ -18,16 +18,28 @@ describe('autosave recovery', () => {
     expect(decision).toMatchObject({ action: 'restore', unsavedChanges: true, savedAt: 1_700_000_000_000 });
     if (decision.action !== 'restore') throw new Error('expected a restore');
     expect(decision.project).toEqual(project);
-    expect(recoveryNotice(decision, time)).toMatch(/Restored "Conveyor" .*2023-11-14.*not yet saved to a file/);
+    expect(recoveryNotice(decision, time)).toMatch(
+      /Restored "Conveyor" .*2023-11-14.*not yet saved to a file/,
+    );
+  });
+  test('restoring a project with nothing in it yet says nothing', () => {
+    const decision = decideRecovery(makeAutosaveRecord(newProject('Untitled'), false, 5));
+    expect(decision.action).toBe('restore');
+    expect(recoveryNotice(decision, time)).toBeUndefined();
   });
   test('a damaged record is discarded with the located reason', () => {
-    const record = { ...makeAutosaveRecord(newProject('x'), false, 1), projectText: '{"format":"rungsmith-project","version":1}' };
+    const record = {
+      ...makeAutosaveRecord(newProject('x'), false, 1),
+      projectText: '{"format":"rungsmith-project","version":1}',
+    };
     const decision = decideRecovery(record);
     expect(decision.action).toBe('discard');
     expect(recoveryNotice(decision, time)).toMatch(/could not be restored: .*validation \(name: /);
   });
   test('a record from another format version is discarded, not misread', () => {
-    expect(decideRecovery({ format: 'rungsmith-autosave', version: 99, savedAt: 1, projectText: '' })).toMatchObject({ action: 'discard' });
+    expect(
+      decideRecovery({ format: 'rungsmith-autosave', version: 99, savedAt: 1, projectText: '' }),
+    ).toMatchObject({ action: 'discard' });
     expect(decideRecovery('text')).toMatchObject({ action: 'discard' });
   });
 });

@@ -7,7 +7,9 @@ const withCoil = (name: string, declared: boolean) =>
   newProject('p', {
     pous: [
       newPou('Main', {
-        variables: declared ? [variable('Start', 'BOOL'), variable(name, 'BOOL')] : [variable('Start', 'BOOL')],
+        variables: declared
+          ? [variable('Start', 'BOOL'), variable(name, 'BOOL')]
+          : [variable('Start', 'BOOL')],
         networks: [
           newNetwork({
             rows: 1,

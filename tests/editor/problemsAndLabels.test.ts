@@ -1,11 +1,23 @@
 import { describe, expect, test } from 'vitest';
 import type { Diagnostic } from '../../src/engine/api';
-import { countBySeverity, diagnosticCell, diagnosticNetwork, sortDiagnostics } from '../../src/editor/problems/describe';
+import {
+  countBySeverity,
+  diagnosticCell,
+  diagnosticNetwork,
+  sortDiagnostics,
+} from '../../src/editor/problems/describe';
 import { labelProblem } from '../../src/editor/inspector/networkLabel';
 import { projectFileName } from '../../src/editor/files/projectFile';
 import { newProject } from '../../src/model/factory';
 
-const d = (partial: Partial<Diagnostic>): Diagnostic => ({ severity: 'error', rule: 'LD-R03', pou: 'Main', network: 0, message: 'm', ...partial });
+const d = (partial: Partial<Diagnostic>): Diagnostic => ({
+  severity: 'error',
+  rule: 'LD-R03',
+  pou: 'Main',
+  network: 0,
+  message: 'm',
+  ...partial,
+});
 
 describe('problems list wording', () => {
   test('networks are shown 1-based with their label; POU-level problems point at the variables', () => {
@@ -22,7 +34,12 @@ describe('problems list wording', () => {
       d({ network: 1, cell: { row: 2, col: 0 } }),
       d({ network: 1, cell: { row: 0, col: 5 } }),
     ]);
-    expect(sorted.map((x) => `${x.severity} ${x.network} ${x.cell?.row ?? '-'}`)).toEqual(['error 1 0', 'error 1 2', 'error 3 0', 'warning 0 -']);
+    expect(sorted.map((x) => `${x.severity} ${x.network} ${x.cell?.row ?? '-'}`)).toEqual([
+      'error 1 0',
+      'error 1 2',
+      'error 3 0',
+      'warning 0 -',
+    ]);
     expect(countBySeverity(sorted)).toEqual({ errors: 3, warnings: 1 });
   });
 });

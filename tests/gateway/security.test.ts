@@ -168,6 +168,17 @@ describe('gateway security', () => {
     [good, ...senders].forEach((c) => c.close());
   });
 
+  it('survives a frame far beyond the limit: that connection is closed (1009), the gateway keeps serving', async () => {
+    const good = await TestClient.hello(gw.port, gw.token, 'observer');
+    const bad = await TestClient.hello(gw.port, gw.token, 'observer');
+    bad.sendRaw('x'.repeat(2 * 1024 * 1024));
+    expect(await bad.waitClosed()).toBe(1009);
+    const before = good.messages.length;
+    good.send({ t: 'resync' });
+    await good.waitFor((m) => m.t === 'image', 3000, before);
+    good.close();
+  });
+
   it('closes a flooding client with 1008 and keeps serving the others', async () => {
     const good = await TestClient.hello(gw.port, gw.token, 'observer');
     const flood = await TestClient.hello(gw.port, gw.token, 'observer');

@@ -114,3 +114,22 @@ describe('the simulation store', () => {
     expect(s().layout?.networkIds).toHaveLength(3);
   });
 });
+
+describe('opening another project', () => {
+  test('unload stops the simulation, drops forces and breakpoints, and the next Run compiles the new document', () => {
+    const { s, scheduler } = setup();
+    const first = threeNetworks();
+    s().toggleBreakpoint(first.pous[0]!.networks[1]!.id);
+    s().run(first);
+    s().force('Motor', { value: true });
+    scheduler.advance(30);
+    s().unload();
+    scheduler.advance(30);
+    expect(s()).toMatchObject({ mode: 'stopped', scan: 0, live: false, layout: undefined, breakpoints: [] });
+    expect(s().forced.size).toBe(0);
+    s().run(motorProgram());
+    scheduler.advance(30);
+    expect(s().mode).toBe('running');
+    expect(s().layout?.networkIds).toHaveLength(1);
+  });
+});

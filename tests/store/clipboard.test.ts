@@ -16,6 +16,11 @@ test('a clip survives the trip through clipboard text', () => {
 test('text that is not a clip, or a clip with broken elements, is refused', () => {
   expect(parseClip('hello')).toBeUndefined();
   expect(parseClip('{"format":"other"}')).toBeUndefined();
-  const broken = JSON.stringify({ format: 'rungsmith-clip', version: 1, elements: [{ kind: 'contact', id: 'x', row: 0, col: 0 }], vlinks: [] });
+  const broken = JSON.stringify({
+    format: 'rungsmith-clip',
+    version: 1,
+    elements: [{ kind: 'contact', id: 'x', row: 0, col: 0 }],
+    vlinks: [],
+  });
   expect(parseClip(broken)).toBeUndefined();
 });

@@ -62,7 +62,8 @@ function sealIn(e: ReturnType<typeof editor>) {
   return { start, motor };
 }
 
-const valid = (store: DocumentStore) => validateProject(JSON.parse(JSON.stringify(store.getState().project))).ok;
+const valid = (store: DocumentStore) =>
+  validateProject(JSON.parse(JSON.stringify(store.getState().project))).ok;
 
 describe('placing and inserting in series', () => {
   test('placing on an empty cell puts the element there and the document stays loadable', () => {

@@ -1,7 +1,7 @@
 // The name field that opens over an element on the canvas (after placing it, Enter, or a
 // double-click): the variable of a contact or coil, the instance of a function block, the
 // label a jump goes to. Enter commits and moves the cursor on; Escape leaves the name as it was.
-import { useMemo, type KeyboardEvent } from 'react';
+import { useEffect, useMemo, type KeyboardEvent } from 'react';
 import type { LdElement } from '../../model/elements';
 import type { NetworkId } from '../../model/ids';
 import { selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
@@ -46,7 +46,14 @@ export function InlineEditor({ layout, zoom, scrollLeft, scrollTop, onDone }: In
     }
     return undefined;
   }, [editing, networks]);
-  const labels = useMemo(() => networks.map((n) => n.label).filter((l): l is string => Boolean(l)), [networks]);
+  // The element went away (undo, delete): stop editing so the shortcuts work again.
+  useEffect(() => {
+    if (editing && (!found || found.network.collapsed)) ui.getState().stopEditing();
+  }, [editing, found, ui]);
+  const labels = useMemo(
+    () => networks.map((n) => n.label).filter((l): l is string => Boolean(l)),
+    [networks],
+  );
   if (!found || found.network.collapsed) return null;
   const { el, network, index } = found;
   const ctx: EditorContext = { doc, ui };
@@ -54,7 +61,10 @@ export function InlineEditor({ layout, zoom, scrollLeft, scrollTop, onDone }: In
   const close = (advance: boolean) => {
     ui.getState().stopEditing();
     if (advance) {
-      const now = doc.getState().project.pous.flatMap((p) => p.networks).find((n) => n.id === network.id);
+      const now = doc
+        .getState()
+        .project.pous.flatMap((p) => p.networks)
+        .find((n) => n.id === network.id);
       const latest = now?.elements.find((e) => e.id === el.id);
       if (latest) advancePast(ctx, network.id as NetworkId, latest);
     }
@@ -72,7 +82,12 @@ export function InlineEditor({ layout, zoom, scrollLeft, scrollTop, onDone }: In
   const y = (layout.tops[index]! + headerHeight(network) + el.row * CELL_H + 4) * zoom - scrollTop;
   const width = Math.max(140, CELL_W * zoom + 40);
   const style = { left: x - 20, top: y, width };
-  const what = el.kind === 'box' ? `Instance name of ${el.blockType}` : el.kind === 'jump' ? 'Jump target label' : `Variable of the ${el.kind}`;
+  const what =
+    el.kind === 'box'
+      ? `Instance name of ${el.blockType}`
+      : el.kind === 'jump'
+        ? 'Jump target label'
+        : `Variable of the ${el.kind}`;
 
   if (el.kind === 'jump') {
     return (
@@ -99,7 +114,12 @@ export function InlineEditor({ layout, zoom, scrollLeft, scrollTop, onDone }: In
       </div>
     );
   }
-  const role = el.kind === 'box' ? ({ kind: 'instance', blockType: el.blockType } as const) : el.kind === 'coil' ? ({ kind: 'coil' } as const) : ({ kind: 'contact' } as const);
+  const role =
+    el.kind === 'box'
+      ? ({ kind: 'instance', blockType: el.blockType } as const)
+      : el.kind === 'coil'
+        ? ({ kind: 'coil' } as const)
+        : ({ kind: 'contact' } as const);
   // Enter on an unchanged name: VariableInput commits nothing, so close here and move on.
   const onKeyDownCapture = (e: KeyboardEvent) => {
     if (e.key !== 'Enter') return;

@@ -5,7 +5,15 @@ import { useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import { Layer, Stage } from 'react-konva';
 import type { ElementId } from '../../model/ids';
 import { selectActivePou, selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
-import { clampZoom, selectCursor, selectSelection, selectTheme, selectZoom, useUi, useUiStore } from '../../store/uiStore';
+import {
+  clampZoom,
+  selectCursor,
+  selectSelection,
+  selectTheme,
+  selectZoom,
+  useUi,
+  useUiStore,
+} from '../../store/uiStore';
 import type { EditorContext } from '../commands/editorActions';
 import { useDiagnosticsByNetwork } from '../problems/useDiagnostics';
 import { readCanvasTheme, type CanvasTheme } from '../theme/canvasTheme';
@@ -13,6 +21,7 @@ import { BlockPicker } from './BlockPicker';
 import { CanvasEmpty } from './CanvasEmpty';
 import { CELL_H, CELL_W, headerHeight, layoutNetworks, RAIL_X, visibleRange } from './geometry';
 import { InlineEditor } from './InlineEditor';
+import type { CellMarker } from './drawNetwork';
 import { markersByNetwork } from './markers';
 import { NetworkHeader } from './NetworkHeader';
 import { NetworkShape } from './NetworkShape';
@@ -46,7 +55,9 @@ export function LadderCanvas() {
   const view = useRef<PointerView>({ layout, networks, zoom });
   view.current = { layout, networks, zoom };
   const spaceHeld = useRef(false);
-  const zoomAnchor = useRef<{ x: number; y: number; offsetX: number; offsetY: number } | undefined>(undefined);
+  const zoomAnchor = useRef<{ x: number; y: number; offsetX: number; offsetY: number } | undefined>(
+    undefined,
+  );
   const { drag, band, hover, handlers } = useCanvasPointer(ctx, scrollRef, view, spaceHeld);
 
   useLayoutEffect(() => {
@@ -77,7 +88,12 @@ export function LadderCanvas() {
       const z = ui.getState().viewport.zoom;
       const offsetX = e.clientX - rect.left;
       const offsetY = e.clientY - rect.top;
-      zoomAnchor.current = { x: (offsetX + el.scrollLeft) / z, y: (offsetY + el.scrollTop) / z, offsetX, offsetY };
+      zoomAnchor.current = {
+        x: (offsetX + el.scrollLeft) / z,
+        y: (offsetY + el.scrollTop) / z,
+        offsetX,
+        offsetY,
+      };
       ui.getState().setZoom(clampZoom(z * Math.exp(-e.deltaY * 0.0015)));
     };
     el.addEventListener('wheel', onWheel, { passive: false });
@@ -120,16 +136,28 @@ export function LadderCanvas() {
     const top = (layout.tops[i]! + headerHeight(n) + cursor.row * CELL_H) * zoom;
     const left = (RAIL_X + cursor.col * CELL_W) * zoom;
     const margin = 24;
-    if (top < el.scrollTop + margin) el.scrollTop = top - (i > 0 && cursor.row === 0 ? headerHeight(n) * zoom : 0) - margin;
-    else if (top + CELL_H * zoom > el.scrollTop + el.clientHeight - margin) el.scrollTop = top + CELL_H * zoom - el.clientHeight + margin;
+    if (top < el.scrollTop + margin)
+      el.scrollTop = top - (i > 0 && cursor.row === 0 ? headerHeight(n) * zoom : 0) - margin;
+    else if (top + CELL_H * zoom > el.scrollTop + el.clientHeight - margin)
+      el.scrollTop = top + CELL_H * zoom - el.clientHeight + margin;
     if (left < el.scrollLeft) el.scrollLeft = left - margin;
-    else if (left + CELL_W * zoom > el.scrollLeft + el.clientWidth) el.scrollLeft = left + CELL_W * zoom - el.clientWidth + margin;
+    else if (left + CELL_W * zoom > el.scrollLeft + el.clientWidth)
+      el.scrollLeft = left + CELL_W * zoom - el.clientWidth + margin;
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [cursor]);
 
-  const { first, last } = visibleRange(layout, scroll.top / zoom - OVERSCAN, (scroll.top + size.height) / zoom + OVERSCAN);
+  const { first, last } = visibleRange(
+    layout,
+    scroll.top / zoom - OVERSCAN,
+    (scroll.top + size.height) / zoom + OVERSCAN,
+  );
   const selectedSet = useMemo(() => new Set(selection.elements), [selection]);
   const refocus = () => scrollRef.current?.focus({ preventScroll: true });
+  const hoverProblems = hover
+    ? (markers.get(hover.index)?.markers ?? NO_MARKERS).filter(
+        (m) => m.cell.row === hover.cell.row && m.cell.col === hover.cell.col,
+      )
+    : NO_MARKERS;
   const visible: number[] = [];
   for (let i = first; i <= last; i++) visible.push(i);
 
@@ -158,68 +186,86 @@ export function LadderCanvas() {
     >
       <div
         className="rs-canvas-content"
-        style={{ width: Math.max(size.width, layout.totalWidth * zoom), height: Math.max(size.height, layout.totalHeight * zoom) }}
+        style={{
+          width: Math.max(size.width, layout.totalWidth * zoom),
+          height: Math.max(size.height, layout.totalHeight * zoom),
+        }}
       >
-      <div className="rs-canvas-sticky" style={{ width: size.width, height: size.height }} {...handlers}>
-        {theme && (
-          <Stage width={size.width} height={size.height} listening={false}>
-            <Layer x={-scroll.left} y={-scroll.top} scaleX={zoom} scaleY={zoom} listening={false}>
-              {visible.map((i) => {
-                const n = networks[i]!;
-                return (
-                  <NetworkShape
-                    key={n.id}
-                    network={n}
-                    index={i}
-                    top={layout.tops[i]!}
-                    theme={theme}
-                    selected={selection.network === n.id ? selectedSet : EMPTY_SET}
-                    cursor={cursor?.network === n.id ? cursor : undefined}
-                    hover={hover?.index === i ? hover.cell : undefined}
-                    markers={markers.get(i)?.markers ?? NO_MARKERS}
-                    drag={drag?.network === n.id ? drag : undefined}
-                  />
-                );
-              })}
-            </Layer>
-          </Stage>
-        )}
-        <div className="rs-headers" style={{ transform: `translate(${-scroll.left}px, ${-scroll.top}px) scale(${zoom})` }}>
-          {visible.map((i) => {
-            const n = networks[i]!;
-            const m = markers.get(i);
-            return (
-              <NetworkHeader
-                key={n.id}
-                network={n}
-                index={i}
-                count={networks.length}
-                top={layout.tops[i]!}
-                width={layout.totalWidth}
-                errors={m?.errors ?? 0}
-                warnings={m?.warnings ?? 0}
-              />
-            );
-          })}
-          {band && (
-            <div
-              className="rs-band"
-              style={{
-                left: Math.min(band.from.x, band.to.x),
-                top: Math.min(band.from.y, band.to.y),
-                width: Math.abs(band.to.x - band.from.x),
-                height: Math.abs(band.to.y - band.from.y),
-              }}
-            />
+        <div
+          className="rs-canvas-sticky"
+          style={{ width: size.width, height: size.height }}
+          title={hoverProblems.length > 0 ? hoverProblems.map((m) => m.text).join('\n') : undefined}
+          {...handlers}
+        >
+          {theme && (
+            <Stage width={size.width} height={size.height} listening={false}>
+              <Layer x={-scroll.left} y={-scroll.top} scaleX={zoom} scaleY={zoom} listening={false}>
+                {visible.map((i) => {
+                  const n = networks[i]!;
+                  return (
+                    <NetworkShape
+                      key={n.id}
+                      network={n}
+                      index={i}
+                      top={layout.tops[i]!}
+                      theme={theme}
+                      selected={selection.network === n.id ? selectedSet : EMPTY_SET}
+                      cursor={cursor?.network === n.id ? cursor : undefined}
+                      hover={hover?.index === i ? hover.cell : undefined}
+                      markers={markers.get(i)?.markers ?? NO_MARKERS}
+                      drag={drag?.network === n.id ? drag : undefined}
+                      zoom={zoom}
+                    />
+                  );
+                })}
+              </Layer>
+            </Stage>
           )}
+          <div
+            className="rs-headers"
+            style={{ transform: `translate(${-scroll.left}px, ${-scroll.top}px) scale(${zoom})` }}
+          >
+            {visible.map((i) => {
+              const n = networks[i]!;
+              const m = markers.get(i);
+              return (
+                <NetworkHeader
+                  key={n.id}
+                  network={n}
+                  index={i}
+                  count={networks.length}
+                  top={layout.tops[i]!}
+                  width={layout.totalWidth}
+                  errors={m?.errors ?? 0}
+                  warnings={m?.warnings ?? 0}
+                />
+              );
+            })}
+            {band && (
+              <div
+                className="rs-band"
+                style={{
+                  left: Math.min(band.from.x, band.to.x),
+                  top: Math.min(band.from.y, band.to.y),
+                  width: Math.abs(band.to.x - band.from.x),
+                  height: Math.abs(band.to.y - band.from.y),
+                }}
+              />
+            )}
+          </div>
+          <InlineEditor
+            layout={layout}
+            zoom={zoom}
+            scrollLeft={scroll.left}
+            scrollTop={scroll.top}
+            onDone={refocus}
+          />
+          <BlockPicker onDone={refocus} />
+          {networks.length === 0 && <CanvasEmpty />}
         </div>
-        <InlineEditor layout={layout} zoom={zoom} scrollLeft={scroll.left} scrollTop={scroll.top} onDone={refocus} />
-        <BlockPicker onDone={refocus} />
-        {networks.length === 0 && <CanvasEmpty />}
-      </div>
       </div>
     </div>
   );
 }
 
-const NO_MARKERS: readonly never[] = [];
+const NO_MARKERS: readonly CellMarker[] = [];

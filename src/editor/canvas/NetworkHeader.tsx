@@ -48,7 +48,12 @@ function CommitField({ value, onCommit, label, testId, placeholder, className, m
     onKeyDown,
   };
   return multiline ? (
-    <textarea {...common} rows={multiline} style={{ height: multiline * COMMENT_LINE_H }} onChange={(e) => setDraft(e.target.value)} />
+    <textarea
+      {...common}
+      rows={multiline}
+      style={{ height: multiline * COMMENT_LINE_H }}
+      onChange={(e) => setDraft(e.target.value)}
+    />
   ) : (
     <input {...common} onChange={(e) => setDraft(e.target.value)} />
   );
@@ -64,12 +69,21 @@ export interface NetworkHeaderProps {
   readonly warnings: number;
 }
 
-export const NetworkHeader = memo(function NetworkHeader({ network: n, index, count, top, width, errors, warnings }: NetworkHeaderProps) {
+export const NetworkHeader = memo(function NetworkHeader({
+  network: n,
+  index,
+  count,
+  top,
+  width,
+  errors,
+  warnings,
+}: NetworkHeaderProps) {
   const doc = useDocumentStore();
   const ui = useUiStore();
   const [dropTarget, setDropTarget] = useState(false);
   const no = index + 1;
-  const update = (patch: Parameters<ReturnType<typeof doc.getState>['updateNetwork']>[1]) => doc.getState().updateNetwork(n.id, patch);
+  const update = (patch: Parameters<ReturnType<typeof doc.getState>['updateNetwork']>[1]) =>
+    doc.getState().updateNetwork(n.id, patch);
 
   const onDrop = (e: DragEvent) => {
     const from = Number(e.dataTransfer.getData(DRAG_TYPE));
@@ -145,12 +159,24 @@ export const NetworkHeader = memo(function NetworkHeader({ network: n, index, co
           className="rs-network-title"
         />
         {errors + warnings > 0 && (
-          <span className={errors ? 'rs-badge rs-badge-error' : 'rs-badge rs-badge-warning'} title="Problems in this network">
-            {errors > 0 ? `${errors} error${errors > 1 ? 's' : ''}` : `${warnings} warning${warnings > 1 ? 's' : ''}`}
+          <span
+            className={errors ? 'rs-badge rs-badge-error' : 'rs-badge rs-badge-warning'}
+            title="Problems in this network"
+          >
+            {errors > 0
+              ? `${errors} error${errors > 1 ? 's' : ''}`
+              : `${warnings} warning${warnings > 1 ? 's' : ''}`}
           </span>
         )}
         <span className="rs-spacer" />
-        <button type="button" className="rs-icon-button" aria-label={`Move network ${no} up`} title="Move up" disabled={index === 0} onClick={() => doc.getState().moveNetwork(index, index - 1)}>
+        <button
+          type="button"
+          className="rs-icon-button"
+          aria-label={`Move network ${no} up`}
+          title="Move up"
+          disabled={index === 0}
+          onClick={() => doc.getState().moveNetwork(index, index - 1)}
+        >
           ↑
         </button>
         <button
@@ -175,7 +201,13 @@ export const NetworkHeader = memo(function NetworkHeader({ network: n, index, co
         >
           +
         </button>
-        <button type="button" className="rs-icon-button rs-danger" aria-label={`Delete network ${no}`} title="Delete network (undo brings it back)" onClick={() => doc.getState().deleteNetwork(n.id)}>
+        <button
+          type="button"
+          className="rs-icon-button rs-danger"
+          aria-label={`Delete network ${no}`}
+          title="Delete network (undo brings it back)"
+          onClick={() => doc.getState().deleteNetwork(n.id)}
+        >
           ✕
         </button>
       </div>

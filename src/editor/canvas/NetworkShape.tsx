@@ -1,6 +1,7 @@
 // One network's grid as a single Konva shape: a projection of the network data, redrawn only
 // when its props change (memo), so scrolling past 1,000 networks stays cheap.
-import { memo, useMemo } from 'react';
+import type Konva from 'konva';
+import { memo, useLayoutEffect, useMemo, useRef } from 'react';
 import { Shape } from 'react-konva';
 import type { Cell } from '../../model/grid';
 import type { ElementId } from '../../model/ids';
@@ -21,10 +22,16 @@ export interface NetworkShapeProps {
   readonly hover: Cell | undefined;
   readonly markers: readonly CellMarker[];
   readonly drag: NetworkPaint['drag'];
+  /** Current zoom: the cached bitmap is drawn at this scale so it stays sharp. */
+  readonly zoom: number;
 }
 
+/** Room around the grid inside the cached bitmap (drag ghosts, marks at the edges). */
+const CACHE_MARGIN = 12;
+
 export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps) {
-  const { network, index, top, theme, selected, cursor, hover, markers, drag } = props;
+  const { network, index, top, theme, selected, cursor, hover, markers, drag, zoom } = props;
+  const ref = useRef<Konva.Shape>(null);
   const overlay = useOverlayHook()(network, index);
   const paint = useMemo<NetworkPaint>(
     () => ({
@@ -38,13 +45,31 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
     }),
     [selected, cursor, hover, markers, drag, overlay.power, overlay.liveValues],
   );
+  const width = networkWidth(network);
+  const height = network.rows * CELL_H + GRID_PAD_BOTTOM;
+  // Each network is drawn once into a bitmap; scrolling then only copies bitmaps, which keeps
+  // frames short with many symbols and texts on screen. Redrawn when anything it shows changes.
+  useLayoutEffect(() => {
+    const node = ref.current;
+    if (!node) return;
+    node.clearCache();
+    node.cache({
+      x: -CACHE_MARGIN,
+      y: -CACHE_MARGIN,
+      width: width + 2 * CACHE_MARGIN,
+      height: height + 2 * CACHE_MARGIN,
+      pixelRatio: zoom * (window.devicePixelRatio || 1),
+      imageSmoothingEnabled: true,
+    });
+  }, [network, theme, paint, zoom, width, height]);
   if (network.collapsed) return null;
   return (
     <Shape
+      ref={ref}
       x={RAIL_X}
       y={top + headerHeight(network)}
-      width={networkWidth(network)}
-      height={network.rows * CELL_H + GRID_PAD_BOTTOM}
+      width={width}
+      height={height}
       listening={false}
       perfectDrawEnabled={false}
       sceneFunc={(ctx) => drawNetworkGrid(ctx._context, theme, network, paint)}

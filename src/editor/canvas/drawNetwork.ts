@@ -12,6 +12,8 @@ import { CELL_H, CELL_W, GRID_PAD_BOTTOM, WIRE_Y } from './geometry';
 export interface CellMarker {
   readonly cell: Cell;
   readonly severity: 'error' | 'warning';
+  /** "LD-R08: the contact ... is not declared", shown when the pointer rests on the cell. */
+  readonly text: string;
 }
 
 export interface NetworkPaint {
@@ -23,7 +25,12 @@ export interface NetworkPaint {
   readonly power?: NetworkPower;
   readonly liveValues?: ReadonlyMap<ElementId, string>;
   /** Elements being dragged and the offset in cells. */
-  readonly drag?: { readonly ids: ReadonlySet<ElementId>; readonly dRow: number; readonly dCol: number; readonly blocked: boolean };
+  readonly drag?: {
+    readonly ids: ReadonlySet<ElementId>;
+    readonly dRow: number;
+    readonly dCol: number;
+    readonly blocked: boolean;
+  };
 }
 
 type Ctx = CanvasRenderingContext2D;
@@ -35,7 +42,8 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
   ctx.fillRect(0, 0, w, h + GRID_PAD_BOTTOM);
   // Cell corners as small dots: enough to read the grid without clutter.
   ctx.fillStyle = t.grid;
-  for (let r = 0; r <= n.rows; r++) for (let c = 1; c < n.cols; c++) ctx.fillRect(c * CELL_W - 1, r * CELL_H - 1, 2, 2);
+  for (let r = 0; r <= n.rows; r++)
+    for (let c = 1; c < n.cols; c++) ctx.fillRect(c * CELL_W - 1, r * CELL_H - 1, 2, 2);
   if (paint.hover) {
     ctx.fillStyle = t.hover;
     ctx.fillRect(paint.hover.col * CELL_W, paint.hover.row * CELL_H, CELL_W, CELL_H);
@@ -71,7 +79,10 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     if (dragged) ctx.globalAlpha = 0.35;
     ctx.translate(el.col * CELL_W, el.row * CELL_H);
     const live = paint.liveValues?.get(el.id);
-    drawElement(ctx, t, el, { ...(paint.power ? { power: paint.power.elements[i] ?? 0 } : {}), ...(live ? { liveValue: live } : {}) });
+    drawElement(ctx, t, el, {
+      ...(paint.power ? { power: paint.power.elements[i] ?? 0 } : {}),
+      ...(live ? { liveValue: live } : {}),
+    });
     ctx.restore();
   });
   for (const el of n.elements) {

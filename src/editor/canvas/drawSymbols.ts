@@ -99,7 +99,17 @@ function drawContact(ctx: Ctx, t: CanvasTheme, el: ContactElement, paint: Elemen
   liveBelow(ctx, t, paint);
 }
 
-const COIL_LETTER: Record<CoilElement['coil'], string> = { COIL: '', NEG: '/', SET: 'S', RESET: 'R', M: 'M', SM: 'SM', RM: 'RM', P: 'P', N: 'N' };
+const COIL_LETTER: Record<CoilElement['coil'], string> = {
+  COIL: '',
+  NEG: '/',
+  SET: 'S',
+  RESET: 'R',
+  M: 'M',
+  SM: 'SM',
+  RM: 'RM',
+  P: 'P',
+  N: 'N',
+};
 
 function drawCoil(ctx: Ctx, t: CanvasTheme, el: CoilElement, paint: ElementPaint) {
   const r = 13;
@@ -149,8 +159,10 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint) 
     ctx.fillText(elide(ctx, el.instance || '???', w - 8), w / 2, top - 6);
   }
   if (!layout) return;
-  const flowIn = layout.signature.kind === 'function' ? 'EN' : layout.inputs.find((p) => p.type === 'BOOL')?.name;
-  const flowOut = layout.signature.kind === 'function' ? 'ENO' : layout.outputs.find((p) => p.type === 'BOOL')?.name;
+  const flowIn =
+    layout.signature.kind === 'function' ? 'EN' : layout.inputs.find((p) => p.type === 'BOOL')?.name;
+  const flowOut =
+    layout.signature.kind === 'function' ? 'ENO' : layout.outputs.find((p) => p.type === 'BOOL')?.name;
   ctx.font = FONT_SMALL;
   for (const pin of layout.inputs) {
     const y = pin.rowOffset * CELL_H + WIRE_Y;

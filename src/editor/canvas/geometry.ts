@@ -24,9 +24,11 @@ export const NETWORK_GAP = 10;
 export const commentLines = (n: Pick<Network, 'comment'>): number =>
   Math.min(MAX_COMMENT_LINES, Math.max(1, n.comment.split('\n').length));
 
-export const headerHeight = (n: Pick<Network, 'comment'>): number => HEADER_TITLE_H + commentLines(n) * COMMENT_LINE_H + 6;
+export const headerHeight = (n: Pick<Network, 'comment'>): number =>
+  HEADER_TITLE_H + commentLines(n) * COMMENT_LINE_H + 6;
 
-export const gridHeight = (n: Pick<Network, 'rows' | 'collapsed'>): number => (n.collapsed ? 0 : n.rows * CELL_H + GRID_PAD_BOTTOM);
+export const gridHeight = (n: Pick<Network, 'rows' | 'collapsed'>): number =>
+  n.collapsed ? 0 : n.rows * CELL_H + GRID_PAD_BOTTOM;
 
 export const networkHeight = (n: Network): number => headerHeight(n) + gridHeight(n) + NETWORK_GAP;
 
@@ -70,7 +72,11 @@ export function networkIndexAt(layout: CanvasLayout, y: number): number {
 }
 
 /** Networks overlapping content rows [top, bottom]: first and last index (inclusive); empty when last < first. */
-export function visibleRange(layout: CanvasLayout, top: number, bottom: number): { first: number; last: number } {
+export function visibleRange(
+  layout: CanvasLayout,
+  top: number,
+  bottom: number,
+): { first: number; last: number } {
   const first = Math.max(0, networkIndexAt(layout, top));
   const last = networkIndexAt(layout, bottom);
   return { first, last };

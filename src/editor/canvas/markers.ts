@@ -9,7 +9,10 @@ export interface NetworkMarkers {
   readonly warnings: number;
 }
 
-export function markersByNetwork(networks: readonly Network[], byNetwork: ReadonlyMap<number, readonly Diagnostic[]>): Map<number, NetworkMarkers> {
+export function markersByNetwork(
+  networks: readonly Network[],
+  byNetwork: ReadonlyMap<number, readonly Diagnostic[]>,
+): Map<number, NetworkMarkers> {
   const out = new Map<number, NetworkMarkers>();
   for (const [index, list] of byNetwork) {
     const n = networks[index];
@@ -22,7 +25,7 @@ export function markersByNetwork(networks: readonly Network[], byNetwork: Readon
       else warnings++;
       const el = d.elementId ? n.elements.find((e) => e.id === d.elementId) : undefined;
       const cell = d.cell ?? (el ? { row: el.row, col: el.col } : undefined);
-      if (cell) markers.push({ cell, severity: d.severity });
+      if (cell) markers.push({ cell, severity: d.severity, text: `${d.rule}: ${d.message}` });
     }
     out.set(index, { markers, errors, warnings });
   }

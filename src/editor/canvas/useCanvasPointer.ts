@@ -4,7 +4,13 @@
 //   idle --middle button or Space held--> panning --up--> idle
 // With a placing tool, a click places the element; with the vertical link tool, a click toggles
 // the vertical link nearest to the pointer.
-import { useRef, useState, type MouseEvent, type PointerEvent as ReactPointerEvent, type RefObject } from 'react';
+import {
+  useRef,
+  useState,
+  type MouseEvent,
+  type PointerEvent as ReactPointerEvent,
+  type RefObject,
+} from 'react';
 import { elementSize } from '../../model/factory';
 import type { Cell } from '../../model/grid';
 import type { ElementId, NetworkId } from '../../model/ids';
@@ -29,10 +35,28 @@ export interface BandState {
 
 type Machine =
   | { readonly kind: 'idle' }
-  | { readonly kind: 'pressing'; readonly index: number; readonly start: PixelPoint; readonly startCell: Cell; readonly ids: ElementId[] }
-  | { readonly kind: 'dragging'; readonly index: number; readonly start: PixelPoint; readonly startCell: Cell; readonly ids: ElementId[] }
+  | {
+      readonly kind: 'pressing';
+      readonly index: number;
+      readonly start: PixelPoint;
+      readonly startCell: Cell;
+      readonly ids: ElementId[];
+    }
+  | {
+      readonly kind: 'dragging';
+      readonly index: number;
+      readonly start: PixelPoint;
+      readonly startCell: Cell;
+      readonly ids: ElementId[];
+    }
   | { readonly kind: 'banding'; readonly index: number; readonly start: PixelPoint }
-  | { readonly kind: 'panning'; readonly clientX: number; readonly clientY: number; readonly left: number; readonly top: number };
+  | {
+      readonly kind: 'panning';
+      readonly clientX: number;
+      readonly clientY: number;
+      readonly left: number;
+      readonly top: number;
+    };
 
 export interface PointerView {
   readonly layout: CanvasLayout;
@@ -41,7 +65,10 @@ export interface PointerView {
 }
 
 /** Cell offset of a content point from a start point, in whole cells (snapping). */
-const cellDelta = (a: PixelPoint, b: PixelPoint) => ({ dRow: Math.round((b.y - a.y) / CELL_H), dCol: Math.round((b.x - a.x) / CELL_W) });
+const cellDelta = (a: PixelPoint, b: PixelPoint) => ({
+  dRow: Math.round((b.y - a.y) / CELL_H),
+  dCol: Math.round((b.x - a.x) / CELL_W),
+});
 
 function canMove(n: Network, ids: readonly ElementId[], dRow: number, dCol: number): boolean {
   const set = new Set(ids);
@@ -49,19 +76,26 @@ function canMove(n: Network, ids: readonly ElementId[], dRow: number, dCol: numb
   for (const e of n.elements) {
     if (set.has(e.id)) continue;
     const s = elementSize(e);
-    for (let r = 0; r < s.rows; r++) for (let c = 0; c < s.cols; c++) taken.set(`${e.row + r}:${e.col + c}`, e.kind === 'link');
+    for (let r = 0; r < s.rows; r++)
+      for (let c = 0; c < s.cols; c++) taken.set(`${e.row + r}:${e.col + c}`, e.kind === 'link');
   }
   for (const e of n.elements) {
     if (!set.has(e.id)) continue;
     if (e.row + dRow < 0 || e.col + dCol < 0) return false;
     const s = elementSize(e);
     for (let r = 0; r < s.rows; r++)
-      for (let c = 0; c < s.cols; c++) if (taken.get(`${e.row + dRow + r}:${e.col + dCol + c}`) === false) return false;
+      for (let c = 0; c < s.cols; c++)
+        if (taken.get(`${e.row + dRow + r}:${e.col + dCol + c}`) === false) return false;
   }
   return true;
 }
 
-export function useCanvasPointer(ctx: EditorContext, scrollRef: RefObject<HTMLDivElement | null>, view: RefObject<PointerView>, spaceHeld: RefObject<boolean>) {
+export function useCanvasPointer(
+  ctx: EditorContext,
+  scrollRef: RefObject<HTMLDivElement | null>,
+  view: RefObject<PointerView>,
+  spaceHeld: RefObject<boolean>,
+) {
   const machine = useRef<Machine>({ kind: 'idle' });
   const [drag, setDrag] = useState<DragState | undefined>(undefined);
   const [band, setBand] = useState<BandState | undefined>(undefined);
@@ -81,7 +115,13 @@ export function useCanvasPointer(ctx: EditorContext, scrollRef: RefObject<HTMLDi
     if (e.button === 1 || (e.button === 0 && spaceHeld.current)) {
       e.preventDefault();
       e.currentTarget.setPointerCapture(e.pointerId);
-      machine.current = { kind: 'panning', clientX: e.clientX, clientY: e.clientY, left: el.scrollLeft, top: el.scrollTop };
+      machine.current = {
+        kind: 'panning',
+        clientX: e.clientX,
+        clientY: e.clientY,
+        left: el.scrollLeft,
+        top: el.scrollTop,
+      };
       return;
     }
     if (e.button !== 0) return;
@@ -90,6 +130,8 @@ export function useCanvasPointer(ctx: EditorContext, scrollRef: RefObject<HTMLDi
     const hit = hitTest(layout, networks, p);
     if (hit.area !== 'grid') return;
     const n = networks[hit.index]!;
+    // A click just right of the grid may grow it by one column, not more.
+    if (hit.cell.col > n.cols) return;
     const ui = ctx.ui.getState();
     ui.setStatus('');
     const tool = ui.tool;
@@ -98,7 +140,8 @@ export function useCanvasPointer(ctx: EditorContext, scrollRef: RefObject<HTMLDi
       return;
     }
     if (tool.kind === 'vlink') {
-      if (hit.boundary > 0 && hit.boundary < n.cols) ctx.doc.getState().toggleVLink(n.id, { row: hit.wireRow, boundary: hit.boundary });
+      if (hit.boundary > 0 && hit.boundary < n.cols)
+        ctx.doc.getState().toggleVLink(n.id, { row: hit.wireRow, boundary: hit.boundary });
       else ui.setStatus('The power rails already join every row; put vertical links between cells.');
       return;
     }
@@ -149,8 +192,16 @@ export function useCanvasPointer(ctx: EditorContext, scrollRef: RefObject<HTMLDi
       return;
     }
     const hit = hitTest(layout, networks, p);
-    const next = hit.area === 'grid' && hit.cell.col < (networks[hit.index]?.cols ?? 0) ? { index: hit.index, cell: hit.cell } : undefined;
-    if (next?.index !== hover?.index || next?.cell.row !== hover?.cell.row || next?.cell.col !== hover?.cell.col) setHover(next);
+    const next =
+      hit.area === 'grid' && hit.cell.col < (networks[hit.index]?.cols ?? 0)
+        ? { index: hit.index, cell: hit.cell }
+        : undefined;
+    if (
+      next?.index !== hover?.index ||
+      next?.cell.row !== hover?.cell.row ||
+      next?.cell.col !== hover?.cell.col
+    )
+      setHover(next);
   };
 
   const finish = (e: ReactPointerEvent<HTMLDivElement>) => {
@@ -164,7 +215,10 @@ export function useCanvasPointer(ctx: EditorContext, scrollRef: RefObject<HTMLDi
       setDrag(undefined);
       if (n && (dRow !== 0 || dCol !== 0)) {
         const moved = ctx.doc.getState().moveElements(n.id, m.ids, dRow, dCol);
-        if (moved) ctx.ui.getState().setCursor({ network: n.id, row: m.startCell.row + dRow, col: m.startCell.col + dCol });
+        if (moved)
+          ctx.ui
+            .getState()
+            .setCursor({ network: n.id, row: m.startCell.row + dRow, col: m.startCell.col + dCol });
         else ctx.ui.getState().setStatus('Cannot move there: another element is in the way.');
       }
     } else if (m.kind === 'banding') {

@@ -23,7 +23,8 @@ export function copyText(ctx: EditorContext): string | undefined {
     if (el.kind === 'contact' || el.kind === 'coil') names.add(el.variable.split('.')[0]!);
     if (el.kind === 'box') {
       if (el.instance) names.add(el.instance);
-      for (const v of [...Object.values(el.inputs), ...Object.values(el.outputs)]) names.add(v.split('.')[0]!);
+      for (const v of [...Object.values(el.inputs), ...Object.values(el.outputs)])
+        names.add(v.split('.')[0]!);
     }
   }
   const variables: Variable[] = [];
@@ -67,7 +68,8 @@ export function pasteText(ctx: EditorContext, text: string | undefined): boolean
   const doc = ctx.doc.getState();
   const ids = doc.batch('paste', () => {
     const pou = selectActivePou(ctx.doc.getState());
-    for (const v of clip.variables) if (pou && !findVariable(ctx.doc.getState().project, pou, v.name)) doc.addVariable(v);
+    for (const v of clip.variables)
+      if (pou && !findVariable(ctx.doc.getState().project, pou, v.name)) doc.addVariable(v);
     return doc.pasteElements(c.network, clip, { row: c.row, col: c.col });
   });
   ctx.ui.getState().select(c.network, ids);

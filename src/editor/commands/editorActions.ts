@@ -19,8 +19,13 @@ export const networkById = (ctx: EditorContext, id: NetworkId | undefined): Netw
   id ? networksOf(ctx).find((n) => n.id === id) : undefined;
 
 /** Elements that take a name typed right after placing them. */
-export const needsName = (el: Pick<LdElement, 'kind'> & Partial<{ contact: string; instance: string }>): boolean =>
-  el.kind === 'coil' || el.kind === 'jump' || (el.kind === 'contact' && el.contact !== 'NOT') || (el.kind === 'box' && el.instance !== undefined);
+export const needsName = (
+  el: Pick<LdElement, 'kind'> & Partial<{ contact: string; instance: string }>,
+): boolean =>
+  el.kind === 'coil' ||
+  el.kind === 'jump' ||
+  (el.kind === 'contact' && el.contact !== 'NOT') ||
+  (el.kind === 'box' && el.instance !== undefined);
 
 /** The cursor, placed on the first open network when there is none (a network is added if needed). */
 export function ensureCursor(ctx: EditorContext): CursorCell {
@@ -39,11 +44,18 @@ export function ensureCursor(ctx: EditorContext): CursorCell {
 }
 
 /** Places a template at a cell (inserting in series on another element), selects it, and opens the name editor when it takes one. */
-export function placeAt(ctx: EditorContext, network: NetworkId, cell: Cell, t: ElementTemplate): ElementId | undefined {
+export function placeAt(
+  ctx: EditorContext,
+  network: NetworkId,
+  cell: Cell,
+  t: ElementTemplate,
+): ElementId | undefined {
   const id = ctx.doc.getState().placeElement(network, cell, t);
   const ui = ctx.ui.getState();
   if (!id) {
-    ui.setStatus('No room there: a box is in the way.');
+    ui.setStatus(
+      'No room to insert there: a box is in the way, or the box would touch a parallel path. Make room first.',
+    );
     return undefined;
   }
   ui.select(network, [id]);
@@ -99,7 +111,8 @@ export function moveCursor(ctx: EditorContext, dRow: number, dCol: number) {
 export function targets(ctx: EditorContext): { network: NetworkId; ids: ElementId[] } | undefined {
   const ui = ctx.ui.getState();
   const sel = ui.selection;
-  if (sel.network && sel.elements.length > 0 && networkById(ctx, sel.network)) return { network: sel.network, ids: [...sel.elements] };
+  if (sel.network && sel.elements.length > 0 && networkById(ctx, sel.network))
+    return { network: sel.network, ids: [...sel.elements] };
   if (!ui.cursor) return undefined;
   const n = networkById(ctx, ui.cursor.network);
   const el = n && elementAt(n, ui.cursor);
@@ -132,7 +145,10 @@ export function editAtCursor(ctx: EditorContext) {
   const n = t && networkById(ctx, t.network);
   const el = n?.elements.find((e) => e.id === t?.ids[0]);
   if (!el) return;
-  if (!needsName(el)) return ctx.ui.getState().setStatus(el.kind === 'box' ? 'Edit the pins in the Inspector.' : 'This element has no name to edit.');
+  if (!needsName(el))
+    return ctx.ui
+      .getState()
+      .setStatus(el.kind === 'box' ? 'Edit the pins in the Inspector.' : 'This element has no name to edit.');
   ctx.ui.getState().startEditing(el.id);
 }
 
@@ -146,7 +162,11 @@ export function toggleVLinkAtCursor(ctx: EditorContext, side: 'left' | 'right') 
 export function selectAllInNetwork(ctx: EditorContext) {
   const c = ctx.ui.getState().cursor ?? ensureCursor(ctx);
   const n = networkById(ctx, c.network);
-  if (n) ctx.ui.getState().select(n.id, n.elements.map((e) => e.id));
+  if (n)
+    ctx.ui.getState().select(
+      n.id,
+      n.elements.map((e) => e.id),
+    );
 }
 
 /** Network the cursor or selection is in (else the last one). */

@@ -15,7 +15,10 @@ export function parseKeys(spec: string): KeySpec {
 const isMac = () => typeof navigator !== 'undefined' && /Mac|iPhone|iPad/.test(navigator.platform);
 
 /** Does the keyboard event match the spec? Letters compare case-insensitively (Shift is explicit). */
-export function matches(spec: KeySpec, e: Pick<KeyboardEvent, 'key' | 'code' | 'ctrlKey' | 'metaKey' | 'shiftKey' | 'altKey'>): boolean {
+export function matches(
+  spec: KeySpec,
+  e: Pick<KeyboardEvent, 'key' | 'code' | 'ctrlKey' | 'metaKey' | 'shiftKey' | 'altKey'>,
+): boolean {
   const mod = isMac() ? e.metaKey : e.ctrlKey;
   if (mod !== spec.mod || e.altKey !== spec.alt) return false;
   const key = e.key.toLowerCase();
@@ -46,6 +49,8 @@ export function keyLabel(spec: string): string {
   if (k.mod) parts.push(isMac() ? '⌘' : 'Ctrl');
   if (k.alt) parts.push('Alt');
   if (k.shift) parts.push('Shift');
-  parts.push(NAMES[k.key] ?? (k.key.length === 1 ? k.key.toUpperCase() : k.key[0]!.toUpperCase() + k.key.slice(1)));
+  parts.push(
+    NAMES[k.key] ?? (k.key.length === 1 ? k.key.toUpperCase() : k.key[0]!.toUpperCase() + k.key.slice(1)),
+  );
   return parts.join('+');
 }

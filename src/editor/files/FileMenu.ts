@@ -63,7 +63,13 @@ export const EXAMPLE_COMMANDS: readonly FileMenuCommand[] = EXAMPLES.map((exampl
   group: 'Examples',
   inMenu: true,
   description: example.description,
-  run: ({ doc }) => loadWithConsent(doc, example.build(), `Opening the example "${example.title}"`, `Opened the example "${example.title}".`),
+  run: ({ doc }) =>
+    loadWithConsent(
+      doc,
+      example.build(),
+      `Opening the example "${example.title}"`,
+      `Opened the example "${example.title}".`,
+    ),
 }));
 
 /** Everything for the File menu, New/Open/Save first, then the examples. */

@@ -75,7 +75,12 @@ function Notice() {
   return (
     <div className="rs-notice" role="status" data-testid="file-notice">
       <span>{notice}</span>
-      <button type="button" className="rs-icon-button" aria-label="Dismiss" onClick={() => filesUi.getState().setNotice('')}>
+      <button
+        type="button"
+        className="rs-icon-button"
+        aria-label="Dismiss"
+        onClick={() => filesUi.getState().setNotice('')}
+      >
         ×
       </button>
     </div>
@@ -88,7 +93,13 @@ function ConfirmDialog() {
   const close = () => filesUi.getState().closeConfirmation();
   return (
     <div className="rs-modal-backdrop" onKeyDown={(e) => e.key === 'Escape' && close()}>
-      <div className="rs-modal" role="alertdialog" aria-modal="true" aria-labelledby="rs-confirm-title" aria-describedby="rs-confirm-message">
+      <div
+        className="rs-modal"
+        role="alertdialog"
+        aria-modal="true"
+        aria-labelledby="rs-confirm-title"
+        aria-describedby="rs-confirm-message"
+      >
         <h2 id="rs-confirm-title">{c.title}</h2>
         <p id="rs-confirm-message">{c.message}</p>
         <div className="rs-modal-buttons">
@@ -117,7 +128,13 @@ function OpenFailureDialog() {
   const close = () => filesUi.getState().showOpenFailure(undefined);
   return (
     <div className="rs-modal-backdrop" onKeyDown={(e) => e.key === 'Escape' && close()}>
-      <div className="rs-modal" role="alertdialog" aria-modal="true" aria-labelledby="rs-open-failed" data-testid="open-failure">
+      <div
+        className="rs-modal"
+        role="alertdialog"
+        aria-modal="true"
+        aria-labelledby="rs-open-failed"
+        data-testid="open-failure"
+      >
         <h2 id="rs-open-failed">Could not open {failure.fileName}</h2>
         <p>The file is not a valid Rungsmith project. The open project is unchanged.</p>
         <ul className="rs-load-errors">
@@ -150,7 +167,11 @@ function AutosaveStatus() {
     const timer = setTimeout(() => setFresh(false), 2500);
     return () => clearTimeout(timer);
   }, [at]);
-  const text = error || (at ? `Autosaved in this browser at ${new Date(at).toLocaleTimeString()}${dirty ? ' · not saved to a file' : ''}` : '');
+  const text =
+    error ||
+    (at
+      ? `Autosaved in this browser at ${new Date(at).toLocaleTimeString()}${dirty ? ' · not saved to a file' : ''}`
+      : '');
   if (!text) return null;
   return (
     <div

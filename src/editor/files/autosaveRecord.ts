@@ -18,12 +18,23 @@ export interface AutosaveRecord {
 }
 
 export function makeAutosaveRecord(project: Project, unsavedChanges: boolean, now: number): AutosaveRecord {
-  return { format: AUTOSAVE_FORMAT, version: AUTOSAVE_VERSION, savedAt: now, unsavedChanges, projectText: JSON.stringify(project) };
+  return {
+    format: AUTOSAVE_FORMAT,
+    version: AUTOSAVE_VERSION,
+    savedAt: now,
+    unsavedChanges,
+    projectText: JSON.stringify(project),
+  };
 }
 
 export type RecoveryDecision =
   | { readonly action: 'start-fresh' }
-  | { readonly action: 'restore'; readonly project: Project; readonly unsavedChanges: boolean; readonly savedAt: number }
+  | {
+      readonly action: 'restore';
+      readonly project: Project;
+      readonly unsavedChanges: boolean;
+      readonly savedAt: number;
+    }
   | { readonly action: 'discard'; readonly reason: string; readonly errors: readonly LoadError[] };
 
 /**
@@ -32,25 +43,48 @@ export type RecoveryDecision =
  */
 export function decideRecovery(stored: unknown): RecoveryDecision {
   if (stored === undefined || stored === null) return { action: 'start-fresh' };
-  if (typeof stored !== 'object') return { action: 'discard', reason: 'the autosaved data is not a project', errors: [] };
+  if (typeof stored !== 'object')
+    return { action: 'discard', reason: 'the autosaved data is not a project', errors: [] };
   const r = stored as Partial<Record<keyof AutosaveRecord, unknown>>;
   if (r.format !== AUTOSAVE_FORMAT || r.version !== AUTOSAVE_VERSION) {
-    return { action: 'discard', reason: 'the autosave was written by an incompatible version of Rungsmith', errors: [] };
+    return {
+      action: 'discard',
+      reason: 'the autosave was written by an incompatible version of Rungsmith',
+      errors: [],
+    };
   }
   if (typeof r.projectText !== 'string' || typeof r.savedAt !== 'number') {
     return { action: 'discard', reason: 'the autosave is incomplete', errors: [] };
   }
   const loaded = loadProject(r.projectText);
-  if (!loaded.ok) return { action: 'discard', reason: 'the autosaved project did not pass validation', errors: loaded.errors };
-  return { action: 'restore', project: loaded.project, unsavedChanges: r.unsavedChanges === true, savedAt: r.savedAt };
+  if (!loaded.ok)
+    return {
+      action: 'discard',
+      reason: 'the autosaved project did not pass validation',
+      errors: loaded.errors,
+    };
+  return {
+    action: 'restore',
+    project: loaded.project,
+    unsavedChanges: r.unsavedChanges === true,
+    savedAt: r.savedAt,
+  };
 }
 
+/** Nothing drawn or declared yet: restoring it is not worth a notice. */
+export const isBlankProject = (p: Project): boolean =>
+  p.globals.length === 0 && p.pous.every((pou) => pou.variables.length === 0 && pou.networks.every((n) => n.elements.length === 0));
+
 /** "Restored your work from 14:02:31 (not yet saved to a file)." */
-export function recoveryNotice(decision: RecoveryDecision, formatTime: (ms: number) => string): string | undefined {
+export function recoveryNotice(
+  decision: RecoveryDecision,
+  formatTime: (ms: number) => string,
+): string | undefined {
   switch (decision.action) {
     case 'start-fresh':
       return undefined;
     case 'restore':
+      if (isBlankProject(decision.project)) return undefined;
       return `Restored "${decision.project.name}" from the browser's autosave of ${formatTime(decision.savedAt)}${
         decision.unsavedChanges ? ' (changes not yet saved to a file)' : ''
       }.`;

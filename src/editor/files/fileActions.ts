@@ -5,7 +5,12 @@ import { filesUi } from './filesUi';
 import { downloadProject, readProjectFile } from './projectFile';
 
 /** Runs `replace` now, or after the user agreed to lose the unsaved changes. */
-export function replaceDocument(store: DocumentStore, what: string, confirmLabel: string, replace: () => void): void {
+export function replaceDocument(
+  store: DocumentStore,
+  what: string,
+  confirmLabel: string,
+  replace: () => void,
+): void {
   if (!store.getState().dirty) return replace();
   filesUi.getState().confirm({
     title: 'Discard unsaved changes?',

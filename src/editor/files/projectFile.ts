@@ -4,7 +4,10 @@ import type { Project } from '../../model/project';
 
 /** A file name from the project name: "Motor start/stop" -> "Motor_start_stop.json". */
 export function projectFileName(project: Project): string {
-  const base = project.name.trim().replace(/[^A-Za-z0-9._-]+/g, '_').replace(/^_+|_+$/g, '');
+  const base = project.name
+    .trim()
+    .replace(/[^A-Za-z0-9._-]+/g, '_')
+    .replace(/^_+|_+$/g, '');
   return `${base || 'project'}.json`;
 }
 
@@ -29,6 +32,9 @@ export async function readProjectFile(file: File): Promise<LoadResult> {
   try {
     return loadProject(await file.text());
   } catch (e) {
-    return { ok: false, errors: [{ path: '(file)', message: `could not read ${file.name}: ${(e as Error).message}` }] };
+    return {
+      ok: false,
+      errors: [{ path: '(file)', message: `could not read ${file.name}: ${(e as Error).message}` }],
+    };
   }
 }

@@ -32,7 +32,9 @@ function useRecovery(store: DocumentStore): boolean {
       },
       (e: unknown) => {
         if (cancelled) return;
-        filesUi.getState().setAutosaved(undefined, `Autosave is not available in this browser (${(e as Error).message}).`);
+        filesUi
+          .getState()
+          .setAutosaved(undefined, `Autosave is not available in this browser (${(e as Error).message}).`);
       },
     );
     return () => {
@@ -57,13 +59,16 @@ export function useAutosave(store: DocumentStore): void {
       written = { project, dirty };
       inFlight += 1;
       settle();
-      writeAutosave(makeAutosaveRecord(project, dirty, Date.now())).then(
-        () => filesUi.getState().setAutosaved(Date.now()),
-        (e: unknown) => filesUi.getState().setAutosaved(undefined, `Autosave failed: ${(e as Error).message}`),
-      ).finally(() => {
-        inFlight -= 1;
-        settle();
-      });
+      writeAutosave(makeAutosaveRecord(project, dirty, Date.now()))
+        .then(
+          () => filesUi.getState().setAutosaved(Date.now()),
+          (e: unknown) =>
+            filesUi.getState().setAutosaved(undefined, `Autosave failed: ${(e as Error).message}`),
+        )
+        .finally(() => {
+          inFlight -= 1;
+          settle();
+        });
     };
     const unsubscribe = store.subscribe((s, prev) => {
       if (s.project === prev.project && s.dirty === prev.dirty) return;

@@ -21,11 +21,17 @@ export function BindingField({ label, value, role, onCommit, placeholder, testId
   const id = useId();
   return (
     <div className="rs-field">
-      <label htmlFor={id} id={`${id}-label`}>
-        {label}
-      </label>
-      <div id={id}>
-        <VariableInput value={value} role={role} onCommit={onCommit} aria-label={label} placeholder={placeholder} data-testid={testId} />
+      <label htmlFor={id}>{label}</label>
+      <div>
+        <VariableInput
+          id={id}
+          value={value}
+          role={role}
+          onCommit={onCommit}
+          aria-label={label}
+          placeholder={placeholder}
+          data-testid={testId}
+        />
       </div>
       <BindingInfo value={value} role={role} />
     </div>
@@ -50,18 +56,27 @@ function BindingInfo({ value, role }: { value: string; role: BindingRole }) {
     case 'declared': {
       const accepted = acceptedTypes(role);
       const v = findVariable(project, pou, value.trim());
-      const details = [resolution.type, v?.location, v?.comment].filter((s) => s && s.trim() !== '').join(' · ');
+      const details = [resolution.type, v?.location, v?.comment]
+        .filter((s) => s && s.trim() !== '')
+        .join(' · ');
       const fits = accepted.includes(resolution.type);
       return (
         <p className={fits ? 'rs-binding-info' : 'rs-binding-info rs-warning-text'}>
-          {fits ? details : `${value.trim()} is ${resolution.type}; this needs ${accepted.length > 4 ? 'another type' : accepted.join(' or ')}`}
+          {fits
+            ? details
+            : `${value.trim()} is ${resolution.type}; this needs ${accepted.length > 4 ? 'another type' : accepted.join(' or ')}`}
         </p>
       );
     }
     case 'undeclared': {
       const choices = declareChoices(project, resolution.name, role);
       return (
-        <div className="rs-declare-offer" role="group" aria-label={`Declare ${resolution.name}`} data-testid="declare-offer">
+        <div
+          className="rs-declare-offer"
+          role="group"
+          aria-label={`Declare ${resolution.name}`}
+          data-testid="declare-offer"
+        >
           <p>
             <strong>{resolution.name}</strong> is not declared. Declare it as
           </p>
@@ -75,7 +90,9 @@ function BindingInfo({ value, role }: { value: string; role: BindingRole }) {
               {choice.label}
             </button>
           ))}
-          {choices.length === 0 && <p className="rs-error-text">"{resolution.name}" cannot be a variable name.</p>}
+          {choices.length === 0 && (
+            <p className="rs-error-text">"{resolution.name}" cannot be a variable name.</p>
+          )}
         </div>
       );
     }

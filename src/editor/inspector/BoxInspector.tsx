@@ -8,7 +8,11 @@ import { BindingField } from './BindingField';
 import { CommitInput } from '../variables/CommitInput';
 
 /** Operands with `pin` set to `text`, or removed when the text is empty. */
-function withOperand(rec: Readonly<Record<string, string>>, pin: string, text: string): Record<string, string> {
+function withOperand(
+  rec: Readonly<Record<string, string>>,
+  pin: string,
+  text: string,
+): Record<string, string> {
   const out = { ...rec };
   if (text.trim() === '') delete out[pin];
   else out[pin] = text.trim();
@@ -20,7 +24,12 @@ export function BoxInspector({ box }: { box: BoxElement }) {
   const signature = blockSignature(box.blockType);
   const layout = boxLayout(box);
   if (!signature || !layout) {
-    return <p className="rs-error-text">"{box.blockType}" is not a standard function or function block; delete the box or load a project that defines it.</p>;
+    return (
+      <p className="rs-error-text">
+        "{box.blockType}" is not a standard function or function block; delete the box or load a project that
+        defines it.
+      </p>
+    );
   }
   const update = store.getState().updateElement;
   const isFb = signature.kind === 'fb';
@@ -49,7 +58,11 @@ export function BoxInspector({ box }: { box: BoxElement }) {
             min={ext.min}
             max={ext.max}
             className="rs-cell-input"
-            value={String(layout.inputs.filter((p) => p.name.startsWith(ext.prefix) && /^\d+$/.test(p.name.slice(ext.prefix.length))).length)}
+            value={String(
+              layout.inputs.filter(
+                (p) => p.name.startsWith(ext.prefix) && /^\d+$/.test(p.name.slice(ext.prefix.length)),
+              ).length,
+            )}
             onCommit={(text) => {
               const n = Math.round(Number(text));
               if (Number.isFinite(n)) update(box.id, { inputCount: Math.max(ext.min, Math.min(ext.max, n)) });

@@ -1,5 +1,11 @@
 // The selected element: what it is, where it is, and its variable / type / target.
-import { COIL_TYPES, CONTACT_TYPES, type CoilType, type ContactType, type LdElement } from '../../model/elements';
+import {
+  COIL_TYPES,
+  CONTACT_TYPES,
+  type CoilType,
+  type ContactType,
+  type LdElement,
+} from '../../model/elements';
 import type { Network } from '../../model/project';
 import { useDocumentStore } from '../../store/documentStore';
 import { CommitInput } from '../variables/CommitInput';
@@ -28,7 +34,12 @@ export function ElementInspector({ element: el, network, networkIndex, labels }:
         <>
           <div className="rs-field">
             <label htmlFor={`kind-${el.id}`}>Contact</label>
-            <select id={`kind-${el.id}`} className="rs-cell-input" value={el.contact} onChange={(e) => update(el.id, { contact: e.target.value as ContactType })}>
+            <select
+              id={`kind-${el.id}`}
+              className="rs-cell-input"
+              value={el.contact}
+              onChange={(e) => update(el.id, { contact: e.target.value as ContactType })}
+            >
               {CONTACT_TYPES.map((t) => (
                 <option key={t} value={t}>
                   {CONTACT_WORDS[t]}
@@ -52,7 +63,12 @@ export function ElementInspector({ element: el, network, networkIndex, labels }:
         <>
           <div className="rs-field">
             <label htmlFor={`kind-${el.id}`}>Coil</label>
-            <select id={`kind-${el.id}`} className="rs-cell-input" value={el.coil} onChange={(e) => update(el.id, { coil: e.target.value as CoilType })}>
+            <select
+              id={`kind-${el.id}`}
+              className="rs-cell-input"
+              value={el.coil}
+              onChange={(e) => update(el.id, { coil: e.target.value as CoilType })}
+            >
               {COIL_TYPES.map((t) => (
                 <option key={t} value={t}>
                   {COIL_WORDS[t]}
@@ -89,7 +105,9 @@ export function ElementInspector({ element: el, network, networkIndex, labels }:
               <option key={l} value={l} />
             ))}
           </datalist>
-          {labels.length === 0 && <p className="rs-binding-info">No network has a label yet: select a network and give it one.</p>}
+          {labels.length === 0 && (
+            <p className="rs-binding-info">No network has a label yet: select a network and give it one.</p>
+          )}
         </div>
       )}
       {el.kind === 'return' && <p>When powered, the POU ends for this scan.</p>}

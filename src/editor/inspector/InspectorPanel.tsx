@@ -18,7 +18,15 @@ export function InspectorPanel() {
   let body;
   if (!network) body = <ProjectInspector />;
   else if (elements.length === 1 && elements[0]) {
-    body = <ElementInspector key={elements[0].id} element={elements[0]} network={network} networkIndex={index} labels={labels} />;
+    body = (
+      <ElementInspector
+        key={elements[0].id}
+        element={elements[0]}
+        network={network}
+        networkIndex={index}
+        labels={labels}
+      />
+    );
   } else if (elements.length > 1) {
     body = (
       <div data-testid="multi-inspector">
@@ -34,7 +42,9 @@ export function InspectorPanel() {
       </div>
     );
   } else {
-    const others = (pou?.networks ?? []).filter((n) => n.id !== network.id).flatMap((n) => (n.label ? [n.label] : []));
+    const others = (pou?.networks ?? [])
+      .filter((n) => n.id !== network.id)
+      .flatMap((n) => (n.label ? [n.label] : []));
     body = <NetworkInspector key={network.id} network={network} index={index} otherLabels={others} />;
   }
   return (

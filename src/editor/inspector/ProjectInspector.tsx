@@ -11,12 +11,17 @@ export function ProjectInspector() {
     <div data-testid="project-inspector">
       <h2>Project</h2>
       <p className="rs-inspector-where">
-        {project.pous.length} POU{project.pous.length === 1 ? '' : 's'}, {networks} network{networks === 1 ? '' : 's'}. Select an element or a network to
-        edit it.
+        {project.pous.length} POU{project.pous.length === 1 ? '' : 's'}, {networks} network
+        {networks === 1 ? '' : 's'}. Select an element or a network to edit it.
       </p>
       <div className="rs-field">
         <label htmlFor="project-name">Name</label>
-        <CommitInput id="project-name" className="rs-cell-input" value={project.name} onCommit={(name) => store.getState().updateProject({ name })} />
+        <CommitInput
+          id="project-name"
+          className="rs-cell-input"
+          value={project.name}
+          onCommit={(name) => store.getState().updateProject({ name })}
+        />
         <label htmlFor="project-profile">Semantics</label>
         <select
           id="project-profile"
@@ -34,7 +39,10 @@ export function ProjectInspector() {
           id="project-description"
           key={project.description}
           defaultValue={project.description}
-          onBlur={(e) => e.target.value !== project.description && store.getState().updateProject({ description: e.target.value })}
+          onBlur={(e) =>
+            e.target.value !== project.description &&
+            store.getState().updateProject({ description: e.target.value })
+          }
         />
       </div>
     </div>

@@ -22,16 +22,21 @@ export interface VariableInputProps {
   /** Leaving the field commits the text (inspector); false: leaving cancels (inline editor). Default true. */
   readonly commitOnBlur?: boolean;
   readonly autoFocus?: boolean;
+  /** id of the text field, for a <label htmlFor>. */
+  readonly id?: string;
   readonly placeholder?: string;
   readonly 'aria-label'?: string;
   readonly 'data-testid'?: string;
   readonly className?: string;
 }
 
-type Option = { readonly kind: 'candidate'; readonly candidate: Candidate } | { readonly kind: 'declare'; readonly choice: DeclareChoice };
+type Option =
+  | { readonly kind: 'candidate'; readonly candidate: Candidate }
+  | { readonly kind: 'declare'; readonly choice: DeclareChoice };
 
 /** Input pins accept literals (`T#5s`, `10`), which need no completion and no declaration. */
-const isLiteralFor = (role: BindingRole, text: string) => role.kind === 'pin' && role.direction === 'input' && parseLiteral(text.trim()).ok;
+const isLiteralFor = (role: BindingRole, text: string) =>
+  role.kind === 'pin' && role.direction === 'input' && parseLiteral(text.trim()).ok;
 
 export function VariableInput(props: VariableInputProps) {
   const { value, role, onCommit, onCancel, commitOnBlur = true } = props;
@@ -46,10 +51,15 @@ export function VariableInput(props: VariableInputProps) {
 
   const options = useMemo<Option[]>(() => {
     if (!pou || isLiteralFor(role, text)) return [];
-    const ranked = rankCandidates(text, candidatesFor(project, pou, role)).map((candidate) => ({ kind: 'candidate' as const, candidate }));
+    const ranked = rankCandidates(text, candidatesFor(project, pou, role)).map((candidate) => ({
+      kind: 'candidate' as const,
+      candidate,
+    }));
     const resolution = resolveName(project, pou, text);
     const declares =
-      resolution.status === 'undeclared' ? declareChoices(project, text, role).map((choice) => ({ kind: 'declare' as const, choice })) : [];
+      resolution.status === 'undeclared'
+        ? declareChoices(project, text, role).map((choice) => ({ kind: 'declare' as const, choice }))
+        : [];
     return [...ranked, ...declares];
   }, [project, pou, role, text]);
   const shown = open && options.length > 0;
@@ -106,6 +116,7 @@ export function VariableInput(props: VariableInputProps) {
     <div className={`rs-varinput ${props.className ?? ''}`}>
       <input
         role="combobox"
+        id={props.id}
         aria-label={props['aria-label'] ?? 'Variable'}
         aria-expanded={shown}
         aria-controls={listId}

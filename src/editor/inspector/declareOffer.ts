@@ -68,7 +68,11 @@ export function declareChoices(project: Project, name: string, role: BindingRole
   const choices: DeclareChoice[] = [{ label: type, variable: variable(trimmed, type) }];
   for (const area of areasFor(role)) {
     const location = nextFreeAddress(project, area, type);
-    if (location) choices.push({ label: `${type} ${AREA_WORDS[area]} at ${location}`, variable: variable(trimmed, type, { location }) });
+    if (location)
+      choices.push({
+        label: `${type} ${AREA_WORDS[area]} at ${location}`,
+        variable: variable(trimmed, type, { location }),
+      });
   }
   return choices;
 }

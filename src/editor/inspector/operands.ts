@@ -2,7 +2,14 @@
 // completion list, the inspector and the "declare it?" offer.
 import { blockSignature, isFbType } from '../../model/blocks';
 import { findVariable } from '../../model/factory';
-import { GENERIC_MEMBERS, INT_INFO, isElementaryType, type ElementaryType, type GenericType, type PinType } from '../../model/iecTypes';
+import {
+  GENERIC_MEMBERS,
+  INT_INFO,
+  isElementaryType,
+  type ElementaryType,
+  type GenericType,
+  type PinType,
+} from '../../model/iecTypes';
 import type { Pou, Project, Variable } from '../../model/project';
 
 /** The place a name is typed into. */
@@ -38,12 +45,18 @@ export interface Candidate {
   readonly detail: string;
 }
 
-const describe = (v: Variable): string => [v.location, v.comment].filter((s) => s && s.trim() !== '').join('  ');
+const describe = (v: Variable): string =>
+  [v.location, v.comment].filter((s) => s && s.trim() !== '').join('  ');
 
 /** Declared variables and FB instance pins (`T1.Q`) whose type fits the role. */
 export function candidatesFor(project: Project, pou: Pou, role: BindingRole): Candidate[] {
   const accepted = new Set(acceptedTypes(role));
-  const all = [...pou.variables, ...project.globals.filter((g) => !pou.variables.some((v) => v.name.toUpperCase() === g.name.toUpperCase()))];
+  const all = [
+    ...pou.variables,
+    ...project.globals.filter(
+      (g) => !pou.variables.some((v) => v.name.toUpperCase() === g.name.toUpperCase()),
+    ),
+  ];
   const out: Candidate[] = [];
   for (const v of all) {
     const type = v.type.toUpperCase();
@@ -54,7 +67,8 @@ export function candidatesFor(project: Project, pou: Pou, role: BindingRole): Ca
     // Contacts read any pin; coils and input pins write, so only FB inputs make sense for coils.
     const pins = role.kind === 'coil' ? sig.inputs : [...sig.inputs, ...sig.outputs];
     for (const pin of pins) {
-      if (isElementaryType(pin.type) && accepted.has(pin.type)) out.push({ text: `${v.name}.${pin.name}`, type: pin.type, detail: `${type} pin` });
+      if (isElementaryType(pin.type) && accepted.has(pin.type))
+        out.push({ text: `${v.name}.${pin.name}`, type: pin.type, detail: `${type} pin` });
     }
   }
   return out;
@@ -71,7 +85,8 @@ export function rankCandidates(query: string, candidates: readonly Candidate[], 
     if (name.startsWith(q)) starts.push(c);
     else if (name.includes(q)) contains.push(c);
   }
-  const byLength = (a: Candidate, b: Candidate) => a.text.length - b.text.length || a.text.localeCompare(b.text);
+  const byLength = (a: Candidate, b: Candidate) =>
+    a.text.length - b.text.length || a.text.localeCompare(b.text);
   return [...starts.sort(byLength), ...contains.sort(byLength)].slice(0, limit);
 }
 
@@ -87,18 +102,23 @@ export function resolveName(project: Project, pou: Pou, text: string): Resolutio
   if (name === '') return { status: 'empty' };
   const [base = '', member, ...rest] = name.split('.');
   const v = findVariable(project, pou, base);
-  if (member === undefined) return v ? { status: 'declared', type: v.type.toUpperCase() } : { status: 'undeclared', name };
+  if (member === undefined)
+    return v ? { status: 'declared', type: v.type.toUpperCase() } : { status: 'undeclared', name };
   if (!v) return { status: 'other', message: `"${base}" is not declared` };
   if (rest.length > 0) return { status: 'other', message: `"${name}" has too many dots` };
   const type = v.type.toUpperCase();
   const sig = isFbType(type) ? blockSignature(type) : undefined;
   if (sig) {
     const pin = [...sig.inputs, ...sig.outputs].find((p) => p.name === member.toUpperCase());
-    return pin ? { status: 'declared', type: pin.type } : { status: 'other', message: `${type} has no pin ${member}` };
+    return pin
+      ? { status: 'declared', type: pin.type }
+      : { status: 'other', message: `${type} has no pin ${member}` };
   }
   if (/^\d+$/.test(member) && type !== 'BOOL' && type in INT_INFO) {
     const bits = INT_INFO[type as keyof typeof INT_INFO].bits;
-    return Number(member) < bits ? { status: 'declared', type: 'BOOL' } : { status: 'other', message: `${type} ${base} has bits 0..${bits - 1}` };
+    return Number(member) < bits
+      ? { status: 'declared', type: 'BOOL' }
+      : { status: 'other', message: `${type} ${base} has bits 0..${bits - 1}` };
   }
   return { status: 'other', message: `"${base}" is a ${type} and has no member ${member}` };
 }

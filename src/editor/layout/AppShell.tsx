@@ -43,7 +43,11 @@ export function AppShell() {
           <Item key={id} />
         ))}
         <span className="rs-spacer" />
-        <span className="rs-project-name" data-testid="project-name" title={dirty ? 'Unsaved changes' : 'Saved'}>
+        <span
+          className="rs-project-name"
+          data-testid="project-name"
+          title={dirty ? 'Unsaved changes' : 'Saved'}
+        >
           {projectName}
           {dirty ? ' •' : ''}
         </span>
@@ -78,5 +82,9 @@ export function AppShell() {
       ))}
     </div>
   );
-  return CANVAS_OVERLAY ? <CanvasOverlayContext.Provider value={CANVAS_OVERLAY}>{shell}</CanvasOverlayContext.Provider> : shell;
+  return CANVAS_OVERLAY ? (
+    <CanvasOverlayContext.Provider value={CANVAS_OVERLAY}>{shell}</CanvasOverlayContext.Provider>
+  ) : (
+    shell
+  );
 }

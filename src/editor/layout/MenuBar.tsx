@@ -68,7 +68,9 @@ export function MenuBar({ ctx }: { readonly ctx: EditorContext }) {
 
   const onMenuKeyDown = (e: KeyboardEvent) => {
     e.stopPropagation();
-    const items = [...(ref.current?.querySelectorAll<HTMLElement>('[role="menuitem"]:not([disabled])') ?? [])];
+    const items = [
+      ...(ref.current?.querySelectorAll<HTMLElement>('[role="menuitem"]:not([disabled])') ?? []),
+    ];
     const i = items.indexOf(document.activeElement as HTMLElement);
     if (e.key === 'Escape') {
       setOpen(undefined);

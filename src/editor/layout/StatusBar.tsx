@@ -28,7 +28,12 @@ export function StatusBar() {
   return (
     <footer className="rs-statusbar" data-testid="status-bar">
       <span role="status" aria-live="polite" className="rs-status-message">
-        {status || (tool.kind === 'place' ? 'Click a cell to place — Esc to stop' : tool.kind === 'vlink' ? 'Click a cell edge between two rows — Esc to stop' : '')}
+        {status ||
+          (tool.kind === 'place'
+            ? 'Click a cell to place — Esc to stop'
+            : tool.kind === 'vlink'
+              ? 'Click a cell edge between two rows — Esc to stop'
+              : '')}
       </span>
       {here && (
         <span className={`rs-status-problem rs-${here.severity}`}>
@@ -41,7 +46,12 @@ export function StatusBar() {
           Network {index + 1}, row {cursor.row + 1}, column {cursor.col + 1}
         </span>
       )}
-      <button type="button" className="rs-zoom" title="Actual size (Ctrl+0)" onClick={() => ui.getState().setZoom(1)}>
+      <button
+        type="button"
+        className="rs-zoom"
+        title="Actual size (Ctrl+0)"
+        onClick={() => ui.getState().setZoom(1)}
+      >
         {Math.round(zoom * 100)}%
       </button>
     </footer>

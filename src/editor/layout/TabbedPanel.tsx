@@ -2,7 +2,15 @@
 import { useState, type KeyboardEvent } from 'react';
 import type { PanelSlot } from './panels';
 
-export function TabbedPanel({ panels, label, className }: { readonly panels: readonly PanelSlot[]; readonly label: string; readonly className: string }) {
+export function TabbedPanel({
+  panels,
+  label,
+  className,
+}: {
+  readonly panels: readonly PanelSlot[];
+  readonly label: string;
+  readonly className: string;
+}) {
   const [active, setActive] = useState(panels[0]?.id ?? '');
   const current = panels.find((p) => p.id === active) ?? panels[0];
   const onKeyDown = (e: KeyboardEvent) => {
@@ -37,7 +45,12 @@ export function TabbedPanel({ panels, label, className }: { readonly panels: rea
       </div>
       {current && (
         // Only the open tab is mounted: a hidden panel costs nothing on big projects.
-        <div id={`rs-tabpanel-${current.id}`} role="tabpanel" aria-labelledby={`rs-tab-${current.id}`} className="rs-tabpanel">
+        <div
+          id={`rs-tabpanel-${current.id}`}
+          role="tabpanel"
+          aria-labelledby={`rs-tab-${current.id}`}
+          className="rs-tabpanel"
+        >
           <current.component />
         </div>
       )}

@@ -4,6 +4,7 @@
 import type { ComponentType } from 'react';
 import { FilesHost } from '../files/FilesHost';
 import { HardwarePanel } from '../hardware/HardwarePanel';
+import { HardwareSimLink } from '../hardware/HardwareSimLink';
 import { InspectorPanel } from '../inspector/InspectorPanel';
 import { ProblemsPanel } from '../problems/ProblemsPanel';
 import { VariablesPanel } from '../variables/VariablesPanel';
@@ -50,6 +51,7 @@ export const TOP_BAR_ITEMS: readonly BarSlot[] = [{ id: 'simulation', component:
 export const HOSTS: readonly BarSlot[] = [
   { id: 'files', component: FilesHost },
   { id: 'simulation', component: SimHostMount },
+  { id: 'hardware-sim-link', component: HardwareSimLink },
 ];
 
 /** Power flow and live values on the canvas (see src/editor/canvas/overlay.ts); undefined: none. */

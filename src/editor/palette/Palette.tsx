@@ -30,7 +30,8 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
     // Clicking the active tool again returns to selecting.
     ui.getState().setTool(current.kind === 'place' && current.name === name ? { kind: 'select' } : t);
   };
-  const armBlock = (sig: BlockSignature) => arm(`block-${sig.name}`, { kind: 'place', name: `block-${sig.name}`, template: boxTemplate(sig) });
+  const armBlock = (sig: BlockSignature) =>
+    arm(`block-${sig.name}`, { kind: 'place', name: `block-${sig.name}`, template: boxTemplate(sig) });
   const runCommand = (id: string) => commandById(id)?.run(ctx);
 
   return (
@@ -53,7 +54,9 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
           aria-pressed={tool.kind === 'vlink'}
           data-testid="palette-vlink"
           title={`Vertical link tool: click between two rows on a cell edge to add or remove a vertical link (at the cursor: V left edge, Shift+V right edge)`}
-          onClick={() => ui.getState().setTool(tool.kind === 'vlink' ? { kind: 'select' } : { kind: 'vlink' })}
+          onClick={() =>
+            ui.getState().setTool(tool.kind === 'vlink' ? { kind: 'select' } : { kind: 'vlink' })
+          }
         >
           <span className="rs-palette-symbol">┃</span>
           <span>Vertical link</span>
@@ -81,15 +84,33 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
       ))}
       <div className="rs-palette-group" role="group" aria-label="Network">
         <h2 className="rs-palette-heading">Network</h2>
-        <button type="button" className="rs-palette-item" data-testid="palette-label" title="Label of the cursor's network, a jump target (L)" onClick={() => runCommand('network.label')}>
+        <button
+          type="button"
+          className="rs-palette-item"
+          data-testid="palette-label"
+          title="Label of the cursor's network, a jump target (L)"
+          onClick={() => runCommand('network.label')}
+        >
           <span className="rs-palette-symbol rs-mono">L:</span>
           <span>Label</span>
         </button>
-        <button type="button" className="rs-palette-item" data-testid="palette-comment" title="Comment above the cursor's network (K)" onClick={() => runCommand('network.comment')}>
+        <button
+          type="button"
+          className="rs-palette-item"
+          data-testid="palette-comment"
+          title="Comment above the cursor's network (K)"
+          onClick={() => runCommand('network.comment')}
+        >
           <span className="rs-palette-symbol">“ ”</span>
           <span>Comment</span>
         </button>
-        <button type="button" className="rs-palette-item" data-testid="palette-network" title="Insert a network below the cursor's network (N)" onClick={() => runCommand('network.insert')}>
+        <button
+          type="button"
+          className="rs-palette-item"
+          data-testid="palette-network"
+          title="Insert a network below the cursor's network (N)"
+          onClick={() => runCommand('network.insert')}
+        >
           <span className="rs-palette-symbol">＋</span>
           <span>New network</span>
         </button>

@@ -18,7 +18,13 @@ export interface PaletteItem {
   readonly description: string;
 }
 
-const contact = (c: ContactType, label: string, symbol: string, keys: string | undefined, description: string): PaletteItem => ({
+const contact = (
+  c: ContactType,
+  label: string,
+  symbol: string,
+  keys: string | undefined,
+  description: string,
+): PaletteItem => ({
   id: `contact-${c}`,
   label,
   symbol,
@@ -28,7 +34,13 @@ const contact = (c: ContactType, label: string, symbol: string, keys: string | u
   description,
 });
 
-const coil = (c: CoilType, label: string, symbol: string, keys: string | undefined, description: string): PaletteItem => ({
+const coil = (
+  c: CoilType,
+  label: string,
+  symbol: string,
+  keys: string | undefined,
+  description: string,
+): PaletteItem => ({
   id: `coil-${c}`,
   label,
   symbol,
@@ -41,8 +53,20 @@ const coil = (c: CoilType, label: string, symbol: string, keys: string | undefin
 export const PALETTE_ITEMS: readonly PaletteItem[] = [
   contact('NO', 'Normally open contact', '-| |-', 'c', 'Passes power when the variable is TRUE.'),
   contact('NC', 'Normally closed contact', '-|/|-', 'shift+c', 'Passes power when the variable is FALSE.'),
-  contact('P', 'Positive transition contact', '-|P|-', 'p', 'Passes power for one evaluation when the variable rises.'),
-  contact('N', 'Negative transition contact', '-|N|-', 'shift+p', 'Passes power for one evaluation when the variable falls.'),
+  contact(
+    'P',
+    'Positive transition contact',
+    '-|P|-',
+    'p',
+    'Passes power for one evaluation when the variable rises.',
+  ),
+  contact(
+    'N',
+    'Negative transition contact',
+    '-|N|-',
+    'shift+p',
+    'Passes power for one evaluation when the variable falls.',
+  ),
   contact('NOT', 'Inverting contact', '-|NOT|-', 'i', 'Inverts the power flow (no variable).'),
   coil('COIL', 'Coil', '-( )-', 'o', 'Writes the power flow to the variable.'),
   coil('NEG', 'Negated coil', '-(/)-', 'shift+o', 'Writes the inverted power flow to the variable.'),
@@ -51,8 +75,20 @@ export const PALETTE_ITEMS: readonly PaletteItem[] = [
   coil('M', 'Retentive coil', '-(M)-', 'm', 'A coil whose variable is kept over a warm restart.'),
   coil('SM', 'Retentive set coil', '-(SM)-', 'shift+s', 'A set coil whose variable is retentive.'),
   coil('RM', 'Retentive reset coil', '-(RM)-', 'shift+r', 'A reset coil whose variable is retentive.'),
-  coil('P', 'Positive transition coil', '-(P)-', undefined, 'TRUE for one evaluation when the power flow rises.'),
-  coil('N', 'Negative transition coil', '-(N)-', undefined, 'TRUE for one evaluation when the power flow falls.'),
+  coil(
+    'P',
+    'Positive transition coil',
+    '-(P)-',
+    undefined,
+    'TRUE for one evaluation when the power flow rises.',
+  ),
+  coil(
+    'N',
+    'Negative transition coil',
+    '-(N)-',
+    undefined,
+    'TRUE for one evaluation when the power flow falls.',
+  ),
   {
     id: 'link',
     label: 'Horizontal link',

@@ -2,12 +2,13 @@
 // Clicking one (or Enter on it) shows the place on the canvas and selects the element.
 import { useMemo, useState } from 'react';
 import type { Diagnostic } from '../../engine/api';
-import type { Project } from '../../model/project';
+import type { Pou, Project } from '../../model/project';
 import { elementCells } from '../../model/factory';
 import { useDocumentStore } from '../../store/documentStore';
 import { useUiStore } from '../../store/uiStore';
 import { countBySeverity, diagnosticCell, diagnosticNetwork, sortDiagnostics } from './describe';
 import { useDiagnostics } from './useDiagnostics';
+import { focusVariable } from '../variables/variableFocus';
 import './problems.css';
 
 /** The network and cell a diagnostic points at, resolved against the document. */
@@ -18,6 +19,16 @@ function placeOf(project: Project, d: Diagnostic) {
   const element = d.elementId ? network.elements.find((e) => e.id === d.elementId) : undefined;
   const cell = d.cell ?? (element ? elementCells(element)[0] : undefined);
   return { pou, network, cell, element };
+}
+
+/** A variable-table problem: show the variable it names ("the variable "Count" ...") in the table. */
+function showVariable(project: Project, pou: Pou, message: string) {
+  for (const [, name = ''] of message.matchAll(/"([^"]+)"/g)) {
+    const key = name.toUpperCase();
+    if (pou.variables.some((v) => v.name.toUpperCase() === key)) return focusVariable(name, false);
+    if (project.globals.some((v) => v.name.toUpperCase() === key)) return focusVariable(name, true);
+  }
+  focusVariable('', false);
 }
 
 export function ProblemsPanel() {
@@ -33,8 +44,9 @@ export function ProblemsPanel() {
   const jump = (d: Diagnostic) => {
     const doc = documentStore.getState();
     const { pou, network, cell, element } = placeOf(doc.project, d);
+    if (pou && pou.id !== doc.activePouId) doc.setActivePou(pou.id);
+    if (d.network < 0 && pou) return showVariable(doc.project, pou, d.message);
     if (!pou || !network) return;
-    if (pou.id !== doc.activePouId) doc.setActivePou(pou.id);
     const ui = uiStore.getState();
     if (element) ui.select(network.id, [element.id]);
     else ui.select(network.id, []);
@@ -45,7 +57,9 @@ export function ProblemsPanel() {
     <section className="rs-problems" aria-label="Problems" data-testid="problems-panel">
       <header className="rs-problems-head">
         <span data-testid="problems-summary" aria-live="polite">
-          {diagnostics.length === 0 ? 'No problems' : `${errors} error${errors === 1 ? '' : 's'}, ${warnings} warning${warnings === 1 ? '' : 's'}`}
+          {diagnostics.length === 0
+            ? 'No problems'
+            : `${errors} error${errors === 1 ? '' : 's'}, ${warnings} warning${warnings === 1 ? '' : 's'}`}
         </span>
         <label className="rs-problems-toggle">
           <input type="checkbox" checked={showWarnings} onChange={(e) => setShowWarnings(e.target.checked)} />
@@ -55,7 +69,9 @@ export function ProblemsPanel() {
       {shown.length > 0 && (
         <ul className="rs-problems-list" aria-label="Problem list">
           {shown.map((d, i) => (
-            <li key={`${d.rule}:${d.pou}:${d.network}:${d.elementId ?? ''}:${d.cell?.row ?? ''}:${d.cell?.col ?? ''}:${i}`}>
+            <li
+              key={`${d.rule}:${d.pou}:${d.network}:${d.elementId ?? ''}:${d.cell?.row ?? ''}:${d.cell?.col ?? ''}:${i}`}
+            >
               <button
                 type="button"
                 className={`rs-problem rs-${d.severity}`}

@@ -18,7 +18,10 @@ const notify = () => listeners.forEach((l) => l());
 function startWorker(): Worker | null {
   if (typeof Worker === 'undefined') return null;
   try {
-    const w = new Worker(new URL('./check.worker.ts', import.meta.url), { type: 'module', name: 'rungsmith-check' });
+    const w = new Worker(new URL('./check.worker.ts', import.meta.url), {
+      type: 'module',
+      name: 'rungsmith-check',
+    });
     w.onmessage = (e: MessageEvent<{ seq: number; diagnostics: Diagnostic[] }>) => {
       if (!running || e.data.seq !== running.seq) return;
       results.set(running.project, e.data.diagnostics);
@@ -59,7 +62,8 @@ function sendNext() {
 }
 
 /** The diagnostics of this project version if already checked. */
-export const checkedDiagnostics = (project: Project): readonly Diagnostic[] | undefined => results.get(project);
+export const checkedDiagnostics = (project: Project): readonly Diagnostic[] | undefined =>
+  results.get(project);
 
 /** Asks for this project version to be checked; subscribers hear when a result arrives. */
 export function requestCheck(project: Project): void {

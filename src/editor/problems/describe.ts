@@ -8,7 +8,8 @@ export function diagnosticNetwork(d: Diagnostic): string {
 }
 
 /** "row 1, column 3" (1-based as shown on the canvas), or empty without a cell. */
-export const diagnosticCell = (d: Diagnostic): string => (d.cell ? `row ${d.cell.row + 1}, column ${d.cell.col + 1}` : '');
+export const diagnosticCell = (d: Diagnostic): string =>
+  d.cell ? `row ${d.cell.row + 1}, column ${d.cell.col + 1}` : '';
 
 /** Errors first, then by POU, network, row, column: the order a programmer walks the program. */
 export function sortDiagnostics(list: readonly Diagnostic[]): Diagnostic[] {

@@ -15,7 +15,10 @@ const NONE: readonly Diagnostic[] = [];
 /** The diagnostics of the latest checked version of the open project (empty until the first check). */
 export function useDiagnostics(): readonly Diagnostic[] {
   const project = useDocument(selectProject);
-  const [shown, setShown] = useState<{ project: Project | undefined; diagnostics: readonly Diagnostic[] }>({ project: undefined, diagnostics: NONE });
+  const [shown, setShown] = useState<{ project: Project | undefined; diagnostics: readonly Diagnostic[] }>({
+    project: undefined,
+    diagnostics: NONE,
+  });
   useEffect(() => {
     if (shown.project === project) return undefined;
     const take = () => {
@@ -35,7 +38,9 @@ export function useDiagnostics(): readonly Diagnostic[] {
 }
 
 /** Diagnostics of one POU grouped by network index, for cell markers on the canvas. */
-export function useDiagnosticsByNetwork(pouName: string | undefined): ReadonlyMap<number, readonly Diagnostic[]> {
+export function useDiagnosticsByNetwork(
+  pouName: string | undefined,
+): ReadonlyMap<number, readonly Diagnostic[]> {
   const diagnostics = useDiagnostics();
   return useMemo(() => {
     const byNetwork = new Map<number, Diagnostic[]>();

@@ -75,11 +75,15 @@ function TrendChart({ types }: { types: readonly { name: string; type: string }[
     const el = host.current;
     if (!el) return;
     const text = getComputedStyle(el).color || '#333';
-    const width = Math.max(200, el.clientWidth);
-    const height = Math.max(120, el.clientHeight - 40);
-    const chart = new uPlot(trendOptions(signals, width, height, () => sim.getState().trend, text), trendData(signals, sim.getState().trend), el);
+    const chart = new uPlot(trendOptions(signals, 400, 120, () => sim.getState().trend, text), trendData(signals, sim.getState().trend), el);
     plot.current = chart;
-    const resize = new ResizeObserver(() => chart.setSize({ width: Math.max(200, el.clientWidth), height: Math.max(120, el.clientHeight - 40) }));
+    // Fill the panel: the plot gets the host's size less the legend under it.
+    const fit = () => {
+      const legend = chart.root.querySelector<HTMLElement>('.u-legend')?.offsetHeight ?? 28;
+      chart.setSize({ width: Math.max(200, el.clientWidth), height: Math.max(100, el.clientHeight - legend - 6) });
+    };
+    fit();
+    const resize = new ResizeObserver(fit);
     resize.observe(el);
     return () => {
       resize.disconnect();

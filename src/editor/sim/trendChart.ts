@@ -30,13 +30,19 @@ export function trendOptions(signals: readonly TrendSignal[], width: number, hei
     height,
     legend: { show: true, live: true },
     cursor: { drag: { x: false, y: false } },
+    // With both kinds, BOOL lanes take the upper half and numbers the lower half, so they never overlap.
     scales: {
       x: { time: false },
-      bool: { range: [-0.3, Math.max(1, boolCount) * LANE] },
-      num: { auto: true },
+      bool: { range: [hasNumbers ? -Math.max(1, boolCount) * LANE - 0.3 : -0.3, Math.max(1, boolCount) * LANE] },
+      num: {
+        range: (_u, min, max) => {
+          const span = max - min || Math.abs(max) || 1;
+          return [min - span * 0.05, boolCount > 0 ? max + span * 1.15 : max + span * 0.05];
+        },
+      },
     },
     axes: [
-      { ...axisStyle, scale: 'x', label: 'scan' },
+      { ...axisStyle, scale: 'x', size: 30 },
       {
         ...axisStyle,
         scale: 'bool',

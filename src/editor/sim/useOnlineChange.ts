@@ -1,6 +1,7 @@
 // Editing while the simulation runs is an online change: the edited document is compiled and, if it
 // has no errors, swapped in at the next scan boundary (values carried over by name). If it has
-// errors, the last good program keeps running and the errors are shown.
+// errors, the last good program keeps running and the errors are shown. Opening another project
+// (new POU ids) is not an edit: the simulation stops and forgets the old program.
 import { useEffect } from 'react';
 import { useDocumentStore } from '../../store/documentStore';
 import { useSimStore } from './simContext';
@@ -15,7 +16,14 @@ export function useOnlineChange(): void {
     const unsubscribe = documents.subscribe((state, previous) => {
       if (state.project === previous.project) return;
       const s = sim.getState();
-      if (!s.layout || (s.mode === 'stopped' && s.scan === 0)) return;
+      if (!s.layout) return;
+      const samePous = state.project.pous.some((p) => previous.project.pous.some((q) => q.id === p.id));
+      if (!samePous) {
+        clearTimeout(timer);
+        s.unload();
+        return;
+      }
+      if (s.mode === 'stopped' && s.scan === 0) return;
       clearTimeout(timer);
       timer = setTimeout(() => sim.getState().documentChanged(documents.getState().project), DEBOUNCE_MS);
     });

@@ -29,6 +29,9 @@ interface Props {
   readonly issues: Partial<Record<VariableField, string>>;
   readonly showClass: boolean;
   readonly focusName: boolean;
+  /** How many elements use the variable; showing them cycles through the uses. */
+  readonly useCount: number;
+  readonly onShowUse: () => void;
   readonly onChange: (patch: Partial<Variable>) => void;
   readonly onDelete: () => void;
 }
@@ -41,13 +44,27 @@ const normaliseLocation = (text: string): string | undefined => {
   return loc ? canonicalLocation(loc) : t;
 };
 
-export function VariableRow({ variable: v, issues, showClass, focusName, onChange, onDelete }: Props) {
-  const typeKnown = (ELEMENTARY_TYPES as readonly string[]).includes(v.type) || FB_SIGNATURES.some((s) => s.name === v.type);
-  const invalid = (field: VariableField) => (issues[field] ? { 'aria-invalid': true, title: issues[field] } : {});
+export function VariableRow({
+  variable: v,
+  issues,
+  showClass,
+  focusName,
+  useCount,
+  onShowUse,
+  onChange,
+  onDelete,
+}: Props) {
+  const typeKnown =
+    (ELEMENTARY_TYPES as readonly string[]).includes(v.type) || FB_SIGNATURES.some((s) => s.name === v.type);
+  const invalid = (field: VariableField) =>
+    issues[field] ? { 'aria-invalid': true, title: issues[field] } : {};
   const messages = (Object.keys(issues) as VariableField[]).map((f) => `${FIELD_WORDS[f]}: ${issues[f]}`);
   return (
     <>
-      <tr data-testid={`variable-row-${v.name}`} className={messages.length ? 'rs-var-row rs-has-issue' : 'rs-var-row'}>
+      <tr
+        data-testid={`variable-row-${v.name}`}
+        className={messages.length ? 'rs-var-row rs-has-issue' : 'rs-var-row'}
+      >
         <td>
           <CommitInput
             aria-label="Name"
@@ -61,7 +78,13 @@ export function VariableRow({ variable: v, issues, showClass, focusName, onChang
           />
         </td>
         <td>
-          <select aria-label="Type" className="rs-cell-input" value={v.type} onChange={(e) => onChange({ type: e.target.value })} {...invalid('type')}>
+          <select
+            aria-label="Type"
+            className="rs-cell-input"
+            value={v.type}
+            onChange={(e) => onChange({ type: e.target.value })}
+            {...invalid('type')}
+          >
             {!typeKnown && <option value={v.type}>{v.type || '(choose)'}</option>}
             <optgroup label="Elementary types">
               {ELEMENTARY_TYPES.map((t) => (
@@ -102,7 +125,12 @@ export function VariableRow({ variable: v, issues, showClass, focusName, onChang
         </td>
         {showClass && (
           <td>
-            <select aria-label="Class" className="rs-cell-input" value={v.varClass} onChange={(e) => onChange({ varClass: e.target.value as VarClass })}>
+            <select
+              aria-label="Class"
+              className="rs-cell-input"
+              value={v.varClass}
+              onChange={(e) => onChange({ varClass: e.target.value as VarClass })}
+            >
               {(Object.keys(CLASS_LABELS) as VarClass[]).map((c) => (
                 <option key={c} value={c}>
                   {CLASS_LABELS[c]}
@@ -112,23 +140,62 @@ export function VariableRow({ variable: v, issues, showClass, focusName, onChang
           </td>
         )}
         <td className="rs-center">
-          <input type="checkbox" aria-label="RETAIN" checked={v.retain} onChange={(e) => onChange({ retain: e.target.checked })} {...invalid('retain')} />
+          <input
+            type="checkbox"
+            aria-label="RETAIN"
+            checked={v.retain}
+            onChange={(e) => onChange({ retain: e.target.checked })}
+            {...invalid('retain')}
+          />
         </td>
         <td className="rs-center">
-          <input type="checkbox" aria-label="CONSTANT" checked={v.constant === true} onChange={(e) => onChange({ constant: e.target.checked || undefined })} />
+          <input
+            type="checkbox"
+            aria-label="CONSTANT"
+            checked={v.constant === true}
+            onChange={(e) => onChange({ constant: e.target.checked || undefined })}
+          />
         </td>
         <td>
-          <CommitInput aria-label="Comment" className="rs-cell-input" value={v.comment} onCommit={(comment) => onChange({ comment })} />
+          <CommitInput
+            aria-label="Comment"
+            className="rs-cell-input"
+            value={v.comment}
+            onCommit={(comment) => onChange({ comment })}
+          />
+        </td>
+        <td className="rs-center">
+          {useCount > 0 ? (
+            <button
+              type="button"
+              className="rs-uses"
+              aria-label={`Show uses of ${v.name}`}
+              title={`Used by ${useCount} element${useCount === 1 ? '' : 's'}; click to show ${useCount === 1 ? 'it' : 'the next'} on the canvas`}
+              onClick={onShowUse}
+            >
+              {useCount}
+            </button>
+          ) : (
+            <span className="rs-unused" title="Not used in the program">
+              –
+            </span>
+          )}
         </td>
         <td>
-          <button type="button" className="rs-icon-button" aria-label={`Delete variable ${v.name}`} title={`Delete variable ${v.name}`} onClick={onDelete}>
+          <button
+            type="button"
+            className="rs-icon-button"
+            aria-label={`Delete variable ${v.name}`}
+            title={`Delete variable ${v.name}`}
+            onClick={onDelete}
+          >
             ×
           </button>
         </td>
       </tr>
       {messages.length > 0 && (
         <tr className="rs-var-issues">
-          <td colSpan={showClass ? 9 : 8} role="alert" data-testid="variable-issue">
+          <td colSpan={showClass ? 10 : 9} role="alert" data-testid="variable-issue">
             {messages.join(' · ')}
           </td>
         </tr>

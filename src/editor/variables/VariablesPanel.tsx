@@ -1,11 +1,20 @@
 // The variable table: the active POU's variables or the project's globals, edited in place and
 // checked as you type (names, duplicates, addresses, initial values).
-import { useMemo, useState } from 'react';
+import { useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
+import { useStore } from 'zustand';
 import type { VariableScope } from '../../store/changes';
-import { selectActivePou, selectGlobals, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
+import {
+  selectProject,
+  useDocument,
+  useDocumentStore,
+  type DocumentState,
+} from '../../store/documentStore';
+import { useUiStore } from '../../store/uiStore';
 import { variable } from '../../model/factory';
 import type { Variable } from '../../model/project';
 import { VariableRow } from './VariableRow';
+import { variableFocus } from './variableFocus';
+import { globalVariableUses, pouVariableUses, type VariableUse } from './usage';
 import { issuesByField, validateVariables } from './validation';
 import './variables.css';
 
@@ -15,11 +24,15 @@ function freshName(vars: readonly Variable[]): string {
   for (let i = 1; ; i++) if (!taken.has(`VAR${i}`)) return `Var${i}`;
 }
 
+const selectActivePouId = (s: DocumentState) => s.activePouId;
+
 export function VariablesPanel() {
   const store = useDocumentStore();
-  const project = useDocument(selectProject);
-  const pou = useDocument(selectActivePou);
-  const globals = useDocument(selectGlobals);
+  // Deferred: while drawing, the canvas repaints first and the table follows a moment later.
+  const project = useDeferredValue(useDocument(selectProject));
+  const activePouId = useDocument(selectActivePouId);
+  const pou = project.pous.find((p) => p.id === activePouId);
+  const globals = project.globals;
   const [showGlobals, setShowGlobals] = useState(false);
   const [filter, setFilter] = useState('');
   const [focusName, setFocusName] = useState<string | undefined>(undefined);
@@ -31,11 +44,42 @@ export function VariablesPanel() {
     () => validateVariables(vars, { project, ...(showGlobals || !pou ? {} : { pou: pou.name }) }),
     [vars, project, showGlobals, pou],
   );
+  const uses = useMemo(
+    () =>
+      showGlobals
+        ? globalVariableUses(project)
+        : pou
+          ? pouVariableUses(pou)
+          : new Map<string, VariableUse[]>(),
+    [showGlobals, project, pou],
+  );
+  const uiStore = useUiStore();
+  const nextUse = useRef(new Map<string, number>());
+  const focusRequest = useStore(variableFocus, (s) => s.request);
+  const panel = useRef<HTMLElement>(null);
+  useEffect(() => {
+    if (!focusRequest) return;
+    setShowGlobals(focusRequest.globals);
+    setFilter('');
+    // After the list switched, focus the row's name field.
+    const frame = requestAnimationFrame(() => {
+      const row = panel.current?.querySelector(`[data-testid="variable-row-${CSS.escape(focusRequest.name)}"]`);
+      row?.querySelector<HTMLInputElement>('input[aria-label="Name"]')?.focus();
+      row?.scrollIntoView({ block: 'nearest' });
+    });
+    return () => cancelAnimationFrame(frame);
+  }, [focusRequest]);
   const query = filter.trim().toUpperCase();
-  const shown = vars.map((v, index) => ({ v, index })).filter(({ v }) => !query || `${v.name} ${v.type} ${v.location ?? ''} ${v.comment}`.toUpperCase().includes(query));
+  const shown = vars
+    .map((v, index) => ({ v, index }))
+    .filter(
+      ({ v }) =>
+        !query || `${v.name} ${v.type} ${v.location ?? ''} ${v.comment}`.toUpperCase().includes(query),
+    );
   const rowsWithIssues = new Set(issues.map((i) => i.index)).size;
 
-  if (!scope) return <section className="rs-variables" aria-label="Variables" data-testid="variables-panel" />;
+  if (!scope)
+    return <section className="rs-variables" aria-label="Variables" data-testid="variables-panel" />;
 
   const add = () => {
     const name = freshName(vars);
@@ -44,26 +88,55 @@ export function VariablesPanel() {
       setFilter('');
     }
   };
+  /** Selects the next element using the variable and scrolls the canvas there. */
+  const showUse = (name: string) => {
+    const list = uses.get(name.toUpperCase()) ?? [];
+    const i = (nextUse.current.get(name.toUpperCase()) ?? 0) % Math.max(1, list.length);
+    const use = list[i];
+    if (!use) return;
+    nextUse.current.set(name.toUpperCase(), i + 1);
+    if (use.pou !== store.getState().activePouId) store.getState().setActivePou(use.pou);
+    uiStore.getState().select(use.network, [use.element]);
+    uiStore.getState().focusCell(use.network, { row: use.row, col: use.col });
+  };
   const change = (v: Variable, patch: Partial<Variable>) => {
     setFocusName(undefined);
     if (store.getState().updateVariable(v.name, patch, scope)) setRefusal('');
-    else if (patch.name !== undefined) setRefusal(`Cannot rename "${v.name}" to "${patch.name}": that name is already declared here.`);
+    else if (patch.name !== undefined)
+      setRefusal(`Cannot rename "${v.name}" to "${patch.name}": that name is already declared here.`);
   };
 
   return (
-    <section className="rs-variables" aria-label="Variables" data-testid="variables-panel">
+    <section ref={panel} className="rs-variables" aria-label="Variables" data-testid="variables-panel">
       <div className="rs-var-toolbar">
         <div role="radiogroup" aria-label="Which variables" className="rs-segmented">
           <label>
-            <input type="radio" name="rs-var-scope" checked={!showGlobals} onChange={() => setShowGlobals(false)} />
+            <input
+              type="radio"
+              name="rs-var-scope"
+              checked={!showGlobals}
+              onChange={() => setShowGlobals(false)}
+            />
             {pou ? `${pou.name} (${pou.kind.replace('_', ' ').toLowerCase()})` : 'POU'}
           </label>
           <label>
-            <input type="radio" name="rs-var-scope" checked={showGlobals} onChange={() => setShowGlobals(true)} />
+            <input
+              type="radio"
+              name="rs-var-scope"
+              checked={showGlobals}
+              onChange={() => setShowGlobals(true)}
+            />
             Global
           </label>
         </div>
-        <input type="search" aria-label="Filter variables" placeholder="Filter" className="rs-var-filter" value={filter} onChange={(e) => setFilter(e.target.value)} />
+        <input
+          type="search"
+          aria-label="Filter variables"
+          placeholder="Filter"
+          className="rs-var-filter"
+          value={filter}
+          onChange={(e) => setFilter(e.target.value)}
+        />
         <button type="button" className="rs-button" onClick={add} data-testid="add-variable">
           Add variable
         </button>
@@ -74,7 +147,10 @@ export function VariablesPanel() {
         </p>
       )}
       <div className="rs-var-scroll">
-        <table className="rs-var-table" aria-label={showGlobals ? 'Global variables' : `Variables of ${pou?.name ?? ''}`}>
+        <table
+          className="rs-var-table"
+          aria-label={showGlobals ? 'Global variables' : `Variables of ${pou?.name ?? ''}`}
+        >
           <thead>
             <tr>
               <th>Name</th>
@@ -85,6 +161,7 @@ export function VariablesPanel() {
               <th title="Keeps its value over a warm restart">RETAIN</th>
               <th title="Read-only">CONST</th>
               <th>Comment</th>
+              <th title="Elements using the variable">Uses</th>
               <th aria-label="Actions" />
             </tr>
           </thead>
@@ -96,13 +173,19 @@ export function VariablesPanel() {
                 issues={issuesByField(issues, index)}
                 showClass={!showGlobals}
                 focusName={focusName === v.name}
+                useCount={uses.get(v.name.toUpperCase())?.length ?? 0}
+                onShowUse={() => showUse(v.name)}
                 onChange={(patch) => change(v, patch)}
                 onDelete={() => store.getState().deleteVariable(v.name, scope)}
               />
             ))}
           </tbody>
         </table>
-        {vars.length === 0 && <p className="rs-empty">No variables yet. Add one here, or type a new name on a contact or coil and declare it from there.</p>}
+        {vars.length === 0 && (
+          <p className="rs-empty">
+            No variables yet. Add one here, or type a new name on a contact or coil and declare it from there.
+          </p>
+        )}
       </div>
       <p className="rs-var-summary" aria-live="polite">
         {vars.length} variable{vars.length === 1 ? '' : 's'}

@@ -8,6 +8,7 @@ export function checkInitialValue(text: string, type: ElementaryType): string | 
   const literal = text.trim();
   const result = parseLiteral(literal, type);
   if (!result.ok) return result.message;
-  if (result.type !== type && !canWiden(result.type, type)) return `${literal} is a ${result.type} value, which does not fit ${type}`;
+  if (result.type !== type && !canWiden(result.type, type))
+    return `${literal} is a ${result.type} value, which does not fit ${type}`;
   return undefined;
 }

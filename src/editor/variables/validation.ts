@@ -1,7 +1,13 @@
 // Checks a variable table the way a PLC programmer expects to be told about mistakes: per row and
 // per field, in plain words. Pure functions: the table shows the result inline.
 import { blockSignature, isFbType } from '../../model/blocks';
-import { IDENTIFIER_RE, isElementaryType, locationAdmits, parseLocation, type ParsedLocation } from '../../model/iecTypes';
+import {
+  IDENTIFIER_RE,
+  isElementaryType,
+  locationAdmits,
+  parseLocation,
+  type ParsedLocation,
+} from '../../model/iecTypes';
 import type { Project, Variable } from '../../model/project';
 import { checkInitialValue } from './initialValue';
 
@@ -16,12 +22,70 @@ export interface VariableIssue {
 
 /** Words IEC 61131-3 reserves, which cannot name a variable (types and block names are added below). */
 const KEYWORDS = [
-  'TRUE', 'FALSE', 'AND', 'OR', 'XOR', 'NOT', 'MOD', 'IF', 'THEN', 'ELSE', 'ELSIF', 'END_IF', 'CASE', 'OF', 'END_CASE', 'FOR', 'TO',
-  'BY', 'DO', 'END_FOR', 'WHILE', 'END_WHILE', 'REPEAT', 'UNTIL', 'END_REPEAT', 'EXIT', 'RETURN', 'VAR', 'VAR_INPUT', 'VAR_OUTPUT',
-  'VAR_IN_OUT', 'VAR_EXTERNAL', 'VAR_GLOBAL', 'VAR_TEMP', 'END_VAR', 'CONSTANT', 'RETAIN', 'NON_RETAIN', 'AT', 'PROGRAM',
-  'END_PROGRAM', 'FUNCTION', 'END_FUNCTION', 'FUNCTION_BLOCK', 'END_FUNCTION_BLOCK', 'TYPE', 'END_TYPE', 'STRUCT', 'END_STRUCT',
-  'ARRAY', 'STRING', 'WSTRING', 'DATE', 'TIME_OF_DAY', 'TOD', 'DATE_AND_TIME', 'DT', 'T', 'EN', 'ENO', 'CONFIGURATION',
-  'RESOURCE', 'TASK', 'WITH', 'ON',
+  'TRUE',
+  'FALSE',
+  'AND',
+  'OR',
+  'XOR',
+  'NOT',
+  'MOD',
+  'IF',
+  'THEN',
+  'ELSE',
+  'ELSIF',
+  'END_IF',
+  'CASE',
+  'OF',
+  'END_CASE',
+  'FOR',
+  'TO',
+  'BY',
+  'DO',
+  'END_FOR',
+  'WHILE',
+  'END_WHILE',
+  'REPEAT',
+  'UNTIL',
+  'END_REPEAT',
+  'EXIT',
+  'RETURN',
+  'VAR',
+  'VAR_INPUT',
+  'VAR_OUTPUT',
+  'VAR_IN_OUT',
+  'VAR_EXTERNAL',
+  'VAR_GLOBAL',
+  'VAR_TEMP',
+  'END_VAR',
+  'CONSTANT',
+  'RETAIN',
+  'NON_RETAIN',
+  'AT',
+  'PROGRAM',
+  'END_PROGRAM',
+  'FUNCTION',
+  'END_FUNCTION',
+  'FUNCTION_BLOCK',
+  'END_FUNCTION_BLOCK',
+  'TYPE',
+  'END_TYPE',
+  'STRUCT',
+  'END_STRUCT',
+  'ARRAY',
+  'STRING',
+  'WSTRING',
+  'DATE',
+  'TIME_OF_DAY',
+  'TOD',
+  'DATE_AND_TIME',
+  'DT',
+  'EN',
+  'ENO',
+  'CONFIGURATION',
+  'RESOURCE',
+  'TASK',
+  'WITH',
+  'ON',
 ];
 const RESERVED = new Set(KEYWORDS);
 
@@ -33,13 +97,15 @@ export function identifierProblem(name: string): string | undefined {
     return `"${trimmed}" is not an IEC identifier: use letters, digits and underscores, starting with a letter or underscore`;
   }
   if (trimmed.includes('__')) return `"${trimmed}" has two underscores in a row, which IEC identifiers do not allow`;
+  if (trimmed.endsWith('_')) return `"${trimmed}" ends with an underscore, which IEC identifiers do not allow`;
   const upper = trimmed.toUpperCase();
   if (RESERVED.has(upper) || isElementaryType(upper)) return `"${trimmed}" is a reserved word in IEC 61131-3`;
   if (blockSignature(upper)) return `"${trimmed}" is the name of the standard block ${upper}`;
   return undefined;
 }
 
-export const isKnownVariableType = (type: string): boolean => isElementaryType(type.toUpperCase()) || isFbType(type);
+export const isKnownVariableType = (type: string): boolean =>
+  isElementaryType(type.toUpperCase()) || isFbType(type);
 
 /** An address in one canonical spelling, so %ix0.0 and %IX0.0 compare equal. */
 export function canonicalLocation(loc: ParsedLocation): string {
@@ -76,11 +142,25 @@ function checkLocation(v: Variable, index: number, issues: VariableIssue[]): Par
   if (isFbType(type)) {
     issues.push({ index, field: 'location', message: `a ${type} instance cannot sit at an address` });
   } else if (isElementaryType(type) && !locationAdmits(loc, type)) {
-    const sizeWords = { X: 'a bit (BOOL)', B: 'a byte', W: 'a 16-bit word', D: 'a 32-bit double word', L: 'a 64-bit long word' };
-    issues.push({ index, field: 'location', message: `${canonicalLocation(loc)} holds ${sizeWords[loc.size]}, which does not fit type ${type}` });
+    const sizeWords = {
+      X: 'a bit (BOOL)',
+      B: 'a byte',
+      W: 'a 16-bit word',
+      D: 'a 32-bit double word',
+      L: 'a 64-bit long word',
+    };
+    issues.push({
+      index,
+      field: 'location',
+      message: `${canonicalLocation(loc)} holds ${sizeWords[loc.size]}, which does not fit type ${type}`,
+    });
   }
   if (v.varClass === 'temp' || v.varClass === 'inOut' || v.varClass === 'external') {
-    issues.push({ index, field: 'location', message: `a ${CLASS_WORDS[v.varClass]} variable cannot be given an address` });
+    issues.push({
+      index,
+      field: 'location',
+      message: `a ${CLASS_WORDS[v.varClass]} variable cannot be given an address`,
+    });
   }
   return loc;
 }
@@ -102,7 +182,10 @@ export interface ValidationScope {
 }
 
 /** Checks one variable list (a POU's variables or the globals). */
-export function validateVariables(variables: readonly Variable[], scope: ValidationScope = {}): VariableIssue[] {
+export function validateVariables(
+  variables: readonly Variable[],
+  scope: ValidationScope = {},
+): VariableIssue[] {
   const issues: VariableIssue[] = [];
   const byName = new Map<string, number>();
   const localAddresses = new Map<string, number>();
@@ -114,37 +197,52 @@ export function validateVariables(variables: readonly Variable[], scope: Validat
       const key = v.name.trim().toUpperCase();
       const first = byName.get(key);
       if (first !== undefined) {
-        issues.push({ index, field: 'name', message: `"${v.name}" is already declared in row ${first + 1} (names ignore upper/lower case)` });
+        issues.push({
+          index,
+          field: 'name',
+          message: `"${v.name}" is already declared in row ${first + 1} (names ignore upper/lower case)`,
+        });
       } else byName.set(key, index);
     }
     const type = v.type.trim().toUpperCase();
     if (type === '') issues.push({ index, field: 'type', message: 'choose a type' });
-    else if (!isKnownVariableType(type)) issues.push({ index, field: 'type', message: `unknown type "${v.type}"` });
+    else if (!isKnownVariableType(type))
+      issues.push({ index, field: 'type', message: `unknown type "${v.type}"` });
 
     const loc = checkLocation(v, index, issues);
     if (loc) {
       const key = canonicalLocation(loc);
       const first = localAddresses.get(key);
       if (first !== undefined) {
-        issues.push({ index, field: 'location', message: `${key} is already used by "${variables[first]?.name ?? ''}" in row ${first + 1}` });
+        issues.push({
+          index,
+          field: 'location',
+          message: `${key} is already used by "${variables[first]?.name ?? ''}" in row ${first + 1}`,
+        });
       } else {
         localAddresses.set(key, index);
         const elsewhere = (owners?.get(key) ?? []).find((o) => o.pou !== scope.pou);
         if (elsewhere) {
           const where = elsewhere.pou === undefined ? 'the global variables' : `POU ${elsewhere.pou}`;
-          issues.push({ index, field: 'location', message: `${key} is already used by "${elsewhere.name}" in ${where}` });
+          issues.push({
+            index,
+            field: 'location',
+            message: `${key} is already used by "${elsewhere.name}" in ${where}`,
+          });
         }
       }
     }
 
     if (v.initial !== undefined && v.initial.trim() !== '') {
-      if (isFbType(type)) issues.push({ index, field: 'initial', message: `a ${type} instance takes no initial value` });
+      if (isFbType(type))
+        issues.push({ index, field: 'initial', message: `a ${type} instance takes no initial value` });
       else if (isElementaryType(type)) {
         const problem = checkInitialValue(v.initial, type);
         if (problem) issues.push({ index, field: 'initial', message: problem });
       }
     }
-    if (v.constant && v.retain) issues.push({ index, field: 'retain', message: 'a CONSTANT cannot also be RETAIN' });
+    if (v.constant && v.retain)
+      issues.push({ index, field: 'retain', message: 'a CONSTANT cannot also be RETAIN' });
     if (v.constant && (v.initial === undefined || v.initial.trim() === '')) {
       issues.push({ index, field: 'initial', message: 'a CONSTANT needs an initial value' });
     }
@@ -153,8 +251,12 @@ export function validateVariables(variables: readonly Variable[], scope: Validat
 }
 
 /** The issues of one row, grouped by field (first message per field). */
-export function issuesByField(issues: readonly VariableIssue[], index: number): Partial<Record<VariableField, string>> {
+export function issuesByField(
+  issues: readonly VariableIssue[],
+  index: number,
+): Partial<Record<VariableField, string>> {
   const out: Partial<Record<VariableField, string>> = {};
-  for (const issue of issues) if (issue.index === index && out[issue.field] === undefined) out[issue.field] = issue.message;
+  for (const issue of issues)
+    if (issue.index === index && out[issue.field] === undefined) out[issue.field] = issue.message;
   return out;
 }

@@ -14,7 +14,7 @@ type SegmentFn = (now: number, scan: number) => number;
 
 /** Most networks inlined in one generated function (V8 optimises functions up to a size). */
 const SEGMENT_OPS = 400;
-const SEGMENT_NETWORKS = 64;
+const SEGMENT_NETWORKS = 8;
 
 // Wall clock for the watchdog and execMs (the engine core has no DOM or Node typings).
 const perf = (globalThis as { performance?: { now(): number } }).performance;

@@ -11,7 +11,7 @@ export interface XmlElement {
   readonly qname: string;
   readonly attrs: Readonly<Record<string, string>>;
   readonly children: XmlElement[];
-  /** Character data directly inside this element (text and CDATA, entities decoded). */
+  /** Character data directly inside this element (text and CDATA, entities decoded; whitespace-only runs are dropped). */
   text: string;
   /** Offset of the `<` of the start tag in the source text. */
   readonly offset: number;
@@ -90,10 +90,21 @@ export function parseXml(src: string): XmlElement {
       break;
     }
     if (lt > pos) {
-      const chunk = src.slice(pos, lt);
+      // Indentation between elements is most of the text in PLCopen files: skip it without slicing.
+      let blank = true;
+      for (let i = pos; i < lt; i++) {
+        const c = src.charCodeAt(i);
+        if (c !== 32 && c !== 10 && c !== 13 && c !== 9) {
+          blank = false;
+          break;
+        }
+      }
       const top = stack[stack.length - 1];
-      if (top) top.text += decodeEntities(chunk, (m) => fail(m, pos));
-      else if (chunk.trim()) fail(root ? 'text after the end of the document' : 'this is not XML: text before the first element');
+      if (!blank) {
+        const chunk = src.slice(pos, lt);
+        if (top) top.text += decodeEntities(chunk, (m) => fail(m, pos));
+        else fail(root ? 'text after the end of the document' : 'this is not XML: text before the first element');
+      }
     }
     pos = lt;
     const c1 = src.charCodeAt(pos + 1);
@@ -147,7 +158,9 @@ export function parseXml(src: string): XmlElement {
     let i = pos + 1;
     while (i < len && !isNameEnd(src.charCodeAt(i))) i++;
     const qname = src.slice(pos + 1, i);
-    if (!qname || !/^[A-Za-z_\u00C0-\uFFFF]/.test(qname)) fail(root || stack.length ? 'bad element name' : 'this is not XML: expected an element');
+    const first = qname.charCodeAt(0);
+    const nameStart = (first >= 65 && first <= 90) || (first >= 97 && first <= 122) || first === 95 || first >= 0xc0;
+    if (!nameStart) fail(root || stack.length ? 'bad element name' : 'this is not XML: expected an element');
     const attrs: Record<string, string> = {};
     let selfClosing = false;
     for (;;) {
@@ -170,10 +183,16 @@ export function parseXml(src: string): XmlElement {
       }
       const eq = src.indexOf('=', i);
       if (eq === -1) fail(`attribute without a value in <${qname}>`, i);
-      const an = src.slice(i, eq).trim();
-      if (!an || /[\s<>"']/.test(an)) fail(`bad attribute in <${qname}>`, i);
+      let ae = eq;
+      while (ae > i && src.charCodeAt(ae - 1) <= 32) ae--;
+      const an = src.slice(i, ae);
+      for (let k = 0; k < an.length; k++) {
+        const c = an.charCodeAt(k);
+        if (c <= 32 || c === 60 || c === 62 || c === 34 || c === 39) fail(`bad attribute in <${qname}>`, i);
+      }
+      if (!an) fail(`bad attribute in <${qname}>`, i);
       let q = eq + 1;
-      while (q < len && /\s/.test(src[q]!)) q++;
+      while (q < len && src.charCodeAt(q) <= 32) q++;
       const quote = src[q] ?? '';
       if (quote !== '"' && quote !== "'") fail(`the value of attribute "${an}" must be quoted`, q);
       const close = src.indexOf(quote, q + 1);
@@ -184,7 +203,7 @@ export function parseXml(src: string): XmlElement {
       attrs[an] = decodeEntities(raw, (m) => fail(m, q));
       i = close + 1;
     }
-    const el: XmlElement = { name: localName(qname), qname, attrs, children: [], text: '', offset: start, end: i };
+    const el: XmlElement = { name: qname.indexOf(':') === -1 ? qname : localName(qname), qname, attrs, children: [], text: '', offset: start, end: i };
     const parent = stack[stack.length - 1];
     if (parent) parent.children.push(el);
     else if (root) fail('more than one root element', start);

@@ -24,38 +24,64 @@ function attrText(attrs: Attrs | undefined): string {
   return out;
 }
 
+const PADS = Array.from({ length: 32 }, (_, i) => '  '.repeat(i));
+
 export class XmlWriter {
   private readonly lines: string[] = [];
   private depth = 0;
+  /** While writing one line (see line()), the text so far; null otherwise. */
+  private buf: string | null = null;
 
   private pad(): string {
-    return '  '.repeat(this.depth);
+    return PADS[this.depth] ?? '  '.repeat(this.depth);
+  }
+
+  private push(text: string): void {
+    if (this.buf !== null) this.buf += text;
+    else this.lines.push(this.pad() + text);
+  }
+
+  /** Everything body() writes goes on one line (compact pins and wires keep big files small). */
+  line(body: () => void): this {
+    if (this.buf !== null) {
+      body();
+      return this;
+    }
+    this.buf = '';
+    body();
+    this.lines.push(this.pad() + this.buf);
+    this.buf = null;
+    return this;
   }
 
   /** `<name attrs/>` */
   empty(name: string, attrs?: Attrs): this {
-    this.lines.push(`${this.pad()}<${name}${attrText(attrs)}/>`);
+    this.push(`<${name}${attrText(attrs)}/>`);
     return this;
   }
 
   /** `<name attrs>text</name>` on one line (text escaped). */
   leaf(name: string, text: string, attrs?: Attrs): this {
-    this.lines.push(`${this.pad()}<${name}${attrText(attrs)}>${escapeText(text)}</${name}>`);
+    this.push(`<${name}${attrText(attrs)}>${escapeText(text)}</${name}>`);
     return this;
   }
 
   /** `<name attrs>` ... `</name>` around body(). */
   open(name: string, attrs: Attrs | undefined, body: () => void): this {
-    this.lines.push(`${this.pad()}<${name}${attrText(attrs)}>`);
+    this.push(`<${name}${attrText(attrs)}>`);
     this.depth++;
     body();
     this.depth--;
-    this.lines.push(`${this.pad()}</${name}>`);
+    this.push(`</${name}>`);
     return this;
   }
 
   /** Pre-formed XML, e.g. preserved vendor data, re-indented at the current depth. */
   raw(xml: string): this {
+    if (this.buf !== null) {
+      this.buf += xml;
+      return this;
+    }
     const pad = this.pad();
     for (const line of xml.split('\n')) this.lines.push(pad + line);
     return this;
@@ -63,7 +89,7 @@ export class XmlWriter {
 
   /** Formatted text as PLCopen writes it: `<name><xhtml:p><![CDATA[..]]></xhtml:p></name>`. */
   formatted(name: string, text: string, attrs?: Attrs): this {
-    this.lines.push(`${this.pad()}<${name}${attrText(attrs)}><xhtml:p>${cdata(text)}</xhtml:p></${name}>`);
+    this.push(`<${name}${attrText(attrs)}><xhtml:p>${cdata(text)}</xhtml:p></${name}>`);
     return this;
   }
 

@@ -1,0 +1,118 @@
+// npm run bench:plcopen — PLCopen import and export time for a generated program of 10,000
+// networks (series and parallel contacts, set/reset coils, one TON and one CTU every 10 networks)
+// and for the largest real file of the corpus (../shared/plcopen/examples, if present).
+// Each figure is the median of several runs after a warm-up. Target: 10,000 networks imported in < 1 s.
+import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import type { LdElement, VLink } from '/work/main/src/model/elements';
+import { newNetwork, newPou, newProject, variable } from '/work/main/src/model/factory';
+import { newId, type ElementId } from '/work/main/src/model/ids';
+import type { Network, Project, Variable } from '/work/main/src/model/project';
+import { exportPlcopen } from '/work/main/src/plcopen/exportPlcopen';
+import { importPlcopen } from '/work/main/src/plcopen/importPlcopen';
+
+const eid = () => newId<'ElementId'>('e') as ElementId;
+const COLS = 8;
+const links = (row: number, from: number, to: number): LdElement[] =>
+  Array.from({ length: to - from }, (_, i) => ({ id: eid(), kind: 'link', row, col: from + i }));
+
+function network(i: number): Network {
+  const v = (k: number) => `X${(i * 7 + k) % 500}`;
+  const out = `Y${i % 300}`;
+  const elements: LdElement[] = [];
+  const vlinks: VLink[] = [];
+  if (i % 10 === 5) {
+    elements.push({ id: eid(), kind: 'contact', contact: 'NO', variable: v(1), row: 0, col: 0 });
+    elements.push({ id: eid(), kind: 'box', blockType: 'TON', instance: `T${i}`, row: 0, col: 1, inputs: { PT: 'T#500ms' }, outputs: {} });
+    elements.push(...links(0, 3, COLS - 1), { id: eid(), kind: 'coil', coil: 'COIL', variable: out, row: 0, col: COLS - 1 });
+    return newNetwork({ rows: 2, cols: COLS, elements, vlinks });
+  }
+  if (i % 10 === 9) {
+    elements.push({ id: eid(), kind: 'contact', contact: 'P', variable: v(1), row: 0, col: 0 });
+    elements.push({ id: eid(), kind: 'box', blockType: 'CTU', instance: `C${i}`, row: 0, col: 1, inputs: { R: v(2), PV: '10' }, outputs: { CV: `N${i % 50}` } });
+    elements.push(...links(0, 3, COLS - 1), { id: eid(), kind: 'coil', coil: 'SET', variable: out, row: 0, col: COLS - 1 });
+    return newNetwork({ rows: 3, cols: COLS, elements, vlinks });
+  }
+  // (A OR B) AND NOT C AND D -> coil, with a parallel reset coil.
+  elements.push(
+    { id: eid(), kind: 'contact', contact: 'NO', variable: v(1), row: 0, col: 0 },
+    { id: eid(), kind: 'contact', contact: 'NO', variable: v(2), row: 1, col: 0 },
+    { id: eid(), kind: 'contact', contact: 'NC', variable: v(3), row: 0, col: 1 },
+    { id: eid(), kind: 'contact', contact: 'NO', variable: v(4), row: 0, col: 2 },
+    ...links(0, 3, COLS - 1),
+    { id: eid(), kind: 'coil', coil: 'COIL', variable: out, row: 0, col: COLS - 1 },
+    ...links(1, 3, COLS - 1),
+    { id: eid(), kind: 'coil', coil: 'RESET', variable: `Y${(i + 1) % 300}`, row: 1, col: COLS - 1 },
+  );
+  vlinks.push({ row: 0, boundary: 1 }, { row: 0, boundary: 3 });
+  return newNetwork({ rows: 2, cols: COLS, elements, vlinks });
+}
+
+function program(n: number): Project {
+  const vars: Variable[] = [];
+  for (let k = 0; k < 500; k++) vars.push(variable(`X${k}`, 'BOOL'));
+  for (let k = 0; k < 300; k++) vars.push(variable(`Y${k}`, 'BOOL'));
+  for (let k = 0; k < 50; k++) vars.push(variable(`N${k}`, 'INT'));
+  for (let i = 0; i < n; i++) {
+    if (i % 10 === 5) vars.push(variable(`T${i}`, 'TON'));
+    if (i % 10 === 9) vars.push(variable(`C${i}`, 'CTU'));
+  }
+  const networks = Array.from({ length: n }, (_, i) => network(i));
+  const main = newPou('Main', { variables: vars, networks });
+  return newProject('Bench', { pous: [main], tasks: [{ name: 'MainTask', cycleMs: 10, priority: 1, programs: [{ instance: 'I', pou: 'Main' }] }] });
+}
+
+function median(f: () => void, runs: number): number {
+  f(); // warm-up
+  const times: number[] = [];
+  for (let i = 0; i < runs; i++) {
+    const t0 = performance.now();
+    f();
+    times.push(performance.now() - t0);
+  }
+  times.sort((a, b) => a - b);
+  return times[Math.floor(times.length / 2)]!;
+}
+
+const fmt = (ms: number) => (ms < 10 ? ms.toFixed(2) : ms.toFixed(0));
+
+export { program };
+const project = program(Number(process.env.N ?? 10000));
+let xml = '';
+const exportMs = median(() => (xml = exportPlcopen(project)), 5);
+let networks = 0;
+const importMs = median(() => {
+  const r = importPlcopen(xml);
+  if (!r.ok) throw new Error(JSON.stringify(r.errors));
+  networks = r.project.pous[0]!.networks.length;
+}, 5);
+console.log(`generated program: 10,000 networks, ${(xml.length / 1e6).toFixed(1)} MB of XML`);
+console.log(`  export ${fmt(exportMs)} ms   import ${fmt(importMs)} ms (${networks} networks back; target < 1000 ms)`);
+
+const corpus = join(fileURLToPath(new URL('..', import.meta.url)), '..', 'shared', 'plcopen', 'examples');
+if (existsSync(corpus)) {
+  const largest = readdirSync(corpus)
+    .filter((f) => f.endsWith('.xml'))
+    .map((f) => ({ f, size: statSync(join(corpus, f)).size }))
+    .sort((a, b) => b.size - a.size)[0]!;
+  const text = readFileSync(join(corpus, largest.f), 'utf8');
+  let imported: Project | undefined;
+  const ci = median(() => {
+    const r = importPlcopen(text);
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    imported = r.project;
+  }, 9);
+  const ce = median(() => exportPlcopen(imported!), 9);
+  console.log(`largest corpus file: ${largest.f} (${(largest.size / 1024).toFixed(0)} KB)`);
+  console.log(`  import ${fmt(ci)} ms   export ${fmt(ce)} ms`);
+} else console.log(`corpus not found at ${corpus}: skipped`);
+
+
+{
+  const { parseXml } = await import('/work/main/src/plcopen/xml/parse');
+  const { validateProject } = await import('/work/main/src/model/load');
+  let t = performance.now(); parseXml(xml); console.log('parse', performance.now() - t);
+  const r = importPlcopen(xml); if (r.ok) { t = performance.now(); validateProject(r.project); console.log('validate', performance.now() - t); }
+}
+import { writeFileSync as w } from 'node:fs'; w('/tmp/gen.xml', xml);

@@ -1,0 +1,37 @@
+// Mounted once: while the simulation runs and this page is the gateway's controller, each scan's
+// inputs come from the gateway and its outputs go there; pause, stop or a fault sends `stop`.
+import { useEffect, useRef } from 'react';
+import { gatewayLink } from '../../bridge/gatewayLink';
+import { checkBindings } from '../../bridge/mapping';
+import type { SimState } from '../../store/simStore';
+import { selectProject, useDocument } from '../../store/documentStore';
+import { useSim, useSimStore } from '../sim/simContext';
+import { useGateway } from './useGateway';
+
+const selectMode = (s: SimState) => s.mode;
+
+export function HardwareSimLink() {
+  const mode = useSim(selectMode);
+  const sim = useSimStore();
+  const project = useDocument(selectProject);
+  const { link, role, points } = useGateway();
+  const wasRunning = useRef(false);
+
+  useEffect(() => {
+    const bridge = gatewayLink.bridge;
+    const controller = link === 'open' && role === 'controller' && bridge !== undefined;
+    if (mode === 'running' && controller) {
+      wasRunning.current = true;
+      const { bindings } = checkBindings(project, points);
+      const state = sim.getState();
+      return bridge.attach({ setInputs: (v) => state.setInputs(v), onOutputs: (l) => state.onOutputs(l) }, bindings);
+    }
+    if (wasRunning.current) {
+      wasRunning.current = false;
+      bridge?.stop(); // paused, stopped or faulted: safe state first
+    }
+    return undefined;
+  }, [mode, link, role, points, project, sim]);
+
+  return null;
+}

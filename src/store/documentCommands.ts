@@ -1,0 +1,242 @@
+// The document commands that edit elements, networks, variables and project settings, built
+// over the store's commit/editNetwork primitives (see the list at the top of documentStore.ts).
+import type { LdElement } from '../model/elements';
+import { elementSize, newNetwork } from '../model/factory';
+import { newId, type ElementId, type NetworkId, type PouId } from '../model/ids';
+import type { Network, Pou, Project, Variable } from '../model/project';
+import { diffNetwork, type Change, type VariableScope } from './changes';
+import type { DocumentState, NetworkPatch } from './documentStore';
+import * as edits from './networkEdits';
+import { declaresLocally, renameInElement } from './variableEdits';
+
+export const newElementId = () => newId<'ElementId'>('e') as ElementId;
+
+export function locate(
+  project: Project,
+  network: NetworkId,
+): { pou: Pou; net: Network; index: number } | undefined {
+  for (const pou of project.pous) {
+    const index = pou.networks.findIndex((n) => n.id === network);
+    if (index >= 0) return { pou, net: pou.networks[index]!, index };
+  }
+  return undefined;
+}
+
+function locateElement(
+  project: Project,
+  pouId: PouId,
+  id: ElementId,
+): { pou: Pou; net: Network; el: LdElement } | undefined {
+  const pous = [...project.pous].sort((a, b) => (a.id === pouId ? -1 : b.id === pouId ? 1 : 0));
+  for (const pou of pous) {
+    for (const net of pou.networks) {
+      const el = net.elements.find((e) => e.id === id);
+      if (el) return { pou, net, el };
+    }
+  }
+  return undefined;
+}
+
+export interface CommandOps {
+  get(): DocumentState;
+  commit(name: string, changes: readonly Change[]): void;
+  editNetwork(name: string, network: NetworkId, fn: (n: Network) => Network | undefined): boolean;
+}
+
+type Commands = Omit<
+  DocumentState,
+  | 'project'
+  | 'activePouId'
+  | 'dirty'
+  | 'revision'
+  | 'history'
+  | 'canUndo'
+  | 'canRedo'
+  | 'undoName'
+  | 'redoName'
+  | 'loadProject'
+  | 'newProject'
+  | 'markSaved'
+  | 'setActivePou'
+  | 'undo'
+  | 'redo'
+  | 'mark'
+  | 'squash'
+  | 'batch'
+>;
+
+export function documentCommands({ get, commit, editNetwork }: CommandOps): Commands {
+  const scopeVars = (
+    scope: VariableScope | undefined,
+  ): { scope: VariableScope; vars: readonly Variable[] } => {
+    const s = get();
+    const sc = scope ?? s.activePouId;
+    if (sc === 'globals') return { scope: sc, vars: s.project.globals };
+    return { scope: sc, vars: s.project.pous.find((p) => p.id === sc)?.variables ?? [] };
+  };
+
+  const insertNetworkAt = (index: number, partial?: Partial<Network>): NetworkId => {
+    const s = get();
+    const net = newNetwork(partial);
+    const pou = s.project.pous.find((p) => p.id === s.activePouId);
+    if (!pou) return net.id;
+    const at = Math.max(0, Math.min(index, pou.networks.length));
+    commit('insertNetwork', [{ type: 'network.add', pou: pou.id, index: at, network: net }]);
+    return net.id;
+  };
+
+  return {
+    placeElement: (network, cell, t) => {
+      const id = newElementId();
+      const ok = editNetwork(
+        'placeElement',
+        network,
+        (n) => edits.placeElement(n, cell, t, id) ?? edits.insertInSeries(n, cell, t, id),
+      );
+      return ok ? id : undefined;
+    },
+    insertInSeries: (network, cell, t) => {
+      const id = newElementId();
+      return editNetwork('insertInSeries', network, (n) => edits.insertInSeries(n, cell, t, id))
+        ? id
+        : undefined;
+    },
+    wrapInParallelBranch: (network, ids) =>
+      editNetwork('wrapInParallelBranch', network, (n) => edits.wrapInParallelBranch(n, ids, newElementId)),
+    moveElements: (network, ids, dRow, dCol) =>
+      editNetwork('moveElements', network, (n) => edits.moveElements(n, ids, dRow, dCol)),
+    deleteElements: (network, ids) => {
+      editNetwork('deleteElements', network, (n) => edits.deleteElements(n, ids));
+    },
+    updateElement: (id, patch) => {
+      const s = get();
+      const found = locateElement(s.project, s.activePouId, id);
+      if (!found) return;
+      const after = { ...found.el, ...patch, id: found.el.id, kind: found.el.kind } as LdElement;
+      commit(
+        'updateElement',
+        diffNetwork(found.pou.id, found.net, {
+          ...found.net,
+          elements: found.net.elements.map((e) => (e.id === id ? after : e)),
+        }),
+      );
+    },
+    pasteElements: (network, clip, at) => {
+      let ids: ElementId[] = [];
+      editNetwork('pasteElements', network, (n) => {
+        const r = edits.pasteElements(n, clip, at, newElementId);
+        ids = r.ids;
+        return r.network;
+      });
+      return ids;
+    },
+    duplicateElements: (network, ids) => {
+      const found = locate(get().project, network);
+      const clip = found && edits.copyElements(found.net, ids);
+      if (!found || !clip) return [];
+      const b = edits.boundsOf(found.net.elements.filter((e) => ids.includes(e.id)))!;
+      let out: ElementId[] = [];
+      editNetwork('duplicateElements', network, (n) => {
+        const below = Math.max(...n.elements.map((e) => e.row + elementSize(e).rows));
+        const r = edits.pasteElements(n, clip, { row: below, col: b.left }, newElementId);
+        out = r.ids;
+        return r.network;
+      });
+      return out;
+    },
+    addVLink: (network, v) => {
+      editNetwork('addVLink', network, (n) => edits.addVLink(n, v));
+    },
+    removeVLink: (network, v) => {
+      editNetwork('removeVLink', network, (n) => edits.removeVLink(n, v));
+    },
+    toggleVLink: (network, v) => {
+      editNetwork('toggleVLink', network, (n) =>
+        n.vlinks.some((w) => w.row === v.row && w.boundary === v.boundary)
+          ? edits.removeVLink(n, v)
+          : edits.addVLink(n, v),
+      );
+    },
+
+    addNetwork: (partial) => {
+      const s = get();
+      const pou = s.project.pous.find((p) => p.id === s.activePouId);
+      return insertNetworkAt(pou?.networks.length ?? 0, partial);
+    },
+    insertNetwork: (index, partial) => insertNetworkAt(index, partial),
+    deleteNetwork: (id) => {
+      const found = locate(get().project, id);
+      if (found)
+        commit('deleteNetwork', [
+          { type: 'network.remove', pou: found.pou.id, index: found.index, network: found.net },
+        ]);
+    },
+    moveNetwork: (from, to) => {
+      const s = get();
+      const pou = s.project.pous.find((p) => p.id === s.activePouId);
+      if (!pou || from === to || !pou.networks[from] || to < 0 || to >= pou.networks.length) return;
+      commit('moveNetwork', [{ type: 'network.move', pou: pou.id, from, to }]);
+    },
+    updateNetwork: (id, patch) => {
+      const clean: { -readonly [K in keyof NetworkPatch]: NetworkPatch[K] } = { ...patch };
+      if ('label' in clean && !clean.label?.trim()) clean.label = undefined;
+      if ('collapsed' in clean && !clean.collapsed) clean.collapsed = undefined;
+      editNetwork('updateNetwork', id, (n) => {
+        const out: Record<string, unknown> = { ...n, ...clean };
+        for (const k of Object.keys(clean) as (keyof NetworkPatch)[])
+          if (clean[k] === undefined) delete out[k];
+        const next = out as unknown as Network;
+        return { ...next, rows: Math.max(1, next.rows), cols: Math.max(1, next.cols) };
+      });
+    },
+
+    addVariable: (v, scope) => {
+      const { scope: sc, vars } = scopeVars(scope);
+      if (vars.some((w) => w.name.toUpperCase() === v.name.toUpperCase())) return false;
+      commit('addVariable', [{ type: 'variable.add', scope: sc, index: vars.length, variable: v }]);
+      return true;
+    },
+    updateVariable: (name, patch, scope) => {
+      const { scope: sc, vars } = scopeVars(scope);
+      const index = vars.findIndex((v) => v.name.toUpperCase() === name.toUpperCase());
+      const before = vars[index];
+      if (!before) return false;
+      const after: Variable = { ...before, ...patch };
+      const renamed = after.name !== before.name;
+      if (renamed && vars.some((v, i) => i !== index && v.name.toUpperCase() === after.name.toUpperCase()))
+        return false;
+      const changes: Change[] = [{ type: 'variable.update', scope: sc, index, before, after }];
+      if (renamed) {
+        for (const pou of get().project.pous) {
+          if (sc === 'globals' ? declaresLocally(pou, before.name) : pou.id !== sc) continue;
+          for (const net of pou.networks) {
+            const elements = net.elements.map((e) => renameInElement(e, before.name, after.name));
+            changes.push(...diffNetwork(pou.id, net, { ...net, elements }));
+          }
+        }
+      }
+      commit('updateVariable', changes);
+      return true;
+    },
+    deleteVariable: (name, scope) => {
+      const { scope: sc, vars } = scopeVars(scope);
+      const index = vars.findIndex((v) => v.name.toUpperCase() === name.toUpperCase());
+      const variable = vars[index];
+      if (variable) commit('deleteVariable', [{ type: 'variable.remove', scope: sc, index, variable }]);
+    },
+    setProjectProfile: (profile) => {
+      const before = get().project.profile;
+      if (before !== profile)
+        commit('setProjectProfile', [
+          { type: 'project.update', before: { profile: before }, after: { profile } },
+        ]);
+    },
+    updateProject: (patch) => {
+      const p = get().project;
+      const before: { name?: string; description?: string } = {};
+      if (patch.name !== undefined) before.name = p.name;
+      if (patch.description !== undefined) before.description = p.description;
+      commit('updateProject', [{ type: 'project.update', before, after: patch }]);
+    },
+  };
+}
