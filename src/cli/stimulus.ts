@@ -18,7 +18,7 @@ export interface Stimulus {
 export function parseStimulus(text: string, file: string): Stimulus {
   let records: { record: string[]; info: { lines: number } }[];
   try {
-    records = parse(text, { skip_empty_lines: true, trim: true, info: true, relax_column_count: true, comment: '#' }) as typeof records;
+    records = parse(text, { skip_empty_lines: true, trim: true, info: true, relax_column_count: true, comment: '#' }) as unknown as typeof records;
   } catch (e) {
     throw new UsageError(`${file}: not a valid CSV file: ${(e as Error).message}`);
   }

@@ -132,7 +132,7 @@ export class IoHub {
    * The controller's output image of one scan, also its heartbeat. Returns a refusal when the
    * gateway is disarmed after a watchdog trip (once per trip, so a running scan is not flooded).
    */
-  outputs(values: ReadonlyMap<string, WireValue>): Refusal | 'disarmed' | 'silently-disarmed' | 'ok' {
+  outputs(values: ReadonlyMap<string, WireValue>): 'ok' | 'disarmed' | 'silently-disarmed' {
     if (!this.armed) {
       if (!this.opts.autoRearm) {
         if (this.tripRefusalSent) return 'silently-disarmed';

@@ -214,6 +214,26 @@ export function buildLdGraph(objects: readonly RawObject[], raw: (el: XmlElement
     return { kind: 'node', node: n.index, pin: 'out' };
   };
 
+  /** The block output feeding an inOutVariable, when it is its only source. */
+  const blockBehind = (o: RawObject): { node: GNode; pin: string } | undefined => {
+    const conns = o.inputs[0]?.connections ?? [];
+    if (conns.length !== 1) return undefined;
+    const r = resolve(conns[0]!, o);
+    const only = r.length === 1 ? r[0]! : undefined;
+    if (!only || only.obj === 'rail' || only.obj.kind !== 'block' || !blockSignature(only.obj.text)) return undefined;
+    const node = nodeOf.get(only.obj);
+    return node && node.kind === 'box' ? { node, pin: (only.pin ?? 'OUT').toUpperCase() } : undefined;
+  };
+  const moveNode = (o: RawObject, input: GSource | string): GNode => {
+    const n = newNode(o, 'box', o.executionOrderId);
+    n.blockType = 'MOVE';
+    n.inputs.set('EN', [RAIL]);
+    if (typeof input === 'string') n.operandsIn.IN = input;
+    else n.inputs.set('IN', [input]);
+    n.operandsOut.OUT = o.text;
+    return n;
+  };
+
   const pinName = (n: GNode, pin: string): string | undefined => {
     if (n.kind !== 'box') return n.kind === 'contact' && n.contact === 'NOT' ? (pin.toUpperCase() === 'OUT' ? 'out' : 'in') : 'out';
     return pin.toUpperCase();
@@ -268,10 +288,19 @@ export function buildLdGraph(objects: readonly RawObject[], raw: (el: XmlElement
         n.operandsOut[p] = o.text;
         continue;
       }
-      if (n.blockType || blockSignature(single.obj.text)) {
-        warn({ message: `block output ${single.obj.attrs.instanceName ?? single.obj.text}.${p} is written to "${n.operandsOut[p]}" and "${o.text}"; Rungsmith keeps the first`, obj: o });
+      if (blockSignature(single.obj.text)) {
+        // A second variable on the same output: copied by a MOVE wired to that output.
+        moveNode(o, { kind: 'node', node: n.index, pin: p });
+        warn({ message: `block output ${single.obj.attrs.instanceName ?? single.obj.text}.${p} also goes to "${o.text}": drawn as a MOVE`, obj: o });
         continue;
       }
+    }
+    if (single && single.obj !== 'rail' && (single.obj.kind === 'inVariable' || single.obj.kind === 'inOutVariable')) {
+      // Variable to variable (Out := Cnt): a MOVE, wired to the block behind Cnt when there is one.
+      const behind = single.obj.kind === 'inOutVariable' ? blockBehind(single.obj) : undefined;
+      moveNode(o, behind ? { kind: 'node', node: behind.node.index, pin: behind.pin } : single.obj.text);
+      warn({ message: `the assignment of "${single.obj.text}" to "${o.text}" is drawn as a MOVE block`, obj: o });
+      continue;
     }
     const coil = newNode(o, 'coil', o.executionOrderId);
     coil.coil = 'COIL';

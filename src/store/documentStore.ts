@@ -230,8 +230,12 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
 export const selectProject = (s: DocumentState) => s.project;
 export const selectActivePou = (s: DocumentState): Pou | undefined =>
   s.project.pous.find((p) => p.id === s.activePouId);
-export const selectNetworks = (s: DocumentState): readonly Network[] => selectActivePou(s)?.networks ?? [];
-export const selectVariables = (s: DocumentState): readonly Variable[] => selectActivePou(s)?.variables ?? [];
+const NO_NETWORKS: readonly Network[] = [];
+const NO_VARIABLES: readonly Variable[] = [];
+export const selectNetworks = (s: DocumentState): readonly Network[] =>
+  selectActivePou(s)?.networks ?? NO_NETWORKS;
+export const selectVariables = (s: DocumentState): readonly Variable[] =>
+  selectActivePou(s)?.variables ?? NO_VARIABLES;
 export const selectGlobals = (s: DocumentState) => s.project.globals;
 export const selectDirty = (s: DocumentState) => s.dirty;
 export const selectRevision = (s: DocumentState) => s.revision;

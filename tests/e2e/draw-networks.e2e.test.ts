@@ -102,6 +102,9 @@ test('dragging elements moves them by whole cells as one undo step', async () =>
   expect(await page.evaluate(() => window.rungsmith!.documentStore!.getState().history.undo.length)).toBe(
     steps - 1,
   );
+  // Alt+arrows move the selection from the keyboard.
+  await page.keyboard.press('Alt+ArrowDown');
+  expect((await draw.elements(0)).map((e) => `${e.name}@${e.row},${e.col}`)).toEqual(['A@1,0', 'B@1,1']);
 });
 
 test('the block picker places a function block and declares its instance', async () => {

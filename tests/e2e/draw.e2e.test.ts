@@ -103,7 +103,7 @@ test('drawing the same rung with the keyboard only', async () => {
     .toBe('Network 2, row 2, column 2');
 });
 
-test('copy and paste a rung into a new network, then delete a contact and see the problem', async () => {
+test('copy and paste a rung into a new network, delete and undo, see a typo reported and fix it', async () => {
   await draw.canvas().focus();
   await page.keyboard.press('Control+a');
   await page.keyboard.press('Control+c');
@@ -111,11 +111,19 @@ test('copy and paste a rung into a new network, then delete a contact and see th
   await page.keyboard.press('Control+v');
   await expect.poll(async () => (await draw.networks()).length).toBe(3);
   await expect.poll(() => draw.elements(2)).toEqual(SEAL_IN);
-  // Deleting Stop breaks the series path: the checks report it and undo restores it.
+  // Delete and undo.
   await draw.clickCell(2, 0, 1);
   await page.keyboard.press('Delete');
   expect((await draw.elements(2)).some((e) => e.name === 'Stop')).toBe(false);
-  await expect.poll(() => draw.problemsSummary()).not.toBe('No problems');
+  await page.keyboard.press('Control+z');
+  expect(await draw.elements(2)).toEqual(SEAL_IN);
+  // A typo (an undeclared name, kept by closing the suggestions with Escape) is reported as LD-R08.
+  await page.keyboard.press('Enter');
+  await page.getByTestId('inline-editor').fill('Stopp');
+  await page.keyboard.press('Escape');
+  await page.keyboard.press('Enter');
+  await expect.poll(() => draw.problemsSummary()).toMatch(/^1 error/);
+  expect(await page.getByTestId('problem').first().textContent()).toContain('LD-R08');
   await page.keyboard.press('Control+z');
   await expect.poll(() => draw.problemsSummary()).toBe('No problems');
   expect(errors).toEqual([]);

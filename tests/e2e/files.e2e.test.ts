@@ -4,7 +4,7 @@ import { readFile } from 'node:fs/promises';
 import { afterAll, beforeAll, expect, inject, test } from 'vitest';
 import type { Browser } from 'playwright-core';
 import { launchChromium } from './browser';
-import { EditorPage } from './panelsPage';
+import { EditorPage, poll } from './panelsPage';
 import { EXAMPLES } from '../../src/model/examples';
 import { loadProject, saveProject } from '../../src/model/load';
 import { newNetwork, newPou, newProject } from '../../src/model/factory';
@@ -103,7 +103,7 @@ test('"New" asks before discarding unsaved work; Save downloads the project as .
 
   // Saved: New no longer asks.
   await editor.menu('File', 'New project');
-  await expect.poll(async () => (await editor.project()).pous[0]?.variables.length).toBe(0);
+  await poll(async () => (await editor.project()).pous[0]?.variables.length).toBe(0);
   await editor.declare('Lamp');
   // Ctrl+S saves from anywhere outside a text field.
   await editor.page.getByRole('heading', { name: 'Rungsmith' }).click();
@@ -114,7 +114,7 @@ test('"New" asks before discarding unsaved work; Save downloads the project as .
   await editor.declare('Fan');
   await editor.menu('File', 'New project');
   await ask.getByRole('button', { name: 'Discard and start new' }).click();
-  await expect.poll(async () => (await editor.project()).pous[0]?.variables.length).toBe(0);
+  await poll(async () => (await editor.project()).pous[0]?.variables.length).toBe(0);
   expect(editor.errors).toEqual([]);
   await editor.close();
 });
@@ -124,10 +124,8 @@ test('every built-in example loads from the File menu and shows no problems', as
   await editor.tab('Problems');
   for (const example of EXAMPLES) {
     await editor.menu('File', `Example: ${example.title}`);
-    await expect.poll(async () => (await editor.project()).name).toBe(example.build().name);
-    await expect
-      .poll(() => editor.problems.getByTestId('problems-summary').textContent())
-      .toBe('No problems');
+    await poll(async () => (await editor.project()).name).toBe(example.build().name);
+    await poll(() => editor.problems.getByTestId('problems-summary').textContent()).toBe('No problems');
     expect(await editor.problems.getByTestId('problem').count()).toBe(0);
   }
   expect(editor.errors).toEqual([]);
@@ -149,7 +147,7 @@ test('a project file dropped on the page opens like File > Open', async () => {
     },
     ['counter.json', saveProject(example)] as const,
   );
-  await expect.poll(async () => (await editor.project()).name).toBe(example.name);
+  await poll(async () => (await editor.project()).name).toBe(example.name);
   expect(await editor.page.getByTestId('file-notice').textContent()).toContain('Opened counter.json');
   expect(await editor.project()).toEqual(example);
   expect(editor.errors).toEqual([]);

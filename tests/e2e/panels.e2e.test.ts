@@ -3,7 +3,7 @@
 import { afterAll, beforeAll, expect, inject, test } from 'vitest';
 import type { Browser } from 'playwright-core';
 import { launchChromium } from './browser';
-import { EditorPage } from './panelsPage';
+import { EditorPage, poll } from './panelsPage';
 import { newNetwork, newPou, newProject, variable } from '../../src/model/factory';
 import type { LdElement } from '../../src/model/elements';
 import type { ElementId } from '../../src/model/ids';
@@ -44,35 +44,39 @@ test('declaring variables in the table, with mistakes shown inline until fixed',
   await editor.declare('Start', { address: '%IX0.0', comment: 'Start push button' });
   await editor.declare('Stop', { address: '%ix0.0' });
   // Same address twice (whatever the spelling): the second row says so.
-  await expect
-    .poll(() => editor.variableRow('Stop').locator('xpath=following-sibling::tr[1]').textContent())
-    .toContain('Address: %IX0.0 is already used by "Start" in row 1');
+  await poll(() =>
+    editor.variableRow('Stop').locator('xpath=following-sibling::tr[1]').textContent(),
+  ).toContain('Address: %IX0.0 is already used by "Start" in row 1');
   await editor.fill(editor.variableRow('Stop').getByLabel('Address'), '%IX0.1');
   await editor.declare('Motor', { address: '%QW0' });
-  await expect
-    .poll(() => editor.variables.getByTestId('variable-issue').allTextContents())
-    .toEqual(['Address: %QW0 holds a 16-bit word, which does not fit type BOOL']);
+  await poll(() => editor.variables.getByTestId('variable-issue').allTextContents()).toEqual([
+    'Address: %QW0 holds a 16-bit word, which does not fit type BOOL',
+  ]);
   await editor.fill(editor.variableRow('Motor').getByLabel('Address'), '%QX0.0');
   await editor.declare('Count', { type: 'INT', initial: '70000' });
-  await expect.poll(() => editor.variables.getByTestId('variable-issue').count()).toBe(1);
+  await poll(() => editor.variables.getByTestId('variable-issue').count()).toBe(1);
   expect(await editor.variables.getByTestId('variable-issue').textContent()).toMatch(
     /Initial value: .*70000/,
   );
   await editor.fill(editor.variableRow('Count').getByLabel('Initial value'), '10');
   await editor.declare('1st');
-  await expect
-    .poll(() => editor.variables.getByTestId('variable-issue').textContent())
-    .toMatch(/Name: "1st" is not an IEC identifier/);
+  await poll(() => editor.variables.getByTestId('variable-issue').textContent()).toMatch(
+    /Name: "1st" is not an IEC identifier/,
+  );
   // The engine reports it too; clicking that problem brings the row back into view and focus.
   await editor.tab('Problems');
   const nameProblem = editor.problems.getByTestId('problem').filter({ hasText: 'LD-E11' });
   expect(await nameProblem.textContent()).toMatch(/LD-E11.*variables.*"1st"/);
   await nameProblem.click();
-  await expect.poll(() => editor.page.evaluate(() => (document.activeElement as HTMLInputElement | null)?.value)).toBe('1st');
-  expect(await editor.page.getByRole('tab', { name: 'Variables', exact: true }).getAttribute('aria-selected')).toBe('true');
+  await poll(() =>
+    editor.page.evaluate(() => (document.activeElement as HTMLInputElement | null)?.value),
+  ).toBe('1st');
+  expect(
+    await editor.page.getByRole('tab', { name: 'Variables', exact: true }).getAttribute('aria-selected'),
+  ).toBe('true');
   await editor.variables.getByRole('button', { name: 'Delete variable 1st' }).click();
 
-  await expect.poll(() => editor.variables.getByTestId('variable-issue').count()).toBe(0);
+  await poll(() => editor.variables.getByTestId('variable-issue').count()).toBe(0);
   let vars = (await editor.project()).pous[0]?.variables;
   expect(vars?.map((v) => [v.name, v.type, v.location ?? '', v.initial ?? '', v.comment])).toEqual([
     ['Start', 'BOOL', '%IX0.0', '', 'Start push button'],
@@ -95,7 +99,7 @@ test('declaring variables in the table, with mistakes shown inline until fixed',
 test('a rule violation is listed with its rule id, jumps to the element, and disappears once fixed', async () => {
   const editor = await EditorPage.open(browser, inject('appUrl'));
   await editor.openFile('conveyor.json', sealInWithoutMotor());
-  await expect.poll(async () => (await editor.project()).name).toBe('Conveyor');
+  await poll(async () => (await editor.project()).name).toBe('Conveyor');
 
   await editor.tab('Problems');
   const problem = editor.problems.getByTestId('problem').filter({ hasText: 'LD-R08' });
@@ -111,15 +115,13 @@ test('a rule violation is listed with its rule id, jumps to the element, and dis
   const cursor = await editor.page.evaluate(() => window.rungsmith!.uiStore!.getState().cursor);
   expect(cursor).toMatchObject({ network: selection.network, row: 0, col: 3 });
   await editor.tab('Inspector');
-  await expect.poll(() => editor.inspector.getByRole('heading').first().textContent()).toMatch(/^Coil/);
+  await poll(() => editor.inspector.getByRole('heading').first().textContent()).toMatch(/^Coil/);
   const offer = editor.inspector.getByTestId('declare-offer');
   expect(await offer.textContent()).toContain('Motor is not declared');
   await offer.getByRole('button', { name: 'BOOL output at %QX0.0' }).click();
 
   await editor.tab('Problems');
-  await expect
-    .poll(() => editor.problems.getByTestId('problem').filter({ hasText: 'LD-R08' }).count())
-    .toBe(0);
+  await poll(() => editor.problems.getByTestId('problem').filter({ hasText: 'LD-R08' }).count()).toBe(0);
   expect(await editor.problems.getByTestId('problems-summary').textContent()).toBe('No problems');
   const motor = (await editor.project()).pous[0]?.variables.find((v) => v.name === 'Motor');
   expect(motor).toMatchObject({ type: 'BOOL', location: '%QX0.0' });
@@ -127,9 +129,9 @@ test('a rule violation is listed with its rule id, jumps to the element, and dis
   // Renaming a variable in the table renames it on the canvas too.
   await editor.tab('Variables');
   await editor.fill(editor.variableRow('Motor').getByLabel('Name'), 'Conveyor');
-  await expect
-    .poll(async () => (await editor.project()).pous[0]?.networks[0]?.elements.find((e) => e.id === 'm1'))
-    .toMatchObject({ variable: 'Conveyor' });
+  await poll(async () =>
+    (await editor.project()).pous[0]?.networks[0]?.elements.find((e) => e.id === 'm1'),
+  ).toMatchObject({ variable: 'Conveyor' });
   // The table shows where a variable is used and takes you there.
   await editor.uiSelect(undefined, []);
   await editor.variableRow('Start').getByRole('button', { name: 'Show uses of Start' }).click();
@@ -141,7 +143,7 @@ test('a rule violation is listed with its rule id, jumps to the element, and dis
 test('typing the variable of a coil completes from the table and offers to declare new names', async () => {
   const editor = await EditorPage.open(browser, inject('appUrl'));
   await editor.openFile('conveyor.json', sealInWithoutMotor());
-  await expect.poll(async () => (await editor.project()).name).toBe('Conveyor');
+  await poll(async () => (await editor.project()).name).toBe('Conveyor');
   await editor.tab('Problems');
   await editor.problems.getByTestId('problem').filter({ hasText: 'LD-R08' }).click();
   await editor.tab('Inspector');
@@ -150,19 +152,19 @@ test('typing the variable of a coil completes from the table and offers to decla
   await field.click();
   await field.fill('St');
   const options = editor.inspector.getByRole('listbox', { name: 'Suggestions' }).getByRole('option');
-  await expect
-    .poll(() => options.allTextContents())
-    .toEqual([
-      'StopBOOL%IX0.1',
-      'StartBOOL%IX0.0',
-      'Declare StBOOL',
-      'Declare StBOOL output at %QX0.0',
-      'Declare StBOOL memory at %MX0.0',
-    ]);
+  await poll(() => options.allTextContents()).toEqual([
+    'StopBOOL%IX0.1',
+    'StartBOOL%IX0.0',
+    'Declare StBOOL',
+    'Declare StBOOL output at %QX0.0',
+    'Declare StBOOL memory at %MX0.0',
+  ]);
   await field.fill('Pump');
-  await expect
-    .poll(() => options.allTextContents())
-    .toEqual(['Declare PumpBOOL', 'Declare PumpBOOL output at %QX0.0', 'Declare PumpBOOL memory at %MX0.0']);
+  await poll(() => options.allTextContents()).toEqual([
+    'Declare PumpBOOL',
+    'Declare PumpBOOL output at %QX0.0',
+    'Declare PumpBOOL memory at %MX0.0',
+  ]);
   await field.press('ArrowDown');
   await field.press('Enter');
   const project = await editor.project();

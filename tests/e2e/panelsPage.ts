@@ -2,7 +2,11 @@
 import type { Browser, Locator, Page } from 'playwright-core';
 import type { Project } from '../../src/model/project';
 import type { UiState } from '../../src/store/uiStore';
+import { expect } from 'vitest';
 import { collectPageErrors } from './browser';
+
+/** expect.poll with room for the checks: they run after a quiet time, in an idle moment, in a worker. */
+export const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 10_000 });
 
 export class EditorPage {
   readonly errors: string[];

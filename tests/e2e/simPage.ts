@@ -39,7 +39,7 @@ export class SimPage {
   }
 
   async waitForMode(mode: string) {
-    await this.page.getByTestId('sim-mode').filter({ hasText: mode }).waitFor({ timeout: 10_000 });
+    await this.page.getByTestId('sim-mode').filter({ hasText: mode }).waitFor({ timeout: 30_000 });
   }
 
   /** A variable's current value as the simulator holds it (BOOL true/false, TIME in ms). */
@@ -59,7 +59,7 @@ export class SimPage {
         return i !== undefined && s.values[i] === v;
       },
       [name, expected] as const,
-      { timeout: 10_000 },
+      { timeout: 30_000 },
     );
   }
 

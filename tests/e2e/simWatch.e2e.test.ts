@@ -93,3 +93,42 @@ test('the trend draws chosen signals over the last scans and its cursor reads va
   expect(await legend.textContent()).toMatch(/scan\s*6\d\d \(t = \d+ ms\)/);
   expect(errors).toEqual([]);
 });
+
+test('the inputs panel: Hold is a push-button, the switch latches', async () => {
+  await sim.openExample('Motor start/stop (seal-in)');
+  await sim.button('run').click();
+  await sim.waitForMode('Running');
+  await sim.tab('Inputs');
+  const start = page.getByTestId('input-Start');
+  const hold = start.getByTestId('input-hold');
+  const box = (await hold.boundingBox())!;
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await sim.waitForValue('Start', true);
+  await page.mouse.up();
+  await sim.waitForValue('Start', false);
+  await sim.waitForValue('Motor', true);
+  const stopSwitch = page.getByTestId('input-Stop').getByTestId('input-switch');
+  await stopSwitch.click();
+  await sim.waitForValue('Motor', false);
+  await expect.poll(() => stopSwitch.getAttribute('aria-checked')).toBe('true');
+  expect(errors).toEqual([]);
+});
+
+test('editing while running is applied online: a new network joins, the motor keeps running', async () => {
+  await sim.openExample('Motor start/stop (seal-in)');
+  await sim.button('run').click();
+  await sim.waitForMode('Running');
+  await sim.draw.clickCell(0, 0, 0);
+  await sim.waitForValue('Motor', true);
+  await sim.draw.clickCell(0, 0, 0);
+  await sim.waitForValue('Start', false);
+  await page.getByRole('button', { name: 'Insert network after network 1' }).click();
+  await page.waitForFunction(() => {
+    const s = (window.rungsmith as unknown as { simStore: { getState(): { layout?: { networkIds: string[] } } } }).simStore.getState();
+    return s.layout?.networkIds.length === 2;
+  });
+  expect(await sim.mode()).toBe('Running');
+  expect(await sim.value('Motor')).toBe(true);
+  expect(await page.getByTestId('sim-refusal').count()).toBe(0);
+});

@@ -44,13 +44,14 @@ describe('PLCopen export', () => {
 
   it('writes coil and contact kinds as PLCopen attributes', () => {
     const root = parseXml(exportPlcopen(allElements()));
-    const coils = all(root, 'coil').filter((c) => child(c, 'variable')).map((c) => ({ v: child(c, 'variable')!.text, ...c.attrs }));
+    const attrs = (c: XmlElement): Record<string, string | undefined> => ({ v: child(c, 'variable')!.text, ...c.attrs });
+    const coils = all(root, 'coil').filter((c) => child(c, 'variable')).map(attrs);
     expect(coils.find((c) => c.v === 'Q2')).toMatchObject({ negated: 'true' });
     expect(coils.find((c) => c.v === 'Latch' && c.storage === 'set')).toBeDefined();
     expect(coils.find((c) => c.v === 'Latch' && c.storage === 'reset')).toBeDefined();
     expect(coils.find((c) => c.v === 'Q4')).toMatchObject({ edge: 'rising' });
     expect(coils.find((c) => c.v === 'Q5')).toMatchObject({ edge: 'falling' });
-    const contacts = all(root, 'contact').filter((c) => child(c, 'variable')).map((c) => ({ v: child(c, 'variable')!.text, ...c.attrs }));
+    const contacts = all(root, 'contact').filter((c) => child(c, 'variable')).map(attrs);
     expect(contacts.find((c) => c.v === 'B' && c.negated === 'true')).toBeDefined();
     expect(contacts.find((c) => c.v === 'C' && c.edge === 'rising')).toBeDefined();
     expect(contacts.find((c) => c.v === 'B' && c.edge === 'falling')).toBeDefined();

@@ -198,7 +198,7 @@ describe('online change', () => {
     h.send({ type: 'write', name: 'Start', input: { value: false } }).advance(30);
     expect(h.value('Motor')).toBe(true);
     const scan = h.frame.scan;
-    h.send({ type: 'load', project: threeNetworks() }).advance(30);
+    h.send({ type: 'load', project: threeNetworks() }).advance(60);
     const online = h.of('compiled').at(-1);
     expect(online).toMatchObject({ ok: true, online: true });
     expect(h.layout.networkIds).toHaveLength(3);

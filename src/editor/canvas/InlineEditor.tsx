@@ -13,8 +13,6 @@ import { CELL_H, CELL_W, headerHeight, RAIL_X, type CanvasLayout } from './geome
 export interface InlineEditorProps {
   readonly layout: CanvasLayout;
   readonly zoom: number;
-  readonly scrollLeft: number;
-  readonly scrollTop: number;
   readonly onDone: () => void;
 }
 
@@ -33,7 +31,8 @@ function currentName(el: LdElement): string {
   }
 }
 
-export function InlineEditor({ layout, zoom, scrollLeft, scrollTop, onDone }: InlineEditorProps) {
+/** Positioned in the canvas's scrolled world layer (screen pixels of the whole content). */
+export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
   const doc = useDocumentStore();
   const ui = useUiStore();
   const editing = useUi((s) => s.editing);
@@ -78,8 +77,8 @@ export function InlineEditor({ layout, zoom, scrollLeft, scrollTop, onDone }: In
     close(true);
   };
 
-  const x = (RAIL_X + el.col * CELL_W) * zoom - scrollLeft;
-  const y = (layout.tops[index]! + headerHeight(network) + el.row * CELL_H + 4) * zoom - scrollTop;
+  const x = (RAIL_X + el.col * CELL_W) * zoom;
+  const y = (layout.tops[index]! + headerHeight(network) + el.row * CELL_H + 4) * zoom;
   const width = Math.max(140, CELL_W * zoom + 40);
   const style = { left: x - 20, top: y, width };
   const what =

@@ -1,6 +1,8 @@
-// The ladder canvas: networks stacked vertically, only the visible ones rendered (a Konva stage
-// the size of the viewport, kept in place with position: sticky inside a native scroll area, so
-// scrollbars, wheel and touch scrolling are the browser's own).
+// The ladder canvas: networks stacked vertically, only the visible ones rendered. A native
+// scroll area (the browser's own scrollbars, wheel and touch scrolling) holds a sticky viewport;
+// inside it a "world" layer follows the scroll position by a CSS transform. The Konva stage
+// covers the viewport plus a band around it and is redrawn only when the scroll position leaves
+// that band, so most scroll frames are pure compositing.
 import { useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import { Layer, Stage } from 'react-konva';
 import type { ElementId } from '../../model/ids';
@@ -29,8 +31,13 @@ import { useCanvasPointer, type PointerView } from './useCanvasPointer';
 import './canvas.css';
 
 const EMPTY_SET: ReadonlySet<ElementId> = new Set();
-/** Content pixels rendered above and below the viewport. */
-const OVERSCAN = 240;
+/** Screen pixels drawn beyond each edge of the viewport; the stage moves in steps of this. */
+const BAND = 320;
+
+const windowFor = (left: number, top: number) => ({
+  left: Math.max(0, Math.floor(left / BAND) * BAND - BAND),
+  top: Math.max(0, Math.floor(top / BAND) * BAND - BAND),
+});
 
 export function LadderCanvas() {
   const doc = useDocumentStore();
@@ -49,7 +56,10 @@ export function LadderCanvas() {
   const markers = useMemo(() => markersByNetwork(networks, diagnostics), [networks, diagnostics]);
 
   const scrollRef = useRef<HTMLDivElement>(null);
-  const [scroll, setScroll] = useState({ left: 0, top: 0 });
+  const worldRef = useRef<HTMLDivElement>(null);
+  /** The drawn window's top-left, in screen pixels of the scrolled content. */
+  const [win, setWin] = useState({ left: 0, top: 0 });
+  const winRef = useRef(win);
   const [size, setSize] = useState({ width: 800, height: 600 });
   const [theme, setTheme] = useState<CanvasTheme | undefined>(undefined);
   const view = useRef<PointerView>({ layout, networks, zoom });
@@ -146,11 +156,23 @@ export function LadderCanvas() {
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [cursor]);
 
-  const { first, last } = visibleRange(
-    layout,
-    scroll.top / zoom - OVERSCAN,
-    (scroll.top + size.height) / zoom + OVERSCAN,
-  );
+  // Follow the scroll position: move the world layer every frame, re-render only per band.
+  const followScroll = () => {
+    const el = scrollRef.current;
+    const world = worldRef.current;
+    if (!el || !world) return;
+    world.style.transform = `translate(${-el.scrollLeft}px, ${-el.scrollTop}px)`;
+    const w = windowFor(el.scrollLeft, el.scrollTop);
+    if (w.left !== winRef.current.left || w.top !== winRef.current.top) {
+      winRef.current = w;
+      setWin(w);
+    }
+  };
+  useLayoutEffect(followScroll);
+
+  const stageWidth = size.width + 2 * BAND;
+  const stageHeight = size.height + 2 * BAND;
+  const { first, last } = visibleRange(layout, win.top / zoom, (win.top + stageHeight) / zoom);
   const selectedSet = useMemo(() => new Set(selection.elements), [selection]);
   const refocus = () => scrollRef.current?.focus({ preventScroll: true });
   const hoverProblems = hover
@@ -170,10 +192,7 @@ export function LadderCanvas() {
       aria-label="Ladder diagram: arrows move the cursor, letters place elements (see the palette tooltips)"
       aria-roledescription="ladder editor"
       data-testid="ladder-canvas"
-      onScroll={(e) => {
-        const t = e.currentTarget;
-        setScroll({ left: t.scrollLeft, top: t.scrollTop });
-      }}
+      onScroll={followScroll}
       onKeyDown={(e) => {
         if (e.key === ' ' && e.target === e.currentTarget) {
           spaceHeld.current = true;
@@ -197,69 +216,64 @@ export function LadderCanvas() {
           title={hoverProblems.length > 0 ? hoverProblems.map((m) => m.text).join('\n') : undefined}
           {...handlers}
         >
-          {theme && (
-            <Stage width={size.width} height={size.height} listening={false}>
-              <Layer x={-scroll.left} y={-scroll.top} scaleX={zoom} scaleY={zoom} listening={false}>
-                {visible.map((i) => {
-                  const n = networks[i]!;
-                  return (
-                    <NetworkShape
-                      key={n.id}
-                      network={n}
-                      index={i}
-                      top={layout.tops[i]!}
-                      theme={theme}
-                      selected={selection.network === n.id ? selectedSet : EMPTY_SET}
-                      cursor={cursor?.network === n.id ? cursor : undefined}
-                      hover={hover?.index === i ? hover.cell : undefined}
-                      markers={markers.get(i)?.markers ?? NO_MARKERS}
-                      drag={drag?.network === n.id ? drag : undefined}
-                      zoom={zoom}
-                    />
-                  );
-                })}
-              </Layer>
-            </Stage>
-          )}
-          <div
-            className="rs-headers"
-            style={{ transform: `translate(${-scroll.left}px, ${-scroll.top}px) scale(${zoom})` }}
-          >
-            {visible.map((i) => {
-              const n = networks[i]!;
-              const m = markers.get(i);
-              return (
-                <NetworkHeader
-                  key={n.id}
-                  network={n}
-                  index={i}
-                  count={networks.length}
-                  top={layout.tops[i]!}
-                  width={layout.totalWidth}
-                  errors={m?.errors ?? 0}
-                  warnings={m?.warnings ?? 0}
-                />
-              );
-            })}
-            {band && (
-              <div
-                className="rs-band"
-                style={{
-                  left: Math.min(band.from.x, band.to.x),
-                  top: Math.min(band.from.y, band.to.y),
-                  width: Math.abs(band.to.x - band.from.x),
-                  height: Math.abs(band.to.y - band.from.y),
-                }}
-              />
+          <div className="rs-world" ref={worldRef}>
+            {theme && (
+              <div className="rs-stage-window" style={{ left: win.left, top: win.top }}>
+                <Stage width={stageWidth} height={stageHeight} listening={false}>
+                  <Layer x={-win.left} y={-win.top} scaleX={zoom} scaleY={zoom} listening={false}>
+                    {visible.map((i) => {
+                      const n = networks[i]!;
+                      return (
+                        <NetworkShape
+                          key={n.id}
+                          network={n}
+                          index={i}
+                          top={layout.tops[i]!}
+                          theme={theme}
+                          selected={selection.network === n.id ? selectedSet : EMPTY_SET}
+                          cursor={cursor?.network === n.id ? cursor : undefined}
+                          hover={hover?.index === i ? hover.cell : undefined}
+                          markers={markers.get(i)?.markers ?? NO_MARKERS}
+                          drag={drag?.network === n.id ? drag : undefined}
+                          zoom={zoom}
+                        />
+                      );
+                    })}
+                  </Layer>
+                </Stage>
+              </div>
             )}
+            <div className="rs-headers" style={{ transform: `scale(${zoom})` }}>
+              {visible.map((i) => {
+                const n = networks[i]!;
+                const m = markers.get(i);
+                return (
+                  <NetworkHeader
+                    key={n.id}
+                    network={n}
+                    index={i}
+                    count={networks.length}
+                    top={layout.tops[i]!}
+                    width={layout.totalWidth}
+                    errors={m?.errors ?? 0}
+                    warnings={m?.warnings ?? 0}
+                  />
+                );
+              })}
+              {band && (
+                <div
+                  className="rs-band"
+                  style={{
+                    left: Math.min(band.from.x, band.to.x),
+                    top: Math.min(band.from.y, band.to.y),
+                    width: Math.abs(band.to.x - band.from.x),
+                    height: Math.abs(band.to.y - band.from.y),
+                  }}
+                />
+              )}
+            </div>
+            <InlineEditor layout={layout} zoom={zoom} onDone={refocus} />
           </div>
-          <InlineEditor
-            layout={layout}
-            zoom={zoom}
-            scrollLeft={scroll.left}
-            scrollTop={scroll.top}
-            onDone={refocus}
-          />
           <BlockPicker onDone={refocus} />
           {networks.length === 0 && <CanvasEmpty />}
         </div>

@@ -108,6 +108,12 @@ export function useCanvasPointer(
     return { x: (e.clientX - rect.left + el.scrollLeft) / z, y: (e.clientY - rect.top + el.scrollTop) / z };
   };
 
+  /** Is content point p over the grid of network `index` (or just right of / below it, where the grid can grow)? */
+  const inSameGrid = (p: PixelPoint, index: number) => {
+    const hit = hitTest(view.current.layout, view.current.networks, p);
+    return hit.area === 'grid' && hit.index === index;
+  };
+
   const onPointerDown = (e: ReactPointerEvent<HTMLDivElement>) => {
     if (!(e.target instanceof HTMLCanvasElement)) return;
     const el = scrollRef.current!;
@@ -182,8 +188,9 @@ export function useCanvasPointer(
       if (!n) return;
       const { dRow, dCol } = cellDelta(m.start, p);
       machine.current = { ...m, kind: 'dragging' };
-      if (drag?.dRow !== dRow || drag?.dCol !== dCol || drag?.network !== n.id) {
-        setDrag({ network: n.id, ids: new Set(m.ids), dRow, dCol, blocked: !canMove(n, m.ids, dRow, dCol) });
+      const blocked = !inSameGrid(p, m.index) || !canMove(n, m.ids, dRow, dCol);
+      if (drag?.dRow !== dRow || drag?.dCol !== dCol || drag?.network !== n.id || drag.blocked !== blocked) {
+        setDrag({ network: n.id, ids: new Set(m.ids), dRow, dCol, blocked });
       }
       return;
     }
@@ -211,9 +218,14 @@ export function useCanvasPointer(
     const { layout, networks } = view.current;
     if (m.kind === 'dragging') {
       const n = networks[m.index];
-      const { dRow, dCol } = cellDelta(m.start, contentPoint(e));
+      const p = contentPoint(e);
+      const { dRow, dCol } = cellDelta(m.start, p);
       setDrag(undefined);
-      if (n && (dRow !== 0 || dCol !== 0)) {
+      if (!inSameGrid(p, m.index)) {
+        ctx.ui
+          .getState()
+          .setStatus('Drag moves elements within their network; use cut and paste to move them to another.');
+      } else if (n && (dRow !== 0 || dCol !== 0)) {
         const moved = ctx.doc.getState().moveElements(n.id, m.ids, dRow, dCol);
         if (moved)
           ctx.ui

@@ -80,8 +80,11 @@ export function placeAtCursor(ctx: EditorContext, t: ElementTemplate): ElementId
   return placeAt(ctx, c.network, c, t);
 }
 
-/** Moves the cursor by cells; past the top/bottom row it continues in the previous/next open network. */
-export function moveCursor(ctx: EditorContext, dRow: number, dCol: number) {
+/**
+ * Moves the cursor by cells; past the top/bottom row it continues in the previous/next open
+ * network. The element under the cursor becomes the selection, or joins it with `extend` (Shift).
+ */
+export function moveCursor(ctx: EditorContext, dRow: number, dCol: number, extend = false) {
   const c = ensureCursor(ctx);
   const nets = networksOf(ctx);
   let index = nets.findIndex((n) => n.id === c.network);
@@ -102,9 +105,25 @@ export function moveCursor(ctx: EditorContext, dRow: number, dCol: number) {
     row = step < 0 ? n.rows - 1 : 0;
   }
   col = Math.max(0, Math.min(n.cols - 1, col));
-  ctx.ui.getState().setCursor({ network: n.id, row, col });
+  const ui = ctx.ui.getState();
+  ui.setCursor({ network: n.id, row, col });
   const el = elementAt(n, { row, col });
-  ctx.ui.getState().select(n.id, el ? [el.id] : []);
+  const kept = extend && ui.selection.network === n.id ? ui.selection.elements : [];
+  ui.select(n.id, [...new Set([...kept, ...(el ? [el.id] : [])])]);
+}
+
+/** Alt+arrows: moves the selected elements (or the one under the cursor) by one cell, cursor along. */
+export function nudgeTargets(ctx: EditorContext, dRow: number, dCol: number) {
+  const t = targets(ctx);
+  if (!t) return;
+  if (!ctx.doc.getState().moveElements(t.network, t.ids, dRow, dCol)) {
+    ctx.ui.getState().setStatus('Cannot move there: another element is in the way, or the edge of the grid.');
+    return;
+  }
+  const ui = ctx.ui.getState();
+  ui.select(t.network, t.ids);
+  if (ui.cursor?.network === t.network)
+    ui.setCursor({ ...ui.cursor, row: ui.cursor.row + dRow, col: ui.cursor.col + dCol });
 }
 
 /** The elements a command acts on: the selection, else the element under the cursor. */

@@ -13,6 +13,7 @@ import {
   insertNetworkBelow,
   moveCursor,
   networksOf,
+  nudgeTargets,
   placeAtCursor,
   selectAllInNetwork,
   toggleVLinkAtCursor,
@@ -258,6 +259,29 @@ export const COMMANDS: readonly EditorCommand[] = [
     keys: ['arrowdown'],
     run: (ctx) => moveCursor(ctx, 1, 0),
   },
+  ...(
+    [
+      ['Left', 0, -1],
+      ['Right', 0, 1],
+      ['Up', -1, 0],
+      ['Down', 1, 0],
+    ] as const
+  ).flatMap(([dir, dRow, dCol]): EditorCommand[] => [
+    {
+      id: `nav.extend${dir}`,
+      label: `Extend selection ${dir.toLowerCase()}`,
+      group: 'Navigate',
+      keys: [`shift+arrow${dir.toLowerCase()}`],
+      run: (ctx) => moveCursor(ctx, dRow, dCol, true),
+    },
+    {
+      id: `edit.move${dir}`,
+      label: `Move selection ${dir.toLowerCase()}`,
+      group: 'Edit',
+      keys: [`alt+arrow${dir.toLowerCase()}`],
+      run: (ctx) => nudgeTargets(ctx, dRow, dCol),
+    },
+  ]),
   {
     id: 'view.zoomIn',
     label: 'Zoom in',

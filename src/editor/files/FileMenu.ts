@@ -7,6 +7,7 @@
 // file picker, the "discard unsaved changes?" dialog, open errors and notices.
 import { EXAMPLES } from '../../model/examples';
 import type { DocumentStore } from '../../store/documentStore';
+import { PLCOPEN_COMMANDS } from '../plcopen/plcopenCommands';
 import { loadWithConsent, newProject, openProjectFile, saveProjectFile } from './fileActions';
 
 export interface FileCommandContext {
@@ -72,5 +73,5 @@ export const EXAMPLE_COMMANDS: readonly FileMenuCommand[] = EXAMPLES.map((exampl
     ),
 }));
 
-/** Everything for the File menu, New/Open/Save first, then the examples. */
-export const FILE_MENU_COMMANDS: readonly FileMenuCommand[] = [...FILE_COMMANDS, ...EXAMPLE_COMMANDS];
+/** Everything for the File menu, New/Open/Save first, then PLCopen import/export, then the examples. */
+export const FILE_MENU_COMMANDS: readonly FileMenuCommand[] = [...FILE_COMMANDS, ...PLCOPEN_COMMANDS, ...EXAMPLE_COMMANDS];

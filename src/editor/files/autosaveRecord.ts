@@ -2,6 +2,7 @@
 // Pure (no IndexedDB here) so the decision logic runs in Node tests; autosaveStore.ts does the I/O.
 import { loadProject, type LoadError } from '../../model/load';
 import type { Project } from '../../model/project';
+import { projectJson } from './projectJson';
 
 export const AUTOSAVE_FORMAT = 'rungsmith-autosave';
 export const AUTOSAVE_VERSION = 1;
@@ -23,7 +24,7 @@ export function makeAutosaveRecord(project: Project, unsavedChanges: boolean, no
     version: AUTOSAVE_VERSION,
     savedAt: now,
     unsavedChanges,
-    projectText: JSON.stringify(project),
+    projectText: projectJson(project),
   };
 }
 
@@ -73,7 +74,8 @@ export function decideRecovery(stored: unknown): RecoveryDecision {
 
 /** Nothing drawn or declared yet: restoring it is not worth a notice. */
 export const isBlankProject = (p: Project): boolean =>
-  p.globals.length === 0 && p.pous.every((pou) => pou.variables.length === 0 && pou.networks.every((n) => n.elements.length === 0));
+  p.globals.length === 0 &&
+  p.pous.every((pou) => pou.variables.length === 0 && pou.networks.every((n) => n.elements.length === 0));
 
 /** "Restored your work from 14:02:31 (not yet saved to a file)." */
 export function recoveryNotice(

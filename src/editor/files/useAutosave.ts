@@ -5,9 +5,12 @@ import type { DocumentStore } from '../../store/documentStore';
 import { decideRecovery, makeAutosaveRecord, recoveryNotice } from './autosaveRecord';
 import { readAutosave, writeAutosave } from './autosaveStore';
 import { filesUi } from './filesUi';
+import { whenIdle } from './projectJson';
 
 /** Quiet time after the last change before writing, ms. */
 export const AUTOSAVE_DELAY_MS = 400;
+/** Longest wait for an idle moment after the quiet time, ms. */
+export const IDLE_TIMEOUT_MS = 2000;
 
 const clock = (ms: number) => new Date(ms).toLocaleTimeString();
 
@@ -48,12 +51,17 @@ export function useAutosave(store: DocumentStore): void {
   const ready = useRecovery(store);
   useEffect(() => {
     if (!ready) return undefined;
+    // A change starts the quiet-time timer; then the write waits for an idle moment of the page
+    // (never in the middle of a drag or a scroll), at the latest IDLE_TIMEOUT_MS later.
     let timer: ReturnType<typeof setTimeout> | undefined;
+    let cancelIdle: (() => void) | undefined;
     let inFlight = 0;
     let written: { project: unknown; dirty: boolean } | undefined;
-    const settle = () => filesUi.getState().setAutosavePending(timer !== undefined || inFlight > 0);
+    const settle = () =>
+      filesUi.getState().setAutosavePending(timer !== undefined || cancelIdle !== undefined || inFlight > 0);
     const write = () => {
       timer = undefined;
+      cancelIdle = undefined;
       const { project, dirty } = store.getState();
       if (written && written.project === project && written.dirty === dirty) return settle();
       written = { project, dirty };
@@ -70,15 +78,24 @@ export function useAutosave(store: DocumentStore): void {
           settle();
         });
     };
+    const cancel = () => {
+      if (timer) clearTimeout(timer);
+      cancelIdle?.();
+      timer = undefined;
+      cancelIdle = undefined;
+    };
     const unsubscribe = store.subscribe((s, prev) => {
       if (s.project === prev.project && s.dirty === prev.dirty) return;
-      if (timer) clearTimeout(timer);
-      timer = setTimeout(write, AUTOSAVE_DELAY_MS);
-      filesUi.getState().setAutosavePending(true);
+      cancel();
+      timer = setTimeout(() => {
+        timer = undefined;
+        cancelIdle = whenIdle(write, IDLE_TIMEOUT_MS);
+      }, AUTOSAVE_DELAY_MS);
+      settle();
     });
     const flush = () => {
-      if (timer) {
-        clearTimeout(timer);
+      if (timer || cancelIdle) {
+        cancel();
         write();
       }
     };

@@ -4,7 +4,9 @@ import { useId } from 'react';
 import { findVariable } from '../../model/factory';
 import { selectActivePou, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { declareChoices } from './declareOffer';
-import { acceptedTypes, resolveName, type BindingRole } from './operands';
+import { acceptedTypes, pinTypeMembers, resolveName, type BindingRole } from './operands';
+import { canWiden } from '../../engine/values/types';
+import type { PinType } from '../../model/iecTypes';
 import { VariableInput } from './VariableInput';
 import { parseLiteral } from '../../engine/values/literals';
 
@@ -38,14 +40,32 @@ export function BindingField({ label, value, role, onCommit, placeholder, testId
   );
 }
 
+/**
+ * What a literal operand is ("literal TIME"), or why it is not a valid one for the pin; undefined
+ * when the text is a name (starts with a letter or _ and is not a typed literal like T#5s).
+ */
+function describeLiteral(text: string, pinType: PinType): { ok: boolean; text: string } | undefined {
+  const members = pinTypeMembers(pinType);
+  const expected = members.length === 1 ? members[0] : undefined;
+  const literal = parseLiteral(text, expected);
+  if (literal.ok) {
+    const fits = members.includes(literal.type) || members.some((m) => canWiden(literal.type, m));
+    return fits
+      ? { ok: true, text: `literal ${literal.type}` }
+      : { ok: false, text: `${text} is a ${literal.type} literal; this pin takes ${members.length > 4 ? pinType : members.join(' or ')}` };
+  }
+  const looksLikeName = /^[A-Za-z_][A-Za-z0-9_.]*$/.test(text) && !text.includes('#');
+  return looksLikeName ? undefined : { ok: false, text: literal.message };
+}
+
 function BindingInfo({ value, role }: { value: string; role: BindingRole }) {
   const store = useDocumentStore();
   const project = useDocument(selectProject);
   const pou = useDocument(selectActivePou);
   if (!pou || value.trim() === '') return null;
   if (role.kind === 'pin' && role.direction === 'input') {
-    const literal = parseLiteral(value.trim());
-    if (literal.ok) return <p className="rs-binding-info">literal {literal.type}</p>;
+    const literal = describeLiteral(value.trim(), role.pinType);
+    if (literal) return <p className={`rs-binding-info${literal.ok ? '' : ' rs-error-text'}`}>{literal.text}</p>;
   }
   const resolution = resolveName(project, pou, value);
   switch (resolution.status) {

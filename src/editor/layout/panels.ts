@@ -5,6 +5,7 @@ import type { ComponentType } from 'react';
 import { FilesHost } from '../files/FilesHost';
 import { HardwarePanel } from '../hardware/HardwarePanel';
 import { HardwareSimLink } from '../hardware/HardwareSimLink';
+import { PlcopenHost } from '../plcopen/PlcopenHost';
 import { InspectorPanel } from '../inspector/InspectorPanel';
 import { ProblemsPanel } from '../problems/ProblemsPanel';
 import { VariablesPanel } from '../variables/VariablesPanel';
@@ -50,6 +51,7 @@ export const TOP_BAR_ITEMS: readonly BarSlot[] = [{ id: 'simulation', component:
 /** Mounted once inside the stores' providers. */
 export const HOSTS: readonly BarSlot[] = [
   { id: 'files', component: FilesHost },
+  { id: 'plcopen', component: PlcopenHost },
   { id: 'simulation', component: SimHostMount },
   { id: 'hardware-sim-link', component: HardwareSimLink },
 ];

@@ -5,10 +5,12 @@ import { runChecks } from './checkRun';
 
 export interface CheckRequest {
   readonly seq: number;
-  readonly project: Project;
+  /** The project as JSON: far cheaper for the page to send than the object tree. */
+  readonly projectText: string;
 }
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 scope.onmessage = (event: MessageEvent<CheckRequest>) => {
-  scope.postMessage({ seq: event.data.seq, diagnostics: runChecks(event.data.project) });
+  const project = JSON.parse(event.data.projectText) as Project;
+  scope.postMessage({ seq: event.data.seq, diagnostics: runChecks(project) });
 };

@@ -5,6 +5,7 @@ import type { Diagnostic } from '../../engine/api';
 import type { Project } from '../../model/project';
 import type { CheckRequest } from './check.worker';
 import { runChecks } from './checkRun';
+import { projectJson } from '../files/projectJson';
 
 const results = new WeakMap<Project, readonly Diagnostic[]>();
 const listeners = new Set<() => void>();
@@ -57,7 +58,7 @@ function sendNext() {
   }
   seq += 1;
   running = { seq, project };
-  const request: CheckRequest = { seq, project };
+  const request: CheckRequest = { seq, projectText: projectJson(project) };
   worker.postMessage(request);
 }
 

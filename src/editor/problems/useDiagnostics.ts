@@ -5,10 +5,13 @@ import { useEffect, useMemo, useState } from 'react';
 import type { Diagnostic } from '../../engine/api';
 import type { Project } from '../../model/project';
 import { selectProject, useDocument } from '../../store/documentStore';
+import { whenIdle } from '../files/projectJson';
 import { checkedDiagnostics, onChecked, requestCheck } from './checker';
 
 /** Wait after the last change before checking again, ms. */
 export const CHECK_DELAY_MS = 150;
+/** Longest wait for an idle moment after the quiet time, ms. */
+const IDLE_TIMEOUT_MS = 1000;
 
 const NONE: readonly Diagnostic[] = [];
 
@@ -28,9 +31,14 @@ export function useDiagnostics(): readonly Diagnostic[] {
     };
     if (take()) return undefined;
     const unsubscribe = onChecked(take);
-    const timer = setTimeout(() => requestCheck(project), CHECK_DELAY_MS);
+    // After the quiet time, wait for an idle moment so sending the project never costs a frame.
+    let cancelIdle: (() => void) | undefined;
+    const timer = setTimeout(() => {
+      cancelIdle = whenIdle(() => requestCheck(project), IDLE_TIMEOUT_MS);
+    }, CHECK_DELAY_MS);
     return () => {
       clearTimeout(timer);
+      cancelIdle?.();
       unsubscribe();
     };
   }, [project, shown.project]);

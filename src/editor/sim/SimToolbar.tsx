@@ -1,6 +1,6 @@
 // Run/Pause/Step/Reset controls and the status line (mode, scan, PLC time, execution time).
 import { useEffect, useState } from 'react';
-import { useDocumentStore } from '../../store/documentStore';
+import { useDocument, useDocumentStore, type DocumentState } from '../../store/documentStore';
 import type { SimState } from '../../store/simStore';
 import { SimNotices } from './SimNotices';
 import { useSim, useSimStore } from './simContext';
@@ -15,6 +15,9 @@ const selectExecAvg = (s: SimState) => s.exec.avgMs;
 const selectExecMax = (s: SimState) => s.exec.maxMs;
 const selectOverruns = (s: SimState) => s.overruns;
 
+/** The project's cyclic task interval: the cycle a real PLC would run this program at. */
+const selectTaskCycle = (s: DocumentState): number | undefined => s.project.tasks[0]?.cycleMs;
+
 const MODE_LABEL = { stopped: 'Stopped', running: 'Running', paused: 'Paused', faulted: 'Faulted' } as const;
 
 /** Last / average / maximum execution time in one unit, chosen by the maximum. */
@@ -28,7 +31,12 @@ export function SimToolbar() {
   const sim = useSimStore();
   const documents = useDocumentStore();
   const mode = useSim(selectMode);
+  const taskCycle = useDocument(selectTaskCycle);
   const [stepCount, setStepCount] = useState('10');
+  useEffect(() => {
+    // A project brings its task's cycle time; the field below can still override it for this session.
+    if (taskCycle !== undefined && taskCycle >= 0 && taskCycle !== sim.getState().cycleMs) sim.getState().setCycle(taskCycle);
+  }, [taskCycle, sim]);
   useEffect(() => {
     // Keep the scripting handle even if the shell assigned window.rungsmith after the store was made.
     const w = window as unknown as { rungsmith?: Record<string, unknown> };

@@ -49,10 +49,10 @@ export function useHasBreakpoint(networkId: string): boolean {
   return useSim((s) => s.breakpoints.includes(networkId));
 }
 
-/** False when a jump or return skipped the network in the last scan. */
+/** False when a jump or return skipped the network in the last scan (undefined in the middle of a scan). */
 export function useNetworkExecuted(networkId: string): boolean | undefined {
   return useSim((s) => {
-    if (!s.live) return undefined;
+    if (!s.live || s.nextNetwork !== -1) return undefined;
     const n = networkIndex(s, networkId);
     return n < 0 ? undefined : s.executed[n] === 1;
   });

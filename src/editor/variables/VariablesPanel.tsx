@@ -3,12 +3,7 @@
 import { useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { VariableScope } from '../../store/changes';
-import {
-  selectProject,
-  useDocument,
-  useDocumentStore,
-  type DocumentState,
-} from '../../store/documentStore';
+import { selectProject, useDocument, useDocumentStore, type DocumentState } from '../../store/documentStore';
 import { useUiStore } from '../../store/uiStore';
 import { variable } from '../../model/factory';
 import type { Variable } from '../../model/project';
@@ -63,7 +58,9 @@ export function VariablesPanel() {
     setFilter('');
     // After the list switched, focus the row's name field.
     const frame = requestAnimationFrame(() => {
-      const row = panel.current?.querySelector(`[data-testid="variable-row-${CSS.escape(focusRequest.name)}"]`);
+      const row = panel.current?.querySelector(
+        `[data-testid="variable-row-${CSS.escape(focusRequest.name)}"]`,
+      );
       row?.querySelector<HTMLInputElement>('input[aria-label="Name"]')?.focus();
       row?.scrollIntoView({ block: 'nearest' });
     });

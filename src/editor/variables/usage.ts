@@ -63,7 +63,10 @@ function networkRefs(network: Network): readonly NetworkRef[] {
   return refs;
 }
 
-function collect(pous: readonly Pou[], skip: (pou: Pou, name: string) => boolean): Map<string, VariableUse[]> {
+function collect(
+  pous: readonly Pou[],
+  skip: (pou: Pou, name: string) => boolean,
+): Map<string, VariableUse[]> {
   const uses = new Map<string, VariableUse[]>();
   for (const pou of pous) {
     for (const network of pou.networks) {

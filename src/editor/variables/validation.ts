@@ -96,8 +96,10 @@ export function identifierProblem(name: string): string | undefined {
   if (!IDENTIFIER_RE.test(trimmed)) {
     return `"${trimmed}" is not an IEC identifier: use letters, digits and underscores, starting with a letter or underscore`;
   }
-  if (trimmed.includes('__')) return `"${trimmed}" has two underscores in a row, which IEC identifiers do not allow`;
-  if (trimmed.endsWith('_')) return `"${trimmed}" ends with an underscore, which IEC identifiers do not allow`;
+  if (trimmed.includes('__'))
+    return `"${trimmed}" has two underscores in a row, which IEC identifiers do not allow`;
+  if (trimmed.endsWith('_'))
+    return `"${trimmed}" ends with an underscore, which IEC identifiers do not allow`;
   const upper = trimmed.toUpperCase();
   if (RESERVED.has(upper) || isElementaryType(upper)) return `"${trimmed}" is a reserved word in IEC 61131-3`;
   if (blockSignature(upper)) return `"${trimmed}" is the name of the standard block ${upper}`;

@@ -8,7 +8,9 @@ export interface VariableFocusRequest {
   readonly seq: number;
 }
 
-export const variableFocus = createStore<{ request: VariableFocusRequest | undefined }>()(() => ({ request: undefined }));
+export const variableFocus = createStore<{ request: VariableFocusRequest | undefined }>()(() => ({
+  request: undefined,
+}));
 
 let seq = 0;
 export function focusVariable(name: string, globals: boolean): void {

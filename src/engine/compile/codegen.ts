@@ -33,6 +33,20 @@ class Emitter {
     readonly functions: readonly ResolvedFunction[],
   ) {}
 
+  /** Per network: nets holding a left-rail point (constant 1) and nets with one unconditional writer. */
+  rails: ReadonlySet<number> = new Set();
+  single: ReadonlySet<number> = new Set();
+
+  /** The expression of a power-flow net. */
+  net(i: number): string {
+    return this.rails.has(i) ? '1' : `n${i}`;
+  }
+  /** Statement driving a net: `=` when it is the net's only writer, else OR-ed in; nothing on a rail net. */
+  setNet(i: number, expr: string): string {
+    if (this.rails.has(i)) return '';
+    return this.single.has(i) ? `n${i} = ${expr};` : `n${i} |= ${expr};`;
+  }
+
   /** A closure constant for an FB instance, a function or a K value. */
   hoist(expr: string, prefix: string): string {
     let name = this.hoisted.get(expr);
@@ -101,7 +115,7 @@ class Emitter {
   readValue(src: Source, to: ElementaryType): string {
     let expr: string;
     let from: ElementaryType;
-    if (src.from === 'power') return `(n${src.net} === 1)`;
+    if (src.from === 'power') return this.rails.has(src.net) ? 'true' : `(n${src.net} === 1)`;
     if (src.from === 'data') {
       expr = `${src.store}[${src.slot}]`;
       from = src.type;
@@ -154,7 +168,11 @@ export function generateSegment(irs: readonly NetworkIR[], functions: readonly R
   L.push('let t = 0, r, eno = 0, next = 0;');
   irs.forEach((ir, k) => {
     const rails = new Set(ir.railNets);
-    const nets = Array.from({ length: ir.netCount }, (_, i) => `n${i} = ${rails.has(i) ? 1 : 0}`);
+    em.rails = rails;
+    em.single = singleWriterNets(ir);
+    const nets = Array.from({ length: ir.netCount }, (_, i) => i)
+      .filter((i) => !rails.has(i))
+      .map((i) => `n${i} = 0`);
     const controls = ir.ops.some((op) => op.op === 'jump' || op.op === 'return');
     const power = em.hoist(`P[${ir.index}]`, 'p');
     L.push(`{ // network ${ir.index + 1}`);
@@ -162,7 +180,7 @@ export function generateSegment(irs: readonly NetworkIR[], functions: readonly R
     if (nets.length) L.push(`let ${nets.join(', ')};`);
     if (controls) L.push(`let go = 0; next = ${ir.index + 1};`);
     for (const op of ir.ops) emitOp(em, op);
-    for (let i = 0; i < ir.netCount; i++) L.push(`${power}[${i}] = n${i};`);
+    for (let i = 0; i < ir.netCount; i++) if (!rails.has(i)) L.push(`${power}[${i}] = n${i};`);
     if (controls) L.push(`if (next !== ${ir.index + 1}) { X[0] = ${k + 1}; return next; }`);
     L.push('}');
   });
@@ -178,32 +196,53 @@ export function generateSegment(irs: readonly NetworkIR[], functions: readonly R
   return { body, constants: em.constants };
 }
 
+const and = (a: string, b: string): string => (a === '1' ? b : b === '1' ? a : `${a} & ${b}`);
+
+/** Nets written exactly once, unconditionally (function outputs are written only when EN is ON). */
+function singleWriterNets(ir: NetworkIR): Set<number> {
+  const writes = new Map<number, number>();
+  const add = (net: number | undefined, n = 1) => {
+    if (net !== undefined) writes.set(net, (writes.get(net) ?? 0) + n);
+  };
+  for (const op of ir.ops) {
+    if (op.op === 'contact') {
+      add(op.outNet);
+      add(op.ownNet);
+    } else if (op.op === 'coil' && op.outNet !== op.inNet) add(op.outNet);
+    else if (op.op === 'fb') for (const o of op.outs) add(o.net);
+    else if (op.op === 'function') {
+      add(op.out.net, 2);
+      add(op.eno.net, 2);
+    }
+  }
+  return new Set([...writes].filter(([, n]) => n === 1).map(([net]) => net));
+}
+
 function emitOp(em: Emitter, op: Op): void {
   const L = em.lines;
   switch (op.op) {
     case 'contact': {
-      const i = `n${op.inNet}`;
+      const i = em.net(op.inNet);
       const v = op.src ? em.readBit(op.src) : '0';
-      // With an own result: `nK = ...; nOut |= nK;` else straight into the (OR-ed) output net.
-      const o = op.ownNet !== undefined ? `n${op.ownNet}` : `n${op.outNet}`;
-      const set = op.ownNet !== undefined ? '=' : '|=';
-      const tail = op.ownNet !== undefined ? ` n${op.outNet} |= ${o};` : '';
+      // With an own result (other outputs join its right side): `nK = ...; nOut |= nK;`.
+      const o = op.ownNet ?? op.outNet;
+      const tail = op.ownNet !== undefined ? em.setNet(op.outNet, em.net(op.ownNet)) : '';
       switch (op.contact) {
         case 'NO':
-          return void L.push(`${o} ${set} ${i} & ${v};${tail}`);
+          return void L.push(em.setNet(o, and(i, v)), tail);
         case 'NC':
-          return void L.push(`${o} ${set} ${i} & (${v} ^ 1);${tail}`);
+          return void L.push(em.setNet(o, and(i, `(${v} ^ 1)`)), tail);
         case 'NOT':
-          return void L.push(`${o} ${set} ${i} ^ 1;${tail}`);
+          return void L.push(em.setNet(o, `${i} ^ 1`), tail);
         case 'P':
-          return void L.push(`t = ${v}; ${o} ${set} ${i} & t & (e[${op.edge}] ^ 1); e[${op.edge}] = t;${tail}`);
+          return void L.push(`t = ${v};`, em.setNet(o, and(i, `t & (e[${op.edge}] ^ 1)`)), `e[${op.edge}] = t;`, tail);
         case 'N':
-          return void L.push(`t = ${v} ^ 1; ${o} ${set} ${i} & t & (e[${op.edge}] ^ 1); e[${op.edge}] = t;${tail}`);
+          return void L.push(`t = ${v} ^ 1;`, em.setNet(o, and(i, `t & (e[${op.edge}] ^ 1)`)), `e[${op.edge}] = t;`, tail);
       }
       return;
     }
     case 'coil': {
-      const i = `n${op.inNet}`;
+      const i = em.net(op.inNet);
       switch (op.coil) {
         case 'COIL':
         case 'M':
@@ -227,13 +266,13 @@ function emitOp(em: Emitter, op: Op): void {
           L.push(`t = ${i} ^ 1; r = t & (e[${op.edge}] ^ 1); e[${op.edge}] = t; ${em.writeBit(op.dst, 'r')}`);
           break;
       }
-      if (op.outNet !== op.inNet) L.push(`n${op.outNet} |= ${i};`);
+      if (op.outNet !== op.inNet) L.push(em.setNet(op.outNet, i));
       return;
     }
     case 'jump':
-      return void L.push(`if (n${op.inNet} && go === 0) { go = 1; next = ${op.target}; }`);
+      return void L.push(`if (${em.net(op.inNet)} && go === 0) { go = 1; next = ${op.target}; }`);
     case 'return':
-      return void L.push(`if (n${op.inNet} && go === 0) { go = 1; next = -1; }`);
+      return void L.push(`if (${em.net(op.inNet)} && go === 0) { go = 1; next = -1; }`);
     case 'function':
       return emitFunction(em, op);
     case 'fb':
@@ -246,7 +285,7 @@ function argExprs(em: Emitter, args: readonly ArgIR[]): string[] {
 }
 
 function emitOutput(em: Emitter, out: OutIR, value: string, lines: string[]): void {
-  if (out.net !== undefined) lines.push(`n${out.net} |= ${out.type === 'BOOL' ? `(${value}) ? 1 : 0` : value};`);
+  if (out.net !== undefined) lines.push(em.setNet(out.net, `(${value}) ? 1 : 0`));
   if (out.data) lines.push(`${out.data.store}[${out.data.slot}] = ${value};`);
   if (out.dst) lines.push(em.writeValue(out.dst, value, out.type));
 }
@@ -265,7 +304,7 @@ function emitFunction(em: Emitter, op: Extract<Op, { op: 'function' }>): void {
     args.forEach((a, i) => L.push(`${arr}[${i}] = ${a};`));
     call = `${fn}.impl(ctx, ${arr})`;
   }
-  const en = op.en ? (op.en.from === 'power' ? `n${op.en.net}` : em.readValue(op.en, 'BOOL')) : undefined;
+  const en = op.en ? (op.en.from === 'power' ? em.net(op.en.net) : em.readValue(op.en, 'BOOL')) : undefined;
   const body: string[] = ['ctx.error = false;', `r = ${call};`, 'eno = ctx.error ? 0 : 1;'];
   emitOutput(em, op.out, 'r', body);
   if (en === undefined) L.push(...body);

@@ -14,6 +14,7 @@ import { lowerBox } from './box';
 /** Maps graph nets to what the generated code reads for them. */
 export class NetMap {
   private readonly power = new Map<number, number>();
+  private count = 0;
   /** Graph net -> value source when the net carries a non-BOOL value from a box output. */
   readonly data = new Map<number, Source>();
   /** Nets driven by a block output that is not BOOL by signature, before that block is lowered. */
@@ -29,19 +30,23 @@ export class NetMap {
   powerNet(net: number): number {
     let id = this.power.get(net);
     if (id === undefined) {
-      id = this.power.size;
+      id = this.count++;
       this.power.set(net, id);
     }
     return id;
+  }
+  /** Makes a graph net share an existing power-flow local (a coil's right side with its left side). */
+  alias(net: number, id: number): void {
+    if (!this.power.has(net)) this.power.set(net, id);
   }
   hasPower(net: number): boolean {
     return this.power.has(net);
   }
   get powerCount(): number {
-    return this.power.size;
+    return this.count;
   }
   railNets(): number[] {
-    return [...this.power].filter(([net]) => net >= 0 && this.g.nets[net]!.leftRail).map(([, id]) => id);
+    return [...new Set([...this.power].filter(([net]) => net >= 0 && this.g.nets[net]!.leftRail).map(([, id]) => id))];
   }
   /** True when something besides the terminal itself is attached to the net (a wire or another element). */
   isWired(net: number): boolean {
@@ -101,7 +106,10 @@ export function lowerNetwork(ctx: PouContext, network: Network, index: number, r
       case 'coil': {
         const dst = coilOperand(ctx, el, index, r);
         const edge = el.coil === 'P' || el.coil === 'N' ? ctx.edgeCount++ : undefined;
-        const outNet = nets.powerNet(node.outputs[0]!.net);
+        // A coil passes its left link on: when nothing else drives its right side, both sides are one net.
+        const outGraph = g.nets[node.outputs[0]!.net]!;
+        if (outGraph.sources.length === 1 && !outGraph.leftRail && inNet >= 0) nets.alias(outGraph.id, inNet);
+        const outNet = nets.powerNet(outGraph.id);
         if (dst) ops.push({ op: 'coil', node: node.index, coil: el.coil, dst, inNet, outNet, ...(edge !== undefined ? { edge } : {}) });
         break;
       }

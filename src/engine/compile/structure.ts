@@ -180,7 +180,11 @@ function checkFlowDirection(
     while (stack.length) {
       const p = stack.pop()!;
       const next = [linkRight[p]! >= 0 ? p + 1 : -1, vDown[p]! >= 0 ? p + width : -1, vUp[p]! >= 0 ? p - width : -1];
-      for (const q of next) if (q >= 0 && !seen[q]) (seen[q] = 1), stack.push(q);
+      for (const q of next) {
+        if (q < 0 || seen[q]) continue;
+        seen[q] = 1;
+        stack.push(q);
+      }
     }
     for (const t of targets) {
       if (seen[t.point] || blamed.has(t.point)) continue;

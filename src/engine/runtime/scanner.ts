@@ -14,7 +14,7 @@ type SegmentFn = (now: number, scan: number) => number;
 
 /** Most networks inlined in one generated function (V8 optimises functions up to a size). */
 const SEGMENT_OPS = 400;
-const SEGMENT_NETWORKS = 8;
+const SEGMENT_NETWORKS = 64;
 
 // Wall clock for the watchdog and execMs (the engine core has no DOM or Node typings).
 const perf = (globalThis as { performance?: { now(): number } }).performance;
@@ -375,7 +375,8 @@ export class ScanPlc implements Plc {
       const shape = this.program.shapes[i]!;
       const executed = this.ranIn[i] === this.count && this.count > 0;
       const p = this.power[i]!;
-      const on = (net: number) => (executed && net >= 0 ? p[net]! : 0);
+      const rails = new Set(ir.railNets);
+      const on = (net: number) => (executed && net >= 0 ? (rails.has(net) ? 1 : p[net]!) : 0);
       const elements = new Uint8Array(shape.elements);
       const vlinks = new Uint8Array(shape.vlinks);
       ir.elementNets.forEach(([a, b], k) => (elements[k] = on(a) | (on(b) << 1) | (executed ? 4 : 0)));

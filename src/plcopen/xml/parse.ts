@@ -200,7 +200,7 @@ export function parseXml(src: string): XmlElement {
       const raw = src.slice(q + 1, close);
       if (raw.indexOf('<') !== -1) fail(`"<" in the value of attribute "${an}"`, q);
       if (an in attrs) fail(`attribute "${an}" repeated in <${qname}>`, i);
-      attrs[an] = decodeEntities(raw, (m) => fail(m, q));
+      attrs[an] = raw.indexOf('&') === -1 ? raw : decodeEntities(raw, (m) => fail(m, q));
       i = close + 1;
     }
     const el: XmlElement = { name: qname.indexOf(':') === -1 ? qname : localName(qname), qname, attrs, children: [], text: '', offset: start, end: i };
@@ -217,9 +217,18 @@ export function parseXml(src: string): XmlElement {
 }
 
 /** First child element with this local name. */
-export const child = (el: XmlElement, name: string): XmlElement | undefined => el.children.find((c) => c.name === name);
+export function child(el: XmlElement, name: string): XmlElement | undefined {
+  const cs = el.children;
+  for (let i = 0; i < cs.length; i++) if (cs[i]!.name === name) return cs[i];
+  return undefined;
+}
 /** Child elements with this local name. */
-export const childrenNamed = (el: XmlElement, name: string): XmlElement[] => el.children.filter((c) => c.name === name);
+export function childrenNamed(el: XmlElement, name: string): XmlElement[] {
+  const out: XmlElement[] = [];
+  const cs = el.children;
+  for (let i = 0; i < cs.length; i++) if (cs[i]!.name === name) out.push(cs[i]!);
+  return out;
+}
 /** Path of child names: `child(child(el, a), b)`. */
 export function descend(el: XmlElement | undefined, ...names: string[]): XmlElement | undefined {
   let cur = el;
