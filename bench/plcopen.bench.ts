@@ -24,14 +24,46 @@ function network(i: number): Network {
   const vlinks: VLink[] = [];
   if (i % 10 === 5) {
     elements.push({ id: eid(), kind: 'contact', contact: 'NO', variable: v(1), row: 0, col: 0 });
-    elements.push({ id: eid(), kind: 'box', blockType: 'TON', instance: `T${i}`, row: 0, col: 1, inputs: { PT: 'T#500ms' }, outputs: {} });
-    elements.push(...links(0, 3, COLS - 1), { id: eid(), kind: 'coil', coil: 'COIL', variable: out, row: 0, col: COLS - 1 });
+    elements.push({
+      id: eid(),
+      kind: 'box',
+      blockType: 'TON',
+      instance: `T${i}`,
+      row: 0,
+      col: 1,
+      inputs: { PT: 'T#500ms' },
+      outputs: {},
+    });
+    elements.push(...links(0, 3, COLS - 1), {
+      id: eid(),
+      kind: 'coil',
+      coil: 'COIL',
+      variable: out,
+      row: 0,
+      col: COLS - 1,
+    });
     return newNetwork({ rows: 2, cols: COLS, elements, vlinks });
   }
   if (i % 10 === 9) {
     elements.push({ id: eid(), kind: 'contact', contact: 'P', variable: v(1), row: 0, col: 0 });
-    elements.push({ id: eid(), kind: 'box', blockType: 'CTU', instance: `C${i}`, row: 0, col: 1, inputs: { R: v(2), PV: '10' }, outputs: { CV: `N${i % 50}` } });
-    elements.push(...links(0, 3, COLS - 1), { id: eid(), kind: 'coil', coil: 'SET', variable: out, row: 0, col: COLS - 1 });
+    elements.push({
+      id: eid(),
+      kind: 'box',
+      blockType: 'CTU',
+      instance: `C${i}`,
+      row: 0,
+      col: 1,
+      inputs: { R: v(2), PV: '10' },
+      outputs: { CV: `N${i % 50}` },
+    });
+    elements.push(...links(0, 3, COLS - 1), {
+      id: eid(),
+      kind: 'coil',
+      coil: 'SET',
+      variable: out,
+      row: 0,
+      col: COLS - 1,
+    });
     return newNetwork({ rows: 3, cols: COLS, elements, vlinks });
   }
   // (A OR B) AND NOT C AND D -> coil, with a parallel reset coil.
@@ -60,7 +92,10 @@ function program(n: number): Project {
   }
   const networks = Array.from({ length: n }, (_, i) => network(i));
   const main = newPou('Main', { variables: vars, networks });
-  return newProject('Bench', { pous: [main], tasks: [{ name: 'MainTask', cycleMs: 10, priority: 1, programs: [{ instance: 'I', pou: 'Main' }] }] });
+  return newProject('Bench', {
+    pous: [main],
+    tasks: [{ name: 'MainTask', cycleMs: 10, priority: 1, programs: [{ instance: 'I', pou: 'Main' }] }],
+  });
 }
 
 function median(f: () => void, runs: number): number {
@@ -87,7 +122,9 @@ const importMs = median(() => {
   networks = r.project.pous[0]!.networks.length;
 }, 5);
 console.log(`generated program: 10,000 networks, ${(xml.length / 1e6).toFixed(1)} MB of XML`);
-console.log(`  export ${fmt(exportMs)} ms   import ${fmt(importMs)} ms (${networks} networks back; target < 1000 ms)`);
+console.log(
+  `  export ${fmt(exportMs)} ms   import ${fmt(importMs)} ms (${networks} networks back; target < 1000 ms)`,
+);
 
 const corpus = join(fileURLToPath(new URL('..', import.meta.url)), '..', 'shared', 'plcopen', 'examples');
 if (existsSync(corpus)) {

@@ -47,14 +47,17 @@ function run(io: CliIo, argv: readonly string[]): number {
   const [first, ...rest] = argv;
   if (!first || first === '--help' || first === '-h' || first === 'help') {
     const topic = first === 'help' ? rest[0] : undefined;
-    io.out(`${topic && (COMMANDS as readonly string[]).includes(topic) ? HELP[topic as Command] : HELP.main}\n`);
+    io.out(
+      `${topic && (COMMANDS as readonly string[]).includes(topic) ? HELP[topic as Command] : HELP.main}\n`,
+    );
     return first ? 0 : 2;
   }
   if (first === '--version') {
     io.out('rungsmith 0.1.0\n');
     return 0;
   }
-  if (!(COMMANDS as readonly string[]).includes(first)) throw new UsageError(`unknown command "${first}"\n\n${HELP.main}`);
+  if (!(COMMANDS as readonly string[]).includes(first))
+    throw new UsageError(`unknown command "${first}"\n\n${HELP.main}`);
   const command = first as Command;
   const { values, positionals } = parse(command, rest);
   if (values.help) {
@@ -73,9 +76,11 @@ function run(io: CliIo, argv: readonly string[]): number {
       const v = values as Record<string, string | boolean | undefined>;
       const scansText = v.scans as string | undefined;
       const scans = scansText === undefined ? undefined : Number(scansText);
-      if (scans !== undefined && !(Number.isInteger(scans) && scans >= 0)) throw new UsageError(`--scans "${scansText}" is not a number of scans`);
+      if (scans !== undefined && !(Number.isInteger(scans) && scans >= 0))
+        throw new UsageError(`--scans "${scansText}" is not a number of scans`);
       const profile = v.profile as string | undefined;
-      if (profile !== undefined && profile !== 'iec' && profile !== 'openplc') throw new UsageError(`--profile must be iec or openplc, not "${profile}"`);
+      if (profile !== undefined && profile !== 'iec' && profile !== 'openplc')
+        throw new UsageError(`--profile must be iec or openplc, not "${profile}"`);
       const { project } = loadInput(io, file);
       const inputs = v.inputs as string | undefined;
       return simulate(io, project, {
@@ -100,8 +105,12 @@ function run(io: CliIo, argv: readonly string[]): number {
       if (values.output) io.writeFile(values.output, json);
       else io.out(json);
       if (report) {
-        const pous = report.pous.map((p) => `${p.name} (${p.networks} network${p.networks === 1 ? '' : 's'})`).join(', ');
-        io.err(`imported ${report.pous.length} LD POU${report.pous.length === 1 ? '' : 's'}: ${pous || 'none'}; ${report.warnings.length} warning${report.warnings.length === 1 ? '' : 's'}\n`);
+        const pous = report.pous
+          .map((p) => `${p.name} (${p.networks} network${p.networks === 1 ? '' : 's'})`)
+          .join(', ');
+        io.err(
+          `imported ${report.pous.length} LD POU${report.pous.length === 1 ? '' : 's'}: ${pous || 'none'}; ${report.warnings.length} warning${report.warnings.length === 1 ? '' : 's'}\n`,
+        );
       }
       return 0;
     }

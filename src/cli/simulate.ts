@@ -21,7 +21,8 @@ export interface SimulateOptions {
 export function parseCycle(text: string): number {
   const t = text.trim();
   const ms = /^\d+(\.\d+)?$/.test(t) ? Number(t) : parseInterval(/^T(IME)?#/i.test(t) ? t : `T#${t}`);
-  if (ms === undefined || !(ms > 0)) throw new UsageError(`--cycle "${text}" is not a cycle time; write it like 10ms, 0.5s or T#100ms`);
+  if (ms === undefined || !(ms > 0))
+    throw new UsageError(`--cycle "${text}" is not a cycle time; write it like 10ms, 0.5s or T#100ms`);
   return ms;
 }
 
@@ -29,7 +30,9 @@ function programName(project: Project, wanted: string | undefined): string {
   if (wanted) return wanted;
   for (const t of project.tasks)
     for (const p of t.programs) {
-      const pou = project.pous.find((x) => x.name.toUpperCase() === p.pou.toUpperCase() && x.kind === 'PROGRAM');
+      const pou = project.pous.find(
+        (x) => x.name.toUpperCase() === p.pou.toUpperCase() && x.kind === 'PROGRAM',
+      );
       if (pou) return pou.name;
     }
   const first = project.pous.find((p) => p.kind === 'PROGRAM');
@@ -58,7 +61,10 @@ function typeOf(program: CompiledProgram, name: string): ElementaryType {
 
 export function simulate(io: CliIo, project: Project, opts: SimulateOptions): number {
   const pou = programName(project, opts.pou);
-  const { program, diagnostics } = compileProgram(project, { pou, ...(opts.profile ? { profile: opts.profile } : {}) });
+  const { program, diagnostics } = compileProgram(project, {
+    pou,
+    ...(opts.profile ? { profile: opts.profile } : {}),
+  });
   for (const d of diagnostics) if (d.severity === 'warning') io.err(`${formatDiagnostic(d)}\n`);
   if (!program) {
     for (const d of diagnostics) if (d.severity === 'error') io.err(`${formatDiagnostic(d)}\n`);
@@ -69,9 +75,17 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
   const cycleMs = opts.cycle !== undefined ? parseCycle(opts.cycle) : (task?.cycleMs ?? 10);
   const plc = createPlc(program, { cycleMs });
   const names = plc.variableNames();
-  const watch = opts.watch !== undefined ? opts.watch.split(',').map((s) => s.trim()).filter(Boolean) : defaultWatch(project, pou, names);
+  const watch =
+    opts.watch !== undefined
+      ? opts.watch
+          .split(',')
+          .map((s) => s.trim())
+          .filter(Boolean)
+      : defaultWatch(project, pou, names);
   const types = watch.map((w) => typeOf(program, w));
-  const stim: Stimulus | undefined = opts.stimulus ? parseStimulus(opts.stimulus.text, opts.stimulus.file) : undefined;
+  const stim: Stimulus | undefined = opts.stimulus
+    ? parseStimulus(opts.stimulus.text, opts.stimulus.file)
+    : undefined;
   const stimTypes = new Map<string, ElementaryType>();
   for (const c of stim?.columns ?? []) {
     try {
@@ -89,11 +103,14 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
       const row = stim.rows[next++]!;
       for (const [name, text] of row.values) {
         const parsed = parseValueText(stimTypes.get(name)!, text);
-        if (!parsed.ok) throw new UsageError(`${opts.stimulus!.file} line ${row.line}, column ${name}: ${parsed.message}`);
+        if (!parsed.ok)
+          throw new UsageError(`${opts.stimulus!.file} line ${row.line}, column ${name}: ${parsed.message}`);
         try {
           plc.write(name, parsed.value);
         } catch (e) {
-          throw new UsageError(`${opts.stimulus!.file} line ${row.line}, column ${name}: ${(e as Error).message}`);
+          throw new UsageError(
+            `${opts.stimulus!.file} line ${row.line}, column ${name}: ${(e as Error).message}`,
+          );
         }
       }
     }

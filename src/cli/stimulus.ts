@@ -18,12 +18,19 @@ export interface Stimulus {
 export function parseStimulus(text: string, file: string): Stimulus {
   let records: { record: string[]; info: { lines: number } }[];
   try {
-    records = parse(text, { skip_empty_lines: true, trim: true, info: true, relax_column_count: true, comment: '#' }) as unknown as typeof records;
+    records = parse(text, {
+      skip_empty_lines: true,
+      trim: true,
+      info: true,
+      relax_column_count: true,
+      comment: '#',
+    }) as unknown as typeof records;
   } catch (e) {
     throw new UsageError(`${file}: not a valid CSV file: ${(e as Error).message}`);
   }
   const head = records[0];
-  if (!head || head.record[0]?.toLowerCase() !== 'scan') throw new UsageError(`${file}: the first line must be the header scan,<variable>,<variable>...`);
+  if (!head || head.record[0]?.toLowerCase() !== 'scan')
+    throw new UsageError(`${file}: the first line must be the header scan,<variable>,<variable>...`);
   const columns = head.record.slice(1);
   columns.forEach((c, i) => {
     if (!c) throw new UsageError(`${file} line ${head.info.lines}: column ${i + 2} has no variable name`);
@@ -33,9 +40,16 @@ export function parseStimulus(text: string, file: string): Stimulus {
   for (const { record, info } of records.slice(1)) {
     const scanText = record[0] ?? '';
     const scan = Number(scanText);
-    if (!Number.isInteger(scan) || scan < 1) throw new UsageError(`${file} line ${info.lines}: scan "${scanText}" is not a scan number (1, 2, 3...)`);
-    if (scan < last) throw new UsageError(`${file} line ${info.lines}: scan ${scan} comes after scan ${last}; sort the rows by scan`);
-    if (record.length > columns.length + 1) throw new UsageError(`${file} line ${info.lines}: more cells than header columns`);
+    if (!Number.isInteger(scan) || scan < 1)
+      throw new UsageError(
+        `${file} line ${info.lines}: scan "${scanText}" is not a scan number (1, 2, 3...)`,
+      );
+    if (scan < last)
+      throw new UsageError(
+        `${file} line ${info.lines}: scan ${scan} comes after scan ${last}; sort the rows by scan`,
+      );
+    if (record.length > columns.length + 1)
+      throw new UsageError(`${file} line ${info.lines}: more cells than header columns`);
     last = scan;
     const values = new Map<string, string>();
     columns.forEach((c, i) => {

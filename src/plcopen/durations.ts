@@ -1,7 +1,15 @@
 // Task intervals as written by PLC tools: IEC `T#20ms` / `TIME#1s500ms`, CODESYS ISO-8601 `PT0.05S`,
 // legacy Beremiz `00:00:00.100000`.
 
-const UNIT_MS: Record<string, number> = { d: 86_400_000, h: 3_600_000, m: 60_000, s: 1000, ms: 1, us: 0.001, ns: 0.000001 };
+const UNIT_MS: Record<string, number> = {
+  d: 86_400_000,
+  h: 3_600_000,
+  m: 60_000,
+  s: 1000,
+  ms: 1,
+  us: 0.001,
+  ns: 0.000001,
+};
 
 /** Milliseconds of an interval text, or undefined when it is not a duration. */
 export function parseInterval(text: string): number | undefined {
@@ -20,7 +28,8 @@ export function parseInterval(text: string): number | undefined {
     }
     return any ? (iec[1] ? -total : total) : undefined;
   }
-  const iso = /^P(?:(\d+(?:\.\d+)?)D)?(?:T(?:(\d+(?:\.\d+)?)H)?(?:(\d+(?:\.\d+)?)M)?(?:(\d+(?:\.\d+)?)S)?)?$/i.exec(t);
+  const iso =
+    /^P(?:(\d+(?:\.\d+)?)D)?(?:T(?:(\d+(?:\.\d+)?)H)?(?:(\d+(?:\.\d+)?)M)?(?:(\d+(?:\.\d+)?)S)?)?$/i.exec(t);
   if (iso && t.length > 1 && t.toUpperCase() !== 'PT') {
     const [, d, h, m, s] = iso;
     return (Number(d ?? 0) * 86_400 + Number(h ?? 0) * 3600 + Number(m ?? 0) * 60 + Number(s ?? 0)) * 1000;

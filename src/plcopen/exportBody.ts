@@ -1,11 +1,9 @@
 // One network grid → PLCopen LD objects with real coordinates, relPosition on every pin and wire
 // points on every connection (first point at the consumer, last at the producer).
-import { boxLayout } from '../model/boxLayout';
-import type { BoxElement, CoilElement, ContactElement, LdElement } from '../model/elements';
+import type { CoilElement, ContactElement, LdElement } from '../model/elements';
 import type { Network } from '../model/project';
 import {
   BOX_MARGIN_X,
-  BOX_MARGIN_Y,
   CELL_W,
   COMMENT_H,
   ELEMENT_H,
@@ -18,6 +16,7 @@ import {
   type Point,
 } from './geometry';
 import { elementPins, gridGraph, type Source } from './gridGraph';
+import { boxPins, rel, writeBox } from './exportBlock';
 import { RS_CONTACT, RS_COIL, RS_NETWORK, preserved, type PreservedNetwork } from './types';
 import { escapeAttr, type XmlWriter } from './xml/write';
 
@@ -25,7 +24,7 @@ export interface IdAllocator {
   next(): number;
 }
 
-interface Placed {
+export interface Placed {
   readonly id: number;
   /** Absolute pin positions by pin name. */
   readonly pins: Map<string, Point>;
@@ -34,7 +33,6 @@ interface Placed {
 }
 
 const pt = (x: number, y: number): Point => ({ x, y });
-const rel = (w: XmlWriter, p: Point, origin: Point) => w.empty('relPosition', { x: p.x - origin.x, y: p.y - origin.y });
 
 function contactAttrs(el: ContactElement): Record<string, string | undefined> {
   return {
@@ -52,21 +50,6 @@ function coilAttrs(el: CoilElement): Record<string, string | undefined> {
   };
 }
 
-/** Pins of a box: from its standard layout, or from its operand names for blocks Rungsmith does not know. */
-function boxPins(el: BoxElement): { inputs: { name: string; off: number }[]; outputs: { name: string; off: number }[]; rows: number } {
-  const layout = boxLayout(el);
-  if (layout) {
-    return {
-      inputs: layout.inputs.map((p) => ({ name: p.name, off: p.rowOffset })),
-      outputs: layout.outputs.map((p) => ({ name: p.name, off: p.rowOffset })),
-      rows: layout.rows,
-    };
-  }
-  const inputs = Object.keys(el.inputs).map((name, off) => ({ name, off }));
-  const outputs = Object.keys(el.outputs).map((name, off) => ({ name, off }));
-  return { inputs, outputs, rows: Math.max(1, inputs.length, outputs.length) };
-}
-
 /** Writes the LD objects of one network starting at y = top; returns the y below it. */
 export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAllocator): number {
   const g = gridGraph(net);
@@ -78,7 +61,9 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
       w.formatted('content', net.comment);
       if (net.title) {
         w.open('addData', undefined, () =>
-          w.raw(`<data name="${RS_NETWORK}" handleUnknown="discard"><network xmlns="" title="${escapeAttr(net.title)}"/></data>`),
+          w.raw(
+            `<data name="${RS_NETWORK}" handleUnknown="discard"><network xmlns="" title="${escapeAttr(net.title)}"/></data>`,
+          ),
         );
       }
     });
@@ -86,8 +71,10 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
   }
   if (net.label !== undefined && net.label !== '') {
     const id = ids.next();
-    w.open('label', { localId: id, height: 20, width: Math.max(40, net.label.length * 8), label: net.label }, () =>
-      w.empty('position', { x: LEFT_X, y: top }),
+    w.open(
+      'label',
+      { localId: id, height: 20, width: Math.max(40, net.label.length * 8), label: net.label },
+      () => w.empty('position', { x: LEFT_X, y: top }),
     );
     top += 30;
   }
@@ -98,7 +85,8 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
   const railRows = new Set<number>();
   g.sources.forEach((pins, ei) =>
     pins.forEach((srcs, pin) => {
-      if (srcs.some((s) => s.kind === 'rail')) railRows.add(Math.round((placed[ei]!.pins.get(pin)!.y - top - ROW_H / 2) / ROW_H));
+      if (srcs.some((s) => s.kind === 'rail'))
+        railRows.add(Math.round((placed[ei]!.pins.get(pin)!.y - top - ROW_H / 2) / ROW_H));
     }),
   );
   if (!railRows.size) railRows.add(0);
@@ -107,7 +95,11 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
   w.open('leftPowerRail', { localId: railId, height, width: RAIL_W }, () => {
     w.empty('position', { x: railX, y: top });
     for (const r of [...railRows].sort((a, b) => a - b)) {
-      w.line(() => w.open('connectionPointOut', { formalParameter: '' }, () => w.empty('relPosition', { x: RAIL_W, y: rowY(0, r) })));
+      w.line(() =>
+        w.open('connectionPointOut', { formalParameter: '' }, () =>
+          w.empty('relPosition', { x: RAIL_W, y: rowY(0, r) }),
+        ),
+      );
     }
   });
 
@@ -116,22 +108,32 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
     const p = placed[s.el]!;
     return { ref: p.id, formal: p.formal?.(s.pin), at: p.pins.get(s.pin)! };
   };
-  const writeConnections = (consumer: Point, origin: Point, srcs: readonly Source[] | undefined, barX: number | undefined) =>
-    w.line(() => w.open('connectionPointIn', undefined, () => {
-      rel(w, consumer, origin);
-      for (const s of srcs ?? []) {
-        const { ref, formal, at } = sourcePoint(s, consumer);
-        w.open('connection', { refLocalId: ref, formalParameter: formal }, () => {
-          w.empty('position', { x: consumer.x, y: consumer.y });
-          if (at.y !== consumer.y) {
-            const xm = barX !== undefined && barX <= consumer.x && barX >= at.x ? barX : Math.round((consumer.x + at.x) / 2);
-            w.empty('position', { x: xm, y: consumer.y });
-            w.empty('position', { x: xm, y: at.y });
-          }
-          w.empty('position', { x: at.x, y: at.y });
-        });
-      }
-    }));
+  const writeConnections = (
+    consumer: Point,
+    origin: Point,
+    srcs: readonly Source[] | undefined,
+    barX: number | undefined,
+  ) =>
+    w.line(() =>
+      w.open('connectionPointIn', undefined, () => {
+        rel(w, consumer, origin);
+        for (const s of srcs ?? []) {
+          const { ref, formal, at } = sourcePoint(s, consumer);
+          w.open('connection', { refLocalId: ref, formalParameter: formal }, () => {
+            w.empty('position', { x: consumer.x, y: consumer.y });
+            if (at.y !== consumer.y) {
+              const xm =
+                barX !== undefined && barX <= consumer.x && barX >= at.x
+                  ? barX
+                  : Math.round((consumer.x + at.x) / 2);
+              w.empty('position', { x: xm, y: consumer.y });
+              w.empty('position', { x: xm, y: at.y });
+            }
+            w.empty('position', { x: at.x, y: at.y });
+          });
+        }
+      }),
+    );
   const barOf = (row: number, boundary: number): number | undefined => {
     const b = g.barBoundary.get(g.netOf(row, boundary));
     return b === undefined ? undefined : boundaryX(b);
@@ -152,8 +154,12 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
   w.open('rightPowerRail', { localId: ids.next(), height, width: RAIL_W }, () => {
     const origin = pt(boundaryX(net.cols), top);
     w.empty('position', { x: origin.x, y: origin.y });
-    for (const r of rightRows) writeConnections(pt(origin.x, rowY(top, r)), origin, g.rightRail.get(r), barOf(r, net.cols));
-    if (!rightRows.length) w.line(() => w.open('connectionPointIn', undefined, () => w.empty('relPosition', { x: 0, y: ROW_H / 2 })));
+    for (const r of rightRows)
+      writeConnections(pt(origin.x, rowY(top, r)), origin, g.rightRail.get(r), barOf(r, net.cols));
+    if (!rightRows.length)
+      w.line(() =>
+        w.open('connectionPointIn', undefined, () => w.empty('relPosition', { x: 0, y: ROW_H / 2 })),
+      );
   });
   return top + height;
 }
@@ -199,7 +205,12 @@ function placeElement(el: LdElement, top: number, ids: IdAllocator): Placed {
   }
 }
 
-type Connect = (consumer: Point, origin: Point, srcs: readonly Source[] | undefined, barX: number | undefined) => void;
+export type Connect = (
+  consumer: Point,
+  origin: Point,
+  srcs: readonly Source[] | undefined,
+  barX: number | undefined,
+) => void;
 
 function writeElement(
   w: XmlWriter,
@@ -226,11 +237,19 @@ function writeElement(
         w.open('block', { localId: p.id, width: CELL_W - 20, height: 30, typeName: 'NOT' }, () => {
           w.empty('position', { x: origin.x, y: origin.y });
           w.open('inputVariables', undefined, () =>
-            w.line(() => w.open('variable', { formalParameter: 'IN' }, () => connect(inP, origin, srcOf('in'), inBar('in')))),
+            w.line(() =>
+              w.open('variable', { formalParameter: 'IN' }, () =>
+                connect(inP, origin, srcOf('in'), inBar('in')),
+              ),
+            ),
           );
           w.empty('inOutVariables');
           w.open('outputVariables', undefined, () =>
-            w.line(() => w.open('variable', { formalParameter: 'OUT' }, () => w.open('connectionPointOut', undefined, () => rel(w, p.pins.get('out')!, origin)))),
+            w.line(() =>
+              w.open('variable', { formalParameter: 'OUT' }, () =>
+                w.open('connectionPointOut', undefined, () => rel(w, p.pins.get('out')!, origin)),
+              ),
+            ),
           );
           addData(`<data name="${RS_CONTACT}" handleUnknown="discard"><contact xmlns="" type="NOT"/></data>`);
         });
@@ -245,7 +264,11 @@ function writeElement(
         connect(inP, origin, srcOf('in'), inBar('in'));
         w.line(() => w.open('connectionPointOut', undefined, () => rel(w, p.pins.get('out')!, origin)));
         w.leaf('variable', el.variable);
-        addData(retentive ? `<data name="${RS_COIL}" handleUnknown="discard"><coil xmlns="" type="${el.coil}"/></data>` : undefined);
+        addData(
+          retentive
+            ? `<data name="${RS_COIL}" handleUnknown="discard"><coil xmlns="" type="${el.coil}"/></data>`
+            : undefined,
+        );
       });
       return;
     }
@@ -253,104 +276,24 @@ function writeElement(
     case 'return': {
       const inP = p.pins.get('in')!;
       const origin = pt(inP.x, inP.y - ELEMENT_H / 2);
-      w.open(el.kind, { localId: p.id, height: ELEMENT_H, width: CELL_W - 16, label: el.kind === 'jump' ? el.target : undefined }, () => {
-        w.empty('position', { x: origin.x, y: origin.y });
-        connect(inP, origin, srcOf('in'), inBar('in'));
-        addData();
-      });
+      w.open(
+        el.kind,
+        {
+          localId: p.id,
+          height: ELEMENT_H,
+          width: CELL_W - 16,
+          label: el.kind === 'jump' ? el.target : undefined,
+        },
+        () => {
+          w.empty('position', { x: origin.x, y: origin.y });
+          connect(inP, origin, srcOf('in'), inBar('in'));
+          addData();
+        },
+      );
       return;
     }
     case 'box':
       writeBox(w, el, p, ids, srcOf, inBar, connect, addData);
       return;
-  }
-}
-
-function writeBox(
-  w: XmlWriter,
-  el: BoxElement,
-  p: Placed,
-  ids: IdAllocator,
-  srcOf: (pin: string) => readonly Source[] | undefined,
-  inBar: (pin: string) => number | undefined,
-  connect: Connect,
-  addData: () => void,
-): void {
-  const bp = boxPins(el);
-  const first = bp.inputs[0] ?? bp.outputs[0];
-  const firstPin = first ? p.pins.get(first.name)! : pt(boundaryX(el.col) + BOX_MARGIN_X, 0);
-  const origin = pt(firstPin.x, firstPin.y - ROW_H / 2 - (first?.off ?? 0) * ROW_H + BOX_MARGIN_Y);
-  const width = 2 * CELL_W - 2 * BOX_MARGIN_X;
-  // Operands: literals and variables beside unwired pins become in/outVariables joined to the pin.
-  const operandIn = new Map<string, number>();
-  const operandOut: { pin: string; id: number; text: string }[] = [];
-  for (const i of bp.inputs) {
-    const text = el.inputs[i.name];
-    if (text !== undefined && text !== '' && !srcOf(i.name)) operandIn.set(i.name, ids.next());
-  }
-  for (const o of bp.outputs) {
-    const text = el.outputs[o.name];
-    if (text !== undefined && text !== '') operandOut.push({ pin: o.name, id: ids.next(), text });
-  }
-  w.open(
-    'block',
-    { localId: p.id, width, height: bp.rows * ROW_H - 2 * BOX_MARGIN_Y, typeName: el.blockType, instanceName: el.instance || undefined },
-    () => {
-      w.empty('position', { x: origin.x, y: origin.y });
-      w.open('inputVariables', undefined, () => {
-        for (const i of bp.inputs) {
-          const at = p.pins.get(i.name)!;
-          w.line(() => w.open('variable', { formalParameter: i.name }, () => {
-            const opId = operandIn.get(i.name);
-            if (opId !== undefined) {
-              w.open('connectionPointIn', undefined, () => {
-                rel(w, at, origin);
-                w.open('connection', { refLocalId: opId }, () => {
-                  w.empty('position', { x: at.x, y: at.y });
-                  w.empty('position', { x: at.x - 10, y: at.y });
-                });
-              });
-            } else connect(at, origin, srcOf(i.name), inBar(i.name));
-          }));
-        }
-      });
-      w.empty('inOutVariables');
-      w.open('outputVariables', undefined, () => {
-        for (const o of bp.outputs) {
-          w.line(() => w.open('variable', { formalParameter: o.name }, () => w.open('connectionPointOut', undefined, () => rel(w, p.pins.get(o.name)!, origin))));
-        }
-      });
-      addData();
-    },
-  );
-  for (const i of bp.inputs) {
-    const opId = operandIn.get(i.name);
-    if (opId === undefined) continue;
-    const at = p.pins.get(i.name)!;
-    const vw = Math.max(30, el.inputs[i.name]!.length * 7);
-    const vo = pt(at.x - 10 - vw, at.y - 10);
-    w.open('inVariable', { localId: opId, height: 20, width: vw, negated: 'false' }, () => {
-      w.empty('position', { x: vo.x, y: vo.y });
-      w.line(() => w.open('connectionPointOut', undefined, () => w.empty('relPosition', { x: vw, y: 10 })));
-      w.leaf('expression', el.inputs[i.name]!);
-    });
-  }
-  for (const o of operandOut) {
-    const at = p.pins.get(o.pin)!;
-    const vw = Math.max(30, o.text.length * 7);
-    const vo = pt(at.x + 10, at.y - 10);
-    w.open('outVariable', { localId: o.id, height: 20, width: vw, negated: 'false' }, () => {
-      w.empty('position', { x: vo.x, y: vo.y });
-      w.line(() =>
-        w.open('connectionPointIn', undefined, () => {
-          w.empty('relPosition', { x: 0, y: 10 });
-          w.open('connection', { refLocalId: p.id, formalParameter: o.pin }, () => {
-            w.empty('position', { x: vo.x, y: at.y });
-            w.empty('position', { x: at.x, y: at.y });
-          });
-        }),
-      );
-      w.leaf('expression', o.text);
-    });
   }
 }

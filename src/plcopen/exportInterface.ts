@@ -29,10 +29,13 @@ export function writeType(w: XmlWriter, type: string): void {
 export function writeVariable(w: XmlWriter, v: Variable, impliedRetain: boolean): void {
   w.open('variable', { name: v.name, address: v.location || undefined }, () => {
     w.open('type', undefined, () => writeType(w, v.type));
-    if (v.initial !== undefined && v.initial !== '') w.open('initialValue', undefined, () => w.empty('simpleValue', { value: v.initial }));
+    if (v.initial !== undefined && v.initial !== '')
+      w.open('initialValue', undefined, () => w.empty('simpleValue', { value: v.initial }));
     if (impliedRetain) {
       w.open('addData', undefined, () =>
-        w.open('data', { name: RS_VARIABLE, handleUnknown: 'discard' }, () => w.empty('variable', { xmlns: '', retainByCoil: 'true' })),
+        w.open('data', { name: RS_VARIABLE, handleUnknown: 'discard' }, () =>
+          w.empty('variable', { xmlns: '', retainByCoil: 'true' }),
+        ),
       );
     }
     if (v.comment) w.formatted('documentation', v.comment);
@@ -44,21 +47,31 @@ export function writeVariable(w: XmlWriter, v: Variable, impliedRetain: boolean)
  * coils: they go in a RETAIN list so other tools keep them over a warm restart as Rungsmith does,
  * marked so that an import gives back the original declaration.
  */
-export function writeVarLists(w: XmlWriter, vars: readonly Variable[], retainedByCoil: ReadonlySet<string>, globalList = false): void {
+export function writeVarLists(
+  w: XmlWriter,
+  vars: readonly Variable[],
+  retainedByCoil: ReadonlySet<string>,
+  globalList = false,
+): void {
   let i = 0;
   while (i < vars.length) {
     const first = vars[i]!;
     const implied = (v: Variable) => !v.retain && retainedByCoil.has(v.name.toUpperCase());
-    const key = (v: Variable) => `${globalList ? 'global' : v.varClass}|${v.retain || implied(v)}|${!!v.constant}`;
+    const key = (v: Variable) =>
+      `${globalList ? 'global' : v.varClass}|${v.retain || implied(v)}|${!!v.constant}`;
     const k = key(first);
     let j = i;
     while (j < vars.length && key(vars[j]!) === k) j++;
     const retain = first.retain || implied(first);
     const list = globalList ? 'globalVars' : LIST_OF[first.varClass];
     const group = vars.slice(i, j);
-    w.open(list, { constant: first.constant ? 'true' : undefined, retain: retain ? 'true' : undefined }, () => {
-      for (const v of group) writeVariable(w, v, implied(v));
-    });
+    w.open(
+      list,
+      { constant: first.constant ? 'true' : undefined, retain: retain ? 'true' : undefined },
+      () => {
+        for (const v of group) writeVariable(w, v, implied(v));
+      },
+    );
     i = j;
   }
 }

@@ -21,7 +21,8 @@ function retainedByCoil(pou: Pou): Set<string> {
   const out = new Set<string>();
   for (const net of pou.networks)
     for (const el of net.elements)
-      if (el.kind === 'coil' && (el.coil === 'M' || el.coil === 'SM' || el.coil === 'RM')) out.add(el.variable.trim().toUpperCase());
+      if (el.kind === 'coil' && (el.coil === 'M' || el.coil === 'SM' || el.coil === 'RM'))
+        out.add(el.variable.trim().toUpperCase());
   return out;
 }
 
@@ -36,7 +37,8 @@ function splitRetainedByCoil(pou: Pou, globals: Set<string>): Set<string> {
 function writePou(w: XmlWriter, pou: Pou, local: ReadonlySet<string>): void {
   w.open('pou', { name: pou.name, pouType: POU_TYPE[pou.kind] }, () => {
     w.open('interface', undefined, () => {
-      if (pou.kind === 'FUNCTION') w.open('returnType', undefined, () => writeType(w, pou.returnType || 'BOOL'));
+      if (pou.kind === 'FUNCTION')
+        w.open('returnType', undefined, () => writeType(w, pou.returnType || 'BOOL'));
       writeVarLists(w, pou.variables, local);
     });
     w.open('body', undefined, () => {
@@ -62,20 +64,32 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
   const now = isoSeconds(options.now ?? new Date());
   const keep = preserved<PreservedProject>(project.extensions);
   const w = new XmlWriter();
-  const ns: Record<string, string> = { xmlns: TC6_0201, 'xmlns:xhtml': XHTML_NS, 'xmlns:xsd': 'http://www.w3.org/2001/XMLSchema' };
-  for (const [prefix, uri] of Object.entries(keep?.namespaces ?? {})) if (!(`xmlns:${prefix}` in ns)) ns[`xmlns:${prefix}`] = uri;
+  const ns: Record<string, string> = {
+    xmlns: TC6_0201,
+    'xmlns:xhtml': XHTML_NS,
+    'xmlns:xsd': 'http://www.w3.org/2001/XMLSchema',
+  };
+  for (const [prefix, uri] of Object.entries(keep?.namespaces ?? {}))
+    if (!(`xmlns:${prefix}` in ns)) ns[`xmlns:${prefix}`] = uri;
   const globalsByCoil = new Set<string>();
   const localByCoil = project.pous.map((pou) => splitRetainedByCoil(pou, globalsByCoil));
   w.open('project', ns, () => {
-    w.empty('fileHeader', { companyName: 'Rungsmith', productName: project.name || 'Untitled', productVersion: '1', creationDateTime: now });
+    w.empty('fileHeader', {
+      companyName: 'Rungsmith',
+      productName: project.name || 'Untitled',
+      productVersion: '1',
+      creationDateTime: now,
+    });
     w.open('contentHeader', { name: project.name || 'Untitled', modificationDateTime: now }, () => {
       if (project.description) w.leaf('Comment', project.description);
       w.open('coordinateInfo', undefined, () => {
-        for (const lang of ['fbd', 'ld', 'sfc']) w.open(lang, undefined, () => w.empty('scaling', { x: SCALING, y: SCALING }));
+        for (const lang of ['fbd', 'ld', 'sfc'])
+          w.open(lang, undefined, () => w.empty('scaling', { x: SCALING, y: SCALING }));
       });
     });
     w.open('types', undefined, () => {
-      if (keep?.dataTypes?.length) w.open('dataTypes', undefined, () => keep.dataTypes!.forEach((d) => w.raw(d)));
+      if (keep?.dataTypes?.length)
+        w.open('dataTypes', undefined, () => keep.dataTypes!.forEach((d) => w.raw(d)));
       else w.empty('dataTypes');
       w.open('pous', undefined, () => {
         project.pous.forEach((pou, i) => writePou(w, pou, localByCoil[i]!));
@@ -87,9 +101,13 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
         w.open('configuration', { name: keep?.configuration || 'Config0' }, () => {
           w.open('resource', { name: keep?.resource || 'Res0' }, () => {
             project.tasks.forEach((t) =>
-              w.open('task', { name: t.name, priority: t.priority, interval: formatInterval(t.cycleMs) }, () => {
-                for (const p of t.programs) w.empty('pouInstance', { name: p.instance, typeName: p.pou });
-              }),
+              w.open(
+                'task',
+                { name: t.name, priority: t.priority, interval: formatInterval(t.cycleMs) },
+                () => {
+                  for (const p of t.programs) w.empty('pouInstance', { name: p.instance, typeName: p.pou });
+                },
+              ),
             );
           });
           if (project.globals.length) writeVarLists(w, project.globals, globalsByCoil, true);

@@ -5,7 +5,8 @@ import { boxLayout } from '../model/boxLayout';
 import type { LdElement } from '../model/elements';
 import type { Network } from '../model/project';
 
-export type Source = { readonly kind: 'rail' } | { readonly kind: 'pin'; readonly el: number; readonly pin: string };
+export type Source =
+  { readonly kind: 'rail' } | { readonly kind: 'pin'; readonly el: number; readonly pin: string };
 
 export interface PinPoint {
   readonly pin: string;
@@ -18,7 +19,10 @@ export function elementPins(el: LdElement): { inputs: PinPoint[]; outputs: PinPo
   switch (el.kind) {
     case 'contact':
     case 'coil':
-      return { inputs: [{ pin: 'in', row: el.row, boundary: el.col }], outputs: [{ pin: 'out', row: el.row, boundary: el.col + 1 }] };
+      return {
+        inputs: [{ pin: 'in', row: el.row, boundary: el.col }],
+        outputs: [{ pin: 'out', row: el.row, boundary: el.col + 1 }],
+      };
     case 'jump':
     case 'return':
       return { inputs: [{ pin: 'in', row: el.row, boundary: el.col }], outputs: [] };
@@ -29,7 +33,11 @@ export function elementPins(el: LdElement): { inputs: PinPoint[]; outputs: PinPo
       if (!layout) return { inputs: [], outputs: [] };
       return {
         inputs: layout.inputs.map((p) => ({ pin: p.name, row: el.row + p.rowOffset, boundary: el.col })),
-        outputs: layout.outputs.map((p) => ({ pin: p.name, row: el.row + p.rowOffset, boundary: el.col + layout.cols })),
+        outputs: layout.outputs.map((p) => ({
+          pin: p.name,
+          row: el.row + p.rowOffset,
+          boundary: el.col + layout.cols,
+        })),
       };
     }
   }
@@ -65,8 +73,10 @@ export function gridGraph(net: Network): GridGraph {
   };
   const inGrid = (r: number, b: number) => r >= 0 && r < net.rows && b >= 0 && b <= net.cols;
   for (let r = 1; r < net.rows; r++) union(0, r * W); // the left rail joins every row at boundary 0
-  for (const el of net.elements) if (el.kind === 'link' && inGrid(el.row, el.col + 1)) union(el.row * W + el.col, el.row * W + el.col + 1);
-  for (const v of net.vlinks) if (inGrid(v.row + 1, v.boundary)) union(v.row * W + v.boundary, (v.row + 1) * W + v.boundary);
+  for (const el of net.elements)
+    if (el.kind === 'link' && inGrid(el.row, el.col + 1)) union(el.row * W + el.col, el.row * W + el.col + 1);
+  for (const v of net.vlinks)
+    if (inGrid(v.row + 1, v.boundary)) union(v.row * W + v.boundary, (v.row + 1) * W + v.boundary);
 
   const producers = new Map<number, Source[]>();
   const railNet = net.rows > 0 ? find(0) : -1;
@@ -101,6 +111,7 @@ export function gridGraph(net: Network): GridGraph {
     if (list && id !== railNet) rightRail.set(r, list);
   }
   const barBoundary = new Map<number, number>();
-  for (const v of net.vlinks) if (inGrid(v.row + 1, v.boundary)) barBoundary.set(find(v.row * W + v.boundary), v.boundary);
+  for (const v of net.vlinks)
+    if (inGrid(v.row + 1, v.boundary)) barBoundary.set(find(v.row * W + v.boundary), v.boundary);
   return { sources, rightRail, netOf: (r, b) => find(r * W + b), barBoundary };
 }

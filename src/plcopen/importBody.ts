@@ -4,7 +4,8 @@ import type { LdElement } from '../model/elements';
 import { newNetwork } from '../model/factory';
 import type { Network } from '../model/project';
 import { gridGraph, type Source } from './gridGraph';
-import { prepareLayout, type LaidOut } from './layout';
+import { prepareLayout } from './layout';
+import type { LaidOut } from './layoutShapes';
 import { buildLdGraph, type Finding, type GNode, type GSource } from './ldGraph';
 import { splitSharedSources } from './ldNormalize';
 import { readLdObjects, type RawObject } from './ldObjects';
@@ -33,7 +34,11 @@ function compareKeys(a: readonly number[], b: readonly number[]): number {
 }
 
 /** Imports one LD body into networks. Throws LdGraphError for broken references. */
-export function importLdBody(body: XmlElement, raw: (el: XmlElement) => string, warn: (f: Finding) => void): BodyResult {
+export function importLdBody(
+  body: XmlElement,
+  raw: (el: XmlElement) => string,
+  warn: (f: Finding) => void,
+): BodyResult {
   const objects = readLdObjects(body);
   const graph = buildLdGraph(objects, raw, warn);
   splitSharedSources(graph.nodes, warn);
@@ -62,12 +67,20 @@ export function importLdBody(body: XmlElement, raw: (el: XmlElement) => string, 
   const keyOf = (objs: readonly { obj: RawObject; order: number }[]): number[] => {
     const eo = Math.min(...objs.map((o) => (o.obj.executionOrderId > 0 ? o.obj.executionOrderId : Infinity)));
     if (eo !== Infinity) return [0, eo];
-    if (hasGeometry) return [1, Math.min(...objs.map((o) => o.obj.pos.y)), Math.min(...objs.map((o) => o.obj.pos.x))];
+    if (hasGeometry)
+      return [1, Math.min(...objs.map((o) => o.obj.pos.y)), Math.min(...objs.map((o) => o.obj.pos.x))];
     return [1, Math.min(...objs.map((o) => o.order))];
   };
   const orderOf = new Map(objects.map((o, i) => [o, i]));
   const groups: Group[] = [];
-  for (const list of comps.values()) groups.push({ nodes: list, kind: 'network', key: keyOf(list.map((i) => ({ obj: nodes[i]!.obj, order: orderOf.get(nodes[i]!.obj) ?? nodes[i]!.order }))) });
+  for (const list of comps.values())
+    groups.push({
+      nodes: list,
+      kind: 'network',
+      key: keyOf(
+        list.map((i) => ({ obj: nodes[i]!.obj, order: orderOf.get(nodes[i]!.obj) ?? nodes[i]!.order })),
+      ),
+    });
   const single = (o: RawObject, kind: Group['kind'], lift: number): Group => {
     const k = keyOf([{ obj: o, order: orderOf.get(o)! }]);
     // A label or comment drawn beside the first row of its network still belongs to it.
@@ -144,9 +157,19 @@ export function importLdBody(body: XmlElement, raw: (el: XmlElement) => string, 
         ...last,
         comment: [last.comment, extra.comment].filter(Boolean).join('\n'),
         title: last.title || extra.title,
-        ...(pendingVendor.length ? { extensions: { plcopen: { ...(last.extensions?.plcopen as object), objects: pendingVendor } } } : {}),
+        ...(pendingVendor.length
+          ? { extensions: { plcopen: { ...(last.extensions?.plcopen as object), objects: pendingVendor } } }
+          : {}),
       });
-    } else networks.push(newNetwork({ rows: 1, cols, ...extra, ...(pendingVendor.length ? { extensions: { plcopen: keep } } : {}) }));
+    } else
+      networks.push(
+        newNetwork({
+          rows: 1,
+          cols,
+          ...extra,
+          ...(pendingVendor.length ? { extensions: { plcopen: keep } } : {}),
+        }),
+      );
   }
   return { networks };
 }
@@ -164,7 +187,11 @@ function commentsOf(list: readonly RawObject[]): { comment: string; title: strin
   return { comment: texts.join('\n'), title };
 }
 
-function elementData(nodes: readonly GNode[], members: readonly number[], laid: LaidOut): Pick<PreservedNetwork, 'elementData'> {
+function elementData(
+  nodes: readonly GNode[],
+  members: readonly number[],
+  laid: LaidOut,
+): Pick<PreservedNetwork, 'elementData'> {
   const out: Record<string, readonly string[]> = {};
   for (const i of members) {
     const d = nodes[i]!.data;
@@ -190,7 +217,12 @@ const describe = (n: GNode): string => {
 };
 
 /** Checks that the grid draws exactly the wiring of the file; reports elements whose inputs differ. */
-function verify(nodes: readonly GNode[], members: readonly number[], laid: LaidOut, warn: (f: Finding) => void): void {
+function verify(
+  nodes: readonly GNode[],
+  members: readonly number[],
+  laid: LaidOut,
+  warn: (f: Finding) => void,
+): void {
   const net = newNetwork({ rows: laid.rows, cols: laid.cols, elements: laid.elements, vlinks: laid.vlinks });
   const g = gridGraph(net);
   const indexOfElement = new Map<string, number>();
@@ -213,7 +245,9 @@ function verify(nodes: readonly GNode[], members: readonly number[], laid: LaidO
     const drawn = g.sources.get(ei) ?? new Map<string, Source[]>();
     const pins = new Set([...n.inputs.keys(), ...drawn.keys()]);
     for (const pin of pins) {
-      const want = new Set((n.inputs.get(pin) ?? []).filter((s) => s.kind === 'rail' || memberSet.has(s.node)).map(key));
+      const want = new Set(
+        (n.inputs.get(pin) ?? []).filter((s) => s.kind === 'rail' || memberSet.has(s.node)).map(key),
+      );
       const got = new Set((drawn.get(pin) ?? []).map(key));
       if (want.size !== got.size || [...want].some((k) => !got.has(k))) {
         warn({

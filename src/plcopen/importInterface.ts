@@ -24,7 +24,14 @@ export function readType(typeEl: XmlElement | undefined, warn: Warn): string {
   if (!t) return 'BOOL';
   if (t.name === 'derived') return t.attrs.name ?? 'BOOL';
   if (TYPE_ALIASES[t.name]) return TYPE_ALIASES[t.name]!;
-  if (t.name === 'array' || t.name === 'struct' || t.name === 'enum' || t.name === 'subrangeSigned' || t.name === 'subrangeUnsigned' || t.name === 'pointer') {
+  if (
+    t.name === 'array' ||
+    t.name === 'struct' ||
+    t.name === 'enum' ||
+    t.name === 'subrangeSigned' ||
+    t.name === 'subrangeUnsigned' ||
+    t.name === 'pointer'
+  ) {
     warn(`a ${t.name} type is not supported by Rungsmith; the variable keeps the name of its base type`, t);
     const base = descendType(t);
     return base ?? t.name.toUpperCase();
@@ -54,14 +61,19 @@ export function readVarLists(parent: XmlElement, warn: Warn, only?: readonly str
   for (const list of parent.children) {
     const cls = CLASS_OF[list.name];
     if (cls === undefined || (only && !only.includes(list.name))) {
-      if (list.name === 'accessVars') warn('VAR_ACCESS declarations are not supported and were dropped', list);
+      if (list.name === 'accessVars')
+        warn('VAR_ACCESS declarations are not supported and were dropped', list);
       continue;
     }
     const retain = list.attrs.retain === 'true' || list.attrs.persistent === 'true';
     const constant = list.attrs.constant === 'true';
     for (const v of childrenNamed(list, 'variable')) {
       const add = child(v, 'addData');
-      const byCoil = add ? childrenNamed(add, 'data').some((d) => d.attrs.name === RS_VARIABLE && d.children[0]?.attrs.retainByCoil === 'true') : false;
+      const byCoil = add
+        ? childrenNamed(add, 'data').some(
+            (d) => d.attrs.name === RS_VARIABLE && d.children[0]?.attrs.retainByCoil === 'true',
+          )
+        : false;
       const doc = child(v, 'documentation');
       const init = initialValue(v, warn);
       out.push({
@@ -92,7 +104,9 @@ export function readInstances(instances: XmlElement | undefined, warn: Warn): In
   const globals: Variable[] = [];
   let configuration: string | undefined;
   let resource: string | undefined;
-  const configs = instances ? childrenNamed(child(instances, 'configurations') ?? instances, 'configuration') : [];
+  const configs = instances
+    ? childrenNamed(child(instances, 'configurations') ?? instances, 'configuration')
+    : [];
   for (const conf of configs) {
     configuration ??= conf.attrs.name;
     globals.push(...readVarLists(conf, warn, ['globalVars']));
@@ -103,17 +117,28 @@ export function readInstances(instances: XmlElement | undefined, warn: Warn): In
         const interval = t.attrs.interval;
         if (interval) {
           const ms = parseInterval(interval);
-          if (ms === undefined || ms <= 0) warn(`task ${t.attrs.name}: interval "${interval}" is not a duration; using 10 ms`, t);
+          if (ms === undefined || ms <= 0)
+            warn(`task ${t.attrs.name}: interval "${interval}" is not a duration; using 10 ms`, t);
           else cycleMs = ms;
-        } else warn(`task ${t.attrs.name}: event task (single="${t.attrs.single ?? ''}") runs cyclically every 10 ms in Rungsmith`, t);
+        } else
+          warn(
+            `task ${t.attrs.name}: event task (single="${t.attrs.single ?? ''}") runs cyclically every 10 ms in Rungsmith`,
+            t,
+          );
         const programs = childrenNamed(t, 'pouInstance')
           .map((pi) => ({ instance: pi.attrs.name ?? '', pou: pi.attrs.typeName || pi.attrs.type || '' }))
           .filter((p) => {
-            if (!p.pou) warn(`task ${t.attrs.name}: program instance "${p.instance}" names no POU; dropped`, t);
+            if (!p.pou)
+              warn(`task ${t.attrs.name}: program instance "${p.instance}" names no POU; dropped`, t);
             return p.pou && p.instance;
           });
         const priority = Number.parseInt(t.attrs.priority ?? '0', 10);
-        tasks.push({ name: t.attrs.name ?? `task${tasks.length}`, cycleMs, priority: Number.isFinite(priority) ? priority : 0, programs });
+        tasks.push({
+          name: t.attrs.name ?? `task${tasks.length}`,
+          cycleMs,
+          priority: Number.isFinite(priority) ? priority : 0,
+          programs,
+        });
       }
       for (const pi of childrenNamed(res, 'pouInstance'))
         warn(`program instance "${pi.attrs.name}" is not attached to a task; it is not run`, pi);

@@ -1,7 +1,15 @@
 // PLCopen TC6 XML (v2.01, v2.0, legacy v1.0) → a Rungsmith project plus a report of what changed.
 // Never throws: bad input gives located errors.
 import { newId, type PouId } from '../model/ids';
-import { PROJECT_FORMAT, PROJECT_VERSION, type Pou, type PouKind, type Project, type Task, type Variable } from '../model/project';
+import {
+  PROJECT_FORMAT,
+  PROJECT_VERSION,
+  type Pou,
+  type PouKind,
+  type Project,
+  type Task,
+  type Variable,
+} from '../model/project';
 import { importLdBody } from './importBody';
 import { readInstances, readType, readVarLists } from './importInterface';
 import { LdGraphError, type Finding } from './ldGraph';
@@ -16,9 +24,21 @@ import {
   type PreservedPou,
   type PreservedProject,
 } from './types';
-import { child, childrenNamed, deepText, lineLocator, parseXml, XmlSyntaxError, type XmlElement } from './xml/parse';
+import {
+  child,
+  childrenNamed,
+  deepText,
+  lineLocator,
+  parseXml,
+  XmlSyntaxError,
+  type XmlElement,
+} from './xml/parse';
 
-const KIND: Record<string, PouKind> = { program: 'PROGRAM', functionBlock: 'FUNCTION_BLOCK', function: 'FUNCTION' };
+const KIND: Record<string, PouKind> = {
+  program: 'PROGRAM',
+  functionBlock: 'FUNCTION_BLOCK',
+  function: 'FUNCTION',
+};
 const LANGUAGES = ['LD', 'ST', 'IL', 'FBD', 'SFC'];
 
 class ImportFailure extends Error {
@@ -33,7 +53,8 @@ export function importPlcopen(xmlText: string): ImportResult {
     return importChecked(xmlText);
   } catch (e) {
     if (e instanceof ImportFailure) return { ok: false, errors: [e.issue] };
-    if (e instanceof XmlSyntaxError) return { ok: false, errors: [{ line: e.line, message: `not well-formed XML: ${e.message}` }] };
+    if (e instanceof XmlSyntaxError)
+      return { ok: false, errors: [{ line: e.line, message: `not well-formed XML: ${e.message}` }] };
     return { ok: false, errors: [{ message: `the file could not be imported: ${(e as Error).message}` }] };
   }
 }
@@ -42,35 +63,63 @@ function importChecked(text: string): ImportResult {
   const root = parseXml(text);
   const lineOf = lineLocator(text);
   const raw = (el: XmlElement) => rawElement(text, el);
-  const at = (el: XmlElement | undefined) => (el ? { line: lineOf(el.offset), element: el.name, ...(el.attrs.localId ? { localId: el.attrs.localId } : {}) } : {});
+  const at = (el: XmlElement | undefined) =>
+    el
+      ? {
+          line: lineOf(el.offset),
+          element: el.name,
+          ...(el.attrs.localId ? { localId: el.attrs.localId } : {}),
+        }
+      : {};
   const warnings: ImportIssue[] = [];
   let currentPou: string | undefined;
-  const warn = (message: string, el?: XmlElement) => warnings.push({ ...at(el), ...(currentPou ? { pou: currentPou } : {}), message });
+  const warn = (message: string, el?: XmlElement) =>
+    warnings.push({ ...at(el), ...(currentPou ? { pou: currentPou } : {}), message });
 
   if (root.name !== 'project') {
-    throw new ImportFailure({ ...at(root), message: `not a PLCopen XML file: the root element is <${root.qname}>, expected <project>` });
+    throw new ImportFailure({
+      ...at(root),
+      message: `not a PLCopen XML file: the root element is <${root.qname}>, expected <project>`,
+    });
   }
   const ns = root.attrs.xmlns ?? '';
   if (ns === TC6_V10) warn('legacy PLCopen TC6 v1.0 file: read as v2.01 (as Beremiz does)', root);
   else if (ns === TC6_0200) warn('PLCopen TC6 v2.0 namespace (CODESYS/TwinCAT): read as v2.01', root);
   else if (ns !== TC6_0201) {
-    if (ns) throw new ImportFailure({ ...at(root), message: `not a PLCopen TC6 file: unknown namespace "${ns}" (expected ${TC6_0201})` });
+    if (ns)
+      throw new ImportFailure({
+        ...at(root),
+        message: `not a PLCopen TC6 file: unknown namespace "${ns}" (expected ${TC6_0201})`,
+      });
     warn('the file declares no PLCopen namespace; read as TC6 v2.01', root);
   }
   const fileHeader = child(root, 'fileHeader');
   const contentHeader = child(root, 'contentHeader');
   const producer = [fileHeader?.attrs.companyName, fileHeader?.attrs.productName].filter(Boolean).join(' / ');
   const types = child(root, 'types');
-  if (!types) throw new ImportFailure({ ...at(root), message: 'the <project> has no <types> element (no POUs)' });
+  if (!types)
+    throw new ImportFailure({ ...at(root), message: 'the <project> has no <types> element (no POUs)' });
 
   const namespaces: Record<string, string> = {};
   for (const [k, v] of Object.entries(root.attrs)) {
     if (!k.startsWith('xmlns:')) continue;
     const prefix = k.slice(6);
-    if (v !== XHTML_NS && v !== TC6_0201 && v !== TC6_0200 && v !== TC6_V10 && prefix !== 'xsd' && prefix !== 'xhtml') namespaces[prefix] = v;
+    if (
+      v !== XHTML_NS &&
+      v !== TC6_0201 &&
+      v !== TC6_0200 &&
+      v !== TC6_V10 &&
+      prefix !== 'xsd' &&
+      prefix !== 'xhtml'
+    )
+      namespaces[prefix] = v;
   }
 
-  const keepProject: { addData: string[]; dataTypes: string[]; otherPous: string[] } = { addData: [], dataTypes: [], otherPous: [] };
+  const keepProject: { addData: string[]; dataTypes: string[]; otherPous: string[] } = {
+    addData: [],
+    dataTypes: [],
+    otherPous: [],
+  };
   const dataTypes = child(types, 'dataTypes');
   for (const dt of dataTypes?.children ?? []) {
     keepProject.dataTypes.push(raw(dt));
@@ -88,7 +137,8 @@ function importChecked(text: string): ImportResult {
       reportPous.push({ name: pouName, networks: networks.length, from });
       return networks;
     } catch (e) {
-      if (e instanceof LdGraphError) throw new ImportFailure({ ...at(e.obj?.xml ?? bodyLd), pou: pouName, message: e.message });
+      if (e instanceof LdGraphError)
+        throw new ImportFailure({ ...at(e.obj?.xml ?? bodyLd), pou: pouName, message: e.message });
       throw e;
     }
   };
@@ -101,7 +151,12 @@ function importChecked(text: string): ImportResult {
     currentPou = name;
     const kind = KIND[pouEl.attrs.pouType ?? ''];
     if (!name) throw new ImportFailure({ ...at(pouEl), message: '<pou> without a name' });
-    if (!kind) throw new ImportFailure({ ...at(pouEl), pou: name, message: `POU "${name}" has an unknown pouType "${pouEl.attrs.pouType ?? ''}"` });
+    if (!kind)
+      throw new ImportFailure({
+        ...at(pouEl),
+        pou: name,
+        message: `POU "${name}" has an unknown pouType "${pouEl.attrs.pouType ?? ''}"`,
+      });
     const iface = child(pouEl, 'interface');
     const variables: Variable[] = iface ? readVarLists(iface, warn) : [];
     const returnType = kind === 'FUNCTION' ? readType(child(iface ?? pouEl, 'returnType'), warn) : undefined;
@@ -111,20 +166,41 @@ function importChecked(text: string): ImportResult {
     const comment = doc ? deepText(doc).trim() : '';
     const addData = child(pouEl, 'addData');
     const pouData = addData ? childrenNamed(addData, 'data') : [];
-    for (const d of pouData) if (d.attrs.handleUnknown === 'discard') warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
-    const keepPou: PreservedPou = { addData: pouData.filter((d) => d.attrs.handleUnknown !== 'discard').map(raw) };
+    for (const d of pouData)
+      if (d.attrs.handleUnknown === 'discard')
+        warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
+    const keepPou: PreservedPou = {
+      addData: pouData.filter((d) => d.attrs.handleUnknown !== 'discard').map(raw),
+    };
     const base = { kind, language: 'LD' as const, comment, variables, ...(returnType ? { returnType } : {}) };
-    if (!lang) throw new ImportFailure({ ...at(pouEl), pou: name, message: `POU "${name}" has no body in a known language (LD, ST, IL, FBD, SFC)` });
+    if (!lang)
+      throw new ImportFailure({
+        ...at(pouEl),
+        pou: name,
+        message: `POU "${name}" has no body in a known language (LD, ST, IL, FBD, SFC)`,
+      });
     if (lang.name === 'LD') {
       const networks = importLd(name, lang, 'POU body');
-      pous.push({ id: newId<'PouId'>('p') as PouId, name, ...base, networks, ...(keepPou.addData?.length ? { extensions: { plcopen: keepPou } } : {}) });
+      pous.push({
+        id: newId<'PouId'>('p') as PouId,
+        name,
+        ...base,
+        networks,
+        ...(keepPou.addData?.length ? { extensions: { plcopen: keepPou } } : {}),
+      });
     } else {
       if (ns === TC6_V10 && lang.name !== 'ST' && lang.name !== 'IL') {
         // v1.0 graphical bodies differ from v2.01 (SFC actions, FBD blocks): they cannot be carried over.
-        warn(`POU "${name}" is written in ${lang.name} in the legacy v1.0 format: it cannot be carried into a v2.01 export and was dropped`, pouEl);
+        warn(
+          `POU "${name}" is written in ${lang.name} in the legacy v1.0 format: it cannot be carried into a v2.01 export and was dropped`,
+          pouEl,
+        );
       } else {
         keepProject.otherPous.push(ns === TC6_V10 ? upgradeLegacyText(raw(pouEl)) : raw(pouEl));
-        warn(`POU "${name}" is written in ${lang.name}: kept unchanged for export, but Rungsmith only edits and simulates LD`, pouEl);
+        warn(
+          `POU "${name}" is written in ${lang.name}: kept unchanged for export, but Rungsmith only edits and simulates LD`,
+          pouEl,
+        );
       }
     }
     // LD inside SFC actions and transitions: each becomes a POU of its own.
@@ -133,8 +209,18 @@ function importChecked(text: string): ImportResult {
       if (!ld) continue;
       if (fileNames.has(`${name}_${action.attrs.name ?? 'action'}`.toUpperCase())) continue;
       const pname = uniqueName(pous, `${name}_${action.attrs.name ?? 'action'}`);
-      warn(`the LD of action "${action.attrs.name}" of ${lang.name} POU "${name}" was imported as program "${pname}" (the chart itself is not simulated)`, action);
-      pous.push({ id: newId<'PouId'>('p') as PouId, name: pname, ...base, kind: 'PROGRAM', returnType: undefined, networks: importLd(pname, ld, `action ${action.attrs.name} of ${name}`) });
+      warn(
+        `the LD of action "${action.attrs.name}" of ${lang.name} POU "${name}" was imported as program "${pname}" (the chart itself is not simulated)`,
+        action,
+      );
+      pous.push({
+        id: newId<'PouId'>('p') as PouId,
+        name: pname,
+        ...base,
+        kind: 'PROGRAM',
+        returnType: undefined,
+        networks: importLd(pname, ld, `action ${action.attrs.name} of ${name}`),
+      });
     }
     for (const tr of childrenNamed(child(pouEl, 'transitions') ?? pouEl, 'transition')) {
       const ld = child(child(tr, 'body') ?? tr, 'LD');
@@ -142,18 +228,39 @@ function importChecked(text: string): ImportResult {
       const tname = tr.attrs.name ?? 'transition';
       if (fileNames.has(`${name}_${tname}`.toUpperCase())) continue;
       const pname = uniqueName(pous, `${name}_${tname}`);
-      warn(`the LD of transition "${tname}" of ${lang.name} POU "${name}" was imported as program "${pname}" with a BOOL output "${tname}"`, tr);
+      warn(
+        `the LD of transition "${tname}" of ${lang.name} POU "${name}" was imported as program "${pname}" with a BOOL output "${tname}"`,
+        tr,
+      );
       const vars = variables.some((v) => v.name.toUpperCase() === tname.toUpperCase())
         ? variables
-        : [...variables, { name: tname, type: 'BOOL', varClass: 'output' as const, retain: false, comment: 'SFC transition condition' }];
-      pous.push({ id: newId<'PouId'>('p') as PouId, name: pname, ...base, kind: 'PROGRAM', returnType: undefined, variables: vars, networks: importLd(pname, ld, `transition ${tname} of ${name}`) });
+        : [
+            ...variables,
+            {
+              name: tname,
+              type: 'BOOL',
+              varClass: 'output' as const,
+              retain: false,
+              comment: 'SFC transition condition',
+            },
+          ];
+      pous.push({
+        id: newId<'PouId'>('p') as PouId,
+        name: pname,
+        ...base,
+        kind: 'PROGRAM',
+        returnType: undefined,
+        variables: vars,
+        networks: importLd(pname, ld, `transition ${tname} of ${name}`),
+      });
     }
   }
   currentPou = undefined;
   for (const holder of [root, contentHeader]) {
     const add = holder ? child(holder, 'addData') : undefined;
     for (const d of add ? childrenNamed(add, 'data') : []) {
-      if (d.attrs.handleUnknown === 'discard') warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
+      if (d.attrs.handleUnknown === 'discard')
+        warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
       else keepProject.addData.push(raw(d));
     }
   }
@@ -162,7 +269,15 @@ function importChecked(text: string): ImportResult {
   const ldNames = new Set(pous.map((p) => p.name.toUpperCase()));
   const firstProgram = pous.find((p) => p.kind === 'PROGRAM');
   if (!tasks.some((t) => t.programs.some((p) => ldNames.has(p.pou.toUpperCase()))) && firstProgram) {
-    tasks = [...tasks, { name: 'MainTask', cycleMs: 10, priority: 1, programs: [{ instance: 'MainInstance', pou: firstProgram.name }] }];
+    tasks = [
+      ...tasks,
+      {
+        name: 'MainTask',
+        cycleMs: 10,
+        priority: 1,
+        programs: [{ instance: 'MainInstance', pou: firstProgram.name }],
+      },
+    ];
     warn(`no task runs an LD program: added task MainTask (T#10ms) running "${firstProgram.name}"`);
   }
   const keep: PreservedProject = {

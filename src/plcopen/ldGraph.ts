@@ -2,13 +2,14 @@
 // sources of every input pin resolved (continuations followed, block output pins named, data
 // variables folded into block operands), then split into networks (connected components).
 import { blockSignature } from '../model/blocks';
-import { boxLayoutFor } from '../model/boxLayout';
 import type { CoilType, ContactType } from '../model/elements';
+import { buildBox } from './ldBlocks';
 import type { RawConnection, RawObject, RawPin } from './ldObjects';
 import { RS_COIL, RS_CONTACT } from './types';
 import { child, childrenNamed, type XmlElement } from './xml/parse';
 
-export type GSource = { readonly kind: 'rail' } | { readonly kind: 'node'; readonly node: number; readonly pin: string };
+export type GSource =
+  { readonly kind: 'rail' } | { readonly kind: 'node'; readonly node: number; readonly pin: string };
 
 export interface GNode {
   readonly index: number;
@@ -67,14 +68,23 @@ function rsMarker(obj: RawObject, name: string): string | undefined {
 }
 
 /** Builds the node graph of one LD body. `raw` gives the source text of an element (for preserved data). */
-export function buildLdGraph(objects: readonly RawObject[], raw: (el: XmlElement) => string, warn: (f: Finding) => void): LdGraph {
+export function buildLdGraph(
+  objects: readonly RawObject[],
+  raw: (el: XmlElement) => string,
+  warn: (f: Finding) => void,
+): LdGraph {
   const byId = new Map<string, RawObject>();
   for (const o of objects) {
     if (!o.localId) {
-      if (o.kind !== 'addData' && o.kind !== 'documentation') throw new LdGraphError(`<${o.kind}> has no localId`, o);
+      if (o.kind !== 'addData' && o.kind !== 'documentation')
+        throw new LdGraphError(`<${o.kind}> has no localId`, o);
       continue;
     }
-    if (byId.has(o.localId)) throw new LdGraphError(`localId ${o.localId} is used twice (<${byId.get(o.localId)!.kind}> and <${o.kind}>)`, o);
+    if (byId.has(o.localId))
+      throw new LdGraphError(
+        `localId ${o.localId} is used twice (<${byId.get(o.localId)!.kind}> and <${o.kind}>)`,
+        o,
+      );
     byId.set(o.localId, o);
   }
   const connectors = new Map<string, RawObject>();
@@ -107,9 +117,13 @@ export function buildLdGraph(objects: readonly RawObject[], raw: (el: XmlElement
     switch (o.kind) {
       case 'contact': {
         const a = o.attrs;
-        const c: ContactType = a.edge === 'rising' ? 'P' : a.edge === 'falling' ? 'N' : a.negated === 'true' ? 'NC' : 'NO';
+        const c: ContactType =
+          a.edge === 'rising' ? 'P' : a.edge === 'falling' ? 'N' : a.negated === 'true' ? 'NC' : 'NO';
         if ((a.edge === 'rising' || a.edge === 'falling') && a.negated === 'true')
-          warn({ message: `contact "${o.text}" is both negated and edge-triggered; Rungsmith keeps the edge (${c}) and drops the negation`, obj: o });
+          warn({
+            message: `contact "${o.text}" is both negated and edge-triggered; Rungsmith keeps the edge (${c}) and drops the negation`,
+            obj: o,
+          });
         const n = newNode(o, 'contact', order);
         n.contact = c;
         n.variable = o.text;
@@ -162,16 +176,27 @@ export function buildLdGraph(objects: readonly RawObject[], raw: (el: XmlElement
   });
 
   // Every reference, through continuations, to the objects producing it.
-  const resolve = (c: RawConnection, consumer: RawObject, seen = new Set<string>()): { obj: RawObject | 'rail'; pin?: string }[] => {
+  const resolve = (
+    c: RawConnection,
+    consumer: RawObject,
+    seen = new Set<string>(),
+  ): { obj: RawObject | 'rail'; pin?: string }[] => {
     const src = byId.get(c.ref);
-    if (!src) throw new LdGraphError(`<${consumer.kind}> localId ${consumer.localId} is connected to localId ${c.ref}, which does not exist`, consumer);
+    if (!src)
+      throw new LdGraphError(
+        `<${consumer.kind}> localId ${consumer.localId} is connected to localId ${c.ref}, which does not exist`,
+        consumer,
+      );
     switch (src.kind) {
       case 'leftPowerRail':
         return [{ obj: 'rail' }];
       case 'continuation': {
         const conn = connectors.get(src.text.toUpperCase());
         if (!conn) {
-          warn({ message: `continuation "${src.text}" has no connector of that name; its wire is dropped`, obj: src });
+          warn({
+            message: `continuation "${src.text}" has no connector of that name; its wire is dropped`,
+            obj: src,
+          });
           return [];
         }
         if (seen.has(conn.localId)) throw new LdGraphError(`connector "${src.text}" feeds itself`, conn);
@@ -220,7 +245,8 @@ export function buildLdGraph(objects: readonly RawObject[], raw: (el: XmlElement
     if (conns.length !== 1) return undefined;
     const r = resolve(conns[0]!, o);
     const only = r.length === 1 ? r[0]! : undefined;
-    if (!only || only.obj === 'rail' || only.obj.kind !== 'block' || !blockSignature(only.obj.text)) return undefined;
+    if (!only || only.obj === 'rail' || only.obj.kind !== 'block' || !blockSignature(only.obj.text))
+      return undefined;
     const node = nodeOf.get(only.obj);
     return node && node.kind === 'box' ? { node, pin: (only.pin ?? 'OUT').toUpperCase() } : undefined;
   };
@@ -235,12 +261,20 @@ export function buildLdGraph(objects: readonly RawObject[], raw: (el: XmlElement
   };
 
   const pinName = (n: GNode, pin: string): string | undefined => {
-    if (n.kind !== 'box') return n.kind === 'contact' && n.contact === 'NOT' ? (pin.toUpperCase() === 'OUT' ? 'out' : 'in') : 'out';
+    if (n.kind !== 'box')
+      return n.kind === 'contact' && n.contact === 'NOT'
+        ? pin.toUpperCase() === 'OUT'
+          ? 'out'
+          : 'in'
+        : 'out';
     return pin.toUpperCase();
   };
   const sourcesOf = (pin: RawPin, consumer: RawObject, operandTarget?: (text: string) => void): GSource[] => {
     const out: GSource[] = [];
-    const all = pin.connections.flatMap((c) => resolve(c, consumer));
+    const all =
+      pin.connections.length === 1
+        ? resolve(pin.connections[0]!, consumer)
+        : pin.connections.flatMap((c) => resolve(c, consumer));
     for (const r of all) {
       if (r.obj === 'rail') out.push(RAIL);
       else if (r.obj.kind === 'inVariable' || r.obj.kind === 'inOutVariable') {
@@ -250,7 +284,10 @@ export function buildLdGraph(objects: readonly RawObject[], raw: (el: XmlElement
         const n = nodeOf.get(r.obj);
         if (!n) continue;
         if (n.kind === 'box' && !blockSignature(n.obj.text)) {
-          warn({ message: `the wire from block ${n.obj.text} (localId ${n.obj.localId}) cannot be kept: Rungsmith does not know its pins`, obj: consumer });
+          warn({
+            message: `the wire from block ${n.obj.text} (localId ${n.obj.localId}) cannot be kept: Rungsmith does not know its pins`,
+            obj: consumer,
+          });
           continue;
         }
         out.push({ kind: 'node', node: n.index, pin: pinName(n, r.pin ?? 'out')! });
@@ -291,15 +328,25 @@ export function buildLdGraph(objects: readonly RawObject[], raw: (el: XmlElement
       if (blockSignature(single.obj.text)) {
         // A second variable on the same output: copied by a MOVE wired to that output.
         moveNode(o, { kind: 'node', node: n.index, pin: p });
-        warn({ message: `block output ${single.obj.attrs.instanceName ?? single.obj.text}.${p} also goes to "${o.text}": drawn as a MOVE`, obj: o });
+        warn({
+          message: `block output ${single.obj.attrs.instanceName ?? single.obj.text}.${p} also goes to "${o.text}": drawn as a MOVE`,
+          obj: o,
+        });
         continue;
       }
     }
-    if (single && single.obj !== 'rail' && (single.obj.kind === 'inVariable' || single.obj.kind === 'inOutVariable')) {
+    if (
+      single &&
+      single.obj !== 'rail' &&
+      (single.obj.kind === 'inVariable' || single.obj.kind === 'inOutVariable')
+    ) {
       // Variable to variable (Out := Cnt): a MOVE, wired to the block behind Cnt when there is one.
       const behind = single.obj.kind === 'inOutVariable' ? blockBehind(single.obj) : undefined;
       moveNode(o, behind ? { kind: 'node', node: behind.node.index, pin: behind.pin } : single.obj.text);
-      warn({ message: `the assignment of "${single.obj.text}" to "${o.text}" is drawn as a MOVE block`, obj: o });
+      warn({
+        message: `the assignment of "${single.obj.text}" to "${o.text}" is drawn as a MOVE block`,
+        obj: o,
+      });
       continue;
     }
     const coil = newNode(o, 'coil', o.executionOrderId);
@@ -329,73 +376,11 @@ export function buildLdGraph(objects: readonly RawObject[], raw: (el: XmlElement
     const keep: string[] = [];
     for (const d of childrenNamed(add, 'data')) {
       if (d.attrs.name === RS_COIL || d.attrs.name === RS_CONTACT) continue;
-      if (d.attrs.handleUnknown === 'discard') warn({ message: `addData "${d.attrs.name}" dropped (handleUnknown="discard")`, obj: n.obj });
+      if (d.attrs.handleUnknown === 'discard')
+        warn({ message: `addData "${d.attrs.name}" dropped (handleUnknown="discard")`, obj: n.obj });
       else keep.push(raw(d));
     }
     if (keep.length) n.data = keep;
   }
   return { nodes, labels, comments, vendor };
-}
-
-function buildBox(
-  n: GNode,
-  o: RawObject,
-  sourcesOf: (pin: RawPin, consumer: RawObject, operandTarget?: (text: string) => void) => GSource[],
-  warn: (f: Finding) => void,
-): void {
-  const typeName = o.text;
-  const sig = blockSignature(typeName);
-  const instance = o.attrs.instanceName;
-  n.instance = instance || undefined;
-  if (!sig) {
-    n.blockType = typeName;
-    for (const pin of o.inputs) {
-      const name = pin.pin;
-      let operand: string | undefined;
-      const src = sourcesOf(pin, o, (t) => (operand = t));
-      if (operand !== undefined) n.operandsIn[name] = operand;
-      else if (src.length) warn({ message: `block ${instance ?? typeName}: the wire into pin ${name} is dropped (Rungsmith does not know block type ${typeName})`, obj: o });
-    }
-    for (const pin of o.outputs) if (pin.expression) n.operandsOut[pin.pin] = pin.expression;
-    warn({ message: `block type ${typeName} is not a standard block Rungsmith can simulate; kept with its operands`, obj: o });
-    return;
-  }
-  n.blockType = sig.name;
-  if (sig.kind === 'fb' && !instance) warn({ message: `function block ${sig.name} has no instance name`, obj: o });
-  if (sig.kind === 'function' && instance) n.instance = undefined;
-  if (sig.extensible) {
-    const { prefix } = sig.extensible;
-    const count = o.inputs.filter((p) => p.pin.toUpperCase().startsWith(prefix) && /^\d+$/.test(p.pin.slice(prefix.length))).length;
-    if (count > 0 && count !== sig.extensible.min) n.inputCount = count;
-  }
-  const layout = boxLayoutFor(sig.name, n.inputCount);
-  const known = new Set(layout?.inputs.map((p) => p.name) ?? []);
-  let hasEn = false;
-  for (const pin of o.inputs) {
-    const name = pin.pin.toUpperCase();
-    if (name === 'EN') hasEn = true;
-    if (!known.has(name)) {
-      if (pin.connections.length) warn({ message: `block ${instance ?? sig.name}: pin ${pin.pin} is not a pin of ${sig.name}; its wire is dropped`, obj: o });
-      continue;
-    }
-    if (pin.negated) warn({ message: `block ${instance ?? sig.name}: negation of input ${name} is dropped`, obj: o });
-    if (pin.edge) {
-      const counterPin = sig.category === 'counter' && (name === 'CU' || name === 'CD');
-      warn({
-        message: counterPin
-          ? `block ${instance ?? sig.name}: edge qualifier on ${name} dropped (the counter already counts rising edges)`
-          : `block ${instance ?? sig.name}: ${pin.edge} edge qualifier on input ${name} is dropped`,
-        obj: o,
-      });
-    }
-    let operand: string | undefined;
-    const src = sourcesOf(pin, o, (t) => (operand = t));
-    if (operand !== undefined) n.operandsIn[name] = operand;
-    else if (src.length) n.inputs.set(name, src);
-  }
-  if (sig.kind === 'function' && !hasEn) n.inputs.set('EN', [RAIL]);
-  for (const pin of o.outputs) {
-    if (pin.negated) warn({ message: `block ${instance ?? sig.name}: negation of output ${pin.pin} is dropped`, obj: o });
-    if (pin.expression) n.operandsOut[pin.pin.toUpperCase()] = pin.expression;
-  }
 }

@@ -21,7 +21,11 @@ function anyMismatch(nodes: readonly GNode[]): boolean {
         const k = srcKey(s);
         const prev = firstUse.get(k);
         if (!prev) firstUse.set(k, srcs);
-        else if (prev !== srcs && (prev.length !== srcs.length || prev.some((p, i) => srcKey(p) !== srcKey(srcs[i]!)))) return true;
+        else if (
+          prev !== srcs &&
+          (prev.length !== srcs.length || prev.some((p, i) => srcKey(p) !== srcKey(srcs[i]!)))
+        )
+          return true;
       }
   return false;
 }
@@ -41,7 +45,8 @@ function splitOnce(nodes: GNode[], warn: (f: Finding) => void): boolean {
     const rb = find(b);
     if (ra !== rb) parent.set(ra, rb);
   };
-  for (const n of nodes) for (const [pin, srcs] of n.inputs) for (const s of srcs) union(`${n.index}<${pin}`, srcKey(s));
+  for (const n of nodes)
+    for (const [pin, srcs] of n.inputs) for (const s of srcs) union(`${n.index}<${pin}`, srcKey(s));
   // Consumers per net.
   const byNet = new Map<string, { node: GNode; pin: string; key: string; srcs: GSource[] }[]>();
   for (const n of nodes)
@@ -61,7 +66,9 @@ function splitOnce(nodes: GNode[], warn: (f: Finding) => void): boolean {
       g.push(c);
     }
     if (groups.size < 2) continue;
-    const ordered = [...groups.values()].sort((a, b) => b.length - a.length || b[0]!.srcs.length - a[0]!.srcs.length);
+    const ordered = [...groups.values()].sort(
+      (a, b) => b.length - a.length || b[0]!.srcs.length - a[0]!.srcs.length,
+    );
     for (const group of ordered.slice(1)) {
       const outside = new Set(consumers.filter((c) => !group.includes(c)).flatMap((c) => c.srcs.map(srcKey)));
       const copies = new Map<string, GSource>();
@@ -81,11 +88,18 @@ function splitOnce(nodes: GNode[], warn: (f: Finding) => void): boolean {
         };
         nodes.push(copy);
         copies.set(k, { kind: 'node', node: copy.index, pin: s.pin });
-        warn({ message: `contact "${orig.variable}" drawn twice so that the ladder grid shows the file's wiring exactly`, obj: orig.obj });
+        warn({
+          message: `contact "${orig.variable}" drawn twice so that the ladder grid shows the file's wiring exactly`,
+          obj: orig.obj,
+        });
       }
       if (!copies.size) continue;
       changed = true;
-      for (const c of group) c.node.inputs.set(c.pin, c.srcs.map((s) => copies.get(srcKey(s)) ?? s));
+      for (const c of group)
+        c.node.inputs.set(
+          c.pin,
+          c.srcs.map((s) => copies.get(srcKey(s)) ?? s),
+        );
     }
   }
   return changed;

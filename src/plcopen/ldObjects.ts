@@ -37,77 +37,104 @@ export interface RawObject {
 }
 
 const num = (s: string | undefined): number => {
-  const n = Number(s);
-  return Number.isFinite(n) ? n : 0;
+  if (s === undefined) return 0;
+  const n = +s;
+  return n === n && n !== Infinity && n !== -Infinity ? n : 0;
 };
 
 function readPoint(el: XmlElement | undefined): Point | undefined {
   return el ? { x: num(el.attrs.x), y: num(el.attrs.y) } : undefined;
 }
 
-function readPointIn(cp: XmlElement | undefined, origin: Point, pin: string, attrs: Readonly<Record<string, string>> = {}): RawPin {
-  const relPos = cp ? readPoint(child(cp, 'relPosition')) : undefined;
-  const connections: RawConnection[] = cp
-    ? childrenNamed(cp, 'connection').map((c) => ({
-        ref: c.attrs.refLocalId ?? '',
-        ...(c.attrs.formalParameter !== undefined && c.attrs.formalParameter !== '' ? { formal: c.attrs.formalParameter } : {}),
-        points: childrenNamed(c, 'position').map((p) => readPoint(p)!),
-      }))
-    : [];
-  return {
-    pin,
-    connections,
-    ...(relPos ? { at: { x: origin.x + relPos.x, y: origin.y + relPos.y } } : {}),
-    negated: attrs.negated === 'true' || attrs.negated === '1',
-    ...(attrs.edge && attrs.edge !== 'none' ? { edge: attrs.edge } : {}),
-  };
+const NO_ATTRS: Readonly<Record<string, string>> = {};
+
+function pinFlags(
+  pin: RawPin & { negated: boolean; edge?: string },
+  attrs: Readonly<Record<string, string>>,
+): void {
+  const neg = attrs.negated;
+  pin.negated = neg === 'true' || neg === '1';
+  const edge = attrs.edge;
+  if (edge && edge !== 'none') pin.edge = edge;
 }
 
-function readPointOut(cp: XmlElement | undefined, origin: Point, pin: string, attrs: Readonly<Record<string, string>> = {}): RawPin {
-  const relPos = cp ? readPoint(child(cp, 'relPosition')) : undefined;
-  const expr = cp ? child(cp, 'expression') : undefined;
-  const expression = expr ? expr.text.trim() : '';
-  return {
-    pin,
-    connections: [],
-    ...(relPos ? { at: { x: origin.x + relPos.x, y: origin.y + relPos.y } } : {}),
-    negated: attrs.negated === 'true' || attrs.negated === '1',
-    ...(attrs.edge && attrs.edge !== 'none' ? { edge: attrs.edge } : {}),
-    ...(expression ? { expression } : {}),
-  };
+type MutablePin = { -readonly [K in keyof RawPin]: RawPin[K] };
+
+function readPointIn(
+  cp: XmlElement | undefined,
+  origin: Point,
+  pin: string,
+  attrs: Readonly<Record<string, string>> = NO_ATTRS,
+): RawPin {
+  const connections: RawConnection[] = [];
+  const out: MutablePin = { pin, connections, negated: false };
+  if (cp) {
+    for (const c of cp.children) {
+      if (c.name === 'relPosition') out.at = { x: origin.x + num(c.attrs.x), y: origin.y + num(c.attrs.y) };
+      else if (c.name === 'connection') {
+        const points: Point[] = [];
+        for (const p of c.children)
+          if (p.name === 'position') points.push({ x: num(p.attrs.x), y: num(p.attrs.y) });
+        const formal = c.attrs.formalParameter;
+        connections.push(
+          formal !== undefined && formal !== ''
+            ? { ref: c.attrs.refLocalId ?? '', formal, points }
+            : { ref: c.attrs.refLocalId ?? '', points },
+        );
+      }
+    }
+  }
+  if (attrs !== NO_ATTRS) pinFlags(out, attrs);
+  return out;
+}
+
+function readPointOut(
+  cp: XmlElement | undefined,
+  origin: Point,
+  pin: string,
+  attrs: Readonly<Record<string, string>> = NO_ATTRS,
+): RawPin {
+  const out: MutablePin = { pin, connections: [], negated: false };
+  if (cp) {
+    for (const c of cp.children) {
+      if (c.name === 'relPosition') out.at = { x: origin.x + num(c.attrs.x), y: origin.y + num(c.attrs.y) };
+      else if (c.name === 'expression') {
+        const e = c.text.trim();
+        if (e) out.expression = e;
+      }
+    }
+  }
+  if (attrs !== NO_ATTRS) pinFlags(out, attrs);
+  return out;
 }
 
 /** Reads every direct child of an LD body. */
 export function readLdObjects(body: XmlElement): RawObject[] {
   return body.children.map((el) => {
     const pos = readPoint(child(el, 'position')) ?? { x: 0, y: 0 };
-    const base = {
-      kind: el.name,
-      localId: el.attrs.localId ?? '',
-      xml: el,
-      pos,
-      width: num(el.attrs.width),
-      height: num(el.attrs.height),
-      executionOrderId: num(el.attrs.executionOrderId),
-      attrs: el.attrs,
-    };
     const inputs: RawPin[] = [];
     const outputs: RawPin[] = [];
     let text = '';
     switch (el.name) {
       case 'leftPowerRail':
-        childrenNamed(el, 'connectionPointOut').forEach((cp, i) => outputs.push(readPointOut(cp, pos, String(i))));
+        childrenNamed(el, 'connectionPointOut').forEach((cp, i) =>
+          outputs.push(readPointOut(cp, pos, String(i))),
+        );
         break;
       case 'rightPowerRail':
-        childrenNamed(el, 'connectionPointIn').forEach((cp, i) => inputs.push(readPointIn(cp, pos, String(i))));
+        childrenNamed(el, 'connectionPointIn').forEach((cp, i) =>
+          inputs.push(readPointIn(cp, pos, String(i))),
+        );
         break;
       case 'contact':
       case 'coil':
       case 'inVariable':
       case 'outVariable':
       case 'inOutVariable':
-        if (child(el, 'connectionPointIn') || el.name !== 'inVariable') inputs.push(readPointIn(child(el, 'connectionPointIn'), pos, 'in'));
-        if (child(el, 'connectionPointOut') || el.name !== 'outVariable') outputs.push(readPointOut(child(el, 'connectionPointOut'), pos, 'out'));
+        if (child(el, 'connectionPointIn') || el.name !== 'inVariable')
+          inputs.push(readPointIn(child(el, 'connectionPointIn'), pos, 'in'));
+        if (child(el, 'connectionPointOut') || el.name !== 'outVariable')
+          outputs.push(readPointOut(child(el, 'connectionPointOut'), pos, 'out'));
         text = (child(el, 'variable') ?? child(el, 'expression'))?.text.trim() ?? '';
         break;
       case 'jump':
@@ -130,19 +157,39 @@ export function readLdObjects(body: XmlElement): RawObject[] {
       }
       case 'block': {
         for (const v of childrenNamed(child(el, 'inputVariables') ?? el, 'variable'))
-          inputs.push(readPointIn(child(v, 'connectionPointIn'), pos, v.attrs.formalParameter ?? '', v.attrs));
+          inputs.push(
+            readPointIn(child(v, 'connectionPointIn'), pos, v.attrs.formalParameter ?? '', v.attrs),
+          );
         for (const v of childrenNamed(child(el, 'inOutVariables') ?? el, 'variable')) {
-          inputs.push(readPointIn(child(v, 'connectionPointIn'), pos, v.attrs.formalParameter ?? '', v.attrs));
-          outputs.push(readPointOut(child(v, 'connectionPointOut'), pos, v.attrs.formalParameter ?? '', v.attrs));
+          inputs.push(
+            readPointIn(child(v, 'connectionPointIn'), pos, v.attrs.formalParameter ?? '', v.attrs),
+          );
+          outputs.push(
+            readPointOut(child(v, 'connectionPointOut'), pos, v.attrs.formalParameter ?? '', v.attrs),
+          );
         }
         for (const v of childrenNamed(child(el, 'outputVariables') ?? el, 'variable'))
-          outputs.push(readPointOut(child(v, 'connectionPointOut'), pos, v.attrs.formalParameter ?? '', v.attrs));
+          outputs.push(
+            readPointOut(child(v, 'connectionPointOut'), pos, v.attrs.formalParameter ?? '', v.attrs),
+          );
         text = el.attrs.typeName ?? '';
         break;
       }
       default:
         break;
     }
-    return { ...base, inputs, outputs, text };
+    return {
+      kind: el.name,
+      localId: el.attrs.localId ?? '',
+      xml: el,
+      pos,
+      width: num(el.attrs.width),
+      height: num(el.attrs.height),
+      executionOrderId: num(el.attrs.executionOrderId),
+      attrs: el.attrs,
+      inputs,
+      outputs,
+      text,
+    };
   });
 }

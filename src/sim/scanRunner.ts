@@ -24,6 +24,8 @@ export interface RunnerHost {
   stopped(outcome: ScanOutcome): void;
   /** Between bursts while running (frames at display rate). */
   progress(): void;
+  /** An unexpected error stopped execution (a bug, not a PLC fault): it is reported, never swallowed. */
+  crashed(error: unknown): void;
 }
 
 interface RunTimeline {
@@ -107,7 +109,7 @@ export class ScanRunner {
     this.stop();
     this.resume();
     this.batchRemaining = Math.max(1, Math.floor(scans));
-    this.batchTick();
+    this.guarded(() => this.batchTick());
   }
 
   /** Executes one network (starting a scan if needed), ignoring breakpoints. */
@@ -182,8 +184,17 @@ export class ScanRunner {
   private schedule(fn: () => void, delayMs: number): void {
     this.cancelTimer = this.scheduler.schedule(() => {
       this.cancelTimer = undefined;
-      fn();
+      this.guarded(fn);
     }, delayMs);
+  }
+
+  private guarded(fn: () => void): void {
+    try {
+      fn();
+    } catch (error) {
+      this.stop();
+      this.host.crashed(error);
+    }
   }
 
   private runTick(): void {

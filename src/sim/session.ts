@@ -63,6 +63,11 @@ export class SimSession {
           if (this.outputsSubscribed) this.postOutputs();
         },
         stopped: (outcome) => this.stoppedAt(outcome),
+        crashed: (error) => {
+          this.mode = 'paused';
+          this.deps.post({ type: 'error', message: `the simulation stopped: ${error instanceof Error ? error.message : String(error)}` });
+          this.postFrame();
+        },
         progress: () => {
           if (this.deps.scheduler.now() - this.lastFrameAt >= FRAME_INTERVAL_MS) this.postFrame();
         },

@@ -158,6 +158,10 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
       );
     },
 
+    insertRow: (network, at) => {
+      editNetwork('insertRow', network, (n) => edits.insertRow(n, at));
+    },
+    deleteRow: (network, at) => editNetwork('deleteRow', network, (n) => edits.deleteRow(n, at)),
     addNetwork: (partial) => {
       const s = get();
       const pou = s.project.pous.find((p) => p.id === s.activePouId);

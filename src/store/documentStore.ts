@@ -29,6 +29,8 @@
 //   pasteElements(net, clip, cell)    clip from copyElements(); returns the new ids
 //   duplicateElements(net, ids)       pastes a copy below the network's content; returns new ids
 //   addVLink / removeVLink / toggleVLink (net, {row, boundary})
+//   insertRow(net, at)                empty row at `at`, vertical links crossing it extended
+//   deleteRow(net, at)                only an empty row; false otherwise
 //   addNetwork(partial?) / insertNetwork(index, partial?)  return the new NetworkId
 //   deleteNetwork(id), moveNetwork(from, to), updateNetwork(id, {label,title,comment,collapsed,rows,cols})
 //                                     (label: '' or undefined removes the label)
@@ -95,6 +97,8 @@ export interface DocumentState {
   addVLink(network: NetworkId, v: VLink): void;
   removeVLink(network: NetworkId, v: VLink): void;
   toggleVLink(network: NetworkId, v: VLink): void;
+  insertRow(network: NetworkId, at: number): void;
+  deleteRow(network: NetworkId, at: number): boolean;
 
   addNetwork(partial?: Partial<Network>): NetworkId;
   insertNetwork(index: number, partial?: Partial<Network>): NetworkId;

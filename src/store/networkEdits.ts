@@ -300,3 +300,41 @@ export function pasteElements(
   const network = grow(n, [...n.elements.filter((e) => !replaced.has(e.id)), ...pasted], vlinks);
   return { network, ids: pasted.map((e) => e.id) };
 }
+
+/**
+ * Inserts an empty row at `at` (below a box that spans it): rows from there move one row down; a
+ * vertical link that crossed into that row is extended through the new row so no connection breaks.
+ */
+export function insertRow(n: Network, at: number): Network {
+  let row = Math.max(0, Math.min(at, n.rows));
+  // Never split a box: a row asked for inside one goes below it.
+  while (n.elements.some((e) => e.row < row && e.row + elementSize(e).rows > row)) row++;
+  const elements = n.elements.map((e) => (e.row >= row ? { ...e, row: e.row + 1 } : e));
+  const vlinks: VLink[] = [];
+  for (const v of n.vlinks) {
+    if (v.row >= row) vlinks.push({ ...v, row: v.row + 1 });
+    else {
+      vlinks.push(v);
+      if (v.row === row - 1) vlinks.push({ row, boundary: v.boundary });
+    }
+  }
+  return grow({ ...n, rows: n.rows + 1 }, elements, vlinks);
+}
+
+/**
+ * Deletes row `at` when no element covers it; rows below move up. A vertical link through the
+ * row (above and below it at the same edge) stays one link; links that only touched it go.
+ * Undefined when an element is on the row or it is the only row.
+ */
+export function deleteRow(n: Network, at: number): Network | undefined {
+  if (n.rows <= 1 || at < 0 || at >= n.rows) return undefined;
+  if (n.elements.some((e) => e.row <= at && e.row + elementSize(e).rows > at)) return undefined;
+  const elements = n.elements.map((e) => (e.row > at ? { ...e, row: e.row - 1 } : e));
+  const vlinks: VLink[] = [];
+  for (const v of n.vlinks) {
+    if (v.row < at - 1 || v.row > at) vlinks.push(v.row > at ? { ...v, row: v.row - 1 } : v);
+    else if (v.row === at - 1 && n.vlinks.some((w) => w.row === at && w.boundary === v.boundary))
+      vlinks.push(v);
+  }
+  return { ...n, rows: n.rows - 1, elements, vlinks };
+}

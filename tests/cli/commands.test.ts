@@ -9,11 +9,19 @@ import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { rungsmith } from './memoryIo';
 
 const motor = saveProject(EXAMPLES[0]!.build());
-const fixture = (name: string) => readFileSync(fileURLToPath(new URL(`../fixtures/plcopen/${name}`, import.meta.url)), 'utf8');
+const fixture = (name: string) =>
+  readFileSync(fileURLToPath(new URL(`../fixtures/plcopen/${name}`, import.meta.url)), 'utf8');
 
 function broken(): string {
   const p = JSON.parse(motor);
-  p.pous[0].networks[0].elements.push({ id: 'x1', kind: 'coil', coil: 'COIL', variable: 'Lamp', row: 1, col: 9 });
+  p.pous[0].networks[0].elements.push({
+    id: 'x1',
+    kind: 'coil',
+    coil: 'COIL',
+    variable: 'Lamp',
+    row: 1,
+    col: 9,
+  });
   return JSON.stringify(p);
 }
 
@@ -27,7 +35,8 @@ describe('rungsmith check', () => {
     expect(r.code).toBe(1);
     const lines = r.out.trim().split('\n');
     expect(lines.length).toBeGreaterThan(0);
-    for (const l of lines) expect(l).toMatch(/^(error|warning) LD-[RWE]\d+ Main\/(network \d+(:R\d+C\d+)?|variables) \S/);
+    for (const l of lines)
+      expect(l).toMatch(/^(error|warning) LD-[RWE]\d+ Main\/(network \d+(:R\d+C\d+)?|variables) \S/);
     expect(lines.some((l) => l.includes('"Lamp"'))).toBe(true);
   });
 
@@ -39,11 +48,18 @@ describe('rungsmith check', () => {
   });
 
   it('exits 2 with a located message for unreadable or invalid input', () => {
-    expect(rungsmith(['check', 'missing.json'])).toMatchObject({ code: 2, err: 'rungsmith: cannot read missing.json: ENOENT\n' });
-    const bad = rungsmith(['check', 'x.xml'], { 'x.xml': '<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types>' });
+    expect(rungsmith(['check', 'missing.json'])).toMatchObject({
+      code: 2,
+      err: 'rungsmith: cannot read missing.json: ENOENT\n',
+    });
+    const bad = rungsmith(['check', 'x.xml'], {
+      'x.xml': '<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types>',
+    });
     expect(bad.code).toBe(2);
     expect(bad.err).toMatch(/x\.xml: line 1: not well-formed XML/);
-    expect(rungsmith(['check', 'p.json'], { 'p.json': '{"format":"rungsmith-project","version":1}' }).err).toContain('p.json: name');
+    expect(
+      rungsmith(['check', 'p.json'], { 'p.json': '{"format":"rungsmith-project","version":1}' }).err,
+    ).toContain('p.json: name');
   });
 });
 
@@ -86,14 +102,21 @@ describe('rungsmith usage', () => {
     expect(rungsmith(['--help']).out).toContain('Commands:');
     expect(rungsmith(['frobnicate']).err).toContain('unknown command "frobnicate"');
     expect(rungsmith(['check', '--fast', 'x.json']).code).toBe(2);
-    expect(rungsmith(['simulate', 'm.json', '--scans', 'many'], { 'm.json': motor }).err).toContain('--scans "many"');
-    expect(rungsmith(['simulate', 'm.json', '--profile', 'siemens'], { 'm.json': motor }).err).toContain('--profile must be iec or openplc');
+    expect(rungsmith(['simulate', 'm.json', '--scans', 'many'], { 'm.json': motor }).err).toContain(
+      '--scans "many"',
+    );
+    expect(rungsmith(['simulate', 'm.json', '--profile', 'siemens'], { 'm.json': motor }).err).toContain(
+      '--profile must be iec or openplc',
+    );
   });
 
   it('runs as a real process through bin/rungsmith.mjs (as npx rungsmith does)', () => {
     const bin = fileURLToPath(new URL('../../bin/rungsmith.mjs', import.meta.url));
     const file = fileURLToPath(new URL('../fixtures/plcopen/jump-label-return.xml', import.meta.url));
-    const r = spawnSync(process.execPath, [bin, 'simulate', file, '--scans', '2', '--watch', 'A,B'], { encoding: 'utf8', timeout: 60_000 });
+    const r = spawnSync(process.execPath, [bin, 'simulate', file, '--scans', '2', '--watch', 'A,B'], {
+      encoding: 'utf8',
+      timeout: 60_000,
+    });
     expect(r.status).toBe(0);
     expect(r.stdout).toBe('scan,time_ms,A,B\n1,0,1,1\n2,5,1,1\n');
   });

@@ -26,4 +26,8 @@ export function rungsmith(args: string[], files: Record<string, string> = {}): R
 }
 
 /** CSV text → rows of cells (header first). */
-export const csv = (text: string): string[][] => text.trim().split('\n').map((l) => l.split(','));
+export const csv = (text: string): string[][] =>
+  text
+    .trim()
+    .split('\n')
+    .map((l) => l.split(','));

@@ -11,7 +11,10 @@ const example = (id: string) => saveProject(EXAMPLES.find((e) => e.id === id)!.b
 describe('rungsmith simulate', () => {
   it('motor seal-in: Start latches the motor, Stop drops it; default watch is every variable in order', () => {
     const stim = 'scan,Start,Stop\n2,1,\n3,0,\n6,,1\n7,,0\n';
-    const r = rungsmith(['simulate', 'motor.json', '--inputs', 'stim.csv', '--scans', '8'], { 'motor.json': example('motor-start-stop'), 'stim.csv': stim });
+    const r = rungsmith(['simulate', 'motor.json', '--inputs', 'stim.csv', '--scans', '8'], {
+      'motor.json': example('motor-start-stop'),
+      'stim.csv': stim,
+    });
     expect(r.err).toBe('');
     expect(r.code).toBe(0);
     expect(csv(r.out)).toEqual([
@@ -28,9 +31,21 @@ describe('rungsmith simulate', () => {
   });
 
   it('traffic light on a 1 s cycle: each TON output rises at the first scan starting PT after its input rose', () => {
-    const r = rungsmith(['simulate', 'tl.json', '--cycle', '1s', '--scans', '19', '--watch', 'Red,Green,Yellow,RedTime.ET,GreenTime.Q'], {
-      'tl.json': example('traffic-light'),
-    });
+    const r = rungsmith(
+      [
+        'simulate',
+        'tl.json',
+        '--cycle',
+        '1s',
+        '--scans',
+        '19',
+        '--watch',
+        'Red,Green,Yellow,RedTime.ET,GreenTime.Q',
+      ],
+      {
+        'tl.json': example('traffic-light'),
+      },
+    );
     expect(r.code).toBe(0);
     const rows = csv(r.out);
     expect(rows[0]).toEqual(['scan', 'time_ms', 'Red', 'Green', 'Yellow', 'RedTime.ET', 'GreenTime.Q']);
@@ -57,10 +72,13 @@ describe('rungsmith simulate', () => {
   it('parts counter: counts rising edges of the sensor, Done at 10, Reset clears', () => {
     const lines = ['scan,PartSensor,Reset'];
     for (let k = 1; k <= 24; k++) lines.push(`${k},${k % 2},${k === 21 ? 1 : k === 22 ? 0 : ''}`);
-    const r = rungsmith(['simulate', 'pc.json', '--inputs', 'stim.csv', '--watch', 'PartCount,Done,Parts.Q'], {
-      'pc.json': example('parts-counter'),
-      'stim.csv': lines.join('\n'),
-    });
+    const r = rungsmith(
+      ['simulate', 'pc.json', '--inputs', 'stim.csv', '--watch', 'PartCount,Done,Parts.Q'],
+      {
+        'pc.json': example('parts-counter'),
+        'stim.csv': lines.join('\n'),
+      },
+    );
     expect(r.code).toBe(0);
     const rows = csv(r.out).slice(1);
     expect(rows).toHaveLength(24); // default: up to the last stimulus scan
@@ -85,14 +103,25 @@ describe('rungsmith simulate', () => {
     const lines = ['scan,PartSensor'];
     for (let k = 1; k <= 30; k++) lines.push(`${k},${k % 2}`);
     const files = { 'pc.json': example('parts-counter'), 's.csv': lines.join('\n') };
-    const iec = csv(rungsmith(['simulate', 'pc.json', '--inputs', 's.csv', '--watch', 'PartCount'], files).out);
-    const openplc = csv(rungsmith(['simulate', 'pc.json', '--inputs', 's.csv', '--watch', 'PartCount', '--profile', 'openplc'], files).out);
+    const iec = csv(
+      rungsmith(['simulate', 'pc.json', '--inputs', 's.csv', '--watch', 'PartCount'], files).out,
+    );
+    const openplc = csv(
+      rungsmith(
+        ['simulate', 'pc.json', '--inputs', 's.csv', '--watch', 'PartCount', '--profile', 'openplc'],
+        files,
+      ).out,
+    );
     expect(iec[30]![2]).toBe('15');
     expect(openplc[30]![2]).toBe('10');
   });
 
   it('refuses unknown variables, bad stimulus values and invalid programs on stderr with a non-zero exit', () => {
-    const files = { 'm.json': example('motor-start-stop'), 'bad.csv': 'scan,Start\n1,maybe\n', 'ghost.csv': 'scan,Ghost\n1,1\n' };
+    const files = {
+      'm.json': example('motor-start-stop'),
+      'bad.csv': 'scan,Start\n1,maybe\n',
+      'ghost.csv': 'scan,Ghost\n1,1\n',
+    };
     const unknown = rungsmith(['simulate', 'm.json', '--watch', 'Motor,Nope'], files);
     expect(unknown.code).toBe(2);
     expect(unknown.err).toContain('unknown variable "Nope"');
@@ -101,7 +130,14 @@ describe('rungsmith simulate', () => {
     expect(bad.err).toContain('bad.csv line 2, column Start');
     expect(rungsmith(['simulate', 'm.json', '--inputs', 'ghost.csv'], files).err).toContain('column "Ghost"');
     const broken = JSON.parse(files['m.json']);
-    broken.pous[0].networks[0].elements.push({ id: 'x1', kind: 'coil', coil: 'COIL', variable: 'Undeclared', row: 1, col: 9 });
+    broken.pous[0].networks[0].elements.push({
+      id: 'x1',
+      kind: 'coil',
+      coil: 'COIL',
+      variable: 'Undeclared',
+      row: 1,
+      col: 9,
+    });
     const invalid = rungsmith(['simulate', 'b.json'], { 'b.json': JSON.stringify(broken) });
     expect(invalid.code).toBe(1);
     expect(invalid.err).toMatch(/^error LD-R\d+ Main\/network 1/m);

@@ -186,3 +186,33 @@ test('typing the variable of a coil completes from the table and offers to decla
   expect(editor.errors).toEqual([]);
   await editor.close();
 });
+
+test('the inspector edits a timer preset as a literal and explains a wrong one', async () => {
+  const editor = await EditorPage.open(browser, inject('appUrl'));
+  await editor.menu('File', 'Example: Traffic light (TON chain)');
+  await poll(async () => (await editor.project()).name).toBe('Traffic light');
+  // Find the RedTime timer from the variable table, then edit it in the inspector.
+  await editor.tab('Variables');
+  await editor.variableRow('RedTime').getByRole('button', { name: 'Show uses of RedTime' }).click();
+  await editor.tab('Inspector');
+  await poll(() => editor.inspector.getByRole('heading').first().textContent()).toBe('TON function block');
+  expect(await editor.inspector.getByTestId('inspector-instance').inputValue()).toBe('RedTime');
+
+  const preset = editor.inspector.getByTestId('pin-PT');
+  await editor.fill(preset, '5');
+  await poll(() => editor.inspector.getByText(/5 is an integer, not a TIME/).count()).toBe(1);
+  await editor.fill(preset, 'T#7s');
+  await poll(() => editor.inspector.getByText('literal TIME').count()).toBe(1);
+  const box = async () => {
+    const net = (await editor.project()).pous[0]!.networks.find((n) =>
+      n.elements.some((e) => e.kind === 'box' && e.instance === 'RedTime'),
+    );
+    return net?.elements.find((e) => e.kind === 'box');
+  };
+  expect(await box()).toMatchObject({ blockType: 'TON', inputs: { PT: 'T#7s' } });
+  // The problems list agrees: a valid preset, no problems.
+  await editor.tab('Problems');
+  await poll(() => editor.problems.getByTestId('problems-summary').textContent()).toBe('No problems');
+  expect(editor.errors).toEqual([]);
+  await editor.close();
+});

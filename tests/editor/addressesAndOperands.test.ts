@@ -1,7 +1,12 @@
 import { describe, expect, test } from 'vitest';
 import { newPou, newProject, variable } from '../../src/model/factory';
 import { nextFreeAddress } from '../../src/editor/variables/addresses';
-import { candidatesFor, rankCandidates, resolveName } from '../../src/editor/inspector/operands';
+import {
+  candidatesFor,
+  describeLiteral,
+  rankCandidates,
+  resolveName,
+} from '../../src/editor/inspector/operands';
 import { declareChoices, suggestedType } from '../../src/editor/inspector/declareOffer';
 
 const withVars = (vars: Parameters<typeof variable>[]) => {
@@ -97,5 +102,30 @@ describe('declare it?', () => {
   });
   test('no offer for a name that cannot be declared', () => {
     expect(declareChoices(project, '2x', { kind: 'contact' })).toEqual([]);
+  });
+});
+
+describe('literal operands on pins', () => {
+  test('a literal of the pin type is accepted and named', () => {
+    expect(describeLiteral('T#5s', 'TIME')).toEqual({ ok: true, text: 'literal TIME' });
+    expect(describeLiteral('10', 'INT')).toEqual({ ok: true, text: 'literal INT' });
+  });
+  test('a wrong or malformed literal says why', () => {
+    expect(describeLiteral('5', 'TIME')).toMatchObject({
+      ok: false,
+      text: expect.stringMatching(/not a TIME .*T#5s/),
+    });
+    expect(describeLiteral('300', 'SINT')).toMatchObject({
+      ok: false,
+      text: expect.stringMatching(/does not fit SINT/),
+    });
+    expect(describeLiteral('TRUE', 'ANY_NUM')).toMatchObject({
+      ok: false,
+      text: expect.stringMatching(/BOOL literal; this pin takes ANY_NUM/),
+    });
+  });
+  test('names are left to the variable lookup', () => {
+    expect(describeLiteral('Preset', 'INT')).toBeUndefined();
+    expect(describeLiteral('T1.ET', 'TIME')).toBeUndefined();
   });
 });

@@ -185,4 +185,26 @@ describe('function blocks in networks', () => {
     plc.scan();
     expect(plc.read('D')).toBe(expected);
   });
+
+  test.each([
+    ['iec', false],
+    ['openplc', true],
+  ] as const)('profile %s: MOD by zero gives 0 with ENO %s', (profile, eno) => {
+    const p = project(vars('A INT := 7', 'Z INT', 'M INT := 5', 'Ok BOOL'), [
+      ladder(['- # # (Ok)', '. # # .', '. # # .'], { boxes: [fn('MOD', { IN1: 'A', IN2: 'Z' }, { OUT: 'M' })] }),
+    ], profile);
+    const plc = plcOf(p);
+    plc.scan();
+    expect([plc.read('M'), plc.read('Ok')]).toEqual([0, eno]);
+  });
+});
+
+describe('data lines of BOOL type', () => {
+  test('a MOVE of a BOOL variable drives a coil as power flow', () => {
+    const p = project(vars('A BOOL', 'X BOOL'), [ladder(['- # # .', '. # # (X)'], { boxes: [fn('MOVE', { IN: 'A' }, {})] })]);
+    const plc = plcOf(p);
+    plc.write('A', true);
+    plc.scan();
+    expect(plc.read('X')).toBe(true);
+  });
 });

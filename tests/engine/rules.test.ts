@@ -242,6 +242,18 @@ const CASES: Case[] = [
     good: [ladder(['[A] # #'], { boxes: [ton({ PT: 'T#1s500ms' })] })],
   },
   {
+    rule: 'LD-E04',
+    what: 'an operand for a pin the block does not have',
+    bad: [ladder(['[A] # #'], { boxes: [ton({ PT: 'T#1s', PV: '3' })] })],
+    good: [ladder(['[A] # #'], { boxes: [ton({ pt: 'T#1s' })] })],
+  },
+  {
+    rule: 'LD-E30',
+    what: 'an element outside the grid',
+    bad: [{ ...ladder(['[A] (X)']), cols: 1 }],
+    good: [ladder(['[A] (X)'])],
+  },
+  {
     rule: 'LD-W01',
     what: 'an empty network',
     bad: [ladder(['[A] (X)']), ladder([''], { cols: 4 })],
@@ -298,6 +310,7 @@ describe('the variable table', () => {
     ['LD-E13', 'a location that does not hold the type', [...vars('A BOOL', 'X BOOL', 'Q INT %QX0.1')]],
     ['LD-E14', 'a bad initial value', [...vars('A BOOL', 'X BOOL', 'N INT := 70000')]],
     ['LD-E15', 'an unknown type', [...vars('A BOOL', 'X BOOL', 'N STRING')]],
+    ['LD-W02', 'two variables at one location', [...vars('A BOOL %IX0.0', 'X BOOL', 'Alias BOOL %IX0.0')]],
   ] as const)('%s %s (network -1)', (rule, _what, specs) => {
     expect(table(...specs)).toContain(`${rule} -1`);
   });

@@ -227,3 +227,18 @@ describe('watchdog', () => {
     expect(plc.scan().fault?.message).toBe('watchdog: scan exceeded 50 network evaluations; looping in network 3 (label LOOP)');
   });
 });
+
+describe('stepping through jumps', () => {
+  test('stepNetwork follows a jump and reports the network it lands on', () => {
+    const p = project(vars('A BOOL := TRUE', 'X BOOL', 'Y BOOL'), [ladder(['[A] >>END']), ladder(['[A] (X)']), ladder(['[A] (Y)'], { label: 'END' })]);
+    const plc = plcOf(p);
+    expect(plc.stepNetwork()).toEqual({ executed: 0, next: 2, scanDone: false });
+    expect(plc.nextNetwork).toBe(2);
+    expect(plc.stepNetwork()).toEqual({ executed: 2, next: -1, scanDone: true });
+    expect([plc.read('X'), plc.read('Y')]).toEqual([false, true]);
+    expect(plc.snapshot().networks.map((n) => n.executed)).toEqual([true, false, true]);
+    // A full scan afterwards runs the same path.
+    plc.scan();
+    expect(plc.snapshot().networks.map((n) => n.executed)).toEqual([true, false, true]);
+  });
+});

@@ -14,9 +14,13 @@ import { schemaErrors } from '../plcopen/xsd';
 const root = fileURLToPath(new URL('../..', import.meta.url));
 const CORPUS = join(root, '..', 'shared', 'plcopen', 'examples');
 if (!existsSync(CORPUS)) {
-  throw new Error(`The PLCopen corpus is missing: expected the real example files in ${CORPUS} (../shared/plcopen/examples next to the repository).`);
+  throw new Error(
+    `The PLCopen corpus is missing: expected the real example files in ${CORPUS} (../shared/plcopen/examples next to the repository).`,
+  );
 }
-const FILES = readdirSync(CORPUS).filter((f) => f.endsWith('.xml')).sort();
+const FILES = readdirSync(CORPUS)
+  .filter((f) => f.endsWith('.xml'))
+  .sort();
 
 /**
  * Why a program of the corpus cannot run in Rungsmith, by rule id. These are facts of the files, not
@@ -24,7 +28,17 @@ const FILES = readdirSync(CORPUS).filter((f) => f.endsWith('.xml')).sort();
  * STRING variables (LD-E15), non-standard addresses like %IW0.0 (LD-E12), coils wired straight to
  * the rail (LD-R02), unconnected contacts and wires into unknown blocks (LD-R03/LD-R10/LD-E02/LD-E03).
  */
-const EXPLAINED = new Set(['LD-E01', 'LD-E02', 'LD-E03', 'LD-E12', 'LD-E15', 'LD-R02', 'LD-R03', 'LD-R10', 'LD-R01']);
+const EXPLAINED = new Set([
+  'LD-E01',
+  'LD-E02',
+  'LD-E03',
+  'LD-E12',
+  'LD-E15',
+  'LD-R02',
+  'LD-R03',
+  'LD-R10',
+  'LD-R01',
+]);
 
 describe('PLCopen corpus', () => {
   it('has the real files', () => {
@@ -41,8 +55,11 @@ describe('PLCopen corpus', () => {
     // Where the import said a wiring could not be drawn exactly on the grid, the program may differ
     // (a known limit of the grid layout for FBD-style LD, reported to the user); elsewhere every error
     // must be one the file itself carries.
-    const redrawn = new Set(r.report.warnings.filter((w) => /cannot be drawn exactly/.test(w.message)).map((w) => w.pou));
-    for (const d of diagnostics.filter((x) => x.severity === 'error' && !redrawn.has(x.pou))) expect(EXPLAINED, `${d.rule} ${d.message}`).toContain(d.rule);
+    const redrawn = new Set(
+      r.report.warnings.filter((w) => /cannot be drawn exactly/.test(w.message)).map((w) => w.pou),
+    );
+    for (const d of diagnostics.filter((x) => x.severity === 'error' && !redrawn.has(x.pou)))
+      expect(EXPLAINED, `${d.rule} ${d.message}`).toContain(d.rule);
     for (const pou of r.project.pous.filter((p) => p.kind === 'PROGRAM')) {
       const { program } = compileProgram(r.project, { pou: pou.name });
       if (!program) continue;

@@ -4,7 +4,9 @@ import type { Network } from '../../src/model/project';
 
 export function ascii(net: Network): string {
   const W = 6;
-  const lines: string[][] = Array.from({ length: net.rows * 2 }, () => Array.from({ length: net.cols * W + 1 }, () => ' '));
+  const lines: string[][] = Array.from({ length: net.rows * 2 }, () =>
+    Array.from({ length: net.cols * W + 1 }, () => ' '),
+  );
   const put = (r: number, x: number, s: string) => {
     for (let i = 0; i < s.length; i++) if (lines[r]![x + i] !== undefined) lines[r]![x + i] = s[i]!;
   };
@@ -21,11 +23,21 @@ export function ascii(net: Network): string {
     const x = el.col * W + 1;
     const y = el.row * 2;
     switch (el.kind) {
-      case 'link': put(y, x, '-----'); break;
-      case 'contact': put(y, x, `[${el.contact === 'NO' ? ' ' : el.contact[0]}]${el.variable.slice(0, 2)}`); break;
-      case 'coil': put(y, x, `(${el.coil[0]})${el.variable.slice(0, 2)}`); break;
-      case 'jump': put(y, x, `>>${el.target.slice(0, 3)}`); break;
-      case 'return': put(y, x, '<RET>'); break;
+      case 'link':
+        put(y, x, '-----');
+        break;
+      case 'contact':
+        put(y, x, `[${el.contact === 'NO' ? ' ' : el.contact[0]}]${el.variable.slice(0, 2)}`);
+        break;
+      case 'coil':
+        put(y, x, `(${el.coil[0]})${el.variable.slice(0, 2)}`);
+        break;
+      case 'jump':
+        put(y, x, `>>${el.target.slice(0, 3)}`);
+        break;
+      case 'return':
+        put(y, x, '<RET>');
+        break;
       case 'box': {
         const l = boxLayout(el);
         put(y, x, `[${el.blockType}`.slice(0, 11));

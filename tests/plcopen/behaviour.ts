@@ -25,7 +25,7 @@ export function trace(project: Project, pou: string, scans = 60): string[] {
   const plc = createPlc(program, { cycleMs: 100 });
   const inputs = drivable(project, pou);
   let seed = 12345;
-  const rnd = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+  const rnd = () => (seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648;
   const names = plc.variableNames();
   const out: string[] = [];
   for (let k = 0; k < scans; k++) {
@@ -60,7 +60,10 @@ export function connections(project: Project): string[] {
       };
       g.sources.forEach((pins, ei) =>
         pins.forEach((srcs, pin) => {
-          for (const s of srcs) out.push(`${pou.name} ${desc(ei)}.${pin} <- ${s.kind === 'rail' ? 'rail' : `${desc(s.el)}.${s.pin}`}`);
+          for (const s of srcs)
+            out.push(
+              `${pou.name} ${desc(ei)}.${pin} <- ${s.kind === 'rail' ? 'rail' : `${desc(s.el)}.${s.pin}`}`,
+            );
         }),
       );
     });

@@ -47,7 +47,9 @@ describe('real OpenPLC files', () => {
   it('coils feeding coils and a negated coil fed by an OR of two coil outputs', () => {
     const { project } = imported('corpus/idaholab__SPEMMCRA_DNP3test.xml');
     const net = project.pous[0]!.networks[0]!;
-    expect(net.elements.filter((e) => e.kind === 'coil').map((e) => (e.kind === 'coil' ? e.coil : ''))).toContain('NEG');
+    expect(
+      net.elements.filter((e) => e.kind === 'coil').map((e) => (e.kind === 'coil' ? e.coil : '')),
+    ).toContain('NEG');
     expect(net.elements.some((e) => e.kind === 'contact')).toBe(false);
   });
 

@@ -17,7 +17,9 @@ describe('PLCopen import errors', () => {
   });
 
   it('a tag left open reports where the file ends', () => {
-    const e = errorOf('<?xml version="1.0"?>\n<project xmlns="http://www.plcopen.org/xml/tc6_0201">\n  <types>\n');
+    const e = errorOf(
+      '<?xml version="1.0"?>\n<project xmlns="http://www.plcopen.org/xml/tc6_0201">\n  <types>\n',
+    );
     expect(e.message).toContain('the file ends inside <types>');
     expect(e.line).toBe(4);
   });
@@ -29,11 +31,16 @@ describe('PLCopen import errors', () => {
   });
 
   it('an unknown namespace is refused', () => {
-    expect(errorOf('<project xmlns="http://example.com/other"><types/></project>').message).toContain('unknown namespace');
+    expect(errorOf('<project xmlns="http://example.com/other"><types/></project>').message).toContain(
+      'unknown namespace',
+    );
   });
 
   it('a connection to a localId that does not exist names the element, its localId and line', () => {
-    const text = fixture('connector-continuation.xml').replace('<connection refLocalId="2">', '<connection refLocalId="99">');
+    const text = fixture('connector-continuation.xml').replace(
+      '<connection refLocalId="2">',
+      '<connection refLocalId="99">',
+    );
     const e = errorOf(text);
     expect(e).toMatchObject({ element: 'contact', localId: '3', pou: 'Main' });
     expect(e.line).toBeGreaterThan(20);
@@ -41,7 +48,10 @@ describe('PLCopen import errors', () => {
   });
 
   it('two objects with one localId are refused', () => {
-    const text = fixture('connector-continuation.xml').replace('<contact localId="3"', '<contact localId="2"');
+    const text = fixture('connector-continuation.xml').replace(
+      '<contact localId="3"',
+      '<contact localId="2"',
+    );
     expect(errorOf(text).message).toContain('localId 2 is used twice');
   });
 

@@ -19,7 +19,9 @@ describe('PLCopen export', () => {
     expect(await schemaErrors(xml)).toEqual([]);
     const root = parseXml(xml);
     expect(root.attrs.xmlns).toBe('http://www.plcopen.org/xml/tc6_0201');
-    expect(child(child(child(child(root, 'contentHeader')!, 'coordinateInfo')!, 'ld')!, 'scaling')).toBeDefined();
+    expect(
+      child(child(child(child(root, 'contentHeader')!, 'coordinateInfo')!, 'ld')!, 'scaling'),
+    ).toBeDefined();
     const task = all(root, 'task')[0]!;
     expect(task.attrs).toMatchObject({ name: 'MainTask', interval: 'T#10ms', priority: '1' });
     expect(child(task, 'pouInstance')!.attrs).toEqual({ name: 'MainInstance', typeName: 'Main' });
@@ -36,7 +38,9 @@ describe('PLCopen export', () => {
     const lists = all(elements, 'localVars');
     const constant = lists.find((l) => l.attrs.constant === 'true')!;
     expect(childrenNamed(constant, 'variable').map((v) => v.attrs.name)).toEqual(['Limit']);
-    const retained = lists.filter((l) => l.attrs.retain === 'true').flatMap((l) => childrenNamed(l, 'variable').map((v) => v.attrs.name));
+    const retained = lists
+      .filter((l) => l.attrs.retain === 'true')
+      .flatMap((l) => childrenNamed(l, 'variable').map((v) => v.attrs.name));
     // Q5 is declared RETAIN; Mem, Q6 and Q7 are written by retentive coils (M, SM, RM), which other tools only know as RETAIN.
     expect(retained.sort()).toEqual(['Mem', 'Q5', 'Q6', 'Q7']);
     expect(all(elements, 'documentation').some((d) => d.children[0]?.text === 'first input')).toBe(true);
@@ -44,14 +48,21 @@ describe('PLCopen export', () => {
 
   it('writes coil and contact kinds as PLCopen attributes', () => {
     const root = parseXml(exportPlcopen(allElements()));
-    const attrs = (c: XmlElement): Record<string, string | undefined> => ({ v: child(c, 'variable')!.text, ...c.attrs });
-    const coils = all(root, 'coil').filter((c) => child(c, 'variable')).map(attrs);
+    const attrs = (c: XmlElement): Record<string, string | undefined> => ({
+      v: child(c, 'variable')!.text,
+      ...c.attrs,
+    });
+    const coils = all(root, 'coil')
+      .filter((c) => child(c, 'variable'))
+      .map(attrs);
     expect(coils.find((c) => c.v === 'Q2')).toMatchObject({ negated: 'true' });
     expect(coils.find((c) => c.v === 'Latch' && c.storage === 'set')).toBeDefined();
     expect(coils.find((c) => c.v === 'Latch' && c.storage === 'reset')).toBeDefined();
     expect(coils.find((c) => c.v === 'Q4')).toMatchObject({ edge: 'rising' });
     expect(coils.find((c) => c.v === 'Q5')).toMatchObject({ edge: 'falling' });
-    const contacts = all(root, 'contact').filter((c) => child(c, 'variable')).map(attrs);
+    const contacts = all(root, 'contact')
+      .filter((c) => child(c, 'variable'))
+      .map(attrs);
     expect(contacts.find((c) => c.v === 'B' && c.negated === 'true')).toBeDefined();
     expect(contacts.find((c) => c.v === 'C' && c.edge === 'rising')).toBeDefined();
     expect(contacts.find((c) => c.v === 'B' && c.edge === 'falling')).toBeDefined();
@@ -68,7 +79,11 @@ describe('PLCopen export', () => {
           all(o, 'connectionPointOut').map((cp) => {
             const p = pt(child(o, 'position'));
             const r = pt(child(cp, 'relPosition'));
-            return { x: p.x + r.x, y: p.y + r.y, formal: all(o, 'variable').find((v) => v.children.includes(cp))?.attrs.formalParameter };
+            return {
+              x: p.x + r.x,
+              y: p.y + r.y,
+              formal: all(o, 'variable').find((v) => v.children.includes(cp))?.attrs.formalParameter,
+            };
           });
         for (const o of body.children) {
           const origin = pt(child(o, 'position'));
@@ -80,10 +95,14 @@ describe('PLCopen export', () => {
               expect(points[0]).toEqual({ x: origin.x + rel.x, y: origin.y + rel.y });
               const source = objects.get(c.attrs.refLocalId!)!;
               const end = points[points.length - 1]!;
-              const outs = pinsOut(source).filter((p) => !c.attrs.formalParameter || p.formal === undefined || p.formal === c.attrs.formalParameter);
+              const outs = pinsOut(source).filter(
+                (p) =>
+                  !c.attrs.formalParameter || p.formal === undefined || p.formal === c.attrs.formalParameter,
+              );
               expect(outs.some((p) => p.x === end.x && p.y === end.y)).toBe(true);
               // Wires are drawn with horizontal and vertical segments only.
-              for (let i = 1; i < points.length; i++) expect(points[i]!.x === points[i - 1]!.x || points[i]!.y === points[i - 1]!.y).toBe(true);
+              for (let i = 1; i < points.length; i++)
+                expect(points[i]!.x === points[i - 1]!.x || points[i]!.y === points[i - 1]!.y).toBe(true);
             }
           }
         }
@@ -96,7 +115,17 @@ describe('PLCopen export', () => {
     const project = {
       ...p,
       globals: [variable('Shift', 'INT', { location: '%MW3', retain: true })],
-      pous: [...p.pous, { ...p.pous[0]!, id: 'pf' as never, name: 'Helper', kind: 'FUNCTION' as const, returnType: 'INT', variables: [variable('X', 'INT', { varClass: 'input' })] }],
+      pous: [
+        ...p.pous,
+        {
+          ...p.pous[0]!,
+          id: 'pf' as never,
+          name: 'Helper',
+          kind: 'FUNCTION' as const,
+          returnType: 'INT',
+          variables: [variable('X', 'INT', { varClass: 'input' })],
+        },
+      ],
     };
     const xml = exportPlcopen(project);
     expect(await schemaErrors(xml)).toEqual([]);

@@ -7,7 +7,8 @@ import type { Project } from '../../src/model/project';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import type { ImportReport } from '../../src/plcopen/types';
 
-export const fixture = (name: string): string => readFileSync(fileURLToPath(new URL(`../fixtures/plcopen/${name}`, import.meta.url)), 'utf8');
+export const fixture = (name: string): string =>
+  readFileSync(fileURLToPath(new URL(`../fixtures/plcopen/${name}`, import.meta.url)), 'utf8');
 
 export function imported(name: string): { project: Project; report: ImportReport } {
   const r = importPlcopen(fixture(name));

@@ -6,7 +6,8 @@ import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { imported, run } from './fixtures';
 import { schemaErrors } from './xsd';
 
-const noErrors = (p: Parameters<typeof checkProject>[0]) => checkProject(p).filter((d) => d.severity === 'error');
+const noErrors = (p: Parameters<typeof checkProject>[0]) =>
+  checkProject(p).filter((d) => d.severity === 'error');
 
 describe('PLCopen import: hand-written fixtures', () => {
   it('jump, label and return: networks in order, the label on the network after it, behaviour kept', () => {
@@ -16,7 +17,9 @@ describe('PLCopen import: hand-written fixtures', () => {
     expect(nets.map((n) => n.label ?? '')).toEqual(['', '', 'OVER', '', '']);
     expect(nets[0]!.elements.find((e) => e.kind === 'jump')).toMatchObject({ target: 'OVER' });
     expect(nets[3]!.elements.some((e) => e.kind === 'return')).toBe(true);
-    expect(project.tasks).toEqual([{ name: 'Fast', cycleMs: 5, priority: 0, programs: [{ instance: 'inst0', pou: 'Main' }] }]);
+    expect(project.tasks).toEqual([
+      { name: 'Fast', cycleMs: 5, priority: 0, programs: [{ instance: 'inst0', pou: 'Main' }] },
+    ]);
     expect(noErrors(project)).toEqual([]);
     const plc = run(project, 'Main');
     plc.write('Skip', true);
@@ -36,7 +39,12 @@ describe('PLCopen import: hand-written fixtures', () => {
     const { project } = imported('connector-continuation.xml');
     expect(project.pous[0]!.networks).toHaveLength(1);
     const plc = run(project, 'Main');
-    for (const [a, b] of [[false, false], [true, false], [true, true], [false, true]] as const) {
+    for (const [a, b] of [
+      [false, false],
+      [true, false],
+      [true, true],
+      [false, true],
+    ] as const) {
       plc.write('A', a);
       plc.write('B', b);
       plc.scan();
@@ -48,7 +56,8 @@ describe('PLCopen import: hand-written fixtures', () => {
   it('edge contacts and edge coils; executionOrderId > 0 decides the network order', () => {
     const { project } = imported('edges-and-order.xml');
     const nets = project.pous[0]!.networks;
-    const coils = (i: number) => nets[i]!.elements.flatMap((e) => (e.kind === 'coil' ? [`${e.coil}:${e.variable}`] : []));
+    const coils = (i: number) =>
+      nets[i]!.elements.flatMap((e) => (e.kind === 'coil' ? [`${e.coil}:${e.variable}`] : []));
     expect(coils(0)).toEqual(['P:Pulse', 'COIL:Copy']);
     expect(coils(1)).toEqual(['COIL:Rise']);
     expect(coils(2)).toEqual(['COIL:Fall']);
@@ -67,14 +76,24 @@ describe('PLCopen import: hand-written fixtures', () => {
 
   it('keeps vendor addData and vendor elements, drops handleUnknown="discard" and says so', async () => {
     const { project, report } = imported('adddata.xml');
-    expect(report.warnings.map((w) => w.message)).toContain('addData "http://example.com/acme/cache" dropped (handleUnknown="discard")');
+    expect(report.warnings.map((w) => w.message)).toContain(
+      'addData "http://example.com/acme/cache" dropped (handleUnknown="discard")',
+    );
     const xml = exportPlcopen(project);
     expect(await schemaErrors(xml)).toEqual([]);
-    for (const kept of ['<acme:tag color="red">keep me</acme:tag>', '<acme:lamp/>', '<acme:pouInfo version="3"/>', '<acme:project id="42"/>', 'xmlns:acme="http://example.com/acme"'])
+    for (const kept of [
+      '<acme:tag color="red">keep me</acme:tag>',
+      '<acme:lamp/>',
+      '<acme:pouInfo version="3"/>',
+      '<acme:project id="42"/>',
+      'xmlns:acme="http://example.com/acme"',
+    ])
       expect(xml).toContain(kept);
     expect(xml).not.toContain('acme:cache');
     const again = importPlcopen(xml);
-    expect(again.ok && exportPlcopen(again.project, { now: new Date(0) })).toBe(exportPlcopen(project, { now: new Date(0) }));
+    expect(again.ok && exportPlcopen(again.project, { now: new Date(0) })).toBe(
+      exportPlcopen(project, { now: new Date(0) }),
+    );
   });
 
   it('CODESYS style (tc6_0200, CRLF, no geometry at all) imports into a readable layout from the wiring', () => {
@@ -82,11 +101,19 @@ describe('PLCopen import: hand-written fixtures', () => {
     expect(report.namespace).toBe('http://www.plcopen.org/xml/tc6_0200');
     expect(report.warnings.filter((w) => /cannot be drawn/.test(w.message))).toEqual([]);
     const pou = project.pous[0]!;
-    expect(pou.networks.map((n) => n.comment)).toEqual(['Motor seal-in', 'Lamp after 2 s of running', 'Count lamp scans']);
+    expect(pou.networks.map((n) => n.comment)).toEqual([
+      'Motor seal-in',
+      'Lamp after 2 s of running',
+      'Count lamp scans',
+    ]);
     // Rows by branch structure: the seal-in branch sits under Start, the box pins on their own rows.
     expect(pou.networks.map((n) => n.rows)).toEqual([2, 2, 3]);
     const seal = pou.networks[0]!;
-    expect(seal.elements.filter((e) => e.kind === 'contact').map((e) => [e.row, e.col])).toEqual([[0, 0], [1, 0], [0, 1]]);
+    expect(seal.elements.filter((e) => e.kind === 'contact').map((e) => [e.row, e.col])).toEqual([
+      [0, 0],
+      [1, 0],
+      [0, 1],
+    ]);
     expect(seal.vlinks).toEqual([{ row: 0, boundary: 1 }]);
     expect(noErrors(project)).toEqual([]);
     const plc = run(project, 'PLC_PRG', 500);
@@ -113,6 +140,10 @@ describe('PLCopen import: hand-written fixtures', () => {
     const xml = exportPlcopen(project);
     expect(await schemaErrors(xml)).toEqual([]);
     const again = importPlcopen(xml);
-    expect(again.ok && again.project.pous.map((p) => p.name)).toEqual(['Sequence_Light', 'Sequence_Started', 'Nothing']);
+    expect(again.ok && again.project.pous.map((p) => p.name)).toEqual([
+      'Sequence_Light',
+      'Sequence_Started',
+      'Nothing',
+    ]);
   });
 });

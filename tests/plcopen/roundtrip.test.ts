@@ -18,7 +18,11 @@ const cases: [string, () => Project][] = [
 ];
 
 const kinds = (p: Project) =>
-  p.pous.flatMap((pou) => pou.networks.flatMap((n) => n.elements.filter((e) => e.kind !== 'link').map((e) => e.kind))).sort();
+  p.pous
+    .flatMap((pou) =>
+      pou.networks.flatMap((n) => n.elements.filter((e) => e.kind !== 'link').map((e) => e.kind)),
+    )
+    .sort();
 
 describe('PLCopen round trip', () => {
   it.each(cases)('%s: export validates, import gives back the same program', async (_name, build) => {
@@ -35,14 +39,16 @@ describe('PLCopen round trip', () => {
     expect(kinds(p)).toEqual(kinds(original));
     expect(connections(p)).toEqual(connections(original));
     expect(checkProject(p).filter((d) => d.severity === 'error')).toEqual([]);
-    for (const pou of original.pous.filter((x) => x.kind === 'PROGRAM')) expect(trace(p, pou.name)).toEqual(trace(original, pou.name));
+    for (const pou of original.pous.filter((x) => x.kind === 'PROGRAM'))
+      expect(trace(p, pou.name)).toEqual(trace(original, pou.name));
   });
 
   it('keeps network titles, comments and labels', () => {
     const original = EXAMPLES.find((e) => e.id === 'jump-label')!.build();
     const back = importPlcopen(exportPlcopen(original));
     if (!back.ok) throw new Error('import failed');
-    const meta = (p: Project) => p.pous[0]!.networks.map((n) => ({ title: n.title, comment: n.comment, label: n.label }));
+    const meta = (p: Project) =>
+      p.pous[0]!.networks.map((n) => ({ title: n.title, comment: n.comment, label: n.label }));
     expect(meta(back.project)).toEqual(meta(original));
   });
 

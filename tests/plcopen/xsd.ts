@@ -7,6 +7,9 @@ const SCHEMA = readFileSync(fileURLToPath(new URL('../../schema/tc6_xml_v201.xsd
 
 /** The schema errors of an XML text ([] when valid). */
 export async function schemaErrors(xml: string, fileName = 'export.xml'): Promise<string[]> {
-  const r = await validateXML({ xml: [{ fileName, contents: xml }], schema: [{ fileName: 'tc6_xml_v201.xsd', contents: SCHEMA }] });
+  const r = await validateXML({
+    xml: [{ fileName, contents: xml }],
+    schema: [{ fileName: 'tc6_xml_v201.xsd', contents: SCHEMA }],
+  });
   return r.valid ? [] : r.errors.map((e) => e.message ?? e.rawMessage);
 }

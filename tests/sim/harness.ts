@@ -2,13 +2,17 @@
 import type { Value } from '../../src/model/iecTypes';
 import { realEngine } from '../../src/sim/engineAdapter';
 import type { HostMessage, SimFrame, SimLayout, WorkerMessage } from '../../src/sim/protocol';
-import { SimSession } from '../../src/sim/session';
+import { SimSession, type SimEngine } from '../../src/sim/session';
 import { ManualScheduler } from './manualScheduler';
 
 export class SimHarness {
   readonly scheduler = new ManualScheduler();
   readonly messages: WorkerMessage[] = [];
-  readonly session = new SimSession({ engine: realEngine, scheduler: this.scheduler, post: (m) => this.messages.push(m) });
+  readonly session: SimSession;
+
+  constructor(engine: SimEngine = realEngine) {
+    this.session = new SimSession({ engine, scheduler: this.scheduler, post: (m) => this.messages.push(m) });
+  }
 
   send(...messages: HostMessage[]): this {
     for (const m of messages) this.session.handle(m);

@@ -1,5 +1,8 @@
 import { describe, expect, test } from 'vitest';
 import { POWER_OUT } from '../../src/editor/sim/useSimOverlay';
+import type { Plc } from '../../src/engine/api';
+import { realEngine } from '../../src/sim/engineAdapter';
+import type { SimEngine } from '../../src/sim/session';
 import { SimHarness } from './harness';
 import { brokenProgram, motorProgram, runawayProgram, threeNetworks, timerProgram } from './programs';
 
@@ -140,6 +143,29 @@ describe('faults', () => {
     h.send({ type: 'reset' });
     expect(h.frame).toMatchObject({ mode: 'stopped', scan: 0 });
     expect(h.frame.fault).toBeUndefined();
+  });
+});
+
+describe('design decision: an internal error is reported, never a silent hang', () => {
+  test('a scan that throws stops the run in Paused with the error shown', () => {
+    // An engine whose fourth scan throws, standing in for a bug; a PLC fault is a different thing (above).
+    const failing: SimEngine = {
+      ...realEngine,
+      createPlc(program, options) {
+        const plc = realEngine.createPlc(program, options);
+        let scans = 0;
+        return new Proxy(plc, {
+          get(target, key) {
+            if (key === 'scan') return () => (++scans > 3 ? (() => { throw new Error('boom'); })() : target.scan());
+            const value: unknown = Reflect.get(target, key);
+            return typeof value === 'function' ? (value as (...a: unknown[]) => unknown).bind(target) : value;
+          },
+        }) as Plc;
+      },
+    };
+    const h = new SimHarness(failing).send({ type: 'run', project: motorProgram() }).advance(100);
+    expect(h.frame.mode).toBe('paused');
+    expect(h.of('error').at(-1)?.message).toMatch(/the simulation stopped: boom/);
   });
 });
 

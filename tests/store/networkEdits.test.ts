@@ -166,3 +166,27 @@ describe('variables and element updates through the store', () => {
     expect(selectNetworks(store.getState())[0]!.elements[0]).toMatchObject({ coil: 'COIL', variable: '' });
   });
 });
+
+describe('rows', () => {
+  test('inserting a row moves the rows below down and extends vertical links through it', () => {
+    const store = createDocumentStore(newProject('p'));
+    const s = store.getState();
+    const net = selectNetworks(s)[0]!.id;
+    s.placeElement(net, { row: 0, col: 0 }, { kind: 'contact', contact: 'NO', variable: 'A' });
+    s.placeElement(net, { row: 1, col: 0 }, { kind: 'contact', contact: 'NO', variable: 'B' });
+    s.addVLink(net, { row: 0, boundary: 1 });
+    s.insertRow(net, 1);
+    const n = selectNetworks(store.getState())[0]!;
+    expect(n.rows).toBe(4);
+    expect(n.elements.map((e) => e.row)).toEqual([0, 2]);
+    expect(n.vlinks).toEqual([
+      { row: 0, boundary: 1 },
+      { row: 1, boundary: 1 },
+    ]);
+    expect(store.getState().deleteRow(net, 1)).toBe(true);
+    const back = selectNetworks(store.getState())[0]!;
+    expect(back.elements.map((e) => e.row)).toEqual([0, 1]);
+    expect(back.vlinks).toEqual([{ row: 0, boundary: 1 }]);
+    expect(store.getState().deleteRow(net, 0)).toBe(false);
+  });
+});

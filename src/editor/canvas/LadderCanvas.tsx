@@ -31,12 +31,14 @@ import { useCanvasPointer, type PointerView } from './useCanvasPointer';
 import './canvas.css';
 
 const EMPTY_SET: ReadonlySet<ElementId> = new Set();
-/** Screen pixels drawn beyond each edge of the viewport; the stage moves in steps of this. */
-const BAND = 320;
+/** Screen pixels drawn beyond the viewport's edges; the stage moves in steps of these. Tall
+ * bands keep redraws rare while scrolling through networks; sideways scrolling is rarer. */
+const BAND_X = 160;
+const BAND_Y = 640;
 
 const windowFor = (left: number, top: number) => ({
-  left: Math.max(0, Math.floor(left / BAND) * BAND - BAND),
-  top: Math.max(0, Math.floor(top / BAND) * BAND - BAND),
+  left: Math.max(0, Math.floor(left / BAND_X) * BAND_X - BAND_X),
+  top: Math.max(0, Math.floor(top / BAND_Y) * BAND_Y - BAND_Y),
 });
 
 export function LadderCanvas() {
@@ -170,8 +172,8 @@ export function LadderCanvas() {
   };
   useLayoutEffect(followScroll);
 
-  const stageWidth = size.width + 2 * BAND;
-  const stageHeight = size.height + 2 * BAND;
+  const stageWidth = size.width + 2 * BAND_X;
+  const stageHeight = size.height + 2 * BAND_Y;
   const { first, last } = visibleRange(layout, win.top / zoom, (win.top + stageHeight) / zoom);
   const selectedSet = useMemo(() => new Set(selection.elements), [selection]);
   const refocus = () => scrollRef.current?.focus({ preventScroll: true });

@@ -200,10 +200,35 @@ export const COMMANDS: readonly EditorCommand[] = [
     },
   },
   {
+    id: 'network.insertRow',
+    label: 'Insert row below the cursor',
+    group: 'Network',
+    keys: ['mod+enter'],
+    inMenu: true,
+    run: (ctx) => {
+      const c = ensureCursor(ctx);
+      ctx.doc.getState().insertRow(c.network, c.row + 1);
+      moveCursor(ctx, 1, 0);
+    },
+  },
+  {
+    id: 'network.deleteRow',
+    label: 'Delete empty row at the cursor',
+    group: 'Network',
+    keys: ['mod+shift+backspace'],
+    inMenu: true,
+    run: (ctx) => {
+      const c = ensureCursor(ctx);
+      if (!ctx.doc.getState().deleteRow(c.network, c.row))
+        ctx.ui.getState().setStatus('Only an empty row can be deleted (and not the last one).');
+      else moveCursor(ctx, c.row > 0 ? -1 : 0, 0);
+    },
+  },
+  {
     id: 'network.delete',
     label: 'Delete network',
     group: 'Network',
-    keys: ['mod+shift+delete'],
+    keys: ['alt+shift+delete'],
     inMenu: true,
     run: deleteCurrentNetwork,
   },

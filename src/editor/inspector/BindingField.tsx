@@ -4,11 +4,8 @@ import { useId } from 'react';
 import { findVariable } from '../../model/factory';
 import { selectActivePou, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { declareChoices } from './declareOffer';
-import { acceptedTypes, pinTypeMembers, resolveName, type BindingRole } from './operands';
-import { canWiden } from '../../engine/values/types';
-import type { PinType } from '../../model/iecTypes';
+import { acceptedTypes, describeLiteral, resolveName, type BindingRole } from './operands';
 import { VariableInput } from './VariableInput';
-import { parseLiteral } from '../../engine/values/literals';
 
 interface Props {
   readonly label: string;
@@ -40,24 +37,6 @@ export function BindingField({ label, value, role, onCommit, placeholder, testId
   );
 }
 
-/**
- * What a literal operand is ("literal TIME"), or why it is not a valid one for the pin; undefined
- * when the text is a name (starts with a letter or _ and is not a typed literal like T#5s).
- */
-function describeLiteral(text: string, pinType: PinType): { ok: boolean; text: string } | undefined {
-  const members = pinTypeMembers(pinType);
-  const expected = members.length === 1 ? members[0] : undefined;
-  const literal = parseLiteral(text, expected);
-  if (literal.ok) {
-    const fits = members.includes(literal.type) || members.some((m) => canWiden(literal.type, m));
-    return fits
-      ? { ok: true, text: `literal ${literal.type}` }
-      : { ok: false, text: `${text} is a ${literal.type} literal; this pin takes ${members.length > 4 ? pinType : members.join(' or ')}` };
-  }
-  const looksLikeName = /^[A-Za-z_][A-Za-z0-9_.]*$/.test(text) && !text.includes('#');
-  return looksLikeName ? undefined : { ok: false, text: literal.message };
-}
-
 function BindingInfo({ value, role }: { value: string; role: BindingRole }) {
   const store = useDocumentStore();
   const project = useDocument(selectProject);
@@ -65,7 +44,8 @@ function BindingInfo({ value, role }: { value: string; role: BindingRole }) {
   if (!pou || value.trim() === '') return null;
   if (role.kind === 'pin' && role.direction === 'input') {
     const literal = describeLiteral(value.trim(), role.pinType);
-    if (literal) return <p className={`rs-binding-info${literal.ok ? '' : ' rs-error-text'}`}>{literal.text}</p>;
+    if (literal)
+      return <p className={`rs-binding-info${literal.ok ? '' : ' rs-error-text'}`}>{literal.text}</p>;
   }
   const resolution = resolveName(project, pou, value);
   switch (resolution.status) {

@@ -11,6 +11,8 @@ import {
   type PinType,
 } from '../../model/iecTypes';
 import type { Pou, Project, Variable } from '../../model/project';
+import { parseLiteral } from '../../engine/values/literals';
+import { canWiden } from '../../engine/values/types';
 
 /** The place a name is typed into. */
 export type BindingRole =
@@ -121,4 +123,25 @@ export function resolveName(project: Project, pou: Pou, text: string): Resolutio
       : { status: 'other', message: `${type} ${base} has bits 0..${bits - 1}` };
   }
   return { status: 'other', message: `"${base}" is a ${type} and has no member ${member}` };
+}
+
+/**
+ * What a literal operand is ("literal TIME"), or why it is not a valid one for the pin; undefined
+ * when the text is a name (starts with a letter or _ and is not a typed literal like T#5s).
+ */
+export function describeLiteral(text: string, pinType: PinType): { ok: boolean; text: string } | undefined {
+  const members = pinTypeMembers(pinType);
+  const expected = members.length === 1 ? members[0] : undefined;
+  const literal = parseLiteral(text, expected);
+  if (literal.ok) {
+    const fits = members.includes(literal.type) || members.some((m) => canWiden(literal.type, m));
+    return fits
+      ? { ok: true, text: `literal ${literal.type}` }
+      : {
+          ok: false,
+          text: `${text} is a ${literal.type} literal; this pin takes ${members.length > 4 ? pinType : members.join(' or ')}`,
+        };
+  }
+  const looksLikeName = /^[A-Za-z_][A-Za-z0-9_.]*$/.test(text) && !text.includes('#');
+  return looksLikeName ? undefined : { ok: false, text: literal.message };
 }

@@ -38,7 +38,11 @@ export function PlcopenHost() {
 
 /** "line 12 <contact localId="7"> (POU Main): message" */
 function where(i: ImportIssue): string {
-  return [i.line !== undefined ? `line ${i.line}` : '', i.element ? `<${i.element}${i.localId ? ` localId="${i.localId}"` : ''}>` : '', i.pou ? `(POU ${i.pou})` : '']
+  return [
+    i.line !== undefined ? `line ${i.line}` : '',
+    i.element ? `<${i.element}${i.localId ? ` localId="${i.localId}"` : ''}>` : '',
+    i.pou ? `(POU ${i.pou})` : '',
+  ]
     .filter(Boolean)
     .join(' ');
 }
@@ -68,11 +72,18 @@ function ImportReportDialog() {
   const networks = project.pous.reduce((n, p) => n + p.networks.length, 0);
   return (
     <div className="rs-modal-backdrop" onKeyDown={(e) => e.key === 'Escape' && close()}>
-      <div className="rs-modal rs-plcopen-report" role="dialog" aria-modal="true" aria-labelledby="rs-plcopen-title" data-testid="plcopen-report">
+      <div
+        className="rs-modal rs-plcopen-report"
+        role="dialog"
+        aria-modal="true"
+        aria-labelledby="rs-plcopen-title"
+        data-testid="plcopen-report"
+      >
         <h2 id="rs-plcopen-title">Import {fileName}</h2>
         <p>
           PLCopen XML{report.producer ? ` written by ${report.producer}` : ''}: {project.pous.length} LD POU
-          {project.pous.length === 1 ? '' : 's'}, {networks} network{networks === 1 ? '' : 's'}, {project.tasks.length} task
+          {project.pous.length === 1 ? '' : 's'}, {networks} network{networks === 1 ? '' : 's'},{' '}
+          {project.tasks.length} task
           {project.tasks.length === 1 ? '' : 's'}.
         </p>
         {project.pous.length > 1 ? (
@@ -81,14 +92,17 @@ function ImportReportDialog() {
             <select value={pou} onChange={(e) => setPou(e.target.value)} data-testid="plcopen-pou-choice">
               {project.pous.map((p) => (
                 <option key={p.id} value={p.id}>
-                  {p.name} ({p.kind.toLowerCase().replace('_', ' ')}, {p.networks.length} network{p.networks.length === 1 ? '' : 's'})
+                  {p.name} ({p.kind.toLowerCase().replace('_', ' ')}, {p.networks.length} network
+                  {p.networks.length === 1 ? '' : 's'})
                 </option>
               ))}
             </select>
             <span className="rs-plcopen-hint">All POUs are kept in the project.</span>
           </label>
         ) : null}
-        {project.pous.length === 0 ? <p className="rs-error-text">The file has no LD POU that Rungsmith can open.</p> : null}
+        {project.pous.length === 0 ? (
+          <p className="rs-error-text">The file has no LD POU that Rungsmith can open.</p>
+        ) : null}
         {report.warnings.length ? (
           <>
             <h3>
@@ -124,7 +138,13 @@ function ImportFailureDialog() {
   const close = () => plcopenUi.getState().setFailure(undefined);
   return (
     <div className="rs-modal-backdrop" onKeyDown={(e) => e.key === 'Escape' && close()}>
-      <div className="rs-modal" role="alertdialog" aria-modal="true" aria-labelledby="rs-plcopen-failed" data-testid="plcopen-failure">
+      <div
+        className="rs-modal"
+        role="alertdialog"
+        aria-modal="true"
+        aria-labelledby="rs-plcopen-failed"
+        data-testid="plcopen-failure"
+      >
         <h2 id="rs-plcopen-failed">Could not import {failure.fileName}</h2>
         <p>The file is not PLCopen XML Rungsmith can read. The open project is unchanged.</p>
         <IssueList issues={failure.errors} testId="plcopen-errors" />

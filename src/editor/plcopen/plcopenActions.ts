@@ -37,7 +37,10 @@ export async function readImportFile(file: File): Promise<void> {
   try {
     text = await file.text();
   } catch (e) {
-    plcopenUi.getState().setFailure({ fileName: file.name, errors: [{ message: `could not read the file: ${(e as Error).message}` }] });
+    plcopenUi.getState().setFailure({
+      fileName: file.name,
+      errors: [{ message: `could not read the file: ${(e as Error).message}` }],
+    });
     return;
   }
   const r = importPlcopen(text);
@@ -52,6 +55,10 @@ export function openImported(store: DocumentStore, pending: PendingImport, pouId
     store.getState().loadProject(pending.project);
     if (pouId) store.getState().setActivePou(pouId);
     const n = pending.report.warnings.length;
-    filesUi.getState().setNotice(`Imported ${pending.fileName}${n ? ` (${n} note${n === 1 ? '' : 's'} in the import report)` : ''}.`);
+    filesUi
+      .getState()
+      .setNotice(
+        `Imported ${pending.fileName}${n ? ` (${n} note${n === 1 ? '' : 's'} in the import report)` : ''}.`,
+      );
   });
 }

@@ -31,6 +31,9 @@ function showVariable(project: Project, pou: Pou, message: string) {
   focusVariable('', false);
 }
 
+/** Rows rendered at most: a huge list helps nobody and would slow the page. */
+const MAX_ROWS = 500;
+
 export function ProblemsPanel() {
   const diagnostics = useDiagnostics();
   const documentStore = useDocumentStore();
@@ -68,7 +71,7 @@ export function ProblemsPanel() {
       </header>
       {shown.length > 0 && (
         <ul className="rs-problems-list" aria-label="Problem list">
-          {shown.map((d, i) => (
+          {shown.slice(0, MAX_ROWS).map((d, i) => (
             <li
               key={`${d.rule}:${d.pou}:${d.network}:${d.elementId ?? ''}:${d.cell?.row ?? ''}:${d.cell?.col ?? ''}:${i}`}
             >
@@ -93,6 +96,12 @@ export function ProblemsPanel() {
               </button>
             </li>
           ))}
+          {shown.length > MAX_ROWS && (
+            <li className="rs-problems-more">
+              … and {shown.length - MAX_ROWS} more; fix the first ones
+              {showWarnings ? ' or hide warnings' : ''} to see them.
+            </li>
+          )}
         </ul>
       )}
     </section>

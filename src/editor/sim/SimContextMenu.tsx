@@ -16,7 +16,10 @@ export function SimContextMenu() {
 function OpenMenu({ x, y, variable }: { x: number; y: number; variable: string }) {
   const sim = useSimStore();
   const ref = useRef<HTMLDivElement>(null);
-  const type = useSim((s) => s.layout?.variables[s.variableIndex.get(variable.toUpperCase()) ?? -1]?.type);
+  const described = useSim((s) => s.layout?.variables[s.variableIndex.get(variable.toUpperCase()) ?? -1]);
+  const type = described?.type;
+  // The engine forces variables, not FB pins (a PLC forces I/O and memory, not block internals).
+  const forceable = described !== undefined && described.role !== 'pin';
   const value = useSim((s) => liveText(s, variable));
   const forced = useSim((s) => forcedText(s, variable));
   const [text, setText] = useState('');
@@ -45,7 +48,9 @@ function OpenMenu({ x, y, variable }: { x: number; y: number; variable: string }
         {variable} {value !== undefined && <span className="rs-sim-unit">= {value}</span>}
         {forced !== undefined && <span className="rs-sim-forced-tag"> forced {forced}</span>}
       </div>
-      {type === 'BOOL' ? (
+      {!forceable ? (
+        <div className="rs-sim-menu-row rs-sim-unit">Function block pins cannot be forced.</div>
+      ) : type === 'BOOL' ? (
         <>
           <button type="button" role="menuitem" onClick={act(() => s.force(variable, { value: true }))}>Force TRUE</button>
           <button type="button" role="menuitem" onClick={act(() => s.force(variable, { value: false }))}>Force FALSE</button>
@@ -57,7 +62,9 @@ function OpenMenu({ x, y, variable }: { x: number; y: number; variable: string }
           <button type="button" role="menuitem" disabled={!text.trim()} onClick={act(() => s.force(variable, { text }))}>Force</button>
         </div>
       )}
-      <button type="button" role="menuitem" disabled={forced === undefined} onClick={act(() => s.unforce(variable))}>Unforce</button>
+      {forceable && (
+        <button type="button" role="menuitem" disabled={forced === undefined} onClick={act(() => s.unforce(variable))}>Unforce</button>
+      )}
       <button type="button" role="menuitem" onClick={act(() => s.unforceAll())}>Remove all forces</button>
       <button type="button" role="menuitem" onClick={act(() => s.addWatch(variable))}>Add to watch</button>
       <button type="button" role="menuitem" onClick={act(() => s.toggleTrend(variable))}>

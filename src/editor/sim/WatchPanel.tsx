@@ -1,5 +1,6 @@
 // Watch table: chosen variables with live values; write a value once, force or unforce it, trend it.
 import { useState } from 'react';
+import type { SimVariable } from '../../sim/protocol';
 import type { SimState } from '../../store/simStore';
 import { forcedText, liveText } from './liveValues';
 import { useSim, useSimStore } from './simContext';
@@ -47,7 +48,7 @@ export function WatchPanel() {
           </thead>
           <tbody>
             {watch.map((name) => (
-              <WatchRow key={name} name={name} type={candidates.find((c) => c.name.toUpperCase() === name.toUpperCase())?.type ?? '?'} />
+              <WatchRow key={name} name={name} variable={candidates.find((c) => c.name.toUpperCase() === name.toUpperCase())} />
             ))}
           </tbody>
         </table>
@@ -56,7 +57,9 @@ export function WatchPanel() {
   );
 }
 
-function WatchRow({ name, type }: { name: string; type: string }) {
+function WatchRow({ name, variable }: { name: string; variable: SimVariable | undefined }) {
+  const type = variable?.type ?? '?';
+  const pin = variable?.role === 'pin';
   const sim = useSimStore();
   const value = useSim((s) => liveText(s, name));
   const forced = useSim((s) => forcedText(s, name));
@@ -80,7 +83,8 @@ function WatchRow({ name, type }: { name: string; type: string }) {
       <td className="rs-sim-actions">
         <button type="button" className="rs-sim-btn" title="Write the value once (an input: at the next input read)"
           onClick={() => sim.getState().write(name, input())} data-testid="watch-write">Write</button>
-        <button type="button" className="rs-sim-btn" title="Force: the variable keeps this value whatever the program or inputs do"
+        <button type="button" className="rs-sim-btn" disabled={pin}
+          title={pin ? 'Function block pins cannot be forced' : 'Force: the variable keeps this value whatever the program or inputs do'}
           onClick={() => sim.getState().force(name, input())} data-testid="watch-force">Force</button>
         <button type="button" className="rs-sim-btn" disabled={forced === undefined}
           onClick={() => sim.getState().unforce(name)} data-testid="watch-unforce">Unforce</button>

@@ -196,7 +196,7 @@ export function VariableRow({
       {messages.length > 0 && (
         <tr className="rs-var-issues">
           <td colSpan={showClass ? 10 : 9} role="alert" data-testid="variable-issue">
-            {messages.join(' · ')}
+            <div className="rs-var-issue-text">{messages.join(' · ')}</div>
           </td>
         </tr>
       )}

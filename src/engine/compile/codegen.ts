@@ -8,7 +8,10 @@ import type { ArgIR, NetworkIR, Op, OutIR, Source } from './ir';
 import { storeOf, type Access } from './symbols';
 
 /** What the generated factory receives, in this order. */
-export const FACTORY_PARAMS = ['b', 'n', 'g', 'fb', 'fns', 'e', 'P', 'K', 'ctx', 'R', 'X'] as const;
+export const FACTORY_PARAMS = ['b', 'n', 'g', 'fb', 'fns', 'e', 'W', 'K', 'ctx', 'R', 'C'] as const;
+
+/** Power-flow nets packed per 32-bit word of the snapshot array W. */
+export const NETS_PER_WORD = 31;
 
 export interface GeneratedNetwork {
   /** Body of `new Function(...FACTORY_PARAMS, body)`; returns the segment function `(now, scan) => next`. */
@@ -158,33 +161,39 @@ class Emitter {
 /**
  * One function for a run of consecutive networks (a segment): `(now, scan) => next network`.
  * Networks are inlined one after another, so a scan makes one call per segment, not per network.
- * A network whose jump or RETURN fires leaves the segment early; X[0] tells how many networks ran
- * (for the watchdog) and R[k] records the scan in which network k last ran (for the snapshot).
+ * A network whose jump or RETURN fires leaves the segment early. For the watchdog and the
+ * snapshot, R[first] records the scan and C[first] how many networks ran; each network packs its
+ * power-flow nets into W[words[index]...] (NETS_PER_WORD bits per word).
  */
-export function generateSegment(irs: readonly NetworkIR[], functions: readonly ResolvedFunction[], forced: ForcedSlots): GeneratedNetwork {
+export function generateSegment(
+  irs: readonly NetworkIR[],
+  functions: readonly ResolvedFunction[],
+  forced: ForcedSlots,
+  words: ArrayLike<number>,
+): GeneratedNetwork {
   const em = new Emitter(forced, functions);
   const L = em.lines;
   const first = irs[0]!.index;
   L.push('let t = 0, r, eno = 0, next = 0;');
+  L.push(`R[${first}] = scan;`);
   irs.forEach((ir, k) => {
     const rails = new Set(ir.railNets);
     em.rails = rails;
     em.single = singleWriterNets(ir);
-    const nets = Array.from({ length: ir.netCount }, (_, i) => i)
-      .filter((i) => !rails.has(i))
-      .map((i) => `n${i} = 0`);
+    const live = Array.from({ length: ir.netCount }, (_, i) => i).filter((i) => !rails.has(i));
     const controls = ir.ops.some((op) => op.op === 'jump' || op.op === 'return');
-    const power = em.hoist(`P[${ir.index}]`, 'p');
     L.push(`{ // network ${ir.index + 1}`);
-    L.push(`R[${ir.index}] = scan;`);
-    if (nets.length) L.push(`let ${nets.join(', ')};`);
+    if (live.length) L.push(`let ${live.map((i) => `n${i} = 0`).join(', ')};`);
     if (controls) L.push(`let go = 0; next = ${ir.index + 1};`);
     for (const op of ir.ops) emitOp(em, op);
-    for (let i = 0; i < ir.netCount; i++) if (!rails.has(i)) L.push(`${power}[${i}] = n${i};`);
-    if (controls) L.push(`if (next !== ${ir.index + 1}) { X[0] = ${k + 1}; return next; }`);
+    for (let w = 0; w * NETS_PER_WORD < ir.netCount; w++) {
+      const bits = live.filter((i) => Math.floor(i / NETS_PER_WORD) === w).map((i) => (i % NETS_PER_WORD ? `(n${i} << ${i % NETS_PER_WORD})` : `n${i}`));
+      L.push(`W[${words[ir.index]! + w}] = ${bits.length ? bits.join(' | ') : '0'};`);
+    }
+    if (controls) L.push(`if (next !== ${ir.index + 1}) { C[${first}] = ${k + 1}; return next; }`);
     L.push('}');
   });
-  L.push(`X[0] = ${irs.length};`);
+  L.push(`C[${first}] = ${irs.length};`);
   L.push(`return ${irs[irs.length - 1]!.index + 1};`);
   const body = [
     '"use strict";',

@@ -2,9 +2,10 @@
 // image, on a virtual clock (scan k starts at (k-1) x cycleMs) or an injected real clock, with a
 // watchdog, forcing, cold/warm restart, stepping one network at a time and power snapshots.
 import type { Value } from '../../model/iecTypes';
-import type { Fault, NetworkPower, Plc, PlcOptions, PowerSnapshot, ScanReport, StepReport } from '../api';
+import type { Fault, Plc, PlcOptions, PowerSnapshot, ScanReport, StepReport } from '../api';
 import type { FnContext } from '../library/fnTypes';
-import { FACTORY_PARAMS, generateSegment, slotKey } from '../compile/codegen';
+import { FACTORY_PARAMS, generateSegment, NETS_PER_WORD, slotKey } from '../compile/codegen';
+import { networkPower, type PowerTrace } from './snapshot';
 import type { CompiledProgram } from '../compile/program';
 import type { Access, VarSymbol } from '../compile/symbols';
 import { coerce, Memory } from './memory';
@@ -30,10 +31,12 @@ export class ScanPlc implements Plc {
   private readonly segmentOf: Int32Array;
   /** One-network functions for stepping, built on first use. */
   private readonly singles: (SegmentFn | undefined)[];
-  /** Networks run by the last segment call (written by generated code). */
-  private readonly ran = new Int32Array(1);
+  /** Networks run by the last call of the function starting at each network (written by generated code). */
+  private readonly ran: Int32Array;
   /** Power-flow net values per network, written by the generated code. */
-  private readonly power: Uint8Array[];
+  /** Power-flow nets of every network, packed (see codegen NETS_PER_WORD), and each network's first word. */
+  private readonly power: Int32Array;
+  private readonly words: Int32Array;
   /** Scan number in which each network last ran. */
   private readonly ranIn: Int32Array;
   private readonly ctx: FnContext = { error: false };
@@ -64,8 +67,15 @@ export class ScanPlc implements Plc {
     this.pou = program.pou;
     this.profile = program.profile;
     this.mem = new Memory(program);
-    this.power = program.networks.map((n) => new Uint8Array(Math.max(1, n.netCount)));
+    this.words = new Int32Array(program.networks.length);
+    let words = 0;
+    program.networks.forEach((n, i) => {
+      this.words[i] = words;
+      words += Math.ceil(n.netCount / NETS_PER_WORD);
+    });
+    this.power = new Int32Array(Math.max(1, words));
     this.ranIn = new Int32Array(program.networks.length).fill(-1);
+    this.ran = new Int32Array(program.networks.length);
     const vars = program.symbols.vars;
     this.inputs = vars.filter((v) => v.location?.area === 'I');
     this.inputImage = this.inputs.map((v) => v.initial);
@@ -112,7 +122,7 @@ export class ScanPlc implements Plc {
 
   private build(first: number, end: number): SegmentFn {
     const forced = new Set([...this.forces.keys()].map((v) => slotKey(v.store, v.slot)));
-    const gen = generateSegment(this.program.networks.slice(first, end), this.program.functions, forced);
+    const gen = generateSegment(this.program.networks.slice(first, end), this.program.functions, forced, this.words);
     const factory = new Function(...FACTORY_PARAMS, gen.body) as (...args: unknown[]) => SegmentFn;
     const m = this.mem;
     return factory(m.b, m.n, m.g, m.fbs, this.program.functions, m.edges, this.power, gen.constants, this.ctx, this.ranIn, this.ran);
@@ -176,10 +186,11 @@ export class ScanPlc implements Plc {
     while (i >= 0 && i < count) {
       const fn = single ? this.single(i) : (segments[i] ?? this.single(i));
       const next = fn(t, scan);
-      evals += ran[0]!;
-      last = i + ran[0]! - 1;
+      const ranNow = ran[i]!;
+      evals += ranNow;
+      last = i + ranNow - 1;
       if (next <= last && next >= 0) this.backJump = last;
-      if (evals >= maxEvals || ((evals & 1023) < ran[0]! && now() - this.scanStart > this.maxScanMs)) {
+      if (evals >= maxEvals || ((evals & 1023) < ranNow && now() - this.scanStart > this.maxScanMs)) {
         this.evals = evals;
         this.trip(last);
         return last;
@@ -351,7 +362,8 @@ export class ScanPlc implements Plc {
     this.cursor = -1;
     this.currentFault = undefined;
     this.ranIn.fill(-1);
-    for (const p of this.power) p.fill(0);
+    this.ran.fill(0);
+    this.power.fill(0);
     for (const [v, val] of this.forces) this.mem.store(v, val);
     this.outputsVars.forEach((v, i) => (this.outputImage[i] = this.mem.load(v)));
   }
@@ -371,18 +383,7 @@ export class ScanPlc implements Plc {
   }
 
   snapshot(): PowerSnapshot {
-    const networks: NetworkPower[] = this.program.networks.map((ir, i) => {
-      const shape = this.program.shapes[i]!;
-      const executed = this.ranIn[i] === this.count && this.count > 0;
-      const p = this.power[i]!;
-      const rails = new Set(ir.railNets);
-      const on = (net: number) => (executed && net >= 0 ? (rails.has(net) ? 1 : p[net]!) : 0);
-      const elements = new Uint8Array(shape.elements);
-      const vlinks = new Uint8Array(shape.vlinks);
-      ir.elementNets.forEach(([a, b], k) => (elements[k] = on(a) | (on(b) << 1) | (executed ? 4 : 0)));
-      ir.vlinkNets.forEach((net, k) => (vlinks[k] = on(net)));
-      return { elements, vlinks, executed };
-    });
-    return { scan: this.count, timeMs: this.time, pou: this.pou, networks };
+    const trace: PowerTrace = { scan: this.count, power: this.power, words: this.words, startedIn: this.ranIn, ran: this.ran, reach: SEGMENT_NETWORKS };
+    return { scan: this.count, timeMs: this.time, pou: this.pou, networks: networkPower(this.program, trace) };
   }
 }

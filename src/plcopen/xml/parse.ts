@@ -67,7 +67,8 @@ const localName = (qname: string): string => {
   return i === -1 ? qname : qname.slice(i + 1);
 };
 
-const isNameEnd = (c: number): boolean => c === 32 || c === 9 || c === 10 || c === 13 || c === 47 /* / */ || c === 62 /* > */;
+const isNameEnd = (c: number): boolean =>
+  c === 32 || c === 9 || c === 10 || c === 13 || c === 47 /* / */ || c === 62; /* > */
 
 /** Parses XML text into its root element. Throws XmlSyntaxError with a location. */
 export function parseXml(src: string): XmlElement {
@@ -86,7 +87,8 @@ export function parseXml(src: string): XmlElement {
     if (lt === -1) {
       const rest = src.slice(pos);
       if (stack.length) fail(`the file ends inside <${stack[stack.length - 1]!.qname}>`, len);
-      if (rest.trim()) fail(root ? 'text after the end of the document' : 'this is not XML: no element found');
+      if (rest.trim())
+        fail(root ? 'text after the end of the document' : 'this is not XML: no element found');
       break;
     }
     if (lt > pos) {
@@ -103,7 +105,10 @@ export function parseXml(src: string): XmlElement {
       if (!blank) {
         const chunk = src.slice(pos, lt);
         if (top) top.text += decodeEntities(chunk, (m) => fail(m, pos));
-        else fail(root ? 'text after the end of the document' : 'this is not XML: text before the first element');
+        else
+          fail(
+            root ? 'text after the end of the document' : 'this is not XML: text before the first element',
+          );
       }
     }
     pos = lt;
@@ -148,7 +153,8 @@ export function parseXml(src: string): XmlElement {
       const name = src.slice(pos + 2, e).trim();
       const top = stack.pop();
       if (!top) fail(`end tag </${name}> without a start tag`);
-      if (top.qname !== name) fail(`end tag </${name}> does not match <${top.qname}> (line ${lineColumn(src, top.offset).line})`);
+      if (top.qname !== name)
+        fail(`end tag </${name}> does not match <${top.qname}> (line ${lineColumn(src, top.offset).line})`);
       top.end = e + 1;
       pos = e + 1;
       continue;
@@ -159,7 +165,8 @@ export function parseXml(src: string): XmlElement {
     while (i < len && !isNameEnd(src.charCodeAt(i))) i++;
     const qname = src.slice(pos + 1, i);
     const first = qname.charCodeAt(0);
-    const nameStart = (first >= 65 && first <= 90) || (first >= 97 && first <= 122) || first === 95 || first >= 0xc0;
+    const nameStart =
+      (first >= 65 && first <= 90) || (first >= 97 && first <= 122) || first === 95 || first >= 0xc0;
     if (!nameStart) fail(root || stack.length ? 'bad element name' : 'this is not XML: expected an element');
     const attrs: Record<string, string> = {};
     let selfClosing = false;
@@ -203,7 +210,15 @@ export function parseXml(src: string): XmlElement {
       attrs[an] = raw.indexOf('&') === -1 ? raw : decodeEntities(raw, (m) => fail(m, q));
       i = close + 1;
     }
-    const el: XmlElement = { name: qname.indexOf(':') === -1 ? qname : localName(qname), qname, attrs, children: [], text: '', offset: start, end: i };
+    const el: XmlElement = {
+      name: qname.indexOf(':') === -1 ? qname : localName(qname),
+      qname,
+      attrs,
+      children: [],
+      text: '',
+      offset: start,
+      end: i,
+    };
     const parent = stack[stack.length - 1];
     if (parent) parent.children.push(el);
     else if (root) fail('more than one root element', start);

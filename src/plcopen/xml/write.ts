@@ -3,12 +3,28 @@
 export type Attrs = Readonly<Record<string, string | number | boolean | undefined>>;
 
 export const escapeText = (s: string): string =>
-  s.replace(/[&<>]/g, (c) => (c === '&' ? '&amp;' : c === '<' ? '&lt;' : '&gt;'));
+  !/[&<>]/.test(s) ? s : s.replace(/[&<>]/g, (c) => (c === '&' ? '&amp;' : c === '<' ? '&lt;' : '&gt;'));
+
+const ATTR_SPECIAL = /[&<>"\n\r\t]/;
 
 export const escapeAttr = (s: string): string =>
-  s.replace(/[&<>"\n\r\t]/g, (c) =>
-    c === '&' ? '&amp;' : c === '<' ? '&lt;' : c === '>' ? '&gt;' : c === '"' ? '&quot;' : c === '\n' ? '&#10;' : c === '\r' ? '&#13;' : '&#9;',
-  );
+  !ATTR_SPECIAL.test(s)
+    ? s
+    : s.replace(/[&<>"\n\r\t]/g, (c) =>
+        c === '&'
+          ? '&amp;'
+          : c === '<'
+            ? '&lt;'
+            : c === '>'
+              ? '&gt;'
+              : c === '"'
+                ? '&quot;'
+                : c === '\n'
+                  ? '&#10;'
+                  : c === '\r'
+                    ? '&#13;'
+                    : '&#9;',
+      );
 
 /** CDATA text; a `]]>` inside is split across two sections. */
 export const cdata = (s: string): string => `<![CDATA[${s.replace(/]]>/g, ']]]]><![CDATA[>')}]]>`;

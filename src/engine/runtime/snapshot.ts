@@ -1,0 +1,40 @@
+// Power-flow snapshot for the UI: decodes the packed net bits the generated code writes into one
+// byte per element (bit 0 left side energised, bit 1 right side, bit 2 executed) and vertical link.
+import type { NetworkPower } from '../api';
+import { NETS_PER_WORD } from '../compile/codegen';
+import type { CompiledProgram } from '../compile/program';
+
+export interface PowerTrace {
+  readonly scan: number;
+  /** Packed power-flow nets; network i starts at words[i]. */
+  readonly power: Int32Array;
+  readonly words: Int32Array;
+  /** Scan in which the generated function starting at network s last ran, and how many networks it ran. */
+  readonly startedIn: Int32Array;
+  readonly ran: Int32Array;
+  /** Most networks one generated function runs. */
+  readonly reach: number;
+}
+
+/** Whether network i ran in the trace's scan: some function starting at s <= i ran it then. */
+function ranInScan(t: PowerTrace, i: number): boolean {
+  if (t.scan === 0) return false;
+  for (let s = i; s >= 0 && s >= i - t.reach; s--) if (t.startedIn[s] === t.scan && i < s + t.ran[s]!) return true;
+  return false;
+}
+
+export function networkPower(program: CompiledProgram, t: PowerTrace): NetworkPower[] {
+  return program.networks.map((ir, i) => {
+    const shape = program.shapes[i]!;
+    const executed = ranInScan(t, i);
+    const rails = new Set(ir.railNets);
+    const base = t.words[i]!;
+    const on = (net: number) =>
+      executed && net >= 0 ? (rails.has(net) ? 1 : (t.power[base + Math.floor(net / NETS_PER_WORD)]! >>> net % NETS_PER_WORD) & 1) : 0;
+    const elements = new Uint8Array(shape.elements);
+    const vlinks = new Uint8Array(shape.vlinks);
+    ir.elementNets.forEach(([a, b], k) => (elements[k] = on(a) | (on(b) << 1) | (executed ? 4 : 0)));
+    ir.vlinkNets.forEach((net, k) => (vlinks[k] = on(net)));
+    return { elements, vlinks, executed };
+  });
+}

@@ -1,0 +1,216 @@
+// Second layout pass: rows. Depth-first along the branches — a series element continues its
+// source's row; parallel branches and fan-out go to the first row below where their cells, links and
+// vertical bars touch nothing of another net.
+import type { LdElement, VLink } from '../model/elements';
+import { newId, type ElementId } from '../model/ids';
+import type { GNode } from './ldGraph';
+import { KEY, type LaidOut, type Net, type Shape } from './layoutShapes';
+
+export function placeRows(
+  all: readonly GNode[],
+  members: readonly number[],
+  shapes: Map<number, Shape>,
+  col: Map<number, number>,
+  nets: Map<number, Net>,
+  inNet: (node: number, pin: string) => Net | undefined,
+  outNet: (node: number, pin: string) => Net | undefined,
+  cols: number,
+): LaidOut {
+  const cellOwner = new Map<number, number>(); // cell -> node index (>=0) or -(net id + 1) for links
+  const pointNet = new Map<number, number>(); // point -> net id, or a unique negative id when blocked
+  let blockedId = -1;
+  const row = new Map<number, number>();
+  const elements: LdElement[] = [];
+  const elementOf = new Map<number, ElementId>();
+  const vlinks = new Map<number, VLink>();
+  const forced: number[] = [];
+  let maxRow = -1;
+  // Element ids: one fresh prefix per network and a counter (as unique as newId, far cheaper).
+  const prefix = newId<'ElementId'>('e');
+  let counter = 0;
+  const nextId = () => `${prefix}_${(counter++).toString(36)}` as ElementId;
+
+  const pointOk = (r: number, b: number, net: Net) => {
+    if (b === cols) return true;
+    if (b === 0) return net.rail;
+    const v = pointNet.get(r * KEY + b);
+    return v === undefined || v === net.id;
+  };
+  const cellOk = (r: number, c: number, net: Net | undefined) => {
+    const v = cellOwner.get(r * KEY + c);
+    return v === undefined || (net !== undefined && v === -(net.id + 1));
+  };
+  /** Horizontal run of net on row r from boundary a to boundary z (a <= z), plus the bar reaching r. */
+  const runOk = (r: number, a: number, z: number, net: Net): boolean => {
+    for (let c = a; c < z; c++) if (!cellOk(r, c, net)) return false;
+    for (let b = a; b <= z; b++) if (!pointOk(r, b, net)) return false;
+    if (net.b > 0 && net.min !== Infinity) {
+      for (let rr = Math.min(r, net.min); rr <= Math.max(r, net.max); rr++)
+        if (!pointOk(rr, net.b, net)) return false;
+    }
+    return true;
+  };
+  const claimRun = (r: number, a: number, z: number, net: Net) => {
+    for (let c = a; c < z; c++) {
+      const k = r * KEY + c;
+      if (cellOwner.get(k) === undefined) {
+        cellOwner.set(k, -(net.id + 1));
+        elements.push({ id: nextId(), kind: 'link', row: r, col: c });
+      }
+    }
+    for (let b = a; b <= z; b++) if (b !== 0 && b !== cols) pointNet.set(r * KEY + b, net.id);
+    if (net.b > 0) {
+      const lo = Math.min(r, net.min === Infinity ? r : net.min);
+      const hi = Math.max(r, net.max === -Infinity ? r : net.max);
+      for (let rr = lo; rr < hi; rr++) vlinks.set(rr * KEY + net.b, { row: rr, boundary: net.b });
+      for (let rr = lo; rr <= hi; rr++) pointNet.set(rr * KEY + net.b, net.id);
+    }
+    net.min = Math.min(net.min, r);
+    net.max = Math.max(net.max, r);
+  };
+
+  const fits = (i: number, r: number): boolean => {
+    const sh = shapes.get(i)!;
+    const c = col.get(i)!;
+    for (let y = 0; y < sh.h; y++)
+      for (let x = 0; x < sh.w; x++) if (cellOwner.has((r + y) * KEY + c + x)) return false;
+    for (let y = 0; y < sh.h; y++)
+      for (let x = 1; x < sh.w; x++) if (pointNet.has((r + y) * KEY + c + x)) return false;
+    for (const p of sh.inputs) {
+      const net = inNet(i, p.pin);
+      if (net) {
+        if (!runOk(r + p.off, Math.min(net.b, c), c, net)) return false;
+      } else if (c !== 0 && pointNet.has((r + p.off) * KEY + c)) return false;
+    }
+    for (const p of sh.outputs) {
+      const net = outNet(i, p.pin);
+      const end = c + sh.w;
+      if (net && (net.consumers.length || net.producers.length > 1)) {
+        if (!runOk(r + p.off, end, Math.max(net.b, end), net)) return false;
+      } else if (end !== cols && pointNet.has((r + p.off) * KEY + end)) return false;
+    }
+    return true;
+  };
+
+  const commit = (i: number, r: number) => {
+    const n = all[i]!;
+    const sh = shapes.get(i)!;
+    const c = col.get(i)!;
+    row.set(i, r);
+    maxRow = Math.max(maxRow, r + sh.h - 1);
+    for (let y = 0; y < sh.h; y++) for (let x = 0; x < sh.w; x++) cellOwner.set((r + y) * KEY + c + x, i);
+    for (let y = 0; y < sh.h; y++)
+      for (let x = 1; x < sh.w; x++) pointNet.set((r + y) * KEY + c + x, blockedId--);
+    for (const p of sh.inputs) {
+      const net = inNet(i, p.pin);
+      if (net) claimRun(r + p.off, Math.min(net.b, c), c, net);
+      else if (c !== 0) pointNet.set((r + p.off) * KEY + c, blockedId--);
+    }
+    for (const p of sh.outputs) {
+      const net = outNet(i, p.pin);
+      const end = c + sh.w;
+      if (net && (net.consumers.length || net.producers.length > 1))
+        claimRun(r + p.off, end, Math.max(net.b, end), net);
+      else if (end !== cols) pointNet.set((r + p.off) * KEY + end, blockedId--);
+    }
+    const id = nextId();
+    elementOf.set(i, id);
+    const base = { id, row: r, col: c };
+    switch (n.kind) {
+      case 'contact':
+        elements.push({ ...base, kind: 'contact', contact: n.contact ?? 'NO', variable: n.variable ?? '' });
+        break;
+      case 'coil':
+        elements.push({ ...base, kind: 'coil', coil: n.coil ?? 'COIL', variable: n.variable ?? '' });
+        break;
+      case 'jump':
+        elements.push({ ...base, kind: 'jump', target: n.target ?? '' });
+        break;
+      case 'return':
+        elements.push({ ...base, kind: 'return' });
+        break;
+      case 'box':
+        elements.push({
+          ...base,
+          kind: 'box',
+          blockType: n.blockType ?? '',
+          ...(n.instance ? { instance: n.instance } : {}),
+          ...(n.inputCount !== undefined ? { inputCount: n.inputCount } : {}),
+          inputs: { ...n.operandsIn },
+          outputs: { ...n.operandsOut },
+        });
+        break;
+    }
+  };
+
+  const preferredRow = (i: number): number => {
+    const sh = shapes.get(i)!;
+    let best = Infinity;
+    for (const p of sh.inputs) {
+      const net = inNet(i, p.pin);
+      if (!net) continue;
+      for (const pr of net.producers) {
+        const pr_r = row.get(pr.node);
+        if (pr_r === undefined) continue;
+        const off = shapes.get(pr.node)!.outputs.find((o) => o.pin === pr.pin)?.off ?? 0;
+        best = Math.min(best, pr_r + off - p.off);
+      }
+    }
+    return best === Infinity ? 0 : Math.max(0, best);
+  };
+
+  const byPosition = (a: number, b: number) =>
+    all[a]!.y - all[b]!.y || all[a]!.x - all[b]!.x || all[a]!.order - all[b]!.order;
+  const placing = new Set<number>();
+  const place = (i: number) => {
+    if (row.has(i) || placing.has(i)) return;
+    placing.add(i);
+    const sh = shapes.get(i)!;
+    // Everything feeding my input bars first, top to bottom.
+    for (const p of sh.inputs) {
+      const net = inNet(i, p.pin);
+      if (net) [...net.producers].sort((a, b) => byPosition(a.node, b.node)).forEach((pr) => place(pr.node));
+    }
+    let r = preferredRow(i);
+    while (r <= maxRow + 1 && !fits(i, r)) r++;
+    if (r > maxRow + 1) {
+      r = maxRow + 1;
+      forced.push(i);
+    }
+    commit(i, r);
+    placing.delete(i);
+    // Then what I feed: siblings in the same bars, then consumers, depth-first.
+    for (const p of sh.outputs) {
+      const net = outNet(i, p.pin);
+      if (!net) continue;
+      [...net.producers].sort((a, b) => byPosition(a.node, b.node)).forEach((pr) => place(pr.node));
+      [...net.consumers].sort((a, b) => byPosition(a.node, b.node)).forEach((cn) => place(cn.node));
+    }
+  };
+
+  const railNet = [...nets.values()].find((n) => n.rail);
+  const starts = railNet ? [...railNet.consumers.map((c) => c.node)].sort(byPosition) : [];
+  for (const i of starts) place(i);
+  for (const i of [...members].sort(byPosition)) place(i);
+
+  // Cosmetic: wires to the right rail where the row is free.
+  for (const net of nets.values()) {
+    if (!net.rightRail || net.consumers.length) continue;
+    for (const pr of net.producers) {
+      const r = row.get(pr.node)! + (shapes.get(pr.node)!.outputs.find((o) => o.pin === pr.pin)?.off ?? 0);
+      const end = col.get(pr.node)! + shapes.get(pr.node)!.w;
+      if (end >= cols) continue;
+      let ok = true;
+      for (let c = end; c < cols && ok; c++) ok = !cellOwner.has(r * KEY + c);
+      for (let b = end + 1; b < cols && ok; b++)
+        ok = !pointNet.has(r * KEY + b) || pointNet.get(r * KEY + b) === net.id;
+      if (ok) {
+        const save = net.b;
+        net.b = 0;
+        claimRun(r, end, cols, net);
+        net.b = save;
+      }
+    }
+  }
+  return { rows: Math.max(1, maxRow + 1), cols, elements, vlinks: [...vlinks.values()], elementOf, forced };
+}
