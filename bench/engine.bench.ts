@@ -105,8 +105,9 @@ function toProject(count: number): Project {
 /** Hand-written-style JS for the same rungs: plain variables, bitwise logic, the same FB classes. */
 function baseline(count: number): { scan: (now: number) => void; outputs: () => number[] } {
   const { rungs: rs, bools, tons, ctus } = rungs(count);
-  const lines: string[] = [`let ${bools.map((b) => `${b} = 0`).join(', ')};`, `const E = new Uint8Array(${count});`];
-  for (const t of [...tons, ...ctus]) lines.push(`const ${t} = mk('${t.startsWith('T') ? 'TON' : 'CTU'}');`);
+  // `var`, not `let`: closure variables declared with let pay a hole check on every access.
+  const lines: string[] = [`var ${bools.map((b) => `${b} = 0`).join(', ')};`, `var E = new Uint8Array(${count});`];
+  for (const t of [...tons, ...ctus]) lines.push(`var ${t} = mk('${t.startsWith('T') ? 'TON' : 'CTU'}');`);
   const chunks: string[] = [];
   for (let start = 0; start < rs.length; start += 100) {
     const body: string[] = [];
@@ -149,12 +150,23 @@ function measure(count: number, scans: number, warmMs: number): { ratio: number;
 
   // Warm up both, then time alternately (five rounds each, best kept) so neither gets a quieter machine.
   // V8 optimises the generated functions concurrently; big programs need seconds of warm-up
-  // (more on a loaded machine) before both sides run optimised code.
+  // (more on a loaded machine) before both sides run optimised code. Warm up for at least
+  // `warmMs`, then until both sides' scan times are steady (3 rounds within 10%), at most 5 x warmMs.
   let baseScans = 0;
-  const warmUntil = performance.now() + warmMs;
-  while (performance.now() < warmUntil || baseScans < 200) {
-    plc.scans(10);
-    for (let s = 0; s < 10; s++) base.scan(baseScans++ * 10);
+  const perRound = Math.max(10, Math.round(100_000 / count));
+  const started = performance.now();
+  let prev = [Infinity, Infinity];
+  let steady = 0;
+  while (performance.now() - started < 5 * warmMs) {
+    let t = performance.now();
+    plc.scans(perRound);
+    const e = performance.now() - t;
+    t = performance.now();
+    for (let s = 0; s < perRound; s++) base.scan(baseScans++ * 10);
+    const b = performance.now() - t;
+    steady = Math.abs(e - prev[0]!) < 0.1 * e && Math.abs(b - prev[1]!) < 0.1 * b ? steady + 1 : 0;
+    prev = [e, b];
+    if (steady >= 3 && performance.now() - started >= warmMs) break;
   }
   let bestEngine = Infinity;
   let bestBase = Infinity;

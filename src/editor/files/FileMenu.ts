@@ -74,4 +74,8 @@ export const EXAMPLE_COMMANDS: readonly FileMenuCommand[] = EXAMPLES.map((exampl
 }));
 
 /** Everything for the File menu, New/Open/Save first, then PLCopen import/export, then the examples. */
-export const FILE_MENU_COMMANDS: readonly FileMenuCommand[] = [...FILE_COMMANDS, ...PLCOPEN_COMMANDS, ...EXAMPLE_COMMANDS];
+export const FILE_MENU_COMMANDS: readonly FileMenuCommand[] = [
+  ...FILE_COMMANDS,
+  ...PLCOPEN_COMMANDS,
+  ...EXAMPLE_COMMANDS,
+];

@@ -9,6 +9,7 @@ import { variable } from '../../model/factory';
 import type { Variable } from '../../model/project';
 import { VariableRow } from './VariableRow';
 import { variableFocus } from './variableFocus';
+import { undeclaredVariables } from './undeclared';
 import { globalVariableUses, pouVariableUses, type VariableUse } from './usage';
 import { issuesByField, validateVariables } from './validation';
 import './variables.css';
@@ -74,6 +75,10 @@ export function VariablesPanel() {
         !query || `${v.name} ${v.type} ${v.location ?? ''} ${v.comment}`.toUpperCase().includes(query),
     );
   const rowsWithIssues = new Set(issues.map((i) => i.index)).size;
+  const undeclared = useMemo(
+    () => (!showGlobals && pou ? undeclaredVariables(project, pou) : []),
+    [showGlobals, project, pou],
+  );
 
   if (!scope)
     return <section className="rs-variables" aria-label="Variables" data-testid="variables-panel" />;
@@ -137,6 +142,20 @@ export function VariablesPanel() {
         <button type="button" className="rs-button" onClick={add} data-testid="add-variable">
           Add variable
         </button>
+        {undeclared.length > 0 && (
+          <button
+            type="button"
+            className="rs-button"
+            title={`Declares ${undeclared.map((v) => `${v.name} : ${v.type}`).join(', ')} (one undo step)`}
+            onClick={() =>
+              store.getState().batch('declareUsedNames', () => {
+                for (const v of undeclared) store.getState().addVariable(v, scope);
+              })
+            }
+          >
+            Declare {undeclared.length} used name{undeclared.length === 1 ? '' : 's'}
+          </button>
+        )}
       </div>
       {refusal && (
         <p role="alert" className="rs-var-refusal">

@@ -1,0 +1,51 @@
+// Names used on the canvas that the variable table does not declare yet, each with the
+// declaration the editor would offer for it (BOOL for contacts and coils, the block type for an
+// FB instance, the pin's type for a box operand), so they can all be declared in one step.
+import { boxLayout } from '../../model/boxLayout';
+import { variable } from '../../model/factory';
+import type { Pou, Project, Variable } from '../../model/project';
+import { suggestedType } from '../inspector/declareOffer';
+import type { BindingRole } from '../inspector/operands';
+import { parseLiteral } from '../../engine/values/literals';
+import { identifierProblem } from './validation';
+
+function* namedOperands(pou: Pou): Generator<{ name: string; role: BindingRole }> {
+  for (const network of pou.networks) {
+    for (const el of network.elements) {
+      if (el.kind === 'contact' && el.contact !== 'NOT')
+        yield { name: el.variable, role: { kind: 'contact' } };
+      else if (el.kind === 'coil') yield { name: el.variable, role: { kind: 'coil' } };
+      else if (el.kind === 'box') {
+        const layout = boxLayout(el);
+        if (!layout) continue;
+        if (el.instance !== undefined && layout.signature.kind === 'fb') {
+          yield { name: el.instance, role: { kind: 'instance', blockType: layout.signature.name } };
+        }
+        for (const pin of layout.inputs) {
+          const operand = el.inputs[pin.name];
+          if (operand !== undefined && !parseLiteral(operand.trim()).ok) {
+            yield { name: operand, role: { kind: 'pin', pinType: pin.type, direction: 'input' } };
+          }
+        }
+        for (const pin of layout.outputs) {
+          const operand = el.outputs[pin.name];
+          if (operand !== undefined)
+            yield { name: operand, role: { kind: 'pin', pinType: pin.type, direction: 'output' } };
+        }
+      }
+    }
+  }
+}
+
+/** Undeclared plain names used in the POU, in order of first use; the first use decides the type. */
+export function undeclaredVariables(project: Project, pou: Pou): Variable[] {
+  const out = new Map<string, Variable>();
+  for (const { name, role } of namedOperands(pou)) {
+    const trimmed = name.trim();
+    const key = trimmed.toUpperCase();
+    if (trimmed === '' || out.has(key) || identifierProblem(trimmed) || findVariable(project, pou, trimmed))
+      continue;
+    out.set(key, variable(trimmed, suggestedType(role)));
+  }
+  return [...out.values()];
+}
