@@ -63,8 +63,22 @@ function rungs(count: number): { rungs: Rung[]; bools: string[]; tons: string[];
 
 let ids = 0;
 const id = () => `b${++ids}` as ElementId;
-const contact = (row: number, col: number, v: string, type: 'NO' | 'NC' | 'P' = 'NO'): LdElement => ({ id: id(), kind: 'contact', contact: type, variable: v, row, col });
-const coil = (row: number, col: number, v: string, type: 'COIL' | 'SET' = 'COIL'): LdElement => ({ id: id(), kind: 'coil', coil: type, variable: v, row, col });
+const contact = (row: number, col: number, v: string, type: 'NO' | 'NC' | 'P' = 'NO'): LdElement => ({
+  id: id(),
+  kind: 'contact',
+  contact: type,
+  variable: v,
+  row,
+  col,
+});
+const coil = (row: number, col: number, v: string, type: 'COIL' | 'SET' = 'COIL'): LdElement => ({
+  id: id(),
+  kind: 'coil',
+  coil: type,
+  variable: v,
+  row,
+  col,
+});
 const link = (row: number, col: number): LdElement => ({ id: id(), kind: 'link', row, col });
 
 function toNetwork(r: Rung): Network {
@@ -73,19 +87,61 @@ function toNetwork(r: Rung): Network {
   let rows = 2;
   switch (r.kind) {
     case 'branch': // (a OR d) AND NOT b AND c -> out
-      elements = [contact(0, 0, r.a), contact(0, 1, r.b, 'NC'), contact(0, 2, r.c), link(0, 3), coil(0, 4, r.out), contact(1, 0, r.d)];
+      elements = [
+        contact(0, 0, r.a),
+        contact(0, 1, r.b, 'NC'),
+        contact(0, 2, r.c),
+        link(0, 3),
+        coil(0, 4, r.out),
+        contact(1, 0, r.d),
+      ];
       vlinks = [{ row: 0, boundary: 1 }];
       break;
     case 'parallel': // rising edge of a, AND NOT b AND c -> out, and set latch
-      elements = [contact(0, 0, r.a, 'P'), contact(0, 1, r.b, 'NC'), contact(0, 2, r.c), link(0, 3), coil(0, 4, r.out), coil(1, 4, r.latch, 'SET')];
+      elements = [
+        contact(0, 0, r.a, 'P'),
+        contact(0, 1, r.b, 'NC'),
+        contact(0, 2, r.c),
+        link(0, 3),
+        coil(0, 4, r.out),
+        coil(1, 4, r.latch, 'SET'),
+      ];
       vlinks = [{ row: 0, boundary: 4 }];
       break;
     case 'ton':
-      elements = [contact(0, 0, r.in), link(0, 1), { id: id(), kind: 'box', blockType: 'TON', instance: r.inst, row: 0, col: 2, inputs: { PT: 'T#100ms' }, outputs: {} }, coil(0, 4, r.out)];
+      elements = [
+        contact(0, 0, r.in),
+        link(0, 1),
+        {
+          id: id(),
+          kind: 'box',
+          blockType: 'TON',
+          instance: r.inst,
+          row: 0,
+          col: 2,
+          inputs: { PT: 'T#100ms' },
+          outputs: {},
+        },
+        coil(0, 4, r.out),
+      ];
       break;
     case 'ctu':
       rows = 3;
-      elements = [contact(0, 0, r.in), link(0, 1), { id: id(), kind: 'box', blockType: 'CTU', instance: r.inst, row: 0, col: 2, inputs: { R: r.reset, PV: '10' }, outputs: {} }, coil(0, 4, r.out)];
+      elements = [
+        contact(0, 0, r.in),
+        link(0, 1),
+        {
+          id: id(),
+          kind: 'box',
+          blockType: 'CTU',
+          instance: r.inst,
+          row: 0,
+          col: 2,
+          inputs: { R: r.reset, PV: '10' },
+          outputs: {},
+        },
+        coil(0, 4, r.out),
+      ];
       break;
   }
   return newNetwork({ rows, cols: 5, elements, vlinks });
@@ -99,14 +155,19 @@ function toProject(count: number): Project {
     ...ctus.map((c) => variable(c, 'CTU')),
   ];
   const tick = newNetwork({ rows: 1, cols: 2, elements: [contact(0, 0, 'Tick', 'NC'), coil(0, 1, 'Tick')] });
-  return newProject('bench', { pous: [newPou('Main', { variables, networks: [tick, ...rs.map(toNetwork)] })] });
+  return newProject('bench', {
+    pous: [newPou('Main', { variables, networks: [tick, ...rs.map(toNetwork)] })],
+  });
 }
 
 /** Hand-written-style JS for the same rungs: plain variables, bitwise logic, the same FB classes. */
 function baseline(count: number): { scan: (now: number) => void; outputs: () => number[] } {
   const { rungs: rs, bools, tons, ctus } = rungs(count);
   // `var`, not `let`: closure variables declared with let pay a hole check on every access.
-  const lines: string[] = [`var ${bools.map((b) => `${b} = 0`).join(', ')};`, `var E = new Uint8Array(${count});`];
+  const lines: string[] = [
+    `var ${bools.map((b) => `${b} = 0`).join(', ')};`,
+    `var E = new Uint8Array(${count});`,
+  ];
   for (const t of [...tons, ...ctus]) lines.push(`var ${t} = mk('${t.startsWith('T') ? 'TON' : 'CTU'}');`);
   const chunks: string[] = [];
   for (let start = 0; start < rs.length; start += 100) {
@@ -118,21 +179,32 @@ function baseline(count: number): { scan: (now: number) => void; outputs: () => 
           body.push(`${r.out} = (${r.a} | ${r.d}) & (${r.b} ^ 1) & ${r.c};`);
           break;
         case 'parallel':
-          body.push(`{ const e = ${r.a} & (E[${r.edge}] ^ 1); E[${r.edge}] = ${r.a}; const q = e & (${r.b} ^ 1) & ${r.c}; ${r.out} = q; if (q) ${r.latch} = 1; }`);
+          body.push(
+            `{ const e = ${r.a} & (E[${r.edge}] ^ 1); E[${r.edge}] = ${r.a}; const q = e & (${r.b} ^ 1) & ${r.c}; ${r.out} = q; if (q) ${r.latch} = 1; }`,
+          );
           break;
         case 'ton':
-          body.push(`${r.inst}.IN = ${r.in} === 1; ${r.inst}.PT = 100; ${r.inst}.execute(now); ${r.out} = ${r.inst}.Q ? 1 : 0;`);
+          body.push(
+            `${r.inst}.IN = ${r.in} === 1; ${r.inst}.PT = 100; ${r.inst}.execute(now); ${r.out} = ${r.inst}.Q ? 1 : 0;`,
+          );
           break;
         case 'ctu':
-          body.push(`${r.inst}.CU = ${r.in} === 1; ${r.inst}.R = ${r.reset} === 1; ${r.inst}.PV = 10; ${r.inst}.execute(now); ${r.out} = ${r.inst}.Q ? 1 : 0;`);
+          body.push(
+            `${r.inst}.CU = ${r.in} === 1; ${r.inst}.R = ${r.reset} === 1; ${r.inst}.PV = 10; ${r.inst}.execute(now); ${r.out} = ${r.inst}.Q ? 1 : 0;`,
+          );
           break;
       }
     }
     chunks.push(`function chunk${chunks.length}(now) {\n${body.join('\n')}\n}`);
   }
   lines.push(...chunks);
-  lines.push(`return { scan(now) { ${chunks.map((_, i) => `chunk${i}(now);`).join(' ')} }, outputs() { return [${rs.map((r) => r.out).join(', ')}]; } };`);
-  const make = new Function('mk', lines.join('\n')) as (mk: (t: string) => unknown) => { scan: (now: number) => void; outputs: () => number[] };
+  lines.push(
+    `return { scan(now) { ${chunks.map((_, i) => `chunk${i}(now);`).join(' ')} }, outputs() { return [${rs.map((r) => r.out).join(', ')}]; } };`,
+  );
+  const make = new Function('mk', lines.join('\n')) as (mk: (t: string) => unknown) => {
+    scan: (now: number) => void;
+    outputs: () => number[];
+  };
   return make((t) => createFb(t, 'iec'));
 }
 
@@ -151,7 +223,7 @@ function measure(count: number, scans: number, warmMs: number): { ratio: number;
   // Warm up both, then time alternately (five rounds each, best kept) so neither gets a quieter machine.
   // V8 optimises the generated functions concurrently; big programs need seconds of warm-up
   // (more on a loaded machine) before both sides run optimised code. Warm up for at least
-  // `warmMs`, then until both sides' scan times are steady (3 rounds within 10%), at most 5 x warmMs.
+  // `warmMs`, then until both sides' scan times are steady (5 rounds within 5%), at most 5 x warmMs.
   let baseScans = 0;
   const perRound = Math.max(10, Math.round(100_000 / count));
   const started = performance.now();
@@ -164,10 +236,11 @@ function measure(count: number, scans: number, warmMs: number): { ratio: number;
     t = performance.now();
     for (let s = 0; s < perRound; s++) base.scan(baseScans++ * 10);
     const b = performance.now() - t;
-    steady = Math.abs(e - prev[0]!) < 0.1 * e && Math.abs(b - prev[1]!) < 0.1 * b ? steady + 1 : 0;
+    steady = Math.abs(e - prev[0]!) < 0.05 * e && Math.abs(b - prev[1]!) < 0.05 * b ? steady + 1 : 0;
     prev = [e, b];
-    if (steady >= 3 && performance.now() - started >= warmMs) break;
+    if (steady >= 5 && performance.now() - started >= warmMs) break;
   }
+  const warmS = (performance.now() - started) / 1000;
   let bestEngine = Infinity;
   let bestBase = Infinity;
   for (let round = 0; round < 5; round++) {
@@ -199,7 +272,7 @@ function measure(count: number, scans: number, warmMs: number): { ratio: number;
 
   const ratio = nsEngine / nsBase;
   console.log(
-    `${count.toLocaleString('en-US')} networks: compile ${compileMs.toFixed(0)} ms; ` +
+    `${count.toLocaleString('en-US')} networks: compile ${compileMs.toFixed(0)} ms; warm-up ${warmS.toFixed(1)} s (${steady >= 5 ? 'steady' : 'not steady: V8 still optimising'}); ` +
       `engine ${nsEngine.toFixed(1)} ns/network/scan; baseline JS ${nsBase.toFixed(1)} ns/network/scan; ratio ${ratio.toFixed(2)}; ` +
       `heap growth ${growth.toFixed(2)} bytes/scan over ${memScans.toLocaleString('en-US')} scans; ` +
       `outputs ${mismatches === 0 ? 'agree' : `DIFFER in ${mismatches} networks`}`,
@@ -210,4 +283,6 @@ function measure(count: number, scans: number, warmMs: number): { ratio: number;
 
 const small = measure(1_000, 2_000, 2_000);
 const large = measure(10_000, 200, 8_000);
-console.log(`bench:engine worst-ratio=${Math.max(small.ratio, large.ratio).toFixed(2)} ns-per-network-10k=${Math.round(large.nsEngine)}`);
+console.log(
+  `bench:engine worst-ratio=${Math.max(small.ratio, large.ratio).toFixed(2)} ns-per-network-10k=${Math.round(large.nsEngine)}`,
+);

@@ -7,12 +7,16 @@ import { ScanPlc } from './runtime/scanner';
 export type { CompiledProgram } from './compile/program';
 
 /** Checks and lowers one PROGRAM (default: the first). `program` is present only when there is no error. */
-export function compileProgram(project: Project, opts: CompileOptions = {}): { program?: CompiledProgram; diagnostics: Diagnostic[] } {
+export function compileProgram(
+  project: Project,
+  opts: CompileOptions = {},
+): { program?: CompiledProgram; diagnostics: Diagnostic[] } {
   return assembleProgram(project, opts);
 }
 
 /** A PLC running a compiled program, cold-restarted (every variable at its initial value). */
 export function createPlc(program: CompiledProgram, opts: PlcOptions): Plc {
-  if (!(opts.cycleMs > 0) && !opts.clock) throw new Error('cycleMs must be a positive number of milliseconds');
+  if (!(opts.cycleMs > 0) && !opts.clock)
+    throw new Error('cycleMs must be a positive number of milliseconds');
   return new ScanPlc(program, opts);
 }

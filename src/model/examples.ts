@@ -24,11 +24,30 @@ const contact = (row: number, col: number, name: string, type: ContactType = 'NO
   col,
 });
 /** A coil in the last column, touching the right rail. */
-const coil = (row: number, name: string, type: CoilType = 'COIL'): LdElement => ({ id: eid(), kind: 'coil', coil: type, variable: name, row, col: COLS - 1 });
+const coil = (row: number, name: string, type: CoilType = 'COIL'): LdElement => ({
+  id: eid(),
+  kind: 'coil',
+  coil: type,
+  variable: name,
+  row,
+  col: COLS - 1,
+});
 /** Horizontal lines on `row` over columns from..to (inclusive). */
 const line = (row: number, from: number, to: number): LdElement[] =>
-  Array.from({ length: Math.max(0, to - from + 1) }, (_, i) => ({ id: eid(), kind: 'link', row, col: from + i }));
-const box = (row: number, col: number, blockType: string, instance: string | undefined, inputs: Record<string, string>, outputs: Record<string, string> = {}): BoxElement => ({
+  Array.from({ length: Math.max(0, to - from + 1) }, (_, i) => ({
+    id: eid(),
+    kind: 'link',
+    row,
+    col: from + i,
+  }));
+const box = (
+  row: number,
+  col: number,
+  blockType: string,
+  instance: string | undefined,
+  inputs: Record<string, string>,
+  outputs: Record<string, string> = {},
+): BoxElement => ({
   id: eid(),
   kind: 'box',
   blockType,
@@ -39,7 +58,12 @@ const box = (row: number, col: number, blockType: string, instance: string | und
   outputs,
 });
 
-function network(title: string, comment: string, elements: LdElement[], extra: { rows?: number; vlinks?: VLink[]; label?: string } = {}): Network {
+function network(
+  title: string,
+  comment: string,
+  elements: LdElement[],
+  extra: { rows?: number; vlinks?: VLink[]; label?: string } = {},
+): Network {
   return newNetwork({
     title,
     comment,
@@ -51,12 +75,20 @@ function network(title: string, comment: string, elements: LdElement[], extra: {
   });
 }
 
-function program(name: string, description: string, variables: Variable[], networks: Network[], cycleMs = 10): Project {
+function program(
+  name: string,
+  description: string,
+  variables: Variable[],
+  networks: Network[],
+  cycleMs = 10,
+): Project {
   const main = newPou('Main', { variables, networks, comment: description });
   return newProject(name, {
     description,
     pous: [main],
-    tasks: [{ name: 'MainTask', cycleMs, priority: 1, programs: [{ instance: 'MainInstance', pou: main.name }] }],
+    tasks: [
+      { name: 'MainTask', cycleMs, priority: 1, programs: [{ instance: 'MainInstance', pou: main.name }] },
+    ],
   });
 }
 
@@ -69,14 +101,25 @@ function motorStartStop(): Project {
     'The classic seal-in circuit: Start runs the motor, the motor keeps itself running through its own contact until Stop is pressed.',
     [
       v('Start', 'BOOL', 'Start push button (normally open, TRUE while pressed)', '%IX0.0'),
-      v('Stop', 'BOOL', 'Stop push button (TRUE while pressed; read through a normally closed contact)', '%IX0.1'),
+      v(
+        'Stop',
+        'BOOL',
+        'Stop push button (TRUE while pressed; read through a normally closed contact)',
+        '%IX0.1',
+      ),
       v('Motor', 'BOOL', 'Motor contactor', '%QX0.0'),
     ],
     [
       network(
         'Motor seal-in',
         'Start OR Motor (seal-in), AND NOT Stop, drives the motor. Stop wins when both buttons are pressed.',
-        [contact(0, 0, 'Start'), contact(0, 1, 'Stop', 'NC'), ...line(0, 2, COLS - 2), coil(0, 'Motor'), contact(1, 0, 'Motor')],
+        [
+          contact(0, 0, 'Start'),
+          contact(0, 1, 'Stop', 'NC'),
+          ...line(0, 2, COLS - 2),
+          coil(0, 'Motor'),
+          contact(1, 0, 'Motor'),
+        ],
         { vlinks: [{ row: 0, boundary: 1 }] },
       ),
     ],
@@ -85,9 +128,16 @@ function motorStartStop(): Project {
 
 function trafficLight(): Project {
   const timerNet = (title: string, comment: string, condition: LdElement, timer: string, pt: string) =>
-    network(title, comment, [condition, ...line(0, 1, 1), box(0, 2, 'TON', timer, { PT: pt }), ...line(0, 4, COLS - 1)]);
+    network(title, comment, [
+      condition,
+      ...line(0, 1, 1),
+      box(0, 2, 'TON', timer, { PT: pt }),
+      ...line(0, 4, COLS - 1),
+    ]);
   const lampNet = (title: string, lamp: string, contacts: LdElement[]) =>
-    network(title, `${lamp} lamp.`, [...contacts, ...line(0, contacts.length, COLS - 2), coil(0, lamp)], { rows: 1 });
+    network(title, `${lamp} lamp.`, [...contacts, ...line(0, contacts.length, COLS - 2), coil(0, lamp)], {
+      rows: 1,
+    });
   return program(
     'Traffic light',
     'Three on-delay timers in a chain: red for 5 s, green for 4 s, yellow for 1 s, then red again (the restart takes two scans: the end of yellow resets the chain in the next scan).',
@@ -100,9 +150,27 @@ function trafficLight(): Project {
       v('YellowTime', 'TON', 'Times the yellow phase (1 s), started when green is over'),
     ],
     [
-      timerNet('Red phase', 'Red runs until its timer is done; the end of yellow restarts the cycle.', contact(0, 0, 'YellowTime.Q', 'NC'), 'RedTime', 'T#5s'),
-      timerNet('Green phase', 'Green starts when the red phase is over.', contact(0, 0, 'RedTime.Q'), 'GreenTime', 'T#4s'),
-      timerNet('Yellow phase', 'Yellow starts when the green phase is over.', contact(0, 0, 'GreenTime.Q'), 'YellowTime', 'T#1s'),
+      timerNet(
+        'Red phase',
+        'Red runs until its timer is done; the end of yellow restarts the cycle.',
+        contact(0, 0, 'YellowTime.Q', 'NC'),
+        'RedTime',
+        'T#5s',
+      ),
+      timerNet(
+        'Green phase',
+        'Green starts when the red phase is over.',
+        contact(0, 0, 'RedTime.Q'),
+        'GreenTime',
+        'T#4s',
+      ),
+      timerNet(
+        'Yellow phase',
+        'Yellow starts when the green phase is over.',
+        contact(0, 0, 'GreenTime.Q'),
+        'YellowTime',
+        'T#1s',
+      ),
       lampNet('Red lamp', 'Red', [contact(0, 0, 'RedTime.Q', 'NC')]),
       lampNet('Green lamp', 'Green', [contact(0, 0, 'RedTime.Q'), contact(0, 1, 'GreenTime.Q', 'NC')]),
       lampNet('Yellow lamp', 'Yellow', [contact(0, 0, 'GreenTime.Q')]),
@@ -125,7 +193,13 @@ function partsCounter(): Project {
       network(
         'Count parts',
         'Each rising edge of the sensor adds one; Reset clears the count; Q (Done) when 10 parts are counted.',
-        [contact(0, 0, 'PartSensor'), ...line(0, 1, 1), box(0, 2, 'CTU', 'Parts', { R: 'Reset', PV: '10' }, { CV: 'PartCount' }), ...line(0, 4, COLS - 2), coil(0, 'Done')],
+        [
+          contact(0, 0, 'PartSensor'),
+          ...line(0, 1, 1),
+          box(0, 2, 'CTU', 'Parts', { R: 'Reset', PV: '10' }, { CV: 'PartCount' }),
+          ...line(0, 4, COLS - 2),
+          coil(0, 'Done'),
+        ],
         { rows: 3 },
       ),
     ],
@@ -143,16 +217,55 @@ function jumpLabel(): Project {
       v('MaintenanceLamp', 'BOOL', 'Maintenance mode lamp', '%QX0.1'),
     ],
     [
-      network('Maintenance?', 'In maintenance mode, skip the conveyor network.', [contact(0, 0, 'Maintenance'), ...line(0, 1, COLS - 2), { id: eid(), kind: 'jump', target: 'MAINT', row: 0, col: COLS - 1 }], { rows: 1 }),
-      network('Conveyor', 'Runs the conveyor while a part is waiting (skipped in maintenance).', [contact(0, 0, 'PartWaiting'), ...line(0, 1, COLS - 2), coil(0, 'Conveyor')], { rows: 1 }),
-      network('Maintenance lamp', 'The jump lands here.', [contact(0, 0, 'Maintenance'), ...line(0, 1, COLS - 2), coil(0, 'MaintenanceLamp')], { rows: 1, label: 'MAINT' }),
+      network(
+        'Maintenance?',
+        'In maintenance mode, skip the conveyor network.',
+        [
+          contact(0, 0, 'Maintenance'),
+          ...line(0, 1, COLS - 2),
+          { id: eid(), kind: 'jump', target: 'MAINT', row: 0, col: COLS - 1 },
+        ],
+        { rows: 1 },
+      ),
+      network(
+        'Conveyor',
+        'Runs the conveyor while a part is waiting (skipped in maintenance).',
+        [contact(0, 0, 'PartWaiting'), ...line(0, 1, COLS - 2), coil(0, 'Conveyor')],
+        { rows: 1 },
+      ),
+      network(
+        'Maintenance lamp',
+        'The jump lands here.',
+        [contact(0, 0, 'Maintenance'), ...line(0, 1, COLS - 2), coil(0, 'MaintenanceLamp')],
+        { rows: 1, label: 'MAINT' },
+      ),
     ],
   );
 }
 
 export const EXAMPLES: readonly Example[] = [
-  { id: 'motor-start-stop', title: 'Motor start/stop (seal-in)', description: 'Start and Stop push buttons with a self-holding motor contact.', build: motorStartStop },
-  { id: 'traffic-light', title: 'Traffic light (TON chain)', description: 'Red 5 s, green 4 s, yellow 1 s with three on-delay timers.', build: trafficLight },
-  { id: 'parts-counter', title: 'Parts counter (CTU)', description: 'Counts parts from a sensor, lights Done at 10, Reset clears.', build: partsCounter },
-  { id: 'jump-label', title: 'Jump and label', description: 'A conditional jump skips a network and lands on a labelled one.', build: jumpLabel },
+  {
+    id: 'motor-start-stop',
+    title: 'Motor start/stop (seal-in)',
+    description: 'Start and Stop push buttons with a self-holding motor contact.',
+    build: motorStartStop,
+  },
+  {
+    id: 'traffic-light',
+    title: 'Traffic light (TON chain)',
+    description: 'Red 5 s, green 4 s, yellow 1 s with three on-delay timers.',
+    build: trafficLight,
+  },
+  {
+    id: 'parts-counter',
+    title: 'Parts counter (CTU)',
+    description: 'Counts parts from a sensor, lights Done at 10, Reset clears.',
+    build: partsCounter,
+  },
+  {
+    id: 'jump-label',
+    title: 'Jump and label',
+    description: 'A conditional jump skips a network and lands on a labelled one.',
+    build: jumpLabel,
+  },
 ];

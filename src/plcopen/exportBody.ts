@@ -108,32 +108,29 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
     const p = placed[s.el]!;
     return { ref: p.id, formal: p.formal?.(s.pin), at: p.pins.get(s.pin)! };
   };
+  // The hottest path of an export: one line per input pin, built as a string.
   const writeConnections = (
     consumer: Point,
     origin: Point,
     srcs: readonly Source[] | undefined,
     barX: number | undefined,
-  ) =>
-    w.line(() =>
-      w.open('connectionPointIn', undefined, () => {
-        rel(w, consumer, origin);
-        for (const s of srcs ?? []) {
-          const { ref, formal, at } = sourcePoint(s, consumer);
-          w.open('connection', { refLocalId: ref, formalParameter: formal }, () => {
-            w.empty('position', { x: consumer.x, y: consumer.y });
-            if (at.y !== consumer.y) {
-              const xm =
-                barX !== undefined && barX <= consumer.x && barX >= at.x
-                  ? barX
-                  : Math.round((consumer.x + at.x) / 2);
-              w.empty('position', { x: xm, y: consumer.y });
-              w.empty('position', { x: xm, y: at.y });
-            }
-            w.empty('position', { x: at.x, y: at.y });
-          });
-        }
-      }),
-    );
+  ) => {
+    let line = `<connectionPointIn><relPosition x="${consumer.x - origin.x}" y="${consumer.y - origin.y}"/>`;
+    for (const s of srcs ?? []) {
+      const { ref, formal, at } = sourcePoint(s, consumer);
+      line += `<connection refLocalId="${ref}"${formal !== undefined ? ` formalParameter="${escapeAttr(formal)}"` : ''}>`;
+      line += `<position x="${consumer.x}" y="${consumer.y}"/>`;
+      if (at.y !== consumer.y) {
+        const xm =
+          barX !== undefined && barX <= consumer.x && barX >= at.x
+            ? barX
+            : Math.round((consumer.x + at.x) / 2);
+        line += `<position x="${xm}" y="${consumer.y}"/><position x="${xm}" y="${at.y}"/>`;
+      }
+      line += `<position x="${at.x}" y="${at.y}"/></connection>`;
+    }
+    w.text(`${line}</connectionPointIn>`);
+  };
   const barOf = (row: number, boundary: number): number | undefined => {
     const b = g.barBoundary.get(g.netOf(row, boundary));
     return b === undefined ? undefined : boundaryX(b);
@@ -260,9 +257,12 @@ function writeElement(
       const attrs = el.kind === 'contact' ? contactAttrs(el) : coilAttrs(el);
       const retentive = el.kind === 'coil' && (el.coil === 'M' || el.coil === 'SM' || el.coil === 'RM');
       w.open(el.kind, { localId: p.id, height: ELEMENT_H, width: ELEMENT_W, ...attrs }, () => {
-        w.empty('position', { x: origin.x, y: origin.y });
+        w.text(`<position x="${origin.x}" y="${origin.y}"/>`);
         connect(inP, origin, srcOf('in'), inBar('in'));
-        w.line(() => w.open('connectionPointOut', undefined, () => rel(w, p.pins.get('out')!, origin)));
+        const out = p.pins.get('out')!;
+        w.text(
+          `<connectionPointOut><relPosition x="${out.x - origin.x}" y="${out.y - origin.y}"/></connectionPointOut>`,
+        );
         w.leaf('variable', el.variable);
         addData(
           retentive

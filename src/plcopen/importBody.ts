@@ -65,11 +65,18 @@ export function importLdBody(
     list.push(n.index);
   }
   const keyOf = (objs: readonly { obj: RawObject; order: number }[]): number[] => {
-    const eo = Math.min(...objs.map((o) => (o.obj.executionOrderId > 0 ? o.obj.executionOrderId : Infinity)));
+    let eo = Infinity;
+    let y = Infinity;
+    let x = Infinity;
+    let order = Infinity;
+    for (const o of objs) {
+      if (o.obj.executionOrderId > 0 && o.obj.executionOrderId < eo) eo = o.obj.executionOrderId;
+      if (o.obj.pos.y < y) y = o.obj.pos.y;
+      if (o.obj.pos.x < x) x = o.obj.pos.x;
+      if (o.order < order) order = o.order;
+    }
     if (eo !== Infinity) return [0, eo];
-    if (hasGeometry)
-      return [1, Math.min(...objs.map((o) => o.obj.pos.y)), Math.min(...objs.map((o) => o.obj.pos.x))];
-    return [1, Math.min(...objs.map((o) => o.order))];
+    return hasGeometry ? [1, y, x] : [1, order];
   };
   const orderOf = new Map(objects.map((o, i) => [o, i]));
   const groups: Group[] = [];

@@ -61,7 +61,9 @@ export function importPlcopen(xmlText: string): ImportResult {
 
 function importChecked(text: string): ImportResult {
   const root = parseXml(text);
-  const lineOf = lineLocator(text);
+  // Line numbers are only needed for findings: index the lines on first use.
+  let locate: ((offset: number) => number) | undefined;
+  const lineOf = (offset: number) => (locate ??= lineLocator(text))(offset);
   const raw = (el: XmlElement) => rawElement(text, el);
   const at = (el: XmlElement | undefined) =>
     el

@@ -100,4 +100,74 @@ describe('Hardware panel', () => {
     expect(journeyErrors).toEqual([]);
     await journey.close();
   });
+
+  it('steps the motor example on the simulated device after a confirmation, and keeps the lease fed while paused', async () => {
+    const journey = await browser.newPage({ viewport: { width: 1440, height: 900 } });
+    const journeyErrors = collectPageErrors(journey);
+    await journey.goto(gw.url);
+    const sim = new SimPage(journey);
+    await sim.openExample('Motor start/stop (seal-in)');
+    await journey.getByTestId('tab-hardware').click();
+    const panel = journey.getByTestId('hardware-panel');
+    await panel.getByTestId('hw-connect').click();
+    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
+    const port = gw.simulated?.modbusServerPort ?? 0;
+    const coil0 = async () => mbpollValues(await mbpoll(port, ['-t', '0', '-r', '0', '127.0.0.1']))[0];
+
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await sim.button('pause').click();
+    await sim.waitForMode('Paused');
+    const scan = Number(await journey.getByTestId('sim-scan').textContent());
+    expect(await coil0()).toBe(0);
+
+    // Start pressed on the device from outside (coil 800 drives discrete input 0 = %IX0.0).
+    await mbpoll(port, ['-t', '0', '-r', '800', '127.0.0.1', '1']);
+    await expect.poll(() => panel.getByTestId('hw-point-%IX0.0').getByTestId('hw-switch').getAttribute('aria-checked')).toBe('true');
+    expect(await sim.value('Start')).toBe(false); // paused: the program has not read it yet
+
+    // Stepping asks first; cancelling does not step.
+    await sim.button('step-scan').click();
+    const dialog = journey.getByRole('alertdialog', { name: 'Step with real outputs?' });
+    await dialog.waitFor();
+    expect(await dialog.textContent()).toContain('drives the real outputs');
+    expect(await dialog.getByTestId('hw-step-watchdog').textContent()).toMatch(/Outputs armed; watchdog 1000 ms/);
+    expect(await journey.evaluate(() => document.activeElement?.textContent)).toBe('Cancel');
+    await journey.keyboard.press('Escape');
+    await dialog.waitFor({ state: 'detached' });
+    expect(Number(await journey.getByTestId('sim-scan').textContent())).toBe(scan);
+    expect(await coil0()).toBe(0);
+
+    // Confirmed: the stepped scan reads Start from the device and Motor reaches the device's coil.
+    await sim.button('step-scan').click();
+    await dialog.getByTestId('hw-step-ok').click();
+    await sim.waitForValue('Start', true);
+    await sim.waitForValue('Motor', true);
+    expect(Number(await journey.getByTestId('sim-scan').textContent())).toBe(scan + 1);
+    await eventually(async () => (await coil0()) === 1, 5000, 'Motor coil on the device');
+    const badge = journey.getByTestId('hw-stepping');
+    await expect.poll(() => badge.textContent()).toMatch(/Outputs armed; watchdog 1000 ms,\s*fed/);
+
+    // Paused in stepping mode for longer than the watchdog: the lease stays armed and fed.
+    await journey.waitForTimeout(2500);
+    expect(gw.hub.status()).toMatchObject({ armed: true, watchdog: { ms: 1000, state: 'fed' } });
+    expect(await coil0()).toBe(1);
+
+    // The next step does not ask again; Start released on the device, the motor seals in.
+    await mbpoll(port, ['-t', '0', '-r', '800', '127.0.0.1', '0']);
+    await expect.poll(() => panel.getByTestId('hw-point-%IX0.0').getByTestId('hw-switch').getAttribute('aria-checked')).toBe('false');
+    await sim.button('step-scan').click();
+    await sim.waitForValue('Start', false);
+    expect(await dialog.count()).toBe(0);
+    expect(await sim.value('Motor')).toBe(true);
+    expect(await coil0()).toBe(1);
+
+    // Reset ends hardware stepping: the gateway writes the safe state.
+    await sim.button('reset').click();
+    await eventually(async () => (await coil0()) === 0, 5000, 'safe state after reset');
+    await badge.waitFor({ state: 'detached' });
+    expect(gw.hub.status().watchdog.state).toBe('idle');
+    expect(journeyErrors).toEqual([]);
+    await journey.close();
+  });
 });

@@ -183,6 +183,17 @@ test('typing the variable of a coil completes from the table and offers to decla
     variable: 'Motor',
   });
   expect(undone.pous[0]?.variables.map((v) => v.name)).toEqual(['Start', 'Stop']);
+
+  // The table offers to declare every name the program uses but nobody declared.
+  await editor.tab('Variables');
+  await editor.variables.getByRole('button', { name: 'Declare 1 used name' }).click();
+  expect((await editor.project()).pous[0]?.variables.map((v) => `${v.name}:${v.type}`)).toEqual([
+    'Start:BOOL',
+    'Stop:BOOL',
+    'Motor:BOOL',
+  ]);
+  await editor.tab('Problems');
+  await poll(() => editor.problems.getByTestId('problems-summary').textContent()).toBe('No problems');
   expect(editor.errors).toEqual([]);
   await editor.close();
 });

@@ -3,7 +3,12 @@
 import { describe, expect, test } from 'vitest';
 import { ladder, plcOf, project, vars, type BoxSpec } from './ladder';
 
-const fn = (type: string, inputs: Record<string, string>, outputs: Record<string, string>, extra: Partial<BoxSpec> = {}): BoxSpec => ({
+const fn = (
+  type: string,
+  inputs: Record<string, string>,
+  outputs: Record<string, string>,
+  extra: Partial<BoxSpec> = {},
+): BoxSpec => ({
   row: 0,
   col: 1,
   type,
@@ -14,12 +19,15 @@ const fn = (type: string, inputs: Record<string, string>, outputs: Record<string
 
 describe('functions with EN/ENO', () => {
   test('INT wraps at its width and REAL rounds to 32 bits, through a program', () => {
-    const p = project(vars('I INT := 32767', 'R REAL := 0.1', 'U USINT := 250', 'Big LINT := 9223372036854775807'), [
-      ladder(['- # #'], { boxes: [fn('ADD', { IN1: 'I', IN2: '1' }, { OUT: 'I' })] }),
-      ladder(['- # #'], { boxes: [fn('ADD', { IN1: 'R', IN2: '0.2' }, { OUT: 'R' })] }),
-      ladder(['- # #'], { boxes: [fn('ADD', { IN1: 'U', IN2: '10' }, { OUT: 'U' })] }),
-      ladder(['- # #'], { boxes: [fn('ADD', { IN1: 'Big', IN2: '1' }, { OUT: 'Big' })] }),
-    ]);
+    const p = project(
+      vars('I INT := 32767', 'R REAL := 0.1', 'U USINT := 250', 'Big LINT := 9223372036854775807'),
+      [
+        ladder(['- # #'], { boxes: [fn('ADD', { IN1: 'I', IN2: '1' }, { OUT: 'I' })] }),
+        ladder(['- # #'], { boxes: [fn('ADD', { IN1: 'R', IN2: '0.2' }, { OUT: 'R' })] }),
+        ladder(['- # #'], { boxes: [fn('ADD', { IN1: 'U', IN2: '10' }, { OUT: 'U' })] }),
+        ladder(['- # #'], { boxes: [fn('ADD', { IN1: 'Big', IN2: '1' }, { OUT: 'Big' })] }),
+      ],
+    );
     const plc = plcOf(p);
     plc.scan();
     expect(plc.read('I')).toBe(-32768);
@@ -30,7 +38,9 @@ describe('functions with EN/ENO', () => {
 
   test('EN OFF: the function does not run, ENO is OFF, its output variable keeps its value', () => {
     const p = project(vars('Go BOOL', 'N INT := 5', 'Ok BOOL'), [
-      ladder(['[Go] # # (Ok)', '. # # .', '. # # .'], { boxes: [fn('ADD', { IN1: 'N', IN2: '1' }, { OUT: 'N' })] }),
+      ladder(['[Go] # # (Ok)', '. # # .', '. # # .'], {
+        boxes: [fn('ADD', { IN1: 'N', IN2: '1' }, { OUT: 'N' })],
+      }),
     ]);
     const plc = plcOf(p);
     plc.scan();
@@ -42,7 +52,9 @@ describe('functions with EN/ENO', () => {
 
   test('division by zero turns ENO OFF', () => {
     const p = project(vars('A INT := 10', 'B INT := 0', 'Q INT', 'Ok BOOL'), [
-      ladder(['- # # (Ok)', '. # # .', '. # # .'], { boxes: [fn('DIV', { IN1: 'A', IN2: 'B' }, { OUT: 'Q' })] }),
+      ladder(['- # # (Ok)', '. # # .', '. # # .'], {
+        boxes: [fn('DIV', { IN1: 'A', IN2: 'B' }, { OUT: 'Q' })],
+      }),
     ]);
     const plc = plcOf(p);
     plc.scan();
@@ -54,7 +66,9 @@ describe('functions with EN/ENO', () => {
 
   test("a comparison's BOOL output drives a coil as power flow, and is OFF when EN is OFF", () => {
     const p = project(vars('Go BOOL := TRUE', 'Level INT := 80', 'High BOOL'), [
-      ladder(['[Go] # # .', '. # # (High)', '. # # .'], { boxes: [fn('GT', { IN1: 'Level', IN2: '75' }, {})] }),
+      ladder(['[Go] # # .', '. # # (High)', '. # # .'], {
+        boxes: [fn('GT', { IN1: 'Level', IN2: '75' }, {})],
+      }),
     ]);
     const plc = plcOf(p);
     plc.scan();
@@ -65,7 +79,9 @@ describe('functions with EN/ENO', () => {
   });
 
   test('a function with EN not connected always runs', () => {
-    const p = project(vars('A INT := 2', 'B INT'), [ladder(['. # #'], { boxes: [fn('MUL', { IN1: 'A', IN2: '21' }, { OUT: 'B' })] })]);
+    const p = project(vars('A INT := 2', 'B INT'), [
+      ladder(['. # #'], { boxes: [fn('MUL', { IN1: 'A', IN2: '21' }, { OUT: 'B' })] }),
+    ]);
     const plc = plcOf(p);
     plc.scan();
     expect(plc.read('B')).toBe(42);
@@ -75,7 +91,10 @@ describe('functions with EN/ENO', () => {
     // ADD at column 2: ENO row 1 and OUT row 2 on boundary 3; MOVE at column 5: EN row 1, IN row 2 on boundary 4.
     const p = project(vars('A INT := 2', 'B INT := 3', 'Sum INT'), [
       ladder(['- # # - # #', '. # # - # #', '. # # . . .'], {
-        boxes: [fn('ADD', { IN1: 'A', IN2: 'B' }, {}), { row: 0, col: 4, type: 'MOVE', inputs: {}, outputs: { OUT: 'Sum' } }],
+        boxes: [
+          fn('ADD', { IN1: 'A', IN2: 'B' }, {}),
+          { row: 0, col: 4, type: 'MOVE', inputs: {}, outputs: { OUT: 'Sum' } },
+        ],
       }),
     ]);
     const plc = plcOf(p);
@@ -87,7 +106,9 @@ describe('functions with EN/ENO', () => {
   });
 
   test('implicit widening: a SINT variable feeds an INT addition into a DINT result', () => {
-    const p = project(vars('S SINT := -100', 'I INT := 1000', 'D DINT'), [ladder(['- # #'], { boxes: [fn('ADD', { IN1: 'S', IN2: 'I' }, { OUT: 'D' })] })]);
+    const p = project(vars('S SINT := -100', 'I INT := 1000', 'D DINT'), [
+      ladder(['- # #'], { boxes: [fn('ADD', { IN1: 'S', IN2: 'I' }, { OUT: 'D' })] }),
+    ]);
     const plc = plcOf(p);
     plc.scan();
     expect(plc.read('D')).toBe(900);
@@ -97,7 +118,11 @@ describe('functions with EN/ENO', () => {
 describe('function blocks in networks', () => {
   const timer = (type: 'TON' | 'TOF' | 'TP') =>
     project(vars('In BOOL', 'Q BOOL', 'T1 ' + type, 'Elapsed TIME'), [
-      ladder(['[In] # # (Q)', '. # # .'], { boxes: [{ row: 0, col: 1, type, instance: 'T1', inputs: { PT: 'T#30ms' }, outputs: { ET: 'Elapsed' } }] }),
+      ladder(['[In] # # (Q)', '. # # .'], {
+        boxes: [
+          { row: 0, col: 1, type, instance: 'T1', inputs: { PT: 'T#30ms' }, outputs: { ET: 'Elapsed' } },
+        ],
+      }),
     ]);
 
   test.each([
@@ -124,7 +149,9 @@ describe('function blocks in networks', () => {
 
   test('an FB is called at every evaluation of its network, even without power flow', () => {
     const p = project(vars('In BOOL', 'Q BOOL', 'T1 TON'), [
-      ladder(['[In] # # (Q)', '. # # .'], { boxes: [{ row: 0, col: 1, type: 'TON', instance: 'T1', inputs: { PT: 'T#20ms' } }] }),
+      ladder(['[In] # # (Q)', '. # # .'], {
+        boxes: [{ row: 0, col: 1, type: 'TON', instance: 'T1', inputs: { PT: 'T#20ms' } }],
+      }),
     ]);
     const plc = plcOf(p, 10);
     plc.write('In', true);
@@ -141,7 +168,16 @@ describe('function blocks in networks', () => {
         vars('Pulse BOOL', 'Clear BOOL', 'C1 CTU', 'Count INT', 'Full BOOL'),
         [
           ladder(['[Pulse] # # (Full)', '. # # .', '. # # .'], {
-            boxes: [{ row: 0, col: 1, type: 'CTU', instance: 'C1', inputs: { R: 'Clear', PV: '3' }, outputs: { CV: 'Count' } }],
+            boxes: [
+              {
+                row: 0,
+                col: 1,
+                type: 'CTU',
+                instance: 'C1',
+                inputs: { R: 'Clear', PV: '3' },
+                outputs: { CV: 'Count' },
+              },
+            ],
           }),
         ],
         profile,
@@ -180,7 +216,11 @@ describe('function blocks in networks', () => {
     ['iec', 2000],
     ['openplc', 2],
   ] as const)('profile %s: TIME_TO_DINT of T#2s gives %d', (profile, expected) => {
-    const p = project(vars('D DINT'), [ladder(['- # #'], { boxes: [fn('TIME_TO_DINT', { IN: 'T#2s' }, { OUT: 'D' })] })], profile);
+    const p = project(
+      vars('D DINT'),
+      [ladder(['- # #'], { boxes: [fn('TIME_TO_DINT', { IN: 'T#2s' }, { OUT: 'D' })] })],
+      profile,
+    );
     const plc = plcOf(p);
     plc.scan();
     expect(plc.read('D')).toBe(expected);
@@ -190,9 +230,15 @@ describe('function blocks in networks', () => {
     ['iec', false],
     ['openplc', true],
   ] as const)('profile %s: MOD by zero gives 0 with ENO %s', (profile, eno) => {
-    const p = project(vars('A INT := 7', 'Z INT', 'M INT := 5', 'Ok BOOL'), [
-      ladder(['- # # (Ok)', '. # # .', '. # # .'], { boxes: [fn('MOD', { IN1: 'A', IN2: 'Z' }, { OUT: 'M' })] }),
-    ], profile);
+    const p = project(
+      vars('A INT := 7', 'Z INT', 'M INT := 5', 'Ok BOOL'),
+      [
+        ladder(['- # # (Ok)', '. # # .', '. # # .'], {
+          boxes: [fn('MOD', { IN1: 'A', IN2: 'Z' }, { OUT: 'M' })],
+        }),
+      ],
+      profile,
+    );
     const plc = plcOf(p);
     plc.scan();
     expect([plc.read('M'), plc.read('Ok')]).toEqual([0, eno]);
@@ -201,7 +247,9 @@ describe('function blocks in networks', () => {
 
 describe('data lines of BOOL type', () => {
   test('a MOVE of a BOOL variable drives a coil as power flow', () => {
-    const p = project(vars('A BOOL', 'X BOOL'), [ladder(['- # # .', '. # # (X)'], { boxes: [fn('MOVE', { IN: 'A' }, {})] })]);
+    const p = project(vars('A BOOL', 'X BOOL'), [
+      ladder(['- # # .', '. # # (X)'], { boxes: [fn('MOVE', { IN: 'A' }, {})] }),
+    ]);
     const plc = plcOf(p);
     plc.write('A', true);
     plc.scan();

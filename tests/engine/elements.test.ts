@@ -19,7 +19,12 @@ describe('contacts (table 61)', () => {
     ['inverting (NOT left)', '[A] [NOT] (X)', [0, 1, 1, 0], [1, 0, 0, 1]],
     ['positive transition: ON for one scan when A rises', '[P:A] (X)', [0, 1, 1, 0, 1], [0, 1, 0, 0, 1]],
     ['negative transition: ON for one scan when A falls', '[N:A] (X)', [1, 0, 0, 1, 0], [0, 1, 0, 0, 1]],
-    ['negative transition with A OFF at its first evaluation fires once (F_TRIG, M starts FALSE)', '[N:A] (X)', [0, 0, 0], [1, 0, 0]],
+    [
+      'negative transition with A OFF at its first evaluation fires once (F_TRIG, M starts FALSE)',
+      '[N:A] (X)',
+      [0, 0, 0],
+      [1, 0, 0],
+    ],
     ['positive transition with A ON at its first evaluation fires', '[P:A] (X)', [1, 1], [1, 0]],
   ])('%s', (_name, row, a, x) => {
     expect(trace([row], a)).toEqual(x);
@@ -42,7 +47,9 @@ describe('contacts (table 61)', () => {
   });
 
   test('each transition element has its own memory', () => {
-    const plc = plcOf(project(vars('A BOOL', 'X BOOL', 'Y BOOL'), [ladder(['[P:A] (X)']), ladder(['[P:A] (Y)'])]));
+    const plc = plcOf(
+      project(vars('A BOOL', 'X BOOL', 'Y BOOL'), [ladder(['[P:A] (X)']), ladder(['[P:A] (Y)'])]),
+    );
     plc.write('A', true);
     plc.scan();
     expect([plc.read('X'), plc.read('Y')]).toEqual([true, true]);
@@ -68,7 +75,10 @@ describe('contacts (table 61)', () => {
 
   test('contacts read a bit of a word and an FB pin', () => {
     const plc = plcOf(
-      project(vars('W WORD := 16#0008', 'X BOOL', 'Y BOOL', 'T1 TON'), [ladder(['[W.3] (X)']), ladder(['[T1.Q] (Y)'])]),
+      project(vars('W WORD := 16#0008', 'X BOOL', 'Y BOOL', 'T1 TON'), [
+        ladder(['[W.3] (X)']),
+        ladder(['[T1.Q] (Y)']),
+      ]),
     );
     plc.scan();
     expect(plc.read('X')).toBe(true);
@@ -85,7 +95,12 @@ describe('coils (table 62)', () => {
     ['retentive set coil', '[A] (SM:X)', [0, 1, 0], [0, 1, 1]],
     ['positive transition coil', '[A] (P:X)', [0, 1, 1, 0, 1], [0, 1, 0, 0, 1]],
     ['negative transition coil', '[A] (N:X)', [1, 0, 0, 1, 0], [0, 1, 0, 0, 1]],
-    ['negative transition coil whose left link is OFF at its first evaluation is ON once', '[A] (N:X)', [0, 0], [1, 0]],
+    [
+      'negative transition coil whose left link is OFF at its first evaluation is ON once',
+      '[A] (N:X)',
+      [0, 0],
+      [1, 0],
+    ],
   ])('%s', (_name, row, a, x) => {
     expect(trace([row], a)).toEqual(x);
   });
@@ -113,7 +128,12 @@ describe('coils (table 62)', () => {
   });
 
   test('a coil writes an FB input and a bit of a word', () => {
-    const plc = plcOf(project(vars('A BOOL', 'W WORD := 16#FFFF', 'T1 TON', 'X BOOL'), [ladder(['[A] (T1.IN)']), ladder(['[A] (W.15)'])]));
+    const plc = plcOf(
+      project(vars('A BOOL', 'W WORD := 16#FFFF', 'T1 TON', 'X BOOL'), [
+        ladder(['[A] (T1.IN)']),
+        ladder(['[A] (W.15)']),
+      ]),
+    );
     plc.scan();
     expect(plc.read('T1.IN')).toBe(false);
     expect(plc.read('W')).toBe(0x7fff);

@@ -13,14 +13,22 @@ const plcFor = (id: string): Plc => {
 };
 
 describe('example projects', () => {
-  test.each(EXAMPLES.map((e) => [e.id, e] as const))('%s loads and checks with no error and no warning', (_id, example) => {
-    const project = example.build();
-    expect(validateProject(JSON.parse(JSON.stringify(project)))).toMatchObject({ ok: true });
-    expect(checkProject(project).map(formatDiagnostic)).toEqual([]);
-  });
+  test.each(EXAMPLES.map((e) => [e.id, e] as const))(
+    '%s loads and checks with no error and no warning',
+    (_id, example) => {
+      const project = example.build();
+      expect(validateProject(JSON.parse(JSON.stringify(project)))).toMatchObject({ ok: true });
+      expect(checkProject(project).map(formatDiagnostic)).toEqual([]);
+    },
+  );
 
   test('the four promised examples are offered', () => {
-    expect(EXAMPLES.map((e) => e.id)).toEqual(['motor-start-stop', 'traffic-light', 'parts-counter', 'jump-label']);
+    expect(EXAMPLES.map((e) => e.id)).toEqual([
+      'motor-start-stop',
+      'traffic-light',
+      'parts-counter',
+      'jump-label',
+    ]);
   });
 
   test('motor start/stop: Start seals the motor in, Stop drops it', () => {

@@ -56,7 +56,15 @@ function cellElement(token: string, row: number, col: number): LdElement | undef
     if (body.startsWith('/')) return { ...at, kind: 'coil', coil: 'NEG', variable: body.slice(1) };
     const typed = /^(S|R|M|SM|RM|P|N):(.*)$/.exec(body);
     if (typed) {
-      const map: Record<string, CoilType> = { S: 'SET', R: 'RESET', M: 'M', SM: 'SM', RM: 'RM', P: 'P', N: 'N' };
+      const map: Record<string, CoilType> = {
+        S: 'SET',
+        R: 'RESET',
+        M: 'M',
+        SM: 'SM',
+        RM: 'RM',
+        P: 'P',
+        N: 'N',
+      };
       return { ...at, kind: 'coil', coil: map[typed[1]!]!, variable: typed[2]! };
     }
     return { ...at, kind: 'coil', coil: 'COIL', variable: body };
@@ -120,7 +128,11 @@ export function vars(...specs: string[]): Variable[] {
   });
 }
 
-export function project(variables: readonly Variable[], networks: readonly Network[], profile: Profile = 'iec'): Project {
+export function project(
+  variables: readonly Variable[],
+  networks: readonly Network[],
+  profile: Profile = 'iec',
+): Project {
   const main = newPou('Main', { variables, networks });
   return newProject('Test', { pous: [main], profile });
 }

@@ -54,7 +54,11 @@ describe('evaluation order (design decisions)', () => {
 
   test('a network with a powered jump still completes: every element of it is evaluated, then execution continues at the label', () => {
     const plc = plcOf(
-      project(V, [ladder(['[A] - >>SKIP', '[B] - (X)']), ladder(['[B] - (Y)']), ladder(['[A] - (Done)'], { label: 'SKIP' })]),
+      project(V, [
+        ladder(['[A] - >>SKIP', '[B] - (X)']),
+        ladder(['[B] - (Y)']),
+        ladder(['[A] - (Done)'], { label: 'SKIP' }),
+      ]),
     );
     plc.write('A', true);
     plc.write('B', true);
@@ -76,7 +80,9 @@ describe('evaluation order (design decisions)', () => {
   });
 
   test('an unconditional jump attached to the left rail always jumps', () => {
-    const plc = plcOf(project(V, [ladder(['>>END']), ladder(['[B] (X)']), ladder(['[B] (Y)'], { label: 'END' })]));
+    const plc = plcOf(
+      project(V, [ladder(['>>END']), ladder(['[B] (X)']), ladder(['[B] (Y)'], { label: 'END' })]),
+    );
     plc.write('B', true);
     plc.scan();
     expect([plc.read('X'), plc.read('Y')]).toEqual([false, true]);
@@ -85,9 +91,16 @@ describe('evaluation order (design decisions)', () => {
   test('a backward jump repeats networks within one scan (a bounded loop)', () => {
     const plc = plcOf(
       project(vars('I INT', 'Again BOOL'), [
-        ladder(['- # #'], { boxes: [{ row: 0, col: 1, type: 'MOVE', inputs: { IN: '0' }, outputs: { OUT: 'I' } }] }),
-        ladder(['- # #'], { boxes: [{ row: 0, col: 1, type: 'ADD', inputs: { IN1: 'I', IN2: '1' }, outputs: { OUT: 'I' } }], label: 'LOOP' }),
-        ladder(['- # # . .', '. # # - (Again)'], { boxes: [{ row: 0, col: 1, type: 'LT', inputs: { IN1: 'I', IN2: '5' } }] }),
+        ladder(['- # #'], {
+          boxes: [{ row: 0, col: 1, type: 'MOVE', inputs: { IN: '0' }, outputs: { OUT: 'I' } }],
+        }),
+        ladder(['- # #'], {
+          boxes: [{ row: 0, col: 1, type: 'ADD', inputs: { IN1: 'I', IN2: '1' }, outputs: { OUT: 'I' } }],
+          label: 'LOOP',
+        }),
+        ladder(['- # # . .', '. # # - (Again)'], {
+          boxes: [{ row: 0, col: 1, type: 'LT', inputs: { IN1: 'I', IN2: '5' } }],
+        }),
         ladder(['[Again] >>LOOP']),
       ]),
     );

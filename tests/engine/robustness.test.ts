@@ -37,19 +37,46 @@ function randomNetwork(rand: () => number, k: number) {
       const name = NAMES[Math.floor(rand() * NAMES.length)]!;
       if (taken.has(`${r}:${c}`)) continue;
       if (x < 0.3) elements.push({ id, kind: 'link', row: r, col: c });
-      else if (x < 0.5) elements.push({ id, kind: 'contact', contact: (['NO', 'NC', 'P', 'N', 'NOT'] as const)[Math.floor(rand() * 5)]!, variable: name, row: r, col: c });
-      else if (x < 0.65) elements.push({ id, kind: 'coil', coil: (['COIL', 'NEG', 'SET', 'RESET', 'P', 'N', 'M'] as const)[Math.floor(rand() * 7)]!, variable: name, row: r, col: c });
-      else if (x < 0.68) elements.push({ id, kind: 'jump', target: rand() < 0.5 ? 'L0' : 'L9', row: r, col: c });
+      else if (x < 0.5)
+        elements.push({
+          id,
+          kind: 'contact',
+          contact: (['NO', 'NC', 'P', 'N', 'NOT'] as const)[Math.floor(rand() * 5)]!,
+          variable: name,
+          row: r,
+          col: c,
+        });
+      else if (x < 0.65)
+        elements.push({
+          id,
+          kind: 'coil',
+          coil: (['COIL', 'NEG', 'SET', 'RESET', 'P', 'N', 'M'] as const)[Math.floor(rand() * 7)]!,
+          variable: name,
+          row: r,
+          col: c,
+        });
+      else if (x < 0.68)
+        elements.push({ id, kind: 'jump', target: rand() < 0.5 ? 'L0' : 'L9', row: r, col: c });
       else if (x < 0.7) elements.push({ id, kind: 'return', row: r, col: c });
       else if (x < 0.78) {
         const [type, inputs] = BLOCKS[Math.floor(rand() * BLOCKS.length)]!;
-        elements.push({ id, kind: 'box', blockType: type, ...(type === 'TON' || type === 'CTU' ? { instance: type === 'TON' ? 'T1' : 'C1' } : {}), inputs, outputs: {}, row: r, col: c });
+        elements.push({
+          id,
+          kind: 'box',
+          blockType: type,
+          ...(type === 'TON' || type === 'CTU' ? { instance: type === 'TON' ? 'T1' : 'C1' } : {}),
+          inputs,
+          outputs: {},
+          row: r,
+          col: c,
+        });
         for (let rr = r; rr < r + 4; rr++) for (let cc = c; cc < c + 2; cc++) taken.add(`${rr}:${cc}`);
       }
     }
   }
   const vlinks: VLink[] = [];
-  for (let i = 0; i < rows * 2; i++) vlinks.push({ row: Math.floor(rand() * rows), boundary: Math.floor(rand() * (cols + 1)) });
+  for (let i = 0; i < rows * 2; i++)
+    vlinks.push({ row: Math.floor(rand() * rows), boundary: Math.floor(rand() * (cols + 1)) });
   return newNetwork({ rows, cols, elements, vlinks, ...(k === 0 ? { label: 'L0' } : {}) });
 }
 
@@ -58,7 +85,10 @@ describe('robustness', () => {
     const rand = rng(7);
     let compiled = 0;
     for (let trial = 0; trial < 100; trial++) {
-      const p = project(vars('A BOOL', 'B BOOL', 'X BOOL', 'Y BOOL', 'W WORD', 'N INT', 'T1 TON', 'C1 CTU'), [0, 1, 2, 3].map((k) => randomNetwork(rand, k)));
+      const p = project(
+        vars('A BOOL', 'B BOOL', 'X BOOL', 'Y BOOL', 'W WORD', 'N INT', 'T1 TON', 'C1 CTU'),
+        [0, 1, 2, 3].map((k) => randomNetwork(rand, k)),
+      );
       expect(() => checkProject(p)).not.toThrow();
       const { program } = compileProgram(p);
       if (!program) continue;
@@ -72,7 +102,7 @@ describe('robustness', () => {
 
   test('100 random well-formed programs compile with no error and run', () => {
     const rand = rng(11);
-    const pick = <T,>(xs: readonly T[]): T => xs[Math.floor(rand() * xs.length)]!;
+    const pick = <T>(xs: readonly T[]): T => xs[Math.floor(rand() * xs.length)]!;
     for (let trial = 0; trial < 100; trial++) {
       const networks = [0, 1, 2].map((k) => {
         const cols = 4 + Math.floor(rand() * 4);
@@ -80,13 +110,36 @@ describe('robustness', () => {
         const elements: LdElement[] = [];
         let n = 0;
         const id = () => `w${trial}_${k}_${n++}` as ElementId;
-        for (let c = 0; c < m; c++) elements.push({ id: id(), kind: 'contact', contact: pick(['NO', 'NC', 'P', 'N', 'NOT'] as const), variable: pick(['A', 'B', 'X', 'W.2', 'T1.Q']), row: 0, col: c });
+        for (let c = 0; c < m; c++)
+          elements.push({
+            id: id(),
+            kind: 'contact',
+            contact: pick(['NO', 'NC', 'P', 'N', 'NOT'] as const),
+            variable: pick(['A', 'B', 'X', 'W.2', 'T1.Q']),
+            row: 0,
+            col: c,
+          });
         for (let c = m; c < cols - 1; c++) elements.push({ id: id(), kind: 'link', row: 0, col: c });
-        elements.push({ id: id(), kind: 'coil', coil: pick(['COIL', 'NEG', 'SET', 'RESET', 'P', 'N', 'M'] as const), variable: pick(['X', 'Y', 'W.2']), row: 0, col: cols - 1 });
+        elements.push({
+          id: id(),
+          kind: 'coil',
+          coil: pick(['COIL', 'NEG', 'SET', 'RESET', 'P', 'N', 'M'] as const),
+          variable: pick(['X', 'Y', 'W.2']),
+          row: 0,
+          col: cols - 1,
+        });
         const vlinks: VLink[] = [];
         if (rand() < 0.6) {
           const b = 1 + Math.floor(rand() * m);
-          for (let c = 0; c < b; c++) elements.push({ id: id(), kind: 'contact', contact: pick(['NO', 'NC'] as const), variable: pick(['A', 'B', 'Y']), row: 1, col: c });
+          for (let c = 0; c < b; c++)
+            elements.push({
+              id: id(),
+              kind: 'contact',
+              contact: pick(['NO', 'NC'] as const),
+              variable: pick(['A', 'B', 'Y']),
+              row: 1,
+              col: c,
+            });
           vlinks.push({ row: 0, boundary: b });
         }
         return newNetwork({ rows: 2, cols, elements, vlinks, ...(k === 2 ? { label: 'L0' } : {}) });

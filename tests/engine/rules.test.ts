@@ -23,10 +23,18 @@ const VARS = vars(
   'C1 CTU',
 );
 
-const check = (networks: Network[], extra: Variable[] = []) => checkProject(project([...VARS, ...extra], networks));
+const check = (networks: Network[], extra: Variable[] = []) =>
+  checkProject(project([...VARS, ...extra], networks));
 const rules = (networks: Network[], extra: Variable[] = []) => check(networks, extra).map((d) => d.rule);
 const lines = (networks: Network[], extra: Variable[] = []) => check(networks, extra).map(formatDiagnostic);
-const ton = (inputs: Record<string, string>, extra: Partial<BoxSpec> = {}): BoxSpec => ({ row: 0, col: 1, type: 'TON', instance: 'T1', inputs, ...extra });
+const ton = (inputs: Record<string, string>, extra: Partial<BoxSpec> = {}): BoxSpec => ({
+  row: 0,
+  col: 1,
+  type: 'TON',
+  instance: 'T1',
+  inputs,
+  ...extra,
+});
 
 interface Case {
   readonly rule: string;
@@ -178,8 +186,14 @@ const CASES: Case[] = [
   {
     rule: 'LD-R10',
     what: 'one instance called by two boxes',
-    bad: [ladder(['[A] # #'], { boxes: [ton({ PT: 'T#1s' })] }), ladder(['[B] # #'], { boxes: [ton({ PT: 'T#2s' })] })],
-    good: [ladder(['[A] # #'], { boxes: [ton({ PT: 'T#1s' })] }), ladder(['[B] # #'], { boxes: [ton({ PT: 'T#2s' }, { instance: 'T2' })] })],
+    bad: [
+      ladder(['[A] # #'], { boxes: [ton({ PT: 'T#1s' })] }),
+      ladder(['[B] # #'], { boxes: [ton({ PT: 'T#2s' })] }),
+    ],
+    good: [
+      ladder(['[A] # #'], { boxes: [ton({ PT: 'T#1s' })] }),
+      ladder(['[B] # #'], { boxes: [ton({ PT: 'T#2s' }, { instance: 'T2' })] }),
+    ],
   },
   {
     rule: 'LD-R10',
@@ -202,14 +216,28 @@ const CASES: Case[] = [
   {
     rule: 'LD-R11',
     what: 'a DINT sum written to an INT variable (no implicit narrowing)',
-    bad: [ladder(['- # #'], { boxes: [{ row: 0, col: 1, type: 'ADD', inputs: { IN1: 'L', IN2: 'I' }, outputs: { OUT: 'I' } }] })],
-    good: [ladder(['- # #'], { boxes: [{ row: 0, col: 1, type: 'ADD', inputs: { IN1: 'S', IN2: 'I' }, outputs: { OUT: 'L' } }] })],
+    bad: [
+      ladder(['- # #'], {
+        boxes: [{ row: 0, col: 1, type: 'ADD', inputs: { IN1: 'L', IN2: 'I' }, outputs: { OUT: 'I' } }],
+      }),
+    ],
+    good: [
+      ladder(['- # #'], {
+        boxes: [{ row: 0, col: 1, type: 'ADD', inputs: { IN1: 'S', IN2: 'I' }, outputs: { OUT: 'L' } }],
+      }),
+    ],
   },
   {
     rule: 'LD-R11',
     what: 'an INT result wired to a coil',
-    bad: [ladder(['- # # .', '. # # (X)'], { boxes: [{ row: 0, col: 1, type: 'MOVE', inputs: { IN: 'I' } }] })],
-    good: [ladder(['- # # (X)'], { boxes: [{ row: 0, col: 1, type: 'MOVE', inputs: { IN: 'I' }, outputs: { OUT: 'I' } }] })],
+    bad: [
+      ladder(['- # # .', '. # # (X)'], { boxes: [{ row: 0, col: 1, type: 'MOVE', inputs: { IN: 'I' } }] }),
+    ],
+    good: [
+      ladder(['- # # (X)'], {
+        boxes: [{ row: 0, col: 1, type: 'MOVE', inputs: { IN: 'I' }, outputs: { OUT: 'I' } }],
+      }),
+    ],
   },
   {
     rule: 'LD-R12',
@@ -227,7 +255,11 @@ const CASES: Case[] = [
     rule: 'LD-E01',
     what: 'an unknown block type',
     bad: [ladder(['- # #'], { boxes: [{ row: 0, col: 1, type: 'FROB', inputs: {} }] })],
-    good: [ladder(['- # #'], { boxes: [{ row: 0, col: 1, type: 'NOT', inputs: { IN: 'W' }, outputs: { OUT: 'W' } }] })],
+    good: [
+      ladder(['- # #'], {
+        boxes: [{ row: 0, col: 1, type: 'NOT', inputs: { IN: 'W' }, outputs: { OUT: 'W' } }],
+      }),
+    ],
   },
   {
     rule: 'LD-E02',
@@ -284,7 +316,13 @@ describe('diagnostics are located and worded for a PLC programmer', () => {
   test('a diagnostic carries the element id and the network label', () => {
     const net = ladder(['[A] (Nope)'], { label: 'START' });
     const [d] = check([net]);
-    expect(d).toMatchObject({ rule: 'LD-R08', network: 0, networkLabel: 'START', cell: { row: 0, col: 1 }, elementId: net.elements[1]!.id });
+    expect(d).toMatchObject({
+      rule: 'LD-R08',
+      network: 0,
+      networkLabel: 'START',
+      cell: { row: 0, col: 1 },
+      elementId: net.elements[1]!.id,
+    });
     expect(d!.message).toMatch(/coil "Nope".*not declared/);
   });
 
@@ -292,7 +330,12 @@ describe('diagnostics are located and worded for a PLC programmer', () => {
     const odd: Network[] = [
       ladder(['+ + + +', '+ - + -', '- + - +']),
       ladder(['# # # #'], { boxes: [{ row: 0, col: 0, type: 'CTUD', inputs: {} }] }),
-      ladder(['[A] - - -'], { vlinks: [{ row: 5, boundary: 2 }, { row: 0, boundary: 40 }] }),
+      ladder(['[A] - - -'], {
+        vlinks: [
+          { row: 5, boundary: 2 },
+          { row: 0, boundary: 40 },
+        ],
+      }),
       ladder(['(X) [A] >>  <RET>']),
       ladder(['[] () [/] (S:)']),
     ];
@@ -302,7 +345,8 @@ describe('diagnostics are located and worded for a PLC programmer', () => {
 });
 
 describe('the variable table', () => {
-  const table = (...specs: Variable[]) => checkProject(project(specs, [ladder(['[A] (X)'])])).map((d) => `${d.rule} ${d.network}`);
+  const table = (...specs: Variable[]) =>
+    checkProject(project(specs, [ladder(['[A] (X)'])])).map((d) => `${d.rule} ${d.network}`);
   test.each([
     ['LD-E10', 'a duplicate name', [...vars('A BOOL', 'X BOOL', 'a BOOL')]],
     ['LD-E11', 'an invalid name', [...vars('A BOOL', 'X BOOL', 'Bad__Name INT')]],
@@ -315,6 +359,8 @@ describe('the variable table', () => {
     expect(table(...specs)).toContain(`${rule} -1`);
   });
   test('a clean table has no diagnostics', () => {
-    expect(table(...vars('A BOOL %IX0.0', 'X BOOL %QX0.0', 'N INT %MW2 := -5 RETAIN', 'D TIME := T#2s'))).toEqual([]);
+    expect(
+      table(...vars('A BOOL %IX0.0', 'X BOOL %QX0.0', 'N INT %MW2 := -5 RETAIN', 'D TIME := T#2s')),
+    ).toEqual([]);
   });
 });

@@ -20,7 +20,9 @@ describe('scan cycle', () => {
   test('an injected real clock gives timers their time', () => {
     let t = 1_000_000;
     const p = project(vars('Go BOOL := TRUE', 'T1 TON', 'Q BOOL'), [
-      ladder(['[Go] # # - (Q)', '. # # . .'], { boxes: [{ row: 0, col: 1, type: 'TON', instance: 'T1', inputs: { PT: 'T#1s' } }] }),
+      ladder(['[Go] # # - (Q)', '. # # . .'], {
+        boxes: [{ row: 0, col: 1, type: 'TON', instance: 'T1', inputs: { PT: 'T#1s' } }],
+      }),
     ]);
     const plc = createPlc(compileProgram(p).program!, { cycleMs: 10, clock: { now: () => t } });
     plc.scan();
@@ -64,7 +66,9 @@ describe('scan cycle', () => {
 
   test('runUntil stops when the condition holds', () => {
     const p = project(vars('Go BOOL := TRUE', 'T1 TON', 'Q BOOL'), [
-      ladder(['[Go] # # - (Q)', '. # # . .'], { boxes: [{ row: 0, col: 1, type: 'TON', instance: 'T1', inputs: { PT: 'T#100ms' } }] }),
+      ladder(['[Go] # # - (Q)', '. # # . .'], {
+        boxes: [{ row: 0, col: 1, type: 'TON', instance: 'T1', inputs: { PT: 'T#100ms' } }],
+      }),
     ]);
     const plc = plcOf(p, 10);
     expect(plc.runUntil((x) => x.read('Q') === true, 100)).toBe(true);
@@ -105,12 +109,27 @@ describe('reading and writing', () => {
 
 describe('restarts', () => {
   const p = () =>
-    project(vars('A BOOL', 'Plain INT := 7', 'Kept INT := 7 RETAIN', 'Latched BOOL', 'Set BOOL', 'C1 CTU RETAIN', 'C2 CTU'), [
-      ladder(['[A] (SM:Latched)']),
-      ladder(['[A] (S:Set)']),
-      ladder(['[A] # #', '. # #', '. # #'], { boxes: [{ row: 0, col: 1, type: 'CTU', instance: 'C1', inputs: { R: 'FALSE', PV: '5' } }] }),
-      ladder(['[A] # #', '. # #', '. # #'], { boxes: [{ row: 0, col: 1, type: 'CTU', instance: 'C2', inputs: { R: 'FALSE', PV: '5' } }] }),
-    ]);
+    project(
+      vars(
+        'A BOOL',
+        'Plain INT := 7',
+        'Kept INT := 7 RETAIN',
+        'Latched BOOL',
+        'Set BOOL',
+        'C1 CTU RETAIN',
+        'C2 CTU',
+      ),
+      [
+        ladder(['[A] (SM:Latched)']),
+        ladder(['[A] (S:Set)']),
+        ladder(['[A] # #', '. # #', '. # #'], {
+          boxes: [{ row: 0, col: 1, type: 'CTU', instance: 'C1', inputs: { R: 'FALSE', PV: '5' } }],
+        }),
+        ladder(['[A] # #', '. # #', '. # #'], {
+          boxes: [{ row: 0, col: 1, type: 'CTU', instance: 'C2', inputs: { R: 'FALSE', PV: '5' } }],
+        }),
+      ],
+    );
   const run = () => {
     const plc = plcOf(p());
     plc.write('Plain', 1);
@@ -191,7 +210,12 @@ describe('forcing', () => {
 });
 
 describe('watchdog', () => {
-  const loop = () => project(vars('A BOOL', 'X BOOL'), [ladder(['[A] (X)']), ladder(['[A] (X)']), ladder(['>>LOOP'], { label: 'LOOP' })]);
+  const loop = () =>
+    project(vars('A BOOL', 'X BOOL'), [
+      ladder(['[A] (X)']),
+      ladder(['[A] (X)']),
+      ladder(['>>LOOP'], { label: 'LOOP' }),
+    ]);
 
   test('a runaway backward jump faults quickly with the network named', () => {
     const plc = plcOf(loop());
@@ -224,13 +248,19 @@ describe('watchdog', () => {
   test('the evaluation budget can be set', () => {
     const { program } = compileProgram(loop());
     const plc = createPlc(program!, { cycleMs: 10, maxNetworkEvaluations: 50 });
-    expect(plc.scan().fault?.message).toBe('watchdog: scan exceeded 50 network evaluations; looping in network 3 (label LOOP)');
+    expect(plc.scan().fault?.message).toBe(
+      'watchdog: scan exceeded 50 network evaluations; looping in network 3 (label LOOP)',
+    );
   });
 });
 
 describe('stepping through jumps', () => {
   test('stepNetwork follows a jump and reports the network it lands on', () => {
-    const p = project(vars('A BOOL := TRUE', 'X BOOL', 'Y BOOL'), [ladder(['[A] >>END']), ladder(['[A] (X)']), ladder(['[A] (Y)'], { label: 'END' })]);
+    const p = project(vars('A BOOL := TRUE', 'X BOOL', 'Y BOOL'), [
+      ladder(['[A] >>END']),
+      ladder(['[A] (X)']),
+      ladder(['[A] (Y)'], { label: 'END' }),
+    ]);
     const plc = plcOf(p);
     expect(plc.stepNetwork()).toEqual({ executed: 0, next: 2, scanDone: false });
     expect(plc.nextNetwork).toBe(2);

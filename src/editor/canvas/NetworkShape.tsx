@@ -42,8 +42,9 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
       ...(drag ? { drag } : {}),
       ...(overlay.power ? { power: overlay.power } : {}),
       ...(overlay.liveValues ? { liveValues: overlay.liveValues } : {}),
+      ...(overlay.forced ? { forced: overlay.forced } : {}),
     }),
-    [selected, cursor, hover, markers, drag, overlay.power, overlay.liveValues],
+    [selected, cursor, hover, markers, drag, overlay.power, overlay.liveValues, overlay.forced],
   );
   const width = networkWidth(network);
   const height = network.rows * CELL_H + GRID_PAD_BOTTOM;

@@ -3,6 +3,7 @@
 import type { NetworkPower } from '../../engine/api';
 import { elementSize } from '../../model/factory';
 import type { Cell } from '../../model/grid';
+import type { LdElement } from '../../model/elements';
 import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
 import type { CanvasTheme } from '../theme/canvasTheme';
@@ -24,6 +25,8 @@ export interface NetworkPaint {
   /** Simulation power flow, aligned with network.elements / network.vlinks. */
   readonly power?: NetworkPower;
   readonly liveValues?: ReadonlyMap<ElementId, string>;
+  /** Elements with a forced variable (simulation). */
+  readonly forced?: ReadonlySet<ElementId>;
   /** Elements being dragged and the offset in cells. */
   readonly drag?: {
     readonly ids: ReadonlySet<ElementId>;
@@ -34,6 +37,24 @@ export interface NetworkPaint {
 }
 
 type Ctx = CanvasRenderingContext2D;
+
+/** A forced element: an outline and an "F" tag at its top-left corner, in the theme's forced colour. */
+function drawForcedMark(ctx: Ctx, t: CanvasTheme, el: LdElement) {
+  const s = elementSize(el);
+  const x = el.col * CELL_W;
+  const y = el.row * CELL_H;
+  ctx.strokeStyle = t.forced;
+  ctx.fillStyle = t.forced;
+  ctx.lineWidth = 2;
+  ctx.strokeRect(x + 2, y + 2, s.cols * CELL_W - 4, s.rows * CELL_H - 4);
+  ctx.fillRect(x + 2, y + 2, 14, 14);
+  ctx.fillStyle = t.networkBg;
+  ctx.font = 'bold 11px system-ui, sans-serif';
+  ctx.textAlign = 'center';
+  ctx.textBaseline = 'middle';
+  ctx.fillText('F', x + 9, y + 9.5);
+  ctx.textBaseline = 'alphabetic';
+}
 
 export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: NetworkPaint) {
   const w = n.cols * CELL_W;
@@ -85,6 +106,7 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     });
     ctx.restore();
   });
+  if (paint.forced) for (const el of n.elements) if (paint.forced.has(el.id)) drawForcedMark(ctx, t, el);
   for (const el of n.elements) {
     if (!paint.selected.has(el.id)) continue;
     const s = elementSize(el);

@@ -12,6 +12,8 @@ export interface NetworkOverlay {
   readonly power?: NetworkPower;
   /** Text shown under an element, e.g. a timer's ET. */
   readonly liveValues?: ReadonlyMap<ElementId, string>;
+  /** Elements whose variable (or an output) is forced: drawn marked in the theme's forced colour. */
+  readonly forced?: ReadonlySet<ElementId>;
 }
 
 export type NetworkOverlayHook = (network: Network, index: number) => NetworkOverlay;

@@ -1,6 +1,6 @@
 // Mount once inside the DocumentStoreProvider: autosave + recovery, the hidden file picker used by
 // File > Open, the "discard unsaved changes?" dialog, open errors and short notices.
-import { useCallback, useEffect, useRef, useState } from 'react';
+import { useCallback, useEffect, useRef, useState, type KeyboardEvent } from 'react';
 import { useStore } from 'zustand';
 import { useDocumentStore } from '../../store/documentStore';
 import { openChosenFile } from './fileActions';
@@ -64,6 +64,12 @@ function useFileDrop(open: (file: File) => void) {
   }, [open]);
 }
 
+/** Keys in a dialog stay in it (no editor shortcut acts behind it); Escape closes it. */
+function modalKey(e: KeyboardEvent, close: () => void) {
+  e.stopPropagation();
+  if (e.key === 'Escape') close();
+}
+
 function Notice() {
   const notice = useStore(filesUi, (s) => s.notice);
   useEffect(() => {
@@ -92,7 +98,7 @@ function ConfirmDialog() {
   if (!c) return null;
   const close = () => filesUi.getState().closeConfirmation();
   return (
-    <div className="rs-modal-backdrop" onKeyDown={(e) => e.key === 'Escape' && close()}>
+    <div className="rs-modal-backdrop" onKeyDown={(e) => modalKey(e, close)}>
       <div
         className="rs-modal"
         role="alertdialog"
@@ -127,7 +133,7 @@ function OpenFailureDialog() {
   if (!failure) return null;
   const close = () => filesUi.getState().showOpenFailure(undefined);
   return (
-    <div className="rs-modal-backdrop" onKeyDown={(e) => e.key === 'Escape' && close()}>
+    <div className="rs-modal-backdrop" onKeyDown={(e) => modalKey(e, close)}>
       <div
         className="rs-modal"
         role="alertdialog"

@@ -1,11 +1,14 @@
 // Mounted once: while the simulation runs and this page is the gateway's controller, each scan's
 // inputs come from the gateway and its outputs go there; pause, stop or a fault sends `stop`.
+// Confirmed stepping on hardware (useHardwareStepping.ts) keeps the lease itself; a fault ends it.
 import { useEffect, useRef } from 'react';
 import { gatewayLink } from '../../bridge/gatewayLink';
 import { checkBindings } from '../../bridge/mapping';
 import type { SimState } from '../../store/simStore';
 import { selectProject, useDocument } from '../../store/documentStore';
 import { useSim, useSimStore } from '../sim/simContext';
+import { SteppingConfirmDialog } from './HardwareStepping';
+import { hardwareStepping, useSteppingView } from './useHardwareStepping';
 import { useGateway } from './useGateway';
 
 const selectMode = (s: SimState) => s.mode;
@@ -15,9 +18,15 @@ export function HardwareSimLink() {
   const sim = useSimStore();
   const project = useDocument(selectProject);
   const { link, role, points } = useGateway();
+  const stepping = useSteppingView().phase === 'stepping';
   const wasRunning = useRef(false);
 
   useEffect(() => {
+    if (stepping) {
+      // Step N shows 'running' while its scans execute: the stepping lease drives the I/O then.
+      if (mode === 'faulted') hardwareStepping.end('stop');
+      return undefined;
+    }
     const bridge = gatewayLink.bridge;
     const controller = link === 'open' && role === 'controller' && bridge !== undefined;
     if (mode === 'running' && controller) {
@@ -31,7 +40,7 @@ export function HardwareSimLink() {
       bridge?.stop(); // paused, stopped or faulted: safe state first
     }
     return undefined;
-  }, [mode, link, role, points, project, sim]);
+  }, [mode, link, role, points, project, sim, stepping]);
 
-  return null;
+  return <SteppingConfirmDialog />;
 }

@@ -1,7 +1,9 @@
 // Run/Pause/Step/Reset controls and the status line (mode, scan, PLC time, execution time).
 import { useEffect, useState } from 'react';
-import { useDocument, useDocumentStore, type DocumentState } from '../../store/documentStore';
+import { useDocument, type DocumentState } from '../../store/documentStore';
 import type { SimState } from '../../store/simStore';
+import { SteppingBadge } from '../hardware/HardwareStepping';
+import { useSimCommands } from '../hardware/useHardwareStepping';
 import { SimNotices } from './SimNotices';
 import { useSim, useSimStore } from './simContext';
 import './sim.css';
@@ -29,7 +31,8 @@ export const formatPlcTime = (ms: number): string => (ms < 10_000 ? `${ms} ms` :
 
 export function SimToolbar() {
   const sim = useSimStore();
-  const documents = useDocumentStore();
+  // Run/Step/Reset go through the hardware stepping lease: stepping with the gateway attached asks first.
+  const commands = useSimCommands();
   const mode = useSim(selectMode);
   const taskCycle = useDocument(selectTaskCycle);
   const [stepCount, setStepCount] = useState('10');
@@ -43,7 +46,6 @@ export function SimToolbar() {
     if (w.rungsmith?.simStore !== sim) w.rungsmith = { ...(w.rungsmith ?? {}), simStore: sim };
   }, [sim]);
 
-  const project = () => documents.getState().project;
   const running = mode === 'running';
   const faulted = mode === 'faulted';
   const n = Number.parseInt(stepCount, 10);
@@ -52,7 +54,7 @@ export function SimToolbar() {
   return (
     <div className="rs-sim-toolbar" role="toolbar" aria-label="Simulation" data-testid="sim-toolbar">
       <button type="button" className="rs-sim-btn rs-sim-run" title="Run: compile the document and scan in real time"
-        disabled={running || faulted} onClick={() => sim.getState().run(project())} data-testid="sim-run">
+        disabled={running || faulted} onClick={commands.run} data-testid="sim-run">
         ▶ Run
       </button>
       <button type="button" className="rs-sim-btn" title="Pause after the current scan" disabled={!running}
@@ -60,12 +62,12 @@ export function SimToolbar() {
         ❚❚ Pause
       </button>
       <button type="button" className="rs-sim-btn" title="Step one scan (virtual clock: PLC time advances by one cycle)"
-        disabled={running || faulted} onClick={() => sim.getState().step(project(), 1)} data-testid="sim-step-scan">
+        disabled={running || faulted} onClick={() => commands.step({ kind: 'scans', scans: 1 })} data-testid="sim-step-scan">
         Step scan
       </button>
       <span className="rs-sim-group">
         <button type="button" className="rs-sim-btn" title="Step N scans" disabled={running || faulted || stepN === undefined}
-          onClick={() => stepN && sim.getState().step(project(), stepN)} data-testid="sim-step-n">
+          onClick={() => stepN && commands.step({ kind: 'scans', scans: stepN })} data-testid="sim-step-n">
           Step
         </button>
         <input className="rs-sim-number" aria-label="Scans to step" value={stepCount} inputMode="numeric"
@@ -73,19 +75,20 @@ export function SimToolbar() {
         <span className="rs-sim-unit">scans</span>
       </span>
       <button type="button" className="rs-sim-btn" title="Step one network (the next network is highlighted)"
-        disabled={running || faulted} onClick={() => sim.getState().stepNetwork(project())} data-testid="sim-step-network">
+        disabled={running || faulted} onClick={() => commands.step({ kind: 'network' })} data-testid="sim-step-network">
         Step network
       </button>
       <button type="button" className="rs-sim-btn" title="Reset (cold restart): every variable to its initial value"
-        onClick={() => sim.getState().reset()} data-testid="sim-reset">
+        onClick={commands.reset} data-testid="sim-reset">
         ■ Reset
       </button>
       <button type="button" className="rs-sim-btn" title="Warm restart: RETAIN and M/SM/RM variables keep their values, the others restart"
-        onClick={() => sim.getState().warmRestart()} data-testid="sim-warm">
+        onClick={commands.warmRestart} data-testid="sim-warm">
         Warm restart
       </button>
       <CycleInput />
       <SimStatus />
+      <SteppingBadge />
       <div className="rs-sim-notices">
         <SimNotices />
       </div>

@@ -86,6 +86,41 @@ function liveKey(s: SimState, network: Network): string {
   return entries.length > 0 ? JSON.stringify(entries) : '';
 }
 
+/** True when the element's variable, or one of the outputs it shows, is forced. */
+export function elementForced(s: SimState, el: LdElement): boolean {
+  switch (el.kind) {
+    case 'contact':
+    case 'coil':
+      return el.variable !== '' && isForced(s, el.variable);
+    case 'box': {
+      const signature = blockSignature(el.blockType);
+      if (signature?.kind === 'fb' && el.instance) {
+        const instance = el.instance;
+        return signature.outputs.some((pin) => isForced(s, `${instance}.${pin.name}`));
+      }
+      return Object.values(el.outputs).some((target) => Boolean(target) && isForced(s, target));
+    }
+    case 'link':
+    case 'jump':
+    case 'return':
+      return false;
+  }
+}
+
+function forcedKey(s: SimState, network: Network): string {
+  if (s.forced.size === 0) return '';
+  return network.elements
+    .filter((el) => elementForced(s, el))
+    .map((el) => el.id)
+    .join('\n');
+}
+
+/** Ids of the network's elements with a forced variable, or undefined when none is forced. */
+export function useNetworkForced(network: Network): ReadonlySet<ElementId> | undefined {
+  const key = useSim((s) => forcedKey(s, network));
+  return useMemo(() => (key ? new Set(key.split('\n') as ElementId[]) : undefined), [key]);
+}
+
 /** Live value text by element id, or undefined when not simulating. */
 export function useNetworkLiveValues(network: Network): ReadonlyMap<ElementId, string> | undefined {
   const key = useSim((s) => liveKey(s, network));

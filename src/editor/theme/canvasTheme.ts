@@ -17,6 +17,8 @@ export interface CanvasTheme {
   readonly energised: string;
   readonly boxFill: string;
   readonly networkBg: string;
+  /** Forced variables (simulation). */
+  readonly forced: string;
 }
 
 const KEYS: Record<keyof CanvasTheme, string> = {
@@ -37,6 +39,7 @@ const KEYS: Record<keyof CanvasTheme, string> = {
   energised: '--canvas-energised',
   boxFill: '--canvas-box-fill',
   networkBg: '--canvas-network-bg',
+  forced: '--forced',
 };
 
 /** Reads the canvas colours from the element's computed style (call after the theme attribute changed). */

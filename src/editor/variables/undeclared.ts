@@ -40,11 +40,11 @@ function* namedOperands(pou: Pou): Generator<{ name: string; role: BindingRole }
 /** Undeclared plain names used in the POU, in order of first use; the first use decides the type. */
 export function undeclaredVariables(project: Project, pou: Pou): Variable[] {
   const out = new Map<string, Variable>();
+  const declared = new Set([...pou.variables, ...project.globals].map((v) => v.name.toUpperCase()));
   for (const { name, role } of namedOperands(pou)) {
     const trimmed = name.trim();
     const key = trimmed.toUpperCase();
-    if (trimmed === '' || out.has(key) || identifierProblem(trimmed) || findVariable(project, pou, trimmed))
-      continue;
+    if (trimmed === '' || declared.has(key) || out.has(key) || identifierProblem(trimmed)) continue;
     out.set(key, variable(trimmed, suggestedType(role)));
   }
   return [...out.values()];

@@ -1,6 +1,11 @@
 // Function and function block boxes: instance (LD-R10), pin wiring and operands (LD-R10), types
 // (LD-R11, with the implicit widenings of values/types.canWiden), and the operation to generate.
-import { GENERIC_MEMBERS, isElementaryType, type ElementaryType, type GenericType } from '../../model/iecTypes';
+import {
+  GENERIC_MEMBERS,
+  isElementaryType,
+  type ElementaryType,
+  type GenericType,
+} from '../../model/iecTypes';
 import type { BoxElement } from '../../model/elements';
 import { resolveFunction } from '../library/functions';
 import { parseLiteral } from '../values/literals';
@@ -26,12 +31,22 @@ interface InputInfo {
   literal?: string;
 }
 
-export function lowerBox(ctx: PouContext, node: GraphNode, nets: NetMap, network: number, r: Reporter): Op | undefined {
+export function lowerBox(
+  ctx: PouContext,
+  node: GraphNode,
+  nets: NetMap,
+  network: number,
+  r: Reporter,
+): Op | undefined {
   const el = node.el as BoxElement;
   const layout = node.layout;
   const name = describeElement(el);
   if (!layout) {
-    r.error('LD-E01', `${name} uses "${el.blockType}", which is not a standard function or function block`, el);
+    r.error(
+      'LD-E01',
+      `${name} uses "${el.blockType}", which is not a standard function or function block`,
+      el,
+    );
     return undefined;
   }
   const sig = layout.signature;
@@ -39,11 +54,19 @@ export function lowerBox(ctx: PouContext, node: GraphNode, nets: NetMap, network
   const before = r.errors;
   for (const key of Object.keys(el.inputs)) {
     if (!layout.inputs.some((p) => p.name === key.toUpperCase()))
-      r.error('LD-E04', `${name} has no input "${key}" (inputs: ${layout.inputs.map((p) => p.name).join(', ')})`, el);
+      r.error(
+        'LD-E04',
+        `${name} has no input "${key}" (inputs: ${layout.inputs.map((p) => p.name).join(', ')})`,
+        el,
+      );
   }
   for (const key of Object.keys(el.outputs)) {
     if (!layout.outputs.some((p) => p.name === key.toUpperCase()))
-      r.error('LD-E04', `${name} has no output "${key}" (outputs: ${layout.outputs.map((p) => p.name).join(', ')})`, el);
+      r.error(
+        'LD-E04',
+        `${name} has no output "${key}" (outputs: ${layout.outputs.map((p) => p.name).join(', ')})`,
+        el,
+      );
   }
   const operandOf = (rec: Readonly<Record<string, string>>, pin: string): string => {
     const key = Object.keys(rec).find((k) => k.toUpperCase() === pin);
@@ -55,14 +78,32 @@ export function lowerBox(ctx: PouContext, node: GraphNode, nets: NetMap, network
   if (isFb) {
     const inst = (el.instance ?? '').trim();
     const sym = inst ? ctx.symbols.lookup(inst) : undefined;
-    if (!inst) r.error('LD-R10', `${name} has no instance name; declare a ${sig.name} variable and name it on the block`, el);
-    else if (!sym) r.error('LD-R10', `${name}: the instance "${inst}" is not declared; add a variable "${inst}" of type ${sig.name}`, el);
+    if (!inst)
+      r.error(
+        'LD-R10',
+        `${name} has no instance name; declare a ${sig.name} variable and name it on the block`,
+        el,
+      );
+    else if (!sym)
+      r.error(
+        'LD-R10',
+        `${name}: the instance "${inst}" is not declared; add a variable "${inst}" of type ${sig.name}`,
+        el,
+      );
     else if (sym.kind !== 'fb' || sym.type !== sig.name)
-      r.error('LD-R10', `${name}: "${inst}" is declared as ${sym.kind === 'fb' ? sym.type : sym.type}, not ${sig.name}`, el);
+      r.error(
+        'LD-R10',
+        `${name}: "${inst}" is declared as ${sym.kind === 'fb' ? sym.type : sym.type}, not ${sig.name}`,
+        el,
+      );
     else {
       const first = ctx.fbCalls.get(sym);
       if (first)
-        r.error('LD-R10', `${name} calls the instance "${inst}" a second time (first at network ${first.network + 1}); each box needs its own instance`, el);
+        r.error(
+          'LD-R10',
+          `${name} calls the instance "${inst}" a second time (first at network ${first.network + 1}); each box needs its own instance`,
+          el,
+        );
       else ctx.fbCalls.set(sym, { network, row: el.row, col: el.col });
       fbIndex = sym.index;
     }
@@ -92,19 +133,28 @@ export function lowerBox(ctx: PouContext, node: GraphNode, nets: NetMap, network
         info.type = 'BOOL';
       }
       if (!admitsType(pin.type, info.type)) {
-        r.error('LD-R11', `input ${pin.name} of ${name} needs ${pin.type} but its line carries ${info.type}`, el);
+        r.error(
+          'LD-R11',
+          `input ${pin.name} of ${name} needs ${pin.type} but its line carries ${info.type}`,
+          el,
+        );
       }
       continue;
     }
     if (operand) {
       const expected = isElementaryType(pin.type) ? pin.type : undefined;
-      const res = ctx.symbols.resolve(operand, { ...(expected ? { expected } : {}), literals: true, implicitLocations: true });
+      const res = ctx.symbols.resolve(operand, {
+        ...(expected ? { expected } : {}),
+        literals: true,
+        implicitLocations: true,
+      });
       if (!res.ok) {
         r.error(res.unknown ? 'LD-E02' : 'LD-E03', `input ${pin.name} of ${name}: ${res.message}`, el);
         continue;
       }
       info.src = { from: 'access', access: res.access };
-      if (res.access.kind === 'const' && !/#/.test(operand) && !isElementaryType(pin.type)) info.literal = operand;
+      if (res.access.kind === 'const' && !/#/.test(operand) && !isElementaryType(pin.type))
+        info.literal = operand;
       else info.type = res.access.type;
       if (res.access.kind === 'const' && isElementaryType(pin.type)) info.type = pin.type;
       continue;
@@ -131,14 +181,29 @@ export function lowerBox(ctx: PouContext, node: GraphNode, nets: NetMap, network
       const pinType = info.pin.type as ElementaryType;
       if (!info.src) continue;
       if (info.type && !canWiden(info.type, pinType) && info.src.from !== 'power') {
-        r.error('LD-R11', `input ${info.pin.name} of ${name} needs ${pinType}; ${describeSource(info.src)} is ${info.type}`, el);
+        r.error(
+          'LD-R11',
+          `input ${info.pin.name} of ${name} needs ${pinType}; ${describeSource(info.src)} is ${info.type}`,
+          el,
+        );
       }
       args.push({ pin: info.pin.name, type: pinType, src: info.src });
     }
     const outs: OutIR[] = [];
     for (const o of outputs) {
       const type = o.pin.type as ElementaryType;
-      const out = lowerOutput(ctx, nets, el, name, o, type, fbIndex >= 0 ? { kind: 'pin', fb: ctx.symbols.fbs[fbIndex]!, pin: o.pin.name, type, dir: 'out' } : undefined, r);
+      const out = lowerOutput(
+        ctx,
+        nets,
+        el,
+        name,
+        o,
+        type,
+        fbIndex >= 0
+          ? { kind: 'pin', fb: ctx.symbols.fbs[fbIndex]!, pin: o.pin.name, type, dir: 'out' }
+          : undefined,
+        r,
+      );
       if (out) outs.push(out);
     }
     if (r.errors > before || fbIndex < 0) return undefined;
@@ -154,7 +219,12 @@ export function lowerBox(ctx: PouContext, node: GraphNode, nets: NetMap, network
     if (res.ok) hint = res.access.type;
   }
   if (r.errors > before) return undefined;
-  const resolved = resolveFunction(sig.name, argInfos.map((i) => i.type), ctx.profile, hint);
+  const resolved = resolveFunction(
+    sig.name,
+    argInfos.map((i) => i.type),
+    ctx.profile,
+    hint,
+  );
   if (!resolved.ok) {
     r.error('LD-R11', `${name}: ${resolved.message}`, el);
     return undefined;
@@ -169,7 +239,11 @@ export function lowerBox(ctx: PouContext, node: GraphNode, nets: NetMap, network
       if (!lit.ok) return void r.error('LD-E03', `input ${info.pin.name} of ${name}: ${lit.message}`, el);
       src = { from: 'access', access: { kind: 'const', type, value: lit.value, text: info.literal } };
     } else if (info.type && !canWiden(info.type, type)) {
-      return void r.error('LD-R11', `input ${info.pin.name} of ${name} needs ${type}; ${describeSource(src)} is ${info.type}`, el);
+      return void r.error(
+        'LD-R11',
+        `input ${info.pin.name} of ${name} needs ${type}; ${describeSource(src)} is ${info.type}`,
+        el,
+      );
     }
     args.push({ pin: info.pin.name, type, src });
   });
@@ -181,7 +255,16 @@ export function lowerBox(ctx: PouContext, node: GraphNode, nets: NetMap, network
   if (r.errors > before || !out || !eno) return undefined;
   const fnIndex = ctx.functions.length;
   ctx.functions.push(fn);
-  return { op: 'function', node: node.index, name: fn.name, fn: fnIndex, ...(enInfo?.src ? { en: enInfo.src } : {}), args, out, eno };
+  return {
+    op: 'function',
+    node: node.index,
+    name: fn.name,
+    fn: fnIndex,
+    ...(enInfo?.src ? { en: enInfo.src } : {}),
+    args,
+    out,
+    eno,
+  };
 }
 
 function lowerOutput(
@@ -202,9 +285,24 @@ function lowerOutput(
       return undefined;
     }
     const a = res.access;
-    if (a.kind === 'pin' && a.dir === 'out') return void r.error('LD-R11', `output ${o.pin.name} of ${name} cannot write ${accessWords(a)}, an output of another block`, el);
-    if ((a.kind === 'var' || a.kind === 'bit') && a.v.constant) return void r.error('LD-R11', `output ${o.pin.name} of ${name} cannot write "${a.v.name}", which is CONSTANT`, el);
-    if (!canWiden(type, a.type)) return void r.error('LD-R11', `output ${o.pin.name} of ${name} gives ${type} but ${accessWords(a)} is ${a.type}`, el);
+    if (a.kind === 'pin' && a.dir === 'out')
+      return void r.error(
+        'LD-R11',
+        `output ${o.pin.name} of ${name} cannot write ${accessWords(a)}, an output of another block`,
+        el,
+      );
+    if ((a.kind === 'var' || a.kind === 'bit') && a.v.constant)
+      return void r.error(
+        'LD-R11',
+        `output ${o.pin.name} of ${name} cannot write "${a.v.name}", which is CONSTANT`,
+        el,
+      );
+    if (!canWiden(type, a.type))
+      return void r.error(
+        'LD-R11',
+        `output ${o.pin.name} of ${name} gives ${type} but ${accessWords(a)} is ${a.type}`,
+        el,
+      );
     dst = a;
   }
   const g = nets.g.nets[o.net]!;
@@ -215,14 +313,28 @@ function lowerOutput(
   if (!o.wired) return { pin: o.pin.name, type, ...(dst ? { dst } : {}) };
   // A data line: one source, read only by block inputs.
   if (g.sources.length > 1 || g.leftRail) {
-    r.error('LD-R11', `output ${o.pin.name} of ${name} carries ${type}; its line is joined to other outputs or to the rail`, el);
+    r.error(
+      'LD-R11',
+      `output ${o.pin.name} of ${name} carries ${type}; its line is joined to other outputs or to the rail`,
+      el,
+    );
     return undefined;
   }
   for (const s of g.sinks) {
     const sinkEl = nets.g.nodes[s.node]!.el;
-    if (sinkEl.kind !== 'box') r.error('LD-R11', `${describeElement(sinkEl)} is on the ${type} line from output ${o.pin.name} of ${name}; contacts and coils need BOOL power flow`, sinkEl);
+    if (sinkEl.kind !== 'box')
+      r.error(
+        'LD-R11',
+        `${describeElement(sinkEl)} is on the ${type} line from output ${o.pin.name} of ${name}; contacts and coils need BOOL power flow`,
+        sinkEl,
+      );
   }
-  if (g.rightRail) r.error('LD-R11', `output ${o.pin.name} of ${name} carries ${type} to the right rail; only power flow may reach the rail`, el);
+  if (g.rightRail)
+    r.error(
+      'LD-R11',
+      `output ${o.pin.name} of ${name} carries ${type} to the right rail; only power flow may reach the rail`,
+      el,
+    );
   let data: { store: ReturnType<typeof storeOf>; slot: number } | undefined;
   let source: Source;
   if (fbPin) source = { from: 'access', access: fbPin };

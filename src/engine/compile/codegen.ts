@@ -85,7 +85,9 @@ class Emitter {
       case 'var':
         return `b[${a.v.slot}]`;
       case 'bit':
-        return a.v.store === 'g' ? `Number((g[${a.v.slot}] >> ${a.bit}n) & 1n)` : `((n[${a.v.slot}] >>> ${a.bit}) & 1)`;
+        return a.v.store === 'g'
+          ? `Number((g[${a.v.slot}] >> ${a.bit}n) & 1n)`
+          : `((n[${a.v.slot}] >>> ${a.bit}) & 1)`;
       case 'pin':
         return `(${this.fbRef(a.fb.index)}.${a.pin} ? 1 : 0)`;
       case 'const':
@@ -187,7 +189,9 @@ export function generateSegment(
     if (controls) L.push(`let go = 0; next = ${ir.index + 1};`);
     for (const op of ir.ops) emitOp(em, op);
     for (let w = 0; w * NETS_PER_WORD < ir.netCount; w++) {
-      const bits = live.filter((i) => Math.floor(i / NETS_PER_WORD) === w).map((i) => (i % NETS_PER_WORD ? `(n${i} << ${i % NETS_PER_WORD})` : `n${i}`));
+      const bits = live
+        .filter((i) => Math.floor(i / NETS_PER_WORD) === w)
+        .map((i) => (i % NETS_PER_WORD ? `(n${i} << ${i % NETS_PER_WORD})` : `n${i}`));
       L.push(`W[${words[ir.index]! + w}] = ${bits.length ? bits.join(' | ') : '0'};`);
     }
     if (controls) L.push(`if (next !== ${ir.index + 1}) { C[${first}] = ${k + 1}; return next; }`);
@@ -244,9 +248,19 @@ function emitOp(em: Emitter, op: Op): void {
         case 'NOT':
           return void L.push(em.setNet(o, `${i} ^ 1`), tail);
         case 'P':
-          return void L.push(`t = ${v};`, em.setNet(o, and(i, `t & (e[${op.edge}] ^ 1)`)), `e[${op.edge}] = t;`, tail);
+          return void L.push(
+            `t = ${v};`,
+            em.setNet(o, and(i, `t & (e[${op.edge}] ^ 1)`)),
+            `e[${op.edge}] = t;`,
+            tail,
+          );
         case 'N':
-          return void L.push(`t = ${v} ^ 1;`, em.setNet(o, and(i, `t & (e[${op.edge}] ^ 1)`)), `e[${op.edge}] = t;`, tail);
+          return void L.push(
+            `t = ${v} ^ 1;`,
+            em.setNet(o, and(i, `t & (e[${op.edge}] ^ 1)`)),
+            `e[${op.edge}] = t;`,
+            tail,
+          );
       }
       return;
     }

@@ -26,7 +26,12 @@ export interface PouContext {
   readonly dataSlots: { store: Store; slot: number; type: ElementaryType }[];
 }
 
-export function newPouContext(pouName: string, profile: Profile, symbols: SymbolTable, labels: ReadonlyMap<string, number>): PouContext {
+export function newPouContext(
+  pouName: string,
+  profile: Profile,
+  symbols: SymbolTable,
+  labels: ReadonlyMap<string, number>,
+): PouContext {
   return {
     pouName,
     profile,

@@ -106,13 +106,17 @@ export function buildGraph(network: Network): NetworkGraph {
       for (let c = 0; c < w; c++) {
         const other = occupied.get((el.row + r) * cols + el.col + c);
         if (other !== undefined) {
-          misplaced.push({ index, reason: `overlaps another element at R${el.row + r + 1}C${el.col + c + 1}` });
+          misplaced.push({
+            index,
+            reason: `overlaps another element at R${el.row + r + 1}C${el.col + c + 1}`,
+          });
           placed.push(false);
           return;
         }
       }
     }
-    for (let r = 0; r < h; r++) for (let c = 0; c < w; c++) occupied.set((el.row + r) * cols + el.col + c, index);
+    for (let r = 0; r < h; r++)
+      for (let c = 0; c < w; c++) occupied.set((el.row + r) * cols + el.col + c, index);
     placed.push(true);
     if (el.kind === 'link') uf.union(point(el.row, el.col), point(el.row, el.col + 1));
   });
@@ -133,7 +137,16 @@ export function buildGraph(network: Network): NetworkGraph {
     if (id === undefined) {
       id = nets.length;
       rootToNet.set(root, id);
-      nets.push({ id, points: [], leftRail: false, rightRail: false, sources: [], sinks: [], links: [], vlinks: [] });
+      nets.push({
+        id,
+        points: [],
+        leftRail: false,
+        rightRail: false,
+        sources: [],
+        sinks: [],
+        links: [],
+        vlinks: [],
+      });
     }
     netOfPoint[p] = id;
     const net = nets[id]!;

@@ -39,7 +39,15 @@ export type Op =
       readonly ownNet?: number;
       readonly edge?: number;
     }
-  | { readonly op: 'coil'; readonly node: number; readonly coil: CoilType; readonly dst: Access; readonly inNet: number; readonly outNet: number; readonly edge?: number }
+  | {
+      readonly op: 'coil';
+      readonly node: number;
+      readonly coil: CoilType;
+      readonly dst: Access;
+      readonly inNet: number;
+      readonly outNet: number;
+      readonly edge?: number;
+    }
   | { readonly op: 'jump'; readonly node: number; readonly inNet: number; readonly target: number }
   | { readonly op: 'return'; readonly node: number; readonly inNet: number }
   | {

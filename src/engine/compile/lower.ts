@@ -22,7 +22,8 @@ export class NetMap {
   constructor(readonly g: NetworkGraph) {
     for (const node of g.nodes) {
       if (node.el.kind !== 'box') continue;
-      for (const t of node.outputs) if (node.layout?.outputs.find((p) => p.name === t.pin)?.type !== 'BOOL') this.dataPending.add(t.net);
+      for (const t of node.outputs)
+        if (node.layout?.outputs.find((p) => p.name === t.pin)?.type !== 'BOOL') this.dataPending.add(t.net);
     }
   }
 
@@ -46,7 +47,11 @@ export class NetMap {
     return this.count;
   }
   railNets(): number[] {
-    return [...new Set([...this.power].filter(([net]) => net >= 0 && this.g.nets[net]!.leftRail).map(([, id]) => id))];
+    return [
+      ...new Set(
+        [...this.power].filter(([net]) => net >= 0 && this.g.nets[net]!.leftRail).map(([, id]) => id),
+      ),
+    ];
   }
   /** True when something besides the terminal itself is attached to the net (a wire or another element). */
   isWired(net: number): boolean {
@@ -67,13 +72,24 @@ const FAMILY: Record<CoilElement['coil'], CoilFamily> = {
   RM: 'latch',
 };
 
-export function lowerNetwork(ctx: PouContext, network: Network, index: number, r: Reporter): NetworkIR | undefined {
+export function lowerNetwork(
+  ctx: PouContext,
+  network: Network,
+  index: number,
+  r: Reporter,
+): NetworkIR | undefined {
   const g = buildGraph(network);
   const structureOk = checkStructure(network, g, r);
   let order = structureOk ? evaluationOrder(g) : undefined;
-  if (structureOk && !order) r.error('LD-R01', 'an element feeds its own input through a wire going back to the left; power must flow left to right');
+  if (structureOk && !order)
+    r.error(
+      'LD-R01',
+      'an element feeds its own input through a wire going back to the left; power must flow left to right',
+    );
   if (!order) {
-    order = g.nodes.map((_, i) => i).sort((a, b) => g.nodes[a]!.el.row - g.nodes[b]!.el.row || g.nodes[a]!.el.col - g.nodes[b]!.el.col);
+    order = g.nodes
+      .map((_, i) => i)
+      .sort((a, b) => g.nodes[a]!.el.row - g.nodes[b]!.el.row || g.nodes[a]!.el.col - g.nodes[b]!.el.col);
   }
   const nets = new NetMap(g);
   const ops: Op[] = [];
@@ -110,14 +126,32 @@ export function lowerNetwork(ctx: PouContext, network: Network, index: number, r
         const outGraph = g.nets[node.outputs[0]!.net]!;
         if (outGraph.sources.length === 1 && !outGraph.leftRail && inNet >= 0) nets.alias(outGraph.id, inNet);
         const outNet = nets.powerNet(outGraph.id);
-        if (dst) ops.push({ op: 'coil', node: node.index, coil: el.coil, dst, inNet, outNet, ...(edge !== undefined ? { edge } : {}) });
+        if (dst)
+          ops.push({
+            op: 'coil',
+            node: node.index,
+            coil: el.coil,
+            dst,
+            inNet,
+            outNet,
+            ...(edge !== undefined ? { edge } : {}),
+          });
         break;
       }
       case 'jump': {
         const target = ctx.labels.get(el.target.trim().toUpperCase());
-        if (el.target.trim() === '') r.error('LD-R07', `${describeElement(el)} names no label; write the label of the network to continue at`, el);
+        if (el.target.trim() === '')
+          r.error(
+            'LD-R07',
+            `${describeElement(el)} names no label; write the label of the network to continue at`,
+            el,
+          );
         else if (target === undefined)
-          r.error('LD-R07', `${describeElement(el)} has no target: no network of ${ctx.pouName} is labelled "${el.target}"`, el);
+          r.error(
+            'LD-R07',
+            `${describeElement(el)} has no target: no network of ${ctx.pouName} is labelled "${el.target}"`,
+            el,
+          );
         else ops.push({ op: 'jump', node: node.index, inNet, target });
         break;
       }
@@ -146,7 +180,10 @@ export function lowerNetwork(ctx: PouContext, network: Network, index: number, r
     };
     if (el.kind === 'contact') {
       const ni = g.nodes.indexOf(node);
-      return [pin(node.inputs, undefined), nets.hasPower(-1 - ni) ? nets.powerNet(-1 - ni) : pin(node.outputs, undefined)];
+      return [
+        pin(node.inputs, undefined),
+        nets.hasPower(-1 - ni) ? nets.powerNet(-1 - ni) : pin(node.outputs, undefined),
+      ];
     }
     if (el.kind === 'coil') return [pin(node.inputs, undefined), pin(node.inputs, undefined)]; // a coil passes its left link on
     if (el.kind !== 'box') return [pin(node.inputs, undefined), pin(node.outputs, undefined)];
@@ -176,14 +213,28 @@ function contactOperand(ctx: PouContext, el: ContactElement, r: Reporter): Acces
     r.error('LD-R08', `${describeElement(el)} names no variable; write a BOOL variable on it`, el);
     return undefined;
   }
-  const res = ctx.symbols.resolve(el.variable, { expected: 'BOOL', literals: !edge, implicitLocations: true });
+  const res = ctx.symbols.resolve(el.variable, {
+    expected: 'BOOL',
+    literals: !edge,
+    implicitLocations: true,
+  });
   if (!res.ok) {
     const constant = /constant/.test(res.message) || /^(TRUE|FALSE)$/i.test(el.variable.trim());
-    r.error('LD-R08', edge && constant ? `${describeElement(el)} names a constant; a transition contact needs a BOOL variable` : `${describeElement(el)}: ${res.message}`, el);
+    r.error(
+      'LD-R08',
+      edge && constant
+        ? `${describeElement(el)} names a constant; a transition contact needs a BOOL variable`
+        : `${describeElement(el)}: ${res.message}`,
+      el,
+    );
     return undefined;
   }
   if (res.access.type !== 'BOOL') {
-    r.error('LD-R08', `${describeElement(el)} names ${res.access.type} ${accessWords(res.access)}; a contact needs a BOOL variable, an FB's BOOL pin or a bit like Word.3`, el);
+    r.error(
+      'LD-R08',
+      `${describeElement(el)} names ${res.access.type} ${accessWords(res.access)}; a contact needs a BOOL variable, an FB's BOOL pin or a bit like Word.3`,
+      el,
+    );
     return undefined;
   }
   return res.access;
@@ -194,18 +245,34 @@ function coilOperand(ctx: PouContext, el: CoilElement, network: number, r: Repor
     r.error('LD-R08', `${describeElement(el)} names no variable; write a BOOL variable on it`, el);
     return undefined;
   }
-  const res = ctx.symbols.resolve(el.variable, { expected: 'BOOL', literals: false, implicitLocations: true });
+  const res = ctx.symbols.resolve(el.variable, {
+    expected: 'BOOL',
+    literals: false,
+    implicitLocations: true,
+  });
   if (!res.ok) {
-    r.error('LD-R08', `${describeElement(el)}: ${res.message}${/constant/.test(res.message) ? '; a coil must write a BOOL variable' : ''}`, el);
+    r.error(
+      'LD-R08',
+      `${describeElement(el)}: ${res.message}${/constant/.test(res.message) ? '; a coil must write a BOOL variable' : ''}`,
+      el,
+    );
     return undefined;
   }
   const a = res.access;
   if (a.type !== 'BOOL') {
-    r.error('LD-R08', `${describeElement(el)} names ${a.type} ${accessWords(a)}; a coil needs a BOOL variable, an FB's BOOL input or a bit like Word.3`, el);
+    r.error(
+      'LD-R08',
+      `${describeElement(el)} names ${a.type} ${accessWords(a)}; a coil needs a BOOL variable, an FB's BOOL input or a bit like Word.3`,
+      el,
+    );
     return undefined;
   }
   if (a.kind === 'pin' && a.dir === 'out') {
-    r.error('LD-R08', `${describeElement(el)} writes the output ${a.fb.name}.${a.pin}, which only the block itself sets`, el);
+    r.error(
+      'LD-R08',
+      `${describeElement(el)} writes the output ${a.fb.name}.${a.pin}, which only the block itself sets`,
+      el,
+    );
     return undefined;
   }
   if ((a.kind === 'var' || a.kind === 'bit') && a.v.constant) {
@@ -215,12 +282,17 @@ function coilOperand(ctx: PouContext, el: CoilElement, network: number, r: Repor
   if (a.kind === 'var' || a.kind === 'bit') {
     const v = a.v;
     if (v.location?.area === 'I')
-      r.warning('LD-R13', `${describeElement(el)} writes the input ${v.locationText}; the next input read overwrites it`, el);
+      r.warning(
+        'LD-R13',
+        `${describeElement(el)} writes the input ${v.locationText}; the next input read overwrites it`,
+        el,
+      );
     if (el.coil === 'M' || el.coil === 'SM' || el.coil === 'RM') ctx.retentiveCoilVars.add(v);
     if (a.kind === 'var') {
       let families = ctx.coilWrites.get(v);
       if (!families) ctx.coilWrites.set(v, (families = new Map()));
-      if (!families.has(FAMILY[el.coil])) families.set(FAMILY[el.coil], { network, row: el.row, col: el.col });
+      if (!families.has(FAMILY[el.coil]))
+        families.set(FAMILY[el.coil], { network, row: el.row, col: el.col });
     }
   }
   return a;

@@ -25,7 +25,13 @@ const FAMILY_WORDS: Record<CoilFamily, string> = {
 };
 
 /** Checks and lowers one POU. Diagnostics about the project's globals go to `globalsOut`. */
-export function lowerPou(project: Project, pou: Pou, profile: Profile, out: Diagnostic[], globalsOut: Diagnostic[]): LoweredPou {
+export function lowerPou(
+  project: Project,
+  pou: Pou,
+  profile: Profile,
+  out: Diagnostic[],
+  globalsOut: Diagnostic[],
+): LoweredPou {
   const start = out.length;
   const varReporter = new Reporter(out, pou.name, -1);
   const symbols = buildSymbols(project, pou, varReporter, new Reporter(globalsOut, 'globals', -1));
@@ -37,12 +43,19 @@ export function lowerPou(project: Project, pou: Pou, profile: Profile, out: Diag
     if (!label) return;
     const r = new Reporter(out, pou.name, i, label);
     if (!IDENTIFIER_RE.test(label) && !/^\d+$/.test(label)) {
-      r.error('LD-R06', `the label "${label}" is not valid; use a name (letters, digits, _) or an unsigned number`);
+      r.error(
+        'LD-R06',
+        `the label "${label}" is not valid; use a name (letters, digits, _) or an unsigned number`,
+      );
       return;
     }
     const key = label.toUpperCase();
     const first = labels.get(key);
-    if (first !== undefined) r.error('LD-R06', `the label "${label}" is already used by network ${first + 1}; labels must be unique in ${pou.name}`);
+    if (first !== undefined)
+      r.error(
+        'LD-R06',
+        `the label "${label}" is already used by network ${first + 1}; labels must be unique in ${pou.name}`,
+      );
     else labels.set(key, i);
   });
 
@@ -51,7 +64,16 @@ export function lowerPou(project: Project, pou: Pou, profile: Profile, out: Diag
     const r = new Reporter(out, pou.name, i, net.label?.trim());
     if (net.elements.length === 0 && net.vlinks.length === 0) {
       r.warning('LD-W01', 'this network is empty; draw a rung in it or delete it');
-      return { index: i, ops: [], netCount: 0, railNets: [], elementNets: [], vlinkNets: [], constants: [], ...(net.label ? { label: net.label } : {}) } satisfies NetworkIR;
+      return {
+        index: i,
+        ops: [],
+        netCount: 0,
+        railNets: [],
+        elementNets: [],
+        vlinkNets: [],
+        constants: [],
+        ...(net.label ? { label: net.label } : {}),
+      } satisfies NetworkIR;
     }
     return lowerNetwork(ctx, net, i, r);
   });
@@ -68,6 +90,7 @@ export function lowerPou(project: Project, pou: Pou, profile: Profile, out: Diag
       { row: second.row, col: second.col },
     );
   }
-  const ok = !out.slice(start).some((d) => d.severity === 'error') && !globalsOut.some((d) => d.severity === 'error');
+  const ok =
+    !out.slice(start).some((d) => d.severity === 'error') && !globalsOut.some((d) => d.severity === 'error');
   return { ctx, networks, ok };
 }

@@ -17,12 +17,19 @@ export interface CompiledProgram {
   readonly symbols: SymbolTable;
   readonly functions: readonly ResolvedFunction[];
   readonly edgeCount: number;
-  readonly dataSlots: readonly { readonly store: Store; readonly slot: number; readonly type: ElementaryType }[];
+  readonly dataSlots: readonly {
+    readonly store: Store;
+    readonly slot: number;
+    readonly type: ElementaryType;
+  }[];
   /** Variables kept over a warm restart: RETAIN ones and those written by M/SM/RM coils. */
   readonly retentive: ReadonlySet<VarSymbol>;
 }
 
-export function assembleProgram(project: Project, opts: CompileOptions): { program?: CompiledProgram; diagnostics: Diagnostic[] } {
+export function assembleProgram(
+  project: Project,
+  opts: CompileOptions,
+): { program?: CompiledProgram; diagnostics: Diagnostic[] } {
   const diagnostics: Diagnostic[] = [];
   const globals: Diagnostic[] = [];
   const pou = opts.pou
@@ -30,7 +37,12 @@ export function assembleProgram(project: Project, opts: CompileOptions): { progr
     : project.pous.find((p) => p.kind === 'PROGRAM');
   const r = new Reporter(diagnostics, opts.pou ?? project.name, -1);
   if (!pou) {
-    r.error('LD-E20', opts.pou ? `there is no POU named "${opts.pou}" in the project` : 'the project has no PROGRAM to run; add one');
+    r.error(
+      'LD-E20',
+      opts.pou
+        ? `there is no POU named "${opts.pou}" in the project`
+        : 'the project has no PROGRAM to run; add one',
+    );
     return { diagnostics };
   }
   if (pou.kind !== 'PROGRAM') {

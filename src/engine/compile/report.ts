@@ -7,7 +7,13 @@ import type { Diagnostic, RuleId } from '../api';
 /** R1C4: 1-based row and column as the editor shows them. */
 export const cellName = (row: number, col: number): string => `R${row + 1}C${col + 1}`;
 
-const CONTACT_WORDS = { NO: 'contact', NC: 'normally closed contact', P: 'rising-edge contact', N: 'falling-edge contact', NOT: 'inverting contact' } as const;
+const CONTACT_WORDS = {
+  NO: 'contact',
+  NC: 'normally closed contact',
+  P: 'rising-edge contact',
+  N: 'falling-edge contact',
+  NOT: 'inverting contact',
+} as const;
 const COIL_WORDS = {
   COIL: 'coil',
   NEG: 'negated coil',
@@ -25,15 +31,21 @@ export function describeElement(el: LdElement): string {
   const at = cellName(el.row, el.col);
   switch (el.kind) {
     case 'contact':
-      return el.contact === 'NOT' || el.variable.trim() === '' ? `the ${CONTACT_WORDS[el.contact]} at ${at}` : `the ${CONTACT_WORDS[el.contact]} "${el.variable}"`;
+      return el.contact === 'NOT' || el.variable.trim() === ''
+        ? `the ${CONTACT_WORDS[el.contact]} at ${at}`
+        : `the ${CONTACT_WORDS[el.contact]} "${el.variable}"`;
     case 'coil':
-      return el.variable.trim() === '' ? `the ${COIL_WORDS[el.coil]} at ${at}` : `the ${COIL_WORDS[el.coil]} "${el.variable}"`;
+      return el.variable.trim() === ''
+        ? `the ${COIL_WORDS[el.coil]} at ${at}`
+        : `the ${COIL_WORDS[el.coil]} "${el.variable}"`;
     case 'jump':
       return el.target.trim() === '' ? `the jump at ${at}` : `the jump to "${el.target}"`;
     case 'return':
       return `the RETURN at ${at}`;
     case 'box':
-      return el.instance ? `the ${el.blockType} block "${el.instance}"` : `the ${el.blockType} block at ${at}`;
+      return el.instance
+        ? `the ${el.blockType} block "${el.instance}"`
+        : `the ${el.blockType} block at ${at}`;
     case 'link':
       return `the line at ${at}`;
   }
@@ -73,7 +85,9 @@ export class Reporter {
       rule,
       pou: this.pou,
       network: this.network,
-      ...(this.networkLabel !== undefined && this.networkLabel !== '' ? { networkLabel: this.networkLabel } : {}),
+      ...(this.networkLabel !== undefined && this.networkLabel !== ''
+        ? { networkLabel: this.networkLabel }
+        : {}),
       ...(cell ? { cell } : {}),
       ...(at?.id !== undefined ? { elementId: at.id } : {}),
       message,

@@ -30,7 +30,10 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
   }
   for (const i of g.badVlinks) {
     const v = network.vlinks[i]!;
-    r.error('LD-E31', `the vertical link at row ${v.row + 1}, boundary ${v.boundary} lies outside the grid`, { row: v.row, col: v.boundary });
+    r.error('LD-E31', `the vertical link at row ${v.row + 1}, boundary ${v.boundary} lies outside the grid`, {
+      row: v.row,
+      col: v.boundary,
+    });
   }
 
   // Wires attached to each point, to find dangling ends.
@@ -51,7 +54,8 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
     vDown[p] = i;
     vUp[p + width] = i;
   });
-  for (const n of g.nodes) for (const t of [...n.inputs, ...n.outputs]) terminals[t.row * width + t.boundary] = 1;
+  for (const n of g.nodes)
+    for (const t of [...n.inputs, ...n.outputs]) terminals[t.row * width + t.boundary] = 1;
 
   // LD-R03: dangling wire ends.
   const reportedLinks = new Set<number>();
@@ -67,13 +71,21 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
       reportedLinks.add(i);
       const el = network.elements[i]!;
       const side = linkLeft[p]! >= 0 ? 'right' : 'left';
-      r.error('LD-R03', `the line at ${cellName(el.row, el.col)} ends in nothing on its ${side}; connect it or delete it`, el);
+      r.error(
+        'LD-R03',
+        `the line at ${cellName(el.row, el.col)} ends in nothing on its ${side}; connect it or delete it`,
+        el,
+      );
     } else {
       const v = vUp[p]! >= 0 ? vUp[p]! : vDown[p]!;
-      r.error('LD-R03', `the vertical line at ${cellName(row, b)} ends in nothing; connect it to a line or an element`, {
-        row: network.vlinks[v]!.row,
-        col: Math.max(0, b - 1),
-      });
+      r.error(
+        'LD-R03',
+        `the vertical line at ${cellName(row, b)} ends in nothing; connect it to a line or an element`,
+        {
+          row: network.vlinks[v]!.row,
+          col: Math.max(0, b - 1),
+        },
+      );
     }
   }
 
@@ -88,15 +100,28 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
         const n = nodeOf(s.node);
         if (n.el.kind === 'box') {
           if (net.links.length || net.vlinks.length)
-            r.error('LD-R03', `input ${s.pin} of ${describeElement(n.el)} is wired to a line that starts nowhere; connect the line on its left`, n.el);
-        } else r.error('LD-R03', `${describeElement(n.el)} has an open left side; connect it to the left rail or to an element on its left`, n.el);
+            r.error(
+              'LD-R03',
+              `input ${s.pin} of ${describeElement(n.el)} is wired to a line that starts nowhere; connect the line on its left`,
+              n.el,
+            );
+        } else
+          r.error(
+            'LD-R03',
+            `${describeElement(n.el)} has an open left side; connect it to the left rail or to an element on its left`,
+            n.el,
+          );
       }
     }
     if (!hasSink) {
       for (const s of net.sources) {
         const n = nodeOf(s.node);
         if (n.el.kind === 'contact')
-          r.error('LD-R03', `${describeElement(n.el)} has an open right side; connect it to a coil, a block input or the right rail`, n.el);
+          r.error(
+            'LD-R03',
+            `${describeElement(n.el)} has an open right side; connect it to a coil, a block input or the right rail`,
+            n.el,
+          );
       }
     }
     if (!hasSource || !hasSink) continue;
@@ -107,19 +132,37 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
     const coilSinks = net.sinks.filter((s) => isCoil(nodeOf(s.node).el));
     if (net.leftRail && net.rightRail) {
       const railPoint = net.points.find((p) => p % width === g.cols)!;
-      r.error('LD-R02', `short circuit: a bare line joins the left rail to the right rail at row ${Math.floor(railPoint / width) + 1}; put a contact or coil on it`, at(railPoint));
+      r.error(
+        'LD-R02',
+        `short circuit: a bare line joins the left rail to the right rail at row ${Math.floor(railPoint / width) + 1}; put a contact or coil on it`,
+        at(railPoint),
+      );
     }
     if (net.leftRail) {
       for (const s of coilSinks) {
         const el = nodeOf(s.node).el;
-        if (isTransitionCoil(el)) r.error('LD-R09', `${describeElement(el)} is connected directly to the left rail; a transition coil needs a condition before it`, el);
-        else r.error('LD-R02', `short circuit: ${describeElement(el)} is connected to the left rail by a bare line; put a contact before it`, el);
+        if (isTransitionCoil(el))
+          r.error(
+            'LD-R09',
+            `${describeElement(el)} is connected directly to the left rail; a transition coil needs a condition before it`,
+            el,
+          );
+        else
+          r.error(
+            'LD-R02',
+            `short circuit: ${describeElement(el)} is connected to the left rail by a bare line; put a contact before it`,
+            el,
+          );
       }
     }
     if (net.rightRail && !net.leftRail) {
       for (const s of net.sinks) {
         const el = nodeOf(s.node).el;
-        r.error('LD-R02', `short circuit: a bare line to the right rail bypasses ${describeElement(el)}; remove the line or put an element on it`, el);
+        r.error(
+          'LD-R02',
+          `short circuit: a bare line to the right rail bypasses ${describeElement(el)}; remove the line or put an element on it`,
+          el,
+        );
       }
     }
     // LD-R04: after a coil only further coils or the right rail.
@@ -128,14 +171,23 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
       for (const s of net.sinks) {
         const el = nodeOf(s.node).el;
         if (!isCoil(el))
-          r.error('LD-R04', `${describeElement(el)} stands after ${describeElement(coilSource)}; only coils (or the right rail) may follow a coil`, el);
+          r.error(
+            'LD-R04',
+            `${describeElement(el)} stands after ${describeElement(coilSource)}; only coils (or the right rail) may follow a coil`,
+            el,
+          );
       }
     }
   }
 
   // LD-R05: at most one jump per network.
   const jumps = g.nodes.filter((n) => n.el.kind === 'jump');
-  for (const extra of jumps.slice(1)) r.error('LD-R05', `${describeElement(extra.el)} is a second jump in this network; a network holds at most one jump`, extra.el);
+  for (const extra of jumps.slice(1))
+    r.error(
+      'LD-R05',
+      `${describeElement(extra.el)} is a second jump in this network; a network holds at most one jump`,
+      extra.el,
+    );
 
   // LD-R10 (wiring): one power-flow line into a box.
   for (const n of g.nodes) {
@@ -145,7 +197,11 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
     if (powerNet === undefined) continue;
     for (const t of n.inputs) {
       if (t.pin === power || t.net !== powerNet) continue;
-      r.error('LD-R10', `the power flow enters ${describeElement(n.el)} twice: ${power} and ${t.pin} share one line; feed ${t.pin} from its own line or give it an operand`, n.el);
+      r.error(
+        'LD-R10',
+        `the power flow enters ${describeElement(n.el)} twice: ${power} and ${t.pin} share one line; feed ${t.pin} from its own line or give it an operand`,
+        n.el,
+      );
     }
   }
   return r.errors === before;
@@ -179,7 +235,11 @@ function checkFlowDirection(
     seen[start] = 1;
     while (stack.length) {
       const p = stack.pop()!;
-      const next = [linkRight[p]! >= 0 ? p + 1 : -1, vDown[p]! >= 0 ? p + width : -1, vUp[p]! >= 0 ? p - width : -1];
+      const next = [
+        linkRight[p]! >= 0 ? p + 1 : -1,
+        vDown[p]! >= 0 ? p + width : -1,
+        vUp[p]! >= 0 ? p - width : -1,
+      ];
       for (const q of next) {
         if (q < 0 || seen[q]) continue;
         seen[q] = 1;
@@ -190,9 +250,18 @@ function checkFlowDirection(
       if (seen[t.point] || blamed.has(t.point)) continue;
       blamed.add(t.point);
       const row = Math.floor(t.point / width);
-      if (t.el) r.error('LD-R01', `${describeElement(t.el)} is fed from its right: power would flow right to left through the branch at row ${row + 1}; redraw the branch so it runs left to right`, t.el);
-      else r.error('LD-R01', `the line reaching the right rail at row ${row + 1} carries power right to left; redraw the branch so it runs left to right`, { row, col: g.cols - 1 });
+      if (t.el)
+        r.error(
+          'LD-R01',
+          `${describeElement(t.el)} is fed from its right: power would flow right to left through the branch at row ${row + 1}; redraw the branch so it runs left to right`,
+          t.el,
+        );
+      else
+        r.error(
+          'LD-R01',
+          `the line reaching the right rail at row ${row + 1} carries power right to left; redraw the branch so it runs left to right`,
+          { row, col: g.cols - 1 },
+        );
     }
   }
 }
-

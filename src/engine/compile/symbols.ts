@@ -50,7 +50,13 @@ export interface FbSymbol {
 export type Access =
   | { readonly kind: 'var'; readonly v: VarSymbol; readonly type: ElementaryType }
   | { readonly kind: 'bit'; readonly v: VarSymbol; readonly bit: number; readonly type: 'BOOL' }
-  | { readonly kind: 'pin'; readonly fb: FbSymbol; readonly pin: string; readonly type: ElementaryType; readonly dir: 'in' | 'out' }
+  | {
+      readonly kind: 'pin';
+      readonly fb: FbSymbol;
+      readonly pin: string;
+      readonly type: ElementaryType;
+      readonly dir: 'in' | 'out';
+    }
   | { readonly kind: 'const'; readonly type: ElementaryType; readonly value: Value; readonly text: string };
 
 export type Resolved = { ok: true; access: Access } | { ok: false; message: string; unknown?: boolean };
@@ -69,7 +75,10 @@ export class SymbolTable {
   declare(decl: Variable, global: boolean, r: Reporter): void {
     const what = `the variable "${decl.name}"`;
     if (!IDENTIFIER_RE.test(decl.name) || /__/.test(decl.name) || /_$/.test(decl.name)) {
-      r.error('LD-E11', `${what} has an invalid name; use a letter or _, then letters, digits and single underscores`);
+      r.error(
+        'LD-E11',
+        `${what} has an invalid name; use a letter or _, then letters, digits and single underscores`,
+      );
       return;
     }
     if (['TRUE', 'FALSE'].includes(decl.name.toUpperCase())) {
@@ -93,18 +102,27 @@ export class SymbolTable {
       return;
     }
     if (!isElementaryType(type)) {
-      r.error('LD-E15', `${what} has the unknown type "${decl.type}"; use an elementary type (BOOL, INT, TIME, ...) or a standard block (TON, CTU, ...)`);
+      r.error(
+        'LD-E15',
+        `${what} has the unknown type "${decl.type}"; use an elementary type (BOOL, INT, TIME, ...) or a standard block (TON, CTU, ...)`,
+      );
       return;
     }
     let location: ParsedLocation | undefined;
     if (decl.location !== undefined && decl.location.trim() !== '') {
       location = parseLocation(decl.location);
       if (!location) {
-        r.error('LD-E12', `${what} has the invalid location "${decl.location}"; write it like %IX0.0, %QX1.7, %MW3 or %ID2`);
+        r.error(
+          'LD-E12',
+          `${what} has the invalid location "${decl.location}"; write it like %IX0.0, %QX1.7, %MW3 or %ID2`,
+        );
         return;
       }
       if (!locationAdmits(location, type)) {
-        r.error('LD-E13', `${what} is ${type} but its location ${decl.location} holds ${sizeWords(location)}`);
+        r.error(
+          'LD-E13',
+          `${what} is ${type} but its location ${decl.location} holds ${sizeWords(location)}`,
+        );
         return;
       }
     }
@@ -117,10 +135,23 @@ export class SymbolTable {
       }
       initial = lit.value;
     }
-    const v = this.addVar(decl.name, type, initial, decl.retain, decl.constant === true, location, global, false);
+    const v = this.addVar(
+      decl.name,
+      type,
+      initial,
+      decl.retain,
+      decl.constant === true,
+      location,
+      global,
+      false,
+    );
     if (v.locationText) {
       const other = this.byLocation.get(v.locationText);
-      if (other) r.warning('LD-W02', `${what} shares the location ${v.locationText} with "${other.name}"; both name the same memory`);
+      if (other)
+        r.warning(
+          'LD-W02',
+          `${what} shares the location ${v.locationText} with "${other.name}"; both name the same memory`,
+        );
       else this.byLocation.set(v.locationText, v);
     }
   }
@@ -175,7 +206,10 @@ export class SymbolTable {
    * Resolves operand text: a variable, `Instance.Pin`, a bit `Word.3`, a location, or (when
    * literals are allowed) a literal of the expected type.
    */
-  resolve(text: string, opts: { expected?: ElementaryType; literals: boolean; implicitLocations: boolean }): Resolved {
+  resolve(
+    text: string,
+    opts: { expected?: ElementaryType; literals: boolean; implicitLocations: boolean },
+  ): Resolved {
     const t = text.trim();
     if (t === '') return { ok: false, message: 'no variable is given' };
     if (t.startsWith('%')) {
@@ -195,34 +229,58 @@ export class SymbolTable {
         const inPin = sig.inputs.find((p) => p.name === pinName);
         const outPin = sig.outputs.find((p) => p.name === pinName);
         const pin = inPin ?? outPin;
-        if (!pin) return { ok: false, message: `${head.type} "${head.name}" has no pin ${tail} (pins: ${[...sig.inputs, ...sig.outputs].map((p) => p.name).join(', ')})` };
-        return { ok: true, access: { kind: 'pin', fb: head, pin: pin.name, type: pin.type as ElementaryType, dir: inPin ? 'in' : 'out' } };
+        if (!pin)
+          return {
+            ok: false,
+            message: `${head.type} "${head.name}" has no pin ${tail} (pins: ${[...sig.inputs, ...sig.outputs].map((p) => p.name).join(', ')})`,
+          };
+        return {
+          ok: true,
+          access: {
+            kind: 'pin',
+            fb: head,
+            pin: pin.name,
+            type: pin.type as ElementaryType,
+            dir: inPin ? 'in' : 'out',
+          },
+        };
       }
       if (head?.kind === 'var' && /^\d+$/.test(tail)) {
         const width = head.type in INT_INFO && head.type !== 'BOOL' ? bitWidth(head.type) : 0;
-        if (!['BYTE', 'WORD', 'DWORD', 'LWORD'].includes(head.type)) return { ok: false, message: `"${head.name}" is ${head.type}; only BYTE, WORD, DWORD and LWORD have addressable bits` };
+        if (!['BYTE', 'WORD', 'DWORD', 'LWORD'].includes(head.type))
+          return {
+            ok: false,
+            message: `"${head.name}" is ${head.type}; only BYTE, WORD, DWORD and LWORD have addressable bits`,
+          };
         const bit = Number(tail);
-        if (bit >= width) return { ok: false, message: `${head.type} "${head.name}" has bits 0 to ${width - 1}, not ${bit}` };
+        if (bit >= width)
+          return { ok: false, message: `${head.type} "${head.name}" has bits 0 to ${width - 1}, not ${bit}` };
         return { ok: true, access: { kind: 'bit', v: head, bit, type: 'BOOL' } };
       }
       if (!head) return { ok: false, message: `"${t.slice(0, dot)}" is not declared`, unknown: true };
     }
     const sym = this.lookup(t);
     if (sym?.kind === 'var') return { ok: true, access: { kind: 'var', v: sym, type: sym.type } };
-    if (sym?.kind === 'fb') return { ok: false, message: `"${sym.name}" is a ${sym.type} instance, not a value; name one of its pins like ${sym.name}.Q` };
+    if (sym?.kind === 'fb')
+      return {
+        ok: false,
+        message: `"${sym.name}" is a ${sym.type} instance, not a value; name one of its pins like ${sym.name}.Q`,
+      };
     if (!opts.literals) {
       return IDENTIFIER_RE.test(t) && !/^(TRUE|FALSE)$/i.test(t)
         ? { ok: false, message: `"${t}" is not declared`, unknown: true }
         : { ok: false, message: `"${t}" is a constant, not a variable` };
     }
-    if (IDENTIFIER_RE.test(t) && !/^(TRUE|FALSE)$/i.test(t)) return { ok: false, message: `"${t}" is not declared`, unknown: true };
+    if (IDENTIFIER_RE.test(t) && !/^(TRUE|FALSE)$/i.test(t))
+      return { ok: false, message: `"${t}" is not declared`, unknown: true };
     const lit = parseLiteral(t, opts.expected);
     if (!lit.ok) return { ok: false, message: lit.message };
     return { ok: true, access: { kind: 'const', type: lit.type, value: lit.value, text: t } };
   }
 }
 
-const bitWidth = (t: ElementaryType): number => (t in INT_INFO ? INT_INFO[t as keyof typeof INT_INFO].bits : 1);
+const bitWidth = (t: ElementaryType): number =>
+  t in INT_INFO ? INT_INFO[t as keyof typeof INT_INFO].bits : 1;
 
 function implicitType(loc: ParsedLocation): ElementaryType {
   switch (loc.size) {
@@ -240,11 +298,22 @@ function implicitType(loc: ParsedLocation): ElementaryType {
 }
 
 function sizeWords(loc: ParsedLocation): string {
-  return { X: 'one bit (BOOL)', B: 'a byte (BYTE, SINT, USINT)', W: 'a word (WORD, INT, UINT)', D: 'a double word (DWORD, DINT, UDINT, REAL, TIME)', L: 'a long word (LWORD, LINT, ULINT, LREAL)' }[loc.size];
+  return {
+    X: 'one bit (BOOL)',
+    B: 'a byte (BYTE, SINT, USINT)',
+    W: 'a word (WORD, INT, UINT)',
+    D: 'a double word (DWORD, DINT, UDINT, REAL, TIME)',
+    L: 'a long word (LWORD, LINT, ULINT, LREAL)',
+  }[loc.size];
 }
 
 /** Builds the symbol table of a POU: its variables first, then the project's globals. */
-export function buildSymbols(project: Project, pou: Pou, r: Reporter, globalsReporter: Reporter): SymbolTable {
+export function buildSymbols(
+  project: Project,
+  pou: Pou,
+  r: Reporter,
+  globalsReporter: Reporter,
+): SymbolTable {
   const table = new SymbolTable();
   for (const v of pou.variables) table.declare(v, false, r);
   for (const v of project.globals) table.declare(v, true, globalsReporter);

@@ -72,7 +72,9 @@ export class Memory {
         return this.load(a.v);
       case 'bit': {
         const word = this.load(a.v);
-        return typeof word === 'bigint' ? ((word >> BigInt(a.bit)) & 1n) === 1n : ((Number(word) >>> a.bit) & 1) === 1;
+        return typeof word === 'bigint'
+          ? ((word >> BigInt(a.bit)) & 1n) === 1n
+          : ((Number(word) >>> a.bit) & 1) === 1;
       }
       case 'pin':
         return this.fbs[a.fb.index]!.get(a.pin);
@@ -115,7 +117,8 @@ export function coerce(type: ElementaryType, value: Value, what: string): Value 
     if (value === 0 || value === 1 || value === 0n || value === 1n) return value === 1 || value === 1n;
     throw new Error(`${what} is BOOL; ${String(value)} is not a BOOL value (use true/false)`);
   }
-  if (typeof value === 'boolean') throw new Error(`${what} is ${type}; ${String(value)} is not a ${type} value`);
+  if (typeof value === 'boolean')
+    throw new Error(`${what} is ${type}; ${String(value)} is not a ${type} value`);
   if (typeof value === 'number' && Number.isNaN(value) && type !== 'REAL' && type !== 'LREAL')
     throw new Error(`${what} is ${type}; NaN is not a ${type} value`);
   const v = normalize(type, value);

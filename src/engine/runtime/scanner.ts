@@ -6,6 +6,7 @@ import type { Fault, Plc, PlcOptions, PowerSnapshot, ScanReport, StepReport } fr
 import type { FnContext } from '../library/fnTypes';
 import { FACTORY_PARAMS, generateSegment, NETS_PER_WORD, slotKey } from '../compile/codegen';
 import { networkPower, type PowerTrace } from './snapshot';
+import { planSegments, writersBySlot } from './plan';
 import type { CompiledProgram } from '../compile/program';
 import type { Access, VarSymbol } from '../compile/symbols';
 import { coerce, Memory } from './memory';
@@ -46,7 +47,7 @@ export class ScanPlc implements Plc {
   private readonly outputImage: Value[];
   private readonly forces = new Map<VarSymbol, Value>();
   /** Networks that write each slot (`b:3`), to regenerate when its variable is (un)forced. */
-  private readonly writers = new Map<string, Set<number>>();
+  private readonly writers: ReadonlyMap<string, ReadonlySet<number>>;
   private readonly maxEvals: number;
   private readonly maxScanMs: number;
   private count = 0;
@@ -83,33 +84,11 @@ export class ScanPlc implements Plc {
     this.outputImage = this.outputsVars.map((v) => v.initial);
     this.maxEvals = opts.maxNetworkEvaluations ?? 100 * program.networks.length + 10_000;
     this.maxScanMs = opts.maxScanMs ?? 1000;
-    program.networks.forEach((ir) => {
-      for (const op of ir.ops) {
-        const dsts: (Access | undefined)[] = op.op === 'coil' ? [op.dst] : op.op === 'function' ? [op.out.dst, op.eno.dst] : op.op === 'fb' ? op.outs.map((o) => o.dst) : [];
-        for (const d of dsts) {
-          if (d?.kind !== 'var' && d?.kind !== 'bit') continue;
-          const key = slotKey(d.v.store, d.v.slot);
-          if (!this.writers.has(key)) this.writers.set(key, new Set());
-          this.writers.get(key)!.add(ir.index);
-        }
-      }
-    });
+    this.writers = writersBySlot(program.networks);
     const count = program.networks.length;
     this.segments = new Array<SegmentFn | undefined>(count).fill(undefined);
     this.singles = new Array<SegmentFn | undefined>(count).fill(undefined);
-    this.segmentOf = new Int32Array(count);
-    const targets = new Set(program.networks.flatMap((ir) => ir.ops.flatMap((op) => (op.op === 'jump' ? [op.target] : []))));
-    let start = 0;
-    let ops = 0;
-    for (let i = 0; i < count; i++) {
-      const size = program.networks[i]!.ops.length + 1;
-      if (i > start && (targets.has(i) || ops + size > SEGMENT_OPS || i - start >= SEGMENT_NETWORKS)) {
-        start = i;
-        ops = 0;
-      }
-      this.segmentOf[i] = start;
-      ops += size;
-    }
+    this.segmentOf = planSegments(program.networks, SEGMENT_OPS, SEGMENT_NETWORKS);
     for (let i = 0; i < count; i++) if (this.segmentOf[i] === i) this.segments[i] = this.buildSegment(i);
     this.coldRestart();
   }
@@ -122,10 +101,27 @@ export class ScanPlc implements Plc {
 
   private build(first: number, end: number): SegmentFn {
     const forced = new Set([...this.forces.keys()].map((v) => slotKey(v.store, v.slot)));
-    const gen = generateSegment(this.program.networks.slice(first, end), this.program.functions, forced, this.words);
+    const gen = generateSegment(
+      this.program.networks.slice(first, end),
+      this.program.functions,
+      forced,
+      this.words,
+    );
     const factory = new Function(...FACTORY_PARAMS, gen.body) as (...args: unknown[]) => SegmentFn;
     const m = this.mem;
-    return factory(m.b, m.n, m.g, m.fbs, this.program.functions, m.edges, this.power, gen.constants, this.ctx, this.ranIn, this.ran);
+    return factory(
+      m.b,
+      m.n,
+      m.g,
+      m.fbs,
+      this.program.functions,
+      m.edges,
+      this.power,
+      gen.constants,
+      this.ctx,
+      this.ranIn,
+      this.ran,
+    );
   }
 
   private buildSegment(first: number): SegmentFn {
@@ -153,7 +149,9 @@ export class ScanPlc implements Plc {
 
   private startScan(): void {
     this.count++;
-    this.time = this.opts.clock ? this.opts.clock.now() - this.clockOrigin : (this.count - 1) * this.opts.cycleMs;
+    this.time = this.opts.clock
+      ? this.opts.clock.now() - this.clockOrigin
+      : (this.count - 1) * this.opts.cycleMs;
     this.scanStart = now();
     // 1. Input image: inputs do not change during the scan; forced inputs keep their forced value.
     for (let i = 0; i < this.inputs.length; i++) {
@@ -167,7 +165,8 @@ export class ScanPlc implements Plc {
 
   private endScan(): void {
     // 3. Output image, in one operation.
-    for (let i = 0; i < this.outputsVars.length; i++) this.outputImage[i] = this.mem.load(this.outputsVars[i]!);
+    for (let i = 0; i < this.outputsVars.length; i++)
+      this.outputImage[i] = this.mem.load(this.outputsVars[i]!);
     this.cursor = -1;
     this.lastExecMs = now() - this.scanStart;
   }
@@ -207,7 +206,10 @@ export class ScanPlc implements Plc {
     const network = this.backJump >= 0 ? this.backJump : at;
     const label = this.program.networks[network]!.label;
     const where = `network ${network + 1}${label ? ` (label ${label})` : ''}`;
-    const limit = this.evals >= this.maxEvals ? `${this.maxEvals.toLocaleString('en-US')} network evaluations` : `${this.maxScanMs} ms`;
+    const limit =
+      this.evals >= this.maxEvals
+        ? `${this.maxEvals.toLocaleString('en-US')} network evaluations`
+        : `${this.maxScanMs} ms`;
     this.currentFault = {
       kind: 'watchdog',
       pou: this.pou,
@@ -220,7 +222,12 @@ export class ScanPlc implements Plc {
   }
 
   private report(): ScanReport {
-    return { scan: this.count, timeMs: this.time, execMs: this.lastExecMs, ...(this.currentFault ? { fault: this.currentFault } : {}) };
+    return {
+      scan: this.count,
+      timeMs: this.time,
+      execMs: this.lastExecMs,
+      ...(this.currentFault ? { fault: this.currentFault } : {}),
+    };
   }
 
   scan(): ScanReport {
@@ -346,7 +353,8 @@ export class ScanPlc implements Plc {
 
   variableNames(): string[] {
     const names = this.program.symbols.vars.map((v) => v.name);
-    for (const fb of this.program.symbols.fbs) for (const pin of this.mem.fbs[fb.index]!.pins()) names.push(`${fb.name}.${pin}`);
+    for (const fb of this.program.symbols.fbs)
+      for (const pin of this.mem.fbs[fb.index]!.pins()) names.push(`${fb.name}.${pin}`);
     return names;
   }
 
@@ -383,7 +391,19 @@ export class ScanPlc implements Plc {
   }
 
   snapshot(): PowerSnapshot {
-    const trace: PowerTrace = { scan: this.count, power: this.power, words: this.words, startedIn: this.ranIn, ran: this.ran, reach: SEGMENT_NETWORKS };
-    return { scan: this.count, timeMs: this.time, pou: this.pou, networks: networkPower(this.program, trace) };
+    const trace: PowerTrace = {
+      scan: this.count,
+      power: this.power,
+      words: this.words,
+      startedIn: this.ranIn,
+      ran: this.ran,
+      reach: SEGMENT_NETWORKS,
+    };
+    return {
+      scan: this.count,
+      timeMs: this.time,
+      pou: this.pou,
+      networks: networkPower(this.program, trace),
+    };
   }
 }

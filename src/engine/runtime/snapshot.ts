@@ -19,7 +19,8 @@ export interface PowerTrace {
 /** Whether network i ran in the trace's scan: some function starting at s <= i ran it then. */
 function ranInScan(t: PowerTrace, i: number): boolean {
   if (t.scan === 0) return false;
-  for (let s = i; s >= 0 && s >= i - t.reach; s--) if (t.startedIn[s] === t.scan && i < s + t.ran[s]!) return true;
+  for (let s = i; s >= 0 && s >= i - t.reach; s--)
+    if (t.startedIn[s] === t.scan && i < s + t.ran[s]!) return true;
   return false;
 }
 
@@ -30,7 +31,11 @@ export function networkPower(program: CompiledProgram, t: PowerTrace): NetworkPo
     const rails = new Set(ir.railNets);
     const base = t.words[i]!;
     const on = (net: number) =>
-      executed && net >= 0 ? (rails.has(net) ? 1 : (t.power[base + Math.floor(net / NETS_PER_WORD)]! >>> net % NETS_PER_WORD) & 1) : 0;
+      executed && net >= 0
+        ? rails.has(net)
+          ? 1
+          : (t.power[base + Math.floor(net / NETS_PER_WORD)]! >>> (net % NETS_PER_WORD)) & 1
+        : 0;
     const elements = new Uint8Array(shape.elements);
     const vlinks = new Uint8Array(shape.vlinks);
     ir.elementNets.forEach(([a, b], k) => (elements[k] = on(a) | (on(b) << 1) | (executed ? 4 : 0)));

@@ -40,6 +40,9 @@ export function lineColumn(text: string, offset: number): { line: number; column
   return { line, column: offset - lineStart + 1 };
 }
 
+/** Shared by every self-closing element (most of a PLCopen file: positions, pins); never written. */
+const NO_CHILDREN: XmlElement[] = Object.freeze([]) as unknown as XmlElement[];
+
 const ENTITIES: Record<string, string> = { lt: '<', gt: '>', amp: '&', quot: '"', apos: "'" };
 
 function decodeEntities(s: string, fail: (msg: string) => never): string {
@@ -214,7 +217,7 @@ export function parseXml(src: string): XmlElement {
       name: qname.indexOf(':') === -1 ? qname : localName(qname),
       qname,
       attrs,
-      children: [],
+      children: selfClosing ? NO_CHILDREN : [],
       text: '',
       offset: start,
       end: i,

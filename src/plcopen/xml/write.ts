@@ -92,6 +92,12 @@ export class XmlWriter {
     return this;
   }
 
+  /** One pre-formed line of XML (no newline inside) at the current depth. */
+  text(line: string): this {
+    this.push(line);
+    return this;
+  }
+
   /** Pre-formed XML, e.g. preserved vendor data, re-indented at the current depth. */
   raw(xml: string): this {
     if (this.buf !== null) {

@@ -1,0 +1,123 @@
+// Stepping with hardware attached: the confirmation dialog (mounted once by HardwareSimLink) and
+// the toolbar badge that shows the lease and watchdog while stepping drives real outputs.
+import { useEffect, useId, useRef, type KeyboardEvent } from 'react';
+import type { StepRequest } from '../../bridge/steppingLease';
+import type { StatusMessage } from '../../protocol/messages';
+import { gatewayLink } from '../../bridge/gatewayLink';
+import { hardwareStepping, useSteppingView } from './useHardwareStepping';
+import { useGateway } from './useGateway';
+import './hardware.css';
+
+const WATCHDOG_STATE = { idle: 'idle', fed: 'fed', tripped: 'TRIPPED' } as const;
+
+const stepWords = (r: StepRequest): string =>
+  r.kind === 'network' ? 'one network' : r.scans === 1 ? 'one scan' : `${r.scans} scans`;
+
+/** "Outputs armed; watchdog 1000 ms, fed" in the gateway's terms. */
+function WatchdogLine({ status }: { status: StatusMessage | null }) {
+  if (!status) return <span data-testid="hw-step-watchdog">Watchdog state not reported yet</span>;
+  return (
+    <span data-testid="hw-step-watchdog" className={status.armed ? undefined : 'rs-hw-error'}>
+      Outputs <strong>{status.armed ? 'armed' : 'disarmed (safe state after a watchdog trip)'}</strong>; watchdog {status.watchdog.ms} ms,{' '}
+      {WATCHDOG_STATE[status.watchdog.state]}
+    </span>
+  );
+}
+
+function RearmButton({ status }: { status: StatusMessage | null }) {
+  if (status?.armed !== false) return null;
+  return (
+    <button type="button" onClick={() => gatewayLink.client?.arm()} data-testid="hw-step-arm" title="Resume writing outputs after the watchdog trip">
+      Re-arm outputs
+    </button>
+  );
+}
+
+export function SteppingConfirmDialog() {
+  const view = useSteppingView();
+  const { status } = useGateway();
+  const titleId = useId();
+  const textId = useId();
+  const cancelRef = useRef<HTMLButtonElement>(null);
+  const dialogRef = useRef<HTMLDivElement>(null);
+  const open = view.phase === 'confirming';
+
+  useEffect(() => {
+    if (!open) return undefined;
+    const before = document.activeElement instanceof HTMLElement ? document.activeElement : null;
+    cancelRef.current?.focus(); // the safe answer has the focus
+    return () => before?.focus();
+  }, [open]);
+
+  if (!open || !view.request) return null;
+
+  const onKeyDown = (e: KeyboardEvent) => {
+    if (e.key === 'Escape') {
+      e.stopPropagation();
+      hardwareStepping.decline();
+      return;
+    }
+    if (e.key !== 'Tab') return;
+    // Keep the focus inside the dialog while it is open.
+    const buttons = [...(dialogRef.current?.querySelectorAll<HTMLButtonElement>('button:not(:disabled)') ?? [])];
+    const first = buttons[0];
+    const last = buttons[buttons.length - 1];
+    if (!first || !last) return;
+    if (e.shiftKey && document.activeElement === first) {
+      e.preventDefault();
+      last.focus();
+    } else if (!e.shiftKey && document.activeElement === last) {
+      e.preventDefault();
+      first.focus();
+    }
+  };
+
+  return (
+    <div className="rs-hw-backdrop" onMouseDown={(e) => e.target === e.currentTarget && hardwareStepping.decline()}>
+      <div ref={dialogRef} className="rs-hw-dialog" role="alertdialog" aria-modal="true" aria-labelledby={titleId} aria-describedby={textId}
+        onKeyDown={onKeyDown} data-testid="hw-step-confirm">
+        <h2 id={titleId}>Step with real outputs?</h2>
+        <div id={textId}>
+          <p>
+            This page is the gateway&apos;s controller. Stepping {stepWords(view.request)} now <strong>drives the real outputs</strong>: each
+            step reads the gateway&apos;s current inputs, runs the scan and writes its outputs to the devices. The outputs of the last scan
+            are written again at once.
+          </p>
+          <p>
+            Between steps the lease is kept fed, so the outputs stay as the last scan left them until you Run, Reset, disconnect or end
+            stepping (which writes the safe state).
+          </p>
+          <p>
+            <WatchdogLine status={status} />
+          </p>
+        </div>
+        <div className="rs-hw-dialog-buttons">
+          <RearmButton status={status} />
+          <button ref={cancelRef} type="button" onClick={() => hardwareStepping.decline()} data-testid="hw-step-cancel">
+            Cancel
+          </button>
+          <button type="button" className="rs-hw-danger" onClick={() => hardwareStepping.confirm()} data-testid="hw-step-ok">
+            Step and drive outputs
+          </button>
+        </div>
+      </div>
+    </div>
+  );
+}
+
+/** In the simulation toolbar while stepping drives the hardware. */
+export function SteppingBadge() {
+  const view = useSteppingView();
+  const { status } = useGateway();
+  if (view.phase !== 'stepping') return null;
+  return (
+    <span className="rs-hw-stepping" role="status" data-testid="hw-stepping">
+      <strong>Stepping on hardware</strong> <WatchdogLine status={status} />
+      <RearmButton status={status} />
+      <button type="button" onClick={() => hardwareStepping.end('stop')} data-testid="hw-step-end"
+        title="Leave hardware stepping: the gateway writes the safe state">
+        End (safe state)
+      </button>
+    </span>
+  );
+}
