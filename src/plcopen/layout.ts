@@ -149,10 +149,7 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
     const tallProducer = net.producers.some((p) => tall(p.node));
     const tallConsumer = net.consumers.some((c) => tall(c.node));
     const many = net.producers.length + (net.rail ? 1 : 0) > 1;
-    gap.set(
-      net,
-      (tallProducer && (net.consumers.length > 1 || many || tallConsumer)) || (tallConsumer && many) ? 1 : 0,
-    );
+    gap.set(net, tallProducer && (net.consumers.length > 1 || many || tallConsumer) ? 1 : 0);
   }
   const barOf = (net: Net): number => {
     let b = 0;
@@ -164,8 +161,9 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
     let c = 0;
     for (const p of shapes.get(i)!.inputs) {
       const net = inNet(i, p.pin);
-      // Boundary 0 is the left rail on every row: an input that is not wired stays off it.
-      c = Math.max(c, net ? barOf(net) : 1);
+      // Boundary 0 is the left rail on every row: an input that is not wired stays off it. A box
+      // keeps one link between its pins and the bar feeding them, so the bar never runs down its edge.
+      c = Math.max(c, net ? barOf(net) + (tall(i) && net.producers.length ? 1 : 0) : 1);
     }
     col.set(i, c);
     topo.push(i);

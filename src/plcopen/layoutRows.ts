@@ -41,12 +41,24 @@ export function placeRows(
     return v === undefined || (net !== undefined && v === -(net.id + 1));
   };
   /** Horizontal run of net on row r from boundary a to boundary z (a <= z), plus the bar reaching r. */
-  const runOk = (r: number, a: number, z: number, net: Net): boolean => {
+  /** Whether net may run on row r from boundary a to z (and its bar reach r); `mine` holds the
+   * points the same placement already uses, so two pins of one box cannot cross each other. */
+  const runOk = (r: number, a: number, z: number, net: Net, mine: Map<number, number>): boolean => {
+    const take = (row: number, b: number): boolean => {
+      if (!pointOk(row, b, net)) return false;
+      if (b === 0 || b === cols) return true;
+      const k = row * KEY + b;
+      const m = mine.get(k);
+      if (m !== undefined && m !== net.id) return false;
+      mine.set(k, net.id);
+      return true;
+    };
     for (let c = a; c < z; c++) if (!cellOk(r, c, net)) return false;
-    for (let b = a; b <= z; b++) if (!pointOk(r, b, net)) return false;
-    if (net.b > 0 && net.min !== Infinity) {
-      for (let rr = Math.min(r, net.min); rr <= Math.max(r, net.max); rr++)
-        if (!pointOk(rr, net.b, net)) return false;
+    for (let b = a; b <= z; b++) if (!take(r, b)) return false;
+    if (net.b > 0) {
+      const lo = net.min === Infinity ? r : Math.min(r, net.min);
+      const hi = net.max === -Infinity ? r : Math.max(r, net.max);
+      for (let rr = lo; rr <= hi; rr++) if (!take(rr, net.b)) return false;
     }
     return true;
   };
@@ -72,22 +84,29 @@ export function placeRows(
   const fits = (i: number, r: number): boolean => {
     const sh = shapes.get(i)!;
     const c = col.get(i)!;
+    const mine = new Map<number, number>();
+    let own = -1;
+    const block = (row: number, b: number): boolean => {
+      const k = row * KEY + b;
+      if (pointNet.has(k) || mine.has(k)) return false;
+      mine.set(k, own--);
+      return true;
+    };
     for (let y = 0; y < sh.h; y++)
       for (let x = 0; x < sh.w; x++) if (cellOwner.has((r + y) * KEY + c + x)) return false;
-    for (let y = 0; y < sh.h; y++)
-      for (let x = 1; x < sh.w; x++) if (pointNet.has((r + y) * KEY + c + x)) return false;
+    for (let y = 0; y < sh.h; y++) for (let x = 1; x < sh.w; x++) if (!block(r + y, c + x)) return false;
     for (const p of sh.inputs) {
       const net = inNet(i, p.pin);
       if (net) {
-        if (!runOk(r + p.off, Math.min(net.b, c), c, net)) return false;
-      } else if (c !== 0 && pointNet.has((r + p.off) * KEY + c)) return false;
+        if (!runOk(r + p.off, Math.min(net.b, c), c, net, mine)) return false;
+      } else if (c !== 0 && !block(r + p.off, c)) return false;
     }
     for (const p of sh.outputs) {
       const net = outNet(i, p.pin);
       const end = c + sh.w;
       if (net && (net.consumers.length || net.producers.length > 1)) {
-        if (!runOk(r + p.off, end, Math.max(net.b, end), net)) return false;
-      } else if (end !== cols && pointNet.has((r + p.off) * KEY + end)) return false;
+        if (!runOk(r + p.off, end, Math.max(net.b, end), net, mine)) return false;
+      } else if (end !== cols && !block(r + p.off, end)) return false;
     }
     return true;
   };
@@ -161,17 +180,57 @@ export function placeRows(
 
   const byPosition = (a: number, b: number) =>
     all[a]!.y - all[b]!.y || all[a]!.x - all[b]!.x || all[a]!.order - all[b]!.order;
+  // A chain of contacts from the rail that only feeds a lower pin of a box (R of a counter, G of a
+  // SEL) is drawn on that pin's row, after the box: placed first, at the top, its wire would have to
+  // cross the pins of the boxes between.
+  const chainOf = new Map<number, { box: number; off: number } | null>();
+  const chainTarget = (n: number, depth = 0): { box: number; off: number } | null => {
+    const known = chainOf.get(n);
+    if (known !== undefined) return known;
+    let result: { box: number; off: number } | null = null;
+    const out = all[n]!.kind === 'contact' && depth < 64 ? outNet(n, 'out') : undefined;
+    const inn = out ? inNet(n, 'in') : undefined;
+    const fromRail = inn ? inn.rail && inn.producers.length === 0 : false;
+    const fromChain = inn ? !inn.rail && inn.producers.length === 1 && inn.consumers.length === 1 : false;
+    if (
+      out &&
+      inn &&
+      (fromRail || fromChain) &&
+      out.producers.length === 1 &&
+      out.consumers.length === 1 &&
+      !out.rail
+    ) {
+      const c = out.consumers[0]!;
+      const sh = shapes.get(c.node)!;
+      if (sh.h > 1) {
+        const off = sh.inputs.find((p) => p.pin === c.pin)?.off ?? 0;
+        result = off > 0 ? { box: c.node, off } : null;
+      } else result = chainTarget(c.node, depth + 1);
+    }
+    chainOf.set(n, result);
+    return result;
+  };
+
   const placing = new Set<number>();
-  const place = (i: number) => {
+  const place = (i: number, prefer?: number) => {
     if (row.has(i) || placing.has(i)) return;
     placing.add(i);
     const sh = shapes.get(i)!;
-    // Everything feeding my input bars first, top to bottom.
+    const later: { node: number; row: number }[] = [];
+    // Everything feeding my input bars first, top to bottom (chains drawn on a lower pin: after me).
     for (const p of sh.inputs) {
       const net = inNet(i, p.pin);
-      if (net) [...net.producers].sort((a, b) => byPosition(a.node, b.node)).forEach((pr) => place(pr.node));
+      if (!net) continue;
+      const only = net.producers.length === 1 ? net.producers[0]!.node : undefined;
+      if (only !== undefined && !row.has(only) && chainTarget(only)?.box === i) {
+        later.push({ node: only, row: p.off });
+        continue;
+      }
+      const chained = prefer !== undefined && only !== undefined && chainTarget(only) !== null;
+      if (chained) place(only, prefer);
+      else [...net.producers].sort((a, b) => byPosition(a.node, b.node)).forEach((pr) => place(pr.node));
     }
-    let r = preferredRow(i);
+    let r = prefer ?? preferredRow(i);
     while (r <= maxRow + 1 && !fits(i, r)) r++;
     if (r > maxRow + 1) {
       r = maxRow + 1;
@@ -179,6 +238,7 @@ export function placeRows(
     }
     commit(i, r);
     placing.delete(i);
+    for (const l of later) place(l.node, r + l.row);
     // Then what I feed: siblings in the same bars, then consumers, depth-first.
     for (const p of sh.outputs) {
       const net = outNet(i, p.pin);
@@ -190,8 +250,10 @@ export function placeRows(
 
   const railNet = [...nets.values()].find((n) => n.rail);
   const starts = railNet ? [...railNet.consumers.map((c) => c.node)].sort(byPosition) : [];
-  for (const i of starts) place(i);
-  for (const i of [...members].sort(byPosition)) place(i);
+  for (const i of starts) if (!chainTarget(i)) place(i);
+  const rest = [...members].sort(byPosition);
+  for (const i of rest) if (!chainTarget(i)) place(i);
+  for (const i of rest) place(i);
 
   // Cosmetic: wires to the right rail where the row is free.
   for (const net of nets.values()) {

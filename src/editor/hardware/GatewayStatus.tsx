@@ -1,8 +1,15 @@
 // Devices, armed/watchdog state, re-arm and safe-state buttons.
 import { gatewayLink } from '../../bridge/gatewayLink';
+import { hardwareStepping } from './useHardwareStepping';
 import { useGateway } from './useGateway';
 
-const WATCHDOG_WORDS = { idle: 'idle (no outputs running)', fed: 'fed by the running program', tripped: 'TRIPPED: outputs in safe state' } as const;
+/** Safe state now; while stepping on hardware that also ends stepping, or its heartbeat would write the outputs again. */
+function safeState(): void {
+  if (hardwareStepping.snapshot().phase === 'stepping') hardwareStepping.end('stop');
+  else gatewayLink.client?.stop();
+}
+
+const WATCHDOG_WORDS = { idle: 'idle (no outputs running)', fed: 'fed by the program (running, or stepping on hardware)', tripped: 'TRIPPED: outputs in safe state' } as const;
 
 export function GatewayStatus() {
   const view = useGateway();
@@ -44,7 +51,7 @@ export function GatewayStatus() {
           title={controller ? 'Resume writing outputs after a watchdog trip' : 'Only the controller can re-arm'}>
           Re-arm
         </button>
-        <button type="button" disabled={!controller} onClick={() => gatewayLink.client?.stop()} data-testid="hw-safe"
+        <button type="button" disabled={!controller} onClick={safeState} data-testid="hw-safe"
           title="Write the safe state now (every output OFF unless configured hold)">
           Safe state
         </button>
