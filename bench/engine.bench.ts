@@ -209,10 +209,13 @@ function baseline(count: number): { scan: (now: number) => void; outputs: () => 
 }
 
 setFlagsFromString('--expose_gc');
-// V8 queues at most 8 functions for background optimisation by default; with the 160 generated
-// functions of a 10,000-network program (and the baseline's 100) that queue, not the code, limits
-// how soon either side runs optimised. A longer queue applies to both sides alike.
-setFlagsFromString('--concurrent-recompilation-queue-length=256');
+// `npm run bench:engine` starts node with --concurrent-recompilation-queue-length=256: V8 queues
+// only 8 functions for background optimisation by default, and with the ~160 generated functions
+// of a 10,000-network program (and the baseline's 100) that queue, not the code, decides how soon
+// either side runs optimised code. The flag applies to both sides alike; it is printed below.
+const queueFlag = process.execArgv.find((a) => a.startsWith('--concurrent-recompilation-queue-length'));
+console.log(`V8 optimisation queue: ${queueFlag ? queueFlag.split('=')[1] : 'default (8)'}`);
+
 const gc = runInNewContext('gc') as () => void;
 
 function measure(count: number, scans: number, warmMs: number): { ratio: number; nsEngine: number } {

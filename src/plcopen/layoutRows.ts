@@ -81,10 +81,11 @@ export function placeRows(
     net.max = Math.max(net.max, r);
   };
 
+  const mine = new Map<number, number>();
   const fits = (i: number, r: number): boolean => {
     const sh = shapes.get(i)!;
     const c = col.get(i)!;
-    const mine = new Map<number, number>();
+    mine.clear();
     let own = -1;
     const block = (row: number, b: number): boolean => {
       const k = row * KEY + b;
@@ -212,7 +213,12 @@ export function placeRows(
   };
 
   const placing = new Set<number>();
-  const place = (i: number, prefer?: number) => {
+  /** Places the nodes of these pins top to bottom, then left to right (as drawn in the file). */
+  const inOrder = (pins: readonly { node: number }[]) => {
+    if (pins.length === 1) return place(pins[0]!.node);
+    for (const n of pins.map((x) => x.node).sort(byPosition)) place(n);
+  };
+  const place = (i: number, prefer?: number): void => {
     if (row.has(i) || placing.has(i)) return;
     placing.add(i);
     const sh = shapes.get(i)!;
@@ -228,7 +234,7 @@ export function placeRows(
       }
       const chained = prefer !== undefined && only !== undefined && chainTarget(only) !== null;
       if (chained) place(only, prefer);
-      else [...net.producers].sort((a, b) => byPosition(a.node, b.node)).forEach((pr) => place(pr.node));
+      else inOrder(net.producers);
     }
     let r = prefer ?? preferredRow(i);
     while (r <= maxRow + 1 && !fits(i, r)) r++;
@@ -243,8 +249,8 @@ export function placeRows(
     for (const p of sh.outputs) {
       const net = outNet(i, p.pin);
       if (!net) continue;
-      [...net.producers].sort((a, b) => byPosition(a.node, b.node)).forEach((pr) => place(pr.node));
-      [...net.consumers].sort((a, b) => byPosition(a.node, b.node)).forEach((cn) => place(cn.node));
+      inOrder(net.producers);
+      inOrder(net.consumers);
     }
   };
 

@@ -156,4 +156,126 @@ describe('robustness', () => {
       expect(plc.fault).toBeUndefined();
     }
   });
+
+  test('random rungs give the same results as a direct evaluation of their logic, scan after scan', () => {
+    const rand = rng(23);
+    const pick = <T>(xs: readonly T[]): T => xs[Math.floor(rand() * xs.length)]!;
+    type C = { type: 'NO' | 'NC' | 'P' | 'N' | 'NOT'; v: string; mem: boolean };
+    type Rung = {
+      top: C[];
+      branch: C[];
+      joinAt: number;
+      coil: { type: 'COIL' | 'NEG' | 'SET' | 'RESET' | 'P' | 'N'; v: string; mem: boolean };
+    };
+    for (let trial = 0; trial < 30; trial++) {
+      const rungs: Rung[] = [];
+      const networks = [0, 1, 2, 3].map((k) => {
+        const cols = 4 + Math.floor(rand() * 3);
+        const m = 1 + Math.floor(rand() * (cols - 2));
+        const top: C[] = Array.from({ length: m }, () => ({
+          type: pick(['NO', 'NC', 'P', 'N', 'NOT'] as const),
+          v: pick(['A', 'B', 'X', 'Y']),
+          mem: false,
+        }));
+        const joinAt = rand() < 0.6 ? 1 + Math.floor(rand() * m) : 0;
+        const branch: C[] = Array.from({ length: joinAt }, () => ({
+          type: pick(['NO', 'NC', 'P'] as const),
+          v: pick(['A', 'B', 'Y']),
+          mem: false,
+        }));
+        const coil = {
+          type: pick(['COIL', 'NEG', 'SET', 'RESET', 'P', 'N'] as const),
+          v: pick(['X', 'Y']),
+          mem: false,
+        };
+        rungs.push({ top, branch, joinAt, coil });
+        let n = 0;
+        const id = () => `d${trial}_${k}_${n++}` as ElementId;
+        const elements: LdElement[] = [
+          ...top.map((c, col): LdElement => ({
+            id: id(),
+            kind: 'contact',
+            contact: c.type,
+            variable: c.type === 'NOT' ? '' : c.v,
+            row: 0,
+            col,
+          })),
+          ...Array.from({ length: cols - 1 - m }, (_, i): LdElement => ({
+            id: id(),
+            kind: 'link',
+            row: 0,
+            col: m + i,
+          })),
+          { id: id(), kind: 'coil', coil: coil.type, variable: coil.v, row: 0, col: cols - 1 },
+          ...branch.map((c, col): LdElement => ({
+            id: id(),
+            kind: 'contact',
+            contact: c.type,
+            variable: c.v,
+            row: 1,
+            col,
+          })),
+        ];
+        return newNetwork({ rows: 2, cols, elements, vlinks: joinAt ? [{ row: 0, boundary: joinAt }] : [] });
+      });
+      const plc = createPlc(
+        compileProgram(project(vars('A BOOL', 'B BOOL', 'X BOOL', 'Y BOOL'), networks)).program!,
+        { cycleMs: 10 },
+      );
+      const mem: Record<string, boolean> = { A: false, B: false, X: false, Y: false };
+      const contact = (c: C, input: boolean): boolean => {
+        const v = mem[c.v]!;
+        switch (c.type) {
+          case 'NO':
+            return input && v;
+          case 'NC':
+            return input && !v;
+          case 'NOT':
+            return !input;
+          case 'P': {
+            const q = v && !c.mem;
+            c.mem = v;
+            return input && q;
+          }
+          case 'N': {
+            const q = !v && !c.mem;
+            c.mem = !v;
+            return input && q;
+          }
+        }
+      };
+      for (let scan = 0; scan < 12; scan++) {
+        mem.A = rand() < 0.5;
+        mem.B = rand() < 0.5;
+        plc.write('A', mem.A);
+        plc.write('B', mem.B);
+        plc.scan();
+        for (const r of rungs) {
+          // Upper row first: the top contacts up to the junction, then the branch, then the rest.
+          let top = true;
+          for (const c of r.top.slice(0, r.joinAt || r.top.length)) top = contact(c, top);
+          let power = top;
+          if (r.joinAt) {
+            let low = true;
+            for (const c of r.branch) low = contact(c, low);
+            power = top || low;
+            for (const c of r.top.slice(r.joinAt)) power = contact(c, power);
+          }
+          const coil = r.coil;
+          if (coil.type === 'COIL') mem[coil.v] = power;
+          else if (coil.type === 'NEG') mem[coil.v] = !power;
+          else if (coil.type === 'SET') mem[coil.v] = power || mem[coil.v]!;
+          else if (coil.type === 'RESET') mem[coil.v] = !power && mem[coil.v]!;
+          else if (coil.type === 'P') {
+            mem[coil.v] = power && !coil.mem;
+            coil.mem = power;
+          } else {
+            mem[coil.v] = !power && !coil.mem;
+            coil.mem = !power;
+          }
+        }
+        expect({ X: plc.read('X'), Y: plc.read('Y') }).toEqual({ X: mem.X, Y: mem.Y });
+      }
+    }
+  });
 });
