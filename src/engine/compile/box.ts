@@ -8,7 +8,7 @@ import {
 } from '../../model/iecTypes';
 import type { BoxElement } from '../../model/elements';
 import { resolveFunction } from '../library/functions';
-import { parseLiteral } from '../values/literals';
+import { isUntypedLiteral, parseLiteral } from '../values/literals';
 import { canWiden } from '../values/types';
 import type { PouContext } from './context';
 import type { GraphNode } from './graph';
@@ -153,7 +153,8 @@ export function lowerBox(
         continue;
       }
       info.src = { from: 'access', access: res.access };
-      if (res.access.kind === 'const' && !/#/.test(operand) && !isElementaryType(pin.type))
+      // An untyped literal (42, 16#FF, 1.5) adopts the block's resolved type; typed ones (INT#5, T#1s) keep theirs.
+      if (res.access.kind === 'const' && isUntypedLiteral(operand) && !isElementaryType(pin.type))
         info.literal = operand;
       else info.type = res.access.type;
       if (res.access.kind === 'const' && isElementaryType(pin.type)) info.type = pin.type;
