@@ -44,6 +44,8 @@ test('networks: insert, title, label, comment, collapse, reorder, delete and und
   // L focuses the label of the cursor's network.
   await draw.clickCell(1, 0, 0);
   await page.keyboard.press('l');
+  // The label field takes focus on the next frame; type only once it has it.
+  await page.waitForFunction(() => document.activeElement?.getAttribute('aria-label') === 'Label of network 2');
   await page.keyboard.type('Loop');
   await page.keyboard.press('Enter');
   expect((await draw.networks())[1]!.label).toBe('Loop');
