@@ -12,10 +12,14 @@ import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { schemaErrors } from '../plcopen/xsd';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
-const CORPUS = join(root, '..', 'shared', 'plcopen', 'examples');
+// RUNGSMITH_PLCOPEN_CORPUS overrides where the corpus is; by default ../shared/plcopen/examples next to the repository.
+const CANDIDATES = [process.env.RUNGSMITH_PLCOPEN_CORPUS, join(root, '..', 'shared', 'plcopen', 'examples')].filter(
+  (d): d is string => Boolean(d),
+);
+const CORPUS = CANDIDATES.find((d) => existsSync(d)) ?? CANDIDATES[CANDIDATES.length - 1]!;
 if (!existsSync(CORPUS)) {
   throw new Error(
-    `The PLCopen corpus is missing: expected the real example files in ${CORPUS} (../shared/plcopen/examples next to the repository).`,
+    `The PLCopen corpus is missing: expected the real example files in ${CORPUS} (../shared/plcopen/examples next to the repository, or set RUNGSMITH_PLCOPEN_CORPUS).`,
   );
 }
 const FILES = readdirSync(CORPUS)
