@@ -7,6 +7,7 @@ import type { Network, Pou, Project, Variable } from '../model/project';
 import { diffNetwork, type Change, type VariableScope } from './changes';
 import type { DocumentState, NetworkPatch } from './documentStore';
 import * as edits from './networkEdits';
+import { transferElements } from './networkTransfer';
 import { declaresLocally, renameInElement } from './variableEdits';
 
 export const newElementId = () => newId<'ElementId'>('e') as ElementId;
@@ -105,6 +106,19 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
       editNetwork('wrapInParallelBranch', network, (n) => edits.wrapInParallelBranch(n, ids, newElementId)),
     moveElements: (network, ids, dRow, dCol) =>
       editNetwork('moveElements', network, (n) => edits.moveElements(n, ids, dRow, dCol)),
+    moveElementsToNetwork: (from, ids, to, at) => {
+      const project = get().project;
+      const src = locate(project, from);
+      const dst = locate(project, to);
+      if (!src || !dst) return false;
+      const t = transferElements(src.net, dst.net, ids, at);
+      if (!t) return false;
+      commit('moveElementsToNetwork', [
+        ...diffNetwork(src.pou.id, src.net, t.source),
+        ...diffNetwork(dst.pou.id, dst.net, t.target),
+      ]);
+      return true;
+    },
     deleteElements: (network, ids) => {
       editNetwork('deleteElements', network, (n) => edits.deleteElements(n, ids));
     },

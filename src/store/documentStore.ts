@@ -24,6 +24,8 @@
 //   insertInSeries(net, cell, t)      always inserts in series (see src/store/networkEdits.ts)
 //   wrapInParallelBranch(net, ids)    new row below with links, vertical links at both ends
 //   moveElements(net, ids, dRow, dCol)   whole cells; false if blocked/off-grid (a drag commits once)
+//   moveElementsToNetwork(from, ids, to, at)  drag into another network: the selection's top-left
+//                                     goes to cell `at` of `to`, one undo step (src/store/networkTransfer.ts)
 //   deleteElements(net, ids)          leaves the cells empty
 //   updateElement(id, patch)          e.g. { variable: 'Start' }, { inputs: { PT: 'T#5s' } }
 //   pasteElements(net, clip, cell)    clip from copyElements(); returns the new ids
@@ -90,6 +92,7 @@ export interface DocumentState {
   insertInSeries(network: NetworkId, cell: Cell, t: ElementTemplate): ElementId | undefined;
   wrapInParallelBranch(network: NetworkId, ids: readonly ElementId[]): boolean;
   moveElements(network: NetworkId, ids: readonly ElementId[], dRow: number, dCol: number): boolean;
+  moveElementsToNetwork(from: NetworkId, ids: readonly ElementId[], to: NetworkId, at: Cell): boolean;
   deleteElements(network: NetworkId, ids: readonly ElementId[]): void;
   updateElement(id: ElementId, patch: ElementPatch): void;
   pasteElements(network: NetworkId, clip: ClipContent, at: Cell): ElementId[];

@@ -1,0 +1,71 @@
+// Moving elements from one network to another (a drag that ends over another network's grid).
+// The elements keep their ids and their relative positions; the selection's top-left cell goes to
+// `at` in the target. Horizontal links in the way in the target go (like a move within a network);
+// any other element in the way refuses the move. Vertical links inside the moved area (strictly
+// between its left and right edges) move along; links on its edges stay in the source, where
+// other paths may still use them. The target grows to fit.
+import type { LdElement, VLink } from '../model/elements';
+import { elementCells, elementSize } from '../model/factory';
+import { cellKey, type Cell } from '../model/grid';
+import type { ElementId } from '../model/ids';
+import type { Network } from '../model/project';
+import { boundsOf, occupancy } from './networkEdits';
+
+export interface Transfer {
+  readonly source: Network;
+  readonly target: Network;
+}
+
+/** The source without the elements and the target with them, or undefined when blocked or off-grid. */
+export function transferElements(
+  source: Network,
+  target: Network,
+  ids: readonly ElementId[],
+  at: Cell,
+): Transfer | undefined {
+  if (source.id === target.id || at.row < 0 || at.col < 0) return undefined;
+  const set = new Set(ids);
+  const moving = source.elements.filter((e) => set.has(e.id));
+  const b = boundsOf(moving);
+  if (!b) return undefined;
+  const dRow = at.row - b.top;
+  const dCol = at.col - b.left;
+  const moved: LdElement[] = moving.map((e) => ({ ...e, row: e.row + dRow, col: e.col + dCol }));
+  const occ = occupancy(target);
+  const replaced = new Set<ElementId>();
+  for (const el of moved)
+    for (const c of elementCells(el)) {
+      const other = occ.get(cellKey(c.row, c.col));
+      if (!other) continue;
+      if (other.kind !== 'link') return undefined;
+      replaced.add(other.id);
+    }
+  const inside = (v: VLink) =>
+    v.row >= b.top && v.row < b.bottom && v.boundary > b.left && v.boundary < b.right;
+  const carried = source.vlinks.filter(inside);
+  const vlinks = [...target.vlinks];
+  for (const v of carried) {
+    const w = { row: v.row + dRow, boundary: v.boundary + dCol };
+    if (!vlinks.some((x) => x.row === w.row && x.boundary === w.boundary)) vlinks.push(w);
+  }
+  const elements = [...target.elements.filter((e) => !replaced.has(e.id)), ...moved];
+  let rows = target.rows;
+  let cols = target.cols;
+  for (const el of elements) {
+    const s = elementSize(el);
+    rows = Math.max(rows, el.row + s.rows);
+    cols = Math.max(cols, el.col + s.cols);
+  }
+  for (const v of vlinks) {
+    rows = Math.max(rows, v.row + 2);
+    cols = Math.max(cols, v.boundary);
+  }
+  return {
+    source: {
+      ...source,
+      elements: source.elements.filter((e) => !set.has(e.id)),
+      vlinks: source.vlinks.filter((v) => !inside(v)),
+    },
+    target: { ...target, elements, vlinks, rows, cols },
+  };
+}
