@@ -1,7 +1,9 @@
 // Editor benchmark: a generated 1,000-network project (~10,000 elements) loaded into the built
 // app in Chromium. Prints time to first render, frame times while scrolling (rAF deltas with the
 // frame-rate cap off, so a delta is the real cost of a frame), and the time from one edit
-// command to the next painted frame. Run with `npm run bench:editor` (builds first).
+// command to the next painted frame. Run with `npm run bench:editor` (builds first). To measure a
+// build in another directory (so parallel test runs keep their dist/), build there and point
+// RUNGSMITH_DIST at it: `npx vite build --outDir /tmp/x && RUNGSMITH_DIST=/tmp/x npx tsx bench/editor.bench.ts`.
 import { existsSync } from 'node:fs';
 import { chromium } from 'playwright-core';
 import { preview } from 'vite';
@@ -47,11 +49,13 @@ const percentile = (sorted: number[], p: number) =>
 const round = (n: number) => Math.round(n * 10) / 10;
 
 async function main() {
-  if (!existsSync('dist/index.html'))
-    throw new Error('dist/ is missing: run "npm run bench:editor" (it builds first).');
+  const dist = process.env.RUNGSMITH_DIST ?? 'dist';
+  if (!existsSync(`${dist}/index.html`))
+    throw new Error(`${dist}/ is missing: run "npm run bench:editor" (it builds first).`);
   const project = generate();
   const elementCount = project.pous[0]!.networks.reduce((n, net) => n + net.elements.length, 0);
   const server = await preview({
+    build: { outDir: dist },
     preview: { port: 0, host: '127.0.0.1', strictPort: false },
     logLevel: 'warn',
   });

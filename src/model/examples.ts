@@ -32,6 +32,14 @@ const coil = (row: number, name: string, type: CoilType = 'COIL'): LdElement => 
   row,
   col: COLS - 1,
 });
+/** A jump in the last column, touching the right rail. */
+const jump = (row: number, target: string): LdElement => ({
+  id: eid(),
+  kind: 'jump',
+  target,
+  row,
+  col: COLS - 1,
+});
 /** Horizontal lines on `row` over columns from..to (inclusive). */
 const line = (row: number, from: number, to: number): LdElement[] =>
   Array.from({ length: Math.max(0, to - from + 1) }, (_, i) => ({
@@ -40,6 +48,12 @@ const line = (row: number, from: number, to: number): LdElement[] =>
     row,
     col: from + i,
   }));
+/** Contacts in series on row 0 from the left rail (columns 0, 1, ...), wired across to `end` in the last column. */
+const rung = (contacts: LdElement[], end: LdElement): LdElement[] => [
+  ...contacts,
+  ...line(0, contacts.length, COLS - 2),
+  end,
+];
 const box = (
   row: number,
   col: number,
@@ -114,10 +128,7 @@ function motorStartStop(): Project {
         'Motor seal-in',
         'Start OR Motor (seal-in), AND NOT Stop, drives the motor. Stop wins when both buttons are pressed.',
         [
-          contact(0, 0, 'Start'),
-          contact(0, 1, 'Stop', 'NC'),
-          ...line(0, 2, COLS - 2),
-          coil(0, 'Motor'),
+          ...rung([contact(0, 0, 'Start'), contact(0, 1, 'Stop', 'NC')], coil(0, 'Motor')),
           contact(1, 0, 'Motor'),
         ],
         { vlinks: [{ row: 0, boundary: 1 }] },
@@ -135,9 +146,7 @@ function trafficLight(): Project {
       ...line(0, 4, COLS - 1),
     ]);
   const lampNet = (title: string, lamp: string, contacts: LdElement[]) =>
-    network(title, `${lamp} lamp.`, [...contacts, ...line(0, contacts.length, COLS - 2), coil(0, lamp)], {
-      rows: 1,
-    });
+    network(title, `${lamp} lamp.`, rung(contacts, coil(0, lamp)), { rows: 1 });
   return program(
     'Traffic light',
     'Three on-delay timers in a chain: red for 5 s, green for 4 s, yellow for 1 s, then red again (the restart takes two scans: the end of yellow resets the chain in the next scan).',
@@ -220,23 +229,19 @@ function jumpLabel(): Project {
       network(
         'Maintenance?',
         'In maintenance mode, skip the conveyor network.',
-        [
-          contact(0, 0, 'Maintenance'),
-          ...line(0, 1, COLS - 2),
-          { id: eid(), kind: 'jump', target: 'MAINT', row: 0, col: COLS - 1 },
-        ],
+        rung([contact(0, 0, 'Maintenance')], jump(0, 'MAINT')),
         { rows: 1 },
       ),
       network(
         'Conveyor',
         'Runs the conveyor while a part is waiting (skipped in maintenance).',
-        [contact(0, 0, 'PartWaiting'), ...line(0, 1, COLS - 2), coil(0, 'Conveyor')],
+        rung([contact(0, 0, 'PartWaiting')], coil(0, 'Conveyor')),
         { rows: 1 },
       ),
       network(
         'Maintenance lamp',
         'The jump lands here.',
-        [contact(0, 0, 'Maintenance'), ...line(0, 1, COLS - 2), coil(0, 'MaintenanceLamp')],
+        rung([contact(0, 0, 'Maintenance')], coil(0, 'MaintenanceLamp')),
         { rows: 1, label: 'MAINT' },
       ),
     ],

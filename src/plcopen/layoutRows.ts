@@ -135,23 +135,39 @@ export function placeRows(
     }
     const id = nextId();
     elementOf.set(i, id);
-    const base = { id, row: r, col: c };
+    // Literal objects, not spreads of a shared base: this runs for every element of the file.
     switch (n.kind) {
       case 'contact':
-        elements.push({ ...base, kind: 'contact', contact: n.contact ?? 'NO', variable: n.variable ?? '' });
+        elements.push({
+          id,
+          row: r,
+          col: c,
+          kind: 'contact',
+          contact: n.contact ?? 'NO',
+          variable: n.variable ?? '',
+        });
         break;
       case 'coil':
-        elements.push({ ...base, kind: 'coil', coil: n.coil ?? 'COIL', variable: n.variable ?? '' });
+        elements.push({
+          id,
+          row: r,
+          col: c,
+          kind: 'coil',
+          coil: n.coil ?? 'COIL',
+          variable: n.variable ?? '',
+        });
         break;
       case 'jump':
-        elements.push({ ...base, kind: 'jump', target: n.target ?? '' });
+        elements.push({ id, row: r, col: c, kind: 'jump', target: n.target ?? '' });
         break;
       case 'return':
-        elements.push({ ...base, kind: 'return' });
+        elements.push({ id, row: r, col: c, kind: 'return' });
         break;
       case 'box':
         elements.push({
-          ...base,
+          id,
+          row: r,
+          col: c,
           kind: 'box',
           blockType: n.blockType ?? '',
           ...(n.instance ? { instance: n.instance } : {}),

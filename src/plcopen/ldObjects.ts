@@ -3,18 +3,16 @@
 import type { Point } from './geometry';
 import { child, childrenNamed, deepText, type XmlElement } from './xml/parse';
 
+/** A wire as recorded on its consumer. Route points and pin offsets are not read: the grid is built
+ * from the wiring (topology), and these files run to hundreds of thousands of wires. */
 export interface RawConnection {
   readonly ref: string;
   readonly formal?: string;
-  /** Route points: first at the consumer, last at the producer. */
-  readonly points: readonly Point[];
 }
 
 export interface RawPin {
   readonly pin: string;
   readonly connections: readonly RawConnection[];
-  /** Absolute pin position when relPosition is given. */
-  readonly at?: Point;
   readonly negated: boolean;
   readonly edge?: string;
   /** CODESYS writes a variable assigned to a block output as `<connectionPointOut><expression>`. */
@@ -47,6 +45,8 @@ function readPoint(el: XmlElement | undefined): Point | undefined {
 }
 
 const NO_ATTRS: Readonly<Record<string, string>> = {};
+/** Output pins never hold connections (PLCopen records wires on the consumer side). */
+const NO_CONNECTIONS: readonly RawConnection[] = Object.freeze([]);
 
 function pinFlags(
   pin: RawPin & { negated: boolean; edge?: string },
@@ -62,7 +62,6 @@ type MutablePin = { -readonly [K in keyof RawPin]: RawPin[K] };
 
 function readPointIn(
   cp: XmlElement | undefined,
-  origin: Point,
   pin: string,
   attrs: Readonly<Record<string, string>> = NO_ATTRS,
 ): RawPin {
@@ -70,16 +69,12 @@ function readPointIn(
   const out: MutablePin = { pin, connections, negated: false };
   if (cp) {
     for (const c of cp.children) {
-      if (c.name === 'relPosition') out.at = { x: origin.x + num(c.attrs.x), y: origin.y + num(c.attrs.y) };
-      else if (c.name === 'connection') {
-        const points: Point[] = [];
-        for (const p of c.children)
-          if (p.name === 'position') points.push({ x: num(p.attrs.x), y: num(p.attrs.y) });
+      if (c.name === 'connection') {
         const formal = c.attrs.formalParameter;
         connections.push(
           formal !== undefined && formal !== ''
-            ? { ref: c.attrs.refLocalId ?? '', formal, points }
-            : { ref: c.attrs.refLocalId ?? '', points },
+            ? { ref: c.attrs.refLocalId ?? '', formal }
+            : { ref: c.attrs.refLocalId ?? '' },
         );
       }
     }
@@ -90,15 +85,13 @@ function readPointIn(
 
 function readPointOut(
   cp: XmlElement | undefined,
-  origin: Point,
   pin: string,
   attrs: Readonly<Record<string, string>> = NO_ATTRS,
 ): RawPin {
-  const out: MutablePin = { pin, connections: [], negated: false };
+  const out: MutablePin = { pin, connections: NO_CONNECTIONS, negated: false };
   if (cp) {
     for (const c of cp.children) {
-      if (c.name === 'relPosition') out.at = { x: origin.x + num(c.attrs.x), y: origin.y + num(c.attrs.y) };
-      else if (c.name === 'expression') {
+      if (c.name === 'expression') {
         const e = c.text.trim();
         if (e) out.expression = e;
       }
@@ -117,14 +110,10 @@ export function readLdObjects(body: XmlElement): RawObject[] {
     let text = '';
     switch (el.name) {
       case 'leftPowerRail':
-        childrenNamed(el, 'connectionPointOut').forEach((cp, i) =>
-          outputs.push(readPointOut(cp, pos, String(i))),
-        );
+        childrenNamed(el, 'connectionPointOut').forEach((cp, i) => outputs.push(readPointOut(cp, String(i))));
         break;
       case 'rightPowerRail':
-        childrenNamed(el, 'connectionPointIn').forEach((cp, i) =>
-          inputs.push(readPointIn(cp, pos, String(i))),
-        );
+        childrenNamed(el, 'connectionPointIn').forEach((cp, i) => inputs.push(readPointIn(cp, String(i))));
         break;
       case 'contact':
       case 'coil':
@@ -132,19 +121,19 @@ export function readLdObjects(body: XmlElement): RawObject[] {
       case 'outVariable':
       case 'inOutVariable':
         if (child(el, 'connectionPointIn') || el.name !== 'inVariable')
-          inputs.push(readPointIn(child(el, 'connectionPointIn'), pos, 'in'));
+          inputs.push(readPointIn(child(el, 'connectionPointIn'), 'in'));
         if (child(el, 'connectionPointOut') || el.name !== 'outVariable')
-          outputs.push(readPointOut(child(el, 'connectionPointOut'), pos, 'out'));
+          outputs.push(readPointOut(child(el, 'connectionPointOut'), 'out'));
         text = (child(el, 'variable') ?? child(el, 'expression'))?.text.trim() ?? '';
         break;
       case 'jump':
       case 'return':
       case 'connector':
-        inputs.push(readPointIn(child(el, 'connectionPointIn'), pos, 'in'));
+        inputs.push(readPointIn(child(el, 'connectionPointIn'), 'in'));
         text = el.attrs.label ?? el.attrs.name ?? '';
         break;
       case 'continuation':
-        outputs.push(readPointOut(child(el, 'connectionPointOut'), pos, 'out'));
+        outputs.push(readPointOut(child(el, 'connectionPointOut'), 'out'));
         text = el.attrs.name ?? '';
         break;
       case 'label':
@@ -157,21 +146,13 @@ export function readLdObjects(body: XmlElement): RawObject[] {
       }
       case 'block': {
         for (const v of childrenNamed(child(el, 'inputVariables') ?? el, 'variable'))
-          inputs.push(
-            readPointIn(child(v, 'connectionPointIn'), pos, v.attrs.formalParameter ?? '', v.attrs),
-          );
+          inputs.push(readPointIn(child(v, 'connectionPointIn'), v.attrs.formalParameter ?? '', v.attrs));
         for (const v of childrenNamed(child(el, 'inOutVariables') ?? el, 'variable')) {
-          inputs.push(
-            readPointIn(child(v, 'connectionPointIn'), pos, v.attrs.formalParameter ?? '', v.attrs),
-          );
-          outputs.push(
-            readPointOut(child(v, 'connectionPointOut'), pos, v.attrs.formalParameter ?? '', v.attrs),
-          );
+          inputs.push(readPointIn(child(v, 'connectionPointIn'), v.attrs.formalParameter ?? '', v.attrs));
+          outputs.push(readPointOut(child(v, 'connectionPointOut'), v.attrs.formalParameter ?? '', v.attrs));
         }
         for (const v of childrenNamed(child(el, 'outputVariables') ?? el, 'variable'))
-          outputs.push(
-            readPointOut(child(v, 'connectionPointOut'), pos, v.attrs.formalParameter ?? '', v.attrs),
-          );
+          outputs.push(readPointOut(child(v, 'connectionPointOut'), v.attrs.formalParameter ?? '', v.attrs));
         text = el.attrs.typeName ?? '';
         break;
       }

@@ -79,6 +79,17 @@ describe('SteppingLease with a real gateway', () => {
     });
     bindings = checkBindings(project, client.snapshot.points).bindings;
   };
+  /** Connected, Start on at the device, one confirmed step taken: stepping mode with the output on. */
+  const steppingWithOutputOn = async () => {
+    await connect();
+    const sim = new OneRungSim();
+    client.simulate({ '%IX0.0': true });
+    await eventually(() => client.snapshot.values['%IX0.0'] === true, 3000, 'input');
+    lease.step({ kind: 'scans', scans: 1 }, sim.context(bindings));
+    lease.confirm();
+    await eventually(() => written() === true, 3000, 'output on');
+    return sim;
+  };
   afterEach(async () => {
     lease.end('stop');
     client.simulate({ '%IX0.0': false });
@@ -140,13 +151,7 @@ describe('SteppingLease with a real gateway', () => {
   });
 
   it('Reset (stop) writes the safe state and ends the heartbeat; the next step asks again', async () => {
-    await connect();
-    const sim = new OneRungSim();
-    client.simulate({ '%IX0.0': true });
-    await eventually(() => client.snapshot.values['%IX0.0'] === true, 3000, 'input');
-    lease.step({ kind: 'scans', scans: 1 }, sim.context(bindings));
-    lease.confirm();
-    await eventually(() => written() === true, 3000, 'output on');
+    const sim = await steppingWithOutputOn();
     lease.end('stop');
     expect(sim.subscribed).toBe(false);
     await eventually(() => written() === false && client.snapshot.status?.watchdog.state === 'idle', 3000, 'safe state');
@@ -158,13 +163,7 @@ describe('SteppingLease with a real gateway', () => {
   });
 
   it('Run hands the lease over without a safe-state gap', async () => {
-    await connect();
-    const sim = new OneRungSim();
-    client.simulate({ '%IX0.0': true });
-    await eventually(() => client.snapshot.values['%IX0.0'] === true, 3000, 'input');
-    lease.step({ kind: 'scans', scans: 1 }, sim.context(bindings));
-    lease.confirm();
-    await eventually(() => written() === true, 3000, 'output on');
+    const sim = await steppingWithOutputOn();
     lease.end('run');
     expect(lease.snapshot().phase).toBe('off');
     expect(sim.subscribed).toBe(false);

@@ -1,24 +1,17 @@
 // Networks (add, title, label, comment, collapse, reorder, delete) and canvas gestures (drag to
 // move, rubber band, zoom, block picker), driven with mouse and keyboard in Chromium.
-import { afterAll, beforeAll, beforeEach, expect, inject, test } from 'vitest';
-import type { Browser, Page } from 'playwright-core';
-import { collectPageErrors, launchChromium } from './browser';
+import { afterAll, beforeAll, beforeEach, expect, test } from 'vitest';
+import type { Page } from 'playwright-core';
+import { openApp, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 
-let browser: Browser;
+const browser = useChromium();
 let page: Page;
 let draw: DrawPage;
 let errors: string[];
 
 beforeAll(async () => {
-  browser = await launchChromium();
-  page = await browser.newPage({ viewport: { width: 1440, height: 900 } });
-  errors = collectPageErrors(page);
-  await page.goto(inject('appUrl'));
-  await page
-    .getByRole('heading', { name: /Rungsmith/ })
-    .first()
-    .waitFor();
+  ({ page, errors } = await openApp(browser()));
   draw = new DrawPage(page);
 });
 
@@ -26,9 +19,8 @@ beforeEach(async () => {
   await page.evaluate(() => window.rungsmith!.documentStore!.getState().newProject('Networks'));
 });
 
-afterAll(async () => {
+afterAll(() => {
   expect(errors).toEqual([]);
-  await browser?.close();
 });
 
 const titles = async () => (await draw.networks()).map((n) => n.title);

@@ -1,10 +1,10 @@
 // A new user draws a start/stop seal-in rung with the mouse, then another with the keyboard only.
-import { afterAll, beforeAll, expect, inject, test } from 'vitest';
-import type { Browser, Page } from 'playwright-core';
-import { collectPageErrors, launchChromium } from './browser';
+import { beforeAll, expect, test } from 'vitest';
+import type { Page } from 'playwright-core';
+import { openApp, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 
-let browser: Browser;
+const browser = useChromium();
 let page: Page;
 let draw: DrawPage;
 let errors: string[];
@@ -12,20 +12,9 @@ let errors: string[];
 const CHECKS = { timeout: 10_000 };
 
 beforeAll(async () => {
-  browser = await launchChromium();
-  page = await browser.newPage({ viewport: { width: 1440, height: 900 } });
-  errors = collectPageErrors(page);
-  await page.goto(inject('appUrl'));
-  await page
-    .getByRole('heading', { name: /Rungsmith/ })
-    .first()
-    .waitFor();
+  ({ page, errors } = await openApp(browser()));
   await page.evaluate(() => window.rungsmith!.documentStore!.getState().newProject('Seal-in'));
   draw = new DrawPage(page);
-});
-
-afterAll(async () => {
-  await browser?.close();
 });
 
 /** The seal-in rung: Start and /Stop in series to the Motor coil, Motor in parallel with Start. */

@@ -3,6 +3,7 @@
 import type { Page } from 'playwright-core';
 import { CELL_H, CELL_W, headerHeight, layoutNetworks, RAIL_X } from '../../src/editor/canvas/geometry';
 import type { Network } from '../../src/model/project';
+import { chooseMenuItem } from './appPage';
 
 export interface ElementSummary {
   readonly kind: string;
@@ -87,9 +88,8 @@ export class DrawPage {
     await input.waitFor({ state: 'detached' });
   }
 
-  async menu(menu: string, item: string) {
-    await this.page.getByTestId(`menu-${menu.toLowerCase()}`).click();
-    await this.page.getByRole('menuitem', { name: item }).click();
+  menu(menu: string, item: string): Promise<void> {
+    return chooseMenuItem(this.page, menu, item);
   }
 
   async problemsSummary(): Promise<string> {

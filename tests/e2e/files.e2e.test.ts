@@ -1,25 +1,17 @@
 // Files: autosave and recovery after a reload, opening good and bad files, saving, "New" asking
 // before discarding work, and the built-in examples.
-import { readFile } from 'node:fs/promises';
-import { afterAll, beforeAll, expect, inject, test } from 'vitest';
-import type { Browser } from 'playwright-core';
-import { launchChromium } from './browser';
+import { expect, test } from 'vitest';
+import { useChromium } from './appPage';
 import { EditorPage, poll } from './panelsPage';
 import { EXAMPLES } from '../../src/model/examples';
 import { loadProject, saveProject } from '../../src/model/load';
 import { newNetwork, newPou, newProject } from '../../src/model/factory';
 import type { ElementId } from '../../src/model/ids';
 
-let browser: Browser;
-beforeAll(async () => {
-  browser = await launchChromium();
-});
-afterAll(async () => {
-  await browser?.close();
-});
+const browser = useChromium();
 
 test('after a reload the work is restored from the browser autosave', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
+  const editor = await EditorPage.open(browser());
   await editor.tab('Variables');
   await editor.declare('Start', { address: '%IX0.0' });
   await editor.declare('Motor', { address: '%QX0.0', comment: 'Conveyor motor' });
@@ -44,7 +36,7 @@ test('after a reload the work is restored from the browser autosave', async () =
 });
 
 test('opening a corrupt or invalid file shows located errors and keeps the open project', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
+  const editor = await EditorPage.open(browser());
   await editor.tab('Variables');
   await editor.declare('Keep', { address: '%MX0.0' });
   const before = await editor.project();
@@ -83,7 +75,7 @@ test('opening a corrupt or invalid file shows located errors and keeps the open 
 });
 
 test('"New" asks before discarding unsaved work; Save downloads the project as .json', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
+  const editor = await EditorPage.open(browser());
   await editor.tab('Variables');
   await editor.declare('Pump', { address: '%QX0.1' });
 
@@ -93,11 +85,9 @@ test('"New" asks before discarding unsaved work; Save downloads the project as .
   await ask.getByRole('button', { name: 'Cancel' }).click();
   expect((await editor.project()).pous[0]?.variables.map((v) => v.name)).toEqual(['Pump']);
 
-  const download = editor.page.waitForEvent('download');
-  await editor.menu('File', 'Save');
-  const file = await download;
-  expect(file.suggestedFilename()).toBe('Untitled.json');
-  const saved = loadProject(await readFile((await file.path())!, 'utf8'));
+  const file = await editor.download(() => editor.menu('File', 'Save'));
+  expect(file.name).toBe('Untitled.json');
+  const saved = loadProject(file.text);
   expect(saved.ok && saved.project).toEqual(await editor.project());
   expect(await editor.page.getByTestId('project-name').textContent()).not.toContain('•');
 
@@ -107,9 +97,8 @@ test('"New" asks before discarding unsaved work; Save downloads the project as .
   await editor.declare('Lamp');
   // Ctrl+S saves from anywhere outside a text field.
   await editor.page.getByRole('heading', { name: 'Rungsmith' }).click();
-  const again = editor.page.waitForEvent('download');
-  await editor.page.keyboard.press('Control+s');
-  const second = loadProject(await readFile((await (await again).path())!, 'utf8'));
+  const again = await editor.download(() => editor.page.keyboard.press('Control+s'));
+  const second = loadProject(again.text);
   expect(second.ok && second.project.pous[0]?.variables.map((v) => v.name)).toEqual(['Lamp']);
   await editor.declare('Fan');
   await editor.menu('File', 'New project');
@@ -120,7 +109,7 @@ test('"New" asks before discarding unsaved work; Save downloads the project as .
 });
 
 test('every built-in example loads from the File menu and shows no problems', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
+  const editor = await EditorPage.open(browser());
   await editor.tab('Problems');
   for (const example of EXAMPLES) {
     await editor.menu('File', `Example: ${example.title}`);
@@ -133,7 +122,7 @@ test('every built-in example loads from the File menu and shows no problems', as
 });
 
 test('a project file dropped on the page opens like File > Open', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
+  const editor = await EditorPage.open(browser());
   const example = EXAMPLES.find((x) => x.id === 'parts-counter')!.build();
   await editor.page.evaluate(
     ([name, text]) => {

@@ -1,28 +1,41 @@
 // The Hardware panel in a real Chromium, against the gateway serving the built app.
-import type { Browser, Page } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
 import { eventually, mbpoll, mbpollValues } from '../gateway/helpers';
-import { collectPageErrors, launchChromium } from './browser';
+import { openApp, useChromium } from './appPage';
+import { collectPageErrors } from './browser';
 import { SimPage } from './simPage';
 
 describe('Hardware panel', () => {
   let gw: RunningGateway;
-  let browser: Browser;
   let page: Page;
   let errors: string[];
 
   beforeAll(async () => {
     gw = await startGateway({ port: 0, config: resolveConfig({ simulated: { modbusPort: 0 } }), distDir: 'dist' });
-    browser = await launchChromium();
-    page = await browser.newPage();
-    errors = collectPageErrors(page);
   });
   afterAll(async () => {
-    await browser?.close();
     await gw?.close();
   });
+  const browser = useChromium();
+  beforeAll(async () => {
+    page = await browser().newPage();
+    errors = collectPageErrors(page);
+  });
+
+  /** A second page on the gateway's app: the motor example open, the Hardware panel connected as controller. */
+  async function openMotorOnHardware() {
+    const { page: journey, errors: journeyErrors } = await openApp(browser(), gw.url);
+    const sim = new SimPage(journey);
+    await sim.openExample('Motor start/stop (seal-in)');
+    await journey.getByTestId('tab-hardware').click();
+    const panel = journey.getByTestId('hardware-panel');
+    await panel.getByTestId('hw-connect').click();
+    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
+    return { journey, journeyErrors, sim, panel };
+  }
 
   it('opens from the gateway URL, connects with the token from the fragment and shows the simulated points', async () => {
     await page.goto(gw.url);
@@ -67,15 +80,7 @@ describe('Hardware panel', () => {
   });
 
   it('runs the motor example on the simulated device: Start from the panel lights the Motor coil and its Modbus coil', async () => {
-    const journey = await browser.newPage({ viewport: { width: 1440, height: 900 } });
-    const journeyErrors = collectPageErrors(journey);
-    await journey.goto(gw.url);
-    const sim = new SimPage(journey);
-    await sim.openExample('Motor start/stop (seal-in)');
-    await journey.getByTestId('tab-hardware').click();
-    const panel = journey.getByTestId('hardware-panel');
-    await panel.getByTestId('hw-connect').click();
-    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
+    const { journey, journeyErrors, sim, panel } = await openMotorOnHardware();
     // The example's Start, Stop and Motor are bound to the gateway's points: no mapping problems.
     expect(await panel.getByTestId('hw-mapping').count()).toBe(0);
     await expect.poll(() => panel.getByTestId('hw-point-%IX0.0').locator('td').nth(1).textContent()).toBe('Start');
@@ -102,15 +107,7 @@ describe('Hardware panel', () => {
   });
 
   it('steps the motor example on the simulated device after a confirmation, and keeps the lease fed while paused', async () => {
-    const journey = await browser.newPage({ viewport: { width: 1440, height: 900 } });
-    const journeyErrors = collectPageErrors(journey);
-    await journey.goto(gw.url);
-    const sim = new SimPage(journey);
-    await sim.openExample('Motor start/stop (seal-in)');
-    await journey.getByTestId('tab-hardware').click();
-    const panel = journey.getByTestId('hardware-panel');
-    await panel.getByTestId('hw-connect').click();
-    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
+    const { journey, journeyErrors, sim, panel } = await openMotorOnHardware();
     const port = gw.simulated?.modbusServerPort ?? 0;
     const coil0 = async () => mbpollValues(await mbpoll(port, ['-t', '0', '-r', '0', '127.0.0.1']))[0];
 

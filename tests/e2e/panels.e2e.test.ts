@@ -1,21 +1,14 @@
 // A PLC programmer declares variables in the table, sees a rule violation in the problems list,
 // jumps to it, fixes it from the inspector and sees it disappear.
-import { afterAll, beforeAll, expect, inject, test } from 'vitest';
-import type { Browser } from 'playwright-core';
-import { launchChromium } from './browser';
+import { expect, test } from 'vitest';
+import { useChromium } from './appPage';
 import { EditorPage, poll } from './panelsPage';
 import { newNetwork, newPou, newProject, variable } from '../../src/model/factory';
 import type { LdElement } from '../../src/model/elements';
 import type { ElementId } from '../../src/model/ids';
 import { saveProject } from '../../src/model/load';
 
-let browser: Browser;
-beforeAll(async () => {
-  browser = await launchChromium();
-});
-afterAll(async () => {
-  await browser?.close();
-});
+const browser = useChromium();
 
 const id = (s: string) => s as ElementId;
 
@@ -37,8 +30,16 @@ function sealInWithoutMotor(): string {
   return saveProject(newProject('Conveyor', { pous: [main] }));
 }
 
+/** A fresh editor with the Conveyor project opened from a file. */
+async function openConveyor(): Promise<EditorPage> {
+  const editor = await EditorPage.open(browser());
+  await editor.openFile('conveyor.json', sealInWithoutMotor());
+  await poll(async () => (await editor.project()).name).toBe('Conveyor');
+  return editor;
+}
+
 test('declaring variables in the table, with mistakes shown inline until fixed', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
+  const editor = await EditorPage.open(browser());
   await editor.tab('Variables');
 
   await editor.declare('Start', { address: '%IX0.0', comment: 'Start push button' });
@@ -97,9 +98,7 @@ test('declaring variables in the table, with mistakes shown inline until fixed',
 });
 
 test('a rule violation is listed with its rule id, jumps to the element, and disappears once fixed', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
-  await editor.openFile('conveyor.json', sealInWithoutMotor());
-  await poll(async () => (await editor.project()).name).toBe('Conveyor');
+  const editor = await openConveyor();
 
   await editor.tab('Problems');
   const problem = editor.problems.getByTestId('problem').filter({ hasText: 'LD-R08' });
@@ -141,9 +140,7 @@ test('a rule violation is listed with its rule id, jumps to the element, and dis
 });
 
 test('typing the variable of a coil completes from the table and offers to declare new names', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
-  await editor.openFile('conveyor.json', sealInWithoutMotor());
-  await poll(async () => (await editor.project()).name).toBe('Conveyor');
+  const editor = await openConveyor();
   await editor.tab('Problems');
   await editor.problems.getByTestId('problem').filter({ hasText: 'LD-R08' }).click();
   await editor.tab('Inspector');
@@ -199,7 +196,7 @@ test('typing the variable of a coil completes from the table and offers to decla
 });
 
 test('the inspector edits a timer preset as a literal and explains a wrong one', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
+  const editor = await EditorPage.open(browser());
   await editor.menu('File', 'Example: Traffic light (TON chain)');
   await poll(async () => (await editor.project()).name).toBe('Traffic light');
   // Find the RedTime timer from the variable table, then edit it in the inspector.

@@ -1,8 +1,10 @@
 // Page object for the editor's panels (variables, inspector, problems) and the File menu.
+import { readFile } from 'node:fs/promises';
 import type { Browser, Locator, Page } from 'playwright-core';
 import type { Project } from '../../src/model/project';
 import type { UiState } from '../../src/store/uiStore';
-import { expect } from 'vitest';
+import { expect, inject } from 'vitest';
+import { chooseMenuItem, waitForApp } from './appPage';
 import { collectPageErrors } from './browser';
 
 /** expect.poll with room for the checks: they run after a quiet time, in an idle moment, in a worker. */
@@ -14,15 +16,13 @@ export class EditorPage {
     this.errors = collectPageErrors(page);
   }
 
-  static async open(browser: Browser, url: string): Promise<EditorPage> {
+  /** Opens the app (the built preview unless `url` says otherwise) in its own context that accepts downloads. */
+  static async open(browser: Browser, url: string = inject('appUrl')): Promise<EditorPage> {
     const context = await browser.newContext({ acceptDownloads: true });
     const page = await context.newPage();
     const editor = new EditorPage(page);
     await page.goto(url);
-    await page
-      .getByRole('heading', { name: /Rungsmith/ })
-      .first()
-      .waitFor();
+    await waitForApp(page);
     return editor;
   }
 
@@ -72,16 +72,29 @@ export class EditorPage {
     await field.press('Enter');
   }
 
-  async menu(menu: string, item: string) {
-    await this.page.getByTestId(`menu-${menu.toLowerCase()}`).click();
-    await this.page.getByRole('menuitem', { name: item }).click();
+  menu(menu: string, item: string): Promise<void> {
+    return chooseMenuItem(this.page, menu, item);
+  }
+
+  /** Runs a menu item that opens the browser's file chooser and picks a file holding `text`. */
+  async chooseFile(menu: string, item: string, file: { name: string; mimeType: string; text: string }) {
+    const chooser = this.page.waitForEvent('filechooser');
+    await this.menu(menu, item);
+    const { name, mimeType, text } = file;
+    await (await chooser).setFiles({ name, mimeType, buffer: Buffer.from(text) });
+  }
+
+  /** Does what starts a download (a menu item, a shortcut) and returns the file's suggested name and text. */
+  async download(start: () => Promise<void>): Promise<{ name: string; text: string }> {
+    const download = this.page.waitForEvent('download');
+    await start();
+    const file = await download;
+    return { name: file.suggestedFilename(), text: await readFile((await file.path())!, 'utf8') };
   }
 
   /** File > Open… with a file the user picks in the browser's file chooser. */
-  async openFile(name: string, text: string) {
-    const chooser = this.page.waitForEvent('filechooser');
-    await this.menu('File', 'Open…');
-    await (await chooser).setFiles({ name, mimeType: 'application/json', buffer: Buffer.from(text) });
+  openFile(name: string, text: string): Promise<void> {
+    return this.chooseFile('File', 'Open…', { name, mimeType: 'application/json', text });
   }
 
   project(): Promise<Project> {

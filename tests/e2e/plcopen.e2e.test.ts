@@ -3,39 +3,28 @@
 // open project untouched when the file is bad.
 import { readFile } from 'node:fs/promises';
 import { fileURLToPath } from 'node:url';
-import { afterAll, beforeAll, expect, inject, test } from 'vitest';
-import type { Browser } from 'playwright-core';
-import { launchChromium } from './browser';
+import { expect, test } from 'vitest';
+import { useChromium } from './appPage';
 import { EditorPage, poll } from './panelsPage';
 import { EXAMPLES } from '../../src/model/examples';
 import { schemaErrors } from '../plcopen/xsd';
 
-let browser: Browser;
-beforeAll(async () => {
-  browser = await launchChromium();
-});
-afterAll(async () => {
-  await browser?.close();
-});
+const browser = useChromium();
 
-async function importXml(editor: EditorPage, name: string, text: string) {
-  const chooser = editor.page.waitForEvent('filechooser');
-  await editor.menu('File', 'Import PLCopen XML…');
-  await (await chooser).setFiles({ name, mimeType: 'application/xml', buffer: Buffer.from(text) });
+function importXml(editor: EditorPage, name: string, text: string): Promise<void> {
+  return editor.chooseFile('File', 'Import PLCopen XML…', { name, mimeType: 'application/xml', text });
 }
 
 test('export downloads valid PLCopen XML; importing it gives back the same program', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
+  const editor = await EditorPage.open(browser());
   const example = EXAMPLES.find((e) => e.id === 'traffic-light')!;
   await editor.menu('File', `Example: ${example.title}`);
   await poll(async () => (await editor.project()).name).toBe(example.build().name);
   const original = await editor.project();
 
-  const download = editor.page.waitForEvent('download');
-  await editor.menu('File', 'Export PLCopen XML');
-  const file = await download;
-  expect(file.suggestedFilename()).toBe('Traffic_light.xml');
-  const xml = await readFile((await file.path())!, 'utf8');
+  const file = await editor.download(() => editor.menu('File', 'Export PLCopen XML'));
+  expect(file.name).toBe('Traffic_light.xml');
+  const xml = file.text;
   expect(await schemaErrors(xml)).toEqual([]);
 
   await editor.menu('File', 'New project');
@@ -54,7 +43,7 @@ test('export downloads valid PLCopen XML; importing it gives back the same progr
 });
 
 test('a file with several POUs shows the report and opens on the POU the user picks', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
+  const editor = await EditorPage.open(browser());
   const text = await readFile(
     fileURLToPath(new URL('../fixtures/plcopen/corpus/sakunamary__i2c_test.xml', import.meta.url)),
     'utf8',
@@ -77,7 +66,7 @@ test('a file with several POUs shows the report and opens on the POU the user pi
 });
 
 test('a file that is not PLCopen XML shows a located error and keeps the open project', async () => {
-  const editor = await EditorPage.open(browser, inject('appUrl'));
+  const editor = await EditorPage.open(browser());
   await editor.tab('Variables');
   await editor.declare('Keep', { address: '%MX0.0' });
   const before = await editor.project();

@@ -1,37 +1,26 @@
 // The simulator in a real Chromium: run the motor example with push-buttons on the canvas, step the
 // traffic light scan by scan, stop at a breakpoint, and survive a runaway program.
-import { afterAll, beforeAll, beforeEach, expect, inject, test } from 'vitest';
-import type { Browser, Page } from 'playwright-core';
+import { beforeEach, expect, test } from 'vitest';
+import type { Page } from 'playwright-core';
 import { newNetwork, newProject } from '../../src/model/factory';
 import type { ElementId } from '../../src/model/ids';
-import { collectPageErrors, launchChromium } from './browser';
+import { openApp, useChromium } from './appPage';
 import { runawayProgram } from '../sim/programs';
 import { SimPage } from './simPage';
 
-let browser: Browser;
+const browser = useChromium();
 let page: Page;
 let sim: SimPage;
 let errors: string[];
 
-beforeAll(async () => {
-  browser = await launchChromium();
-});
-afterAll(async () => {
-  await browser?.close();
-});
 beforeEach(async () => {
   await page?.close();
-  page = await browser.newPage({ viewport: { width: 1440, height: 900 } });
-  errors = collectPageErrors(page);
-  await page.goto(inject('appUrl'));
-  await page.getByRole('heading', { name: /Rungsmith/ }).first().waitFor();
+  ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
 });
 
 test('motor start/stop: Start (held) energises Motor, which seals in, and Stop drops it', async () => {
-  await sim.openExample('Motor start/stop (seal-in)');
-  await sim.button('run').click();
-  await sim.waitForMode('Running');
+  await sim.runExample('Motor start/stop (seal-in)');
   expect(await sim.value('Motor')).toBe(false);
   expect(await sim.wireLit(0, 0, 9)).toBe(false);
 
@@ -55,9 +44,7 @@ test('motor start/stop: Start (held) energises Motor, which seals in, and Stop d
 });
 
 test('a plain click on an input contact toggles it like a switch', async () => {
-  await sim.openExample('Motor start/stop (seal-in)');
-  await sim.button('run').click();
-  await sim.waitForMode('Running');
+  await sim.runExample('Motor start/stop (seal-in)');
   await sim.draw.clickCell(0, 0, 0);
   await sim.waitForValue('Start', true);
   await sim.waitForValue('Motor', true);

@@ -1,24 +1,19 @@
 // Forced variables are marked distinctly on the canvas (issue 4): an outline and an "F" tag in
 // the theme's --forced colour on every element showing a forced variable, gone when unforced.
-import type { Browser, Page } from 'playwright-core';
-import { afterAll, beforeAll, expect, inject, test } from 'vitest';
+import type { Page } from 'playwright-core';
+import { beforeAll, expect, test } from 'vitest';
 import { CELL_H, CELL_W } from '../../src/editor/canvas/geometry';
-import { collectPageErrors, launchChromium } from './browser';
+import { openApp, useChromium } from './appPage';
+import { collectPageErrors } from './browser';
 import { SimPage } from './simPage';
 
-let browser: Browser;
+const browser = useChromium();
 let page: Page;
 let sim: SimPage;
 
 beforeAll(async () => {
-  browser = await launchChromium();
-  page = await browser.newPage({ viewport: { width: 1440, height: 900 } });
-  await page.goto(inject('appUrl'));
-  await page.getByRole('heading', { name: /Rungsmith/ }).first().waitFor();
+  ({ page } = await openApp(browser()));
   sim = new SimPage(page);
-});
-afterAll(async () => {
-  await browser?.close();
 });
 
 /** Whether the cell's top-left corner shows the forced tag, read from the canvas pixels. */
@@ -47,9 +42,7 @@ async function forcedMark(network: number, row: number, col: number): Promise<bo
 
 test('forcing the Motor coil marks the coil and the Motor contact on the canvas until it is unforced', async () => {
   const errors = collectPageErrors(page);
-  await sim.openExample('Motor start/stop (seal-in)');
-  await sim.button('run').click();
-  await sim.waitForMode('Running');
+  await sim.runExample('Motor start/stop (seal-in)');
   // Coil Motor at (0, 9); its seal-in contact at (1, 0); Start at (0, 0) is not forced.
   expect(await forcedMark(0, 0, 9)).toBe(false);
 

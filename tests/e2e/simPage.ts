@@ -25,6 +25,13 @@ export class SimPage {
     await this.page.getByTestId('project-name').filter({ hasText: title.split(' ')[0]! }).waitFor();
   }
 
+  /** Opens an example from the File menu and runs it (Run, then waits until the mode reads Running). */
+  async runExample(title: string) {
+    await this.openExample(title);
+    await this.button('run').click();
+    await this.waitForMode('Running');
+  }
+
   /** Loads a project through the scripting handle (for programs no example has, like a runaway loop). */
   async load(project: Project) {
     await this.page.evaluate((p) => window.rungsmith!.documentStore!.getState().loadProject(p), project);

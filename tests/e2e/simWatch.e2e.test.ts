@@ -1,33 +1,22 @@
 // Forcing from the canvas menu and the watch table, and reading the trend with its cursor.
-import { afterAll, beforeAll, beforeEach, expect, inject, test } from 'vitest';
-import type { Browser, Page } from 'playwright-core';
-import { collectPageErrors, launchChromium } from './browser';
+import { beforeEach, expect, test } from 'vitest';
+import type { Page } from 'playwright-core';
+import { openApp, useChromium } from './appPage';
 import { SimPage } from './simPage';
 
-let browser: Browser;
+const browser = useChromium();
 let page: Page;
 let sim: SimPage;
 let errors: string[];
 
-beforeAll(async () => {
-  browser = await launchChromium();
-});
-afterAll(async () => {
-  await browser?.close();
-});
 beforeEach(async () => {
   await page?.close();
-  page = await browser.newPage({ viewport: { width: 1440, height: 900 } });
-  errors = collectPageErrors(page);
-  await page.goto(inject('appUrl'));
-  await page.getByRole('heading', { name: /Rungsmith/ }).first().waitFor();
+  ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
 });
 
 test('forcing Stop from the canvas menu holds the motor off until all forces are removed', async () => {
-  await sim.openExample('Motor start/stop (seal-in)');
-  await sim.button('run').click();
-  await sim.waitForMode('Running');
+  await sim.runExample('Motor start/stop (seal-in)');
   const stop = await sim.draw.cellPoint(0, 0, 1);
   await page.mouse.click(stop.x, stop.y, { button: 'right' });
   const menu = page.getByTestId('sim-context-menu');
@@ -95,9 +84,7 @@ test('the trend draws chosen signals over the last scans and its cursor reads va
 });
 
 test('the inputs panel: Hold is a push-button, the switch latches', async () => {
-  await sim.openExample('Motor start/stop (seal-in)');
-  await sim.button('run').click();
-  await sim.waitForMode('Running');
+  await sim.runExample('Motor start/stop (seal-in)');
   await sim.tab('Inputs');
   const start = page.getByTestId('input-Start');
   const hold = start.getByTestId('input-hold');
@@ -116,9 +103,7 @@ test('the inputs panel: Hold is a push-button, the switch latches', async () => 
 });
 
 test('editing while running is applied online: a new network joins, the motor keeps running', async () => {
-  await sim.openExample('Motor start/stop (seal-in)');
-  await sim.button('run').click();
-  await sim.waitForMode('Running');
+  await sim.runExample('Motor start/stop (seal-in)');
   await sim.draw.clickCell(0, 0, 0);
   await sim.waitForValue('Motor', true);
   await sim.draw.clickCell(0, 0, 0);

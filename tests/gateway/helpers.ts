@@ -1,23 +1,11 @@
 // Real peers for gateway tests: Debian's pymodbus server, mbpoll, and a ws client speaking protocol v1.
 import { execFile, spawn, type ChildProcessWithoutNullStreams } from 'node:child_process';
-import { createServer, type AddressInfo } from 'node:net';
 import { createInterface } from 'node:readline';
 import { fileURLToPath } from 'node:url';
 import WebSocket from 'ws';
 import { gatewayMessageSchema, type GatewayMessage } from '../../src/protocol/messages';
 
 const SERVER_SCRIPT = fileURLToPath(new URL('./fixtures/modbus_server.py', import.meta.url));
-
-export function freePort(): Promise<number> {
-  return new Promise((resolve, reject) => {
-    const srv = createServer();
-    srv.once('error', reject);
-    srv.listen(0, '127.0.0.1', () => {
-      const { port } = srv.address() as AddressInfo;
-      srv.close(() => resolve(port));
-    });
-  });
-}
 
 export type Table = 'di' | 'co' | 'ir' | 'hr';
 

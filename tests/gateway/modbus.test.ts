@@ -2,7 +2,8 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
-import { eventually, freePort, PyModbusServer, TestClient } from './helpers';
+import { freeLoopbackPort } from '../../src/gateway/modbusLib';
+import { eventually, PyModbusServer, TestClient } from './helpers';
 
 const WATCHDOG_MS = 500;
 const POLL_MS = 50;
@@ -13,7 +14,7 @@ describe('gateway with a Modbus TCP device', () => {
   let modbusPort: number;
 
   beforeAll(async () => {
-    modbusPort = await freePort();
+    modbusPort = await freeLoopbackPort();
     plant = await PyModbusServer.start(modbusPort);
     const config = resolveConfig({
       watchdogMs: WATCHDOG_MS,

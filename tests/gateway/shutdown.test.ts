@@ -5,14 +5,15 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { createInterface } from 'node:readline';
 import { afterAll, describe, expect, it } from 'vitest';
-import { eventually, freePort, PyModbusServer, TestClient } from './helpers';
+import { freeLoopbackPort } from '../../src/gateway/modbusLib';
+import { eventually, PyModbusServer, TestClient } from './helpers';
 
 describe('rungsmith-gateway process', () => {
   let plant: PyModbusServer | undefined;
   afterAll(() => plant?.kill());
 
   it('prints the URL with the token, and leaves every output at 0 on SIGTERM', async () => {
-    const modbusPort = await freePort();
+    const modbusPort = await freeLoopbackPort();
     plant = await PyModbusServer.start(modbusPort);
     const dir = mkdtempSync(join(tmpdir(), 'rungsmith-gw-'));
     const config = join(dir, 'gateway.json');

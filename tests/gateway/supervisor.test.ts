@@ -3,7 +3,8 @@ import { createServer, type Server, type Socket } from 'node:net';
 import { afterEach, describe, expect, it } from 'vitest';
 import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
-import { freePort, TestClient } from './helpers';
+import { freeLoopbackPort } from '../../src/gateway/modbusLib';
+import { TestClient } from './helpers';
 
 const deviceAt = (port: number) =>
   resolveConfig({
@@ -36,7 +37,7 @@ describe('Modbus TCP supervisor', () => {
   });
 
   it('reports a device nobody listens for as offline with the connection error', async () => {
-    gw = await startGateway({ port: 0, config: deviceAt(await freePort()), distDir: null });
+    gw = await startGateway({ port: 0, config: deviceAt(await freeLoopbackPort()), distDir: null });
     const c = await TestClient.hello(gw.port, gw.token, 'observer');
     const offline = await c.waitFor((m) => m.t === 'status' && m.devices[0]?.state === 'offline', 5000);
     expect(offline.t === 'status' && offline.devices[0]?.error).toMatch(/ECONNREFUSED/);

@@ -1,7 +1,8 @@
 // The name field that opens over an element on the canvas (after placing it, Enter, or a
 // double-click): the variable of a contact or coil, the instance of a function block, the
-// label a jump goes to. Enter commits and moves the cursor on; Escape leaves the name as it was.
-import { useEffect, useMemo, type KeyboardEvent } from 'react';
+// label a jump goes to. Enter commits (or keeps an unchanged name) and moves the cursor on;
+// Escape or clicking elsewhere leaves the name as it was.
+import { useEffect, useMemo } from 'react';
 import type { LdElement } from '../../model/elements';
 import type { NetworkId } from '../../model/ids';
 import { selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
@@ -119,15 +120,8 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
       : el.kind === 'coil'
         ? ({ kind: 'coil' } as const)
         : ({ kind: 'contact' } as const);
-  // Enter on an unchanged name: VariableInput commits nothing, so close here and move on.
-  const onKeyDownCapture = (e: KeyboardEvent) => {
-    if (e.key !== 'Enter') return;
-    setTimeout(() => {
-      if (ui.getState().editing?.element === el.id) close(true);
-    }, 0);
-  };
   return (
-    <div className="rs-inline-editor" style={style} onKeyDownCapture={onKeyDownCapture}>
+    <div className="rs-inline-editor" style={style}>
       <VariableInput
         value={currentName(el)}
         role={role}
@@ -137,7 +131,7 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
         data-testid="inline-editor"
         placeholder={el.kind === 'box' ? 'instance' : 'variable'}
         onCommit={commit}
-        onCancel={() => close(false)}
+        onCancel={(how) => close(how === 'enter')}
       />
     </div>
   );

@@ -5,7 +5,7 @@
 // that band, so most scroll frames are pure compositing.
 import { useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import { Layer, Stage } from 'react-konva';
-import type { ElementId } from '../../model/ids';
+import type { ElementId, NetworkId } from '../../model/ids';
 import { selectActivePou, selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
 import {
   clampZoom,
@@ -23,11 +23,13 @@ import { BlockPicker } from './BlockPicker';
 import { CanvasEmpty } from './CanvasEmpty';
 import { CELL_H, CELL_W, headerHeight, layoutNetworks, RAIL_X, visibleRange } from './geometry';
 import { InlineEditor } from './InlineEditor';
-import type { CellMarker } from './drawNetwork';
+import type { CellMarker, NetworkPaint } from './drawNetwork';
+import type { DragState } from './dragTargets';
 import { markersByNetwork } from './markers';
 import { NetworkHeader } from './NetworkHeader';
 import { NetworkShape } from './NetworkShape';
 import { useCanvasPointer, type PointerView } from './useCanvasPointer';
+import { usePinchZoom, type ZoomAnchor } from './usePinchZoom';
 import './canvas.css';
 
 const EMPTY_SET: ReadonlySet<ElementId> = new Set();
@@ -67,10 +69,10 @@ export function LadderCanvas() {
   const view = useRef<PointerView>({ layout, networks, zoom });
   view.current = { layout, networks, zoom };
   const spaceHeld = useRef(false);
-  const zoomAnchor = useRef<{ x: number; y: number; offsetX: number; offsetY: number } | undefined>(
-    undefined,
-  );
-  const { drag, band, hover, handlers } = useCanvasPointer(ctx, scrollRef, view, spaceHeld);
+  const zoomAnchor = useRef<ZoomAnchor | undefined>(undefined);
+  const { drag, band, hover, cancel, handlers } = useCanvasPointer(ctx, scrollRef, view, spaceHeld);
+  const dragPaints = useMemo(() => dragPaintsFor(drag), [drag]);
+  usePinchZoom(scrollRef, ui, zoomAnchor, cancel);
 
   useLayoutEffect(() => {
     if (scrollRef.current) setTheme(readCanvasTheme(scrollRef.current));
@@ -89,7 +91,8 @@ export function LadderCanvas() {
     return () => ro.disconnect();
   }, [ui]);
 
-  // Ctrl+wheel and trackpad pinch (which Chromium reports as Ctrl+wheel) zoom around the pointer.
+  // Ctrl+wheel and trackpad pinch (which Chromium reports as Ctrl+wheel) zoom around the pointer;
+  // touch pinch: usePinchZoom.
   useEffect(() => {
     const el = scrollRef.current;
     if (!el) return undefined;
@@ -236,7 +239,7 @@ export function LadderCanvas() {
                           cursor={cursor?.network === n.id ? cursor : undefined}
                           hover={hover?.index === i ? hover.cell : undefined}
                           markers={markers.get(i)?.markers ?? NO_MARKERS}
-                          drag={drag?.network === n.id ? drag : undefined}
+                          drag={dragPaints.get(n.id)}
                           zoom={zoom}
                         />
                       );
@@ -285,3 +288,19 @@ export function LadderCanvas() {
 }
 
 const NO_MARKERS: readonly CellMarker[] = [];
+
+/** What each network shows of a drag: the faded originals and the ghost where they would land. */
+function dragPaintsFor(drag: DragState | undefined): ReadonlyMap<NetworkId, NetworkPaint['drag']> {
+  const out = new Map<NetworkId, NetworkPaint['drag']>();
+  if (!drag) return out;
+  if (!drag.into) return out.set(drag.network, drag);
+  const { into } = drag;
+  out.set(drag.network, { ids: drag.ids, dRow: 0, dCol: 0, blocked: into.blocked, ghost: [] });
+  return out.set(into.network, {
+    ids: EMPTY_SET,
+    dRow: 0,
+    dCol: 0,
+    blocked: into.blocked,
+    ghost: into.ghost,
+  });
+}

@@ -27,12 +27,15 @@ export interface NetworkPaint {
   readonly liveValues?: ReadonlyMap<ElementId, string>;
   /** Elements with a forced variable (simulation). */
   readonly forced?: ReadonlySet<ElementId>;
-  /** Elements being dragged and the offset in cells. */
+  /** Elements being dragged (drawn faded) and the offset in cells of their ghost. */
   readonly drag?: {
     readonly ids: ReadonlySet<ElementId>;
     readonly dRow: number;
     readonly dCol: number;
     readonly blocked: boolean;
+    /** Ghost drawn instead of the offset one: elements dragged in from another network, in this
+     * network's cells (empty in the network they leave). */
+    readonly ghost?: readonly LdElement[];
   };
 }
 
@@ -133,11 +136,12 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     ctx.fill();
   }
   if (paint.drag) {
-    const { dRow, dCol, blocked } = paint.drag;
-    for (const el of n.elements) {
-      if (!paint.drag.ids.has(el.id)) continue;
+    const { dRow, dCol, blocked, ids, ghost } = paint.drag;
+    const shown = ghost ?? n.elements.filter((el) => ids.has(el.id));
+    const offset = ghost ? { dRow: 0, dCol: 0 } : { dRow, dCol };
+    for (const el of shown) {
       ctx.save();
-      ctx.translate((el.col + dCol) * CELL_W, (el.row + dRow) * CELL_H);
+      ctx.translate((el.col + offset.dCol) * CELL_W, (el.row + offset.dRow) * CELL_H);
       ctx.globalAlpha = 0.85;
       drawElement(ctx, t, el);
       const s = elementSize(el);

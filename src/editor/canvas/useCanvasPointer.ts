@@ -1,10 +1,12 @@
 // Pointer tools on the canvas as a small state machine:
-//   idle --down on element--> pressing --moved 4px--> dragging --up--> moveElements (one undo step)
+//   idle --down on element--> pressing --moved 4px--> dragging --up--> moveElements (one undo step),
+//     or moveElementsToNetwork when released over another network's grid (also one undo step)
 //   idle --down on empty cell--> banding (rubber band) --up--> select elements inside
 //   idle --middle button or Space held--> panning --up--> idle
 // With a placing tool, a click places the element; with the vertical link tool, a click toggles
 // the vertical link nearest to the pointer.
 import {
+  useCallback,
   useRef,
   useState,
   type MouseEvent,
@@ -13,19 +15,14 @@ import {
 } from 'react';
 import { elementSize } from '../../model/factory';
 import type { Cell } from '../../model/grid';
-import type { ElementId, NetworkId } from '../../model/ids';
+import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
 import { elementAt } from '../../store/networkEdits';
 import { needsName, placeAt, type EditorContext } from '../commands/editorActions';
+import { canMove, dropInto, type DragState } from './dragTargets';
 import { CELL_H, CELL_W, gridOrigin, hitTest, type CanvasLayout, type PixelPoint } from './geometry';
 
-export interface DragState {
-  readonly network: NetworkId;
-  readonly ids: ReadonlySet<ElementId>;
-  readonly dRow: number;
-  readonly dCol: number;
-  readonly blocked: boolean;
-}
+export type { DragState } from './dragTargets';
 
 export interface BandState {
   readonly index: number;
@@ -70,25 +67,17 @@ const cellDelta = (a: PixelPoint, b: PixelPoint) => ({
   dCol: Math.round((b.x - a.x) / CELL_W),
 });
 
-function canMove(n: Network, ids: readonly ElementId[], dRow: number, dCol: number): boolean {
-  const set = new Set(ids);
-  const taken = new Map<string, boolean>();
-  for (const e of n.elements) {
-    if (set.has(e.id)) continue;
-    const s = elementSize(e);
-    for (let r = 0; r < s.rows; r++)
-      for (let c = 0; c < s.cols; c++) taken.set(`${e.row + r}:${e.col + c}`, e.kind === 'link');
-  }
-  for (const e of n.elements) {
-    if (!set.has(e.id)) continue;
-    if (e.row + dRow < 0 || e.col + dCol < 0) return false;
-    const s = elementSize(e);
-    for (let r = 0; r < s.rows; r++)
-      for (let c = 0; c < s.cols; c++)
-        if (taken.get(`${e.row + dRow + r}:${e.col + dCol + c}`) === false) return false;
-  }
-  return true;
-}
+const sameDrag = (a: DragState | undefined, b: DragState | undefined) =>
+  a === b ||
+  (a !== undefined &&
+    b !== undefined &&
+    a.network === b.network &&
+    a.dRow === b.dRow &&
+    a.dCol === b.dCol &&
+    a.blocked === b.blocked &&
+    a.into?.network === b.into?.network &&
+    a.into?.at.row === b.into?.at.row &&
+    a.into?.at.col === b.into?.at.col);
 
 export function useCanvasPointer(
   ctx: EditorContext,
@@ -108,11 +97,34 @@ export function useCanvasPointer(
     return { x: (e.clientX - rect.left + el.scrollLeft) / z, y: (e.clientY - rect.top + el.scrollTop) / z };
   };
 
-  /** Is content point p over the grid of network `index` (or just right of / below it, where the grid can grow)? */
-  const inSameGrid = (p: PixelPoint, index: number) => {
-    const hit = hitTest(view.current.layout, view.current.networks, p);
-    return hit.area === 'grid' && hit.index === index;
+  /** The drag shown for pointer point p: within the network, into another one, or undefined off any grid. */
+  const dragAt = (
+    n: Network,
+    ids: readonly ElementId[],
+    start: PixelPoint,
+    startCell: Cell,
+    p: PixelPoint,
+  ): DragState | undefined => {
+    const { layout, networks } = view.current;
+    const hit = hitTest(layout, networks, p);
+    if (hit.area !== 'grid') return undefined;
+    const target = networks[hit.index]!;
+    const base = { network: n.id, ids: new Set(ids), dRow: 0, dCol: 0 };
+    if (target.id !== n.id) {
+      const d = dropInto(n, target, ids, startCell, hit.cell);
+      if (!d) return undefined;
+      return { ...base, blocked: d.blocked, into: { network: target.id, ...d } };
+    }
+    const { dRow, dCol } = cellDelta(start, p);
+    return { ...base, dRow, dCol, blocked: !canMove(n, ids, dRow, dCol) };
   };
+
+  /** Stops a press, drag or rubber band without applying it (a second finger started a pinch). */
+  const cancel = useCallback(() => {
+    machine.current = { kind: 'idle' };
+    setDrag(undefined);
+    setBand(undefined);
+  }, []);
 
   const onPointerDown = (e: ReactPointerEvent<HTMLDivElement>) => {
     if (!(e.target instanceof HTMLCanvasElement)) return;
@@ -186,12 +198,9 @@ export function useCanvasPointer(
       if (m.kind === 'pressing' && Math.hypot(p.x - m.start.x, p.y - m.start.y) < 4) return;
       const n = networks[m.index];
       if (!n) return;
-      const { dRow, dCol } = cellDelta(m.start, p);
       machine.current = { ...m, kind: 'dragging' };
-      const blocked = !inSameGrid(p, m.index) || !canMove(n, m.ids, dRow, dCol);
-      if (drag?.dRow !== dRow || drag?.dCol !== dCol || drag?.network !== n.id || drag.blocked !== blocked) {
-        setDrag({ network: n.id, ids: new Set(m.ids), dRow, dCol, blocked });
-      }
+      const next = dragAt(n, m.ids, m.start, m.startCell, p);
+      setDrag((prev) => (sameDrag(prev, next) ? prev : next));
       return;
     }
     if (m.kind === 'banding') {
@@ -218,20 +227,22 @@ export function useCanvasPointer(
     const { layout, networks } = view.current;
     if (m.kind === 'dragging') {
       const n = networks[m.index];
-      const p = contentPoint(e);
-      const { dRow, dCol } = cellDelta(m.start, p);
       setDrag(undefined);
-      if (!inSameGrid(p, m.index)) {
-        ctx.ui
-          .getState()
-          .setStatus('Drag moves elements within their network; use cut and paste to move them to another.');
-      } else if (n && (dRow !== 0 || dCol !== 0)) {
-        const moved = ctx.doc.getState().moveElements(n.id, m.ids, dRow, dCol);
+      const d = n && dragAt(n, m.ids, m.start, m.startCell, contentPoint(e));
+      const ui = ctx.ui.getState();
+      if (!n || !d) {
+        ui.setStatus('Drop elements on a network grid.');
+      } else if (d.into) {
+        const into = d.into;
+        if (ctx.doc.getState().moveElementsToNetwork(n.id, m.ids, into.network, into.at)) {
+          ui.select(into.network, m.ids);
+          ui.setCursor({ network: into.network, row: into.at.row, col: into.at.col });
+        } else ui.setStatus('Cannot move there: another element is in the way.');
+      } else if (d.dRow !== 0 || d.dCol !== 0) {
+        const moved = ctx.doc.getState().moveElements(n.id, m.ids, d.dRow, d.dCol);
         if (moved)
-          ctx.ui
-            .getState()
-            .setCursor({ network: n.id, row: m.startCell.row + dRow, col: m.startCell.col + dCol });
-        else ctx.ui.getState().setStatus('Cannot move there: another element is in the way.');
+          ui.setCursor({ network: n.id, row: m.startCell.row + d.dRow, col: m.startCell.col + d.dCol });
+        else ui.setStatus('Cannot move there: another element is in the way.');
       }
     } else if (m.kind === 'banding') {
       setBand(undefined);
@@ -269,6 +280,7 @@ export function useCanvasPointer(
     drag,
     band,
     hover,
+    cancel,
     handlers: {
       onPointerDown,
       onPointerMove,

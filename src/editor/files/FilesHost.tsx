@@ -1,36 +1,28 @@
 // Mount once inside the DocumentStoreProvider: autosave + recovery, the hidden file picker used by
 // File > Open, the "discard unsaved changes?" dialog, open errors and short notices.
-import { useCallback, useEffect, useRef, useState, type KeyboardEvent } from 'react';
+import { useCallback, useEffect, useState } from 'react';
 import { useStore } from 'zustand';
 import { useDocumentStore } from '../../store/documentStore';
 import { openChosenFile } from './fileActions';
 import { filesUi } from './filesUi';
+import { HiddenFilePicker } from './HiddenFilePicker';
+import { ModalDialog, OkButton } from './ModalDialog';
 import { useAutosave } from './useAutosave';
 import './files.css';
 
 export function FilesHost() {
   const store = useDocumentStore();
-  const input = useRef<HTMLInputElement>(null);
   useAutosave(store);
-  useEffect(() => {
-    filesUi.getState().setOpenPicker(() => input.current?.click());
-    return () => filesUi.getState().setOpenPicker(undefined);
-  }, []);
-  useFileDrop(useCallback((file: File) => void openChosenFile(store, file), [store]));
+  const open = useCallback((file: File) => void openChosenFile(store, file), [store]);
+  useFileDrop(open);
   return (
     <>
-      <input
-        ref={input}
-        type="file"
+      <HiddenFilePicker
         accept=".json,application/json"
-        hidden
-        data-testid="open-file-input"
-        aria-label="Open project file"
-        onChange={(e) => {
-          const file = e.target.files?.[0];
-          e.target.value = ''; // choosing the same file again still fires
-          if (file) void openChosenFile(store, file);
-        }}
+        label="Open project file"
+        testId="open-file-input"
+        register={filesUi.getState().setOpenPicker}
+        onFile={open}
       />
       <Notice />
       <ConfirmDialog />
@@ -64,12 +56,6 @@ function useFileDrop(open: (file: File) => void) {
   }, [open]);
 }
 
-/** Keys in a dialog stay in it (no editor shortcut acts behind it); Escape closes it. */
-function modalKey(e: KeyboardEvent, close: () => void) {
-  e.stopPropagation();
-  if (e.key === 'Escape') close();
-}
-
 function Notice() {
   const notice = useStore(filesUi, (s) => s.notice);
   useEffect(() => {
@@ -98,17 +84,14 @@ function ConfirmDialog() {
   if (!c) return null;
   const close = () => filesUi.getState().closeConfirmation();
   return (
-    <div className="rs-modal-backdrop" onKeyDown={(e) => modalKey(e, close)}>
-      <div
-        className="rs-modal"
-        role="alertdialog"
-        aria-modal="true"
-        aria-labelledby="rs-confirm-title"
-        aria-describedby="rs-confirm-message"
-      >
-        <h2 id="rs-confirm-title">{c.title}</h2>
-        <p id="rs-confirm-message">{c.message}</p>
-        <div className="rs-modal-buttons">
+    <ModalDialog
+      role="alertdialog"
+      titleId="rs-confirm-title"
+      title={c.title}
+      describedBy="rs-confirm-message"
+      onClose={close}
+      buttons={
+        <>
           <button type="button" className="rs-button" autoFocus onClick={close}>
             Cancel
           </button>
@@ -122,9 +105,11 @@ function ConfirmDialog() {
           >
             {c.confirmLabel}
           </button>
-        </div>
-      </div>
-    </div>
+        </>
+      }
+    >
+      <p id="rs-confirm-message">{c.message}</p>
+    </ModalDialog>
   );
 }
 
@@ -133,30 +118,23 @@ function OpenFailureDialog() {
   if (!failure) return null;
   const close = () => filesUi.getState().showOpenFailure(undefined);
   return (
-    <div className="rs-modal-backdrop" onKeyDown={(e) => modalKey(e, close)}>
-      <div
-        className="rs-modal"
-        role="alertdialog"
-        aria-modal="true"
-        aria-labelledby="rs-open-failed"
-        data-testid="open-failure"
-      >
-        <h2 id="rs-open-failed">Could not open {failure.fileName}</h2>
-        <p>The file is not a valid Rungsmith project. The open project is unchanged.</p>
-        <ul className="rs-load-errors">
-          {failure.errors.map((e, i) => (
-            <li key={i}>
-              <code>{e.path}</code>: {e.message}
-            </li>
-          ))}
-        </ul>
-        <div className="rs-modal-buttons">
-          <button type="button" className="rs-button rs-primary" autoFocus onClick={close}>
-            OK
-          </button>
-        </div>
-      </div>
-    </div>
+    <ModalDialog
+      role="alertdialog"
+      titleId="rs-open-failed"
+      title={`Could not open ${failure.fileName}`}
+      testId="open-failure"
+      onClose={close}
+      buttons={<OkButton onClick={close} />}
+    >
+      <p>The file is not a valid Rungsmith project. The open project is unchanged.</p>
+      <ul className="rs-load-errors">
+        {failure.errors.map((e, i) => (
+          <li key={i}>
+            <code>{e.path}</code>: {e.message}
+          </li>
+        ))}
+      </ul>
+    </ModalDialog>
   );
 }
 

@@ -34,7 +34,11 @@ export function saveProjectFile(store: DocumentStore): void {
 }
 
 export function openProjectFile(): void {
-  const open = filesUi.getState().openPicker;
+  openFilePicker(filesUi.getState().openPicker);
+}
+
+/** Opens a browser file picker a host component registered, or says why it cannot. */
+export function openFilePicker(open: (() => void) | undefined): void {
   if (open) open();
   else filesUi.getState().setNotice('The file picker is not available in this view.');
 }

@@ -17,8 +17,12 @@ export interface VariableInputProps {
   readonly value: string;
   readonly role: BindingRole;
   readonly onCommit: (text: string) => void;
-  /** Escape with the list closed. */
-  readonly onCancel?: () => void;
+  /**
+   * The field closes without a change: Escape with the list closed ('escape'), Enter on the
+   * unchanged text ('enter': the caller may move on as after a commit), or leaving the field when
+   * commitOnBlur is false ('blur').
+   */
+  readonly onCancel?: (how: CancelReason) => void;
   /** Leaving the field commits the text (inspector); false: leaving cancels (inline editor). Default true. */
   readonly commitOnBlur?: boolean;
   readonly autoFocus?: boolean;
@@ -29,6 +33,8 @@ export interface VariableInputProps {
   readonly 'data-testid'?: string;
   readonly className?: string;
 }
+
+export type CancelReason = 'escape' | 'enter' | 'blur';
 
 type Option =
   | { readonly kind: 'candidate'; readonly candidate: Candidate }
@@ -65,14 +71,16 @@ export function VariableInput(props: VariableInputProps) {
   const shown = open && options.length > 0;
   const activeIndex = Math.min(active, options.length - 1);
 
-  const finish = (final: string) => {
+  /** Commits a changed text; an unchanged one ends the edit as `unchanged` says (undefined: silently). */
+  const finish = (final: string, unchanged?: CancelReason) => {
     setDraft(undefined);
     setOpen(false);
     setActive(0);
     if (final.trim() !== value.trim()) onCommit(final.trim());
+    else if (unchanged) onCancel?.(unchanged);
   };
   const choose = (option: Option) => {
-    if (option.kind === 'candidate') return finish(option.candidate.text);
+    if (option.kind === 'candidate') return finish(option.candidate.text, 'enter');
     const name = option.choice.variable.name;
     store.getState().batch('declareVariable', () => {
       store.getState().addVariable(option.choice.variable);
@@ -94,13 +102,13 @@ export function VariableInput(props: VariableInputProps) {
       e.preventDefault();
       const option = shown ? options[activeIndex] : undefined;
       if (option) choose(option);
-      else finish(text);
+      else finish(text, 'enter');
     } else if (e.key === 'Escape') {
       e.preventDefault();
       if (shown) setOpen(false);
       else {
         setDraft(undefined);
-        onCancel?.();
+        onCancel?.('escape');
       }
     } else if (e.key === 'Tab' && shown) {
       const option = options[activeIndex];
@@ -140,7 +148,7 @@ export function VariableInput(props: VariableInputProps) {
           else {
             setDraft(undefined);
             setOpen(false);
-            onCancel?.();
+            onCancel?.('blur');
           }
         }}
         onKeyDown={onKeyDown}

@@ -37,83 +37,56 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
   return (
     <nav className="rs-palette" aria-label="Palette" data-testid="palette">
       <div className="rs-palette-group" role="group" aria-label="Tools">
-        <button
-          type="button"
-          className="rs-palette-item"
-          aria-pressed={tool.kind === 'select'}
-          data-testid="palette-select"
+        <PaletteButton
+          id="select"
+          pressed={tool.kind === 'select'}
           title="Select and move (Esc): click, Shift+click, drag a rubber band, drag to move"
+          symbol="↖"
+          label="Select"
           onClick={() => ui.getState().setTool({ kind: 'select' })}
-        >
-          <span className="rs-palette-symbol">↖</span>
-          <span>Select</span>
-        </button>
-        <button
-          type="button"
-          className="rs-palette-item"
-          aria-pressed={tool.kind === 'vlink'}
-          data-testid="palette-vlink"
-          title={`Vertical link tool: click between two rows on a cell edge to add or remove a vertical link (at the cursor: V left edge, Shift+V right edge)`}
+        />
+        <PaletteButton
+          id="vlink"
+          pressed={tool.kind === 'vlink'}
+          title="Vertical link tool: click between two rows on a cell edge to add or remove a vertical link (at the cursor: V left edge, Shift+V right edge)"
+          symbol="┃"
+          label="Vertical link"
           onClick={() =>
             ui.getState().setTool(tool.kind === 'vlink' ? { kind: 'select' } : { kind: 'vlink' })
           }
-        >
-          <span className="rs-palette-symbol">┃</span>
-          <span>Vertical link</span>
-        </button>
+        />
       </div>
       {GROUPS.map((group) => (
         <div key={group} className="rs-palette-group" role="group" aria-label={group}>
           <h2 className="rs-palette-heading">{group}</h2>
           {PALETTE_ITEMS.filter((item) => item.group === group).map((item) => (
-            <button
+            <PaletteButton
               key={item.id}
-              type="button"
-              className="rs-palette-item"
-              aria-pressed={isActive(tool, item.id)}
-              aria-label={item.label}
-              data-testid={`palette-${item.id}`}
+              id={item.id}
+              pressed={isActive(tool, item.id)}
+              named
               title={`${item.label}${shortcutText(item.keys)}: ${item.description}`}
+              symbol={item.symbol}
+              mono
+              label={item.label}
               onClick={() => arm(item.id, { kind: 'place', name: item.id, template: item.template })}
-            >
-              <span className="rs-palette-symbol rs-mono">{item.symbol}</span>
-              <span>{item.label}</span>
-            </button>
+            />
           ))}
         </div>
       ))}
       <div className="rs-palette-group" role="group" aria-label="Network">
         <h2 className="rs-palette-heading">Network</h2>
-        <button
-          type="button"
-          className="rs-palette-item"
-          data-testid="palette-label"
-          title="Label of the cursor's network, a jump target (L)"
-          onClick={() => runCommand('network.label')}
-        >
-          <span className="rs-palette-symbol rs-mono">L:</span>
-          <span>Label</span>
-        </button>
-        <button
-          type="button"
-          className="rs-palette-item"
-          data-testid="palette-comment"
-          title="Comment above the cursor's network (K)"
-          onClick={() => runCommand('network.comment')}
-        >
-          <span className="rs-palette-symbol">“ ”</span>
-          <span>Comment</span>
-        </button>
-        <button
-          type="button"
-          className="rs-palette-item"
-          data-testid="palette-network"
-          title="Insert a network below the cursor's network (N)"
-          onClick={() => runCommand('network.insert')}
-        >
-          <span className="rs-palette-symbol">＋</span>
-          <span>New network</span>
-        </button>
+        {NETWORK_TOOLS.map((t) => (
+          <PaletteButton
+            key={t.id}
+            id={t.id}
+            title={t.title}
+            symbol={t.symbol}
+            mono={t.mono}
+            label={t.label}
+            onClick={() => runCommand(t.command)}
+          />
+        ))}
       </div>
       <div className="rs-palette-group rs-palette-blocks" role="group" aria-label="Blocks">
         <h2 className="rs-palette-heading">Blocks</h2>
@@ -149,5 +122,65 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
         </ul>
       </div>
     </nav>
+  );
+}
+
+/** The Network group: each button runs an editor command on the cursor's network. */
+const NETWORK_TOOLS = [
+  {
+    id: 'label',
+    command: 'network.label',
+    title: "Label of the cursor's network, a jump target (L)",
+    symbol: 'L:',
+    mono: true,
+    label: 'Label',
+  },
+  {
+    id: 'comment',
+    command: 'network.comment',
+    title: "Comment above the cursor's network (K)",
+    symbol: '“ ”',
+    mono: false,
+    label: 'Comment',
+  },
+  {
+    id: 'network',
+    command: 'network.insert',
+    title: "Insert a network below the cursor's network (N)",
+    symbol: '＋',
+    mono: false,
+    label: 'New network',
+  },
+] as const;
+
+interface PaletteButtonProps {
+  /** Test id suffix: "palette-<id>". */
+  readonly id: string;
+  /** Whether the tool is armed; omitted for buttons that act at once. */
+  readonly pressed?: boolean;
+  /** Give the button its label as accessible name (the symbol is read otherwise). */
+  readonly named?: boolean;
+  readonly title: string;
+  readonly symbol: string;
+  /** Draw the symbol in the monospace font (IEC text symbols like -| |-). */
+  readonly mono?: boolean;
+  readonly label: string;
+  readonly onClick: () => void;
+}
+
+function PaletteButton(p: PaletteButtonProps) {
+  return (
+    <button
+      type="button"
+      className="rs-palette-item"
+      aria-pressed={p.pressed}
+      aria-label={p.named ? p.label : undefined}
+      data-testid={`palette-${p.id}`}
+      title={p.title}
+      onClick={p.onClick}
+    >
+      <span className={p.mono ? 'rs-palette-symbol rs-mono' : 'rs-palette-symbol'}>{p.symbol}</span>
+      <span>{p.label}</span>
+    </button>
   );
 }

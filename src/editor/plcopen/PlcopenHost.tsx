@@ -1,34 +1,25 @@
 // Mount once inside the DocumentStoreProvider: the hidden .xml file picker of File > Import PLCopen
 // XML…, the import report (what was dropped or changed, which POU to open) and import errors.
-import { useEffect, useRef, useState } from 'react';
+import { useEffect, useState } from 'react';
 import { useStore } from 'zustand';
 import type { PouId } from '../../model/ids';
 import type { ImportIssue } from '../../plcopen/types';
 import { useDocumentStore } from '../../store/documentStore';
+import { HiddenFilePicker } from '../files/HiddenFilePicker';
+import { ModalDialog, OkButton } from '../files/ModalDialog';
 import { openImported, readImportFile } from './plcopenActions';
 import { plcopenUi } from './plcopenUi';
 import './plcopen.css';
 
 export function PlcopenHost() {
-  const input = useRef<HTMLInputElement>(null);
-  useEffect(() => {
-    plcopenUi.getState().setOpenPicker(() => input.current?.click());
-    return () => plcopenUi.getState().setOpenPicker(undefined);
-  }, []);
   return (
     <>
-      <input
-        ref={input}
-        type="file"
+      <HiddenFilePicker
         accept=".xml,application/xml,text/xml"
-        hidden
-        data-testid="plcopen-file-input"
-        aria-label="Import PLCopen XML file"
-        onChange={(e) => {
-          const file = e.target.files?.[0];
-          e.target.value = '';
-          if (file) void readImportFile(file);
-        }}
+        label="Import PLCopen XML file"
+        testId="plcopen-file-input"
+        register={plcopenUi.getState().setOpenPicker}
+        onFile={(file) => void readImportFile(file)}
       />
       <ImportReportDialog />
       <ImportFailureDialog />
@@ -71,49 +62,15 @@ function ImportReportDialog() {
   const close = () => plcopenUi.getState().setPending(undefined);
   const networks = project.pous.reduce((n, p) => n + p.networks.length, 0);
   return (
-    <div className="rs-modal-backdrop" onKeyDown={(e) => e.key === 'Escape' && close()}>
-      <div
-        className="rs-modal rs-plcopen-report"
-        role="dialog"
-        aria-modal="true"
-        aria-labelledby="rs-plcopen-title"
-        data-testid="plcopen-report"
-      >
-        <h2 id="rs-plcopen-title">Import {fileName}</h2>
-        <p>
-          PLCopen XML{report.producer ? ` written by ${report.producer}` : ''}: {project.pous.length} LD POU
-          {project.pous.length === 1 ? '' : 's'}, {networks} network{networks === 1 ? '' : 's'},{' '}
-          {project.tasks.length} task
-          {project.tasks.length === 1 ? '' : 's'}.
-        </p>
-        {project.pous.length > 1 ? (
-          <label className="rs-plcopen-pou">
-            Open on POU{' '}
-            <select value={pou} onChange={(e) => setPou(e.target.value)} data-testid="plcopen-pou-choice">
-              {project.pous.map((p) => (
-                <option key={p.id} value={p.id}>
-                  {p.name} ({p.kind.toLowerCase().replace('_', ' ')}, {p.networks.length} network
-                  {p.networks.length === 1 ? '' : 's'})
-                </option>
-              ))}
-            </select>
-            <span className="rs-plcopen-hint">All POUs are kept in the project.</span>
-          </label>
-        ) : null}
-        {project.pous.length === 0 ? (
-          <p className="rs-error-text">The file has no LD POU that Rungsmith can open.</p>
-        ) : null}
-        {report.warnings.length ? (
-          <>
-            <h3>
-              {report.warnings.length} thing{report.warnings.length === 1 ? '' : 's'} dropped or changed
-            </h3>
-            <IssueList issues={report.warnings} testId="plcopen-warnings" />
-          </>
-        ) : (
-          <p data-testid="plcopen-warnings">Nothing was dropped or changed.</p>
-        )}
-        <div className="rs-modal-buttons">
+    <ModalDialog
+      role="dialog"
+      titleId="rs-plcopen-title"
+      title={`Import ${fileName}`}
+      className="rs-plcopen-report"
+      testId="plcopen-report"
+      onClose={close}
+      buttons={
+        <>
           <button type="button" className="rs-button" onClick={close}>
             Cancel
           </button>
@@ -126,9 +83,43 @@ function ImportReportDialog() {
           >
             Open
           </button>
-        </div>
-      </div>
-    </div>
+        </>
+      }
+    >
+      <p>
+        PLCopen XML{report.producer ? ` written by ${report.producer}` : ''}: {project.pous.length} LD POU
+        {project.pous.length === 1 ? '' : 's'}, {networks} network{networks === 1 ? '' : 's'},{' '}
+        {project.tasks.length} task
+        {project.tasks.length === 1 ? '' : 's'}.
+      </p>
+      {project.pous.length > 1 ? (
+        <label className="rs-plcopen-pou">
+          Open on POU{' '}
+          <select value={pou} onChange={(e) => setPou(e.target.value)} data-testid="plcopen-pou-choice">
+            {project.pous.map((p) => (
+              <option key={p.id} value={p.id}>
+                {p.name} ({p.kind.toLowerCase().replace('_', ' ')}, {p.networks.length} network
+                {p.networks.length === 1 ? '' : 's'})
+              </option>
+            ))}
+          </select>
+          <span className="rs-plcopen-hint">All POUs are kept in the project.</span>
+        </label>
+      ) : null}
+      {project.pous.length === 0 ? (
+        <p className="rs-error-text">The file has no LD POU that Rungsmith can open.</p>
+      ) : null}
+      {report.warnings.length ? (
+        <>
+          <h3>
+            {report.warnings.length} thing{report.warnings.length === 1 ? '' : 's'} dropped or changed
+          </h3>
+          <IssueList issues={report.warnings} testId="plcopen-warnings" />
+        </>
+      ) : (
+        <p data-testid="plcopen-warnings">Nothing was dropped or changed.</p>
+      )}
+    </ModalDialog>
   );
 }
 
@@ -137,23 +128,16 @@ function ImportFailureDialog() {
   if (!failure) return null;
   const close = () => plcopenUi.getState().setFailure(undefined);
   return (
-    <div className="rs-modal-backdrop" onKeyDown={(e) => e.key === 'Escape' && close()}>
-      <div
-        className="rs-modal"
-        role="alertdialog"
-        aria-modal="true"
-        aria-labelledby="rs-plcopen-failed"
-        data-testid="plcopen-failure"
-      >
-        <h2 id="rs-plcopen-failed">Could not import {failure.fileName}</h2>
-        <p>The file is not PLCopen XML Rungsmith can read. The open project is unchanged.</p>
-        <IssueList issues={failure.errors} testId="plcopen-errors" />
-        <div className="rs-modal-buttons">
-          <button type="button" className="rs-button rs-primary" autoFocus onClick={close}>
-            OK
-          </button>
-        </div>
-      </div>
-    </div>
+    <ModalDialog
+      role="alertdialog"
+      titleId="rs-plcopen-failed"
+      title={`Could not import ${failure.fileName}`}
+      testId="plcopen-failure"
+      onClose={close}
+      buttons={<OkButton onClick={close} />}
+    >
+      <p>The file is not PLCopen XML Rungsmith can read. The open project is unchanged.</p>
+      <IssueList issues={failure.errors} testId="plcopen-errors" />
+    </ModalDialog>
   );
 }

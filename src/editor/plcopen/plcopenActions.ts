@@ -3,32 +3,22 @@ import type { PouId } from '../../model/ids';
 import { exportPlcopen } from '../../plcopen/exportPlcopen';
 import { importPlcopen } from '../../plcopen/importPlcopen';
 import type { DocumentStore } from '../../store/documentStore';
-import { replaceDocument } from '../files/fileActions';
+import { openFilePicker, replaceDocument } from '../files/fileActions';
 import { filesUi } from '../files/filesUi';
-import { projectFileName } from '../files/projectFile';
+import { downloadText, projectFileName } from '../files/projectFile';
 import { plcopenUi, type PendingImport } from './plcopenUi';
 
 /** Offers the open project as a PLCopen TC6 XML v2.01 download; returns the file name. */
 export function exportPlcopenFile(store: DocumentStore): string {
   const project = store.getState().project;
-  const name = projectFileName(project).replace(/\.json$/, '.xml');
-  const url = URL.createObjectURL(new Blob([exportPlcopen(project)], { type: 'application/xml' }));
-  const a = document.createElement('a');
-  a.href = url;
-  a.download = name;
-  a.style.display = 'none';
-  document.body.appendChild(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 10_000);
+  const name = projectFileName(project, '.xml');
+  downloadText(name, exportPlcopen(project), 'application/xml');
   filesUi.getState().setNotice(`Exported ${name} (PLCopen XML, in your downloads folder).`);
   return name;
 }
 
 export function chooseImportFile(): void {
-  const open = plcopenUi.getState().openPicker;
-  if (open) open();
-  else filesUi.getState().setNotice('The file picker is not available in this view.');
+  openFilePicker(plcopenUi.getState().openPicker);
 }
 
 /** Reads a chosen file; a bad file shows its located errors and leaves the open project untouched. */

@@ -8,10 +8,25 @@ import { selectProject, useDocument } from '../../store/documentStore';
 import { whenIdle } from '../files/projectJson';
 import { checkedDiagnostics, onChecked, requestCheck } from './checker';
 
-/** Wait after the last change before checking again, ms. */
-export const CHECK_DELAY_MS = 150;
-/** Longest wait for an idle moment after the quiet time, ms. */
-const IDLE_TIMEOUT_MS = 1000;
+/** Wait after the last change before checking again, ms: short for the projects people draw by
+ * hand (the list feels live, ~100 ms after an edit), longer for very large ones, where sending
+ * the project to the checker costs the page a few milliseconds and typing bursts should pass first. */
+export const CHECK_DELAY_MS = 30;
+export const LARGE_CHECK_DELAY_MS = 150;
+/** Projects with more elements than this count as large. */
+const LARGE_PROJECT = 2000;
+/** Longest wait for an idle moment after the quiet time, ms (long only while the page is busy). */
+const IDLE_TIMEOUT_MS = 250;
+const LARGE_IDLE_TIMEOUT_MS = 1000;
+
+/** How long to wait before checking this project version. */
+export function checkTiming(project: Project): { delayMs: number; idleTimeoutMs: number } {
+  let elements = 0;
+  for (const pou of project.pous) for (const n of pou.networks) elements += n.elements.length;
+  return elements > LARGE_PROJECT
+    ? { delayMs: LARGE_CHECK_DELAY_MS, idleTimeoutMs: LARGE_IDLE_TIMEOUT_MS }
+    : { delayMs: CHECK_DELAY_MS, idleTimeoutMs: IDLE_TIMEOUT_MS };
+}
 
 const NONE: readonly Diagnostic[] = [];
 
@@ -33,9 +48,10 @@ export function useDiagnostics(): readonly Diagnostic[] {
     const unsubscribe = onChecked(take);
     // After the quiet time, wait for an idle moment so sending the project never costs a frame.
     let cancelIdle: (() => void) | undefined;
+    const timing = checkTiming(project);
     const timer = setTimeout(() => {
-      cancelIdle = whenIdle(() => requestCheck(project), IDLE_TIMEOUT_MS);
-    }, CHECK_DELAY_MS);
+      cancelIdle = whenIdle(() => requestCheck(project), timing.idleTimeoutMs);
+    }, timing.delayMs);
     return () => {
       clearTimeout(timer);
       cancelIdle?.();

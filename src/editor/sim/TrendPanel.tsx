@@ -6,6 +6,7 @@ import type { SimState } from '../../store/simStore';
 import { useSim, useSimStore } from './simContext';
 import { trendData, trendOptions, type TrendSignal } from './trendChart';
 import { useWatchCandidates } from './useWatchCandidates';
+import { VariablePicker } from './VariablePicker';
 import './sim.css';
 
 const selectTrend = (s: SimState) => s.trend;
@@ -17,13 +18,11 @@ export function TrendPanel() {
   const names = useSim(selectTrendNames);
   const capacity = useSim(selectCapacity);
   const candidates = useWatchCandidates();
-  const [adding, setAdding] = useState('');
   const [capacityText, setCapacityText] = useState(String(capacity));
   useEffect(() => setCapacityText(String(capacity)), [capacity]);
-  const add = () => {
-    const known = candidates.find((c) => c.name.toUpperCase() === adding.trim().toUpperCase());
+  const add = (text: string) => {
+    const known = candidates.find((c) => c.name.toUpperCase() === text.trim().toUpperCase());
     if (known && !names.some((n) => n.toUpperCase() === known.name.toUpperCase())) sim.getState().toggleTrend(known.name);
-    setAdding('');
   };
   const commitCapacity = () => {
     const n = Number.parseInt(capacityText, 10);
@@ -33,12 +32,8 @@ export function TrendPanel() {
   return (
     <div className="rs-sim-panel rs-sim-trend" data-testid="trend-panel">
       <div className="rs-sim-panel-bar">
-        <input className="rs-sim-text" list="rs-trend-candidates" placeholder="Signal to trend" aria-label="Signal to trend" value={adding}
-          onChange={(e) => setAdding(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && add()} data-testid="trend-add-name" />
-        <datalist id="rs-trend-candidates">
-          {candidates.map((c) => <option key={c.name} value={c.name}>{c.type}</option>)}
-        </datalist>
-        <button type="button" className="rs-sim-btn" onClick={add} data-testid="trend-add">Add signal</button>
+        <VariablePicker testId="trend" placeholder="Signal to trend" label="Signal to trend" buttonLabel="Add signal"
+          candidates={candidates} describe={(c) => c.type} onAdd={add} />
         <label className="rs-sim-group">
           <span className="rs-sim-unit">last</span>
           <input className="rs-sim-number" aria-label="Scans shown in the trend" value={capacityText} inputMode="numeric"

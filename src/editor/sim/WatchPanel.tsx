@@ -5,6 +5,7 @@ import type { SimState } from '../../store/simStore';
 import { forcedText, liveText } from './liveValues';
 import { useSim, useSimStore } from './simContext';
 import { useWatchCandidates } from './useWatchCandidates';
+import { VariablePicker } from './VariablePicker';
 import './sim.css';
 
 const selectWatch = (s: SimState) => s.watch;
@@ -15,25 +16,17 @@ export function WatchPanel() {
   const watch = useSim(selectWatch);
   const forcedCount = useSim(selectForcedCount);
   const candidates = useWatchCandidates();
-  const [adding, setAdding] = useState('');
-  const add = () => {
-    const name = adding.trim();
+  const add = (text: string) => {
+    const name = text.trim();
     if (!name) return;
     const known = candidates.find((c) => c.name.toUpperCase() === name.toUpperCase());
     sim.getState().addWatch(known?.name ?? name);
-    setAdding('');
   };
   return (
     <div className="rs-sim-panel" data-testid="watch-panel">
       <div className="rs-sim-panel-bar">
-        <input className="rs-sim-text" list="rs-watch-candidates" placeholder="Variable or Instance.PIN" aria-label="Variable to watch"
-          value={adding} onChange={(e) => setAdding(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && add()} data-testid="watch-add-name" />
-        <datalist id="rs-watch-candidates">
-          {candidates.map((c) => (
-            <option key={c.name} value={c.name}>{`${c.type}${c.location ? ` ${c.location}` : ''}`}</option>
-          ))}
-        </datalist>
-        <button type="button" className="rs-sim-btn" onClick={add} data-testid="watch-add">Add to watch</button>
+        <VariablePicker testId="watch" placeholder="Variable or Instance.PIN" label="Variable to watch" buttonLabel="Add to watch"
+          candidates={candidates} describe={(c) => `${c.type}${c.location ? ` ${c.location}` : ''}`} onAdd={add} />
         <button type="button" className="rs-sim-btn" disabled={forcedCount === 0} onClick={() => sim.getState().unforceAll()}
           title="Remove every force" data-testid="unforce-all">
           Remove all forces{forcedCount > 0 ? ` (${forcedCount})` : ''}

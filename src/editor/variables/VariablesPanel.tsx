@@ -1,5 +1,6 @@
 // The variable table: the active POU's variables or the project's globals, edited in place and
-// checked as you type (names, duplicates, addresses, initial values).
+// checked as you type (names, duplicates, addresses, initial values). Long tables render only the
+// rows near the visible part (rowWindow.ts).
 import { useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { VariableScope } from '../../store/changes';
@@ -7,6 +8,7 @@ import { selectProject, useDocument, useDocumentStore, type DocumentState } from
 import { useUiStore } from '../../store/uiStore';
 import { variable } from '../../model/factory';
 import type { Variable } from '../../model/project';
+import { useRowWindow } from './rowWindow';
 import { VariableRow } from './VariableRow';
 import { variableFocus } from './variableFocus';
 import { undeclaredVariables } from './undeclared';
@@ -53,28 +55,67 @@ export function VariablesPanel() {
   const nextUse = useRef(new Map<string, number>());
   const focusRequest = useStore(variableFocus, (s) => s.request);
   const panel = useRef<HTMLElement>(null);
+  const scroller = useRef<HTMLDivElement>(null);
+  /** A row to bring into view (and focus its name field), once it is in the list. */
+  const [reveal, setReveal] = useState<{ name: string; focus: boolean; seq: number } | undefined>(undefined);
+  const revealSeq = useRef(0);
   useEffect(() => {
     if (!focusRequest) return;
     setShowGlobals(focusRequest.globals);
     setFilter('');
-    // After the list switched, focus the row's name field.
-    const frame = requestAnimationFrame(() => {
-      const row = panel.current?.querySelector(
-        `[data-testid="variable-row-${CSS.escape(focusRequest.name)}"]`,
-      );
-      row?.querySelector<HTMLInputElement>('input[aria-label="Name"]')?.focus();
-      row?.scrollIntoView({ block: 'nearest' });
-    });
-    return () => cancelAnimationFrame(frame);
+    revealSeq.current += 1;
+    setReveal({ name: focusRequest.name, focus: true, seq: revealSeq.current });
   }, [focusRequest]);
   const query = filter.trim().toUpperCase();
-  const shown = vars
-    .map((v, index) => ({ v, index }))
-    .filter(
-      ({ v }) =>
-        !query || `${v.name} ${v.type} ${v.location ?? ''} ${v.comment}`.toUpperCase().includes(query),
-    );
-  const rowsWithIssues = new Set(issues.map((i) => i.index)).size;
+  const shown = useMemo(
+    () =>
+      vars
+        .map((v, index) => ({ v, index }))
+        .filter(
+          ({ v }) =>
+            !query || `${v.name} ${v.type} ${v.location ?? ''} ${v.comment}`.toUpperCase().includes(query),
+        ),
+    [vars, query],
+  );
+  const issueRows = useMemo(() => new Set(issues.map((i) => i.index)), [issues]);
+  const hasIssue = useMemo(() => shown.map(({ index }) => issueRows.has(index)), [shown, issueRows]);
+  const rows = useRowWindow(scroller, hasIssue, () => {
+    const row = scroller.current?.querySelector('.rs-var-row');
+    const issue = scroller.current?.querySelector('.rs-var-issues');
+    if (!row) return undefined;
+    return {
+      row: row.getBoundingClientRect().height,
+      ...(issue ? { issue: issue.getBoundingClientRect().height } : {}),
+    };
+  });
+  const offsetOf = rows.offsetOf;
+  const revealed = useRef(0);
+  useEffect(() => {
+    const el = scroller.current;
+    if (!reveal || revealed.current === reveal.seq || !el) return undefined;
+    const i = shown.findIndex(({ v }) => v.name.toUpperCase() === reveal.name.toUpperCase());
+    if (i < 0) return undefined;
+    revealed.current = reveal.seq;
+    const head = el.querySelector('thead')?.getBoundingClientRect().height ?? 0;
+    const top = offsetOf(i);
+    if (top < el.scrollTop || top + head + 40 > el.scrollTop + el.clientHeight)
+      el.scrollTop = Math.max(0, top - el.clientHeight / 3);
+    // The row renders once the window has followed the scroll: look for it over a few frames.
+    let frame = 0;
+    let tries = 0;
+    const find = () => {
+      const row = panel.current?.querySelector(`[data-testid="variable-row-${CSS.escape(reveal.name)}"]`);
+      if (!row) {
+        if (++tries < 10) frame = requestAnimationFrame(find);
+        return;
+      }
+      if (reveal.focus) row.querySelector<HTMLInputElement>('input[aria-label="Name"]')?.focus();
+      row.scrollIntoView({ block: 'nearest' });
+    };
+    frame = requestAnimationFrame(find);
+    return () => cancelAnimationFrame(frame);
+  }, [reveal, shown, offsetOf]);
+  const rowsWithIssues = issueRows.size;
   const undeclared = useMemo(
     () => (!showGlobals && pou ? undeclaredVariables(project, pou) : []),
     [showGlobals, project, pou],
@@ -88,6 +129,8 @@ export function VariablesPanel() {
     if (store.getState().addVariable(variable(name, 'BOOL'), scope)) {
       setFocusName(name);
       setFilter('');
+      revealSeq.current += 1;
+      setReveal({ name, focus: false, seq: revealSeq.current });
     }
   };
   /** Selects the next element using the variable and scrolls the canvas there. */
@@ -162,7 +205,7 @@ export function VariablesPanel() {
           {refusal}
         </p>
       )}
-      <div className="rs-var-scroll">
+      <div className="rs-var-scroll" ref={scroller}>
         <table
           className="rs-var-table"
           aria-label={showGlobals ? 'Global variables' : `Variables of ${pou?.name ?? ''}`}
@@ -182,7 +225,10 @@ export function VariablesPanel() {
             </tr>
           </thead>
           <tbody>
-            {shown.map(({ v, index }) => (
+            {rows.before > 0 && (
+              <tr aria-hidden="true" className="rs-var-spacer" style={{ height: rows.before }} />
+            )}
+            {shown.slice(rows.first, rows.last + 1).map(({ v, index }) => (
               <VariableRow
                 key={index}
                 variable={v}
@@ -195,6 +241,9 @@ export function VariablesPanel() {
                 onDelete={() => store.getState().deleteVariable(v.name, scope)}
               />
             ))}
+            {rows.after > 0 && (
+              <tr aria-hidden="true" className="rs-var-spacer" style={{ height: rows.after }} />
+            )}
           </tbody>
         </table>
         {vars.length === 0 && (

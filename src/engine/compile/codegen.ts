@@ -1,44 +1,116 @@
-// Networks -> straight-line JavaScript over preallocated storage (BOOL variables in a Uint8Array,
-// other numbers in a Float64Array, 64-bit integers in an array of bigints, FB instances as
-// objects). A run of networks becomes one function returning the index of the next network to
-// run (jumps, RETURN). Power-flow nets are locals (0/1); nothing is allocated while a scan runs.
+// Networks -> JavaScript over preallocated storage (BOOL variables in a Uint8Array, other numbers
+// in a Float64Array, 64-bit integers in an array of bigints, FB instances as objects).
+//
+// Each network becomes a straight-line block whose operands are parameters: every variable slot,
+// edge memory, FB instance, numeric literal and jump target is read from `P[p + k]` (integers) or
+// `V[p + k]` (numbers), where p is the network's offset in the parameter tables. Networks with the
+// same structure therefore produce the same text (a *shape*) and share one piece of code; see
+// dispatch.ts, which turns the shapes into `switch` cases of a few dispatch loops. Power-flow nets
+// are locals (0/1); nothing is allocated while a scan runs.
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { ArgIR, NetworkIR, Op, OutIR, Source } from './ir';
-import { storeOf, type Access } from './symbols';
-
-/** What the generated factory receives, in this order. */
-export const FACTORY_PARAMS = ['b', 'n', 'g', 'fb', 'fns', 'e', 'W', 'K', 'ctx', 'R', 'C'] as const;
+import { storeOf, type Access, type Store } from './symbols';
 
 /** Power-flow nets packed per 32-bit word of the snapshot array W. */
 export const NETS_PER_WORD = 31;
 
-export interface GeneratedNetwork {
-  /** Body of `new Function(...FACTORY_PARAMS, body)`; returns the segment function `(now, scan) => next`. */
-  readonly body: string;
-  /** Values the code reads from K (bigints and non-finite numbers). */
-  readonly constants: readonly Value[];
-}
-
-/** Slots whose program writes are suppressed because the variable is forced: `b:3`, `n:12`, `g:0`. */
-export type ForcedSlots = ReadonlySet<string>;
-
 export const slotKey = (store: string, slot: number): string => `${store}:${slot}`;
 
-class Emitter {
-  readonly head: string[] = [];
-  readonly lines: string[] = [];
-  readonly constants: Value[] = [];
-  private readonly hoisted = new Map<string, string>();
-  private argArrays = 0;
-  constructor(
-    private readonly forced: ForcedSlots,
-    readonly functions: readonly ResolvedFunction[],
-  ) {}
+/** A parameter holding a variable slot the network writes (pointed elsewhere while the variable is forced). */
+export interface WriteParam {
+  readonly at: number;
+  readonly store: Store;
+  readonly slot: number;
+}
 
+export interface NetworkCode {
+  /** The network's statements; identical for networks of the same shape. */
+  readonly text: string;
+  /** Parameter k: P value (slots, indices) and V value (numeric literals). */
+  readonly ints: readonly number[];
+  readonly reals: readonly number[];
+  readonly writes: readonly WriteParam[];
+  /** Sizes of the argument arrays `$A0`, `$A1`... the text fills before `impl` calls. */
+  readonly arrays: readonly number[];
+}
+
+/**
+ * How operands are written: `shared` as parameters (dispatch loops), or `inline` as literals with
+ * writes to forced variables sent to the spare slot (straight-line functions, see segments.ts).
+ */
+export type CodeMode =
+  | { readonly kind: 'shared' }
+  | {
+      readonly kind: 'inline';
+      readonly forced: ReadonlySet<string>;
+      readonly sink: { readonly b: number; readonly n: number; readonly g: number };
+    };
+
+/** Values shared by the networks of a generated function: functions (`Cfn3`), K constants (`k0`), FB instances (`F7`). */
+export class ProgramConstants {
+  readonly constants: Value[] = [];
+  readonly functionsUsed = new Set<number>();
+  readonly fbsUsed = new Set<number>();
+  private readonly byKey = new Map<string, number>();
+  constructor(
+    readonly functions: readonly ResolvedFunction[],
+    readonly fbTypes: readonly string[],
+  ) {}
+  /** Name of a K constant (bigints, non-finite numbers, -0). */
+  constant(v: Value): string {
+    const key = `${typeof v}:${Object.is(v, -0) ? '-0' : String(v)}`;
+    let i = this.byKey.get(key);
+    if (i === undefined) {
+      i = this.constants.length;
+      this.constants.push(v);
+      this.byKey.set(key, i);
+    }
+    return `k${i}`;
+  }
+  /** Declarations the dispatch functions start with. */
+  head(): string[] {
+    return [
+      ...[...this.functionsUsed].map((f) => `const Cfn${f} = fns[${f}];`),
+      ...this.constants.map((_, i) => `const k${i} = K[${i}];`),
+      ...[...this.fbsUsed].map((f) => `const F${f} = fb[${f}]; // ${this.fbTypes[f]}`),
+    ];
+  }
+}
+
+class Emitter {
+  readonly lines: string[] = [];
+  readonly ints: number[] = [];
+  readonly reals: number[] = [];
+  readonly writes: WriteParam[] = [];
+  readonly arrays: number[] = [];
+  private readonly fbLocals = new Map<number, string>();
   /** Per network: nets holding a left-rail point (constant 1) and nets with one unconditional writer. */
   rails: ReadonlySet<number> = new Set();
   single: ReadonlySet<number> = new Set();
+
+  constructor(
+    readonly pc: ProgramConstants,
+    readonly mode: CodeMode,
+  ) {}
+
+  private param(int: number, real = 0): number {
+    this.ints.push(int);
+    this.reals.push(real);
+    return this.ints.length - 1;
+  }
+  /** An integer parameter (slot, index): `P[p + k]`. */
+  p(int: number): string {
+    return this.mode.kind === 'inline' ? String(int) : `P[p + ${this.param(int)}]`;
+  }
+  /** A slot written by the network. */
+  w(store: Store, slot: number): string {
+    if (this.mode.kind === 'inline')
+      return String(this.mode.forced.has(slotKey(store, slot)) ? this.mode.sink[store] : slot);
+    const at = this.param(slot);
+    this.writes.push({ at, store, slot });
+    return `P[p + ${at}]`;
+  }
 
   /** The expression of a power-flow net. */
   net(i: number): string {
@@ -50,44 +122,41 @@ class Emitter {
     return this.single.has(i) ? `n${i} = ${expr};` : `n${i} |= ${expr};`;
   }
 
-  /** A closure constant for an FB instance, a function or a K value. */
-  hoist(expr: string, prefix: string): string {
-    let name = this.hoisted.get(expr);
-    if (!name) {
-      name = `${prefix}${this.hoisted.size}`;
-      this.hoisted.set(expr, name);
-      this.head.push(`const ${name} = ${expr};`);
-    }
-    return name;
-  }
   constant(v: Value): string {
     if (typeof v === 'boolean') return v ? 'true' : 'false';
-    if (typeof v === 'number' && Number.isFinite(v) && !Object.is(v, -0)) return String(v);
+    if (typeof v === 'number' && Number.isFinite(v) && !Object.is(v, -0))
+      return this.mode.kind === 'inline' ? String(v) : `V[p + ${this.param(0, v)}]`;
     if (typeof v === 'bigint') return `${v}n`;
-    this.constants.push(v);
-    return this.hoist(`K[${this.constants.length - 1}]`, 'k');
+    return this.pc.constant(v);
   }
   argArray(n: number): string {
-    const name = `A${this.argArrays++}`;
-    this.head.push(`const ${name} = new Array(${n}).fill(0);`);
-    return name;
+    this.arrays.push(n);
+    return `$A${this.arrays.length - 1}`;
   }
-  isForced(a: Access): boolean {
-    return (a.kind === 'var' || a.kind === 'bit') && this.forced.has(slotKey(a.v.store, a.v.slot));
-  }
+  /** A local holding an FB instance (its type is part of the text, so a shape's sites see one class). */
   fbRef(index: number): string {
-    return this.hoist(`fb[${index}]`, 'F');
+    if (this.mode.kind === 'inline') {
+      this.pc.fbsUsed.add(index);
+      return `F${index}`;
+    }
+    let name = this.fbLocals.get(index);
+    if (!name) {
+      name = `F${this.fbLocals.size}`;
+      this.fbLocals.set(index, name);
+      this.lines.push(`const ${name} = fb[${this.p(index)}]; // ${this.pc.fbTypes[index]}`);
+    }
+    return name;
   }
 
   /** A BOOL access read as 0/1. */
   readBit(a: Access): string {
     switch (a.kind) {
       case 'var':
-        return `b[${a.v.slot}]`;
+        return `b[${this.p(a.v.slot)}]`;
       case 'bit':
         return a.v.store === 'g'
-          ? `Number((g[${a.v.slot}] >> ${a.bit}n) & 1n)`
-          : `((n[${a.v.slot}] >>> ${a.bit}) & 1)`;
+          ? `Number((g[${this.p(a.v.slot)}] >> ${a.bit}n) & 1n)`
+          : `((n[${this.p(a.v.slot)}] >>> ${a.bit}) & 1)`;
       case 'pin':
         return `(${this.fbRef(a.fb.index)}.${a.pin} ? 1 : 0)`;
       case 'const':
@@ -95,19 +164,21 @@ class Emitter {
     }
   }
 
-  /** Statement writing a 0/1 expression to a BOOL access (empty when the variable is forced). */
+  /** Statement writing a 0/1 expression to a BOOL access. */
   writeBit(a: Access, x: string): string {
-    if (this.isForced(a)) return '';
     switch (a.kind) {
       case 'var':
-        return `b[${a.v.slot}] = ${x};`;
+        return `b[${this.w('b', a.v.slot)}] = ${x};`;
       case 'bit': {
+        const s = a.v.slot;
         if (a.v.store === 'g') {
           const mask = 1n << BigInt(a.bit);
-          return `g[${a.v.slot}] = (${x}) ? (g[${a.v.slot}] | ${mask}n) : (g[${a.v.slot}] & ${BigInt.asUintN(64, ~mask)}n);`;
+          const r = this.p(s);
+          return `g[${this.w('g', s)}] = (${x}) ? (g[${r}] | ${mask}n) : (g[${r}] & ${BigInt.asUintN(64, ~mask)}n);`;
         }
         const mask = 2 ** a.bit;
-        return `n[${a.v.slot}] = (${x}) ? ((n[${a.v.slot}] | ${mask}) >>> 0) : ((n[${a.v.slot}] & ${~mask >>> 0}) >>> 0);`;
+        const r = this.p(s);
+        return `n[${this.w('n', s)}] = (${x}) ? ((n[${r}] | ${mask}) >>> 0) : ((n[${r}] & ${~mask >>> 0}) >>> 0);`;
       }
       case 'pin':
         return `${this.fbRef(a.fb.index)}.${a.pin} = (${x}) !== 0;`;
@@ -122,14 +193,15 @@ class Emitter {
     let from: ElementaryType;
     if (src.from === 'power') return this.rails.has(src.net) ? 'true' : `(n${src.net} === 1)`;
     if (src.from === 'data') {
-      expr = `${src.store}[${src.slot}]`;
+      expr = `${src.store}[${this.p(src.slot)}]`;
       from = src.type;
     } else {
       const a = src.access;
       from = a.type;
       switch (a.kind) {
         case 'var':
-          expr = a.v.store === 'b' ? `(b[${a.v.slot}] === 1)` : `${a.v.store}[${a.v.slot}]`;
+          expr =
+            a.v.store === 'b' ? `(b[${this.p(a.v.slot)}] === 1)` : `${a.v.store}[${this.p(a.v.slot)}]`;
           break;
         case 'bit':
           expr = `(${this.readBit(a)} === 1)`;
@@ -147,11 +219,10 @@ class Emitter {
   /** Statement writing a value expression of type `from` to an access. */
   writeValue(a: Access, x: string, from: ElementaryType): string {
     if (a.type === 'BOOL') return this.writeBit(a, `(${x}) ? 1 : 0`);
-    if (this.isForced(a)) return '';
     const v = storeOf(from) === 'n' && storeOf(a.type) === 'g' ? `BigInt(${x})` : x;
     switch (a.kind) {
       case 'var':
-        return `${a.v.store}[${a.v.slot}] = ${v};`;
+        return `${a.v.store}[${this.w(a.v.store, a.v.slot)}] = ${v};`;
       case 'pin':
         return `${this.fbRef(a.fb.index)}.${a.pin} = ${v};`;
       default:
@@ -161,52 +232,41 @@ class Emitter {
 }
 
 /**
- * One function for a run of consecutive networks (a segment): `(now, scan) => next network`.
- * Networks are inlined one after another, so a scan makes one call per segment, not per network.
- * A network whose jump or RETURN fires leaves the segment early. For the watchdog and the
- * snapshot, R[first] records the scan and C[first] how many networks ran; each network packs its
- * power-flow nets into W[words[index]...] (NETS_PER_WORD bits per word).
+ * The code of one network, run inside a dispatch loop where `i` is the network, `p` its parameter
+ * offset and `t`, `r`, `eno`, `go`, `next` scratch locals. A powered jump or RETURN returns the
+ * target (or -1) once the whole network has been evaluated, with S[0] = this network. The network packs its power-flow nets into W (NETS_PER_WORD bits per word).
  */
-export function generateSegment(
-  irs: readonly NetworkIR[],
-  functions: readonly ResolvedFunction[],
-  forced: ForcedSlots,
-  words: ArrayLike<number>,
-): GeneratedNetwork {
-  const em = new Emitter(forced, functions);
+export function generateNetwork(
+  ir: NetworkIR,
+  pc: ProgramConstants,
+  firstWord: number,
+  mode: CodeMode = { kind: 'shared' },
+): NetworkCode {
+  const idx = mode.kind === 'inline' ? String(ir.index) : 'i';
+  const em = new Emitter(pc, mode);
   const L = em.lines;
-  const first = irs[0]!.index;
-  L.push('let t = 0, r, eno = 0, next = 0;');
-  L.push(`R[${first}] = scan;`);
-  irs.forEach((ir, k) => {
-    const rails = new Set(ir.railNets);
-    em.rails = rails;
-    em.single = singleWriterNets(ir);
-    const live = Array.from({ length: ir.netCount }, (_, i) => i).filter((i) => !rails.has(i));
-    const controls = ir.ops.some((op) => op.op === 'jump' || op.op === 'return');
-    L.push(`{ // network ${ir.index + 1}`);
-    if (live.length) L.push(`let ${live.map((i) => `n${i} = 0`).join(', ')};`);
-    if (controls) L.push(`let go = 0; next = ${ir.index + 1};`);
-    for (const op of ir.ops) emitOp(em, op);
-    for (let w = 0; w * NETS_PER_WORD < ir.netCount; w++) {
-      const bits = live
-        .filter((i) => Math.floor(i / NETS_PER_WORD) === w)
-        .map((i) => (i % NETS_PER_WORD ? `(n${i} << ${i % NETS_PER_WORD})` : `n${i}`));
-      L.push(`W[${words[ir.index]! + w}] = ${bits.length ? bits.join(' | ') : '0'};`);
-    }
-    if (controls) L.push(`if (next !== ${ir.index + 1}) { C[${first}] = ${k + 1}; return next; }`);
-    L.push('}');
-  });
-  L.push(`C[${first}] = ${irs.length};`);
-  L.push(`return ${irs[irs.length - 1]!.index + 1};`);
-  const body = [
-    '"use strict";',
-    ...em.head,
-    `return function networks_${first + 1}_to_${irs[irs.length - 1]!.index + 1}(now, scan) {`,
-    ...L.filter((l) => l !== '').map((l) => `  ${l}`),
-    '};',
-  ].join('\n');
-  return { body, constants: em.constants };
+  const rails = new Set(ir.railNets);
+  em.rails = rails;
+  em.single = singleWriterNets(ir);
+  const live = Array.from({ length: ir.netCount }, (_, i) => i).filter((i) => !rails.has(i));
+  if (live.length) L.push(`let ${live.map((i) => `n${i} = 0`).join(', ')};`);
+  const controls = ir.ops.some((op) => op.op === 'jump' || op.op === 'return');
+  if (controls) L.push(`go = 0; next = ${idx} + 1;`);
+  for (const op of ir.ops) emitOp(em, op);
+  for (let w = 0; w * NETS_PER_WORD < ir.netCount; w++) {
+    const bits = live
+      .filter((i) => Math.floor(i / NETS_PER_WORD) === w)
+      .map((i) => (i % NETS_PER_WORD ? `(n${i} << ${i % NETS_PER_WORD})` : `n${i}`));
+    L.push(`W[${em.p(firstWord + w)}] = ${bits.length ? bits.join(' | ') : '0'};`);
+  }
+  if (controls) L.push(`if (next !== ${idx} + 1) { S[0] = ${idx}; return next; }`);
+  return {
+    text: L.filter((l) => l !== '').join('\n'),
+    ints: em.ints,
+    reals: em.reals,
+    writes: em.writes,
+    arrays: em.arrays,
+  };
 }
 
 const and = (a: string, b: string): string => (a === '1' ? b : b === '1' ? a : `${a} & ${b}`);
@@ -248,19 +308,15 @@ function emitOp(em: Emitter, op: Op): void {
         case 'NOT':
           return void L.push(em.setNet(o, `${i} ^ 1`), tail);
         case 'P':
+        case 'N': {
+          const e = em.p(op.edge!);
           return void L.push(
-            `t = ${v};`,
-            em.setNet(o, and(i, `t & (e[${op.edge}] ^ 1)`)),
-            `e[${op.edge}] = t;`,
+            op.contact === 'P' ? `t = ${v};` : `t = ${v} ^ 1;`,
+            em.setNet(o, and(i, `t & (e[${e}] ^ 1)`)),
+            `e[${e}] = t;`,
             tail,
           );
-        case 'N':
-          return void L.push(
-            `t = ${v} ^ 1;`,
-            em.setNet(o, and(i, `t & (e[${op.edge}] ^ 1)`)),
-            `e[${op.edge}] = t;`,
-            tail,
-          );
+        }
       }
       return;
     }
@@ -282,18 +338,22 @@ function emitOp(em: Emitter, op: Op): void {
         case 'RM':
           L.push(`if (${i}) { ${em.writeBit(op.dst, '0')} }`);
           break;
-        case 'P':
-          L.push(`t = ${i} & (e[${op.edge}] ^ 1); e[${op.edge}] = ${i}; ${em.writeBit(op.dst, 't')}`);
+        case 'P': {
+          const e = em.p(op.edge!);
+          L.push(`t = ${i} & (e[${e}] ^ 1); e[${e}] = ${i}; ${em.writeBit(op.dst, 't')}`);
           break;
-        case 'N':
-          L.push(`t = ${i} ^ 1; r = t & (e[${op.edge}] ^ 1); e[${op.edge}] = t; ${em.writeBit(op.dst, 'r')}`);
+        }
+        case 'N': {
+          const e = em.p(op.edge!);
+          L.push(`t = ${i} ^ 1; r = t & (e[${e}] ^ 1); e[${e}] = t; ${em.writeBit(op.dst, 'r')}`);
           break;
+        }
       }
       if (op.outNet !== op.inNet) L.push(em.setNet(op.outNet, i));
       return;
     }
     case 'jump':
-      return void L.push(`if (${em.net(op.inNet)} && go === 0) { go = 1; next = ${op.target}; }`);
+      return void L.push(`if (${em.net(op.inNet)} && go === 0) { go = 1; next = ${em.p(op.target)}; }`);
     case 'return':
       return void L.push(`if (${em.net(op.inNet)} && go === 0) { go = 1; next = -1; }`);
     case 'function':
@@ -309,15 +369,16 @@ function argExprs(em: Emitter, args: readonly ArgIR[]): string[] {
 
 function emitOutput(em: Emitter, out: OutIR, value: string, lines: string[]): void {
   if (out.net !== undefined) lines.push(em.setNet(out.net, `(${value}) ? 1 : 0`));
-  if (out.data) lines.push(`${out.data.store}[${out.data.slot}] = ${value};`);
+  if (out.data) lines.push(`${out.data.store}[${em.p(out.data.slot)}] = ${value};`);
   if (out.dst) lines.push(em.writeValue(out.dst, value, out.type));
 }
 
 function emitFunction(em: Emitter, op: Extract<Op, { op: 'function' }>): void {
   const L = em.lines;
-  const fn = em.hoist(`fns[${op.fn}]`, 'C');
+  em.pc.functionsUsed.add(op.fn);
+  const fn = `Cfn${op.fn}`;
   const args = argExprs(em, op.args);
-  const resolved = em.functions[op.fn]!;
+  const resolved = em.pc.functions[op.fn]!;
   let call: string;
   // The call form is fixed per function: picked here so the scan has no test and no array to build.
   if (args.length === 1 && resolved.impl1) call = `${fn}.impl1(ctx, ${args[0]})`;
@@ -331,7 +392,7 @@ function emitFunction(em: Emitter, op: Extract<Op, { op: 'function' }>): void {
   const body: string[] = ['ctx.error = false;', `r = ${call};`, 'eno = ctx.error ? 0 : 1;'];
   emitOutput(em, op.out, 'r', body);
   if (en === undefined) L.push(...body);
-  else L.push(`if (${en}) { ${body.join(' ')} } else { eno = 0; }`);
+  else L.push(`if (${en}) { ${body.filter((l) => l !== '').join(' ')} } else { eno = 0; }`);
   emitOutput(em, op.eno, 'eno', L);
 }
 

@@ -13,12 +13,15 @@ export class Memory {
   readonly g: bigint[];
   readonly fbs: FbInstance[];
   readonly edges: Uint8Array;
+  /** A spare slot per store, after the variables: writes to a forced variable land there. */
+  readonly sink: { readonly b: number; readonly n: number; readonly g: number };
 
   constructor(readonly program: CompiledProgram) {
     const { counts, fbs } = program.symbols;
-    this.b = new Uint8Array(Math.max(1, counts.b));
-    this.n = new Float64Array(Math.max(1, counts.n));
-    this.g = new Array<bigint>(Math.max(1, counts.g)).fill(0n);
+    this.sink = { b: counts.b, n: counts.n, g: counts.g };
+    this.b = new Uint8Array(counts.b + 1);
+    this.n = new Float64Array(counts.n + 1);
+    this.g = new Array<bigint>(counts.g + 1).fill(0n);
     this.fbs = fbs.map((f) => {
       const inst = createFb(f.type, program.profile);
       if (!inst) throw new Error(`no implementation for the function block ${f.type}`);

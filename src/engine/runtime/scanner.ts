@@ -4,19 +4,15 @@
 import type { Value } from '../../model/iecTypes';
 import type { Fault, Plc, PlcOptions, PowerSnapshot, ScanReport, StepReport } from '../api';
 import type { FnContext } from '../library/fnTypes';
-import { FACTORY_PARAMS, generateSegment, NETS_PER_WORD, slotKey } from '../compile/codegen';
+import { slotKey } from '../compile/codegen';
+import { DISPATCH_PARAMS, planDispatch, type DispatchFn, type DispatchPlan } from '../compile/dispatch';
 import { networkPower, type PowerTrace } from './snapshot';
-import { planSegments, writersBySlot } from './plan';
 import type { CompiledProgram } from '../compile/program';
 import type { Access, VarSymbol } from '../compile/symbols';
 import { coerce, Memory } from './memory';
 
-/** Runs a segment of consecutive networks: `(time, scan) => next network` (-1 after RETURN). */
-type SegmentFn = (now: number, scan: number) => number;
-
-/** Most networks inlined in one generated function (V8 optimises functions up to a size). */
-const SEGMENT_OPS = 400;
-const SEGMENT_NETWORKS = 64;
+/** Networks run per call of a dispatch function before the scan time is checked (watchdog). */
+const CHUNK = 1024;
 
 // Wall clock for the watchdog and execMs (the engine core has no DOM or Node typings).
 const perf = (globalThis as { performance?: { now(): number } }).performance;
@@ -26,15 +22,12 @@ export class ScanPlc implements Plc {
   readonly pou: string;
   readonly profile: CompiledProgram['profile'];
   private readonly mem: Memory;
-  /** Segment functions by their first network; undefined inside a segment. */
-  private readonly segments: (SegmentFn | undefined)[];
-  /** First network of the segment holding each network. */
-  private readonly segmentOf: Int32Array;
-  /** One-network functions for stepping, built on first use. */
-  private readonly singles: (SegmentFn | undefined)[];
-  /** Networks run by the last call of the function starting at each network (written by generated code). */
-  private readonly ran: Int32Array;
-  /** Power-flow net values per network, written by the generated code. */
+  private readonly plan: DispatchPlan;
+  /** The dispatch functions (compile/dispatch.ts) and the one holding each network's shape. */
+  private readonly groups: DispatchFn[];
+  private readonly groupOf: Int32Array;
+  /** Written by the dispatch functions: the last network run by the last call. */
+  private readonly stats = new Int32Array(1);
   /** Power-flow nets of every network, packed (see codegen NETS_PER_WORD), and each network's first word. */
   private readonly power: Int32Array;
   private readonly words: Int32Array;
@@ -46,8 +39,6 @@ export class ScanPlc implements Plc {
   private readonly outputsVars: VarSymbol[];
   private readonly outputImage: Value[];
   private readonly forces = new Map<VarSymbol, Value>();
-  /** Networks that write each slot (`b:3`), to regenerate when its variable is (un)forced. */
-  private readonly writers: ReadonlyMap<string, ReadonlySet<number>>;
   private readonly maxEvals: number;
   private readonly maxScanMs: number;
   private count = 0;
@@ -68,15 +59,16 @@ export class ScanPlc implements Plc {
     this.pou = program.pou;
     this.profile = program.profile;
     this.mem = new Memory(program);
-    this.words = new Int32Array(program.networks.length);
-    let words = 0;
-    program.networks.forEach((n, i) => {
-      this.words[i] = words;
-      words += Math.ceil(n.netCount / NETS_PER_WORD);
-    });
-    this.power = new Int32Array(Math.max(1, words));
+    const plan = planDispatch(
+      program.networks,
+      program.functions,
+      program.symbols.fbs.map((f) => f.type),
+    );
+    this.plan = plan;
+    this.words = plan.words;
+    this.power = new Int32Array(Math.max(1, plan.wordCount));
     this.ranIn = new Int32Array(program.networks.length).fill(-1);
-    this.ran = new Int32Array(program.networks.length);
+    this.groupOf = plan.groupOf;
     const vars = program.symbols.vars;
     this.inputs = vars.filter((v) => v.location?.area === 'I');
     this.inputImage = this.inputs.map((v) => v.initial);
@@ -84,52 +76,28 @@ export class ScanPlc implements Plc {
     this.outputImage = this.outputsVars.map((v) => v.initial);
     this.maxEvals = opts.maxNetworkEvaluations ?? 100 * program.networks.length + 10_000;
     this.maxScanMs = opts.maxScanMs ?? 1000;
-    this.writers = writersBySlot(program.networks);
-    const count = program.networks.length;
-    this.segments = new Array<SegmentFn | undefined>(count).fill(undefined);
-    this.singles = new Array<SegmentFn | undefined>(count).fill(undefined);
-    this.segmentOf = planSegments(program.networks, SEGMENT_OPS, SEGMENT_NETWORKS);
-    for (let i = 0; i < count; i++) if (this.segmentOf[i] === i) this.segments[i] = this.buildSegment(i);
-    this.coldRestart();
-  }
-
-  private segmentEnd(first: number): number {
-    let end = first + 1;
-    while (end < this.segmentOf.length && this.segmentOf[end] === first) end++;
-    return end;
-  }
-
-  private build(first: number, end: number): SegmentFn {
-    const forced = new Set([...this.forces.keys()].map((v) => slotKey(v.store, v.slot)));
-    const gen = generateSegment(
-      this.program.networks.slice(first, end),
-      this.program.functions,
-      forced,
-      this.words,
-    );
-    const factory = new Function(...FACTORY_PARAMS, gen.body) as (...args: unknown[]) => SegmentFn;
     const m = this.mem;
-    return factory(
-      m.b,
-      m.n,
-      m.g,
-      m.fbs,
-      this.program.functions,
-      m.edges,
-      this.power,
-      gen.constants,
-      this.ctx,
-      this.ranIn,
-      this.ran,
-    );
-  }
-
-  private buildSegment(first: number): SegmentFn {
-    return this.build(first, this.segmentEnd(first));
-  }
-
-  private single(i: number): SegmentFn {
-    return (this.singles[i] ??= this.build(i, i + 1));
+    this.groups = plan.bodies.map((body) => {
+      const factory = new Function(...DISPATCH_PARAMS, body) as (...args: unknown[]) => DispatchFn;
+      return factory(
+        m.b,
+        m.n,
+        m.g,
+        m.fbs,
+        program.functions,
+        m.edges,
+        this.power,
+        plan.constants,
+        this.ctx,
+        this.ranIn,
+        this.stats,
+        plan.P,
+        plan.V,
+        plan.base,
+        plan.shape,
+      );
+    });
+    this.coldRestart();
   }
 
   get scanCount(): number {
@@ -158,7 +126,7 @@ export class ScanPlc implements Plc {
       const v = this.inputs[i]!;
       if (!this.forces.has(v)) this.mem.store(v, this.inputImage[i]!);
     }
-    this.cursor = this.segmentOf.length > 0 ? 0 : -2;
+    this.cursor = this.ranIn.length > 0 ? 0 : -2;
     this.evals = 0;
     this.backJump = -1;
   }
@@ -173,27 +141,30 @@ export class ScanPlc implements Plc {
 
   /** Runs networks from the cursor; stops after one when `single`. Returns the network run last. */
   private run(single: boolean): number {
-    const count = this.segmentOf.length;
-    const segments = this.segments;
-    const ran = this.ran;
+    const count = this.groupOf.length;
+    const groups = this.groups;
+    const groupOf = this.groupOf;
+    const stats = this.stats;
     const scan = this.count;
     const t = this.time;
     const maxEvals = this.maxEvals;
     let evals = this.evals;
+    let checked = evals;
     let i = this.cursor;
     let last = -1;
     while (i >= 0 && i < count) {
-      const fn = single ? this.single(i) : (segments[i] ?? this.single(i));
-      const next = fn(t, scan);
-      const ranNow = ran[i]!;
-      evals += ranNow;
-      last = i + ranNow - 1;
+      const end = single ? i + 1 : Math.min(count, i + CHUNK, i + maxEvals - evals);
+      const next = groups[groupOf[i]!]!(i, end, t, scan);
+      last = stats[0]!;
+      this.ranIn.fill(scan, i, last + 1);
+      evals += last - i + 1;
       if (next <= last && next >= 0) this.backJump = last;
-      if (evals >= maxEvals || ((evals & 1023) < ranNow && now() - this.scanStart > this.maxScanMs)) {
+      if (evals >= maxEvals || (evals - checked >= CHUNK && now() - this.scanStart > this.maxScanMs)) {
         this.evals = evals;
         this.trip(last);
         return last;
       }
+      if (evals - checked >= CHUNK) checked = evals;
       i = next;
       if (single) break;
     }
@@ -306,34 +277,33 @@ export class ScanPlc implements Plc {
   force(name: string, value: Value): void {
     const v = this.forceTarget(name);
     const val = coerce(v.type, value, `"${name}"`);
-    const fresh = !this.forces.has(v);
     this.forces.set(v, val);
     this.mem.store(v, val);
-    if (fresh) this.rebuildWriters(v);
+    this.redirectWriters(v, true);
   }
 
   unforce(name: string): void {
     const v = this.forceTarget(name);
-    if (this.forces.delete(v)) this.rebuildWriters(v);
+    if (this.forces.delete(v)) this.redirectWriters(v, false);
   }
 
   unforceAll(): void {
     const vars = [...this.forces.keys()];
     this.forces.clear();
-    for (const v of vars) this.rebuildWriters(v);
+    for (const v of vars) this.redirectWriters(v, false);
   }
 
   forced(): ReadonlyMap<string, Value> {
     return new Map([...this.forces].map(([v, val]) => [v.name, val]));
   }
 
-  /** Regenerates the networks that write a variable, so a forced one is no longer written. */
-  private rebuildWriters(v: VarSymbol): void {
-    for (const i of this.writers.get(slotKey(v.store, v.slot)) ?? []) {
-      this.singles[i] = undefined;
-      const first = this.segmentOf[i]!;
-      this.segments[first] = this.buildSegment(first);
-    }
+  /**
+   * Points the program's writes to a variable at a spare slot (Memory.sink) while it is forced,
+   * so they do not stick, and back at the variable when it is unforced; no code is regenerated.
+   */
+  private redirectWriters(v: VarSymbol, forced: boolean): void {
+    const target = forced ? this.mem.sink[v.store] : v.slot;
+    for (const at of this.plan.writes.get(slotKey(v.store, v.slot)) ?? []) this.plan.P[at] = target;
   }
 
   setInputs(values: Readonly<Record<string, Value>>): void {
@@ -370,7 +340,6 @@ export class ScanPlc implements Plc {
     this.cursor = -1;
     this.currentFault = undefined;
     this.ranIn.fill(-1);
-    this.ran.fill(0);
     this.power.fill(0);
     for (const [v, val] of this.forces) this.mem.store(v, val);
     this.outputsVars.forEach((v, i) => (this.outputImage[i] = this.mem.load(v)));
@@ -395,9 +364,7 @@ export class ScanPlc implements Plc {
       scan: this.count,
       power: this.power,
       words: this.words,
-      startedIn: this.ranIn,
-      ran: this.ran,
-      reach: SEGMENT_NETWORKS,
+      ranIn: this.ranIn,
     };
     return {
       scan: this.count,

@@ -9,19 +9,13 @@ export interface PowerTrace {
   /** Packed power-flow nets; network i starts at words[i]. */
   readonly power: Int32Array;
   readonly words: Int32Array;
-  /** Scan in which the generated function starting at network s last ran, and how many networks it ran. */
-  readonly startedIn: Int32Array;
-  readonly ran: Int32Array;
-  /** Most networks one generated function runs. */
-  readonly reach: number;
+  /** Scan in which each network last ran. */
+  readonly ranIn: Int32Array;
 }
 
-/** Whether network i ran in the trace's scan: some function starting at s <= i ran it then. */
+/** Whether network i ran in the trace's scan. */
 function ranInScan(t: PowerTrace, i: number): boolean {
-  if (t.scan === 0) return false;
-  for (let s = i; s >= 0 && s >= i - t.reach; s--)
-    if (t.startedIn[s] === t.scan && i < s + t.ran[s]!) return true;
-  return false;
+  return t.scan !== 0 && t.ranIn[i] === t.scan;
 }
 
 export function networkPower(program: CompiledProgram, t: PowerTrace): NetworkPower[] {

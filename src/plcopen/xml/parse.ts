@@ -40,8 +40,10 @@ export function lineColumn(text: string, offset: number): { line: number; column
   return { line, column: offset - lineStart + 1 };
 }
 
-/** Shared by every self-closing element (most of a PLCopen file: positions, pins); never written. */
+/** Shared by every element without child elements (most of a PLCopen file: positions, pins); never written. */
 const NO_CHILDREN: XmlElement[] = Object.freeze([]) as unknown as XmlElement[];
+/** Shared by every element without attributes; never written. */
+const NO_ATTRS: Readonly<Record<string, string>> = Object.freeze({});
 
 const ENTITIES: Record<string, string> = { lt: '<', gt: '>', amp: '&', quot: '"', apos: "'" };
 
@@ -65,13 +67,42 @@ function decodeEntities(s: string, fail: (msg: string) => never): string {
   });
 }
 
-const localName = (qname: string): string => {
-  const i = qname.indexOf(':');
-  return i === -1 ? qname : qname.slice(i + 1);
-};
-
 const isNameEnd = (c: number): boolean =>
   c === 32 || c === 9 || c === 10 || c === 13 || c === 47 /* / */ || c === 62; /* > */
+
+/** Values up to this length are shared through the string table (numbers, flags, pin names). */
+const SHORT_VALUE = 12;
+const TABLE_MASK = 4095;
+
+/**
+ * One string per distinct element name, attribute name and short value: a PLCopen file repeats the
+ * same few hundred of them hundreds of thousands of times, and a tree of shared strings is far
+ * smaller (and faster to collect) than one of copies. Open addressing is not needed: a slot holds
+ * the last string hashed to it, a miss just slices.
+ */
+class StringTable {
+  private readonly slots: string[] = new Array<string>(TABLE_MASK + 1).fill('');
+  constructor(private readonly src: string) {}
+  /** The text between start and end; `hash` must be `hashOf(start, end)`. */
+  get(start: number, end: number, hash: number): string {
+    const slot = (hash ^ (hash >>> 13)) & TABLE_MASK;
+    const cached = this.slots[slot]!;
+    if (cached.length === end - start) {
+      // A plain loop: these strings are short, and startsWith on a huge source is not inlined.
+      let k = 0;
+      while (k < cached.length && cached.charCodeAt(k) === this.src.charCodeAt(start + k)) k++;
+      if (k === cached.length) return cached;
+    }
+    const s = this.src.slice(start, end);
+    this.slots[slot] = s;
+    return s;
+  }
+  hashOf(start: number, end: number): number {
+    let h = end - start;
+    for (let k = start; k < end; k++) h = (Math.imul(h, 31) + this.src.charCodeAt(k)) | 0;
+    return h;
+  }
+}
 
 /** Parses XML text into its root element. Throws XmlSyntaxError with a location. */
 export function parseXml(src: string): XmlElement {
@@ -82,7 +113,12 @@ export function parseXml(src: string): XmlElement {
     throw new XmlSyntaxError(msg, line, column);
   };
   if (src.charCodeAt(0) === 0xfeff) pos = 1;
+  const strings = new StringTable(src);
   const stack: XmlElement[] = [];
+  // Children of the open elements, innermost last: each element gets an exact-size array when it
+  // closes (a growing array per element would hold mostly empty slots).
+  const kids: XmlElement[] = [];
+  const kidsFrom: number[] = [];
   let root: XmlElement | undefined;
 
   while (pos < len) {
@@ -104,8 +140,8 @@ export function parseXml(src: string): XmlElement {
           break;
         }
       }
-      const top = stack[stack.length - 1];
       if (!blank) {
+        const top = stack[stack.length - 1];
         const chunk = src.slice(pos, lt);
         if (top) top.text += decodeEntities(chunk, (m) => fail(m, pos));
         else
@@ -153,25 +189,41 @@ export function parseXml(src: string): XmlElement {
     if (c1 === 47 /* / */) {
       const e = src.indexOf('>', pos + 2);
       if (e === -1) fail('unclosed end tag');
-      const name = src.slice(pos + 2, e).trim();
       const top = stack.pop();
-      if (!top) fail(`end tag </${name}> without a start tag`);
-      if (top.qname !== name)
-        fail(`end tag </${name}> does not match <${top.qname}> (line ${lineColumn(src, top.offset).line})`);
-      top.end = e + 1;
+      // Fast path: `</name>` exactly as opened.
+      const q = top?.qname ?? '';
+      if (!top || e !== pos + 2 + q.length || !src.startsWith(q, pos + 2)) {
+        const name = src.slice(pos + 2, e).trim();
+        if (!top) fail(`end tag </${name}> without a start tag`);
+        if (top.qname !== name)
+          fail(`end tag </${name}> does not match <${top.qname}> (line ${lineColumn(src, top.offset).line})`);
+      }
+      const from = kidsFrom.pop()!;
+      if (kids.length > from) {
+        (top as { children: XmlElement[] }).children = kids.slice(from);
+        kids.length = from;
+      }
+      top!.end = e + 1;
       pos = e + 1;
       continue;
     }
     // Start tag.
     const start = pos;
     let i = pos + 1;
-    while (i < len && !isNameEnd(src.charCodeAt(i))) i++;
-    const qname = src.slice(pos + 1, i);
+    let h = 0;
+    let colon = -1;
+    for (; i < len; i++) {
+      const c = src.charCodeAt(i);
+      if (isNameEnd(c)) break;
+      if (c === 58 /* : */ && colon === -1) colon = i;
+      h = (Math.imul(h, 31) + c) | 0;
+    }
+    const qname = strings.get(pos + 1, i, (h + Math.imul(i - pos - 1, 0x9e3779b1)) | 0);
     const first = qname.charCodeAt(0);
     const nameStart =
       (first >= 65 && first <= 90) || (first >= 97 && first <= 122) || first === 95 || first >= 0xc0;
     if (!nameStart) fail(root || stack.length ? 'bad element name' : 'this is not XML: expected an element');
-    const attrs: Record<string, string> = {};
+    let attrs = NO_ATTRS as Record<string, string>;
     let selfClosing = false;
     for (;;) {
       while (i < len) {
@@ -195,38 +247,66 @@ export function parseXml(src: string): XmlElement {
       if (eq === -1) fail(`attribute without a value in <${qname}>`, i);
       let ae = eq;
       while (ae > i && src.charCodeAt(ae - 1) <= 32) ae--;
-      const an = src.slice(i, ae);
-      for (let k = 0; k < an.length; k++) {
-        const c = an.charCodeAt(k);
-        if (c <= 32 || c === 60 || c === 62 || c === 34 || c === 39) fail(`bad attribute in <${qname}>`, i);
+      if (ae === i) fail(`bad attribute in <${qname}>`, i);
+      let ah = 0;
+      for (let k = i; k < ae; k++) {
+        const ch = src.charCodeAt(k);
+        if (ch <= 32 || ch === 60 || ch === 62 || ch === 34 || ch === 39)
+          fail(`bad attribute in <${qname}>`, i);
+        ah = (Math.imul(ah, 31) + ch) | 0;
       }
-      if (!an) fail(`bad attribute in <${qname}>`, i);
+      const an = strings.get(i, ae, (ah + Math.imul(ae - i, 0x9e3779b1)) | 0);
       let q = eq + 1;
       while (q < len && src.charCodeAt(q) <= 32) q++;
-      const quote = src[q] ?? '';
-      if (quote !== '"' && quote !== "'") fail(`the value of attribute "${an}" must be quoted`, q);
-      const close = src.indexOf(quote, q + 1);
-      if (close === -1) fail(`unclosed value of attribute "${an}"`, q);
-      const raw = src.slice(q + 1, close);
-      if (raw.indexOf('<') !== -1) fail(`"<" in the value of attribute "${an}"`, q);
-      if (an in attrs) fail(`attribute "${an}" repeated in <${qname}>`, i);
+      const quote = src.charCodeAt(q);
+      if (quote !== 34 && quote !== 39) fail(`the value of attribute "${an}" must be quoted`, q);
+      let close = q + 1;
+      let vh = 0;
+      let special = false;
+      // Short values are hashed while looking for the closing quote; long ones are found with indexOf.
+      for (; close < len && close - q <= SHORT_VALUE + 1; close++) {
+        const ch = src.charCodeAt(close);
+        if (ch === quote) break;
+        if (ch === 60 || ch === 38) special = true;
+        vh = (Math.imul(vh, 31) + ch) | 0;
+      }
+      let raw: string;
+      if (close < len && src.charCodeAt(close) === quote && !special) {
+        raw = strings.get(q + 1, close, (vh + Math.imul(close - q - 1, 0x9e3779b1)) | 0);
+      } else {
+        close = src.indexOf(quote === 34 ? '"' : "'", q + 1);
+        if (close === -1) fail(`unclosed value of attribute "${an}"`, q);
+        raw = src.slice(q + 1, close);
+        if (raw.indexOf('<') !== -1) fail(`"<" in the value of attribute "${an}"`, q);
+      }
+      if (attrs === NO_ATTRS) attrs = {};
+      else if (an in attrs) fail(`attribute "${an}" repeated in <${qname}>`, i);
       attrs[an] = raw.indexOf('&') === -1 ? raw : decodeEntities(raw, (m) => fail(m, q));
       i = close + 1;
     }
     const el: XmlElement = {
-      name: qname.indexOf(':') === -1 ? qname : localName(qname),
+      name:
+        colon === -1
+          ? qname
+          : strings.get(
+              colon + 1,
+              start + 1 + qname.length,
+              strings.hashOf(colon + 1, start + 1 + qname.length),
+            ),
       qname,
       attrs,
-      children: selfClosing ? NO_CHILDREN : [],
+      children: NO_CHILDREN,
       text: '',
       offset: start,
       end: i,
     };
-    const parent = stack[stack.length - 1];
-    if (parent) parent.children.push(el);
+    if (stack.length) kids.push(el);
     else if (root) fail('more than one root element', start);
     else root = el;
-    if (!selfClosing) stack.push(el);
+    if (!selfClosing) {
+      stack.push(el);
+      kidsFrom.push(kids.length);
+    }
     pos = i;
   }
   if (stack.length) fail(`the file ends inside <${stack[stack.length - 1]!.qname}>`, len);

@@ -1,0 +1,155 @@
+// Shapes and dispatch loops: networks whose generated text is identical (same structure, other
+// operands) share one `switch` case; the cases are gathered into a few dispatch functions
+// `(first, end, now, scan) => next network`, each a loop that runs networks until one of
+// another function's shapes, a jump, RETURN or `end`.
+//
+// Why: one function per run of networks made a 10,000-network program ~160 functions, each
+// called once per scan; V8 optimises a function only after many calls and queues few at a time,
+// so such a program ran unoptimised for tens of seconds. A loop is optimised (on-stack) within
+// its first scans, and its size depends on the variety of networks, not on their number.
+import type { Value } from '../../model/iecTypes';
+import type { ResolvedFunction } from '../library/fnTypes';
+import { generateNetwork, NETS_PER_WORD, ProgramConstants, slotKey } from './codegen';
+import type { NetworkIR } from './ir';
+
+/** What each generated dispatch factory receives, in this order. */
+export const DISPATCH_PARAMS = [
+  'b', 'n', 'g', 'fb', 'fns', 'e', 'W', 'K', 'ctx', 'R', 'S', 'P', 'V', 'base', 'shape',
+] as const;
+
+/**
+ * Most characters of case text in one dispatch function: V8 does not optimise functions beyond a
+ * bytecode size (TurboFan's limit is 60 KB), and one shared loop must stay well below it.
+ */
+export const GROUP_CHARS = 24_000;
+
+/**
+ * Runs networks from `first`, in order, until `end`, a network of another dispatch function, a jump
+ * or RETURN; returns the next network to run (-1 after RETURN) and sets S[0] to the last one run.
+ */
+export type DispatchFn = (first: number, end: number, now: number, scan: number) => number;
+
+export interface DispatchPlan {
+  /** Body of `new Function(...DISPATCH_PARAMS, body)` per dispatch function. */
+  readonly bodies: readonly string[];
+  /** Shape of each network, then -1 (the end). */
+  readonly shape: Int32Array;
+  /** Dispatch function holding each network's shape. */
+  readonly groupOf: Int32Array;
+  /** Offset of each network's parameters in P and V. */
+  readonly base: Int32Array;
+  readonly P: Int32Array;
+  readonly V: Float64Array;
+  /** Positions in P of every write to a variable slot (`b:3`), to redirect while it is forced. */
+  readonly writes: ReadonlyMap<string, readonly number[]>;
+  readonly constants: readonly Value[];
+  readonly shapeCount: number;
+  /** First power word of each network in W, and how many words W needs. */
+  readonly words: Int32Array;
+  readonly wordCount: number;
+}
+
+export function planDispatch(
+  networks: readonly NetworkIR[],
+  functions: readonly ResolvedFunction[],
+  fbTypes: readonly string[],
+): DispatchPlan {
+  const count = networks.length;
+  const pc = new ProgramConstants(functions, fbTypes);
+  const words = new Int32Array(count);
+  let wordCount = 0;
+  networks.forEach((ir, i) => {
+    words[i] = wordCount;
+    wordCount += Math.ceil(ir.netCount / NETS_PER_WORD);
+  });
+  const codes = networks.map((ir, i) => generateNetwork(ir, pc, words[i]!));
+
+  // Shapes in order of first appearance; the argument-array sizes are part of a shape.
+  const shapeIds = new Map<string, number>();
+  const shapes: { text: string; arrays: readonly number[]; params: number }[] = [];
+  const shape = new Int32Array(count + 1);
+  const base = new Int32Array(count);
+  let params = 0;
+  codes.forEach((c, i) => {
+    const key = `${c.arrays.join(',')}\n${c.text}`;
+    let s = shapeIds.get(key);
+    if (s === undefined) {
+      s = shapes.length;
+      shapeIds.set(key, s);
+      shapes.push({ text: c.text, arrays: c.arrays, params: c.ints.length });
+    }
+    shape[i] = s;
+    base[i] = params;
+    params += c.ints.length;
+  });
+  shape[count] = -1;
+
+  const P = new Int32Array(Math.max(1, params));
+  const V = new Float64Array(Math.max(1, params));
+  const writes = new Map<string, number[]>();
+  codes.forEach((c, i) => {
+    const at = base[i]!;
+    P.set(c.ints, at);
+    V.set(c.reals, at);
+    for (const w of c.writes) {
+      const key = slotKey(w.store, w.slot);
+      if (!writes.has(key)) writes.set(key, []);
+      writes.get(key)!.push(at + w.at);
+    }
+  });
+
+  // Consecutive shapes fill a dispatch function up to GROUP_CHARS.
+  const groupOfShape: number[] = [];
+  const groupCases: string[][] = [];
+  const groupArrays: string[][] = [];
+  let size = Infinity;
+  shapes.forEach((sh, s) => {
+    if (size + sh.text.length > GROUP_CHARS) {
+      groupCases.push([]);
+      groupArrays.push([]);
+      size = 0;
+    }
+    size += sh.text.length;
+    const g = groupCases.length - 1;
+    groupOfShape.push(g);
+    sh.arrays.forEach((n, j) => groupArrays[g]!.push(`const A${s}_${j} = new Array(${n}).fill(0);`));
+    const text = sh.text.replace(/\$A(\d+)/g, `A${s}_$1`).split('\n');
+    // Parameters of consecutive networks are consecutive: p moves on by the shape's count.
+    groupCases[g]!.push(`case ${s}: {`, ...text.map((l) => `  ${l}`), `  p += ${sh.params};`, '  break;', '}');
+  });
+  const head = pc.head();
+  const bodies = groupCases.map((cases, g) =>
+    [
+      '"use strict";',
+      ...head,
+      ...groupArrays[g]!,
+      `return function networks_shapes_${g}(i, end, now, scan) {`,
+      '  let t = 0, r, eno = 0, go = 0, next = 0, p = base[i];',
+      '  loop: for (; i < end; i++) {',
+      '    switch (shape[i]) {',
+      ...cases.map((l) => `      ${l}`),
+      '      default:',
+      '        break loop;',
+      '    }',
+      '  }',
+      '  S[0] = i - 1;',
+      '  return i;',
+      '};',
+    ].join('\n'),
+  );
+  const groupOf = new Int32Array(count);
+  for (let i = 0; i < count; i++) groupOf[i] = groupOfShape[shape[i]!]!;
+  return {
+    bodies,
+    shape,
+    groupOf,
+    base,
+    P,
+    V,
+    writes,
+    constants: pc.constants,
+    shapeCount: shapes.length,
+    words,
+    wordCount,
+  };
+}

@@ -1,0 +1,141 @@
+// Canvas gestures added on review of the editor issue: dragging elements into another network (one
+// undo step), two-finger pinch zoom on a touch screen, and Enter on an unchanged name in the
+// inline editor moving on like a commit.
+import { afterAll, beforeAll, beforeEach, expect, inject, test } from 'vitest';
+import type { Page } from 'playwright-core';
+import { APP_VIEWPORT, openApp, useChromium, waitForApp } from './appPage';
+import { collectPageErrors } from './browser';
+import { DrawPage } from './drawPage';
+
+const browser = useChromium();
+let page: Page;
+let draw: DrawPage;
+let errors: string[];
+
+beforeAll(async () => {
+  ({ page, errors } = await openApp(browser()));
+  draw = new DrawPage(page);
+});
+
+beforeEach(async () => {
+  await page.evaluate(() => {
+    const doc = window.rungsmith!.documentStore!.getState();
+    doc.newProject('Gaps');
+    doc.addNetwork();
+  });
+});
+
+afterAll(() => {
+  expect(errors).toEqual([]);
+});
+
+/** Drags with the mouse from one cell to another in small steps, like a hand would. */
+async function dragCell(from: [number, number, number], to: [number, number, number]) {
+  const a = await draw.cellPoint(...from);
+  const b = await draw.cellPoint(...to);
+  await page.mouse.move(a.x, a.y);
+  await page.mouse.down();
+  await page.mouse.move(a.x + (b.x - a.x) / 3, a.y + (b.y - a.y) / 3, { steps: 4 });
+  await page.mouse.move(b.x, b.y, { steps: 6 });
+  await page.mouse.up();
+}
+
+test('dragging a contact into the next network moves it there, and one undo brings it back', async () => {
+  await draw.clickCell(0, 0, 0);
+  await page.keyboard.press('c');
+  await draw.typeName('Start');
+  await dragCell([0, 0, 0], [1, 0, 2]);
+
+  expect(await draw.elements(0)).toEqual([]);
+  expect(await draw.elements(1)).toEqual([{ kind: 'contact', row: 0, col: 2, name: 'Start', type: 'NO' }]);
+  // The moved contact stays selected, in its new network.
+  const selection = await page.evaluate(() => {
+    const ui = window.rungsmith!.uiStore!.getState();
+    const doc = window.rungsmith!.documentStore!.getState();
+    const nets = doc.project.pous[0]!.networks;
+    return {
+      network: nets.findIndex((n) => n.id === ui.selection.network),
+      count: ui.selection.elements.length,
+    };
+  });
+  expect(selection).toEqual({ network: 1, count: 1 });
+
+  await page.keyboard.press('Control+z');
+  expect(await draw.elements(0)).toEqual([{ kind: 'contact', row: 0, col: 0, name: 'Start', type: 'NO' }]);
+  expect(await draw.elements(1)).toEqual([]);
+  await page.keyboard.press('Control+y');
+  expect(await draw.elements(1)).toEqual([{ kind: 'contact', row: 0, col: 2, name: 'Start', type: 'NO' }]);
+});
+
+test('a drag onto an occupied cell of another network is refused and changes nothing', async () => {
+  await draw.clickCell(0, 0, 0);
+  await page.keyboard.press('c');
+  await draw.typeName('Start');
+  await draw.clickCell(1, 0, 1);
+  await page.keyboard.press('o');
+  await draw.typeName('Motor');
+  await dragCell([0, 0, 0], [1, 0, 1]);
+
+  expect(await draw.elements(0)).toEqual([{ kind: 'contact', row: 0, col: 0, name: 'Start', type: 'NO' }]);
+  expect(await draw.elements(1)).toEqual([{ kind: 'coil', row: 0, col: 1, name: 'Motor', type: 'COIL' }]);
+  await expect.poll(() => page.getByTestId('status-bar').textContent()).toContain('in the way');
+});
+
+test('Enter on an unchanged name closes the name field and moves the cursor on', async () => {
+  await draw.clickCell(0, 0, 0);
+  await page.keyboard.press('c');
+  await draw.typeName('Start');
+  const history = () => page.evaluate(() => window.rungsmith!.documentStore!.getState().history.undo.length);
+  const steps = await history();
+  // Back onto the contact, open its name field and confirm it unchanged.
+  await page.keyboard.press('ArrowLeft');
+  await page.keyboard.press('Enter');
+  const input = page.getByTestId('inline-editor');
+  await input.waitFor();
+  expect(await input.inputValue()).toBe('Start');
+  await page.keyboard.press('Enter');
+  await input.waitFor({ state: 'detached' });
+  const cursor = await page.evaluate(() => window.rungsmith!.uiStore!.getState().cursor);
+  expect(cursor).toMatchObject({ row: 0, col: 1 });
+  // Nothing entered the history for the unchanged name.
+  expect(await history()).toBe(steps);
+  // The canvas has the keyboard again: a letter places the next element at the cursor.
+  await page.keyboard.press('o');
+  await draw.typeName('Motor');
+  expect((await draw.elements(0)).map((e) => e.kind)).toEqual(['contact', 'coil']);
+});
+
+test('two fingers spreading on a touch screen zoom the canvas in, pinching zooms out', async () => {
+  const touchPage = await browser().newPage({ viewport: APP_VIEWPORT, hasTouch: true });
+  const touchErrors = collectPageErrors(touchPage);
+  await touchPage.goto(inject('appUrl'));
+  await waitForApp(touchPage);
+  const box = (await touchPage.getByTestId('ladder-canvas').boundingBox())!;
+  const cx = box.x + box.width / 2;
+  const cy = box.y + box.height / 2;
+  const cdp = await touchPage.context().newCDPSession(touchPage);
+  const fingers = (spread: number) => [
+    { x: cx - spread, y: cy, id: 1 },
+    { x: cx + spread, y: cy, id: 2 },
+  ];
+  const zoom = () => touchPage.evaluate(() => window.rungsmith!.uiStore!.getState().viewport.zoom);
+  const pinch = async (from: number, to: number) => {
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: fingers(from) });
+    for (let k = 1; k <= 8; k++)
+      await cdp.send('Input.dispatchTouchEvent', {
+        type: 'touchMove',
+        touchPoints: fingers(from + ((to - from) * k) / 8),
+      });
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  };
+
+  expect(await zoom()).toBe(1);
+  await pinch(60, 120);
+  await expect.poll(zoom).toBeGreaterThan(1.6);
+  await pinch(120, 60);
+  await expect.poll(zoom).toBeLessThan(1.2);
+  // The page itself never zoomed: only the canvas did.
+  expect(await touchPage.evaluate(() => window.visualViewport?.scale ?? 1)).toBe(1);
+  expect(touchErrors).toEqual([]);
+  await touchPage.close();
+});
