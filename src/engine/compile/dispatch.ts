@@ -42,6 +42,8 @@ export interface DispatchPlan {
   readonly V: Float64Array;
   /** Positions in P of every write to a variable slot (`b:3`), to redirect while it is forced. */
   readonly writes: ReadonlyMap<string, readonly number[]>;
+  /** Networks writing each variable slot. */
+  readonly writers: ReadonlyMap<string, ReadonlySet<number>>;
   readonly constants: readonly Value[];
   readonly shapeCount: number;
   /** First power word of each network in W, and how many words W needs. */
@@ -87,6 +89,7 @@ export function planDispatch(
   const P = new Int32Array(Math.max(1, params));
   const V = new Float64Array(Math.max(1, params));
   const writes = new Map<string, number[]>();
+  const writers = new Map<string, Set<number>>();
   codes.forEach((c, i) => {
     const at = base[i]!;
     P.set(c.ints, at);
@@ -95,6 +98,8 @@ export function planDispatch(
       const key = slotKey(w.store, w.slot);
       if (!writes.has(key)) writes.set(key, []);
       writes.get(key)!.push(at + w.at);
+      if (!writers.has(key)) writers.set(key, new Set());
+      writers.get(key)!.add(i);
     }
   });
 
@@ -147,6 +152,7 @@ export function planDispatch(
     P,
     V,
     writes,
+    writers,
     constants: pc.constants,
     shapeCount: shapes.length,
     words,

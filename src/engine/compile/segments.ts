@@ -56,7 +56,7 @@ export function generateSegment(
   for (let i = first; i < end; i++) {
     const code = generateNetwork(networks[i]!, pc, words[i]!, mode);
     code.arrays.forEach((n, j) => arrays.push(`const A${i}_${j} = new Array(${n}).fill(0);`));
-    lines.push(`{ // network ${i + 1}`, code.text.replace(/\$A(\d+)/g, `A${i}_$1`), `R[${i}] = scan;`, '}');
+    lines.push(`{ // network ${i + 1}`, code.text.replace(/\$A(\d+)/g, `A${i}_$1`), '}');
   }
   const body = [
     '"use strict";',

@@ -6,7 +6,10 @@ import type { Fault, Plc, PlcOptions, PowerSnapshot, ScanReport, StepReport } fr
 import type { FnContext } from '../library/fnTypes';
 import { slotKey } from '../compile/codegen';
 import { DISPATCH_PARAMS, planDispatch, type DispatchFn, type DispatchPlan } from '../compile/dispatch';
+import type { SegmentFn } from '../compile/segments';
+import { generateSegment, planSegments } from '../compile/segments';
 import { networkPower, type PowerTrace } from './snapshot';
+import { DEFAULT_TIERING, Tiering, type TieringOptions } from './tiering';
 import type { CompiledProgram } from '../compile/program';
 import type { Access, VarSymbol } from '../compile/symbols';
 import { coerce, Memory } from './memory';
@@ -23,9 +26,14 @@ export class ScanPlc implements Plc {
   readonly profile: CompiledProgram['profile'];
   private readonly mem: Memory;
   private readonly plan: DispatchPlan;
-  /** The dispatch functions (compile/dispatch.ts) and the one holding each network's shape. */
+  /**
+   * The dispatch functions (compile/dispatch.ts) and the one holding each network's shape; `groups`
+   * stop before segments switched to straight-line code, `stepGroups` (stepping) never do.
+   */
   private readonly groups: DispatchFn[];
+  private readonly stepGroups: DispatchFn[];
   private readonly groupOf: Int32Array;
+  private readonly tiering: Tiering;
   /** Written by the dispatch functions: the last network run by the last call. */
   private readonly stats = new Int32Array(1);
   /** Power-flow nets of every network, packed (see codegen NETS_PER_WORD), and each network's first word. */
@@ -55,6 +63,7 @@ export class ScanPlc implements Plc {
   constructor(
     private readonly program: CompiledProgram,
     private readonly opts: PlcOptions,
+    tiering: TieringOptions = DEFAULT_TIERING,
   ) {
     this.pou = program.pou;
     this.profile = program.profile;
@@ -77,9 +86,8 @@ export class ScanPlc implements Plc {
     this.maxEvals = opts.maxNetworkEvaluations ?? 100 * program.networks.length + 10_000;
     this.maxScanMs = opts.maxScanMs ?? 1000;
     const m = this.mem;
-    this.groups = plan.bodies.map((body) => {
-      const factory = new Function(...DISPATCH_PARAMS, body) as (...args: unknown[]) => DispatchFn;
-      return factory(
+    const link = (body: string, constants: unknown, shape: Int32Array) =>
+      (new Function(...DISPATCH_PARAMS, body) as (...args: unknown[]) => unknown)(
         m.b,
         m.n,
         m.g,
@@ -87,16 +95,26 @@ export class ScanPlc implements Plc {
         program.functions,
         m.edges,
         this.power,
-        plan.constants,
+        constants,
         this.ctx,
         this.ranIn,
         this.stats,
         plan.P,
         plan.V,
         plan.base,
-        plan.shape,
+        shape,
       );
-    });
+    const liveShape = plan.shape.slice();
+    this.groups = plan.bodies.map((body) => link(body, plan.constants, liveShape) as DispatchFn);
+    this.stepGroups = plan.bodies.map((body) => link(body, plan.constants, plan.shape) as DispatchFn);
+    const fbTypes = program.symbols.fbs.map((f) => f.type);
+    const build = (first: number, end: number): SegmentFn => {
+      const forced = new Set([...this.forces.keys()].map((v) => slotKey(v.store, v.slot)));
+      const mode = { kind: 'inline', forced, sink: m.sink } as const;
+      const seg = generateSegment(program.networks, first, end, program.functions, fbTypes, plan.words, mode);
+      return link(seg.body, seg.constants, plan.shape) as SegmentFn;
+    };
+    this.tiering = new Tiering(planSegments(program.networks), liveShape, plan.shape, build, now, tiering);
     this.coldRestart();
   }
 
@@ -137,12 +155,14 @@ export class ScanPlc implements Plc {
       this.outputImage[i] = this.mem.load(this.outputsVars[i]!);
     this.cursor = -1;
     this.lastExecMs = now() - this.scanStart;
+    this.tiering.afterScan(this.evals);
   }
 
   /** Runs networks from the cursor; stops after one when `single`. Returns the network run last. */
   private run(single: boolean): number {
     const count = this.groupOf.length;
-    const groups = this.groups;
+    const groups = single ? this.stepGroups : this.groups;
+    const fast = this.tiering.fast;
     const groupOf = this.groupOf;
     const stats = this.stats;
     const scan = this.count;
@@ -153,8 +173,10 @@ export class ScanPlc implements Plc {
     let i = this.cursor;
     let last = -1;
     while (i >= 0 && i < count) {
-      const end = single ? i + 1 : Math.min(count, i + CHUNK, i + maxEvals - evals);
-      const next = groups[groupOf[i]!]!(i, end, t, scan);
+      const segment = single ? undefined : fast[i];
+      const next = segment
+        ? segment(t, scan)
+        : groups[groupOf[i]!]!(i, single ? i + 1 : Math.min(count, i + CHUNK, i + maxEvals - evals), t, scan);
       last = stats[0]!;
       this.ranIn.fill(scan, i, last + 1);
       evals += last - i + 1;
@@ -302,8 +324,10 @@ export class ScanPlc implements Plc {
    * so they do not stick, and back at the variable when it is unforced; no code is regenerated.
    */
   private redirectWriters(v: VarSymbol, forced: boolean): void {
+    const key = slotKey(v.store, v.slot);
     const target = forced ? this.mem.sink[v.store] : v.slot;
-    for (const at of this.plan.writes.get(slotKey(v.store, v.slot)) ?? []) this.plan.P[at] = target;
+    for (const at of this.plan.writes.get(key) ?? []) this.plan.P[at] = target;
+    this.tiering.invalidate(this.plan.writers.get(key) ?? []);
   }
 
   setInputs(values: Readonly<Record<string, Value>>): void {

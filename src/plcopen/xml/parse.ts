@@ -82,19 +82,24 @@ const TABLE_MASK = 4095;
  */
 class StringTable {
   private readonly slots: string[] = new Array<string>(TABLE_MASK + 1).fill('');
+  /** Where in the source each slot's string was read (compared source to source: both flat). */
+  private readonly from = new Int32Array(TABLE_MASK + 1);
   constructor(private readonly src: string) {}
-  /** The text between start and end; `hash` must be `hashOf(start, end)`. */
+  /** The text between start and end; `hash` is any hash of it. */
   get(start: number, end: number, hash: number): string {
     const slot = (hash ^ (hash >>> 13)) & TABLE_MASK;
     const cached = this.slots[slot]!;
-    if (cached.length === end - start) {
-      // A plain loop: these strings are short, and startsWith on a huge source is not inlined.
+    const n = end - start;
+    if (cached.length === n) {
+      const src = this.src;
+      const at = this.from[slot]!;
       let k = 0;
-      while (k < cached.length && cached.charCodeAt(k) === this.src.charCodeAt(start + k)) k++;
-      if (k === cached.length) return cached;
+      while (k < n && src.charCodeAt(at + k) === src.charCodeAt(start + k)) k++;
+      if (k === n) return cached;
     }
     const s = this.src.slice(start, end);
     this.slots[slot] = s;
+    this.from[slot] = start;
     return s;
   }
   hashOf(start: number, end: number): number {
