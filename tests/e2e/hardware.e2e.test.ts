@@ -1,6 +1,6 @@
 // The Hardware panel in a real Chromium, against the gateway serving the built app.
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
 import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
 import { eventually, mbpoll, mbpollValues } from '../gateway/helpers';
@@ -25,9 +25,17 @@ describe('Hardware panel', () => {
     errors = collectPageErrors(page);
   });
 
+  // A journey that fails half-way must still close its page, or it keeps the controller lease and
+  // the next journey connects as observer.
+  const journeys: Page[] = [];
+  afterEach(async () => {
+    for (const j of journeys.splice(0)) await j.close().catch(() => undefined);
+  });
+
   /** A second page on the gateway's app: the motor example open, the Hardware panel connected as controller. */
   async function openMotorOnHardware() {
     const { page: journey, errors: journeyErrors } = await openApp(browser(), gw.url);
+    journeys.push(journey);
     const sim = new SimPage(journey);
     await sim.openExample('Motor start/stop (seal-in)');
     await journey.getByTestId('tab-hardware').click();

@@ -299,9 +299,10 @@ export class ScanPlc implements Plc {
   force(name: string, value: Value): void {
     const v = this.forceTarget(name);
     const val = coerce(v.type, value, `"${name}"`);
+    const fresh = !this.forces.has(v);
     this.forces.set(v, val);
     this.mem.store(v, val);
-    this.redirectWriters(v, true);
+    if (fresh) this.redirectWriters(v, true);
   }
 
   unforce(name: string): void {
