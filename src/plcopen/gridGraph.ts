@@ -54,7 +54,7 @@ export interface GridGraph {
   readonly barBoundary: Map<number, number>;
 }
 
-export function gridGraph(net: Network): GridGraph {
+export function gridGraph(net: Pick<Network, 'rows' | 'cols' | 'elements' | 'vlinks'>): GridGraph {
   const W = net.cols + 1;
   const n = net.rows * W;
   const parent = new Int32Array(n);

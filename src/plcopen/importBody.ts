@@ -78,18 +78,15 @@ export function importLdBody(
     if (eo !== Infinity) return [0, eo];
     return hasGeometry ? [1, y, x] : [1, order];
   };
-  const orderOf = new Map(objects.map((o, i) => [o, i]));
   const groups: Group[] = [];
   for (const list of comps.values())
     groups.push({
       nodes: list,
       kind: 'network',
-      key: keyOf(
-        list.map((i) => ({ obj: nodes[i]!.obj, order: orderOf.get(nodes[i]!.obj) ?? nodes[i]!.order })),
-      ),
+      key: keyOf(list.map((i) => ({ obj: nodes[i]!.obj, order: nodes[i]!.obj.order }))),
     });
   const single = (o: RawObject, kind: Group['kind'], lift: number): Group => {
-    const k = keyOf([{ obj: o, order: orderOf.get(o)! }]);
+    const k = keyOf([{ obj: o, order: o.order }]);
     // A label or comment drawn beside the first row of its network still belongs to it.
     if (hasGeometry && k[0] === 1) k[1] = k[1]! - lift;
     return { nodes: [], kind, key: k, obj: o };
@@ -230,8 +227,7 @@ function verify(
   laid: LaidOut,
   warn: (f: Finding) => void,
 ): void {
-  const net = newNetwork({ rows: laid.rows, cols: laid.cols, elements: laid.elements, vlinks: laid.vlinks });
-  const g = gridGraph(net);
+  const g = gridGraph(laid);
   const indexOfElement = new Map<string, number>();
   laid.elements.forEach((e: LdElement, i) => indexOfElement.set(e.id, i));
   const nodeOfElement = new Map<number, number>();
@@ -252,11 +248,14 @@ function verify(
     const drawn = g.sources.get(ei) ?? new Map<string, Source[]>();
     const pins = new Set([...n.inputs.keys(), ...drawn.keys()]);
     for (const pin of pins) {
-      const want = new Set(
-        (n.inputs.get(pin) ?? []).filter((s) => s.kind === 'rail' || memberSet.has(s.node)).map(key),
-      );
-      const got = new Set((drawn.get(pin) ?? []).map(key));
-      if (want.size !== got.size || [...want].some((k) => !got.has(k))) {
+      const wantList = (n.inputs.get(pin) ?? []).filter((s) => s.kind === 'rail' || memberSet.has(s.node));
+      const gotList = drawn.get(pin) ?? [];
+      // One source each (most pins): compare directly, without building sets.
+      const same =
+        wantList.length === 1 && gotList.length === 1
+          ? key(wantList[0]!) === key(gotList[0]!)
+          : sameSet(new Set(wantList.map(key)), new Set(gotList.map(key)));
+      if (!same) {
         warn({
           message: `${describe(n)}${pin === 'in' || pin === 'out' ? '' : ` pin ${pin}`}: this wiring cannot be drawn exactly on the ladder grid; check its connections`,
           obj: n.obj,
@@ -265,4 +264,10 @@ function verify(
       }
     }
   }
+}
+
+function sameSet(a: ReadonlySet<string>, b: ReadonlySet<string>): boolean {
+  if (a.size !== b.size) return false;
+  for (const k of a) if (!b.has(k)) return false;
+  return true;
 }

@@ -47,6 +47,10 @@ class ImportFailure extends Error {
   }
 }
 
+/** Pin offsets and wire routes: never read (the grid is built from the wiring), yet most of a file. */
+const unread = (parent: XmlElement, name: string): boolean =>
+  name === 'relPosition' || (name === 'position' && parent.name === 'connection');
+
 /** Reads PLCopen XML text. */
 export function importPlcopen(xmlText: string): ImportResult {
   try {
@@ -60,7 +64,7 @@ export function importPlcopen(xmlText: string): ImportResult {
 }
 
 function importChecked(text: string): ImportResult {
-  const root = parseXml(text);
+  const root = parseXml(text, { skip: unread });
   // Line numbers are only needed for findings: index the lines on first use.
   let locate: ((offset: number) => number) | undefined;
   const lineOf = (offset: number) => (locate ??= lineLocator(text))(offset);

@@ -123,12 +123,14 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
   };
 
   // Columns: longest path (Kahn over "producers of my input nets").
-  const deps = new Map<number, Set<number>>();
+  // Dependencies as short arrays (a node has a handful): a Set per node costs far more.
+  const deps = new Map<number, number[]>();
   const users = new Map<number, number[]>();
   for (const i of members) {
-    const d = new Set<number>();
+    const d: number[] = [];
     for (const p of shapes.get(i)!.inputs)
-      for (const pr of inNet(i, p.pin)?.producers ?? []) if (pr.node !== i) d.add(pr.node);
+      for (const pr of inNet(i, p.pin)?.producers ?? [])
+        if (pr.node !== i && !d.includes(pr.node)) d.push(pr.node);
     deps.set(i, d);
     for (const x of d) {
       let u = users.get(x);
@@ -138,7 +140,7 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
   }
   const col = new Map<number, number>();
   const indeg = new Map<number, number>();
-  for (const i of members) indeg.set(i, deps.get(i)!.size);
+  for (const i of members) indeg.set(i, deps.get(i)!.length);
   const queue = members.filter((i) => indeg.get(i) === 0);
   const topo: number[] = [];
   // A bar (or a direct join) right at the edge of a multi-row box would touch its other pins:

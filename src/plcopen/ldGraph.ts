@@ -179,7 +179,7 @@ export function buildLdGraph(
   const resolve = (
     c: RawConnection,
     consumer: RawObject,
-    seen = new Set<string>(),
+    seen?: Set<string>,
   ): { obj: RawObject | 'rail'; pin?: string }[] => {
     const src = byId.get(c.ref);
     if (!src)
@@ -199,9 +199,12 @@ export function buildLdGraph(
           });
           return [];
         }
+        // Created only when following continuations (never for the common direct wire).
+        seen ??= new Set<string>();
         if (seen.has(conn.localId)) throw new LdGraphError(`connector "${src.text}" feeds itself`, conn);
         seen.add(conn.localId);
-        return conn.inputs[0]!.connections.flatMap((cc) => resolve(cc, conn, seen));
+        const chain = seen;
+        return conn.inputs[0]!.connections.flatMap((cc) => resolve(cc, conn, chain));
       }
       case 'contact':
       case 'coil':

@@ -32,6 +32,8 @@ export interface RawObject {
   /** contact/coil variable, in/outVariable expression, label/jump label, connector name, comment text. */
   readonly text: string;
   readonly attrs: Readonly<Record<string, string>>;
+  /** Position among the children of the body (file order). */
+  readonly order: number;
 }
 
 const num = (s: string | undefined): number => {
@@ -103,7 +105,7 @@ function readPointOut(
 
 /** Reads every direct child of an LD body. */
 export function readLdObjects(body: XmlElement): RawObject[] {
-  return body.children.map((el) => {
+  return body.children.map((el, order) => {
     const pos = readPoint(child(el, 'position')) ?? { x: 0, y: 0 };
     const inputs: RawPin[] = [];
     const outputs: RawPin[] = [];
@@ -168,6 +170,7 @@ export function readLdObjects(body: XmlElement): RawObject[] {
       height: num(el.attrs.height),
       executionOrderId: num(el.attrs.executionOrderId),
       attrs: el.attrs,
+      order,
       inputs,
       outputs,
       text,

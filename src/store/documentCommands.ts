@@ -127,6 +127,8 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
       const found = locateElement(s.project, s.activePouId, id);
       if (!found) return;
       const after = { ...found.el, ...patch, id: found.el.id, kind: found.el.kind } as LdElement;
+      // A patch that changes nothing (Enter on an unchanged name) records nothing.
+      if (JSON.stringify(after) === JSON.stringify(found.el)) return;
       commit(
         'updateElement',
         diffNetwork(found.pou.id, found.net, {

@@ -67,6 +67,45 @@ test('dragging a contact into the next network moves it there, and one undo brin
   expect(await draw.elements(1)).toEqual([{ kind: 'contact', row: 0, col: 2, name: 'Start', type: 'NO' }]);
 });
 
+test('holding a drag at the bottom edge scrolls the canvas to a network that was off screen', async () => {
+  await page.evaluate(() => {
+    const doc = window.rungsmith!.documentStore!.getState();
+    for (let i = 0; i < 8; i++) doc.addNetwork({ rows: 3 });
+  });
+  await draw.clickCell(0, 0, 0);
+  await page.keyboard.press('c');
+  await draw.typeName('Start');
+  const a = await draw.cellPoint(0, 0, 0);
+  const box = (await draw.canvas().boundingBox())!;
+  await page.mouse.move(a.x, a.y);
+  await page.mouse.down();
+  await page.mouse.move(a.x + 10, a.y + 40, { steps: 3 });
+  // Rest near the bottom edge until the canvas has scrolled well down.
+  await page.mouse.move(a.x + 10, box.y + box.height - 6, { steps: 4 });
+  await page.waitForFunction(
+    () => document.querySelector<HTMLElement>('[data-testid="ladder-canvas"]')!.scrollTop > 900,
+  );
+  // Drop on the first network whose grid is now in view, far below where the drag began.
+  const target = await page.evaluate(() => {
+    const el = document.querySelector<HTMLElement>('[data-testid="ladder-canvas"]')!;
+    const z = window.rungsmith!.uiStore!.getState().viewport.zoom;
+    const headers = [...document.querySelectorAll<HTMLElement>('[data-testid^="network-header-"]')];
+    const visible = headers
+      .map((h) => ({ index: Number(h.dataset.testid!.split('-').pop()), top: h.offsetTop * z }))
+      .filter((h) => h.top > el.scrollTop + 20 && h.top < el.scrollTop + el.clientHeight - 260)
+      .sort((x, y) => x.index - y.index);
+    return visible[0]!.index;
+  });
+  expect(target).toBeGreaterThanOrEqual(3);
+  const b = await draw.cellPoint(target, 1, 1);
+  await page.mouse.move(b.x, b.y, { steps: 4 });
+  await page.mouse.up();
+  expect(await draw.elements(0)).toEqual([]);
+  expect(await draw.elements(target)).toEqual([
+    { kind: 'contact', row: 1, col: 1, name: 'Start', type: 'NO' },
+  ]);
+});
+
 test('a drag onto an occupied cell of another network is refused and changes nothing', async () => {
   await draw.clickCell(0, 0, 0);
   await page.keyboard.press('c');

@@ -2,6 +2,7 @@
 // timing of the live checks.
 import { expect, test } from 'vitest';
 import { dropInto } from '../../src/editor/canvas/dragTargets';
+import { hoverText } from '../../src/editor/canvas/hoverText';
 import { checkTiming, CHECK_DELAY_MS, LARGE_CHECK_DELAY_MS } from '../../src/editor/problems/useDiagnostics';
 import { rowOffsets, WINDOW_THRESHOLD, windowFor } from '../../src/editor/variables/rowWindow';
 import type { LdElement } from '../../src/model/elements';
@@ -65,4 +66,15 @@ test('checks start sooner for projects drawn by hand than for very large ones', 
   const large = newProject('l', { pous: [newPou('Main', { networks })] });
   expect(checkTiming(large).delayMs).toBe(LARGE_CHECK_DELAY_MS);
   expect(CHECK_DELAY_MS).toBeLessThan(LARGE_CHECK_DELAY_MS);
+});
+
+test('the tooltip of a cell names its element in full and lists the problems marked there', () => {
+  const el = contact('ConveyorRunningFeedback', 0, 0);
+  expect(hoverText(el, [])).toBe('ConveyorRunningFeedback: Normally open contact  -| |-');
+  const problem = { cell: { row: 0, col: 0 }, severity: 'error' as const, text: 'LD-R08: not declared' };
+  expect(hoverText(el, [problem])).toBe(
+    'ConveyorRunningFeedback: Normally open contact  -| |-\nLD-R08: not declared',
+  );
+  expect(hoverText({ kind: 'link', id: 'l' as ElementId, row: 0, col: 1 }, [])).toBeUndefined();
+  expect(hoverText(undefined, [])).toBeUndefined();
 });

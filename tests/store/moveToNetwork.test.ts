@@ -1,5 +1,6 @@
 // Moving elements from one network into another (the drag between networks): one undo step,
-// refused when something other than a horizontal link is in the way.
+// refused when something other than a horizontal link is in the way; and an update that changes
+// nothing, which records no undo step.
 import { expect, test } from 'vitest';
 import type { LdElement } from '../../src/model/elements';
 import { newNetwork, newPou, newProject } from '../../src/model/factory';
@@ -23,10 +24,10 @@ function twoNetworks(a: Partial<Network>, b: Partial<Network>) {
     newProject('t', { pous: [newPou('Main', { networks: [newNetwork(a), newNetwork(b)] })] }),
   );
   const nets = () => selectNetworks(store.getState());
-  const cells = (i: number) =>
-    nets()
-      [i]!.elements.map((e) => `${e.kind === 'link' ? '-' : e.id}@${e.row},${e.col}`)
-      .sort();
+  const cells = (i: number) => {
+    const n = nets()[i]!;
+    return n.elements.map((e) => `${e.kind === 'link' ? '-' : e.id}@${e.row},${e.col}`).sort();
+  };
   return { store, nets, cells };
 }
 
@@ -103,4 +104,12 @@ test('the same network or an unknown one is refused', () => {
     store.getState().moveElementsToNetwork(from!.id, [id('A')], 'nope' as Network['id'], { row: 0, col: 1 }),
   ).toBe(false);
   expect(store.getState().canUndo).toBe(false);
+});
+
+test('an element update that changes nothing records no undo step', () => {
+  const { store } = twoNetworks({ rows: 1, cols: 1, elements: [contact('A', 0, 0)] }, {});
+  store.getState().updateElement(id('A'), { variable: 'A' });
+  expect(store.getState().canUndo).toBe(false);
+  store.getState().updateElement(id('A'), { variable: 'B' });
+  expect(store.getState().undoName).toBe('updateElement');
 });

@@ -7,6 +7,7 @@ import { useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import { Layer, Stage } from 'react-konva';
 import type { ElementId, NetworkId } from '../../model/ids';
 import { selectActivePou, selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
+import { elementAt } from '../../store/networkEdits';
 import {
   clampZoom,
   selectCursor,
@@ -22,6 +23,7 @@ import { readCanvasTheme, type CanvasTheme } from '../theme/canvasTheme';
 import { BlockPicker } from './BlockPicker';
 import { CanvasEmpty } from './CanvasEmpty';
 import { CELL_H, CELL_W, headerHeight, layoutNetworks, RAIL_X, visibleRange } from './geometry';
+import { hoverText } from './hoverText';
 import { InlineEditor } from './InlineEditor';
 import type { CellMarker, NetworkPaint } from './drawNetwork';
 import type { DragState } from './dragTargets';
@@ -185,6 +187,7 @@ export function LadderCanvas() {
         (m) => m.cell.row === hover.cell.row && m.cell.col === hover.cell.col,
       )
     : NO_MARKERS;
+  const hoverNetwork = hover ? networks[hover.index] : undefined;
   const visible: number[] = [];
   for (let i = first; i <= last; i++) visible.push(i);
 
@@ -218,7 +221,7 @@ export function LadderCanvas() {
         <div
           className="rs-canvas-sticky"
           style={{ width: size.width, height: size.height }}
-          title={hoverProblems.length > 0 ? hoverProblems.map((m) => m.text).join('\n') : undefined}
+          title={hoverText(hoverNetwork && hover && elementAt(hoverNetwork, hover.cell), hoverProblems)}
           {...handlers}
         >
           <div className="rs-world" ref={worldRef}>

@@ -20,6 +20,7 @@ import type { Network } from '../../model/project';
 import { elementAt } from '../../store/networkEdits';
 import { needsName, placeAt, type EditorContext } from '../commands/editorActions';
 import { canMove, dropInto, type DragState } from './dragTargets';
+import { useEdgeScroll } from './useEdgeScroll';
 import { CELL_H, CELL_W, gridOrigin, hitTest, type CanvasLayout, type PixelPoint } from './geometry';
 
 export type { DragState } from './dragTargets';
@@ -86,6 +87,7 @@ export function useCanvasPointer(
   spaceHeld: RefObject<boolean>,
 ) {
   const machine = useRef<Machine>({ kind: 'idle' });
+  const { follow: edgeFollow, stop: edgeStop } = useEdgeScroll(scrollRef);
   const [drag, setDrag] = useState<DragState | undefined>(undefined);
   const [band, setBand] = useState<BandState | undefined>(undefined);
   const [hover, setHover] = useState<{ index: number; cell: Cell } | undefined>(undefined);
@@ -121,10 +123,11 @@ export function useCanvasPointer(
 
   /** Stops a press, drag or rubber band without applying it (a second finger started a pinch). */
   const cancel = useCallback(() => {
+    edgeStop();
     machine.current = { kind: 'idle' };
     setDrag(undefined);
     setBand(undefined);
-  }, []);
+  }, [edgeStop]);
 
   const onPointerDown = (e: ReactPointerEvent<HTMLDivElement>) => {
     if (!(e.target instanceof HTMLCanvasElement)) return;
@@ -198,9 +201,18 @@ export function useCanvasPointer(
       if (m.kind === 'pressing' && Math.hypot(p.x - m.start.x, p.y - m.start.y) < 4) return;
       const n = networks[m.index];
       if (!n) return;
-      machine.current = { ...m, kind: 'dragging' };
-      const next = dragAt(n, m.ids, m.start, m.startCell, p);
-      setDrag((prev) => (sameDrag(prev, next) ? prev : next));
+      const dragging = { ...m, kind: 'dragging' as const };
+      machine.current = dragging;
+      const show = (at: PixelPoint) => {
+        const next = dragAt(n, dragging.ids, dragging.start, dragging.startCell, at);
+        setDrag((prev) => (sameDrag(prev, next) ? prev : next));
+      };
+      show(p);
+      // Near an edge the canvas scrolls; the ghost follows what is under the pointer.
+      const client = { clientX: e.clientX, clientY: e.clientY };
+      edgeFollow(client.clientX, client.clientY, () => {
+        if (machine.current === dragging) show(contentPoint(client));
+      });
       return;
     }
     if (m.kind === 'banding') {
@@ -221,6 +233,7 @@ export function useCanvasPointer(
   };
 
   const finish = (e: ReactPointerEvent<HTMLDivElement>) => {
+    edgeStop();
     const m = machine.current;
     machine.current = { kind: 'idle' };
     if (e.currentTarget.hasPointerCapture(e.pointerId)) e.currentTarget.releasePointerCapture(e.pointerId);

@@ -200,8 +200,7 @@ class Emitter {
       from = a.type;
       switch (a.kind) {
         case 'var':
-          expr =
-            a.v.store === 'b' ? `(b[${this.p(a.v.slot)}] === 1)` : `${a.v.store}[${this.p(a.v.slot)}]`;
+          expr = a.v.store === 'b' ? `(b[${this.p(a.v.slot)}] === 1)` : `${a.v.store}[${this.p(a.v.slot)}]`;
           break;
         case 'bit':
           expr = `(${this.readBit(a)} === 1)`;

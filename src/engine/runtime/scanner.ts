@@ -114,7 +114,8 @@ export class ScanPlc implements Plc {
       const seg = generateSegment(program.networks, first, end, program.functions, fbTypes, plan.words, mode);
       return link(seg.body, seg.constants, plan.shape) as SegmentFn;
     };
-    this.tiering = new Tiering(planSegments(program.networks), liveShape, plan.shape, build, now, tiering);
+    const starts = planSegments(program.networks);
+    this.tiering = new Tiering(starts, liveShape, plan.shape, plan.shapeCount, build, now, tiering);
     this.coldRestart();
   }
 

@@ -109,8 +109,18 @@ class StringTable {
   }
 }
 
+export interface ParseOptions {
+  /**
+   * Elements (with everything inside them) that are checked like the rest but left out of the
+   * tree: a reader that never looks at them saves building hundreds of thousands of nodes.
+   * Their text stays available through the offsets of their parent.
+   */
+  readonly skip?: (parent: XmlElement, name: string) => boolean;
+}
+
 /** Parses XML text into its root element. Throws XmlSyntaxError with a location. */
-export function parseXml(src: string): XmlElement {
+export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
+  const skip = options.skip;
   let pos = 0;
   const len = src.length;
   const fail: (msg: string, at?: number) => never = (msg, at = pos) => {
@@ -305,8 +315,9 @@ export function parseXml(src: string): XmlElement {
       offset: start,
       end: i,
     };
-    if (stack.length) kids.push(el);
-    else if (root) fail('more than one root element', start);
+    if (stack.length) {
+      if (!skip || !skip(stack[stack.length - 1]!, el.name)) kids.push(el);
+    } else if (root) fail('more than one root element', start);
     else root = el;
     if (!selfClosing) {
       stack.push(el);
