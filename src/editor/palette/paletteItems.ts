@@ -79,14 +79,14 @@ export const PALETTE_ITEMS: readonly PaletteItem[] = [
     'P',
     'Positive transition coil',
     '-(P)-',
-    undefined,
+    'u',
     'TRUE for one evaluation when the power flow rises.',
   ),
   coil(
     'N',
     'Negative transition coil',
     '-(N)-',
-    undefined,
+    'shift+u',
     'TRUE for one evaluation when the power flow falls.',
   ),
   {
