@@ -55,8 +55,9 @@ export function importLdBody(
     return a;
   };
   for (const n of nodes)
-    for (const srcs of n.inputs.values())
+    n.inputs.forEach((srcs) => {
       for (const s of srcs) if (s.kind === 'node') parent[find(n.index)] = find(s.node);
+    });
   const comps = new Map<number, number[]>();
   for (const n of nodes) {
     const r = find(n.index);
@@ -245,24 +246,33 @@ function verify(
     const n = nodes[i]!;
     const ei = indexOfElement.get(laid.elementOf.get(i)!);
     if (ei === undefined) continue;
-    const drawn = g.sources.get(ei) ?? new Map<string, Source[]>();
-    const pins = new Set([...n.inputs.keys(), ...drawn.keys()]);
-    for (const pin of pins) {
+    const drawn = g.sources.get(ei);
+    const differs = (pin: string): boolean => {
       const wantList = (n.inputs.get(pin) ?? []).filter((s) => s.kind === 'rail' || memberSet.has(s.node));
-      const gotList = drawn.get(pin) ?? [];
+      const gotList = drawn?.get(pin) ?? [];
       // One source each (most pins): compare directly, without building sets.
-      const same =
-        wantList.length === 1 && gotList.length === 1
-          ? key(wantList[0]!) === key(gotList[0]!)
-          : sameSet(new Set(wantList.map(key)), new Set(gotList.map(key)));
-      if (!same) {
-        warn({
-          message: `${describe(n)}${pin === 'in' || pin === 'out' ? '' : ` pin ${pin}`}: this wiring cannot be drawn exactly on the ladder grid; check its connections`,
-          obj: n.obj,
-        });
+      return wantList.length === 1 && gotList.length === 1
+        ? key(wantList[0]!) !== key(gotList[0]!)
+        : !sameSet(new Set(wantList.map(key)), new Set(gotList.map(key)));
+    };
+    // The pins wired in the file, then those only drawn; the first that differs is reported.
+    let bad: string | undefined;
+    for (const pin of n.inputs.keys())
+      if (differs(pin)) {
+        bad = pin;
         break;
       }
-    }
+    if (bad === undefined && drawn)
+      for (const pin of drawn.keys())
+        if (!n.inputs.has(pin) && differs(pin)) {
+          bad = pin;
+          break;
+        }
+    if (bad !== undefined)
+      warn({
+        message: `${describe(n)}${bad === 'in' || bad === 'out' ? '' : ` pin ${bad}`}: this wiring cannot be drawn exactly on the ladder grid; check its connections`,
+        obj: n.obj,
+      });
   }
 }
 

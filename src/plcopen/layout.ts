@@ -65,15 +65,16 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
     if (ra !== rb) parent[ra] = rb;
   };
   for (const i of members) {
-    for (const [pin, srcs] of all[i]!.inputs) {
+    // forEach, not for-of: no [pin, sources] entry arrays for every pin of the file.
+    all[i]!.inputs.forEach((srcs, pin) => {
       const k = inPort(i, pin);
-      if (k < 0) continue;
+      if (k < 0) return;
       touched[k] = 1;
       for (const s of srcs) {
         const o = s.kind === 'rail' ? 0 : outPort(s.node, s.pin);
         if (o >= 0) union(k, o);
       }
-    }
+    });
   }
   const netOfRoot = new Map<number, Net>();
   const netOfPort: (Net | undefined)[] = new Array(ports);

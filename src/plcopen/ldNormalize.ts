@@ -14,19 +14,24 @@ export function splitSharedSources(nodes: GNode[], warn: (f: Finding) => void): 
 /** True when some source feeds two input pins whose source lists differ (the only case to redraw). */
 function anyMismatch(nodes: readonly GNode[]): boolean {
   const firstUse = new Map<string, readonly GSource[]>();
-  for (const n of nodes)
-    for (const srcs of n.inputs.values())
-      for (const s of srcs) {
-        if (s.kind === 'rail') continue;
-        const k = srcKey(s);
-        const prev = firstUse.get(k);
-        if (!prev) firstUse.set(k, srcs);
-        else if (
-          prev !== srcs &&
-          (prev.length !== srcs.length || prev.some((p, i) => srcKey(p) !== srcKey(srcs[i]!)))
-        )
-          return true;
-      }
+  let mismatch = false;
+  const check = (srcs: readonly GSource[]) => {
+    for (const s of srcs) {
+      if (s.kind === 'rail') continue;
+      const k = srcKey(s);
+      const prev = firstUse.get(k);
+      if (!prev) firstUse.set(k, srcs);
+      else if (
+        prev !== srcs &&
+        (prev.length !== srcs.length || prev.some((p, i) => srcKey(p) !== srcKey(srcs[i]!)))
+      )
+        mismatch = true;
+    }
+  };
+  for (const n of nodes) {
+    n.inputs.forEach(check);
+    if (mismatch) return true;
+  }
   return false;
 }
 

@@ -10,6 +10,7 @@
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { ArgIR, NetworkIR, Op, OutIR, Source } from './ir';
+import { singleWriterNets } from './nets';
 import { storeOf, type Access, type Store } from './symbols';
 
 /** Power-flow nets packed per 32-bit word of the snapshot array W. */
@@ -269,26 +270,6 @@ export function generateNetwork(
 }
 
 const and = (a: string, b: string): string => (a === '1' ? b : b === '1' ? a : `${a} & ${b}`);
-
-/** Nets written exactly once, unconditionally (function outputs are written only when EN is ON). */
-function singleWriterNets(ir: NetworkIR): Set<number> {
-  const writes = new Map<number, number>();
-  const add = (net: number | undefined, n = 1) => {
-    if (net !== undefined) writes.set(net, (writes.get(net) ?? 0) + n);
-  };
-  for (const op of ir.ops) {
-    if (op.op === 'contact') {
-      add(op.outNet);
-      add(op.ownNet);
-    } else if (op.op === 'coil' && op.outNet !== op.inNet) add(op.outNet);
-    else if (op.op === 'fb') for (const o of op.outs) add(o.net);
-    else if (op.op === 'function') {
-      add(op.out.net, 2);
-      add(op.eno.net, 2);
-    }
-  }
-  return new Set([...writes].filter(([, n]) => n === 1).map(([net]) => net));
-}
 
 function emitOp(em: Emitter, op: Op): void {
   const L = em.lines;

@@ -134,6 +134,7 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
   // closes (a growing array per element would hold mostly empty slots).
   const kids: XmlElement[] = [];
   const kidsFrom: number[] = [];
+  const skippedNames: string[] = [];
   let root: XmlElement | undefined;
 
   while (pos < len) {
@@ -238,6 +239,17 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
     const nameStart =
       (first >= 65 && first <= 90) || (first >= 97 && first <= 122) || first === 95 || first >= 0xc0;
     if (!nameStart) fail(root || stack.length ? 'bad element name' : 'this is not XML: expected an element');
+    const name =
+      colon === -1
+        ? qname
+        : strings.get(
+            colon + 1,
+            start + 1 + qname.length,
+            strings.hashOf(colon + 1, start + 1 + qname.length),
+          );
+    // A skipped element is checked just as strictly, but its attributes are not kept.
+    const kept = !skip || !stack.length || !skip(stack[stack.length - 1]!, name);
+    skippedNames.length = 0;
     let attrs = NO_ATTRS as Record<string, string>;
     let selfClosing = false;
     for (;;) {
@@ -275,6 +287,21 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
       while (q < len && src.charCodeAt(q) <= 32) q++;
       const quote = src.charCodeAt(q);
       if (quote !== 34 && quote !== 39) fail(`the value of attribute "${an}" must be quoted`, q);
+      if (!kept) {
+        const close = src.indexOf(quote === 34 ? '"' : "'", q + 1);
+        if (close === -1) fail(`unclosed value of attribute "${an}"`, q);
+        let amp = false;
+        for (let k = q + 1; k < close; k++) {
+          const ch = src.charCodeAt(k);
+          if (ch === 60) fail(`"<" in the value of attribute "${an}"`, q);
+          if (ch === 38) amp = true;
+        }
+        if (skippedNames.includes(an)) fail(`attribute "${an}" repeated in <${qname}>`, i);
+        skippedNames.push(an);
+        if (amp) decodeEntities(src.slice(q + 1, close), (m) => fail(m, q));
+        i = close + 1;
+        continue;
+      }
       let close = q + 1;
       let vh = 0;
       let special = false;
@@ -300,14 +327,7 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
       i = close + 1;
     }
     const el: XmlElement = {
-      name:
-        colon === -1
-          ? qname
-          : strings.get(
-              colon + 1,
-              start + 1 + qname.length,
-              strings.hashOf(colon + 1, start + 1 + qname.length),
-            ),
+      name,
       qname,
       attrs,
       children: NO_CHILDREN,
@@ -316,7 +336,7 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
       end: i,
     };
     if (stack.length) {
-      if (!skip || !skip(stack[stack.length - 1]!, el.name)) kids.push(el);
+      if (kept) kids.push(el);
     } else if (root) fail('more than one root element', start);
     else root = el;
     if (!selfClosing) {

@@ -1,0 +1,22 @@
+// Facts about a network's power-flow nets that code generation relies on.
+import type { NetworkIR } from './ir';
+
+/** Nets written exactly once, unconditionally (function outputs are written only when EN is ON). */
+export function singleWriterNets(ir: NetworkIR): Set<number> {
+  const writes = new Map<number, number>();
+  const add = (net: number | undefined, n = 1) => {
+    if (net !== undefined) writes.set(net, (writes.get(net) ?? 0) + n);
+  };
+  for (const op of ir.ops) {
+    if (op.op === 'contact') {
+      add(op.outNet);
+      add(op.ownNet);
+    } else if (op.op === 'coil' && op.outNet !== op.inNet) add(op.outNet);
+    else if (op.op === 'fb') for (const o of op.outs) add(o.net);
+    else if (op.op === 'function') {
+      add(op.out.net, 2);
+      add(op.eno.net, 2);
+    }
+  }
+  return new Set([...writes].filter(([, n]) => n === 1).map(([net]) => net));
+}
