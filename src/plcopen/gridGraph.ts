@@ -57,7 +57,7 @@ export interface GridGraph {
 export function gridGraph(net: Pick<Network, 'rows' | 'cols' | 'elements' | 'vlinks'>): GridGraph {
   const W = net.cols + 1;
   const n = net.rows * W;
-  const parent = new Int32Array(n);
+  const parent: number[] = new Array<number>(n).fill(0); // small: cheaper than a typed array
   for (let i = 0; i < n; i++) parent[i] = i;
   const find = (a: number): number => {
     while (parent[a]! !== a) {

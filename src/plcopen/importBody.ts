@@ -98,12 +98,12 @@ export function importLdBody(
   groups.sort((a, b) => compareKeys(a.key, b.key));
 
   // Columns per network first: every network of the POU shares one width, coils on one right rail.
-  const prepared = new Map<Group, ReturnType<typeof prepareLayout>>();
   let cols = MIN_COLS;
   for (const g of groups) {
     if (g.kind !== 'network') continue;
+    // Not kept: holding the layout state of every network until all are measured would make the
+    // collector copy and promote it all (10,000-network files); preparing twice is cheaper.
     const p = prepareLayout(nodes, g.nodes);
-    prepared.set(g, p);
     cols = Math.max(cols, p.needCols);
   }
 
@@ -131,7 +131,7 @@ export function importLdBody(
       pendingVendor.push(raw(g.obj!.xml));
       continue;
     }
-    const laid = prepared.get(g)!.run(cols);
+    const laid = prepareLayout(nodes, g.nodes).run(cols);
     verify(nodes, g.nodes, laid, warn);
     const keep: PreservedNetwork = {
       ...(pendingVendor.length ? { objects: pendingVendor } : {}),

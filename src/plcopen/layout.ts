@@ -21,8 +21,9 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
   // then each member's input pins and output pins in shape order.
   const local = new Map<number, number>();
   members.forEach((i, li) => local.set(i, li));
-  const inBase = new Int32Array(members.length);
-  const outBase = new Int32Array(members.length);
+  // Plain arrays: a network has a few dozen ports, and typed arrays cost far more to create.
+  const inBase: number[] = new Array<number>(members.length).fill(0);
+  const outBase: number[] = new Array<number>(members.length).fill(0);
   let ports = 1;
   members.forEach((i, li) => {
     const sh = shapes.get(i)!;
@@ -47,9 +48,9 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
     const k = pinIndex(shapes.get(node)!.outputs, pin);
     return k < 0 ? -1 : outBase[li]! + k;
   };
-  const parent = new Int32Array(ports);
+  const parent: number[] = new Array<number>(ports).fill(0);
   for (let k = 0; k < ports; k++) parent[k] = k;
-  const touched = new Uint8Array(ports);
+  const touched: number[] = new Array<number>(ports).fill(0);
   const find = (a: number): number => {
     while (parent[a]! !== a) {
       parent[a] = parent[parent[a]!]!;
@@ -78,7 +79,8 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
   }
   const netOfRoot = new Map<number, Net>();
   const netOfPort: (Net | undefined)[] = new Array(ports);
-  const nets = new Map<number, Net>();
+  /** Nets by id (ids are given in order). */
+  const nets: Net[] = [];
   const netFor = (k: number): Net | undefined => {
     if (k < 0 || !touched[k]) return undefined;
     const root = find(k);
@@ -95,7 +97,7 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
         max: -Infinity,
       };
       netOfRoot.set(root, net);
-      nets.set(net.id, net);
+      nets.push(net);
     }
     netOfPort[k] = net;
     return net;
@@ -148,7 +150,7 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
   // such nets get their bar one boundary further right, with a link from the box.
   const tall = (node: number) => shapes.get(node)!.h > 1;
   const gap = new Map<Net, number>();
-  for (const net of nets.values()) {
+  for (const net of nets) {
     const tallProducer = net.producers.some((p) => tall(p.node));
     const tallConsumer = net.consumers.some((c) => tall(c.node));
     const many = net.producers.length + (net.rail ? 1 : 0) > 1;
@@ -200,11 +202,11 @@ export function prepareLayout(all: readonly GNode[], members: readonly number[])
   }
   let needCols = 1;
   for (const i of members) needCols = Math.max(needCols, col.get(i)! + shapes.get(i)!.w);
-  for (const net of nets.values()) if (net.consumers.length) needCols = Math.max(needCols, barOf(net) + 1);
+  for (const net of nets) if (net.consumers.length) needCols = Math.max(needCols, barOf(net) + 1);
 
   const run = (cols: number): LaidOut => {
     for (const [i, t] of tail) col.set(i, Math.max(col.get(i)!, cols - t));
-    for (const net of nets.values()) net.b = barOf(net);
+    for (const net of nets) net.b = barOf(net);
     return placeRows(all, members, shapes, col, nets, inNet, outNet, cols);
   };
   return { nodes: members, needCols, run };

@@ -11,7 +11,7 @@ export function placeRows(
   members: readonly number[],
   shapes: Map<number, Shape>,
   col: Map<number, number>,
-  nets: Map<number, Net>,
+  nets: readonly Net[],
   inNet: (node: number, pin: string) => Net | undefined,
   outNet: (node: number, pin: string) => Net | undefined,
   cols: number,
@@ -232,7 +232,11 @@ export function placeRows(
   /** Places the nodes of these pins top to bottom, then left to right (as drawn in the file). */
   const inOrder = (pins: readonly { node: number }[]) => {
     if (pins.length === 1) return place(pins[0]!.node);
-    for (const n of pins.map((x) => x.node).sort(byPosition)) place(n);
+    for (const n of sortSmall(
+      pins.map((x) => x.node),
+      byPosition,
+    ))
+      place(n);
   };
   const place = (i: number, prefer?: number): void => {
     if (row.has(i) || placing.has(i)) return;
@@ -270,15 +274,20 @@ export function placeRows(
     }
   };
 
-  const railNet = [...nets.values()].find((n) => n.rail);
-  const starts = railNet ? [...railNet.consumers.map((c) => c.node)].sort(byPosition) : [];
+  const railNet = nets.find((n) => n.rail);
+  const starts = railNet
+    ? sortSmall(
+        railNet.consumers.map((c) => c.node),
+        byPosition,
+      )
+    : [];
   for (const i of starts) if (!chainTarget(i)) place(i);
-  const rest = [...members].sort(byPosition);
+  const rest = sortSmall([...members], byPosition);
   for (const i of rest) if (!chainTarget(i)) place(i);
   for (const i of rest) place(i);
 
   // Cosmetic: wires to the right rail where the row is free.
-  for (const net of nets.values()) {
+  for (const net of nets) {
     if (!net.rightRail || net.consumers.length) continue;
     for (const pr of net.producers) {
       const r = row.get(pr.node)! + (shapes.get(pr.node)!.outputs.find((o) => o.pin === pr.pin)?.off ?? 0);
@@ -297,4 +306,19 @@ export function placeRows(
     }
   }
   return { rows: Math.max(1, maxRow + 1), cols, elements, vlinks: [...vlinks.values()], elementOf, forced };
+}
+
+/** Stable in-place sort; insertion sort for the short lists of one network (no work array). */
+function sortSmall(a: number[], cmp: (x: number, y: number) => number): number[] {
+  if (a.length > 24) return a.sort(cmp);
+  for (let i = 1; i < a.length; i++) {
+    const v = a[i]!;
+    let j = i - 1;
+    while (j >= 0 && cmp(a[j]!, v) > 0) {
+      a[j + 1] = a[j]!;
+      j--;
+    }
+    a[j + 1] = v;
+  }
+  return a;
 }

@@ -73,6 +73,8 @@ const isNameEnd = (c: number): boolean =>
 /** Values up to this length are shared through the string table (numbers, flags, pin names). */
 const SHORT_VALUE = 12;
 const TABLE_MASK = 4095;
+/** Hashes are kept to small integers: larger ones would be boxed when passed to the table. */
+const SMI_MASK = 0x3fffffff;
 
 /**
  * One string per distinct element name, attribute name and short value: a PLCopen file repeats the
@@ -105,7 +107,7 @@ class StringTable {
   hashOf(start: number, end: number): number {
     let h = end - start;
     for (let k = start; k < end; k++) h = (Math.imul(h, 31) + this.src.charCodeAt(k)) | 0;
-    return h;
+    return h & SMI_MASK;
   }
 }
 
@@ -129,19 +131,25 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
   };
   if (src.charCodeAt(0) === 0xfeff) pos = 1;
   const strings = new StringTable(src);
+  // Open elements, innermost at depth - 1 (indexed, not push/pop: those reallocate as depth swings).
   const stack: XmlElement[] = [];
+  let depth = 0;
   // Children of the open elements, innermost last: each element gets an exact-size array when it
   // closes (a growing array per element would hold mostly empty slots).
   const kids: XmlElement[] = [];
   const kidsFrom: number[] = [];
+  // Used up to kidsTop / skippedCount: truncating with `length =` would shrink and regrow the
+  // arrays' storage for every element.
+  let kidsTop = 0;
   const skippedNames: string[] = [];
+  let skippedCount = 0;
   let root: XmlElement | undefined;
 
   while (pos < len) {
     const lt = src.indexOf('<', pos);
     if (lt === -1) {
       const rest = src.slice(pos);
-      if (stack.length) fail(`the file ends inside <${stack[stack.length - 1]!.qname}>`, len);
+      if (depth) fail(`the file ends inside <${stack[depth - 1]!.qname}>`, len);
       if (rest.trim())
         fail(root ? 'text after the end of the document' : 'this is not XML: no element found');
       break;
@@ -157,7 +165,7 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
         }
       }
       if (!blank) {
-        const top = stack[stack.length - 1];
+        const top = stack[depth - 1];
         const chunk = src.slice(pos, lt);
         if (top) top.text += decodeEntities(chunk, (m) => fail(m, pos));
         else
@@ -176,20 +184,20 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
       } else if (src.startsWith('<![CDATA[', pos)) {
         const e = src.indexOf(']]>', pos + 9);
         if (e === -1) fail('unclosed CDATA section');
-        const top = stack[stack.length - 1];
+        const top = stack[depth - 1];
         if (!top) fail('CDATA outside the root element');
         top.text += src.slice(pos + 9, e);
         pos = e + 3;
       } else if (src.startsWith('<!DOCTYPE', pos)) {
-        if (root || stack.length) fail('DOCTYPE inside the document');
+        if (root || depth) fail('DOCTYPE inside the document');
         // Skip an optional internal subset; entity declarations are not supported (PLCopen never uses them).
-        let depth = 0;
+        let nesting = 0;
         let i = pos + 9;
         for (; i < len; i++) {
           const ch = src[i];
-          if (ch === '[') depth++;
-          else if (ch === ']') depth--;
-          else if (ch === '>' && depth <= 0) break;
+          if (ch === '[') nesting++;
+          else if (ch === ']') nesting--;
+          else if (ch === '>' && nesting <= 0) break;
         }
         if (i >= len) fail('unclosed DOCTYPE');
         pos = i + 1;
@@ -205,7 +213,7 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
     if (c1 === 47 /* / */) {
       const e = src.indexOf('>', pos + 2);
       if (e === -1) fail('unclosed end tag');
-      const top = stack.pop();
+      const top = depth > 0 ? stack[--depth] : undefined;
       // Fast path: `</name>` exactly as opened.
       const q = top?.qname ?? '';
       if (!top || e !== pos + 2 + q.length || !src.startsWith(q, pos + 2)) {
@@ -214,10 +222,10 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
         if (top.qname !== name)
           fail(`end tag </${name}> does not match <${top.qname}> (line ${lineColumn(src, top.offset).line})`);
       }
-      const from = kidsFrom.pop()!;
-      if (kids.length > from) {
-        (top as { children: XmlElement[] }).children = kids.slice(from);
-        kids.length = from;
+      const from = kidsFrom[depth]!;
+      if (kidsTop > from) {
+        (top as { children: XmlElement[] }).children = kids.slice(from, kidsTop);
+        kidsTop = from;
       }
       top!.end = e + 1;
       pos = e + 1;
@@ -234,11 +242,11 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
       if (c === 58 /* : */ && colon === -1) colon = i;
       h = (Math.imul(h, 31) + c) | 0;
     }
-    const qname = strings.get(pos + 1, i, (h + Math.imul(i - pos - 1, 0x9e3779b1)) | 0);
+    const qname = strings.get(pos + 1, i, (h + Math.imul(i - pos - 1, 0x9e3779b1)) & SMI_MASK);
     const first = qname.charCodeAt(0);
     const nameStart =
       (first >= 65 && first <= 90) || (first >= 97 && first <= 122) || first === 95 || first >= 0xc0;
-    if (!nameStart) fail(root || stack.length ? 'bad element name' : 'this is not XML: expected an element');
+    if (!nameStart) fail(root || depth ? 'bad element name' : 'this is not XML: expected an element');
     const name =
       colon === -1
         ? qname
@@ -248,8 +256,8 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
             strings.hashOf(colon + 1, start + 1 + qname.length),
           );
     // A skipped element is checked just as strictly, but its attributes are not kept.
-    const kept = !skip || !stack.length || !skip(stack[stack.length - 1]!, name);
-    skippedNames.length = 0;
+    const kept = !skip || !depth || !skip(stack[depth - 1]!, name);
+    skippedCount = 0;
     let attrs = NO_ATTRS as Record<string, string>;
     let selfClosing = false;
     for (;;) {
@@ -282,7 +290,7 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
           fail(`bad attribute in <${qname}>`, i);
         ah = (Math.imul(ah, 31) + ch) | 0;
       }
-      const an = strings.get(i, ae, (ah + Math.imul(ae - i, 0x9e3779b1)) | 0);
+      const an = strings.get(i, ae, (ah + Math.imul(ae - i, 0x9e3779b1)) & SMI_MASK);
       let q = eq + 1;
       while (q < len && src.charCodeAt(q) <= 32) q++;
       const quote = src.charCodeAt(q);
@@ -296,8 +304,9 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
           if (ch === 60) fail(`"<" in the value of attribute "${an}"`, q);
           if (ch === 38) amp = true;
         }
-        if (skippedNames.includes(an)) fail(`attribute "${an}" repeated in <${qname}>`, i);
-        skippedNames.push(an);
+        for (let k = 0; k < skippedCount; k++)
+          if (skippedNames[k] === an) fail(`attribute "${an}" repeated in <${qname}>`, i);
+        skippedNames[skippedCount++] = an;
         if (amp) decodeEntities(src.slice(q + 1, close), (m) => fail(m, q));
         i = close + 1;
         continue;
@@ -314,7 +323,7 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
       }
       let raw: string;
       if (close < len && src.charCodeAt(close) === quote && !special) {
-        raw = strings.get(q + 1, close, (vh + Math.imul(close - q - 1, 0x9e3779b1)) | 0);
+        raw = strings.get(q + 1, close, (vh + Math.imul(close - q - 1, 0x9e3779b1)) & SMI_MASK);
       } else {
         close = src.indexOf(quote === 34 ? '"' : "'", q + 1);
         if (close === -1) fail(`unclosed value of attribute "${an}"`, q);
@@ -335,17 +344,17 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
       offset: start,
       end: i,
     };
-    if (stack.length) {
-      if (kept) kids.push(el);
+    if (depth) {
+      if (kept) kids[kidsTop++] = el;
     } else if (root) fail('more than one root element', start);
     else root = el;
     if (!selfClosing) {
-      stack.push(el);
-      kidsFrom.push(kids.length);
+      kidsFrom[depth] = kidsTop;
+      stack[depth++] = el;
     }
     pos = i;
   }
-  if (stack.length) fail(`the file ends inside <${stack[stack.length - 1]!.qname}>`, len);
+  if (depth) fail(`the file ends inside <${stack[depth - 1]!.qname}>`, len);
   if (!root) fail('this is not XML: no element found', 0);
   return root!;
 }

@@ -42,8 +42,13 @@ function attrText(attrs: Attrs | undefined): string {
 
 const PADS = Array.from({ length: 32 }, (_, i) => '  '.repeat(i));
 
+/** Lines per flattened chunk: a big export would otherwise hold every line as a tree of string pieces. */
+const CHUNK_LINES = 2048;
+
 export class XmlWriter {
-  private readonly lines: string[] = [];
+  /** Finished text, one flat string per CHUNK_LINES lines. */
+  private readonly chunks: string[] = [];
+  private lines: string[] = [];
   private depth = 0;
   /** While writing one line (see line()), the text so far; null otherwise. */
   private buf: string | null = null;
@@ -54,7 +59,15 @@ export class XmlWriter {
 
   private push(text: string): void {
     if (this.buf !== null) this.buf += text;
-    else this.lines.push(this.pad() + text);
+    else this.add(this.pad() + text);
+  }
+
+  private add(line: string): void {
+    this.lines.push(line);
+    if (this.lines.length >= CHUNK_LINES) {
+      this.chunks.push(this.lines.join('\n'));
+      this.lines = [];
+    }
   }
 
   /** Everything body() writes goes on one line (compact pins and wires keep big files small). */
@@ -65,7 +78,7 @@ export class XmlWriter {
     }
     this.buf = '';
     body();
-    this.lines.push(this.pad() + this.buf);
+    this.add(this.pad() + this.buf);
     this.buf = null;
     return this;
   }
@@ -105,7 +118,7 @@ export class XmlWriter {
       return this;
     }
     const pad = this.pad();
-    for (const line of xml.split('\n')) this.lines.push(pad + line);
+    for (const line of xml.split('\n')) this.add(pad + line);
     return this;
   }
 
@@ -116,6 +129,10 @@ export class XmlWriter {
   }
 
   toString(): string {
-    return `${this.lines.join('\n')}\n`;
+    if (this.lines.length) {
+      this.chunks.push(this.lines.join('\n'));
+      this.lines = [];
+    }
+    return `${this.chunks.join('\n')}\n`;
   }
 }
