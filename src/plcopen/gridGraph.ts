@@ -15,7 +15,17 @@ export interface PinPoint {
 }
 
 /** Input and output pins of an element with their grid points. 1-cell elements use pins "in"/"out". */
-export function elementPins(el: LdElement): { inputs: PinPoint[]; outputs: PinPoint[] } {
+/** Shared by links and unknown boxes (most elements of a big network): never written. */
+const NO_PINS: { readonly inputs: readonly PinPoint[]; readonly outputs: readonly PinPoint[] } =
+  Object.freeze({
+    inputs: Object.freeze([]),
+    outputs: Object.freeze([]),
+  });
+
+export function elementPins(el: LdElement): {
+  readonly inputs: readonly PinPoint[];
+  readonly outputs: readonly PinPoint[];
+} {
   switch (el.kind) {
     case 'contact':
     case 'coil':
@@ -27,10 +37,10 @@ export function elementPins(el: LdElement): { inputs: PinPoint[]; outputs: PinPo
     case 'return':
       return { inputs: [{ pin: 'in', row: el.row, boundary: el.col }], outputs: [] };
     case 'link':
-      return { inputs: [], outputs: [] };
+      return NO_PINS;
     case 'box': {
       const layout = boxLayout(el);
-      if (!layout) return { inputs: [], outputs: [] };
+      if (!layout) return NO_PINS;
       return {
         inputs: layout.inputs.map((p) => ({ pin: p.name, row: el.row + p.rowOffset, boundary: el.col })),
         outputs: layout.outputs.map((p) => ({

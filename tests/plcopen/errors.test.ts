@@ -60,6 +60,21 @@ describe('PLCopen import errors', () => {
     expect(errorOf(text)).toMatchObject({ element: 'pou', pou: 'Main' });
   });
 
+  it('damage inside pin offsets and wire routes (which the import does not read) is still located', () => {
+    const text = fixture('connector-continuation.xml');
+    const lines = text.split('\n');
+    const route = lines.findIndex((l) => l.includes('<connection refLocalId="1"><position'));
+    expect(route).toBeGreaterThan(0);
+    const broken = [...lines];
+    broken[route] = broken[route]!.replace('<position x="50"', '<position x=50');
+    expect(errorOf(broken.join('\n'))).toMatchObject({ line: route + 1 });
+    const twice = [...lines];
+    twice[route] = twice[route]!.replace('<relPosition x="0"', '<relPosition x="0" x="1"');
+    const e = errorOf(twice.join('\n'));
+    expect(e.line).toBe(route + 1);
+    expect(e.message).toContain('attribute "x" repeated');
+  });
+
   it('never throws on damaged files: every truncation of a real file gives a result', () => {
     const text = fixture('corpus/virajdesai__05_xor_xnor.xml');
     for (let cut = 0; cut < text.length; cut += 97) {
