@@ -64,64 +64,79 @@ export interface GridGraph {
   readonly barBoundary: Map<number, number>;
 }
 
+/** Union-find root of a point (with path halving). */
+function findRoot(parent: number[], a: number): number {
+  while (parent[a]! !== a) {
+    parent[a] = parent[parent[a]!]!;
+    a = parent[a]!;
+  }
+  return a;
+}
+/** Joins two points; the smaller index becomes the root. */
+function unite(parent: number[], a: number, b: number): void {
+  const ra = findRoot(parent, a);
+  const rb = findRoot(parent, b);
+  if (ra !== rb) parent[Math.max(ra, rb)] = Math.min(ra, rb);
+}
+
 export function gridGraph(net: Pick<Network, 'rows' | 'cols' | 'elements' | 'vlinks'>): GridGraph {
   const W = net.cols + 1;
-  const n = net.rows * W;
+  const rows = net.rows;
+  const cols = net.cols;
+  const n = rows * W;
   const parent: number[] = new Array<number>(n).fill(0); // small: cheaper than a typed array
   for (let i = 0; i < n; i++) parent[i] = i;
-  const find = (a: number): number => {
-    while (parent[a]! !== a) {
-      parent[a] = parent[parent[a]!]!;
-      a = parent[a]!;
-    }
-    return a;
-  };
-  const union = (a: number, b: number) => {
-    const ra = find(a);
-    const rb = find(b);
-    if (ra !== rb) parent[Math.max(ra, rb)] = Math.min(ra, rb);
-  };
-  const inGrid = (r: number, b: number) => r >= 0 && r < net.rows && b >= 0 && b <= net.cols;
-  for (let r = 1; r < net.rows; r++) union(0, r * W); // the left rail joins every row at boundary 0
+  const inGrid = (r: number, b: number) => r >= 0 && r < rows && b >= 0 && b <= cols;
+  for (let r = 1; r < rows; r++) unite(parent, 0, r * W); // the left rail joins every row at boundary 0
   for (const el of net.elements)
-    if (el.kind === 'link' && inGrid(el.row, el.col + 1)) union(el.row * W + el.col, el.row * W + el.col + 1);
+    if (el.kind === 'link' && inGrid(el.row, el.col + 1))
+      unite(parent, el.row * W + el.col, el.row * W + el.col + 1);
   for (const v of net.vlinks)
-    if (inGrid(v.row + 1, v.boundary)) union(v.row * W + v.boundary, (v.row + 1) * W + v.boundary);
+    if (inGrid(v.row + 1, v.boundary)) unite(parent, v.row * W + v.boundary, (v.row + 1) * W + v.boundary);
 
   const producers = new Map<number, Source[]>();
-  const railNet = net.rows > 0 ? find(0) : -1;
+  const railNet = rows > 0 ? findRoot(parent, 0) : -1;
   if (railNet >= 0) producers.set(railNet, [{ kind: 'rail' }]);
-  const pins = net.elements.map(elementPins);
-  pins.forEach((p, ei) => {
+  const elements = net.elements;
+  const pins: ReturnType<typeof elementPins>[] = new Array<ReturnType<typeof elementPins>>(elements.length);
+  for (let ei = 0; ei < elements.length; ei++) {
+    const p = (pins[ei] = elementPins(elements[ei]!));
     for (const o of p.outputs) {
       if (!inGrid(o.row, o.boundary)) continue;
-      const id = find(o.row * W + o.boundary);
+      const id = findRoot(parent, o.row * W + o.boundary);
       let list = producers.get(id);
       if (!list) producers.set(id, (list = []));
       list.push({ kind: 'pin', el: ei, pin: o.pin });
     }
-  });
+  }
   const sources = new Map<number, Map<string, Source[]>>();
-  pins.forEach((p, ei) => {
-    for (const i of p.inputs) {
+  for (let ei = 0; ei < elements.length; ei++) {
+    for (const i of pins[ei]!.inputs) {
       if (!inGrid(i.row, i.boundary)) continue;
-      const list = producers.get(find(i.row * W + i.boundary));
+      const list = producers.get(findRoot(parent, i.row * W + i.boundary));
       if (!list) continue;
-      const own = list.filter((s) => s.kind === 'rail' || s.el !== ei);
+      let own: Source[] = list;
+      for (let k = 0; k < list.length; k++) {
+        const s = list[k]!;
+        if (s.kind === 'pin' && s.el === ei) {
+          own = list.filter((x) => x.kind === 'rail' || x.el !== ei);
+          break;
+        }
+      }
       if (!own.length) continue;
       let m = sources.get(ei);
       if (!m) sources.set(ei, (m = new Map()));
-      m.set(i.pin, own);
+      m.set(i.pin, own === list ? list.slice() : own);
     }
-  });
+  }
   const rightRail = new Map<number, Source[]>();
-  for (let r = 0; r < net.rows; r++) {
-    const id = find(r * W + net.cols);
+  for (let r = 0; r < rows; r++) {
+    const id = findRoot(parent, r * W + cols);
     const list = producers.get(id);
     if (list && id !== railNet) rightRail.set(r, list);
   }
   const barBoundary = new Map<number, number>();
   for (const v of net.vlinks)
-    if (inGrid(v.row + 1, v.boundary)) barBoundary.set(find(v.row * W + v.boundary), v.boundary);
-  return { sources, rightRail, netOf: (r, b) => find(r * W + b), barBoundary };
+    if (inGrid(v.row + 1, v.boundary)) barBoundary.set(findRoot(parent, v.row * W + v.boundary), v.boundary);
+  return { sources, rightRail, netOf: (r, b) => findRoot(parent, r * W + b), barBoundary };
 }

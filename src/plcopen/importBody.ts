@@ -236,35 +236,22 @@ function verify(
     const id = laid.elementOf.get(i);
     if (id) nodeOfElement.set(indexOfElement.get(id)!, i);
   }
-  const key = (s: Source | GSource): string => {
-    if (s.kind === 'rail') return 'rail';
-    if (s.kind === 'pin') return `${nodeOfElement.get(s.el)}:${s.pin}`;
-    return `${s.node}:${s.pin}`;
-  };
   const memberSet = new Set(members);
   for (const i of members) {
     const n = nodes[i]!;
     const ei = indexOfElement.get(laid.elementOf.get(i)!);
     if (ei === undefined) continue;
     const drawn = g.sources.get(ei);
-    const differs = (pin: string): boolean => {
-      const wantList = (n.inputs.get(pin) ?? []).filter((s) => s.kind === 'rail' || memberSet.has(s.node));
-      const gotList = drawn?.get(pin) ?? [];
-      // One source each (most pins): compare directly, without building sets.
-      return wantList.length === 1 && gotList.length === 1
-        ? key(wantList[0]!) !== key(gotList[0]!)
-        : !sameSet(new Set(wantList.map(key)), new Set(gotList.map(key)));
-    };
     // The pins wired in the file, then those only drawn; the first that differs is reported.
     let bad: string | undefined;
     for (const pin of n.inputs.keys())
-      if (differs(pin)) {
+      if (pinDiffers(n, pin, drawn, memberSet, nodeOfElement)) {
         bad = pin;
         break;
       }
     if (bad === undefined && drawn)
       for (const pin of drawn.keys())
-        if (!n.inputs.has(pin) && differs(pin)) {
+        if (!n.inputs.has(pin) && pinDiffers(n, pin, drawn, memberSet, nodeOfElement)) {
           bad = pin;
           break;
         }
@@ -274,6 +261,31 @@ function verify(
         obj: n.obj,
       });
   }
+}
+
+/** Whether the sources of a pin in the file (within the network) differ from those the grid draws. */
+function pinDiffers(
+  n: GNode,
+  pin: string,
+  drawn: Map<string, Source[]> | undefined,
+  memberSet: ReadonlySet<number>,
+  nodeOfElement: ReadonlyMap<number, number>,
+): boolean {
+  const wantList = (n.inputs.get(pin) ?? []).filter((s) => s.kind === 'rail' || memberSet.has(s.node));
+  const gotList = drawn?.get(pin) ?? [];
+  // One source each (most pins): compare directly, without building keys or sets.
+  if (wantList.length === 1 && gotList.length === 1) {
+    const want = wantList[0]!;
+    const got = gotList[0]!;
+    if (want.kind === 'rail' || got.kind === 'rail') return want.kind !== got.kind;
+    return want.node !== nodeOfElement.get(got.el) || want.pin !== got.pin;
+  }
+  const key = (s: Source | GSource): string => {
+    if (s.kind === 'rail') return 'rail';
+    if (s.kind === 'pin') return `${nodeOfElement.get(s.el)}:${s.pin}`;
+    return `${s.node}:${s.pin}`;
+  };
+  return !sameSet(new Set(wantList.map(key)), new Set(gotList.map(key)));
 }
 
 function sameSet(a: ReadonlySet<string>, b: ReadonlySet<string>): boolean {

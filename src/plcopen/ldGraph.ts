@@ -273,6 +273,15 @@ export function buildLdGraph(
     return pin.toUpperCase();
   };
   const sourcesOf = (pin: RawPin, consumer: RawObject, operandTarget?: (text: string) => void): GSource[] => {
+    // Most pins: one wire straight from the rail, a contact or a coil (no intermediate results).
+    if (pin.connections.length === 1) {
+      const src = byId.get(pin.connections[0]!.ref);
+      if (src?.kind === 'leftPowerRail') return [RAIL];
+      if (src?.kind === 'contact' || src?.kind === 'coil') {
+        const n = nodeOf.get(src);
+        return n ? [{ kind: 'node', node: n.index, pin: 'out' }] : [];
+      }
+    }
     const out: GSource[] = [];
     const all =
       pin.connections.length === 1

@@ -11,26 +11,30 @@ export function splitSharedSources(nodes: GNode[], warn: (f: Finding) => void): 
   for (let round = 0; round < 4; round++) if (!splitOnce(nodes, warn)) return;
 }
 
+const sameSource = (a: GSource, b: GSource): boolean =>
+  a.kind === 'rail' ? b.kind === 'rail' : b.kind !== 'rail' && a.node === b.node && a.pin === b.pin;
+
 /** True when some source feeds two input pins whose source lists differ (the only case to redraw). */
 function anyMismatch(nodes: readonly GNode[]): boolean {
-  const firstUse = new Map<string, readonly GSource[]>();
-  let mismatch = false;
-  const check = (srcs: readonly GSource[]) => {
-    for (const s of srcs) {
-      if (s.kind === 'rail') continue;
-      const k = srcKey(s);
-      const prev = firstUse.get(k);
-      if (!prev) firstUse.set(k, srcs);
-      else if (
-        prev !== srcs &&
-        (prev.length !== srcs.length || prev.some((p, i) => srcKey(p) !== srcKey(srcs[i]!)))
-      )
-        mismatch = true;
-    }
-  };
+  // Sources keyed by number (node and pin number), not by string: this looks at every wire of the file.
+  const pinIds = new Map<string, number>();
+  const firstUse = new Map<number, readonly GSource[]>();
   for (const n of nodes) {
-    n.inputs.forEach(check);
-    if (mismatch) return true;
+    for (const srcs of n.inputs.values()) {
+      for (const s of srcs) {
+        if (s.kind === 'rail') continue;
+        let pid = pinIds.get(s.pin);
+        if (pid === undefined) pinIds.set(s.pin, (pid = pinIds.size));
+        const k = s.node * 0x100000 + pid;
+        const prev = firstUse.get(k);
+        if (!prev) firstUse.set(k, srcs);
+        else if (
+          prev !== srcs &&
+          (prev.length !== srcs.length || prev.some((p, i) => !sameSource(p, srcs[i]!)))
+        )
+          return true;
+      }
+    }
   }
   return false;
 }
