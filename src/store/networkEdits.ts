@@ -37,7 +37,8 @@ export function occupancy(n: Network, ignore?: ReadonlySet<ElementId>): Map<stri
 export const elementAt = (n: Network, cell: Cell): LdElement | undefined =>
   occupancy(n).get(cellKey(cell.row, cell.col));
 
-function grow(n: Network, elements: readonly LdElement[], vlinks: readonly VLink[]): Network {
+/** The network with these elements and vertical links, its grid grown to hold them all. */
+export function grow(n: Network, elements: readonly LdElement[], vlinks: readonly VLink[]): Network {
   let rows = n.rows;
   let cols = n.cols;
   for (const el of elements) {

@@ -5,11 +5,11 @@
 // between its left and right edges) move along; links on its edges stay in the source, where
 // other paths may still use them. The target grows to fit.
 import type { LdElement, VLink } from '../model/elements';
-import { elementCells, elementSize } from '../model/factory';
+import { elementCells } from '../model/factory';
 import { cellKey, type Cell } from '../model/grid';
 import type { ElementId } from '../model/ids';
 import type { Network } from '../model/project';
-import { boundsOf, occupancy } from './networkEdits';
+import { boundsOf, grow, occupancy } from './networkEdits';
 
 export interface Transfer {
   readonly source: Network;
@@ -49,23 +49,12 @@ export function transferElements(
     if (!vlinks.some((x) => x.row === w.row && x.boundary === w.boundary)) vlinks.push(w);
   }
   const elements = [...target.elements.filter((e) => !replaced.has(e.id)), ...moved];
-  let rows = target.rows;
-  let cols = target.cols;
-  for (const el of elements) {
-    const s = elementSize(el);
-    rows = Math.max(rows, el.row + s.rows);
-    cols = Math.max(cols, el.col + s.cols);
-  }
-  for (const v of vlinks) {
-    rows = Math.max(rows, v.row + 2);
-    cols = Math.max(cols, v.boundary);
-  }
   return {
     source: {
       ...source,
       elements: source.elements.filter((e) => !set.has(e.id)),
       vlinks: source.vlinks.filter((v) => !inside(v)),
     },
-    target: { ...target, elements, vlinks, rows, cols },
+    target: grow(target, elements, vlinks),
   };
 }
