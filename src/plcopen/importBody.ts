@@ -97,17 +97,13 @@ export function importLdBody(
   for (const o of graph.vendor) groups.push(single(o, 'vendor', 20));
   groups.sort((a, b) => compareKeys(a.key, b.key));
 
-  // Columns per network first: every network of the POU shares one width, coils on one right rail.
+  // Every network of the POU shares one width, coils on one right rail. Networks are laid out at
+  // the widest width seen so far; the few laid out before a wider one came are laid out again at
+  // the end (measuring every network first would lay each one out twice).
   let cols = MIN_COLS;
-  for (const g of groups) {
-    if (g.kind !== 'network') continue;
-    // Not kept: holding the layout state of every network until all are measured would make the
-    // collector copy and promote it all (10,000-network files); preparing twice is cheaper.
-    const p = prepareLayout(nodes, g.nodes);
-    cols = Math.max(cols, p.needCols);
-  }
-
   const networks: Network[] = [];
+  /** Laid-out networks: their group, position in `networks` and the wiring findings of their layout. */
+  const laidOut: { group: Group; at: number; findings: Finding[] }[] = [];
   let pendingLabel: RawObject | undefined;
   let pendingComments: RawObject[] = [];
   let pendingVendor: string[] = [];
@@ -116,6 +112,25 @@ export function importLdBody(
     networks.push(newNetwork({ rows: 1, cols, label: pendingLabel.text, ...commentsOf(pendingComments) }));
     pendingLabel = undefined;
     pendingComments = [];
+  };
+  const layOut = (g: Group, width: number, base: Partial<Network>, findings: Finding[]): Network => {
+    const prepared = prepareLayout(nodes, g.nodes);
+    cols = Math.max(cols, prepared.needCols);
+    const laid = prepared.run(Math.max(width, prepared.needCols));
+    findings.length = 0;
+    verify(nodes, g.nodes, laid, (f) => findings.push(f));
+    const data = elementData(nodes, g.nodes, laid);
+    const { extensions, ...rest } = base;
+    const objects = (extensions?.plcopen as PreservedNetwork | undefined)?.objects;
+    const keep: PreservedNetwork = { ...(objects ? { objects } : {}), ...data };
+    return {
+      ...rest,
+      rows: laid.rows,
+      cols: laid.cols,
+      elements: laid.elements,
+      vlinks: laid.vlinks,
+      ...(keep.objects || keep.elementData ? { extensions: { plcopen: keep } } : {}),
+    } as Network;
   };
   for (const g of groups) {
     if (g.kind === 'label') {
@@ -131,27 +146,25 @@ export function importLdBody(
       pendingVendor.push(raw(g.obj!.xml));
       continue;
     }
-    const laid = prepareLayout(nodes, g.nodes).run(cols);
-    verify(nodes, g.nodes, laid, warn);
-    const keep: PreservedNetwork = {
-      ...(pendingVendor.length ? { objects: pendingVendor } : {}),
-      ...elementData(nodes, g.nodes, laid),
-    };
-    networks.push(
-      newNetwork({
-        rows: laid.rows,
-        cols: laid.cols,
-        elements: laid.elements,
-        vlinks: laid.vlinks,
-        ...(pendingLabel ? { label: pendingLabel.text } : {}),
-        ...commentsOf(pendingComments),
-        ...(keep.objects || keep.elementData ? { extensions: { plcopen: keep } } : {}),
-      }),
-    );
+    const base = newNetwork({
+      ...(pendingLabel ? { label: pendingLabel.text } : {}),
+      ...commentsOf(pendingComments),
+      ...(pendingVendor.length ? { extensions: { plcopen: { objects: pendingVendor } } } : {}),
+    });
+    const findings: Finding[] = [];
+    laidOut.push({ group: g, at: networks.length, findings });
+    networks.push(layOut(g, cols, base, findings));
     pendingLabel = undefined;
     pendingComments = [];
     pendingVendor = [];
   }
+  for (const l of laidOut) {
+    const net = networks[l.at]!;
+    if (net.cols < cols) networks[l.at] = layOut(l.group, cols, net, l.findings);
+    for (const f of l.findings) warn(f);
+  }
+  for (let k = 0; k < networks.length; k++)
+    if (networks[k]!.cols < cols) networks[k] = { ...networks[k]!, cols };
   flushEmpty();
   if (pendingComments.length || pendingVendor.length) {
     const last = networks.pop();
@@ -183,7 +196,7 @@ function commentsOf(list: readonly RawObject[]): { comment: string; title: strin
   let title = '';
   const texts: string[] = [];
   for (const o of list) {
-    const add = child(o.xml, 'addData');
+    const add = o.hasAddData ? child(o.xml, 'addData') : undefined;
     const mine = add ? childrenNamed(add, 'data').find((d) => d.attrs.name === RS_NETWORK) : undefined;
     const t = mine?.children[0]?.attrs.title;
     if (t) title = t;

@@ -48,8 +48,8 @@ class ImportFailure extends Error {
 }
 
 /** Pin offsets and wire routes: never read (the grid is built from the wiring), yet most of a file. */
-const unread = (parent: XmlElement, name: string): boolean =>
-  name === 'relPosition' || (name === 'position' && parent.name === 'connection');
+const unread = (parent: string, name: string): boolean =>
+  name === 'relPosition' || (name === 'position' && parent === 'connection');
 
 /** Reads PLCopen XML text. */
 export function importPlcopen(xmlText: string): ImportResult {

@@ -15,7 +15,7 @@ export function buildBox(
 ): void {
   const typeName = o.text;
   const sig = blockSignature(typeName);
-  const instance = o.attrs.instanceName;
+  const instance = o.attr('instanceName');
   n.instance = instance || undefined;
   if (!sig) {
     n.blockType = typeName;

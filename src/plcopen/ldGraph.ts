@@ -61,6 +61,7 @@ const isTrue = (s: string) => /^(TRUE|BOOL#TRUE|BOOL#1)$/i.test(s.trim());
 
 /** The Rungsmith addData marker value (`type` attribute) on an object, if any. */
 function rsMarker(obj: RawObject, name: string): string | undefined {
+  if (!obj.hasAddData) return undefined;
   const add = child(obj.xml, 'addData');
   if (!add) return undefined;
   for (const d of childrenNamed(add, 'data')) if (d.attrs.name === name) return d.children[0]?.attrs.type;
@@ -116,10 +117,10 @@ export function buildLdGraph(
   objects.forEach((o, order) => {
     switch (o.kind) {
       case 'contact': {
-        const a = o.attrs;
-        const c: ContactType =
-          a.edge === 'rising' ? 'P' : a.edge === 'falling' ? 'N' : a.negated === 'true' ? 'NC' : 'NO';
-        if ((a.edge === 'rising' || a.edge === 'falling') && a.negated === 'true')
+        const edge = o.attr('edge');
+        const negated = o.attr('negated') === 'true';
+        const c: ContactType = edge === 'rising' ? 'P' : edge === 'falling' ? 'N' : negated ? 'NC' : 'NO';
+        if ((edge === 'rising' || edge === 'falling') && negated)
           warn({
             message: `contact "${o.text}" is both negated and edge-triggered; Rungsmith keeps the edge (${c}) and drops the negation`,
             obj: o,
@@ -130,14 +131,15 @@ export function buildLdGraph(
         break;
       }
       case 'coil': {
-        const a = o.attrs;
         const marker = rsMarker(o, RS_COIL) as CoilType | undefined;
+        const storage = o.attr('storage');
+        const edge = o.attr('edge');
         let c: CoilType = 'COIL';
-        if (a.storage === 'set') c = 'SET';
-        else if (a.storage === 'reset') c = 'RESET';
-        else if (a.edge === 'rising') c = 'P';
-        else if (a.edge === 'falling') c = 'N';
-        else if (a.negated === 'true') c = 'NEG';
+        if (storage === 'set') c = 'SET';
+        else if (storage === 'reset') c = 'RESET';
+        else if (edge === 'rising') c = 'P';
+        else if (edge === 'falling') c = 'N';
+        else if (o.attr('negated') === 'true') c = 'NEG';
         if (marker === 'M' || marker === 'SM' || marker === 'RM') c = marker;
         const n = newNode(o, 'coil', order);
         n.coil = c;
@@ -341,7 +343,7 @@ export function buildLdGraph(
         // A second variable on the same output: copied by a MOVE wired to that output.
         moveNode(o, { kind: 'node', node: n.index, pin: p });
         warn({
-          message: `block output ${single.obj.attrs.instanceName ?? single.obj.text}.${p} also goes to "${o.text}": drawn as a MOVE`,
+          message: `block output ${single.obj.attr('instanceName') ?? single.obj.text}.${p} also goes to "${o.text}": drawn as a MOVE`,
           obj: o,
         });
         continue;
@@ -383,6 +385,7 @@ export function buildLdGraph(
 
   // Unknown addData on graphical objects is kept per object.
   for (const n of nodes) {
+    if (!n.obj.hasAddData) continue;
     const add = child(n.obj.xml, 'addData');
     if (!add) continue;
     const keep: string[] = [];

@@ -1,7 +1,7 @@
 // Reading the objects of a PLCopen LD body: positions, pins and the connections recorded on the
 // consumer side. No interpretation yet (see ldGraph.ts).
 import type { Point } from './geometry';
-import { child, childrenNamed, deepText, type XmlElement } from './xml/parse';
+import { deepText, type XmlDoc, type XmlElement } from './xml/parse';
 
 /** A wire as recorded on its consumer. Route points and pin offsets are not read: the grid is built
  * from the wiring (topology), and these files run to hundreds of thousands of wires. */
@@ -22,7 +22,10 @@ export interface RawPin {
 export interface RawObject {
   readonly kind: string;
   readonly localId: string;
+  /** The element in the file (made on demand: most objects never need it). */
   readonly xml: XmlElement;
+  /** Whether the element has an `<addData>` child (markers and preserved vendor data). */
+  readonly hasAddData: boolean;
   readonly pos: Point;
   readonly width: number;
   readonly height: number;
@@ -31,149 +34,245 @@ export interface RawObject {
   readonly outputs: readonly RawPin[];
   /** contact/coil variable, in/outVariable expression, label/jump label, connector name, comment text. */
   readonly text: string;
-  readonly attrs: Readonly<Record<string, string>>;
+  /** An attribute of the element (read from the document, without building the element). */
+  attr(name: string): string | undefined;
   /** Position among the children of the body (file order). */
   readonly order: number;
 }
 
-const num = (s: string | undefined): number => {
-  if (s === undefined) return 0;
-  const n = +s;
-  return n === n && n !== Infinity && n !== -Infinity ? n : 0;
-};
-
-function readPoint(el: XmlElement | undefined): Point | undefined {
-  return el ? { x: num(el.attrs.x), y: num(el.attrs.y) } : undefined;
-}
-
-const NO_ATTRS: Readonly<Record<string, string>> = {};
 /** Output pins never hold connections (PLCopen records wires on the consumer side). */
 const NO_CONNECTIONS: readonly RawConnection[] = Object.freeze([]);
 
-function pinFlags(
-  pin: RawPin & { negated: boolean; edge?: string },
-  attrs: Readonly<Record<string, string>>,
-): void {
-  const neg = attrs.negated;
-  pin.negated = neg === 'true' || neg === '1';
-  const edge = attrs.edge;
-  if (edge && edge !== 'none') pin.edge = edge;
-}
-
 type MutablePin = { -readonly [K in keyof RawPin]: RawPin[K] };
 
-function readPointIn(
-  cp: XmlElement | undefined,
-  pin: string,
-  attrs: Readonly<Record<string, string>> = NO_ATTRS,
-): RawPin {
-  const connections: RawConnection[] = [];
-  const out: MutablePin = { pin, connections, negated: false };
-  if (cp) {
-    for (const c of cp.children) {
-      if (c.name === 'connection') {
-        const formal = c.attrs.formalParameter;
-        connections.push(
-          formal !== undefined && formal !== ''
-            ? { ref: c.attrs.refLocalId ?? '', formal }
-            : { ref: c.attrs.refLocalId ?? '' },
-        );
-      }
-    }
+/** Name ids of one document, looked up once per body. */
+class Names {
+  readonly position: number;
+  readonly x: number;
+  readonly y: number;
+  readonly connectionPointIn: number;
+  readonly connectionPointOut: number;
+  readonly connection: number;
+  readonly refLocalId: number;
+  readonly formalParameter: number;
+  readonly expression: number;
+  readonly variable: number;
+  readonly negated: number;
+  readonly edge: number;
+  readonly label: number;
+  readonly name: number;
+  readonly typeName: number;
+  readonly inputVariables: number;
+  readonly inOutVariables: number;
+  readonly outputVariables: number;
+  readonly content: number;
+  readonly addData: number;
+  readonly localId: number;
+  readonly width: number;
+  readonly height: number;
+  readonly executionOrderId: number;
+  constructor(d: XmlDoc) {
+    this.position = d.id('position');
+    this.x = d.id('x');
+    this.y = d.id('y');
+    this.connectionPointIn = d.id('connectionPointIn');
+    this.connectionPointOut = d.id('connectionPointOut');
+    this.connection = d.id('connection');
+    this.refLocalId = d.id('refLocalId');
+    this.formalParameter = d.id('formalParameter');
+    this.expression = d.id('expression');
+    this.variable = d.id('variable');
+    this.negated = d.id('negated');
+    this.edge = d.id('edge');
+    this.label = d.id('label');
+    this.name = d.id('name');
+    this.typeName = d.id('typeName');
+    this.inputVariables = d.id('inputVariables');
+    this.inOutVariables = d.id('inOutVariables');
+    this.outputVariables = d.id('outputVariables');
+    this.content = d.id('content');
+    this.addData = d.id('addData');
+    this.localId = d.id('localId');
+    this.width = d.id('width');
+    this.height = d.id('height');
+    this.executionOrderId = d.id('executionOrderId');
   }
-  if (attrs !== NO_ATTRS) pinFlags(out, attrs);
-  return out;
 }
 
-function readPointOut(
-  cp: XmlElement | undefined,
-  pin: string,
-  attrs: Readonly<Record<string, string>> = NO_ATTRS,
-): RawPin {
-  const out: MutablePin = { pin, connections: NO_CONNECTIONS, negated: false };
-  if (cp) {
-    for (const c of cp.children) {
-      if (c.name === 'expression') {
-        const e = c.text.trim();
+class LdObject implements RawObject {
+  constructor(
+    private readonly doc: XmlDoc,
+    private readonly index: number,
+    readonly kind: string,
+    readonly localId: string,
+    readonly pos: Point,
+    readonly width: number,
+    readonly height: number,
+    readonly executionOrderId: number,
+    readonly inputs: readonly RawPin[],
+    readonly outputs: readonly RawPin[],
+    readonly text: string,
+    readonly order: number,
+    readonly hasAddData: boolean,
+  ) {}
+  get xml(): XmlElement {
+    return this.doc.element(this.index);
+  }
+  attr(name: string): string | undefined {
+    const id = this.doc.id(name);
+    return id === -1 ? undefined : this.doc.attr(this.index, id);
+  }
+}
+
+/** Reads the LD objects of one body from its document. */
+class Reader {
+  private readonly n: Names;
+  constructor(private readonly d: XmlDoc) {
+    this.n = new Names(d);
+  }
+
+  /** Negation and edge of a block pin (`<variable negated="true" edge="rising">`). */
+  private pinFlags(pin: MutablePin, el: number): void {
+    const neg = this.d.attr(el, this.n.negated);
+    pin.negated = neg === 'true' || neg === '1';
+    const edge = this.d.attr(el, this.n.edge);
+    if (edge && edge !== 'none') pin.edge = edge;
+  }
+
+  /** An input pin and the connections on its `connectionPointIn` (cp; -1 if absent). `flagsOf` is a block pin variable. */
+  pointIn(cp: number, pin: string, flagsOf = -1): RawPin {
+    const d = this.d;
+    const connections: RawConnection[] = [];
+    const out: MutablePin = { pin, connections, negated: false };
+    if (cp !== -1) {
+      const connection = this.n.connection;
+      for (let c = d.firstChild[cp]!; c !== -1; c = d.nextSibling[c]!) {
+        if (d.lid[c] !== connection) continue;
+        const ref = d.attr(c, this.n.refLocalId) ?? '';
+        const formal = d.attr(c, this.n.formalParameter);
+        connections.push(formal !== undefined && formal !== '' ? { ref, formal } : { ref });
+      }
+    }
+    if (flagsOf !== -1) this.pinFlags(out, flagsOf);
+    return out;
+  }
+
+  /** An output pin; CODESYS may name the assigned variable in `<connectionPointOut><expression>`. */
+  pointOut(cp: number, pin: string, flagsOf = -1): RawPin {
+    const d = this.d;
+    const out: MutablePin = { pin, connections: NO_CONNECTIONS, negated: false };
+    if (cp !== -1) {
+      const expression = this.n.expression;
+      for (let c = d.firstChild[cp]!; c !== -1; c = d.nextSibling[c]!) {
+        if (d.lid[c] !== expression) continue;
+        const e = d.text(c).trim();
         if (e) out.expression = e;
       }
     }
+    if (flagsOf !== -1) this.pinFlags(out, flagsOf);
+    return out;
   }
-  if (attrs !== NO_ATTRS) pinFlags(out, attrs);
-  return out;
-}
 
-/** Reads every direct child of an LD body. */
-export function readLdObjects(body: XmlElement): RawObject[] {
-  return body.children.map((el, order) => {
-    const pos = readPoint(child(el, 'position')) ?? { x: 0, y: 0 };
+  /** The pins of the `<variable>` children of a block's pin list (list: -1 if absent). */
+  private blockPins(list: number, inputs: RawPin[] | undefined, outputs: RawPin[] | undefined): void {
+    const d = this.d;
+    const n = this.n;
+    if (list === -1) return;
+    for (let v = d.firstChild[list]!; v !== -1; v = d.nextSibling[v]!) {
+      if (d.lid[v] !== n.variable) continue;
+      const formal = d.attr(v, n.formalParameter) ?? '';
+      if (inputs) inputs.push(this.pointIn(d.childById(v, n.connectionPointIn), formal, v));
+      if (outputs) outputs.push(this.pointOut(d.childById(v, n.connectionPointOut), formal, v));
+    }
+  }
+
+  object(el: number, order: number): RawObject {
+    const d = this.d;
+    const n = this.n;
+    const p = d.childById(el, n.position);
+    const pos: Point = p === -1 ? { x: 0, y: 0 } : { x: d.attrNumber(p, n.x), y: d.attrNumber(p, n.y) };
     const inputs: RawPin[] = [];
     const outputs: RawPin[] = [];
     let text = '';
-    switch (el.name) {
-      case 'leftPowerRail':
-        childrenNamed(el, 'connectionPointOut').forEach((cp, i) => outputs.push(readPointOut(cp, String(i))));
+    const kind = d.name(el);
+    switch (kind) {
+      case 'leftPowerRail': {
+        let k = 0;
+        for (let c = d.firstChild[el]!; c !== -1; c = d.nextSibling[c]!)
+          if (d.lid[c] === n.connectionPointOut) outputs.push(this.pointOut(c, String(k++)));
         break;
-      case 'rightPowerRail':
-        childrenNamed(el, 'connectionPointIn').forEach((cp, i) => inputs.push(readPointIn(cp, String(i))));
+      }
+      case 'rightPowerRail': {
+        let k = 0;
+        for (let c = d.firstChild[el]!; c !== -1; c = d.nextSibling[c]!)
+          if (d.lid[c] === n.connectionPointIn) inputs.push(this.pointIn(c, String(k++)));
         break;
+      }
       case 'contact':
       case 'coil':
       case 'inVariable':
       case 'outVariable':
-      case 'inOutVariable':
-        if (child(el, 'connectionPointIn') || el.name !== 'inVariable')
-          inputs.push(readPointIn(child(el, 'connectionPointIn'), 'in'));
-        if (child(el, 'connectionPointOut') || el.name !== 'outVariable')
-          outputs.push(readPointOut(child(el, 'connectionPointOut'), 'out'));
-        text = (child(el, 'variable') ?? child(el, 'expression'))?.text.trim() ?? '';
+      case 'inOutVariable': {
+        const cpIn = d.childById(el, n.connectionPointIn);
+        const cpOut = d.childById(el, n.connectionPointOut);
+        if (cpIn !== -1 || kind !== 'inVariable') inputs.push(this.pointIn(cpIn, 'in'));
+        if (cpOut !== -1 || kind !== 'outVariable') outputs.push(this.pointOut(cpOut, 'out'));
+        let t = d.childById(el, n.variable);
+        if (t === -1) t = d.childById(el, n.expression);
+        text = t === -1 ? '' : d.text(t).trim();
         break;
+      }
       case 'jump':
       case 'return':
       case 'connector':
-        inputs.push(readPointIn(child(el, 'connectionPointIn'), 'in'));
-        text = el.attrs.label ?? el.attrs.name ?? '';
+        inputs.push(this.pointIn(d.childById(el, n.connectionPointIn), 'in'));
+        text = d.attr(el, n.label) ?? d.attr(el, n.name) ?? '';
         break;
       case 'continuation':
-        outputs.push(readPointOut(child(el, 'connectionPointOut'), 'out'));
-        text = el.attrs.name ?? '';
+        outputs.push(this.pointOut(d.childById(el, n.connectionPointOut), 'out'));
+        text = d.attr(el, n.name) ?? '';
         break;
       case 'label':
-        text = el.attrs.label ?? '';
+        text = d.attr(el, n.label) ?? '';
         break;
       case 'comment': {
-        const content = child(el, 'content');
-        text = content ? deepText(content).trim() : '';
+        const content = d.childById(el, n.content);
+        text = content === -1 ? '' : deepText(d.element(content)).trim();
         break;
       }
       case 'block': {
-        for (const v of childrenNamed(child(el, 'inputVariables') ?? el, 'variable'))
-          inputs.push(readPointIn(child(v, 'connectionPointIn'), v.attrs.formalParameter ?? '', v.attrs));
-        for (const v of childrenNamed(child(el, 'inOutVariables') ?? el, 'variable')) {
-          inputs.push(readPointIn(child(v, 'connectionPointIn'), v.attrs.formalParameter ?? '', v.attrs));
-          outputs.push(readPointOut(child(v, 'connectionPointOut'), v.attrs.formalParameter ?? '', v.attrs));
-        }
-        for (const v of childrenNamed(child(el, 'outputVariables') ?? el, 'variable'))
-          outputs.push(readPointOut(child(v, 'connectionPointOut'), v.attrs.formalParameter ?? '', v.attrs));
-        text = el.attrs.typeName ?? '';
+        this.blockPins(d.childById(el, n.inputVariables), inputs, undefined);
+        this.blockPins(d.childById(el, n.inOutVariables), inputs, outputs);
+        this.blockPins(d.childById(el, n.outputVariables), undefined, outputs);
+        text = d.attr(el, n.typeName) ?? '';
         break;
       }
       default:
         break;
     }
-    return {
-      kind: el.name,
-      localId: el.attrs.localId ?? '',
-      xml: el,
+    return new LdObject(
+      d,
+      el,
+      kind,
+      d.attr(el, n.localId) ?? '',
       pos,
-      width: num(el.attrs.width),
-      height: num(el.attrs.height),
-      executionOrderId: num(el.attrs.executionOrderId),
-      attrs: el.attrs,
-      order,
+      d.attrNumber(el, n.width),
+      d.attrNumber(el, n.height),
+      d.attrNumber(el, n.executionOrderId),
       inputs,
       outputs,
       text,
-    };
-  });
+      order,
+      d.childById(el, n.addData) !== -1,
+    );
+  }
+}
+
+/** Reads every direct child of an LD body. */
+export function readLdObjects(body: XmlElement): RawObject[] {
+  const d = body.doc;
+  const reader = new Reader(d);
+  const out: RawObject[] = [];
+  for (let c = d.firstChild[body.index]!; c !== -1; c = d.nextSibling[c]!) out.push(reader.object(c, out.length));
+  return out;
 }

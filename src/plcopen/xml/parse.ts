@@ -1,24 +1,11 @@
-// A small, fast, non-validating XML parser producing a light element tree with source offsets.
-// PLCopen files reach tens of megabytes (10,000-network programs); general DOM parsers take seconds
-// on those, this one a fraction of that. It checks well-formedness (matching tags, quoted
-// attributes, known entities) and reports errors with line and column. Namespaces are kept as
-// the raw prefix plus the `xmlns` attributes: PLCopen only needs local names and the root namespace.
-import { SMI_MASK, StringTable } from './strings';
-
-export interface XmlElement {
-  /** Local name (prefix removed). */
-  readonly name: string;
-  /** Qualified name as written. */
-  readonly qname: string;
-  readonly attrs: Readonly<Record<string, string>>;
-  readonly children: XmlElement[];
-  /** Character data directly inside this element (text and CDATA, entities decoded; whitespace-only runs are dropped). */
-  text: string;
-  /** Offset of the `<` of the start tag in the source text. */
-  readonly offset: number;
-  /** Offsets of the whole element in the source (start tag `<` to end of end tag), for verbatim copies. */
-  end: number;
-}
+// A small, fast, non-validating XML parser. PLCopen files reach tens of megabytes (10,000-network
+// programs) and general DOM parsers take seconds on those. This one checks well-formedness
+// (matching tags, quoted attributes, known entities) and reports errors with line and column, but
+// builds no object per element: the document is a set of flat typed arrays (names as numbers,
+// attribute values and text as offsets into the source), read by index on hot paths (`XmlDoc`)
+// and through `XmlElement` views made on demand elsewhere. Namespaces are kept as the raw prefix
+// plus the `xmlns` attributes: PLCopen only needs local names and the root namespace.
+import { NameTable, SMI_MASK, StringTable } from './strings';
 
 export class XmlSyntaxError extends Error {
   constructor(
@@ -40,11 +27,6 @@ export function lineColumn(text: string, offset: number): { line: number; column
   }
   return { line, column: offset - lineStart + 1 };
 }
-
-/** Shared by every element without child elements (most of a PLCopen file: positions, pins); never written. */
-const NO_CHILDREN: XmlElement[] = Object.freeze([]) as unknown as XmlElement[];
-/** Shared by every element without attributes; never written. */
-const NO_ATTRS: Readonly<Record<string, string>> = Object.freeze({});
 
 const ENTITIES: Record<string, string> = { lt: '<', gt: '>', amp: '&', quot: '"', apos: "'" };
 
@@ -68,73 +50,407 @@ function decodeEntities(s: string, fail: (msg: string) => never): string {
   });
 }
 
+/** Entities were checked while parsing: decoding again cannot fail. */
+const checked = (msg: string): never => {
+  throw new Error(`internal: ${msg}`);
+};
+
 const isNameEnd = (c: number): boolean =>
   c === 32 || c === 9 || c === 10 || c === 13 || c === 47 /* / */ || c === 62; /* > */
 
 /** Values up to this length are shared through the string table (numbers, flags, pin names). */
 const SHORT_VALUE = 12;
 
+function grown<T extends Int32Array | Uint8Array>(a: T, need: number): T {
+  if (need <= a.length) return a;
+  const b = new (a.constructor as new (n: number) => T)(Math.max(need, a.length * 2));
+  b.set(a);
+  return b;
+}
+
+/**
+ * A parsed document: element `i` (0 is the root) has a name, attributes, child elements and
+ * character data, all stored in typed arrays. `-1` means "none" for every index.
+ */
+export class XmlDoc {
+  /** Number of elements. */
+  count = 0;
+  /** Per element: qualified and local name ids (see `names`). */
+  qid: Int32Array = new Int32Array(0);
+  lid: Int32Array = new Int32Array(0);
+  firstChild: Int32Array = new Int32Array(0);
+  nextSibling: Int32Array = new Int32Array(0);
+  /** Offset of the `<` of the start tag, and just past the end of the element. */
+  start: Int32Array = new Int32Array(0);
+  end: Int32Array = new Int32Array(0);
+  /** First attribute and attribute count. */
+  attrFirst: Int32Array = new Int32Array(0);
+  attrCount: Int32Array = new Int32Array(0);
+  /** First text segment (-1 if none). */
+  textFirst: Int32Array = new Int32Array(0);
+  /** Per attribute: name id, value span in the source, whether the value holds entities. */
+  attrName: Int32Array = new Int32Array(0);
+  valStart: Int32Array = new Int32Array(0);
+  valEnd: Int32Array = new Int32Array(0);
+  valAmp: Uint8Array = new Uint8Array(0);
+  attrTotal = 0;
+  /** Text segments: span, kind (0 text with entities decoded, 1 CDATA verbatim), next of the same element. */
+  segStart: Int32Array = new Int32Array(0);
+  segEnd: Int32Array = new Int32Array(0);
+  segCdata: Uint8Array = new Uint8Array(0);
+  segNext: Int32Array = new Int32Array(0);
+  segTotal = 0;
+
+  private readonly values: StringTable;
+  private views: (XmlElement | undefined)[] = [];
+
+  constructor(
+    readonly src: string,
+    readonly names: NameTable,
+  ) {
+    this.values = new StringTable(src);
+  }
+
+  /** Id of a name as written in this document (element local/qualified name or attribute name), or -1. */
+  id(name: string): number {
+    return this.names.lookup(name);
+  }
+  name(i: number): string {
+    return this.names.name(this.lid[i]!);
+  }
+  qname(i: number): string {
+    return this.names.name(this.qid[i]!);
+  }
+  /** First child element with this local-name id, or -1. */
+  childById(i: number, lid: number): number {
+    for (let c = this.firstChild[i]!; c !== -1; c = this.nextSibling[c]!) if (this.lid[c] === lid) return c;
+    return -1;
+  }
+  /** Index of the attribute with this name id on element i, or -1. */
+  attrIndex(i: number, nameId: number): number {
+    const from = this.attrFirst[i]!;
+    const to = from + this.attrCount[i]!;
+    for (let a = from; a < to; a++) if (this.attrName[a] === nameId) return a;
+    return -1;
+  }
+  /** Value of attribute `a` (an index from attrIndex). */
+  attrValue(a: number): string {
+    const s = this.valStart[a]!;
+    const e = this.valEnd[a]!;
+    if (this.valAmp[a]) return decodeEntities(this.src.slice(s, e), checked);
+    return e - s <= SHORT_VALUE ? this.values.get(s, e, this.values.hashOf(s, e)) : this.src.slice(s, e);
+  }
+  /** Value of an attribute by name id, or undefined. */
+  attr(i: number, nameId: number): string | undefined {
+    const a = this.attrIndex(i, nameId);
+    return a === -1 ? undefined : this.attrValue(a);
+  }
+  /** An attribute read as a number: 0 when absent or not a finite number. */
+  attrNumber(i: number, nameId: number): number {
+    const a = this.attrIndex(i, nameId);
+    if (a === -1) return 0;
+    const s = this.valStart[a]!;
+    const e = this.valEnd[a]!;
+    // Plain unsigned integers (nearly all PLCopen numbers) without making a string.
+    let n = 0;
+    let k = s;
+    for (; k < e; k++) {
+      const c = this.src.charCodeAt(k) - 48;
+      if (c < 0 || c > 9) break;
+      n = n * 10 + c;
+    }
+    if (k === e && e > s && e - s < 16) return n;
+    const v = +this.attrValue(a);
+    return v === v && v !== Infinity && v !== -Infinity ? v : 0;
+  }
+  /** Character data directly inside element i (text with entities decoded, and CDATA). */
+  text(i: number): string {
+    let seg = this.textFirst[i]!;
+    if (seg === -1) return '';
+    let out = '';
+    for (; seg !== -1; seg = this.segNext[seg]!) {
+      const chunk = this.src.slice(this.segStart[seg]!, this.segEnd[seg]!);
+      out += this.segCdata[seg] ? chunk : decodeEntities(chunk, checked);
+    }
+    return out;
+  }
+  /** The element view of index i (one per index). */
+  element(i: number): XmlElement {
+    return (this.views[i] ??= new XmlElement(this, i));
+  }
+}
+
+/** A view of one element of an XmlDoc, for code that walks the tree by name rather than by index. */
+export class XmlElement {
+  private attrsMemo?: Readonly<Record<string, string>>;
+  private childrenMemo?: readonly XmlElement[];
+  constructor(
+    readonly doc: XmlDoc,
+    readonly index: number,
+  ) {}
+  /** Local name (prefix removed). */
+  get name(): string {
+    return this.doc.name(this.index);
+  }
+  /** Qualified name as written. */
+  get qname(): string {
+    return this.doc.qname(this.index);
+  }
+  get attrs(): Readonly<Record<string, string>> {
+    if (this.attrsMemo) return this.attrsMemo;
+    const d = this.doc;
+    const out: Record<string, string> = {};
+    const from = d.attrFirst[this.index]!;
+    for (let a = from; a < from + d.attrCount[this.index]!; a++)
+      out[d.names.name(d.attrName[a]!)] = d.attrValue(a);
+    return (this.attrsMemo = out);
+  }
+  get children(): readonly XmlElement[] {
+    if (this.childrenMemo) return this.childrenMemo;
+    const d = this.doc;
+    const out: XmlElement[] = [];
+    for (let c = d.firstChild[this.index]!; c !== -1; c = d.nextSibling[c]!) out.push(d.element(c));
+    return (this.childrenMemo = out);
+  }
+  /** Character data directly inside this element (text and CDATA, entities decoded; whitespace-only runs are dropped). */
+  get text(): string {
+    return this.doc.text(this.index);
+  }
+  /** Offset of the `<` of the start tag in the source text. */
+  get offset(): number {
+    return this.doc.start[this.index]!;
+  }
+  /** End of the element in the source (just past its end tag), for verbatim copies. */
+  get end(): number {
+    return this.doc.end[this.index]!;
+  }
+}
+
 export interface ParseOptions {
   /**
    * Elements (with everything inside them) that are checked like the rest but left out of the
-   * tree: a reader that never looks at them saves building hundreds of thousands of nodes.
-   * Their text stays available through the offsets of their parent.
+   * document, by local names of the parent and of the element: a reader that never looks at them
+   * saves storing hundreds of thousands of entries. Their text stays in the source.
    */
-  readonly skip?: (parent: XmlElement, name: string) => boolean;
+  readonly skip?: (parentName: string, name: string) => boolean;
 }
 
-/** Parses XML text into its root element. Throws XmlSyntaxError with a location. */
-export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
+function syntaxError(src: string, msg: string, at: number): never {
+  const { line, column } = lineColumn(src, at);
+  throw new XmlSyntaxError(msg, line, column);
+}
+
+/** The arrays of a document while it is read (grown by doubling when short). */
+class Builder {
+  count = 0;
+  qid: Int32Array;
+  lid: Int32Array;
+  firstChild: Int32Array;
+  nextSibling: Int32Array;
+  start: Int32Array;
+  end: Int32Array;
+  attrFirst: Int32Array;
+  attrCount: Int32Array;
+  textFirst: Int32Array;
+  attrTotal = 0;
+  attrName: Int32Array;
+  valStart: Int32Array;
+  valEnd: Int32Array;
+  valAmp: Uint8Array;
+  segTotal = 0;
+  segStart: Int32Array;
+  segEnd: Int32Array;
+  segCdata: Uint8Array;
+  segNext: Int32Array;
+  // Open elements, innermost at depth - 1: name id (for end tags), element index (-1 inside a
+  // skipped element), last child and last text segment so far.
+  depth = 0;
+  openQ = new Int32Array(64);
+  openEl = new Int32Array(64);
+  openLastChild = new Int32Array(64);
+  openLastSeg = new Int32Array(64);
+
+  constructor(size: number) {
+    const cap = Math.max(64, size >> 6);
+    this.qid = new Int32Array(cap);
+    this.lid = new Int32Array(cap);
+    this.firstChild = new Int32Array(cap);
+    this.nextSibling = new Int32Array(cap);
+    this.start = new Int32Array(cap);
+    this.end = new Int32Array(cap);
+    this.attrFirst = new Int32Array(cap);
+    this.attrCount = new Int32Array(cap);
+    this.textFirst = new Int32Array(cap);
+    this.attrName = new Int32Array(cap * 2);
+    this.valStart = new Int32Array(cap * 2);
+    this.valEnd = new Int32Array(cap * 2);
+    this.valAmp = new Uint8Array(cap * 2);
+    const scap = Math.max(64, cap >> 2);
+    this.segStart = new Int32Array(scap);
+    this.segEnd = new Int32Array(scap);
+    this.segCdata = new Uint8Array(scap);
+    this.segNext = new Int32Array(scap);
+  }
+
+  /** A new element under the innermost open one; returns its index. */
+  element(q: number, l: number, at: number): number {
+    if (this.count === this.qid.length) {
+      const n = this.count * 2;
+      this.qid = grown(this.qid, n);
+      this.lid = grown(this.lid, n);
+      this.firstChild = grown(this.firstChild, n);
+      this.nextSibling = grown(this.nextSibling, n);
+      this.start = grown(this.start, n);
+      this.end = grown(this.end, n);
+      this.attrFirst = grown(this.attrFirst, n);
+      this.attrCount = grown(this.attrCount, n);
+      this.textFirst = grown(this.textFirst, n);
+    }
+    const el = this.count++;
+    this.qid[el] = q;
+    this.lid[el] = l;
+    this.firstChild[el] = -1;
+    this.nextSibling[el] = -1;
+    this.start[el] = at;
+    this.textFirst[el] = -1;
+    this.attrFirst[el] = this.attrTotal;
+    this.attrCount[el] = 0;
+    const d = this.depth;
+    if (d) {
+      const last = this.openLastChild[d - 1]!;
+      if (last === -1) this.firstChild[this.openEl[d - 1]!] = el;
+      else this.nextSibling[last] = el;
+      this.openLastChild[d - 1] = el;
+    }
+    return el;
+  }
+
+  attr(name: number, from: number, to: number, amp: number): void {
+    const k = this.attrTotal;
+    if (k === this.attrName.length) {
+      this.attrName = grown(this.attrName, k * 2);
+      this.valStart = grown(this.valStart, k * 2);
+      this.valEnd = grown(this.valEnd, k * 2);
+      this.valAmp = grown(this.valAmp, k * 2);
+    }
+    this.attrName[k] = name;
+    this.valStart[k] = from;
+    this.valEnd[k] = to;
+    this.valAmp[k] = amp;
+    this.attrTotal = k + 1;
+  }
+
+  open(q: number, el: number): void {
+    const d = this.depth;
+    if (d === this.openQ.length) {
+      this.openQ = grown(this.openQ, d * 2);
+      this.openEl = grown(this.openEl, d * 2);
+      this.openLastChild = grown(this.openLastChild, d * 2);
+      this.openLastSeg = grown(this.openLastSeg, d * 2);
+    }
+    this.openQ[d] = q;
+    this.openEl[d] = el;
+    this.openLastChild[d] = -1;
+    this.openLastSeg[d] = -1;
+    this.depth = d + 1;
+  }
+
+  /** Character data of the innermost open element (nothing inside a skipped element). */
+  text(from: number, to: number, cdata: number): void {
+    const d = this.depth;
+    const el = this.openEl[d - 1]!;
+    if (el === -1) return;
+    const k = this.segTotal;
+    if (k === this.segStart.length) {
+      this.segStart = grown(this.segStart, k * 2);
+      this.segEnd = grown(this.segEnd, k * 2);
+      this.segCdata = grown(this.segCdata, k * 2);
+      this.segNext = grown(this.segNext, k * 2);
+    }
+    this.segStart[k] = from;
+    this.segEnd[k] = to;
+    this.segCdata[k] = cdata;
+    this.segNext[k] = -1;
+    const last = this.openLastSeg[d - 1]!;
+    if (last === -1) this.textFirst[el] = k;
+    else this.segNext[last] = k;
+    this.openLastSeg[d - 1] = k;
+    this.segTotal = k + 1;
+  }
+
+  finish(doc: XmlDoc): XmlDoc {
+    doc.count = this.count;
+    doc.qid = this.qid;
+    doc.lid = this.lid;
+    doc.firstChild = this.firstChild;
+    doc.nextSibling = this.nextSibling;
+    doc.start = this.start;
+    doc.end = this.end;
+    doc.attrFirst = this.attrFirst;
+    doc.attrCount = this.attrCount;
+    doc.textFirst = this.textFirst;
+    doc.attrName = this.attrName;
+    doc.valStart = this.valStart;
+    doc.valEnd = this.valEnd;
+    doc.valAmp = this.valAmp;
+    doc.attrTotal = this.attrTotal;
+    doc.segStart = this.segStart;
+    doc.segEnd = this.segEnd;
+    doc.segCdata = this.segCdata;
+    doc.segNext = this.segNext;
+    doc.segTotal = this.segTotal;
+    return doc;
+  }
+}
+
+/** Parses XML text into a document. Throws XmlSyntaxError with a location. */
+export function parseXmlDoc(src: string, options: ParseOptions = {}): XmlDoc {
   const skip = options.skip;
   let pos = 0;
   const len = src.length;
-  const fail: (msg: string, at?: number) => never = (msg, at = pos) => {
-    const { line, column } = lineColumn(src, at);
-    throw new XmlSyntaxError(msg, line, column);
-  };
   if (src.charCodeAt(0) === 0xfeff) pos = 1;
-  const strings = new StringTable(src);
-  // Open elements, innermost at depth - 1 (indexed, not push/pop: those reallocate as depth swings).
-  const stack: XmlElement[] = [];
-  let depth = 0;
-  // Children of the open elements, innermost last: each element gets an exact-size array when it
-  // closes (a growing array per element would hold mostly empty slots).
-  const kids: XmlElement[] = [];
-  const kidsFrom: number[] = [];
-  // Used up to kidsTop / skippedCount: truncating with `length =` would shrink and regrow the
-  // arrays' storage for every element.
-  let kidsTop = 0;
-  const skippedNames: string[] = [];
-  let skippedCount = 0;
-  let root: XmlElement | undefined;
+  const names = new NameTable(src);
+  const b = new Builder(len);
+  /** Depth of the outermost skipped element being read (0: none). */
+  let skipFrom = 0;
+  let hasRoot = false;
 
   while (pos < len) {
     const lt = src.indexOf('<', pos);
     if (lt === -1) {
-      const rest = src.slice(pos);
-      if (depth) fail(`the file ends inside <${stack[depth - 1]!.qname}>`, len);
-      if (rest.trim())
-        fail(root ? 'text after the end of the document' : 'this is not XML: no element found');
+      if (b.depth) syntaxError(src, `the file ends inside <${names.name(b.openQ[b.depth - 1]!)}>`, len);
+      for (let i = pos; i < len; i++) {
+        const c = src.charCodeAt(i);
+        if (c !== 32 && c !== 10 && c !== 13 && c !== 9)
+          syntaxError(
+            src,
+            hasRoot ? 'text after the end of the document' : 'this is not XML: no element found',
+            pos,
+          );
+      }
       break;
     }
     if (lt > pos) {
       // Indentation between elements is most of the text in PLCopen files: skip it without slicing.
-      let blank = true;
-      for (let i = pos; i < lt; i++) {
-        const c = src.charCodeAt(i);
-        if (c !== 32 && c !== 10 && c !== 13 && c !== 9) {
-          blank = false;
-          break;
-        }
+      let k = pos;
+      for (; k < lt; k++) {
+        const c = src.charCodeAt(k);
+        if (c !== 32 && c !== 10 && c !== 13 && c !== 9) break;
       }
-      if (!blank) {
-        const top = stack[depth - 1];
-        const chunk = src.slice(pos, lt);
-        if (top) top.text += decodeEntities(chunk, (m) => fail(m, pos));
-        else
-          fail(
-            root ? 'text after the end of the document' : 'this is not XML: text before the first element',
+      if (k < lt) {
+        if (!b.depth)
+          syntaxError(
+            src,
+            hasRoot ? 'text after the end of the document' : 'this is not XML: text before the first element',
+            pos,
           );
+        let amp = false;
+        for (; k < lt && !amp; k++) amp = src.charCodeAt(k) === 38;
+        if (amp) {
+          const at = pos;
+          decodeEntities(src.slice(pos, lt), (m) => syntaxError(src, m, at));
+        }
+        b.text(pos, lt, 0);
       }
     }
     pos = lt;
@@ -142,17 +458,16 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
     if (c1 === 33 /* ! */) {
       if (src.startsWith('<!--', pos)) {
         const e = src.indexOf('-->', pos + 4);
-        if (e === -1) fail('unclosed comment');
+        if (e === -1) syntaxError(src, 'unclosed comment', pos);
         pos = e + 3;
       } else if (src.startsWith('<![CDATA[', pos)) {
         const e = src.indexOf(']]>', pos + 9);
-        if (e === -1) fail('unclosed CDATA section');
-        const top = stack[depth - 1];
-        if (!top) fail('CDATA outside the root element');
-        top.text += src.slice(pos + 9, e);
+        if (e === -1) syntaxError(src, 'unclosed CDATA section', pos);
+        if (!b.depth) syntaxError(src, 'CDATA outside the root element', pos);
+        b.text(pos + 9, e, 1);
         pos = e + 3;
       } else if (src.startsWith('<!DOCTYPE', pos)) {
-        if (root || depth) fail('DOCTYPE inside the document');
+        if (hasRoot || b.depth) syntaxError(src, 'DOCTYPE inside the document', pos);
         // Skip an optional internal subset; entity declarations are not supported (PLCopen never uses them).
         let nesting = 0;
         let i = pos + 9;
@@ -162,35 +477,34 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
           else if (ch === ']') nesting--;
           else if (ch === '>' && nesting <= 0) break;
         }
-        if (i >= len) fail('unclosed DOCTYPE');
+        if (i >= len) syntaxError(src, 'unclosed DOCTYPE', pos);
         pos = i + 1;
-      } else fail('unexpected "<!"');
+      } else syntaxError(src, 'unexpected "<!"', pos);
       continue;
     }
     if (c1 === 63 /* ? */) {
       const e = src.indexOf('?>', pos + 2);
-      if (e === -1) fail('unclosed processing instruction');
+      if (e === -1) syntaxError(src, 'unclosed processing instruction', pos);
       pos = e + 2;
       continue;
     }
     if (c1 === 47 /* / */) {
       const e = src.indexOf('>', pos + 2);
-      if (e === -1) fail('unclosed end tag');
-      const top = depth > 0 ? stack[--depth] : undefined;
+      if (e === -1) syntaxError(src, 'unclosed end tag', pos);
+      if (!b.depth) syntaxError(src, `end tag </${src.slice(pos + 2, e).trim()}> without a start tag`, pos);
+      const depth = --b.depth;
       // Fast path: `</name>` exactly as opened.
-      const q = top?.qname ?? '';
-      if (!top || e !== pos + 2 + q.length || !src.startsWith(q, pos + 2)) {
+      const q = names.name(b.openQ[depth]!);
+      const el = b.openEl[depth]!;
+      if (e !== pos + 2 + q.length || !src.startsWith(q, pos + 2)) {
         const name = src.slice(pos + 2, e).trim();
-        if (!top) fail(`end tag </${name}> without a start tag`);
-        if (top.qname !== name)
-          fail(`end tag </${name}> does not match <${top.qname}> (line ${lineColumn(src, top.offset).line})`);
+        if (q !== name) {
+          const at = el === -1 ? '' : ` (line ${lineColumn(src, b.start[el]!).line})`;
+          syntaxError(src, `end tag </${name}> does not match <${q}>${at}`, pos);
+        }
       }
-      const from = kidsFrom[depth]!;
-      if (kidsTop > from) {
-        (top as { children: XmlElement[] }).children = kids.slice(from, kidsTop);
-        kidsTop = from;
-      }
-      top!.end = e + 1;
+      if (el !== -1) b.end[el] = e + 1;
+      if (skipFrom > depth) skipFrom = 0;
       pos = e + 1;
       continue;
     }
@@ -205,23 +519,21 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
       if (c === 58 /* : */ && colon === -1) colon = i;
       h = (Math.imul(h, 31) + c) | 0;
     }
-    const qname = strings.get(pos + 1, i, (h + Math.imul(i - pos - 1, 0x9e3779b1)) & SMI_MASK);
+    const q = names.get(pos + 1, i, (h + Math.imul(i - pos - 1, 0x9e3779b1)) & SMI_MASK);
+    const qname = names.name(q);
     const first = qname.charCodeAt(0);
     const nameStart =
       (first >= 65 && first <= 90) || (first >= 97 && first <= 122) || first === 95 || first >= 0xc0;
-    if (!nameStart) fail(root || depth ? 'bad element name' : 'this is not XML: expected an element');
-    const name =
-      colon === -1
-        ? qname
-        : strings.get(
-            colon + 1,
-            start + 1 + qname.length,
-            strings.hashOf(colon + 1, start + 1 + qname.length),
-          );
-    // A skipped element is checked just as strictly, but its attributes are not kept.
-    const kept = !skip || !depth || !skip(stack[depth - 1]!, name);
-    skippedCount = 0;
-    let attrs = NO_ATTRS as Record<string, string>;
+    const depth = b.depth;
+    if (!nameStart)
+      syntaxError(src, hasRoot || depth ? 'bad element name' : 'this is not XML: expected an element', pos);
+    if (!depth && hasRoot) syntaxError(src, 'more than one root element', start);
+    const l = colon === -1 ? q : names.get(colon + 1, i, names.hashOf(colon + 1, i));
+    // A skipped element is checked just as strictly, but not stored.
+    if (!skipFrom && depth && skip && skip(names.name(b.lid[b.openEl[depth - 1]!]!), names.name(l)))
+      skipFrom = depth + 1;
+    const el = skipFrom ? -1 : b.element(q, l, start);
+    const attrFrom = b.attrTotal;
     let selfClosing = false;
     for (;;) {
       while (i < len) {
@@ -229,110 +541,89 @@ export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
         if (c === 32 || c === 9 || c === 10 || c === 13) i++;
         else break;
       }
-      if (i >= len) fail(`unclosed start tag <${qname}>`, start);
+      if (i >= len) syntaxError(src, `unclosed start tag <${qname}>`, start);
       const c = src.charCodeAt(i);
       if (c === 62) {
         i++;
         break;
       }
       if (c === 47) {
-        if (src.charCodeAt(i + 1) !== 62) fail('expected "/>"', i);
+        if (src.charCodeAt(i + 1) !== 62) syntaxError(src, 'expected "/>"', i);
         selfClosing = true;
         i += 2;
         break;
       }
       const eq = src.indexOf('=', i);
-      if (eq === -1) fail(`attribute without a value in <${qname}>`, i);
+      if (eq === -1) syntaxError(src, `attribute without a value in <${qname}>`, i);
       let ae = eq;
       while (ae > i && src.charCodeAt(ae - 1) <= 32) ae--;
-      if (ae === i) fail(`bad attribute in <${qname}>`, i);
+      if (ae === i) syntaxError(src, `bad attribute in <${qname}>`, i);
       let ah = 0;
       for (let k = i; k < ae; k++) {
         const ch = src.charCodeAt(k);
         if (ch <= 32 || ch === 60 || ch === 62 || ch === 34 || ch === 39)
-          fail(`bad attribute in <${qname}>`, i);
+          syntaxError(src, `bad attribute in <${qname}>`, i);
         ah = (Math.imul(ah, 31) + ch) | 0;
       }
-      const an = strings.get(i, ae, (ah + Math.imul(ae - i, 0x9e3779b1)) & SMI_MASK);
-      let q = eq + 1;
-      while (q < len && src.charCodeAt(q) <= 32) q++;
-      const quote = src.charCodeAt(q);
-      if (quote !== 34 && quote !== 39) fail(`the value of attribute "${an}" must be quoted`, q);
-      if (!kept) {
-        const close = src.indexOf(quote === 34 ? '"' : "'", q + 1);
-        if (close === -1) fail(`unclosed value of attribute "${an}"`, q);
-        let amp = false;
-        for (let k = q + 1; k < close; k++) {
-          const ch = src.charCodeAt(k);
-          if (ch === 60) fail(`"<" in the value of attribute "${an}"`, q);
-          if (ch === 38) amp = true;
-        }
-        for (let k = 0; k < skippedCount; k++)
-          if (skippedNames[k] === an) fail(`attribute "${an}" repeated in <${qname}>`, i);
-        skippedNames[skippedCount++] = an;
-        if (amp) decodeEntities(src.slice(q + 1, close), (m) => fail(m, q));
-        i = close + 1;
-        continue;
-      }
-      let close = q + 1;
-      let vh = 0;
-      let special = false;
-      // Short values are hashed while looking for the closing quote; long ones are found with indexOf.
-      for (; close < len && close - q <= SHORT_VALUE + 1; close++) {
+      const an = names.get(i, ae, (ah + Math.imul(ae - i, 0x9e3779b1)) & SMI_MASK);
+      let qp = eq + 1;
+      while (qp < len && src.charCodeAt(qp) <= 32) qp++;
+      const quote = src.charCodeAt(qp);
+      if (quote !== 34 && quote !== 39)
+        syntaxError(src, `the value of attribute "${names.name(an)}" must be quoted`, qp);
+      let close = qp + 1;
+      let amp = 0;
+      for (; close < len; close++) {
         const ch = src.charCodeAt(close);
         if (ch === quote) break;
-        if (ch === 60 || ch === 38) special = true;
-        vh = (Math.imul(vh, 31) + ch) | 0;
+        if (ch === 60) syntaxError(src, `"<" in the value of attribute "${names.name(an)}"`, qp);
+        if (ch === 38) amp = 1;
       }
-      let raw: string;
-      if (close < len && src.charCodeAt(close) === quote && !special) {
-        raw = strings.get(q + 1, close, (vh + Math.imul(close - q - 1, 0x9e3779b1)) & SMI_MASK);
-      } else {
-        close = src.indexOf(quote === 34 ? '"' : "'", q + 1);
-        if (close === -1) fail(`unclosed value of attribute "${an}"`, q);
-        raw = src.slice(q + 1, close);
-        if (raw.indexOf('<') !== -1) fail(`"<" in the value of attribute "${an}"`, q);
+      if (close >= len) syntaxError(src, `unclosed value of attribute "${names.name(an)}"`, qp);
+      if (amp) {
+        const at = qp;
+        decodeEntities(src.slice(qp + 1, close), (m) => syntaxError(src, m, at));
       }
-      if (attrs === NO_ATTRS) attrs = {};
-      else if (an in attrs) fail(`attribute "${an}" repeated in <${qname}>`, i);
-      attrs[an] = raw.indexOf('&') === -1 ? raw : decodeEntities(raw, (m) => fail(m, q));
+      for (let a = attrFrom; a < b.attrTotal; a++)
+        if (b.attrName[a] === an) syntaxError(src, `attribute "${names.name(an)}" repeated in <${qname}>`, i);
+      b.attr(an, qp + 1, close, amp);
       i = close + 1;
     }
-    const el: XmlElement = {
-      name,
-      qname,
-      attrs,
-      children: NO_CHILDREN,
-      text: '',
-      offset: start,
-      end: i,
-    };
-    if (depth) {
-      if (kept) kids[kidsTop++] = el;
-    } else if (root) fail('more than one root element', start);
-    else root = el;
-    if (!selfClosing) {
-      kidsFrom[depth] = kidsTop;
-      stack[depth++] = el;
-    }
+    if (el !== -1) {
+      b.attrCount[el] = b.attrTotal - attrFrom;
+      b.end[el] = i;
+      if (!depth) hasRoot = true;
+    } else b.attrTotal = attrFrom; // a skipped element keeps its attributes only for the repeat check
+    if (!selfClosing) b.open(q, el);
+    else if (skipFrom > depth) skipFrom = 0;
     pos = i;
   }
-  if (depth) fail(`the file ends inside <${stack[depth - 1]!.qname}>`, len);
-  if (!root) fail('this is not XML: no element found', 0);
-  return root!;
+  if (b.depth) syntaxError(src, `the file ends inside <${names.name(b.openQ[b.depth - 1]!)}>`, len);
+  if (!hasRoot) syntaxError(src, 'this is not XML: no element found', 0);
+  return b.finish(new XmlDoc(src, names));
+}
+
+/** Parses XML text into its root element. Throws XmlSyntaxError with a location. */
+export function parseXml(src: string, options: ParseOptions = {}): XmlElement {
+  return parseXmlDoc(src, options).element(0);
 }
 
 /** First child element with this local name. */
 export function child(el: XmlElement, name: string): XmlElement | undefined {
-  const cs = el.children;
-  for (let i = 0; i < cs.length; i++) if (cs[i]!.name === name) return cs[i];
-  return undefined;
+  const d = el.doc;
+  const id = d.id(name);
+  if (id === -1) return undefined;
+  const c = d.childById(el.index, id);
+  return c === -1 ? undefined : d.element(c);
 }
 /** Child elements with this local name. */
 export function childrenNamed(el: XmlElement, name: string): XmlElement[] {
   const out: XmlElement[] = [];
-  const cs = el.children;
-  for (let i = 0; i < cs.length; i++) if (cs[i]!.name === name) out.push(cs[i]!);
+  const d = el.doc;
+  const id = d.id(name);
+  if (id === -1) return out;
+  for (let c = d.firstChild[el.index]!; c !== -1; c = d.nextSibling[c]!)
+    if (d.lid[c] === id) out.push(d.element(c));
   return out;
 }
 /** Path of child names: `child(child(el, a), b)`. */

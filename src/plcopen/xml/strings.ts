@@ -38,3 +38,50 @@ export class StringTable {
     return h & SMI_MASK;
   }
 }
+
+/**
+ * Names (element and attribute names) as small integer ids: a document stores one number per name
+ * and compares names as numbers. The slot cache gives the id of a recently seen name without
+ * slicing; a miss falls back to a map, so one string always has one id whatever hash found it.
+ */
+export class NameTable {
+  private readonly slots = new Int32Array(TABLE_MASK + 1).fill(-1);
+  private readonly strings: string[] = [];
+  /** Where in the source each name was first read. */
+  private readonly from: number[] = [];
+  private readonly byName = new Map<string, number>();
+  constructor(private readonly src: string) {}
+  /** The id of the text between start and end; `hash` is any hash of it. */
+  get(start: number, end: number, hash: number): number {
+    const slot = (hash ^ (hash >>> 13)) & TABLE_MASK;
+    const cached = this.slots[slot]!;
+    const n = end - start;
+    const src = this.src;
+    if (cached !== -1) {
+      const s = this.strings[cached]!;
+      if (s.length === n && src.startsWith(s, start)) return cached;
+    }
+    const s = src.slice(start, end);
+    let id = this.byName.get(s);
+    if (id === undefined) {
+      id = this.strings.length;
+      this.strings.push(s);
+      this.from.push(start);
+      this.byName.set(s, id);
+    }
+    this.slots[slot] = id;
+    return id;
+  }
+  hashOf(start: number, end: number): number {
+    let h = end - start;
+    for (let k = start; k < end; k++) h = (Math.imul(h, 31) + this.src.charCodeAt(k)) | 0;
+    return h & SMI_MASK;
+  }
+  name(id: number): string {
+    return this.strings[id]!;
+  }
+  /** The id of a name, or -1 if the document never uses it. */
+  lookup(name: string): number {
+    return this.byName.get(name) ?? -1;
+  }
+}
