@@ -4,13 +4,15 @@ import type { LdElement } from '../model/elements';
 import { newNetwork } from '../model/factory';
 import type { Network } from '../model/project';
 import { gridGraph, type Source } from './gridGraph';
-import { prepareLayout } from './layout';
+import { prepareLayout, type Prepared } from './layout';
+import { instantiate, LayoutCache, shapeKey } from './layoutCache';
 import type { LaidOut } from './layoutShapes';
 import { buildLdGraph, type Finding, type GNode, type GSource } from './ldGraph';
 import { splitSharedSources } from './ldNormalize';
-import { readLdObjects, type RawObject } from './ldObjects';
+import { planBody, type BodyPlan } from './ldBatches';
+import { readSomeLdObjects, type RawObject } from './ldObjects';
 import { RS_NETWORK, type PreservedNetwork } from './types';
-import { child, childrenNamed, type XmlElement } from './xml/parse';
+import { child, childrenNamed, type XmlDoc, type XmlElement } from './xml/parse';
 
 export interface BodyResult {
   readonly networks: Network[];
@@ -25,146 +27,124 @@ interface Group {
   readonly obj?: RawObject;
 }
 
-function compareKeys(a: readonly number[], b: readonly number[]): number {
-  for (let i = 0; i < Math.max(a.length, b.length); i++) {
-    const d = (a[i] ?? 0) - (b[i] ?? 0);
-    if (d) return d;
-  }
-  return 0;
+/** What one batch leaves for the assembly of the POU: networks laid out, labels, comments, vendor data. */
+type BatchItem = { readonly key: readonly number[]; readonly rank: number } & (
+  | { kind: 'network'; laid: LaidNetwork; findings: Finding[] }
+  | { kind: 'label'; text: string }
+  | { kind: 'comment'; text: string; title: string }
+  | { kind: 'vendor'; raw: string }
+);
+/** Items of all batches, numbered in the order they were made (ties in `key` keep that order). */
+type Item = BatchItem & { readonly seq: number };
+
+interface LaidNetwork {
+  readonly rows: number;
+  readonly cols: number;
+  readonly elements: LdElement[];
+  readonly vlinks: Network['vlinks'];
+  readonly elementData?: PreservedNetwork['elementData'];
 }
 
-/** Imports one LD body into networks. Throws LdGraphError for broken references. */
+const RANK = { network: 0, label: 1, comment: 2, vendor: 3 } as const;
+
+function compareItems(a: Item, b: Item): number {
+  const k = a.key;
+  const l = b.key;
+  for (let i = 0; i < Math.max(k.length, l.length); i++) {
+    const d = (k[i] ?? 0) - (l[i] ?? 0);
+    if (d) return d;
+  }
+  return a.rank - b.rank || a.seq - b.seq;
+}
+
+/**
+ * Imports one LD body into networks. Throws LdGraphError for broken references.
+ *
+ * Large bodies are read in batches of whole networks (see ldBatches.ts); networks are ordered
+ * like Beremiz runs them (executionOrderId first, then top to bottom) once all are laid out.
+ * Every network of the POU shares one width, coils on one right rail: networks are laid out at
+ * the widest width seen so far, and those laid out before a wider one came are laid out again.
+ */
 export function importLdBody(
   body: XmlElement,
   raw: (el: XmlElement) => string,
   warn: (f: Finding) => void,
 ): BodyResult {
-  const objects = readLdObjects(body);
-  const graph = buildLdGraph(objects, raw, warn);
-  splitSharedSources(graph.nodes, warn);
-  const { nodes } = graph;
-  const hasGeometry = objects.some((o) => o.pos.x !== 0 || o.pos.y !== 0);
-
-  // Connected components over wires between nodes (rails do not join networks).
-  const parent = nodes.map((_, i) => i);
-  const find = (a: number): number => {
-    while (parent[a] !== a) {
-      parent[a] = parent[parent[a]!]!;
-      a = parent[a]!;
-    }
-    return a;
-  };
-  for (const n of nodes)
-    n.inputs.forEach((srcs) => {
-      for (const s of srcs) if (s.kind === 'node') parent[find(n.index)] = find(s.node);
-    });
-  const comps = new Map<number, number[]>();
-  for (const n of nodes) {
-    const r = find(n.index);
-    let list = comps.get(r);
-    if (!list) comps.set(r, (list = []));
-    list.push(n.index);
-  }
-  const keyOf = (objs: readonly { obj: RawObject; order: number }[]): number[] => {
-    let eo = Infinity;
-    let y = Infinity;
-    let x = Infinity;
-    let order = Infinity;
-    for (const o of objs) {
-      if (o.obj.executionOrderId > 0 && o.obj.executionOrderId < eo) eo = o.obj.executionOrderId;
-      if (o.obj.pos.y < y) y = o.obj.pos.y;
-      if (o.obj.pos.x < x) x = o.obj.pos.x;
-      if (o.order < order) order = o.order;
-    }
-    if (eo !== Infinity) return [0, eo];
-    return hasGeometry ? [1, y, x] : [1, order];
-  };
-  const groups: Group[] = [];
-  for (const list of comps.values())
-    groups.push({
-      nodes: list,
-      kind: 'network',
-      key: keyOf(list.map((i) => ({ obj: nodes[i]!.obj, order: nodes[i]!.obj.order }))),
-    });
-  const single = (o: RawObject, kind: Group['kind'], lift: number): Group => {
-    const k = keyOf([{ obj: o, order: o.order }]);
-    // A label or comment drawn beside the first row of its network still belongs to it.
-    if (hasGeometry && k[0] === 1) k[1] = k[1]! - lift;
-    return { nodes: [], kind, key: k, obj: o };
-  };
-  for (const o of graph.labels) groups.push(single(o, 'label', 20));
-  for (const o of graph.comments) groups.push(single(o, 'comment', 20));
-  for (const o of graph.vendor) groups.push(single(o, 'vendor', 20));
-  groups.sort((a, b) => compareKeys(a.key, b.key));
-
-  // Every network of the POU shares one width, coils on one right rail. Networks are laid out at
-  // the widest width seen so far; the few laid out before a wider one came are laid out again at
-  // the end (measuring every network first would lay each one out twice).
+  const plan = planBody(body);
+  const cache = new LayoutCache();
+  const items: Item[] = [];
   let cols = MIN_COLS;
+  let seq = 0;
+  const widths: number[] = [];
+  const itemsOf: Item[][] = [];
+  plan.batches.forEach((positions, b) => {
+    const out = readBatch(body.doc, plan, positions, cols, cache, raw, warn);
+    cols = Math.max(cols, out.cols);
+    widths[b] = out.cols;
+    itemsOf[b] = out.items.map((it): Item => ({ ...it, seq: seq++ }));
+    for (const it of itemsOf[b]) items.push(it);
+  });
+  // Batches laid out narrower than a later one: read again (their findings were reported once).
+  plan.batches.forEach((positions, b) => {
+    if (widths[b]! >= cols) return;
+    const again = readBatch(body.doc, plan, positions, cols, cache, raw, () => {}).items;
+    let k = 0;
+    for (const it of itemsOf[b]!) {
+      if (it.kind !== 'network') continue;
+      while (again[k]!.kind !== 'network') k++;
+      const redo = again[k++] as Extract<Item, { kind: 'network' }>;
+      const mine = it as Extract<Item, { kind: 'network' }>;
+      mine.laid = redo.laid;
+      mine.findings = redo.findings;
+    }
+  });
+  items.sort(compareItems);
+
   const networks: Network[] = [];
-  /** Laid-out networks: their group, position in `networks` and the wiring findings of their layout. */
-  const laidOut: { group: Group; at: number; findings: Finding[] }[] = [];
-  let pendingLabel: RawObject | undefined;
-  let pendingComments: RawObject[] = [];
+  let pendingLabel: string | undefined;
+  let pendingComments: { text: string; title: string }[] = [];
   let pendingVendor: string[] = [];
   const flushEmpty = () => {
-    if (!pendingLabel) return;
-    networks.push(newNetwork({ rows: 1, cols, label: pendingLabel.text, ...commentsOf(pendingComments) }));
+    if (pendingLabel === undefined) return;
+    networks.push(newNetwork({ rows: 1, cols, label: pendingLabel, ...commentsOf(pendingComments) }));
     pendingLabel = undefined;
     pendingComments = [];
   };
-  const layOut = (g: Group, width: number, base: Partial<Network>, findings: Finding[]): Network => {
-    const prepared = prepareLayout(nodes, g.nodes);
-    cols = Math.max(cols, prepared.needCols);
-    const laid = prepared.run(Math.max(width, prepared.needCols));
-    findings.length = 0;
-    verify(nodes, g.nodes, laid, (f) => findings.push(f));
-    const data = elementData(nodes, g.nodes, laid);
-    const { extensions, ...rest } = base;
-    const objects = (extensions?.plcopen as PreservedNetwork | undefined)?.objects;
-    const keep: PreservedNetwork = { ...(objects ? { objects } : {}), ...data };
-    return {
-      ...rest,
-      rows: laid.rows,
-      cols: laid.cols,
-      elements: laid.elements,
-      vlinks: laid.vlinks,
-      ...(keep.objects || keep.elementData ? { extensions: { plcopen: keep } } : {}),
-    } as Network;
-  };
-  for (const g of groups) {
-    if (g.kind === 'label') {
+  for (const it of items) {
+    if (it.kind === 'label') {
       flushEmpty();
-      pendingLabel = g.obj;
+      pendingLabel = it.text;
       continue;
     }
-    if (g.kind === 'comment') {
-      pendingComments.push(g.obj!);
+    if (it.kind === 'comment') {
+      pendingComments.push(it);
       continue;
     }
-    if (g.kind === 'vendor') {
-      pendingVendor.push(raw(g.obj!.xml));
+    if (it.kind === 'vendor') {
+      pendingVendor.push(it.raw);
       continue;
     }
-    const base = newNetwork({
-      ...(pendingLabel ? { label: pendingLabel.text } : {}),
-      ...commentsOf(pendingComments),
-      ...(pendingVendor.length ? { extensions: { plcopen: { objects: pendingVendor } } } : {}),
-    });
-    const findings: Finding[] = [];
-    laidOut.push({ group: g, at: networks.length, findings });
-    networks.push(layOut(g, cols, base, findings));
+    for (const f of it.findings) warn(f);
+    const { laid } = it;
+    const keep: PreservedNetwork = {
+      ...(pendingVendor.length ? { objects: pendingVendor } : {}),
+      ...(laid.elementData ? { elementData: laid.elementData } : {}),
+    };
+    networks.push(
+      newNetwork({
+        rows: laid.rows,
+        cols: laid.cols,
+        elements: laid.elements,
+        vlinks: laid.vlinks,
+        ...(pendingLabel !== undefined ? { label: pendingLabel } : {}),
+        ...commentsOf(pendingComments),
+        ...(keep.objects || keep.elementData ? { extensions: { plcopen: keep } } : {}),
+      }),
+    );
     pendingLabel = undefined;
     pendingComments = [];
     pendingVendor = [];
   }
-  for (const l of laidOut) {
-    const net = networks[l.at]!;
-    if (net.cols < cols) networks[l.at] = layOut(l.group, cols, net, l.findings);
-    for (const f of l.findings) warn(f);
-  }
-  for (let k = 0; k < networks.length; k++)
-    if (networks[k]!.cols < cols) networks[k] = { ...networks[k]!, cols };
   flushEmpty();
   if (pendingComments.length || pendingVendor.length) {
     const last = networks.pop();
@@ -192,31 +172,154 @@ export function importLdBody(
   return { networks };
 }
 
-function commentsOf(list: readonly RawObject[]): { comment: string; title: string } {
+/** Reads, interprets and lays out one batch of whole networks, at least `minCols` wide. */
+function readBatch(
+  doc: XmlDoc,
+  plan: BodyPlan,
+  positions: readonly number[],
+  minCols: number,
+  cache: LayoutCache,
+  raw: (el: XmlElement) => string,
+  warn: (f: Finding) => void,
+): { items: BatchItem[]; cols: number } {
+  const inBatch = new Set(positions);
+  const keepRef = (ref: string) => {
+    const p = plan.positionOf(ref);
+    return p === undefined || inBatch.has(p);
+  };
+  const objects = readSomeLdObjects(doc, plan.children, positions, keepRef);
+  const graph = buildLdGraph(objects, raw, warn);
+  splitSharedSources(graph.nodes, warn);
+  const { nodes } = graph;
+  const { hasGeometry } = plan;
+
+  // Connected components over wires between nodes (rails do not join networks).
+  const parent = nodes.map((_, i) => i);
+  const find = (a: number): number => {
+    while (parent[a] !== a) {
+      parent[a] = parent[parent[a]!]!;
+      a = parent[a]!;
+    }
+    return a;
+  };
+  for (const n of nodes)
+    n.inputs.forEach((srcs) => {
+      for (const s of srcs) if (s.kind === 'node') parent[find(n.index)] = find(s.node);
+    });
+  const comps = new Map<number, number[]>();
+  for (const n of nodes) {
+    const r = find(n.index);
+    let list = comps.get(r);
+    if (!list) comps.set(r, (list = []));
+    list.push(n.index);
+  }
+  const keyOf = (objs: readonly RawObject[]): number[] => {
+    let eo = Infinity;
+    let y = Infinity;
+    let x = Infinity;
+    let order = Infinity;
+    for (const o of objs) {
+      if (o.executionOrderId > 0 && o.executionOrderId < eo) eo = o.executionOrderId;
+      if (o.pos.y < y) y = o.pos.y;
+      if (o.pos.x < x) x = o.pos.x;
+      if (o.order < order) order = o.order;
+    }
+    if (eo !== Infinity) return [0, eo];
+    return hasGeometry ? [1, y, x] : [1, order];
+  };
+  const groups: Group[] = [];
+  for (const list of comps.values())
+    groups.push({ nodes: list, kind: 'network', key: keyOf(list.map((i) => nodes[i]!.obj)) });
+
+  let cols = minCols;
+  const laidOut: { group: Group; laid: LaidNetwork; findings: Finding[] }[] = [];
+  const layOut = (g: Group, width: number, findings: Finding[]): LaidNetwork => {
+    const key = shapeKey(nodes, g.nodes);
+    let prepared: Prepared | undefined;
+    let needCols = cache.needCols(key);
+    if (needCols === undefined) {
+      prepared = prepareLayout(nodes, g.nodes);
+      needCols = prepared.needCols;
+    }
+    cols = Math.max(cols, needCols);
+    const c = Math.max(width, needCols);
+    const template = cache.template(key, c);
+    let laid: LaidOut;
+    let mismatches: { node: number; pin: string }[];
+    if (template) ({ mismatches, ...laid } = instantiate(template, nodes, g.nodes));
+    else {
+      laid = (prepared ?? prepareLayout(nodes, g.nodes)).run(c);
+      mismatches = verify(nodes, g.nodes, laid);
+      cache.remember(key, needCols, g.nodes, laid, mismatches);
+    }
+    findings.length = 0;
+    for (const m of mismatches) findings.push(mismatchFinding(nodes[m.node]!, m.pin));
+    const data = elementData(nodes, g.nodes, laid);
+    return {
+      rows: laid.rows,
+      cols: laid.cols,
+      elements: laid.elements,
+      vlinks: laid.vlinks,
+      ...(data ? { elementData: data } : {}),
+    };
+  };
+  for (const g of groups) {
+    const findings: Finding[] = [];
+    laidOut.push({ group: g, laid: layOut(g, cols, findings), findings });
+  }
+  for (const l of laidOut) if (l.laid.cols < cols) l.laid = layOut(l.group, cols, l.findings);
+
+  const items: BatchItem[] = laidOut.map((l) => ({
+    kind: 'network',
+    key: l.group.key,
+    rank: RANK.network,
+    laid: l.laid,
+    findings: l.findings,
+  }));
+  // A label or comment drawn beside the first row of its network still belongs to it.
+  const keyOfSingle = (o: RawObject): number[] => {
+    const k = keyOf([o]);
+    if (hasGeometry && k[0] === 1) k[1] = k[1]! - 20;
+    return k;
+  };
+  for (const o of graph.labels)
+    items.push({ kind: 'label', key: keyOfSingle(o), rank: RANK.label, text: o.text });
+  for (const o of graph.comments)
+    items.push({ kind: 'comment', key: keyOfSingle(o), rank: RANK.comment, ...commentOf(o) });
+  for (const o of graph.vendor)
+    items.push({ kind: 'vendor', key: keyOfSingle(o), rank: RANK.vendor, raw: raw(o.xml) });
+  return { items, cols };
+}
+
+function commentsOf(list: readonly { text: string; title: string }[]): { comment: string; title: string } {
   let title = '';
   const texts: string[] = [];
-  for (const o of list) {
-    const add = o.hasAddData ? child(o.xml, 'addData') : undefined;
-    const mine = add ? childrenNamed(add, 'data').find((d) => d.attrs.name === RS_NETWORK) : undefined;
-    const t = mine?.children[0]?.attrs.title;
-    if (t) title = t;
-    if (o.text) texts.push(o.text);
+  for (const c of list) {
+    if (c.title) title = c.title;
+    if (c.text) texts.push(c.text);
   }
   return { comment: texts.join('\n'), title };
+}
+
+/** A comment's text, and the network title Rungsmith keeps in its addData. */
+function commentOf(o: RawObject): { text: string; title: string } {
+  const add = o.hasAddData ? child(o.xml, 'addData') : undefined;
+  const mine = add ? childrenNamed(add, 'data').find((d) => d.attrs.name === RS_NETWORK) : undefined;
+  return { text: o.text, title: mine?.children[0]?.attrs.title ?? '' };
 }
 
 function elementData(
   nodes: readonly GNode[],
   members: readonly number[],
   laid: LaidOut,
-): Pick<PreservedNetwork, 'elementData'> {
-  const out: Record<string, readonly string[]> = {};
+): PreservedNetwork['elementData'] | undefined {
+  let out: Record<string, readonly string[]> | undefined;
   for (const i of members) {
     const d = nodes[i]!.data;
     const id = laid.elementOf.get(i);
-    if (d && id) out[id] = d;
+    if (d && id) (out ??= {})[id] = d;
   }
-  return Object.keys(out).length ? { elementData: out } : {};
+  return out;
 }
 
 const describe = (n: GNode): string => {
@@ -239,8 +342,7 @@ function verify(
   nodes: readonly GNode[],
   members: readonly number[],
   laid: LaidOut,
-  warn: (f: Finding) => void,
-): void {
+): { node: number; pin: string }[] {
   const g = gridGraph(laid);
   const indexOfElement = new Map<string, number>();
   laid.elements.forEach((e: LdElement, i) => indexOfElement.set(e.id, i));
@@ -250,6 +352,7 @@ function verify(
     if (id) nodeOfElement.set(indexOfElement.get(id)!, i);
   }
   const memberSet = new Set(members);
+  const out: { node: number; pin: string }[] = [];
   for (const i of members) {
     const n = nodes[i]!;
     const ei = indexOfElement.get(laid.elementOf.get(i)!);
@@ -268,12 +371,17 @@ function verify(
           bad = pin;
           break;
         }
-    if (bad !== undefined)
-      warn({
-        message: `${describe(n)}${bad === 'in' || bad === 'out' ? '' : ` pin ${bad}`}: this wiring cannot be drawn exactly on the ladder grid; check its connections`,
-        obj: n.obj,
-      });
+    if (bad !== undefined) out.push({ node: i, pin: bad });
   }
+  return out;
+}
+
+/** The finding for a node whose drawn wiring differs from the file. */
+function mismatchFinding(n: GNode, pin: string): Finding {
+  return {
+    message: `${describe(n)}${pin === 'in' || pin === 'out' ? '' : ` pin ${pin}`}: this wiring cannot be drawn exactly on the ladder grid; check its connections`,
+    obj: n.obj,
+  };
 }
 
 /** Whether the sources of a pin in the file (within the network) differ from those the grid draws. */

@@ -316,7 +316,7 @@ function pinOffset(list: readonly { pin: string; off: number }[], pin: string): 
 }
 
 /** The model element of a placed node. Literal objects, not spreads of a shared base: this runs for every element of the file. */
-function elementFor(n: GNode, id: ElementId, r: number, c: number): LdElement {
+export function elementFor(n: GNode, id: ElementId, r: number, c: number): LdElement {
   switch (n.kind) {
     case 'contact':
       return { id, row: r, col: c, kind: 'contact', contact: n.contact ?? 'NO', variable: n.variable ?? '' };

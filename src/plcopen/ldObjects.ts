@@ -273,6 +273,42 @@ export function readLdObjects(body: XmlElement): RawObject[] {
   const d = body.doc;
   const reader = new Reader(d);
   const out: RawObject[] = [];
-  for (let c = d.firstChild[body.index]!; c !== -1; c = d.nextSibling[c]!) out.push(reader.object(c, out.length));
+  for (let c = d.firstChild[body.index]!; c !== -1; c = d.nextSibling[c]!)
+    out.push(reader.object(c, out.length));
   return out;
+}
+
+/**
+ * Reads some children of an LD body: `children` are the element indices of all of them (file
+ * order), `positions` the ones wanted (ascending). A right rail collects wires from many networks:
+ * `keepRef` says which of its wires belong to the objects read.
+ */
+export function readSomeLdObjects(
+  doc: XmlDoc,
+  children: Int32Array,
+  positions: readonly number[],
+  keepRef: (ref: string) => boolean,
+): RawObject[] {
+  const reader = new Reader(doc);
+  const rightRail = doc.id('rightPowerRail');
+  return positions.map((p) => {
+    const el = children[p]!;
+    const o = reader.object(el, p);
+    if (doc.lid[el] !== rightRail) return o;
+    return new LdObject(
+      doc,
+      el,
+      o.kind,
+      o.localId,
+      o.pos,
+      o.width,
+      o.height,
+      o.executionOrderId,
+      o.inputs.map((pin) => ({ ...pin, connections: pin.connections.filter((c) => keepRef(c.ref)) })),
+      o.outputs,
+      o.text,
+      o.order,
+      o.hasAddData,
+    );
+  });
 }

@@ -163,6 +163,22 @@ export class XmlDoc {
     const v = +this.attrValue(a);
     return v === v && v !== Infinity && v !== -Infinity ? v : 0;
   }
+  /** An attribute that is a plain unsigned integer below 2^31 (localIds): its value, else -1. */
+  attrIndexNumber(i: number, nameId: number): number {
+    const a = this.attrIndex(i, nameId);
+    if (a === -1) return -1;
+    const s = this.valStart[a]!;
+    const e = this.valEnd[a]!;
+    if (e === s || e - s > 9) return -1;
+    let n = 0;
+    for (let k = s; k < e; k++) {
+      const c = this.src.charCodeAt(k) - 48;
+      if (c < 0 || c > 9) return -1;
+      n = n * 10 + c;
+    }
+    // "007" is not "7": only canonical numbers stand for their text.
+    return e - s > 1 && this.src.charCodeAt(s) === 48 ? -1 : n;
+  }
   /** Character data directly inside element i (text with entities decoded, and CDATA). */
   text(i: number): string {
     let seg = this.textFirst[i]!;
