@@ -10,12 +10,20 @@ import type { LaidOut } from './layoutShapes';
 import { buildLdGraph, type Finding, type GNode, type GSource } from './ldGraph';
 import { splitSharedSources } from './ldNormalize';
 import { planBody, type BodyPlan } from './ldBatches';
-import { readSomeLdObjects, type RawObject } from './ldObjects';
+import { readLdObjects, type RawObject } from './ldObjects';
 import { RS_NETWORK, type PreservedNetwork } from './types';
 import { child, childrenNamed, type XmlDoc, type XmlElement } from './xml/parse';
 
 export interface BodyResult {
   readonly networks: Network[];
+}
+
+/** How a body is read (the defaults are right; tests use these to check that results do not depend on them). */
+export interface BodyTuning {
+  /** Objects per batch (see ldBatches.ts). */
+  readonly batchObjects?: number;
+  /** Whether networks of one shape share a layout (see layoutCache.ts). */
+  readonly shareLayouts?: boolean;
 }
 
 const MIN_COLS = 3;
@@ -69,9 +77,10 @@ export function importLdBody(
   body: XmlElement,
   raw: (el: XmlElement) => string,
   warn: (f: Finding) => void,
+  tuning: BodyTuning = {},
 ): BodyResult {
-  const plan = planBody(body);
-  const cache = new LayoutCache();
+  const plan = planBody(body, tuning.batchObjects);
+  const cache = new LayoutCache(tuning.shareLayouts ?? true);
   const items: Item[] = [];
   let cols = MIN_COLS;
   let seq = 0;
@@ -187,7 +196,7 @@ function readBatch(
     const p = plan.positionOf(ref);
     return p === undefined || inBatch.has(p);
   };
-  const objects = readSomeLdObjects(doc, plan.children, positions, keepRef);
+  const objects = readLdObjects(doc, plan.children, positions, keepRef);
   const graph = buildLdGraph(objects, raw, warn);
   splitSharedSources(graph.nodes, warn);
   const { nodes } = graph;

@@ -10,7 +10,7 @@ import {
   type Task,
   type Variable,
 } from '../model/project';
-import { importLdBody } from './importBody';
+import { importLdBody, type BodyTuning } from './importBody';
 import { readInstances, readType, readVarLists } from './importInterface';
 import { LdGraphError, type Finding } from './ldGraph';
 import {
@@ -52,9 +52,9 @@ const unread = (parent: string, name: string): boolean =>
   name === 'relPosition' || (name === 'position' && parent === 'connection');
 
 /** Reads PLCopen XML text. */
-export function importPlcopen(xmlText: string): ImportResult {
+export function importPlcopen(xmlText: string, tuning?: BodyTuning): ImportResult {
   try {
-    return importChecked(xmlText);
+    return importChecked(xmlText, tuning);
   } catch (e) {
     if (e instanceof ImportFailure) return { ok: false, errors: [e.issue] };
     if (e instanceof XmlSyntaxError)
@@ -63,7 +63,7 @@ export function importPlcopen(xmlText: string): ImportResult {
   }
 }
 
-function importChecked(text: string): ImportResult {
+function importChecked(text: string, tuning: BodyTuning | undefined): ImportResult {
   const root = parseXml(text, { skip: unread });
   // Line numbers are only needed for findings: index the lines on first use.
   let locate: ((offset: number) => number) | undefined;
@@ -137,8 +137,11 @@ function importChecked(text: string): ImportResult {
 
   const importLd = (pouName: string, bodyLd: XmlElement, from: string): Pou['networks'] => {
     try {
-      const { networks } = importLdBody(bodyLd, raw, (f: Finding) =>
-        warnings.push({ ...at(f.obj?.xml), pou: pouName, message: f.message }),
+      const { networks } = importLdBody(
+        bodyLd,
+        raw,
+        (f: Finding) => warnings.push({ ...at(f.obj?.xml), pou: pouName, message: f.message }),
+        tuning,
       );
       reportPous.push({ name: pouName, networks: networks.length, from });
       return networks;

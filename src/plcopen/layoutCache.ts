@@ -67,6 +67,7 @@ export function shapeKey(nodes: readonly GNode[], members: readonly number[]): s
 /** Layouts per shape key and width, for one import. */
 export class LayoutCache {
   private readonly entries = new Map<string, Entry>();
+  constructor(private readonly enabled = true) {}
 
   needCols(key: string): number | undefined {
     return this.entries.get(key)?.needCols;
@@ -83,6 +84,7 @@ export class LayoutCache {
     laid: LaidOut,
     mismatches: readonly { node: number; pin: string }[],
   ): void {
+    if (!this.enabled) return;
     let entry = this.entries.get(key);
     if (!entry) this.entries.set(key, (entry = { needCols, byCols: new Map() }));
     const memberOf = new Map<ElementId, number>();

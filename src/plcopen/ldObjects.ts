@@ -268,22 +268,12 @@ class Reader {
   }
 }
 
-/** Reads every direct child of an LD body. */
-export function readLdObjects(body: XmlElement): RawObject[] {
-  const d = body.doc;
-  const reader = new Reader(d);
-  const out: RawObject[] = [];
-  for (let c = d.firstChild[body.index]!; c !== -1; c = d.nextSibling[c]!)
-    out.push(reader.object(c, out.length));
-  return out;
-}
-
 /**
  * Reads some children of an LD body: `children` are the element indices of all of them (file
  * order), `positions` the ones wanted (ascending). A right rail collects wires from many networks:
  * `keepRef` says which of its wires belong to the objects read.
  */
-export function readSomeLdObjects(
+export function readLdObjects(
   doc: XmlDoc,
   children: Int32Array,
   positions: readonly number[],

@@ -30,22 +30,23 @@ export function lineColumn(text: string, offset: number): { line: number; column
 
 const ENTITIES: Record<string, string> = { lt: '<', gt: '>', amp: '&', quot: '"', apos: "'" };
 
-function decodeEntities(s: string, fail: (msg: string) => never): string {
+/** Decodes entity and character references; `fail` gets the offset in `s` of the bad reference. */
+function decodeEntities(s: string, fail: (msg: string, at: number) => never): string {
   if (s.indexOf('&') === -1) return s;
-  return s.replace(/&([^;&\s]*);?/g, (m, body: string) => {
-    if (!m.endsWith(';')) fail(`"&" must start an entity such as &amp;`);
+  return s.replace(/&([^;&\s]*);?/g, (m, body: string, at: number) => {
+    if (!m.endsWith(';')) fail(`"&" must start an entity such as &amp;`, at);
     if (body.startsWith('#x') || body.startsWith('#X')) {
       const n = parseInt(body.slice(2), 16);
-      if (Number.isNaN(n)) fail(`bad character reference "${m}"`);
+      if (Number.isNaN(n)) fail(`bad character reference "${m}"`, at);
       return String.fromCodePoint(n);
     }
     if (body.startsWith('#')) {
       const n = parseInt(body.slice(1), 10);
-      if (Number.isNaN(n)) fail(`bad character reference "${m}"`);
+      if (Number.isNaN(n)) fail(`bad character reference "${m}"`, at);
       return String.fromCodePoint(n);
     }
     const e = ENTITIES[body];
-    if (e === undefined) fail(`unknown entity "${m}"`);
+    if (e === undefined) fail(`unknown entity "${m}"`, at);
     return e;
   });
 }
@@ -463,8 +464,8 @@ export function parseXmlDoc(src: string, options: ParseOptions = {}): XmlDoc {
         let amp = false;
         for (; k < lt && !amp; k++) amp = src.charCodeAt(k) === 38;
         if (amp) {
-          const at = pos;
-          decodeEntities(src.slice(pos, lt), (m) => syntaxError(src, m, at));
+          const from = pos;
+          decodeEntities(src.slice(pos, lt), (m, at) => syntaxError(src, m, from + at));
         }
         b.text(pos, lt, 0);
       }
@@ -597,8 +598,8 @@ export function parseXmlDoc(src: string, options: ParseOptions = {}): XmlDoc {
       }
       if (close >= len) syntaxError(src, `unclosed value of attribute "${names.name(an)}"`, qp);
       if (amp) {
-        const at = qp;
-        decodeEntities(src.slice(qp + 1, close), (m) => syntaxError(src, m, at));
+        const from = qp + 1;
+        decodeEntities(src.slice(qp + 1, close), (m, at) => syntaxError(src, m, from + at));
       }
       for (let a = attrFrom; a < b.attrTotal; a++)
         if (b.attrName[a] === an) syntaxError(src, `attribute "${names.name(an)}" repeated in <${qname}>`, i);
