@@ -137,12 +137,16 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
 
   const importLd = (pouName: string, bodyLd: XmlElement, from: string): Pou['networks'] => {
     try {
+      const found: ImportIssue[] = [];
       const { networks } = importLdBody(
         bodyLd,
         raw,
-        (f: Finding) => warnings.push({ ...at(f.obj?.xml), pou: pouName, message: f.message }),
+        (f: Finding) => found.push({ ...at(f.obj?.xml), pou: pouName, message: f.message }),
         tuning,
       );
+      // In file order (a large body is read in batches, each reporting as it goes).
+      found.sort((a, b) => (a.line ?? Infinity) - (b.line ?? Infinity));
+      for (const f of found) warnings.push(f);
       reportPous.push({ name: pouName, networks: networks.length, from });
       return networks;
     } catch (e) {
