@@ -243,7 +243,7 @@ function readBatch(
   let cols = minCols;
   const laidOut: { group: Group; laid: LaidNetwork; findings: Finding[] }[] = [];
   const layOut = (g: Group, width: number, findings: Finding[]): LaidNetwork => {
-    const key = shapeKey(nodes, g.nodes);
+    const key = cache.enabled ? shapeKey(nodes, g.nodes) : '';
     let prepared: Prepared | undefined;
     let needCols = cache.needCols(key);
     if (needCols === undefined) {

@@ -67,7 +67,7 @@ export function shapeKey(nodes: readonly GNode[], members: readonly number[]): s
 /** Layouts per shape key and width, for one import. */
 export class LayoutCache {
   private readonly entries = new Map<string, Entry>();
-  constructor(private readonly enabled = true) {}
+  constructor(readonly enabled = true) {}
 
   needCols(key: string): number | undefined {
     return this.entries.get(key)?.needCols;

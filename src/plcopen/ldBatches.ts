@@ -110,14 +110,26 @@ export function planBody(body: XmlElement, batchObjects = BATCH_OBJECTS): BodyPl
   const railUse: number[] = [];
   // A repeated localId joins its objects: the batch that reads them reports it.
   for (let p = 0; p < n; p++) {
-    const first = named(children[p]!, ids.localId);
+    const first = byNumber
+      ? numeric[p] === -1
+        ? -1
+        : byNumber[numeric[p]!]!
+      : named(children[p]!, ids.localId);
     if (first === -1 || first === p) continue;
     if (isRail[first] || isRail[p]) railUse.push(isRail[p] ? first : p, isRail[p] ? p : first);
     else union(first, p);
   }
   const connectors = new Map<string, number[]>();
   const continuations: number[] = [];
-  const stack: number[] = [];
+  // Elements are numbered in document order, so the descendants of a child of the body are the
+  // elements numbered from it to the next child (to the end of the body for the last one).
+  let bodyEnd = body.index;
+  for (let last = bodyEnd; last !== -1; ) {
+    bodyEnd = last;
+    last = -1;
+    for (let c = d.firstChild[bodyEnd]!; c !== -1; c = d.nextSibling[c]!) last = c;
+  }
+  bodyEnd++;
   for (let p = 0; p < n; p++) {
     const el = children[p]!;
     const lid = d.lid[el]!;
@@ -130,19 +142,14 @@ export function planBody(body: XmlElement, batchObjects = BATCH_OBJECTS): BodyPl
       } else continuations.push(p);
     }
     // Every <connection> inside the object, at any depth (block pins nest them).
-    stack.length = 0;
-    for (let c = d.firstChild[el]!; c !== -1; c = d.nextSibling[c]!) stack.push(c);
-    while (stack.length) {
-      const e = stack.pop()!;
-      if (d.lid[e] === ids.connection) {
-        const t = named(e, ids.refLocalId);
-        if (t === -1 || t === p) continue;
-        if (isRail[p]) railUse.push(t, p);
-        else if (isRail[t]) railUse.push(p, t);
-        else union(p, t);
-        continue;
-      }
-      for (let c = d.firstChild[e]!; c !== -1; c = d.nextSibling[c]!) stack.push(c);
+    const to = p + 1 < n ? children[p + 1]! : bodyEnd;
+    for (let e = el + 1; e < to; e++) {
+      if (d.lid[e] !== ids.connection) continue;
+      const t = named(e, ids.refLocalId);
+      if (t === -1 || t === p) continue;
+      if (isRail[p]) railUse.push(t, p);
+      else if (isRail[t]) railUse.push(p, t);
+      else union(p, t);
     }
   }
   for (const p of continuations) {
