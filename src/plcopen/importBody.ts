@@ -3,15 +3,15 @@
 import type { LdElement } from '../model/elements';
 import { newNetwork } from '../model/factory';
 import type { Network } from '../model/project';
-import { gridGraph, type Source } from './gridGraph';
 import { prepareLayout, type Prepared } from './layout';
 import { instantiate, LayoutCache, shapeKey } from './layoutCache';
 import type { LaidOut } from './layoutShapes';
-import { buildLdGraph, type Finding, type GNode, type GSource } from './ldGraph';
+import { buildLdGraph, type Finding, type GNode } from './ldGraph';
 import { splitSharedSources } from './ldNormalize';
 import { planBody, type BodyPlan } from './ldBatches';
 import { readLdObjects, type RawObject } from './ldObjects';
 import { RS_NETWORK, type PreservedNetwork } from './types';
+import { mismatchFinding, verify } from './verifyLayout';
 import { child, childrenNamed, type XmlDoc, type XmlElement } from './xml/parse';
 
 export interface BodyResult {
@@ -28,11 +28,10 @@ export interface BodyTuning {
 
 const MIN_COLS = 3;
 
+/** One network of a batch: its node indices and its place in the POU. */
 interface Group {
   readonly nodes: number[];
   readonly key: readonly number[];
-  readonly kind: 'network' | 'label' | 'comment' | 'vendor';
-  readonly obj?: RawObject;
 }
 
 /** What one batch leaves for the assembly of the POU: networks laid out, labels, comments, vendor data. */
@@ -237,8 +236,7 @@ function readBatch(
     return hasGeometry ? [1, y, x] : [1, order];
   };
   const groups: Group[] = [];
-  for (const list of comps.values())
-    groups.push({ nodes: list, kind: 'network', key: keyOf(list.map((i) => nodes[i]!.obj)) });
+  for (const list of comps.values()) groups.push({ nodes: list, key: keyOf(list.map((i) => nodes[i]!.obj)) });
 
   let cols = minCols;
   const laidOut: { group: Group; laid: LaidNetwork; findings: Finding[] }[] = [];
@@ -329,97 +327,4 @@ function elementData(
     if (d && id) (out ??= {})[id] = d;
   }
   return out;
-}
-
-const describe = (n: GNode): string => {
-  switch (n.kind) {
-    case 'contact':
-      return n.contact === 'NOT' ? 'NOT contact' : `contact "${n.variable}"`;
-    case 'coil':
-      return `coil "${n.variable}"`;
-    case 'box':
-      return `block ${n.instance ?? n.blockType}`;
-    case 'jump':
-      return `jump to ${n.target}`;
-    case 'return':
-      return 'return';
-  }
-};
-
-/** Checks that the grid draws exactly the wiring of the file; reports elements whose inputs differ. */
-function verify(
-  nodes: readonly GNode[],
-  members: readonly number[],
-  laid: LaidOut,
-): { node: number; pin: string }[] {
-  const g = gridGraph(laid);
-  const indexOfElement = new Map<string, number>();
-  laid.elements.forEach((e: LdElement, i) => indexOfElement.set(e.id, i));
-  const nodeOfElement = new Map<number, number>();
-  for (const i of members) {
-    const id = laid.elementOf.get(i);
-    if (id) nodeOfElement.set(indexOfElement.get(id)!, i);
-  }
-  const memberSet = new Set(members);
-  const out: { node: number; pin: string }[] = [];
-  for (const i of members) {
-    const n = nodes[i]!;
-    const ei = indexOfElement.get(laid.elementOf.get(i)!);
-    if (ei === undefined) continue;
-    const drawn = g.sources.get(ei);
-    // The pins wired in the file, then those only drawn; the first that differs is reported.
-    let bad: string | undefined;
-    for (const pin of n.inputs.keys())
-      if (pinDiffers(n, pin, drawn, memberSet, nodeOfElement)) {
-        bad = pin;
-        break;
-      }
-    if (bad === undefined && drawn)
-      for (const pin of drawn.keys())
-        if (!n.inputs.has(pin) && pinDiffers(n, pin, drawn, memberSet, nodeOfElement)) {
-          bad = pin;
-          break;
-        }
-    if (bad !== undefined) out.push({ node: i, pin: bad });
-  }
-  return out;
-}
-
-/** The finding for a node whose drawn wiring differs from the file. */
-function mismatchFinding(n: GNode, pin: string): Finding {
-  return {
-    message: `${describe(n)}${pin === 'in' || pin === 'out' ? '' : ` pin ${pin}`}: this wiring cannot be drawn exactly on the ladder grid; check its connections`,
-    obj: n.obj,
-  };
-}
-
-/** Whether the sources of a pin in the file (within the network) differ from those the grid draws. */
-function pinDiffers(
-  n: GNode,
-  pin: string,
-  drawn: Map<string, Source[]> | undefined,
-  memberSet: ReadonlySet<number>,
-  nodeOfElement: ReadonlyMap<number, number>,
-): boolean {
-  const wantList = (n.inputs.get(pin) ?? []).filter((s) => s.kind === 'rail' || memberSet.has(s.node));
-  const gotList = drawn?.get(pin) ?? [];
-  // One source each (most pins): compare directly, without building keys or sets.
-  if (wantList.length === 1 && gotList.length === 1) {
-    const want = wantList[0]!;
-    const got = gotList[0]!;
-    if (want.kind === 'rail' || got.kind === 'rail') return want.kind !== got.kind;
-    return want.node !== nodeOfElement.get(got.el) || want.pin !== got.pin;
-  }
-  const key = (s: Source | GSource): string => {
-    if (s.kind === 'rail') return 'rail';
-    if (s.kind === 'pin') return `${nodeOfElement.get(s.el)}:${s.pin}`;
-    return `${s.node}:${s.pin}`;
-  };
-  return !sameSet(new Set(wantList.map(key)), new Set(gotList.map(key)));
-}
-
-function sameSet(a: ReadonlySet<string>, b: ReadonlySet<string>): boolean {
-  if (a.size !== b.size) return false;
-  for (const k of a) if (!b.has(k)) return false;
-  return true;
 }

@@ -124,7 +124,7 @@ export function planBody(body: XmlElement, batchObjects = BATCH_OBJECTS): BodyPl
   // Elements are numbered in document order, so the descendants of a child of the body are the
   // elements numbered from it to the next child (to the end of the body for the last one).
   let bodyEnd = body.index;
-  for (let last = bodyEnd; last !== -1; ) {
+  for (let last = bodyEnd; last !== -1;) {
     bodyEnd = last;
     last = -1;
     for (let c = d.firstChild[bodyEnd]!; c !== -1; c = d.nextSibling[c]!) last = c;
