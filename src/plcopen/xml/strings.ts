@@ -4,6 +4,13 @@ const TABLE_MASK = 4095;
 /** Hashes are kept to small integers: larger ones would be boxed when passed to the table. */
 export const SMI_MASK = 0x3fffffff;
 
+/** A hash of the text between start and end, for the tables below. */
+export function hashRange(src: string, start: number, end: number): number {
+  let h = end - start;
+  for (let k = start; k < end; k++) h = (Math.imul(h, 31) + src.charCodeAt(k)) | 0;
+  return h & SMI_MASK;
+}
+
 /**
  * One string per distinct element name, attribute name and short value: a PLCopen file repeats the
  * same few hundred of them hundreds of thousands of times, and a tree of shared strings is far
@@ -33,9 +40,7 @@ export class StringTable {
     return s;
   }
   hashOf(start: number, end: number): number {
-    let h = end - start;
-    for (let k = start; k < end; k++) h = (Math.imul(h, 31) + this.src.charCodeAt(k)) | 0;
-    return h & SMI_MASK;
+    return hashRange(this.src, start, end);
   }
 }
 
@@ -73,9 +78,7 @@ export class NameTable {
     return id;
   }
   hashOf(start: number, end: number): number {
-    let h = end - start;
-    for (let k = start; k < end; k++) h = (Math.imul(h, 31) + this.src.charCodeAt(k)) | 0;
-    return h & SMI_MASK;
+    return hashRange(this.src, start, end);
   }
   name(id: number): string {
     return this.strings[id]!;
