@@ -75,11 +75,17 @@ describe('XML document', () => {
   });
 
   it('reads numbers and ids by index without building elements', () => {
-    const doc = parseXmlDoc('<r><e localId="42" x="-3.5" y="12" z="007" w="abc"/></r>');
+    const doc = parseXmlDoc(
+      '<r><e localId="42" x="-3.5" y="12" z="007" w="abc" big="12345678901" zero="0"/></r>',
+    );
     const e = doc.firstChild[0]!;
     expect(doc.name(e)).toBe('e');
     expect(doc.attrIndexNumber(e, doc.id('localId'))).toBe(42);
     expect(doc.attrIndexNumber(e, doc.id('z'))).toBe(-1);
+    expect(doc.attrIndexNumber(e, doc.id('big'))).toBe(-1);
+    expect(doc.attrIndexNumber(e, doc.id('zero'))).toBe(0);
+    expect(doc.attrNumber(e, doc.id('big'))).toBe(12345678901);
+    expect(doc.attrNumber(e, doc.id('z'))).toBe(7);
     expect(doc.attrNumber(e, doc.id('x'))).toBe(-3.5);
     expect(doc.attrNumber(e, doc.id('y'))).toBe(12);
     expect(doc.attrNumber(e, doc.id('w'))).toBe(0);

@@ -25,6 +25,7 @@ export class Builder {
   valStart: Int32Array;
   valEnd: Int32Array;
   valAmp: Uint8Array;
+  valNum: Int32Array;
   segTotal = 0;
   segStart: Int32Array;
   segEnd: Int32Array;
@@ -53,6 +54,7 @@ export class Builder {
     this.valStart = new Int32Array(cap * 2);
     this.valEnd = new Int32Array(cap * 2);
     this.valAmp = new Uint8Array(cap * 2);
+    this.valNum = new Int32Array(cap * 2);
     const scap = Math.max(64, cap >> 2);
     this.segStart = new Int32Array(scap);
     this.segEnd = new Int32Array(scap);
@@ -93,18 +95,20 @@ export class Builder {
     return el;
   }
 
-  attr(name: number, from: number, to: number, amp: number): void {
+  attr(name: number, from: number, to: number, amp: number, num: number): void {
     const k = this.attrTotal;
     if (k === this.attrName.length) {
       this.attrName = grown(this.attrName, k * 2);
       this.valStart = grown(this.valStart, k * 2);
       this.valEnd = grown(this.valEnd, k * 2);
       this.valAmp = grown(this.valAmp, k * 2);
+      this.valNum = grown(this.valNum, k * 2);
     }
     this.attrName[k] = name;
     this.valStart[k] = from;
     this.valEnd[k] = to;
     this.valAmp[k] = amp;
+    this.valNum[k] = num;
     this.attrTotal = k + 1;
   }
 
@@ -161,6 +165,7 @@ export class Builder {
     doc.valStart = this.valStart;
     doc.valEnd = this.valEnd;
     doc.valAmp = this.valAmp;
+    doc.valNum = this.valNum;
     doc.attrTotal = this.attrTotal;
     doc.segStart = this.segStart;
     doc.segEnd = this.segEnd;

@@ -31,6 +31,8 @@ export class XmlDoc {
   valStart: Int32Array = new Int32Array(0);
   valEnd: Int32Array = new Int32Array(0);
   valAmp: Uint8Array = new Uint8Array(0);
+  /** The value as a number when it is a plain unsigned integer below 2^31 (else -1). */
+  valNum: Int32Array = new Int32Array(0);
   attrTotal = 0;
   /** Text segments: span, kind (0 text with entities decoded, 1 CDATA verbatim), next of the same element. */
   segStart: Int32Array = new Int32Array(0);
@@ -87,35 +89,16 @@ export class XmlDoc {
   attrNumber(i: number, nameId: number): number {
     const a = this.attrIndex(i, nameId);
     if (a === -1) return 0;
-    const s = this.valStart[a]!;
-    const e = this.valEnd[a]!;
-    // Plain unsigned integers (nearly all PLCopen numbers) without making a string.
-    let n = 0;
-    let k = s;
-    for (; k < e; k++) {
-      const c = this.src.charCodeAt(k) - 48;
-      if (c < 0 || c > 9) break;
-      n = n * 10 + c;
-    }
-    if (k === e && e > s && e - s < 16) return n;
+    // Plain unsigned integers (nearly all PLCopen numbers) were read while parsing.
+    const n = this.valNum[a]!;
+    if (n !== -1) return n;
     const v = +this.attrValue(a);
     return v === v && v !== Infinity && v !== -Infinity ? v : 0;
   }
   /** An attribute that is a plain unsigned integer below 2^31 (localIds): its value, else -1. */
   attrIndexNumber(i: number, nameId: number): number {
     const a = this.attrIndex(i, nameId);
-    if (a === -1) return -1;
-    const s = this.valStart[a]!;
-    const e = this.valEnd[a]!;
-    if (e === s || e - s > 9) return -1;
-    let n = 0;
-    for (let k = s; k < e; k++) {
-      const c = this.src.charCodeAt(k) - 48;
-      if (c < 0 || c > 9) return -1;
-      n = n * 10 + c;
-    }
-    // "007" is not "7": only canonical numbers stand for their text.
-    return e - s > 1 && this.src.charCodeAt(s) === 48 ? -1 : n;
+    return a === -1 ? -1 : this.valNum[a]!;
   }
   /** Character data directly inside element i (text with entities decoded, and CDATA). */
   text(i: number): string {

@@ -220,20 +220,28 @@ export function parseXmlDoc(src: string, options: ParseOptions = {}): XmlDoc {
         syntaxError(src, `the value of attribute "${names.name(an)}" must be quoted`, qp);
       let close = qp + 1;
       let amp = 0;
+      // Plain unsigned integers (localIds, coordinates) are read as numbers on the way.
+      let num = 0;
+      let digits = true;
       for (; close < len; close++) {
         const ch = src.charCodeAt(close);
         if (ch === quote) break;
         if (ch === 60) syntaxError(src, `"<" in the value of attribute "${names.name(an)}"`, qp);
         if (ch === 38) amp = 1;
+        if (ch >= 48 && ch <= 57 && num < 100_000_000) num = num * 10 + ch - 48;
+        else digits = false;
       }
       if (close >= len) syntaxError(src, `unclosed value of attribute "${names.name(an)}"`, qp);
+      const n = close - qp - 1;
+      // Canonical only ("7", not "07" nor ""), and below 2^31.
+      if (!digits || n === 0 || n > 9 || (n > 1 && src.charCodeAt(qp + 1) === 48)) num = -1;
       if (amp) {
         const from = qp + 1;
         decodeEntities(src.slice(qp + 1, close), (m, at) => syntaxError(src, m, from + at));
       }
       for (let a = attrFrom; a < b.attrTotal; a++)
         if (b.attrName[a] === an) syntaxError(src, `attribute "${names.name(an)}" repeated in <${qname}>`, i);
-      b.attr(an, qp + 1, close, amp);
+      b.attr(an, qp + 1, close, amp, num);
       i = close + 1;
     }
     if (el !== -1) {
