@@ -9,13 +9,15 @@ import { checkProject } from '../../src/engine/check';
 import { compileProgram, createPlc } from '../../src/engine/plc';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
+import { canonical } from '../plcopen/fixtures';
 import { schemaErrors } from '../plcopen/xsd';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
 // RUNGSMITH_PLCOPEN_CORPUS overrides where the corpus is; by default ../shared/plcopen/examples next to the repository.
-const CANDIDATES = [process.env.RUNGSMITH_PLCOPEN_CORPUS, join(root, '..', 'shared', 'plcopen', 'examples')].filter(
-  (d): d is string => Boolean(d),
-);
+const CANDIDATES = [
+  process.env.RUNGSMITH_PLCOPEN_CORPUS,
+  join(root, '..', 'shared', 'plcopen', 'examples'),
+].filter((d): d is string => Boolean(d));
 const CORPUS = CANDIDATES.find((d) => existsSync(d)) ?? CANDIDATES[CANDIDATES.length - 1]!;
 if (!existsSync(CORPUS)) {
   throw new Error(
@@ -73,6 +75,11 @@ describe('PLCopen corpus', () => {
       expect(plc.scanCount).toBe(100);
       simulated++;
     }
+    // Batches and shared layouts are speed-ups only: smallest batches, no sharing, same import.
+    const plain = importPlcopen(text, { batchObjects: 1, shareLayouts: false });
+    if (!plain.ok) throw new Error(`${file}: ${JSON.stringify(plain.errors)}`);
+    expect(canonical(plain.project)).toBe(canonical(r.project));
+    expect(plain.report.warnings).toEqual(r.report.warnings);
     const xml = exportPlcopen(r.project);
     expect(await schemaErrors(xml, file)).toEqual([]);
     const again = importPlcopen(xml);

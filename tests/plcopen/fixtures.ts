@@ -21,3 +21,20 @@ export function run(project: Project, pou: string, cycleMs = 10): Plc {
   if (!program) throw new Error(diagnostics.map((d) => d.message).join('\n'));
   return createPlc(program, { cycleMs });
 }
+
+/** Ids replaced by their order of first appearance (they are fresh on every import). */
+export function canonical(p: Project): string {
+  const ids = new Map<string, string>();
+  const collect = (v: unknown): void => {
+    if (Array.isArray(v)) v.forEach(collect);
+    else if (v && typeof v === 'object')
+      for (const [k, x] of Object.entries(v)) {
+        if (k === 'id' && typeof x === 'string' && !ids.has(x)) ids.set(x, `#${ids.size}`);
+        collect(x);
+      }
+  };
+  collect(p);
+  let json = JSON.stringify(p);
+  for (const [id, n] of ids) json = json.split(id).join(n);
+  return json;
+}
