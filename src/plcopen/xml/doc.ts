@@ -75,6 +75,9 @@ export class XmlDoc {
   }
   /** Value of attribute `a` (an index from attrIndex). */
   attrValue(a: number): string {
+    // A plain integer is written exactly as its number: no need to go back to the text.
+    const n = this.valNum[a]!;
+    if (n !== -1) return String(n);
     const s = this.valStart[a]!;
     const e = this.valEnd[a]!;
     if (this.valAmp[a]) return decodeEntities(this.src.slice(s, e), checked);
