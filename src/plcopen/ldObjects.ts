@@ -1,7 +1,7 @@
 // Reading the objects of a PLCopen LD body: positions, pins and the connections recorded on the
 // consumer side. No interpretation yet (see ldGraph.ts).
 import type { Point } from './geometry';
-import { deepText, type XmlDoc, type XmlElement } from './xml/parse';
+import { deepText, nameIds, type XmlDoc, type XmlElement } from './xml/parse';
 
 /** A wire as recorded on its consumer. Route points and pin offsets are not read: the grid is built
  * from the wiring (topology), and these files run to hundreds of thousands of wires. */
@@ -45,59 +45,33 @@ const NO_CONNECTIONS: readonly RawConnection[] = Object.freeze([]);
 
 type MutablePin = { -readonly [K in keyof RawPin]: RawPin[K] };
 
-/** Name ids of one document, looked up once per body. */
-class Names {
-  readonly position: number;
-  readonly x: number;
-  readonly y: number;
-  readonly connectionPointIn: number;
-  readonly connectionPointOut: number;
-  readonly connection: number;
-  readonly refLocalId: number;
-  readonly formalParameter: number;
-  readonly expression: number;
-  readonly variable: number;
-  readonly negated: number;
-  readonly edge: number;
-  readonly label: number;
-  readonly name: number;
-  readonly typeName: number;
-  readonly inputVariables: number;
-  readonly inOutVariables: number;
-  readonly outputVariables: number;
-  readonly content: number;
-  readonly addData: number;
-  readonly localId: number;
-  readonly width: number;
-  readonly height: number;
-  readonly executionOrderId: number;
-  constructor(d: XmlDoc) {
-    this.position = d.id('position');
-    this.x = d.id('x');
-    this.y = d.id('y');
-    this.connectionPointIn = d.id('connectionPointIn');
-    this.connectionPointOut = d.id('connectionPointOut');
-    this.connection = d.id('connection');
-    this.refLocalId = d.id('refLocalId');
-    this.formalParameter = d.id('formalParameter');
-    this.expression = d.id('expression');
-    this.variable = d.id('variable');
-    this.negated = d.id('negated');
-    this.edge = d.id('edge');
-    this.label = d.id('label');
-    this.name = d.id('name');
-    this.typeName = d.id('typeName');
-    this.inputVariables = d.id('inputVariables');
-    this.inOutVariables = d.id('inOutVariables');
-    this.outputVariables = d.id('outputVariables');
-    this.content = d.id('content');
-    this.addData = d.id('addData');
-    this.localId = d.id('localId');
-    this.width = d.id('width');
-    this.height = d.id('height');
-    this.executionOrderId = d.id('executionOrderId');
-  }
-}
+/** The names a reader of LD objects looks for. */
+const NAMES = [
+  'position',
+  'x',
+  'y',
+  'connectionPointIn',
+  'connectionPointOut',
+  'connection',
+  'refLocalId',
+  'formalParameter',
+  'expression',
+  'variable',
+  'negated',
+  'edge',
+  'label',
+  'name',
+  'typeName',
+  'inputVariables',
+  'inOutVariables',
+  'outputVariables',
+  'content',
+  'addData',
+  'localId',
+  'width',
+  'height',
+  'executionOrderId',
+] as const;
 
 class LdObject implements RawObject {
   constructor(
@@ -126,9 +100,9 @@ class LdObject implements RawObject {
 
 /** Reads the LD objects of one body from its document. */
 class Reader {
-  private readonly n: Names;
+  private readonly n: Readonly<Record<(typeof NAMES)[number], number>>;
   constructor(private readonly d: XmlDoc) {
-    this.n = new Names(d);
+    this.n = nameIds(d, NAMES);
   }
 
   /** Negation and edge of a block pin (`<variable negated="true" edge="rising">`). */
