@@ -3,7 +3,7 @@
 // objects of one batch are garbage before the next is read: a 10,000-network body never has all
 // its objects and graph nodes alive at once. Wires are followed as written (continuations join
 // their connectors); rails do not join networks, they are added to every batch that uses them.
-import { nameIds, type XmlElement } from './xml/parse';
+import type { XmlElement } from './xml/parse';
 
 export interface BodyPlan {
   /** Element index (in the document) of each child of the body, in file order. */
@@ -26,19 +26,19 @@ export const BATCH_OBJECTS = 256;
 
 export function planBody(body: XmlElement, batchObjects = BATCH_OBJECTS): BodyPlan {
   const d = body.doc;
-  const ids = nameIds(d, [
-    'localId',
-    'refLocalId',
-    'connection',
-    'position',
-    'x',
-    'y',
-    'name',
-    'leftPowerRail',
-    'rightPowerRail',
-    'connector',
-    'continuation',
-  ]);
+  const ids = {
+    localId: d.id('localId'),
+    refLocalId: d.id('refLocalId'),
+    connection: d.id('connection'),
+    position: d.id('position'),
+    x: d.id('x'),
+    y: d.id('y'),
+    name: d.id('name'),
+    leftPowerRail: d.id('leftPowerRail'),
+    rightPowerRail: d.id('rightPowerRail'),
+    connector: d.id('connector'),
+    continuation: d.id('continuation'),
+  };
   const list: number[] = [];
   for (let c = d.firstChild[body.index]!; c !== -1; c = d.nextSibling[c]!) list.push(c);
   const children = Int32Array.from(list);

@@ -1,7 +1,7 @@
 // Reading the objects of a PLCopen LD body: positions, pins and the connections recorded on the
 // consumer side. No interpretation yet (see ldGraph.ts).
 import type { Point } from './geometry';
-import { deepText, nameIds, type XmlDoc, type XmlElement } from './xml/parse';
+import { deepText, type XmlDoc, type XmlElement } from './xml/parse';
 
 /** A wire as recorded on its consumer. Route points and pin offsets are not read: the grid is built
  * from the wiring (topology), and these files run to hundreds of thousands of wires. */
@@ -45,33 +45,33 @@ const NO_CONNECTIONS: readonly RawConnection[] = Object.freeze([]);
 
 type MutablePin = { -readonly [K in keyof RawPin]: RawPin[K] };
 
-/** The names a reader of LD objects looks for. */
-const NAMES = [
-  'position',
-  'x',
-  'y',
-  'connectionPointIn',
-  'connectionPointOut',
-  'connection',
-  'refLocalId',
-  'formalParameter',
-  'expression',
-  'variable',
-  'negated',
-  'edge',
-  'label',
-  'name',
-  'typeName',
-  'inputVariables',
-  'inOutVariables',
-  'outputVariables',
-  'content',
-  'addData',
-  'localId',
-  'width',
-  'height',
-  'executionOrderId',
-] as const;
+/** The ids of the names a reader of LD objects looks for (an object literal: its fields stay in the object). */
+const namesOf = (d: XmlDoc) => ({
+  position: d.id('position'),
+  x: d.id('x'),
+  y: d.id('y'),
+  connectionPointIn: d.id('connectionPointIn'),
+  connectionPointOut: d.id('connectionPointOut'),
+  connection: d.id('connection'),
+  refLocalId: d.id('refLocalId'),
+  formalParameter: d.id('formalParameter'),
+  expression: d.id('expression'),
+  variable: d.id('variable'),
+  negated: d.id('negated'),
+  edge: d.id('edge'),
+  label: d.id('label'),
+  name: d.id('name'),
+  typeName: d.id('typeName'),
+  inputVariables: d.id('inputVariables'),
+  inOutVariables: d.id('inOutVariables'),
+  outputVariables: d.id('outputVariables'),
+  content: d.id('content'),
+  addData: d.id('addData'),
+  localId: d.id('localId'),
+  width: d.id('width'),
+  height: d.id('height'),
+  executionOrderId: d.id('executionOrderId'),
+});
 
 class LdObject implements RawObject {
   constructor(
@@ -100,9 +100,9 @@ class LdObject implements RawObject {
 
 /** Reads the LD objects of one body from its document. */
 class Reader {
-  private readonly n: Readonly<Record<(typeof NAMES)[number], number>>;
+  private readonly n: ReturnType<typeof namesOf>;
   constructor(private readonly d: XmlDoc) {
-    this.n = nameIds(d, NAMES);
+    this.n = namesOf(d);
   }
 
   /** Negation and edge of a block pin (`<variable negated="true" edge="rising">`). */

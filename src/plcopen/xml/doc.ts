@@ -207,13 +207,3 @@ export function deepText(el: XmlElement): string {
 }
 
 /** Fast offset → line lookups for many findings in one file. */
-
-/** The ids of some names in a document (-1 for those it never uses), looked up once for a reader. */
-export function nameIds<const K extends string>(
-  doc: XmlDoc,
-  names: readonly K[],
-): Readonly<Record<K, number>> {
-  const out = {} as Record<K, number>;
-  for (const n of names) out[n] = doc.id(n);
-  return out;
-}

@@ -10,7 +10,7 @@ import { XmlDoc, type XmlElement } from './doc';
 import { decodeEntities } from './entities';
 import { NameTable, SMI_MASK } from './strings';
 
-export { child, childrenNamed, deepText, descend, nameIds, XmlDoc, XmlElement } from './doc';
+export { child, childrenNamed, deepText, descend, XmlDoc, XmlElement } from './doc';
 
 export class XmlSyntaxError extends Error {
   constructor(
