@@ -7,7 +7,7 @@
 import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import type { LdElement, VLink } from '../src/model/elements';
+import type { BoxElement, CoilType, ContactType, LdElement, VLink } from '../src/model/elements';
 import { newNetwork, newPou, newProject, variable } from '../src/model/factory';
 import { newId, type ElementId } from '../src/model/ids';
 import type { Network, Project, Variable } from '../src/model/project';
@@ -19,55 +19,47 @@ const COLS = 8;
 const links = (row: number, from: number, to: number): LdElement[] =>
   Array.from({ length: to - from }, (_, i) => ({ id: eid(), kind: 'link', row, col: from + i }));
 
+/** A contact into a block into a coil, on row 0 (the block's other pins take operands). */
+function blockNetwork(
+  rows: number,
+  contact: ContactType,
+  variable: string,
+  box: Pick<BoxElement, 'blockType' | 'instance' | 'inputs' | 'outputs'>,
+  coil: CoilType,
+  out: string,
+): Network {
+  const elements: LdElement[] = [
+    { id: eid(), kind: 'contact', contact, variable, row: 0, col: 0 },
+    { id: eid(), kind: 'box', row: 0, col: 1, ...box },
+    ...links(0, 3, COLS - 1),
+    { id: eid(), kind: 'coil', coil, variable: out, row: 0, col: COLS - 1 },
+  ];
+  return newNetwork({ rows, cols: COLS, elements, vlinks: [] });
+}
+
 function network(i: number): Network {
   const v = (k: number) => `X${(i * 7 + k) % 500}`;
   const out = `Y${i % 300}`;
+  if (i % 10 === 5)
+    return blockNetwork(
+      2,
+      'NO',
+      v(1),
+      { blockType: 'TON', instance: `T${i}`, inputs: { PT: 'T#500ms' }, outputs: {} },
+      'COIL',
+      out,
+    );
+  if (i % 10 === 9)
+    return blockNetwork(
+      3,
+      'P',
+      v(1),
+      { blockType: 'CTU', instance: `C${i}`, inputs: { R: v(2), PV: '10' }, outputs: { CV: `N${i % 50}` } },
+      'SET',
+      out,
+    );
   const elements: LdElement[] = [];
   const vlinks: VLink[] = [];
-  if (i % 10 === 5) {
-    elements.push({ id: eid(), kind: 'contact', contact: 'NO', variable: v(1), row: 0, col: 0 });
-    elements.push({
-      id: eid(),
-      kind: 'box',
-      blockType: 'TON',
-      instance: `T${i}`,
-      row: 0,
-      col: 1,
-      inputs: { PT: 'T#500ms' },
-      outputs: {},
-    });
-    elements.push(...links(0, 3, COLS - 1), {
-      id: eid(),
-      kind: 'coil',
-      coil: 'COIL',
-      variable: out,
-      row: 0,
-      col: COLS - 1,
-    });
-    return newNetwork({ rows: 2, cols: COLS, elements, vlinks });
-  }
-  if (i % 10 === 9) {
-    elements.push({ id: eid(), kind: 'contact', contact: 'P', variable: v(1), row: 0, col: 0 });
-    elements.push({
-      id: eid(),
-      kind: 'box',
-      blockType: 'CTU',
-      instance: `C${i}`,
-      row: 0,
-      col: 1,
-      inputs: { R: v(2), PV: '10' },
-      outputs: { CV: `N${i % 50}` },
-    });
-    elements.push(...links(0, 3, COLS - 1), {
-      id: eid(),
-      kind: 'coil',
-      coil: 'SET',
-      variable: out,
-      row: 0,
-      col: COLS - 1,
-    });
-    return newNetwork({ rows: 3, cols: COLS, elements, vlinks });
-  }
   // (A OR B) AND NOT C AND D -> coil, with a parallel reset coil.
   elements.push(
     { id: eid(), kind: 'contact', contact: 'NO', variable: v(1), row: 0, col: 0 },
