@@ -8,7 +8,7 @@ import { IO_PATH, MAX_FRAME_BYTES, type GatewayMessageBody } from '../protocol/m
 import type { Quality, WireValue } from '../protocol/points';
 import { resolveConfig, type ResolvedConfig } from './config';
 import type { Device, Values } from './device';
-import { IoHub } from './ioHub';
+import { IoHub, type ShutdownReport } from './ioHub';
 import { ModbusTcpDevice } from './modbusDevice';
 import { defaultHosts, defaultOrigins, hostAllowed, newToken, originAllowed } from './security';
 import { Session } from './session';
@@ -37,8 +37,11 @@ export interface RunningGateway {
   readonly url: string;
   readonly hub: IoHub;
   readonly simulated: SimulatedDevice | undefined;
-  /** Safe state on every device, then close everything. */
-  close(): Promise<void>;
+  /**
+   * Stops dispatching messages, writes the safe state as the last write on every device, then
+   * closes everything. Reports whether every device acknowledged the safe state.
+   */
+  close(): Promise<ShutdownReport>;
 }
 
 export async function startGateway(opts: GatewayOptions): Promise<RunningGateway> {
@@ -80,8 +83,10 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
     socket.end(`HTTP/1.1 ${status} ${text}\r\nConnection: close\r\nContent-Type: text/plain\r\nContent-Length: ${text.length + 1}\r\n\r\n${text}\n`);
   };
   let connections = 0;
+  let accepting = true;
   server.on('upgrade', (req: IncomingMessage, socket: Socket, head: Buffer) => {
     socket.on('error', () => socket.destroy());
+    if (!accepting) return reject(socket, 503, 'Service Unavailable');
     const path = (req.url ?? '').split('?')[0];
     if (path !== IO_PATH) return reject(socket, 404, 'Not Found');
     if (!hostAllowed(req.headers.host, allowedHosts)) return reject(socket, 403, 'Forbidden');
@@ -115,14 +120,20 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
   allowedHosts = new Set([...defaultHosts(port), ...config.allowedHosts].map((h) => h.toLowerCase()));
   allowedOrigins = new Set([...defaultOrigins(port), ...config.allowedOrigins].map((o) => o.toLowerCase().replace(/\/$/, '')));
 
-  let closing: Promise<void> | undefined;
+  let closing: Promise<ShutdownReport> | undefined;
   const close = () =>
     (closing ??= (async () => {
-      await hub.shutdown();
+      // 1. Nothing more is dispatched or accepted: no `outputs` can follow the safe write.
+      accepting = false;
+      for (const s of sessions) s.silence();
+      // 2. The safe image as the last write on every device.
+      const report = await hub.shutdown();
+      // 3. Then the connections.
       for (const c of wss.clients) c.close(1001, 'gateway shutting down');
       wss.close();
       server.closeAllConnections();
       await new Promise<void>((ok) => server.close(() => ok()));
+      return report;
     })());
 
   return { port, token, url: `http://127.0.0.1:${port}/#token=${token}`, hub, simulated, close };

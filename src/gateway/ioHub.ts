@@ -1,5 +1,12 @@
 // The gateway's I/O image and safety logic: one controller lease, the watchdog, the safe state.
-import type { DeviceStatus, StatusMessage, WatchdogInfo } from '../protocol/messages';
+//
+// Armed or disarmed is one latch for the whole gateway. It starts disarmed; only the controller's
+// `arm` sets it (refused while a device is not online), and everything that can leave a machine in
+// an unknown state clears it: STOP, the watchdog, the controller's connection closing, a device
+// losing its connection or going offline, shutdown. While disarmed every device keeps the safe image
+// as its desired state (written on every poll and reconnect until acknowledged) and `outputs` are
+// refused, so nothing re-energises an output without a deliberate arm.
+import type { DeviceStatus, DisarmCause, DisarmInfo, StatusMessage, WatchdogInfo } from '../protocol/messages';
 import { valueFits, zeroOf, type PointInfo, type Quality, type WireValue } from '../protocol/points';
 import type { Device, Values } from './device';
 import type { DevicePoint } from './pointMap';
@@ -19,24 +26,38 @@ interface Bound {
 
 /** Why a set of values was refused: the protocol error code and plain words. */
 export interface Refusal {
-  readonly code: 'unknown-address' | 'not-output' | 'not-input' | 'not-simulated' | 'bad-value';
+  readonly code: 'unknown-address' | 'not-output' | 'not-input' | 'not-simulated' | 'bad-value' | 'arm-refused' | 'shutting-down';
   readonly message: string;
 }
 
-/** How long a safe-state write may take before shutdown goes on without it. */
+/** How long STOP waits for the devices to acknowledge the safe state before answering (it is retried after). */
 const SAFE_STATE_WAIT_MS = 2000;
+/** How long shutdown keeps retrying the last safe write on a device that is slow or unreachable. */
+export const SHUTDOWN_SAFE_DEADLINE_MS = 4000;
+
+/** The outcome of shutdown: whether every device acknowledged the safe image as its last write. */
+export interface ShutdownReport {
+  readonly safe: boolean;
+  readonly devices: readonly { readonly id: string; readonly acknowledged: boolean; readonly error: string | null }[];
+}
 
 export class IoHub {
   readonly points: ReadonlyMap<string, Bound>;
   private controllerSession: string | null = null;
-  private armed = true;
+  private armed = false;
+  private disarmInfo: DisarmInfo | null = {
+    cause: 'start',
+    message: 'the gateway started with every output in the safe state; press Run (or Arm) as controller to drive outputs',
+    at: Date.now(),
+  };
   private watchdogState: WatchdogInfo['state'] = 'idle';
   private timer: NodeJS.Timeout | undefined;
-  private tripRefusalSent = false;
+  private refusalSent = false;
+  private closing = false;
 
   constructor(
     readonly devices: readonly Device[],
-    private readonly opts: { watchdogMs: number; autoRearm: boolean },
+    private readonly opts: { watchdogMs: number; autoRearm: boolean; shutdownDeadlineMs?: number },
     private readonly listener: HubListener,
   ) {
     const map = new Map<string, Bound>();
@@ -54,7 +75,10 @@ export class IoHub {
         inputs: (v, q) => this.listener.inputs(v, q),
         written: (v) => this.listener.written(v),
         status: () => this.listener.status(),
+        lost: (reason) => this.deviceLost(d, reason),
       });
+      // Nothing is driven before an arm: whatever a previous run left on the outputs is switched off.
+      void d.safe(0);
     }
   }
 
@@ -82,18 +106,28 @@ export class IoHub {
   }
 
   status(): Omit<StatusMessage, 'v' | 't'> {
-    const devices: DeviceStatus[] = this.devices.map((d) => ({ id: d.info.id, state: d.state, error: d.error }));
+    const devices: DeviceStatus[] = this.devices.map((d) => ({ id: d.info.id, state: d.state, error: d.error, outputs: d.outputsState() }));
     return {
       devices,
       armed: this.armed,
+      disarm: this.armed ? null : this.disarmInfo,
       watchdog: { ms: this.opts.watchdogMs, state: this.watchdogState, autoRearm: this.opts.autoRearm },
       controller: this.controllerSession !== null,
     };
   }
 
+  get isArmed(): boolean {
+    return this.armed;
+  }
+
+  /** Why outputs are refused right now, in plain words. */
+  disarmReason(): string {
+    return this.disarmInfo?.message ?? 'outputs are disarmed';
+  }
+
   /** Grants the controller lease if it is free; returns the role the session gets. */
   claim(session: string, wanted: 'controller' | 'observer'): 'controller' | 'observer' {
-    if (wanted === 'controller' && this.controllerSession === null) {
+    if (wanted === 'controller' && this.controllerSession === null && !this.closing) {
       this.controllerSession = session;
       this.listener.status();
       return 'controller';
@@ -129,18 +163,20 @@ export class IoHub {
   }
 
   /**
-   * The controller's output image of one scan, also its heartbeat. Returns a refusal when the
-   * gateway is disarmed after a watchdog trip (once per trip, so a running scan is not flooded).
+   * The controller's output image of one scan, also its heartbeat. Refused while disarmed (the
+   * refusal is reported once per disarm, so a running scan is not flooded) and during shutdown.
    */
-  outputs(values: ReadonlyMap<string, WireValue>): 'ok' | 'disarmed' | 'silently-disarmed' {
+  outputs(values: ReadonlyMap<string, WireValue>): 'ok' | 'disarmed' | 'silently-disarmed' | 'shutting-down' {
+    if (this.closing) return 'shutting-down';
     if (!this.armed) {
-      if (!this.opts.autoRearm) {
-        if (this.tripRefusalSent) return 'silently-disarmed';
-        this.tripRefusalSent = true;
+      const rearm = this.opts.autoRearm && this.disarmInfo?.cause === 'watchdog' && this.devicesDown().length === 0;
+      if (!rearm) {
+        if (this.refusalSent) return 'silently-disarmed';
+        this.refusalSent = true;
         return 'disarmed';
       }
-      this.armed = true;
-      this.listener.log('watchdog: re-armed automatically by new outputs');
+      this.setArmed();
+      this.listener.log('watchdog: re-armed automatically by new outputs (autoRearm)');
     }
     const perDevice = new Map<Device, Map<string, WireValue>>();
     for (const [a, v] of values) {
@@ -150,78 +186,113 @@ export class IoHub {
       m.set(a, v);
       perDevice.set(b.device, m);
     }
-    for (const d of this.devices) void d.setOutputs(perDevice.get(d) ?? new Map(), true);
+    for (const d of this.devices) d.drive(perDevice.get(d) ?? new Map());
     this.feed();
     return 'ok';
   }
 
-  /** Controller STOP: safe state first, then stop writing. The lease stays with the controller. */
+  /** Controller STOP (or the Safe state button): safe state, latched until `arm`. The lease stays with the controller. */
   async stop(reason: string): Promise<void> {
-    this.clearWatchdog('idle');
-    this.listener.log(`safe state: ${reason}`);
-    await this.safeState();
-    this.listener.status();
+    this.disarm('stop', `STOP (${reason}): outputs are held in the safe state until the controller arms again (Run or Arm)`);
+    await this.waitSafe(SAFE_STATE_WAIT_MS);
   }
 
-  arm(): void {
-    this.armed = true;
-    this.tripRefusalSent = false;
-    if (this.watchdogState === 'tripped') this.watchdogState = 'idle';
-    this.listener.status();
+  /** The controller's deliberate re-arm; refused while a device is not online (it could be restarting). */
+  arm(): Refusal | null {
+    if (this.closing) return { code: 'shutting-down', message: 'the gateway is shutting down' };
+    const down = this.devicesDown();
+    if (down.length > 0) {
+      const d = down[0]!;
+      return {
+        code: 'arm-refused',
+        message: `device "${d.info.id}" is ${d.state}${d.error ? ` (${d.error})` : ''}: outputs stay in the safe state; arm again when it is online`,
+      };
+    }
+    if (!this.armed) {
+      this.setArmed();
+      this.listener.log('outputs armed by the controller');
+    }
+    return null;
   }
 
   /** The controller's connection closed: safe state, lease free for the next controller. */
   async release(session: string): Promise<void> {
     if (this.controllerSession !== session) return;
     this.controllerSession = null;
-    const wasFed = this.watchdogState === 'fed';
-    if (wasFed) await this.stop('controller disconnected');
-    else this.listener.status();
+    this.disarm('controller-lost', 'the controller disconnected: outputs are held in the safe state until a controller arms again');
+    await this.waitSafe(SAFE_STATE_WAIT_MS);
   }
 
-  /** Shutdown: safe state on every device, then close them. */
-  async shutdown(): Promise<void> {
-    this.clearWatchdog(this.watchdogState === 'tripped' ? 'tripped' : 'idle');
-    await this.safeState();
+  /**
+   * Shutdown: refuse everything from now on, then write the safe image as the last write on every
+   * device (retried until the deadline), then close them. Reports whether every device acknowledged.
+   */
+  async shutdown(): Promise<ShutdownReport> {
+    if (!this.closing) {
+      this.closing = true;
+      this.disarm('shutdown', 'the gateway is shutting down: outputs are in the safe state');
+    }
+    const deadline = this.opts.shutdownDeadlineMs ?? SHUTDOWN_SAFE_DEADLINE_MS;
+    const acked = await Promise.all(this.devices.map((d) => d.finalSafe(deadline).catch(() => false)));
     await Promise.all(this.devices.map((d) => d.close()));
+    const devices = this.devices.map((d, i) => ({ id: d.info.id, acknowledged: acked[i] === true, error: d.error }));
+    return { safe: devices.every((d) => d.acknowledged), devices };
   }
 
-  /** Every output OFF/0 unless configured `hold`; written once, then writing stops. */
-  async safeState(): Promise<void> {
-    const writes = this.devices.map((d) => {
-      const safe = new Map<string, WireValue>();
-      for (const p of d.points) {
-        if (p.dir !== 'out') continue;
-        safe.set(p.address, p.hold ? (d.writtenValues().get(p.address) ?? zeroOf(p.type)) : zeroOf(p.type));
-      }
-      return d.setOutputs(safe, false);
-    });
-    let timer: NodeJS.Timeout | undefined;
-    await Promise.race([Promise.allSettled(writes), new Promise((r) => (timer = setTimeout(r, SAFE_STATE_WAIT_MS)))]);
-    clearTimeout(timer);
+  private setArmed(): void {
+    this.armed = true;
+    this.disarmInfo = null;
+    this.refusalSent = false;
+    if (this.watchdogState === 'tripped') this.watchdogState = 'idle';
+    this.listener.status();
+  }
+
+  /**
+   * Clears the latch and makes the safe image every device's desired state. The first cause is kept
+   * while already disarmed (it is why the outputs are off).
+   */
+  private disarm(cause: DisarmCause, message: string): void {
+    const wasArmed = this.armed;
+    clearTimeout(this.timer);
+    this.timer = undefined;
+    if (cause === 'watchdog') this.watchdogState = 'tripped';
+    else if (this.watchdogState === 'fed') this.watchdogState = 'idle';
+    this.armed = false;
+    if (wasArmed || cause === 'shutdown') {
+      this.disarmInfo = { cause, message, at: Date.now() };
+      this.refusalSent = false;
+      this.listener.log(`disarmed (${cause}): ${message}`);
+    }
+    for (const d of this.devices) void d.safe(0);
+    this.listener.status();
+  }
+
+  private deviceLost(d: Device, reason: string): void {
+    if (this.closing) return;
+    if (this.armed) {
+      this.disarm('device-lost', `device "${d.info.id}" lost its connection (${reason}); it may have restarted, so its outputs are not written again until the controller arms`);
+    } else this.listener.status();
+  }
+
+  private devicesDown(): Device[] {
+    return this.devices.filter((d) => d.state !== 'online');
+  }
+
+  private async waitSafe(ms: number): Promise<void> {
+    await Promise.allSettled(this.devices.map((d) => d.safe(ms)));
   }
 
   private feed(): void {
     if (this.timer) this.timer.refresh();
-    else this.timer = setTimeout(() => void this.trip(), this.opts.watchdogMs);
+    else this.timer = setTimeout(() => this.trip(), this.opts.watchdogMs);
     if (this.watchdogState !== 'fed') {
       this.watchdogState = 'fed';
       this.listener.status();
     }
   }
 
-  private clearWatchdog(next: WatchdogInfo['state']): void {
-    clearTimeout(this.timer);
+  private trip(): void {
     this.timer = undefined;
-    this.watchdogState = next;
-  }
-
-  private async trip(): Promise<void> {
-    this.clearWatchdog('tripped');
-    this.armed = false;
-    this.tripRefusalSent = false;
-    this.listener.log(`watchdog: no outputs for ${this.opts.watchdogMs} ms, safe state written, disarmed until "arm"`);
-    this.listener.status();
-    await this.safeState();
+    this.disarm('watchdog', `watchdog: no outputs from the controller for ${this.opts.watchdogMs} ms (tab paused, starved or crashed): outputs are held in the safe state until the controller arms`);
   }
 }

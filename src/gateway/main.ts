@@ -6,6 +6,10 @@ import { fileURLToPath } from 'node:url';
 import { loadConfigFile, resolveConfig, type ResolvedConfig } from './config';
 import { ConfigError } from './configTypes';
 import { startGateway, type RunningGateway } from './gateway';
+import { SHUTDOWN_SAFE_DEADLINE_MS } from './ioHub';
+
+/** Exit status when a device did not acknowledge the safe state at shutdown. */
+const SAFE_STATE_UNCONFIRMED = 3;
 
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
 
@@ -85,13 +89,26 @@ async function main(): Promise<void> {
   const shutdown = async (why: string, code: number) => {
     if (exiting) return;
     exiting = true;
-    log(`${why}: writing the safe state, then exiting`);
-    const hardStop = setTimeout(() => process.exit(code || 1), 5000);
+    log(`${why}: stopping, writing the safe state as the last write, then exiting`);
+    // Past the safe write's own deadline: the process must end even if a device never answers.
+    const hardStop = setTimeout(() => {
+      log('shutdown did not finish: exiting WITHOUT confirmation that the outputs are in the safe state');
+      process.exit(SAFE_STATE_UNCONFIRMED);
+    }, SHUTDOWN_SAFE_DEADLINE_MS + 3000);
+    let exitCode = code;
     try {
-      await running.gw?.close();
+      const report = await running.gw?.close();
+      for (const d of report?.devices ?? []) {
+        if (d.acknowledged) log(`device "${d.id}": safe state written and acknowledged`);
+        else log(`device "${d.id}": safe state NOT confirmed${d.error ? ` (${d.error})` : ''}: its outputs may still be ON; check the device (its own communication watchdog should switch them off)`);
+      }
+      if (report && !report.safe) exitCode = SAFE_STATE_UNCONFIRMED;
+    } catch (e) {
+      log(`shutdown failed: ${e instanceof Error ? e.message : String(e)}`);
+      exitCode = SAFE_STATE_UNCONFIRMED;
     } finally {
       clearTimeout(hardStop);
-      process.exit(code);
+      process.exit(exitCode);
     }
   };
   process.on('SIGINT', () => void shutdown('SIGINT', 0));

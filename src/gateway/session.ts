@@ -32,6 +32,7 @@ export class Session {
   private readonly limiter = new RateLimiter(MESSAGES_PER_SECOND);
   private readonly helloTimer: NodeJS.Timeout;
   private closed = false;
+  private silenced = false;
 
   constructor(
     readonly id: string,
@@ -73,7 +74,7 @@ export class Session {
   }
 
   private receive(data: Buffer | Buffer[] | ArrayBuffer, isBinary: boolean): void {
-    if (this.closed) return;
+    if (this.closed || this.silenced) return;
     if (!this.limiter.take()) {
       this.ctx.log(`session ${this.id}: closed for flooding (over ${MESSAGES_PER_SECOND} messages/s)`);
       this.refuseAndClose('flood', `more than ${MESSAGES_PER_SECOND} messages per second`, null);
@@ -159,14 +160,22 @@ export class Session {
       this.refuse('not-controller', `"${msg.t}" needs the controller lease; this session is an observer`, ref);
       return;
     }
-    if (msg.t === 'stop') return hub.stop('controller sent stop');
-    if (msg.t === 'arm') return hub.arm();
+    if (msg.t === 'stop') return hub.stop('the controller sent stop');
+    if (msg.t === 'arm') {
+      const refused = hub.arm();
+      if (refused) this.refuse(refused.code, refused.message, ref);
+      return;
+    }
     const checked = hub.check(msg.values, 'out', false);
     if (!(checked instanceof Map)) return this.refuse(checked.code, checked.message, ref);
     const result = hub.outputs(checked);
-    if (result === 'disarmed') {
-      this.refuse('disarmed', 'outputs are held in the safe state after a watchdog trip; send "arm" to resume', ref);
-    }
+    if (result === 'disarmed') this.refuse('disarmed', `outputs refused: ${hub.disarmReason()}`, ref);
+    else if (result === 'shutting-down') this.refuse('shutting-down', 'the gateway is shutting down; outputs are in the safe state', ref);
+  }
+
+  /** Shutdown: no message is dispatched any more (the safe write must be the last write). */
+  silence(): void {
+    this.silenced = true;
   }
 
   private closeDown(): void {

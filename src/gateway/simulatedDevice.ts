@@ -1,8 +1,9 @@
 // The built-in simulated I/O device: 16 DI, 16 DO, 4 AI, 4 AO on the OpenPLC default map, also
 // served as a Modbus TCP server on loopback so mbpoll or a plant simulator can drive its inputs.
 import type { AddressInfo, Server } from 'node:net';
+import type { DeviceOutputs } from '../protocol/messages';
 import type { Quality, WireValue } from '../protocol/points';
-import type { Device, DeviceListener, Values } from './device';
+import { safeImage, type Device, type DeviceListener, type Values } from './device';
 import { freeLoopbackPort, ModbusServer } from './modbusLib';
 import { expandPoints, type DevicePoint } from './pointMap';
 
@@ -32,6 +33,8 @@ export class SimulatedDevice implements Device {
   private readonly values = new Map<string, WireValue>(SIM_POINTS.map((p) => [p.address, p.type === 'BOOL' ? false : 0]));
   private readonly byTable = new Map<string, DevicePoint>(SIM_POINTS.map((p) => [`${p.table}:${p.register}`, p]));
   private listener: DeviceListener | undefined;
+  private mode: 'drive' | 'safe' = 'safe';
+  private final = false;
   private server: ModbusServer | undefined;
   private port: number | undefined;
 
@@ -72,14 +75,43 @@ export class SimulatedDevice implements Device {
     if (changed.size) this.listener?.inputs(changed, new Map([...changed.keys()].map((a) => [a, 'good' as const])));
   }
 
-  setOutputs(values: Values): Promise<void> {
+  outputsState(): DeviceOutputs {
+    return this.mode === 'drive' ? 'driven' : 'safe';
+  }
+
+  drive(values: Values): void {
+    if (this.final) return;
+    if (this.mode !== 'drive') {
+      this.mode = 'drive';
+      this.listener?.status();
+    }
+    this.writeOutputs(values);
+  }
+
+  /** In-process: the safe image is on the device as soon as it is asked for. */
+  safe(): Promise<boolean> {
+    if (this.mode !== 'safe') {
+      this.mode = 'safe';
+      this.writeOutputs(safeImage(this.points, this.writtenValues(), (p) => (p.type === 'BOOL' ? false : 0)));
+      this.listener?.status();
+    }
+    return Promise.resolve(true);
+  }
+
+  finalSafe(): Promise<boolean> {
+    const acked = this.safe();
+    this.final = true;
+    return acked;
+  }
+
+  private writeOutputs(values: Values): void {
     const changed = new Map<string, WireValue>();
     for (const [address, value] of values) {
+      if (!address.startsWith('%Q') || !this.values.has(address)) continue;
       if (this.values.get(address) !== value) changed.set(address, value);
       this.values.set(address, value);
     }
     if (changed.size) this.listener?.written(changed);
-    return Promise.resolve();
   }
 
   async close(): Promise<void> {
@@ -99,7 +131,7 @@ export class SimulatedDevice implements Device {
     throw ILLEGAL_ADDRESS;
   }
 
-  private drive(table: 'discreteInputs' | 'inputRegisters', register: number, value: WireValue): void {
+  private driveInput(table: 'discreteInputs' | 'inputRegisters', register: number, value: WireValue): void {
     const p = this.byTable.get(`${table}:${register}`);
     if (!p) throw ILLEGAL_ADDRESS;
     this.setInputs(new Map([[p.address, value]]));
@@ -115,11 +147,11 @@ export class SimulatedDevice implements Device {
       getHoldingRegister: (addr: number) => word(this.read('holdingRegisters', addr)),
       setCoil: (addr: number, value: boolean) => {
         if (addr < SIM_INPUT_COIL_BASE) throw this.byTable.has(`coils:${addr}`) ? ILLEGAL_FUNCTION : ILLEGAL_ADDRESS;
-        this.drive('discreteInputs', addr - SIM_INPUT_COIL_BASE, value);
+        this.driveInput('discreteInputs', addr - SIM_INPUT_COIL_BASE, value);
       },
       setRegister: (addr: number, value: number) => {
         if (addr < SIM_INPUT_REGISTER_BASE) throw this.byTable.has(`holdingRegisters:${addr}`) ? ILLEGAL_FUNCTION : ILLEGAL_ADDRESS;
-        this.drive('inputRegisters', addr - SIM_INPUT_REGISTER_BASE, value & 0xffff);
+        this.driveInput('inputRegisters', addr - SIM_INPUT_REGISTER_BASE, value & 0xffff);
       },
     };
     return new Promise((resolve, reject) => {

@@ -61,7 +61,19 @@ export const deviceInfoSchema = z.object({
   target: z.string(),
 });
 export type DeviceInfo = z.infer<typeof deviceInfoSchema>;
-export const deviceStatusSchema = z.object({ id: z.string(), state: deviceStateSchema, error: z.string().nullable() });
+/**
+ * What the gateway keeps on a device's outputs: `driven` the controller's image (armed); `safe` the
+ * safe image, acknowledged by the device; `safe-pending` the safe image is wanted but the device has
+ * not acknowledged it yet (unreachable, slow or refusing): it is retried on every poll and reconnect.
+ */
+export const deviceOutputsSchema = z.enum(['driven', 'safe', 'safe-pending']);
+export type DeviceOutputs = z.infer<typeof deviceOutputsSchema>;
+export const deviceStatusSchema = z.object({
+  id: z.string(),
+  state: deviceStateSchema,
+  error: z.string().nullable(),
+  outputs: deviceOutputsSchema,
+});
 export type DeviceStatus = z.infer<typeof deviceStatusSchema>;
 /** `idle`: no lease running (no outputs yet, or stopped); `fed`: outputs arriving; `tripped`: lease expired. */
 export const watchdogSchema = z.object({ ms: z.number().int(), state: z.enum(['idle', 'fed', 'tripped']), autoRearm: z.boolean() });
@@ -79,11 +91,30 @@ export const imageSchema = z.object({ v, t: z.literal('image'), seq, values, qua
 export const inputsSchema = z.object({ v, t: z.literal('inputs'), seq, values, quality });
 /** Extension of v1: output values as last written to the device, when they change (observers see outputs live). */
 export const writtenSchema = z.object({ v, t: z.literal('written'), seq, values });
+/**
+ * Why the outputs are disarmed (held in the safe state until a controller sends `arm`):
+ * `start` no controller has armed since the gateway started; `stop` the controller sent stop (STOP
+ * or the Safe state button); `watchdog` the lease expired; `controller-lost` the controller's
+ * connection closed; `device-lost` a device's connection was lost or it went offline (it may have
+ * restarted: its outputs are never re-written without an arm); `shutdown` the gateway is exiting.
+ */
+export const DISARM_CAUSES = ['start', 'stop', 'watchdog', 'controller-lost', 'device-lost', 'shutdown'] as const;
+export type DisarmCause = (typeof DISARM_CAUSES)[number];
+export const disarmSchema = z.object({
+  cause: z.enum(DISARM_CAUSES),
+  /** Plain words for the Hardware panel: what happened and what to do. */
+  message: z.string(),
+  /** Wall-clock time of the disarm (ms since 1970). */
+  at: z.number(),
+});
+export type DisarmInfo = z.infer<typeof disarmSchema>;
 export const statusSchema = z.object({
   v,
   t: z.literal('status'),
   devices: z.array(deviceStatusSchema),
   armed: z.boolean(),
+  /** Why the outputs are disarmed; null while armed. */
+  disarm: disarmSchema.nullable(),
   watchdog: watchdogSchema,
   /** Whether some session holds the controller lease. */
   controller: z.boolean(),
@@ -102,7 +133,9 @@ export const ERROR_CODES = [
   'not-simulated',
   'bad-value',
   'disarmed',
+  'arm-refused',
   'flood',
+  'shutting-down',
 ] as const;
 export type ErrorCode = (typeof ERROR_CODES)[number];
 export const errorSchema = z.object({

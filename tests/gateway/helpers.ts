@@ -121,6 +121,35 @@ export class TestClient {
     return c;
   }
 
+  /**
+   * A controller that has armed the outputs (the gateway starts disarmed): waits until every device
+   * is online, sends `arm` and waits for the armed status.
+   */
+  static async armedController(port: number, token: string): Promise<TestClient> {
+    const c = await TestClient.hello(port, token, 'controller');
+    await c.arm();
+    return c;
+  }
+
+  /** Sends `arm` once every device is online and resolves when the gateway says it is armed. */
+  async arm(timeoutMs = 5000): Promise<void> {
+    await this.waitFor((m) => m.t === 'status' && m.devices.every((d) => d.state === 'online'), timeoutMs);
+    const from = this.messages.length;
+    this.send({ t: 'arm' });
+    await this.waitFor((m) => (m.t === 'status' && m.armed) || (m.t === 'error' && m.code === 'arm-refused'), timeoutMs, from).then((m) => {
+      if (m.t === 'error') throw new Error(`arm refused: ${m.message}`);
+    });
+  }
+
+  /** The newest status message. */
+  lastStatus(): Extract<GatewayMessage, { t: 'status' }> | undefined {
+    for (let i = this.messages.length - 1; i >= 0; i--) {
+      const m = this.messages[i];
+      if (m?.t === 'status') return m;
+    }
+    return undefined;
+  }
+
   send(body: Record<string, unknown>): void {
     this.ws.send(JSON.stringify({ v: 1, ...body }));
   }

@@ -10,7 +10,7 @@ describe('controller lease', () => {
 
   it('with autoRearm, new outputs after a watchdog trip resume without "arm"', async () => {
     gw = await startGateway({ port: 0, config: resolveConfig({ watchdogMs: 200, autoRearm: true, simulated: { modbusPort: null } }), distDir: null });
-    const c = await TestClient.hello(gw.port, gw.token, 'controller');
+    const c = await TestClient.armedController(gw.port, gw.token);
     c.send({ t: 'outputs', seq: 1, values: { '%QX0.0': true } });
     await c.waitFor((m) => m.t === 'status' && m.watchdog.state === 'tripped' && !m.armed);
     expect(gw.simulated?.writtenValues().get('%QX0.0')).toBe(false);
@@ -25,7 +25,7 @@ describe('controller lease', () => {
 
   it('without autoRearm, a trip stays until a controller re-arms, even across reconnects', async () => {
     gw = await startGateway({ port: 0, config: resolveConfig({ watchdogMs: 200, simulated: { modbusPort: null } }), distDir: null });
-    const first = await TestClient.hello(gw.port, gw.token, 'controller');
+    const first = await TestClient.armedController(gw.port, gw.token);
     first.send({ t: 'outputs', seq: 1, values: { '%QX0.1': true, '%QW0': 500 } });
     await first.waitFor((m) => m.t === 'status' && m.watchdog.state === 'tripped');
     expect(gw.simulated?.writtenValues().get('%QW0')).toBe(0);

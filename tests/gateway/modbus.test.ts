@@ -45,7 +45,7 @@ describe('gateway with a Modbus TCP device', () => {
   });
 
   it('welcomes a controller with the configured points of the device', async () => {
-    const c = await TestClient.hello(gw.port, gw.token, 'controller');
+    const c = await TestClient.armedController(gw.port, gw.token);
     const welcome = c.messages.find((m) => m.t === 'welcome');
     expect(welcome).toMatchObject({ role: 'controller', devices: [{ id: 'plant', kind: 'modbus-tcp' }] });
     expect(welcome?.t === 'welcome' && welcome.points.map((p) => p.address)).toEqual([
@@ -61,7 +61,7 @@ describe('gateway with a Modbus TCP device', () => {
   });
 
   it('reads inputs the Modbus server changes and writes outputs into its coils and registers', async () => {
-    const c = await TestClient.hello(gw.port, gw.token, 'controller');
+    const c = await TestClient.armedController(gw.port, gw.token);
     await eventually(() => c.messages.some((m) => m.t === 'status' && m.devices[0]?.state === 'online'), 3000, 'device online');
     await plant.set('di', 3, [1]);
     await plant.set('ir', 1, [65535]); // -1 as INT
@@ -78,7 +78,7 @@ describe('gateway with a Modbus TCP device', () => {
   });
 
   it('rewrites the outputs every poll, so a coupler that lost them gets them back', async () => {
-    const c = await TestClient.hello(gw.port, gw.token, 'controller');
+    const c = await TestClient.armedController(gw.port, gw.token);
     c.send({ t: 'outputs', seq: 1, values: { '%QX0.2': true } });
     await eventually(async () => (await plant.get('co', 2, 1))[0] === 1, 3000, 'coil on');
     await plant.set('co', 2, [0]); // the coupler restarted and cleared its coils
@@ -94,7 +94,7 @@ describe('gateway with a Modbus TCP device', () => {
   });
 
   it('drives every coil to 0 when the lease expires, except hold points, and stays disarmed until arm', async () => {
-    const c = await TestClient.hello(gw.port, gw.token, 'controller');
+    const c = await TestClient.armedController(gw.port, gw.token);
     c.send({ t: 'arm' });
     c.send({ t: 'outputs', seq: 10, values: { '%QX0.0': true, '%QX0.1': true, '%QX0.7': true, '%QX1.0': true, '%QW0': 7 } });
     await eventually(async () => (await plant.get('co', 0, 9)).join() === '1,1,0,0,0,0,0,1,1', 3000, 'coils on');

@@ -68,7 +68,7 @@ describe('gateway security', () => {
   });
 
   it('gives the lease to one controller: a second controller becomes observer, and observers cannot write', async () => {
-    const first = await TestClient.hello(gw.port, gw.token, 'controller');
+    const first = await TestClient.armedController(gw.port, gw.token);
     const second = await TestClient.hello(gw.port, gw.token, 'controller');
     expect(first.messages.find((m) => m.t === 'welcome')).toMatchObject({ role: 'controller' });
     expect(second.messages.find((m) => m.t === 'welcome')).toMatchObject({ role: 'observer' });
@@ -99,7 +99,7 @@ describe('gateway security', () => {
   });
 
   it('answers 1,000 malformed or hostile messages with refusals and keeps serving the good client', async () => {
-    const good = await TestClient.hello(gw.port, gw.token, 'controller');
+    const good = await TestClient.armedController(gw.port, gw.token);
     const hostile = await TestClient.hello(gw.port, gw.token, 'observer');
     const huge = JSON.stringify({ v: 1, t: 'outputs', seq: 1, values: { '%QX0.0': true }, pad: 'x'.repeat(70 * 1024) });
     const attacks: (string | Buffer)[] = [

@@ -31,7 +31,7 @@ describe('rungsmith-gateway process', () => {
     expect(m).not.toBeNull();
     const [port, token] = [Number(m?.[2]), m?.[3] ?? ''];
 
-    const c = await TestClient.hello(port, token, 'controller');
+    const c = await TestClient.armedController(port, token);
     c.send({ t: 'outputs', seq: 1, values: { '%QX0.0': true, '%QX0.2': true, '%QW0': 99 } });
     await eventually(async () => (await plant!.get('co', 0, 4)).join() === '1,0,1,0', 5000, 'coils on');
     const exited = new Promise<number | null>((resolve) => proc.once('exit', (code) => resolve(code)));

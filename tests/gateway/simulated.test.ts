@@ -35,7 +35,7 @@ describe('simulated I/O device', () => {
   });
 
   it('shows the controller outputs to mbpoll as coils and holding registers, and refuses outside writes to them', async () => {
-    const c = await TestClient.hello(gw.port, gw.token, 'controller');
+    const c = await TestClient.armedController(gw.port, gw.token);
     c.send({ t: 'outputs', seq: 1, values: { '%QX0.0': true, '%QX0.3': true, '%QW1': 777 } });
     await eventually(() => c.values()['%QX0.3'] === true, 3000, 'written');
     expect(mbpollValues(await mbpoll(simPort, ['-t', '0', '-r', '0', '-c', '4', '127.0.0.1']))).toEqual([1, 0, 0, 1]);

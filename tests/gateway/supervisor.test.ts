@@ -41,11 +41,15 @@ describe('Modbus TCP supervisor', () => {
     const c = await TestClient.hello(gw.port, gw.token, 'observer');
     const offline = await c.waitFor((m) => m.t === 'status' && m.devices[0]?.state === 'offline', 5000);
     expect(offline.t === 'status' && offline.devices[0]?.error).toMatch(/ECONNREFUSED/);
-    // Outputs still go through the lease logic; the safe state is attempted without hanging.
+    // An offline device cannot be armed (it could come back restarted); outputs are refused.
     const ctl = await TestClient.hello(gw.port, gw.token, 'controller');
-    ctl.send({ t: 'outputs', seq: 1, values: { '%QX0.0': true } });
-    ctl.send({ t: 'stop', seq: 2 });
-    await ctl.waitFor((m) => m.t === 'status' && m.watchdog.state === 'idle' && m.controller, 5000, 3);
+    ctl.send({ t: 'arm', seq: 1 });
+    const refused = await ctl.waitFor((m) => m.t === 'error', 5000);
+    expect(refused).toMatchObject({ code: 'arm-refused', ref: 1 });
+    expect(refused.t === 'error' && refused.message).toMatch(/device "io" is offline/);
+    ctl.send({ t: 'outputs', seq: 2, values: { '%QX0.0': true } });
+    expect(await ctl.waitFor((m) => m.t === 'error' && m.ref === 2, 5000)).toMatchObject({ code: 'disarmed' });
+    expect(ctl.lastStatus()).toMatchObject({ armed: false, disarm: { cause: 'start' }, devices: [{ outputs: 'safe-pending' }] });
     c.close();
     ctl.close();
   });
