@@ -93,6 +93,47 @@ export interface PlcOptions {
   readonly maxScanMs?: number;
 }
 
+/**
+ * A piece of a PLC's state that an online change can keep: a function block instance (matched by
+ * its declared name) or the edge memory of a |P| |N| contact or (P) (N) coil (matched by the
+ * element's id in the document), never by position.
+ */
+export interface StateItem {
+  readonly kind: 'fb' | 'edge';
+  /** Identity: the instance name in upper case, or the element id. */
+  readonly key: string;
+  /** The FB type (TON), or the element's symbol: `|P|`, `|N|`, `(P)`, `(N)`. */
+  readonly type: string;
+  /** Edge elements: the variable (or `Instance.Pin`, bit) the element reads or writes. */
+  readonly operand?: string;
+  /** Edge elements: 0-based network index. */
+  readonly network?: number;
+  /** As the user knows it: `T3`, `|P| Start in network 2`. */
+  readonly label: string;
+}
+
+/**
+ * FB instances and edge memories of a PLC, taken at a scan boundary. Plain numbers and booleans
+ * (structured-clone and JSON safe). Time fields of timers (START_TIME) are relative to the time the
+ * next scan would start at (negative: in the past), so they carry exactly to another PLC clock.
+ */
+export interface PlcState {
+  readonly fbs: readonly { readonly item: StateItem; readonly fields: Readonly<Record<string, number | boolean>> }[];
+  readonly edges: readonly { readonly item: StateItem; readonly memory: boolean }[];
+}
+
+export type ResetReason = 'new' | 'type-changed' | 'operand-changed';
+
+/** What an online change keeps and what it starts fresh. */
+export interface StateTransfer {
+  /** Items of the new program that take the old program's state. */
+  readonly kept: readonly StateItem[];
+  /** Items of the new program that start from their initial state, with the reason in words (`TON → TOF`). */
+  readonly reset: readonly { readonly item: StateItem; readonly reason: ResetReason; readonly detail: string }[];
+  /** Items of the old program that the new one no longer has. */
+  readonly removed: readonly StateItem[];
+}
+
 export interface Plc {
   readonly pou: string;
   readonly profile: Profile;
@@ -128,4 +169,14 @@ export interface Plc {
   warmRestart(): void;
   snapshot(): PowerSnapshot;
   clearFault(): void;
+  /** Identities of the state this program holds: its FB instances, then its edge elements. */
+  stateItems(): readonly StateItem[];
+  /** FB instances and edge memories, for an online change (call at a scan boundary). */
+  exportState(): PlcState;
+  /**
+   * Takes the state of every item of `state` that this program has with the same identity (same
+   * instance name and FB type; same element id, symbol and operand); the others keep their initial
+   * state. Call at a scan boundary, normally before this PLC's first scan.
+   */
+  importState(state: PlcState): StateTransfer;
 }

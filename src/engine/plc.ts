@@ -5,6 +5,7 @@ import { assembleProgram, type CompiledProgram } from './compile/program';
 import { ScanPlc } from './runtime/scanner';
 
 export type { CompiledProgram } from './compile/program';
+export { planStateTransfer } from './runtime/instanceState';
 
 /** Checks and lowers one PROGRAM (default: the first). `program` is present only when there is no error. */
 export function compileProgram(

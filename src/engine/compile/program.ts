@@ -1,5 +1,5 @@
 // compileProgram: the checked, lowered form of one PROGRAM POU, ready for createPlc.
-import type { Project } from '../../model/project';
+import type { Pou, Project } from '../../model/project';
 import type { CompileOptions, Diagnostic } from '../api';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { ElementaryType } from '../../model/iecTypes';
@@ -17,6 +17,8 @@ export interface CompiledProgram {
   readonly symbols: SymbolTable;
   readonly functions: readonly ResolvedFunction[];
   readonly edgeCount: number;
+  /** Who owns each edge memory (indexed like the memories): the element, for online change. */
+  readonly edges: readonly EdgeOwner[];
   readonly dataSlots: readonly {
     readonly store: Store;
     readonly slot: number;
@@ -24,6 +26,29 @@ export interface CompiledProgram {
   }[];
   /** Variables kept over a warm restart: RETAIN ones and those written by M/SM/RM coils. */
   readonly retentive: ReadonlySet<VarSymbol>;
+}
+
+/** A |P| |N| contact or (P) (N) coil: the owner of one edge memory. */
+export interface EdgeOwner {
+  readonly elementId: string;
+  readonly network: number;
+  /** `|P|`, `|N|`, `(P)`, `(N)`. */
+  readonly symbol: string;
+  /** The operand as written on the element. */
+  readonly operand: string;
+}
+
+function edgeOwners(pou: Pou, networks: readonly NetworkIR[], count: number): EdgeOwner[] {
+  const owners = new Array<EdgeOwner>(count);
+  for (const ir of networks)
+    for (const op of ir.ops) {
+      if ((op.op !== 'contact' && op.op !== 'coil') || op.edge === undefined) continue;
+      const el = pou.networks[ir.index]!.elements[op.node]!;
+      const symbol = op.op === 'contact' ? `|${op.contact}|` : `(${op.coil})`;
+      const operand = el.kind === 'contact' || el.kind === 'coil' ? el.variable.trim() : '';
+      owners[op.edge] = { elementId: el.id, network: ir.index, symbol, operand };
+    }
+  return owners;
 }
 
 export function assembleProgram(
@@ -54,6 +79,7 @@ export function assembleProgram(
   diagnostics.unshift(...globals);
   if (!lowered.ok) return { diagnostics };
   const { ctx } = lowered;
+  const networks = lowered.networks.map((n) => n!);
   const retentive = new Set<VarSymbol>(ctx.retentiveCoilVars);
   for (const v of ctx.symbols.vars) if (v.retain) retentive.add(v);
   return {
@@ -61,11 +87,12 @@ export function assembleProgram(
     program: {
       pou: pou.name,
       profile,
-      networks: lowered.networks.map((n) => n!),
+      networks,
       shapes: pou.networks.map((n) => ({ elements: n.elements.length, vlinks: n.vlinks.length })),
       symbols: ctx.symbols,
       functions: ctx.functions,
       edgeCount: ctx.edgeCount,
+      edges: edgeOwners(pou, networks, ctx.edgeCount),
       dataSlots: ctx.dataSlots,
       retentive,
     },

@@ -20,7 +20,14 @@ export interface FbInstance {
   set(pin: string, v: Value): void;
   /** Pin names: inputs, then outputs, in signature order. */
   pins(): readonly string[];
+  /** Every pin and internal field (edge memories, timer state); times relative to `timeBase`. */
+  saveState(timeBase: number): FbState;
+  /** Restores what saveState gave (times relative to this PLC's `timeBase`); unknown fields are ignored. */
+  loadState(state: FbState, timeBase: number): void;
 }
+
+/** An FB instance's pins and internal fields as plain values. */
+export type FbState = Readonly<Record<string, number | boolean>>;
 
 const pinTypes = new Map<string, ReadonlyMap<string, ElementaryType>>();
 
@@ -59,6 +66,18 @@ abstract class StandardFb implements FbInstance {
   pins(): readonly string[] {
     return [...pinTypesOf(this.fbType).keys()];
   }
+
+  saveState(_timeBase: number): FbState {
+    const out: Record<string, number | boolean> = {};
+    for (const [k, v] of Object.entries(this)) if (typeof v === 'number' || typeof v === 'boolean') out[k] = v;
+    return out;
+  }
+
+  loadState(state: FbState, _timeBase: number): void {
+    const self = this as unknown as Record<string, unknown>;
+    for (const [k, v] of Object.entries(state))
+      if (Object.prototype.hasOwnProperty.call(self, k) && typeof self[k] === typeof v) self[k] = v;
+  }
 }
 
 /** STATE values of the timers' state machine in MATIEC's timer.txt. */
@@ -83,6 +102,16 @@ abstract class Timer extends StandardFb {
     this.STATE = RESET;
     this.PREV_IN = false;
     this.START_TIME = 0;
+  }
+
+  /** START_TIME is a time on the PLC clock: saved relative to `timeBase`. */
+  override saveState(timeBase: number): FbState {
+    return { ...super.saveState(timeBase), START_TIME: this.START_TIME - timeBase };
+  }
+
+  override loadState(state: FbState, timeBase: number): void {
+    super.loadState(state, timeBase);
+    if (typeof state.START_TIME === 'number') this.START_TIME = state.START_TIME + timeBase;
   }
 }
 

@@ -2,7 +2,7 @@
 // image, on a virtual clock (scan k starts at (k-1) x cycleMs) or an injected real clock, with a
 // watchdog, forcing, cold/warm restart, stepping one network at a time and power snapshots.
 import type { Value } from '../../model/iecTypes';
-import type { Fault, Plc, PlcOptions, PowerSnapshot, ScanReport, StepReport } from '../api';
+import type { Fault, Plc, PlcOptions, PlcState, PowerSnapshot, ScanReport, StateItem, StateTransfer, StepReport } from '../api';
 import type { FnContext } from '../library/fnTypes';
 import { slotKey } from '../compile/codegen';
 import { DISPATCH_PARAMS, planDispatch, type DispatchFn, type DispatchPlan } from '../compile/dispatch';
@@ -13,6 +13,7 @@ import { DEFAULT_TIERING, Tiering, type TieringOptions } from './tiering';
 import type { CompiledProgram } from '../compile/program';
 import type { Access, VarSymbol } from '../compile/symbols';
 import { coerce, Memory } from './memory';
+import { exportMemory, importMemory, stateItemsOf } from './instanceState';
 
 /** Networks run per call of a dispatch function before the scan time is checked (watchdog). */
 const CHUNK = 1024;
@@ -383,6 +384,25 @@ export class ScanPlc implements Plc {
     const fbs = new Set(this.program.symbols.fbs.filter((f) => f.retain).map((f) => f.index));
     this.mem.initialise({ vars: this.program.retentive, fbs });
     this.resetCommon();
+  }
+
+  // ---- online change ----
+
+  /** The time the next scan would start at, on this PLC's clock. */
+  private nextScanTime(): number {
+    return this.opts.clock ? this.opts.clock.now() - this.clockOrigin : this.count * this.opts.cycleMs;
+  }
+
+  stateItems(): readonly StateItem[] {
+    return stateItemsOf(this.program);
+  }
+
+  exportState(): PlcState {
+    return exportMemory(this.program, this.mem, this.nextScanTime());
+  }
+
+  importState(state: PlcState): StateTransfer {
+    return importMemory(this.program, this.mem, state, this.nextScanTime());
   }
 
   snapshot(): PowerSnapshot {
