@@ -19,11 +19,16 @@ export type SimValueInput = { readonly value: Value } | { readonly text: string 
 /** Commands that run the program may carry the document to compile first; a compile error refuses the command. */
 interface WithProject {
   readonly project?: Project;
+  /**
+   * The store's command counter: the worker echoes the last one it handled in its frames, so the
+   * store knows which frames already reflect this command (older ones are in flight).
+   */
+  readonly epoch?: number;
 }
 
 export type HostMessage =
   /** Compile the document. When a program is loaded already this is an online change, applied at the next scan boundary. */
-  | { readonly type: 'load'; readonly project: Project }
+  | { readonly type: 'load'; readonly project: Project; readonly epoch?: number }
   | ({ readonly type: 'run' } & WithProject)
   | { readonly type: 'pause' }
   | ({ readonly type: 'step'; readonly scans: number } & WithProject)
@@ -45,7 +50,12 @@ export type HostMessage =
   /** Gateway: input image by IEC location (%IX0.0 -> true), applied at the next input read. */
   | { readonly type: 'setInputs'; readonly values: Readonly<Record<string, Value>> }
   /** Gateway: start or stop `outputs` events. */
-  | { readonly type: 'subscribeOutputs'; readonly enabled: boolean };
+  | { readonly type: 'subscribeOutputs'; readonly enabled: boolean }
+  /**
+   * Another project was opened: stop and drop the program (no PLC, no forces, no gateway inputs);
+   * the next Run or Step must carry the new document.
+   */
+  | { readonly type: 'unload'; readonly epoch?: number };
 
 export type VariableRole = 'input' | 'output' | 'memory' | 'local' | 'pin';
 
@@ -114,6 +124,10 @@ export interface SimFrame {
   readonly forced: readonly (readonly [string, Value])[];
   /** New trend samples since the previous frame. */
   readonly trend?: TrendSamples;
+  /** Id (programId) of the program the worker has installed, null when none: what runs. */
+  readonly program: string | null;
+  /** The last command epoch the worker handled (see WithProject.epoch). */
+  readonly epoch: number;
 }
 
 export type WorkerMessage =
@@ -124,10 +138,19 @@ export type WorkerMessage =
       readonly online: boolean;
       readonly diagnostics: readonly Diagnostic[];
       readonly layout?: SimLayout;
+      /** With ok: the id (programId) of the program now installed (or waiting for the scan boundary). */
+      readonly program?: string;
     }
   | { readonly type: 'frame'; readonly frame: SimFrame }
   /** A command failed (unknown variable, bad value ...): shown to the user. */
   | { readonly type: 'error'; readonly message: string }
   /** Gateway: output image by IEC location after a scan that changed it. */
-  | { readonly type: 'outputs'; readonly scan: number; readonly timeMs: number; readonly outputs: Readonly<Record<string, Value>> }
+  | {
+      readonly type: 'outputs';
+      readonly scan: number;
+      readonly timeMs: number;
+      readonly outputs: Readonly<Record<string, Value>>;
+      /** Id of the program that produced them: the store passes on only the shown program's outputs. */
+      readonly program: string;
+    }
   | { readonly type: 'ready'; readonly version: number };

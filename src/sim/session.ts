@@ -2,11 +2,12 @@
 // commands in (HostMessage), frames and events out (WorkerMessage) through an injected `post`.
 // The session owns the program and the mode; ScanRunner executes the scans.
 import type { Diagnostic, Plc, PlcOptions } from '../engine/api';
-import type { Value } from '../model/iecTypes';
+import { parseLocation, type Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import { carryForces, carryValues, valueFor } from './carryOver';
 import { outputsChanged, packPower, readValues } from './frames';
 import { buildLayout, programFingerprint } from './layout';
+import { fingerprintId } from './programId';
 import type { HostMessage, SimFrame, SimLayout, SimMode, WorkerMessage } from './protocol';
 import { ScanRunner, type ScanOutcome } from './scanRunner';
 import type { Scheduler } from './scheduler';
@@ -51,6 +52,10 @@ export class SimSession {
   private outputsSubscribed = false;
   private lastOutputs: Record<string, Value> | undefined;
   private gatewayInputs: Record<string, Value> = {};
+  /** programId of the installed program (what runs), null when none. */
+  private programId: string | null = null;
+  /** The last command epoch handled, echoed in frames. */
+  private epoch = 0;
   private readonly runner: ScanRunner;
 
   constructor(private readonly deps: SessionDeps) {
@@ -87,12 +92,13 @@ export class SimSession {
   }
 
   private dispatch(m: HostMessage): void {
+    if ('epoch' in m && m.epoch !== undefined) this.epoch = m.epoch;
     switch (m.type) {
       case 'load':
         this.load(m.project);
         return;
       case 'run':
-        if ((m.project && !this.load(m.project)) || this.refuseIfFaulted()) return;
+        if (!this.loadToStart(m.project) || this.refuseIfFaulted()) return;
         this.requirePlc();
         this.mode = 'running';
         this.runner.startRun();
@@ -105,13 +111,13 @@ export class SimSession {
         this.postFrame();
         return;
       case 'step':
-        if ((m.project && !this.load(m.project)) || this.refuseIfFaulted()) return;
+        if (!this.loadToStart(m.project) || this.refuseIfFaulted()) return;
         this.requirePlc();
         this.mode = 'running';
         this.runner.startBatch(m.scans);
         return;
       case 'stepNetwork': {
-        if ((m.project && !this.load(m.project)) || this.refuseIfFaulted()) return;
+        if (!this.loadToStart(m.project) || this.refuseIfFaulted()) return;
         this.requirePlc();
         this.mode = this.runner.stepNetwork() ? 'faulted' : 'paused';
         this.postFrame();
@@ -157,7 +163,11 @@ export class SimSession {
         return;
       case 'setInputs':
         this.gatewayInputs = { ...this.gatewayInputs, ...m.values };
-        this.plc?.setInputs(m.values);
+        if (this.plc) this.bindInputs(this.plc, this.layout, m.values);
+        return;
+      case 'unload':
+        this.dropProgram();
+        this.postFrame();
         return;
       case 'subscribeOutputs':
         this.outputsSubscribed = m.enabled;
@@ -169,14 +179,65 @@ export class SimSession {
 
   // ---- loading and online change -------------------------------------------------------
 
+  /**
+   * Run/Step with a document: compiles and installs it. When that fails, the previous program is
+   * dropped too (what runs is always what is shown): mode stopped, no program, the reason posted.
+   */
+  private loadToStart(project: Project | undefined): boolean {
+    if (!project) return true;
+    let ok: boolean;
+    try {
+      ok = this.load(project, true);
+    } catch (error) {
+      this.dropProgram();
+      this.deps.post({ type: 'error', message: `the program could not be installed, the simulation is stopped: ${error instanceof Error ? error.message : String(error)}` });
+      this.postFrame();
+      return false;
+    }
+    if (!ok) {
+      // 'compiled' (ok: false) already said why.
+      this.dropProgram();
+      this.postFrame();
+    }
+    return ok;
+  }
+
+  /** Stop and forget the program: no PLC, no forces, no gateway inputs, mode stopped. */
+  private dropProgram(): void {
+    this.runner.stop();
+    this.runner.breakpointHit = undefined;
+    this.pending = undefined;
+    this.plc = undefined;
+    this.layout = undefined;
+    this.fingerprint = '';
+    this.programId = null;
+    this.gatewayInputs = {};
+    this.lastOutputs = undefined;
+    this.runner.clock.set(0);
+    this.configureTrend();
+    this.resetCounters();
+    this.mode = 'stopped';
+  }
+
+  /**
+   * Gateway inputs the program reads: only addresses of its declared input variables are bound;
+   * the gateway's other points are not this program's I/O and are left out (never an error).
+   */
+  private bindInputs(plc: Plc, layout: SimLayout | undefined, values: Readonly<Record<string, Value>>): void {
+    const declared = new Set((layout?.variables ?? []).flatMap((v) => (v.role === 'input' && v.location ? [locationKey(v.location)] : [])));
+    const bound: Record<string, Value> = {};
+    for (const [address, value] of Object.entries(values)) if (declared.has(locationKey(address))) bound[address] = value;
+    if (Object.keys(bound).length > 0) plc.setInputs(bound);
+  }
+
   /** Compiles the document. Returns false (and reports why) when it has errors. */
-  private load(project: Project): boolean {
+  private load(project: Project, starting = false): boolean {
     const fingerprint = programFingerprint(project);
     if (this.plc && fingerprint === (this.pending?.program.fingerprint ?? this.fingerprint)) return true;
     const { program, diagnostics } = this.deps.engine.compile(project);
     const online = this.plc !== undefined && (this.mode !== 'stopped' || this.plc.scanCount > 0);
     if (!program || diagnostics.some((d) => d.severity === 'error')) {
-      this.deps.post({ type: 'compiled', ok: false, online, diagnostics });
+      this.deps.post({ type: 'compiled', ok: false, online: online && !starting, diagnostics });
       return false;
     }
     const clock = this.runner.clock;
@@ -206,14 +267,15 @@ export class SimSession {
 
   private install(next: LoadedProgram, online: boolean, diagnostics: readonly Diagnostic[]): void {
     if (this.plc) carryForces(this.plc, next.plc);
-    if (Object.keys(this.gatewayInputs).length > 0) next.plc.setInputs(this.gatewayInputs);
+    this.bindInputs(next.plc, next.layout, this.gatewayInputs);
     this.plc = next.plc;
     this.layout = next.layout;
     this.fingerprint = next.fingerprint;
+    this.programId = fingerprintId(next.fingerprint);
     this.lastOutputs = undefined;
     this.configureTrend();
     if (!online) this.resetCounters();
-    this.deps.post({ type: 'compiled', ok: true, online, diagnostics, layout: next.layout });
+    this.deps.post({ type: 'compiled', ok: true, online, diagnostics, layout: next.layout, program: this.programId });
     this.postFrame();
   }
 
@@ -281,7 +343,7 @@ export class SimSession {
     const outputs = plc.outputs();
     if (!outputsChanged(this.lastOutputs, outputs)) return;
     this.lastOutputs = outputs;
-    this.deps.post({ type: 'outputs', scan: this.scanBase + plc.scanCount, timeMs: this.runner.timeMs(plc), outputs });
+    this.deps.post({ type: 'outputs', scan: this.scanBase + plc.scanCount, timeMs: this.runner.timeMs(plc), outputs, program: this.programId ?? '' });
   }
 
   postFrame(): void {
@@ -311,6 +373,14 @@ export class SimSession {
       values: plc && layout ? readValues(plc, layout) : [],
       forced: plc ? [...plc.forced()] : [],
       ...(trend ? { trend } : {}),
+      program: plc ? this.programId : null,
+      epoch: this.epoch,
     };
   }
+}
+
+/** `%ix0.0` and `%IX0.0` alike: the key a location is bound by. */
+function locationKey(text: string): string {
+  const loc = parseLocation(text);
+  return loc ? `%${loc.area}${loc.size}${loc.index}${loc.bit !== undefined ? `.${loc.bit}` : ''}` : text.trim().toUpperCase();
 }

@@ -10,6 +10,7 @@ import type { Diagnostic, Fault } from '../engine/api';
 import type { Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import type { SimTransport } from '../sim/host';
+import { programId } from '../sim/programId';
 import type { ExecStats, HostMessage, SimFrame, SimLayout, SimMode, SimValueInput, TrendSamples, WorkerMessage } from '../sim/protocol';
 import { appendTrend, emptyTrend, type TrendBuffer } from '../sim/trendBuffer';
 
@@ -98,17 +99,44 @@ export type SimStore = StoreApi<SimState>;
 
 const sameName = (a: string, b: string) => a.toUpperCase() === b.toUpperCase();
 
+interface SentDocument {
+  readonly project: Project;
+  /** Its programId: what the worker reports when it runs this document. */
+  readonly id: string;
+  /** Sent with Run/Step ('start': a refusal stops the worker) or as an online edit ('load'). */
+  readonly by: 'start' | 'load';
+}
+
 export function createSimStore(transport: SimTransport): SimStore {
-  let sentProject: Project | undefined;
+  // What runs is always what is shown:
+  // - `sentProject` is the document the worker confirmed it installed ('compiled' ok, or a frame of
+  //   the current epoch running it); only then is a Run without the document trusted. Any refusal,
+  //   error or unload clears it, so the next Run sends the document again.
+  // - `expected` are the programs the store accepts as the one shown: the document of the last
+  //   Run/Step, and during an online change also the program still running until the swap (or
+  //   kept running because the edit has errors). A frame of the current epoch from any other program
+  //   is never shown as running: the store stops the worker and says why. Its outputs never reach
+  //   the gateway.
+  let sentProject: SentDocument | undefined;
+  let requested: SentDocument | undefined;
+  let expected = new Set<string>();
+  /** The program the worker last reported (current epoch), null when none. */
+  let running: string | null = null;
+  let epoch = 0;
   const outputListeners = new Set<(outputs: Readonly<Record<string, Value>>, scan: number) => void>();
   const send = (message: HostMessage) => transport.send(message);
 
-  /** The document, when it changed since it was last sent. */
+  /** The document to send with Run/Step unless the worker confirmed it runs this very program. */
   const fresh = (project: Project): Project | undefined => {
-    if (project === sentProject) return undefined;
-    sentProject = project;
+    const id = programId(project);
+    // A Run/Step with a changed document on a live program is an online change: the running program
+    // finishes its scan and is swapped at the boundary; otherwise only this document may run.
+    expected = new Set(store.getState().live && running !== null ? [id, running] : [id]);
+    if (sentProject?.id === id && running === id) return undefined;
+    requested = { project, id, by: 'start' };
     return project;
   };
+  const nextEpoch = () => ++epoch;
   const sendBreakpoints = () => {
     const { layout, breakpoints } = store.getState();
     if (!layout) return;
@@ -157,16 +185,16 @@ export function createSimStore(transport: SimTransport): SimStore {
 
       run: (project) => {
         set({ refusal: undefined, notice: undefined });
-        send({ type: 'run', ...withProject(fresh(project)) });
+        send({ type: 'run', ...withProject(fresh(project)), epoch: nextEpoch() });
       },
       pause: () => send({ type: 'pause' }),
       step: (project, scans) => {
         set({ refusal: undefined, notice: undefined });
-        send({ type: 'step', scans, ...withProject(fresh(project)) });
+        send({ type: 'step', scans, ...withProject(fresh(project)), epoch: nextEpoch() });
       },
       stepNetwork: (project) => {
         set({ refusal: undefined, notice: undefined });
-        send({ type: 'stepNetwork', ...withProject(fresh(project)) });
+        send({ type: 'stepNetwork', ...withProject(fresh(project)), epoch: nextEpoch() });
       },
       reset: () => {
         set({ notice: undefined, trend: emptyTrend(get().trendNames) });
@@ -174,6 +202,9 @@ export function createSimStore(transport: SimTransport): SimStore {
       },
       unload: () => {
         sentProject = undefined;
+        requested = undefined;
+        expected = new Set();
+        running = null;
         set({
           notice: undefined,
           refusal: undefined,
@@ -185,9 +216,9 @@ export function createSimStore(transport: SimTransport): SimStore {
           breakpoints: [],
           trend: emptyTrend(get().trendNames),
         });
-        send({ type: 'unforceAll' });
         send({ type: 'setBreakpoints', networks: [] });
-        send({ type: 'reset' });
+        // The worker drops the program (and its forces): nothing of the previous project runs on.
+        send({ type: 'unload', epoch: nextEpoch() });
       },
       warmRestart: () => {
         set({ notice: undefined });
@@ -198,9 +229,13 @@ export function createSimStore(transport: SimTransport): SimStore {
         send({ type: 'setCycle', cycleMs });
       },
       documentChanged: (project) => {
-        if (!get().layout || project === sentProject) return;
-        sentProject = project;
-        send({ type: 'load', project });
+        if (!get().layout) return;
+        const id = programId(project);
+        if (id === requested?.id) return;
+        requested = { project, id, by: 'load' };
+        // Online change: the running program stays accepted until the swap (or while the edit has errors).
+        expected = new Set(running === null ? [id] : [id, running]);
+        send({ type: 'load', project, epoch: nextEpoch() });
       },
       toggleBreakpoint: (networkId) => {
         const { breakpoints } = get();
@@ -257,10 +292,20 @@ export function createSimStore(transport: SimTransport): SimStore {
     switch (message.type) {
       case 'compiled':
         if (!message.ok) {
-          // The worker keeps the previous program; compile this document again next time.
+          // Compile this document again next time. An online edit with errors leaves the last good
+          // program running; a refused Run/Step dropped the previous program (the worker is stopped).
           sentProject = undefined;
-          store.setState({ refusal: { diagnostics: message.diagnostics, online: message.online } });
+          if (message.online || requested?.by === 'load') {
+            store.setState({ refusal: { diagnostics: message.diagnostics, online: message.online } });
+          } else {
+            expected = new Set();
+            store.setState({ refusal: { diagnostics: message.diagnostics, online: false }, ...NO_PROGRAM });
+          }
           return;
+        }
+        if (message.program !== undefined && message.program === requested?.id) {
+          sentProject = requested;
+          expected = new Set([message.program]);
         }
         if (message.layout) {
           store.setState({ refusal: undefined, ...indexLayout(message.layout) });
@@ -268,21 +313,61 @@ export function createSimStore(transport: SimTransport): SimStore {
           sendBreakpoints();
         }
         return;
-      case 'frame':
+      case 'frame': {
+        const { program } = message.frame;
+        if (message.frame.epoch === epoch) {
+          running = program;
+          if (program === null) sentProject = undefined;
+          else if (program === requested?.id && expected.has(program)) sentProject = requested;
+          if (program !== null && !expected.has(program)) {
+            refuseHiddenProgram();
+            return;
+          }
+        } else if (program !== null && !expected.has(program)) {
+          return; // in flight from before the last command, and not the program shown: never shown
+        }
         store.setState(applyFrame(store.getState(), message.frame));
         return;
+      }
       case 'error':
+        // The next Run sends the document again rather than trusting what the worker has.
+        sentProject = undefined;
         store.setState({ notice: message.message });
         return;
       case 'outputs':
+        // Only the shown program's outputs reach the gateway.
+        if (!expected.has(message.program)) return;
         for (const listener of outputListeners) listener(message.outputs, message.scan);
         return;
       case 'ready':
         return;
     }
   });
+
+  /** The worker runs a program that is not the one shown: stop it, forget it and say so. */
+  function refuseHiddenProgram(): void {
+    sentProject = undefined;
+    requested = undefined;
+    expected = new Set();
+    running = null;
+    transport.send({ type: 'unload', epoch: nextEpoch() });
+    store.setState({
+      ...NO_PROGRAM,
+      mode: 'stopped',
+      notice: 'The simulation was stopped: the simulator was running a program other than the one shown. Press Run to run the program shown.',
+    });
+  }
   return store;
 }
+
+/** The store's state when the worker has no program (refused Run, unload). */
+const NO_PROGRAM: Pick<SimState, 'live' | 'layout' | 'elementIndex' | 'vlinkIndex' | 'variableIndex'> = {
+  live: false,
+  layout: undefined,
+  elementIndex: new Map(),
+  vlinkIndex: new Map(),
+  variableIndex: new Map(),
+};
 
 function indexLayout(layout: SimLayout): Pick<SimState, 'layout' | 'elementIndex' | 'vlinkIndex' | 'variableIndex'> {
   const elementIndex = new Map<string, number>();

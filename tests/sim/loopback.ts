@@ -4,14 +4,14 @@
 import { realEngine } from '../../src/sim/engineAdapter';
 import type { SimTransport } from '../../src/sim/host';
 import type { WorkerMessage } from '../../src/sim/protocol';
-import { SimSession } from '../../src/sim/session';
+import { SimSession, type SimEngine } from '../../src/sim/session';
 import { ManualScheduler } from './manualScheduler';
 
-export function loopback(): { transport: SimTransport; scheduler: ManualScheduler } {
+export function loopback(engine: SimEngine = realEngine): { transport: SimTransport; scheduler: ManualScheduler } {
   const scheduler = new ManualScheduler();
   const listeners = new Set<(m: WorkerMessage) => void>();
   const session = new SimSession({
-    engine: realEngine,
+    engine,
     scheduler,
     post: (m) => {
       const copy = structuredClone(m);

@@ -13,7 +13,9 @@ describe('compiling on Run', () => {
     expect(compiled?.ok).toBe(false);
     expect(compiled?.diagnostics.some((d) => d.rule === 'LD-R08' && d.network === 0 && d.message.includes('Nowhere'))).toBe(true);
     h.advance(100);
-    expect(h.of('frame')).toHaveLength(0);
+    // One frame says so: stopped, no program, nothing scanned.
+    expect(h.of('frame')).toHaveLength(1);
+    expect(h.frame).toMatchObject({ mode: 'stopped', scan: 0, program: null, values: [] });
   });
 
   test('a valid program compiles and starts running', () => {
