@@ -1,13 +1,14 @@
 // What survives when one compiled program replaces another (online change), and how typed text
 // becomes a value for a name.
-import type { Plc } from '../engine/api';
+import type { Plc, StateTransfer } from '../engine/api';
+import { planStateTransfer } from '../engine/plc';
 import { parseLocation, type Value } from '../model/iecTypes';
-import type { SimLayout, SimValueInput } from './protocol';
+import type { OnlineChangePlan, SimLayout, SimValueInput } from './protocol';
 import type { SimEngine } from './session';
 
 /**
- * Variables present in both programs with the same type keep their values. FB instances and edge
- * memories start fresh: the engine cannot move their internal state (a timer's start time).
+ * Variables present in both programs with the same type keep their values (FB instances and edge
+ * memories: carryInstances).
  */
 export function carryValues(from: Plc, fromLayout: SimLayout, to: Plc, toLayout: SimLayout): void {
   const before = new Map(fromLayout.variables.map((v) => [v.name.toUpperCase(), v]));
@@ -20,6 +21,47 @@ export function carryValues(from: Plc, fromLayout: SimLayout, to: Plc, toLayout:
       // A constant, or a name the new program cannot write: it keeps its initial value.
     }
   }
+}
+
+/**
+ * FB instances (by name, same FB type) and edge memories of |P| |N| contacts and (P) (N) coils (by
+ * element id, same symbol and operand) keep their state, timers' elapsed time included; the others
+ * start fresh. Call at a scan boundary, before `to` runs.
+ */
+export function carryInstances(from: Plc, to: Plc): OnlineChangePlan {
+  return summarizeTransfer(to.importState(from.exportState()));
+}
+
+/** What carryInstances will keep and reset, without touching either PLC. */
+export function planInstances(from: Plc, to: Plc): OnlineChangePlan {
+  return summarizeTransfer(planStateTransfer(from.stateItems(), to.stateItems()));
+}
+
+export function summarizeTransfer(t: StateTransfer): OnlineChangePlan {
+  return {
+    kept: t.kept.length,
+    reset: t.reset.map((r) => ({ name: r.item.label, reason: r.detail })),
+    removed: t.removed.map((i) => i.label),
+  };
+}
+
+const count = (n: number) => n.toLocaleString('en-US');
+const MAX_NAMED = 8;
+
+/** "kept 14 instances, reset 1: T3 (new)" */
+export function describeTransfer(plan: OnlineChangePlan): string {
+  const kept = `kept ${count(plan.kept)} instance${plan.kept === 1 ? '' : 's'}`;
+  if (plan.reset.length === 0 && plan.removed.length === 0) return kept;
+  if (plan.reset.length === 0) return `${kept}; removed ${plan.removed.slice(0, MAX_NAMED).join(', ')}${plan.removed.length > MAX_NAMED ? ' …' : ''}`;
+  const named = plan.reset.slice(0, MAX_NAMED).map((r) => `${r.name} (${r.reason})`);
+  if (plan.reset.length > MAX_NAMED) named.push(`and ${count(plan.reset.length - MAX_NAMED)} more`);
+  const reset = `${kept}, reset ${count(plan.reset.length)}: ${named.join(', ')}`;
+  return plan.removed.length === 0 ? reset : `${reset}; removed ${plan.removed.slice(0, MAX_NAMED).join(', ')}${plan.removed.length > MAX_NAMED ? ' …' : ''}`;
+}
+
+/** "Online change applied at scan 12,840; kept 14 instances, reset 1: T3 (new)" */
+export function describeOnlineChange(scan: number, plan: OnlineChangePlan): string {
+  return `Online change applied at scan ${count(scan)}; ${describeTransfer(plan)}`;
 }
 
 /** Forces stay in place across a program change, for the variables that still exist. */
