@@ -2,15 +2,20 @@
  * GatewayBridge: what the running simulation uses to take its I/O from the gateway.
  *
  *   const bridge = new GatewayBridge(client);          // client: a connected GatewayClient (role controller)
- *   bridge.inputImage(bindings?)  -> Record<address, Value>
- *       The latest input values by IEC address (%IX0.0 -> true, %IW2 -> 1234), for the next scan's
- *       input read. With `bindings` (from checkBindings) each value is converted to its variable's
- *       type (a WORD 65535 read into an INT variable gives -1).
+ *   bridge.inputImage(bindings)   -> Record<address, Value>
+ *       The latest input values by IEC address (%IX0.0 -> true, %IW2 -> 1234) of the input points the
+ *       program declares (`bindings` from checkBindings), for the next scan's input read, each
+ *       converted to its variable's type (a WORD 65535 read into an INT variable gives -1). The
+ *       gateway's other points are not the program's I/O and are never passed.
  *   bridge.sendOutputs(values)     values: Record<address, Value>, the scan's output image.
  *       Call after every scan (or every scan that changed it: the bridge re-sends the last image
  *       every `heartbeatMs` so the gateway's lease stays fed while the simulation runs). Addresses
  *       the gateway does not have as outputs are left out; values wrap to the point's 16 bits.
  *   bridge.attach(sim, bindings)   on Run: wire the simulation store's setInputs/onOutputs (one at a time).
+ *       When the operator pressed Run (`requestArm()` first), `arm` is sent before the first outputs.
+ *   bridge.requestArm()            Run pressed as controller: the next attach arms the gateway. Nothing
+ *       else arms: not a reconnect, a device coming back, an online change or a re-attach.
+ *   bridge.arm()                   the operator's explicit Arm (Hardware panel) or a confirmed step.
  *   bridge.stop()                  pause/stop: detach, the gateway writes the safe state; heartbeats end.
  *   bridge.onInputs(cb)            cb(changed: Record<address, Value>) when inputs change; returns unsubscribe.
  *   bridge.canDrive                true when connected as controller and armed.
@@ -35,6 +40,7 @@ export class GatewayBridge {
   private lastSentAt = 0;
   private heartbeat: ReturnType<typeof setInterval> | undefined;
   private detachSimulation: (() => void) | undefined;
+  private armOnAttach = false;
 
   constructor(
     private readonly client: GatewayClient,
@@ -45,14 +51,10 @@ export class GatewayBridge {
     return this.client.isController && this.client.snapshot.status?.armed !== false;
   }
 
-  inputImage(bindings?: readonly Binding[]): Record<string, Value> {
-    const { values, points } = this.client.snapshot;
+  inputImage(bindings: readonly Binding[]): Record<string, Value> {
+    const { values } = this.client.snapshot;
     const image: Record<string, Value> = {};
-    for (const p of points) {
-      const v = values[p.address];
-      if (p.dir === 'in' && v !== undefined) image[p.address] = v;
-    }
-    for (const b of bindings ?? []) {
+    for (const b of bindings) {
       const v = values[b.address];
       if (b.point.dir === 'in' && v !== undefined) image[b.address] = fromWire(b.varType, v);
     }
@@ -80,6 +82,10 @@ export class GatewayBridge {
    */
   attach(sim: SimulationPorts, bindings: readonly Binding[]): () => void {
     this.detachSimulation?.();
+    if (this.armOnAttach) {
+      this.armOnAttach = false;
+      this.arm(); // the operator's Run: arm before the first outputs (the socket keeps the order)
+    }
     const detach = attachSimulation(sim, this, bindings);
     const once = () => {
       if (this.detachSimulation !== once) return;
@@ -90,8 +96,19 @@ export class GatewayBridge {
     return once;
   }
 
+  /** Run was pressed: the next `attach` sends `arm` first (see the header). */
+  requestArm(): void {
+    this.armOnAttach = true;
+  }
+
+  /** Asks the gateway to arm (the operator's act); a refusal arrives as the view's lastError. */
+  arm(): void {
+    this.client.arm();
+  }
+
   /** Pause/stop: detaches the simulation, ends heartbeats, and the gateway writes the safe state. */
   stop(): void {
+    this.armOnAttach = false;
     this.detachSimulation?.();
     clearInterval(this.heartbeat);
     this.heartbeat = undefined;

@@ -211,9 +211,12 @@ export class GatewayClient {
         this.update({ ...v, values: { ...v.values, ...msg.values }, quality });
         break;
       }
-      case 'status':
-        this.update({ ...v, status: msg });
+      case 'status': {
+        // Armed again: refusals of the disarmed state are history.
+        const stale = msg.armed && (v.lastError?.code === 'disarmed' || v.lastError?.code === 'arm-refused');
+        this.update({ ...v, status: msg, ...(stale ? { lastError: null } : {}) });
         break;
+      }
       case 'error':
         this.update({ ...v, lastError: msg });
         break;

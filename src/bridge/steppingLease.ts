@@ -10,7 +10,7 @@
  *       In confirmed stepping mode each step first gives the simulation the gateway's current
  *       input image, then runs; the scan's output image goes to the gateway ('stepped-on-hardware').
  *   lease.confirm()            runs the pending step on the hardware and enters stepping mode: the
- *       output image of every scan is sent, and the bridge re-sends the last one as a heartbeat
+ *       gateway is armed (the confirmation is the operator's deliberate act), the output image of every scan is sent, and the bridge re-sends the last one as a heartbeat
  *       (GatewayBridge, every 100 ms, well within the gateway's 200–5000 ms watchdog).
  *   lease.decline()            the confirmation was cancelled: no step, nothing written.
  *   lease.end(reason)          Run ('run': the running simulation takes the lease over, nothing is
@@ -19,8 +19,8 @@
  *   lease.hardwareChanged()    call on every gateway link change: losing the controller role ends
  *       stepping mode.
  *
- * A disarmed gateway (after a watchdog trip) is never re-armed here: the UI shows the watchdog
- * state and re-arms only when the user asks.
+ * Only the confirmation arms the gateway: a gateway disarmed later while stepping (Safe state, a
+ * watchdog trip, a device lost) is never re-armed here; the Hardware panel shows why and offers Arm.
  */
 import type { Value } from '../model/iecTypes';
 import type { Binding } from './mapping';
@@ -39,8 +39,9 @@ export interface SteppingView {
 
 /** The parts of GatewayBridge the lease uses. */
 export interface LeaseBridge {
-  inputImage(bindings?: readonly Binding[]): Record<string, Value>;
+  inputImage(bindings: readonly Binding[]): Record<string, Value>;
   sendOutputs(values: Readonly<Record<string, Value>>): void;
+  arm(): void;
   stop(): void;
 }
 
@@ -104,8 +105,10 @@ export class SteppingLease {
       ctx.perform(request);
       return;
     }
-    // Every output image the simulation reports goes to the gateway; the worker reports the
-    // current one at once, so the bridge's heartbeat starts right away.
+    // The operator confirmed: arm before the first outputs. Every output image the simulation
+    // reports goes to the gateway; the worker reports the current one at once, so the bridge's
+    // heartbeat starts right away.
+    bridge.arm();
     const detach = ctx.sim.onOutputs((outputs) => bridge.sendOutputs(outputs));
     this.feeding = { bridge, detach };
     this.set({ phase: 'stepping', request: undefined });

@@ -5,7 +5,6 @@ import { gatewaySocketUrl, tokenFromFragment } from '../../src/bridge/connection
 import { GatewayBridge } from '../../src/bridge/GatewayBridge';
 import { GatewayClient, type SocketLike } from '../../src/bridge/GatewayClient';
 import { checkBindings } from '../../src/bridge/mapping';
-import { attachSimulation } from '../../src/bridge/simulationLink';
 import { newPou, newProject, variable } from '../../src/model/factory';
 import type { Value } from '../../src/model/iecTypes';
 import { resolveConfig } from '../../src/gateway/config';
@@ -46,12 +45,24 @@ describe('GatewayClient and GatewayBridge', () => {
     const seen: Record<string, unknown>[] = [];
     const off = bridge.onInputs((changed) => seen.push(changed));
     c.simulate({ '%IX0.4': true, '%IW1': 65535 });
-    await eventually(() => bridge.inputImage()['%IX0.4'] === true, 3000, 'input');
-    expect(bridge.inputImage()['%IW1']).toBe(65535);
-    expect(bridge.inputImage([{ pou: 'Main', variable: 'Level', varType: 'INT', address: '%IW1', point: { address: '%IW1', type: 'WORD', dir: 'in', device: 'sim' } }])['%IW1']).toBe(-1);
+    const bound = (variable: string, varType: string, address: string, type: 'BOOL' | 'WORD') =>
+      ({ pou: 'Main', variable, varType, address, point: { address, type, dir: 'in', device: 'sim' } }) as const;
+    await eventually(() => bridge.inputImage([bound('Sensor', 'BOOL', '%IX0.4', 'BOOL')])['%IX0.4'] === true, 3000, 'input');
+    expect(bridge.inputImage([bound('Raw', 'WORD', '%IW1', 'WORD')])['%IW1']).toBe(65535);
+    expect(bridge.inputImage([bound('Level', 'INT', '%IW1', 'WORD')])['%IW1']).toBe(-1);
+    // Only the points the program declares: the gateway's other inputs are not passed.
+    expect(Object.keys(bridge.inputImage([bound('Sensor', 'BOOL', '%IX0.4', 'BOOL')]))).toEqual(['%IX0.4']);
+    expect(bridge.inputImage([])).toEqual({});
     expect(seen.some((s) => s['%IX0.4'] === true)).toBe(true);
     off();
 
+    // The gateway starts disarmed: outputs are refused until the controller arms.
+    bridge.sendOutputs({ '%QX0.6': true });
+    await eventually(() => c.snapshot.lastError?.code === 'disarmed', 3000, 'refused while disarmed');
+    expect(gw.simulated?.writtenValues().get('%QX0.6')).toBe(false);
+    bridge.arm();
+    await eventually(() => c.snapshot.status?.armed === true, 3000, 'armed');
+    expect(c.snapshot.lastError).toBeNull(); // the refusal is history once armed
     bridge.sendOutputs({ '%qx0.6': true, '%QW2': -2, '%IX0.0': true, '%QX9.9': true });
     await eventually(() => gw.simulated?.writtenValues().get('%QX0.6') === true, 3000, 'output written');
     expect(gw.simulated?.writtenValues().get('%QW2')).toBe(65534);
@@ -85,8 +96,10 @@ describe('GatewayClient and GatewayBridge', () => {
       newProject('Motor', { pous: [newPou('Main', { variables: [variable('Start', 'BOOL', { location: '%IX0.0' }), variable('Level', 'INT', { location: '%IW0' }), variable('Motor', 'BOOL', { location: '%QX0.0' })] })] }),
       c.snapshot.points,
     );
-    const detach = attachSimulation(sim, bridge, report.bindings);
-    expect(received[0]).toMatchObject({ '%IX0.0': false, '%IW0': 0 });
+    bridge.requestArm(); // Run pressed: the attach arms first
+    const detach = bridge.attach(sim, report.bindings);
+    expect(received[0]).toEqual({ '%IX0.0': false, '%IW0': 0 }); // only the program's own inputs
+    await eventually(() => c.snapshot.status?.armed === true, 3000, 'armed by Run');
     c.simulate({ '%IX0.0': true, '%IW0': 65000 });
     await eventually(() => received.some((r) => r['%IX0.0'] === true && r['%IW0'] === 65000 - 65536), 3000, 'typed inputs');
     emit?.({ '%QX0.0': true }, 1);
@@ -95,6 +108,14 @@ describe('GatewayClient and GatewayBridge', () => {
     expect(emit).toBeUndefined();
     bridge.stop();
     await eventually(() => gw.simulated?.writtenValues().get('%QX0.0') === false, 3000, 'safe state');
+    await eventually(() => c.snapshot.status?.disarm?.cause === 'stop', 3000, 'disarmed by stop');
+    // A re-attach (reconnect, online change) without a new Run does not arm: outputs stay refused.
+    bridge.attach(sim, report.bindings);
+    emit?.({ '%QX0.0': true }, 2);
+    await eventually(() => c.snapshot.lastError?.code === 'disarmed', 3000, 'refused after stop');
+    expect(c.snapshot.status?.armed).toBe(false);
+    expect(gw.simulated?.writtenValues().get('%QX0.0')).toBe(false);
+    bridge.stop();
     c.disconnect();
   });
 

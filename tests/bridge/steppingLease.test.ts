@@ -121,6 +121,7 @@ describe('SteppingLease with a real gateway', () => {
     await sleep(WATCHDOG_MS);
     expect(written()).toBe(false);
     expect(client.snapshot.status?.watchdog.state).toBe('idle');
+    expect(client.snapshot.status?.armed).toBe(false); // declining does not arm
   });
 
   it('once confirmed, each step reads the gateway inputs first, writes its outputs, and keeps the lease fed between steps', async () => {
@@ -129,11 +130,13 @@ describe('SteppingLease with a real gateway', () => {
     client.simulate({ '%IX0.0': true });
     await eventually(() => client.snapshot.values['%IX0.0'] === true, 3000, 'input set on the device');
     expect(lease.step({ kind: 'scans', scans: 1 }, sim.context(bindings))).toBe('asked');
-    lease.confirm();
+    expect(client.snapshot.status?.armed).toBe(false); // the gateway starts disarmed
+    lease.confirm(); // the operator's confirmation arms it
     expect(lease.snapshot().phase).toBe('stepping');
     expect(sim.events).toEqual(['inputs', 'scan']);
     expect(sim.inputs['%IX0.0']).toBe(true);
     await eventually(() => written() === true, 3000, 'output on the device');
+    expect(client.snapshot.status?.armed).toBe(true);
 
     // Paused in stepping mode for several watchdog periods: still armed, fed, output kept.
     await sleep(WATCHDOG_MS * 4);
@@ -160,6 +163,18 @@ describe('SteppingLease with a real gateway', () => {
     expect(written()).toBe(false);
     expect(lease.step({ kind: 'scans', scans: 1 }, sim.context(bindings))).toBe('asked');
     lease.decline();
+    expect(client.snapshot.status).toMatchObject({ armed: false, disarm: { cause: 'stop' } });
+  });
+
+  it('the Safe state (stop) while stepping latches: later steps do not re-arm, their outputs are refused', async () => {
+    const sim = await steppingWithOutputOn();
+    client.stop(); // the Hardware panel's Safe state, the lease still feeding
+    await eventually(() => written() === false && client.snapshot.status?.armed === false, 3000, 'safe state');
+    expect(lease.step({ kind: 'scans', scans: 1 }, sim.context(bindings))).toBe('stepped-on-hardware');
+    await eventually(() => client.snapshot.lastError?.code === 'disarmed', 3000, 'outputs refused');
+    await sleep(WATCHDOG_MS * 2);
+    expect(written()).toBe(false);
+    expect(client.snapshot.status?.disarm?.cause).toBe('stop');
   });
 
   it('Run hands the lease over without a safe-state gap', async () => {
