@@ -59,8 +59,10 @@ export class ModbusTcpDevice implements Device {
   private nextConnectAt = 0;
   private timer: NodeJS.Timeout | undefined;
   private closed = false;
+  private requestTimeoutMs: number;
 
   constructor(private readonly cfg: ResolvedDevice) {
+    this.requestTimeoutMs = cfg.timeoutMs;
     this.info = { id: cfg.id, kind: 'modbus-tcp' as const, target: `${cfg.host}:${cfg.port} unit ${cfg.unitId}` };
     this.points = cfg.resolvedPoints;
     this.readBlocks = planBlocks(this.points.filter((p) => p.dir === 'in'), false);
@@ -132,7 +134,8 @@ export class ModbusTcpDevice implements Device {
       try {
         if (!this.client?.isOpen) await this.connect(Math.min(this.cfg.timeoutMs, left));
         // Give a slow device all the time that is left to answer the last write.
-        this.client?.setTimeout(Math.max(50, end - Date.now()));
+        this.requestTimeoutMs = Math.max(50, end - Date.now());
+        this.client?.setTimeout(this.requestTimeoutMs);
         await this.enqueue(() => this.writeAll(false));
         if (this.safeAcked) return true;
       } catch (e) {
@@ -227,7 +230,7 @@ export class ModbusTcpDevice implements Device {
     this.dropClient();
     const client = new ModbusClient();
     client.on('error', () => undefined); // socket errors surface as failed requests
-    client.setTimeout(this.cfg.timeoutMs); // before connect: a silent peer must not hang a request
+    client.setTimeout(this.requestTimeoutMs); // before connect: a silent peer must not hang a request
     client.setID(this.cfg.unitId);
     this.client = client;
     try {
@@ -241,6 +244,14 @@ export class ModbusTcpDevice implements Device {
     // A new connection may be a restarted device: write the desired image (safe unless driven) first thing.
     this.connected = true;
     this.writeDue = true;
+  }
+
+  /**
+   * One Modbus request, settled for sure: modbus-serial's own timeout is cancelled without an answer
+   * when the connection is destroyed, which would leave the queue (and every later safe write) stuck.
+   */
+  private request<T>(job: () => Promise<T>): Promise<T> {
+    return withTimeout(job(), this.requestTimeoutMs + 100, 'Modbus request');
   }
 
   private dropClient(): void {
@@ -268,10 +279,10 @@ export class ModbusTcpDevice implements Device {
     for (const b of this.readBlocks) {
       const n = b.points.length;
       let raw: readonly (boolean | number)[];
-      if (b.table === 'discreteInputs') raw = (await client.readDiscreteInputs(b.start, n)).data;
-      else if (b.table === 'coils') raw = (await client.readCoils(b.start, n)).data;
-      else if (b.table === 'inputRegisters') raw = (await client.readInputRegisters(b.start, n)).data;
-      else raw = (await client.readHoldingRegisters(b.start, n)).data;
+      if (b.table === 'discreteInputs') raw = (await this.request(() => client.readDiscreteInputs(b.start, n))).data;
+      else if (b.table === 'coils') raw = (await this.request(() => client.readCoils(b.start, n))).data;
+      else if (b.table === 'inputRegisters') raw = (await this.request(() => client.readInputRegisters(b.start, n))).data;
+      else raw = (await this.request(() => client.readHoldingRegisters(b.start, n))).data;
       b.points.forEach((p, i) => {
         const r = raw[i];
         const value = typeof r === 'boolean' ? r : fromRegister(p.type, r ?? 0);
@@ -295,8 +306,8 @@ export class ModbusTcpDevice implements Device {
     const changed = new Map<string, WireValue>();
     for (const [i, b] of this.writeBlocks.entries()) {
       const vals = image[i] ?? [];
-      if (b.table === 'coils') await client.writeCoils(b.start, vals.map((v) => v === true));
-      else await client.writeRegisters(b.start, vals.map(toRegister));
+      if (b.table === 'coils') await this.request(() => client.writeCoils(b.start, vals.map((v) => v === true)));
+      else await this.request(() => client.writeRegisters(b.start, vals.map(toRegister)));
       b.points.forEach((p, k) => {
         const v = vals[k] ?? zeroOf(p.type);
         if (this.written.get(p.address) !== v) changed.set(p.address, v);

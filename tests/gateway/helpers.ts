@@ -1,5 +1,7 @@
 // Real peers for gateway tests: Debian's pymodbus server, mbpoll, and a ws client speaking protocol v1.
 import { execFile, spawn, type ChildProcessWithoutNullStreams } from 'node:child_process';
+import { existsSync, readFileSync } from 'node:fs';
+import { connect, createServer as createNetServer, type AddressInfo, type Server, type Socket } from 'node:net';
 import { createInterface } from 'node:readline';
 import { fileURLToPath } from 'node:url';
 import WebSocket from 'ws';
@@ -25,8 +27,9 @@ export class PyModbusServer {
     proc.stderr.resume();
   }
 
-  static async start(port: number): Promise<PyModbusServer> {
-    const proc = spawn('/usr/bin/python3', [SERVER_SCRIPT, String(port)], { stdio: ['pipe', 'pipe', 'pipe'] });
+  /** @param writeLog file that gets one line per client write (see readWriteLog), kept across restarts. */
+  static async start(port: number, writeLog?: string): Promise<PyModbusServer> {
+    const proc = spawn('/usr/bin/python3', [SERVER_SCRIPT, String(port), ...(writeLog ? [writeLog] : [])], { stdio: ['pipe', 'pipe', 'pipe'] });
     const server = new PyModbusServer(port, proc);
     const first = await server.nextLine(10_000);
     if (first !== 'READY') throw new Error(`pymodbus server did not start: ${first}`);
@@ -59,6 +62,17 @@ export class PyModbusServer {
     return m[1].split(',').map(Number);
   }
 
+  /** Fault injection: answer normally, with a Modbus exception, or only after `delayMs`. */
+  async mode(mode: 'normal' | 'exception' | 'slow', delayMs = 0): Promise<void> {
+    this.proc.stdin.write(`mode ${mode} ${delayMs}\n`);
+    const r = await this.nextLine(10_000);
+    if (r !== 'OK') throw new Error(r);
+  }
+
+  get alive(): boolean {
+    return this.proc.exitCode === null && this.proc.signalCode === null;
+  }
+
   kill(): Promise<void> {
     if (this.proc.exitCode !== null || this.proc.signalCode !== null) return Promise.resolve();
     return new Promise((resolve) => {
@@ -66,6 +80,26 @@ export class PyModbusServer {
       this.proc.kill('SIGKILL');
     });
   }
+}
+
+/** One write a client made to the pymodbus server, from its write log. */
+export interface LoggedWrite {
+  readonly at: number;
+  readonly table: 'co' | 'hr';
+  readonly address: number;
+  readonly values: readonly number[];
+}
+
+/** The writes in a pymodbus write log, in order. */
+export function readWriteLog(file: string): LoggedWrite[] {
+  if (!existsSync(file)) return [];
+  return readFileSync(file, 'utf8')
+    .split('\n')
+    .filter((l) => l.trim() !== '')
+    .map((l) => {
+      const [at, table, address, values] = l.split(' ');
+      return { at: Number(at), table: table as 'co' | 'hr', address: Number(address), values: (values ?? '').split(',').map(Number) };
+    });
 }
 
 /** Runs Debian's mbpoll once (zero-based references) and returns its stdout. */
@@ -223,4 +257,58 @@ export async function eventually(check: () => boolean | Promise<boolean>, timeou
     await new Promise((r) => setTimeout(r, 20));
   }
   throw new Error(`${what} not reached within ${timeoutMs} ms`);
+}
+
+/**
+ * A TCP link between the gateway and a device that a test can cut (a pulled cable or a switch that
+ * died): while cut, connections are reset and new ones refused; the device behind it keeps its state.
+ */
+export class CuttableLink {
+  private readonly sockets = new Set<Socket>();
+  private cut = false;
+  private constructor(
+    private readonly server: Server,
+    readonly port: number,
+  ) {}
+
+  static async open(targetPort: number): Promise<CuttableLink> {
+    let link: CuttableLink | undefined;
+    const server = createNetServer((client) => {
+      if (!link || link.cut) {
+        client.destroy();
+        return;
+      }
+      const upstream = connect(targetPort, '127.0.0.1');
+      for (const [a, b] of [
+        [client, upstream],
+        [upstream, client],
+      ] as const) {
+        link.sockets.add(a);
+        a.on('error', () => b.destroy());
+        a.on('close', () => {
+          link?.sockets.delete(a);
+          b.destroy();
+        });
+        a.pipe(b);
+      }
+    });
+    const port = await new Promise<number>((resolve) => server.listen(0, '127.0.0.1', () => resolve((server.address() as AddressInfo).port)));
+    link = new CuttableLink(server, port);
+    return link;
+  }
+
+  /** Resets every connection and refuses new ones until `restore`. */
+  sever(): void {
+    this.cut = true;
+    for (const s of this.sockets) s.destroy();
+  }
+
+  restore(): void {
+    this.cut = false;
+  }
+
+  close(): Promise<void> {
+    this.sever();
+    return new Promise((resolve) => this.server.close(() => resolve()));
+  }
 }
