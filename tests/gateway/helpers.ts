@@ -272,8 +272,9 @@ export class CuttableLink {
   ) {}
 
   static async open(targetPort: number): Promise<CuttableLink> {
-    let link: CuttableLink | undefined;
+    const made: { link?: CuttableLink } = {};
     const server = createNetServer((client) => {
+      const link = made.link;
       if (!link || link.cut) {
         client.destroy();
         return;
@@ -286,15 +287,15 @@ export class CuttableLink {
         link.sockets.add(a);
         a.on('error', () => b.destroy());
         a.on('close', () => {
-          link?.sockets.delete(a);
+          link.sockets.delete(a);
           b.destroy();
         });
         a.pipe(b);
       }
     });
     const port = await new Promise<number>((resolve) => server.listen(0, '127.0.0.1', () => resolve((server.address() as AddressInfo).port)));
-    link = new CuttableLink(server, port);
-    return link;
+    made.link = new CuttableLink(server, port);
+    return made.link;
   }
 
   /** Resets every connection and refuses new ones until `restore`. */
