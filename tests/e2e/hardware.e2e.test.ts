@@ -54,7 +54,11 @@ describe('Hardware panel', () => {
     await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
     await expect.poll(() => panel.getByTestId('hw-device-sim').textContent()).toContain('online');
     expect(await panel.getByTestId('hw-points').locator('tbody tr').count()).toBe(40);
-    expect(await panel.getByTestId('hw-watchdog').textContent()).toContain('armed');
+    // The gateway starts disarmed; the panel says why and offers Arm (the device is online).
+    expect(await panel.getByTestId('hw-watchdog').textContent()).toContain('Outputs disarmed');
+    expect(await panel.getByTestId('hw-disarm').textContent()).toContain('not armed since the gateway started');
+    expect(await panel.getByTestId('hw-device-sim').getByTestId('hw-device-outputs').textContent()).toBe('safe state');
+    expect(await panel.getByTestId('hw-arm').isEnabled()).toBe(true);
   });
 
   it('sets a simulated input from the panel, visible to mbpoll as a discrete input', async () => {
@@ -80,6 +84,7 @@ describe('Hardware panel', () => {
     await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as observer');
     expect(await panel.getByTestId('hw-arm').isDisabled()).toBe(true);
     gw.hub.claim('test-controller', 'controller');
+    gw.hub.arm();
     gw.hub.outputs(new Map([['%QX0.5', true]]));
     await expect.poll(() => page.getByTestId('hw-point-%QX0.5').getByTestId('hw-value').textContent()).toBe('TRUE');
     await gw.hub.stop('test over');
@@ -136,7 +141,9 @@ describe('Hardware panel', () => {
     const dialog = journey.getByRole('alertdialog', { name: 'Step with real outputs?' });
     await dialog.waitFor();
     expect(await dialog.textContent()).toContain('drives the real outputs');
-    expect(await dialog.getByTestId('hw-step-watchdog').textContent()).toMatch(/Outputs armed; watchdog 1000 ms/);
+    // Pause disarmed the gateway (STOP latches): the dialog says so, and that confirming arms.
+    expect(await dialog.getByTestId('hw-step-watchdog').textContent()).toMatch(/Outputs disarmed; watchdog 1000 ms/);
+    expect(await dialog.getByTestId('hw-step-disarmed').textContent()).toMatch(/STOP.*Confirming arms them/);
     expect(await journey.evaluate(() => document.activeElement?.textContent)).toBe('Cancel');
     await journey.keyboard.press('Escape');
     await dialog.waitFor({ state: 'detached' });

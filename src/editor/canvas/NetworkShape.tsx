@@ -43,8 +43,9 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
       ...(overlay.power ? { power: overlay.power } : {}),
       ...(overlay.liveValues ? { liveValues: overlay.liveValues } : {}),
       ...(overlay.forced ? { forced: overlay.forced } : {}),
+      ...(overlay.device ? { device: overlay.device } : {}),
     }),
-    [selected, cursor, hover, markers, drag, overlay.power, overlay.liveValues, overlay.forced],
+    [selected, cursor, hover, markers, drag, overlay.power, overlay.liveValues, overlay.forced, overlay.device],
   );
   const width = networkWidth(network);
   const height = network.rows * CELL_H + GRID_PAD_BOTTOM;

@@ -27,6 +27,8 @@ export interface NetworkPaint {
   readonly liveValues?: ReadonlyMap<ElementId, string>;
   /** Elements with a forced variable (simulation). */
   readonly forced?: ReadonlySet<ElementId>;
+  /** Elements whose device value differs from the program's, with the marker text (simulation with hardware). */
+  readonly device?: ReadonlyMap<ElementId, string>;
   /** Elements being dragged (drawn faded) and the offset in cells of their ghost. */
   readonly drag?: {
     readonly ids: ReadonlySet<ElementId>;
@@ -40,6 +42,26 @@ export interface NetworkPaint {
 }
 
 type Ctx = CanvasRenderingContext2D;
+
+/** The device holds another value than the program: a boxed "device: FALSE" tag over the element's top edge. */
+function drawDeviceMark(ctx: Ctx, t: CanvasTheme, el: LdElement, text: string) {
+  const s = elementSize(el);
+  const x = el.col * CELL_W;
+  const y = el.row * CELL_H;
+  ctx.font = 'bold 10px system-ui, sans-serif';
+  const w = Math.min(ctx.measureText(text).width + 8, s.cols * CELL_W - 4);
+  const left = x + s.cols * CELL_W - 2 - w;
+  ctx.fillStyle = t.networkBg;
+  ctx.fillRect(left, y + 1, w, 13);
+  ctx.strokeStyle = t.warning;
+  ctx.lineWidth = 1.5;
+  ctx.strokeRect(left, y + 1, w, 13);
+  ctx.fillStyle = t.text;
+  ctx.textAlign = 'center';
+  ctx.textBaseline = 'middle';
+  ctx.fillText(text, left + w / 2, y + 8, w - 4);
+  ctx.textBaseline = 'alphabetic';
+}
 
 /** A forced element: an outline and an "F" tag at its top-left corner, in the theme's forced colour. */
 function drawForcedMark(ctx: Ctx, t: CanvasTheme, el: LdElement) {
@@ -110,6 +132,10 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     ctx.restore();
   });
   if (paint.forced) for (const el of n.elements) if (paint.forced.has(el.id)) drawForcedMark(ctx, t, el);
+  if (paint.device) for (const el of n.elements) {
+    const text = paint.device.get(el.id);
+    if (text) drawDeviceMark(ctx, t, el, text);
+  }
   for (const el of n.elements) {
     if (!paint.selected.has(el.id)) continue;
     const s = elementSize(el);

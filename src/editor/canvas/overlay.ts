@@ -14,6 +14,8 @@ export interface NetworkOverlay {
   readonly liveValues?: ReadonlyMap<ElementId, string>;
   /** Elements whose variable (or an output) is forced: drawn marked in the theme's forced colour. */
   readonly forced?: ReadonlySet<ElementId>;
+  /** Elements whose I/O point holds another value on the device than in the program: the marker text ("device: FALSE"). */
+  readonly device?: ReadonlyMap<ElementId, string>;
 }
 
 export type NetworkOverlayHook = (network: Network, index: number) => NetworkOverlay;

@@ -1,5 +1,8 @@
-// Devices, armed/watchdog state, re-arm and safe-state buttons.
+// Devices (state and what their outputs hold), armed/disarmed with why, watchdog, Arm and Safe state.
+// Safe state latches like STOP: the gateway refuses outputs until Arm, and a running simulation keeps
+// running without re-arming by itself (only Arm, or a new Run / confirmed step, arms).
 import { gatewayLink } from '../../bridge/gatewayLink';
+import { armBlocker, disarmWords, OUTPUTS_WORDS } from './armState';
 import { hardwareStepping } from './useHardwareStepping';
 import { useGateway } from './useGateway';
 
@@ -9,6 +12,9 @@ function safeState(): void {
   else gatewayLink.client?.stop();
 }
 
+const refusalWords = (code: string, ref: string | number | null) =>
+  code === 'arm-refused' ? 'Arm refused' : code === 'disarmed' ? 'Outputs refused' : `Gateway refused ${String(ref ?? 'a message')}`;
+
 const WATCHDOG_WORDS = { idle: 'idle (no outputs running)', fed: 'fed by the program (running, or stepping on hardware)', tripped: 'TRIPPED: outputs in safe state' } as const;
 
 export function GatewayStatus() {
@@ -17,6 +23,8 @@ export function GatewayStatus() {
   const status = view.status;
   const controller = view.role === 'controller';
   const kinds = new Map(view.devices.map((d) => [d.id, d]));
+  const blocker = armBlocker(view);
+  const disarmed = disarmWords(view);
   return (
     <section className="rs-hw-section" aria-label="Gateway status">
       <table className="rs-hw-table" data-testid="hw-devices">
@@ -25,6 +33,7 @@ export function GatewayStatus() {
             <th>Device</th>
             <th>Where</th>
             <th>State</th>
+            <th>Outputs</th>
           </tr>
         </thead>
         <tbody>
@@ -36,6 +45,9 @@ export function GatewayStatus() {
                 {d.state}
                 {d.error ? `: ${d.error}` : ''}
               </td>
+              <td className={`rs-hw-outputs rs-hw-outputs-${d.outputs}`} data-testid="hw-device-outputs">
+                {OUTPUTS_WORDS[d.outputs]}
+              </td>
             </tr>
           ))}
         </tbody>
@@ -46,11 +58,21 @@ export function GatewayStatus() {
           {status.watchdog.autoRearm ? ' (auto re-arm)' : ''}
         </p>
       )}
+      {disarmed && (
+        <p className="rs-hw-disarm" role="status" data-testid="hw-disarm">
+          <strong>Outputs held in the safe state</strong>: {disarmed}
+        </p>
+      )}
       <div className="rs-hw-row">
-        <button type="button" disabled={!controller || status?.armed !== false} onClick={() => gatewayLink.client?.arm()} data-testid="hw-arm"
-          title={controller ? 'Resume writing outputs after a watchdog trip' : 'Only the controller can re-arm'}>
-          Re-arm
+        <button type="button" disabled={blocker !== null || status?.armed !== false} onClick={() => gatewayLink.bridge?.arm()} data-testid="hw-arm"
+          title={blocker ?? (status?.armed ? 'Outputs are armed' : 'Let the program drive the outputs again')}>
+          Arm
         </button>
+        {blocker !== null && status?.armed === false && (
+          <span className="rs-hw-warning" data-testid="hw-arm-blocked">
+            Arm unavailable: {blocker}
+          </span>
+        )}
         <button type="button" disabled={!controller} onClick={safeState} data-testid="hw-safe"
           title="Write the safe state now (every output OFF unless configured hold)">
           Safe state
@@ -60,8 +82,8 @@ export function GatewayStatus() {
         </button>
       </div>
       {view.lastError && (
-        <p className="rs-hw-problem" data-testid="hw-last-error">
-          Gateway refused {String(view.lastError.ref ?? 'a message')}: {view.lastError.message}
+        <p className="rs-hw-problem" role="alert" data-testid="hw-last-error">
+          {refusalWords(view.lastError.code, view.lastError.ref)}: {view.lastError.message}
         </p>
       )}
     </section>

@@ -2,8 +2,12 @@
 // the toolbar badge that shows the lease and watchdog while stepping drives real outputs.
 import { useEffect, useId, useRef, type KeyboardEvent } from 'react';
 import type { StepRequest } from '../../bridge/steppingLease';
+import type { GatewayView } from '../../bridge/GatewayClient';
 import type { StatusMessage } from '../../protocol/messages';
 import { gatewayLink } from '../../bridge/gatewayLink';
+import type { SimState } from '../../store/simStore';
+import { useSim } from '../sim/simContext';
+import { armBlocker, disarmWords } from './armState';
 import { hardwareStepping, useSteppingView } from './useHardwareStepping';
 import { useGateway } from './useGateway';
 import './hardware.css';
@@ -13,29 +17,32 @@ const WATCHDOG_STATE = { idle: 'idle', fed: 'fed', tripped: 'TRIPPED' } as const
 const stepWords = (r: StepRequest): string =>
   r.kind === 'network' ? 'one network' : r.scans === 1 ? 'one scan' : `${r.scans} scans`;
 
-/** "Outputs armed; watchdog 1000 ms, fed" in the gateway's terms. */
+/** "Outputs armed; watchdog 1000 ms, fed" in the gateway's terms, with why when disarmed. */
 function WatchdogLine({ status }: { status: StatusMessage | null }) {
   if (!status) return <span data-testid="hw-step-watchdog">Watchdog state not reported yet</span>;
   return (
     <span data-testid="hw-step-watchdog" className={status.armed ? undefined : 'rs-hw-error'}>
-      Outputs <strong>{status.armed ? 'armed' : 'disarmed (safe state after a watchdog trip)'}</strong>; watchdog {status.watchdog.ms} ms,{' '}
-      {WATCHDOG_STATE[status.watchdog.state]}
+      Outputs <strong>{status.armed ? 'armed' : 'disarmed'}</strong>; watchdog {status.watchdog.ms} ms, {WATCHDOG_STATE[status.watchdog.state]}
     </span>
   );
 }
 
-function RearmButton({ status }: { status: StatusMessage | null }) {
-  if (status?.armed !== false) return null;
+/** The operator's Arm: disabled, with the reason, when a device is not online or this page is not the controller. */
+function ArmButton({ view, testId }: { view: GatewayView; testId: string }) {
+  if (view.status?.armed !== false) return null;
+  const blocker = armBlocker(view);
   return (
-    <button type="button" onClick={() => gatewayLink.client?.arm()} data-testid="hw-step-arm" title="Resume writing outputs after the watchdog trip">
-      Re-arm outputs
+    <button type="button" disabled={blocker !== null} onClick={() => gatewayLink.bridge?.arm()} data-testid={testId}
+      title={blocker ?? 'Let the program drive the outputs again'}>
+      Arm
     </button>
   );
 }
 
 export function SteppingConfirmDialog() {
   const view = useSteppingView();
-  const { status } = useGateway();
+  const gateway = useGateway();
+  const { status } = gateway;
   const titleId = useId();
   const textId = useId();
   const cancelRef = useRef<HTMLButtonElement>(null);
@@ -90,9 +97,14 @@ export function SteppingConfirmDialog() {
           <p>
             <WatchdogLine status={status} />
           </p>
+          {status?.armed === false && (
+            <p data-testid="hw-step-disarmed">
+              The outputs are held in the safe state ({disarmWords(gateway)}). Confirming arms them.
+              {armBlocker(gateway) !== null && <span className="rs-hw-error"> The gateway will refuse: {armBlocker(gateway)}.</span>}
+            </p>
+          )}
         </div>
         <div className="rs-hw-dialog-buttons">
-          <RearmButton status={status} />
           <button ref={cancelRef} type="button" onClick={() => hardwareStepping.decline()} data-testid="hw-step-cancel">
             Cancel
           </button>
@@ -105,15 +117,31 @@ export function SteppingConfirmDialog() {
   );
 }
 
-/** In the simulation toolbar while stepping drives the hardware. */
+const selectRunning = (s: SimState) => s.mode === 'running';
+
+/**
+ * In the simulation toolbar: while stepping drives the hardware; and while the simulation runs as
+ * controller with the outputs disarmed (Safe state, arm refused, a device lost...): it keeps running
+ * in the browser, the outputs stay safe, and only the operator's Arm drives them again.
+ */
 export function SteppingBadge() {
   const view = useSteppingView();
-  const { status } = useGateway();
-  if (view.phase !== 'stepping') return null;
+  const gateway = useGateway();
+  const { status } = gateway;
+  const running = useSim(selectRunning);
+  if (view.phase !== 'stepping') {
+    if (!running || gateway.link !== 'open' || gateway.role !== 'controller' || status?.armed !== false) return null;
+    return (
+      <span className="rs-hw-running-disarmed" role="status" data-testid="hw-run-disarmed">
+        <strong>Outputs not driven</strong> — {disarmWords(gateway) ?? 'the gateway is disarmed'}
+        <ArmButton view={gateway} testId="hw-run-arm" />
+      </span>
+    );
+  }
   return (
     <span className="rs-hw-stepping" role="status" data-testid="hw-stepping">
       <strong>Stepping on hardware</strong> <WatchdogLine status={status} />
-      <RearmButton status={status} />
+      <ArmButton view={gateway} testId="hw-step-arm" />
       <button type="button" onClick={() => hardwareStepping.end('stop')} data-testid="hw-step-end"
         title="Leave hardware stepping: the gateway writes the safe state">
         End (safe state)

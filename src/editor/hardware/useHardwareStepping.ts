@@ -34,6 +34,10 @@ export function useSimCommands(): SimCommands {
     return {
       run: () => {
         hardwareStepping.end('run');
+        // Run as controller is the operator's deliberate act: the gateway is armed before the run's
+        // first outputs (and by nothing else: not a reconnect, not an online change).
+        const v = gatewayLink.snapshot();
+        if (v.link === 'open' && v.role === 'controller') gatewayLink.bridge?.requestArm();
         sim.getState().run(project());
       },
       step: (request) => {

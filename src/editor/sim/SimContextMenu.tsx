@@ -1,7 +1,12 @@
 // Right-click menu on a contact or coil while simulating: force, unforce, watch, trend.
 // The canvas opens it with simStore.openContextMenu({ x, y, variable }) (page coordinates).
+// With hardware attached, a field input (a %I variable the gateway has as a point) comes from the
+// device: the menu says so, and forcing it asks for a confirmation first, as stepping on hardware does.
 import { useEffect, useRef, useState } from 'react';
+import type { SimValueInput } from '../../sim/protocol';
 import type { SimState } from '../../store/simStore';
+import { fieldInputAddress, fieldInputWords } from '../hardware/fieldIo';
+import { useGateway } from '../hardware/useGateway';
 import { forcedText, liveText } from './liveValues';
 import { useSim, useSimStore } from './simContext';
 import './sim.css';
@@ -23,6 +28,10 @@ function OpenMenu({ x, y, variable }: { x: number; y: number; variable: string }
   const value = useSim((s) => liveText(s, variable));
   const forced = useSim((s) => forcedText(s, variable));
   const [text, setText] = useState('');
+  const gateway = useGateway();
+  const field = fieldInputAddress(described, gateway);
+  /** A force of a field input waiting for the confirmation. */
+  const [confirming, setConfirming] = useState<{ input: SimValueInput; words: string } | undefined>();
   const close = () => sim.getState().closeContextMenu();
   useEffect(() => {
     ref.current?.querySelector<HTMLElement>('[role="menuitem"]')?.focus();
@@ -42,24 +51,50 @@ function OpenMenu({ x, y, variable }: { x: number; y: number; variable: string }
     close();
   };
   const s = sim.getState();
+  const force = (input: SimValueInput, words: string) => () => {
+    if (field) setConfirming({ input, words });
+    else act(() => s.force(variable, input))();
+  };
+  if (field && confirming) {
+    return (
+      <div ref={ref} className="rs-sim-menu" role="alertdialog" aria-label={`Force ${variable} on hardware?`} style={{ left: x, top: y }}
+        data-testid="sim-context-menu">
+        <div className="rs-sim-menu-title">Force {variable} {confirming.words}?</div>
+        <div className="rs-sim-menu-row rs-sim-field-note" data-testid="sim-force-field-warning">
+          The program will ignore the device&apos;s {field} and use {confirming.words}: outputs that depend on it are driven on the real
+          hardware. The variable is marked forced until you unforce it.
+        </div>
+        <button type="button" role="menuitem" className="rs-sim-danger" onClick={act(() => s.force(variable, confirming.input))}
+          data-testid="sim-force-confirm">
+          Force and drive outputs
+        </button>
+        <button type="button" role="menuitem" onClick={close} data-testid="sim-force-cancel">Cancel</button>
+      </div>
+    );
+  }
   return (
     <div ref={ref} className="rs-sim-menu" role="menu" aria-label={`Simulation: ${variable}`} style={{ left: x, top: y }} data-testid="sim-context-menu">
       <div className="rs-sim-menu-title">
         {variable} {value !== undefined && <span className="rs-sim-unit">= {value}</span>}
         {forced !== undefined && <span className="rs-sim-forced-tag"> forced {forced}</span>}
       </div>
+      {field && (
+        <div className="rs-sim-menu-row rs-sim-field-note" role="note" data-testid="sim-field-input">
+          {fieldInputWords(field, variable)}
+        </div>
+      )}
       {!forceable ? (
         <div className="rs-sim-menu-row rs-sim-unit">Function block pins cannot be forced.</div>
       ) : type === 'BOOL' ? (
         <>
-          <button type="button" role="menuitem" onClick={act(() => s.force(variable, { value: true }))}>Force TRUE</button>
-          <button type="button" role="menuitem" onClick={act(() => s.force(variable, { value: false }))}>Force FALSE</button>
+          <button type="button" role="menuitem" onClick={force({ value: true }, 'TRUE')}>Force TRUE</button>
+          <button type="button" role="menuitem" onClick={force({ value: false }, 'FALSE')}>Force FALSE</button>
         </>
       ) : (
         <div className="rs-sim-menu-row">
           <input className="rs-sim-text rs-sim-narrow" aria-label={`Force ${variable} to`} placeholder={type ?? 'value'} value={text}
-            onChange={(e) => setText(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && text.trim() && act(() => s.force(variable, { text }))()} />
-          <button type="button" role="menuitem" disabled={!text.trim()} onClick={act(() => s.force(variable, { text }))}>Force</button>
+            onChange={(e) => setText(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && text.trim() && force({ text }, text.trim())()} />
+          <button type="button" role="menuitem" disabled={!text.trim()} onClick={force({ text }, text.trim())}>Force</button>
         </div>
       )}
       {forceable && (

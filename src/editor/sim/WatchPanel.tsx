@@ -2,6 +2,9 @@
 import { useState } from 'react';
 import type { SimVariable } from '../../sim/protocol';
 import type { SimState } from '../../store/simStore';
+import { useDeviceMark } from '../hardware/deviceMarks';
+import { fieldInputAddress, fieldInputWords } from '../hardware/fieldIo';
+import { useGateway } from '../hardware/useGateway';
 import { forcedText, liveText } from './liveValues';
 import { useSim, useSimStore } from './simContext';
 import { useWatchCandidates } from './useWatchCandidates';
@@ -57,6 +60,10 @@ function WatchRow({ name, variable }: { name: string; variable: SimVariable | un
   const value = useSim((s) => liveText(s, name));
   const forced = useSim((s) => forcedText(s, name));
   const inTrend = useSim((s) => s.trendNames.some((n) => n.toUpperCase() === name.toUpperCase()));
+  const device = useDeviceMark(name);
+  // With hardware attached a field input comes from the device: no one-off write, only a confirmed force.
+  const field = fieldInputAddress(variable, useGateway());
+  const [confirmForce, setConfirmForce] = useState(false);
   const [text, setText] = useState('');
   const input = () => ({ text: text.trim() || (type === 'BOOL' ? (value === 'TRUE' ? 'FALSE' : 'TRUE') : '') });
   return (
@@ -67,18 +74,39 @@ function WatchRow({ name, variable }: { name: string; variable: SimVariable | un
         title={forced !== undefined ? `forced to ${forced}` : undefined}>
         {value ?? '—'}
         {forced !== undefined && <span className="rs-sim-forced-tag"> F</span>}
+        {device !== undefined && (
+          <span className="rs-sim-device-tag" data-testid="watch-device" title="The value the device holds now">
+            {' '}
+            {device}
+          </span>
+        )}
       </td>
       <td>
         <input className="rs-sim-text rs-sim-narrow" aria-label={`New value for ${name}`} value={text}
           placeholder={type === 'BOOL' ? 'TRUE/FALSE' : type} onChange={(e) => setText(e.target.value)}
-          onKeyDown={(e) => e.key === 'Enter' && sim.getState().write(name, input())} data-testid="watch-input" />
+          onKeyDown={(e) => e.key === 'Enter' && !field && sim.getState().write(name, input())} data-testid="watch-input" />
       </td>
       <td className="rs-sim-actions">
-        <button type="button" className="rs-sim-btn" title="Write the value once (an input: at the next input read)"
+        <button type="button" className="rs-sim-btn" disabled={field !== undefined}
+          title={field ? fieldInputWords(field, name) : 'Write the value once (an input: at the next input read)'}
           onClick={() => sim.getState().write(name, input())} data-testid="watch-write">Write</button>
-        <button type="button" className="rs-sim-btn" disabled={pin}
-          title={pin ? 'Function block pins cannot be forced' : 'Force: the variable keeps this value whatever the program or inputs do'}
-          onClick={() => sim.getState().force(name, input())} data-testid="watch-force">Force</button>
+        {field && confirmForce ? (
+          <>
+            <button type="button" className="rs-sim-btn rs-sim-danger" data-testid="watch-force-confirm"
+              title={`The program ignores the device's ${field}; outputs that depend on it are driven on the hardware`}
+              onClick={() => {
+                setConfirmForce(false);
+                sim.getState().force(name, input());
+              }}>
+              Force on hardware
+            </button>
+            <button type="button" className="rs-sim-btn" onClick={() => setConfirmForce(false)}>Cancel</button>
+          </>
+        ) : (
+          <button type="button" className="rs-sim-btn" disabled={pin}
+            title={pin ? 'Function block pins cannot be forced' : 'Force: the variable keeps this value whatever the program or inputs do'}
+            onClick={() => (field ? setConfirmForce(true) : sim.getState().force(name, input()))} data-testid="watch-force">Force</button>
+        )}
         <button type="button" className="rs-sim-btn" disabled={forced === undefined}
           onClick={() => sim.getState().unforce(name)} data-testid="watch-unforce">Unforce</button>
         <label className="rs-sim-check" title="Show in the trend">

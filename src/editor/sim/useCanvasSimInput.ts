@@ -2,6 +2,8 @@
 // listeners in the capture phase see the event first and take it only when it is for the simulator.
 // - click a contact bound to a BOOL input (%I): toggles it (a switch);
 // - Alt + press on it: TRUE while held (a push-button);
+// - with hardware attached (controller), an input the gateway has as a point comes from the device:
+//   a click does not write it, it opens the menu that says so and offers a (confirmed) force;
 // - right-click a contact or coil: the force/watch/trend menu.
 // Shift/Ctrl-clicks and every other element go to the editor as usual.
 import { useEffect } from 'react';
@@ -11,6 +13,7 @@ import { elementAt } from '../../store/networkEdits';
 import type { SimState } from '../../store/simStore';
 import { useUiStore } from '../../store/uiStore';
 import { hitTest, layoutNetworks } from '../canvas/geometry';
+import { fieldInputAddress } from '../hardware/fieldIo';
 import { useSimStore } from './simContext';
 
 const simulating = (s: SimState) => s.mode === 'running' || s.mode === 'paused';
@@ -52,6 +55,11 @@ export function useCanvasSimInput(): void {
       if (!name) return;
       e.stopPropagation();
       e.preventDefault();
+      if (fieldInputAddress(s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1])) {
+        // A field input: the device drives it; only an explicit force overrides it.
+        s.openContextMenu({ x: e.clientX, y: e.clientY, variable: name });
+        return;
+      }
       if (e.altKey) {
         held = name;
         s.pressInput(name);
