@@ -1,5 +1,7 @@
 // The gateway's config file (JSON), validated with zod. Documented in docs/GATEWAY-CONFIG.md.
 import { readFileSync } from 'node:fs';
+import { isIP } from 'node:net';
+import { parseTree, type Node as JsonNode } from 'jsonc-parser';
 import { z } from 'zod';
 import { POINT_TYPES } from '../protocol/points';
 import { ConfigError, MODBUS_TABLES } from './configTypes';
@@ -16,10 +18,36 @@ const pointEntrySchema = z.strictObject({
 
 const idSchema = z.string().regex(/^[A-Za-z0-9_.-]{1,40}$/, 'use 1-40 letters, digits, "_", "-" or "."');
 
+/** Why `host` is not a bare host name or IP address (a URL, `host:port`, a path), or undefined when it is one. */
+export function hostProblem(host: string): string | undefined {
+  if (isIP(host)) return undefined; // IPv4, or IPv6 such as ::1 (colons, no brackets)
+  if (/^[A-Za-z0-9_](?:[A-Za-z0-9_.-]{0,251}[A-Za-z0-9_])?$/.test(host)) return undefined;
+  const text = JSON.stringify(host);
+  let url: URL | undefined;
+  try {
+    url = new URL(/^[A-Za-z][A-Za-z0-9+.-]*:\/\//.test(host) ? host : `tcp://${host}`);
+  } catch {
+    url = undefined;
+  }
+  const bare = url?.hostname.replace(/^\[(.*)\]$/, '$1');
+  if (url && bare && (isIP(bare) || /^[A-Za-z0-9_.-]+$/.test(bare))) {
+    const port = url.port ? ` and the port in "port": ${url.port}` : ' and the port, if not 502, in "port"';
+    const what = host.includes('://') ? 'a URL' : url.port ? 'a host with a port' : 'not a bare host';
+    return `${text} is ${what}; give the bare host "${bare}"${port}`;
+  }
+  return `${text} is not a host name or IP address; give the bare host (e.g. "192.168.1.10") and the port in "port"`;
+}
+
 const modbusDeviceSchema = z.strictObject({
   id: idSchema,
   type: z.literal('modbus-tcp').default('modbus-tcp'),
-  host: z.string().min(1),
+  host: z
+    .string()
+    .min(1)
+    .superRefine((host, ctx) => {
+      const problem = hostProblem(host);
+      if (problem) ctx.addIssue({ code: 'custom', message: problem });
+    }),
   port: z.number().int().min(1).max(65535).default(502),
   unitId: z.number().int().min(0).max(255).default(1),
   pollMs: z.number().int().min(10).max(60_000).default(100),
@@ -93,5 +121,49 @@ export function loadConfigFile(file: string): ResolvedConfig {
   } catch (e) {
     throw new ConfigError(file, `not valid JSON (${(e as Error).message})`);
   }
+  const duplicate = findDuplicateKey(text);
+  if (duplicate) {
+    throw new ConfigError(
+      `${file}: ${duplicate.path}`,
+      `key "${duplicate.key}" appears twice in the same object (lines ${duplicate.lines[0]} and ${duplicate.lines[1]}); JSON would silently keep the last one, so remove one`,
+    );
+  }
   return resolveConfig(raw, file);
+}
+
+export interface DuplicateKey {
+  readonly key: string;
+  /** JSON path of the duplicated member, e.g. `devices[0].host`. */
+  readonly path: string;
+  /** 1-based lines of the first and the second occurrence. */
+  readonly lines: readonly [number, number];
+}
+
+/** A key that appears twice in one object of `text` (valid JSON); an outer object is checked before its members. */
+export function findDuplicateKey(text: string): DuplicateKey | undefined {
+  const lineOf = (offset: number) => text.slice(0, offset).split('\n').length;
+  const walk = (node: JsonNode, path: readonly PropertyKey[]): DuplicateKey | undefined => {
+    const items: [PropertyKey, JsonNode | undefined][] = [];
+    if (node.type === 'object') {
+      const seen = new Map<string, number>();
+      for (const prop of node.children ?? []) {
+        const [keyNode, value] = prop.children ?? [];
+        if (keyNode?.type !== 'string' || typeof keyNode.value !== 'string') continue;
+        const key = keyNode.value;
+        const first = seen.get(key);
+        if (first !== undefined) return { key, path: pathText([...path, key]), lines: [lineOf(first), lineOf(keyNode.offset)] };
+        seen.set(key, keyNode.offset);
+        items.push([key, value]);
+      }
+    } else if (node.type === 'array') {
+      (node.children ?? []).forEach((item, i) => items.push([i, item]));
+    }
+    for (const [key, child] of items) {
+      const found = child && walk(child, [...path, key]);
+      if (found) return found;
+    }
+    return undefined;
+  };
+  const root = parseTree(text, [], { disallowComments: true, allowTrailingComma: false });
+  return root && walk(root, []);
 }

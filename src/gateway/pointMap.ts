@@ -65,6 +65,9 @@ export function expandPoints(entries: readonly PointEntry[], where: string): Dev
     for (let k = 0; k < e.count; k++) {
       const address = nthAddress(first, k);
       const register = start + k;
+      if ((e.table === undefined || e.register === undefined) && !openPlcRegister(address)) {
+        throw new ConfigError(at, `${address} (address ${k + 1} of ${e.count} from ${first}) is outside the OpenPLC default map; give "table" and "register"`);
+      }
       if (register > 65535) throw new ConfigError(at, `register ${register} of ${address} is beyond 65535`);
       if (out.some((p) => p.address === address)) throw new ConfigError(at, `${address} is mapped twice`);
       const key = `${table}:${register}`;

@@ -48,8 +48,59 @@ describe('gateway config', () => {
     [device([{ address: '%QX0.0', count: 2 }, { address: '%QX0.1' }]), 'devices[0].points[1]: %QX0.1 is mapped twice'],
     [device([{ address: '%QX0.0' }, { address: '%QX5.0', table: 'coils', register: 0 }]), '%QX5.0 and %QX0.0 both write coils 0'],
     [{ devices: [{ id: 'a', host: '127.0.0.1', points: [{ address: '%IX0.0' }] }, { id: 'b', host: '127.0.0.1', points: [{ address: '%IX0.0' }] }] }, '%IX0.0 is already mapped on device "a"'],
+    // Past the OpenPLC default map without an explicit table and register, also when a count runs past its end.
+    [device([{ address: '%IX100.0' }]), 'devices[0].points[0]: %IX100.0 is outside the OpenPLC default map; give "table" and "register"'],
+    [device([{ address: '%QX100.0' }]), 'devices[0].points[0]: %QX100.0 is outside the OpenPLC default map'],
+    [device([{ address: '%IW1024' }]), 'devices[0].points[0]: %IW1024 is outside the OpenPLC default map'],
+    [device([{ address: '%QW1024' }]), 'devices[0].points[0]: %QW1024 is outside the OpenPLC default map'],
+    [device([{ address: '%QX0.0' }, { address: '%QX99.7', count: 2 }]), 'devices[0].points[1]: %QX100.0 (address 2 of 2 from %QX99.7) is outside the OpenPLC default map'],
+    [device([{ address: '%IX99.0', count: 9 }]), 'devices[0].points[0]: %IX100.0 (address 9 of 9 from %IX99.0) is outside the OpenPLC default map'],
+    [device([{ address: '%IW1020', count: 5 }]), '%IW1024 (address 5 of 5 from %IW1020) is outside the OpenPLC default map'],
+    [device([{ address: '%QW1023', count: 2, table: 'holdingRegisters' }]), '%QW1024 (address 2 of 2 from %QW1023) is outside the OpenPLC default map'],
+    [device([{ address: '%IX99.7', count: 2, register: 4000 }]), '%IX100.0 (address 2 of 2 from %IX99.7) is outside the OpenPLC default map'],
+    // A device host is a bare host name or IP address; the port goes in "port".
+    [device([{ address: '%IX0.0' }], { host: 'http://10.0.0.1' }), 'devices[0].host: "http://10.0.0.1" is a URL; give the bare host "10.0.0.1"'],
+    [device([{ address: '%IX0.0' }], { host: 'tcp://127.0.0.1:502' }), 'devices[0].host: "tcp://127.0.0.1:502" is a URL; give the bare host "127.0.0.1" and the port in "port": 502'],
+    [device([{ address: '%IX0.0' }], { host: '127.0.0.1:502' }), 'devices[0].host: "127.0.0.1:502" is a host with a port; give the bare host "127.0.0.1" and the port in "port": 502'],
+    [device([{ address: '%IX0.0' }], { host: '[::1]:1502' }), 'give the bare host "::1" and the port in "port": 1502'],
+    [device([{ address: '%IX0.0' }], { host: 'coupler 1' }), 'devices[0].host: "coupler 1" is not a host name or IP address'],
   ])('refuses %j with a located message', (raw, text) => {
     expect(() => resolveConfig(raw, 'gw.json')).toThrow(text);
+  });
+
+  it('accepts bare host names and IP addresses, and the end of the default map', () => {
+    for (const host of ['127.0.0.1', 'localhost', '::1', 'coupler-1.plant.example', 'wago_750']) {
+      expect(resolveConfig(device([{ address: '%IX0.0' }], { host })).devices[0]?.host, host).toBe(host);
+    }
+    const c = resolveConfig(device([{ address: '%IX99.6', count: 2 }, { address: '%QW1023' }, { address: '%IX120.0', count: 2, table: 'coils', register: 900 }]));
+    expect(c.devices[0]?.resolvedPoints.map((p) => `${p.address}=${p.table}:${p.register}`)).toEqual([
+      '%IX99.6=discreteInputs:798',
+      '%IX99.7=discreteInputs:799',
+      '%QW1023=holdingRegisters:1023',
+      '%IX120.0=coils:900',
+      '%IX120.1=coils:901',
+    ]);
+  });
+
+  it.each([
+    ['{\n  "watchdogMs": 500,\n  "watchdogMs": 2000\n}', 'watchdogMs: key "watchdogMs" appears twice in the same object (lines 2 and 3)'],
+    [
+      '{ "devices": [\n  { "id": "a", "host": "127.0.0.1", "points": [{ "address": "%IX0.0" }] },\n  { "id": "b",\n    "host": "127.0.0.1",\n    "points": [{ "address": "%QX0.0", "hold": false, "hold": true }] }\n] }',
+      'devices[1].points[0].hold: key "hold" appears twice in the same object (lines 5 and 5)',
+    ],
+    ['{ "simulated": { "modbusPort": 5020 }, "devices": [], "simulated": { "modbusPort": null } }', 'simulated: key "simulated" appears twice'],
+  ])('refuses a file in which a key appears twice: %s', (text, message) => {
+    const dir = mkdtempSync(join(tmpdir(), 'rungsmith-cfg-'));
+    const file = join(dir, 'gw.json');
+    writeFileSync(file, text);
+    expect(() => loadConfigFile(file)).toThrow(`${file}: ${message}`);
+  });
+
+  it('reads a file whose objects have distinct keys, even where the same key is in different objects', () => {
+    const dir = mkdtempSync(join(tmpdir(), 'rungsmith-cfg-'));
+    const file = join(dir, 'gw.json');
+    writeFileSync(file, JSON.stringify({ devices: [{ id: 'a', host: '127.0.0.1', points: [{ address: '%IX0.0' }, { address: '%QX0.0', hold: true }] }] }, null, 2));
+    expect(loadConfigFile(file).devices[0]?.resolvedPoints).toHaveLength(2);
   });
 
   it('names the file when it is not JSON', () => {
