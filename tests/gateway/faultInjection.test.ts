@@ -6,7 +6,7 @@
 //  - no write is torn (coils of one scan with the register of another);
 //  - after a device restart, nothing but zeros is written until the controller armed again.
 // The random sequence is seeded (printed), so a failing run can be replayed with FAULT_SEED.
-import { spawn, type ChildProcess } from 'node:child_process';
+import { spawn } from 'node:child_process';
 import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
