@@ -51,6 +51,10 @@ export type HostMessage =
   | { readonly type: 'setInputs'; readonly values: Readonly<Record<string, Value>> }
   /** Gateway: start or stop `outputs` events. */
   | { readonly type: 'subscribeOutputs'; readonly enabled: boolean }
+  /** Online change: with `required` (hardware attached as controller), an edit waits for confirmOnline before it is applied. */
+  | { readonly type: 'setOnlineConfirm'; readonly required: boolean }
+  /** The answer to an `onlinePlan` that asked: apply the edit at the next scan boundary, or drop it (the running program is unchanged). */
+  | { readonly type: 'confirmOnline'; readonly id: number; readonly apply: boolean }
   /**
    * Another project was opened: stop and drop the program (no PLC, no forces, no gateway inputs);
    * the next Run or Step must carry the new document.
@@ -130,6 +134,16 @@ export interface SimFrame {
   readonly epoch: number;
 }
 
+/** What an online change keeps and resets (FB instances by name, edge elements by element id). */
+export interface OnlineChangePlan {
+  /** FB instances and edge elements that keep their state. */
+  readonly kept: number;
+  /** Those that start from their initial state: `T3`, `|P| Start in network 2`, with the reason (`new`, `TON → TOF`). */
+  readonly reset: readonly { readonly name: string; readonly reason: string }[];
+  /** Instances and edge elements the edit deleted. */
+  readonly removed: readonly string[];
+}
+
 export type WorkerMessage =
   | {
       readonly type: 'compiled';
@@ -153,4 +167,10 @@ export type WorkerMessage =
       /** Id of the program that produced them: the store passes on only the shown program's outputs. */
       readonly program: string;
     }
-  | { readonly type: 'ready'; readonly version: number };
+  | { readonly type: 'ready'; readonly version: number }
+  /** An online change is compiled: what it will keep and reset; with `confirm` it waits for confirmOnline. */
+  | { readonly type: 'onlinePlan'; readonly id: number; readonly plan: OnlineChangePlan; readonly confirm: boolean }
+  /** The online change `id` went in at the boundary after scan `scan`. */
+  | { readonly type: 'onlineApplied'; readonly id: number; readonly scan: number; readonly plan: OnlineChangePlan }
+  /** The online change `id` was not applied (cancelled): the running program is unchanged. */
+  | { readonly type: 'onlineCancelled'; readonly id: number };

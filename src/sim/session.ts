@@ -4,11 +4,11 @@
 import type { Diagnostic, Plc, PlcOptions } from '../engine/api';
 import { parseLocation, type Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
-import { carryForces, carryValues, valueFor } from './carryOver';
+import { carryForces, carryInstances, carryValues, planInstances, valueFor } from './carryOver';
 import { outputsChanged, packPower, readValues } from './frames';
 import { buildLayout, programFingerprint } from './layout';
 import { fingerprintId } from './programId';
-import type { HostMessage, SimFrame, SimLayout, SimMode, WorkerMessage } from './protocol';
+import type { HostMessage, OnlineChangePlan, SimFrame, SimLayout, SimMode, WorkerMessage } from './protocol';
 import { ScanRunner, type ScanOutcome } from './scanRunner';
 import type { Scheduler } from './scheduler';
 import { TrendRecorder } from './trendRecorder';
@@ -37,12 +37,26 @@ interface LoadedProgram {
   readonly fingerprint: string;
 }
 
+interface PendingChange {
+  readonly program: LoadedProgram;
+  readonly diagnostics: readonly Diagnostic[];
+  readonly id: number;
+  readonly plan: OnlineChangePlan;
+  awaiting: boolean;
+}
+
 export class SimSession {
   private plc: Plc | undefined;
   private layout: SimLayout | undefined;
   private fingerprint = '';
-  /** An online change waiting for the next scan boundary. */
-  private pending: { program: LoadedProgram; diagnostics: readonly Diagnostic[] } | undefined;
+  /**
+   * An online change waiting for the next scan boundary (or, `awaiting`, for the user's answer),
+   * with what it will keep and reset.
+   */
+  private pending: PendingChange | undefined;
+  /** Hardware is attached as controller: online changes wait for confirmOnline. */
+  private confirmOnline = false;
+  private onlineIds = 0;
   private mode: SimMode = 'stopped';
   private scanBase = 0;
   private lastFrameAt = -Infinity;
@@ -169,6 +183,12 @@ export class SimSession {
         this.dropProgram();
         this.postFrame();
         return;
+      case 'setOnlineConfirm':
+        this.confirmOnline = m.required;
+        return;
+      case 'confirmOnline':
+        this.answerOnline(m.id, m.apply);
+        return;
       case 'subscribeOutputs':
         this.outputsSubscribed = m.enabled;
         this.lastOutputs = undefined;
@@ -248,21 +268,46 @@ export class SimSession {
       this.install(next, false, diagnostics);
       return true;
     }
-    // Swapped in at the next scan boundary: right now when the PLC is between scans.
-    this.pending = { program: next, diagnostics };
-    if (this.plc?.nextNetwork === -1 && !this.runner.runningLive) this.applyPending();
+    // Swapped in at the next scan boundary: right now when the PLC is between scans. With hardware
+    // attached, an edit (not a Run/Step) first waits for the user's answer to its plan.
+    const id = ++this.onlineIds;
+    const plan = planInstances(this.plc!, plc);
+    const awaiting = this.confirmOnline && !starting;
+    this.pending = { program: next, diagnostics, id, plan, awaiting };
+    this.deps.post({ type: 'onlinePlan', id, plan, confirm: awaiting });
+    this.applyIfBetweenScans();
     return true;
+  }
+
+  private applyIfBetweenScans(): void {
+    if (this.plc?.nextNetwork === -1 && !this.runner.runningLive) this.applyPending();
+  }
+
+  /** The user's answer to an online change that asked (hardware attached). */
+  private answerOnline(id: number, apply: boolean): void {
+    const pending = this.pending;
+    if (!pending || pending.id !== id || !pending.awaiting) return;
+    if (!apply) {
+      this.pending = undefined;
+      this.deps.post({ type: 'onlineCancelled', id });
+      return;
+    }
+    pending.awaiting = false;
+    this.applyIfBetweenScans();
   }
 
   private applyPending(): void {
     const pending = this.pending;
-    if (!pending) return;
+    if (!pending || pending.awaiting) return;
     this.pending = undefined;
+    let plan = pending.plan;
     if (this.plc && this.layout) {
       carryValues(this.plc, this.layout, pending.program.plc, pending.program.layout);
+      plan = carryInstances(this.plc, pending.program.plc);
       this.scanBase += this.plc.scanCount;
     }
     this.install(pending.program, true, pending.diagnostics);
+    this.deps.post({ type: 'onlineApplied', id: pending.id, scan: this.scanBase, plan });
   }
 
   private install(next: LoadedProgram, online: boolean, diagnostics: readonly Diagnostic[]): void {

@@ -11,7 +11,7 @@ import type { Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import type { SimTransport } from '../sim/host';
 import { programId } from '../sim/programId';
-import type { ExecStats, HostMessage, SimFrame, SimLayout, SimMode, SimValueInput, TrendSamples, WorkerMessage } from '../sim/protocol';
+import type { ExecStats, HostMessage, OnlineChangePlan, SimFrame, SimLayout, SimMode, SimValueInput, TrendSamples, WorkerMessage } from '../sim/protocol';
 import { appendTrend, emptyTrend, type TrendBuffer } from '../sim/trendBuffer';
 
 export const DEFAULT_CYCLE_MS = 10;
@@ -22,6 +22,16 @@ export interface CompileRefusal {
   /** True when an edit made while running did not compile (the last good program keeps running). */
   readonly online: boolean;
 }
+
+/** An edit made while the program runs (online change), as the worker reported it. */
+export type OnlineChangeState =
+  /** Compiled; goes in at the next scan boundary. */
+  | { readonly kind: 'pending'; readonly id: number; readonly plan: OnlineChangePlan }
+  /** Hardware attached: waits for the user's Apply or Cancel. */
+  | { readonly kind: 'confirm'; readonly id: number; readonly plan: OnlineChangePlan }
+  | { readonly kind: 'applied'; readonly id: number; readonly scan: number; readonly plan: OnlineChangePlan }
+  /** Not applied: the running program is unchanged. */
+  | { readonly kind: 'cancelled'; readonly id: number };
 
 export interface SimContextMenu {
   readonly x: number;
@@ -59,6 +69,10 @@ export interface SimState {
   readonly refusal: CompileRefusal | undefined;
   readonly notice: string | undefined;
   readonly contextMenu: SimContextMenu | undefined;
+  /** The last online change: what it keeps and resets, whether it waits for an answer, applied or not. */
+  readonly onlineChange: OnlineChangeState | undefined;
+  /** Online changes ask before they are applied (hardware attached as controller). */
+  readonly onlineConfirmRequired: boolean;
 
   run(project: Project): void;
   pause(): void;
@@ -89,6 +103,11 @@ export interface SimState {
   openContextMenu(menu: SimContextMenu): void;
   closeContextMenu(): void;
   dismissNotice(): void;
+  /** Hardware attached as controller (or not): online changes ask first. */
+  setOnlineConfirmRequired(required: boolean): void;
+  /** The answer to an online change that asks: Apply (at the next scan boundary) or Cancel. */
+  answerOnlineChange(apply: boolean): void;
+  dismissOnlineChange(): void;
   /** Gateway seam (issue 6): input image by IEC location, applied at the next input read. */
   setInputs(values: Readonly<Record<string, Value>>): void;
   /** Gateway seam: output image after every scan that changed it. Returns an unsubscribe function. */
@@ -182,6 +201,8 @@ export function createSimStore(transport: SimTransport): SimStore {
       refusal: undefined,
       notice: undefined,
       contextMenu: undefined,
+      onlineChange: undefined,
+      onlineConfirmRequired: false,
 
       run: (project) => {
         set({ refusal: undefined, notice: undefined });
@@ -272,6 +293,18 @@ export function createSimStore(transport: SimTransport): SimStore {
       openContextMenu: (menu) => set({ contextMenu: menu }),
       closeContextMenu: () => set({ contextMenu: undefined }),
       dismissNotice: () => set({ notice: undefined, refusal: undefined }),
+      setOnlineConfirmRequired: (required) => {
+        if (required === get().onlineConfirmRequired) return;
+        set({ onlineConfirmRequired: required });
+        send({ type: 'setOnlineConfirm', required });
+      },
+      answerOnlineChange: (apply) => {
+        const change = get().onlineChange;
+        if (change?.kind !== 'confirm') return;
+        send({ type: 'confirmOnline', id: change.id, apply });
+        set({ onlineChange: apply ? { kind: 'pending', id: change.id, plan: change.plan } : { kind: 'cancelled', id: change.id } });
+      },
+      dismissOnlineChange: () => set({ onlineChange: undefined }),
       setInputs: (values) => send({ type: 'setInputs', values }),
       onOutputs: (listener) => {
         outputListeners.add(listener);
@@ -341,7 +374,21 @@ export function createSimStore(transport: SimTransport): SimStore {
         return;
       case 'ready':
         return;
+      case 'onlinePlan':
+        store.setState({ onlineChange: { kind: message.confirm ? 'confirm' : 'pending', id: message.id, plan: message.plan } });
+        return;
+      case 'onlineApplied':
+        store.setState({ onlineChange: { kind: 'applied', id: message.id, scan: message.scan, plan: message.plan } });
+        return;
+      case 'onlineCancelled':
+        store.setState({ onlineChange: { kind: 'cancelled', id: message.id } });
+        return;
     }
+  });
+  // No program any more (unloaded, refused, stopped): no online change is waiting or pending.
+  store.subscribe((state) => {
+    const kind = state.onlineChange?.kind;
+    if (!state.layout && (kind === 'confirm' || kind === 'pending')) store.setState({ onlineChange: undefined });
   });
 
   /** The worker runs a program that is not the one shown: stop it, forget it and say so. */

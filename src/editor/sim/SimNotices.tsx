@@ -1,6 +1,8 @@
 // What went wrong, in the words of the rule ids and networks: a refused compile, a fault, a bad command.
 import type { Diagnostic, Fault } from '../../engine/api';
+import { describeOnlineChange, describeTransfer } from '../../sim/carryOver';
 import type { SimState } from '../../store/simStore';
+import { OnlineChangeDialog } from './OnlineChangeDialog';
 import { useSim, useSimStore } from './simContext';
 
 const selectRefusal = (s: SimState) => s.refusal;
@@ -8,6 +10,7 @@ const selectFault = (s: SimState) => s.fault;
 const selectNotice = (s: SimState) => s.notice;
 const selectBreakpointHit = (s: SimState) => s.breakpointHit;
 const selectMode = (s: SimState) => s.mode;
+const selectOnlineChange = (s: SimState) => s.onlineChange;
 
 const where = (d: Pick<Diagnostic, 'network' | 'networkLabel'>) =>
   d.network < 0 ? 'variables' : `network ${d.network + 1}${d.networkLabel ? ` (${d.networkLabel})` : ''}`;
@@ -24,6 +27,7 @@ export function SimNotices() {
   const notice = useSim(selectNotice);
   const hit = useSim(selectBreakpointHit);
   const mode = useSim(selectMode);
+  const online = useSim(selectOnlineChange);
   const errors = refusal?.diagnostics.filter((d) => d.severity === 'error') ?? [];
   return (
     <>
@@ -55,6 +59,28 @@ export function SimNotices() {
       {hit !== undefined && mode === 'paused' && (
         <div className="rs-sim-notice" role="status" data-testid="sim-breakpoint-hit">
           Paused at the breakpoint before network {hit + 1}.
+        </div>
+      )}
+      {online?.kind === 'confirm' && <OnlineChangeDialog plan={online.plan} onAnswer={(apply) => sim.getState().answerOnlineChange(apply)} />}
+      {online?.kind === 'pending' && (
+        <div className="rs-sim-notice" role="status" data-testid="sim-online-pending">
+          Applying the edit online at the next scan boundary: {describeTransfer(online.plan).replace(/^kept/, 'keeps')}.
+        </div>
+      )}
+      {online?.kind === 'applied' && (
+        <div className="rs-sim-notice" role="status" data-testid="sim-online-applied">
+          {describeOnlineChange(online.scan, online.plan)}.{' '}
+          <button type="button" className="rs-sim-btn" onClick={() => sim.getState().dismissOnlineChange()}>
+            Dismiss
+          </button>
+        </div>
+      )}
+      {online?.kind === 'cancelled' && (
+        <div className="rs-sim-notice rs-sim-error" role="status" data-testid="sim-online-cancelled">
+          Edit not applied online: the running program is unchanged (the edit stays in the document; Reset and Run load it).{' '}
+          <button type="button" className="rs-sim-btn" onClick={() => sim.getState().dismissOnlineChange()}>
+            Dismiss
+          </button>
         </div>
       )}
       {notice && (
