@@ -84,6 +84,10 @@ async function main() {
   const online = next((m) => m.t === 'status' && JSON.stringify(m).includes('"state":"online"'));
   ws.send(JSON.stringify({ v: 1, t: 'hello', token: gw.token, role: 'controller' }));
   await online;
+  // The gateway starts disarmed: arm, as Run does.
+  const armed = next((m) => m.t === 'status' && JSON.stringify(m).includes('"armed":true'));
+  ws.send(JSON.stringify({ v: 1, t: 'arm' }));
+  await armed;
 
   const image = (on: boolean) => {
     const values: Record<string, boolean> = {};
