@@ -39,12 +39,26 @@ describe('protocol v1 client messages', () => {
       gatewayMessageSchema.safeParse({
         v: 1,
         t: 'status',
-        devices: [{ id: 'sim', state: 'online', error: null }],
+        devices: [{ id: 'sim', state: 'online', error: null, outputs: 'driven' }],
         armed: true,
+        disarm: null,
         watchdog: { ms: 1000, state: 'idle', autoRearm: false },
         controller: false,
       }).success,
     ).toBe(true);
+    // A disarmed status says why; an unknown cause or outputs state is refused.
+    const disarmed = {
+      v: 1,
+      t: 'status',
+      devices: [{ id: 'plant', state: 'offline', error: 'ECONNREFUSED', outputs: 'safe-pending' }],
+      armed: false,
+      disarm: { cause: 'device-lost', message: 'device "plant" lost its connection', at: 1 },
+      watchdog: { ms: 1000, state: 'idle', autoRearm: false },
+      controller: true,
+    };
+    expect(gatewayMessageSchema.safeParse(disarmed).success).toBe(true);
+    expect(gatewayMessageSchema.safeParse({ ...disarmed, disarm: { ...disarmed.disarm, cause: 'bored' } }).success).toBe(false);
+    expect(gatewayMessageSchema.safeParse({ ...disarmed, devices: [{ ...disarmed.devices[0], outputs: 'maybe' }] }).success).toBe(false);
     expect(gatewayMessageSchema.safeParse({ v: 1, t: 'inputs', seq: 1, values: { '%IX0.0': true }, quality: { '%IX0.0': 'maybe' } }).success).toBe(false);
   });
 });
