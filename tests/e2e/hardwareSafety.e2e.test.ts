@@ -116,6 +116,15 @@ describe('Live I/O that can be trusted', () => {
     await release();
     await page.keyboard.press('Escape');
 
+    // The Inputs panel's switch and push-button are off for it too, saying why.
+    await sim.tab('Inputs');
+    const row = page.getByTestId('input-Start');
+    await expect.poll(() => row.getByTestId('input-from-device').textContent()).toBe('from the device');
+    expect(await row.getByTestId('input-switch').isDisabled()).toBe(true);
+    expect(await row.getByTestId('input-hold').isDisabled()).toBe(true);
+    expect(await row.getByTestId('input-switch').getAttribute('title')).toBe('%IX0.0 Start comes from the device; force it to override.');
+    await sim.tab('Hardware');
+
     // Force, confirmed: the force marker, and the output on the device.
     await sim.draw.clickCell(0, 0, 0);
     await menu.getByRole('menuitem', { name: 'Force TRUE' }).click();

@@ -1,8 +1,14 @@
 // Every %I input of the program with a switch (toggle) and a push-button (TRUE while held);
 // word inputs take a typed value. Changes reach the PLC at its next input read.
+// With hardware attached as controller, an input the gateway has as a point comes from the device:
+// its switch, button and field are off, saying so (only a confirmed force, from the canvas's
+// context menu or the Watch panel, overrides it).
 import { useMemo, useState } from 'react';
 import { parseLocation } from '../../model/iecTypes';
+import type { SimState } from '../../store/simStore';
 import { selectProject, useDocument } from '../../store/documentStore';
+import { fieldInputAddress, fieldInputWords } from '../hardware/fieldIo';
+import { useGateway } from '../hardware/useGateway';
 import { forcedText, liveText } from './liveValues';
 import { useSim, useSimStore } from './simContext';
 import './sim.css';
@@ -46,8 +52,15 @@ function Label({ row }: { row: InputRow }) {
   );
 }
 
+/** The device address behind this input while hardware is attached, else undefined. */
+function useFieldInput(name: string): string | undefined {
+  const variable = useSim((s: SimState) => s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1]);
+  return fieldInputAddress(variable, useGateway());
+}
+
 function BoolInput({ row }: { row: InputRow }) {
   const sim = useSimStore();
+  const field = useFieldInput(row.name);
   const value = useSim((s) => liveText(s, row.name));
   const forced = useSim((s) => forcedText(s, row.name));
   const on = value === 'TRUE';
@@ -56,13 +69,15 @@ function BoolInput({ row }: { row: InputRow }) {
     <tr data-testid={`input-${row.name}`}>
       <Label row={row} />
       <td>
-        <button type="button" role="switch" aria-checked={on} aria-label={`${row.name} switch`} disabled={value === undefined}
+        <button type="button" role="switch" aria-checked={on} aria-label={`${row.name} switch`} disabled={value === undefined || field !== undefined}
+          title={field ? fieldInputWords(field, row.name) : undefined}
           className={`rs-sim-switch${on ? ' rs-sim-on' : ''}`} onClick={() => sim.getState().toggleInput(row.name)} data-testid="input-switch">
           {value === undefined ? '—' : on ? 'ON' : 'OFF'}
         </button>
       </td>
       <td>
-        <button type="button" className="rs-sim-btn" disabled={value === undefined} title="Push-button: ON while the mouse button is held"
+        <button type="button" className="rs-sim-btn" disabled={value === undefined || field !== undefined}
+          title={field ? fieldInputWords(field, row.name) : 'Push-button: ON while the mouse button is held'}
           onPointerDown={(e) => {
             e.currentTarget.setPointerCapture(e.pointerId);
             sim.getState().pressInput(row.name);
@@ -71,17 +86,21 @@ function BoolInput({ row }: { row: InputRow }) {
           Hold
         </button>
       </td>
-      <td>{forced !== undefined && <span className="rs-sim-forced-tag" title={`forced to ${forced}`}>forced {forced}</span>}</td>
+      <td>
+        {forced !== undefined && <span className="rs-sim-forced-tag" title={`forced to ${forced}`}>forced {forced}</span>}
+        {field && forced === undefined && <span className="rs-sim-unit" data-testid="input-from-device">from the device</span>}
+      </td>
     </tr>
   );
 }
 
 function WordInput({ row }: { row: InputRow }) {
   const sim = useSimStore();
+  const field = useFieldInput(row.name);
   const value = useSim((s) => liveText(s, row.name));
   const forced = useSim((s) => forcedText(s, row.name));
   const [text, setText] = useState('');
-  const write = () => text.trim() && sim.getState().write(row.name, { text });
+  const write = () => !field && text.trim() && sim.getState().write(row.name, { text });
   return (
     <tr data-testid={`input-${row.name}`}>
       <Label row={row} />
@@ -89,7 +108,8 @@ function WordInput({ row }: { row: InputRow }) {
       <td>
         <input className="rs-sim-text rs-sim-narrow" aria-label={`New value for ${row.name}`} placeholder={row.type} value={text}
           onChange={(e) => setText(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && write()} />
-        <button type="button" className="rs-sim-btn" disabled={value === undefined} onClick={write}>Set</button>
+        <button type="button" className="rs-sim-btn" disabled={value === undefined || field !== undefined}
+          title={field ? fieldInputWords(field, row.name) : undefined} onClick={write}>Set</button>
       </td>
       <td>{forced !== undefined && <span className="rs-sim-forced-tag" title={`forced to ${forced}`}>forced {forced}</span>}</td>
     </tr>
