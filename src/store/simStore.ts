@@ -385,10 +385,13 @@ export function createSimStore(transport: SimTransport): SimStore {
         return;
     }
   });
-  // No program any more (unloaded, refused, stopped): no online change is waiting or pending.
+  // No program any more (unloaded, refused, stopped): no online change is waiting or pending; after
+  // a cold restart (scan 0) nothing an online change kept is left, so its confirmation goes too.
   store.subscribe((state) => {
     const kind = state.onlineChange?.kind;
-    if (!state.layout && (kind === 'confirm' || kind === 'pending')) store.setState({ onlineChange: undefined });
+    const gone = !state.layout && (kind === 'confirm' || kind === 'pending');
+    const restarted = kind === 'applied' && state.mode === 'stopped' && state.scan === 0;
+    if (gone || restarted) store.setState({ onlineChange: undefined });
   });
 
   /** The worker runs a program that is not the one shown: stop it, forget it and say so. */

@@ -56,6 +56,10 @@ describe('online change in the store', () => {
     expect(change.scan).toBeGreaterThan(0);
     pulses(1);
     expect(value('PartCount')).toBe(5);
+    // A cold restart resets everything the change kept: its confirmation goes away.
+    s().reset();
+    scheduler.advance(30);
+    expect(s().onlineChange).toBeUndefined();
   });
 
   test('with the hardware attached as controller, Cancel leaves the running program as it was and Apply puts the edit in', () => {
