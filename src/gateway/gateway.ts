@@ -10,8 +10,19 @@ import { resolveConfig, type ResolvedConfig } from './config';
 import type { Device, Values } from './device';
 import { IoHub, type ShutdownReport } from './ioHub';
 import { ModbusTcpDevice } from './modbusDevice';
-import { defaultHosts, defaultOrigins, hostAllowed, newToken, originAllowed } from './security';
-import { Session } from './session';
+import {
+  clientIdentity,
+  defaultHosts,
+  defaultOrigins,
+  HANDSHAKE_BURST,
+  HANDSHAKES_PER_SECOND,
+  HandshakeLimiter,
+  hostAllowed,
+  MessageBudgets,
+  newToken,
+  originAllowed,
+} from './security';
+import { MESSAGES_PER_SECOND, Session } from './session';
 import { SimulatedDevice } from './simulatedDevice';
 import { serveStatic } from './staticFiles';
 
@@ -79,9 +90,14 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
   const wss = new WebSocketServer({ noServer: true, maxPayload: HARD_FRAME_LIMIT, perMessageDeflate: false });
   wss.on('error', () => undefined);
 
-  const reject = (socket: Socket, status: number, text: string) => {
-    socket.end(`HTTP/1.1 ${status} ${text}\r\nConnection: close\r\nContent-Type: text/plain\r\nContent-Length: ${text.length + 1}\r\n\r\n${text}\n`);
+  const reject = (socket: Socket, status: number, text: string, extra = '') => {
+    socket.end(`HTTP/1.1 ${status} ${text}\r\nConnection: close\r\n${extra}Content-Type: text/plain\r\nContent-Length: ${text.length + 1}\r\n\r\n${text}\n`);
   };
+  // Connection budget (GATEWAY.md security defaults): handshakes per remote IP, the message budget
+  // carried across a client's reconnects, and the last of MAX_CLIENTS connections kept for a controller.
+  const handshakes = new HandshakeLimiter(HANDSHAKES_PER_SECOND, HANDSHAKE_BURST);
+  const budgets = new MessageBudgets(MESSAGES_PER_SECOND);
+  const mayObserve = () => [...sessions].filter((s) => s.role === 'observer').length < MAX_CLIENTS - 1;
   let connections = 0;
   let accepting = true;
   server.on('upgrade', (req: IncomingMessage, socket: Socket, head: Buffer) => {
@@ -89,6 +105,7 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
     if (!accepting) return reject(socket, 503, 'Service Unavailable');
     const path = (req.url ?? '').split('?')[0];
     if (path !== IO_PATH) return reject(socket, 404, 'Not Found');
+    if (!handshakes.allow(socket.remoteAddress ?? '')) return reject(socket, 429, 'Too Many Requests', 'Retry-After: 1\r\n');
     if (!hostAllowed(req.headers.host, allowedHosts)) return reject(socket, 403, 'Forbidden');
     if (!originAllowed(req.headers.origin, allowedOrigins)) {
       log(`refused WebSocket from origin ${req.headers.origin}`);
@@ -97,10 +114,15 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
     if (connections >= MAX_CLIENTS) return reject(socket, 503, 'Service Unavailable');
     connections++; // counted from the handshake on, so simultaneous handshakes cannot exceed the limit
     socket.once('close', () => connections--);
+    const identity = clientIdentity(socket.remoteAddress, req.headers.origin, req.headers['user-agent']);
     wss.handleUpgrade(req, socket, head, (ws) => {
-      const session = new Session(randomUUID().slice(0, 8), ws, { hub, token, simulated, nextSeq: () => ++seq, log });
+      const limiter = budgets.take(identity);
+      const session = new Session(randomUUID().slice(0, 8), ws, { hub, token, simulated, nextSeq: () => ++seq, log, limiter, mayObserve });
       sessions.add(session);
-      ws.on('close', () => sessions.delete(session));
+      ws.on('close', () => {
+        sessions.delete(session);
+        budgets.park(identity, limiter);
+      });
     });
   });
   server.on('clientError', (_err, socket) => socket.destroy());

@@ -1,4 +1,4 @@
-// Token, Origin/Host allow-lists and the per-client rate limit (GATEWAY.md security defaults).
+// Token, Origin/Host allow-lists, the per-client message budget and the handshake rate (GATEWAY.md security defaults).
 import { createHash, randomBytes, timingSafeEqual } from 'node:crypto';
 
 /** A random 256-bit token, URL-safe. */
@@ -30,18 +30,101 @@ export function originAllowed(origin: string | undefined, allowed: ReadonlySet<s
   return origin === undefined || allowed.has(origin.toLowerCase().replace(/\/$/, ''));
 }
 
-/** Token bucket: `rate` messages per second on average, bursts up to `rate`. */
+/** Token bucket: `rate` per second on average, bursts up to `burst` (default `rate`). */
 export class RateLimiter {
   private tokens: number;
-  private last = Date.now();
-  constructor(private readonly rate: number) {
-    this.tokens = rate;
+  private last: number;
+  constructor(
+    private readonly rate: number,
+    private readonly burst = rate,
+    now = Date.now(),
+  ) {
+    this.tokens = burst;
+    this.last = now;
+  }
+  /** Tokens available at `now` (refilled since the last call). */
+  level(now = Date.now()): number {
+    this.tokens = Math.min(this.burst, this.tokens + (Math.max(0, now - this.last) / 1000) * this.rate);
+    this.last = Math.max(this.last, now);
+    return this.tokens;
+  }
+  /** True when the bucket is full again, i.e. it remembers nothing a new bucket would not. */
+  full(now = Date.now()): boolean {
+    return this.level(now) >= this.burst;
   }
   take(now = Date.now()): boolean {
-    this.tokens = Math.min(this.rate, this.tokens + ((now - this.last) / 1000) * this.rate);
-    this.last = now;
-    if (this.tokens < 1) return false;
+    if (this.level(now) < 1) return false;
     this.tokens -= 1;
     return true;
   }
+}
+
+/** WebSocket handshakes a remote IP may make at once, then per second (reconnects included). */
+export const HANDSHAKE_BURST = 32;
+export const HANDSHAKES_PER_SECOND = 8;
+
+/** Buckets beyond this many are pruned of full ones (which carry no state). */
+const MAX_TRACKED = 1024;
+
+function prune(map: Map<string, RateLimiter>, now: number): void {
+  if (map.size < MAX_TRACKED) return;
+  for (const [k, b] of map) if (b.full(now)) map.delete(k);
+  // Still too many (a spray of identities): forget the oldest; the per-IP handshake budget bounds this.
+  for (const k of map.keys()) {
+    if (map.size < MAX_TRACKED) break;
+    map.delete(k);
+  }
+}
+
+/**
+ * WebSocket handshakes per remote IP address (a reconnect loop keeps its IP, not its port): `burst` at
+ * once, then `rate` per second. Excess handshakes are refused with HTTP 429 before any WebSocket work.
+ */
+export class HandshakeLimiter {
+  private readonly buckets = new Map<string, RateLimiter>();
+  constructor(
+    private readonly rate: number,
+    private readonly burst: number,
+  ) {}
+  allow(ip: string, now = Date.now()): boolean {
+    let bucket = this.buckets.get(ip);
+    if (!bucket) {
+      prune(this.buckets, now);
+      bucket = new RateLimiter(this.rate, this.burst, now);
+      this.buckets.set(ip, bucket);
+    }
+    return bucket.take(now);
+  }
+}
+
+/**
+ * The per-connection message budget, carried across reconnects of one client identity (remote IP,
+ * Origin and User-Agent): a closed connection leaves its bucket here, and the identity's next
+ * connection continues from it instead of a full one, until it has refilled anyway. Connections open
+ * at the same time each have their own bucket; when they close, the emptier one is kept.
+ */
+export class MessageBudgets {
+  private readonly parked = new Map<string, RateLimiter>();
+  constructor(private readonly rate: number) {}
+
+  /** The bucket for a new connection of `identity`. */
+  take(identity: string, now = Date.now()): RateLimiter {
+    const parked = this.parked.get(identity);
+    this.parked.delete(identity);
+    return parked && !parked.full(now) ? parked : new RateLimiter(this.rate, this.rate, now);
+  }
+
+  /** A connection of `identity` closed with `bucket`. */
+  park(identity: string, bucket: RateLimiter, now = Date.now()): void {
+    if (bucket.full(now)) return;
+    const other = this.parked.get(identity);
+    if (other && other.level(now) <= bucket.level(now)) return;
+    prune(this.parked, now);
+    this.parked.set(identity, bucket);
+  }
+}
+
+/** Who a connection is across reconnects: its remote IP, and the Origin and User-Agent it sent. */
+export function clientIdentity(ip: string | undefined, origin: string | undefined, userAgent: string | undefined): string {
+  return JSON.stringify([ip ?? '', origin ?? '', userAgent ?? '']);
 }

@@ -15,7 +15,10 @@ import { RateLimiter, tokenMatches } from './security';
 import type { SimulatedDevice } from './simulatedDevice';
 
 export const MESSAGES_PER_SECOND = 200;
-export const HELLO_TIMEOUT_MS = 5000;
+/** A socket that has not said hello by then is closed (1008): silent sockets cannot hold the connection slots. */
+export const HELLO_TIMEOUT_MS = 1500;
+/** Close code when the last connection, kept for a controller, is asked for by an observer. */
+export const TRY_AGAIN_LATER = 1013;
 /** Close code for policy violations: auth failures and floods. */
 export const POLICY_VIOLATION = 1008;
 
@@ -25,11 +28,15 @@ export interface SessionContext {
   readonly simulated: SimulatedDevice | undefined;
   nextSeq(): number;
   log(line: string): void;
+  /** The message budget, carried over from this client's previous connection (security.ts MessageBudgets). */
+  readonly limiter?: RateLimiter;
+  /** False when one more observer would take the last connection, which is kept for a controller. */
+  mayObserve?(): boolean;
 }
 
 export class Session {
   role: Role | null = null;
-  private readonly limiter = new RateLimiter(MESSAGES_PER_SECOND);
+  private readonly limiter: RateLimiter;
   private readonly helloTimer: NodeJS.Timeout;
   private closed = false;
   private silenced = false;
@@ -39,7 +46,8 @@ export class Session {
     private readonly ws: WebSocket,
     private readonly ctx: SessionContext,
   ) {
-    this.helloTimer = setTimeout(() => this.refuseAndClose('not-hello', 'no hello within 5 s', null), HELLO_TIMEOUT_MS);
+    this.limiter = ctx.limiter ?? new RateLimiter(MESSAGES_PER_SECOND);
+    this.helloTimer = setTimeout(() => this.refuseAndClose('not-hello', `no hello within ${HELLO_TIMEOUT_MS / 1000} s`, null), HELLO_TIMEOUT_MS);
     ws.on('message', (data, isBinary) => {
       try {
         this.receive(data as Buffer | Buffer[] | ArrayBuffer, isBinary);
@@ -125,7 +133,16 @@ export class Session {
     }
     clearTimeout(this.helloTimer);
     const hub = this.ctx.hub;
-    this.role = hub.claim(this.id, msg.role);
+    const role = hub.claim(this.id, msg.role);
+    if (role !== 'controller' && this.ctx.mayObserve?.() === false) {
+      // The last free connection is kept for a controller, so one that reconnects always gets in.
+      this.ctx.log(`session ${this.id}: refused as observer, the last connection is kept for a controller`);
+      this.refuse('not-controller', 'the last free connection is kept for a controller; try again later', 'hello');
+      this.ws.close(TRY_AGAIN_LATER, 'the last connection is kept for a controller');
+      this.closeDown();
+      return;
+    }
+    this.role = role;
     this.ctx.log(`session ${this.id}: ${this.role}${msg.role !== this.role ? ' (controller lease is taken)' : ''}`);
     this.send({ t: 'welcome', session: this.id, role: this.role, points: hub.pointList(), devices: hub.devices.map((d) => d.info) });
     this.send({ t: 'image', seq: this.ctx.nextSeq(), ...hub.image() });
