@@ -97,11 +97,13 @@ export function lowerBox(
         el,
       );
     else {
+      // IEC and MATIEC run every call of an instance, in order, each with the state the previous
+      // call left (Beremiz emits one `T1(...)` per box); some editors refuse a second call (000/002).
       const first = ctx.fbCalls.get(sym);
       if (first)
-        r.error(
+        r.warning(
           'LD-R10',
-          `${name} calls the instance "${inst}" a second time (first at network ${first.network + 1}); each box needs its own instance`,
+          `${name} calls the instance "${inst}" a second time (first at network ${first.network + 1}); both calls run, in order, on the same instance`,
           el,
         );
       else ctx.fbCalls.set(sym, { network, row: el.row, col: el.col });
@@ -161,11 +163,16 @@ export function lowerBox(
       continue;
     }
     if (pin.name === 'EN') continue; // a function whose EN is not connected always runs
+    if (isFb) {
+      // IEC / MATIEC: an FB input left out of the call keeps the instance's value (its initial value,
+      // or what the previous call or an `Instance.Pin` coil left); Beremiz passes only connected
+      // inputs. Warned where that is likely a mistake: the power-flow input and value inputs (PT, PV).
+      if (pin.name === powerPin || pin.type !== 'BOOL') r.warning('LD-R10', unconnectedFbInput(name, pin), el);
+      continue;
+    }
     r.error(
       'LD-R10',
-      pin.name === powerPin && isFb
-        ? `input ${pin.name} of ${name} takes the power flow but is not connected; wire it or give it a BOOL variable`
-        : `input ${pin.name} of ${name} has no value; wire it or write a variable or a literal beside it`,
+      `input ${pin.name} of ${name} has no value; wire it or write a variable or a literal beside it`,
       el,
     );
   }
@@ -347,6 +354,11 @@ function lowerOutput(
   }
   nets.data.set(o.net, source);
   return { pin: o.pin.name, type, ...(data ? { data } : {}), ...(dst ? { dst } : {}) };
+}
+
+function unconnectedFbInput(name: string, pin: PlacedPin): string {
+  const initial = pin.type === 'BOOL' ? 'FALSE' : pin.type === 'TIME' ? 'T#0s' : '0';
+  return `input ${pin.name} of ${name} is not connected: it keeps the instance's value (${initial} at first); wire it or write a variable or a literal beside it`;
 }
 
 function describeSource(src: Source): string {

@@ -2,6 +2,8 @@
 // LD-R02 short circuit, LD-R03 open ends, LD-R04 coils at the right end, LD-R05 one jump,
 // LD-R09 transition coils off the left rail, the wiring half of LD-R10.
 // Returns false when the network cannot be ordered or executed (any error found here).
+// LD-R02, LD-R04, LD-R09 and the one-power-line half of LD-R10 are vendor editor rules (002, 000):
+// IEC 61131-3 and MATIEC accept such networks, so they are warnings and the network runs.
 import type { LdElement, VLink } from '../../model/elements';
 import type { Network } from '../../model/project';
 import type { GraphNode, Net, NetworkGraph } from './graph';
@@ -132,9 +134,9 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
     const coilSinks = net.sinks.filter((s) => isCoil(nodeOf(s.node).el));
     if (net.leftRail && net.rightRail) {
       const railPoint = net.points.find((p) => p % width === g.cols)!;
-      r.error(
+      r.warning(
         'LD-R02',
-        `short circuit: a bare line joins the left rail to the right rail at row ${Math.floor(railPoint / width) + 1}; put a contact or coil on it`,
+        `short circuit: a bare line joins the left rail to the right rail at row ${Math.floor(railPoint / width) + 1}; it does nothing (put a contact or coil on it, or delete it)`,
         at(railPoint),
       );
     }
@@ -142,15 +144,15 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
       for (const s of coilSinks) {
         const el = nodeOf(s.node).el;
         if (isTransitionCoil(el))
-          r.error(
+          r.warning(
             'LD-R09',
-            `${describeElement(el)} is connected directly to the left rail; a transition coil needs a condition before it`,
+            `${describeElement(el)} is connected directly to the left rail: it is ON in the first scan only; put a condition before it`,
             el,
           );
         else
-          r.error(
+          r.warning(
             'LD-R02',
-            `short circuit: ${describeElement(el)} is connected to the left rail by a bare line; put a contact before it`,
+            `${describeElement(el)} is connected to the left rail by a bare line, so it is always energised (legal IEC; some editors call it a short circuit)`,
             el,
           );
       }
@@ -158,22 +160,23 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
     if (net.rightRail && !net.leftRail) {
       for (const s of net.sinks) {
         const el = nodeOf(s.node).el;
-        r.error(
+        r.warning(
           'LD-R02',
-          `short circuit: a bare line to the right rail bypasses ${describeElement(el)}; remove the line or put an element on it`,
+          `a bare line to the right rail bypasses ${describeElement(el)} (it still runs; the right rail carries no state); remove the line or put an element on it`,
           el,
         );
       }
     }
-    // LD-R04: after a coil only further coils or the right rail.
+    // LD-R04 (002, warning): after a coil only further coils or the right rail. IEC table 62: a coil
+    // passes its left state to its right link, so whatever follows runs with that state.
     if (net.sources.some((s) => isCoil(nodeOf(s.node).el))) {
       const coilSource = nodeOf(net.sources.find((s) => isCoil(nodeOf(s.node).el))!.node).el;
       for (const s of net.sinks) {
         const el = nodeOf(s.node).el;
         if (!isCoil(el))
-          r.error(
+          r.warning(
             'LD-R04',
-            `${describeElement(el)} stands after ${describeElement(coilSource)}; only coils (or the right rail) may follow a coil`,
+            `${describeElement(el)} stands after ${describeElement(coilSource)}; it runs with the coil's left state (IEC), but some editors allow only coils after a coil`,
             el,
           );
       }
@@ -189,7 +192,8 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
       extra.el,
     );
 
-  // LD-R10 (wiring): one power-flow line into a box.
+  // LD-R10 (wiring, 000, warning): one power-flow line into a box. IEC and MATIEC evaluate the line
+  // once and give its state to both pins.
   for (const n of g.nodes) {
     if (n.el.kind !== 'box' || !n.layout) continue;
     const power = powerInputPin(n);
@@ -197,9 +201,9 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
     if (powerNet === undefined) continue;
     for (const t of n.inputs) {
       if (t.pin === power || t.net !== powerNet) continue;
-      r.error(
+      r.warning(
         'LD-R10',
-        `the power flow enters ${describeElement(n.el)} twice: ${power} and ${t.pin} share one line; feed ${t.pin} from its own line or give it an operand`,
+        `the power flow enters ${describeElement(n.el)} twice: ${power} and ${t.pin} share one line (both get its state); some editors refuse this`,
         n.el,
       );
     }
