@@ -24,7 +24,7 @@ import {
 } from './security';
 import { MESSAGES_PER_SECOND, Session } from './session';
 import { SimulatedDevice } from './simulatedDevice';
-import { serveStatic } from './staticFiles';
+import { serveStatic, setSecurityHeaders } from './staticFiles';
 
 export const MAX_CLIENTS = 8;
 /** Frames between 64 KiB and this get an error reply; beyond it `ws` closes the connection (1009). */
@@ -82,6 +82,7 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
   let allowedOrigins = new Set<string>();
   const server: Server = createServer((req, res) => {
     if (!hostAllowed(req.headers.host, allowedHosts)) {
+      setSecurityHeaders(req, res);
       res.writeHead(403, { 'Content-Type': 'text/plain' }).end('Host not allowed\n');
       return;
     }

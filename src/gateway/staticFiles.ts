@@ -62,7 +62,8 @@ function realFileInside(file: string, realRoot: string): { path: string; size: n
   }
 }
 
-export function serveStatic(root: string | null, req: IncomingMessage, res: ServerResponse): void {
+/** The security headers every HTTP response of the gateway carries (refusals included). */
+export function setSecurityHeaders(req: IncomingMessage, res: ServerResponse): void {
   // Browsers mark a worker's script request with `Sec-Fetch-Dest: worker`; only that response allows eval.
   const forWorker = req.headers['sec-fetch-dest'] === 'worker';
   res.setHeader('Content-Security-Policy', contentSecurityPolicy(req.headers.host, forWorker));
@@ -70,6 +71,10 @@ export function serveStatic(root: string | null, req: IncomingMessage, res: Serv
   res.setHeader('X-Content-Type-Options', 'nosniff');
   res.setHeader('X-Frame-Options', 'DENY');
   res.setHeader('Referrer-Policy', 'no-referrer');
+}
+
+export function serveStatic(root: string | null, req: IncomingMessage, res: ServerResponse): void {
+  setSecurityHeaders(req, res);
   if (req.method !== 'GET' && req.method !== 'HEAD') {
     res.writeHead(405, { Allow: 'GET, HEAD', 'Content-Type': 'text/plain' }).end('method not allowed\n');
     return;

@@ -94,6 +94,10 @@ describe('gateway HTTP', () => {
     const worker = String((await headersOf(gw.port, '/assets/app.js', { 'Sec-Fetch-Dest': 'worker' }))['content-security-policy']);
     expect(worker).toContain("script-src 'self' 'unsafe-eval'");
     expect(worker).toContain("frame-ancestors 'none'");
+    // The refusal of a foreign Host name carries the same headers.
+    const refused = await headersOf(gw.port, '/', { Host: `rebind.example:${gw.port}` });
+    expect(String(refused['content-security-policy'])).toContain("frame-ancestors 'none'");
+    expect(refused['x-content-type-options']).toBe('nosniff');
   });
 
   it('does not serve source maps unless RUNGSMITH_SERVE_SOURCEMAPS=1', async () => {
