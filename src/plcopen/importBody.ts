@@ -3,7 +3,7 @@
 import type { LdElement } from '../model/elements';
 import { newNetwork } from '../model/factory';
 import type { Network } from '../model/project';
-import { prepareLayout, type Prepared } from './layout';
+import { LAYOUT_STRATEGIES, prepareLayout } from './layout';
 import { instantiate, LayoutCache, shapeKey } from './layoutCache';
 import type { LaidOut } from './layoutShapes';
 import { buildLdGraph, type Finding, type GNode } from './ldGraph';
@@ -11,7 +11,7 @@ import { splitSharedSources } from './ldNormalize';
 import { planBody, type BodyPlan } from './ldBatches';
 import { readLdObjects, type RawObject } from './ldObjects';
 import { RS_NETWORK, type PreservedNetwork } from './types';
-import { mismatchFinding, verify } from './verifyLayout';
+import { mismatchFinding, verify, type Mismatch } from './verifyLayout';
 import { child, childrenNamed, type XmlDoc, type XmlElement } from './xml/parse';
 
 export interface BodyResult {
@@ -132,7 +132,7 @@ export function importLdBody(
       pendingVendor.push(it.raw);
       continue;
     }
-    for (const f of it.findings) warn(f);
+    for (const f of it.findings) warn({ ...f, message: `network ${networks.length + 1}: ${f.message}` });
     const { laid } = it;
     const keep: PreservedNetwork = {
       ...(pendingVendor.length ? { objects: pendingVendor } : {}),
@@ -242,25 +242,30 @@ function readBatch(
   const laidOut: { group: Group; laid: LaidNetwork; findings: Finding[] }[] = [];
   const layOut = (g: Group, width: number, findings: Finding[]): LaidNetwork => {
     const key = cache.enabled ? shapeKey(nodes, g.nodes) : '';
-    let prepared: Prepared | undefined;
-    let needCols = cache.needCols(key);
-    if (needCols === undefined) {
-      prepared = prepareLayout(nodes, g.nodes);
-      needCols = prepared.needCols;
-    }
-    cols = Math.max(cols, needCols);
-    const c = Math.max(width, needCols);
-    const template = cache.template(key, c);
+    const known = cache.needCols(key);
+    const template = known === undefined ? undefined : cache.template(key, Math.max(width, known));
     let laid: LaidOut;
-    let mismatches: { node: number; pin: string }[];
-    if (template) ({ mismatches, ...laid } = instantiate(template, nodes, g.nodes));
-    else {
-      laid = (prepared ?? prepareLayout(nodes, g.nodes)).run(c);
-      mismatches = verify(nodes, g.nodes, laid);
-      cache.remember(key, needCols, g.nodes, laid, mismatches);
+    let mismatches: Mismatch[] = [];
+    if (template) {
+      cols = Math.max(cols, known!);
+      laid = instantiate(template, nodes, g.nodes);
+    } else {
+      // Every layout is checked against the file; the first strategy that draws it exactly wins.
+      let best: { laid: LaidOut; mismatches: Mismatch[]; needCols: number } | undefined;
+      for (let s = 0; s < LAYOUT_STRATEGIES; s++) {
+        const prepared = prepareLayout(nodes, g.nodes, s);
+        const tryLaid = prepared.run(Math.max(width, prepared.needCols));
+        const m = verify(nodes, g.nodes, tryLaid);
+        if (!best || m.length < best.mismatches.length)
+          best = { laid: tryLaid, mismatches: m, needCols: prepared.needCols };
+        if (!m.length) break;
+      }
+      ({ laid, mismatches } = best!);
+      cols = Math.max(cols, best!.needCols);
+      cache.remember(key, best!.needCols, g.nodes, laid, mismatches);
     }
     findings.length = 0;
-    for (const m of mismatches) findings.push(mismatchFinding(nodes[m.node]!, m.pin));
+    for (const m of mismatches) findings.push(mismatchFinding(nodes, m));
     const data = elementData(nodes, g.nodes, laid);
     return {
       rows: laid.rows,

@@ -13,9 +13,17 @@ export interface Prepared {
   readonly run: (cols: number) => LaidOut;
 }
 
+/**
+ * Layout strategies, tried in order until the grid draws the file exactly (see verifyLayout.ts):
+ * 0 is the compact one; 1 staggers the vertical bars of a multi-row box's outputs right of the
+ * box (an upper pin's bar right of those below it), so no bar runs down the box's edge past its
+ * other output pins and no pin's wire crosses the bar of the pin above it.
+ */
+export const LAYOUT_STRATEGIES = 2;
+
 /** Prepares the layout of the nodes of one network: columns now, rows when the width is known. */
-export function prepareLayout(all: readonly GNode[], members: readonly number[]): Prepared {
-  return new ColumnLayout(all, members);
+export function prepareLayout(all: readonly GNode[], members: readonly number[], strategy = 0): Prepared {
+  return new ColumnLayout(all, members, strategy);
 }
 
 function pinIndex(list: readonly PinSpec[], pin: string): number {
@@ -50,6 +58,7 @@ class ColumnLayout implements Prepared {
   constructor(
     private readonly all: readonly GNode[],
     members: readonly number[],
+    private readonly strategy = 0,
   ) {
     this.nodes = members;
     const { shapes, local } = this;
@@ -168,6 +177,17 @@ class ColumnLayout implements Prepared {
     }
   }
 
+  /** Bars of a box's outputs, staggered: an upper pin's bar lies right of those of the pins below it. */
+  private stagger(p: { node: number; pin: string }): number {
+    const outs = this.shapes.get(p.node)!.outputs;
+    let k = 1;
+    let below = false;
+    for (const o of outs) {
+      if (o.pin === p.pin) below = true;
+      else if (below && this.outNet(p.node, o.pin)?.consumers.length) k++;
+    }
+    return k;
+  }
   private tall(node: number): boolean {
     return this.shapes.get(node)!.h > 1;
   }
@@ -223,6 +243,9 @@ class ColumnLayout implements Prepared {
       for (const c of net.consumers) if (this.tall(c.node)) tallConsumer = true;
       const many = net.producers.length + (net.rail ? 1 : 0) > 1;
       gap.set(net, tallProducer && (net.consumers.length > 1 || many || tallConsumer) ? 1 : 0);
+      if (this.strategy >= 1 && tallProducer && (net.consumers.length || many))
+        for (const p of net.producers)
+          if (this.tall(p.node)) gap.set(net, Math.max(gap.get(net)!, this.stagger(p)));
     }
     for (let qi = 0; qi < queue.length; qi++) {
       const i = queue[qi]!;

@@ -21,8 +21,6 @@ export interface LayoutTemplate {
     readonly suffix: string;
   }[];
   readonly vlinks: readonly VLink[];
-  /** Members whose drawn wiring differs from the file, with the first pin that differs. */
-  readonly mismatches: readonly { readonly member: number; readonly pin: string }[];
   /** Members placed where they touch another net. */
   readonly forced: readonly number[];
 }
@@ -76,17 +74,20 @@ export class LayoutCache {
     return this.entries.get(key)?.byCols.get(cols);
   }
 
-  /** Records the layout of a network (`mismatches` by node index) as the template of its shape. */
+  /** Records the layout of a network as the template of its shape (if it matches the file). */
   remember(
     key: string,
     needCols: number,
     members: readonly number[],
     laid: LaidOut,
-    mismatches: readonly { node: number; pin: string }[],
+    mismatches: readonly unknown[],
   ): void {
     if (!this.enabled) return;
     let entry = this.entries.get(key);
     if (!entry) this.entries.set(key, (entry = { needCols, byCols: new Map() }));
+    // A layout that differs from the file is not shared: each network of the shape is laid out
+    // and checked on its own, so its findings name its own elements.
+    if (mismatches.length) return;
     const memberOf = new Map<ElementId, number>();
     const position = new Map<number, number>();
     members.forEach((m, li) => position.set(m, li));
@@ -101,18 +102,13 @@ export class LayoutCache {
         suffix: e.id.slice(e.id.lastIndexOf('_')),
       })),
       vlinks: laid.vlinks.map((v) => ({ ...v })),
-      mismatches: mismatches.map((m) => ({ member: position.get(m.node)!, pin: m.pin })),
       forced: laid.forced.map((node) => position.get(node)!),
     });
   }
 }
 
 /** A network of a known shape: the template's layout with this network's nodes. */
-export function instantiate(
-  t: LayoutTemplate,
-  nodes: readonly GNode[],
-  members: readonly number[],
-): LaidOut & { mismatches: { node: number; pin: string }[] } {
+export function instantiate(t: LayoutTemplate, nodes: readonly GNode[], members: readonly number[]): LaidOut {
   const prefix = newId<'ElementId'>('e');
   const elementOf = new Map<number, ElementId>();
   const elements: LdElement[] = t.elements.map((e) => {
@@ -129,6 +125,5 @@ export function instantiate(
     vlinks: t.vlinks.map((v) => ({ ...v })),
     elementOf,
     forced: t.forced.map((m) => members[m]!),
-    mismatches: t.mismatches.map((m) => ({ node: members[m.member]!, pin: m.pin })),
   };
 }

@@ -227,6 +227,23 @@ class RowPlacer {
     for (let k = 0; k < pins.length; k++) nodes[k] = pins[k]!.node;
     for (const n of sortSmall(nodes, this.byPosition)) this.place(n);
   }
+  /** Consumers of a net, except those waiting for a source still being placed (that source places them). */
+  consumersOf(net: Net): void {
+    for (const c of net.consumers) if (this.placing.size === 0 || !this.waiting(c.node)) this.place(c.node);
+  }
+  /** Whether a producer of one of the node's input nets is being placed. */
+  waiting(i: number): boolean {
+    for (const p of this.shapes.get(i)!.inputs) {
+      const net = this.inNet(i, p.pin);
+      if (net) for (const pr of net.producers) if (pr.node !== i && this.placing.has(pr.node)) return true;
+    }
+    return false;
+  }
+  /** Whether a producer of this net other than `i` is being placed (its sources first). */
+  siblingPlacing(net: Net, i: number): boolean {
+    for (const pr of net.producers) if (pr.node !== i && this.placing.has(pr.node)) return true;
+    return false;
+  }
   place(i: number, prefer?: number): void {
     if (this.row.has(i) || this.placing.has(i)) return;
     this.placing.add(i);
@@ -254,12 +271,15 @@ class RowPlacer {
     this.commit(i, r);
     this.placing.delete(i);
     if (later) for (const l of later) this.place(l.node, r + l.row);
-    // Then what I feed: siblings in the same bars, then consumers, depth-first.
+    // Then what I feed: siblings in the same bars, then consumers, depth-first. Siblings wait while
+    // one of them is still being placed (its own sources come first): placed now, they would take
+    // the rows between that sibling's branches, and its wires would cross theirs.
     for (const p of sh.outputs) {
       const net = this.outNet(i, p.pin);
       if (!net) continue;
-      this.inOrder(net.producers);
-      this.inOrder(net.consumers);
+      if (!this.siblingPlacing(net, i)) this.inOrder(net.producers);
+      if (net.consumers.length === 1 && this.placing.size === 0) this.place(net.consumers[0]!.node);
+      else this.consumersOf(net);
     }
   }
 

@@ -1,9 +1,25 @@
-// Checking a laid-out network against the file: the sources of every input pin drawn on the grid
-// must be those wired in the file; where they differ the import says so.
-import type { LdElement } from '../model/elements';
-import { gridGraph, type Source } from './gridGraph';
+// Checking a laid-out network against the file, on every import: the grid is compiled into its
+// element graph exactly as the engine does (src/engine/compile/graph.ts), and the sources of every
+// input pin in that graph must be those wired in the file — no wire missing, none invented — with
+// power running left to right (every source of a net ends at or left of every pin it feeds, so the
+// grid never holds a branch fed from its right, LD-R01). Where the grid differs, the import says
+// which pin of which element gains or loses which source.
+import { buildGraph, type NetworkGraph } from '../engine/compile/graph';
+import type { Network } from '../model/project';
 import type { LaidOut } from './layoutShapes';
 import type { Finding, GNode, GSource } from './ldGraph';
+
+/** A pin whose drawn sources differ from the file's. */
+export interface Mismatch {
+  readonly node: number;
+  readonly pin: string;
+  /** Sources the grid joins to the pin that the file does not wire to it. */
+  readonly extra: readonly GSource[];
+  /** Sources the file wires to the pin that the grid does not join to it. */
+  readonly missing: readonly GSource[];
+  /** The grid feeds the pin from its right (a source ends right of the pin). */
+  readonly leftward?: boolean;
+}
 
 const describe = (n: GNode): string => {
   switch (n.kind) {
@@ -20,80 +36,111 @@ const describe = (n: GNode): string => {
   }
 };
 
-/** Checks that the grid draws exactly the wiring of the file; reports elements whose inputs differ. */
-export function verify(
-  nodes: readonly GNode[],
-  members: readonly number[],
-  laid: LaidOut,
-): { node: number; pin: string }[] {
-  const g = gridGraph(laid);
-  const indexOfElement = new Map<string, number>();
-  laid.elements.forEach((e: LdElement, i) => indexOfElement.set(e.id, i));
-  const nodeOfElement = new Map<number, number>();
+/** The import's pin name of an engine terminal: 1-cell elements have "IN"/"OUT" there, "in"/"out" here. */
+const pinName = (g: NetworkGraph, node: number, p: string) =>
+  g.nodes[node]!.el.kind === 'box' ? p : p === 'IN' ? 'in' : p === 'OUT' ? 'out' : p;
+const RAIL: GSource = { kind: 'rail' };
+
+/** Checks that the grid, compiled as the engine compiles it, is exactly the wiring of the file. */
+export function verify(nodes: readonly GNode[], members: readonly number[], laid: LaidOut): Mismatch[] {
+  const g = buildGraph(laid as Pick<Network, 'rows' | 'cols' | 'elements' | 'vlinks'> as Network);
+  const W = laid.cols + 1;
+  // Member node of each element (by element id), then of each graph node.
+  const memberOfId = new Map<string, number>();
   for (const i of members) {
     const id = laid.elementOf.get(i);
-    if (id) nodeOfElement.set(indexOfElement.get(id)!, i);
+    if (id) memberOfId.set(id, i);
   }
+  const memberOf: number[] = g.nodes.map((gn) => memberOfId.get(gn.el.id) ?? -1);
   const memberSet = new Set(members);
-  const out: { node: number; pin: string }[] = [];
+  const out: Mismatch[] = [];
+  const drawnOf = new Map<number, Map<string, { srcs: GSource[]; leftward: boolean }>>();
+  for (const net of g.nets) {
+    if (!net.sinks.length || (!net.sources.length && !net.leftRail)) continue;
+    let maxSource = -1;
+    for (const s of net.sources) maxSource = Math.max(maxSource, s.point % W);
+    const srcs: GSource[] = [];
+    for (const s of net.sources) {
+      const m = memberOf[s.node]!;
+      if (m >= 0) srcs.push({ kind: 'node', node: m, pin: pinName(g, s.node, s.pin) });
+    }
+    if (net.leftRail) srcs.push(RAIL);
+    for (const s of net.sinks) {
+      const m = memberOf[s.node]!;
+      if (m < 0) continue;
+      let pins = drawnOf.get(m);
+      if (!pins) drawnOf.set(m, (pins = new Map()));
+      pins.set(pinName(g, s.node, s.pin), { srcs, leftward: maxSource > s.point % W });
+    }
+  }
+  for (const b of g.misplaced) {
+    const m = memberOf.find((_, k) => g.nodes[k]!.index === b.index);
+    if (m !== undefined && m >= 0) out.push({ node: m, pin: 'in', extra: [], missing: [] });
+  }
   for (const i of members) {
     const n = nodes[i]!;
-    const ei = indexOfElement.get(laid.elementOf.get(i)!);
-    if (ei === undefined) continue;
-    const drawn = g.sources.get(ei);
-    // The pins wired in the file, then those only drawn; the first that differs is reported.
-    let bad: string | undefined;
-    for (const pin of n.inputs.keys())
-      if (pinDiffers(n, pin, drawn, memberSet, nodeOfElement)) {
-        bad = pin;
-        break;
+    const drawn = drawnOf.get(i);
+    for (const pin of n.inputs.keys()) {
+      const d = drawn?.get(pin);
+      const m = compare(i, pin, inFile(n, pin, memberSet), d?.srcs ?? [], d?.leftward ?? false);
+      if (m) out.push(m);
+    }
+    if (drawn)
+      for (const [pin, d] of drawn) {
+        if (n.inputs.has(pin)) continue;
+        const m = compare(i, pin, [], d.srcs, d.leftward);
+        if (m) out.push(m);
       }
-    if (bad === undefined && drawn)
-      for (const pin of drawn.keys())
-        if (!n.inputs.has(pin) && pinDiffers(n, pin, drawn, memberSet, nodeOfElement)) {
-          bad = pin;
-          break;
-        }
-    if (bad !== undefined) out.push({ node: i, pin: bad });
   }
   return out;
 }
 
-/** The finding for a node whose drawn wiring differs from the file. */
-export function mismatchFinding(n: GNode, pin: string): Finding {
+/** The sources of a pin in the file, within the network. */
+function inFile(n: GNode, pin: string, memberSet: ReadonlySet<number>): GSource[] {
+  const list = n.inputs.get(pin) ?? [];
+  for (const s of list)
+    if (s.kind === 'node' && !memberSet.has(s.node))
+      return list.filter((x) => x.kind === 'rail' || memberSet.has(x.node));
+  return list;
+}
+
+const same = (a: GSource, b: GSource): boolean =>
+  a.kind === 'rail' ? b.kind === 'rail' : b.kind === 'node' && a.node === b.node && a.pin === b.pin;
+
+function compare(
+  node: number,
+  pin: string,
+  want: readonly GSource[],
+  got: readonly GSource[],
+  leftward: boolean,
+): Mismatch | undefined {
+  // One source each (most pins): compare directly.
+  if (!leftward && want.length === 1 && got.length === 1 && same(want[0]!, got[0]!)) return undefined;
+  const extra = got.filter((g) => !want.some((w) => same(w, g)));
+  const missing = want.filter((w) => !got.some((g) => same(w, g)));
+  if (!extra.length && !missing.length && !leftward) return undefined;
+  return { node, pin, extra, missing, ...(leftward ? { leftward } : {}) };
+}
+
+/** Names a source for a finding. */
+function sourceName(nodes: readonly GNode[], s: GSource): string {
+  if (s.kind === 'rail') return 'the left rail';
+  const n = nodes[s.node]!;
+  return `${describe(n)}${s.pin === 'out' ? '' : ` (${s.pin})`}`;
+}
+
+/** The finding for a pin whose drawn wiring differs from the file. */
+export function mismatchFinding(nodes: readonly GNode[], m: Mismatch): Finding {
+  const n = nodes[m.node]!;
+  const what: string[] = [];
+  if (m.extra.length)
+    what.push(`joins it to ${m.extra.map((s) => sourceName(nodes, s)).join(', ')}, which the file does not`);
+  if (m.missing.length)
+    what.push(`leaves out its wire from ${m.missing.map((s) => sourceName(nodes, s)).join(', ')}`);
+  if (m.leftward) what.push('feeds it from its right');
+  const detail = what.length ? what.join('; ') : 'cannot place it';
   return {
-    message: `${describe(n)}${pin === 'in' || pin === 'out' ? '' : ` pin ${pin}`}: this wiring cannot be drawn exactly on the ladder grid; check its connections`,
+    message: `${describe(n)}${m.pin === 'in' ? '' : ` pin ${m.pin}`}: this wiring cannot be drawn exactly on the ladder grid without crossing other wires (the grid ${detail}); check its connections`,
     obj: n.obj,
   };
-}
-
-/** Whether the sources of a pin in the file (within the network) differ from those the grid draws. */
-function pinDiffers(
-  n: GNode,
-  pin: string,
-  drawn: Map<string, Source[]> | undefined,
-  memberSet: ReadonlySet<number>,
-  nodeOfElement: ReadonlyMap<number, number>,
-): boolean {
-  const wantList = (n.inputs.get(pin) ?? []).filter((s) => s.kind === 'rail' || memberSet.has(s.node));
-  const gotList = drawn?.get(pin) ?? [];
-  // One source each (most pins): compare directly, without building keys or sets.
-  if (wantList.length === 1 && gotList.length === 1) {
-    const want = wantList[0]!;
-    const got = gotList[0]!;
-    if (want.kind === 'rail' || got.kind === 'rail') return want.kind !== got.kind;
-    return want.node !== nodeOfElement.get(got.el) || want.pin !== got.pin;
-  }
-  const key = (s: Source | GSource): string => {
-    if (s.kind === 'rail') return 'rail';
-    if (s.kind === 'pin') return `${nodeOfElement.get(s.el)}:${s.pin}`;
-    return `${s.node}:${s.pin}`;
-  };
-  return !sameSet(new Set(wantList.map(key)), new Set(gotList.map(key)));
-}
-
-function sameSet(a: ReadonlySet<string>, b: ReadonlySet<string>): boolean {
-  if (a.size !== b.size) return false;
-  for (const k of a) if (!b.has(k)) return false;
-  return true;
 }
