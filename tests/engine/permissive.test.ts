@@ -193,7 +193,7 @@ describe('4. one FB instance called twice (IEC, MATIEC: every call runs, in orde
     expect(diags(n)).toEqual([
       { severity: 'warning', rule: 'LD-R10', network: 1, elementId: n[1]!.elements.at(-1)!.id },
     ]);
-    expect(checkProject(build(n))[0]!.message).toMatch(/a second time \(first at network 1\)/);
+    expect(checkProject(build(n))[0]!.message).toMatch(/the CTU block "C1" is a second call of its instance \(first at network 1\)/);
   });
 
   test('each call updates the instance; outputs read after a call see that call', () => {

@@ -103,7 +103,7 @@ export function lowerBox(
       if (first)
         r.warning(
           'LD-R10',
-          `${name} calls the instance "${inst}" a second time (first at network ${first.network + 1}); both calls run, in order, on the same instance`,
+          `${name} is a second call of its instance (first at network ${first.network + 1}); both calls run, in order, on the same instance`,
           el,
         );
       else ctx.fbCalls.set(sym, { network, row: el.row, col: el.col });
