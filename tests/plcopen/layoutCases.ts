@@ -1,0 +1,173 @@
+// Wiring shapes the graph-to-grid layout once drew wrongly (issue 12 §1), as graphs. The fixtures
+// tests/fixtures/plcopen/layout-<name>.xml are these graphs written by ldXml (regenerate with
+// `npx tsx tests/plcopen/layoutCases.ts`); layoutExact.test.ts checks that each imports exactly.
+import { writeFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { ldXml, type LdNetwork, type LdVar } from './ldXml';
+
+export interface LayoutCase {
+  readonly name: string;
+  readonly about: string;
+  readonly vars: LdVar[];
+  readonly networks: LdNetwork[];
+  /** Not yet drawn exactly (the import reports it): a known limit of the grid layout. */
+  readonly known?: boolean;
+}
+
+const bools = (...n: string[]): LdVar[] => n.map((name) => ({ name, type: 'BOOL' }));
+
+export const CASES: LayoutCase[] = [
+  {
+    name: 'ctud-outputs',
+    about: 'CTUD with QU to two coils in parallel, QD to a coil, CV to a variable (CV was joined to QD)',
+    vars: [
+      ...bools('Up', 'Down', 'Rst', 'Load', 'A', 'B', 'C'),
+      { name: 'Count', type: 'INT' },
+      { name: 'C1', type: 'CTUD' },
+    ],
+    networks: [
+      {
+        objects: [
+          { id: 1, kind: 'contact', v: 'Up', in: ['rail'] },
+          { id: 2, kind: 'contact', v: 'Down', in: ['rail'] },
+          { id: 3, kind: 'contact', v: 'Rst', in: ['rail'] },
+          { id: 4, kind: 'contact', v: 'Load', in: ['rail'] },
+          {
+            id: 5,
+            kind: 'block',
+            type: 'CTUD',
+            instance: 'C1',
+            inputs: { CU: ['1'], CD: ['2'], R: ['3'], LD: ['4'], PV: ['=3'] },
+            outputs: ['QU', 'QD', 'CV'],
+            assign: { CV: 'Count' },
+          },
+          { id: 6, kind: 'coil', v: 'A', in: ['5.QU'] },
+          { id: 7, kind: 'coil', v: 'B', in: ['5.QU'] },
+          { id: 8, kind: 'coil', v: 'C', in: ['5.QD'] },
+        ],
+        toRail: [6, 7, 8],
+      },
+    ],
+  },
+  {
+    name: 'nested-or',
+    about:
+      '(I0 OR (I3 AND (I4 OR I5)) OR I6) -> Q7 (I6 split the inner OR, a contact was fed from its right)',
+    vars: bools('I0', 'I3', 'I4', 'I5', 'I6', 'Q7'),
+    networks: [
+      {
+        objects: [
+          { id: 1, kind: 'contact', v: 'I0', in: ['rail'] },
+          { id: 2, kind: 'contact', v: 'I3', in: ['rail'] },
+          { id: 3, kind: 'contact', v: 'I4', in: ['2'] },
+          { id: 4, kind: 'contact', v: 'I5', in: ['2'] },
+          { id: 5, kind: 'contact', v: 'I6', in: ['rail'] },
+          { id: 6, kind: 'coil', v: 'Q7', in: ['1', '3', '4', '5'] },
+        ],
+        toRail: [6],
+      },
+    ],
+  },
+  {
+    name: 'fanout-block-inputs',
+    known: true,
+    about: 'one contact feeding a TON, a CTU and a coil; a second contact feeding the CTU reset',
+    vars: [...bools('A', 'R', 'X', 'Y', 'Z'), { name: 'T1', type: 'TON' }, { name: 'K1', type: 'CTU' }],
+    networks: [
+      {
+        objects: [
+          { id: 1, kind: 'contact', v: 'A', in: ['rail'] },
+          { id: 2, kind: 'contact', v: 'R', in: ['rail'] },
+          {
+            id: 3,
+            kind: 'block',
+            type: 'TON',
+            instance: 'T1',
+            inputs: { IN: ['1'], PT: ['=T#30ms'] },
+            outputs: ['Q', 'ET'],
+          },
+          {
+            id: 4,
+            kind: 'block',
+            type: 'CTU',
+            instance: 'K1',
+            inputs: { CU: ['1'], R: ['2'], PV: ['=2'] },
+            outputs: ['Q', 'CV'],
+          },
+          { id: 5, kind: 'coil', v: 'X', in: ['3.Q'] },
+          { id: 6, kind: 'coil', v: 'Y', in: ['4.Q'] },
+          { id: 7, kind: 'coil', v: 'Z', in: ['1'] },
+        ],
+        toRail: [5, 6, 7],
+      },
+    ],
+  },
+  {
+    name: 'coils-after-block',
+    about: 'TON.Q into two coils in series and a set coil in parallel',
+    vars: [...bools('A', 'P', 'Q', 'S'), { name: 'T1', type: 'TON' }],
+    networks: [
+      {
+        objects: [
+          { id: 1, kind: 'contact', v: 'A', in: ['rail'] },
+          {
+            id: 2,
+            kind: 'block',
+            type: 'TON',
+            instance: 'T1',
+            inputs: { IN: ['1'], PT: ['=T#20ms'] },
+            outputs: ['Q', 'ET'],
+          },
+          { id: 3, kind: 'coil', v: 'P', in: ['2.Q'] },
+          { id: 4, kind: 'coil', v: 'Q', in: ['3'] },
+          { id: 5, kind: 'coil', v: 'S', storage: 'set', in: ['2.Q'] },
+        ],
+        toRail: [4, 5],
+      },
+    ],
+  },
+  {
+    name: 'block-output-two-contacts',
+    known: true,
+    about: "a TON's Q feeding two contacts, each into its own coil, and a CTU's Q ORed with one of them",
+    vars: [...bools('A', 'B', 'C', 'X', 'Y'), { name: 'T1', type: 'TON' }, { name: 'K1', type: 'CTU' }],
+    networks: [
+      {
+        objects: [
+          { id: 1, kind: 'contact', v: 'A', in: ['rail'] },
+          {
+            id: 2,
+            kind: 'block',
+            type: 'TON',
+            instance: 'T1',
+            inputs: { IN: ['1'], PT: ['=T#20ms'] },
+            outputs: ['Q', 'ET'],
+          },
+          { id: 3, kind: 'contact', v: 'B', in: ['2.Q'] },
+          { id: 4, kind: 'contact', v: 'C', neg: true, in: ['2.Q'] },
+          {
+            id: 5,
+            kind: 'block',
+            type: 'CTU',
+            instance: 'K1',
+            inputs: { CU: ['3'], R: ['rail'], PV: ['=5'] },
+            outputs: ['Q', 'CV'],
+          },
+          { id: 6, kind: 'coil', v: 'X', in: ['3', '5.Q'] },
+          { id: 7, kind: 'coil', v: 'Y', in: ['4'] },
+        ],
+        toRail: [6, 7],
+      },
+    ],
+  },
+];
+
+if (process.argv[1] === fileURLToPath(import.meta.url))
+  for (const c of CASES)
+    writeFileSync(
+      fileURLToPath(new URL(`../fixtures/plcopen/layout-${c.name}.xml`, import.meta.url)),
+      ldXml(c.vars, c.networks).replace(
+        '<types>',
+        `<!-- Hand-written layout case: ${c.about} -->\n  <types>`,
+      ),
+    );
