@@ -32,34 +32,46 @@ const timer = (name: string, description: string): BlockSignature => ({
   description,
 });
 
+/** The PV/CV types of the counters: INT for CTU/CTD/CTUD, the others as MATIEC's typed CTU_DINT ... CTUD_ULINT. */
+export const COUNTER_TYPES = ['INT', 'DINT', 'LINT', 'UDINT', 'ULINT'] as const;
+export type CounterType = (typeof COUNTER_TYPES)[number];
+
+/** CTU, CTD and CTUD whose PV and CV have type `t` (suffix "" for INT, "_DINT" ...). */
+const counters = (suffix: string, t: CounterType): BlockSignature[] => {
+  const typed = suffix ? ` PV and CV are ${t}.` : '';
+  return [
+    {
+      name: `CTU${suffix}`,
+      kind: 'fb',
+      category: 'counter',
+      inputs: [p('CU', 'BOOL'), p('R', 'BOOL'), p('PV', t)],
+      outputs: [p('Q', 'BOOL'), p('CV', t)],
+      description: `Up counter: CV counts rising edges of CU; Q = CV >= PV; R resets CV to 0.${typed}`,
+    },
+    {
+      name: `CTD${suffix}`,
+      kind: 'fb',
+      category: 'counter',
+      inputs: [p('CD', 'BOOL'), p('LD', 'BOOL'), p('PV', t)],
+      outputs: [p('Q', 'BOOL'), p('CV', t)],
+      description: `Down counter: CV counts down on rising edges of CD; Q = CV <= 0; LD loads PV.${typed}`,
+    },
+    {
+      name: `CTUD${suffix}`,
+      kind: 'fb',
+      category: 'counter',
+      inputs: [p('CU', 'BOOL'), p('CD', 'BOOL'), p('R', 'BOOL'), p('LD', 'BOOL'), p('PV', t)],
+      outputs: [p('QU', 'BOOL'), p('QD', 'BOOL'), p('CV', t)],
+      description: `Up-down counter: QU = CV >= PV, QD = CV <= 0; R resets, LD loads PV.${typed}`,
+    },
+  ];
+};
+
 export const FB_SIGNATURES: readonly BlockSignature[] = [
   timer('TON', 'On-delay timer: Q goes ON when IN has been ON for PT.'),
   timer('TOF', 'Off-delay timer: Q stays ON for PT after IN goes OFF.'),
   timer('TP', 'Pulse timer: Q is ON for PT from a rising edge of IN (not retriggerable).'),
-  {
-    name: 'CTU',
-    kind: 'fb',
-    category: 'counter',
-    inputs: [p('CU', 'BOOL'), p('R', 'BOOL'), p('PV', 'INT')],
-    outputs: [p('Q', 'BOOL'), p('CV', 'INT')],
-    description: 'Up counter: CV counts rising edges of CU; Q = CV >= PV; R resets CV to 0.',
-  },
-  {
-    name: 'CTD',
-    kind: 'fb',
-    category: 'counter',
-    inputs: [p('CD', 'BOOL'), p('LD', 'BOOL'), p('PV', 'INT')],
-    outputs: [p('Q', 'BOOL'), p('CV', 'INT')],
-    description: 'Down counter: CV counts down on rising edges of CD; Q = CV <= 0; LD loads PV.',
-  },
-  {
-    name: 'CTUD',
-    kind: 'fb',
-    category: 'counter',
-    inputs: [p('CU', 'BOOL'), p('CD', 'BOOL'), p('R', 'BOOL'), p('LD', 'BOOL'), p('PV', 'INT')],
-    outputs: [p('QU', 'BOOL'), p('QD', 'BOOL'), p('CV', 'INT')],
-    description: 'Up-down counter: QU = CV >= PV, QD = CV <= 0; R resets, LD loads PV.',
-  },
+  ...counters('', 'INT'),
   {
     name: 'R_TRIG',
     kind: 'fb',
@@ -92,6 +104,8 @@ export const FB_SIGNATURES: readonly BlockSignature[] = [
     outputs: [p('Q1', 'BOOL')],
     description: 'Reset-dominant bistable: Q1 := NOT R1 AND (S OR Q1).',
   },
+  // MATIEC's typed counters (lib/counter.txt): same bodies, PV and CV of the type in the name.
+  ...COUNTER_TYPES.filter((t) => t !== 'INT').flatMap((t) => counters(`_${t}`, t)),
 ];
 
 const ext = (prefix: string, start: number) => ({ prefix, start, min: 2, max: 16 });

@@ -3,10 +3,10 @@
 // without allocating. Each `execute` follows the ST body of MATIEC's library (lib/timer.txt,
 // counter.txt, edge_detection.txt, bistable.txt), which transcribes the standard; the only
 // profile-dependent part is the counters' counting limit (see profiles.ts).
-import { blockSignature } from '../../model/blocks';
+import { blockSignature, COUNTER_TYPES, type CounterType } from '../../model/blocks';
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { Profile } from '../../model/project';
-import { normalize } from '../values/types';
+import { defaultValue, normalize } from '../values/types';
 import { counterLimits, type CounterLimits } from './profiles';
 
 export interface FbInstance {
@@ -26,8 +26,11 @@ export interface FbInstance {
   loadState(state: FbState, timeBase: number): void;
 }
 
-/** An FB instance's pins and internal fields as plain values. */
+/** An FB instance's pins and internal fields as plain values (a 64-bit field F as F$hi and F$lo). */
 export type FbState = Readonly<Record<string, number | boolean>>;
+
+const HI = '$hi';
+const LO = '$lo';
 
 const pinTypes = new Map<string, ReadonlyMap<string, ElementaryType>>();
 
@@ -69,7 +72,13 @@ abstract class StandardFb implements FbInstance {
 
   saveState(_timeBase: number): FbState {
     const out: Record<string, number | boolean> = {};
-    for (const [k, v] of Object.entries(this)) if (typeof v === 'number' || typeof v === 'boolean') out[k] = v;
+    for (const [k, v] of Object.entries(this))
+      if (typeof v === 'number' || typeof v === 'boolean') out[k] = v;
+      else if (typeof v === 'bigint') {
+        // JSON and structured-clone safe, exact: the high (signed) and low 32 bits.
+        out[k + HI] = Number(v >> 32n);
+        out[k + LO] = Number(v & 0xffffffffn);
+      }
     return out;
   }
 
@@ -77,6 +86,12 @@ abstract class StandardFb implements FbInstance {
     const self = this as unknown as Record<string, unknown>;
     for (const [k, v] of Object.entries(state))
       if (Object.prototype.hasOwnProperty.call(self, k) && typeof self[k] === typeof v) self[k] = v;
+    for (const [k, v] of Object.entries(self)) {
+      const hi = state[k + HI];
+      const lo = state[k + LO];
+      if (typeof v === 'bigint' && typeof hi === 'number' && typeof lo === 'number')
+        this.set(k, (BigInt(hi) << 32n) + BigInt(lo));
+    }
   }
 }
 
@@ -184,91 +199,107 @@ export class TP extends Timer {
   }
 }
 
-/** Up counter. CU counts on its rising edge (an internal R_TRIG, as MATIEC's CU_T). */
-export class CTU extends StandardFb {
-  readonly fbType = 'CTU';
+/** CV + 1 or CV - 1 in CV's representation (bigint for LINT/ULINT); the limits keep it in range. */
+const step = (v: number | bigint, by: 1 | -1): number | bigint =>
+  typeof v === 'bigint' ? v + BigInt(by) : v + by;
+
+/** The counters' common part: PV/CV of type `cvType` (INT for CTU/CTD/CTUD, DINT for CTU_DINT ...). */
+abstract class Counter extends StandardFb {
+  PV: number | bigint;
+  CV: number | bigint;
+  constructor(
+    readonly fbType: string,
+    protected readonly limits: CounterLimits,
+    protected readonly cvType: CounterType,
+  ) {
+    super();
+    this.PV = this.CV = this.zero();
+  }
+  protected zero(): number | bigint {
+    return defaultValue(this.cvType) as number | bigint;
+  }
+}
+
+/**
+ * Up counter. CU counts on its rising edge (an internal R_TRIG, as MATIEC's CU_T). MATIEC's
+ * CTU_DINT, CTU_LINT, CTU_UDINT and CTU_ULINT (lib/counter.txt) have the same body with PV and CV
+ * of that type.
+ */
+export class CTU extends Counter {
   CU = false;
   R = false;
-  PV = 0;
   Q = false;
-  CV = 0;
   /** Edge memory of CU (MATIEC: CU_T.M). */
   CU_M = false;
-  constructor(private readonly limits: CounterLimits) {
-    super();
+  constructor(limits: CounterLimits, type: CounterType = 'INT') {
+    super(type === 'INT' ? 'CTU' : `CTU_${type}`, limits, type);
   }
   execute(_nowMs: number): void {
     const edge = this.CU && !this.CU_M;
     this.CU_M = this.CU;
-    if (this.R) this.CV = 0;
-    else if (edge && this.CV < this.limits.upTo(this.PV)) this.CV += 1;
+    if (this.R) this.CV = this.zero();
+    else if (edge && this.CV < this.limits.upTo(this.PV)) this.CV = step(this.CV, 1);
     this.Q = this.CV >= this.PV;
   }
   reset(): void {
     this.CU = this.R = this.Q = this.CU_M = false;
-    this.PV = this.CV = 0;
+    this.PV = this.CV = this.zero();
   }
 }
 
-/** Down counter. CD counts on its rising edge; LD loads PV. */
-export class CTD extends StandardFb {
-  readonly fbType = 'CTD';
+/** Down counter. CD counts on its rising edge; LD loads PV. Typed CTD_DINT ... CTD_ULINT as CTU. */
+export class CTD extends Counter {
   CD = false;
   LD = false;
-  PV = 0;
   Q = false;
-  CV = 0;
   /** Edge memory of CD (MATIEC: CD_T.M). */
   CD_M = false;
-  constructor(private readonly limits: CounterLimits) {
-    super();
+  constructor(limits: CounterLimits, type: CounterType = 'INT') {
+    super(type === 'INT' ? 'CTD' : `CTD_${type}`, limits, type);
   }
   execute(_nowMs: number): void {
     const edge = this.CD && !this.CD_M;
     this.CD_M = this.CD;
     if (this.LD) this.CV = this.PV;
-    else if (edge && this.CV > this.limits.downTo) this.CV -= 1;
+    else if (edge && this.CV > this.limits.downTo) this.CV = step(this.CV, -1);
     this.Q = this.CV <= 0;
   }
   reset(): void {
     this.CD = this.LD = this.Q = this.CD_M = false;
-    this.PV = this.CV = 0;
+    this.PV = this.CV = this.zero();
   }
 }
 
-/** Up-down counter: R wins over LD; edges of CU and CD in the same scan cancel out. */
-export class CTUD extends StandardFb {
-  readonly fbType = 'CTUD';
+/** Up-down counter: R wins over LD; edges of CU and CD in the same scan cancel out. Typed as CTU. */
+export class CTUD extends Counter {
   CU = false;
   CD = false;
   R = false;
   LD = false;
-  PV = 0;
   QU = false;
   QD = false;
-  CV = 0;
   CU_M = false;
   CD_M = false;
-  constructor(private readonly limits: CounterLimits) {
-    super();
+  constructor(limits: CounterLimits, type: CounterType = 'INT') {
+    super(type === 'INT' ? 'CTUD' : `CTUD_${type}`, limits, type);
   }
   execute(_nowMs: number): void {
     const down = this.CD && !this.CD_M;
     this.CD_M = this.CD;
     const up = this.CU && !this.CU_M;
     this.CU_M = this.CU;
-    if (this.R) this.CV = 0;
+    if (this.R) this.CV = this.zero();
     else if (this.LD) this.CV = this.PV;
     else if (!(up && down)) {
-      if (up && this.CV < this.limits.upTo(this.PV)) this.CV += 1;
-      else if (down && this.CV > this.limits.downTo) this.CV -= 1;
+      if (up && this.CV < this.limits.upTo(this.PV)) this.CV = step(this.CV, 1);
+      else if (down && this.CV > this.limits.downTo) this.CV = step(this.CV, -1);
     }
     this.QU = this.CV >= this.PV;
     this.QD = this.CV <= 0;
   }
   reset(): void {
     this.CU = this.CD = this.R = this.LD = this.QU = this.QD = this.CU_M = this.CD_M = false;
-    this.PV = this.CV = 0;
+    this.PV = this.CV = this.zero();
   }
 }
 
@@ -332,7 +363,19 @@ export class RS extends StandardFb {
 
 /** A fresh instance of a standard FB (name case-insensitive), or undefined for an unknown type. */
 export function createFb(type: string, profile: Profile): FbInstance | undefined {
-  switch (type.toUpperCase()) {
+  const upper = type.toUpperCase();
+  const typed = /^(CTU|CTD|CTUD)_(\w+)$/.exec(upper);
+  if (typed) {
+    const t = COUNTER_TYPES.find((c) => c !== 'INT' && c === typed[2]);
+    if (!t) return undefined;
+    const limits = counterLimits(profile, t);
+    return typed[1] === 'CTU'
+      ? new CTU(limits, t)
+      : typed[1] === 'CTD'
+        ? new CTD(limits, t)
+        : new CTUD(limits, t);
+  }
+  switch (upper) {
     case 'TON':
       return new TON();
     case 'TOF':

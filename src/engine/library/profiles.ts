@@ -18,7 +18,9 @@
 // unsigned type gives 0; <num>_TO_BOOL is TRUE for any non-zero value; integer arithmetic wraps.
 // Not emulated (undefined behaviour in MATIEC's C, differs between x86 and ARM targets): shifts by
 // N >= the type's width (here: 0 for SHL/SHR), DINT/LINT minimum DIV -1 (a crash there, wraps here).
+import type { CounterType } from '../../model/blocks';
 import type { Profile } from '../../model/project';
+import { defaultValue, isBigIntType, typeRange } from '../values/types';
 
 export interface ProfileDifference {
   readonly id: string;
@@ -31,20 +33,21 @@ export const PROFILE_DIFFERENCES: readonly ProfileDifference[] = [
   {
     id: 'counter-up-limit',
     summary: 'Where CTU and CTUD stop counting up',
-    iec: 'Count up while CV < 32767 (the INT maximum); CV can pass PV.',
+    iec: 'Count up while CV < 32767 (the INT maximum; the maximum of DINT, LINT, UDINT or ULINT for CTU_DINT ...); CV can pass PV.',
     openplc: 'Count up only while CV < PV; CV stops at PV.',
   },
   {
     id: 'counter-down-limit',
     summary: 'Where CTD and CTUD stop counting down',
-    iec: 'Count down while CV > -32768 (the INT minimum); CV can go below 0.',
+    iec: "Count down while CV > -32768 (the INT minimum; the minimum of the typed counters' type, 0 if unsigned); CV can go below 0.",
     openplc: 'Count down only while CV > 0; CV stops at 0.',
   },
   {
     id: 'time-conversion-unit',
     summary: 'Unit of TIME_TO_* and *_TO_TIME conversions',
     iec: 'Milliseconds: TIME_TO_DINT(T#1s500ms) = 1500, DINT_TO_TIME(250) = T#250ms.',
-    openplc: 'Seconds: TIME_TO_DINT(T#1s500ms) = 1, DINT_TO_TIME(250) = T#4m10s, TIME_TO_REAL(T#1s500ms) = 1.5.',
+    openplc:
+      'Seconds: TIME_TO_DINT(T#1s500ms) = 1, DINT_TO_TIME(250) = T#4m10s, TIME_TO_REAL(T#1s500ms) = 1.5.',
   },
   {
     id: 'mod-by-zero',
@@ -66,17 +69,29 @@ export const PROFILE_DIFFERENCES: readonly ProfileDifference[] = [
   },
 ];
 
+/** A counter's PV/CV: bigint for LINT/ULINT, a number otherwise. */
+export type CounterValue = number | bigint;
+
 export interface CounterLimits {
   /** CV may count up while CV < upTo(PV). */
-  upTo(pv: number): number;
+  upTo(pv: CounterValue): CounterValue;
   /** CV may count down while CV > downTo. */
-  readonly downTo: number;
+  readonly downTo: CounterValue;
 }
 
-const IEC_LIMITS: CounterLimits = { upTo: () => 32767, downTo: -32768 };
-const OPENPLC_LIMITS: CounterLimits = { upTo: (pv) => pv, downTo: 0 };
-
-export const counterLimits = (profile: Profile): CounterLimits => (profile === 'openplc' ? OPENPLC_LIMITS : IEC_LIMITS);
+/**
+ * Counting limits of a counter whose CV has type `type` (INT for CTU/CTD/CTUD, DINT for CTU_DINT ...).
+ * iec: the range of CV's type (so CV never wraps); openplc: MATIEC's PV and 0 for every type (its
+ * typed counters CTU_DINT ... CTUD_ULINT have the same body as CTU/CTD/CTUD).
+ * Values are bigint for LINT/ULINT, numbers otherwise, as CV is.
+ */
+export function counterLimits(profile: Profile, type: CounterType = 'INT'): CounterLimits {
+  const big = isBigIntType(type);
+  if (profile === 'openplc') return { upTo: (pv) => pv, downTo: defaultValue(type) as CounterValue };
+  const { min, max } = typeRange(type);
+  const top = big ? max : Number(max);
+  return { upTo: () => top, downTo: big ? min : Number(min) };
+}
 
 /** Milliseconds per unit of a number converted to or from TIME. */
 export const timeConversionUnitMs = (profile: Profile): number => (profile === 'openplc' ? 1000 : 1);
