@@ -309,7 +309,7 @@ describe('diagnostics are located and worded for a PLC programmer', () => {
   test('an open contact names the rule, network, cell and variable', () => {
     const out = lines([ladder(['[A] (X)']), ladder(['[A] (Y)', '[Start] .'])], vars('Start BOOL'));
     expect(out).toContain(
-      'error LD-R03 Main/network 2:R2C1 the contact "Start" has an open right side; connect it to a coil, a block input or the right rail',
+      'warning LD-R03 Main/network 2:R2C1 the contact "Start" has an open right side: its result goes nowhere; connect it to a coil, a block input or the right rail',
     );
   });
 

@@ -31,9 +31,9 @@ const FILES = readdirSync(CORPUS)
 /**
  * Why a program of the corpus cannot run in Rungsmith, by rule id. These are facts of the files, not
  * import losses: vendor or user function blocks (LD-E01/LD-E15: P1AM, MQTT, TCP, I2C, SFC FBs),
- * STRING variables (LD-E15), non-standard addresses like %IW0.0 (LD-E12), unconnected contacts and
- * wires into unknown blocks (LD-R03/LD-R10/LD-E02/LD-E03). Coils wired straight to the rail (LD-R02)
- * and the other vendor-only rules are warnings now (LD-SEMANTICS.md section 9): never an error here.
+ * STRING variables (LD-E15), non-standard addresses like %IW0.0 (LD-E12), wires into unknown blocks
+ * (LD-R10/LD-E02/LD-E03). Coils wired straight to the rail (LD-R02), open ends (LD-R03) and the other
+ * vendor-only rules are warnings now (LD-SEMANTICS.md section 9): never an error here.
  */
 const EXPLAINED = new Set([
   'LD-E01',
@@ -41,7 +41,6 @@ const EXPLAINED = new Set([
   'LD-E03',
   'LD-E12',
   'LD-E15',
-  'LD-R03',
   'LD-R10',
 ]);
 

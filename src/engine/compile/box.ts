@@ -9,7 +9,7 @@ import {
 import type { BoxElement } from '../../model/elements';
 import { resolveFunction } from '../library/functions';
 import { isUntypedLiteral, parseLiteral } from '../values/literals';
-import { canWiden } from '../values/types';
+import { canWiden, defaultValue } from '../values/types';
 import type { PouContext } from './context';
 import type { GraphNode } from './graph';
 import type { ArgIR, Op, OutIR, Source } from './ir';
@@ -29,6 +29,8 @@ interface InputInfo {
   type?: ElementaryType;
   /** Operand text when the pin takes a literal that must be re-read at the resolved type. */
   literal?: string;
+  /** A function input left unconnected: it takes its type's initial value (IEC; MATIEC's default). */
+  open?: boolean;
 }
 
 export function lowerBox(
@@ -116,7 +118,9 @@ export function lowerBox(
   const infos: InputInfo[] = [];
   for (const pin of layout.inputs) {
     const t = node.inputs.find((x) => x.pin === pin.name)!;
-    const wired = nets.isWired(t.net);
+    // LD-R03: a line that starts nowhere leaves the input unconnected (Beremiz leaves an input with
+    // no connection out of the call).
+    const wired = nets.isWired(t.net) && nets.isFed(t.net);
     const operand = operandOf(el.inputs, pin.name);
     const info: InputInfo = { pin };
     infos.push(info);
@@ -167,14 +171,13 @@ export function lowerBox(
       // IEC / MATIEC: an FB input left out of the call keeps the instance's value (its initial value,
       // or what the previous call or an `Instance.Pin` coil left); Beremiz passes only connected
       // inputs. Warned where that is likely a mistake: the power-flow input and value inputs (PT, PV).
-      if (pin.name === powerPin || pin.type !== 'BOOL') r.warning('LD-R10', unconnectedFbInput(name, pin), el);
+      if (pin.name === powerPin || pin.type !== 'BOOL')
+        r.warning('LD-R10', unconnectedFbInput(name, pin), el);
       continue;
     }
-    r.error(
-      'LD-R10',
-      `input ${pin.name} of ${name} has no value; wire it or write a variable or a literal beside it`,
-      el,
-    );
+    // A function input left unconnected takes its type's initial value (IEC; MATIEC passes the
+    // parameter's default, else its type's initial value). Warned once the type is known.
+    info.open = true;
   }
 
   // Outputs.
@@ -239,8 +242,25 @@ export function lowerBox(
   }
   const fn = resolved.fn;
   const args: ArgIR[] = [];
+  // No input, variable or output operand gives the generic type: the type an untyped literal takes.
+  const guessed = !hint && argInfos.every((i) => !i.type);
   argInfos.forEach((info, i) => {
     const type = fn.argTypes[i]!;
+    if (info.open) {
+      const value = defaultValue(type);
+      const text = initialText(type);
+      r.warning(
+        'LD-R10',
+        `input ${info.pin.name} of ${name} is not connected: it takes the initial value of ${type} (${text})${guessed && !isElementaryType(info.pin.type) ? `; no other input gives the block a type, so ${type} is assumed` : ''}; wire it or write a variable or a literal beside it`,
+        el,
+      );
+      args.push({
+        pin: info.pin.name,
+        type,
+        src: { from: 'access', access: { kind: 'const', type, value, text } },
+      });
+      return;
+    }
     let src = info.src!;
     if (info.literal !== undefined) {
       const lit = parseLiteral(info.literal, type);
@@ -356,8 +376,18 @@ function lowerOutput(
   return { pin: o.pin.name, type, ...(data ? { data } : {}), ...(dst ? { dst } : {}) };
 }
 
+function initialText(type: string): string {
+  return type === 'BOOL'
+    ? 'FALSE'
+    : type === 'TIME'
+      ? 'T#0s'
+      : type === 'REAL' || type === 'LREAL'
+        ? '0.0'
+        : '0';
+}
+
 function unconnectedFbInput(name: string, pin: PlacedPin): string {
-  const initial = pin.type === 'BOOL' ? 'FALSE' : pin.type === 'TIME' ? 'T#0s' : '0';
+  const initial = initialText(pin.type);
   return `input ${pin.name} of ${name} is not connected: it keeps the instance's value (${initial} at first); wire it or write a variable or a literal beside it`;
 }
 

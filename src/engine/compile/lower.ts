@@ -53,6 +53,11 @@ export class NetMap {
       ),
     ];
   }
+  /** True when the net is driven: by the left rail or an element's output (LD-R03: a line that starts nowhere is not). */
+  isFed(net: number): boolean {
+    const n = this.g.nets[net]!;
+    return n.leftRail || n.sources.length > 0;
+  }
   /** True when something besides the terminal itself is attached to the net (a wire or another element). */
   isWired(net: number): boolean {
     const n = this.g.nets[net]!;
@@ -126,7 +131,10 @@ export function lowerNetwork(
         const outGraph = g.nets[node.outputs[0]!.net]!;
         if (outGraph.sources.length === 1 && !outGraph.leftRail && inNet >= 0) nets.alias(outGraph.id, inNet);
         const outNet = nets.powerNet(outGraph.id);
-        if (dst)
+        // LD-R03: a coil fed by nothing is not executed (Beremiz generates no assignment for a coil
+        // whose input has no connection), so its variable keeps its value.
+        const fed = node.inputs[0] !== undefined && nets.isFed(node.inputs[0].net);
+        if (dst && fed)
           ops.push({
             op: 'coil',
             node: node.index,

@@ -2,8 +2,10 @@
 // LD-R02 short circuit, LD-R03 open ends, LD-R04 coils at the right end, LD-R05 one jump,
 // LD-R09 transition coils off the left rail, the wiring half of LD-R10.
 // Returns false when the network cannot be ordered or executed (any error found here).
-// LD-R02, LD-R04, LD-R09 and the one-power-line half of LD-R10 are vendor editor rules (002, 000):
-// IEC 61131-3 and MATIEC accept such networks, so they are warnings and the network runs.
+// LD-R02, LD-R03, LD-R04, LD-R09 and the one-power-line half of LD-R10 are vendor editor rules
+// (002, 000): IEC 61131-3 and MATIEC accept such networks, so they are warnings and the network runs.
+// Open ends run as Beremiz generates them: a path that leads nowhere is evaluated and its result
+// unused; a left side fed by nothing is not energised; a coil fed by nothing is not executed.
 import type { LdElement, VLink } from '../../model/elements';
 import type { Network } from '../../model/project';
 import type { GraphNode, Net, NetworkGraph } from './graph';
@@ -59,7 +61,7 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
   for (const n of g.nodes)
     for (const t of [...n.inputs, ...n.outputs]) terminals[t.row * width + t.boundary] = 1;
 
-  // LD-R03: dangling wire ends.
+  // LD-R03 (002, warning): dangling wire ends. A line carries power or nothing; it changes no result.
   const reportedLinks = new Set<number>();
   for (let p = 0; p < g.rows * width; p++) {
     const b = p % width;
@@ -73,14 +75,14 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
       reportedLinks.add(i);
       const el = network.elements[i]!;
       const side = linkLeft[p]! >= 0 ? 'right' : 'left';
-      r.error(
+      r.warning(
         'LD-R03',
         `the line at ${cellName(el.row, el.col)} ends in nothing on its ${side}; connect it or delete it`,
         el,
       );
     } else {
       const v = vUp[p]! >= 0 ? vUp[p]! : vDown[p]!;
-      r.error(
+      r.warning(
         'LD-R03',
         `the vertical line at ${cellName(row, b)} ends in nothing; connect it to a line or an element`,
         {
@@ -96,21 +98,29 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
     const hasSource = net.leftRail || net.sources.length > 0;
     const hasSink = net.rightRail || net.sinks.length > 0;
     const nodeOf = (i: number) => g.nodes[i]!;
-    // LD-R03: element sides left open.
+    // LD-R03 (002, warning): element sides left open. Beremiz generates code from coils and blocks
+    // backwards: a contact whose right side leads nowhere is never read, a coil with nothing on its
+    // left gets no assignment, a block input with no connection is left out of the call.
     if (!hasSource) {
       for (const s of net.sinks) {
         const n = nodeOf(s.node);
         if (n.el.kind === 'box') {
           if (net.links.length || net.vlinks.length)
-            r.error(
+            r.warning(
               'LD-R03',
-              `input ${s.pin} of ${describeElement(n.el)} is wired to a line that starts nowhere; connect the line on its left`,
+              `input ${s.pin} of ${describeElement(n.el)} is wired to a line that starts nowhere (the input counts as unconnected); connect the line on its left`,
               n.el,
             );
-        } else
-          r.error(
+        } else if (n.el.kind === 'coil')
+          r.warning(
             'LD-R03',
-            `${describeElement(n.el)} has an open left side; connect it to the left rail or to an element on its left`,
+            `${describeElement(n.el)} has an open left side: it is never executed and its variable keeps its value; connect it to the left rail or to an element on its left`,
+            n.el,
+          );
+        else
+          r.warning(
+            'LD-R03',
+            `${describeElement(n.el)} has an open left side: it is never energised; connect it to the left rail or to an element on its left`,
             n.el,
           );
       }
@@ -119,9 +129,9 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
       for (const s of net.sources) {
         const n = nodeOf(s.node);
         if (n.el.kind === 'contact')
-          r.error(
+          r.warning(
             'LD-R03',
-            `${describeElement(n.el)} has an open right side; connect it to a coil, a block input or the right rail`,
+            `${describeElement(n.el)} has an open right side: its result goes nowhere; connect it to a coil, a block input or the right rail`,
             n.el,
           );
       }
