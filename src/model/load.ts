@@ -39,6 +39,7 @@ const variableSchema = z
     retain: z.boolean(),
     constant: z.boolean().optional(),
     comment: z.string(),
+    scope: z.enum(['configuration', 'resource']).optional(),
   })
   .strict();
 
@@ -152,6 +153,10 @@ function structuralErrors(project: Project): LoadError[] {
   };
   project.pous.forEach((pou, pi) => {
     const pp = `pous[${pi}]`;
+    pou.variables.forEach((v, vi) => {
+      if (v.scope !== undefined)
+        errors.push({ path: `${pp}.variables[${vi}].scope`, message: `only a global variable has a scope ("${v.name}" is declared in POU "${pou.name}")` });
+    });
     seenId(pou.id, `${pp}.id`);
     const key = pou.name.toUpperCase();
     if (pouNames.has(key)) errors.push({ path: `${pp}.name`, message: `duplicate POU name "${pou.name}"` });

@@ -19,7 +19,14 @@ export interface Variable {
   readonly retain: boolean;
   readonly constant?: boolean;
   readonly comment: string;
+  /**
+   * Globals only: where the PLCopen file declared it, `<resource><globalVars>` ('resource') or
+   * `<configuration><globalVars>` (absent or 'configuration'). Both are visible to every POU.
+   */
+  readonly scope?: GlobalScope;
 }
+
+export type GlobalScope = 'configuration' | 'resource';
 
 export interface Network {
   readonly id: NetworkId;

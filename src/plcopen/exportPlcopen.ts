@@ -29,7 +29,12 @@ function retainedByCoil(pou: Pou): Set<string> {
 /** Variables of the POU written by retentive coils; those not declared in it are globals (added to `globals`). */
 function splitRetainedByCoil(pou: Pou, globals: Set<string>): Set<string> {
   const byCoil = retainedByCoil(pou);
-  const local = new Set([...byCoil].filter((n) => pou.variables.some((v) => v.name.toUpperCase() === n)));
+  // A VAR_EXTERNAL names a global: its RETAIN goes on the global's declaration.
+  const local = new Set(
+    [...byCoil].filter((n) =>
+      pou.variables.some((v) => v.varClass !== 'external' && v.name.toUpperCase() === n),
+    ),
+  );
   for (const n of byCoil) if (!local.has(n)) globals.add(n);
   return local;
 }
@@ -73,6 +78,9 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
     if (!(`xmlns:${prefix}` in ns)) ns[`xmlns:${prefix}`] = uri;
   const globalsByCoil = new Set<string>();
   const localByCoil = project.pous.map((pou) => splitRetainedByCoil(pou, globalsByCoil));
+  // Globals go back where the file declared them: the resource's or the configuration's globalVars.
+  const resourceGlobals = project.globals.filter((v) => v.scope === 'resource');
+  const configurationGlobals = project.globals.filter((v) => v.scope !== 'resource');
   w.open('project', ns, () => {
     w.empty('fileHeader', {
       companyName: 'Rungsmith',
@@ -109,8 +117,9 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
                 },
               ),
             );
+            if (resourceGlobals.length) writeVarLists(w, resourceGlobals, globalsByCoil, true);
           });
-          if (project.globals.length) writeVarLists(w, project.globals, globalsByCoil, true);
+          if (configurationGlobals.length) writeVarLists(w, configurationGlobals, globalsByCoil, true);
         }),
       ),
     );

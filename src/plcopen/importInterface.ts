@@ -142,7 +142,7 @@ export function readInstances(instances: XmlElement | undefined, warn: Warn): In
       }
       for (const pi of childrenNamed(res, 'pouInstance'))
         warn(`program instance "${pi.attrs.name}" is not attached to a task; it is not run`, pi);
-      globals.push(...readVarLists(res, warn, ['globalVars']));
+      for (const v of readVarLists(res, warn, ['globalVars'])) globals.push({ ...v, scope: 'resource' });
     }
   }
   return { tasks, globals, ...(configuration ? { configuration } : {}), ...(resource ? { resource } : {}) };

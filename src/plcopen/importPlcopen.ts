@@ -159,6 +159,8 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
   // A file Rungsmith wrote holds the LD of SFC actions/transitions twice: inside the chart and as the
   // program imported from it. The program wins, so repeated round trips do not multiply programs.
   const fileNames = new Set(pouEls.map((p) => (p.attrs.name ?? '').toUpperCase()));
+  /** VAR_EXTERNAL declarations, checked against the configuration's and resources' globals below. */
+  const externals: { pou: string; name: string; type: string; el: XmlElement }[] = [];
   for (const pouEl of pouEls) {
     const name = pouEl.attrs.name ?? '';
     currentPou = name;
@@ -172,6 +174,14 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       });
     const iface = child(pouEl, 'interface');
     const variables: Variable[] = iface ? readVarLists(iface, warn) : [];
+    for (const list of iface ? childrenNamed(iface, 'externalVars') : [])
+      for (const v of childrenNamed(list, 'variable'))
+        externals.push({
+          pou: name,
+          name: v.attrs.name ?? '',
+          type: readType(child(v, 'type'), () => {}),
+          el: v,
+        });
     const returnType = kind === 'FUNCTION' ? readType(child(iface ?? pouEl, 'returnType'), warn) : undefined;
     const body = child(pouEl, 'body');
     const lang = body?.children.find((c) => LANGUAGES.includes(c.name));
@@ -278,6 +288,18 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     }
   }
   const inst = readInstances(child(root, 'instances'), warn);
+  // A VAR_EXTERNAL names a global of the configuration or a resource (IEC 61131-3 2.4.1.2).
+  const globalTypes = new Map(inst.globals.map((g) => [g.name.toUpperCase(), g]));
+  for (const x of externals) {
+    const g = globalTypes.get(x.name.toUpperCase());
+    const issue = (message: string) => warnings.push({ ...at(x.el), pou: x.pou, message });
+    if (!g)
+      issue(
+        `VAR_EXTERNAL "${x.name}" of POU "${x.pou}" names no global variable of the configuration or its resources`,
+      );
+    else if (g.type.toUpperCase() !== x.type.toUpperCase())
+      issue(`VAR_EXTERNAL "${x.name}" of POU "${x.pou}" is ${x.type} but the global variable is ${g.type}`);
+  }
   let tasks: Task[] = inst.tasks;
   const ldNames = new Set(pous.map((p) => p.name.toUpperCase()));
   const firstProgram = pous.find((p) => p.kind === 'PROGRAM');

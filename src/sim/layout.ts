@@ -85,7 +85,8 @@ export function programFingerprint(project: Project): string {
 /** Every name a user can watch in a POU, from the document alone: variables, then `Instance.PIN` of FB instances. */
 export function readableNames(project: Project, pou: Pou): SimVariable[] {
   const out: SimVariable[] = [];
-  for (const v of [...pou.variables, ...project.globals]) {
+  // A VAR_EXTERNAL names a global, listed once with the globals.
+  for (const v of [...pou.variables.filter((x) => x.varClass !== 'external'), ...project.globals]) {
     const signature = blockSignature(v.type);
     if (signature?.kind === 'fb') {
       for (const pin of [...signature.inputs, ...signature.outputs]) out.push({ name: `${v.name}.${pin.name}`, type: pin.type, role: 'pin' });

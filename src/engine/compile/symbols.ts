@@ -307,7 +307,10 @@ function sizeWords(loc: ParsedLocation): string {
   }[loc.size];
 }
 
-/** Builds the symbol table of a POU: its variables first, then the project's globals. */
+/**
+ * Builds the symbol table of a POU: its variables first, then the project's globals. A VAR_EXTERNAL
+ * declares no storage: it names a global (LD-E16 when there is none, or it has another type).
+ */
 export function buildSymbols(
   project: Project,
   pou: Pou,
@@ -315,7 +318,30 @@ export function buildSymbols(
   globalsReporter: Reporter,
 ): SymbolTable {
   const table = new SymbolTable();
-  for (const v of pou.variables) table.declare(v, false, r);
+  for (const v of pou.variables) if (v.varClass !== 'external') table.declare(v, false, r);
   for (const v of project.globals) table.declare(v, true, globalsReporter);
+  for (const v of pou.variables) if (v.varClass === 'external') checkExternal(table, project, pou, v, r);
   return table;
+}
+
+function checkExternal(table: SymbolTable, project: Project, pou: Pou, decl: Variable, r: Reporter): void {
+  const what = `the VAR_EXTERNAL "${decl.name}"`;
+  const key = decl.name.trim().toUpperCase();
+  if (pou.variables.some((v) => v.varClass !== 'external' && v.name.toUpperCase() === key)) {
+    r.error(
+      'LD-E10',
+      `${what} has the name of a variable of the POU; variable names must be unique (case does not count)`,
+    );
+    return;
+  }
+  const global = project.globals.find((g) => g.name.toUpperCase() === key);
+  if (!global) {
+    r.error('LD-E16', `${what} names no global variable; declare "${decl.name}" in the global variables`);
+    return;
+  }
+  const sym = table.lookup(key);
+  if (!sym) return; // the global's own declaration is in error (reported with the globals)
+  const type = decl.type.trim().toUpperCase();
+  if (type !== sym.type)
+    r.error('LD-E16', `${what} is declared ${type} but the global variable "${global.name}" is ${sym.type}`);
 }
