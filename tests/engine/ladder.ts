@@ -143,3 +143,18 @@ export function plcOf(p: Project, cycleMs = 10, profile?: Profile): Plc {
   if (!program) throw new Error(`program does not compile:\n${diagnostics.map(formatDiagnostic).join('\n')}`);
   return createPlc(program, { cycleMs });
 }
+
+/**
+ * Runs one scan per step, writing that step's values first, and records the named variables after
+ * each scan (BOOL as 0/1): a trace to compare with what the PLC should do.
+ */
+export function trace(plc: Plc, steps: readonly Record<string, boolean | number>[], names: readonly string[]): (number | bigint | string)[][] {
+  return steps.map((inputs) => {
+    for (const [k, v] of Object.entries(inputs)) plc.write(k, v);
+    plc.scan();
+    return names.map((n) => {
+      const v = plc.read(n);
+      return typeof v === 'boolean' ? Number(v) : (v as number | bigint | string);
+    });
+  });
+}

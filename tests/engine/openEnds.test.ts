@@ -5,10 +5,9 @@
 // an input with no connection is left out of the call. MATIEC gives a function input left out of
 // the call its type's initial value (stage4 generate_c: default_value, else type_initial_value).
 import { describe, expect, test } from 'vitest';
-import type { Plc } from '../../src/engine/api';
 import { checkProject } from '../../src/engine/check';
 import type { Network, Variable } from '../../src/model/project';
-import { ladder, plcOf, project, vars } from './ladder';
+import { ladder, plcOf, project, trace, vars } from './ladder';
 
 const VARS = vars(
   'A BOOL',
@@ -36,17 +35,6 @@ const brief = (networks: Network[]) =>
   checkProject(build(networks)).map((d) => `${d.severity} ${d.rule} ${d.network}`);
 const messages = (networks: Network[]) => checkProject(build(networks)).map((d) => d.message);
 
-/** Runs one scan per step with the given writes and records the named variables after each. */
-function trace(plc: Plc, steps: readonly Record<string, boolean | number>[], names: readonly string[]) {
-  return steps.map((inputs) => {
-    for (const [k, v] of Object.entries(inputs)) plc.write(k, v);
-    plc.scan();
-    return names.map((n) => {
-      const v = plc.read(n);
-      return typeof v === 'boolean' ? Number(v) : v;
-    });
-  });
-}
 
 describe('1. open ends (LD-R03) are warnings and the network runs', () => {
   test('a contact whose right side leads nowhere: a warning naming it; the rest of the network runs', () => {

@@ -2,10 +2,9 @@
 // (LD-SEMANTICS.md sections 4 and 9): vendor editor rules are warnings naming the rule, network and
 // element, and the program runs with MATIEC's semantics. Issue 12, sections 2 and 6.
 import { describe, expect, test } from 'vitest';
-import type { Plc } from '../../src/engine/api';
 import { checkProject } from '../../src/engine/check';
 import type { Network, Variable } from '../../src/model/project';
-import { ladder, plcOf, project, vars } from './ladder';
+import { ladder, plcOf, project, trace, vars } from './ladder';
 
 const VARS = vars(
   'A BOOL',
@@ -32,17 +31,6 @@ const diags = (networks: Network[]) =>
     elementId: d.elementId,
   }));
 
-/** Runs one scan per step with the given inputs and records the named variables after each. */
-function trace(plc: Plc, steps: readonly Record<string, boolean>[], names: readonly string[]) {
-  return steps.map((inputs) => {
-    for (const [k, v] of Object.entries(inputs)) plc.write(k, v);
-    plc.scan();
-    return names.map((n) => {
-      const v = plc.read(n);
-      return typeof v === 'boolean' ? Number(v) : v;
-    });
-  });
-}
 
 describe('1. an FB input left unconnected keeps the instance value (IEC; Beremiz passes only connected inputs)', () => {
   test('CTUD with only CU and PV connected counts up; no diagnostic for CD, R, LD', () => {

@@ -2,8 +2,8 @@
 // VAR_EXTERNAL declarations naming them, and MATIEC's typed counters. Each fixture imports without
 // false diagnostics, keeps every element, runs as MATIEC would and survives export → import.
 import { describe, expect, it } from 'vitest';
-import type { Plc } from '../../src/engine/api';
 import { checkProject } from '../../src/engine/check';
+import { trace } from '../engine/ladder';
 import { validateProject } from '../../src/model/load';
 import type { Project } from '../../src/model/project';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
@@ -11,16 +11,6 @@ import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { connections, trace as randomTrace } from './behaviour';
 import { canonical, imported, run } from './fixtures';
 
-function trace(plc: Plc, steps: readonly Record<string, boolean>[], names: readonly string[]) {
-  return steps.map((inputs) => {
-    for (const [k, v] of Object.entries(inputs)) plc.write(k, v);
-    plc.scan();
-    return names.map((n) => {
-      const v = plc.read(n);
-      return typeof v === 'boolean' ? Number(v) : v;
-    });
-  });
-}
 
 function roundTrip(project: Project): Project {
   const again = importPlcopen(exportPlcopen(project, { now: new Date('2026-01-01T00:00:00Z') }));

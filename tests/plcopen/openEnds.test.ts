@@ -3,20 +3,10 @@
 // leads nowhere is unused, a coil with nothing on its left is not assigned) and as MATIEC runs them
 // (a function input left out of the call takes its type's initial value).
 import { describe, expect, it } from 'vitest';
-import type { Plc } from '../../src/engine/api';
 import { checkProject } from '../../src/engine/check';
+import { trace } from '../engine/ladder';
 import { imported, run } from './fixtures';
 
-function trace(plc: Plc, steps: readonly Record<string, boolean | number>[], names: readonly string[]) {
-  return steps.map((inputs) => {
-    for (const [k, v] of Object.entries(inputs)) plc.write(k, v);
-    plc.scan();
-    return names.map((n) => {
-      const v = plc.read(n);
-      return typeof v === 'boolean' ? Number(v) : v;
-    });
-  });
-}
 
 describe('PLCopen import: open ends and unconnected function inputs', () => {
   const { project } = imported('open-ends-run.xml');

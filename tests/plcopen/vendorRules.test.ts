@@ -2,20 +2,10 @@
 // a coil, one line into EN and IN1, one FB instance called from two networks, a coil on the left
 // rail. Each imports without errors, is checked with warnings only, and runs as MATIEC would.
 import { describe, expect, it } from 'vitest';
-import type { Plc } from '../../src/engine/api';
 import { checkProject } from '../../src/engine/check';
+import { trace } from '../engine/ladder';
 import { imported, run } from './fixtures';
 
-function trace(plc: Plc, steps: readonly Record<string, boolean>[], names: readonly string[]) {
-  return steps.map((inputs) => {
-    for (const [k, v] of Object.entries(inputs)) plc.write(k, v);
-    plc.scan();
-    return names.map((n) => {
-      const v = plc.read(n);
-      return typeof v === 'boolean' ? Number(v) : v;
-    });
-  });
-}
 
 describe('PLCopen import: programs that only vendor editors refuse', () => {
   const { project, report } = imported('vendor-rules-run.xml');
