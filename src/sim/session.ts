@@ -66,6 +66,8 @@ export class SimSession {
   private outputsSubscribed = false;
   private lastOutputs: Record<string, Value> | undefined;
   private gatewayInputs: Record<string, Value> = {};
+  /** Locations of the installed program's input variables: the gateway inputs it binds. */
+  private inputKeys: ReadonlySet<string> = new Set();
   /** programId of the installed program (what runs), null when none. */
   private programId: string | null = null;
   /** The last command epoch handled, echoed in frames. */
@@ -177,7 +179,7 @@ export class SimSession {
         return;
       case 'setInputs':
         this.gatewayInputs = { ...this.gatewayInputs, ...m.values };
-        if (this.plc) this.bindInputs(this.plc, this.layout, m.values);
+        if (this.plc) this.bindInputs(this.plc, this.inputKeys, m.values);
         return;
       case 'unload':
         this.dropProgram();
@@ -232,6 +234,7 @@ export class SimSession {
     this.fingerprint = '';
     this.programId = null;
     this.gatewayInputs = {};
+    this.inputKeys = new Set();
     this.lastOutputs = undefined;
     this.runner.clock.set(0);
     this.configureTrend();
@@ -243,8 +246,7 @@ export class SimSession {
    * Gateway inputs the program reads: only addresses of its declared input variables are bound;
    * the gateway's other points are not this program's I/O and are left out (never an error).
    */
-  private bindInputs(plc: Plc, layout: SimLayout | undefined, values: Readonly<Record<string, Value>>): void {
-    const declared = new Set((layout?.variables ?? []).flatMap((v) => (v.role === 'input' && v.location ? [locationKey(v.location)] : [])));
+  private bindInputs(plc: Plc, declared: ReadonlySet<string>, values: Readonly<Record<string, Value>>): void {
     const bound: Record<string, Value> = {};
     for (const [address, value] of Object.entries(values)) if (declared.has(locationKey(address))) bound[address] = value;
     if (Object.keys(bound).length > 0) plc.setInputs(bound);
@@ -312,7 +314,8 @@ export class SimSession {
 
   private install(next: LoadedProgram, online: boolean, diagnostics: readonly Diagnostic[]): void {
     if (this.plc) carryForces(this.plc, next.plc);
-    this.bindInputs(next.plc, next.layout, this.gatewayInputs);
+    this.inputKeys = inputKeysOf(next.layout);
+    this.bindInputs(next.plc, this.inputKeys, this.gatewayInputs);
     this.plc = next.plc;
     this.layout = next.layout;
     this.fingerprint = next.fingerprint;
@@ -422,6 +425,11 @@ export class SimSession {
       epoch: this.epoch,
     };
   }
+}
+
+/** The locations of a program's input variables, by locationKey. */
+function inputKeysOf(layout: SimLayout): Set<string> {
+  return new Set(layout.variables.flatMap((v) => (v.role === 'input' && v.location ? [locationKey(v.location)] : [])));
 }
 
 /** `%ix0.0` and `%IX0.0` alike: the key a location is bound by. */
