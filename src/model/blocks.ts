@@ -17,7 +17,7 @@ export interface BlockSignature {
   readonly outputs: readonly PinSignature[];
   /** Extensible inputs: the last input pin repeats as PREFIX<start>..PREFIX<start+n-1>. */
   readonly extensible?: { readonly prefix: string; readonly start: number; readonly min: number; readonly max: number };
-  readonly category: 'timer' | 'counter' | 'edge' | 'bistable' | 'move' | 'arithmetic' | 'comparison' | 'bitwise' | 'selection' | 'conversion';
+  readonly category: 'timer' | 'counter' | 'edge' | 'bistable' | 'move' | 'arithmetic' | 'comparison' | 'bitwise' | 'selection' | 'conversion' | 'user';
   readonly description: string;
 }
 

@@ -1,6 +1,8 @@
 // Where a box's pins sit on the grid. Functions show EN/ENO on their first row; function blocks
-// take power flow through their first BOOL input and give it on their first BOOL output.
-import { blockSignature, type BlockSignature, type PinSignature } from './blocks';
+// take power flow through their first BOOL input and give it on their first BOOL output, or
+// through EN/ENO when the box has execution control. User blocks come from a BlockLibrary.
+import type { BlockSignature, PinSignature } from './blocks';
+import { STANDARD_LIBRARY, type BlockLibrary } from './library';
 import type { BoxElement } from './elements';
 
 export const BOX_COLS = 2;
@@ -31,31 +33,52 @@ export function expandInputs(sig: BlockSignature, count?: number): PinSignature[
   return [...fixed, ...repeated];
 }
 
-const cache = new Map<string, BoxLayout>();
+/** Layouts per signature object (a user block's signature is a new object when its interface changes). */
+const cache = new WeakMap<BlockSignature, Map<string, BoxLayout>>();
 
-/** Layout for a block type; undefined for an unknown block. */
-export function boxLayoutFor(blockType: string, inputCount?: number): BoxLayout | undefined {
-  const key = `${blockType.toUpperCase()}/${inputCount ?? ''}`;
-  const hit = cache.get(key);
+/** Layout of a signature with `inputCount` extensible inputs; EN/ENO on row 0 for functions and FBs with `executionControl`. */
+export function layoutOfSignature(signature: BlockSignature, inputCount?: number, executionControl = false): BoxLayout {
+  const enEno = signature.kind === 'function' || executionControl;
+  const key = `${inputCount ?? ''}/${enEno ? 'en' : ''}`;
+  let byKey = cache.get(signature);
+  if (!byKey) {
+    byKey = new Map();
+    cache.set(signature, byKey);
+  }
+  const hit = byKey.get(key);
   if (hit) return hit;
-  const signature = blockSignature(blockType);
-  if (!signature) return undefined;
   const ins = expandInputs(signature, inputCount);
   const outs = [...signature.outputs];
   const inputs: PlacedPin[] = [];
   const outputs: PlacedPin[] = [];
-  if (signature.kind === 'function') {
+  if (enEno) {
     inputs.push({ name: 'EN', type: 'BOOL', rowOffset: 0 });
     outputs.push({ name: 'ENO', type: 'BOOL', rowOffset: 0 });
   }
-  const base = signature.kind === 'function' ? 1 : 0;
+  const base = enEno ? 1 : 0;
   ins.forEach((pin, i) => inputs.push({ ...pin, rowOffset: base + i }));
   outs.forEach((pin, i) => outputs.push({ ...pin, rowOffset: base + i }));
   const rows = Math.max(inputs.length, outputs.length);
   const layout: BoxLayout = { signature, rows, cols: BOX_COLS, inputs, outputs };
-  cache.set(key, layout);
+  byKey.set(key, layout);
   return layout;
 }
 
-export const boxLayout = (box: Pick<BoxElement, 'blockType' | 'inputCount'>): BoxLayout | undefined =>
-  boxLayoutFor(box.blockType, box.inputCount);
+/**
+ * Layout for a block type; undefined for an unknown block. Without a library only standard
+ * blocks are known; pass `blockLibrary(project)` for the project's own FBs and functions.
+ */
+export function boxLayoutFor(
+  blockType: string,
+  inputCount?: number,
+  library: BlockLibrary = STANDARD_LIBRARY,
+  executionControl = false,
+): BoxLayout | undefined {
+  const signature = library.signature(blockType);
+  return signature ? layoutOfSignature(signature, inputCount, executionControl) : undefined;
+}
+
+export const boxLayout = (
+  box: Pick<BoxElement, 'blockType' | 'inputCount' | 'executionControl'>,
+  library: BlockLibrary = STANDARD_LIBRARY,
+): BoxLayout | undefined => boxLayoutFor(box.blockType, box.inputCount, library, box.executionControl === true);

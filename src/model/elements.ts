@@ -51,10 +51,15 @@ export interface ReturnElement extends Placed {
  */
 export interface BoxElement extends Placed {
   readonly kind: 'box';
-  /** Standard block name (TON, CTU, ADD, INT_TO_REAL, ...). */
+  /** Block name: standard (TON, CTU, ADD, INT_TO_REAL, ...) or a FUNCTION_BLOCK/FUNCTION POU of the project. */
   readonly blockType: string;
   /** FB instance name (declared in the variable table with type = blockType); absent for functions. */
   readonly instance?: string;
+  /**
+   * A function block box with EN/ENO pins (PLCopen `executionControl`): with EN FALSE the FB is
+   * not executed and keeps its outputs. Functions always have EN/ENO.
+   */
+  readonly executionControl?: boolean;
   /** Number of extensible inputs (ADD, AND, MUX, ...); defaults to the signature's minimum. */
   readonly inputCount?: number;
   readonly inputs: Readonly<Record<string, string>>;

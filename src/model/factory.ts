@@ -1,6 +1,7 @@
 // Small pure helpers to build and query projects.
 import { boxLayout } from './boxLayout';
 import type { LdElement } from './elements';
+import type { BlockLibrary } from './library';
 import { newId, type NetworkId, type PouId } from './ids';
 import { PROJECT_FORMAT, PROJECT_VERSION, type Network, type Pou, type Project, type Variable } from './project';
 
@@ -58,15 +59,15 @@ export const variable = (name: string, type: string, extra: Partial<Variable> = 
 });
 
 /** Rows and columns an element covers: 1x1, or the box's layout size (1x1 for an unknown block). */
-export function elementSize(el: LdElement): { rows: number; cols: number } {
+export function elementSize(el: LdElement, library?: BlockLibrary): { rows: number; cols: number } {
   if (el.kind !== 'box') return { rows: 1, cols: 1 };
-  const layout = boxLayout(el);
+  const layout = boxLayout(el, library);
   return layout ? { rows: layout.rows, cols: layout.cols } : { rows: 1, cols: 1 };
 }
 
 /** Every cell an element covers. */
-export function elementCells(el: LdElement): { row: number; col: number }[] {
-  const { rows, cols } = elementSize(el);
+export function elementCells(el: LdElement, library?: BlockLibrary): { row: number; col: number }[] {
+  const { rows, cols } = elementSize(el, library);
   const out: { row: number; col: number }[] = [];
   for (let r = 0; r < rows; r++) for (let c = 0; c < cols; c++) out.push({ row: el.row + r, col: el.col + c });
   return out;
