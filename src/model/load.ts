@@ -2,7 +2,7 @@
 import { z } from 'zod';
 import { COIL_TYPES, CONTACT_TYPES } from './elements';
 import { elementCells } from './factory';
-import { PROJECT_FORMAT, PROJECT_VERSION, type Project } from './project';
+import { POU_LANGUAGES, PROJECT_FORMAT, PROJECT_VERSION, type Project } from './project';
 
 const id = z.string().min(1);
 const int = z.number().int();
@@ -65,7 +65,8 @@ const pouSchema = z
     name: z.string().min(1),
     kind: z.enum(['PROGRAM', 'FUNCTION_BLOCK', 'FUNCTION']),
     returnType: z.string().optional(),
-    language: z.literal('LD'),
+    language: z.enum(POU_LANGUAGES),
+    source: z.string().optional(),
     comment: z.string(),
     variables: z.array(variableSchema),
     networks: z.array(networkSchema),

@@ -45,13 +45,23 @@ export interface Network {
 
 export type PouKind = 'PROGRAM' | 'FUNCTION_BLOCK' | 'FUNCTION';
 
+/**
+ * The language of a POU's body. Rungsmith edits and runs LD; a POU in another language (from a
+ * PLCopen file) keeps its interface, so LD networks can call it, and its body as written
+ * (`source`), so export gives it back unchanged.
+ */
+export const POU_LANGUAGES = ['LD', 'ST', 'IL', 'FBD', 'SFC'] as const;
+export type PouLanguage = (typeof POU_LANGUAGES)[number];
+
 export interface Pou {
   readonly id: PouId;
   readonly name: string;
   readonly kind: PouKind;
   /** FUNCTION only. */
   readonly returnType?: string;
-  readonly language: 'LD';
+  readonly language: PouLanguage;
+  /** Body of a non-LD POU as written: ST or IL text, or the PLCopen XML of an FBD or SFC body. */
+  readonly source?: string;
   readonly comment: string;
   readonly variables: readonly Variable[];
   readonly networks: readonly Network[];
