@@ -3,11 +3,13 @@
 // reverse order. Every change names its POU and, where relevant, its network by id.
 import type { LdElement, VLink } from '../model/elements';
 import type { NetworkId, PouId } from '../model/ids';
-import type { Network, Pou, Project, Variable } from '../model/project';
+import type { Network, Pou, Project, Task, Variable } from '../model/project';
 
 /** Network fields that are not its elements or vertical links. */
 export type NetworkProps = Omit<Network, 'id' | 'elements' | 'vlinks'>;
 export type ProjectProps = Pick<Project, 'name' | 'description' | 'profile'>;
+/** POU fields a command may change in place (an `undefined` value removes an optional field). */
+export type PouProps = Pick<Pou, 'name' | 'comment' | 'kind' | 'returnType'>;
 /** 'globals' addresses the project's global variables instead of a POU's. */
 export type VariableScope = PouId | 'globals';
 
@@ -89,9 +91,12 @@ export type Change =
   | {
       readonly type: 'pou.update';
       readonly pou: PouId;
-      readonly before: Partial<Pick<Pou, 'name' | 'comment'>>;
-      readonly after: Partial<Pick<Pou, 'name' | 'comment'>>;
-    };
+      readonly before: Partial<PouProps>;
+      readonly after: Partial<PouProps>;
+    }
+  | { readonly type: 'pou.add'; readonly index: number; readonly pou: Pou }
+  | { readonly type: 'pou.remove'; readonly index: number; readonly pou: Pou }
+  | { readonly type: 'tasks.update'; readonly before: readonly Task[]; readonly after: readonly Task[] };
 
 export function invertChange(c: Change): Change {
   switch (c.type) {
@@ -122,6 +127,12 @@ export function invertChange(c: Change): Change {
     case 'project.update':
       return { ...c, before: c.after, after: c.before };
     case 'pou.update':
+      return { ...c, before: c.after, after: c.before };
+    case 'pou.add':
+      return { ...c, type: 'pou.remove' };
+    case 'pou.remove':
+      return { ...c, type: 'pou.add' };
+    case 'tasks.update':
       return { ...c, before: c.after, after: c.before };
   }
 }
@@ -216,19 +227,26 @@ export function applyChange(project: Project, c: Change): Project {
     case 'project.update':
       return { ...project, ...c.after };
     case 'pou.update':
-      return updatePou(project, c.pou, (p) => ({ ...p, ...c.after }));
+      return updatePou(project, c.pou, (p) => withFields(p, c.after));
+    case 'pou.add':
+      return { ...project, pous: insertAt(project.pous, c.index, c.pou) };
+    case 'pou.remove':
+      return { ...project, pous: project.pous.filter((p) => p.id !== c.pou.id) };
+    case 'tasks.update':
+      return { ...project, tasks: c.after };
   }
 }
 
-/** Sets props; an `undefined` value removes the optional field (label, collapsed, extensions). */
-function withProps(n: Network, props: Partial<NetworkProps>): Network {
-  const out: Record<string, unknown> = { ...n };
+/** Sets fields; an `undefined` value removes the optional field (label, collapsed, returnType...). */
+function withFields<T extends object>(target: T, props: object): T {
+  const out: Record<string, unknown> = { ...(target as Record<string, unknown>) };
   for (const [k, v] of Object.entries(props)) {
     if (v === undefined) delete out[k];
     else out[k] = v;
   }
-  return out as unknown as Network;
+  return out as T;
 }
+const withProps = (n: Network, props: Partial<NetworkProps>): Network => withFields(n, props);
 
 export const applyChanges = (project: Project, changes: readonly Change[]): Project =>
   changes.reduce(applyChange, project);

@@ -2,12 +2,14 @@
 // over the store's commit/editNetwork primitives (see the list at the top of documentStore.ts).
 import type { LdElement } from '../model/elements';
 import { elementSize, newNetwork } from '../model/factory';
+import { blockLibrary } from '../model/library';
 import { newId, type ElementId, type NetworkId, type PouId } from '../model/ids';
 import type { Network, Pou, Project, Variable } from '../model/project';
 import { diffNetwork, type Change, type VariableScope } from './changes';
 import type { DocumentState, NetworkPatch } from './documentStore';
 import * as edits from './networkEdits';
 import { transferElements } from './networkTransfer';
+import { followInterface } from './pouEdits';
 import { declaresLocally, renameInElement } from './variableEdits';
 
 export const newElementId = () => newId<'ElementId'>('e') as ElementId;
@@ -59,6 +61,13 @@ type Commands = Omit<
   | 'newProject'
   | 'markSaved'
   | 'setActivePou'
+  | 'openPouIds'
+  | 'closePou'
+  | 'addPou'
+  | 'renamePou'
+  | 'duplicatePou'
+  | 'deletePou'
+  | 'updatePou'
   | 'undo'
   | 'redo'
   | 'mark'
@@ -67,6 +76,8 @@ type Commands = Omit<
 >;
 
 export function documentCommands({ get, commit, editNetwork }: CommandOps): Commands {
+  /** The project's blocks (standard and its own FBs/functions): box sizes and pins come from it. */
+  const lib = () => blockLibrary(get().project);
   const scopeVars = (
     scope: VariableScope | undefined,
   ): { scope: VariableScope; vars: readonly Variable[] } => {
@@ -92,26 +103,26 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
       const ok = editNetwork(
         'placeElement',
         network,
-        (n) => edits.placeElement(n, cell, t, id) ?? edits.insertInSeries(n, cell, t, id),
+        (n) => edits.placeElement(n, cell, t, id, lib()) ?? edits.insertInSeries(n, cell, t, id, lib()),
       );
       return ok ? id : undefined;
     },
     insertInSeries: (network, cell, t) => {
       const id = newElementId();
-      return editNetwork('insertInSeries', network, (n) => edits.insertInSeries(n, cell, t, id))
+      return editNetwork('insertInSeries', network, (n) => edits.insertInSeries(n, cell, t, id, lib()))
         ? id
         : undefined;
     },
     wrapInParallelBranch: (network, ids) =>
-      editNetwork('wrapInParallelBranch', network, (n) => edits.wrapInParallelBranch(n, ids, newElementId)),
+      editNetwork('wrapInParallelBranch', network, (n) => edits.wrapInParallelBranch(n, ids, newElementId, lib())),
     moveElements: (network, ids, dRow, dCol) =>
-      editNetwork('moveElements', network, (n) => edits.moveElements(n, ids, dRow, dCol)),
+      editNetwork('moveElements', network, (n) => edits.moveElements(n, ids, dRow, dCol, lib())),
     moveElementsToNetwork: (from, ids, to, at) => {
       const project = get().project;
       const src = locate(project, from);
       const dst = locate(project, to);
       if (!src || !dst) return false;
-      const t = transferElements(src.net, dst.net, ids, at);
+      const t = transferElements(src.net, dst.net, ids, at, lib());
       if (!t) return false;
       commit('moveElementsToNetwork', [
         ...diffNetwork(src.pou.id, src.net, t.source),
@@ -140,7 +151,7 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
     pasteElements: (network, clip, at) => {
       let ids: ElementId[] = [];
       editNetwork('pasteElements', network, (n) => {
-        const r = edits.pasteElements(n, clip, at, newElementId);
+        const r = edits.pasteElements(n, clip, at, newElementId, lib());
         ids = r.ids;
         return r.network;
       });
@@ -148,20 +159,23 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
     },
     duplicateElements: (network, ids) => {
       const found = locate(get().project, network);
-      const clip = found && edits.copyElements(found.net, ids);
+      const clip = found && edits.copyElements(found.net, ids, lib());
       if (!found || !clip) return [];
-      const b = edits.boundsOf(found.net.elements.filter((e) => ids.includes(e.id)))!;
+      const b = edits.boundsOf(
+        found.net.elements.filter((e) => ids.includes(e.id)),
+        lib(),
+      )!;
       let out: ElementId[] = [];
       editNetwork('duplicateElements', network, (n) => {
-        const below = Math.max(...n.elements.map((e) => e.row + elementSize(e).rows));
-        const r = edits.pasteElements(n, clip, { row: below, col: b.left }, newElementId);
+        const below = Math.max(...n.elements.map((e) => e.row + elementSize(e, lib()).rows));
+        const r = edits.pasteElements(n, clip, { row: below, col: b.left }, newElementId, lib());
         out = r.ids;
         return r.network;
       });
       return out;
     },
     addVLink: (network, v) => {
-      editNetwork('addVLink', network, (n) => edits.addVLink(n, v));
+      editNetwork('addVLink', network, (n) => edits.addVLink(n, v, lib()));
     },
     removeVLink: (network, v) => {
       editNetwork('removeVLink', network, (n) => edits.removeVLink(n, v));
@@ -170,14 +184,14 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
       editNetwork('toggleVLink', network, (n) =>
         n.vlinks.some((w) => w.row === v.row && w.boundary === v.boundary)
           ? edits.removeVLink(n, v)
-          : edits.addVLink(n, v),
+          : edits.addVLink(n, v, lib()),
       );
     },
 
     insertRow: (network, at) => {
-      editNetwork('insertRow', network, (n) => edits.insertRow(n, at));
+      editNetwork('insertRow', network, (n) => edits.insertRow(n, at, lib()));
     },
-    deleteRow: (network, at) => editNetwork('deleteRow', network, (n) => edits.deleteRow(n, at)),
+    deleteRow: (network, at) => editNetwork('deleteRow', network, (n) => edits.deleteRow(n, at, lib())),
     addNetwork: (partial) => {
       const s = get();
       const pou = s.project.pous.find((p) => p.id === s.activePouId);
@@ -213,7 +227,8 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
     addVariable: (v, scope) => {
       const { scope: sc, vars } = scopeVars(scope);
       if (vars.some((w) => w.name.toUpperCase() === v.name.toUpperCase())) return false;
-      commit('addVariable', [{ type: 'variable.add', scope: sc, index: vars.length, variable: v }]);
+      const changes: Change[] = [{ type: 'variable.add', scope: sc, index: vars.length, variable: v }];
+      commit('addVariable', [...changes, ...followInterface(get().project, sc, changes)]);
       return true;
     },
     updateVariable: (name, patch, scope) => {
@@ -235,14 +250,19 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
           }
         }
       }
-      commit('updateVariable', changes);
+      commit('updateVariable', [
+        ...changes,
+        ...followInterface(get().project, sc, changes, { from: before, to: after }),
+      ]);
       return true;
     },
     deleteVariable: (name, scope) => {
       const { scope: sc, vars } = scopeVars(scope);
       const index = vars.findIndex((v) => v.name.toUpperCase() === name.toUpperCase());
       const variable = vars[index];
-      if (variable) commit('deleteVariable', [{ type: 'variable.remove', scope: sc, index, variable }]);
+      if (!variable) return;
+      const changes: Change[] = [{ type: 'variable.remove', scope: sc, index, variable }];
+      commit('deleteVariable', [...changes, ...followInterface(get().project, sc, changes)]);
     },
     setProjectProfile: (profile) => {
       const before = get().project.profile;

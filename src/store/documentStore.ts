@@ -18,7 +18,21 @@
 //   loadProject(p)                    replace the document, clear history, dirty = false
 //   newProject(name?)                 a fresh project with one PROGRAM "Main" and one network
 //   markSaved()                       dirty = false
-//   setActivePou(id)
+//   setActivePou(id)                  shows the POU on the canvas and opens its tab
+//   closePou(id)                      closes its tab (the last open tab stays)
+//   openPouIds                        the POUs open as tabs above the canvas (not part of history)
+//   addPou(kind, name?)               a new PROGRAM / FUNCTION_BLOCK / FUNCTION with one network,
+//                                     opened; a new PROGRAM gets an instance in the first task
+//   renamePou(id, name)               references follow: calls' blockType, instance variable types
+//                                     (POUs and globals), task program entries; false if the name
+//                                     is taken or not an identifier (pouNameProblem)
+//   duplicatePou(id)                  a copy "<name>_copy" with new ids, opened
+//   deletePou(id)                     also drops its task entries; calls stay (checks report them);
+//                                     never the last POU (see pouUsages() for what uses it)
+//   updatePou(id, {comment, kind, returnType})   a FUNCTION always has a return type
+//   Editing the variables of a FUNCTION_BLOCK/FUNCTION updates its calls: a renamed interface
+//   variable renames the pin's operands on every box and `Instance.Pin` operands; a box that grows
+//   (new pin) gets room (rows inserted below it when something is in the way).
 //   placeElement(net, cell, t)        put element template `t` at `cell`; links there are replaced;
 //                                     on another element it inserts in series. Returns the new id.
 //   insertInSeries(net, cell, t)      always inserts in series (see src/store/networkEdits.ts)
@@ -50,6 +64,7 @@ import { createElement, createContext, useContext, type ReactNode } from 'react'
 import { createStore, useStore, type StoreApi } from 'zustand';
 import type { LdElement, VLink } from '../model/elements';
 import { newProject as makeProject } from '../model/factory';
+import { blockLibrary } from '../model/library';
 import type { Cell } from '../model/grid';
 import type { ElementId, NetworkId, PouId } from '../model/ids';
 import type { Network, Pou, Profile, Project, Variable } from '../model/project';
@@ -62,6 +77,7 @@ import {
   type VariableScope,
 } from './changes';
 import { documentCommands, locate } from './documentCommands';
+import { pouCommands, type PouCommands } from './pouCommands';
 import { EMPTY_HISTORY, record, squash as squashHistory, type History } from './history';
 import type { ClipContent, ElementTemplate } from './networkEdits';
 
@@ -75,6 +91,7 @@ export type NetworkPatch = Partial<
 export interface DocumentState {
   readonly project: Project;
   readonly activePouId: PouId;
+  readonly openPouIds: readonly PouId[];
   readonly dirty: boolean;
   readonly revision: number;
   readonly history: History;
@@ -87,6 +104,12 @@ export interface DocumentState {
   newProject(name?: string): void;
   markSaved(): void;
   setActivePou(id: PouId): void;
+  closePou(id: PouId): void;
+  addPou: PouCommands['addPou'];
+  renamePou: PouCommands['renamePou'];
+  duplicatePou: PouCommands['duplicatePou'];
+  deletePou: PouCommands['deletePou'];
+  updatePou: PouCommands['updatePou'];
 
   placeElement(network: NetworkId, cell: Cell, t: ElementTemplate): ElementId | undefined;
   insertInSeries(network: NetworkId, cell: Cell, t: ElementTemplate): ElementId | undefined;
@@ -143,15 +166,21 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
       const project = applyChanges(s.project, changes);
       if (pending) {
         pending.changes.push(...changes);
-        set({ project, dirty: true, revision: s.revision + 1 });
+        set({ project, dirty: true, revision: s.revision + 1, ...viewOf(s, project) });
         return;
       }
       set({
         project,
         dirty: true,
         revision: s.revision + 1,
+        ...viewOf(s, project),
         ...historyFlags(record(s.history, { name, changes })),
       });
+    };
+    const open = (id: PouId) => {
+      const s = get();
+      if (!s.project.pous.some((p) => p.id === id)) return;
+      set({ activePouId: id, openPouIds: s.openPouIds.includes(id) ? s.openPouIds : [...s.openPouIds, id] });
     };
 
     const editNetwork = (
@@ -170,6 +199,7 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
     const reset = (project: Project) => ({
       project,
       activePouId: project.pous[0]?.id ?? ('' as PouId),
+      openPouIds: project.pous[0] ? [project.pous[0].id] : [],
       dirty: false,
       revision: get().revision + 1,
       ...historyFlags(EMPTY_HISTORY),
@@ -178,6 +208,7 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
     return {
       project: initial,
       activePouId: initial.pous[0]?.id ?? ('' as PouId),
+      openPouIds: initial.pous[0] ? [initial.pous[0].id] : [],
       dirty: false,
       revision: 0,
       ...historyFlags(EMPTY_HISTORY),
@@ -185,19 +216,28 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
       loadProject: (p) => set(reset(p)),
       newProject: (name) => set(reset(makeProject(name))),
       markSaved: () => set({ dirty: false }),
-      setActivePou: (id) => {
-        if (get().project.pous.some((p) => p.id === id)) set({ activePouId: id });
+      setActivePou: open,
+      closePou: (id) => {
+        const s = get();
+        const i = s.openPouIds.indexOf(id);
+        if (i < 0 || s.openPouIds.length <= 1) return;
+        const openPouIds = s.openPouIds.filter((x) => x !== id);
+        const activePouId = s.activePouId === id ? openPouIds[Math.max(0, i - 1)]! : s.activePouId;
+        set({ openPouIds, activePouId });
       },
 
       ...documentCommands({ get, commit, editNetwork }),
+      ...pouCommands({ project: () => get().project, commit, open }),
 
       undo: () => {
         const s = get();
         const entry = s.history.undo[s.history.undo.length - 1];
         if (!entry) return;
         const history = { undo: s.history.undo.slice(0, -1), redo: [...s.history.redo, entry] };
+        const project = applyChanges(s.project, invertChanges(entry.changes));
         set({
-          project: applyChanges(s.project, invertChanges(entry.changes)),
+          project,
+          ...viewOf(s, project),
           dirty: true,
           revision: s.revision + 1,
           ...historyFlags(history),
@@ -208,8 +248,10 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
         const entry = s.history.redo[s.history.redo.length - 1];
         if (!entry) return;
         const history = { undo: [...s.history.undo, entry], redo: s.history.redo.slice(0, -1) };
+        const project = applyChanges(s.project, entry.changes);
         set({
-          project: applyChanges(s.project, entry.changes),
+          project,
+          ...viewOf(s, project),
           dirty: true,
           revision: s.revision + 1,
           ...historyFlags(history),
@@ -233,6 +275,19 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
   });
 }
 
+/** Open tabs and the shown POU kept to POUs that exist (after a delete, or undoing an add). */
+function viewOf(s: DocumentState, project: Project): Pick<DocumentState, 'activePouId' | 'openPouIds'> {
+  const exists = (id: PouId) => project.pous.some((p) => p.id === id);
+  if (exists(s.activePouId) && s.openPouIds.every(exists))
+    return { activePouId: s.activePouId, openPouIds: s.openPouIds };
+  const openPouIds = s.openPouIds.filter(exists);
+  const activePouId = exists(s.activePouId)
+    ? s.activePouId
+    : (openPouIds[openPouIds.length - 1] ?? project.pous[0]?.id ?? ('' as PouId));
+  if (activePouId && !openPouIds.includes(activePouId)) openPouIds.push(activePouId);
+  return { activePouId, openPouIds };
+}
+
 // ---- narrow selectors (module-level so components re-render only when their slice changes) ----
 export const selectProject = (s: DocumentState) => s.project;
 export const selectActivePou = (s: DocumentState): Pou | undefined =>
@@ -244,6 +299,10 @@ export const selectNetworks = (s: DocumentState): readonly Network[] =>
 export const selectVariables = (s: DocumentState): readonly Variable[] =>
   selectActivePou(s)?.variables ?? NO_VARIABLES;
 export const selectGlobals = (s: DocumentState) => s.project.globals;
+export const selectOpenPouIds = (s: DocumentState) => s.openPouIds;
+export const selectActivePouId = (s: DocumentState) => s.activePouId;
+/** The project's block library (standard blocks and its own FBs and functions), memoised on its POUs. */
+export const selectLibrary = (s: DocumentState) => blockLibrary(s.project);
 export const selectDirty = (s: DocumentState) => s.dirty;
 export const selectRevision = (s: DocumentState) => s.revision;
 export const selectCanUndo = (s: DocumentState) => s.canUndo;

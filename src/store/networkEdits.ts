@@ -9,6 +9,7 @@
 // — the left rail, an element or a vertical link — and something started at `c`), horizontal
 // links fill the gap so every other path keeps its meaning. `cols` grows when needed.
 import { boxLayout } from '../model/boxLayout';
+import { STANDARD_LIBRARY, type BlockLibrary } from '../model/library';
 import type { LdElement, VLink } from '../model/elements';
 import { elementCells, elementSize } from '../model/factory';
 import { cellKey, type Cell } from '../model/grid';
@@ -22,27 +23,37 @@ export type ElementTemplate = DistributiveOmit<LdElement, 'id' | 'row' | 'col'>;
 export const placed = (t: ElementTemplate, id: ElementId, row: number, col: number): LdElement =>
   ({ ...t, id, row, col }) as LdElement;
 
-export const templateSize = (t: ElementTemplate) => elementSize(placed(t, '' as ElementId, 0, 0));
+export const templateSize = (t: ElementTemplate, lib: BlockLibrary = STANDARD_LIBRARY) =>
+  elementSize(placed(t, '' as ElementId, 0, 0), lib);
 
 /** Which element covers each cell, by cellKey. */
-export function occupancy(n: Network, ignore?: ReadonlySet<ElementId>): Map<string, LdElement> {
+export function occupancy(
+  n: Network,
+  ignore?: ReadonlySet<ElementId>,
+  lib: BlockLibrary = STANDARD_LIBRARY,
+): Map<string, LdElement> {
   const map = new Map<string, LdElement>();
   for (const el of n.elements) {
     if (ignore?.has(el.id)) continue;
-    for (const c of elementCells(el)) map.set(cellKey(c.row, c.col), el);
+    for (const c of elementCells(el, lib)) map.set(cellKey(c.row, c.col), el);
   }
   return map;
 }
 
-export const elementAt = (n: Network, cell: Cell): LdElement | undefined =>
-  occupancy(n).get(cellKey(cell.row, cell.col));
+export const elementAt = (n: Network, cell: Cell, lib: BlockLibrary = STANDARD_LIBRARY): LdElement | undefined =>
+  occupancy(n, undefined, lib).get(cellKey(cell.row, cell.col));
 
 /** The network with these elements and vertical links, its grid grown to hold them all. */
-export function grow(n: Network, elements: readonly LdElement[], vlinks: readonly VLink[]): Network {
+export function grow(
+  n: Network,
+  elements: readonly LdElement[],
+  vlinks: readonly VLink[],
+  lib: BlockLibrary = STANDARD_LIBRARY,
+): Network {
   let rows = n.rows;
   let cols = n.cols;
   for (const el of elements) {
-    const s = elementSize(el);
+    const s = elementSize(el, lib);
     rows = Math.max(rows, el.row + s.rows);
     cols = Math.max(cols, el.col + s.cols);
   }
@@ -54,32 +65,38 @@ export function grow(n: Network, elements: readonly LdElement[], vlinks: readonl
 }
 
 /** Cells an element would cover at (row, col). */
-function cellsAt(t: ElementTemplate, row: number, col: number): Cell[] {
-  return elementCells(placed(t, '' as ElementId, row, col));
+function cellsAt(t: ElementTemplate, row: number, col: number, lib: BlockLibrary): Cell[] {
+  return elementCells(placed(t, '' as ElementId, row, col), lib);
 }
 
 /**
  * Places an element at `cell` when every cell it covers is free or a horizontal link (the links
  * go). Returns undefined when another element is in the way (the caller inserts in series).
  */
-export function placeElement(n: Network, cell: Cell, t: ElementTemplate, id: ElementId): Network | undefined {
+export function placeElement(
+  n: Network,
+  cell: Cell,
+  t: ElementTemplate,
+  id: ElementId,
+  lib: BlockLibrary = STANDARD_LIBRARY,
+): Network | undefined {
   if (cell.row < 0 || cell.col < 0) return undefined;
-  const occ = occupancy(n);
+  const occ = occupancy(n, undefined, lib);
   const replaced = new Set<ElementId>();
-  for (const c of cellsAt(t, cell.row, cell.col)) {
+  for (const c of cellsAt(t, cell.row, cell.col, lib)) {
     const el = occ.get(cellKey(c.row, c.col));
     if (!el) continue;
     if (el.kind !== 'link') return undefined;
     replaced.add(el.id);
   }
   const kept = n.elements.filter((e) => !replaced.has(e.id));
-  return grow(n, [...kept, placed(t, id, cell.row, cell.col)], n.vlinks);
+  return grow(n, [...kept, placed(t, id, cell.row, cell.col)], n.vlinks, lib);
 }
 
 /** Does element `el` connect to the point on row `row` at its left (side 'in') or right ('out') edge? */
-function pinOnRow(el: LdElement, row: number, side: 'in' | 'out'): boolean {
+function pinOnRow(el: LdElement, row: number, side: 'in' | 'out', lib: BlockLibrary): boolean {
   if (el.kind !== 'box') return el.row === row;
-  const layout = boxLayout(el);
+  const layout = boxLayout(el, lib);
   if (!layout) return el.row === row;
   const pins = side === 'in' ? layout.inputs : layout.outputs;
   return pins.some((p) => el.row + p.rowOffset === row);
@@ -94,13 +111,14 @@ export function insertInSeries(
   cell: Cell,
   t: ElementTemplate,
   id: ElementId,
+  lib: BlockLibrary = STANDARD_LIBRARY,
 ): Network | undefined {
-  const occupant = elementAt(n, cell);
+  const occupant = elementAt(n, cell, lib);
   if (!occupant || occupant.kind === 'link') {
-    const direct = placeElement(n, cell, t, id);
+    const direct = placeElement(n, cell, t, id, lib);
     if (direct) return direct;
   }
-  const { rows: h, cols: w } = templateSize(t);
+  const { rows: h, cols: w } = templateSize(t, lib);
   const c = occupant && occupant.kind !== 'link' ? occupant.col : cell.col;
   const row = cell.row;
   const lastRow = Math.max(n.rows, row + h);
@@ -109,9 +127,9 @@ export function insertInSeries(
     if (r === row) continue;
     const endsHere =
       c === 0 ||
-      n.elements.some((e) => e.col + elementSize(e).cols === c && pinOnRow(e, r, 'out')) ||
+      n.elements.some((e) => e.col + elementSize(e, lib).cols === c && pinOnRow(e, r, 'out', lib)) ||
       n.vlinks.some((v) => v.boundary === c && (v.row === r || v.row + 1 === r));
-    const startsHere = n.elements.some((e) => e.col === c && pinOnRow(e, r, 'in'));
+    const startsHere = n.elements.some((e) => e.col === c && pinOnRow(e, r, 'in', lib));
     if (!endsHere || !startsHere) continue;
     // A path crossing where the new box's lower rows go would meet its pins: no room.
     if (r > row && r < row + h) return undefined;
@@ -120,21 +138,21 @@ export function insertInSeries(
   const shifted = n.elements.map((e) => (e.col >= c ? { ...e, col: e.col + w } : e));
   const vlinks = n.vlinks.map((v) => (v.boundary > c ? { ...v, boundary: v.boundary + w } : v));
   const after: Network = { ...n, elements: shifted, vlinks, cols: n.cols + w };
-  const occ = occupancy(after);
-  if (cellsAt(t, row, c).some((x) => occ.has(cellKey(x.row, x.col)))) return undefined;
+  const occ = occupancy(after, undefined, lib);
+  if (cellsAt(t, row, c, lib).some((x) => occ.has(cellKey(x.row, x.col)))) return undefined;
   const bridges: LdElement[] = [];
   for (const r of bridgeRows) {
     for (let k = 0; k < w; k++) bridges.push({ kind: 'link', id: newBridgeId(id, r, k), row: r, col: c + k });
   }
-  const result = grow(after, [...shifted, placed(t, id, row, c), ...bridges], vlinks);
-  return { ...result, cols: Math.max(n.cols, usedCols(result)) };
+  const result = grow(after, [...shifted, placed(t, id, row, c), ...bridges], vlinks, lib);
+  return { ...result, cols: Math.max(n.cols, usedCols(result, lib)) };
 }
 
 const newBridgeId = (base: ElementId, row: number, k: number) => `${base}_b${row}_${k}` as ElementId;
 
-function usedCols(n: Network): number {
+function usedCols(n: Network, lib: BlockLibrary): number {
   let cols = 0;
-  for (const e of n.elements) cols = Math.max(cols, e.col + elementSize(e).cols);
+  for (const e of n.elements) cols = Math.max(cols, e.col + elementSize(e, lib).cols);
   for (const v of n.vlinks) cols = Math.max(cols, v.boundary);
   return cols;
 }
@@ -142,6 +160,7 @@ function usedCols(n: Network): number {
 /** Bounding box of some elements: rows top..bottom (inclusive), boundaries left..right. */
 export function boundsOf(
   elements: readonly LdElement[],
+  lib: BlockLibrary = STANDARD_LIBRARY,
 ): { top: number; bottom: number; left: number; right: number } | undefined {
   if (elements.length === 0) return undefined;
   let top = Infinity;
@@ -149,7 +168,7 @@ export function boundsOf(
   let left = Infinity;
   let right = -Infinity;
   for (const e of elements) {
-    const s = elementSize(e);
+    const s = elementSize(e, lib);
     top = Math.min(top, e.row);
     bottom = Math.max(bottom, e.row + s.rows - 1);
     left = Math.min(left, e.col);
@@ -168,14 +187,15 @@ export function wrapInParallelBranch(
   n: Network,
   ids: readonly ElementId[],
   newId: () => ElementId,
+  lib: BlockLibrary = STANDARD_LIBRARY,
 ): Network | undefined {
   const set = new Set(ids);
   const sel = n.elements.filter((e) => set.has(e.id));
-  const b = boundsOf(sel);
+  const b = boundsOf(sel, lib);
   if (!b) return undefined;
   let newRow = b.bottom + 1;
   // Never split a box that spans the row boundary.
-  while (n.elements.some((e) => e.row < newRow && e.row + elementSize(e).rows > newRow)) newRow++;
+  while (n.elements.some((e) => e.row < newRow && e.row + elementSize(e, lib).rows > newRow)) newRow++;
   const elements: LdElement[] = n.elements.map((e) => (e.row >= newRow ? { ...e, row: e.row + 1 } : e));
   const vlinks: VLink[] = [];
   for (const v of n.vlinks) {
@@ -193,7 +213,7 @@ export function wrapInParallelBranch(
       if (!vlinks.some((v) => v.row === r && v.boundary === boundary)) vlinks.push({ row: r, boundary });
     }
   }
-  return grow({ ...n, rows: n.rows + 1, cols }, elements, vlinks);
+  return grow({ ...n, rows: n.rows + 1, cols }, elements, vlinks, lib);
 }
 
 /** Moves elements by whole cells; horizontal links in the way go. Undefined if off-grid or blocked. */
@@ -202,6 +222,7 @@ export function moveElements(
   ids: readonly ElementId[],
   dRow: number,
   dCol: number,
+  lib: BlockLibrary = STANDARD_LIBRARY,
 ): Network | undefined {
   const set = new Set(ids);
   if (dRow === 0 && dCol === 0) return n;
@@ -209,10 +230,10 @@ export function moveElements(
     .filter((e) => set.has(e.id))
     .map((e) => ({ ...e, row: e.row + dRow, col: e.col + dCol }));
   if (moved.length === 0 || moved.some((e) => e.row < 0 || e.col < 0)) return undefined;
-  const occ = occupancy(n, set);
+  const occ = occupancy(n, set, lib);
   const replaced = new Set<ElementId>();
   for (const el of moved) {
-    for (const c of elementCells(el)) {
+    for (const c of elementCells(el, lib)) {
       const other = occ.get(cellKey(c.row, c.col));
       if (!other) continue;
       if (other.kind !== 'link') return undefined;
@@ -221,7 +242,7 @@ export function moveElements(
   }
   const byId = new Map(moved.map((e) => [e.id, e]));
   const elements = n.elements.filter((e) => !replaced.has(e.id)).map((e) => byId.get(e.id) ?? e);
-  return grow(n, elements, n.vlinks);
+  return grow(n, elements, n.vlinks, lib);
 }
 
 export function deleteElements(n: Network, ids: readonly ElementId[]): Network {
@@ -229,10 +250,10 @@ export function deleteElements(n: Network, ids: readonly ElementId[]): Network {
   return { ...n, elements: n.elements.filter((e) => !set.has(e.id)) };
 }
 
-export function addVLink(n: Network, v: VLink): Network {
+export function addVLink(n: Network, v: VLink, lib: BlockLibrary = STANDARD_LIBRARY): Network {
   if (v.row < 0 || v.boundary < 0 || n.vlinks.some((w) => w.row === v.row && w.boundary === v.boundary))
     return n;
-  return grow(n, n.elements, [...n.vlinks, v]);
+  return grow(n, n.elements, [...n.vlinks, v], lib);
 }
 
 export function removeVLink(n: Network, v: VLink): Network {
@@ -246,10 +267,14 @@ export interface ClipContent {
 }
 
 /** The selected elements and the vertical links inside their area, moved to (0, 0). */
-export function copyElements(n: Network, ids: readonly ElementId[]): ClipContent | undefined {
+export function copyElements(
+  n: Network,
+  ids: readonly ElementId[],
+  lib: BlockLibrary = STANDARD_LIBRARY,
+): ClipContent | undefined {
   const set = new Set(ids);
   const sel = n.elements.filter((e) => set.has(e.id));
-  const b = boundsOf(sel);
+  const b = boundsOf(sel, lib);
   if (!b) return undefined;
   return {
     elements: sel.map((e) => ({ ...e, row: e.row - b.top, col: e.col - b.left })),
@@ -269,11 +294,12 @@ export function pasteElements(
   clip: ClipContent,
   at: Cell,
   newId: () => ElementId,
+  lib: BlockLibrary = STANDARD_LIBRARY,
 ): { network: Network; ids: ElementId[] } {
   const fits = (row: number) => {
-    const occ = occupancy(n);
+    const occ = occupancy(n, undefined, lib);
     return clip.elements.every((e) =>
-      elementCells({ ...e, row: e.row + row, col: e.col + at.col }).every((c) => {
+      elementCells({ ...e, row: e.row + row, col: e.col + at.col }, lib).every((c) => {
         const o = occ.get(cellKey(c.row, c.col));
         return !o || o.kind === 'link';
       }),
@@ -281,15 +307,15 @@ export function pasteElements(
   };
   const below = Math.max(
     0,
-    ...n.elements.map((e) => e.row + elementSize(e).rows),
+    ...n.elements.map((e) => e.row + elementSize(e, lib).rows),
     ...n.vlinks.map((v) => v.row + 2),
   );
   const row = fits(at.row) ? at.row : below;
   const pasted = clip.elements.map((e) => ({ ...e, id: newId(), row: e.row + row, col: e.col + at.col }));
-  const occ = occupancy(n);
+  const occ = occupancy(n, undefined, lib);
   const replaced = new Set<ElementId>();
   for (const el of pasted)
-    for (const c of elementCells(el)) {
+    for (const c of elementCells(el, lib)) {
       const o = occ.get(cellKey(c.row, c.col));
       if (o) replaced.add(o.id);
     }
@@ -298,7 +324,7 @@ export function pasteElements(
     const moved = { row: v.row + row, boundary: v.boundary + at.col };
     if (!vlinks.some((w) => w.row === moved.row && w.boundary === moved.boundary)) vlinks.push(moved);
   }
-  const network = grow(n, [...n.elements.filter((e) => !replaced.has(e.id)), ...pasted], vlinks);
+  const network = grow(n, [...n.elements.filter((e) => !replaced.has(e.id)), ...pasted], vlinks, lib);
   return { network, ids: pasted.map((e) => e.id) };
 }
 
@@ -306,10 +332,10 @@ export function pasteElements(
  * Inserts an empty row at `at` (below a box that spans it): rows from there move one row down; a
  * vertical link that crossed into that row is extended through the new row so no connection breaks.
  */
-export function insertRow(n: Network, at: number): Network {
+export function insertRow(n: Network, at: number, lib: BlockLibrary = STANDARD_LIBRARY): Network {
   let row = Math.max(0, Math.min(at, n.rows));
   // Never split a box: a row asked for inside one goes below it.
-  while (n.elements.some((e) => e.row < row && e.row + elementSize(e).rows > row)) row++;
+  while (n.elements.some((e) => e.row < row && e.row + elementSize(e, lib).rows > row)) row++;
   const elements = n.elements.map((e) => (e.row >= row ? { ...e, row: e.row + 1 } : e));
   const vlinks: VLink[] = [];
   for (const v of n.vlinks) {
@@ -319,7 +345,7 @@ export function insertRow(n: Network, at: number): Network {
       if (v.row === row - 1) vlinks.push({ row, boundary: v.boundary });
     }
   }
-  return grow({ ...n, rows: n.rows + 1 }, elements, vlinks);
+  return grow({ ...n, rows: n.rows + 1 }, elements, vlinks, lib);
 }
 
 /**
@@ -327,9 +353,9 @@ export function insertRow(n: Network, at: number): Network {
  * row (above and below it at the same edge) stays one link; links that only touched it go.
  * Undefined when an element is on the row or it is the only row.
  */
-export function deleteRow(n: Network, at: number): Network | undefined {
+export function deleteRow(n: Network, at: number, lib: BlockLibrary = STANDARD_LIBRARY): Network | undefined {
   if (n.rows <= 1 || at < 0 || at >= n.rows) return undefined;
-  if (n.elements.some((e) => e.row <= at && e.row + elementSize(e).rows > at)) return undefined;
+  if (n.elements.some((e) => e.row <= at && e.row + elementSize(e, lib).rows > at)) return undefined;
   const elements = n.elements.map((e) => (e.row > at ? { ...e, row: e.row - 1 } : e));
   const vlinks: VLink[] = [];
   for (const v of n.vlinks) {

@@ -6,6 +6,7 @@
 // other paths may still use them. The target grows to fit.
 import type { LdElement, VLink } from '../model/elements';
 import { elementCells } from '../model/factory';
+import { STANDARD_LIBRARY, type BlockLibrary } from '../model/library';
 import { cellKey, type Cell } from '../model/grid';
 import type { ElementId } from '../model/ids';
 import type { Network } from '../model/project';
@@ -22,19 +23,20 @@ export function transferElements(
   target: Network,
   ids: readonly ElementId[],
   at: Cell,
+  lib: BlockLibrary = STANDARD_LIBRARY,
 ): Transfer | undefined {
   if (source.id === target.id || at.row < 0 || at.col < 0) return undefined;
   const set = new Set(ids);
   const moving = source.elements.filter((e) => set.has(e.id));
-  const b = boundsOf(moving);
+  const b = boundsOf(moving, lib);
   if (!b) return undefined;
   const dRow = at.row - b.top;
   const dCol = at.col - b.left;
   const moved: LdElement[] = moving.map((e) => ({ ...e, row: e.row + dRow, col: e.col + dCol }));
-  const occ = occupancy(target);
+  const occ = occupancy(target, undefined, lib);
   const replaced = new Set<ElementId>();
   for (const el of moved)
-    for (const c of elementCells(el)) {
+    for (const c of elementCells(el, lib)) {
       const other = occ.get(cellKey(c.row, c.col));
       if (!other) continue;
       if (other.kind !== 'link') return undefined;
@@ -55,6 +57,6 @@ export function transferElements(
       elements: source.elements.filter((e) => !set.has(e.id)),
       vlinks: source.vlinks.filter((v) => !inside(v)),
     },
-    target: grow(target, elements, vlinks),
+    target: grow(target, elements, vlinks, lib),
   };
 }

@@ -1,0 +1,116 @@
+// The POU commands (add, rename, duplicate, delete, properties): each is one undo step, and
+// references follow a rename (calls' block types, instance types, task entries). See the list at
+// the top of documentStore.ts.
+import { newNetwork, newPou } from '../model/factory';
+import type { PouId } from '../model/ids';
+import type { Pou, PouKind, Project, Task } from '../model/project';
+import { applyChanges, type Change, type PouProps } from './changes';
+import { copyPou, freshPouName, makeRoomForCalls, pouNameProblem, renamePouChanges } from './pouEdits';
+
+export interface PouCommandOps {
+  project(): Project;
+  commit(name: string, changes: readonly Change[]): void;
+  /** Opens the POU in a tab and shows it. */
+  open(id: PouId): void;
+}
+
+/** Editable POU properties: `returnType` only for a FUNCTION (`undefined` removes it). */
+export type PouPatch = Partial<Pick<PouProps, 'comment' | 'returnType' | 'kind'>>;
+
+export interface PouCommands {
+  addPou(kind: PouKind, name?: string): PouId | undefined;
+  renamePou(id: PouId, name: string): boolean;
+  duplicatePou(id: PouId): PouId | undefined;
+  deletePou(id: PouId): boolean;
+  updatePou(id: PouId, patch: PouPatch): boolean;
+}
+
+const DEFAULT_NAMES: Record<PouKind, string> = { PROGRAM: 'Program', FUNCTION_BLOCK: 'FB', FUNCTION: 'Function' };
+
+export function pouCommands({ project, commit, open }: PouCommandOps): PouCommands {
+  const find = (id: PouId) => project().pous.find((p) => p.id === id);
+
+  return {
+    addPou: (kind, name) => {
+      const p = project();
+      const chosen = name?.trim() || freshPouName(p, DEFAULT_NAMES[kind]);
+      if (pouNameProblem(p, chosen)) return undefined;
+      const pou = newPou(chosen, {
+        kind,
+        networks: [newNetwork()],
+        ...(kind === 'FUNCTION' ? { returnType: 'BOOL' } : {}),
+      });
+      const changes: Change[] = [{ type: 'pou.add', index: p.pous.length, pou }];
+      // A new program runs: the first task gets an instance of it.
+      const task = p.tasks[0];
+      if (kind === 'PROGRAM' && task) {
+        const taken = new Set(p.tasks.flatMap((t) => t.programs.map((x) => x.instance.toUpperCase())));
+        let instance = `${chosen}Instance`;
+        for (let i = 2; taken.has(instance.toUpperCase()); i++) instance = `${chosen}Instance${i}`;
+        const tasks: Task[] = p.tasks.map((t, i) =>
+          i === 0 ? { ...t, programs: [...t.programs, { instance, pou: chosen }] } : t,
+        );
+        changes.push({ type: 'tasks.update', before: p.tasks, after: tasks });
+      }
+      commit('addPou', changes);
+      open(pou.id);
+      return pou.id;
+    },
+    renamePou: (id, name) => {
+      const p = project();
+      const pou = find(id);
+      const to = name.trim();
+      if (!pou || pouNameProblem(p, to, id)) return false;
+      if (to === pou.name) return true;
+      commit('renamePou', renamePouChanges(p, pou, to));
+      return true;
+    },
+    duplicatePou: (id) => {
+      const p = project();
+      const pou = find(id);
+      if (!pou) return undefined;
+      const copy = copyPou(pou, freshPouName(p, `${pou.name}_copy`));
+      commit('duplicatePou', [{ type: 'pou.add', index: p.pous.indexOf(pou) + 1, pou: copy }]);
+      open(copy.id);
+      return copy.id;
+    },
+    deletePou: (id) => {
+      const p = project();
+      const index = p.pous.findIndex((x) => x.id === id);
+      const pou = p.pous[index];
+      // The project keeps at least one POU to edit.
+      if (!pou || p.pous.length <= 1) return false;
+      const changes: Change[] = [{ type: 'pou.remove', index, pou }];
+      const key = pou.name.toUpperCase();
+      if (p.tasks.some((t) => t.programs.some((x) => x.pou.toUpperCase() === key))) {
+        const tasks = p.tasks.map((t) => ({ ...t, programs: t.programs.filter((x) => x.pou.toUpperCase() !== key) }));
+        changes.push({ type: 'tasks.update', before: p.tasks, after: tasks });
+      }
+      commit('deletePou', changes);
+      return true;
+    },
+    updatePou: (id, patch) => {
+      const p = project();
+      const pou = find(id);
+      if (!pou) return false;
+      const before: Partial<PouProps> = {};
+      const after: Partial<PouProps> = {};
+      const set = <K extends keyof PouPatch>(k: K, v: Pou[K]) => {
+        if (pou[k] === v) return;
+        (before as Record<string, unknown>)[k] = pou[k];
+        (after as Record<string, unknown>)[k] = v;
+      };
+      if ('comment' in patch && patch.comment !== undefined) set('comment', patch.comment);
+      const kind = patch.kind ?? pou.kind;
+      if (patch.kind) set('kind', patch.kind);
+      if (kind === 'FUNCTION') set('returnType', patch.returnType?.trim() || pou.returnType || 'BOOL');
+      else if (pou.returnType !== undefined) set('returnType', undefined);
+      if (Object.keys(after).length === 0) return false;
+      const changes: Change[] = [{ type: 'pou.update', pou: id, before, after }];
+      // A function's result pin or a new kind changes the calls' boxes: make room for them.
+      changes.push(...makeRoomForCalls(p, applyChanges(p, changes), pou.name));
+      commit('updatePou', changes);
+      return true;
+    },
+  };
+}
