@@ -134,6 +134,23 @@ export interface StateTransfer {
   readonly removed: readonly StateItem[];
 }
 
+/**
+ * Raw access for the scan history (src/sim/history.ts): names resolved once, the packed power words
+ * without a copy, and the snapshot's own decoding applied to recorded words.
+ */
+export interface PlcProbe {
+  /** A reader for one name (`Motor`, `T1.ET`), resolved now; throws on unknown names. */
+  reader(name: string): () => Value;
+  /** Packed power-flow words of every network as the last scan left them (a live view: copy what you keep). */
+  readonly power: Int32Array;
+  /** Scan in which each network last ran (a live view). */
+  readonly ranIn: Int32Array;
+  /** Index of each network's first word in `power`. */
+  readonly words: Int32Array;
+  /** The snapshot's decoding of recorded words: `executed[i]` 1 when network i ran in that scan. */
+  decode(power: Int32Array, executed: Uint8Array): NetworkPower[];
+}
+
 export interface Plc {
   readonly pou: string;
   readonly profile: Profile;
@@ -179,4 +196,6 @@ export interface Plc {
    * state. Call at a scan boundary, normally before this PLC's first scan.
    */
   importState(state: PlcState): StateTransfer;
+  /** Raw access for recording every scan (scan history); optional for other implementations. */
+  probe?(): PlcProbe;
 }

@@ -2,7 +2,7 @@
 // image, on a virtual clock (scan k starts at (k-1) x cycleMs) or an injected real clock, with a
 // watchdog, forcing, cold/warm restart, stepping one network at a time and power snapshots.
 import type { Value } from '../../model/iecTypes';
-import type { Fault, Plc, PlcOptions, PlcState, PowerSnapshot, ScanReport, StateItem, StateTransfer, StepReport } from '../api';
+import type { Fault, NetworkPower, Plc, PlcOptions, PlcProbe, PlcState, PowerSnapshot, ScanReport, StateItem, StateTransfer, StepReport } from '../api';
 import type { FnContext } from '../library/fnTypes';
 import { slotKey } from '../compile/codegen';
 import { DISPATCH_PARAMS, planDispatch, type DispatchFn, type DispatchPlan } from '../compile/dispatch';
@@ -403,6 +403,23 @@ export class ScanPlc implements Plc {
 
   importState(state: PlcState): StateTransfer {
     return importMemory(this.program, this.mem, state, this.nextScanTime());
+  }
+
+  probe(): PlcProbe {
+    const { program, mem, words } = this;
+    return {
+      reader: (name) => {
+        const a = this.access(name);
+        return () => mem.read(a);
+      },
+      power: this.power,
+      ranIn: this.ranIn,
+      words,
+      decode: (power: Int32Array, executed: Uint8Array): NetworkPower[] => {
+        const ranIn = Int32Array.from(executed, (e) => (e ? 1 : -1));
+        return networkPower(program, { scan: 1, power, words, ranIn });
+      },
+    };
   }
 
   snapshot(): PowerSnapshot {
