@@ -1,10 +1,11 @@
-// The searchable block picker (key B): every standard function block and library function.
+// The searchable block picker (key B): the project's own FBs and functions, then every standard
+// function block and library function, each with its pins.
 // Type to filter, arrows to choose, Enter to place the box at the cursor.
 import { useMemo, useState } from 'react';
-import { useDocumentStore } from '../../store/documentStore';
+import { selectActivePou, selectLibrary, useDocument, useDocumentStore } from '../../store/documentStore';
 import { useUi, useUiStore } from '../../store/uiStore';
 import { placeAt } from '../commands/editorActions';
-import { boxTemplate, searchBlocks } from '../palette/paletteItems';
+import { boxTemplate, pinSummary, searchBlocks } from '../palette/paletteItems';
 
 export function BlockPicker({ onDone }: { readonly onDone: () => void }) {
   const doc = useDocumentStore();
@@ -12,7 +13,12 @@ export function BlockPicker({ onDone }: { readonly onDone: () => void }) {
   const picker = useUi((s) => s.blockPicker);
   const [query, setQuery] = useState('');
   const [active, setActive] = useState(0);
-  const results = useMemo(() => searchBlocks(query).slice(0, 200), [query]);
+  const library = useDocument(selectLibrary);
+  const editing = useDocument((s) => selectActivePou(s)?.name);
+  const results = useMemo(
+    () => searchBlocks(query, library, editing).slice(0, 200),
+    [query, library, editing],
+  );
   if (!picker) return null;
   const index = Math.min(active, results.length - 1);
 
@@ -28,7 +34,7 @@ export function BlockPicker({ onDone }: { readonly onDone: () => void }) {
     ui.getState().closeBlockPicker();
     setQuery('');
     setActive(0);
-    placeAt({ doc, ui }, picker.network, picker.cell, boxTemplate(sig));
+    placeAt({ doc, ui }, picker.network, picker.cell, boxTemplate(sig, library));
     if (!ui.getState().editing) onDone();
   };
 
@@ -75,8 +81,13 @@ export function BlockPicker({ onDone }: { readonly onDone: () => void }) {
             onClick={() => choose(i)}
           >
             <span className="rs-mono rs-block-name">{sig.name}</span>
-            <span className="rs-block-kind">{sig.kind === 'fb' ? 'FB' : 'function'}</span>
-            <span className="rs-block-desc">{sig.description}</span>
+            <span className="rs-block-kind">
+              {sig.category === 'user' ? 'user ' : ''}
+              {sig.kind === 'fb' ? 'FB' : 'function'}
+            </span>
+            <span className="rs-block-desc" title={pinSummary(sig)}>
+              {sig.category === 'user' ? pinSummary(sig) : sig.description}
+            </span>
           </li>
         ))}
         {results.length === 0 && <li className="rs-empty">No block matches “{query}”.</li>}

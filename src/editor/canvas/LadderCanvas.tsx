@@ -6,7 +6,13 @@
 import { useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import { Layer, Stage } from 'react-konva';
 import type { ElementId, NetworkId } from '../../model/ids';
-import { selectActivePou, selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
+import {
+  selectActivePou,
+  selectLibrary,
+  selectNetworks,
+  useDocument,
+  useDocumentStore,
+} from '../../store/documentStore';
 import { elementAt } from '../../store/networkEdits';
 import {
   clampZoom,
@@ -51,6 +57,7 @@ export function LadderCanvas() {
   const ctx = useMemo<EditorContext>(() => ({ doc, ui }), [doc, ui]);
   const networks = useDocument(selectNetworks);
   const pou = useDocument(selectActivePou);
+  const library = useDocument(selectLibrary);
   const zoom = useUi(selectZoom);
   const selection = useUi(selectSelection);
   const cursor = useUi(selectCursor);
@@ -68,8 +75,8 @@ export function LadderCanvas() {
   const winRef = useRef(win);
   const [size, setSize] = useState({ width: 800, height: 600 });
   const [theme, setTheme] = useState<CanvasTheme | undefined>(undefined);
-  const view = useRef<PointerView>({ layout, networks, zoom });
-  view.current = { layout, networks, zoom };
+  const view = useRef<PointerView>({ layout, networks, zoom, library });
+  view.current = { layout, networks, zoom, library };
   const spaceHeld = useRef(false);
   const zoomAnchor = useRef<ZoomAnchor | undefined>(undefined);
   const { drag, band, hover, cancel, handlers } = useCanvasPointer(ctx, scrollRef, view, spaceHeld);
@@ -221,7 +228,7 @@ export function LadderCanvas() {
         <div
           className="rs-canvas-sticky"
           style={{ width: size.width, height: size.height }}
-          title={hoverText(hoverNetwork && hover && elementAt(hoverNetwork, hover.cell), hoverProblems)}
+          title={hoverText(hoverNetwork && hover && elementAt(hoverNetwork, hover.cell, library), hoverProblems)}
           {...handlers}
         >
           <div className="rs-world" ref={worldRef}>
@@ -244,6 +251,7 @@ export function LadderCanvas() {
                           markers={markers.get(i)?.markers ?? NO_MARKERS}
                           drag={dragPaints.get(n.id)}
                           zoom={zoom}
+                          library={library}
                         />
                       );
                     })}

@@ -5,6 +5,7 @@ import { memo, useLayoutEffect, useMemo, useRef } from 'react';
 import { Shape } from 'react-konva';
 import type { Cell } from '../../model/grid';
 import type { ElementId } from '../../model/ids';
+import type { BlockLibrary } from '../../model/library';
 import type { Network } from '../../model/project';
 import type { CanvasTheme } from '../theme/canvasTheme';
 import { drawNetworkGrid, type CellMarker, type NetworkPaint } from './drawNetwork';
@@ -24,17 +25,20 @@ export interface NetworkShapeProps {
   readonly drag: NetworkPaint['drag'];
   /** Current zoom: the cached bitmap is drawn at this scale so it stays sharp. */
   readonly zoom: number;
+  /** The project's blocks: user FB and function boxes are drawn with their own pins. */
+  readonly library: BlockLibrary;
 }
 
 /** Room around the grid inside the cached bitmap (drag ghosts, marks at the edges). */
 const CACHE_MARGIN = 12;
 
 export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps) {
-  const { network, index, top, theme, selected, cursor, hover, markers, drag, zoom } = props;
+  const { network, index, top, theme, selected, cursor, hover, markers, drag, zoom, library } = props;
   const ref = useRef<Konva.Shape>(null);
   const overlay = useOverlayHook()(network, index);
   const paint = useMemo<NetworkPaint>(
     () => ({
+      library,
       selected,
       cursor,
       hover,
@@ -45,7 +49,7 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
       ...(overlay.forced ? { forced: overlay.forced } : {}),
       ...(overlay.device ? { device: overlay.device } : {}),
     }),
-    [selected, cursor, hover, markers, drag, overlay.power, overlay.liveValues, overlay.forced, overlay.device],
+    [library, selected, cursor, hover, markers, drag, overlay.power, overlay.liveValues, overlay.forced, overlay.device],
   );
   const width = networkWidth(network);
   const height = network.rows * CELL_H + GRID_PAD_BOTTOM;

@@ -2,6 +2,7 @@
 // cells) or into another network's grid (the grabbed cell follows the pointer's cell there).
 import type { LdElement } from '../../model/elements';
 import { elementSize } from '../../model/factory';
+import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { Cell } from '../../model/grid';
 import type { ElementId, NetworkId } from '../../model/ids';
 import type { Network } from '../../model/project';
@@ -24,19 +25,25 @@ export interface DragState {
 }
 
 /** Can `ids` move by (dRow, dCol) inside `n`? Horizontal links in the way are replaced. */
-export function canMove(n: Network, ids: readonly ElementId[], dRow: number, dCol: number): boolean {
+export function canMove(
+  n: Network,
+  ids: readonly ElementId[],
+  dRow: number,
+  dCol: number,
+  lib: BlockLibrary = STANDARD_LIBRARY,
+): boolean {
   const set = new Set(ids);
   const taken = new Map<string, boolean>();
   for (const e of n.elements) {
     if (set.has(e.id)) continue;
-    const s = elementSize(e);
+    const s = elementSize(e, lib);
     for (let r = 0; r < s.rows; r++)
       for (let c = 0; c < s.cols; c++) taken.set(`${e.row + r}:${e.col + c}`, e.kind === 'link');
   }
   for (const e of n.elements) {
     if (!set.has(e.id)) continue;
     if (e.row + dRow < 0 || e.col + dCol < 0) return false;
-    const s = elementSize(e);
+    const s = elementSize(e, lib);
     for (let r = 0; r < s.rows; r++)
       for (let c = 0; c < s.cols; c++)
         if (taken.get(`${e.row + dRow + r}:${e.col + dCol + c}`) === false) return false;
@@ -54,15 +61,16 @@ export function dropInto(
   ids: readonly ElementId[],
   grabbed: Cell,
   cell: Cell,
+  lib: BlockLibrary = STANDARD_LIBRARY,
 ): { at: Cell; ghost: LdElement[]; blocked: boolean } | undefined {
   const set = new Set(ids);
   const moving = source.elements.filter((e) => set.has(e.id));
-  const b = boundsOf(moving);
+  const b = boundsOf(moving, lib);
   if (!b) return undefined;
   const at = {
     row: Math.max(0, cell.row - (grabbed.row - b.top)),
     col: Math.max(0, cell.col - (grabbed.col - b.left)),
   };
   const ghost = moving.map((e) => ({ ...e, row: e.row - b.top + at.row, col: e.col - b.left + at.col }));
-  return { at, ghost, blocked: !transferElements(source, target, ids, at) };
+  return { at, ghost, blocked: !transferElements(source, target, ids, at, lib) };
 }

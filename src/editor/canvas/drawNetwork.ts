@@ -2,6 +2,7 @@
 // cursor, diagnostic markers, drag ghost) with the grid's top-left at the context origin.
 import type { NetworkPower } from '../../engine/api';
 import { elementSize } from '../../model/factory';
+import type { BlockLibrary } from '../../model/library';
 import type { Cell } from '../../model/grid';
 import type { LdElement } from '../../model/elements';
 import type { ElementId } from '../../model/ids';
@@ -18,6 +19,8 @@ export interface CellMarker {
 }
 
 export interface NetworkPaint {
+  /** The project's blocks (user FBs and functions): box sizes and pins. */
+  readonly library?: BlockLibrary;
   readonly selected: ReadonlySet<ElementId>;
   readonly cursor: Cell | undefined;
   readonly hover: Cell | undefined;
@@ -44,8 +47,8 @@ export interface NetworkPaint {
 type Ctx = CanvasRenderingContext2D;
 
 /** The device holds another value than the program: a boxed "device: FALSE" tag over the element's top edge. */
-function drawDeviceMark(ctx: Ctx, t: CanvasTheme, el: LdElement, text: string) {
-  const s = elementSize(el);
+function drawDeviceMark(ctx: Ctx, t: CanvasTheme, el: LdElement, text: string, lib?: BlockLibrary) {
+  const s = elementSize(el, lib);
   const x = el.col * CELL_W;
   const y = el.row * CELL_H;
   ctx.font = 'bold 10px system-ui, sans-serif';
@@ -64,8 +67,8 @@ function drawDeviceMark(ctx: Ctx, t: CanvasTheme, el: LdElement, text: string) {
 }
 
 /** A forced element: an outline and an "F" tag at its top-left corner, in the theme's forced colour. */
-function drawForcedMark(ctx: Ctx, t: CanvasTheme, el: LdElement) {
-  const s = elementSize(el);
+function drawForcedMark(ctx: Ctx, t: CanvasTheme, el: LdElement, lib?: BlockLibrary) {
+  const s = elementSize(el, lib);
   const x = el.col * CELL_W;
   const y = el.row * CELL_H;
   ctx.strokeStyle = t.forced;
@@ -126,19 +129,20 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     ctx.translate(el.col * CELL_W, el.row * CELL_H);
     const live = paint.liveValues?.get(el.id);
     drawElement(ctx, t, el, {
+      ...(paint.library ? { library: paint.library } : {}),
       ...(paint.power ? { power: paint.power.elements[i] ?? 0 } : {}),
       ...(live ? { liveValue: live } : {}),
     });
     ctx.restore();
   });
-  if (paint.forced) for (const el of n.elements) if (paint.forced.has(el.id)) drawForcedMark(ctx, t, el);
+  if (paint.forced) for (const el of n.elements) if (paint.forced.has(el.id)) drawForcedMark(ctx, t, el, paint.library);
   if (paint.device) for (const el of n.elements) {
     const text = paint.device.get(el.id);
-    if (text) drawDeviceMark(ctx, t, el, text);
+    if (text) drawDeviceMark(ctx, t, el, text, paint.library);
   }
   for (const el of n.elements) {
     if (!paint.selected.has(el.id)) continue;
-    const s = elementSize(el);
+    const s = elementSize(el, paint.library);
     ctx.fillStyle = t.selectionFill;
     ctx.strokeStyle = t.selection;
     ctx.lineWidth = 2;
@@ -169,8 +173,8 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
       ctx.save();
       ctx.translate((el.col + offset.dCol) * CELL_W, (el.row + offset.dRow) * CELL_H);
       ctx.globalAlpha = 0.85;
-      drawElement(ctx, t, el);
-      const s = elementSize(el);
+      drawElement(ctx, t, el, paint.library ? { library: paint.library } : {});
+      const s = elementSize(el, paint.library);
       ctx.strokeStyle = blocked ? t.error : t.selection;
       ctx.setLineDash([4, 3]);
       ctx.lineWidth = 1.5;

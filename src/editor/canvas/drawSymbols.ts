@@ -1,6 +1,7 @@
 // IEC 61131-3 LD symbols drawn on a 2D canvas context, one element at a time, at the
 // element's top-left cell corner. Pure drawing: no state, no React.
 import { boxLayout } from '../../model/boxLayout';
+import type { BlockLibrary } from '../../model/library';
 import type { BoxElement, CoilElement, ContactElement, LdElement } from '../../model/elements';
 import type { CanvasTheme } from '../theme/canvasTheme';
 import { CELL_H, CELL_W, WIRE_Y } from './geometry';
@@ -12,6 +13,8 @@ const MONO_SMALL = '11px ui-monospace, "SF Mono", Menlo, Consolas, monospace';
 
 /** Power flow byte of an element (NetworkPower): bit 0 input side energised, bit 1 output side. */
 export interface ElementPaint {
+  /** The project's blocks (user FBs and functions); standard blocks only when absent. */
+  readonly library?: BlockLibrary;
   readonly power?: number;
   /** Live value shown under the element during simulation (e.g. "ET=1.2s"). */
   readonly liveValue?: string;
@@ -136,7 +139,7 @@ function drawCoil(ctx: Ctx, t: CanvasTheme, el: CoilElement, paint: ElementPaint
 }
 
 function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint) {
-  const layout = boxLayout(el);
+  const layout = boxLayout(el, paint.library);
   const rows = layout?.rows ?? 1;
   const w = CELL_W * 2;
   const left = 18;
@@ -159,10 +162,9 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint) 
     ctx.fillText(elide(ctx, el.instance || '???', w - 8), w / 2, top - 6);
   }
   if (!layout) return;
-  const flowIn =
-    layout.signature.kind === 'function' ? 'EN' : layout.inputs.find((p) => p.type === 'BOOL')?.name;
-  const flowOut =
-    layout.signature.kind === 'function' ? 'ENO' : layout.outputs.find((p) => p.type === 'BOOL')?.name;
+  const enEno = layout.signature.kind === 'function' || el.executionControl === true;
+  const flowIn = enEno ? 'EN' : layout.inputs.find((p) => p.type === 'BOOL')?.name;
+  const flowOut = enEno ? 'ENO' : layout.outputs.find((p) => p.type === 'BOOL')?.name;
   ctx.font = FONT_SMALL;
   for (const pin of layout.inputs) {
     const y = pin.rowOffset * CELL_H + WIRE_Y;

@@ -14,6 +14,7 @@ import {
   type RefObject,
 } from 'react';
 import { elementSize } from '../../model/factory';
+import type { BlockLibrary } from '../../model/library';
 import type { Cell } from '../../model/grid';
 import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
@@ -60,6 +61,8 @@ export interface PointerView {
   readonly layout: CanvasLayout;
   readonly networks: readonly Network[];
   readonly zoom: number;
+  /** The project's blocks: box sizes for hit tests and drags. */
+  readonly library: BlockLibrary;
 }
 
 /** Cell offset of a content point from a start point, in whole cells (snapping). */
@@ -113,12 +116,12 @@ export function useCanvasPointer(
     const target = networks[hit.index]!;
     const base = { network: n.id, ids: new Set(ids), dRow: 0, dCol: 0 };
     if (target.id !== n.id) {
-      const d = dropInto(n, target, ids, startCell, hit.cell);
+      const d = dropInto(n, target, ids, startCell, hit.cell, view.current.library);
       if (!d) return undefined;
       return { ...base, blocked: d.blocked, into: { network: target.id, ...d } };
     }
     const { dRow, dCol } = cellDelta(start, p);
-    return { ...base, dRow, dCol, blocked: !canMove(n, ids, dRow, dCol) };
+    return { ...base, dRow, dCol, blocked: !canMove(n, ids, dRow, dCol, view.current.library) };
   };
 
   /** Stops a press, drag or rubber band without applying it (a second finger started a pinch). */
@@ -168,7 +171,7 @@ export function useCanvasPointer(
     }
     e.currentTarget.setPointerCapture(e.pointerId);
     ui.setCursor({ network: n.id, row: hit.cell.row, col: hit.cell.col });
-    const target = elementAt(n, hit.cell);
+    const target = elementAt(n, hit.cell, view.current.library);
     if (target) {
       let ids: ElementId[];
       if (e.shiftKey || e.ctrlKey || e.metaKey) {
@@ -269,7 +272,7 @@ export function useCanvasPointer(
       const y1 = Math.min(m.start.y, p.y) - top;
       const y2 = Math.max(m.start.y, p.y) - top;
       const inside = n.elements.filter((el) => {
-        const s = elementSize(el);
+        const s = elementSize(el, view.current.library);
         const cx = (el.col + s.cols / 2) * CELL_W;
         const cy = (el.row + s.rows / 2) * CELL_H;
         return cx >= x1 && cx <= x2 && cy >= y1 && cy <= y2;
@@ -285,7 +288,7 @@ export function useCanvasPointer(
     const { layout, networks } = view.current;
     const hit = hitTest(layout, networks, contentPoint(e));
     if (hit.area !== 'grid') return;
-    const el = elementAt(networks[hit.index]!, hit.cell);
+    const el = elementAt(networks[hit.index]!, hit.cell, view.current.library);
     if (el && needsName(el)) ctx.ui.getState().startEditing(el.id);
   };
 

@@ -6,7 +6,7 @@ import type { Variable } from '../../model/project';
 import { clipText, parseClip, type Clip } from '../../store/clipboard';
 import { selectActivePou } from '../../store/documentStore';
 import { copyElements } from '../../store/networkEdits';
-import { ensureCursor, networkById, targets, type EditorContext } from './editorActions';
+import { ensureCursor, libraryOf, networkById, targets, type EditorContext } from './editorActions';
 
 let inPage: string | undefined;
 
@@ -14,7 +14,7 @@ let inPage: string | undefined;
 export function copyText(ctx: EditorContext): string | undefined {
   const t = targets(ctx);
   const n = t && networkById(ctx, t.network);
-  const content = n && copyElements(n, t.ids);
+  const content = n && copyElements(n, t.ids, libraryOf(ctx));
   if (!content) return undefined;
   const doc = ctx.doc.getState();
   const pou = selectActivePou(doc);

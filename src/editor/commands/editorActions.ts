@@ -1,6 +1,7 @@
 // What the editor's commands do, over the document and UI stores. Shared by shortcuts, menus,
 // the palette and the canvas's pointer tools, so every path behaves the same.
 import { elementSize } from '../../model/factory';
+import { blockLibrary } from '../../model/library';
 import type { LdElement } from '../../model/elements';
 import type { Cell } from '../../model/grid';
 import type { ElementId, NetworkId } from '../../model/ids';
@@ -67,11 +68,14 @@ export function placeAt(
   return id;
 }
 
+/** The project's blocks: standard blocks and its own FBs and functions. */
+export const libraryOf = (ctx: EditorContext) => blockLibrary(ctx.doc.getState().project);
+
 /** Moves the cursor to the cell right of an element (after placing or naming it). */
 export function advancePast(ctx: EditorContext, network: NetworkId, el: LdElement) {
   const n = networkById(ctx, network);
   if (!n) return;
-  const col = Math.min(n.cols - 1, el.col + elementSize(el).cols);
+  const col = Math.min(n.cols - 1, el.col + elementSize(el, libraryOf(ctx)).cols);
   ctx.ui.getState().setCursor({ network, row: el.row, col });
 }
 
@@ -107,7 +111,7 @@ export function moveCursor(ctx: EditorContext, dRow: number, dCol: number, exten
   col = Math.max(0, Math.min(n.cols - 1, col));
   const ui = ctx.ui.getState();
   ui.setCursor({ network: n.id, row, col });
-  const el = elementAt(n, { row, col });
+  const el = elementAt(n, { row, col }, libraryOf(ctx));
   const kept = extend && ui.selection.network === n.id ? ui.selection.elements : [];
   ui.select(n.id, [...new Set([...kept, ...(el ? [el.id] : [])])]);
 }
@@ -134,7 +138,7 @@ export function targets(ctx: EditorContext): { network: NetworkId; ids: ElementI
     return { network: sel.network, ids: [...sel.elements] };
   if (!ui.cursor) return undefined;
   const n = networkById(ctx, ui.cursor.network);
-  const el = n && elementAt(n, ui.cursor);
+  const el = n && elementAt(n, ui.cursor, libraryOf(ctx));
   return n && el ? { network: n.id, ids: [el.id] } : undefined;
 }
 

@@ -1,9 +1,9 @@
 // A function or function block box: instance, number of inputs, and the operand of every pin
 // (a variable, `Instance.Pin`, or a literal such as T#5s).
-import { blockSignature } from '../../model/blocks';
 import { boxLayout } from '../../model/boxLayout';
 import type { BoxElement } from '../../model/elements';
-import { useDocumentStore } from '../../store/documentStore';
+import { declaredPinType } from '../../model/library';
+import { selectLibrary, useDocument, useDocumentStore } from '../../store/documentStore';
 import { BindingField } from './BindingField';
 import { CommitInput } from '../variables/CommitInput';
 
@@ -21,24 +21,49 @@ function withOperand(
 
 export function BoxInspector({ box }: { box: BoxElement }) {
   const store = useDocumentStore();
-  const signature = blockSignature(box.blockType);
-  const layout = boxLayout(box);
+  const library = useDocument(selectLibrary);
+  const signature = library.signature(box.blockType);
+  const layout = boxLayout(box, library);
   if (!signature || !layout) {
     return (
       <p className="rs-error-text">
-        "{box.blockType}" is not a standard function or function block; delete the box or load a project that
-        defines it.
+        "{box.blockType}" is neither a standard block nor a function block or function of this project; add a POU
+        of that name, or delete the box.
       </p>
     );
   }
   const update = store.getState().updateElement;
   const isFb = signature.kind === 'fb';
-  const powerIn = isFb ? layout.inputs.find((p) => p.type === 'BOOL')?.name : 'EN';
-  const powerOut = isFb ? layout.outputs.find((p) => p.type === 'BOOL')?.name : 'ENO';
+  const enEno = !isFb || box.executionControl === true;
+  const powerIn = enEno ? 'EN' : layout.inputs.find((p) => p.type === 'BOOL')?.name;
+  const powerOut = enEno ? 'ENO' : layout.outputs.find((p) => p.type === 'BOOL')?.name;
   const ext = signature.extensible;
+  const callee = library.userPou(box.blockType);
   return (
     <>
       <p className="rs-inspector-where">{signature.description}</p>
+      {callee && (
+        <button
+          type="button"
+          className="rs-button"
+          data-testid="open-callee"
+          title={`Open ${callee.name} in a tab`}
+          onClick={() => store.getState().setActivePou(callee.id)}
+        >
+          Open {callee.name}
+        </button>
+      )}
+      {isFb && (
+        <label className="rs-field" title="EN/ENO pins: with EN FALSE the instance is not called and keeps its outputs">
+          <span>EN/ENO</span>
+          <input
+            type="checkbox"
+            data-testid="box-execution-control"
+            checked={box.executionControl === true}
+            onChange={(e) => update(box.id, { executionControl: e.target.checked || undefined })}
+          />
+        </label>
+      )}
       {isFb && (
         <BindingField
           label="Instance"
@@ -76,7 +101,7 @@ export function BoxInspector({ box }: { box: BoxElement }) {
         .map((pin) => (
           <BindingField
             key={pin.name}
-            label={`${pin.name} : ${pin.type}`}
+            label={`${pin.name} : ${declaredPinType(pin)}`}
             value={box.inputs[pin.name] ?? ''}
             role={{ kind: 'pin', pinType: pin.type, direction: 'input' }}
             placeholder={pin.name === powerIn ? 'power flow from the left' : 'variable or literal'}
@@ -90,7 +115,7 @@ export function BoxInspector({ box }: { box: BoxElement }) {
         .map((pin) => (
           <BindingField
             key={pin.name}
-            label={`${pin.name} : ${pin.type}`}
+            label={`${pin.name} : ${declaredPinType(pin)}`}
             value={box.outputs[pin.name] ?? ''}
             role={{ kind: 'pin', pinType: pin.type, direction: 'output' }}
             placeholder={pin.name === powerOut ? 'power flow to the right' : 'assign to a variable'}

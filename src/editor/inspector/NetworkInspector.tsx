@@ -1,7 +1,7 @@
 // The selected network: label (jump target), title, comment, size, collapsed.
 import { elementSize } from '../../model/factory';
 import type { Network } from '../../model/project';
-import { useDocumentStore } from '../../store/documentStore';
+import { selectLibrary, useDocument, useDocumentStore } from '../../store/documentStore';
 import { CommitInput } from '../variables/CommitInput';
 import { labelProblem } from './networkLabel';
 
@@ -15,16 +15,17 @@ export function NetworkInspector({
   otherLabels: readonly string[];
 }) {
   const store = useDocumentStore();
+  const library = useDocument(selectLibrary);
   const update = (patch: Parameters<ReturnType<typeof store.getState>['updateNetwork']>[1]) =>
     store.getState().updateNetwork(network.id, patch);
   const needRows = Math.max(
     1,
-    ...network.elements.map((e) => e.row + elementSize(e).rows),
+    ...network.elements.map((e) => e.row + elementSize(e, library).rows),
     ...network.vlinks.map((v) => v.row + 2),
   );
   const needCols = Math.max(
     1,
-    ...network.elements.map((e) => e.col + elementSize(e).cols),
+    ...network.elements.map((e) => e.col + elementSize(e, library).cols),
     ...network.vlinks.map((v) => v.boundary),
   );
   const problem = labelProblem(network.label ?? '', otherLabels);

@@ -10,6 +10,8 @@ import { useId, useMemo, useState, type KeyboardEvent } from 'react';
 import { parseLiteral } from '../../engine/values/literals';
 import { selectActivePou, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { declareChoices, type DeclareChoice } from './declareOffer';
+import { blockLibrary } from '../../model/library';
+import { freshInstanceName } from '../../store/pouEdits';
 import { candidatesFor, rankCandidates, resolveName, type BindingRole, type Candidate } from './operands';
 import './inspector.css';
 
@@ -62,9 +64,16 @@ export function VariableInput(props: VariableInputProps) {
       candidate,
     }));
     const resolution = resolveName(project, pou, text);
-    const declares =
+    // An empty instance of the project's own FB: offer its next free name (Motor1, Motor2...).
+    const offered =
       resolution.status === 'undeclared'
-        ? declareChoices(project, text, role).map((choice) => ({ kind: 'declare' as const, choice }))
+        ? text
+        : resolution.status === 'empty' && role.kind === 'instance' && blockLibrary(project).userPou(role.blockType)
+          ? freshInstanceName(project, pou, role.blockType)
+          : undefined;
+    const declares =
+      offered !== undefined
+        ? declareChoices(project, offered, role).map((choice) => ({ kind: 'declare' as const, choice }))
         : [];
     return [...ranked, ...declares];
   }, [project, pou, role, text]);

@@ -1,5 +1,6 @@
 // "Start is not declared — declare it?": the declarations offered for an undeclared name, with a
 // sensible type for where it was typed and, on request, the next free input/output/memory address.
+import { blockSignature } from '../../model/blocks';
 import { variable } from '../../model/factory';
 import type { PinType } from '../../model/iecTypes';
 import type { Project, Variable } from '../../model/project';
@@ -20,7 +21,8 @@ export function suggestedType(role: BindingRole): string {
     case 'coil':
       return 'BOOL';
     case 'instance':
-      return role.blockType.toUpperCase();
+      // A standard block's name (TON), or a user FB as the project spells it (Motor).
+      return blockSignature(role.blockType)?.name ?? role.blockType;
     case 'pin':
       return concreteType(role.pinType);
   }

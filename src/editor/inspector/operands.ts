@@ -1,7 +1,7 @@
 // What an element or pin binds to, and which declared names fit there. Pure: used by the
 // completion list, the inspector and the "declare it?" offer.
-import { blockSignature, isFbType } from '../../model/blocks';
 import { findVariable } from '../../model/factory';
+import { blockLibrary } from '../../model/library';
 import {
   GENERIC_MEMBERS,
   INT_INFO,
@@ -60,11 +60,12 @@ export function candidatesFor(project: Project, pou: Pou, role: BindingRole): Ca
     ),
   ];
   const out: Candidate[] = [];
+  const lib = blockLibrary(project);
   for (const v of all) {
     const type = v.type.toUpperCase();
     if (accepted.has(type)) out.push({ text: v.name, type, detail: describe(v) });
-    if (role.kind === 'instance' || !isFbType(type)) continue;
-    const sig = blockSignature(type);
+    if (role.kind === 'instance' || !lib.isFbType(type)) continue;
+    const sig = lib.signature(type);
     if (!sig) continue;
     // Contacts read any pin; coils and input pins write, so only FB inputs make sense for coils.
     const pins = role.kind === 'coil' ? sig.inputs : [...sig.inputs, ...sig.outputs];
@@ -109,9 +110,10 @@ export function resolveName(project: Project, pou: Pou, text: string): Resolutio
   if (!v) return { status: 'other', message: `"${base}" is not declared` };
   if (rest.length > 0) return { status: 'other', message: `"${name}" has too many dots` };
   const type = v.type.toUpperCase();
-  const sig = isFbType(type) ? blockSignature(type) : undefined;
+  const lib = blockLibrary(project);
+  const sig = lib.isFbType(type) ? lib.signature(type) : undefined;
   if (sig) {
-    const pin = [...sig.inputs, ...sig.outputs].find((p) => p.name === member.toUpperCase());
+    const pin = [...sig.inputs, ...sig.outputs].find((p) => p.name.toUpperCase() === member.toUpperCase());
     return pin
       ? { status: 'declared', type: pin.type }
       : { status: 'other', message: `${type} has no pin ${member}` };

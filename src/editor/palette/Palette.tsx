@@ -1,13 +1,14 @@
 // The palette: pick a tool, then click a cell on the canvas (or press the shortcut shown in each
-// tooltip to place at the keyboard cursor). Blocks come from a searchable list of every standard
-// function block and library function.
+// tooltip to place at the keyboard cursor). Blocks come from a searchable list of the project's
+// own function blocks and functions, then every standard function block and library function.
 import { useMemo, useState } from 'react';
 import type { BlockSignature } from '../../model/blocks';
+import { selectActivePou, selectLibrary, useDocument } from '../../store/documentStore';
 import { useUi, useUiStore, type Tool } from '../../store/uiStore';
 import type { EditorContext } from '../commands/editorActions';
 import { keyLabel } from '../commands/keys';
 import { commandById } from '../commands/registry';
-import { boxTemplate, PALETTE_ITEMS, searchBlocks, type PaletteItem } from './paletteItems';
+import { boxTemplate, PALETTE_ITEMS, pinSummary, searchBlocks, type PaletteItem } from './paletteItems';
 import './palette.css';
 
 const GROUPS: readonly PaletteItem['group'][] = ['Contacts', 'Coils', 'Wires', 'Control'];
@@ -23,7 +24,9 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
   const ui = useUiStore();
   const tool = useUi((s) => s.tool);
   const [query, setQuery] = useState('');
-  const blocks = useMemo(() => searchBlocks(query), [query]);
+  const library = useDocument(selectLibrary);
+  const editing = useDocument((s) => selectActivePou(s)?.name);
+  const blocks = useMemo(() => searchBlocks(query, library, editing), [query, library, editing]);
 
   const arm = (name: string, t: Tool) => {
     const current = ui.getState().tool;
@@ -31,7 +34,7 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
     ui.getState().setTool(current.kind === 'place' && current.name === name ? { kind: 'select' } : t);
   };
   const armBlock = (sig: BlockSignature) =>
-    arm(`block-${sig.name}`, { kind: 'place', name: `block-${sig.name}`, template: boxTemplate(sig) });
+    arm(`block-${sig.name}`, { kind: 'place', name: `block-${sig.name}`, template: boxTemplate(sig, library) });
   const runCommand = (id: string) => commandById(id)?.run(ctx);
 
   return (
@@ -111,11 +114,14 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
                 className="rs-palette-item rs-palette-block"
                 aria-pressed={isActive(tool, `block-${sig.name}`)}
                 data-testid={`palette-block-${sig.name}`}
-                title={`${sig.name} (${sig.kind === 'fb' ? 'function block' : 'function'}): ${sig.description} — B opens the picker at the cursor`}
+                title={`${sig.name} (${sig.category === 'user' ? 'this project’s ' : ''}${sig.kind === 'fb' ? 'function block' : 'function'}): ${sig.description}\nPins: ${pinSummary(sig)}\nB opens the picker at the cursor`}
                 onClick={() => armBlock(sig)}
               >
                 <span className="rs-mono">{sig.name}</span>
-                <span className="rs-palette-kind">{sig.kind === 'fb' ? 'FB' : 'fn'}</span>
+                <span className="rs-palette-kind">
+                  {sig.category === 'user' ? 'user ' : ''}
+                  {sig.kind === 'fb' ? 'FB' : 'fn'}
+                </span>
               </button>
             </li>
           ))}

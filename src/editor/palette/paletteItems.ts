@@ -1,7 +1,9 @@
 // Everything the palette can place, with its keyboard shortcut (the same shortcut the command
-// registry binds). Blocks (every standard FB and library function) come from src/model/blocks.ts.
+// registry binds). Blocks (every standard FB and library function) come from src/model/blocks.ts,
+// the project's own FBs and functions from its block library (src/model/library.ts).
 import { boxLayoutFor } from '../../model/boxLayout';
 import { FB_SIGNATURES, FUNCTION_SIGNATURES, type BlockSignature } from '../../model/blocks';
+import { declaredPinType, STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { CoilType, ContactType } from '../../model/elements';
 import type { ElementTemplate } from '../../store/networkEdits';
 
@@ -119,8 +121,8 @@ export const PALETTE_ITEMS: readonly PaletteItem[] = [
 ];
 
 /** The template of a box for a block: inputs/outputs empty, FB instance to be named. */
-export function boxTemplate(sig: BlockSignature): ElementTemplate {
-  const layout = boxLayoutFor(sig.name);
+export function boxTemplate(sig: BlockSignature, library: BlockLibrary = STANDARD_LIBRARY): ElementTemplate {
+  const layout = boxLayoutFor(sig.name, undefined, library);
   return {
     kind: 'box',
     blockType: sig.name,
@@ -134,6 +136,7 @@ export function boxTemplate(sig: BlockSignature): ElementTemplate {
 export const ALL_BLOCKS: readonly BlockSignature[] = [...FB_SIGNATURES, ...FUNCTION_SIGNATURES];
 
 const CATEGORY_ORDER: readonly BlockSignature['category'][] = [
+  'user',
   'timer',
   'counter',
   'edge',
@@ -146,18 +149,30 @@ const CATEGORY_ORDER: readonly BlockSignature['category'][] = [
   'conversion',
 ];
 
-/** Blocks whose name, category or description matches the query, FBs and common blocks first. */
-export function searchBlocks(query: string): BlockSignature[] {
+/** "Start : BOOL, Stop : BOOL → Run : BOOL": a block's pins for tooltips and the block picker. */
+export function pinSummary(sig: BlockSignature): string {
+  const pins = (list: BlockSignature['inputs']) => list.map((p) => `${p.name} : ${declaredPinType(p)}`).join(', ');
+  return `${pins(sig.inputs) || '(no inputs)'} → ${pins(sig.outputs) || '(no outputs)'}`;
+}
+
+/**
+ * Blocks whose name, category or description matches the query: the project's own blocks, then
+ * FBs and common blocks. `exclude` leaves out a block by name (the POU being edited: no recursion).
+ */
+export function searchBlocks(query: string, library: BlockLibrary = STANDARD_LIBRARY, exclude?: string): BlockSignature[] {
   const q = query.trim().toUpperCase();
   const rank = (s: BlockSignature) => {
     if (!q) return 0;
-    if (s.name === q) return 0;
-    if (s.name.startsWith(q)) return 1;
-    if (s.name.includes(q)) return 2;
+    const name = s.name.toUpperCase();
+    if (name === q) return 0;
+    if (name.startsWith(q)) return 1;
+    if (name.includes(q)) return 2;
     if (s.category.toUpperCase().includes(q) || s.description.toUpperCase().includes(q)) return 3;
     return -1;
   };
-  return ALL_BLOCKS.map((s) => ({ s, r: rank(s) }))
+  const skip = exclude?.toUpperCase();
+  const users = library.userBlocks.filter((s) => s.name.toUpperCase() !== skip);
+  return [...users, ...ALL_BLOCKS].map((s) => ({ s, r: rank(s) }))
     .filter((x) => x.r >= 0)
     .sort((a, b) => a.r - b.r || CATEGORY_ORDER.indexOf(a.s.category) - CATEGORY_ORDER.indexOf(b.s.category))
     .map((x) => x.s);

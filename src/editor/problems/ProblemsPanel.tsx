@@ -4,6 +4,7 @@ import { useMemo, useState } from 'react';
 import type { Diagnostic } from '../../engine/api';
 import type { Pou, Project } from '../../model/project';
 import { elementCells } from '../../model/factory';
+import { blockLibrary } from '../../model/library';
 import { useDocumentStore } from '../../store/documentStore';
 import { useUiStore } from '../../store/uiStore';
 import { countBySeverity, diagnosticCell, diagnosticNetwork, sortDiagnostics } from './describe';
@@ -17,7 +18,7 @@ function placeOf(project: Project, d: Diagnostic) {
   const network = pou?.networks[d.network];
   if (!pou || !network) return { pou, network: undefined, cell: undefined, element: undefined };
   const element = d.elementId ? network.elements.find((e) => e.id === d.elementId) : undefined;
-  const cell = d.cell ?? (element ? elementCells(element)[0] : undefined);
+  const cell = d.cell ?? (element ? elementCells(element, blockLibrary(project))[0] : undefined);
   return { pou, network, cell, element };
 }
 

@@ -2,6 +2,7 @@
 // declaration the editor would offer for it (BOOL for contacts and coils, the block type for an
 // FB instance, the pin's type for a box operand), so they can all be declared in one step.
 import { boxLayout } from '../../model/boxLayout';
+import { blockLibrary, type BlockLibrary } from '../../model/library';
 import { variable } from '../../model/factory';
 import type { Pou, Project, Variable } from '../../model/project';
 import { suggestedType } from '../inspector/declareOffer';
@@ -9,14 +10,14 @@ import type { BindingRole } from '../inspector/operands';
 import { parseLiteral } from '../../engine/values/literals';
 import { identifierProblem } from './validation';
 
-function* namedOperands(pou: Pou): Generator<{ name: string; role: BindingRole }> {
+function* namedOperands(pou: Pou, lib: BlockLibrary): Generator<{ name: string; role: BindingRole }> {
   for (const network of pou.networks) {
     for (const el of network.elements) {
       if (el.kind === 'contact' && el.contact !== 'NOT')
         yield { name: el.variable, role: { kind: 'contact' } };
       else if (el.kind === 'coil') yield { name: el.variable, role: { kind: 'coil' } };
       else if (el.kind === 'box') {
-        const layout = boxLayout(el);
+        const layout = boxLayout(el, lib);
         if (!layout) continue;
         if (el.instance !== undefined && layout.signature.kind === 'fb') {
           yield { name: el.instance, role: { kind: 'instance', blockType: layout.signature.name } };
@@ -41,7 +42,7 @@ function* namedOperands(pou: Pou): Generator<{ name: string; role: BindingRole }
 export function undeclaredVariables(project: Project, pou: Pou): Variable[] {
   const out = new Map<string, Variable>();
   const declared = new Set([...pou.variables, ...project.globals].map((v) => v.name.toUpperCase()));
-  for (const { name, role } of namedOperands(pou)) {
+  for (const { name, role } of namedOperands(pou, blockLibrary(project))) {
     const trimmed = name.trim();
     const key = trimmed.toUpperCase();
     if (trimmed === '' || declared.has(key) || out.has(key) || identifierProblem(trimmed)) continue;

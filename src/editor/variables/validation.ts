@@ -1,6 +1,7 @@
 // Checks a variable table the way a PLC programmer expects to be told about mistakes: per row and
 // per field, in plain words. Pure functions: the table shows the result inline.
-import { blockSignature, isFbType } from '../../model/blocks';
+import { blockSignature } from '../../model/blocks';
+import { blockLibrary, STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import {
   IDENTIFIER_RE,
   isElementaryType,
@@ -106,8 +107,8 @@ export function identifierProblem(name: string): string | undefined {
   return undefined;
 }
 
-export const isKnownVariableType = (type: string): boolean =>
-  isElementaryType(type.toUpperCase()) || isFbType(type);
+export const isKnownVariableType = (type: string, lib: BlockLibrary = STANDARD_LIBRARY): boolean =>
+  isElementaryType(type.toUpperCase()) || lib.isFbType(type);
 
 /** An address in one canonical spelling, so %ix0.0 and %IX0.0 compare equal. */
 export function canonicalLocation(loc: ParsedLocation): string {
@@ -128,7 +129,12 @@ export function addressOwners(project: Project): Map<string, { pou: string | und
   return owners;
 }
 
-function checkLocation(v: Variable, index: number, issues: VariableIssue[]): ParsedLocation | undefined {
+function checkLocation(
+  v: Variable,
+  index: number,
+  issues: VariableIssue[],
+  lib: BlockLibrary,
+): ParsedLocation | undefined {
   const text = v.location?.trim();
   if (!text) return undefined;
   const loc = parseLocation(text);
@@ -141,8 +147,8 @@ function checkLocation(v: Variable, index: number, issues: VariableIssue[]): Par
     return undefined;
   }
   const type = v.type.trim().toUpperCase();
-  if (isFbType(type)) {
-    issues.push({ index, field: 'location', message: `a ${type} instance cannot sit at an address` });
+  if (lib.isFbType(type)) {
+    issues.push({ index, field: 'location', message: `a ${lib.signature(type)?.name ?? type} instance cannot sit at an address` });
   } else if (isElementaryType(type) && !locationAdmits(loc, type)) {
     const sizeWords = {
       X: 'a bit (BOOL)',
@@ -192,6 +198,8 @@ export function validateVariables(
   const byName = new Map<string, number>();
   const localAddresses = new Map<string, number>();
   const owners = scope.project ? addressOwners(scope.project) : undefined;
+  const lib = blockLibrary(scope.project);
+  const owner = scope.pou === undefined ? undefined : scope.project?.pous.find((p) => p.name === scope.pou);
   variables.forEach((v, index) => {
     const nameProblem = identifierProblem(v.name);
     if (nameProblem) issues.push({ index, field: 'name', message: nameProblem });
@@ -208,10 +216,16 @@ export function validateVariables(
     }
     const type = v.type.trim().toUpperCase();
     if (type === '') issues.push({ index, field: 'type', message: 'choose a type' });
-    else if (!isKnownVariableType(type))
+    else if (!isKnownVariableType(type, lib))
       issues.push({ index, field: 'type', message: `unknown type "${v.type}"` });
+    else if (owner?.kind === 'FUNCTION' && lib.isFbType(type))
+      issues.push({
+        index,
+        field: 'type',
+        message: `a FUNCTION cannot declare a ${lib.signature(type)?.name ?? type} instance: its state would be lost between calls`,
+      });
 
-    const loc = checkLocation(v, index, issues);
+    const loc = checkLocation(v, index, issues, lib);
     if (loc) {
       const key = canonicalLocation(loc);
       const first = localAddresses.get(key);
@@ -236,8 +250,8 @@ export function validateVariables(
     }
 
     if (v.initial !== undefined && v.initial.trim() !== '') {
-      if (isFbType(type))
-        issues.push({ index, field: 'initial', message: `a ${type} instance takes no initial value` });
+      if (lib.isFbType(type))
+        issues.push({ index, field: 'initial', message: `a ${lib.signature(type)?.name ?? type} instance takes no initial value` });
       else if (isElementaryType(type)) {
         const problem = checkInitialValue(v.initial, type);
         if (problem) issues.push({ index, field: 'initial', message: problem });
