@@ -93,6 +93,7 @@ export const projectSchema = z
         })
         .strict(),
     ),
+    scenarios: z.array(z.object({ name: z.string().min(1), csv: z.string() }).strict()).optional(),
     extensions,
   })
   .strict();

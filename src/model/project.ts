@@ -79,6 +79,12 @@ export interface Task {
 
 export type Profile = 'iec' | 'openplc';
 
+/** A test scenario stored in the project: its name and its CSV text (src/sim/scenario.ts). */
+export interface Scenario {
+  readonly name: string;
+  readonly csv: string;
+}
+
 export interface Project {
   readonly format: typeof PROJECT_FORMAT;
   readonly version: typeof PROJECT_VERSION;
@@ -90,5 +96,10 @@ export interface Project {
   /** Global variables (configuration/resource level in PLCopen). */
   readonly globals: readonly Variable[];
   readonly tasks: readonly Task[];
+  /**
+   * Test scenarios (README "Test scenarios"): inputs per scan and expected values as CSV, run by
+   * the Tests panel and `rungsmith test`. Not part of the program: editing them is no online change.
+   */
+  readonly scenarios?: readonly Scenario[];
   readonly extensions?: Readonly<Record<string, unknown>>;
 }
