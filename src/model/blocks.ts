@@ -17,7 +17,20 @@ export interface BlockSignature {
   readonly outputs: readonly PinSignature[];
   /** Extensible inputs: the last input pin repeats as PREFIX<start>..PREFIX<start+n-1>. */
   readonly extensible?: { readonly prefix: string; readonly start: number; readonly min: number; readonly max: number };
-  readonly category: 'timer' | 'counter' | 'edge' | 'bistable' | 'move' | 'arithmetic' | 'comparison' | 'bitwise' | 'selection' | 'conversion' | 'user';
+  /** 'user': a POU of the project; 'external': a block the simulator does not run (externalBlocks.ts). */
+  readonly category:
+    | 'timer'
+    | 'counter'
+    | 'edge'
+    | 'bistable'
+    | 'move'
+    | 'arithmetic'
+    | 'comparison'
+    | 'bitwise'
+    | 'selection'
+    | 'conversion'
+    | 'user'
+    | 'external';
   readonly description: string;
 }
 

@@ -9,9 +9,16 @@
 //   then VAR_IN_OUT (an in-out pin appears on both sides, joined through the box).
 // A FUNCTION box shows EN/ENO like a standard function; an FB box shows them when the box asks
 // (BoxElement.executionControl), as for standard FBs.
+//
+// External blocks (externalBlocks.ts) resolve like user blocks, through a synthesized POU with no
+// networks: the project's `externalBlocks`, then OpenPLC's vendor libraries (vendorBlocks.ts).
+// Precedence by name: standard block, then the project's own POU, then the project's external
+// block, then the vendor block.
 import { blockSignature, FB_SIGNATURES, FUNCTION_SIGNATURES, type BlockSignature, type PinSignature } from './blocks';
+import { externalBlockPou, externalSignature } from './externalBlocks';
 import { isElementaryType, type PinType } from './iecTypes';
-import type { Pou, Project } from './project';
+import type { ExternalBlock, Pou, Project } from './project';
+import { VENDOR_BLOCKS } from './vendorBlocks';
 
 /** A pin of a user block: its declared type text, kept even when it is not an elementary type. */
 export interface UserPinSignature extends PinSignature {
@@ -24,13 +31,20 @@ export interface UserPinSignature extends PinSignature {
 export interface BlockLibrary {
   /** Standard or user block by (case-insensitive) name. A user POU never hides a standard block. */
   signature(name: string): BlockSignature | undefined;
-  /** The POU behind a user block (FUNCTION_BLOCK or FUNCTION), if the name is one. */
+  /**
+   * The POU behind a user block (FUNCTION_BLOCK or FUNCTION), if the name is one; for an external
+   * block, its synthesized POU (no networks, `extensions.external`, never in `project.pous`).
+   */
   userPou(name: string): Pou | undefined;
-  /** True for a standard FB type or a user FUNCTION_BLOCK. */
+  /** True for a standard FB type, a user FUNCTION_BLOCK or an external function block. */
   isFbType(type: string): boolean;
+  /** True when the name resolves to an external block (the simulator does not run its body). */
+  isExternal(name: string): boolean;
   /** The project's own blocks, in project order. */
   readonly userBlocks: readonly BlockSignature[];
-  /** Standard blocks then user blocks. */
+  /** External blocks: the project's, then the vendor libraries', library by library (category 'external'). */
+  readonly externalBlocks: readonly BlockSignature[];
+  /** Standard blocks, user blocks, then external blocks. */
   all(): readonly BlockSignature[];
 }
 
@@ -71,42 +85,82 @@ export function pouSignature(pou: Pou): BlockSignature | undefined {
 
 const STANDARD: readonly BlockSignature[] = [...FB_SIGNATURES, ...FUNCTION_SIGNATURES];
 
-function makeLibrary(pous: readonly Pou[]): BlockLibrary {
-  const users = new Map<string, { pou: Pou; sig: BlockSignature }>();
-  for (const pou of pous) {
-    const sig = pouSignature(pou);
-    const key = pou.name.trim().toUpperCase();
-    if (sig && !blockSignature(key) && !users.has(key)) users.set(key, { pou, sig });
+interface Entry {
+  readonly pou: Pou;
+  readonly sig: BlockSignature;
+}
+
+const externalEntry = (block: ExternalBlock, origin: 'vendor' | 'project'): Entry | undefined => {
+  const pou = externalBlockPou(block, origin);
+  const base = pouSignature(pou);
+  return base && { pou, sig: externalSignature(base, pou) };
+};
+
+/** Adds the entries whose name is not taken yet (by a standard block or an earlier entry). */
+function addEntries(into: Map<string, Entry>, entries: Iterable<Entry | undefined>): Entry[] {
+  const added: Entry[] = [];
+  for (const e of entries) {
+    const key = e?.pou.name.trim().toUpperCase();
+    if (!e || !key || blockSignature(key) || into.has(key)) continue;
+    into.set(key, e);
+    added.push(e);
   }
-  const userBlocks = [...users.values()].map((u) => u.sig);
-  const all = [...STANDARD, ...userBlocks];
+  return added;
+}
+
+/** The vendor blocks' entries, built once: they are the same for every project. */
+let vendorEntries: readonly Entry[] | undefined;
+const vendor = () => (vendorEntries ??= VENDOR_BLOCKS.map((b) => externalEntry(b, 'vendor')).filter((e) => e !== undefined));
+
+function makeLibrary(pous: readonly Pou[], externals: readonly ExternalBlock[], withVendor: boolean): BlockLibrary {
+  const byName = new Map<string, Entry>();
+  const users = addEntries(
+    byName,
+    pous.map((pou) => {
+      const sig = pouSignature(pou);
+      return sig && { pou, sig };
+    }),
+  );
+  const ext = [...addEntries(byName, externals.map((b) => externalEntry(b, 'project'))), ...(withVendor ? addEntries(byName, vendor()) : [])];
+  const userBlocks = users.map((u) => u.sig);
+  const externalBlocks = ext.map((e) => e.sig);
+  const externalKeys = new Set(ext.map((e) => e.pou.name.trim().toUpperCase()));
+  const all = [...STANDARD, ...userBlocks, ...externalBlocks];
+  const find = (name: string) => byName.get(name.trim().toUpperCase());
   return {
-    signature: (name) => blockSignature(name) ?? users.get(name.trim().toUpperCase())?.sig,
-    userPou: (name) => users.get(name.trim().toUpperCase())?.pou,
-    isFbType: (type) => {
-      const s = blockSignature(type) ?? users.get(type.trim().toUpperCase())?.sig;
-      return s?.kind === 'fb';
-    },
+    signature: (name) => blockSignature(name) ?? find(name)?.sig,
+    userPou: (name) => (blockSignature(name) ? undefined : find(name)?.pou),
+    isFbType: (type) => (blockSignature(type) ?? find(type)?.sig)?.kind === 'fb',
+    isExternal: (name) => !blockSignature(name) && externalKeys.has(name.trim().toUpperCase()),
     userBlocks,
+    externalBlocks,
     all: () => all,
   };
 }
 
-/** The standard library alone (no project). */
-export const STANDARD_LIBRARY: BlockLibrary = makeLibrary([]);
+/** The standard library alone (no project, no vendor blocks). */
+export const STANDARD_LIBRARY: BlockLibrary = makeLibrary([], [], false);
 
-const cache = new WeakMap<readonly Pou[], BlockLibrary>();
+const NO_EXTERNALS: readonly ExternalBlock[] = [];
+const cache = new WeakMap<readonly Pou[], WeakMap<readonly ExternalBlock[], BlockLibrary>>();
 
 /**
- * The blocks of a project. Memoised on the project's `pous` array: projects are immutable, so an
- * edit that changes a POU gives a new array and a new library.
+ * The blocks of a project: standard, its own POUs, its external blocks and the vendor blocks.
+ * Memoised on the project's `pous` and `externalBlocks` arrays: projects are immutable, so an edit
+ * that changes a POU or an external block gives a new array and a new library.
  */
-export function blockLibrary(project: Pick<Project, 'pous'> | undefined): BlockLibrary {
+export function blockLibrary(project: Pick<Project, 'pous' | 'externalBlocks'> | undefined): BlockLibrary {
   if (!project) return STANDARD_LIBRARY;
-  let lib = cache.get(project.pous);
+  const externals = project.externalBlocks ?? NO_EXTERNALS;
+  let byExternals = cache.get(project.pous);
+  if (!byExternals) {
+    byExternals = new WeakMap();
+    cache.set(project.pous, byExternals);
+  }
+  let lib = byExternals.get(externals);
   if (!lib) {
-    lib = makeLibrary(project.pous);
-    cache.set(project.pous, lib);
+    lib = makeLibrary(project.pous, externals, true);
+    byExternals.set(externals, lib);
   }
   return lib;
 }

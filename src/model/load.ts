@@ -74,6 +74,27 @@ const pouSchema = z
   })
   .strict();
 
+const externalBlockSchema = z
+  .object({
+    name: z.string().min(1),
+    kind: z.enum(['FUNCTION_BLOCK', 'FUNCTION']),
+    pins: z.array(
+      z
+        .object({
+          name: z.string().min(1),
+          dir: z.enum(['in', 'out', 'inOut']),
+          type: z.string().min(1).optional(),
+          initial: z.string().optional(),
+        })
+        .strict(),
+    ),
+    returnType: z.string().min(1).optional(),
+    library: z.string().optional(),
+    vendor: z.string().optional(),
+    comment: z.string().optional(),
+  })
+  .strict();
+
 export const projectSchema = z
   .object({
     format: z.literal(PROJECT_FORMAT),
@@ -93,6 +114,7 @@ export const projectSchema = z
         })
         .strict(),
     ),
+    externalBlocks: z.array(externalBlockSchema).optional(),
     scenarios: z.array(z.object({ name: z.string().min(1), csv: z.string() }).strict()).optional(),
     extensions,
   })
@@ -192,5 +214,25 @@ function structuralErrors(project: Project): LoadError[] {
       });
     });
   });
+  errors.push(...externalBlockErrors(project));
   return errors.slice(0, 50);
+}
+
+/** External block names are unique, and so are the pin names of each (an in-out pin is one pin). */
+function externalBlockErrors(project: Project): LoadError[] {
+  const errors: LoadError[] = [];
+  const names = new Set<string>();
+  (project.externalBlocks ?? []).forEach((block, bi) => {
+    const bp = `externalBlocks[${bi}]`;
+    const key = block.name.toUpperCase();
+    if (names.has(key)) errors.push({ path: `${bp}.name`, message: `duplicate external block "${block.name}"` });
+    names.add(key);
+    const pins = new Set<string>();
+    block.pins.forEach((pin, pi) => {
+      const pinKey = pin.name.toUpperCase();
+      if (pins.has(pinKey)) errors.push({ path: `${bp}.pins[${pi}].name`, message: `external block "${block.name}" has the pin "${pin.name}" twice` });
+      pins.add(pinKey);
+    });
+  });
+  return errors;
 }

@@ -79,6 +79,36 @@ export interface Task {
 
 export type Profile = 'iec' | 'openplc';
 
+/** A pin of an external block: its direction on the box and its declared type. */
+export interface ExternalBlockPin {
+  readonly name: string;
+  /** 'in' = VAR_INPUT, 'out' = VAR_OUTPUT, 'inOut' = VAR_IN_OUT. */
+  readonly dir: 'in' | 'out' | 'inOut';
+  /** Declared type text (INT, STRING, ...); absent when the file does not tell (the pin is ANY). */
+  readonly type?: string;
+  /** Initial value as IEC literal text; absent for the type's default. */
+  readonly initial?: string;
+}
+
+/**
+ * A block the simulator cannot run (an OpenPLC library block for MQTT, sockets, board I/O, or a
+ * block a file calls without defining it), known only by its interface. It is called like a user
+ * FB or function with an empty body: its outputs hold their initial values unless the watch table
+ * or a scenario sets them. See src/model/externalBlocks.ts.
+ */
+export interface ExternalBlock {
+  readonly name: string;
+  readonly kind: 'FUNCTION_BLOCK' | 'FUNCTION';
+  readonly pins: readonly ExternalBlockPin[];
+  /** FUNCTION only: the result type (the `OUT` pin); else the type of an out pin named OUT. */
+  readonly returnType?: string;
+  /** The library it comes from (e.g. 'MQTT'), when known. */
+  readonly library?: string;
+  readonly vendor?: string;
+  /** What it does, for the palette and tooltips. */
+  readonly comment?: string;
+}
+
 /** A test scenario stored in the project: its name and its CSV text (src/sim/scenario.ts). */
 export interface Scenario {
   readonly name: string;
@@ -101,5 +131,11 @@ export interface Project {
    * the Tests panel and `rungsmith test`. Not part of the program: editing them is no online change.
    */
   readonly scenarios?: readonly Scenario[];
+  /**
+   * Blocks the project calls whose interface only the project knows (e.g. an imported file's
+   * vendor blocks that are not in the shipped OpenPLC libraries, with the pins the file wires).
+   * Not POUs of the project: export writes only their calls.
+   */
+  readonly externalBlocks?: readonly ExternalBlock[];
   readonly extensions?: Readonly<Record<string, unknown>>;
 }
