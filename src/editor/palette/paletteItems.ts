@@ -147,6 +147,8 @@ const CATEGORY_ORDER: readonly BlockSignature['category'][] = [
   'bitwise',
   'selection',
   'conversion',
+  // Vendor library blocks the simulator does not run (library.externalBlocks): last.
+  'external',
 ];
 
 /** "Start : BOOL, Stop : BOOL → Run : BOOL": a block's pins for tooltips and the block picker. */
