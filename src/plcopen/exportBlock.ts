@@ -1,9 +1,13 @@
 // A box (function or FB call) as a PLCopen <block> with every pin, and its operands as
-// in/outVariables beside the pins.
+// in/outVariables beside the pins. A user block's pins come from its POU's interface (the block
+// library); a VAR_IN_OUT pin is written in inputVariables and in outputVariables under one
+// formalParameter, as Beremiz writes it. EN/ENO pins (functions; FBs with executionControl) are
+// written as pins: TC6 v2.01 has no executionControl attribute on <block>.
 import type { BoxElement } from '../model/elements';
 import { BOX_MARGIN_X, BOX_MARGIN_Y, CELL_W, ROW_H, boundaryX, type Point } from './geometry';
 import type { Source } from './gridGraph';
 import { boxLayout } from '../model/boxLayout';
+import type { BlockLibrary } from '../model/library';
 import type { Connect, IdAllocator, Placed } from './exportBody';
 import type { XmlWriter } from './xml/write';
 
@@ -13,12 +17,15 @@ export const rel = (w: XmlWriter, p: Point, origin: Point) =>
   w.empty('relPosition', { x: p.x - origin.x, y: p.y - origin.y });
 
 /** Pins of a box: from its standard layout, or from its operand names for blocks Rungsmith does not know. */
-export function boxPins(el: BoxElement): {
+export function boxPins(
+  el: BoxElement,
+  library: BlockLibrary,
+): {
   inputs: { name: string; off: number }[];
   outputs: { name: string; off: number }[];
   rows: number;
 } {
-  const layout = boxLayout(el);
+  const layout = boxLayout(el, library);
   if (layout) {
     return {
       inputs: layout.inputs.map((p) => ({ name: p.name, off: p.rowOffset })),
@@ -40,10 +47,16 @@ export function writeBox(
   inBar: (pin: string) => number | undefined,
   connect: Connect,
   addData: () => void,
+  library: BlockLibrary,
 ): void {
-  const bp = boxPins(el);
+  const bp = boxPins(el, library);
+  const outs = p.outs ?? p.pins;
   const first = bp.inputs[0] ?? bp.outputs[0];
-  const firstPin = first ? p.pins.get(first.name)! : pt(boundaryX(el.col) + BOX_MARGIN_X, 0);
+  const firstPin = bp.inputs[0]
+    ? p.pins.get(bp.inputs[0].name)!
+    : first
+      ? outs.get(first.name)!
+      : pt(boundaryX(el.col) + BOX_MARGIN_X, 0);
   const origin = pt(firstPin.x, firstPin.y - ROW_H / 2 - (first?.off ?? 0) * ROW_H + BOX_MARGIN_Y);
   const width = 2 * CELL_W - 2 * BOX_MARGIN_X;
   // Operands: literals and variables beside unwired pins become in/outVariables joined to the pin.
@@ -92,7 +105,7 @@ export function writeBox(
         for (const o of bp.outputs) {
           w.line(() =>
             w.open('variable', { formalParameter: o.name }, () =>
-              w.open('connectionPointOut', undefined, () => rel(w, p.pins.get(o.name)!, origin)),
+              w.open('connectionPointOut', undefined, () => rel(w, outs.get(o.name)!, origin)),
             ),
           );
         }
@@ -113,7 +126,7 @@ export function writeBox(
     });
   }
   for (const o of operandOut) {
-    const at = p.pins.get(o.pin)!;
+    const at = outs.get(o.pin)!;
     const vw = Math.max(30, o.text.length * 7);
     const vo = pt(at.x + 10, at.y - 10);
     w.open('outVariable', { localId: o.id, height: 20, width: vw, negated: 'false' }, () => {

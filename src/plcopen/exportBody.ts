@@ -1,6 +1,7 @@
 // One network grid → PLCopen LD objects with real coordinates, relPosition on every pin and wire
 // points on every connection (first point at the consumer, last at the producer).
 import type { CoilElement, ContactElement, LdElement } from '../model/elements';
+import type { BlockLibrary } from '../model/library';
 import type { Network } from '../model/project';
 import {
   BOX_MARGIN_X,
@@ -26,8 +27,10 @@ export interface IdAllocator {
 
 export interface Placed {
   readonly id: number;
-  /** Absolute pin positions by pin name. */
+  /** Absolute pin positions by pin name (inputs; both pins of a 1-cell element). */
   readonly pins: Map<string, Point>;
+  /** A box's output pins (an in-out pin has one of each name on either side). */
+  readonly outs?: Map<string, Point>;
   /** Pin name written in formalParameter when this element is a connection's source (blocks only). */
   readonly formal?: (pin: string) => string;
 }
@@ -51,8 +54,14 @@ function coilAttrs(el: CoilElement): Record<string, string | undefined> {
 }
 
 /** Writes the LD objects of one network starting at y = top; returns the y below it. */
-export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAllocator): number {
-  const g = gridGraph(net);
+export function writeNetwork(
+  w: XmlWriter,
+  net: Network,
+  top: number,
+  ids: IdAllocator,
+  library: BlockLibrary,
+): number {
+  const g = gridGraph(net, library);
   const keep = preserved<PreservedNetwork>(net.extensions);
   if (net.comment || net.title) {
     const id = ids.next();
@@ -81,7 +90,7 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
   for (const raw of keep?.objects ?? []) w.raw(raw.replace(/localId="\d+"/, `localId="${ids.next()}"`));
 
   const railId = ids.next();
-  const placed: Placed[] = net.elements.map((el) => placeElement(el, top, ids));
+  const placed: Placed[] = net.elements.map((el) => placeElement(el, top, ids, library));
   const railRows = new Set<number>();
   g.sources.forEach((pins, ei) =>
     pins.forEach((srcs, pin) => {
@@ -106,7 +115,7 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
   const sourcePoint = (s: Source, consumer: Point): { ref: number; formal?: string; at: Point } => {
     if (s.kind === 'rail') return { ref: railId, at: pt(LEFT_X, consumer.y) };
     const p = placed[s.el]!;
-    return { ref: p.id, formal: p.formal?.(s.pin), at: p.pins.get(s.pin)! };
+    return { ref: p.id, formal: p.formal?.(s.pin), at: (p.outs ?? p.pins).get(s.pin)! };
   };
   // The hottest path of an export: one line per input pin, built as a string.
   const writeConnections = (
@@ -139,12 +148,12 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
   net.elements.forEach((el, ei) => {
     const p = placed[ei]!;
     const srcOf = (pin: string) => g.sources.get(ei)?.get(pin);
-    const pins = elementPins(el);
+    const pins = elementPins(el, library);
     const inBar = (pin: string) => {
       const pp = pins.inputs.find((x) => x.pin === pin);
       return pp ? barOf(pp.row, pp.boundary) : undefined;
     };
-    writeElement(w, el, p, ids, srcOf, inBar, writeConnections, keep?.elementData?.[el.id]);
+    writeElement(w, el, p, ids, srcOf, inBar, writeConnections, keep?.elementData?.[el.id], library);
   });
 
   const rightRows = [...g.rightRail.keys()].sort((a, b) => a - b);
@@ -161,7 +170,7 @@ export function writeNetwork(w: XmlWriter, net: Network, top: number, ids: IdAll
   return top + height;
 }
 
-function placeElement(el: LdElement, top: number, ids: IdAllocator): Placed {
+function placeElement(el: LdElement, top: number, ids: IdAllocator, library: BlockLibrary): Placed {
   const x0 = boundaryX(el.col);
   const y = rowY(top, el.row);
   switch (el.kind) {
@@ -191,13 +200,14 @@ function placeElement(el: LdElement, top: number, ids: IdAllocator): Placed {
     case 'link':
       return { id: -1, pins: new Map() };
     case 'box': {
-      const bp = boxPins(el);
+      const bp = boxPins(el, library);
       const left = x0 + BOX_MARGIN_X;
       const right = x0 + 2 * CELL_W - BOX_MARGIN_X;
       const pins = new Map<string, Point>();
+      const outs = new Map<string, Point>();
       for (const i of bp.inputs) pins.set(i.name, pt(left, rowY(top, el.row + i.off)));
-      for (const o of bp.outputs) pins.set(o.name, pt(right, rowY(top, el.row + o.off)));
-      return { id: ids.next(), pins, formal: (pin) => pin };
+      for (const o of bp.outputs) outs.set(o.name, pt(right, rowY(top, el.row + o.off)));
+      return { id: ids.next(), pins, outs, formal: (pin) => pin };
     }
   }
 }
@@ -218,6 +228,7 @@ function writeElement(
   inBar: (pin: string) => number | undefined,
   connect: Connect,
   data: readonly string[] | undefined,
+  library: BlockLibrary,
 ): void {
   const addData = (extra?: string) => {
     const all = [...(extra ? [extra] : []), ...(data ?? [])];
@@ -293,7 +304,7 @@ function writeElement(
       return;
     }
     case 'box':
-      writeBox(w, el, p, ids, srcOf, inBar, connect, addData);
+      writeBox(w, el, p, ids, srcOf, inBar, connect, addData, library);
       return;
   }
 }

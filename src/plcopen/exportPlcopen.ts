@@ -1,8 +1,10 @@
 // A whole project → one PLCopen TC6 XML v2.01 document.
+import { blockLibrary, type BlockLibrary } from '../model/library';
 import type { Pou, Project } from '../model/project';
 import { formatInterval } from './durations';
 import { writeNetwork } from './exportBody';
-import { writeType, writeVarLists } from './exportInterface';
+import { writeVarLists } from './exportInterface';
+import { writeInterface, writeOtherPou } from './otherPous';
 import { NETWORK_GAP, SCALING } from './geometry';
 import { TC6_0201, XHTML_NS, preserved, type PreservedPou, type PreservedProject } from './types';
 import { XmlWriter } from './xml/write';
@@ -39,13 +41,13 @@ function splitRetainedByCoil(pou: Pou, globals: Set<string>): Set<string> {
   return local;
 }
 
-function writePou(w: XmlWriter, pou: Pou, local: ReadonlySet<string>): void {
+function writePou(w: XmlWriter, pou: Pou, local: ReadonlySet<string>, library: BlockLibrary): void {
+  if (pou.language !== 'LD') {
+    writeOtherPou(w, pou);
+    return;
+  }
   w.open('pou', { name: pou.name, pouType: POU_TYPE[pou.kind] }, () => {
-    w.open('interface', undefined, () => {
-      if (pou.kind === 'FUNCTION')
-        w.open('returnType', undefined, () => writeType(w, pou.returnType || 'BOOL'));
-      writeVarLists(w, pou.variables, local);
-    });
+    writeInterface(w, pou, local);
     w.open('body', undefined, () => {
       if (!pou.networks.length) {
         w.empty('LD');
@@ -55,13 +57,49 @@ function writePou(w: XmlWriter, pou: Pou, local: ReadonlySet<string>): void {
         let next = 1;
         const ids = { next: () => next++ };
         let top = NETWORK_GAP;
-        for (const net of pou.networks) top = writeNetwork(w, net, top, ids) + NETWORK_GAP;
+        for (const net of pou.networks) top = writeNetwork(w, net, top, ids, library) + NETWORK_GAP;
       });
     });
     const keep = preserved<PreservedPou>(pou.extensions);
     if (keep?.addData?.length) w.open('addData', undefined, () => keep.addData!.forEach((d) => w.raw(d)));
     if (pou.comment) w.formatted('documentation', pou.comment);
   });
+}
+
+/** The project's own blocks a POU calls: its LD boxes and its FB instances (variables of a user FB type). */
+function callees(pou: Pou, library: BlockLibrary): Set<string> {
+  const out = new Set<string>();
+  const add = (name: string) => {
+    const callee = library.userPou(name);
+    if (callee && callee !== pou) out.add(callee.name.toUpperCase());
+  };
+  for (const v of pou.variables) add(v.type);
+  for (const net of pou.networks) for (const el of net.elements) if (el.kind === 'box') add(el.blockType);
+  return out;
+}
+
+/**
+ * POU order of the export: project order, except that a FUNCTION_BLOCK or FUNCTION comes before
+ * the first POU that calls it (declared before use: what a one-pass reader needs; Beremiz and
+ * OpenPLC generate a callee on demand, so the order is only a courtesy to them). A cycle (which
+ * IEC 61131-3 forbids) keeps project order. Returns indices into `pous`.
+ */
+export function calleesFirst(pous: readonly Pou[], library: BlockLibrary): number[] {
+  const index = new Map(pous.map((p, i) => [p.name.toUpperCase(), i]));
+  const calls = pous.map((p) =>
+    [...callees(p, library)].map((n) => index.get(n)).filter((i): i is number => i !== undefined),
+  );
+  const state: (0 | 1 | 2)[] = pous.map(() => 0);
+  const out: number[] = [];
+  const visit = (i: number) => {
+    if (state[i] !== 0) return;
+    state[i] = 1;
+    for (const c of calls[i]!) visit(c);
+    state[i] = 2;
+    out.push(i);
+  };
+  pous.forEach((_, i) => visit(i));
+  return out;
 }
 
 /** Serialises the project as PLCopen TC6 XML v2.01 (validates against tc6_xml_v201.xsd). */
@@ -76,6 +114,7 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
   };
   for (const [prefix, uri] of Object.entries(keep?.namespaces ?? {}))
     if (!(`xmlns:${prefix}` in ns)) ns[`xmlns:${prefix}`] = uri;
+  const library = blockLibrary(project);
   const globalsByCoil = new Set<string>();
   const localByCoil = project.pous.map((pou) => splitRetainedByCoil(pou, globalsByCoil));
   // Globals go back where the file declared them: the resource's or the configuration's globalVars.
@@ -100,8 +139,10 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
         w.open('dataTypes', undefined, () => keep.dataTypes!.forEach((d) => w.raw(d)));
       else w.empty('dataTypes');
       w.open('pous', undefined, () => {
-        project.pous.forEach((pou, i) => writePou(w, pou, localByCoil[i]!));
-        for (const raw of keep?.otherPous ?? []) w.raw(raw);
+        for (const i of calleesFirst(project.pous, library)) writePou(w, project.pous[i]!, localByCoil[i]!, library);
+        const names = new Set(project.pous.map((p) => p.name.toUpperCase()));
+        for (const raw of keep?.otherPous ?? [])
+          if (!names.has((/<pou\s[^>]*name="([^"]*)"/.exec(raw)?.[1] ?? '').toUpperCase())) w.raw(raw);
       });
     });
     w.open('instances', undefined, () =>

@@ -2,6 +2,7 @@
 // grid, the element output pins (or the left rail) feeding it. Points joined by horizontal links,
 // vertical links and the left rail form one net (the same rule as the engine's compiler).
 import { boxLayout } from '../model/boxLayout';
+import type { BlockLibrary } from '../model/library';
 import type { LdElement } from '../model/elements';
 import type { Network } from '../model/project';
 
@@ -22,7 +23,10 @@ const NO_PINS: { readonly inputs: readonly PinPoint[]; readonly outputs: readonl
     outputs: Object.freeze([]),
   });
 
-export function elementPins(el: LdElement): {
+export function elementPins(
+  el: LdElement,
+  library?: BlockLibrary,
+): {
   readonly inputs: readonly PinPoint[];
   readonly outputs: readonly PinPoint[];
 } {
@@ -39,7 +43,7 @@ export function elementPins(el: LdElement): {
     case 'link':
       return NO_PINS;
     case 'box': {
-      const layout = boxLayout(el);
+      const layout = boxLayout(el, library);
       if (!layout) return NO_PINS;
       return {
         inputs: layout.inputs.map((p) => ({ pin: p.name, row: el.row + p.rowOffset, boundary: el.col })),
@@ -79,7 +83,11 @@ function unite(parent: number[], a: number, b: number): void {
   if (ra !== rb) parent[Math.max(ra, rb)] = Math.min(ra, rb);
 }
 
-export function gridGraph(net: Pick<Network, 'rows' | 'cols' | 'elements' | 'vlinks'>): GridGraph {
+/** The grid's wiring; `library` knows the project's own blocks (standard blocks only without it). */
+export function gridGraph(
+  net: Pick<Network, 'rows' | 'cols' | 'elements' | 'vlinks'>,
+  library?: BlockLibrary,
+): GridGraph {
   const W = net.cols + 1;
   const rows = net.rows;
   const cols = net.cols;
@@ -100,7 +108,7 @@ export function gridGraph(net: Pick<Network, 'rows' | 'cols' | 'elements' | 'vli
   const elements = net.elements;
   const pins: ReturnType<typeof elementPins>[] = new Array<ReturnType<typeof elementPins>>(elements.length);
   for (let ei = 0; ei < elements.length; ei++) {
-    const p = (pins[ei] = elementPins(elements[ei]!));
+    const p = (pins[ei] = elementPins(elements[ei]!, library));
     for (const o of p.outputs) {
       if (!inGrid(o.row, o.boundary)) continue;
       const id = findRoot(parent, o.row * W + o.boundary);

@@ -1,6 +1,7 @@
 // An LD body → the networks of a POU: connected components ordered like Beremiz runs them
 // (executionOrderId first, then top to bottom), labels and comments attached to the network below.
 import type { LdElement } from '../model/elements';
+import type { BlockLibrary } from '../model/library';
 import { newNetwork } from '../model/factory';
 import type { Network } from '../model/project';
 import { LAYOUT_STRATEGIES, prepareLayout } from './layout';
@@ -76,6 +77,7 @@ export function importLdBody(
   body: XmlElement,
   raw: (el: XmlElement) => string,
   warn: (f: Finding) => void,
+  library: BlockLibrary,
   tuning: BodyTuning = {},
 ): BodyResult {
   const plan = planBody(body, tuning.batchObjects);
@@ -86,7 +88,7 @@ export function importLdBody(
   const widths: number[] = [];
   const itemsOf: Item[][] = [];
   plan.batches.forEach((positions, b) => {
-    const out = readBatch(body.doc, plan, positions, cols, cache, raw, warn);
+    const out = readBatch(body.doc, plan, positions, cols, cache, raw, warn, library);
     cols = Math.max(cols, out.cols);
     widths[b] = out.cols;
     itemsOf[b] = out.items.map((it): Item => ({ ...it, seq: seq++ }));
@@ -95,7 +97,7 @@ export function importLdBody(
   // Batches laid out narrower than a later one: read again (their findings were reported once).
   plan.batches.forEach((positions, b) => {
     if (widths[b]! >= cols) return;
-    const again = readBatch(body.doc, plan, positions, cols, cache, raw, () => {}).items;
+    const again = readBatch(body.doc, plan, positions, cols, cache, raw, () => {}, library).items;
     let k = 0;
     for (const it of itemsOf[b]!) {
       if (it.kind !== 'network') continue;
@@ -189,6 +191,7 @@ function readBatch(
   cache: LayoutCache,
   raw: (el: XmlElement) => string,
   warn: (f: Finding) => void,
+  library: BlockLibrary,
 ): { items: BatchItem[]; cols: number } {
   const inBatch = new Set(positions);
   const keepRef = (ref: string) => {
@@ -196,7 +199,7 @@ function readBatch(
     return p === undefined || inBatch.has(p);
   };
   const objects = readLdObjects(doc, plan.children, positions, keepRef);
-  const graph = buildLdGraph(objects, raw, warn);
+  const graph = buildLdGraph(objects, raw, warn, library);
   splitSharedSources(graph.nodes, warn);
   const { nodes } = graph;
   const { hasGeometry } = plan;
@@ -252,13 +255,30 @@ function readBatch(
     } else {
       // Every layout is checked against the file; the first strategy that draws it exactly wins.
       let best: { laid: LaidOut; mismatches: Mismatch[]; needCols: number } | undefined;
-      for (let s = 0; s < LAYOUT_STRATEGIES; s++) {
-        const prepared = prepareLayout(nodes, g.nodes, s);
-        const tryLaid = prepared.run(Math.max(width, prepared.needCols));
-        const m = verify(nodes, g.nodes, tryLaid);
-        if (!best || m.length < best.mismatches.length)
-          best = { laid: tryLaid, mismatches: m, needCols: prepared.needCols };
-        if (!m.length) break;
+      const tryAll = () => {
+        for (let s = 0; s < LAYOUT_STRATEGIES; s++) {
+          const prepared = prepareLayout(nodes, g.nodes, library, s);
+          const tryLaid = prepared.run(Math.max(width, prepared.needCols));
+          const m = verify(nodes, g.nodes, tryLaid, library);
+          if (!best || m.length < best.mismatches.length)
+            best = { laid: tryLaid, mismatches: m, needCols: prepared.needCols };
+          if (!m.length) return;
+        }
+      };
+      tryAll();
+      // A block whose EN the file leaves out runs unconditionally (MATIEC, and the engine, run a
+      // block with an open EN): drawn with EN wired to the rail where the rail reaches it, open
+      // where it cannot (a function fed by another block's output, FBD style).
+      const implicit = best!.mismatches.length ? g.nodes.filter((i) => nodes[i]!.implicitEn) : [];
+      if (implicit.length) {
+        const before = best!;
+        for (const i of implicit) nodes[i]!.inputs.delete('EN');
+        best = undefined;
+        tryAll();
+        if (best!.mismatches.length >= before.mismatches.length) {
+          for (const i of implicit) nodes[i]!.inputs.set('EN', [{ kind: 'rail' }]);
+          best = before;
+        }
       }
       ({ laid, mismatches } = best!);
       cols = Math.max(cols, best!.needCols);

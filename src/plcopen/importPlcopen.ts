@@ -1,11 +1,13 @@
 // PLCopen TC6 XML (v2.01, v2.0, legacy v1.0) → a Rungsmith project plus a report of what changed.
 // Never throws: bad input gives located errors.
 import { newId, type PouId } from '../model/ids';
+import { blockLibrary, type BlockLibrary } from '../model/library';
 import {
   PROJECT_FORMAT,
   PROJECT_VERSION,
   type Pou,
   type PouKind,
+  type PouLanguage,
   type Project,
   type Task,
   type Variable,
@@ -13,6 +15,7 @@ import {
 import { importLdBody, type BodyTuning } from './importBody';
 import { readInstances, readType, readVarLists } from './importInterface';
 import { LdGraphError, type Finding } from './ldGraph';
+import { pouFingerprint } from './otherPous';
 import {
   TC6_0200,
   TC6_0201,
@@ -40,6 +43,21 @@ const KIND: Record<string, PouKind> = {
   function: 'FUNCTION',
 };
 const LANGUAGES = ['LD', 'ST', 'IL', 'FBD', 'SFC'];
+
+/**
+ * What reading an FBD body as LD may say without losing anything: an assignment drawn as a MOVE,
+ * a source drawn twice. Any other finding (a wire the grid cannot draw, a dropped negation, an
+ * unknown block...) keeps the POU in FBD.
+ */
+const EXACT_FBD: readonly RegExp[] = [/is drawn as a MOVE block/, /: drawn as a MOVE$/, /drawn twice/];
+
+/** A POU read in the first pass: its interface and body language (its body is read in the second). */
+interface PouHead {
+  readonly el: XmlElement;
+  readonly lang: XmlElement;
+  readonly pou: Pou;
+  readonly addData: string[];
+}
 
 class ImportFailure extends Error {
   constructor(readonly issue: ImportIssue) {
@@ -121,11 +139,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       namespaces[prefix] = v;
   }
 
-  const keepProject: { addData: string[]; dataTypes: string[]; otherPous: string[] } = {
-    addData: [],
-    dataTypes: [],
-    otherPous: [],
-  };
+  const keepProject: { addData: string[]; dataTypes: string[] } = { addData: [], dataTypes: [] };
   const dataTypes = child(types, 'dataTypes');
   for (const dt of dataTypes?.children ?? []) {
     keepProject.dataTypes.push(raw(dt));
@@ -135,23 +149,44 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
   const reportPous: { name: string; networks: number; from: string }[] = [];
   const pouEls = childrenNamed(child(types, 'pous') ?? types, 'pou');
 
-  const importLd = (pouName: string, bodyLd: XmlElement, from: string): Pou['networks'] => {
+  /**
+   * Imports an LD (or FBD) body. `quiet` collects the findings instead of reporting them (an FBD
+   * body is only converted when nothing is lost); a broken reference throws unless quiet.
+   */
+  const importLd = (
+    pouName: string,
+    bodyLd: XmlElement,
+    from: string,
+    library: BlockLibrary,
+    quiet?: ImportIssue[],
+  ): Pou['networks'] | undefined => {
     try {
       const found: ImportIssue[] = [];
       const { networks } = importLdBody(
         bodyLd,
         raw,
         (f: Finding) => found.push({ ...at(f.obj?.xml), pou: pouName, message: f.message }),
+        library,
         tuning,
       );
       // In file order (a large body is read in batches, each reporting as it goes).
       found.sort((a, b) => (a.line ?? Infinity) - (b.line ?? Infinity));
+      if (quiet) {
+        quiet.push(...found);
+        return networks;
+      }
       for (const f of found) warnings.push(f);
       reportPous.push({ name: pouName, networks: networks.length, from });
       return networks;
     } catch (e) {
-      if (e instanceof LdGraphError)
-        throw new ImportFailure({ ...at(e.obj?.xml ?? bodyLd), pou: pouName, message: e.message });
+      if (e instanceof LdGraphError) {
+        const issue = { ...at(e.obj?.xml ?? bodyLd), pou: pouName, message: e.message };
+        if (quiet) {
+          quiet.push(issue);
+          return undefined;
+        }
+        throw new ImportFailure(issue);
+      }
       throw e;
     }
   };
@@ -161,7 +196,8 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
   const fileNames = new Set(pouEls.map((p) => (p.attrs.name ?? '').toUpperCase()));
   /** VAR_EXTERNAL declarations, checked against the configuration's and resources' globals below. */
   const externals: { pou: string; name: string; type: string; el: XmlElement }[] = [];
-  for (const pouEl of pouEls) {
+  // First pass: every POU's interface, so a body can call a POU declared after it in the file.
+  const heads: PouHead[] = pouEls.map((pouEl) => {
     const name = pouEl.attrs.name ?? '';
     currentPou = name;
     const kind = KIND[pouEl.attrs.pouType ?? ''];
@@ -185,47 +221,92 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     const returnType = kind === 'FUNCTION' ? readType(child(iface ?? pouEl, 'returnType'), warn) : undefined;
     const body = child(pouEl, 'body');
     const lang = body?.children.find((c) => LANGUAGES.includes(c.name));
-    const doc = child(pouEl, 'documentation');
-    const comment = doc ? deepText(doc).trim() : '';
-    const addData = child(pouEl, 'addData');
-    const pouData = addData ? childrenNamed(addData, 'data') : [];
-    for (const d of pouData)
-      if (d.attrs.handleUnknown === 'discard')
-        warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
-    const keepPou: PreservedPou = {
-      addData: pouData.filter((d) => d.attrs.handleUnknown !== 'discard').map(raw),
-    };
-    const base = { kind, language: 'LD' as const, comment, variables, ...(returnType ? { returnType } : {}) };
     if (!lang)
       throw new ImportFailure({
         ...at(pouEl),
         pou: name,
         message: `POU "${name}" has no body in a known language (LD, ST, IL, FBD, SFC)`,
       });
-    if (lang.name === 'LD') {
-      const networks = importLd(name, lang, 'POU body');
-      pous.push({
-        id: newId<'PouId'>('p') as PouId,
-        name,
-        ...base,
-        networks,
-        ...(keepPou.addData?.length ? { extensions: { plcopen: keepPou } } : {}),
-      });
-    } else {
-      if (ns === TC6_V10 && lang.name !== 'ST' && lang.name !== 'IL') {
-        // v1.0 graphical bodies differ from v2.01 (SFC actions, FBD blocks): they cannot be carried over.
-        warn(
-          `POU "${name}" is written in ${lang.name} in the legacy v1.0 format: it cannot be carried into a v2.01 export and was dropped`,
-          pouEl,
-        );
+    const doc = child(pouEl, 'documentation');
+    const addData = child(pouEl, 'addData');
+    const pouData = addData ? childrenNamed(addData, 'data') : [];
+    for (const d of pouData)
+      if (d.attrs.handleUnknown === 'discard')
+        warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
+    const pou: Pou = {
+      id: newId<'PouId'>('p') as PouId,
+      name,
+      kind,
+      ...(returnType ? { returnType } : {}),
+      language: lang.name as PouLanguage,
+      comment: doc ? deepText(doc).trim() : '',
+      variables,
+      networks: [],
+    };
+    return { el: pouEl, lang, pou, addData: pouData.filter((d) => d.attrs.handleUnknown !== 'discard').map(raw) };
+  });
+  const library = blockLibrary({ pous: heads.map((h) => h.pou) });
+
+  for (const { el: pouEl, lang, pou: head, addData } of heads) {
+    const { name } = head;
+    currentPou = name;
+    const keepAddData: PreservedPou = addData.length ? { addData } : {};
+    const withKeep = (p: Pou, keep: PreservedPou): Pou =>
+      Object.keys(keep).length ? { ...p, extensions: { plcopen: keep } } : p;
+    let networks: Pou['networks'] | undefined;
+    /** Why an FBD body stays FBD. */
+    let fbdKept: string | undefined;
+    if (lang.name === 'LD') networks = importLd(name, lang, 'POU body', library);
+    else if (lang.name === 'FBD') {
+      // FBD and LD share their graph vocabulary: an FBD body that the grid draws exactly, with
+      // nothing dropped, becomes LD; otherwise it stays FBD (kept, not simulated).
+      const found: ImportIssue[] = [];
+      const tried = importLd(name, lang, 'FBD body', library, found);
+      const lost = found.filter((f) => !EXACT_FBD.some((re) => re.test(f.message)));
+      if (tried && !lost.length) {
+        networks = tried;
+        for (const f of found) warnings.push(f);
+        reportPous.push({ name, networks: tried.length, from: 'FBD body' });
+        warn(`POU "${name}" was converted from FBD to LD (${tried.length} networks, every wire kept)`, pouEl);
       } else {
-        keepProject.otherPous.push(ns === TC6_V10 ? upgradeLegacyText(raw(pouEl)) : raw(pouEl));
-        warn(
-          `POU "${name}" is written in ${lang.name}: kept unchanged for export, but Rungsmith only edits and simulates LD`,
-          pouEl,
-        );
+        const why = lost[0];
+        const what = !why
+          ? 'its body cannot be read as a graph'
+          : /cannot be drawn exactly/.test(why.message)
+            ? 'its wiring does not fit the ladder grid exactly'
+            : why.message;
+        fbdKept = `${what}${why?.line ? ` (line ${why.line})` : ''}`;
       }
     }
+    if (networks) pous.push(withKeep({ ...head, language: 'LD', networks }, keepAddData));
+    else {
+      const legacy = ns === TC6_V10;
+      const source = lang.name === 'ST' || lang.name === 'IL' ? deepText(lang).replace(/\r\n?/g, '\n') : raw(lang);
+      const pou: Pou = { ...head, source };
+      const actions = child(pouEl, 'actions');
+      const transitions = child(pouEl, 'transitions');
+      const keep: PreservedPou = {
+        ...keepAddData,
+        // v1.0 graphical bodies differ from v2.01 (SFC actions, FBD blocks): only text bodies are carried over.
+        ...(legacy && lang.name !== 'ST' && lang.name !== 'IL'
+          ? { legacyBody: true as const }
+          : { pou: legacy ? upgradeLegacyText(raw(pouEl)) : raw(pouEl), fingerprint: pouFingerprint(pou) }),
+        ...(actions && !legacy ? { actions: raw(actions) } : {}),
+        ...(transitions && !legacy ? { transitions: raw(transitions) } : {}),
+      };
+      pous.push(withKeep(pou, keep));
+      if (keep.pou)
+        warn(
+          `POU "${name}" is written in ${lang.name}: its interface can be called from LD and it is kept unchanged for export, but Rungsmith only edits and simulates LD${fbdKept ? ` (read as LD, ${fbdKept})` : ''}`,
+          pouEl,
+        );
+      else
+        warn(
+          `POU "${name}" is written in ${lang.name} in the legacy v1.0 format: its interface is kept, but its body cannot be carried into a v2.01 export (exported empty)${fbdKept ? `; read as LD, ${fbdKept}` : ''}`,
+          pouEl,
+        );
+    }
+    const base = { kind: head.kind, language: 'LD' as const, comment: head.comment, variables: head.variables };
     // LD inside SFC actions and transitions: each becomes a POU of its own.
     for (const action of childrenNamed(child(pouEl, 'actions') ?? pouEl, 'action')) {
       const ld = child(child(action, 'body') ?? action, 'LD');
@@ -241,8 +322,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
         name: pname,
         ...base,
         kind: 'PROGRAM',
-        returnType: undefined,
-        networks: importLd(pname, ld, `action ${action.attrs.name} of ${name}`),
+        networks: importLd(pname, ld, `action ${action.attrs.name} of ${name}`, library)!,
       });
     }
     for (const tr of childrenNamed(child(pouEl, 'transitions') ?? pouEl, 'transition')) {
@@ -255,10 +335,10 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
         `the LD of transition "${tname}" of ${lang.name} POU "${name}" was imported as program "${pname}" with a BOOL output "${tname}"`,
         tr,
       );
-      const vars = variables.some((v) => v.name.toUpperCase() === tname.toUpperCase())
-        ? variables
+      const vars = head.variables.some((v) => v.name.toUpperCase() === tname.toUpperCase())
+        ? head.variables
         : [
-            ...variables,
+            ...head.variables,
             {
               name: tname,
               type: 'BOOL',
@@ -272,9 +352,8 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
         name: pname,
         ...base,
         kind: 'PROGRAM',
-        returnType: undefined,
         variables: vars,
-        networks: importLd(pname, ld, `transition ${tname} of ${name}`),
+        networks: importLd(pname, ld, `transition ${tname} of ${name}`, library)!,
       });
     }
   }
@@ -301,8 +380,9 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       issue(`VAR_EXTERNAL "${x.name}" of POU "${x.pou}" is ${x.type} but the global variable is ${g.type}`);
   }
   let tasks: Task[] = inst.tasks;
-  const ldNames = new Set(pous.map((p) => p.name.toUpperCase()));
-  const firstProgram = pous.find((p) => p.kind === 'PROGRAM');
+  const ldPous = pous.filter((p) => p.language === 'LD');
+  const ldNames = new Set(ldPous.map((p) => p.name.toUpperCase()));
+  const firstProgram = ldPous.find((p) => p.kind === 'PROGRAM');
   if (!tasks.some((t) => t.programs.some((p) => ldNames.has(p.pou.toUpperCase()))) && firstProgram) {
     tasks = [
       ...tasks,
@@ -318,7 +398,6 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
   const keep: PreservedProject = {
     ...(keepProject.addData.length ? { addData: keepProject.addData } : {}),
     ...(keepProject.dataTypes.length ? { dataTypes: keepProject.dataTypes } : {}),
-    ...(keepProject.otherPous.length ? { otherPous: keepProject.otherPous } : {}),
     ...(Object.keys(namespaces).length ? { namespaces } : {}),
     ...(inst.configuration ? { configuration: inst.configuration } : {}),
     ...(inst.resource ? { resource: inst.resource } : {}),

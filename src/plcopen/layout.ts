@@ -3,6 +3,7 @@
 // last producer ends); coils, jumps and returns are pushed to the right rail. Rows: depth-first along
 // the branches — a series element continues its source's row, parallel branches and fan-out go to the
 // first row below where their cells, links and bars cross nothing of another net.
+import type { BlockLibrary } from '../model/library';
 import type { GNode } from './ldGraph';
 import { placeRows } from './layoutRows';
 import { shapeOf, type LaidOut, type Net, type PinSpec, type Shape } from './layoutShapes';
@@ -22,8 +23,13 @@ export interface Prepared {
 export const LAYOUT_STRATEGIES = 2;
 
 /** Prepares the layout of the nodes of one network: columns now, rows when the width is known. */
-export function prepareLayout(all: readonly GNode[], members: readonly number[], strategy = 0): Prepared {
-  return new ColumnLayout(all, members, strategy);
+export function prepareLayout(
+  all: readonly GNode[],
+  members: readonly number[],
+  library: BlockLibrary,
+  strategy = 0,
+): Prepared {
+  return new ColumnLayout(all, members, library, strategy);
 }
 
 function pinIndex(list: readonly PinSpec[], pin: string): number {
@@ -58,11 +64,12 @@ class ColumnLayout implements Prepared {
   constructor(
     private readonly all: readonly GNode[],
     members: readonly number[],
+    library: BlockLibrary,
     private readonly strategy = 0,
   ) {
     this.nodes = members;
     const { shapes, local } = this;
-    for (const i of members) shapes.set(i, shapeOf(all[i]!));
+    for (const i of members) shapes.set(i, shapeOf(all[i]!, library));
     // Nets: union of each wired input pin with its sources. Ports are numbered: 0 is the left rail,
     // then each member's input pins and output pins in shape order.
     for (let li = 0; li < members.length; li++) local.set(members[li]!, li);

@@ -38,7 +38,7 @@ export function shapeKey(nodes: readonly GNode[], members: readonly number[]): s
   for (const m of members) {
     const n = nodes[m]!;
     key += n.kind;
-    if (n.kind === 'box') key += `:${n.blockType ?? ''}/${n.inputCount ?? ''}`;
+    if (n.kind === 'box') key += `:${n.blockType ?? ''}/${n.inputCount ?? ''}${n.executionControl ? '/en' : ''}`;
     if (n.feedsRightRail) key += '!';
     key += '(';
     for (const [pin, srcs] of n.inputs) {

@@ -355,6 +355,7 @@ export function elementFor(n: GNode, id: ElementId, r: number, c: number): LdEle
         blockType: n.blockType ?? '',
         ...(n.instance ? { instance: n.instance } : {}),
         ...(n.inputCount !== undefined ? { inputCount: n.inputCount } : {}),
+        ...(n.executionControl ? { executionControl: true } : {}),
         inputs: { ...n.operandsIn },
         outputs: { ...n.operandsOut },
       };

@@ -1,5 +1,6 @@
 // Shapes of laid-out nodes (cells and pins) and the nets between them, shared by the two layout passes.
-import { boxLayoutFor } from '../model/boxLayout';
+import { boxLayoutFor, type BoxLayout } from '../model/boxLayout';
+import type { BlockLibrary } from '../model/library';
 import type { LdElement, VLink } from '../model/elements';
 import type { ElementId } from '../model/ids';
 import type { GNode } from './ldGraph';
@@ -22,9 +23,10 @@ export interface Shape {
 const CELL_SHAPE: Shape = { w: 1, h: 1, inputs: [{ pin: 'in', off: 0 }], outputs: [{ pin: 'out', off: 0 }] };
 const END_SHAPE: Shape = { w: 1, h: 1, inputs: [{ pin: 'in', off: 0 }], outputs: [] };
 const UNKNOWN_SHAPE: Shape = { w: 1, h: 1, inputs: [], outputs: [] };
-const boxShapes = new Map<string, Shape>();
+/** Shapes per box layout (layouts are cached per signature, so one object per block type and pin count). */
+const boxShapes = new WeakMap<BoxLayout, Shape>();
 
-export function shapeOf(n: GNode): Shape {
+export function shapeOf(n: GNode, library: BlockLibrary): Shape {
   switch (n.kind) {
     case 'contact':
     case 'coil':
@@ -33,19 +35,17 @@ export function shapeOf(n: GNode): Shape {
     case 'return':
       return END_SHAPE;
     case 'box': {
-      const key = `${n.blockType ?? ''}/${n.inputCount ?? ''}`;
-      let shape = boxShapes.get(key);
+      const l = boxLayoutFor(n.blockType ?? '', n.inputCount, library, n.executionControl === true);
+      if (!l) return UNKNOWN_SHAPE;
+      let shape = boxShapes.get(l);
       if (!shape) {
-        const l = boxLayoutFor(n.blockType ?? '', n.inputCount);
-        shape = l
-          ? {
-              w: l.cols,
-              h: l.rows,
-              inputs: l.inputs.map((p) => ({ pin: p.name, off: p.rowOffset })),
-              outputs: l.outputs.map((p) => ({ pin: p.name, off: p.rowOffset })),
-            }
-          : UNKNOWN_SHAPE;
-        boxShapes.set(key, shape);
+        shape = {
+          w: l.cols,
+          h: l.rows,
+          inputs: l.inputs.map((p) => ({ pin: p.name, off: p.rowOffset })),
+          outputs: l.outputs.map((p) => ({ pin: p.name, off: p.rowOffset })),
+        };
+        boxShapes.set(l, shape);
       }
       return shape;
     }

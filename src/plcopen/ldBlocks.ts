@@ -1,20 +1,37 @@
-// A PLCopen <block> as a Rungsmith box: standard signature, extensible input count, pins wired or
-// given operands (from in/outVariables), EN wired to the rail when a function has none.
-import { blockSignature } from '../model/blocks';
+// A PLCopen <block> as a Rungsmith box: the signature of a standard block or of one of the file's
+// own FUNCTION_BLOCKs and FUNCTIONs (from the block library), extensible input count, EN/ENO
+// (functions always; FBs with executionControl), pins wired or given operands (from
+// in/outVariables), EN wired to the rail when a function has none (it runs unconditionally, as
+// MATIEC runs it).
+import type { BlockSignature } from '../model/blocks';
 import { boxLayoutFor } from '../model/boxLayout';
+import type { BlockLibrary } from '../model/library';
 import type { Finding, GNode, GSource } from './ldGraph';
 import type { RawObject, RawPin } from './ldObjects';
 
 const RAIL: GSource = { kind: 'rail' };
+
+/**
+ * The model's name of a pin of a block: pins are matched without regard to case (IEC names are
+ * case-insensitive), and named as the callee declares them (`Counter`, not `COUNTER`).
+ */
+export function canonicalPin(sig: BlockSignature | undefined, pin: string): string {
+  const upper = pin.toUpperCase();
+  if (!sig || upper === 'EN' || upper === 'ENO') return upper;
+  for (const p of sig.outputs) if (p.name.toUpperCase() === upper) return p.name;
+  for (const p of sig.inputs) if (p.name.toUpperCase() === upper) return p.name;
+  return upper;
+}
 
 export function buildBox(
   n: GNode,
   o: RawObject,
   sourcesOf: (pin: RawPin, consumer: RawObject, operandTarget?: (text: string) => void) => GSource[],
   warn: (f: Finding) => void,
+  library: BlockLibrary,
 ): void {
   const typeName = o.text;
-  const sig = blockSignature(typeName);
+  const sig = library.signature(typeName);
   const instance = o.attr('instanceName');
   n.instance = instance || undefined;
   if (!sig) {
@@ -32,7 +49,7 @@ export function buildBox(
     }
     for (const pin of o.outputs) if (pin.expression) n.operandsOut[pin.pin] = pin.expression;
     warn({
-      message: `block type ${typeName} is not a standard block Rungsmith can simulate; kept with its operands`,
+      message: `block type ${typeName} is neither a standard block nor a POU of this file; kept with its operands`,
       obj: o,
     });
     return;
@@ -41,6 +58,14 @@ export function buildBox(
   if (sig.kind === 'fb' && !instance)
     warn({ message: `function block ${sig.name} has no instance name`, obj: o });
   if (sig.kind === 'function' && instance) n.instance = undefined;
+  // An FB box shows EN/ENO when the file asks (executionControl) or wires them.
+  if (
+    sig.kind === 'fb' &&
+    (o.attr('executionControl') === 'true' ||
+      o.inputs.some((p) => p.pin.toUpperCase() === 'EN') ||
+      o.outputs.some((p) => p.pin.toUpperCase() === 'ENO'))
+  )
+    n.executionControl = true;
   if (sig.extensible) {
     const { prefix } = sig.extensible;
     const count = o.inputs.filter(
@@ -48,11 +73,11 @@ export function buildBox(
     ).length;
     if (count > 0 && count !== sig.extensible.min) n.inputCount = count;
   }
-  const layout = boxLayoutFor(sig.name, n.inputCount);
+  const layout = boxLayoutFor(sig.name, n.inputCount, library, n.executionControl === true);
   const known = new Set(layout?.inputs.map((p) => p.name) ?? []);
   let hasEn = false;
   for (const pin of o.inputs) {
-    const name = pin.pin.toUpperCase();
+    const name = canonicalPin(sig, pin.pin);
     if (name === 'EN') hasEn = true;
     if (!known.has(name)) {
       if (pin.connections.length)
@@ -78,10 +103,14 @@ export function buildBox(
     if (operand !== undefined) n.operandsIn[name] = operand;
     else if (src.length) n.inputs.set(name, src);
   }
-  if (sig.kind === 'function' && !hasEn) n.inputs.set('EN', [RAIL]);
+  if ((sig.kind === 'function' || n.executionControl) && !hasEn) {
+    n.inputs.set('EN', [RAIL]);
+    n.implicitEn = true;
+  }
   for (const pin of o.outputs) {
+    const name = canonicalPin(sig, pin.pin);
     if (pin.negated)
       warn({ message: `block ${instance ?? sig.name}: negation of output ${pin.pin} is dropped`, obj: o });
-    if (pin.expression) n.operandsOut[pin.pin.toUpperCase()] = pin.expression;
+    if (pin.expression) n.operandsOut[name] = pin.expression;
   }
 }

@@ -1,9 +1,9 @@
 // Interpreting an LD body: power-flow nodes (contacts, coils, blocks, jumps, returns) with the
 // sources of every input pin resolved (continuations followed, block output pins named, data
 // variables folded into block operands), then split into networks (connected components).
-import { blockSignature } from '../model/blocks';
 import type { CoilType, ContactType } from '../model/elements';
-import { buildBox } from './ldBlocks';
+import type { BlockLibrary } from '../model/library';
+import { buildBox, canonicalPin } from './ldBlocks';
 import type { RawConnection, RawObject, RawPin } from './ldObjects';
 import { RS_COIL, RS_CONTACT } from './types';
 import { child, childrenNamed, type XmlElement } from './xml/parse';
@@ -22,6 +22,13 @@ export interface GNode {
   blockType?: string;
   instance?: string;
   inputCount?: number;
+  /** An FB box with EN/ENO (PLCopen executionControl). */
+  executionControl?: boolean;
+  /**
+   * EN is not in the file and was wired to the left rail (a function always runs then). The layout
+   * may leave it open instead when the rail cannot reach it: an open EN runs the block too.
+   */
+  implicitEn?: boolean;
   /** Wired input pins (model pin names: "in" for 1-cell elements) and their sources. */
   readonly inputs: Map<string, GSource[]>;
   readonly operandsIn: Record<string, string>;
@@ -68,11 +75,15 @@ function rsMarker(obj: RawObject, name: string): string | undefined {
   return undefined;
 }
 
-/** Builds the node graph of one LD body. `raw` gives the source text of an element (for preserved data). */
+/**
+ * Builds the node graph of one LD (or FBD) body. `raw` gives the source text of an element (for
+ * preserved data); `library` knows the standard blocks and the file's own FBs and functions.
+ */
 export function buildLdGraph(
   objects: readonly RawObject[],
   raw: (el: XmlElement) => string,
   warn: (f: Finding) => void,
+  library: BlockLibrary,
 ): LdGraph {
   const byId = new Map<string, RawObject>();
   for (const o of objects) {
@@ -250,21 +261,24 @@ export function buildLdGraph(
     if (conns.length !== 1) return undefined;
     const r = resolve(conns[0]!, o);
     const only = r.length === 1 ? r[0]! : undefined;
-    if (!only || only.obj === 'rail' || only.obj.kind !== 'block' || !blockSignature(only.obj.text))
+    if (!only || only.obj === 'rail' || only.obj.kind !== 'block' || !library.signature(only.obj.text))
       return undefined;
     const node = nodeOf.get(only.obj);
-    return node && node.kind === 'box' ? { node, pin: (only.pin ?? 'OUT').toUpperCase() } : undefined;
+    return node && node.kind === 'box' ? { node, pin: boxPin(only.obj, only.pin ?? 'OUT') } : undefined;
   };
   const moveNode = (o: RawObject, input: GSource | string): GNode => {
     const n = newNode(o, 'box', o.executionOrderId);
     n.blockType = 'MOVE';
     n.inputs.set('EN', [RAIL]);
+    n.implicitEn = true;
     if (typeof input === 'string') n.operandsIn.IN = input;
     else n.inputs.set('IN', [input]);
     n.operandsOut.OUT = o.text;
     return n;
   };
 
+  /** The model's name of a pin of a block object (see canonicalPin). */
+  const boxPin = (o: RawObject, pin: string): string => canonicalPin(library.signature(o.text), pin);
   const pinName = (n: GNode, pin: string): string | undefined => {
     if (n.kind !== 'box')
       return n.kind === 'contact' && n.contact === 'NOT'
@@ -272,7 +286,7 @@ export function buildLdGraph(
           ? 'out'
           : 'in'
         : 'out';
-    return pin.toUpperCase();
+    return boxPin(n.obj, pin);
   };
   const sourcesOf = (pin: RawPin, consumer: RawObject, operandTarget?: (text: string) => void): GSource[] => {
     // Most pins: one wire straight from the rail, a contact or a coil (no intermediate results).
@@ -297,7 +311,7 @@ export function buildLdGraph(
       } else {
         const n = nodeOf.get(r.obj);
         if (!n) continue;
-        if (n.kind === 'box' && !blockSignature(n.obj.text)) {
+        if (n.kind === 'box' && !library.signature(n.obj.text)) {
           warn({
             message: `the wire from block ${n.obj.text} (localId ${n.obj.localId}) cannot be kept: Rungsmith does not know its pins`,
             obj: consumer,
@@ -312,7 +326,7 @@ export function buildLdGraph(
 
   for (const n of [...nodes]) {
     const o = n.obj;
-    if (n.kind === 'box') buildBox(n, o, sourcesOf, warn);
+    if (n.kind === 'box') buildBox(n, o, sourcesOf, warn, library);
     else if (n.kind === 'contact' && n.contact === 'NOT' && o.kind === 'block') {
       const src = sourcesOf(o.inputs[0] ?? { pin: 'IN', connections: [], negated: false }, o);
       if (src.length) n.inputs.set('in', src);
@@ -334,12 +348,12 @@ export function buildLdGraph(
     const single = all.length === 1 ? all[0]! : undefined;
     if (single && single.obj !== 'rail' && single.obj.kind === 'block') {
       const n = nodeOf.get(single.obj)!;
-      const p = (single.pin ?? 'OUT').toUpperCase();
+      const p = boxPin(single.obj, single.pin ?? 'OUT');
       if (n.operandsOut[p] === undefined) {
         n.operandsOut[p] = o.text;
         continue;
       }
-      if (blockSignature(single.obj.text)) {
+      if (library.signature(single.obj.text)) {
         // A second variable on the same output: copied by a MOVE wired to that output.
         moveNode(o, { kind: 'node', node: n.index, pin: p });
         warn({

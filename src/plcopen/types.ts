@@ -45,7 +45,10 @@ export interface PreservedProject {
   readonly addData?: readonly string[];
   /** Raw `<dataTypes>` children (user types are kept, not interpreted). */
   readonly dataTypes?: readonly string[];
-  /** Raw `<pou>` elements in languages other than LD (ST, IL, FBD, SFC), kept for the round trip. */
+  /**
+   * Raw `<pou>` elements in languages other than LD, as projects imported before non-LD POUs became
+   * POUs of their own kept them; still exported (unless a POU of that name is in the project).
+   */
   readonly otherPous?: readonly string[];
   /** Namespace declarations used by preserved XML (prefix -> URI). */
   readonly namespaces?: Readonly<Record<string, string>>;
@@ -56,6 +59,18 @@ export interface PreservedProject {
 
 export interface PreservedPou {
   readonly addData?: readonly string[];
+  /**
+   * A POU in ST, IL, SFC or FBD (not converted to LD): its `<pou>` element as written in the file,
+   * exported again byte for byte while `fingerprint` still matches the POU (name, kind, interface,
+   * source, comment: see pouFingerprint). Once one of them is edited the `<pou>` is written anew
+   * from the model, with `actions` and `transitions` (raw, SFC) kept and the body from `source`.
+   */
+  readonly pou?: string;
+  readonly fingerprint?: string;
+  readonly actions?: string;
+  readonly transitions?: string;
+  /** A graphical body in the legacy TC6 v1.0 format: `source` cannot go into a v2.01 file (exported empty). */
+  readonly legacyBody?: true;
 }
 
 export interface PreservedNetwork {

@@ -1,6 +1,7 @@
 // Behaviour of a program over many scans, to compare a project with its PLCopen round trip.
 import { compileProgram, createPlc } from '../../src/engine/plc';
 import type { Value } from '../../src/model/iecTypes';
+import { blockLibrary } from '../../src/model/library';
 import type { Project } from '../../src/model/project';
 import { gridGraph } from '../../src/plcopen/gridGraph';
 
@@ -42,7 +43,7 @@ export function connections(project: Project): string[] {
   const out: string[] = [];
   for (const pou of project.pous)
     pou.networks.forEach((net) => {
-      const g = gridGraph(net);
+      const g = gridGraph(net, blockLibrary(project));
       const desc = (i: number) => {
         const e = net.elements[i]!;
         switch (e.kind) {

@@ -129,21 +129,25 @@ describe('PLCopen import: hand-written fixtures', () => {
     expect(plc.read('Elapsed')).toBe(2000);
   });
 
-  it('LD inside SFC actions and transitions becomes programs; other languages are kept and reported', async () => {
+  it('LD inside SFC actions and transitions becomes programs; POUs in other languages are POUs kept as written', async () => {
     const { project, report } = imported('sfc-ld-actions.xml');
-    expect(project.pous.map((p) => p.name)).toEqual(['Sequence_Light', 'Sequence_Started', 'Nothing']);
-    expect(project.pous[1]!.variables.map((v) => v.name)).toEqual(['Go', 'Lamp', 'Started']);
-    expect(project.pous[2]!.networks).toEqual([]);
+    expect(project.pous.map((p) => [p.name, p.language])).toEqual([
+      ['Sequence', 'SFC'],
+      ['Sequence_Light', 'LD'],
+      ['Sequence_Started', 'LD'],
+      ['Nothing', 'LD'],
+      ['Main', 'ST'],
+    ]);
+    expect(project.pous[2]!.variables.map((v) => v.name)).toEqual(['Go', 'Lamp', 'Started']);
+    expect(project.pous[3]!.networks).toEqual([]);
+    expect(project.pous[0]!.networks).toEqual([]);
+    expect(project.pous[0]!.source).toMatch(/^<SFC>/);
     const text = report.warnings.map((w) => w.message).join('\n');
     expect(text).toContain('POU "Main" is written in ST');
     expect(text).toContain('the chart itself is not simulated');
     const xml = exportPlcopen(project);
     expect(await schemaErrors(xml)).toEqual([]);
     const again = importPlcopen(xml);
-    expect(again.ok && again.project.pous.map((p) => p.name)).toEqual([
-      'Sequence_Light',
-      'Sequence_Started',
-      'Nothing',
-    ]);
+    expect(again.ok && again.project.pous.map((p) => p.name)).toEqual(project.pous.map((p) => p.name));
   });
 });
