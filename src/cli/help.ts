@@ -7,6 +7,7 @@ Commands:
   simulate FILE [options]    run scans on a virtual clock and print a CSV trace
   export FILE.json -o OUT.xml    write a project as PLCopen TC6 XML v2.01
   import FILE.xml -o OUT.json    read PLCopen XML into a Rungsmith project
+  test FILE [--junit OUT.xml]    run the project's test scenarios; exit 1 on any failure
 
 Run "rungsmith <command> --help" for the options of a command.
 Exit codes: 0 ok, 1 the program has errors, 2 bad usage or unreadable input.`,
@@ -39,4 +40,15 @@ Writes the project as one PLCopen TC6 XML v2.01 document (to stdout without -o).
 
 Reads PLCopen TC6 XML (v2.01, v2.0 from CODESYS/TwinCAT, legacy v1.0) into a Rungsmith project
 (to stdout without -o). What was dropped or changed is listed on stderr.`,
+  test: `Usage: rungsmith test FILE [--junit OUT.xml] [--scenario NAME]
+
+Runs every test scenario stored in the project FILE (its "scenarios": CSV of inputs per scan and
+expected values, see README "Test scenarios") from a cold restart on the virtual clock. Prints
+PASS or FAIL per scenario; a failure names the first divergent scan, the expected and actual
+values, and "Why?" on the differing output. Then a summary: N passed, N failed.
+
+Options:
+  --junit FILE      also write the results as JUnit XML (for CI systems)
+  --scenario NAME   run only this scenario
+Exits with 1 if any scenario fails (or the project has none), 0 when all pass.`,
 } as const;

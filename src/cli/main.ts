@@ -8,8 +8,9 @@ import { HELP } from './help';
 import { loadInput } from './input';
 import { UsageError, type CliIo } from './io';
 import { simulate } from './simulate';
+import { testProject } from './test';
 
-const COMMANDS = ['check', 'simulate', 'export', 'import'] as const;
+const COMMANDS = ['check', 'simulate', 'export', 'import', 'test'] as const;
 type Command = (typeof COMMANDS)[number];
 
 function parse(command: Command, args: string[]) {
@@ -31,6 +32,7 @@ function parse(command: Command, args: string[]) {
               profile: { type: 'string' },
             }
           : {}),
+        ...(command === 'test' ? { junit: { type: 'string' }, scenario: { type: 'string' } } : {}),
       },
     });
   } catch (e) {
@@ -90,6 +92,14 @@ function run(io: CliIo, argv: readonly string[]): number {
         ...(v.cycle !== undefined ? { cycle: v.cycle as string } : {}),
         ...(v.watch !== undefined ? { watch: v.watch as string } : {}),
         ...(profile ? { profile } : {}),
+      });
+    }
+    case 'test': {
+      const { project } = loadInput(io, file);
+      const v = values as Record<string, string | boolean | undefined>;
+      return testProject(io, project, {
+        ...(typeof v.junit === 'string' ? { junit: v.junit } : {}),
+        ...(typeof v.scenario === 'string' ? { scenario: v.scenario } : {}),
       });
     }
     case 'export': {

@@ -3,7 +3,7 @@
 import type { BoxElement, CoilType, ContactType, LdElement, VLink } from './elements';
 import { newNetwork, newPou, newProject, variable } from './factory';
 import { newId, type ElementId } from './ids';
-import type { Network, Project, Variable } from './project';
+import type { Network, Project, Scenario, Variable } from './project';
 
 export interface Example {
   readonly id: string;
@@ -95,10 +95,12 @@ function program(
   variables: Variable[],
   networks: Network[],
   cycleMs = 10,
+  scenarios: Scenario[] = [],
 ): Project {
   const main = newPou('Main', { variables, networks, comment: description });
   return newProject(name, {
     description,
+    ...(scenarios.length ? { scenarios } : {}),
     pous: [main],
     tasks: [
       { name: 'MainTask', cycleMs, priority: 1, programs: [{ instance: 'MainInstance', pou: main.name }] },
@@ -134,8 +136,26 @@ function motorStartStop(): Project {
         { vlinks: [{ row: 0, boundary: 1 }] },
       ),
     ],
+    10,
+    [MOTOR_SCENARIO],
   );
 }
+
+/** Test scenario (README "Test scenarios"): Start seals in, Stop wins, Stop held blocks Start. */
+const MOTOR_SCENARIO: Scenario = {
+  name: 'Start seals in, Stop wins',
+  csv: `# Inputs are set before the scan's input read; expect columns are checked after the scan.
+scan,Start,Stop,expect Motor
+1,0,0,0
+2,1,0,1
+3,0,,1
+10,,,1
+11,,1,0
+12,,0,0
+13,1,1,0
+14,,0,1
+`,
+};
 
 function trafficLight(): Project {
   const timerNet = (title: string, comment: string, condition: LdElement, timer: string, pt: string) =>
@@ -184,8 +204,25 @@ function trafficLight(): Project {
       lampNet('Green lamp', 'Green', [contact(0, 0, 'RedTime.Q'), contact(0, 1, 'GreenTime.Q', 'NC')]),
       lampNet('Yellow lamp', 'Yellow', [contact(0, 0, 'GreenTime.Q')]),
     ],
+    10,
+    [TRAFFIC_SCENARIO],
   );
 }
+
+/** Test scenario: one full cycle, red 5 s, green 4 s, yellow 1 s, red again (100 ms scans). */
+const TRAFFIC_SCENARIO: Scenario = {
+  name: 'One full light cycle',
+  csv: `# cycle: 100ms
+scan,expect Red,expect Green,expect Yellow,expect RedTime.ET ~ 100ms
+1,1,0,0,0
+26,1,0,0,2500
+50,1,0,0,4900
+51,0,1,0,*
+91,0,0,1,*
+101,0,0,1,*
+102,1,0,0,*
+`,
+};
 
 function partsCounter(): Project {
   return program(

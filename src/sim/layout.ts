@@ -74,11 +74,11 @@ export function buildLayout(project: Project, pouName: string, names: readonly s
 
 /**
  * The document with everything that does not change what the program does (titles, comments,
- * collapsed state, descriptions) left out: equal fingerprints mean no online change is needed.
+ * collapsed state, descriptions, test scenarios) left out: equal fingerprints mean no online change is needed.
  */
 export function programFingerprint(project: Project): string {
   return JSON.stringify(project, (key, value: unknown) =>
-    key === 'title' || key === 'comment' || key === 'collapsed' || key === 'description' ? undefined : value,
+    key === 'title' || key === 'comment' || key === 'collapsed' || key === 'description' || key === 'scenarios' ? undefined : value,
   );
 }
 

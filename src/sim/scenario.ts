@@ -1,0 +1,270 @@
+// Test scenarios (issue 14): the CLI's stimulus CSV plus expected columns. One row per scan that
+// sets inputs (before that scan's input read) and/or checks values (after that scan ran):
+//
+//   # cycle: 100ms
+//   scan,Start,Stop,expect Motor,expect T1.ET ~ 50ms
+//   1,1,0,1,*
+//   5,0,,1,400
+//
+// `expect NAME` columns are checked; `*` or an empty cell is "don't care"; an empty input cell
+// leaves the input as it is. `~ TOL` after a column name (or a cell value, `400~20`) accepts values
+// within TOL (TIME in ms or with a unit: `50ms`, `T#0.1s`). Comment lines `# cycle: 100ms` and
+// `# pou: Main` set the cycle and the PROGRAM. Used by the Tests panel, the worker (replay into the
+// timeline) and `rungsmith test`.
+import type { Plc } from '../engine/api';
+import type { CompiledProgram } from '../engine/plc';
+import { compileProgram, createPlc } from '../engine/plc';
+import { csvValue, parseValueText } from '../engine/values/literals';
+import type { ElementaryType, Value } from '../model/iecTypes';
+import type { Project, Scenario } from '../model/project';
+import { readCsv } from './csv';
+
+export interface ScenarioColumn {
+  readonly name: string;
+  readonly kind: 'input' | 'expect';
+  /** Accepted difference (TIME in ms). */
+  readonly tolerance?: number;
+}
+
+export interface ScenarioRow {
+  readonly scan: number;
+  readonly line: number;
+  /** Column index -> cell text (non-empty, not `*`). */
+  readonly cells: ReadonlyMap<number, string>;
+}
+
+export interface ParsedScenario {
+  readonly name: string;
+  readonly cycleMs?: number;
+  readonly pou?: string;
+  readonly columns: readonly ScenarioColumn[];
+  readonly rows: readonly ScenarioRow[];
+  /** Scans to run: the last row's scan. */
+  readonly scans: number;
+  /** Line of the header (for errors about a column). */
+  readonly headerLine: number;
+}
+
+/** A scenario file that cannot be read: the line and what is wrong. */
+export class ScenarioError extends Error {
+  constructor(
+    readonly line: number,
+    message: string,
+  ) {
+    super(line > 0 ? `line ${line}: ${message}` : message);
+  }
+}
+
+const EXPECT_RE = /^expect[:\s]\s*(.+?)\s*(?:~\s*(.+))?$/i;
+
+function toleranceOf(text: string, line: number): number {
+  const t = text.trim();
+  if (/^\d+(\.\d+)?$/.test(t)) return Number(t);
+  const r = parseValueText('TIME', /^T(IME)?#/i.test(t) ? t : `T#${t}`);
+  if (!r.ok) throw new ScenarioError(line, `tolerance "${text}" is not a number or a duration (50ms, T#0.1s)`);
+  return Number(r.value);
+}
+
+export function parseScenario(text: string, name = 'scenario'): ParsedScenario {
+  let read: ReturnType<typeof readCsv>;
+  try {
+    read = readCsv(text);
+  } catch (e) {
+    throw new ScenarioError(0, (e as Error).message);
+  }
+  let cycleMs: number | undefined;
+  let pou: string | undefined;
+  for (const c of read.comments) {
+    const m = /^(cycle|pou)\s*:\s*(.+)$/i.exec(c.cells[0]!);
+    if (!m) continue;
+    if (m[1]!.toLowerCase() === 'pou') pou = m[2]!.trim();
+    else {
+      const ms = toleranceOf(m[2]!, c.line);
+      if (!(ms > 0)) throw new ScenarioError(c.line, `cycle "${m[2]}" must be a positive duration`);
+      cycleMs = ms;
+    }
+  }
+  const head = read.rows[0];
+  if (!head || head.cells[0]?.toLowerCase() !== 'scan')
+    throw new ScenarioError(head?.line ?? 1, 'the first line must be the header scan,<input>,...,expect <variable>,...');
+  const columns: ScenarioColumn[] = head.cells.slice(1).map((cell, i) => {
+    if (cell === '') throw new ScenarioError(head.line, `column ${i + 2} has no variable name`);
+    const m = EXPECT_RE.exec(cell);
+    if (!m) return { name: cell, kind: 'input' };
+    return { name: m[1]!, kind: 'expect', ...(m[2] ? { tolerance: toleranceOf(m[2], head.line) } : {}) };
+  });
+  const rows: ScenarioRow[] = [];
+  let last = 0;
+  for (const r of read.rows.slice(1)) {
+    const scanText = r.cells[0] ?? '';
+    const scan = Number(scanText);
+    if (!Number.isInteger(scan) || scan < 1) throw new ScenarioError(r.line, `scan "${scanText}" is not a scan number (1, 2, 3...)`);
+    if (scan <= last) throw new ScenarioError(r.line, `scan ${scan} comes after scan ${last}; sort the rows by scan, one row per scan`);
+    if (r.cells.length > columns.length + 1) throw new ScenarioError(r.line, 'more cells than header columns');
+    last = scan;
+    const cells = new Map<number, string>();
+    columns.forEach((_, i) => {
+      const cell = r.cells[i + 1];
+      if (cell !== undefined && cell !== '' && cell !== '*') cells.set(i, cell);
+    });
+    rows.push({ scan, line: r.line, cells });
+  }
+  if (rows.length === 0) throw new ScenarioError(head.line, 'the scenario has no rows');
+  return { name, columns, rows, scans: last, headerLine: head.line, ...(cycleMs !== undefined ? { cycleMs } : {}), ...(pou ? { pou } : {}) };
+}
+
+/** Where a run first differed from the scenario. */
+export interface Divergence {
+  readonly scan: number;
+  readonly line: number;
+  readonly name: string;
+  readonly expected: string;
+  readonly actual: string;
+}
+
+export interface ScenarioResult {
+  readonly name: string;
+  readonly ok: boolean;
+  /** Scans run (up to and including the first divergent one). */
+  readonly scans: number;
+  /** Every expected column that differed at the first divergent scan. */
+  readonly divergences: readonly Divergence[];
+  /** The scenario or the program could not be run: why (the scenario line, the rule id). */
+  readonly error?: string;
+}
+
+interface Check {
+  readonly column: number;
+  readonly type: ElementaryType;
+  readonly value: Value;
+  readonly tolerance: number;
+}
+
+function typeOf(program: CompiledProgram, name: string, line: number): ElementaryType {
+  const r = program.symbols.resolve(name, { literals: false, implicitLocations: false });
+  if (!r.ok) throw new ScenarioError(line, `unknown variable "${name}": ${r.message}`);
+  if (r.access.kind === 'const') throw new ScenarioError(line, `"${name}" is a constant, not a variable`);
+  return r.access.type;
+}
+
+function matches(check: Check, actual: Value): boolean {
+  if (check.type === 'BOOL') return actual === check.value;
+  if (typeof actual === 'bigint' && typeof check.value === 'bigint' && check.tolerance === 0) return actual === check.value;
+  return Math.abs(Number(actual) - Number(check.value)) <= check.tolerance;
+}
+
+/** A scenario prepared for one compiled program: values parsed at the variables' types. */
+export interface PreparedScenario {
+  readonly parsed: ParsedScenario;
+  readonly inputs: readonly (readonly { readonly name: string; readonly value: Value }[])[];
+  readonly checks: readonly (readonly Check[])[];
+  readonly types: readonly ElementaryType[];
+}
+
+export function prepareScenario(parsed: ParsedScenario, program: CompiledProgram): PreparedScenario {
+  const types = parsed.columns.map((c) => typeOf(program, c.name, parsed.headerLine));
+  const inputs = parsed.rows.map((row) =>
+    [...row.cells].flatMap(([i, text]) => {
+      const col = parsed.columns[i]!;
+      if (col.kind !== 'input') return [];
+      const r = parseValueText(types[i]!, text);
+      if (!r.ok) throw new ScenarioError(row.line, `column ${col.name}: ${r.message}`);
+      return [{ name: col.name, value: r.value }];
+    }),
+  );
+  const checks = parsed.rows.map((row) =>
+    [...row.cells].flatMap(([i, text]): Check[] => {
+      const col = parsed.columns[i]!;
+      if (col.kind !== 'expect') return [];
+      const [valueText, tolText] = text.split('~');
+      const r = parseValueText(types[i]!, valueText!);
+      if (!r.ok) throw new ScenarioError(row.line, `column expect ${col.name}: ${r.message}`);
+      return [{ column: i, type: types[i]!, value: r.value, tolerance: tolText !== undefined ? toleranceOf(tolText, row.line) : (col.tolerance ?? 0) }];
+    }),
+  );
+  return { parsed, inputs, checks, types };
+}
+
+/**
+ * Runs a prepared scenario on a PLC (cold restarted by the caller): inputs written before each
+ * row's scan, checks after it. Stops after the first scan that diverges. `afterScan` sees every scan.
+ */
+export function runPrepared(plc: Plc, prep: PreparedScenario, afterScan?: (scan: number) => void): Omit<ScenarioResult, 'name'> {
+  const { parsed } = prep;
+  let row = 0;
+  for (let scan = 1; scan <= parsed.scans; scan++) {
+    const at = parsed.rows[row]?.scan === scan ? row : -1;
+    if (at >= 0) for (const { name, value } of prep.inputs[at]!) plc.write(name, value);
+    const report = plc.scan();
+    afterScan?.(scan);
+    if (report.fault) return { ok: false, scans: scan, divergences: [], error: `scan ${scan}: ${report.fault.message}` };
+    if (at < 0) continue;
+    row++;
+    const divergences: Divergence[] = [];
+    for (const check of prep.checks[at]!) {
+      const col = parsed.columns[check.column]!;
+      const actual = plc.read(col.name);
+      if (!matches(check, actual))
+        divergences.push({
+          scan,
+          line: parsed.rows[at]!.line,
+          name: col.name,
+          expected: `${csvValue(check.type, check.value)}${check.tolerance ? ` ± ${check.tolerance}` : ''}`,
+          actual: csvValue(check.type, actual),
+        });
+    }
+    if (divergences.length) return { ok: false, scans: scan, divergences };
+  }
+  return { ok: true, scans: parsed.scans, divergences: [] };
+}
+
+/** The PROGRAM a scenario runs: its `# pou:` line, else the first one a task runs, else the first PROGRAM. */
+export function scenarioProgram(project: Project, parsed: ParsedScenario): string | undefined {
+  if (parsed.pou) return parsed.pou;
+  for (const t of project.tasks)
+    for (const p of t.programs) {
+      const pou = project.pous.find((x) => x.name.toUpperCase() === p.pou.toUpperCase() && x.kind === 'PROGRAM');
+      if (pou) return pou.name;
+    }
+  return project.pous.find((p) => p.kind === 'PROGRAM')?.name;
+}
+
+/** The scenario's cycle: its `# cycle:` line, else the task's interval, else 10 ms. */
+export function scenarioCycle(project: Project, parsed: ParsedScenario, pou: string | undefined): number {
+  if (parsed.cycleMs) return parsed.cycleMs;
+  const task = project.tasks.find((t) => t.programs.some((p) => p.pou.toUpperCase() === pou?.toUpperCase()));
+  return task?.cycleMs ?? 10;
+}
+
+export interface ScenarioRun {
+  readonly result: ScenarioResult;
+  /** With a divergence: the PLC stopped right after the divergent scan, and its program (for "Why?"). */
+  readonly plc?: Plc;
+  readonly program?: CompiledProgram;
+}
+
+/** Compiles the project and runs one scenario from a cold restart on the virtual clock. */
+export function runScenario(project: Project, scenario: Scenario): ScenarioRun {
+  const fail = (error: string): ScenarioRun => ({ result: { name: scenario.name, ok: false, scans: 0, divergences: [], error } });
+  let parsed: ParsedScenario;
+  try {
+    parsed = parseScenario(scenario.csv, scenario.name);
+  } catch (e) {
+    return fail((e as Error).message);
+  }
+  const pou = scenarioProgram(project, parsed);
+  const { program, diagnostics } = compileProgram(project, pou ? { pou } : {});
+  if (!program) {
+    const first = diagnostics.find((d) => d.severity === 'error');
+    return fail(`the program does not compile${first ? `: ${first.rule} ${first.pou}${first.network >= 0 ? ` network ${first.network + 1}` : ''}: ${first.message}` : ''}`);
+  }
+  let prep: PreparedScenario;
+  try {
+    prep = prepareScenario(parsed, program);
+  } catch (e) {
+    return fail((e as Error).message);
+  }
+  const plc = createPlc(program, { cycleMs: scenarioCycle(project, parsed, pou) });
+  const r = runPrepared(plc, prep);
+  return { result: { name: scenario.name, ...r }, ...(r.ok ? {} : { plc, program }) };
+}
