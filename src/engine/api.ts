@@ -26,13 +26,22 @@ export interface Diagnostic {
 export interface CompileOptions {
   /** POU to compile as the program to run; default: the first PROGRAM. */
   readonly pou?: string;
+  /**
+   * Compile the whole configuration instead: every program instance of the project's tasks, run in
+   * task order each scan; a program's variables are `Instance.Var`, globals keep their names.
+   */
+  readonly configuration?: boolean;
   /** Default: the project's profile. */
   readonly profile?: Profile;
 }
 
 export interface Fault {
   readonly kind: 'watchdog' | 'runtime';
+  /** POU whose network faulted (an FB's or a function's when it was inside a call). */
   readonly pou: string;
+  /** FB instance path (or program instance) whose body faulted. */
+  readonly instance?: string;
+  /** 0-based network index in `pou`. */
   readonly network: number;
   readonly networkLabel?: string;
   readonly message: string;

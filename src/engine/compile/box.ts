@@ -15,13 +15,15 @@ import type { GraphNode } from './graph';
 import type { ArgIR, Op, OutIR, Source } from './ir';
 import { accessWords, type NetMap } from './lower';
 import { describeElement, type Reporter } from './report';
-import { storeOf, type Access } from './symbols';
+import { storeOf, type Access, type UfbSymbol } from './symbols';
 import type { PlacedPin } from '../../model/boxLayout';
+import { isInOutPin } from '../../model/library';
+import { lowerUserCall } from './userCall';
 
 const admitsType = (pinType: string, t: ElementaryType): boolean =>
   isElementaryType(pinType) ? pinType === t : (GENERIC_MEMBERS[pinType as GenericType] ?? []).includes(t);
 
-interface InputInfo {
+export interface InputInfo {
   readonly pin: PlacedPin;
   /** Wired source or operand; undefined when the pin is left open. */
   src?: Source;
@@ -31,6 +33,14 @@ interface InputInfo {
   literal?: string;
   /** A function input left unconnected: it takes its type's initial value (IEC; MATIEC's default). */
   open?: boolean;
+}
+
+/** An output pin of a box: its net, whether a line is attached, the variable written beside it. */
+export interface OutputInfo {
+  readonly pin: PlacedPin;
+  readonly net: number;
+  readonly wired: boolean;
+  readonly operand: string;
 }
 
 export function lowerBox(
@@ -44,39 +54,61 @@ export function lowerBox(
   const layout = node.layout;
   const name = describeElement(el);
   if (!layout) {
-    r.error(
-      'LD-E01',
-      `${name} uses "${el.blockType}", which is not a standard function or function block`,
-      el,
+    const program = ctx.project.pous.find(
+      (p) => p.kind === 'PROGRAM' && p.name.toUpperCase() === el.blockType.trim().toUpperCase(),
     );
+    if (program)
+      r.error(
+        'LD-E24',
+        `${name} calls the PROGRAM ${program.name}; a program is not called from a network, a task runs it (add it to the task's programs)`,
+        el,
+      );
+    else
+      r.error(
+        'LD-E01',
+        `${name} uses "${el.blockType}", which is not a standard function or function block${ctx.symbols.library.userBlocks.length ? ' nor a FUNCTION or FUNCTION_BLOCK of the project' : ''}`,
+        el,
+      );
     return undefined;
   }
   const sig = layout.signature;
   const isFb = sig.kind === 'fb';
+  const lib = ctx.symbols.library;
+  const userPou = sig.category === 'user' || lib.isExternal(sig.name) ? lib.userPou(sig.name) : undefined;
+  if (userPou && lib.isExternal(sig.name))
+    r.warning(
+      'LD-W10',
+      `${name} is the external block ${sig.name} (a vendor library's); the simulator does not run its body, so its outputs keep their values`,
+      el,
+    );
+  const changed = userPou ? ` (the interface of ${sig.name} has no such pin; it may have changed: redraw the block or add the pin back)` : '';
   const before = r.errors;
+  const pinKey = (pins: readonly PlacedPin[], key: string) =>
+    pins.some((p) => p.name.toUpperCase() === key.toUpperCase());
   for (const key of Object.keys(el.inputs)) {
-    if (!layout.inputs.some((p) => p.name === key.toUpperCase()))
+    if (!pinKey(layout.inputs, key))
       r.error(
         'LD-E04',
-        `${name} has no input "${key}" (inputs: ${layout.inputs.map((p) => p.name).join(', ')})`,
+        `${name} has no input "${key}"${changed} (inputs: ${layout.inputs.map((p) => p.name).join(', ')})`,
         el,
       );
   }
   for (const key of Object.keys(el.outputs)) {
-    if (!layout.outputs.some((p) => p.name === key.toUpperCase()))
+    if (!pinKey(layout.outputs, key))
       r.error(
         'LD-E04',
-        `${name} has no output "${key}" (outputs: ${layout.outputs.map((p) => p.name).join(', ')})`,
+        `${name} has no output "${key}"${changed} (outputs: ${layout.outputs.map((p) => p.name).join(', ')})`,
         el,
       );
   }
   const operandOf = (rec: Readonly<Record<string, string>>, pin: string): string => {
-    const key = Object.keys(rec).find((k) => k.toUpperCase() === pin);
+    const key = Object.keys(rec).find((k) => k.toUpperCase() === pin.toUpperCase());
     return key === undefined ? '' : (rec[key] ?? '').trim();
   };
 
   // LD-R10: the FB instance.
   let fbIndex = -1;
+  let userInstance: UfbSymbol | undefined;
   if (isFb) {
     const inst = (el.instance ?? '').trim();
     const sym = inst ? ctx.symbols.lookup(inst) : undefined;
@@ -92,10 +124,10 @@ export function lowerBox(
         `${name}: the instance "${inst}" is not declared; add a variable "${inst}" of type ${sig.name}`,
         el,
       );
-    else if (sym.kind !== 'fb' || sym.type !== sig.name)
+    else if ((sym.kind !== 'fb' && sym.kind !== 'ufb') || sym.type.toUpperCase() !== sig.name.toUpperCase())
       r.error(
         'LD-R10',
-        `${name}: "${inst}" is declared as ${sym.kind === 'fb' ? sym.type : sym.type}, not ${sig.name}`,
+        `${name}: "${inst}" is declared as ${sym.kind === 'ref' ? sym.access.type : sym.type}, not ${sig.name}`,
         el,
       );
     else {
@@ -109,7 +141,8 @@ export function lowerBox(
           el,
         );
       else ctx.fbCalls.set(sym, { network, row: el.row, col: el.col });
-      fbIndex = sym.index;
+      if (sym.kind === 'fb') fbIndex = sym.index;
+      else userInstance = sym;
     }
   }
 
@@ -167,6 +200,7 @@ export function lowerBox(
       continue;
     }
     if (pin.name === 'EN') continue; // a function whose EN is not connected always runs
+    if (isInOutPin(pin)) continue; // LD-E23 (userCall.ts)
     if (isFb) {
       // IEC / MATIEC: an FB input left out of the call keeps the instance's value (its initial value,
       // or what the previous call or an `Instance.Pin` coil left); Beremiz passes only connected
@@ -186,9 +220,17 @@ export function lowerBox(
     return { pin, net: t.net, wired: nets.isWired(t.net), operand: operandOf(el.outputs, pin.name) };
   });
 
+  if (userPou)
+    return lowerUserCall(ctx, { el, name, node, nets, infos, outputs, pou: userPou, instance: userInstance, network, r, before });
+
   if (isFb) {
     const args: ArgIR[] = [];
+    let en: Source | undefined;
     for (const info of infos) {
+      if (info.pin.name === 'EN') {
+        if (info.src) en = info.src;
+        continue;
+      }
       const pinType = info.pin.type as ElementaryType;
       if (!info.src) continue;
       if (info.type && !canWiden(info.type, pinType) && info.src.from !== 'power') {
@@ -201,8 +243,13 @@ export function lowerBox(
       args.push({ pin: info.pin.name, type: pinType, src: info.src });
     }
     const outs: OutIR[] = [];
+    let eno: OutIR | undefined;
     for (const o of outputs) {
       const type = o.pin.type as ElementaryType;
+      if (o.pin.name === 'ENO') {
+        eno = lowerOutput(ctx, nets, el, name, o, 'BOOL', undefined, r);
+        continue;
+      }
       const out = lowerOutput(
         ctx,
         nets,
@@ -218,7 +265,15 @@ export function lowerBox(
       if (out) outs.push(out);
     }
     if (r.errors > before || fbIndex < 0) return undefined;
-    return { op: 'fb', node: node.index, fb: fbIndex, args, outs };
+    return {
+      op: 'fb',
+      node: node.index,
+      fb: fbIndex,
+      ...(en ? { en } : {}),
+      args,
+      outs,
+      ...(eno ? { eno } : {}),
+    };
   }
 
   // Function: resolve generic pins from the argument types.
@@ -295,7 +350,7 @@ export function lowerBox(
   };
 }
 
-function lowerOutput(
+export function lowerOutput(
   ctx: PouContext,
   nets: NetMap,
   el: BoxElement,
@@ -376,7 +431,7 @@ function lowerOutput(
   return { pin: o.pin.name, type, ...(data ? { data } : {}), ...(dst ? { dst } : {}) };
 }
 
-function initialText(type: string): string {
+export function initialText(type: string): string {
   return type === 'BOOL'
     ? 'FALSE'
     : type === 'TIME'
@@ -391,7 +446,7 @@ function unconnectedFbInput(name: string, pin: PlacedPin): string {
   return `input ${pin.name} of ${name} is not connected: it keeps the instance's value (${initial} at first); wire it or write a variable or a literal beside it`;
 }
 
-function describeSource(src: Source): string {
+export function describeSource(src: Source): string {
   if (src.from === 'power') return 'its line';
   if (src.from === 'data') return 'the wired value';
   return accessWords(src.access);

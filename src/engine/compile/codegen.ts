@@ -340,7 +340,31 @@ function emitOp(em: Emitter, op: Op): void {
       return emitFunction(em, op);
     case 'fb':
       return emitFb(em, op);
+    case 'call':
+      return emitCall(em, op);
   }
+}
+
+/** The statement running a body [first, end) (rewritten to `yield* X.stepCall(` for stepping). */
+export const CALL_TEXT = 'X.call(';
+export const STEP_CALL_TEXT = 'yield* X.stepCall(';
+
+function emitCall(em: Emitter, op: Extract<Op, { op: 'call' }>): void {
+  const L = em.lines;
+  const body: string[] = [];
+  for (const i of op.inits) body.push(em.writeValue(i.dst, em.constant(i.value), i.dst.type));
+  for (const a of op.assigns) body.push(em.writeValue(a.dst, em.readValue(a.src, a.dst.type), a.dst.type));
+  body.push(`${CALL_TEXT}${em.p(op.first)}, ${em.p(op.end)}, now, scan);`);
+  const outs: string[] = [];
+  for (const o of op.outs)
+    emitOutput(em, o.out, em.readValue({ from: 'access', access: o.src }, o.out.type), outs);
+  // A function's outputs are assigned only when it ran; an FB's are read after the call either way.
+  if (op.kind === 'function') body.push(...outs);
+  const en = op.en ? (op.en.from === 'power' ? em.net(op.en.net) : em.readValue(op.en, 'BOOL')) : undefined;
+  if (en === undefined) L.push(...body, op.eno ? 'eno = 1;' : '');
+  else L.push(`if (${en}) {`, ...body, 'eno = 1; } else { eno = 0; }');
+  if (op.kind === 'fb') L.push(...outs);
+  if (op.eno) emitOutput(em, op.eno, 'eno', L);
 }
 
 function argExprs(em: Emitter, args: readonly ArgIR[]): string[] {
@@ -370,7 +394,11 @@ function emitFunction(em: Emitter, op: Extract<Op, { op: 'function' }>): void {
   }
   const en = op.en ? (op.en.from === 'power' ? em.net(op.en.net) : em.readValue(op.en, 'BOOL')) : undefined;
   const body: string[] = ['ctx.error = false;', `r = ${call};`, 'eno = ctx.error ? 0 : 1;'];
-  emitOutput(em, op.out, 'r', body);
+  // MATIEC-compiled programs assign a function's output variable only when ENO is ON: an error
+  // (DIV by zero, MUX out of range) leaves the variable as it was.
+  const { dst, ...wired } = op.out;
+  emitOutput(em, wired, 'r', body);
+  if (dst) body.push(`if (eno) { ${em.writeValue(dst, 'r', op.out.type)} }`);
   if (en === undefined) L.push(...body);
   else L.push(`if (${en}) { ${body.filter((l) => l !== '').join(' ')} } else { eno = 0; }`);
   emitOutput(em, op.eno, 'eno', L);
@@ -379,7 +407,13 @@ function emitFunction(em: Emitter, op: Extract<Op, { op: 'function' }>): void {
 function emitFb(em: Emitter, op: Extract<Op, { op: 'fb' }>): void {
   const L = em.lines;
   const f = em.fbRef(op.fb);
-  for (const a of op.args) L.push(`${f}.${a.pin} = ${em.readValue(a.src, a.type)};`);
-  L.push(`${f}.execute(now);`);
+  const body: string[] = [];
+  for (const a of op.args) body.push(`${f}.${a.pin} = ${em.readValue(a.src, a.type)};`);
+  body.push(`${f}.execute(now);`);
+  // EN OFF (execution control): not executed, outputs kept, ENO OFF.
+  const en = op.en ? (op.en.from === 'power' ? em.net(op.en.net) : em.readValue(op.en, 'BOOL')) : undefined;
+  if (en === undefined) L.push(...body, op.eno ? 'eno = 1;' : '');
+  else L.push(`if (${en}) {`, ...body, 'eno = 1; } else { eno = 0; }');
   for (const out of op.outs) emitOutput(em, out, `${f}.${out.pin}`, L);
+  if (op.eno) emitOutput(em, op.eno, 'eno', L);
 }

@@ -29,6 +29,7 @@ export const DISPATCH_PARAMS = [
   'V',
   'base',
   'shape',
+  'X',
 ] as const;
 
 /**

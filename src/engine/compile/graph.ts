@@ -3,6 +3,7 @@
 // contacts, coils, jumps and returns have an input at (row, col) and (except jumps/returns) an
 // output at (row, col + 1); boxes have their pins where boxLayout puts them.
 import { boxLayout, type BoxLayout } from '../../model/boxLayout';
+import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { BoxElement, LdElement } from '../../model/elements';
 import type { Network } from '../../model/project';
 
@@ -83,7 +84,8 @@ class UnionFind {
 
 const boxOf = (el: LdElement): BoxElement | undefined => (el.kind === 'box' ? el : undefined);
 
-export function buildGraph(network: Network): NetworkGraph {
+/** The graph of a network; boxes of user blocks need the project's `library` for their pins. */
+export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LIBRARY): NetworkGraph {
   const { rows, cols } = network;
   const width = cols + 1;
   const point = (row: number, boundary: number) => row * width + boundary;
@@ -94,7 +96,7 @@ export function buildGraph(network: Network): NetworkGraph {
 
   network.elements.forEach((el, index) => {
     const box = boxOf(el);
-    const layout = box ? boxLayout(box) : undefined;
+    const layout = box ? boxLayout(box, library) : undefined;
     const h = layout ? layout.rows : 1;
     const w = layout ? layout.cols : 1;
     if (el.row < 0 || el.col < 0 || el.row + h > rows || el.col + w > cols) {
@@ -184,7 +186,7 @@ export function buildGraph(network: Network): NetworkGraph {
     let outputs: Terminal[];
     let layout: BoxLayout | undefined;
     if (el.kind === 'box') {
-      layout = boxLayout(el);
+      layout = boxLayout(el, library);
       if (!layout) {
         inputs = [];
         outputs = [];

@@ -66,9 +66,32 @@ export type Op =
       readonly op: 'fb';
       readonly node: number;
       readonly fb: number;
+      /** EN of a box with execution control: OFF = not executed, outputs kept, ENO OFF. */
+      readonly en?: Source;
       readonly args: readonly ArgIR[];
       readonly outs: readonly OutIR[];
-    };
+      readonly eno?: OutIR;
+    }
+  | CallOp;
+
+/**
+ * A call of a user FUNCTION_BLOCK instance or FUNCTION: inputs assigned to the callee's variables,
+ * temporaries (and a function's own variables) set to their initial values, the body networks
+ * [first, end) run, then the outputs read (an FB's always, a function's only when it ran).
+ */
+export interface CallOp {
+  readonly op: 'call';
+  readonly node: number;
+  readonly kind: 'fb' | 'function';
+  readonly pou: string;
+  readonly en?: Source;
+  readonly inits: readonly { readonly dst: Access; readonly value: Value }[];
+  readonly assigns: readonly { readonly dst: Access; readonly src: Source }[];
+  readonly first: number;
+  readonly end: number;
+  readonly outs: readonly { readonly out: OutIR; readonly src: Access }[];
+  readonly eno?: OutIR;
+}
 
 export interface NetworkIR {
   readonly index: number;

@@ -83,7 +83,7 @@ export function lowerNetwork(
   index: number,
   r: Reporter,
 ): NetworkIR | undefined {
-  const g = buildGraph(network);
+  const g = buildGraph(network, ctx.symbols.library);
   const structureOk = checkStructure(network, g, r);
   let order = structureOk ? evaluationOrder(g) : undefined;
   if (structureOk && !order)
@@ -106,7 +106,7 @@ export function lowerNetwork(
     switch (el.kind) {
       case 'contact': {
         const src = el.contact === 'NOT' ? undefined : contactOperand(ctx, el, r);
-        const edge = el.contact === 'P' || el.contact === 'N' ? ctx.edgeCount++ : undefined;
+        const edge = el.contact === 'P' || el.contact === 'N' ? edgeOf(ctx, el, index, r) : undefined;
         const outGraphNet = node.outputs[0]!.net;
         const outNet = nets.powerNet(outGraphNet);
         // Where other outputs join this contact's right side, keep its own result for the power display.
@@ -126,7 +126,7 @@ export function lowerNetwork(
       }
       case 'coil': {
         const dst = coilOperand(ctx, el, index, r);
-        const edge = el.coil === 'P' || el.coil === 'N' ? ctx.edgeCount++ : undefined;
+        const edge = el.coil === 'P' || el.coil === 'N' ? edgeOf(ctx, el, index, r) : undefined;
         // A coil passes its left link on: when nothing else drives its right side, both sides are one net.
         const outGraph = g.nets[node.outputs[0]!.net]!;
         if (outGraph.sources.length === 1 && !outGraph.leftRail && inNet >= 0) nets.alias(outGraph.id, inNet);
@@ -204,7 +204,7 @@ export function lowerNetwork(
     return net >= 0 && nets.hasPower(net) ? nets.powerNet(net) : -1;
   });
   return {
-    index,
+    index: ctx.first + index,
     ...(network.label ? { label: network.label } : {}),
     ops,
     netCount: nets.powerCount,
@@ -213,6 +213,17 @@ export function lowerNetwork(
     vlinkNets,
     constants: [],
   };
+}
+
+/** The edge memory of a |P| |N| contact or (P) (N) coil; a FUNCTION has none to keep (LD-E22). */
+function edgeOf(ctx: PouContext, el: ContactElement | CoilElement, network: number, r: Reporter): number {
+  if (ctx.pouKind === 'FUNCTION')
+    r.error(
+      'LD-E22',
+      `${describeElement(el)} detects an edge, which a FUNCTION cannot: a function keeps nothing between calls, so the memory of the previous value would be lost; use a FUNCTION_BLOCK`,
+      el,
+    );
+  return ctx.edges.allocate(el, ctx.pouName, network, ctx.instance);
 }
 
 function contactOperand(ctx: PouContext, el: ContactElement, r: Reporter): Access | undefined {

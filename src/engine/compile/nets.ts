@@ -12,7 +12,13 @@ export function singleWriterNets(ir: NetworkIR): Set<number> {
       add(op.outNet);
       add(op.ownNet);
     } else if (op.op === 'coil' && op.outNet !== op.inNet) add(op.outNet);
-    else if (op.op === 'fb') for (const o of op.outs) add(o.net);
+    else if (op.op === 'fb') {
+      for (const o of op.outs) add(o.net);
+      if (op.eno) add(op.eno.net, 2);
+    } else if (op.op === 'call') {
+      for (const o of op.outs) add(o.out.net, 2);
+      if (op.eno) add(op.eno.net, 2);
+    }
     else if (op.op === 'function') {
       add(op.out.net, 2);
       add(op.eno.net, 2);

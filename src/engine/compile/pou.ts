@@ -3,11 +3,12 @@
 import { IDENTIFIER_RE } from '../../model/iecTypes';
 import type { Pou, Profile, Project } from '../../model/project';
 import type { Diagnostic } from '../api';
-import { newPouContext, type CoilFamily, type PouContext } from './context';
+import { blockLibrary } from '../../model/library';
+import { newPouContext, type CallBuilder, type CoilFamily, type PouContext, type SharedParts } from './context';
 import type { NetworkIR } from './ir';
 import { lowerNetwork } from './lower';
 import { Reporter } from './report';
-import { buildSymbols } from './symbols';
+import { buildSymbols, type SymbolTable } from './symbols';
 
 export interface LoweredPou {
   readonly ctx: PouContext;
@@ -24,18 +25,63 @@ const FAMILY_WORDS: Record<CoilFamily, string> = {
   latch: '(S)/(R)',
 };
 
-/** Checks and lowers one POU. Diagnostics about the project's globals go to `globalsOut`. */
+/** Where a POU's networks go in a program, and what they share with it (absent: checked on its own). */
+export interface Placement {
+  readonly first: number;
+  readonly instance?: string;
+  readonly calls?: CallBuilder;
+  readonly shared?: SharedParts;
+}
+
+/** Checks and lowers one POU on its own. Diagnostics about the project's globals go to `globalsOut`. */
 export function lowerPou(
   project: Project,
   pou: Pou,
   profile: Profile,
   out: Diagnostic[],
   globalsOut: Diagnostic[],
+  place: Placement = { first: 0 },
 ): LoweredPou {
   const start = out.length;
   const varReporter = new Reporter(out, pou.name, -1);
-  const symbols = buildSymbols(project, pou, varReporter, new Reporter(globalsOut, 'globals', -1));
+  const symbols = buildSymbols(
+    project,
+    pou,
+    varReporter,
+    new Reporter(globalsOut, 'globals', -1),
+    blockLibrary(project),
+  );
+  checkPouKind(pou, symbols, varReporter);
+  const lowered = lowerPouBody(project, pou, profile, symbols, out, place);
+  const ok =
+    !out.slice(start).some((d) => d.severity === 'error') && !globalsOut.some((d) => d.severity === 'error');
+  return { ...lowered, ok };
+}
 
+/** LD-E22: a FUNCTION keeps nothing between calls, so it declares no FB instance. */
+function checkPouKind(pou: Pou, symbols: SymbolTable, r: Reporter): void {
+  if (pou.kind !== 'FUNCTION') return;
+  for (const v of pou.variables) {
+    if (v.varClass === 'external') continue;
+    const sym = symbols.own(v.name);
+    if (sym?.kind === 'fb' || sym?.kind === 'ufb')
+      r.error(
+        'LD-E22',
+        `the FUNCTION ${pou.name} declares "${v.name}", an instance of ${sym.type}; a function keeps nothing between calls, so the instance's state would be lost: make ${pou.name} a FUNCTION_BLOCK`,
+      );
+  }
+}
+
+/** Checks and lowers the networks of a POU over a symbol table (its own, or an instance's scope). */
+export function lowerPouBody(
+  project: Project,
+  pou: Pou,
+  profile: Profile,
+  symbols: SymbolTable,
+  out: Diagnostic[],
+  place: Placement = { first: 0 },
+): LoweredPou {
+  const start = out.length;
   // LD-R06: labels are identifiers or unsigned integers, unique in the POU.
   const labels = new Map<string, number>();
   pou.networks.forEach((net, i) => {
@@ -54,18 +100,18 @@ export function lowerPou(
     if (first !== undefined)
       r.error(
         'LD-R06',
-        `the label "${label}" is already used by network ${first + 1}; labels must be unique in ${pou.name}`,
+        `the label "${label}" is already used by network ${first - place.first + 1}; labels must be unique in ${pou.name}`,
       );
-    else labels.set(key, i);
+    else labels.set(key, place.first + i);
   });
 
-  const ctx = newPouContext(pou.name, profile, symbols, labels);
+  const ctx = newPouContext(project, pou, profile, symbols, labels, place);
   const networks = pou.networks.map((net, i) => {
     const r = new Reporter(out, pou.name, i, net.label?.trim());
     if (net.elements.length === 0 && net.vlinks.length === 0) {
       r.warning('LD-W01', 'this network is empty; draw a rung in it or delete it');
       return {
-        index: i,
+        index: place.first + i,
         ops: [],
         netCount: 0,
         railNets: [],
@@ -90,7 +136,6 @@ export function lowerPou(
       { row: second.row, col: second.col },
     );
   }
-  const ok =
-    !out.slice(start).some((d) => d.severity === 'error') && !globalsOut.some((d) => d.severity === 'error');
+  const ok = !out.slice(start).some((d) => d.severity === 'error');
   return { ctx, networks, ok };
 }

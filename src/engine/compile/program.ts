@@ -1,16 +1,27 @@
-// compileProgram: the checked, lowered form of one PROGRAM POU, ready for createPlc.
+// compileProgram: the checked, lowered form of one PROGRAM POU (or of a task configuration: every
+// program instance of the project's tasks, in task order), with every call of a user FB or
+// function flattened into body networks (flatten.ts), ready for createPlc.
 import type { Pou, Project } from '../../model/project';
+import { blockLibrary } from '../../model/library';
 import type { CompileOptions, Diagnostic } from '../api';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { ElementaryType } from '../../model/iecTypes';
+import { checkRecursion, reachablePous } from './callGraph';
+import type { EdgeOwner } from './context';
+import { Flattener, type BodyInfo } from './flatten';
 import type { NetworkIR } from './ir';
 import { lowerPou } from './pou';
-import type { Store, SymbolTable, VarSymbol } from './symbols';
 import { Reporter } from './report';
+import { buildSymbols, declareGlobals, Storage, SymbolTable, type Store, type VarSymbol } from './symbols';
+
+export type { EdgeOwner } from './context';
+export type { BodyInfo } from './flatten';
 
 export interface CompiledProgram {
+  /** The program's POU (a configuration: the first program's). */
   readonly pou: string;
   readonly profile: Project['profile'];
+  /** Every network: the programs', then the bodies of calls. */
   readonly networks: readonly NetworkIR[];
   /** Number of elements and vertical links per network, for the power snapshot. */
   readonly shapes: readonly { readonly elements: number; readonly vlinks: number }[];
@@ -26,29 +37,20 @@ export interface CompiledProgram {
   }[];
   /** Variables kept over a warm restart: RETAIN ones and those written by M/SM/RM coils. */
   readonly retentive: ReadonlySet<VarSymbol>;
+  /** The programs run each scan, in order: bodies 0..programs-1. */
+  readonly programs: number;
+  /** Network ranges: programs, then one per call of a user FB or function. */
+  readonly bodies: readonly BodyInfo[];
+  /** Body of each network. */
+  readonly bodyOf: Int32Array;
+  /** Where the programs' networks end: networks [0, mainEnd) are the programs'. */
+  readonly mainEnd: number;
+  /** User FB instances (path, FB type), in declaration order, nested ones after their parent. */
+  readonly instances: readonly { readonly path: string; readonly type: string }[];
 }
 
-/** A |P| |N| contact or (P) (N) coil: the owner of one edge memory. */
-export interface EdgeOwner {
-  readonly elementId: string;
-  readonly network: number;
-  /** `|P|`, `|N|`, `(P)`, `(N)`. */
-  readonly symbol: string;
-  /** The operand as written on the element. */
-  readonly operand: string;
-}
-
-function edgeOwners(pou: Pou, networks: readonly NetworkIR[], count: number): EdgeOwner[] {
-  const owners = new Array<EdgeOwner>(count);
-  for (const ir of networks)
-    for (const op of ir.ops) {
-      if ((op.op !== 'contact' && op.op !== 'coil') || op.edge === undefined) continue;
-      const el = pou.networks[ir.index]!.elements[op.node]!;
-      const symbol = op.op === 'contact' ? `|${op.contact}|` : `(${op.coil})`;
-      const operand = el.kind === 'contact' || el.kind === 'coil' ? el.variable.trim() : '';
-      owners[op.edge] = { elementId: el.id, network: ir.index, symbol, operand };
-    }
-  return owners;
+function findPou(project: Project, name: string): Pou | undefined {
+  return project.pous.find((p) => p.name.toUpperCase() === name.trim().toUpperCase());
 }
 
 export function assembleProgram(
@@ -57,44 +59,122 @@ export function assembleProgram(
 ): { program?: CompiledProgram; diagnostics: Diagnostic[] } {
   const diagnostics: Diagnostic[] = [];
   const globals: Diagnostic[] = [];
-  const pou = opts.pou
-    ? project.pous.find((p) => p.name.toUpperCase() === opts.pou!.toUpperCase())
-    : project.pous.find((p) => p.kind === 'PROGRAM');
-  const r = new Reporter(diagnostics, opts.pou ?? project.name, -1);
-  if (!pou) {
-    r.error(
-      'LD-E20',
-      opts.pou
-        ? `there is no POU named "${opts.pou}" in the project`
-        : 'the project has no PROGRAM to run; add one',
-    );
-    return { diagnostics };
-  }
-  if (pou.kind !== 'PROGRAM') {
-    r.error('LD-E20', `${pou.name} is a ${pou.kind}; only a PROGRAM can be run`);
-    return { diagnostics };
-  }
   const profile = opts.profile ?? project.profile;
-  const lowered = lowerPou(project, pou, profile, diagnostics, globals);
+  const library = blockLibrary(project);
+  const flat = new Flattener(project, profile);
+  let root: SymbolTable;
+  let roots: Pou[];
+  if (opts.configuration) {
+    const r = new Reporter(diagnostics, project.name, -1);
+    const instances = project.tasks.flatMap((t) => t.programs);
+    if (instances.length === 0) {
+      r.error('LD-E20', 'no task runs a program; add a program instance to a task');
+      return { diagnostics };
+    }
+    root = new SymbolTable(new Storage(), '', library);
+    declareGlobals(root, project, new Reporter(globals, 'globals', -1));
+    roots = [];
+    const seen = new Set<string>();
+    const bound: { name: string; pou: Pou }[] = [];
+    for (const inst of instances) {
+      const pou = findPou(project, inst.pou);
+      if (!pou || pou.kind !== 'PROGRAM') {
+        r.error(
+          'LD-E20',
+          pou
+            ? `the program instance ${inst.instance} runs ${pou.name}, a ${pou.kind}; only a PROGRAM can be run`
+            : `the program instance ${inst.instance} runs "${inst.pou}", which is not a POU of the project`,
+        );
+        continue;
+      }
+      if (seen.has(inst.instance.toUpperCase()) || root.lookup(inst.instance)) {
+        r.error('LD-E20', `the program instance name ${inst.instance} is used twice (or is a global's name)`);
+        continue;
+      }
+      seen.add(inst.instance.toUpperCase());
+      if (!roots.includes(pou)) roots.push(pou);
+      bound.push({ name: inst.instance, pou });
+    }
+    if (diagnostics.some((d) => d.severity === 'error')) return { diagnostics };
+    for (const pou of roots) lowerPou(project, pou, profile, diagnostics, []);
+    if (!checkCallees(project, roots, profile, diagnostics)) return { diagnostics: [...globals, ...diagnostics] };
+    flat.setRoot(root);
+    for (const b of bound) {
+      const u = root.instantiate(b.pou, b.name, false);
+      root.bind(b.name, u);
+      flat.body(b.pou, u.scope, { kind: 'program', instance: b.name });
+    }
+  } else {
+    const pou = opts.pou ? findPou(project, opts.pou) : project.pous.find((p) => p.kind === 'PROGRAM');
+    const r = new Reporter(diagnostics, opts.pou ?? project.name, -1);
+    if (!pou) {
+      r.error(
+        'LD-E20',
+        opts.pou
+          ? `there is no POU named "${opts.pou}" in the project`
+          : 'the project has no PROGRAM to run; add one',
+      );
+      return { diagnostics };
+    }
+    if (pou.kind !== 'PROGRAM') {
+      r.error('LD-E20', `${pou.name} is a ${pou.kind}; only a PROGRAM can be run`);
+      return { diagnostics };
+    }
+    roots = [pou];
+    const varReporter = new Reporter(diagnostics, pou.name, -1);
+    if (!checkCallees(project, roots, profile, diagnostics)) {
+      // Still check the program itself for the Problems list.
+      lowerPou(project, pou, profile, diagnostics, globals);
+      return { diagnostics: [...globals, ...diagnostics] };
+    }
+    root = buildSymbols(project, pou, varReporter, new Reporter(globals, 'globals', -1), library);
+    flat.setRoot(root);
+    flat.body(pou, root, { kind: 'program' }, diagnostics);
+  }
   diagnostics.unshift(...globals);
-  if (!lowered.ok) return { diagnostics };
-  const { ctx } = lowered;
-  const networks = lowered.networks.map((n) => n!);
-  const retentive = new Set<VarSymbol>(ctx.retentiveCoilVars);
-  for (const v of ctx.symbols.vars) if (v.retain) retentive.add(v);
+  const hasError = diagnostics.some((d) => d.severity === 'error');
+  const networks = flat.complete();
+  if (hasError || !networks) {
+    if (!hasError) diagnostics.push(...flat.errors);
+    return { diagnostics };
+  }
+  const programs = flat.bodies.filter((b) => b.kind === 'program').length;
+  const mainEnd = programs ? flat.bodies[programs - 1]!.end : 0;
+  const retentive = new Set<VarSymbol>(flat.shared.retentiveCoilVars);
+  for (const v of root.vars) if (v.retain) retentive.add(v);
+  const programNames = new Set(roots.map((p) => p.name.toUpperCase()));
   return {
     diagnostics,
     program: {
-      pou: pou.name,
+      pou: flat.bodies[0]?.pou ?? roots[0]!.name,
       profile,
       networks,
-      shapes: pou.networks.map((n) => ({ elements: n.elements.length, vlinks: n.vlinks.length })),
-      symbols: ctx.symbols,
-      functions: ctx.functions,
-      edgeCount: ctx.edgeCount,
-      edges: edgeOwners(pou, networks, ctx.edgeCount),
-      dataSlots: ctx.dataSlots,
+      shapes: flat.shapes,
+      symbols: root,
+      functions: flat.shared.functions,
+      edgeCount: flat.shared.edges.count,
+      edges: flat.shared.edges.owners,
+      dataSlots: flat.shared.dataSlots,
       retentive,
+      programs,
+      bodies: flat.bodies,
+      bodyOf: Int32Array.from(flat.bodyOf),
+      mainEnd,
+      instances: root.storage.ufbs
+        .filter((u) => u.pou.kind === 'FUNCTION_BLOCK' && !programNames.has(u.type.toUpperCase()))
+        .map((u) => ({ path: u.name, type: u.type })),
     },
   };
+}
+
+/**
+ * Checks every user FB and function the roots reach, each once on its own (its diagnostics name
+ * it), and recursion (LD-E21). False when one has an error.
+ */
+function checkCallees(project: Project, roots: readonly Pou[], profile: Project['profile'], out: Diagnostic[]): boolean {
+  const callees = reachablePous(project, roots);
+  const before = out.length;
+  const recursive = checkRecursion(project, out, [...roots, ...callees]);
+  for (const callee of callees) lowerPou(project, callee, profile, out, []);
+  return !recursive && !out.slice(before).some((d) => d.severity === 'error');
 }

@@ -20,10 +20,12 @@ export const SEGMENT_NETWORKS = 64;
  * on a segment start) and after SEGMENT_NETWORKS networks or about SEGMENT_OPS operations.
  * Returns the first network of each segment, then the network count.
  */
-export function planSegments(networks: readonly NetworkIR[]): number[] {
-  const targets = new Set(
-    networks.flatMap((ir) => ir.ops.flatMap((op) => (op.op === 'jump' ? [op.target] : []))),
-  );
+export function planSegments(networks: readonly NetworkIR[], bodyStarts: readonly number[] = []): number[] {
+  // Jump targets and the first network of every body (programs, calls) start a segment.
+  const targets = new Set([
+    ...networks.flatMap((ir) => ir.ops.flatMap((op) => (op.op === 'jump' ? [op.target] : []))),
+    ...bodyStarts,
+  ]);
   const starts: number[] = [];
   let start = -1;
   let ops = 0;

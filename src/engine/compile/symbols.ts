@@ -1,6 +1,7 @@
 // The variables a program sees (its POU's variables, then the project's globals), where each one
 // lives at run time, and how operand text (`Start`, `T1.Q`, `Status.3`, `%IX0.0`, `T#5s`) resolves.
-import { blockSignature, isFbType } from '../../model/blocks';
+import { blockSignature } from '../../model/blocks';
+import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import {
   IDENTIFIER_RE,
   INT_INFO,
@@ -37,6 +38,10 @@ export interface VarSymbol {
   readonly global: boolean;
   /** Created for a location used in the program but declared nowhere. */
   readonly implicit: boolean;
+  /** A function call's own variable (not listed among the program's variables). */
+  readonly hidden?: boolean;
+  /** Declared VAR_TEMP (re-initialised on every call of its FB). */
+  readonly temp?: boolean;
 }
 
 export interface FbSymbol {
@@ -45,6 +50,41 @@ export interface FbSymbol {
   readonly type: string;
   readonly index: number;
   readonly retain: boolean;
+}
+
+/**
+ * An instance of a user FUNCTION_BLOCK (or a program instance of a configuration): its variables
+ * live in the program's stores under path names (`Motor1.Run`, `Motor1.T1`, `Motor1.Inner.Q`);
+ * `scope` maps the POU's own names to them.
+ */
+export interface UfbSymbol {
+  readonly kind: 'ufb';
+  /** Path as declared: `Motor1`, `Motor1.Inner`. */
+  readonly name: string;
+  /** The POU's name as declared. */
+  readonly type: string;
+  readonly pou: Pou;
+  readonly scope: SymbolTable;
+  readonly retain: boolean;
+}
+
+/** A VAR_IN_OUT inside a flattened body: the caller's variable, by reference. */
+export interface RefSymbol {
+  readonly kind: 'ref';
+  readonly name: string;
+  readonly access: Access;
+}
+
+export type Sym = VarSymbol | FbSymbol | UfbSymbol | RefSymbol;
+
+/** Storage shared by every scope of one program: variable slots, FB instances, locations, globals. */
+export class Storage {
+  readonly vars: VarSymbol[] = [];
+  readonly fbs: FbSymbol[] = [];
+  readonly ufbs: UfbSymbol[] = [];
+  readonly counts = { b: 0, n: 0, g: 0 };
+  readonly byLocation = new Map<string, VarSymbol>();
+  readonly globals = new Map<string, VarSymbol | FbSymbol | UfbSymbol>();
 }
 
 export type Access =
@@ -65,14 +105,52 @@ export const canonicalLocation = (loc: ParsedLocation): string =>
   `%${loc.area}${loc.size}${loc.index}${loc.bit !== undefined ? `.${loc.bit}` : ''}`;
 
 export class SymbolTable {
-  readonly vars: VarSymbol[] = [];
-  readonly fbs: FbSymbol[] = [];
-  readonly counts = { b: 0, n: 0, g: 0 };
-  private readonly byName = new Map<string, VarSymbol | FbSymbol>();
-  private readonly byLocation = new Map<string, VarSymbol>();
+  private readonly byName = new Map<string, Sym>();
+  /** FB types being instantiated around this scope (an instance of one of them inside would never end). */
+  instantiating: ReadonlySet<string> = new Set();
+
+  constructor(
+    readonly storage: Storage = new Storage(),
+    /** Path prefix of this scope's variables (`Motor1.`), empty for the program. */
+    readonly prefix = '',
+    readonly library: BlockLibrary = STANDARD_LIBRARY,
+    /** Variables of this scope are a function call's own (hidden from the variable list). */
+    readonly hidden = false,
+  ) {}
+
+  /** Every variable of the program (all scopes), in allocation order. */
+  get vars(): VarSymbol[] {
+    return this.storage.vars;
+  }
+  /** Every standard FB instance of the program. */
+  get fbs(): FbSymbol[] {
+    return this.storage.fbs;
+  }
+  get counts(): { b: number; n: number; g: number } {
+    return this.storage.counts;
+  }
+  /** Names declared in this scope (not the globals). */
+  ownNames(): IterableIterator<[string, Sym]> {
+    return this.byName.entries();
+  }
+  /** A name of this scope only. */
+  own(name: string): Sym | undefined {
+    return this.byName.get(name.trim().toUpperCase());
+  }
+  /** A scope with the same names plus `extra` (in-out references of one call). */
+  withRefs(extra: ReadonlyMap<string, Sym>): SymbolTable {
+    const t = new SymbolTable(this.storage, this.prefix, this.library, this.hidden);
+    for (const [k, v] of this.byName) t.byName.set(k, v);
+    for (const [k, v] of extra) t.byName.set(k.toUpperCase(), v);
+    return t;
+  }
+  /** Binds a name of this scope to an existing symbol. */
+  bind(name: string, sym: Sym): void {
+    this.byName.set(name.trim().toUpperCase(), sym);
+  }
 
   /** Adds a declaration; returns false (after reporting) when it cannot be used. */
-  declare(decl: Variable, global: boolean, r: Reporter): void {
+  declare(decl: Variable, global: boolean, r: Reporter, temp = false): void {
     const what = `the variable "${decl.name}"`;
     if (!IDENTIFIER_RE.test(decl.name) || /__/.test(decl.name) || /_$/.test(decl.name)) {
       r.error(
@@ -86,19 +164,36 @@ export class SymbolTable {
       return;
     }
     const key = decl.name.toUpperCase();
-    const existing = this.byName.get(key);
-    if (existing && (!global || existing.kind === 'fb' || existing.global)) {
+    const existing = global ? this.storage.globals.get(key) ?? this.byName.get(key) : this.byName.get(key);
+    if (existing && (!global || existing.kind !== 'var' || existing.global)) {
       r.error('LD-E10', `${what} is declared twice; variable names must be unique (case does not count)`);
       return;
     }
     if (existing) return; // a POU variable hides the global of the same name
     const type = decl.type.toUpperCase();
-    if (isFbType(type)) {
+    const user = this.library.userPou(type);
+    if (user && user.kind === 'FUNCTION_BLOCK') {
+      if (decl.location) r.error('LD-E13', `${what} is a ${user.name} instance and cannot have a location`);
+      if (decl.initial) r.error('LD-E14', `${what} is a ${user.name} instance and cannot have an initial value`);
+      if (this.instantiating.has(user.name.toUpperCase())) return; // recursive: LD-E21 reports it
+      const u = this.instantiate(user, decl.name, decl.retain);
+      if (global) this.storage.globals.set(key, u);
+      else this.byName.set(key, u);
+      return;
+    }
+    if (this.library.isFbType(type)) {
       if (decl.location) r.error('LD-E13', `${what} is a ${type} instance and cannot have a location`);
       if (decl.initial) r.error('LD-E14', `${what} is a ${type} instance and cannot have an initial value`);
-      const fb: FbSymbol = { kind: 'fb', name: decl.name, type, index: this.fbs.length, retain: decl.retain };
+      const fb: FbSymbol = {
+        kind: 'fb',
+        name: this.prefix + decl.name,
+        type,
+        index: this.fbs.length,
+        retain: decl.retain,
+      };
       this.fbs.push(fb);
-      this.byName.set(key, fb);
+      if (global) this.storage.globals.set(key, fb);
+      else this.byName.set(key, fb);
       return;
     }
     if (!isElementaryType(type)) {
@@ -136,7 +231,7 @@ export class SymbolTable {
       initial = lit.value;
     }
     const v = this.addVar(
-      decl.name,
+      this.prefix + decl.name,
       type,
       initial,
       decl.retain,
@@ -144,16 +239,37 @@ export class SymbolTable {
       location,
       global,
       false,
+      temp,
     );
+    if (global) this.storage.globals.set(key, v);
+    else this.byName.set(key, v);
     if (v.locationText) {
-      const other = this.byLocation.get(v.locationText);
+      const other = this.storage.byLocation.get(v.locationText);
       if (other)
         r.warning(
           'LD-W02',
           `${what} shares the location ${v.locationText} with "${other.name}"; both name the same memory`,
         );
-      else this.byLocation.set(v.locationText, v);
+      else this.storage.byLocation.set(v.locationText, v);
     }
+  }
+
+  /**
+   * Allocates an instance of a user FUNCTION_BLOCK (or a program instance): its VAR_INPUT,
+   * VAR_OUTPUT, VAR, VAR_TEMP and FB instances, under `path.`. VAR_IN_OUT has no storage (the
+   * caller's variable is used) and VAR_EXTERNAL is the global. Declaration errors are reported by
+   * the check of the POU itself, so they are not repeated here.
+   */
+  instantiate(pou: Pou, name: string, retain: boolean): UfbSymbol {
+    const scope = new SymbolTable(this.storage, `${this.prefix}${name}.`, this.library, this.hidden);
+    scope.instantiating = new Set([...this.instantiating, pou.name.toUpperCase()]);
+    const quiet = new QuietReporter();
+    for (const v of pou.variables)
+      if (v.varClass !== 'external' && v.varClass !== 'inOut')
+        scope.declare(retain && !v.retain ? { ...v, retain: true } : v, false, quiet as unknown as Reporter, v.varClass === 'temp');
+    const u: UfbSymbol = { kind: 'ufb', name: this.prefix + name, type: pou.name, pou, scope, retain };
+    this.storage.ufbs.push(u);
+    return u;
   }
 
   private addVar(
@@ -165,6 +281,7 @@ export class SymbolTable {
     location: ParsedLocation | undefined,
     global: boolean,
     implicit: boolean,
+    temp = false,
   ): VarSymbol {
     const store = storeOf(type);
     const v: VarSymbol = {
@@ -179,14 +296,17 @@ export class SymbolTable {
       ...(location ? { location, locationText: canonicalLocation(location) } : {}),
       global,
       implicit,
+      ...(this.hidden ? { hidden: true } : {}),
+      ...(temp ? { temp: true } : {}),
     };
-    this.vars.push(v);
-    this.byName.set(name.toUpperCase(), v);
+    this.storage.vars.push(v);
     return v;
   }
 
-  lookup(name: string): VarSymbol | FbSymbol | undefined {
-    return this.byName.get(name.trim().toUpperCase());
+  /** A name of this scope, else a global. */
+  lookup(name: string): Sym | undefined {
+    const key = name.trim().toUpperCase();
+    return this.byName.get(key) ?? this.storage.globals.get(key);
   }
 
   /** The variable at a location, declaring an implicit one (like %IX0.0 used directly) when none is. */
@@ -194,11 +314,11 @@ export class SymbolTable {
     const loc = parseLocation(text);
     if (!loc) return undefined;
     const key = canonicalLocation(loc);
-    const hit = this.byLocation.get(key);
+    const hit = this.storage.byLocation.get(key);
     if (hit || !createImplicit) return hit;
     const type = implicitType(loc);
     const v = this.addVar(key, type, defaultValue(type), false, false, loc, false, true);
-    this.byLocation.set(key, v);
+    this.storage.byLocation.set(key, v);
     return v;
   }
 
@@ -219,53 +339,61 @@ export class SymbolTable {
         ? { ok: false, message: `no variable is declared at ${t}`, unknown: true }
         : { ok: false, message: `"${t}" is not a valid location (like %IX0.0 or %MW3)` };
     }
-    const dot = t.lastIndexOf('.');
-    if (dot > 0 && IDENTIFIER_RE.test(t.slice(0, dot)) && /^[A-Za-z_0-9]+$/.test(t.slice(dot + 1))) {
-      const head = this.lookup(t.slice(0, dot));
-      const tail = t.slice(dot + 1);
-      if (head?.kind === 'fb') {
-        const sig = blockSignature(head.type)!;
-        const pinName = tail.toUpperCase();
-        const inPin = sig.inputs.find((p) => p.name === pinName);
-        const outPin = sig.outputs.find((p) => p.name === pinName);
-        const pin = inPin ?? outPin;
-        if (!pin)
+    const parts = t.split('.');
+    if (parts.length > 1 && IDENTIFIER_RE.test(parts[0]!) && parts.every((x) => /^[A-Za-z_0-9]+$/.test(x))) {
+      let head: Sym | undefined = this.lookup(parts[0]!);
+      if (!head) return { ok: false, message: `"${parts[0]}" is not declared`, unknown: true };
+      let path = parts[0]!;
+      for (let k = 1; k < parts.length; k++) {
+        const tail = parts[k]!;
+        const last = k === parts.length - 1;
+        if (head.kind === 'ref' && head.access.kind === 'var') head = head.access.v;
+        if (head.kind === 'ufb') {
+          const member: Sym | undefined = head.scope.own(tail);
+          if (!member)
+            return {
+              ok: false,
+              message: `${head.type} "${path}" has no variable ${tail} (it has: ${[...head.scope.ownNames()].map(([, m]) => m.name.slice(m.name.lastIndexOf('.') + 1)).join(', ')})`,
+            };
+          head = member;
+          path += `.${tail}`;
+          continue;
+        }
+        if (head.kind === 'fb') {
+          if (!last) return { ok: false, message: `"${path}.${tail}" is a pin of ${head.type} "${path}"; it has no members` };
+          const sig = blockSignature(head.type)!;
+          const pinName = tail.toUpperCase();
+          const inPin = sig.inputs.find((p) => p.name === pinName);
+          const outPin = sig.outputs.find((p) => p.name === pinName);
+          const pin = inPin ?? outPin;
+          if (!pin)
+            return {
+              ok: false,
+              message: `${head.type} "${path}" has no pin ${tail} (pins: ${[...sig.inputs, ...sig.outputs].map((p) => p.name).join(', ')})`,
+            };
           return {
-            ok: false,
-            message: `${head.type} "${head.name}" has no pin ${tail} (pins: ${[...sig.inputs, ...sig.outputs].map((p) => p.name).join(', ')})`,
+            ok: true,
+            access: { kind: 'pin', fb: head, pin: pin.name, type: pin.type as ElementaryType, dir: inPin ? 'in' : 'out' },
           };
-        return {
-          ok: true,
-          access: {
-            kind: 'pin',
-            fb: head,
-            pin: pin.name,
-            type: pin.type as ElementaryType,
-            dir: inPin ? 'in' : 'out',
-          },
-        };
+        }
+        if (head.kind === 'var' && last && /^\d+$/.test(tail)) {
+          const width = head.type in INT_INFO && head.type !== 'BOOL' ? bitWidth(head.type) : 0;
+          if (!['BYTE', 'WORD', 'DWORD', 'LWORD'].includes(head.type))
+            return {
+              ok: false,
+              message: `"${path}" is ${head.type}; only BYTE, WORD, DWORD and LWORD have addressable bits`,
+            };
+          const bit = Number(tail);
+          if (bit >= width)
+            return { ok: false, message: `${head.type} "${path}" has bits 0 to ${width - 1}, not ${bit}` };
+          return { ok: true, access: { kind: 'bit', v: head, bit, type: 'BOOL' } };
+        }
+        return { ok: false, message: `"${path}" has no member ${tail}` };
       }
-      if (head?.kind === 'var' && /^\d+$/.test(tail)) {
-        const width = head.type in INT_INFO && head.type !== 'BOOL' ? bitWidth(head.type) : 0;
-        if (!['BYTE', 'WORD', 'DWORD', 'LWORD'].includes(head.type))
-          return {
-            ok: false,
-            message: `"${head.name}" is ${head.type}; only BYTE, WORD, DWORD and LWORD have addressable bits`,
-          };
-        const bit = Number(tail);
-        if (bit >= width)
-          return { ok: false, message: `${head.type} "${head.name}" has bits 0 to ${width - 1}, not ${bit}` };
-        return { ok: true, access: { kind: 'bit', v: head, bit, type: 'BOOL' } };
-      }
-      if (!head) return { ok: false, message: `"${t.slice(0, dot)}" is not declared`, unknown: true };
+      return accessOf(head, path);
     }
     const sym = this.lookup(t);
-    if (sym?.kind === 'var') return { ok: true, access: { kind: 'var', v: sym, type: sym.type } };
-    if (sym?.kind === 'fb')
-      return {
-        ok: false,
-        message: `"${sym.name}" is a ${sym.type} instance, not a value; name one of its pins like ${sym.name}.Q`,
-      };
+    if (sym) return accessOf(sym, t);
     if (!opts.literals) {
       return IDENTIFIER_RE.test(t) && !/^(TRUE|FALSE)$/i.test(t)
         ? { ok: false, message: `"${t}" is not declared`, unknown: true }
@@ -277,6 +405,34 @@ export class SymbolTable {
     if (!lit.ok) return { ok: false, message: lit.message };
     return { ok: true, access: { kind: 'const', type: lit.type, value: lit.value, text: t } };
   }
+}
+
+function accessOf(sym: Sym, path: string): Resolved {
+  switch (sym.kind) {
+    case 'var':
+      return { ok: true, access: { kind: 'var', v: sym, type: sym.type } };
+    case 'ref':
+      return { ok: true, access: sym.access };
+    case 'fb':
+      return {
+        ok: false,
+        message: `"${path}" is a ${sym.type} instance, not a value; name one of its pins like ${path}.Q`,
+      };
+    case 'ufb':
+      return {
+        ok: false,
+        message: `"${path}" is a ${sym.type} instance, not a value; name one of its variables like ${path}.${sym.scope.ownNames().next().value?.[1].name.split('.').pop() ?? 'X'}`,
+      };
+  }
+}
+
+/** Swallows the diagnostics of an instance's declarations (the POU's own check reports them). */
+class QuietReporter {
+  errors = 0;
+  error(): void {
+    this.errors++;
+  }
+  warning(): void {}
 }
 
 const bitWidth = (t: ElementaryType): number =>
@@ -316,12 +472,21 @@ export function buildSymbols(
   pou: Pou,
   r: Reporter,
   globalsReporter: Reporter,
+  library: BlockLibrary = STANDARD_LIBRARY,
 ): SymbolTable {
-  const table = new SymbolTable();
-  for (const v of pou.variables) if (v.varClass !== 'external') table.declare(v, false, r);
+  const table = new SymbolTable(new Storage(), '', library);
+  table.instantiating = new Set([pou.name.toUpperCase()]);
+  for (const v of pou.variables) if (v.varClass !== 'external') table.declare(v, false, r, v.varClass === 'temp');
+  if (pou.kind === 'FUNCTION' && !pou.variables.some((v) => v.name.toUpperCase() === pou.name.toUpperCase()))
+    table.declare({ name: pou.name, type: pou.returnType ?? 'BOOL', varClass: 'output', retain: false, comment: '' }, false, r);
   for (const v of project.globals) table.declare(v, true, globalsReporter);
   for (const v of pou.variables) if (v.varClass === 'external') checkExternal(table, project, pou, v, r);
   return table;
+}
+
+/** Declares the project's globals into a program's storage (once per program). */
+export function declareGlobals(table: SymbolTable, project: Project, r: Reporter): void {
+  for (const v of project.globals) table.declare(v, true, r);
 }
 
 function checkExternal(table: SymbolTable, project: Project, pou: Pou, decl: Variable, r: Reporter): void {
@@ -340,8 +505,8 @@ function checkExternal(table: SymbolTable, project: Project, pou: Pou, decl: Var
     return;
   }
   const sym = table.lookup(key);
-  if (!sym) return; // the global's own declaration is in error (reported with the globals)
+  if (!sym || sym.kind === 'ref') return; // the global's own declaration is in error (reported with the globals)
   const type = decl.type.trim().toUpperCase();
-  if (type !== sym.type)
+  if (type !== sym.type.toUpperCase())
     r.error('LD-E16', `${what} is declared ${type} but the global variable "${global.name}" is ${sym.type}`);
 }

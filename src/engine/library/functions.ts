@@ -151,7 +151,7 @@ function implement(name: string, t: ElementaryType, argTypes: readonly Elementar
     case 'SEL':
       return { impl: select };
     case 'MUX':
-      return { impl: multiplex(t) };
+      return { impl: multiplex(t, profile) };
     case 'LIMIT':
       return { impl: limit(t, profile) };
     default:

@@ -12,6 +12,7 @@
 // | conversion-range     | out-of-range conversion turns ENO OFF       | C cast: ENO stays ON                               |
 // |                      | (the value is the same wrapped result)      |                                                    |
 // | limit-crossed        | LIMIT = MIN(MAX(IN, MN), MX): MX if MN > MX | IN > MN ? (IN < MX ? IN : MX) : MN: MN if MN >= IN |
+// | mux-negative         | MUX with K < 0: ENO OFF, output not assigned| ENO ON, OUT = 0 (MATIEC tests only K >= n)         |
 //
 // Same in both (checked): timers, edge detection, bistables; DIV by zero (ENO OFF, result 0);
 // REAL_TO_<int> rounds to nearest with ties to even (MATIEC __real_round); negative REAL to an
@@ -60,6 +61,12 @@ export const PROFILE_DIFFERENCES: readonly ProfileDifference[] = [
     summary: 'Conversions whose value does not fit the target type',
     iec: 'ENO goes OFF; OUT is the wrapped value (INT_TO_SINT(300) = 44, REAL_TO_UINT(-1.0) = 0).',
     openplc: 'ENO stays ON; OUT is the same wrapped value (a C cast).',
+  },
+  {
+    id: 'mux-negative',
+    summary: 'MUX with a negative selector K',
+    iec: 'An error: ENO goes OFF and the output variable keeps its value.',
+    openplc: 'ENO stays ON and OUT is 0 (the type\'s initial value): MATIEC checks only K >= the input count.',
   },
   {
     id: 'limit-crossed',

@@ -65,12 +65,18 @@ export function limit(t: ElementaryType, profile: Profile): FnImpl {
 
 export const select: FnImpl = (_c, args) => (args[0] ? args[2]! : args[1]!);
 
-/** MUX(K, IN0, IN1, ...): K outside 0..n-1 is an error (ENO OFF) and OUT is the type's initial value (as MATIEC). */
-export function multiplex(t: ElementaryType): FnImpl {
+/**
+ * MUX(K, IN0, IN1, ...): K outside 0..n-1 is an error (ENO OFF; OUT, the type's initial value, is
+ * not assigned). Profile openplc (mux-negative): MATIEC tests only K >= n, so a negative K gives
+ * OUT = the initial value with ENO ON.
+ */
+export function multiplex(t: ElementaryType, profile: Profile = 'iec'): FnImpl {
   const fallback = defaultValue(t);
+  const negativeOk = profile === 'openplc';
   return (ctx: FnContext, args) => {
     const k = num(args[0]!);
     const n = args.length - 1;
+    if (negativeOk && k < 0) return fallback;
     if (!(k >= 0 && k < n)) {
       ctx.error = true;
       return fallback;

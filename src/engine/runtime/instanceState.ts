@@ -5,8 +5,13 @@
 import type { PlcState, ResetReason, StateItem, StateTransfer } from '../api';
 import type { CompiledProgram } from '../compile/program';
 import type { Memory } from './memory';
+import type { UfbSymbol, VarSymbol } from '../compile/symbols';
 
-/** The state items of a compiled program: FB instances in declaration order, then edge elements. */
+/**
+ * The state items of a compiled program: standard FB instances in declaration order (nested ones
+ * by path, `MOTOR1.T1`), then user FB instances (their variables), then edge elements (inside an
+ * FB body: one per instance, keyed `MOTOR1/element id`).
+ */
 export function stateItemsOf(program: CompiledProgram): StateItem[] {
   const items: StateItem[] = program.symbols.fbs.map((f) => ({
     kind: 'fb',
@@ -14,16 +19,56 @@ export function stateItemsOf(program: CompiledProgram): StateItem[] {
     type: f.type.toUpperCase(),
     label: f.name,
   }));
+  for (const u of userInstances(program))
+    items.push({ kind: 'fb', key: u.name.toUpperCase(), type: u.type.toUpperCase(), label: u.name });
   for (const e of program.edges)
     items.push({
       kind: 'edge',
-      key: e.elementId,
+      key: e.instance ? `${e.instance.toUpperCase()}/${e.elementId}` : e.elementId,
       type: e.symbol,
       operand: e.operand,
       network: e.network,
-      label: `${e.symbol} ${e.operand || '?'} in network ${e.network + 1}`,
+      label: `${e.symbol} ${e.operand || '?'} in network ${e.network + 1}${e.instance ? ` of ${e.instance} (${e.pou})` : ''}`,
     });
   return items;
+}
+
+/** User FB instances (not program instances of a configuration). */
+function userInstances(program: CompiledProgram): UfbSymbol[] {
+  return program.symbols.storage.ufbs.filter((u) => u.pou.kind === 'FUNCTION_BLOCK');
+}
+
+/** A user FB instance's own variables (not nested instances, which are items of their own). */
+function ownVars(u: UfbSymbol): VarSymbol[] {
+  const out: VarSymbol[] = [];
+  for (const [, m] of u.scope.ownNames()) if (m.kind === 'var') out.push(m);
+  return out;
+}
+
+function saveVars(u: UfbSymbol, mem: Memory): Record<string, number | boolean> {
+  const out: Record<string, number | boolean> = {};
+  for (const v of ownVars(u)) {
+    const value = mem.load(v);
+    const key = v.name.slice(u.name.length + 1).toUpperCase();
+    if (typeof value === 'bigint') {
+      out[`${key}$hi`] = Number(value >> 32n);
+      out[`${key}$lo`] = Number(value & 0xffffffffn);
+    } else out[key] = value;
+  }
+  return out;
+}
+
+function loadVars(u: UfbSymbol, mem: Memory, fields: Readonly<Record<string, number | boolean>>): void {
+  for (const v of ownVars(u)) {
+    const key = v.name.slice(u.name.length + 1).toUpperCase();
+    const plain = fields[key];
+    const hi = fields[`${key}$hi`];
+    const lo = fields[`${key}$lo`];
+    if (v.store === 'g' && typeof hi === 'number' && typeof lo === 'number')
+      mem.store(v, BigInt.asIntN(64, (BigInt(hi) << 32n) + BigInt(lo)));
+    else if (v.store === 'b' && typeof plain === 'boolean') mem.store(v, plain);
+    else if (v.store === 'n' && typeof plain === 'number') mem.store(v, plain);
+  }
 }
 
 const identity = (item: StateItem) => `${item.kind}:${item.key}`;
@@ -54,9 +99,13 @@ export function planStateTransfer(from: readonly StateItem[], to: readonly State
 export function exportMemory(program: CompiledProgram, mem: Memory, timeBase: number): PlcState {
   const items = stateItemsOf(program);
   const fbCount = program.symbols.fbs.length;
+  const users = userInstances(program);
   return {
-    fbs: program.symbols.fbs.map((f, i) => ({ item: items[i]!, fields: mem.fbs[f.index]!.saveState(timeBase) })),
-    edges: program.edges.map((_, i) => ({ item: items[fbCount + i]!, memory: mem.edges[i] === 1 })),
+    fbs: [
+      ...program.symbols.fbs.map((f, i) => ({ item: items[i]!, fields: mem.fbs[f.index]!.saveState(timeBase) })),
+      ...users.map((u, i) => ({ item: items[fbCount + i]!, fields: saveVars(u, mem) })),
+    ],
+    edges: program.edges.map((_, i) => ({ item: items[fbCount + users.length + i]!, memory: mem.edges[i] === 1 })),
   };
 }
 
@@ -70,11 +119,18 @@ export function importMemory(program: CompiledProgram, mem: Memory, state: PlcSt
   const fbFields = new Map(state.fbs.map((f) => [identity(f.item), f.fields]));
   const edgeMemory = new Map(state.edges.map((e) => [identity(e.item), e.memory]));
   const fbIndex = new Map(program.symbols.fbs.map((f, i) => [identity(items[i]!), f.index]));
+  const users = new Map(userInstances(program).map((u) => [`fb:${u.name.toUpperCase()}`, u]));
   const edgeIndex = new Map<string, number>();
-  program.edges.forEach((e, i) => edgeIndex.has(`edge:${e.elementId}`) || edgeIndex.set(`edge:${e.elementId}`, i));
+  const fbCount = program.symbols.fbs.length + users.size;
+  program.edges.forEach((_, i) => {
+    const id = identity(items[fbCount + i]!);
+    if (!edgeIndex.has(id)) edgeIndex.set(id, i);
+  });
   for (const item of plan.kept) {
     const id = identity(item);
-    if (item.kind === 'fb') mem.fbs[fbIndex.get(id)!]!.loadState(fbFields.get(id)!, timeBase);
+    const user = users.get(id);
+    if (item.kind === 'fb' && user) loadVars(user, mem, fbFields.get(id)!);
+    else if (item.kind === 'fb') mem.fbs[fbIndex.get(id)!]!.loadState(fbFields.get(id)!, timeBase);
     else mem.edges[edgeIndex.get(id)!] = edgeMemory.get(id) ? 1 : 0;
   }
   return plan;

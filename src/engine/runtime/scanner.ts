@@ -18,6 +18,11 @@ import { exportMemory, importMemory, stateItemsOf } from './instanceState';
 /** Networks run per call of a dispatch function before the scan time is checked (watchdog). */
 const CHUNK = 1024;
 
+/** Thrown out of a call's body when the watchdog trips there; caught where the scan runs. */
+class WatchdogTrip {
+  constructor(readonly network: number) {}
+}
+
 // Wall clock for the watchdog and execMs (the engine core has no DOM or Node typings).
 const perf = (globalThis as { performance?: { now(): number } }).performance;
 const now: () => number = perf ? () => perf.now() : () => Date.now();
@@ -56,6 +61,13 @@ export class ScanPlc implements Plc {
   private evals = 0;
   /** Network whose jump last went backwards in this scan (named by the watchdog). */
   private backJump = -1;
+  /** Where the programs' networks end, and the end of the program holding each of them. */
+  private readonly mainEnd: number;
+  private readonly programEnd: Int32Array;
+  /** What the generated code calls to run a body of networks (`X.call(first, end, now, scan)`). */
+  private readonly exec = {
+    call: (first: number, end: number, t: number, scan: number): void => this.callBody(first, end, t, scan),
+  };
   private scanStart = 0;
   private lastExecMs = 0;
   private clockOrigin = 0;
@@ -85,6 +97,12 @@ export class ScanPlc implements Plc {
     this.outputsVars = vars.filter((v) => v.location?.area === 'Q');
     this.outputImage = this.outputsVars.map((v) => v.initial);
     this.maxEvals = opts.maxNetworkEvaluations ?? 100 * program.networks.length + 10_000;
+    this.mainEnd = program.mainEnd;
+    this.programEnd = new Int32Array(program.mainEnd);
+    for (let b = 0; b < program.programs; b++) {
+      const body = program.bodies[b]!;
+      this.programEnd.fill(body.end, body.first, body.end);
+    }
     this.maxScanMs = opts.maxScanMs ?? 1000;
     const m = this.mem;
     const link = (body: string, constants: unknown, shape: Int32Array) =>
@@ -104,6 +122,7 @@ export class ScanPlc implements Plc {
         plan.V,
         plan.base,
         shape,
+        this.exec,
       );
     const liveShape = plan.shape.slice();
     this.groups = plan.bodies.map((body) => link(body, plan.constants, liveShape) as DispatchFn);
@@ -115,7 +134,7 @@ export class ScanPlc implements Plc {
       const seg = generateSegment(program.networks, first, end, program.functions, fbTypes, plan.words, mode);
       return link(seg.body, seg.constants, plan.shape) as SegmentFn;
     };
-    const starts = planSegments(program.networks);
+    const starts = planSegments(program.networks, program.bodies.map((b) => b.first));
     this.tiering = new Tiering(starts, liveShape, plan.shape, plan.shapeCount, build, now, tiering);
     this.coldRestart();
   }
@@ -146,7 +165,7 @@ export class ScanPlc implements Plc {
       const v = this.inputs[i]!;
       if (!this.forces.has(v)) this.mem.store(v, this.inputImage[i]!);
     }
-    this.cursor = this.ranIn.length > 0 ? 0 : -2;
+    this.cursor = this.mainEnd > 0 ? 0 : -2;
     this.evals = 0;
     this.backJump = -1;
   }
@@ -162,54 +181,97 @@ export class ScanPlc implements Plc {
 
   /** Runs networks from the cursor; stops after one when `single`. Returns the network run last. */
   private run(single: boolean): number {
-    const count = this.groupOf.length;
+    const count = this.mainEnd;
     const groups = single ? this.stepGroups : this.groups;
     const fast = this.tiering.fast;
     const groupOf = this.groupOf;
+    const programEnd = this.programEnd;
     const stats = this.stats;
     const scan = this.count;
     const t = this.time;
     const maxEvals = this.maxEvals;
-    let evals = this.evals;
-    let checked = evals;
+    let checked = this.evals;
     let i = this.cursor;
     let last = -1;
-    while (i >= 0 && i < count) {
-      const segment = single ? undefined : fast[i];
-      const next = segment
-        ? segment(t, scan)
-        : groups[groupOf[i]!]!(i, single ? i + 1 : Math.min(count, i + CHUNK, i + maxEvals - evals), t, scan);
-      last = stats[0]!;
-      this.ranIn.fill(scan, i, last + 1);
-      evals += last - i + 1;
-      if (next <= last && next >= 0) this.backJump = last;
-      if (evals >= maxEvals || (evals - checked >= CHUNK && now() - this.scanStart > this.maxScanMs)) {
-        this.evals = evals;
-        this.trip(last);
-        return last;
+    try {
+      while (i >= 0 && i < count) {
+        const end = programEnd[i]!;
+        const segment = single ? undefined : fast[i];
+        const next = segment
+          ? segment(t, scan)
+          : groups[groupOf[i]!]!(i, single ? i + 1 : Math.min(end, i + CHUNK, i + maxEvals - this.evals), t, scan);
+        last = stats[0]!;
+        this.ranIn.fill(scan, i, last + 1);
+        const evals = (this.evals += last - i + 1);
+        if (next <= last && next >= 0) this.backJump = last;
+        if (evals >= maxEvals || (evals - checked >= CHUNK && now() - this.scanStart > this.maxScanMs)) {
+          this.trip(last);
+          return last;
+        }
+        if (evals - checked >= CHUNK) checked = evals;
+        // RETURN (-1) ends this program; the next one starts where it ends.
+        i = next < 0 ? end : next;
+        if (single) break;
       }
-      if (evals - checked >= CHUNK) checked = evals;
-      i = next;
-      if (single) break;
+    } catch (e) {
+      if (!(e instanceof WatchdogTrip)) throw e;
+      this.trip(e.network);
+      return e.network;
     }
-    this.evals = evals;
     this.cursor = i >= 0 && i < count ? i : -2;
     return last;
   }
 
+  /** Runs the body [first, end) of a call, from the generated code; RETURN (-1) ends it. */
+  private callBody(first: number, end: number, t: number, scan: number): void {
+    const fast = this.tiering.fast;
+    const groups = this.groups;
+    const groupOf = this.groupOf;
+    const stats = this.stats;
+    const ranIn = this.ranIn;
+    let i = first;
+    while (i >= 0 && i < end) {
+      const segment = fast[i];
+      const next = segment !== undefined ? segment(t, scan) : groups[groupOf[i]!]!(i, end, t, scan);
+      const last = stats[0]!;
+      for (let k = i; k <= last; k++) ranIn[k] = scan;
+      this.evals += last - i + 1;
+      if (next >= 0 && next <= last) {
+        this.backJump = last;
+        if (now() - this.scanStart > this.maxScanMs) throw new WatchdogTrip(last);
+      }
+      if (this.evals >= this.maxEvals) throw new WatchdogTrip(last);
+      i = next;
+    }
+  }
+
+  /** Where a network is, as the user knows it: its POU, instance and 0-based index in the POU. */
+  private where(network: number): { pou: string; instance?: string; network: number; label?: string } {
+    const body = this.program.bodies[this.program.bodyOf[network]!]!;
+    const label = this.program.networks[network]!.label;
+    return {
+      pou: body.pou,
+      ...(body.instance ? { instance: body.instance } : {}),
+      network: network - body.first,
+      ...(label ? { label } : {}),
+    };
+  }
+
   private trip(at: number): void {
     const network = this.backJump >= 0 ? this.backJump : at;
-    const label = this.program.networks[network]!.label;
-    const where = `network ${network + 1}${label ? ` (label ${label})` : ''}`;
+    const w = this.where(network);
+    const inBody = this.program.bodyOf[network]! >= this.program.programs || this.program.programs > 1;
+    const where = `network ${w.network + 1}${w.label ? ` (label ${w.label})` : ''}${inBody ? ` of ${w.instance ? `${w.instance} (${w.pou})` : w.pou}` : ''}`;
     const limit =
       this.evals >= this.maxEvals
         ? `${this.maxEvals.toLocaleString('en-US')} network evaluations`
         : `${this.maxScanMs} ms`;
     this.currentFault = {
       kind: 'watchdog',
-      pou: this.pou,
-      network,
-      ...(label ? { networkLabel: label } : {}),
+      pou: w.pou,
+      ...(w.instance ? { instance: w.instance } : {}),
+      network: w.network,
+      ...(w.label ? { networkLabel: w.label } : {}),
       message: `watchdog: scan exceeded ${limit}; ${this.backJump >= 0 ? `looping in ${where}` : `stopped at ${where}`}`,
     };
     this.cursor = -1;
@@ -349,7 +411,7 @@ export class ScanPlc implements Plc {
   }
 
   variableNames(): string[] {
-    const names = this.program.symbols.vars.map((v) => v.name);
+    const names = this.program.symbols.vars.filter((v) => !v.hidden).map((v) => v.name);
     for (const fb of this.program.symbols.fbs)
       for (const pin of this.mem.fbs[fb.index]!.pins()) names.push(`${fb.name}.${pin}`);
     return names;
@@ -357,7 +419,7 @@ export class ScanPlc implements Plc {
 
   values(): Record<string, Value> {
     const out: Record<string, Value> = {};
-    for (const v of this.program.symbols.vars) out[v.name] = this.mem.load(v);
+    for (const v of this.program.symbols.vars) if (!v.hidden) out[v.name] = this.mem.load(v);
     return out;
   }
 
