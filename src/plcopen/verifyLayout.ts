@@ -41,12 +41,6 @@ const describe = (n: GNode): string => {
 const pinName = (g: NetworkGraph, node: number, p: string) =>
   g.nodes[node]!.el.kind === 'box' ? p : p === 'IN' ? 'in' : p === 'OUT' ? 'out' : p;
 const RAIL: GSource = { kind: 'rail' };
-/**
- * The engine's graph of a grid, with the project's block library for the pins of user and external
- * boxes. (Typed here until the engine's `buildGraph(network, library)` is committed: the engine's
- * helper is adding the parameter in the same change that compiles user FB calls.)
- */
-const graphOf = buildGraph as (network: Network, library: BlockLibrary) => NetworkGraph;
 
 /** Checks that the grid, compiled as the engine compiles it, is exactly the wiring of the file. */
 export function verify(
@@ -55,7 +49,7 @@ export function verify(
   laid: LaidOut,
   library: BlockLibrary,
 ): Mismatch[] {
-  const g = graphOf(laid as Pick<Network, 'rows' | 'cols' | 'elements' | 'vlinks'> as Network, library);
+  const g = buildGraph(laid as Pick<Network, 'rows' | 'cols' | 'elements' | 'vlinks'> as Network, library);
   const W = laid.cols + 1;
   // Member node of each element (by element id), then of each graph node.
   const memberOfId = new Map<string, number>();
