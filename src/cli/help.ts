@@ -24,13 +24,16 @@ Runs N scans of a PROGRAM on the virtual clock and writes CSV to stdout:
   BOOL as 0/1, integers in decimal, REAL with enough digits to read back, TIME in ms.
 
 Options:
-  --pou NAME        the PROGRAM to run (default: the first one run by a task)
+  --pou NAME        the PROGRAM to run (default: the first one run by a task; when the tasks run
+                    several program instances, all of them, in task order, each scan)
   --inputs FILE     stimulus CSV: header scan,<var>,...; a row sets those variables just before the
                     input read of that scan (1-based); an empty cell leaves the value as it is
   --scans N         number of scans (default: the last stimulus scan, at least 10)
   --cycle TIME      scan cycle, e.g. 10ms, 0.5s, T#100ms (default: the task's interval, else 10ms)
-  --watch LIST      comma-separated variables or FB pins (T1.Q); default: every variable of the
-                    POU in declaration order, FB instances as INSTANCE.PIN
+  --watch LIST      comma-separated variables or FB pins (T1.Q), paths into FB instances
+                    (Motor1.Run, Line.Motor1.T1.ET) and, for several programs, Instance.Var;
+                    default: every variable of the POU in declaration order, FB instances as
+                    INSTANCE.PIN (a user FB's VAR_INPUTs and VAR_OUTPUTs)
   --profile NAME    semantics profile: iec (default: the project's) or openplc
 Errors (unknown variable, bad value, invalid program) go to stderr with a non-zero exit.`,
   export: `Usage: rungsmith export FILE.json -o OUT.xml

@@ -3,6 +3,7 @@ import { formatDiagnostic } from '../engine/compile/report';
 import { compileProgram, createPlc, type CompiledProgram } from '../engine/plc';
 import { csvValue, parseValueText } from '../engine/values/literals';
 import type { ElementaryType } from '../model/iecTypes';
+import { blockLibrary } from '../model/library';
 import type { Profile, Project } from '../model/project';
 import { parseInterval } from '../plcopen/durations';
 import { UsageError, type CliIo } from './io';
@@ -40,16 +41,35 @@ function programName(project: Project, wanted: string | undefined): string {
   return first.name;
 }
 
-/** Default watch: the POU's variables in declaration order, FB instances as INSTANCE.PIN. */
-function defaultWatch(project: Project, pouName: string, names: readonly string[]): string[] {
+/**
+ * Default watch: the POU's variables in declaration order, FB instances as INSTANCE.PIN (a user
+ * FB's pins are its VAR_INPUTs and VAR_OUTPUTs); `prefix` names a program instance (`Line1.`).
+ */
+function defaultWatch(project: Project, pouName: string, names: readonly string[], prefix = ''): string[] {
   const pou = project.pous.find((p) => p.name.toUpperCase() === pouName.toUpperCase())!;
+  const known = new Set(names.map((n) => n.toUpperCase()));
+  const user = blockLibrary(project);
   const out: string[] = [];
   for (const v of pou.variables) {
-    const pins = names.filter((n) => n.toUpperCase().startsWith(`${v.name.toUpperCase()}.`));
+    const name = `${prefix}${v.name}`;
+    const fb = user.userPou(v.type);
+    if (fb && fb.kind === 'FUNCTION_BLOCK') {
+      for (const m of fb.variables)
+        if ((m.varClass === 'input' || m.varClass === 'output') && known.has(`${name}.${m.name}`.toUpperCase()))
+          out.push(`${name}.${m.name}`);
+      continue;
+    }
+    const pins = names.filter((n) => n.toUpperCase().startsWith(`${name.toUpperCase()}.`));
     if (pins.length) out.push(...pins);
-    else if (names.some((n) => n.toUpperCase() === v.name.toUpperCase())) out.push(v.name);
+    else if (known.has(name.toUpperCase())) out.push(name);
   }
   return out;
+}
+
+/** Program instances of the project's tasks, when there are several: simulated together. */
+function configurationOf(project: Project): { instance: string; pou: string }[] | undefined {
+  const instances = project.tasks.flatMap((t) => t.programs);
+  return instances.length > 1 ? instances : undefined;
 }
 
 function typeOf(program: CompiledProgram, name: string): ElementaryType {
@@ -60,9 +80,11 @@ function typeOf(program: CompiledProgram, name: string): ElementaryType {
 }
 
 export function simulate(io: CliIo, project: Project, opts: SimulateOptions): number {
-  const pou = programName(project, opts.pou);
+  // Without --pou, a project whose tasks run several program instances runs them all, in order.
+  const configuration = opts.pou === undefined ? configurationOf(project) : undefined;
+  const pou = configuration ? 'the configuration' : programName(project, opts.pou);
   const { program, diagnostics } = compileProgram(project, {
-    pou,
+    ...(configuration ? { configuration: true } : { pou }),
     ...(opts.profile ? { profile: opts.profile } : {}),
   });
   for (const d of diagnostics) if (d.severity === 'warning') io.err(`${formatDiagnostic(d)}\n`);
@@ -71,7 +93,9 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
     io.err(`the program ${pou} has errors; it cannot be simulated\n`);
     return 1;
   }
-  const task = project.tasks.find((t) => t.programs.some((p) => p.pou.toUpperCase() === pou.toUpperCase()));
+  const task = configuration
+    ? project.tasks.find((t) => t.programs.length > 0)
+    : project.tasks.find((t) => t.programs.some((p) => p.pou.toUpperCase() === pou.toUpperCase()));
   const cycleMs = opts.cycle !== undefined ? parseCycle(opts.cycle) : (task?.cycleMs ?? 10);
   const plc = createPlc(program, { cycleMs });
   const names = plc.variableNames();
@@ -81,7 +105,9 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
           .split(',')
           .map((s) => s.trim())
           .filter(Boolean)
-      : defaultWatch(project, pou, names);
+      : configuration
+        ? configuration.flatMap((c) => defaultWatch(project, c.pou, names, `${c.instance}.`))
+        : defaultWatch(project, pou, names);
   const types = watch.map((w) => typeOf(program, w));
   const stim: Stimulus | undefined = opts.stimulus
     ? parseStimulus(opts.stimulus.text, opts.stimulus.file)
