@@ -1,5 +1,5 @@
 // Builds the frames the worker posts to the UI: packed power bytes (transferable) and values.
-import type { Plc } from '../engine/api';
+import type { NetworkPower, Plc } from '../engine/api';
 import type { Value } from '../model/iecTypes';
 import type { SimLayout } from './protocol';
 
@@ -11,14 +11,18 @@ export interface PackedPower {
 
 /** Copies the PLC's power snapshot into three fresh arrays laid out by `layout` (fresh so they can be transferred). */
 export function packPower(plc: Plc, layout: SimLayout): PackedPower {
+  return packNetworks(plc.snapshot().networks, layout);
+}
+
+/** Packs per-network power (a snapshot's, or a recorded scan's decoded) by `layout`. */
+export function packNetworks(networks: readonly NetworkPower[], layout: SimLayout): PackedPower {
   const networkCount = layout.networkIds.length;
   const elements = new Uint8Array(layout.elementOffsets[networkCount] ?? 0);
   const vlinks = new Uint8Array(layout.vlinkOffsets[networkCount] ?? 0);
   const executed = new Uint8Array(networkCount);
-  const snapshot = plc.snapshot();
-  const count = Math.min(networkCount, snapshot.networks.length);
+  const count = Math.min(networkCount, networks.length);
   for (let n = 0; n < count; n++) {
-    const power = snapshot.networks[n]!;
+    const power = networks[n]!;
     const eStart = layout.elementOffsets[n]!;
     const eEnd = layout.elementOffsets[n + 1]!;
     elements.set(power.elements.length > eEnd - eStart ? power.elements.subarray(0, eEnd - eStart) : power.elements, eStart);

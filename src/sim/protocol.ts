@@ -7,7 +7,9 @@
 // with `outputs` events after every scan that changed it, once it sent `subscribeOutputs`.
 import type { Diagnostic, Fault } from '../engine/api';
 import type { Value } from '../model/iecTypes';
-import type { Project } from '../model/project';
+import type { Project, Scenario } from '../model/project';
+import type { ExplainTarget, Explanation } from '../engine/explain';
+import type { ScenarioResult } from './scenario';
 
 export const SIM_PROTOCOL_VERSION = 1;
 
@@ -59,7 +61,55 @@ export type HostMessage =
    * Another project was opened: stop and drop the program (no PLC, no forces, no gateway inputs);
    * the next Run or Step must carry the new document.
    */
-  | { readonly type: 'unload'; readonly epoch?: number };
+  | { readonly type: 'unload'; readonly epoch?: number }
+  // ---- scan history (issue 14) ----
+  /** Depth of the scan history: most scans and memory budget in bytes (the oldest drop first). */
+  | { readonly type: 'setHistory'; readonly maxScans: number; readonly budgetBytes: number }
+  /** Answered with `historyView` of that scan (the live program keeps running). */
+  | { readonly type: 'historySeek'; readonly scan: number }
+  /** The next (1) or previous (-1) change of a variable, or scan where a condition holds, from `from`; answered with `historyView` or `historyNotFound`. */
+  | {
+      readonly type: 'historyFind';
+      readonly from: number;
+      readonly direction: 1 | -1;
+      readonly change?: string;
+      readonly condition?: string;
+    }
+  /** "Why?" at a recorded scan; answered with `explanation`. */
+  | { readonly type: 'explain'; readonly id: number; readonly scan: number; readonly target: ExplainTarget }
+  /** The recorded range as a trace CSV (CLI format) or as a test scenario; answered with `historyText`. */
+  | {
+      readonly type: 'historyExport';
+      readonly id: number;
+      readonly format: 'trace' | 'scenario';
+      readonly names?: readonly string[];
+      readonly inputs?: readonly string[];
+      readonly outputs?: readonly string[];
+      readonly from?: number;
+      readonly to?: number;
+    }
+  /**
+   * Runs a test scenario in the simulator from a cold restart (recorded in the history), stopping
+   * after the first divergent scan; answered with `scenarioReplayed`.
+   */
+  | { readonly type: 'replayScenario'; readonly id: number; readonly project: Project; readonly scenario: Scenario; readonly epoch?: number };
+
+/** A recorded scan as the UI draws it (same layout as a frame). */
+export interface HistoryView {
+  readonly scan: number;
+  readonly timeMs: number;
+  readonly elements: Uint8Array;
+  readonly vlinks: Uint8Array;
+  readonly executed: Uint8Array;
+  readonly values: readonly Value[];
+}
+
+/** What the scan history holds. */
+export interface HistoryRange {
+  readonly first: number;
+  readonly last: number;
+  readonly bytes: number;
+}
 
 export type VariableRole = 'input' | 'output' | 'memory' | 'local' | 'pin';
 
@@ -132,6 +182,8 @@ export interface SimFrame {
   readonly program: string | null;
   /** The last command epoch the worker handled (see WithProject.epoch). */
   readonly epoch: number;
+  /** Scans the history can show; absent when nothing is recorded. */
+  readonly history?: HistoryRange;
 }
 
 /** What an online change keeps and resets (FB instances by name, edge elements by element id). */
@@ -173,4 +225,10 @@ export type WorkerMessage =
   /** The online change `id` went in at the boundary after scan `scan`. */
   | { readonly type: 'onlineApplied'; readonly id: number; readonly scan: number; readonly plan: OnlineChangePlan }
   /** The online change `id` was not applied (cancelled): the running program is unchanged. */
-  | { readonly type: 'onlineCancelled'; readonly id: number };
+  | { readonly type: 'onlineCancelled'; readonly id: number }
+  | { readonly type: 'historyView'; readonly view: HistoryView }
+  /** A historyFind found nothing: said in words. */
+  | { readonly type: 'historyNotFound'; readonly message: string }
+  | { readonly type: 'explanation'; readonly id: number; readonly explanation: Explanation }
+  | { readonly type: 'historyText'; readonly id: number; readonly format: 'trace' | 'scenario'; readonly text: string }
+  | { readonly type: 'scenarioReplayed'; readonly id: number; readonly result: ScenarioResult };

@@ -84,6 +84,13 @@ export class ScanRunner {
     this.resumeAt = undefined;
   }
 
+  /** Scans were run outside the runner (a scenario replay) up to one that started at `lastScanTime`: go on from there. */
+  continueAfter(lastScanTime: number): void {
+    this.lastScanTime = lastScanTime;
+    this.scanStartTime = lastScanTime;
+    this.nextScanTime = lastScanTime + this.cycleMs;
+  }
+
   setCycle(cycleMs: number): void {
     this.cycleMs = cycleMs;
     if (this.timeline) this.timeline = { startWall: this.scheduler.now(), baseTime: this.nextScanTime, k: 0 };

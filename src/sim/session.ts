@@ -6,7 +6,12 @@ import { parseLocation, type Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import { carryForces, carryInstances, carryValues, planInstances, valueFor } from './carryOver';
 import { outputsChanged, packPower, readValues } from './frames';
-import { buildLayout, programFingerprint } from './layout';
+import { HistoryRecorder } from './historyRecorder';
+import type { HistoryOptions } from './history';
+import { buildLayout, findPou, programFingerprint } from './layout';
+import { parseScenario, prepareScenario, runPrepared, scenarioCycle, type ScenarioResult } from './scenario';
+import type { CompiledProgram } from '../engine/plc';
+import type { Pou, Scenario } from '../model/project';
 import { fingerprintId } from './programId';
 import type { HostMessage, OnlineChangePlan, SimFrame, SimLayout, SimMode, WorkerMessage } from './protocol';
 import { ScanRunner, type ScanOutcome } from './scanRunner';
@@ -35,6 +40,9 @@ interface LoadedProgram {
   readonly plc: Plc;
   readonly layout: SimLayout;
   readonly fingerprint: string;
+  /** The compiled program and its document POU, for the scan history and "Why?". */
+  readonly program: unknown;
+  readonly pou: Pou | undefined;
 }
 
 interface PendingChange {
@@ -47,6 +55,7 @@ interface PendingChange {
 
 export class SimSession {
   private plc: Plc | undefined;
+  private loaded: LoadedProgram | undefined;
   private layout: SimLayout | undefined;
   private fingerprint = '';
   /**
@@ -73,6 +82,9 @@ export class SimSession {
   /** The last command epoch handled, echoed in frames. */
   private epoch = 0;
   private readonly runner: ScanRunner;
+  /** Records every scan of the installed program (issue 14); a new program starts a new history. */
+  private recorder: HistoryRecorder | undefined;
+  private historyOptions: HistoryOptions = {};
 
   constructor(private readonly deps: SessionDeps) {
     this.runner = new ScanRunner(
@@ -81,6 +93,7 @@ export class SimSession {
         atBoundary: () => this.applyPending(),
         scanCompleted: (plc, startTime) => {
           if (this.trend.active) this.trend.record(this.scanBase + plc.scanCount, startTime, (n) => plc.read(n));
+          this.recorder?.record(this.scanBase + plc.scanCount, startTime);
           if (this.outputsSubscribed) this.postOutputs();
         },
         stopped: (outcome) => this.stoppedAt(outcome),
@@ -191,6 +204,44 @@ export class SimSession {
       case 'confirmOnline':
         this.answerOnline(m.id, m.apply);
         return;
+      case 'setHistory':
+        this.historyOptions = { maxScans: m.maxScans, budgetBytes: m.budgetBytes };
+        if (this.plc && this.layout && this.recorder) this.recorder = HistoryRecorder.for(this.plc, this.layout, this.loaded?.program, this.loaded?.pou, this.historyOptions);
+        this.postFrame();
+        return;
+      case 'historySeek':
+        this.postHistoryView(m.scan);
+        return;
+      case 'historyFind': {
+        const recorder = this.requireHistory();
+        const found = m.change !== undefined ? recorder.findChange(m.change, m.from, m.direction) : recorder.findCondition(m.condition ?? '', m.from, m.direction);
+        if (found === undefined) {
+          const what = m.change !== undefined ? `no ${m.direction > 0 ? 'later' : 'earlier'} change of ${m.change}` : `${m.condition} does not hold in any ${m.direction > 0 ? 'later' : 'earlier'} recorded scan`;
+          this.deps.post({ type: 'historyNotFound', message: `${what} (scans ${recorder.history.first} to ${recorder.history.last} are recorded)` });
+          return;
+        }
+        this.postHistoryView(found);
+        return;
+      }
+      case 'explain': {
+        const forced = new Set([...(this.plc?.forced().keys() ?? [])].map((n) => n.toUpperCase()));
+        const explanation = this.requireHistory().explain(m.scan, m.target, forced);
+        if (!explanation) throw new Error(`scan ${m.scan} is not in the history`);
+        this.deps.post({ type: 'explanation', id: m.id, explanation });
+        return;
+      }
+      case 'historyExport': {
+        const recorder = this.requireHistory();
+        const text =
+          m.format === 'trace'
+            ? recorder.traceCsv(m.names ?? this.layout!.variables.map((v) => v.name), m.from, m.to)
+            : recorder.scenarioCsv(m.inputs ?? [], m.outputs ?? [], this.runner.cycleMs, m.from, m.to);
+        this.deps.post({ type: 'historyText', id: m.id, format: m.format, text });
+        return;
+      }
+      case 'replayScenario':
+        this.replayScenario(m.id, m.project, m.scenario);
+        return;
       case 'subscribeOutputs':
         this.outputsSubscribed = m.enabled;
         this.lastOutputs = undefined;
@@ -231,6 +282,8 @@ export class SimSession {
     this.pending = undefined;
     this.plc = undefined;
     this.layout = undefined;
+    this.loaded = undefined;
+    this.recorder = undefined;
     this.fingerprint = '';
     this.programId = null;
     this.gatewayInputs = {};
@@ -265,7 +318,13 @@ export class SimSession {
     const clock = this.runner.clock;
     if (!online) clock.set(0);
     const plc = this.deps.engine.createPlc(program, { cycleMs: this.runner.cycleMs, clock });
-    const next: LoadedProgram = { plc, layout: buildLayout(project, plc.pou, plc.variableNames(), this.runner.cycleMs), fingerprint };
+    const next: LoadedProgram = {
+      plc,
+      layout: buildLayout(project, plc.pou, plc.variableNames(), this.runner.cycleMs),
+      fingerprint,
+      program,
+      pou: findPou(project, plc.pou),
+    };
     if (!online) {
       this.install(next, false, diagnostics);
       return true;
@@ -318,6 +377,8 @@ export class SimSession {
     this.bindInputs(next.plc, this.inputKeys, this.gatewayInputs);
     this.plc = next.plc;
     this.layout = next.layout;
+    this.loaded = next;
+    this.recorder = HistoryRecorder.for(next.plc, next.layout, next.program, next.pou, this.historyOptions);
     this.fingerprint = next.fingerprint;
     this.programId = fingerprintId(next.fingerprint);
     this.lastOutputs = undefined;
@@ -382,6 +443,7 @@ export class SimSession {
     this.runner.resetCounters();
     this.scanBase = 0;
     this.trend.clear();
+    this.recorder?.history.clear();
   }
 
   // ---- posting ---------------------------------------------------------------------------------
@@ -423,8 +485,78 @@ export class SimSession {
       ...(trend ? { trend } : {}),
       program: plc ? this.programId : null,
       epoch: this.epoch,
+      ...(this.historyRange() ? { history: this.historyRange()! } : {}),
     };
   }
+
+  // ---- scan history, "Why?" and scenario replay (issue 14) ------------------------------------
+
+  private historyRange(): SimFrame['history'] {
+    const h = this.recorder?.history;
+    return h && h.first !== undefined ? { first: h.first, last: h.last!, bytes: h.bytes } : undefined;
+  }
+
+  private requireHistory(): HistoryRecorder {
+    if (!this.recorder || this.recorder.history.first === undefined) throw new Error('no scan is recorded yet: run or step the program first');
+    return this.recorder;
+  }
+
+  private postHistoryView(scan: number): void {
+    const view = this.requireHistory().view(scan);
+    if (!view) {
+      const h = this.recorder!.history;
+      throw new Error(`scan ${scan} is not in the history (scans ${h.first} to ${h.last} are recorded)`);
+    }
+    this.deps.post({ type: 'historyView', view }, [view.elements.buffer, view.vlinks.buffer, view.executed.buffer]);
+  }
+
+  /** A scenario run in the simulator from a cold restart, recorded, paused after the first divergent scan. */
+  private replayScenario(id: number, project: Project, scenario: Scenario): void {
+    const fail = (error: string) => this.deps.post({ type: 'scenarioReplayed', id, result: { name: scenario.name, ok: false, scans: 0, divergences: [], error } });
+    this.dropProgram();
+    if (!this.loadToStart(project)) return fail('the program does not compile; see the Problems panel');
+    const plc = this.requirePlc();
+    let result: ScenarioResult;
+    try {
+      const parsed = parseScenario(scenario.csv, scenario.name);
+      const prep = prepareScenario(parsed, this.loaded!.program as CompiledProgram);
+      const cycle = scenarioCycle(project, parsed, plc.pou);
+      this.runner.setCycle(cycle);
+      if (this.layout) this.layout = { ...this.layout, cycleMs: cycle };
+      const clock = this.runner.clock;
+      let last = 0;
+      const run = runPrepared(
+        plcScanWithClock(plc, (scan) => clock.set((last = (scan - 1) * cycle))),
+        prep,
+        (scan) => this.recorder?.record(scan, (scan - 1) * cycle),
+      );
+      this.runner.continueAfter(last);
+      result = { name: scenario.name, ...run };
+    } catch (error) {
+      this.mode = 'paused';
+      this.postFrame();
+      return fail(error instanceof Error ? error.message : String(error));
+    }
+    this.mode = plc.fault ? 'faulted' : 'paused';
+    this.postFrame();
+    this.deps.post({ type: 'scenarioReplayed', id, result });
+  }
+}
+
+/** The PLC with its clock set before each scan (scan k at (k - 1) x cycle), for runPrepared. */
+function plcScanWithClock(plc: Plc, before: (scan: number) => void): Plc {
+  let k = 0;
+  return new Proxy(plc, {
+    get(target, key) {
+      if (key === 'scan')
+        return () => {
+          before(++k);
+          return target.scan();
+        };
+      const v = Reflect.get(target, key, target) as unknown;
+      return typeof v === 'function' ? (v as (...a: unknown[]) => unknown).bind(target) : v;
+    },
+  });
 }
 
 /** The locations of a program's input variables, by locationKey. */
