@@ -7,7 +7,7 @@ import type { Project } from '../../src/model/project';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { connections } from './behaviour';
-import { imported } from './fixtures';
+import { imported, run } from './fixtures';
 import { schemaErrors } from './xsd';
 
 const boxes = (p: Project, pou: string): BoxElement[] =>
@@ -126,5 +126,32 @@ describe('PLCopen user blocks', () => {
     expect(back.variables.map((v) => v.name)).toEqual(['X', 'Y']);
     expect(back.source).toBe('Twice := X * 2;');
     expect(back.comment).toBe('Doubles its input.');
+  });
+  it('runs: the imported FB call switches the lamp and counts through its VAR_IN_OUT; the round trip runs alike', () => {
+    const { project } = imported('user-blocks.xml');
+    // Main without its call of the ST function Twice (the simulator runs LD only): Motor and Avg are LD.
+    const ldOnly: Project = {
+      ...project,
+      pous: project.pous.map((p) =>
+        p.name === 'Main' ? { ...p, networks: p.networks.filter((n) => !n.elements.some((e) => e.kind === 'box' && e.blockType === 'Twice')) } : p,
+      ),
+    };
+    for (const p of [ldOnly, reimport(exportPlcopen(ldOnly))]) {
+      const plc = run(p, 'Main');
+      plc.write('Go', true);
+      plc.write('Btn', true);
+      plc.scan();
+      expect([plc.read('Lamp'), plc.read('Enabled'), plc.read('Cnt')]).toEqual([true, true, 1]);
+      plc.write('Btn', false);
+      plc.scans(3);
+      expect([plc.read('Lamp'), plc.read('Cnt')]).toEqual([true, 1]); // sealed in; counted once
+      plc.write('Halt', true);
+      plc.scan();
+      expect(plc.read('Lamp')).toBe(false);
+      plc.write('Go', false);
+      plc.scan();
+      expect(plc.read('Enabled')).toBe(false);
+      expect(plc.scans(100).fault).toBeUndefined();
+    }
   });
 });
