@@ -64,7 +64,35 @@ export interface PowerSnapshot {
   readonly scan: number;
   readonly timeMs: number;
   readonly pou: string;
+  /** The FB instance (or program instance) whose body this is, when one was asked for. */
+  readonly instance?: string;
+  /** One per network of `pou`, in order. */
   readonly networks: readonly NetworkPower[];
+}
+
+export interface SnapshotOptions {
+  /**
+   * An FB instance path (`Motor1`, `Line.Motor1`, case-insensitive) or a program instance of a
+   * configuration: the power of its body's networks (indexes = the POU's networks). Called from
+   * several places, the call that ran last in the scan is shown.
+   */
+  readonly instance?: string;
+}
+
+/** Where execution stands: a POU's network, in an instance when it is a body. */
+export interface StepFrame {
+  readonly pou: string;
+  readonly instance?: string;
+  /** 0-based network index in `pou`. */
+  readonly network: number;
+}
+
+/** A user FB instance of the program, for "pick an instance". */
+export interface InstanceInfo {
+  /** `Motor1`, `Line.Motor1` (a configuration: `Prog1.Motor1`). */
+  readonly path: string;
+  /** The FB's POU name. */
+  readonly type: string;
 }
 
 export interface ScanReport {
@@ -84,6 +112,12 @@ export interface StepReport {
   readonly next: number;
   readonly scanDone: boolean;
   readonly fault?: Fault;
+  /**
+   * Where execution stands after the step: the caller frames then the network to run next, e.g.
+   * `[{ pou: 'Main', network: 3 }, { pou: 'Motor', instance: 'Motor1', network: 1 }]`; empty at a
+   * scan boundary.
+   */
+  readonly frames?: readonly StepFrame[];
 }
 
 export interface Clock {
@@ -150,6 +184,8 @@ export interface StateTransfer {
 export interface PlcProbe {
   /** A reader for one name (`Motor`, `T1.ET`), resolved now; throws on unknown names. */
   reader(name: string): () => Value;
+  /** One function that copies the values of `names` into `out` (same order), generated once; throws on unknown names. */
+  sampler(names: readonly string[]): (out: Value[]) => void;
   /** Packed power-flow words of every network as the last scan left them (a live view: copy what you keep). */
   readonly power: Int32Array;
   /** Scan in which each network last ran (a live view). */
@@ -171,8 +207,17 @@ export interface Plc {
   scans(n: number): ScanReport;
   /** Runs scans until cond() is true after a scan, or maxScans; returns whether cond was met. */
   runUntil(cond: (plc: Plc) => boolean, maxScans: number): boolean;
-  /** Executes one network (starting a scan with the input read if needed); the debugger's step. */
-  stepNetwork(): StepReport;
+  /**
+   * Executes one network (starting a scan with the input read if needed); the debugger's step.
+   * With `into`, a network that calls a user FB or function stops before each network of the
+   * called body (and of bodies it calls); without, a call runs whole (a step left inside a body
+   * finishes the program's network).
+   */
+  stepNetwork(opts?: { readonly into?: boolean }): StepReport;
+  /** Where execution stands (as StepReport.frames): empty at a scan boundary. */
+  position(): readonly StepFrame[];
+  /** User FB instances of the program, nested ones by path. */
+  instances(): readonly InstanceInfo[];
   /** Network to run next within the current scan, -1 at a scan boundary. */
   readonly nextNetwork: number;
   /** Reads a variable or FB pin: `Motor`, `T1.ET`, `%QX0.0` (by location). Throws on unknown names. */
@@ -193,7 +238,7 @@ export interface Plc {
   values(): Record<string, Value>;
   coldRestart(): void;
   warmRestart(): void;
-  snapshot(): PowerSnapshot;
+  snapshot(opts?: SnapshotOptions): PowerSnapshot;
   clearFault(): void;
   /** Identities of the state this program holds: its FB instances, then its edge elements. */
   stateItems(): readonly StateItem[];

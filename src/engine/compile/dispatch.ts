@@ -9,7 +9,7 @@
 // its first scans, and its size depends on the variety of networks, not on their number.
 import type { Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
-import { generateNetwork, NETS_PER_WORD, ProgramConstants, slotKey } from './codegen';
+import { CALL_TEXT, generateNetwork, NETS_PER_WORD, ProgramConstants, slotKey, STEP_CALL_TEXT } from './codegen';
 import type { NetworkIR } from './ir';
 
 /** What each generated dispatch factory receives, in this order. */
@@ -66,6 +66,12 @@ export interface DispatchPlan {
   /** First power word of each network in W, and how many words W needs. */
   readonly words: Int32Array;
   readonly wordCount: number;
+  /**
+   * Body of `new Function(...DISPATCH_PARAMS, stepBody)` returning one generator function per
+   * shape, `(i, now, scan) => next network`, whose calls of bodies are `yield* X.stepCall(...)`:
+   * the slow path used only to step into calls (runtime/scanner.ts).
+   */
+  readonly stepBody: string;
 }
 
 export function planDispatch(
@@ -165,6 +171,22 @@ export function planDispatch(
       '};',
     ].join('\n'),
   );
+  const stepBody = [
+    '"use strict";',
+    ...head,
+    ...shapes.flatMap((sh, s) => sh.arrays.map((n, j) => `const A${s}_${j} = new Array(${n}).fill(0);`)),
+    `const gens = new Array(${shapes.length});`,
+    ...shapes.map(
+      (sh, s) =>
+        `gens[${s}] = function* step_shape_${s}(i, now, scan) {\n  let t = 0, r, eno = 0, go = 0, next = 0, p = base[i];\n  ${sh.text
+          .replace(/\$A(\d+)/g, `A${s}_$1`)
+          .split(CALL_TEXT)
+          .join(STEP_CALL_TEXT)
+          .split('\n')
+          .join('\n  ')}\n  return i + 1;\n};`,
+    ),
+    'return gens;',
+  ].join('\n');
   const groupOf = new Int32Array(count);
   for (let i = 0; i < count; i++) groupOf[i] = groupOfShape[shape[i]!]!;
   return {
@@ -180,5 +202,6 @@ export function planDispatch(
     shapeCount: shapes.length,
     words,
     wordCount,
+    stepBody,
   };
 }

@@ -263,12 +263,12 @@ export class SymbolTable {
   instantiate(pou: Pou, name: string, retain: boolean): UfbSymbol {
     const scope = new SymbolTable(this.storage, `${this.prefix}${name}.`, this.library, this.hidden);
     scope.instantiating = new Set([...this.instantiating, pou.name.toUpperCase()]);
+    const u: UfbSymbol = { kind: 'ufb', name: this.prefix + name, type: pou.name, pou, scope, retain };
+    this.storage.ufbs.push(u); // before its nested instances
     const quiet = new QuietReporter();
     for (const v of pou.variables)
       if (v.varClass !== 'external' && v.varClass !== 'inOut')
         scope.declare(retain && !v.retain ? { ...v, retain: true } : v, false, quiet as unknown as Reporter, v.varClass === 'temp');
-    const u: UfbSymbol = { kind: 'ufb', name: this.prefix + name, type: pou.name, pou, scope, retain };
-    this.storage.ufbs.push(u);
     return u;
   }
 

@@ -2,7 +2,23 @@
 // image, on a virtual clock (scan k starts at (k-1) x cycleMs) or an injected real clock, with a
 // watchdog, forcing, cold/warm restart, stepping one network at a time and power snapshots.
 import type { Value } from '../../model/iecTypes';
-import type { Fault, NetworkPower, Plc, PlcOptions, PlcProbe, PlcState, PowerSnapshot, ScanReport, StateItem, StateTransfer, StepReport } from '../api';
+import type {
+  Fault,
+  InstanceInfo,
+  NetworkPower,
+  Plc,
+  PlcOptions,
+  PlcProbe,
+  PlcState,
+  PowerSnapshot,
+  ScanReport,
+  SnapshotOptions,
+  StateItem,
+  StateTransfer,
+  StepFrame,
+  StepReport,
+} from '../api';
+import type { BodyInfo } from '../compile/flatten';
 import type { FnContext } from '../library/fnTypes';
 import { slotKey } from '../compile/codegen';
 import { DISPATCH_PARAMS, planDispatch, type DispatchFn, type DispatchPlan } from '../compile/dispatch';
@@ -67,6 +83,8 @@ export class ScanPlc implements Plc {
   /** What the generated code calls to run a body of networks (`X.call(first, end, now, scan)`). */
   private readonly exec = {
     call: (first: number, end: number, t: number, scan: number): void => this.callBody(first, end, t, scan),
+    stepCall: (first: number, end: number, t: number, scan: number): Generator<void, void> =>
+      this.stepRange(first, end, t, scan),
   };
   private scanStart = 0;
   private lastExecMs = 0;
@@ -299,9 +317,15 @@ export class ScanPlc implements Plc {
 
   private runScans(n: number): void {
     for (let k = 0; k < n && !this.currentFault; k++) {
-      if (this.cursor === -1) this.startScan();
-      this.run(false);
-      if (this.currentFault) return;
+      if (this.stepper) {
+        // A step into a call left the scan inside a body: finish it on the stepping path.
+        this.advance(() => false);
+        if (this.currentFault) return;
+      } else {
+        if (this.cursor === -1) this.startScan();
+        this.run(false);
+        if (this.currentFault) return;
+      }
       this.endScan();
     }
   }
@@ -314,21 +338,118 @@ export class ScanPlc implements Plc {
     return false;
   }
 
-  stepNetwork(): StepReport {
+  stepNetwork(opts: { readonly into?: boolean } = {}): StepReport {
     if (this.currentFault) return { executed: -1, next: -1, scanDone: false, fault: this.currentFault };
     if (this.cursor === -1) this.startScan();
-    const executed = this.cursor >= 0 ? this.run(true) : -1;
-    if (this.currentFault) return { executed, next: -1, scanDone: false, fault: this.currentFault };
+    if (!opts.into && !this.stepper) {
+      const executed = this.cursor >= 0 ? this.run(true) : -1;
+      if (this.currentFault) return { executed, next: -1, scanDone: false, fault: this.currentFault };
+      if (this.cursor === -2) {
+        this.endScan();
+        return { executed, next: -1, scanDone: true };
+      }
+      return { executed, next: this.cursor, scanDone: false };
+    }
     if (this.cursor === -2) {
       this.endScan();
-      return { executed, next: -1, scanDone: true };
+      return { executed: -1, next: -1, scanDone: true, frames: [] };
     }
-    return { executed, next: this.cursor, scanDone: false };
+    if (!this.stepper) {
+      this.stepper = this.stepScan(this.cursor, this.time, this.count);
+      this.stepper.next(); // to the stop before the cursor's network
+    }
+    const executed = this.frames[0]!.network;
+    // Into: to the next stop at any depth; over (a step left inside a body): back to the program.
+    const done = this.advance(opts.into ? () => true : () => this.frames.length <= 1);
+    if (this.currentFault) return { executed, next: -1, scanDone: false, fault: this.currentFault };
+    if (done) {
+      this.endScan();
+      return { executed, next: -1, scanDone: true, frames: [] };
+    }
+    this.cursor = this.frames[0]!.network;
+    return { executed, next: this.cursor, scanDone: false, frames: this.position() };
+  }
+
+  // ---- stepping into calls (a slow path: generators, built on the first step into a call) ----
+
+  private stepper: Generator<void, void> | undefined;
+  /** Body and (global) network of each level the stepper stands in, the program first. */
+  private frames: { body: number; network: number }[] = [];
+  private stepGens: ((i: number, t: number, scan: number) => Generator<void, number>)[] | undefined;
+
+  /** Runs the stepper to the next stop where `stop()` holds (or to the end of the scan: true). */
+  private advance(stop: () => boolean): boolean {
+    try {
+      for (;;) {
+        if (this.stepper!.next().done) {
+          this.stepper = undefined;
+          this.frames = [];
+          this.cursor = -2;
+          return true;
+        }
+        if (stop()) return false;
+      }
+    } catch (e) {
+      if (!(e instanceof WatchdogTrip)) throw e;
+      this.stepper = undefined;
+      this.frames = [];
+      this.trip(e.network);
+      return false;
+    }
+  }
+
+  private *stepScan(from: number, t: number, scan: number): Generator<void, void> {
+    for (let i = from; i >= 0 && i < this.mainEnd; ) {
+      const end = this.programEnd[i]!;
+      yield* this.stepRange(i, end, t, scan);
+      i = end;
+    }
+  }
+
+  /** Networks [first, end) of one body, stopping before each. */
+  private *stepRange(first: number, end: number, t: number, scan: number): Generator<void, void> {
+    if (!this.stepGens) {
+      const m = this.mem;
+      this.stepGens = (new Function(...DISPATCH_PARAMS, this.plan.stepBody) as (...args: unknown[]) => typeof this.stepGens)(
+        m.b, m.n, m.g, m.fbs, this.program.functions, m.edges, this.power, this.plan.constants, this.ctx,
+        this.ranIn, this.stats, this.plan.P, this.plan.V, this.plan.base, this.plan.shape, this.exec,
+      );
+    }
+    const frame = { body: this.program.bodyOf[first] ?? -1, network: first };
+    this.frames.push(frame);
+    for (let i = first; i >= 0 && i < end; ) {
+      frame.network = i;
+      yield;
+      const next: number = yield* this.stepGens![this.plan.shape[i]!]!(i, t, scan);
+      this.ranIn[i] = scan;
+      this.evals++;
+      if (next >= 0 && next <= i) {
+        this.backJump = i;
+        if (now() - this.scanStart > this.maxScanMs) throw new WatchdogTrip(i);
+      }
+      if (this.evals >= this.maxEvals) throw new WatchdogTrip(i);
+      i = next;
+    }
+    this.frames.pop();
+  }
+
+  position(): readonly StepFrame[] {
+    const frames = this.stepper ? this.frames : this.cursor >= 0 ? [{ body: this.program.bodyOf[this.cursor]!, network: this.cursor }] : [];
+    return frames.map((f) => {
+      const body = this.program.bodies[f.body]!;
+      return { pou: body.pou, ...(body.instance ? { instance: body.instance } : {}), network: f.network - body.first };
+    });
+  }
+
+  instances(): readonly InstanceInfo[] {
+    return this.program.instances;
   }
 
   clearFault(): void {
     this.currentFault = undefined;
     this.cursor = -1;
+    this.stepper = undefined;
+    this.frames = [];
   }
 
   // ---- variables ----
@@ -427,6 +548,8 @@ export class ScanPlc implements Plc {
 
   private resetCommon(): void {
     this.cursor = -1;
+    this.stepper = undefined;
+    this.frames = [];
     this.currentFault = undefined;
     this.ranIn.fill(-1);
     this.power.fill(0);
@@ -474,6 +597,18 @@ export class ScanPlc implements Plc {
         const a = this.access(name);
         return () => mem.read(a);
       },
+      sampler: (names) => {
+        // Straight-line reads (like the generated scan code): a variable from its store, a standard
+        // FB pin from its field; anything else through Memory.read.
+        const accesses = names.map((name) => this.access(name));
+        const body = accesses.map((a, i) => {
+          if (a.kind === 'var') return a.v.store === 'b' ? `o[${i}] = b[${a.v.slot}] === 1;` : `o[${i}] = ${a.v.store}[${a.v.slot}];`;
+          if (a.kind === 'pin' && /^[A-Z_][A-Z0-9_]*$/i.test(a.pin) && a.pin in mem.fbs[a.fb.index]!) return `o[${i}] = f[${a.fb.index}].${a.pin};`;
+          return `o[${i}] = m.read(a[${i}]);`;
+        });
+        const make = new Function('b', 'n', 'g', 'f', 'm', 'a', `return (o) => {\n${body.join('\n')}\n};`) as (...args: unknown[]) => (out: Value[]) => void;
+        return make(mem.b, mem.n, mem.g, mem.fbs, mem, accesses);
+      },
       power: this.power,
       ranIn: this.ranIn,
       words,
@@ -484,18 +619,32 @@ export class ScanPlc implements Plc {
     };
   }
 
-  snapshot(): PowerSnapshot {
+  snapshot(opts: SnapshotOptions = {}): PowerSnapshot {
     const trace: PowerTrace = {
       scan: this.count,
       power: this.power,
       words: this.words,
       ranIn: this.ranIn,
     };
+    const body = opts.instance === undefined ? this.program.bodies[0] : this.bodyOfInstance(opts.instance);
+    if (!body) throw new Error(`${opts.instance}: no FB or program instance of this name is called`);
     return {
       scan: this.count,
       timeMs: this.time,
-      pou: this.pou,
-      networks: networkPower(this.program, trace),
+      pou: body?.pou ?? this.pou,
+      ...(opts.instance !== undefined && body.instance ? { instance: body.instance } : {}),
+      networks: networkPower(this.program, trace, body?.first ?? 0, body?.end ?? 0),
     };
+  }
+
+  /** The body of an instance's call that ran last in the scan (the first call if none ran). */
+  private bodyOfInstance(path: string): BodyInfo | undefined {
+    const key = path.trim().toUpperCase();
+    let best: BodyInfo | undefined;
+    for (const b of this.program.bodies) {
+      if (b.instance?.toUpperCase() !== key) continue;
+      if (!best || (b.end > b.first && (this.ranIn[b.first] ?? -1) > (this.ranIn[best.first] ?? -1))) best = b;
+    }
+    return best;
   }
 }

@@ -18,8 +18,15 @@ function ranInScan(t: PowerTrace, i: number): boolean {
   return t.scan !== 0 && t.ranIn[i] === t.scan;
 }
 
-export function networkPower(program: CompiledProgram, t: PowerTrace): NetworkPower[] {
-  return program.networks.map((ir, i) => {
+/** Power of networks [first, end) (default: every network of the program). */
+export function networkPower(
+  program: CompiledProgram,
+  t: PowerTrace,
+  first = 0,
+  end = program.networks.length,
+): NetworkPower[] {
+  return program.networks.slice(first, end).map((ir, k) => {
+    const i = first + k;
     const shape = program.shapes[i]!;
     const executed = ranInScan(t, i);
     const rails = new Set(ir.railNets);
