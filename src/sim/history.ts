@@ -146,34 +146,34 @@ export class ScanHistory {
   }
 
   /**
-   * Records the state after scan `scan`: `read(i)` gives value i, `power` the packed words and
+   * Records the state after scan `scan`: `values` aligned with the names, `power` the packed words and
    * executed flags. A scan that does not follow the last one (a restart) starts the history over.
    */
-  record(scan: number, timeMs: number, read: (i: number) => Value, power: ArrayLike<number>): void {
+  record(scan: number, timeMs: number, values: ArrayLike<Value>, power: ArrayLike<number>): void {
     const last = this.chunks[this.chunks.length - 1];
     if (!last || scan !== last.lastScan + 1 || last.count >= this.keyEvery || last.deltaEntries > 4 * (this.valueCount + this.powerCount) + 64) {
       if (last && scan !== last.lastScan + 1) this.clear();
-      this.keyFrame(scan, timeMs, read, power);
+      this.keyFrame(scan, timeMs, values, power);
     } else {
-      this.delta(last, timeMs, read, power);
+      this.delta(last, timeMs, values, power);
     }
     this.evict();
   }
 
-  private keyFrame(scan: number, timeMs: number, read: (i: number) => Value, power: ArrayLike<number>): void {
+  private keyFrame(scan: number, timeMs: number, values: ArrayLike<Value>, power: ArrayLike<number>): void {
     const cur = this.cur;
-    for (let i = 0; i < cur.length; i++) cur[i] = read(i);
+    for (let i = 0; i < cur.length; i++) cur[i] = values[i]!;
     for (let i = 0; i < this.curPower.length; i++) this.curPower[i] = power[i]!;
     const chunk = new Chunk(scan, timeMs, cur.slice(), this.curPower.slice());
     this.chunks.push(chunk);
     this.totalBytes += chunk.bytes;
   }
 
-  private delta(chunk: Chunk, timeMs: number, read: (i: number) => Value, power: ArrayLike<number>): void {
+  private delta(chunk: Chunk, timeMs: number, values: ArrayLike<Value>, power: ArrayLike<number>): void {
     const cur = this.cur;
     let entries = 0;
     for (let i = 0; i < cur.length; i++) {
-      const v = read(i);
+      const v = values[i]!;
       if (v !== cur[i]) {
         cur[i] = v;
         chunk.valIdx.push(i);

@@ -16,7 +16,8 @@ import type { HistoryView, SimLayout } from './protocol';
 export class HistoryRecorder {
   readonly history: ScanHistory;
   private readonly probe: PlcProbe;
-  private readonly readers: (() => Value)[];
+  private readonly sample: (out: Value[]) => void;
+  private readonly values: Value[];
   private readonly wordCount: number;
   private readonly scratch: Int32Array;
   private readonly index = new Map<string, number>();
@@ -29,7 +30,8 @@ export class HistoryRecorder {
     opts: HistoryOptions,
   ) {
     this.probe = plc.probe!();
-    this.readers = layout.variables.map((v) => this.probe.reader(v.name));
+    this.sample = this.probe.sampler(layout.variables.map((v) => v.name));
+    this.values = new Array<Value>(layout.variables.length).fill(false);
     layout.variables.forEach((v, i) => this.index.set(v.name.toUpperCase(), i));
     this.wordCount = this.probe.power.length;
     const networks = this.probe.ranIn.length;
@@ -49,8 +51,8 @@ export class HistoryRecorder {
     const own = this.plc.scanCount;
     const ranIn = probe.ranIn;
     for (let n = 0; n < ranIn.length; n++) scratch[wordCount + n] = ranIn[n] === own ? 1 : 0;
-    const readers = this.readers;
-    this.history.record(scan, timeMs, (i) => readers[i]!(), scratch);
+    this.sample(this.values);
+    this.history.record(scan, timeMs, this.values, scratch);
   }
 
   indexOf(name: string): number | undefined {

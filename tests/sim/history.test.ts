@@ -12,7 +12,7 @@ function stateOf(scan: number): { values: Value[]; power: number[] } {
 function recordScans(h: ScanHistory, from: number, to: number, state = stateOf): void {
   for (let s = from; s <= to; s++) {
     const { values, power } = state(s);
-    h.record(s, (s - 1) * 10, (i) => values[i]!, power);
+    h.record(s, (s - 1) * 10, values, power);
   }
 }
 
@@ -78,7 +78,7 @@ describe('scan history', () => {
     const values = new Array<Value>(100).fill(0);
     for (let s = 1; s <= 5000; s++) {
       values[s % 100] = s;
-      h.record(s, s, (i) => values[i]!, [s & 0xff, 0, 0, 0, 0, 0, 0, 0, 0, 0]);
+      h.record(s, s, values, [s & 0xff, 0, 0, 0, 0, 0, 0, 0, 0, 0]);
     }
     expect(h.bytes).toBeLessThanOrEqual(64 * 1024);
     expect(h.last).toBe(5000);
