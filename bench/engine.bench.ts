@@ -1,6 +1,7 @@
 // npm run bench:engine — compile time, scan speed and memory of the LD engine on generated programs
 // of 1,000 and 10,000 networks (mixed contacts, branches, coils; one TON and one CTU every 10
-// networks), against hand-written straight-line JavaScript for the same logic in the same process.
+// networks), against hand-written straight-line JavaScript for the same logic in the same process;
+// then 100 and 1,000 calls of a user FB against the same logic drawn inline (userBlocksBench.ts).
 //
 // Fairness: the baseline is generated from the same rung descriptions as plain JS over plain
 // variables (0/1 numbers, bitwise logic), in functions of 100 rungs, calling the same TON/CTU
@@ -13,6 +14,7 @@ import type { ElementId } from '../src/model/ids';
 import type { Network, Project, Variable } from '../src/model/project';
 import { compileProgram, createPlc } from '../src/engine/plc';
 import { createFb } from '../src/engine/library/fbs';
+import { fbProject, inlineProject } from './userBlocksBench';
 
 type Rung =
   | { kind: 'branch'; a: string; b: string; c: string; d: string; out: string }
@@ -310,8 +312,58 @@ function measure(count: number, scans: number, warmMs: number): { ratio: number;
   return { ratio, nsEngine };
 }
 
+/**
+ * User FBs: N calls of a 3-network Motor FB (seal-in, TON, permissive) against the same logic drawn
+ * inline (3 networks per motor), both compiled by the engine; outputs compared at the end.
+ */
+function measureCalls(count: number, warmMs: number): { ratio: number; usFb: number } {
+  const make = (p: Project) => {
+    const { program, diagnostics } = compileProgram(p);
+    if (!program) throw new Error(`bench program does not compile: ${diagnostics[0]?.message}`);
+    return createPlc(program, { cycleMs: 10, maxScanMs: 60_000 });
+  };
+  const inline = make(inlineProject(count));
+  const calls = make(fbProject(count));
+  let k = 0;
+  const run = (plc: ReturnType<typeof make>, scans: number, from: number): number => {
+    const t = performance.now();
+    for (let s = 0; s < scans; s++) {
+      plc.write('Tick', ((from + s) >> 3) % 2 === 0);
+      plc.scan();
+    }
+    return (performance.now() - t) / scans;
+  };
+  const scans = Math.max(200, Math.round(400_000 / count));
+  const started = performance.now();
+  while (performance.now() - started < warmMs) {
+    run(inline, scans, k);
+    run(calls, scans, k);
+    k += scans;
+  }
+  let bestInline = Infinity;
+  let bestCalls = Infinity;
+  for (let round = 0; round < 5; round++) {
+    bestInline = Math.min(bestInline, run(inline, scans, k));
+    bestCalls = Math.min(bestCalls, run(calls, scans, k));
+    k += scans;
+  }
+  let mismatches = 0;
+  for (let m = 0; m < count; m++) if (inline.read(`Out${m}`) !== calls.read(`Out${m}`)) mismatches++;
+  const ratio = bestCalls / bestInline;
+  console.log(
+    `${count.toLocaleString('en-US')} calls of a 3-network FB: ${(bestCalls * 1000).toFixed(1)} µs/scan; ` +
+      `same logic inline (${(3 * count).toLocaleString('en-US')} networks): ${(bestInline * 1000).toFixed(1)} µs/scan; ` +
+      `ratio ${ratio.toFixed(2)}; outputs ${mismatches === 0 ? 'agree' : `DIFFER for ${mismatches} motors`}`,
+  );
+  if (mismatches) process.exitCode = 1;
+  return { ratio, usFb: bestCalls * 1000 };
+}
+
 const small = measure(1_000, 2_000, 6_000);
 const large = measure(10_000, 200, 15_000);
+const calls100 = measureCalls(100, 3_000);
+const calls1000 = measureCalls(1_000, 6_000);
 console.log(
-  `bench:engine worst-ratio=${Math.max(small.ratio, large.ratio).toFixed(2)} ns-per-network-10k=${Math.round(large.nsEngine)}`,
+  `bench:engine worst-ratio=${Math.max(small.ratio, large.ratio).toFixed(2)} ns-per-network-10k=${Math.round(large.nsEngine)} ` +
+    `fb-calls-ratio-100=${calls100.ratio.toFixed(2)} fb-calls-ratio-1000=${calls1000.ratio.toFixed(2)} fb-1000-calls-us-per-scan=${calls1000.usFb.toFixed(1)}`,
 );

@@ -54,10 +54,28 @@ export class ProgramConstants {
   readonly functionsUsed = new Set<number>();
   readonly fbsUsed = new Set<number>();
   private readonly byKey = new Map<string, number>();
+  private readonly straightBodies = new Map<number, boolean>();
   constructor(
     readonly functions: readonly ResolvedFunction[],
     readonly fbTypes: readonly string[],
+    /**
+     * The program's networks and their power words: with `inlineCalls`, a call of a body without
+     * jumps or RETURN has the body's code written in place (no nested dispatch, as fast as the
+     * same logic drawn inline); otherwise calls run their body through `X.call` (stepping).
+     */
+    readonly program?: { readonly networks: readonly NetworkIR[]; readonly words: ArrayLike<number> },
+    readonly inlineCalls = true,
   ) {}
+  /** True when the body [first, end) is written in place of its calls. */
+  inlines(first: number, end: number): boolean {
+    if (!this.inlineCalls || !this.program) return false;
+    let hit = this.straightBodies.get(first);
+    if (hit === undefined) {
+      hit = isStraight(this.program.networks, first, end);
+      this.straightBodies.set(first, hit);
+    }
+    return hit;
+  }
   /** Name of a K constant (bigints, non-finite numbers, -0). */
   constant(v: Value): string {
     const key = `${typeof v}:${Object.is(v, -0) ? '-0' : String(v)}`;
@@ -79,13 +97,38 @@ export class ProgramConstants {
   }
 }
 
+/** Most operations (nested bodies written in place included) of a body written in place of its calls. */
+export const INLINE_OPS = 200;
+
+/**
+ * A body without jumps or RETURN runs its networks once each, in order: its calls can hold its
+ * code, when it is small enough (every call of it repeats the code, and a function V8 optimises
+ * has a size limit).
+ */
+export function isStraight(networks: readonly NetworkIR[], first: number, end: number): boolean {
+  let ops = 0;
+  const visit = (a: number, b: number): boolean => {
+    for (let i = a; i < b; i++)
+      for (const op of networks[i]!.ops) {
+        if (op.op === 'jump' || op.op === 'return') return false;
+        if (++ops > INLINE_OPS) return false;
+        if (op.op === 'call' && isStraight(networks, op.first, op.end) && !visit(op.first, op.end)) return false;
+      }
+    return true;
+  };
+  return visit(first, end);
+}
+
 class Emitter {
-  readonly lines: string[] = [];
+  lines: string[] = [];
   readonly ints: number[] = [];
   readonly reals: number[] = [];
   readonly writes: WriteParam[] = [];
   readonly arrays: number[] = [];
-  private readonly fbLocals = new Map<number, string>();
+  fbLocals = new Map<number, string>();
+  /** Prefix of FB locals: bodies written in place declare theirs in a block of their own. */
+  fbPrefix = 'F';
+  depth = 0;
   /** Per network: nets holding a left-rail point (constant 1) and nets with one unconditional writer. */
   rails: ReadonlySet<number> = new Set();
   single: ReadonlySet<number> = new Set();
@@ -142,7 +185,7 @@ class Emitter {
     }
     let name = this.fbLocals.get(index);
     if (!name) {
-      name = `F${this.fbLocals.size}`;
+      name = `${this.fbPrefix}${this.fbLocals.size}`;
       this.fbLocals.set(index, name);
       this.lines.push(`const ${name} = fb[${this.p(index)}]; // ${this.pc.fbTypes[index]}`);
     }
@@ -242,17 +285,34 @@ export function generateNetwork(
   firstWord: number,
   mode: CodeMode = { kind: 'shared' },
 ): NetworkCode {
-  const idx = mode.kind === 'inline' ? String(ir.index) : 'i';
   const em = new Emitter(pc, mode);
+  emitNetwork(em, ir, firstWord, mode.kind === 'inline' ? String(ir.index) : 'i');
+  return {
+    text: em.lines.filter((l) => l !== '').join('\n'),
+    ints: em.ints,
+    reals: em.reals,
+    writes: em.writes,
+    arrays: em.arrays,
+  };
+}
+
+/** A network's statements, into `em.lines` (`idx`: the expression of its index, for jumps). */
+function emitNetwork(em: Emitter, ir: NetworkIR, firstWord: number, idx: string): void {
   const L = em.lines;
   const rails = new Set(ir.railNets);
+  const single = singleWriterNets(ir);
   em.rails = rails;
-  em.single = singleWriterNets(ir);
+  em.single = single;
   const live = Array.from({ length: ir.netCount }, (_, i) => i).filter((i) => !rails.has(i));
   if (live.length) L.push(`let ${live.map((i) => `n${i} = 0`).join(', ')};`);
   const controls = ir.ops.some((op) => op.op === 'jump' || op.op === 'return');
   if (controls) L.push(`go = 0; next = ${idx} + 1;`);
-  for (const op of ir.ops) emitOp(em, op);
+  for (const op of ir.ops) {
+    emitOp(em, op);
+    // A body written in place changed the per-network facts: restore this network's.
+    em.rails = rails;
+    em.single = single;
+  }
   for (let w = 0; w * NETS_PER_WORD < ir.netCount; w++) {
     const bits = live
       .filter((i) => Math.floor(i / NETS_PER_WORD) === w)
@@ -260,13 +320,27 @@ export function generateNetwork(
     L.push(`W[${em.p(firstWord + w)}] = ${bits.length ? bits.join(' | ') : '0'};`);
   }
   if (controls) L.push(`if (next !== ${idx} + 1) { S[0] = ${idx}; return next; }`);
-  return {
-    text: L.filter((l) => l !== '').join('\n'),
-    ints: em.ints,
-    reals: em.reals,
-    writes: em.writes,
-    arrays: em.arrays,
-  };
+}
+
+/** The networks of a straight body, each in a block of its own, marked as run in this scan. */
+function inlineBody(em: Emitter, first: number, end: number): string[] {
+  const { networks, words } = em.pc.program!;
+  const saved = { lines: em.lines, fbLocals: em.fbLocals, fbPrefix: em.fbPrefix };
+  em.lines = [];
+  em.depth++;
+  em.fbLocals = new Map();
+  em.fbPrefix = `F${em.depth}_`;
+  for (let i = first; i < end; i++) {
+    em.lines.push(`{ R[${em.p(i)}] = scan;`);
+    emitNetwork(em, networks[i]!, words[i]!, String(i));
+    em.lines.push('}');
+  }
+  const out = em.lines;
+  em.lines = saved.lines;
+  em.fbLocals = saved.fbLocals;
+  em.fbPrefix = saved.fbPrefix;
+  em.depth--;
+  return out;
 }
 
 const and = (a: string, b: string): string => (a === '1' ? b : b === '1' ? a : `${a} & ${b}`);
@@ -354,7 +428,8 @@ function emitCall(em: Emitter, op: Extract<Op, { op: 'call' }>): void {
   const body: string[] = [];
   for (const i of op.inits) body.push(em.writeValue(i.dst, em.constant(i.value), i.dst.type));
   for (const a of op.assigns) body.push(em.writeValue(a.dst, em.readValue(a.src, a.dst.type), a.dst.type));
-  body.push(`${CALL_TEXT}${em.p(op.first)}, ${em.p(op.end)}, now, scan);`);
+  if (em.pc.inlines(op.first, op.end)) body.push(...inlineBody(em, op.first, op.end));
+  else body.push(`${CALL_TEXT}${em.p(op.first)}, ${em.p(op.end)}, now, scan);`);
   const outs: string[] = [];
   for (const o of op.outs)
     emitOutput(em, o.out, em.readValue({ from: 'access', access: o.src }, o.out.type), outs);

@@ -74,19 +74,28 @@ export interface DispatchPlan {
   readonly stepBody: string;
 }
 
+/** `inlineCalls` false: every call runs its body through `X.call` (the plan for stepping into calls). */
+/** First power word of each network in W. */
+export function powerWords(networks: readonly NetworkIR[]): Int32Array {
+  const words = new Int32Array(networks.length);
+  let at = 0;
+  networks.forEach((ir, i) => {
+    words[i] = at;
+    at += Math.ceil(ir.netCount / NETS_PER_WORD);
+  });
+  return words;
+}
+
 export function planDispatch(
   networks: readonly NetworkIR[],
   functions: readonly ResolvedFunction[],
   fbTypes: readonly string[],
+  inlineCalls = true,
 ): DispatchPlan {
   const count = networks.length;
-  const pc = new ProgramConstants(functions, fbTypes);
-  const words = new Int32Array(count);
-  let wordCount = 0;
-  networks.forEach((ir, i) => {
-    words[i] = wordCount;
-    wordCount += Math.ceil(ir.netCount / NETS_PER_WORD);
-  });
+  const words = powerWords(networks);
+  const wordCount = count ? words[count - 1]! + Math.ceil(networks[count - 1]!.netCount / NETS_PER_WORD) : 0;
+  const pc = new ProgramConstants(functions, fbTypes, { networks, words }, inlineCalls);
   const codes = networks.map((ir, i) => generateNetwork(ir, pc, words[i]!));
 
   // Shapes in order of first appearance; the argument-array sizes are part of a shape.

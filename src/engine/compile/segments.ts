@@ -26,11 +26,25 @@ export function planSegments(networks: readonly NetworkIR[], bodyStarts: readonl
     ...networks.flatMap((ir) => ir.ops.flatMap((op) => (op.op === 'jump' ? [op.target] : []))),
     ...bodyStarts,
   ]);
+  // A call's body may be written in place: its operations count where the call is.
+  const weights = new Map<number, number>();
+  const weight = (i: number): number => {
+    let w = weights.get(i);
+    if (w === undefined) {
+      w = 1;
+      for (const op of networks[i]!.ops) {
+        w++;
+        if (op.op === 'call') for (let k = op.first; k < op.end; k++) w += weight(k);
+      }
+      weights.set(i, w);
+    }
+    return w;
+  };
   const starts: number[] = [];
   let start = -1;
   let ops = 0;
-  networks.forEach((ir, i) => {
-    const size = ir.ops.length + 1;
+  networks.forEach((_, i) => {
+    const size = weight(i);
     if (start < 0 || targets.has(i) || ops + size > SEGMENT_OPS || i - start >= SEGMENT_NETWORKS) {
       start = i;
       ops = 0;
@@ -52,7 +66,7 @@ export function generateSegment(
   words: ArrayLike<number>,
   mode: Extract<CodeMode, { kind: 'inline' }>,
 ): { body: string; constants: readonly Value[] } {
-  const pc = new ProgramConstants(functions, fbTypes);
+  const pc = new ProgramConstants(functions, fbTypes, { networks, words });
   const lines: string[] = [];
   const arrays: string[] = [];
   for (let i = first; i < end; i++) {

@@ -20,7 +20,7 @@ import type {
 } from '../api';
 import type { BodyInfo } from '../compile/flatten';
 import type { FnContext } from '../library/fnTypes';
-import { slotKey } from '../compile/codegen';
+import { isStraight, slotKey } from '../compile/codegen';
 import { DISPATCH_PARAMS, planDispatch, type DispatchFn, type DispatchPlan } from '../compile/dispatch';
 import type { SegmentFn } from '../compile/segments';
 import { generateSegment, planSegments } from '../compile/segments';
@@ -153,7 +153,12 @@ export class ScanPlc implements Plc {
       return link(seg.body, seg.constants, plan.shape) as SegmentFn;
     };
     const starts = planSegments(program.networks, program.bodies.map((b) => b.first));
-    this.tiering = new Tiering(starts, liveShape, plan.shape, plan.shapeCount, build, now, tiering);
+    // Bodies without jumps or RETURN are written in place of their calls: never dispatched.
+    const dispatched = new Uint8Array(program.networks.length);
+    program.bodies.forEach((b, k) => {
+      if (k < program.programs || !isStraight(program.networks, b.first, b.end)) dispatched.fill(1, b.first, b.end);
+    });
+    this.tiering = new Tiering(starts, liveShape, plan.shape, plan.shapeCount, build, now, tiering, (first) => dispatched[first] === 1);
     this.coldRestart();
   }
 
@@ -376,6 +381,7 @@ export class ScanPlc implements Plc {
   /** Body and (global) network of each level the stepper stands in, the program first. */
   private frames: { body: number; network: number }[] = [];
   private stepGens: ((i: number, t: number, scan: number) => Generator<void, number>)[] | undefined;
+  private stepPlan: DispatchPlan | undefined;
 
   /** Runs the stepper to the next stop where `stop()` holds (or to the end of the scan: true). */
   private advance(stop: () => boolean): boolean {
@@ -408,19 +414,14 @@ export class ScanPlc implements Plc {
 
   /** Networks [first, end) of one body, stopping before each. */
   private *stepRange(first: number, end: number, t: number, scan: number): Generator<void, void> {
-    if (!this.stepGens) {
-      const m = this.mem;
-      this.stepGens = (new Function(...DISPATCH_PARAMS, this.plan.stepBody) as (...args: unknown[]) => typeof this.stepGens)(
-        m.b, m.n, m.g, m.fbs, this.program.functions, m.edges, this.power, this.plan.constants, this.ctx,
-        this.ranIn, this.stats, this.plan.P, this.plan.V, this.plan.base, this.plan.shape, this.exec,
-      );
-    }
+    const plan = this.stepPlan ?? this.buildStepPlan();
+    const gens = this.stepGens!;
     const frame = { body: this.program.bodyOf[first] ?? -1, network: first };
     this.frames.push(frame);
     for (let i = first; i >= 0 && i < end; ) {
       frame.network = i;
       yield;
-      const next: number = yield* this.stepGens![this.plan.shape[i]!]!(i, t, scan);
+      const next: number = yield* gens[plan.shape[i]!]!(i, t, scan);
       this.ranIn[i] = scan;
       this.evals++;
       if (next >= 0 && next <= i) {
@@ -431,6 +432,21 @@ export class ScanPlc implements Plc {
       i = next;
     }
     this.frames.pop();
+  }
+
+  /** Code where every call runs its body through X.stepCall (bodies are not written in place). */
+  private buildStepPlan(): DispatchPlan {
+    const p = this.program;
+    const plan = planDispatch(p.networks, p.functions, p.symbols.fbs.map((f) => f.type), false);
+    this.stepPlan = plan;
+    for (const v of this.forces.keys())
+      for (const at of plan.writes.get(slotKey(v.store, v.slot)) ?? []) plan.P[at] = this.mem.sink[v.store];
+    const m = this.mem;
+    this.stepGens = (new Function(...DISPATCH_PARAMS, plan.stepBody) as (...args: unknown[]) => typeof this.stepGens)(
+      m.b, m.n, m.g, m.fbs, p.functions, m.edges, this.power, plan.constants, this.ctx,
+      this.ranIn, this.stats, plan.P, plan.V, plan.base, plan.shape, this.exec,
+    );
+    return plan;
   }
 
   position(): readonly StepFrame[] {
@@ -513,6 +529,7 @@ export class ScanPlc implements Plc {
     const key = slotKey(v.store, v.slot);
     const target = forced ? this.mem.sink[v.store] : v.slot;
     for (const at of this.plan.writes.get(key) ?? []) this.plan.P[at] = target;
+    for (const at of this.stepPlan?.writes.get(key) ?? []) this.stepPlan!.P[at] = target;
     this.tiering.invalidate(this.plan.writers.get(key) ?? []);
   }
 

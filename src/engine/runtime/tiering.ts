@@ -62,10 +62,14 @@ export class Tiering {
     private readonly build: (first: number, end: number) => SegmentFn,
     private readonly clock: () => number,
     private readonly opts: TieringOptions = DEFAULT_TIERING,
+    /** Segments the dispatch loops run (not the bodies written in place of their calls). */
+    runs: (first: number) => boolean = () => true,
   ) {
     this.fast = new Array<SegmentFn | undefined>(shape.length).fill(undefined);
-    const switching = shape.length - 1 <= opts.maxNetworks || shapeCount > opts.manyShapes;
-    this.pending = switching ? starts.slice(0, -1) : [];
+    const pending = starts.slice(0, -1).filter(runs);
+    const networks = pending.reduce((n, first) => n + this.endOf(first) - first, 0);
+    const switching = networks <= opts.maxNetworks || shapeCount > opts.manyShapes;
+    this.pending = switching ? pending : [];
   }
 
   private endOf(first: number): number {
