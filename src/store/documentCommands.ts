@@ -273,7 +273,8 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
     },
     updateProject: (patch) => {
       const p = get().project;
-      const before: { name?: string; description?: string } = {};
+      const before: { name?: string; description?: string; scenarios?: Project['scenarios'] } = {};
+      if (patch.scenarios !== undefined) before.scenarios = p.scenarios ?? [];
       if (patch.name !== undefined) before.name = p.name;
       if (patch.description !== undefined) before.description = p.description;
       commit('updateProject', [{ type: 'project.update', before, after: patch }]);

@@ -136,7 +136,7 @@ export interface DocumentState {
   updateVariable(name: string, patch: Partial<Variable>, scope?: VariableScope): boolean;
   deleteVariable(name: string, scope?: VariableScope): void;
   setProjectProfile(profile: Profile): void;
-  updateProject(patch: Partial<Pick<Project, 'name' | 'description'>>): void;
+  updateProject(patch: Partial<Pick<Project, 'name' | 'description' | 'scenarios'>>): void;
 
   undo(): void;
   redo(): void;

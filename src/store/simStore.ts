@@ -11,7 +11,10 @@ import type { Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import type { SimTransport } from '../sim/host';
 import { programId } from '../sim/programId';
-import type { ExecStats, HostMessage, OnlineChangePlan, SimFrame, SimLayout, SimMode, SimValueInput, TrendSamples, WorkerMessage } from '../sim/protocol';
+import type { ExecStats, HistoryRange, HistoryView, HostMessage, OnlineChangePlan, SimFrame, SimLayout, SimMode, SimValueInput, TrendSamples, WorkerMessage } from '../sim/protocol';
+import type { ExplainTarget, Explanation } from '../engine/explain';
+import type { Scenario } from '../model/project';
+import type { ScenarioResult } from '../sim/scenario';
 import { appendTrend, emptyTrend, type TrendBuffer } from '../sim/trendBuffer';
 
 export const DEFAULT_CYCLE_MS = 10;
@@ -73,6 +76,15 @@ export interface SimState {
   readonly onlineChange: OnlineChangeState | undefined;
   /** Online changes ask before they are applied (hardware attached as controller). */
   readonly onlineConfirmRequired: boolean;
+  /** Scans the history holds (issue 14). */
+  readonly history: HistoryRange | undefined;
+  /** The recorded scan shown instead of the live one (canvas, watch, trend cursor); undefined: live. */
+  readonly historyScan: number | undefined;
+  readonly historyTimeMs: number | undefined;
+  /** The last history search that found nothing, or another history message. */
+  readonly historyMessage: string | undefined;
+  /** "Why?" of the viewed scan, and whether one is being worked out. */
+  readonly explanation: Explanation | undefined;
 
   run(project: Project): void;
   pause(): void;
@@ -112,6 +124,23 @@ export interface SimState {
   setInputs(values: Readonly<Record<string, Value>>): void;
   /** Gateway seam: output image after every scan that changed it. Returns an unsubscribe function. */
   onOutputs(listener: (outputs: Readonly<Record<string, Value>>, scan: number) => void): () => void;
+  // ---- scan history, "Why?", scenarios (issue 14) ----
+  /** Shows a recorded scan (the program runs on). */
+  seekHistory(scan: number): void;
+  /** Back to the live view. */
+  goLive(): void;
+  /** The next (1) or previous (-1) change of a variable from the viewed scan. */
+  findChange(name: string, direction: 1 | -1): void;
+  /** The next (1) or previous (-1) scan where a condition holds (`Motor AND NOT Start`). */
+  findCondition(expression: string, direction: 1 | -1): void;
+  /** "Why?" at the viewed scan (the last recorded one when live). */
+  explain(target: ExplainTarget, scan?: number): void;
+  closeExplanation(): void;
+  setHistoryDepth(maxScans: number, budgetBytes: number): void;
+  /** The recorded range as a trace CSV or a scenario. */
+  exportHistory(request: { format: 'trace' | 'scenario'; names?: string[]; inputs?: string[]; outputs?: string[] }): Promise<string>;
+  /** Runs a scenario in the simulator (recorded, paused at the first divergent scan). */
+  replayScenario(project: Project, scenario: Scenario): Promise<ScenarioResult>;
 }
 
 export type SimStore = StoreApi<SimState>;
@@ -143,6 +172,17 @@ export function createSimStore(transport: SimTransport): SimStore {
   let running: string | null = null;
   let epoch = 0;
   const outputListeners = new Set<(outputs: Readonly<Record<string, Value>>, scan: number) => void>();
+  /** Requests answered by id (history export, scenario replay, explanations). */
+  let requestIds = 0;
+  const pending = new Map<number, { resolve: (value: never) => void; reject: (error: Error) => void }>();
+  const request = <T,>(make: (id: number) => HostMessage): Promise<T> =>
+    new Promise<T>((resolve, reject) => {
+      const id = ++requestIds;
+      pending.set(id, { resolve: resolve as (value: never) => void, reject });
+      transport.send(make(id));
+    });
+  /** The live power and values while a recorded scan is shown, to put back on Live. */
+  let liveStash: Pick<SimState, 'elements' | 'vlinks' | 'executed' | 'values'> | undefined;
   const send = (message: HostMessage) => transport.send(message);
 
   /** The document to send with Run/Step unless the worker confirmed it runs this very program. */
@@ -203,6 +243,11 @@ export function createSimStore(transport: SimTransport): SimStore {
       contextMenu: undefined,
       onlineChange: undefined,
       onlineConfirmRequired: false,
+      history: undefined,
+      historyScan: undefined,
+      historyTimeMs: undefined,
+      historyMessage: undefined,
+      explanation: undefined,
 
       run: (project) => {
         set({ refusal: undefined, notice: undefined });
@@ -306,6 +351,59 @@ export function createSimStore(transport: SimTransport): SimStore {
       },
       dismissOnlineChange: () => set({ onlineChange: undefined }),
       setInputs: (values) => send({ type: 'setInputs', values }),
+      seekHistory: (scan) => {
+        const h = get().history;
+        if (!h) return;
+        set({ historyMessage: undefined });
+        send({ type: 'historySeek', scan: Math.max(h.first, Math.min(h.last, Math.round(scan))) });
+      },
+      goLive: () => {
+        if (liveStash) set({ ...liveStash });
+        liveStash = undefined;
+        set({ historyScan: undefined, historyTimeMs: undefined, historyMessage: undefined });
+      },
+      findChange: (name, direction) => {
+        const from = get().historyScan ?? get().history?.last;
+        if (from === undefined) return;
+        set({ historyMessage: undefined });
+        send({ type: 'historyFind', from, direction, change: name });
+      },
+      findCondition: (expression, direction) => {
+        const from = get().historyScan ?? (direction > 0 ? get().history?.first : get().history?.last);
+        if (from === undefined) return;
+        set({ historyMessage: undefined });
+        send({ type: 'historyFind', from: get().historyScan === undefined && direction > 0 ? from - 1 : from, direction, condition: expression });
+      },
+      explain: (target, scan) => {
+        const at = scan ?? get().historyScan ?? get().history?.last;
+        if (at === undefined) {
+          set({ historyMessage: 'Nothing is recorded yet: run or step the program, then ask Why?' });
+          return;
+        }
+        request<Explanation>((id) => ({ type: 'explain', id, scan: at, target })).then(
+          (explanation) => set({ explanation }),
+          (error: Error) => set({ historyMessage: error.message }),
+        );
+      },
+      closeExplanation: () => set({ explanation: undefined }),
+      setHistoryDepth: (maxScans, budgetBytes) => send({ type: 'setHistory', maxScans, budgetBytes }),
+      exportHistory: (r) =>
+        request<string>((id) => ({
+          type: 'historyExport',
+          id,
+          format: r.format,
+          ...(r.names ? { names: r.names } : {}),
+          ...(r.inputs ? { inputs: r.inputs } : {}),
+          ...(r.outputs ? { outputs: r.outputs } : {}),
+        })),
+      replayScenario: (project, scenario) => {
+        sentProject = undefined;
+        expected = new Set([programId(project)]);
+        requested = { project, id: programId(project), by: 'start' };
+        liveStash = undefined;
+        set({ historyScan: undefined, historyTimeMs: undefined, explanation: undefined, refusal: undefined, notice: undefined });
+        return request<ScenarioResult>((id) => ({ type: 'replayScenario', id, project, scenario, epoch: nextEpoch() }));
+      },
       onOutputs: (listener) => {
         outputListeners.add(listener);
         if (outputListeners.size === 1) send({ type: 'subscribeOutputs', enabled: true });
@@ -359,7 +457,19 @@ export function createSimStore(transport: SimTransport): SimStore {
         } else if (program !== null && !expected.has(program)) {
           return; // in flight from before the last command, and not the program shown: never shown
         }
-        store.setState(applyFrame(store.getState(), message.frame));
+        let patch = applyFrame(store.getState(), message.frame);
+        const viewing = store.getState().historyScan !== undefined;
+        const restarted = message.frame.history === undefined;
+        if (viewing && !restarted) {
+          // A recorded scan is shown: the live state is kept for Live, the view stays frozen.
+          const { elements, vlinks, executed, values, ...rest } = patch;
+          liveStash = { elements: elements!, vlinks: vlinks!, executed: executed!, values: values! };
+          patch = rest;
+        } else if (viewing) {
+          liveStash = undefined;
+          patch = { ...patch, historyScan: undefined, historyTimeMs: undefined };
+        }
+        store.setState({ ...patch, history: message.frame.history });
         return;
       }
       case 'error':
@@ -367,6 +477,24 @@ export function createSimStore(transport: SimTransport): SimStore {
         sentProject = undefined;
         store.setState({ notice: message.message });
         return;
+      case 'historyView': {
+        const state = store.getState();
+        if (state.historyScan === undefined) liveStash = { elements: state.elements, vlinks: state.vlinks, executed: state.executed, values: state.values };
+        store.setState({ ...viewOf(message.view), historyMessage: undefined });
+        return;
+      }
+      case 'historyNotFound':
+        store.setState({ historyMessage: message.message });
+        return;
+      case 'explanation':
+      case 'historyText':
+      case 'scenarioReplayed': {
+        const p = pending.get(message.id);
+        pending.delete(message.id);
+        const value = message.type === 'explanation' ? message.explanation : message.type === 'historyText' ? message.text : message.result;
+        p?.resolve(value as never);
+        return;
+      }
       case 'outputs':
         // Only the shown program's outputs reach the gateway.
         if (!expected.has(message.program)) return;
@@ -418,6 +546,10 @@ const NO_PROGRAM: Pick<SimState, 'live' | 'layout' | 'elementIndex' | 'vlinkInde
   vlinkIndex: new Map(),
   variableIndex: new Map(),
 };
+
+function viewOf(view: HistoryView): Partial<SimState> {
+  return { historyScan: view.scan, historyTimeMs: view.timeMs, elements: view.elements, vlinks: view.vlinks, executed: view.executed, values: view.values };
+}
 
 function indexLayout(layout: SimLayout): Pick<SimState, 'layout' | 'elementIndex' | 'vlinkIndex' | 'variableIndex'> {
   const elementIndex = new Map<string, number>();

@@ -5,6 +5,7 @@ import { selectDirty, useDocument, useDocumentStore } from '../../store/document
 import { selectTheme, useUi, useUiStore } from '../../store/uiStore';
 import { CanvasOverlayContext } from '../canvas/overlay';
 import { LadderCanvas } from '../canvas/LadderCanvas';
+import { Timeline } from '../history/Timeline';
 import type { EditorContext } from '../commands/editorActions';
 import { useShortcuts } from '../commands/useShortcuts';
 import { Palette } from '../palette/Palette';
@@ -68,6 +69,7 @@ export function AppShell() {
         </aside>
         <main className="rs-center">
           <LadderCanvas />
+          <Timeline />
         </main>
         <aside className="rs-right">
           <TabbedPanel panels={RIGHT_PANELS} label="Side panel" className="rs-side-panel" />

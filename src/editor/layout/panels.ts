@@ -17,6 +17,8 @@ import { SimToolbar } from '../sim/SimToolbar';
 import { SimulationPanel } from '../sim/SimulationPanel';
 import { TrendPanel } from '../sim/TrendPanel';
 import { WatchPanel } from '../sim/WatchPanel';
+import { WhyPanel } from '../history/WhyPanel';
+import { TestsPanel } from '../scenarios/TestsPanel';
 
 export interface PanelSlot {
   readonly id: string;
@@ -43,6 +45,8 @@ export const BOTTOM_PANELS: readonly PanelSlot[] = [
   { id: 'watch', title: 'Watch', component: WatchPanel },
   { id: 'trend', title: 'Trend', component: TrendPanel },
   { id: 'breakpoints', title: 'Breakpoints & forces', component: SimulationPanel },
+  { id: 'why', title: 'Why?', component: WhyPanel },
+  { id: 'tests', title: 'Tests', component: TestsPanel },
 ];
 
 /** Items in the top bar, after the menus (e.g. simulation controls). */

@@ -1,4 +1,4 @@
-// Right-click menu on a contact or coil while simulating: force, unforce, watch, trend.
+// Right-click menu on a contact or coil while simulating: why?, force, unforce, watch, trend.
 // The canvas opens it with simStore.openContextMenu({ x, y, variable }) (page coordinates).
 // With hardware attached, a field input (a %I variable the gateway has as a point) comes from the
 // device: the menu says so, and forcing it asks for a confirmation first, as stepping on hardware does.
@@ -7,6 +7,7 @@ import type { SimValueInput } from '../../sim/protocol';
 import type { SimState } from '../../store/simStore';
 import { fieldInputAddress, fieldInputWords } from '../hardware/fieldIo';
 import { useGateway } from '../hardware/useGateway';
+import { showWhyTab } from '../history/useWhyKey';
 import { forcedText, liveText } from './liveValues';
 import { useSim, useSimStore } from './simContext';
 import './sim.css';
@@ -101,6 +102,13 @@ function OpenMenu({ x, y, variable }: { x: number; y: number; variable: string }
         <button type="button" role="menuitem" disabled={forced === undefined} onClick={act(() => s.unforce(variable))}>Unforce</button>
       )}
       <button type="button" role="menuitem" onClick={act(() => s.unforceAll())}>Remove all forces</button>
+      <button type="button" role="menuitem" data-testid="sim-why" aria-keyshortcuts="?"
+        onClick={act(() => {
+          s.explain({ kind: 'variable', name: variable });
+          showWhyTab();
+        })}>
+        Why is {variable} {value ?? 'so'}?
+      </button>
       <button type="button" role="menuitem" onClick={act(() => s.addWatch(variable))}>Add to watch</button>
       <button type="button" role="menuitem" onClick={act(() => s.toggleTrend(variable))}>
         {s.trendNames.some((n) => n.toUpperCase() === variable.toUpperCase()) ? 'Remove from trend' : 'Add to trend'}
