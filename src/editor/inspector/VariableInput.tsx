@@ -75,7 +75,8 @@ export function VariableInput(props: VariableInputProps) {
       offered !== undefined
         ? declareChoices(project, offered, role).map((choice) => ({ kind: 'declare' as const, choice }))
         : [];
-    return [...ranked, ...declares];
+    // The offered fresh instance comes first: a second call needs a new instance, not Motor1 again.
+    return offered !== undefined && offered !== text ? [...declares, ...ranked] : [...ranked, ...declares];
   }, [project, pou, role, text]);
   const shown = open && options.length > 0;
   const activeIndex = Math.min(active, options.length - 1);

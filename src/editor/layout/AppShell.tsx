@@ -1,14 +1,15 @@
-// The app shell: top bar with menus, palette on the left, canvas in the centre, tabbed side and
+// The app shell: top bar with menus, palette and project tree on the left, the open POUs' tabs
+// and the canvas in the centre, tabbed side and
 // bottom panels (slots in ./panels.ts), status bar.
 import { Fragment, useEffect, useMemo } from 'react';
 import { selectDirty, useDocument, useDocumentStore } from '../../store/documentStore';
 import { selectTheme, useUi, useUiStore } from '../../store/uiStore';
 import { CanvasOverlayContext } from '../canvas/overlay';
-import { LadderCanvas } from '../canvas/LadderCanvas';
-import { Timeline } from '../history/Timeline';
 import type { EditorContext } from '../commands/editorActions';
 import { useShortcuts } from '../commands/useShortcuts';
-import { Palette } from '../palette/Palette';
+import { LeftPanel } from '../project/LeftPanel';
+import { PouView } from '../project/PouView';
+import { Timeline } from '../history/Timeline';
 import { MenuBar } from './MenuBar';
 import { BOTTOM_PANELS, CANVAS_OVERLAY, HOSTS, RIGHT_PANELS, TOP_BAR_ITEMS } from './panels';
 import { StatusBar } from './StatusBar';
@@ -65,10 +66,10 @@ export function AppShell() {
       </header>
       <div className="rs-workspace">
         <aside className="rs-left">
-          <Palette ctx={ctx} />
+          <LeftPanel />
         </aside>
         <main className="rs-center">
-          <LadderCanvas />
+          <PouView />
           <Timeline />
         </main>
         <aside className="rs-right">

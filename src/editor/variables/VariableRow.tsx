@@ -1,18 +1,22 @@
 // One row of the variable table: every field edits the document as one undoable step on commit.
-import { FB_SIGNATURES, isFbType } from '../../model/blocks';
+import { FB_SIGNATURES } from '../../model/blocks';
 import { ELEMENTARY_TYPES, parseLocation } from '../../model/iecTypes';
-import type { Variable, VarClass } from '../../model/project';
+import type { BlockLibrary } from '../../model/library';
+import type { GlobalScope, Variable, VarClass } from '../../model/project';
 import { CommitInput } from './CommitInput';
 import { canonicalLocation, type VariableField } from './validation';
 
 export const CLASS_LABELS: Record<VarClass, string> = {
-  local: 'VAR',
   input: 'VAR_INPUT',
   output: 'VAR_OUTPUT',
   inOut: 'VAR_IN_OUT',
   external: 'VAR_EXTERNAL',
+  local: 'VAR',
   temp: 'VAR_TEMP',
 };
+
+/** The order of classes in the table: the POU's interface (inputs, outputs, in-outs) first. */
+export const CLASS_ORDER: readonly VarClass[] = ['input', 'output', 'inOut', 'external', 'local', 'temp'];
 
 const FIELD_WORDS: Record<VariableField, string> = {
   name: 'Name',
@@ -28,6 +32,12 @@ interface Props {
   readonly variable: Variable;
   readonly issues: Partial<Record<VariableField, string>>;
   readonly showClass: boolean;
+  /** Globals: where the global is declared (configuration or resource) instead of a class. */
+  readonly showScope?: boolean;
+  /** The project's blocks: FB instance types offered, standard and the project's own. */
+  readonly library: BlockLibrary;
+  /** First row of its class: drawn with a separator above it. */
+  readonly firstOfClass?: boolean;
   readonly focusName: boolean;
   /** How many elements use the variable; showing them cycles through the uses. */
   readonly useCount: number;
@@ -48,14 +58,20 @@ export function VariableRow({
   variable: v,
   issues,
   showClass,
+  showScope = false,
+  library,
+  firstOfClass = false,
   focusName,
   useCount,
   onShowUse,
   onChange,
   onDelete,
 }: Props) {
+  const userFbs = library.userBlocks.filter((s) => s.kind === 'fb');
   const typeKnown =
-    (ELEMENTARY_TYPES as readonly string[]).includes(v.type) || FB_SIGNATURES.some((s) => s.name === v.type);
+    (ELEMENTARY_TYPES as readonly string[]).includes(v.type) ||
+    FB_SIGNATURES.some((s) => s.name === v.type) ||
+    userFbs.some((s) => s.name === v.type);
   const invalid = (field: VariableField) =>
     issues[field] ? { 'aria-invalid': true, title: issues[field] } : {};
   const messages = (Object.keys(issues) as VariableField[]).map((f) => `${FIELD_WORDS[f]}: ${issues[f]}`);
@@ -63,9 +79,39 @@ export function VariableRow({
     <>
       <tr
         data-testid={`variable-row-${v.name}`}
-        className={messages.length ? 'rs-var-row rs-has-issue' : 'rs-var-row'}
+        className={`rs-var-row${messages.length ? ' rs-has-issue' : ''}${firstOfClass ? ' rs-class-first' : ''}`}
       >
-        <td>
+        {showClass && (
+          <td data-col="class">
+            <select
+              aria-label="Class"
+              className="rs-cell-input"
+              value={v.varClass}
+              onChange={(e) => onChange({ varClass: e.target.value as VarClass })}
+            >
+              {CLASS_ORDER.map((c) => (
+                <option key={c} value={c}>
+                  {CLASS_LABELS[c]}
+                </option>
+              ))}
+            </select>
+          </td>
+        )}
+        {showScope && (
+          <td data-col="class">
+            <select
+              aria-label="Declared in"
+              title="Where the global is declared: the configuration or the resource (both are visible to every POU)"
+              className="rs-cell-input"
+              value={v.scope ?? 'configuration'}
+              onChange={(e) => onChange({ scope: e.target.value as GlobalScope })}
+            >
+              <option value="configuration">configuration</option>
+              <option value="resource">resource</option>
+            </select>
+          </td>
+        )}
+        <td data-col="name">
           <CommitInput
             aria-label="Name"
             className="rs-cell-input rs-var-name"
@@ -77,7 +123,7 @@ export function VariableRow({
             {...invalid('name')}
           />
         </td>
-        <td>
+        <td data-col="type">
           <select
             aria-label="Type"
             className="rs-cell-input"
@@ -93,6 +139,15 @@ export function VariableRow({
                 </option>
               ))}
             </optgroup>
+            {userFbs.length > 0 && (
+              <optgroup label="This project's function blocks">
+                {userFbs.map((s) => (
+                  <option key={s.name} value={s.name}>
+                    {s.name}
+                  </option>
+                ))}
+              </optgroup>
+            )}
             <optgroup label="Function block instances">
               {FB_SIGNATURES.map((s) => (
                 <option key={s.name} value={s.name}>
@@ -102,18 +157,18 @@ export function VariableRow({
             </optgroup>
           </select>
         </td>
-        <td>
+        <td data-col="address">
           <CommitInput
             aria-label="Address"
             className="rs-cell-input rs-mono"
-            placeholder={isFbType(v.type) ? '' : v.type === 'BOOL' ? '%QX0.0' : '%MW0'}
+            placeholder={library.isFbType(v.type) ? '' : v.type === 'BOOL' ? '%QX0.0' : '%MW0'}
             spellCheck={false}
             value={v.location ?? ''}
             onCommit={(text) => onChange({ location: normaliseLocation(text) })}
             {...invalid('location')}
           />
         </td>
-        <td>
+        <td data-col="initial">
           <CommitInput
             aria-label="Initial value"
             className="rs-cell-input rs-mono"
@@ -123,23 +178,7 @@ export function VariableRow({
             {...invalid('initial')}
           />
         </td>
-        {showClass && (
-          <td>
-            <select
-              aria-label="Class"
-              className="rs-cell-input"
-              value={v.varClass}
-              onChange={(e) => onChange({ varClass: e.target.value as VarClass })}
-            >
-              {(Object.keys(CLASS_LABELS) as VarClass[]).map((c) => (
-                <option key={c} value={c}>
-                  {CLASS_LABELS[c]}
-                </option>
-              ))}
-            </select>
-          </td>
-        )}
-        <td className="rs-center">
+        <td className="rs-center" data-col="retain">
           <input
             type="checkbox"
             aria-label="RETAIN"
@@ -148,7 +187,7 @@ export function VariableRow({
             {...invalid('retain')}
           />
         </td>
-        <td className="rs-center">
+        <td className="rs-center" data-col="constant">
           <input
             type="checkbox"
             aria-label="CONSTANT"
@@ -156,15 +195,16 @@ export function VariableRow({
             onChange={(e) => onChange({ constant: e.target.checked || undefined })}
           />
         </td>
-        <td>
+        <td data-col="comment">
           <CommitInput
             aria-label="Comment"
+            placeholder="Comment"
             className="rs-cell-input"
             value={v.comment}
             onCommit={(comment) => onChange({ comment })}
           />
         </td>
-        <td className="rs-center">
+        <td className="rs-center" data-col="uses">
           {useCount > 0 ? (
             <button
               type="button"
@@ -181,7 +221,7 @@ export function VariableRow({
             </span>
           )}
         </td>
-        <td>
+        <td data-col="actions">
           <button
             type="button"
             className="rs-icon-button"
@@ -195,7 +235,7 @@ export function VariableRow({
       </tr>
       {messages.length > 0 && (
         <tr className="rs-var-issues">
-          <td colSpan={showClass ? 10 : 9} role="alert" data-testid="variable-issue">
+          <td colSpan={showClass || showScope ? 10 : 9} role="alert" data-testid="variable-issue">
             <div className="rs-var-issue-text">{messages.join(' · ')}</div>
           </td>
         </tr>

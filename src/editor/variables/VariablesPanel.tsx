@@ -1,15 +1,18 @@
 // The variable table: the active POU's variables or the project's globals, edited in place and
-// checked as you type (names, duplicates, addresses, initial values). Long tables render only the
-// rows near the visible part (rowWindow.ts).
+// checked as you type (names, duplicates, addresses, initial values). A POU's variables are sorted
+// by class, its interface first (VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT), with the class column first;
+// in the narrow side panel each variable wraps onto three lines so no column is cut off
+// (variables.css). Long tables render only the rows near the visible part (rowWindow.ts).
 import { useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { VariableScope } from '../../store/changes';
 import { selectProject, useDocument, useDocumentStore, type DocumentState } from '../../store/documentStore';
 import { useUiStore } from '../../store/uiStore';
 import { variable } from '../../model/factory';
+import { blockLibrary } from '../../model/library';
 import type { Variable } from '../../model/project';
 import { useRowWindow } from './rowWindow';
-import { VariableRow } from './VariableRow';
+import { CLASS_ORDER, VariableRow } from './VariableRow';
 import { variableFocus } from './variableFocus';
 import { undeclaredVariables } from './undeclared';
 import { globalVariableUses, pouVariableUses, type VariableUse } from './usage';
@@ -67,16 +70,18 @@ export function VariablesPanel() {
     setReveal({ name: focusRequest.name, focus: true, seq: revealSeq.current });
   }, [focusRequest]);
   const query = filter.trim().toUpperCase();
-  const shown = useMemo(
-    () =>
-      vars
-        .map((v, index) => ({ v, index }))
-        .filter(
-          ({ v }) =>
-            !query || `${v.name} ${v.type} ${v.location ?? ''} ${v.comment}`.toUpperCase().includes(query),
-        ),
-    [vars, query],
-  );
+  const shown = useMemo(() => {
+    const rows = vars
+      .map((v, index) => ({ v, index }))
+      .filter(
+        ({ v }) =>
+          !query || `${v.name} ${v.type} ${v.location ?? ''} ${v.comment}`.toUpperCase().includes(query),
+      );
+    // The interface first: a stable sort by class keeps the declaration order within a class.
+    if (!showGlobals) rows.sort((a, b) => CLASS_ORDER.indexOf(a.v.varClass) - CLASS_ORDER.indexOf(b.v.varClass));
+    return rows;
+  }, [vars, query, showGlobals]);
+  const library = blockLibrary(project);
   const issueRows = useMemo(() => new Set(issues.map((i) => i.index)), [issues]);
   const hasIssue = useMemo(() => shown.map(({ index }) => issueRows.has(index)), [shown, issueRows]);
   const rows = useRowWindow(scroller, hasIssue, () => {
@@ -212,28 +217,41 @@ export function VariablesPanel() {
         >
           <thead>
             <tr>
-              <th>Name</th>
-              <th>Type</th>
-              <th>Address</th>
-              <th>Initial</th>
-              {!showGlobals && <th>Class</th>}
-              <th title="Keeps its value over a warm restart">RETAIN</th>
-              <th title="Read-only">CONST</th>
-              <th>Comment</th>
-              <th title="Elements using the variable">Uses</th>
-              <th aria-label="Actions" />
+              <th data-col="class" title={showGlobals ? 'Declared in the configuration or the resource' : 'Variable class'}>
+                {showGlobals ? 'Declared in' : 'Class'}
+              </th>
+              <th data-col="name">Name</th>
+              <th data-col="type">Type</th>
+              <th data-col="address">Address</th>
+              <th data-col="initial">Initial</th>
+              <th data-col="retain" title="Keeps its value over a warm restart">
+                RETAIN
+              </th>
+              <th data-col="constant" title="Read-only">
+                CONST
+              </th>
+              <th data-col="comment">Comment</th>
+              <th data-col="uses" title="Elements using the variable">
+                Uses
+              </th>
+              <th data-col="actions" aria-label="Actions" />
             </tr>
           </thead>
           <tbody>
             {rows.before > 0 && (
               <tr aria-hidden="true" className="rs-var-spacer" style={{ height: rows.before }} />
             )}
-            {shown.slice(rows.first, rows.last + 1).map(({ v, index }) => (
+            {shown.slice(rows.first, rows.last + 1).map(({ v, index }, i) => (
               <VariableRow
                 key={index}
                 variable={v}
                 issues={issuesByField(issues, index)}
                 showClass={!showGlobals}
+                showScope={showGlobals}
+                library={library}
+                firstOfClass={
+                  !showGlobals && rows.first + i > 0 && shown[rows.first + i - 1]?.v.varClass !== v.varClass
+                }
                 focusName={focusName === v.name}
                 useCount={uses.get(v.name.toUpperCase())?.length ?? 0}
                 onShowUse={() => showUse(v.name)}

@@ -1,0 +1,251 @@
+// The project tree: programs, function blocks and functions (with kind icons), the global
+// variables and the tasks. Click a POU to open it in a tab; add, rename, duplicate and delete
+// POUs (renames follow into calls, instance types and tasks; deleting a used POU asks first).
+import { useState } from 'react';
+import type { PouId } from '../../model/ids';
+import type { Pou, PouKind } from '../../model/project';
+import { selectActivePouId, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
+import { pouNameProblem, pouUsages } from '../../store/pouEdits';
+import { focusVariable } from '../variables/variableFocus';
+import { DeletePouDialog } from './DeletePouDialog';
+import { PouProperties } from './PouProperties';
+import { KIND_ICONS, KIND_TITLES } from './pouWords';
+import './project.css';
+
+const SECTIONS: readonly { kind: PouKind; title: string }[] = [
+  { kind: 'PROGRAM', title: 'Programs' },
+  { kind: 'FUNCTION_BLOCK', title: 'Function blocks' },
+  { kind: 'FUNCTION', title: 'Functions' },
+];
+
+export function ProjectTree() {
+  const store = useDocumentStore();
+  const project = useDocument(selectProject);
+  const activeId = useDocument(selectActivePouId);
+  const [renaming, setRenaming] = useState<PouId | undefined>(undefined);
+  const [deleting, setDeleting] = useState<Pou | undefined>(undefined);
+  const [message, setMessage] = useState('');
+
+  const add = (kind: PouKind) => {
+    const id = store.getState().addPou(kind);
+    if (id) setRenaming(id);
+  };
+  const remove = (pou: Pou) => {
+    if (project.pous.length <= 1) return setMessage('The project needs at least one POU.');
+    setMessage('');
+    // Unused: delete at once (Undo brings it back); used: say where first.
+    if (pouUsages(project, pou.name).length === 0) store.getState().deletePou(pou.id);
+    else setDeleting(pou);
+  };
+  const active = project.pous.find((p) => p.id === activeId);
+
+  return (
+    <section className="rs-project-tree" aria-label="Project" data-testid="project-tree">
+      <div className="rs-tree-toolbar" role="group" aria-label="Add a POU">
+        <button type="button" className="rs-button" data-testid="add-program" onClick={() => add('PROGRAM')}>
+          + Program
+        </button>
+        <button type="button" className="rs-button" data-testid="add-fb" onClick={() => add('FUNCTION_BLOCK')}>
+          + FB
+        </button>
+        <button type="button" className="rs-button" data-testid="add-function" onClick={() => add('FUNCTION')}>
+          + Function
+        </button>
+      </div>
+      {message && (
+        <p role="alert" className="rs-error-text rs-tree-message">
+          {message}
+        </p>
+      )}
+      <ul className="rs-tree" role="tree" aria-label="POUs">
+        {SECTIONS.map(({ kind, title }) => {
+          const pous = project.pous.filter((p) => p.kind === kind);
+          return (
+            <li key={kind} role="treeitem" aria-expanded aria-selected={false} className="rs-tree-section">
+              <span className="rs-tree-heading">
+                {title} <span className="rs-tree-count">{pous.length}</span>
+              </span>
+              <ul role="group">
+                {pous.map((pou) => (
+                  <PouRow
+                    key={pou.id}
+                    pou={pou}
+                    active={pou.id === activeId}
+                    renaming={renaming === pou.id}
+                    onOpen={() => store.getState().setActivePou(pou.id)}
+                    onStartRename={() => setRenaming(pou.id)}
+                    onEndRename={() => setRenaming(undefined)}
+                    onDuplicate={() => store.getState().duplicatePou(pou.id)}
+                    onDelete={() => remove(pou)}
+                  />
+                ))}
+                {pous.length === 0 && <li className="rs-tree-none">none</li>}
+              </ul>
+            </li>
+          );
+        })}
+        <li role="treeitem" aria-selected={false} className="rs-tree-section">
+          <button
+            type="button"
+            className="rs-tree-node"
+            data-testid="tree-globals"
+            title="Show the global variables (VAR_GLOBAL) in the variable table"
+            onClick={() => focusVariable('', true)}
+          >
+            <span className="rs-kind-icon" aria-hidden="true">
+              G
+            </span>
+            Global variables <span className="rs-tree-count">{project.globals.length}</span>
+          </button>
+        </li>
+        <li role="treeitem" aria-expanded aria-selected={false} className="rs-tree-section">
+          <span className="rs-tree-heading">
+            Tasks <span className="rs-tree-count">{project.tasks.length}</span>
+          </span>
+          <ul role="group">
+            {project.tasks.map((t) => (
+              <li key={t.name} className="rs-tree-task" data-testid={`tree-task-${t.name}`}>
+                <span className="rs-mono">{t.name}</span>{' '}
+                <span className="rs-tree-detail">
+                  every {t.cycleMs} ms, priority {t.priority}
+                </span>
+                <ul>
+                  {t.programs.map((p) => (
+                    <li key={p.instance} className="rs-tree-detail">
+                      <span className="rs-mono">{p.instance}</span> : {p.pou}
+                    </li>
+                  ))}
+                </ul>
+              </li>
+            ))}
+          </ul>
+        </li>
+      </ul>
+      {active && <PouProperties key={active.id} pou={active} />}
+      {deleting && (
+        <DeletePouDialog
+          pou={deleting}
+          uses={pouUsages(project, deleting.name)}
+          onCancel={() => setDeleting(undefined)}
+          onDelete={() => {
+            store.getState().deletePou(deleting.id);
+            setDeleting(undefined);
+          }}
+        />
+      )}
+    </section>
+  );
+}
+
+interface PouRowProps {
+  readonly pou: Pou;
+  readonly active: boolean;
+  readonly renaming: boolean;
+  readonly onOpen: () => void;
+  readonly onStartRename: () => void;
+  readonly onEndRename: () => void;
+  readonly onDuplicate: () => void;
+  readonly onDelete: () => void;
+}
+
+function PouRow({ pou, active, renaming, onOpen, onStartRename, onEndRename, onDuplicate, onDelete }: PouRowProps) {
+  return (
+    <li
+      role="treeitem"
+      aria-selected={active}
+      className={active ? 'rs-tree-pou rs-active' : 'rs-tree-pou'}
+      data-testid={`tree-pou-${pou.name}`}
+    >
+      {renaming ? (
+        <RenameField pou={pou} onDone={onEndRename} />
+      ) : (
+        <button
+          type="button"
+          className="rs-tree-node"
+          title={`${KIND_TITLES[pou.kind]} ${pou.name}${pou.language === 'LD' ? '' : ` (${pou.language}, read-only)`}: click to open, double-click to rename`}
+          onClick={onOpen}
+          onDoubleClick={onStartRename}
+          onKeyDown={(e) => {
+            if (e.key === 'F2') {
+              e.preventDefault();
+              onStartRename();
+            }
+          }}
+        >
+          <span className={`rs-kind-icon rs-kind-${pou.kind}`} aria-hidden="true">
+            {KIND_ICONS[pou.kind]}
+          </span>
+          <span className="rs-mono rs-tree-name">{pou.name}</span>
+          {pou.language !== 'LD' && <span className="rs-tree-lang">{pou.language}</span>}
+        </button>
+      )}
+      <span className="rs-tree-actions">
+        <button
+          type="button"
+          className="rs-icon-button"
+          aria-label={`Rename ${pou.name}`}
+          title={`Rename ${pou.name} (F2); calls, instances and tasks follow`}
+          onClick={onStartRename}
+        >
+          ✎
+        </button>
+        <button
+          type="button"
+          className="rs-icon-button"
+          aria-label={`Duplicate ${pou.name}`}
+          title={`Duplicate ${pou.name}`}
+          onClick={onDuplicate}
+        >
+          ❐
+        </button>
+        <button
+          type="button"
+          className="rs-icon-button"
+          aria-label={`Delete ${pou.name}`}
+          title={`Delete ${pou.name}`}
+          onClick={onDelete}
+        >
+          ×
+        </button>
+      </span>
+    </li>
+  );
+}
+
+/** The POU's name being edited: Enter renames (when the name is free), Escape keeps the old one. */
+function RenameField({ pou, onDone }: { readonly pou: Pou; readonly onDone: () => void }) {
+  const store = useDocumentStore();
+  const project = useDocument(selectProject);
+  const [text, setText] = useState(pou.name);
+  const problem = text.trim() === pou.name ? undefined : pouNameProblem(project, text, pou.id);
+  const commit = () => {
+    if (!problem && text.trim() !== pou.name) store.getState().renamePou(pou.id, text);
+    onDone();
+  };
+  return (
+    <span className="rs-tree-rename">
+      <input
+        autoFocus
+        aria-label={`New name for ${pou.name}`}
+        data-testid="pou-rename"
+        className="rs-cell-input rs-mono"
+        value={text}
+        spellCheck={false}
+        aria-invalid={problem ? true : undefined}
+        onFocus={(e) => e.currentTarget.select()}
+        onChange={(e) => setText(e.target.value)}
+        onBlur={commit}
+        onKeyDown={(e) => {
+          e.stopPropagation();
+          if (e.key === 'Enter' && !problem) commit();
+          else if (e.key === 'Escape') onDone();
+        }}
+      />
+      {problem && (
+        <span role="alert" className="rs-error-text rs-tree-message">
+          {problem}
+        </span>
+      )}
+    </span>
+  );
+}
