@@ -2,6 +2,7 @@
 // instance state (two instances, nesting, edge memories), FUNCTION statelessness, VAR_IN_OUT by
 // reference, EN/ENO, RETURN in a body, paths.
 import { describe, expect, test } from 'vitest';
+import { compileProgram, createPlc } from '../../src/engine/plc';
 import { ladder, plcOf, trace, vars, type BoxSpec } from './ladder';
 import { io, multiProject, pou } from './userBlocksHelpers';
 
@@ -307,5 +308,23 @@ describe('standard functions that fail keep their output variable (MATIEC)', () 
       [20, 1],
       [20, 0],
     ]);
+  });
+});
+
+describe('external blocks (vendor libraries)', () => {
+  test('a call of an external FB runs as an empty body: inputs stored, outputs kept, a warning says so', () => {
+    const main = pou('Main', 'PROGRAM', vars('Go BOOL', 'Sock INT := 3', 'Ok INT', 'C1 TCP_CLOSE'), [
+      ladder(['[Go] # # .', '. # # .'], { boxes: [box('TCP_CLOSE', 0, 1, { instance: 'C1', inputs: { SOCKET_ID: 'Sock' }, outputs: { SUCCESS: 'Ok' } })] }),
+    ]);
+    const p = multiProject([main]);
+    const { program, diagnostics } = compileProgram(p);
+    expect(diagnostics.filter((d) => d.rule === 'LD-W10').map((d) => d.message)).toEqual([
+      expect.stringMatching(/external block TCP_CLOSE .* does not run its body/),
+    ]);
+    const plc = createPlc(program!, { cycleMs: 10 });
+    expect(trace(plc, [{ Go: true }], ['C1.CLOSE', 'C1.SOCKET_ID', 'Ok'])).toEqual([[1, 3, 0]]);
+    plc.force('C1.SUCCESS', 7);
+    plc.scan();
+    expect(plc.read('Ok')).toBe(7);
   });
 });

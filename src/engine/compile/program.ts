@@ -175,6 +175,7 @@ function checkCallees(project: Project, roots: readonly Pou[], profile: Project[
   const callees = reachablePous(project, roots);
   const before = out.length;
   const recursive = checkRecursion(project, out, [...roots, ...callees]);
-  for (const callee of callees) lowerPou(project, callee, profile, out, []);
+  // External blocks (no body, known by their interface only) are not POUs of the project to check.
+  for (const callee of callees) if (project.pous.includes(callee)) lowerPou(project, callee, profile, out, []);
   return !recursive && !out.slice(before).some((d) => d.severity === 'error');
 }

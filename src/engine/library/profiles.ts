@@ -53,7 +53,7 @@ export const PROFILE_DIFFERENCES: readonly ProfileDifference[] = [
   {
     id: 'mod-by-zero',
     summary: 'MOD with IN2 = 0',
-    iec: 'OUT = 0 and ENO goes OFF (an error).',
+    iec: 'OUT = 0 and ENO goes OFF (an error): a variable written beside OUT keeps its value.',
     openplc: 'OUT = 0 and ENO stays ON.',
   },
   {
