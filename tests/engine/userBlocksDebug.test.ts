@@ -3,6 +3,7 @@
 import { describe, expect, test } from 'vitest';
 import { compileProgram, createPlc } from '../../src/engine/plc';
 import type { Plc } from '../../src/engine/api';
+import { breakpointAt, needsStepInto, type Breakpoint } from '../../src/engine/runtime/breakpoints';
 import { ladder, plcOf, vars, type BoxSpec } from './ladder';
 import { io, multiProject, pou } from './userBlocksHelpers';
 
@@ -140,5 +141,30 @@ describe('power and instances', () => {
     const renamed = { ...p, pous: p.pous.map((x) => (x.name === 'Main' ? { ...x, variables: x.variables.map((v) => (v.name === 'Motor2' ? { ...v, type: 'Lamp' } : v)) } : x)) };
     const { program } = compileProgram(renamed);
     expect(program).toBeUndefined(); // Motor2 is called as a Motor: LD-R10
+  });
+});
+
+describe('breakpoints by POU and network', () => {
+  const runToBreak = (plc: Plc, bps: Breakpoint[], maxSteps = 50): string | undefined => {
+    for (let k = 0; k < maxSteps; k++) {
+      const hit = k > 0 ? breakpointAt(plc, bps) : undefined;
+      if (hit) return where(plc);
+      const r = plc.stepNetwork({ into: needsStepInto(plc, bps) });
+      if (r.scanDone) return 'scan done';
+    }
+    return undefined;
+  };
+
+  test('a breakpoint in an FB body stops in every instance, or in the one named', () => {
+    const plc = plcOf(project());
+    plc.write('Go', true);
+    const any: Breakpoint[] = [{ pou: 'Motor', network: 1 }];
+    expect(runToBreak(plc, any)).toBe('Main/2 → Motor1 (Motor)/2');
+    expect(runToBreak(plc, any)).toBe('Main/4 → Motor2 (Motor)/2');
+    expect(runToBreak(plc, any)).toBe('scan done');
+    const named: Breakpoint[] = [{ pou: 'lamp', network: 0, instance: 'motor2.l' }];
+    expect(runToBreak(plc, named)).toBe('Main/4 → Motor2 (Motor)/2 → Motor2.L (Lamp)/1');
+    expect(runToBreak(plc, [{ pou: 'Main', network: 2 }])).toBe('scan done');
+    expect(runToBreak(plc, [{ pou: 'Main', network: 2 }])).toBe('Main/3');
   });
 });
