@@ -76,4 +76,28 @@ describe('several programs per task', () => {
       expect.stringMatching(/LD-E20 .*Y runs Fb, a FUNCTION_BLOCK/),
     ]);
   });
+
+  test('two instances of one program keep their own edge memories', () => {
+    const pulse = pou('Pulse', 'PROGRAM', [...vars('Hits INT'), ...io('external', 'In BOOL')], [
+      ladder(['[P:In] # # .', '. # # .', '. # # .'], {
+        boxes: [box('ADD', 0, 1, { inputs: { IN1: 'Hits', IN2: '1' }, outputs: { OUT: 'Hits' } })],
+      }),
+    ]);
+    const p = newProject('Pulses', {
+      pous: [pulse],
+      globals: vars('In BOOL'),
+      tasks: [{ name: 'T', cycleMs: 10, priority: 1, programs: [{ instance: 'A', pou: 'Pulse' }, { instance: 'B', pou: 'Pulse' }] }],
+    });
+    const plc = createPlc(compileProgram(p, { configuration: true }).program!, { cycleMs: 10 });
+    expect(trace(plc, [{ In: true }, {}, { In: false }, { In: true }], ['A.Hits', 'B.Hits'])).toEqual([
+      [1, 1],
+      [1, 1],
+      [1, 1],
+      [2, 2],
+    ]);
+    expect(plc.stateItems().filter((i) => i.kind === 'edge').map((i) => i.label)).toEqual([
+      expect.stringMatching(/^\|P\| In in network 1 of A \(Pulse\)$/),
+      expect.stringMatching(/^\|P\| In in network 1 of B \(Pulse\)$/),
+    ]);
+  });
 });

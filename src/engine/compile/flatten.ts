@@ -80,7 +80,7 @@ export class Flattener implements CallBuilder {
     this.depth++;
     const lowered = lowerPouBody(this.project, pou, this.profile, scope, sink, {
       first,
-      ...(info.kind === 'fb' && info.instance ? { instance: info.instance } : {}),
+      ...(info.instance ? { instance: info.instance } : {}),
       calls: this,
       shared: this.shared,
     });
