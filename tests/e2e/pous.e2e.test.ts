@@ -209,6 +209,14 @@ test('a FUNCTION with a return type: its box has EN/ENO and the result pin OUT o
   // A function's box is EN, Raw / ENO, OUT: two rows.
   await draw.clickCell(1, 1, 1);
   expect((await page.evaluate(() => window.rungsmith!.uiStore!.getState().selection.elements)).length).toBe(1);
+  // Its Raw input has no operand yet: the problem, clicked from another POU, opens Main at the box.
+  await openPou('Scale');
+  await editor.tab('Problems');
+  const problem = editor.problems.getByTestId('problem').filter({ hasText: 'Main' }).first();
+  await problem.waitFor();
+  await problem.click();
+  await poll(async () => page.getByTestId('pou-tab-Main').getAttribute('aria-selected')).toBe('true');
+  expect(await page.evaluate(() => window.rungsmith!.uiStore!.getState().selection.elements)).toEqual([box!.id]);
 });
 
 test('the variable table shows every column inside the side panel at 1280×720', async () => {
