@@ -13,6 +13,7 @@ import { loadProject, saveProject } from '../../src/model/load';
 import type { ExternalBlock, ExternalBlockPin } from '../../src/model/project';
 import { VENDOR_BLOCKS, VENDOR_LIBRARIES, vendorBlock } from '../../src/model/vendorBlocks';
 import { childrenNamed, descend, parseXml, type XmlElement } from '../../src/plcopen/xml/parse';
+import { ladder, plcOf, project as ladderProject, vars } from '../engine/ladder';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
 /** MIT-licensed corpus files copied into the repository. */
@@ -185,6 +186,24 @@ describe('OpenPLC vendor blocks', () => {
     expect(vendorBlock('P1_08T')!.pins.every((p) => p.dir === 'in')).toBe(true);
     // The palette's "Vendor (external)" group: every shipped block, library by library.
     expect(blockLibrary(newProject('P')).externalBlocks.map((s) => s.name)).toEqual(VENDOR_BLOCKS.map((b) => b.name));
+  });
+});
+
+describe('a program calling a vendor block runs', () => {
+  test('the block does nothing: inputs are stored, outputs hold their initial values until the watch table sets them', () => {
+    // [Go]--[ROTARY_SWITCH R1: READ -> ERROR, OUT -> Pos]--(Err)
+    const p = ladderProject(vars('Go BOOL', 'Err BOOL', 'Pos INT', 'R1 ROTARY_SWITCH'), [
+      ladder(['[Go] # # (Err)', '. # # .'], { boxes: [{ row: 0, col: 1, type: 'ROTARY_SWITCH', instance: 'R1', outputs: { OUT: 'Pos' } }] }),
+    ]);
+    const plc = plcOf(p);
+    expect(plc.variableNames()).toEqual(['Go', 'Err', 'Pos', 'R1.READ', 'R1.ERROR', 'R1.OUT']);
+    plc.write('Go', true);
+    plc.scan();
+    expect([plc.read('R1.READ'), plc.read('Err'), plc.read('Pos')]).toEqual([true, false, 0]);
+    plc.write('R1.OUT', 7);
+    plc.force('R1.ERROR', true);
+    plc.scans(2);
+    expect([plc.read('Err'), plc.read('Pos')]).toEqual([true, 7]);
   });
 });
 
