@@ -55,6 +55,8 @@ export function TrendPanel() {
   );
 }
 
+const selectHistoryScan = (s: SimState) => s.historyScan;
+
 function TrendChart({ types }: { types: readonly { name: string; type: string }[] }) {
   const sim = useSimStore();
   const trend = useSim(selectTrend);
@@ -92,6 +94,14 @@ function TrendChart({ types }: { types: readonly { name: string; type: string }[
   useEffect(() => {
     plot.current?.setData(trendData(signals, trend));
   }, [trend, signals]);
+
+  // Scan history: the cursor stands on the recorded scan shown on the canvas (issue 14).
+  const historyScan = useSim(selectHistoryScan);
+  useEffect(() => {
+    const chart = plot.current;
+    if (!chart || historyScan === undefined) return;
+    chart.setCursor({ left: chart.valToPos(historyScan, 'x'), top: 0 });
+  }, [historyScan, trend]);
 
   return <div ref={host} className="rs-sim-chart" data-testid="trend-chart" />;
 }
