@@ -1,6 +1,7 @@
 // PLCopen TC6 XML (v2.01, v2.0, legacy v1.0) → a Rungsmith project plus a report of what changed.
 // Never throws: bad input gives located errors.
 import { newId, type PouId } from '../model/ids';
+import { externalInfo, externalSource } from '../model/externalBlocks';
 import { blockLibrary, type BlockLibrary } from '../model/library';
 import {
   PROJECT_FORMAT,
@@ -16,6 +17,7 @@ import { importLdBody, type BodyTuning } from './importBody';
 import { readInstances, readType, readVarLists } from './importInterface';
 import { LdGraphError, type Finding } from './ldGraph';
 import { pouFingerprint } from './otherPous';
+import { unknownBlocks } from './unknownBlocks';
 import {
   TC6_0200,
   TC6_0201,
@@ -245,7 +247,27 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     };
     return { el: pouEl, lang, pou, addData: pouData.filter((d) => d.attrs.handleUnknown !== 'discard').map(raw) };
   });
-  const library = blockLibrary({ pous: heads.map((h) => h.pou) });
+  // Blocks of no known library become external blocks with the pins the file wires (issue 12 part 5).
+  const external = unknownBlocks(heads, blockLibrary({ pous: heads.map((h) => h.pou) }));
+  const externalBlocks = external.blocks;
+  const library = blockLibrary({ pous: heads.map((h) => h.pou), externalBlocks });
+  externalBlocks.forEach((b, i) => {
+    currentPou = external.firstUse[i]!.pou;
+    warn(
+      `block type ${b.name} is neither a standard block, nor a POU of this file, nor a block of a known vendor library: imported as an external block with the pins the file wires (${b.pins.map((p) => p.name).join(', ') || 'none'}); it is not simulated, its outputs hold their initial values`,
+      external.firstUse[i]!.el,
+    );
+  });
+  const vendorCalls = new Map<string, typeof external.vendorCalls>();
+  for (const c of external.vendorCalls) vendorCalls.set(c.type, [...(vendorCalls.get(c.type) ?? []), c]);
+  for (const [type, calls] of vendorCalls) {
+    currentPou = calls[0]!.pou;
+    warn(
+      `${type} (${externalSource(externalInfo(library.userPou(type))!)}) is an external block: it is not simulated, its outputs hold their initial values and can be set from the Watch table (${calls.length} call${calls.length > 1 ? 's' : ''})`,
+      calls[0]!.el,
+    );
+  }
+  currentPou = undefined;
 
   for (const { el: pouEl, lang, pou: head, addData } of heads) {
     const { name } = head;
@@ -411,6 +433,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     pous,
     globals: inst.globals,
     tasks,
+    ...(externalBlocks.length ? { externalBlocks } : {}),
     extensions: { plcopen: keep },
   };
   const report: ImportReport = { namespace: ns || '(none)', producer, pous: reportPous, warnings };
