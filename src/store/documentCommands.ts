@@ -114,7 +114,9 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
         : undefined;
     },
     wrapInParallelBranch: (network, ids) =>
-      editNetwork('wrapInParallelBranch', network, (n) => edits.wrapInParallelBranch(n, ids, newElementId, lib())),
+      editNetwork('wrapInParallelBranch', network, (n) =>
+        edits.wrapInParallelBranch(n, ids, newElementId, lib()),
+      ),
     moveElements: (network, ids, dRow, dCol) =>
       editNetwork('moveElements', network, (n) => edits.moveElements(n, ids, dRow, dCol, lib())),
     moveElementsToNetwork: (from, ids, to, at) => {

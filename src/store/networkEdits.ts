@@ -40,8 +40,11 @@ export function occupancy(
   return map;
 }
 
-export const elementAt = (n: Network, cell: Cell, lib: BlockLibrary = STANDARD_LIBRARY): LdElement | undefined =>
-  occupancy(n, undefined, lib).get(cellKey(cell.row, cell.col));
+export const elementAt = (
+  n: Network,
+  cell: Cell,
+  lib: BlockLibrary = STANDARD_LIBRARY,
+): LdElement | undefined => occupancy(n, undefined, lib).get(cellKey(cell.row, cell.col));
 
 /** The network with these elements and vertical links, its grid grown to hold them all. */
 export function grow(

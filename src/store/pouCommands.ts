@@ -25,7 +25,11 @@ export interface PouCommands {
   updatePou(id: PouId, patch: PouPatch): boolean;
 }
 
-const DEFAULT_NAMES: Record<PouKind, string> = { PROGRAM: 'Program', FUNCTION_BLOCK: 'FB', FUNCTION: 'Function' };
+const DEFAULT_NAMES: Record<PouKind, string> = {
+  PROGRAM: 'Program',
+  FUNCTION_BLOCK: 'FB',
+  FUNCTION: 'Function',
+};
 
 export function pouCommands({ project, commit, open }: PouCommandOps): PouCommands {
   const find = (id: PouId) => project().pous.find((p) => p.id === id);
@@ -83,7 +87,10 @@ export function pouCommands({ project, commit, open }: PouCommandOps): PouComman
       const changes: Change[] = [{ type: 'pou.remove', index, pou }];
       const key = pou.name.toUpperCase();
       if (p.tasks.some((t) => t.programs.some((x) => x.pou.toUpperCase() === key))) {
-        const tasks = p.tasks.map((t) => ({ ...t, programs: t.programs.filter((x) => x.pou.toUpperCase() !== key) }));
+        const tasks = p.tasks.map((t) => ({
+          ...t,
+          programs: t.programs.filter((x) => x.pou.toUpperCase() !== key),
+        }));
         changes.push({ type: 'tasks.update', before: p.tasks, after: tasks });
       }
       commit('deletePou', changes);

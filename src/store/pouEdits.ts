@@ -60,7 +60,12 @@ export type PouUse =
       readonly element: ElementId;
       readonly instance?: string;
     }
-  | { readonly kind: 'instance'; readonly scope: VariableScope; readonly owner: string; readonly variable: string }
+  | {
+      readonly kind: 'instance';
+      readonly scope: VariableScope;
+      readonly owner: string;
+      readonly variable: string;
+    }
   | { readonly kind: 'task'; readonly task: string; readonly instance: string };
 
 /** Every call (box), instance declaration and task entry naming the POU called `name`. */
@@ -81,12 +86,15 @@ export function pouUsages(project: Project, name: string): PouUse[] {
           });
     });
     for (const v of pou.variables)
-      if (same(v.type, name)) out.push({ kind: 'instance', scope: pou.id, owner: pou.name, variable: v.name });
+      if (same(v.type, name))
+        out.push({ kind: 'instance', scope: pou.id, owner: pou.name, variable: v.name });
   }
   for (const v of project.globals)
-    if (same(v.type, name)) out.push({ kind: 'instance', scope: 'globals', owner: 'global variables', variable: v.name });
+    if (same(v.type, name))
+      out.push({ kind: 'instance', scope: 'globals', owner: 'global variables', variable: v.name });
   for (const task of project.tasks)
-    for (const p of task.programs) if (same(p.pou, name)) out.push({ kind: 'task', task: task.name, instance: p.instance });
+    for (const p of task.programs)
+      if (same(p.pou, name)) out.push({ kind: 'task', task: task.name, instance: p.instance });
   return out;
 }
 
@@ -123,7 +131,8 @@ function retypeVariables(project: Project, from: string, to: string): Change[] {
   const changes: Change[] = [];
   const scan = (scope: VariableScope, vars: readonly Variable[]) =>
     vars.forEach((v, index) => {
-      if (same(v.type, from)) changes.push({ type: 'variable.update', scope, index, before: v, after: { ...v, type: to } });
+      if (same(v.type, from))
+        changes.push({ type: 'variable.update', scope, index, before: v, after: { ...v, type: to } });
     });
   for (const pou of project.pous) scan(pou.id, pou.variables);
   scan('globals', project.globals);
@@ -133,9 +142,13 @@ function retypeVariables(project: Project, from: string, to: string): Change[] {
 /** The changes renaming POU `pou` to `to`: the POU, calls' block types, instance types, task entries. */
 export function renamePouChanges(project: Project, pou: Pou, to: string): Change[] {
   const from = pou.name;
-  const changes: Change[] = [{ type: 'pou.update', pou: pou.id, before: { name: from }, after: { name: to } }];
+  const changes: Change[] = [
+    { type: 'pou.update', pou: pou.id, before: { name: from }, after: { name: to } },
+  ];
   changes.push(
-    ...mapElements(project, (el) => (el.kind === 'box' && same(el.blockType, from) ? { ...el, blockType: to } : el)),
+    ...mapElements(project, (el) =>
+      el.kind === 'box' && same(el.blockType, from) ? { ...el, blockType: to } : el,
+    ),
   );
   changes.push(...retypeVariables(project, from, to));
   const tasks: Task[] = project.tasks.map((t) =>
@@ -162,7 +175,11 @@ export function copyPou(pou: Pou, name: string): Pou {
   };
 }
 
-function renameKey(rec: Readonly<Record<string, string>>, from: string, to: string): Readonly<Record<string, string>> {
+function renameKey(
+  rec: Readonly<Record<string, string>>,
+  from: string,
+  to: string,
+): Readonly<Record<string, string>> {
   const key = Object.keys(rec).find((k) => same(k, from));
   if (key === undefined) return rec;
   const out: Record<string, string> = {};
@@ -176,7 +193,11 @@ function renameKey(rec: Readonly<Record<string, string>>, from: string, to: stri
  */
 export function pinRenameChanges(project: Project, callee: string, from: string, to: string): Change[] {
   const instancesOf = (pou: Pou) =>
-    new Set([...pou.variables, ...project.globals].filter((v) => same(v.type, callee)).map((v) => v.name.toUpperCase()));
+    new Set(
+      [...pou.variables, ...project.globals]
+        .filter((v) => same(v.type, callee))
+        .map((v) => v.name.toUpperCase()),
+    );
   const cache = new Map<PouId, Set<string>>();
   const renamePin = (operand: string, instances: Set<string>): string => {
     const t = operand.trim();

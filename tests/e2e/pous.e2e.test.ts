@@ -27,10 +27,14 @@ beforeAll(async () => {
 });
 
 const project = (): Promise<Project> =>
-  page.evaluate(() => JSON.parse(JSON.stringify(window.rungsmith!.documentStore!.getState().project)) as Project);
+  page.evaluate(
+    () => JSON.parse(JSON.stringify(window.rungsmith!.documentStore!.getState().project)) as Project,
+  );
 const pou = async (name: string) => (await project()).pous.find((p) => p.name === name);
 const calls = async (): Promise<BoxElement[]> =>
-  ((await pou('Main'))?.networks ?? []).flatMap((n) => n.elements.filter((e): e is BoxElement => e.kind === 'box'));
+  ((await pou('Main'))?.networks ?? []).flatMap((n) =>
+    n.elements.filter((e): e is BoxElement => e.kind === 'box'),
+  );
 
 /** Opens a POU from the project tree. */
 async function openPou(name: string) {
@@ -92,7 +96,11 @@ test('an FB Motor with inputs Start/Stop, output Run and its own seal-in rung', 
   await page.keyboard.press('Escape');
   const motor = (await pou('Motor'))!;
   expect(motor.kind).toBe('FUNCTION_BLOCK');
-  expect(motor.variables.map((v) => `${v.name}:${v.varClass}`)).toEqual(['Start:input', 'Stop:input', 'Run:output']);
+  expect(motor.variables.map((v) => `${v.name}:${v.varClass}`)).toEqual([
+    'Start:input',
+    'Stop:input',
+    'Run:output',
+  ]);
   expect(motor.networks[0]!.elements).toHaveLength(11);
 });
 
@@ -197,7 +205,9 @@ test('a FUNCTION with a return type: its box has EN/ENO and the result pin OUT o
   await draw.clickCell(1, 0, 1);
   await page.keyboard.press('b');
   await page.getByRole('combobox', { name: 'Search blocks' }).fill('Scale');
-  expect(await page.getByRole('option', { name: /Scale/ }).first().textContent()).toContain('Raw : INT → OUT : INT');
+  expect(await page.getByRole('option', { name: /Scale/ }).first().textContent()).toContain(
+    'Raw : INT → OUT : INT',
+  );
   await page.keyboard.press('Enter');
   const box = (await calls()).find((b) => b.blockType === 'Scale');
   expect(box).toMatchObject({ row: 0, col: 1 });
@@ -208,7 +218,9 @@ test('a FUNCTION with a return type: its box has EN/ENO and the result pin OUT o
   await editor.inspector.getByText('Raw : INT').waitFor();
   // A function's box is EN, Raw / ENO, OUT: two rows.
   await draw.clickCell(1, 1, 1);
-  expect((await page.evaluate(() => window.rungsmith!.uiStore!.getState().selection.elements)).length).toBe(1);
+  expect((await page.evaluate(() => window.rungsmith!.uiStore!.getState().selection.elements)).length).toBe(
+    1,
+  );
   // Its Raw input has no operand yet: the problem, clicked from another POU, opens Main at the box.
   await openPou('Scale');
   await editor.tab('Problems');
@@ -216,7 +228,9 @@ test('a FUNCTION with a return type: its box has EN/ENO and the result pin OUT o
   await problem.waitFor();
   await problem.click();
   await poll(async () => page.getByTestId('pou-tab-Main').getAttribute('aria-selected')).toBe('true');
-  expect(await page.evaluate(() => window.rungsmith!.uiStore!.getState().selection.elements)).toEqual([box!.id]);
+  expect(await page.evaluate(() => window.rungsmith!.uiStore!.getState().selection.elements)).toEqual([
+    box!.id,
+  ]);
 });
 
 test('the variable table shows every column inside the side panel at 1280×720', async () => {
@@ -225,9 +239,9 @@ test('the variable table shows every column inside the side panel at 1280×720',
   await editor.tab('Variables');
   // A local variable declared before an output still sorts after the interface.
   await editor.declare('Latch', { type: 'BOOL' });
-  const names = await editor.variables.locator('tr.rs-var-row input[aria-label="Name"]').evaluateAll((els) =>
-    els.map((e) => (e as HTMLInputElement).value),
-  );
+  const names = await editor.variables
+    .locator('tr.rs-var-row input[aria-label="Name"]')
+    .evaluateAll((els) => els.map((e) => (e as HTMLInputElement).value));
   expect(names).toEqual(['Start', 'Stop', 'Run', 'Latch']);
   const panel = await editor.variables.locator('.rs-var-scroll').boundingBox();
   const side = await page.locator('.rs-right').boundingBox();
@@ -260,19 +274,20 @@ test('the variable table shows every column inside the side panel at 1280×720',
 });
 
 test('a POU written in ST is listed and opens read-only with its source', async () => {
-  await page.evaluate(
-    ({ p }) => window.rungsmith!.documentStore!.getState().loadProject(p),
-    {
-      p: newProject('Mixed', {
-        pous: [
-          newPou('Main'),
-          newPou('Filter', { kind: 'FUNCTION_BLOCK', language: 'ST', networks: [], source: 'OUT := IN * 2;' }),
-        ],
-      }),
-    },
-  );
+  await page.evaluate(({ p }) => window.rungsmith!.documentStore!.getState().loadProject(p), {
+    p: newProject('Mixed', {
+      pous: [
+        newPou('Main'),
+        newPou('Filter', { kind: 'FUNCTION_BLOCK', language: 'ST', networks: [], source: 'OUT := IN * 2;' }),
+      ],
+    }),
+  });
   await page.getByTestId('tab-project').click();
-  await page.getByTestId('tree-pou-Filter').getByRole('button', { name: /Filter/ }).first().click();
+  await page
+    .getByTestId('tree-pou-Filter')
+    .getByRole('button', { name: /Filter/ })
+    .first()
+    .click();
   const view = page.getByTestId('source-view');
   await view.waitFor();
   expect(await view.textContent()).toContain('Rungsmith edits and runs LD only');

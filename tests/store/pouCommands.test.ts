@@ -24,7 +24,13 @@ function motorProject(): { store: DocumentStore; main: PouId; motor: PouId } {
   s().addVariable(variable('Motor2', 'Motor'));
   const net = pouByName(s().project, 'Main').networks[0]!.id;
   const box = (instance: string) =>
-    ({ kind: 'box', blockType: 'Motor', instance, inputs: { Start: 'B1', Stop: 'B2' }, outputs: { Run: 'Lamp' } }) as const;
+    ({
+      kind: 'box',
+      blockType: 'Motor',
+      instance,
+      inputs: { Start: 'B1', Stop: 'B2' },
+      outputs: { Run: 'Lamp' },
+    }) as const;
   s().placeElement(net, { row: 0, col: 1 }, box('Motor1'));
   s().placeElement(net, { row: 2, col: 1 }, box('Motor2'));
   s().placeElement(net, { row: 3, col: 0 }, { kind: 'contact', contact: 'NO', variable: 'Motor1.Run' });
@@ -132,7 +138,7 @@ test('duplicating a POU gives a copy with new ids, opened', () => {
   expect(s().project.pous.map((p) => p.name)).toContain('Motor_copy1');
 });
 
-test("renaming an FB input renames the operand on every call and Instance.Pin uses; undo restores", () => {
+test('renaming an FB input renames the operand on every call and Instance.Pin uses; undo restores', () => {
   const { store, motor } = motorProject();
   const s = () => store.getState();
   s().updateVariable('Run', { name: 'Running' }, motor);
@@ -147,7 +153,9 @@ test("renaming an FB input renames the operand on every call and Instance.Pin us
   s().undo();
   s().undo();
   expect(boxes(s().project).map((b) => b.outputs)).toEqual([{ Run: 'Lamp' }, { Run: 'Lamp' }]);
-  expect(pouByName(s().project, 'Main').networks[0]!.elements.find((e) => e.kind === 'contact')).toMatchObject({
+  expect(
+    pouByName(s().project, 'Main').networks[0]!.elements.find((e) => e.kind === 'contact'),
+  ).toMatchObject({
     variable: 'Motor1.Run',
   });
 });

@@ -14,7 +14,7 @@ export function BlockPicker({ onDone }: { readonly onDone: () => void }) {
   const [query, setQuery] = useState('');
   const [active, setActive] = useState(0);
   const library = useDocument(selectLibrary);
-  const editing = useDocument((s) => selectActivePou(s)?.name);
+  const editing = useDocument(selectActivePou);
   const results = useMemo(
     () => searchBlocks(query, library, editing).slice(0, 200),
     [query, library, editing],

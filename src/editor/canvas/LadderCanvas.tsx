@@ -228,7 +228,10 @@ export function LadderCanvas() {
         <div
           className="rs-canvas-sticky"
           style={{ width: size.width, height: size.height }}
-          title={hoverText(hoverNetwork && hover && elementAt(hoverNetwork, hover.cell, library), hoverProblems)}
+          title={hoverText(
+            hoverNetwork && hover && elementAt(hoverNetwork, hover.cell, library),
+            hoverProblems,
+          )}
           {...handlers}
         >
           <div className="rs-world" ref={worldRef}>

@@ -27,8 +27,8 @@ export function BoxInspector({ box }: { box: BoxElement }) {
   if (!signature || !layout) {
     return (
       <p className="rs-error-text">
-        "{box.blockType}" is neither a standard block nor a function block or function of this project; add a POU
-        of that name, or delete the box.
+        "{box.blockType}" is neither a standard block nor a function block or function of this project; add a
+        POU of that name, or delete the box.
       </p>
     );
   }
@@ -54,7 +54,10 @@ export function BoxInspector({ box }: { box: BoxElement }) {
         </button>
       )}
       {isFb && (
-        <label className="rs-field" title="EN/ENO pins: with EN FALSE the instance is not called and keeps its outputs">
+        <label
+          className="rs-field"
+          title="EN/ENO pins: with EN FALSE the instance is not called and keeps its outputs"
+        >
           <span>EN/ENO</span>
           <input
             type="checkbox"

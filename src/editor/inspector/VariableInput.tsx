@@ -68,7 +68,9 @@ export function VariableInput(props: VariableInputProps) {
     const offered =
       resolution.status === 'undeclared'
         ? text
-        : resolution.status === 'empty' && role.kind === 'instance' && blockLibrary(project).userPou(role.blockType)
+        : resolution.status === 'empty' &&
+            role.kind === 'instance' &&
+            blockLibrary(project).userPou(role.blockType)
           ? freshInstanceName(project, pou, role.blockType)
           : undefined;
     const declares =

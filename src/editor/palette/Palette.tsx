@@ -25,7 +25,7 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
   const tool = useUi((s) => s.tool);
   const [query, setQuery] = useState('');
   const library = useDocument(selectLibrary);
-  const editing = useDocument((s) => selectActivePou(s)?.name);
+  const editing = useDocument(selectActivePou);
   const blocks = useMemo(() => searchBlocks(query, library, editing), [query, library, editing]);
 
   const arm = (name: string, t: Tool) => {
@@ -34,7 +34,11 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
     ui.getState().setTool(current.kind === 'place' && current.name === name ? { kind: 'select' } : t);
   };
   const armBlock = (sig: BlockSignature) =>
-    arm(`block-${sig.name}`, { kind: 'place', name: `block-${sig.name}`, template: boxTemplate(sig, library) });
+    arm(`block-${sig.name}`, {
+      kind: 'place',
+      name: `block-${sig.name}`,
+      template: boxTemplate(sig, library),
+    });
   const runCommand = (id: string) => commandById(id)?.run(ctx);
 
   return (

@@ -5,6 +5,7 @@ import { boxLayoutFor } from '../../model/boxLayout';
 import { FB_SIGNATURES, FUNCTION_SIGNATURES, type BlockSignature } from '../../model/blocks';
 import { declaredPinType, STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { CoilType, ContactType } from '../../model/elements';
+import type { Pou } from '../../model/project';
 import type { ElementTemplate } from '../../store/networkEdits';
 
 export interface PaletteItem {
@@ -77,13 +78,7 @@ export const PALETTE_ITEMS: readonly PaletteItem[] = [
   coil('M', 'Retentive coil', '-(M)-', 'm', 'A coil whose variable is kept over a warm restart.'),
   coil('SM', 'Retentive set coil', '-(SM)-', 'shift+s', 'A set coil whose variable is retentive.'),
   coil('RM', 'Retentive reset coil', '-(RM)-', 'shift+r', 'A reset coil whose variable is retentive.'),
-  coil(
-    'P',
-    'Positive transition coil',
-    '-(P)-',
-    'u',
-    'TRUE for one evaluation when the power flow rises.',
-  ),
+  coil('P', 'Positive transition coil', '-(P)-', 'u', 'TRUE for one evaluation when the power flow rises.'),
   coil(
     'N',
     'Negative transition coil',
@@ -151,17 +146,29 @@ const CATEGORY_ORDER: readonly BlockSignature['category'][] = [
   'external',
 ];
 
+/** Place of a block's category in the list; a category not listed goes last. */
+const categoryRank = (s: BlockSignature) => {
+  const i = CATEGORY_ORDER.indexOf(s.category);
+  return i < 0 ? CATEGORY_ORDER.length : i;
+};
+
 /** "Start : BOOL, Stop : BOOL → Run : BOOL": a block's pins for tooltips and the block picker. */
 export function pinSummary(sig: BlockSignature): string {
-  const pins = (list: BlockSignature['inputs']) => list.map((p) => `${p.name} : ${declaredPinType(p)}`).join(', ');
+  const pins = (list: BlockSignature['inputs']) =>
+    list.map((p) => `${p.name} : ${declaredPinType(p)}`).join(', ');
   return `${pins(sig.inputs) || '(no inputs)'} → ${pins(sig.outputs) || '(no outputs)'}`;
 }
 
 /**
  * Blocks whose name, category or description matches the query: the project's own blocks, then
- * FBs and common blocks. `exclude` leaves out a block by name (the POU being edited: no recursion).
+ * FBs and common blocks. Inside a POU (`editing`), the POU itself is left out (no recursion), and a
+ * FUNCTION is offered no function blocks (it cannot hold their instances).
  */
-export function searchBlocks(query: string, library: BlockLibrary = STANDARD_LIBRARY, exclude?: string): BlockSignature[] {
+export function searchBlocks(
+  query: string,
+  library: BlockLibrary = STANDARD_LIBRARY,
+  editing?: Pick<Pou, 'name' | 'kind'>,
+): BlockSignature[] {
   const q = query.trim().toUpperCase();
   const rank = (s: BlockSignature) => {
     if (!q) return 0;
@@ -172,10 +179,13 @@ export function searchBlocks(query: string, library: BlockLibrary = STANDARD_LIB
     if (s.category.toUpperCase().includes(q) || s.description.toUpperCase().includes(q)) return 3;
     return -1;
   };
-  const skip = exclude?.toUpperCase();
+  const skip = editing?.name.toUpperCase();
   const users = library.userBlocks.filter((s) => s.name.toUpperCase() !== skip);
-  return [...users, ...ALL_BLOCKS].map((s) => ({ s, r: rank(s) }))
+  const inFunction = editing?.kind === 'FUNCTION';
+  return [...users, ...ALL_BLOCKS]
+    .filter((s) => !inFunction || s.kind !== 'fb')
+    .map((s) => ({ s, r: rank(s) }))
     .filter((x) => x.r >= 0)
-    .sort((a, b) => a.r - b.r || CATEGORY_ORDER.indexOf(a.s.category) - CATEGORY_ORDER.indexOf(b.s.category))
+    .sort((a, b) => a.r - b.r || categoryRank(a.s) - categoryRank(b.s))
     .map((x) => x.s);
 }

@@ -28,15 +28,20 @@ export function DeletePouDialog({
           <button type="button" className="rs-button" autoFocus onClick={onCancel}>
             Cancel
           </button>
-          <button type="button" className="rs-button rs-primary" data-testid="confirm-delete-pou" onClick={onDelete}>
+          <button
+            type="button"
+            className="rs-button rs-primary"
+            data-testid="confirm-delete-pou"
+            onClick={onDelete}
+          >
             Delete {pou.name}
           </button>
         </>
       }
     >
       <p id="rs-delete-pou-text">
-        {pou.name} is used in {uses.length} place{uses.length === 1 ? '' : 's'}. The calls and instances stay and the
-        Problems list will report them; Undo brings {pou.name} back.
+        {pou.name} is used in {uses.length} place{uses.length === 1 ? '' : 's'}. The calls and instances stay
+        and the Problems list will report them; Undo brings {pou.name} back.
       </p>
       <ul className="rs-delete-uses" data-testid="pou-uses">
         {uses.map((u, i) => (

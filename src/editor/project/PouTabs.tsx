@@ -1,6 +1,12 @@
 // The open POUs as tabs above the canvas: click to show one, × (or middle click) to close it.
 import type { PouId } from '../../model/ids';
-import { selectActivePouId, selectOpenPouIds, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
+import {
+  selectActivePouId,
+  selectOpenPouIds,
+  selectProject,
+  useDocument,
+  useDocumentStore,
+} from '../../store/documentStore';
 import { KIND_ICONS, KIND_TITLES } from './pouWords';
 
 export function PouTabs() {

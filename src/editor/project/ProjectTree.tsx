@@ -45,10 +45,20 @@ export function ProjectTree() {
         <button type="button" className="rs-button" data-testid="add-program" onClick={() => add('PROGRAM')}>
           + Program
         </button>
-        <button type="button" className="rs-button" data-testid="add-fb" onClick={() => add('FUNCTION_BLOCK')}>
+        <button
+          type="button"
+          className="rs-button"
+          data-testid="add-fb"
+          onClick={() => add('FUNCTION_BLOCK')}
+        >
           + FB
         </button>
-        <button type="button" className="rs-button" data-testid="add-function" onClick={() => add('FUNCTION')}>
+        <button
+          type="button"
+          className="rs-button"
+          data-testid="add-function"
+          onClick={() => add('FUNCTION')}
+        >
           + Function
         </button>
       </div>
@@ -57,15 +67,15 @@ export function ProjectTree() {
           {message}
         </p>
       )}
-      <ul className="rs-tree" role="tree" aria-label="POUs">
+      <ul className="rs-tree" aria-label="POUs and project data">
         {SECTIONS.map(({ kind, title }) => {
           const pous = project.pous.filter((p) => p.kind === kind);
           return (
-            <li key={kind} role="treeitem" aria-expanded aria-selected={false} className="rs-tree-section">
+            <li key={kind} className="rs-tree-section">
               <span className="rs-tree-heading">
                 {title} <span className="rs-tree-count">{pous.length}</span>
               </span>
-              <ul role="group">
+              <ul aria-label={title}>
                 {pous.map((pou) => (
                   <PouRow
                     key={pou.id}
@@ -84,7 +94,7 @@ export function ProjectTree() {
             </li>
           );
         })}
-        <li role="treeitem" aria-selected={false} className="rs-tree-section">
+        <li className="rs-tree-section">
           <button
             type="button"
             className="rs-tree-node"
@@ -98,11 +108,11 @@ export function ProjectTree() {
             Global variables <span className="rs-tree-count">{project.globals.length}</span>
           </button>
         </li>
-        <li role="treeitem" aria-expanded aria-selected={false} className="rs-tree-section">
+        <li className="rs-tree-section">
           <span className="rs-tree-heading">
             Tasks <span className="rs-tree-count">{project.tasks.length}</span>
           </span>
-          <ul role="group">
+          <ul aria-label="Tasks">
             {project.tasks.map((t) => (
               <li key={t.name} className="rs-tree-task" data-testid={`tree-task-${t.name}`}>
                 <span className="rs-mono">{t.name}</span>{' '}
@@ -148,20 +158,25 @@ interface PouRowProps {
   readonly onDelete: () => void;
 }
 
-function PouRow({ pou, active, renaming, onOpen, onStartRename, onEndRename, onDuplicate, onDelete }: PouRowProps) {
+function PouRow({
+  pou,
+  active,
+  renaming,
+  onOpen,
+  onStartRename,
+  onEndRename,
+  onDuplicate,
+  onDelete,
+}: PouRowProps) {
   return (
-    <li
-      role="treeitem"
-      aria-selected={active}
-      className={active ? 'rs-tree-pou rs-active' : 'rs-tree-pou'}
-      data-testid={`tree-pou-${pou.name}`}
-    >
+    <li className={active ? 'rs-tree-pou rs-active' : 'rs-tree-pou'} data-testid={`tree-pou-${pou.name}`}>
       {renaming ? (
         <RenameField pou={pou} onDone={onEndRename} />
       ) : (
         <button
           type="button"
           className="rs-tree-node"
+          aria-current={active ? 'page' : undefined}
           title={`${KIND_TITLES[pou.kind]} ${pou.name}${pou.language === 'LD' ? '' : ` (${pou.language}, read-only)`}: click to open, double-click to rename`}
           onClick={onOpen}
           onDoubleClick={onStartRename}

@@ -78,7 +78,8 @@ export function VariablesPanel() {
           !query || `${v.name} ${v.type} ${v.location ?? ''} ${v.comment}`.toUpperCase().includes(query),
       );
     // The interface first: a stable sort by class keeps the declaration order within a class.
-    if (!showGlobals) rows.sort((a, b) => CLASS_ORDER.indexOf(a.v.varClass) - CLASS_ORDER.indexOf(b.v.varClass));
+    if (!showGlobals)
+      rows.sort((a, b) => CLASS_ORDER.indexOf(a.v.varClass) - CLASS_ORDER.indexOf(b.v.varClass));
     return rows;
   }, [vars, query, showGlobals]);
   const library = blockLibrary(project);
@@ -217,7 +218,10 @@ export function VariablesPanel() {
         >
           <thead>
             <tr>
-              <th data-col="class" title={showGlobals ? 'Declared in the configuration or the resource' : 'Variable class'}>
+              <th
+                data-col="class"
+                title={showGlobals ? 'Declared in the configuration or the resource' : 'Variable class'}
+              >
                 {showGlobals ? 'Declared in' : 'Class'}
               </th>
               <th data-col="name">Name</th>

@@ -148,7 +148,11 @@ function checkLocation(
   }
   const type = v.type.trim().toUpperCase();
   if (lib.isFbType(type)) {
-    issues.push({ index, field: 'location', message: `a ${lib.signature(type)?.name ?? type} instance cannot sit at an address` });
+    issues.push({
+      index,
+      field: 'location',
+      message: `a ${lib.signature(type)?.name ?? type} instance cannot sit at an address`,
+    });
   } else if (isElementaryType(type) && !locationAdmits(loc, type)) {
     const sizeWords = {
       X: 'a bit (BOOL)',
@@ -251,7 +255,11 @@ export function validateVariables(
 
     if (v.initial !== undefined && v.initial.trim() !== '') {
       if (lib.isFbType(type))
-        issues.push({ index, field: 'initial', message: `a ${lib.signature(type)?.name ?? type} instance takes no initial value` });
+        issues.push({
+          index,
+          field: 'initial',
+          message: `a ${lib.signature(type)?.name ?? type} instance takes no initial value`,
+        });
       else if (isElementaryType(type)) {
         const problem = checkInitialValue(v.initial, type);
         if (problem) issues.push({ index, field: 'initial', message: problem });
