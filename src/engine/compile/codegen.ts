@@ -10,6 +10,7 @@
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { ArgIR, NetworkIR, Op, OutIR, Source } from './ir';
+import { emitSt } from '../st/emit';
 import { singleWriterNets } from './nets';
 import { storeOf, type Access, type Store } from './symbols';
 
@@ -112,6 +113,11 @@ export function isStraight(networks: readonly NetworkIR[], first: number, end: n
       for (const op of networks[i]!.ops) {
         if (op.op === 'jump' || op.op === 'return') return false;
         if (++ops > INLINE_OPS) return false;
+        if (op.op === 'st') {
+          ops += op.weight;
+          if (ops > INLINE_OPS) return false;
+          for (const c of op.calls) if (isStraight(networks, c.first, c.end) && !visit(c.first, c.end)) return false;
+        }
         if (op.op === 'call' && isStraight(networks, op.first, op.end) && !visit(op.first, op.end)) return false;
       }
     return true;
@@ -325,7 +331,7 @@ function emitNetwork(em: Emitter, ir: NetworkIR, firstWord: number, idx: string)
 /** The networks of a straight body, each in a block of its own, marked as run in this scan. */
 function inlineBody(em: Emitter, first: number, end: number): string[] {
   const { networks, words } = em.pc.program!;
-  const saved = { lines: em.lines, fbLocals: em.fbLocals, fbPrefix: em.fbPrefix };
+  const saved = { lines: em.lines, fbLocals: em.fbLocals, fbPrefix: em.fbPrefix, rails: em.rails, single: em.single };
   em.lines = [];
   em.depth++;
   em.fbLocals = new Map();
@@ -339,6 +345,9 @@ function inlineBody(em: Emitter, first: number, end: number): string[] {
   em.lines = saved.lines;
   em.fbLocals = saved.fbLocals;
   em.fbPrefix = saved.fbPrefix;
+  // The caller's network facts: its EN and outputs are written after the body.
+  em.rails = saved.rails;
+  em.single = saved.single;
   em.depth--;
   return out;
 }
@@ -416,6 +425,10 @@ function emitOp(em: Emitter, op: Op): void {
       return emitFb(em, op);
     case 'call':
       return emitCall(em, op);
+    case 'st':
+      return emitSt(em, op, (first, end) =>
+        em.pc.inlines(first, end) ? inlineBody(em, first, end) : [`${CALL_TEXT}${em.p(first)}, ${em.p(end)}, now, scan);`],
+      );
   }
 }
 

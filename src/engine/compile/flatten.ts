@@ -8,6 +8,7 @@ import type { Diagnostic } from '../api';
 import { EdgeTable, type CallBuilder, type FunctionSite, type SharedParts } from './context';
 import type { NetworkIR } from './ir';
 import { lowerPouBody } from './pou';
+import { bodyShapes } from '../st/body';
 import { SymbolTable, type Access, type Sym, type UfbSymbol } from './symbols';
 
 /** A range of the program's networks that runs one POU: a program, an FB instance's call, a function call. */
@@ -59,7 +60,8 @@ export class Flattener implements CallBuilder {
       return undefined;
     }
     const first = this.networks.length;
-    const end = first + pou.networks.length;
+    const shapes = bodyShapes(pou);
+    const end = first + shapes.length;
     const index = this.bodies.length;
     this.bodies.push({
       kind: info.kind,
@@ -69,9 +71,9 @@ export class Flattener implements CallBuilder {
       end,
       parent: this.current,
     });
-    for (const net of pou.networks) {
+    for (const shape of shapes) {
       this.networks.push(undefined);
-      this.shapes.push({ elements: net.elements.length, vlinks: net.vlinks.length });
+      this.shapes.push(shape);
       this.bodyOf.push(index);
     }
     const sink: Diagnostic[] = out ?? [];

@@ -7,6 +7,7 @@ import { blockLibrary } from '../../model/library';
 import { newPouContext, type CallBuilder, type CoilFamily, type PouContext, type SharedParts } from './context';
 import type { NetworkIR } from './ir';
 import { lowerNetwork } from './lower';
+import { lowerTextBody, refuseBody } from '../st/body';
 import { Reporter } from './report';
 import { buildSymbols, type SymbolTable } from './symbols';
 
@@ -81,6 +82,9 @@ export function lowerPouBody(
   out: Diagnostic[],
   place: Placement = { first: 0 },
 ): LoweredPou {
+  if (pou.language === 'ST' || pou.language === 'IL')
+    return lowerTextBody(project, pou as Pou & { language: 'ST' | 'IL' }, profile, symbols, out, place);
+  if (pou.language !== 'LD') return refuseBody(project, pou, profile, symbols, out, place);
   const start = out.length;
   // LD-R06: labels are identifiers or unsigned integers, unique in the POU.
   const labels = new Map<string, number>();

@@ -85,7 +85,16 @@ export class ScanPlc implements Plc {
     call: (first: number, end: number, t: number, scan: number): void => this.callBody(first, end, t, scan),
     stepCall: (first: number, end: number, t: number, scan: number): Generator<void, void> =>
       this.stepRange(first, end, t, scan),
+    /** Asked every 65,536 iterations of an ST/IL loop (or backward IL jump) in network `network`, at `line`. */
+    loop: (network: number, line: number): void => {
+      if (now() - this.scanStart <= this.maxScanMs) return;
+      this.backJump = network;
+      this.loopLine = line;
+      throw new WatchdogTrip(network);
+    },
   };
+  /** Line of the ST/IL loop that tripped the watchdog (0: none). */
+  private loopLine = 0;
   private scanStart = 0;
   private lastExecMs = 0;
   private clockOrigin = 0;
@@ -284,7 +293,10 @@ export class ScanPlc implements Plc {
     const network = this.backJump >= 0 ? this.backJump : at;
     const w = this.where(network);
     const inBody = this.program.bodyOf[network]! >= this.program.programs || this.program.programs > 1;
-    const where = `network ${w.network + 1}${w.label ? ` (label ${w.label})` : ''}${inBody ? ` of ${w.instance ? `${w.instance} (${w.pou})` : w.pou}` : ''}`;
+    const place = this.loopLine > 0 ? `the loop at line ${this.loopLine}` : `network ${w.network + 1}${w.label ? ` (label ${w.label})` : ''}`;
+    const owner = inBody || this.loopLine > 0 ? ` of ${w.instance ? `${w.instance} (${w.pou})` : w.pou}` : '';
+    const where = `${place}${owner}`;
+    this.loopLine = 0;
     const limit =
       this.evals >= this.maxEvals
         ? `${this.maxEvals.toLocaleString('en-US')} network evaluations`

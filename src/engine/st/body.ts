@@ -1,0 +1,53 @@
+// The body of a POU written in ST or IL, lowered like an LD body (compile/pou.ts lowerPouBody):
+// one network holding the checked statements; errors are LD-E50 naming the POU, the language and
+// the line and column; a pragma the simulator does not run is LD-W50.
+import type { Pou, Profile, Project } from '../../model/project';
+import type { Diagnostic } from '../api';
+import { newPouContext } from '../compile/context';
+import type { LoweredPou, Placement } from '../compile/pou';
+import { Reporter } from '../compile/report';
+import type { SymbolTable } from '../compile/symbols';
+import { compileTextBody, describeStError } from './index';
+
+/** Networks a POU's body takes in a program: one for ST and IL, one per network for LD. */
+export function bodyNetworkCount(pou: Pou): number {
+  return pou.language === 'ST' || pou.language === 'IL' ? 1 : pou.networks.length;
+}
+
+/** Element and vertical-link counts per network of a body (ST/IL: one network with none). */
+export function bodyShapes(pou: Pou): { elements: number; vlinks: number }[] {
+  return pou.language === 'ST' || pou.language === 'IL'
+    ? [{ elements: 0, vlinks: 0 }]
+    : pou.networks.map((n) => ({ elements: n.elements.length, vlinks: n.vlinks.length }));
+}
+
+export function lowerTextBody(
+  project: Project,
+  pou: Pou & { language: 'ST' | 'IL' },
+  profile: Profile,
+  symbols: SymbolTable,
+  out: Diagnostic[],
+  place: Placement,
+): LoweredPou {
+  const ctx = newPouContext(project, pou, profile, symbols, new Map(), place);
+  const r = new Reporter(out, pou.name, 0);
+  const result = compileTextBody(
+    pou,
+    { symbols, profile, functions: ctx.functions, ...(ctx.calls ? { calls: ctx.calls } : {}), pouName: pou.name },
+    place.first,
+  );
+  for (const p of result.pragmas)
+    r.warning('LD-W50', `the pragma {${p.text.trim()}} in the ${pou.language} body of ${pou.name} (line ${p.pos.line}) is C code for the MATIEC runtime; the simulator ignores it`);
+  for (const e of result.errors) r.error('LD-E50', `the ${pou.language} body of ${pou.name} does not compile: ${describeStError(e)}`);
+  return { ctx, networks: [result.network], ok: !!result.network };
+}
+
+/** LD-E51: a body in a language the simulator does not run (an FBD body the import kept as FBD). */
+export function refuseBody(project: Project, pou: Pou, profile: Profile, symbols: SymbolTable, out: Diagnostic[], place: Placement): LoweredPou {
+  const ctx = newPouContext(project, pou, profile, symbols, new Map(), place);
+  new Reporter(out, pou.name, -1).error(
+    'LD-E51',
+    `the ${pou.kind === 'FUNCTION' ? 'function' : pou.kind === 'FUNCTION_BLOCK' ? 'function block' : 'program'} ${pou.name} is written in ${pou.language}, which the simulator does not run; its calls cannot run (redraw it in LD, or write it in ST)`,
+  );
+  return { ctx, networks: [], ok: false };
+}

@@ -1,0 +1,197 @@
+// Structured Text and Instruction List bodies in the engine.
+//
+// A POU written in ST or IL (`pou.language`, body text in `pou.source`) compiles to ONE network
+// holding ONE operation `{ op: 'st' }` (compile/ir.ts StOp): the checked statement tree, every
+// name resolved over the scope the body runs in (the program's, an FB instance's, a function call
+// site's), so the Flattener places it like an LD body and calls of it run like calls of LD
+// bodies. Code generation (st/emit.ts) writes the tree as JavaScript through the network emitter.
+//
+// Pipeline: text -> lexer.ts -> parser.ts (ST) or il/translate.ts (IL) -> ast.ts tree ->
+// check.ts (types, names, calls; lowered.ts tree) -> emit.ts (JavaScript).
+//
+// API for other compilers (SFC transitions and actions written in ST):
+// - `compileStStatements(text, scope)` -> `{ body?: TStmt[], errors }`: statements checked over
+//   `scope` (StScope: the SymbolTable, the profile, the program's function table, the
+//   CallBuilder that places bodies of user blocks called from the text, the POU's name).
+// - `compileStExpression(text, scope, expected?)` -> `{ expr?: TExpr, errors }`: one expression
+//   (a transition condition: pass 'BOOL'); its type is `expr.type`.
+// - `stOp(body, network, language)` -> the StOp to put alone in a NetworkIR (`stNetwork`).
+// Errors are `{ pos: { line, col }, message }`; `describeStError` words them for a diagnostic.
+// Rule ids: LD-E50 (a body that does not compile), LD-W50 (a pragma the simulator ignores),
+// LD-E51 (a body in a language the simulator does not run: SFC, FBD left as FBD).
+import type { ElementaryType } from '../../model/iecTypes';
+import type { Pou } from '../../model/project';
+import type { NetworkIR, StOp } from '../compile/ir';
+import { translateIl } from '../il/translate';
+import { StSyntaxError, type Expr, type Pos, type Stmt } from './ast';
+import { StChecker, type StError, type StScope } from './check';
+import { stFacts, type TExpr, type TStmt } from './lowered';
+import { parseExpression, parseStatements } from './parser';
+
+export type { StScope, StError } from './check';
+export type { TExpr, TStmt } from './lowered';
+
+/** The languages whose bodies this compiler runs. */
+export const isTextPou = (pou: Pou): pou is Pou & { language: 'ST' | 'IL' } => pou.language === 'ST' || pou.language === 'IL';
+
+/** "line 3 col 7: ..." */
+export const describeStError = (e: StError): string => `line ${e.pos.line} col ${e.pos.col}: ${e.message}`;
+
+export interface ParsedBody {
+  readonly stmts?: readonly Stmt[];
+  readonly errors: StError[];
+  /** Pragmas the engine does not run. */
+  readonly pragmas: { readonly pos: Pos; readonly text: string }[];
+}
+
+const parsedCache = new WeakMap<Pou, ParsedBody>();
+
+/** The syntax tree of an ST or IL POU's body (cached per POU object). */
+export function parseBody(pou: Pou): ParsedBody {
+  let hit = parsedCache.get(pou);
+  if (!hit) {
+    const pragmas: { pos: Pos; text: string }[] = [];
+    try {
+      const text = pou.source ?? '';
+      const stmts = pou.language === 'IL' ? translateIl(text) : parseStatements(text, { onPragma: (t, pos) => pragmas.push({ pos, text: t }) });
+      hit = { stmts, errors: [], pragmas };
+    } catch (e) {
+      if (!(e instanceof StSyntaxError)) throw e;
+      hit = { errors: [{ pos: e.pos, message: e.detail }], pragmas };
+    }
+    parsedCache.set(pou, hit);
+  }
+  return hit;
+}
+
+/** Names called in an ST/IL body (functions and instances), for the call graph. */
+export function calledNames(pou: Pou): string[] {
+  const body = parseBody(pou).stmts;
+  if (!body) return [];
+  const names: string[] = [];
+  const expr = (e: Expr): void => {
+    switch (e.k) {
+      case 'call':
+        names.push(e.name);
+        e.args.forEach((a) => expr(a.value));
+        return;
+      case 'unary':
+        expr(e.a);
+        return;
+      case 'binary':
+        expr(e.a);
+        expr(e.b);
+        return;
+      default:
+        return;
+    }
+  };
+  const stmts = (list: readonly Stmt[]): void => {
+    for (const s of list) {
+      switch (s.k) {
+        case 'assign':
+        case 'setcr':
+          expr(s.value);
+          break;
+        case 'call':
+          names.push(s.name);
+          s.args.forEach((a) => expr(a.value));
+          break;
+        case 'if':
+          s.branches.forEach((b) => (expr(b.cond), stmts(b.body)));
+          if (s.otherwise) stmts(s.otherwise);
+          break;
+        case 'case':
+          expr(s.selector);
+          s.arms.forEach((a) => stmts(a.body));
+          if (s.otherwise) stmts(s.otherwise);
+          break;
+        case 'for':
+          [s.from, s.to, ...(s.by ? [s.by] : [])].forEach(expr);
+          stmts(s.body);
+          break;
+        case 'while':
+          expr(s.cond);
+          stmts(s.body);
+          break;
+        case 'repeat':
+          stmts(s.body);
+          expr(s.until);
+          break;
+        default:
+          break;
+      }
+    }
+  };
+  stmts(body);
+  return names;
+}
+
+function check(stmts: readonly Stmt[], scope: StScope): { body: TStmt[]; errors: StError[]; crSlots: number } {
+  const checker = new StChecker(scope);
+  checker.declareLabels(stmts);
+  const body = checker.statements(stmts);
+  let crSlots = 0;
+  for (const s of stmts) if (s.k === 'setcr') crSlots = Math.max(crSlots, s.slot + 1);
+  return { body, errors: checker.errors, crSlots };
+}
+
+/** ST statements checked over a scope. */
+export function compileStStatements(text: string, scope: StScope): { body?: TStmt[]; errors: StError[] } {
+  let stmts: Stmt[];
+  try {
+    stmts = parseStatements(text);
+  } catch (e) {
+    if (!(e instanceof StSyntaxError)) throw e;
+    return { errors: [{ pos: e.pos, message: e.detail }] };
+  }
+  const r = check(stmts, scope);
+  return r.errors.length ? { errors: r.errors } : { body: r.body, errors: [] };
+}
+
+/** One ST expression checked over a scope; with `expected`, its value must widen to that type. */
+export function compileStExpression(text: string, scope: StScope, expected?: ElementaryType): { expr?: TExpr; errors: StError[] } {
+  try {
+    const e = parseExpression(text);
+    const checker = new StChecker(scope);
+    const value = checker.expr(e, expected);
+    return { expr: expected ? checker.to(value, expected, e.pos, 'use it') : value, errors: [] };
+  } catch (e) {
+    if (e instanceof StSyntaxError) return { errors: [{ pos: e.pos, message: e.detail }] };
+    if (e instanceof Error && 'pos' in e) return { errors: [{ pos: (e as unknown as { pos: Pos }).pos, message: e.message }] };
+    throw e;
+  }
+}
+
+/** The operation running a checked body in network `network` (its index in the program). */
+export function stOp(body: readonly TStmt[], network: number, language: 'ST' | 'IL', crSlots = 0): StOp {
+  const facts = stFacts(body);
+  return { op: 'st', node: 0, language, body, network, crSlots, labels: facts.labels, weight: facts.weight, calls: facts.calls };
+}
+
+/** A network holding one StOp. */
+export function stNetwork(op: StOp, label?: string): NetworkIR {
+  return {
+    index: op.network,
+    ops: [op],
+    netCount: 0,
+    railNets: [],
+    elementNets: [],
+    vlinkNets: [],
+    constants: [],
+    ...(label ? { label } : {}),
+  };
+}
+
+/** Compiles the body of an ST or IL POU over `scope` into its network (index `network`). */
+export function compileTextBody(
+  pou: Pou & { language: 'ST' | 'IL' },
+  scope: StScope,
+  network: number,
+): { network?: NetworkIR; errors: StError[]; pragmas: ParsedBody['pragmas'] } {
+  const parsed = parseBody(pou);
+  if (!parsed.stmts) return { errors: parsed.errors, pragmas: parsed.pragmas };
+  const r = check(parsed.stmts, scope);
+  if (r.errors.length) return { errors: r.errors, pragmas: parsed.pragmas };
+  return { network: stNetwork(stOp(r.body, network, pou.language, r.crSlots)), errors: [], pragmas: parsed.pragmas };
+}

@@ -1,0 +1,130 @@
+// Tokens of Structured Text: identifiers and keywords (case-insensitive), literals in their IEC
+// forms (42, 1_000, 16#FF, 2#1010, 1.5E3, INT#5, INT#16#FF, T#1s500ms, TIME#-2s, BOOL#TRUE),
+// locations (%IX0.0), operators; comments `(* *)` and `//` are skipped, pragmas `{ }` kept.
+import { StSyntaxError, type Pos } from './ast';
+
+export type TokenKind = 'ident' | 'literal' | 'location' | 'symbol' | 'pragma' | 'string' | 'eof';
+
+export interface Token {
+  readonly kind: TokenKind;
+  /** Text as written; identifiers and symbols are compared upper-cased through `upper`. */
+  readonly text: string;
+  readonly upper: string;
+  readonly pos: Pos;
+}
+
+const SYMBOLS = ['**', ':=', '=>', '<=', '>=', '<>', '..', '+', '-', '*', '/', '=', '<', '>', '(', ')', ',', ';', ':', '.', '&', '[', ']', '^', '#'];
+
+const isIdentStart = (c: string): boolean => /[A-Za-z_]/.test(c);
+const isIdentChar = (c: string): boolean => /[A-Za-z0-9_]/.test(c);
+const isDigit = (c: string): boolean => c >= '0' && c <= '9';
+
+export function tokenize(text: string): Token[] {
+  const out: Token[] = [];
+  let i = 0;
+  let line = 1;
+  let lineStart = 0;
+  const pos = (at: number): Pos => ({ line, col: at - lineStart + 1 });
+  const advanceTo = (end: number): void => {
+    for (let k = i; k < end; k++)
+      if (text[k] === '\n') {
+        line++;
+        lineStart = k + 1;
+      }
+    i = end;
+  };
+  const push = (kind: TokenKind, start: number, end: number, at: Pos): void => {
+    const t = text.slice(start, end);
+    out.push({ kind, text: t, upper: t.toUpperCase(), pos: at });
+  };
+  while (i < text.length) {
+    const c = text[i]!;
+    if (c === ' ' || c === '\t' || c === '\r' || c === '\n' || c === '\f' || c === '\v') {
+      advanceTo(i + 1);
+      continue;
+    }
+    const at = pos(i);
+    if (c === '(' && text[i + 1] === '*') {
+      const end = text.indexOf('*)', i + 2);
+      if (end < 0) throw new StSyntaxError(at, 'this comment "(*" is never closed with "*)"');
+      advanceTo(end + 2);
+      continue;
+    }
+    if (c === '/' && text[i + 1] === '/') {
+      const end = text.indexOf('\n', i);
+      advanceTo(end < 0 ? text.length : end);
+      continue;
+    }
+    if (c === '{') {
+      const end = text.indexOf('}', i + 1);
+      if (end < 0) throw new StSyntaxError(at, 'this pragma "{" is never closed with "}"');
+      push('pragma', i + 1, end, at);
+      advanceTo(end + 1);
+      continue;
+    }
+    if (c === "'" || c === '"') {
+      const end = text.indexOf(c, i + 1);
+      if (end < 0) throw new StSyntaxError(at, 'this string is never closed');
+      push('string', i, end + 1, at);
+      advanceTo(end + 1);
+      continue;
+    }
+    if (c === '%') {
+      let end = i + 1;
+      while (end < text.length && /[A-Za-z0-9_.*]/.test(text[end]!)) end++;
+      push('location', i, end, at);
+      advanceTo(end);
+      continue;
+    }
+    if (isDigit(c)) {
+      let end = i;
+      while (end < text.length && (isDigit(text[end]!) || text[end] === '_')) end++;
+      if (text[end] === '#') {
+        // based integer 16#FF
+        end++;
+        while (end < text.length && /[0-9A-Fa-f_]/.test(text[end]!)) end++;
+      } else {
+        if (text[end] === '.' && isDigit(text[end + 1] ?? '')) {
+          end++;
+          while (end < text.length && (isDigit(text[end]!) || text[end] === '_')) end++;
+        }
+        if (/[eE]/.test(text[end] ?? '') && (isDigit(text[end + 1] ?? '') || (/[+-]/.test(text[end + 1] ?? '') && isDigit(text[end + 2] ?? '')))) {
+          end += 2;
+          while (end < text.length && isDigit(text[end]!)) end++;
+        }
+      }
+      push('literal', i, end, at);
+      advanceTo(end);
+      continue;
+    }
+    if (isIdentStart(c)) {
+      let end = i;
+      while (end < text.length && isIdentChar(text[end]!)) end++;
+      if (text[end] === '#') {
+        // typed literal: INT#5, INT#-5, INT#16#FF, T#1h2m, REAL#1.5E-3, BOOL#TRUE
+        end++;
+        if (text[end] === '+' || text[end] === '-') end++;
+        while (end < text.length) {
+          const d = text[end]!;
+          if (isIdentChar(d) || d === '#') end++;
+          else if (d === '.' && isDigit(text[end + 1] ?? '')) end++;
+          else if ((d === '+' || d === '-') && /[eE]/.test(text[end - 1]!) && isDigit(text[end - 2] ?? '') && isDigit(text[end + 1] ?? ''))
+            end++;
+          else break;
+        }
+        push('literal', i, end, at);
+        advanceTo(end);
+        continue;
+      }
+      push('ident', i, end, at);
+      advanceTo(end);
+      continue;
+    }
+    const sym = SYMBOLS.find((s) => text.startsWith(s, i));
+    if (!sym) throw new StSyntaxError(at, `unexpected character "${c}"`);
+    push('symbol', i, i + sym.length, at);
+    advanceTo(i + sym.length);
+  }
+  out.push({ kind: 'eof', text: '', upper: '', pos: pos(i) });
+  return out;
+}
