@@ -29,12 +29,74 @@ export interface BlockSignature {
     | 'bitwise'
     | 'selection'
     | 'conversion'
+    | 'numerical'
+    | 'time'
+    | 'control'
     | 'user'
     | 'external';
   readonly description: string;
 }
 
 const p = (name: string, type: PinType, poly = false): PinSignature => (poly ? { name, type, poly } : { name, type });
+
+const fbSig = (
+  name: string,
+  category: BlockSignature['category'],
+  inputs: string,
+  outputs: string,
+  description: string,
+): BlockSignature => {
+  const pins = (spec: string) =>
+    spec.split(' ').map((item) => {
+      const [pin = '', type = ''] = item.split(':');
+      return p(pin, type as ElementaryType);
+    });
+  return { name, kind: 'fb', category, inputs: pins(inputs), outputs: pins(outputs), description };
+};
+
+/**
+ * SEMA (OpenPLC Editor's Standard_Function_Blocks.xml) and the blocks of its
+ * Additional_Function_Blocks.xml, from the standard's annex F (MATIEC AnnexF/*_st.txt), except RTC,
+ * whose PDT/CDT pins are DATE_AND_TIME. TIME_TO_REAL in their bodies follows the profile's unit.
+ */
+const ADDITIONAL_FB_SIGNATURES: readonly BlockSignature[] = [
+  fbSig('SEMA', 'bistable', 'CLAIM:BOOL RELEASE:BOOL', 'BUSY:BOOL', 'Semaphore: BUSY goes ON with CLAIM and stays ON until RELEASE (CLAIM wins).'),
+  fbSig(
+    'INTEGRAL',
+    'control',
+    'RUN:BOOL R1:BOOL XIN:REAL X0:REAL CYCLE:TIME',
+    'Q:BOOL XOUT:REAL',
+    'Integrator: each call with RUN adds XIN * TIME_TO_REAL(CYCLE) to XOUT; R1 sets XOUT to X0; Q = NOT R1.',
+  ),
+  fbSig(
+    'DERIVATIVE',
+    'control',
+    'RUN:BOOL XIN:REAL CYCLE:TIME',
+    'XOUT:REAL',
+    'Differentiator over the last four samples of XIN taken every CYCLE; RUN OFF gives 0.',
+  ),
+  fbSig(
+    'PID',
+    'control',
+    'AUTO:BOOL PV:REAL SP:REAL X0:REAL KP:REAL TR:REAL TD:REAL CYCLE:TIME',
+    'XOUT:REAL',
+    'PID controller: XOUT = KP * (ERROR + integral/TR + derivative*TD), ERROR = PV - SP; AUTO OFF tracks X0.',
+  ),
+  fbSig(
+    'RAMP',
+    'control',
+    'RUN:BOOL X0:REAL X1:REAL TR:TIME CYCLE:TIME',
+    'BUSY:BOOL XOUT:REAL',
+    'Ramp: with RUN, XOUT goes from X0 to X1 in TR (CYCLE per call); without RUN, XOUT tracks X0.',
+  ),
+  fbSig(
+    'HYSTERESIS',
+    'control',
+    'XIN1:REAL XIN2:REAL EPS:REAL',
+    'Q:BOOL',
+    'Hysteresis: Q goes ON when XIN1 > XIN2 + EPS and OFF when XIN1 < XIN2 - EPS.',
+  ),
+];
 
 const timer = (name: string, description: string): BlockSignature => ({
   name,
@@ -119,6 +181,7 @@ export const FB_SIGNATURES: readonly BlockSignature[] = [
   },
   // MATIEC's typed counters (lib/counter.txt): same bodies, PV and CV of the type in the name.
   ...COUNTER_TYPES.filter((t) => t !== 'INT').flatMap((t) => counters(`_${t}`, t)),
+  ...ADDITIONAL_FB_SIGNATURES,
 ];
 
 const ext = (prefix: string, start: number) => ({ prefix, start, min: 2, max: 16 });
@@ -170,6 +233,46 @@ export const FUNCTION_SIGNATURES_BASE: readonly BlockSignature[] = [
   fn('LIMIT', 'selection', [p('MN', 'ANY_ELEMENTARY', true), p('IN', 'ANY_ELEMENTARY', true), p('MX', 'ANY_ELEMENTARY', true)], p('OUT', 'ANY_ELEMENTARY', true), 'OUT := MIN(MAX(IN, MN), MX).'),
 ];
 
+const real1 = (name: string, d: string) =>
+  fn(name, 'numerical', [p('IN', 'ANY_REAL', true)], p('OUT', 'ANY_REAL', true), d);
+
+/** BCD pairs of OpenPLC Editor's palette (BCD_TO_** and *_TO_BCD filtered by its ANY_TO_BCD rules). */
+const BCD_PAIRS = [
+  ['BYTE', 'USINT'],
+  ['WORD', 'UINT'],
+  ['DWORD', 'UDINT'],
+  ['LWORD', 'ULINT'],
+] as const;
+
+/**
+ * The functions of OpenPLC Editor's palette (iec_std.csv) beyond the base set: numerical
+ * functions (table 23), EXPT, TRUNC, BCD conversions and the TIME functions (table 30).
+ */
+export const MORE_FUNCTION_SIGNATURES: readonly BlockSignature[] = [
+  real1('SQRT', 'Square root (a negative IN gives NaN).'),
+  real1('LN', 'Natural logarithm (IN = 0 gives -Inf, IN < 0 NaN).'),
+  real1('LOG', 'Logarithm to base 10 (IN = 0 gives -Inf, IN < 0 NaN).'),
+  real1('EXP', 'Natural exponential e^IN (too large gives +Inf).'),
+  real1('SIN', 'Sine of IN in radians.'),
+  real1('COS', 'Cosine of IN in radians.'),
+  real1('TAN', 'Tangent of IN in radians.'),
+  real1('ASIN', 'Arc sine in radians (|IN| > 1 gives NaN).'),
+  real1('ACOS', 'Arc cosine in radians (|IN| > 1 gives NaN).'),
+  real1('ATAN', 'Arc tangent in radians.'),
+  fn('EXPT', 'arithmetic', [p('IN1', 'ANY_REAL', true), p('IN2', 'ANY_NUM')], p('OUT', 'ANY_REAL', true), 'OUT := IN1 ** IN2 (C pow: a negative IN1 with a fractional IN2 gives NaN).'),
+  fn('TRUNC', 'conversion', [p('IN', 'ANY_REAL', true)], p('OUT', 'ANY_INT'), 'Truncates toward zero to the integer type OUT is written to (DINT when nothing says).'),
+  ...BCD_PAIRS.map(([bits, int]) =>
+    fn(`BCD_TO_${int}`, 'conversion', [p('IN', bits)], p('OUT', int), `Decodes a BCD ${bits} (a nibble above 9 turns ENO OFF).`),
+  ),
+  ...BCD_PAIRS.map(([bits, int]) =>
+    fn(`${int}_TO_BCD`, 'conversion', [p('IN', int)], p('OUT', bits), `Encodes ${int} as BCD in a ${bits} (digits beyond its width are lost).`),
+  ),
+  fn('ADD_TIME', 'time', [p('IN1', 'TIME'), p('IN2', 'TIME')], p('OUT', 'TIME'), 'OUT := IN1 + IN2 (TIME).'),
+  fn('SUB_TIME', 'time', [p('IN1', 'TIME'), p('IN2', 'TIME')], p('OUT', 'TIME'), 'OUT := IN1 - IN2 (TIME).'),
+  fn('MULTIME', 'time', [p('IN1', 'TIME'), p('IN2', 'ANY_NUM')], p('OUT', 'TIME'), 'OUT := IN1 * IN2, a TIME times a number (to whole ms).'),
+  fn('DIVTIME', 'time', [p('IN1', 'TIME'), p('IN2', 'ANY_NUM')], p('OUT', 'TIME'), 'OUT := IN1 / IN2, a TIME divided by a number (to whole ms; IN2 = 0 turns ENO OFF).'),
+];
+
 /** Every A_TO_B conversion between the supported elementary types. */
 export const CONVERSION_SIGNATURES: readonly BlockSignature[] = ELEMENTARY_TYPES.flatMap((from) =>
   ELEMENTARY_TYPES.filter((to) => to !== from).map((to) =>
@@ -177,15 +280,23 @@ export const CONVERSION_SIGNATURES: readonly BlockSignature[] = ELEMENTARY_TYPES
   ),
 );
 
-export const FUNCTION_SIGNATURES: readonly BlockSignature[] = [...FUNCTION_SIGNATURES_BASE, ...CONVERSION_SIGNATURES];
+export const FUNCTION_SIGNATURES: readonly BlockSignature[] = [
+  ...FUNCTION_SIGNATURES_BASE,
+  ...MORE_FUNCTION_SIGNATURES,
+  ...CONVERSION_SIGNATURES,
+];
 
 const BY_NAME = new Map<string, BlockSignature>([...FB_SIGNATURES, ...FUNCTION_SIGNATURES].map((s) => [s.name, s]));
 
 /** The signature of a standard block by (case-insensitive) name. */
 export const blockSignature = (name: string): BlockSignature | undefined => BY_NAME.get(name.toUpperCase());
 export const isFbType = (type: string): boolean => blockSignature(type)?.kind === 'fb';
+/** The types of an A_TO_B conversion (not TRUNC or the BCD conversions, also in category 'conversion'). */
 export const conversionTypes = (name: string): { from: ElementaryType; to: ElementaryType } | undefined => {
   const s = blockSignature(name);
   if (s?.category !== 'conversion') return undefined;
-  return { from: s.inputs[0]!.type as ElementaryType, to: s.outputs[0]!.type as ElementaryType };
+  const from = s.inputs[0]!.type;
+  const to = s.outputs[0]!.type;
+  if (s.name !== `${from}_TO_${to}`) return undefined;
+  return { from: from as ElementaryType, to: to as ElementaryType };
 };

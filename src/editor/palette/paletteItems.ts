@@ -136,12 +136,15 @@ const CATEGORY_ORDER: readonly BlockSignature['category'][] = [
   'counter',
   'edge',
   'bistable',
+  'control',
   'move',
   'arithmetic',
+  'numerical',
   'comparison',
   'bitwise',
   'selection',
   'conversion',
+  'time',
   // Vendor library blocks the simulator does not run (library.externalBlocks): last.
   'external',
 ];

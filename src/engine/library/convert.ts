@@ -110,3 +110,21 @@ export function conversion(from: ElementaryType, to: ElementaryType, profile: Pr
   const sized = toSized(to, transferFrom || isBitStringType(to), strict);
   return (ctx, a) => sized(ctx, a as number | bigint);
 }
+
+/**
+ * TRUNC (ANY_REAL -> ANY_INT): toward zero (TRUNC(-2.7) = -2), as MATIEC's C cast. A value out of
+ * the target's range gives the wrapped value, an error in `iec` (ENO OFF) and not in `openplc`
+ * (the C cast), as the A_TO_B conversions; NaN and infinities give 0 (an error in `iec`).
+ */
+export function truncation(to: ElementaryType, profile: Profile): FnImpl1 {
+  const strict = profile === 'iec';
+  const sized = toSized(to, false, strict);
+  return (ctx, a) => {
+    const x = num(a);
+    if (!Number.isFinite(x)) {
+      if (strict) ctx.error = true;
+      return normalize(to, 0);
+    }
+    return sized(ctx, Math.trunc(x) || 0);
+  };
+}

@@ -1,14 +1,21 @@
 // Resolution of a standard function call to a concrete, typed implementation. Signatures come from
 // model/blocks.ts: poly pins share one concrete type, the narrowest type every typed argument widens
 // to (canWiden); untyped literals (argType undefined) adopt that type, or `outTypeHint` when no
-// argument is typed. Behaviour per function lives in arithmetic.ts, bitwise.ts, select.ts, convert.ts.
+// argument is typed. A generic pin that is not poly takes its own type: an input the type of its
+// argument (an untyped literal: INT for ANY_INT, LREAL for ANY_NUM, so EXPT(x, 0.5) reads 0.5), the
+// output (TRUNC's ANY_INT) the type of the variable OUT is written to, else DINT. Behaviour per
+// function lives in arithmetic.ts, bitwise.ts, select.ts, convert.ts, numeric.ts, bcd.ts,
+// timeFunctions.ts.
 import { blockSignature, conversionTypes, type BlockSignature, type PinSignature } from '../../model/blocks';
 import { GENERIC_MEMBERS, isElementaryType, type ElementaryType, type GenericType, type Value } from '../../model/iecTypes';
 import type { Profile } from '../../model/project';
 import { canWiden, commonType, isSignedType } from '../values/types';
 import { absolute, arithmetic, negate, type ArithOp } from './arithmetic';
 import { complement, logic, shift, type LogicOp, type ShiftOp } from './bitwise';
-import { conversion } from './convert';
+import { bcdToInt, intToBcd } from './bcd';
+import { conversion, truncation } from './convert';
+import { isRealFunction, power, realFunction } from './numeric';
+import { isTimeFunction, timeFunction } from './timeFunctions';
 import type { FnContext, FnImpl, FnImpl1, FnImpl2, ResolvedFunction } from './fnTypes';
 import { compare, extreme, limit, multiplex, select, type CompareOp } from './select';
 
@@ -44,6 +51,35 @@ const VERB: Record<string, string> = {
   MIN: 'compare',
   LIMIT: 'limit',
   MOVE: 'copy',
+  SQRT: 'take the square root of',
+  LN: 'take the logarithm of',
+  LOG: 'take the logarithm of',
+  EXP: 'raise e to',
+  SIN: 'take the sine of',
+  COS: 'take the cosine of',
+  TAN: 'take the tangent of',
+  ASIN: 'take the arc sine of',
+  ACOS: 'take the arc cosine of',
+  ATAN: 'take the arc tangent of',
+  EXPT: 'raise',
+  TRUNC: 'truncate',
+};
+
+/** Type an untyped literal takes on a generic input that is not poly (MUX's K, EXPT's IN2). */
+const OWN_LITERAL_DEFAULT: Partial<Record<GenericType, ElementaryType>> = { ANY_NUM: 'LREAL' };
+
+/** Type of a generic output that is not poly (TRUNC's ANY_INT) when OUT is written to nothing typed. */
+const OWN_OUTPUT_DEFAULT: Partial<Record<GenericType, ElementaryType>> = { ANY_INT: 'DINT' };
+
+/** How a generic pin type reads in a message. */
+const GENERIC_WORDS: Record<GenericType, string> = {
+  ANY: 'a value',
+  ANY_ELEMENTARY: 'a value',
+  ANY_MAGNITUDE: 'a number or a TIME',
+  ANY_NUM: 'a number',
+  ANY_INT: 'an integer',
+  ANY_REAL: 'a REAL or LREAL',
+  ANY_BIT: 'a bit string',
 };
 
 /** Type an untyped literal takes when neither a typed argument nor a hint says more. */
@@ -101,12 +137,26 @@ const fromImpl1 =
 
 type Impls = { impl: FnImpl; impl1?: FnImpl1; impl2?: FnImpl2 } | string;
 
-function implement(name: string, t: ElementaryType, argTypes: readonly ElementaryType[], profile: Profile): Impls {
+function implement(
+  name: string,
+  t: ElementaryType,
+  argTypes: readonly ElementaryType[],
+  outType: ElementaryType,
+  profile: Profile,
+): Impls {
   const one = (f: FnImpl1): Impls => ({ impl: fromImpl1(f), impl1: f });
   const two = (f: FnImpl2, extensible: boolean): Impls => ({ impl: extensible ? fold(f) : fromImpl2(f), impl2: f });
   const conv = conversionTypes(name);
   if (conv) return one(conversion(conv.from, conv.to, profile));
+  if (isRealFunction(name)) return one(realFunction(name, t));
+  if (isTimeFunction(name)) return two(timeFunction(name), false);
+  if (name.startsWith('BCD_TO_')) return one(bcdToInt(outType));
+  if (name.endsWith('_TO_BCD')) return one(intToBcd(outType));
   switch (name) {
+    case 'EXPT':
+      return two(power(t), false);
+    case 'TRUNC':
+      return one(truncation(outType, profile));
     case 'MOVE':
       return one((_c, a) => a);
     case 'ADD':
@@ -159,6 +209,12 @@ function implement(name: string, t: ElementaryType, argTypes: readonly Elementar
   }
 }
 
+/** A generic output of its own (TRUNC's ANY_INT): the type of the variable OUT is written to, else the default. */
+function ownOutputType(generic: GenericType, hint: ElementaryType | undefined): ElementaryType {
+  if (hint && admits(generic, hint)) return hint;
+  return OWN_OUTPUT_DEFAULT[generic] ?? LITERAL_DEFAULT[generic];
+}
+
 /**
  * Resolves a call of a standard function. `argTypes` are the types of the inputs in expanded
  * order without EN (undefined = untyped literal). The implementation expects values of the
@@ -186,7 +242,9 @@ export function resolveFunction(
     poly = commonType(typed);
     if (!poly || !admits(generic, poly)) {
       const what = typed.length === 1 ? typed[0]! : listTypes(typed);
-      return { ok: false, message: `${fname} cannot ${VERB[fname] ?? 'use'} ${what}` };
+      // SQRT(INT) in MATIEC is a type error too: say how to get a REAL.
+      const convert = generic === 'ANY_REAL' && poly && !GENERIC_MEMBERS.ANY_REAL.includes(poly) && poly !== 'BOOL' ? `: convert it first (${poly}_TO_REAL)` : '';
+      return { ok: false, message: `${fname} cannot ${VERB[fname] ?? 'use'} ${what}${convert}` };
     }
   } else if (polyIndexes.length || out.poly) {
     // The hint is the type of the variable OUT is written to: it only says something when OUT shares the poly type.
@@ -202,12 +260,13 @@ export function resolveFunction(
       if (arg && !canWiden(arg, pin.type)) return { ok: false, message: `${fname} input ${pin.name} needs ${pin.type}, not ${arg}` };
       concrete.push(pin.type);
     } else {
-      if (arg && !admits(pin.type, arg)) return { ok: false, message: `${fname} input ${pin.name} needs an integer (${pin.type}), not ${arg}` };
-      concrete.push(arg ?? LITERAL_DEFAULT[pin.type]);
+      if (arg && !admits(pin.type, arg))
+        return { ok: false, message: `${fname} input ${pin.name} needs ${GENERIC_WORDS[pin.type]} (${pin.type}), not ${arg}` };
+      concrete.push(arg ?? OWN_LITERAL_DEFAULT[pin.type] ?? LITERAL_DEFAULT[pin.type]);
     }
   }
-  const outType = out.poly ? poly! : (out.type as ElementaryType);
-  const impls = implement(fname, poly ?? outType, concrete, profile);
+  const outType = out.poly ? poly! : isElementaryType(out.type) ? out.type : ownOutputType(out.type, outTypeHint);
+  const impls = implement(fname, poly ?? outType, concrete, outType, profile);
   if (typeof impls === 'string') return { ok: false, message: impls };
   const fn: ResolvedFunction = { name: fname, argTypes: concrete, outType, inputNames: pins.map((p) => p.name), ...impls };
   return { ok: true, fn };
