@@ -59,6 +59,50 @@ const networkSchema = z
   })
   .strict();
 
+const sfcCodeSchema = z.union([
+  z.object({ language: z.literal('ST'), text: z.string() }).strict(),
+  z.object({ language: z.literal('LD'), networks: z.array(networkSchema), result: z.string().optional() }).strict(),
+  z.object({ language: z.literal('none'), why: z.string() }).strict(),
+]);
+
+const sfcSchema = z
+  .object({
+    steps: z.array(
+      z
+        .object({
+          name: z.string().min(1),
+          initial: z.boolean(),
+          associations: z.array(
+            z
+              .object({
+                action: z.string().min(1),
+                qualifier: z.string().min(1),
+                duration: z.string().optional(),
+                indicator: z.string().optional(),
+              })
+              .strict(),
+          ),
+          localId: z.number().optional(),
+        })
+        .strict(),
+    ),
+    transitions: z.array(
+      z
+        .object({
+          from: z.array(z.string()),
+          to: z.array(z.string()),
+          priority: z.number().int().optional(),
+          condition: sfcCodeSchema,
+          delayed: z.boolean().optional(),
+          localId: z.number().optional(),
+        })
+        .strict(),
+    ),
+    actions: z.array(z.object({ name: z.string().min(1), body: sfcCodeSchema }).strict()),
+    locals: z.array(z.string().min(1)).optional(),
+  })
+  .strict();
+
 const pouSchema = z
   .object({
     id,
@@ -70,6 +114,7 @@ const pouSchema = z
     comment: z.string(),
     variables: z.array(variableSchema),
     networks: z.array(networkSchema),
+    sfc: sfcSchema.optional(),
     extensions,
   })
   .strict();

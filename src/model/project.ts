@@ -65,7 +65,70 @@ export interface Pou {
   readonly comment: string;
   readonly variables: readonly Variable[];
   readonly networks: readonly Network[];
+  /** SFC only: the chart read from `source` (steps, transitions, actions), ready to run. */
+  readonly sfc?: SfcChart;
   readonly extensions?: Readonly<Record<string, unknown>>;
+}
+
+/**
+ * Code inside a chart: ST text (an expression for a condition, statements for an action), LD
+ * networks (a condition's networks write the BOOL `result`), or a piece that could not be read
+ * (`why`), reported when the chart is compiled.
+ */
+export type SfcCode =
+  | { readonly language: 'ST'; readonly text: string }
+  | { readonly language: 'LD'; readonly networks: readonly Network[]; readonly result?: string }
+  | { readonly language: 'none'; readonly why: string };
+
+/** An action of a step: the action (or BOOL variable) it names, its qualifier and time. */
+export interface SfcAssociation {
+  readonly action: string;
+  /** N, R, S, L, D, P, P0, P1, SD, DS, SL. */
+  readonly qualifier: string;
+  /** Time literal of L, D, SD, DS, SL (`T#2s`). */
+  readonly duration?: string;
+  readonly indicator?: string;
+}
+
+export interface SfcStep {
+  readonly name: string;
+  readonly initial: boolean;
+  readonly associations: readonly SfcAssociation[];
+  /** localId in the source chart (for messages). */
+  readonly localId?: number;
+}
+
+export interface SfcTransition {
+  /** Steps that must all be active (several: a simultaneous convergence). */
+  readonly from: readonly string[];
+  /** Steps activated when it fires (several: a simultaneous divergence). */
+  readonly to: readonly string[];
+  readonly priority?: number;
+  readonly condition: SfcCode;
+  /**
+   * The condition's blocks run in the chart's COMPUTE_FUNCTION_BLOCKS action (as Beremiz generates
+   * it): the transition reads what they gave in the previous cycle.
+   */
+  readonly delayed?: boolean;
+  readonly localId?: number;
+}
+
+export interface SfcAction {
+  readonly name: string;
+  readonly body: SfcCode;
+}
+
+/**
+ * A sequential function chart in the order MATIEC compiles it (the order Beremiz's generator writes
+ * steps, actions and transitions): steps, transitions (tested in this order, by priority first),
+ * actions with bodies (executed in this order).
+ */
+export interface SfcChart {
+  readonly steps: readonly SfcStep[];
+  readonly transitions: readonly SfcTransition[];
+  readonly actions: readonly SfcAction[];
+  /** BOOL variables the chart's graphical conditions write (declared with the chart, hidden). */
+  readonly locals?: readonly string[];
 }
 
 export interface Task {

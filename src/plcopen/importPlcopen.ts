@@ -18,6 +18,7 @@ import { readInstances, readType, readVarLists } from './importInterface';
 import { LdGraphError, type Finding } from './ldGraph';
 import { pouFingerprint } from './otherPous';
 import { unknownBlocks } from './unknownBlocks';
+import { readSfcChart } from './sfcChart';
 import {
   TC6_0200,
   TC6_0201,
@@ -304,7 +305,11 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     else {
       const legacy = ns === TC6_V10;
       const source = lang.name === 'ST' || lang.name === 'IL' ? deepText(lang).replace(/\r\n?/g, '\n') : raw(lang);
-      const pou: Pou = { ...head, source };
+      const pou: Pou = {
+        ...head,
+        source,
+        ...(lang.name === 'SFC' && !legacy ? { sfc: readSfcChart(pouEl, lang, library) } : {}),
+      };
       const actions = child(pouEl, 'actions');
       const transitions = child(pouEl, 'transitions');
       const keep: PreservedPou = {

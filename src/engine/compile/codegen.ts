@@ -10,6 +10,8 @@
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { ArgIR, NetworkIR, Op, OutIR, Source } from './ir';
+import { chartRanges } from '../sfc/ir';
+import { emitChart } from '../sfc/codegen';
 import { emitSt } from '../st/emit';
 import { singleWriterNets } from './nets';
 import { storeOf, type Access, type Store } from './symbols';
@@ -119,6 +121,8 @@ export function isStraight(networks: readonly NetworkIR[], first: number, end: n
           for (const c of op.calls) if (isStraight(networks, c.first, c.end) && !visit(c.first, c.end)) return false;
         }
         if (op.op === 'call' && isStraight(networks, op.first, op.end) && !visit(op.first, op.end)) return false;
+        if (op.op === 'sfc')
+          for (const r of chartRanges(op.chart)) if (isStraight(networks, r.first, r.end) && !visit(r.first, r.end)) return false;
       }
     return true;
   };
@@ -429,12 +433,19 @@ function emitOp(em: Emitter, op: Op): void {
       return emitSt(em, op, (first, end) =>
         em.pc.inlines(first, end) ? inlineBody(em, first, end) : [`${CALL_TEXT}${em.p(first)}, ${em.p(end)}, now, scan);`],
       );
+    case 'sfc':
+      return emitChart(em, op.chart, (b) => runBody(em, b.first, b.end), L);
   }
 }
 
 /** The statement running a body [first, end) (rewritten to `yield* X.stepCall(` for stepping). */
 export const CALL_TEXT = 'X.call(';
 export const STEP_CALL_TEXT = 'yield* X.stepCall(';
+
+/** The statements running a body [first, end): written in place when straight, else through `X.call`. */
+function runBody(em: Emitter, first: number, end: number): string[] {
+  return em.pc.inlines(first, end) ? inlineBody(em, first, end) : [`${CALL_TEXT}${em.p(first)}, ${em.p(end)}, now, scan);`];
+}
 
 function emitCall(em: Emitter, op: Extract<Op, { op: 'call' }>): void {
   const L = em.lines;

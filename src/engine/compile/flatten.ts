@@ -7,6 +7,7 @@ import type { Pou, Profile, Project } from '../../model/project';
 import type { Diagnostic } from '../api';
 import { EdgeTable, type CallBuilder, type FunctionSite, type SharedParts } from './context';
 import type { NetworkIR } from './ir';
+import { lowerChartBody } from '../sfc/body';
 import { lowerPouBody } from './pou';
 import { bodyShapes } from '../st/body';
 import { SymbolTable, type Access, type Sym, type UfbSymbol } from './symbols';
@@ -54,13 +55,16 @@ export class Flattener implements CallBuilder {
     scope: SymbolTable,
     info: { kind: BodyInfo['kind']; instance?: string },
     out?: Diagnostic[],
+    /** The instance's own table, when `scope` is this call's copy (a chart's step names are bound in both). */
+    own: SymbolTable = scope,
   ): { first: number; end: number } | undefined {
     if (this.depth >= MAX_DEPTH) {
       this.ok = false;
       return undefined;
     }
     const first = this.networks.length;
-    const shapes = bodyShapes(pou);
+    const sfc = pou.language === 'SFC';
+    const shapes = sfc ? [{ elements: 0, vlinks: 0 }] : bodyShapes(pou);
     const end = first + shapes.length;
     const index = this.bodies.length;
     this.bodies.push({
@@ -80,12 +84,16 @@ export class Flattener implements CallBuilder {
     const parent = this.current;
     this.current = index;
     this.depth++;
-    const lowered = lowerPouBody(this.project, pou, this.profile, scope, sink, {
-      first,
-      ...(info.instance ? { instance: info.instance } : {}),
-      calls: this,
-      shared: this.shared,
-    });
+    const lowered = sfc
+      ? lowerChartBody(pou, scope, scope === own ? [scope] : [own, scope], sink, first, (piece) =>
+          this.body(piece, scope, { kind: 'fb', ...(info.instance ? { instance: info.instance } : {}) }, sink),
+        )
+      : lowerPouBody(this.project, pou, this.profile, scope, sink, {
+          first,
+          ...(info.instance ? { instance: info.instance } : {}),
+          calls: this,
+          shared: this.shared,
+        });
     this.depth--;
     this.current = parent;
     lowered.networks.forEach((n, k) => (this.networks[first + k] = n));
@@ -97,7 +105,7 @@ export class Flattener implements CallBuilder {
   }
 
   fbBody(instance: UfbSymbol, refs: ReadonlyMap<string, Access>): { first: number; end: number } | undefined {
-    return this.body(instance.pou, withRefs(instance.scope, refs), { kind: 'fb', instance: instance.name });
+    return this.body(instance.pou, withRefs(instance.scope, refs), { kind: 'fb', instance: instance.name }, undefined, instance.scope);
   }
 
   functionCall(pou: Pou, site: string): FunctionSite {

@@ -2,6 +2,7 @@
 import type { CoilType, ContactType } from '../../model/elements';
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { TStmt } from '../st/lowered';
+import type { SfcOp } from '../sfc/ir';
 import type { Access, Store } from './symbols';
 
 /** Where a value comes from: a power-flow net (BOOL), a data slot fed by a box output, or an operand. */
@@ -74,7 +75,8 @@ export type Op =
       readonly eno?: OutIR;
     }
   | CallOp
-  | StOp;
+  | StOp
+  | SfcOp;
 
 /**
  * The body of a POU written in ST or IL (st/index.ts): one operation, the whole checked statement

@@ -6,6 +6,7 @@ import type { Diagnostic } from '../api';
 import { blockLibrary } from '../../model/library';
 import { newPouContext, type CallBuilder, type CoilFamily, type PouContext, type SharedParts } from './context';
 import type { NetworkIR } from './ir';
+import { lowerChart } from '../sfc/chart';
 import { lowerNetwork } from './lower';
 import { lowerTextBody, refuseBody } from '../st/body';
 import { Reporter } from './report';
@@ -53,10 +54,22 @@ export function lowerPou(
     blockLibrary(project),
   );
   checkPouKind(pou, symbols, varReporter);
-  const lowered = lowerPouBody(project, pou, profile, symbols, out, place);
+  const lowered =
+    pou.language === 'SFC' ? checkChart(project, pou, profile, symbols, out, place) : lowerPouBody(project, pou, profile, symbols, out, place);
   const ok =
     !out.slice(start).some((d) => d.severity === 'error') && !globalsOut.some((d) => d.severity === 'error');
   return { ...lowered, ok };
+}
+
+/** An SFC POU checked on its own: its chart (steps, transitions, qualifiers, the code inside it). */
+function checkChart(project: Project, pou: Pou, profile: Profile, symbols: SymbolTable, out: Diagnostic[], place: Placement): LoweredPou {
+  const start = out.length;
+  lowerChart(pou, symbols, [symbols], new Reporter(out, pou.name, -1), (piece) => {
+    lowerPouBody(project, piece, profile, symbols, out);
+    return undefined;
+  });
+  const ctx = newPouContext(project, pou, profile, symbols, new Map(), place);
+  return { ctx, networks: [], ok: !out.slice(start).some((d) => d.severity === 'error') };
 }
 
 /** LD-E22: a FUNCTION keeps nothing between calls, so it declares no FB instance. */
