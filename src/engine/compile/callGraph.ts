@@ -6,6 +6,7 @@ import { blockLibrary } from '../../model/library';
 import type { Pou, Project } from '../../model/project';
 import type { Diagnostic } from '../api';
 import { Reporter } from './report';
+import { calledNames } from '../st/index';
 
 interface Use {
   readonly callee: Pou;
@@ -24,6 +25,12 @@ export function usesOf(project: Project, pou: Pou): Use[] {
     if (callee && callee.kind === 'FUNCTION_BLOCK' && v.varClass !== 'external')
       out.push({ callee, network: -1, variable: v.name });
   }
+  // ST and IL bodies: the functions (and instances) their text calls.
+  if (pou.language === 'ST' || pou.language === 'IL')
+    for (const name of calledNames(pou)) {
+      const callee = lib.userPou(name);
+      if (callee && callee.kind === 'FUNCTION' && !out.some((u) => u.callee === callee)) out.push({ callee, network: -1 });
+    }
   pou.networks.forEach((net, i) => {
     for (const el of net.elements) {
       if (el.kind !== 'box') continue;
@@ -67,7 +74,9 @@ export function checkRecursion(project: Project, out: Diagnostic[], pous: readon
       const r = new Reporter(out, p.name, u.network, u.network >= 0 ? p.networks[u.network]!.label?.trim() : undefined);
       const what = u.box
         ? `the ${u.box.blockType} block${u.box.instance ? ` "${u.box.instance}"` : ''}`
-        : `the variable "${u.variable}" (a ${u.callee.name} instance)`;
+        : u.variable !== undefined
+          ? `the variable "${u.variable}" (a ${u.callee.name} instance)`
+          : `the call of ${u.callee.name} in its ${p.language} body`;
       r.error(
         'LD-E21',
         `${what} makes ${p.name} use itself (${cycle}); a POU cannot call itself, directly or through others`,

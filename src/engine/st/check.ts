@@ -71,6 +71,8 @@ export class StChecker {
   private crTypes = new Map<number, ElementaryType>();
   /** Slots holding an untyped literal (LD 0): it takes the type of where it is used. */
   private crLiterals = new Map<number, TExpr>();
+  /** Where jumps brought another type of current result than the code falling through. */
+  private crConflict: { pos: Pos; message: string } | undefined;
   private labelIds = new Map<string, number>();
   private labelTypes = new Map<number, ElementaryType | undefined>();
   private seenLabels = new Set<string>();
@@ -148,6 +150,7 @@ export class StChecker {
       case 'setcr': {
         const value = this.expr(s.value);
         this.crTypes.set(s.slot, value.type);
+        if (s.slot === 0) this.crConflict = undefined;
         if (value.k === 'const' && value.literal !== undefined) this.crLiterals.set(s.slot, value);
         else this.crLiterals.delete(s.slot);
         this.reachable = true;
@@ -159,9 +162,11 @@ export class StChecker {
         // The current result's type at a label: the one falling through, else the one jumps bring.
         const jumped = this.labelTypes.get(id);
         const here = this.reachable ? this.crTypes.get(0) : jumped;
-        if (this.reachable && jumped && here && jumped !== here)
-          throw new Fail(s.pos, `the current result is ${here} here but ${jumped} where jumps to ${s.name} come from`);
-        if (here) this.crTypes.set(0, here);
+        // Two types meet here: an error only if the current result is used before it is loaded again.
+        if (this.reachable && jumped && here && jumped !== here) {
+          this.crTypes.delete(0);
+          this.crConflict = { pos: s.pos, message: `the current result is ${here} here but ${jumped} where jumps to ${s.name} come from` };
+        } else if (here) this.crTypes.set(0, here);
         this.crLiterals.clear();
         this.reachable = true;
         return [{ k: 'label', id }];
@@ -476,6 +481,7 @@ export class StChecker {
         const lit = this.crLiterals.get(e.slot);
         if (lit) return lit;
         const type = this.crTypes.get(e.slot);
+        if (!type && e.slot === 0 && this.crConflict) throw new Fail(this.crConflict.pos, this.crConflict.message);
         if (!type) throw new Fail(e.pos, 'there is no current result here: load a value first (LD)');
         return { k: 'cr', type, slot: e.slot };
       }

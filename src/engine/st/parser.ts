@@ -129,7 +129,7 @@ export class Parser {
       if (KEYWORDS.has(t.upper)) this.fail('expected a statement');
       // An assignment or a call.
       if (this.peek().kind === 'symbol' && this.peek().text === '(') {
-        this.k++;
+        this.k += 2;
         const args = this.args();
         this.endStatement();
         return { k: 'call', name: t.text, args, pos };
