@@ -8,8 +8,9 @@
 // | counter-down-limit   | CTD/CTUD count down while CV > -32768       | count down only while CV > 0                       |
 // | time-conversion-unit | TIME_TO_<int/bits/real> gives ms, and       | gives seconds (timespec tv_sec; REAL with fraction)|
 // |                      | <int/bits/real>_TO_TIME reads ms            | and reads seconds                                  |
+// |                      | (so do INTEGRAL, DERIVATIVE, PID's CYCLE)   | (their bodies call TIME_TO_REAL(CYCLE))            |
 // | mod-by-zero          | MOD(x, 0) = 0 with ENO OFF                  | MOD(x, 0) = 0 with ENO ON (TEST_EN, no condition)  |
-// | conversion-range     | out-of-range conversion turns ENO OFF       | C cast: ENO stays ON                               |
+// | conversion-range     | out-of-range conversion or TRUNC: ENO OFF   | C cast: ENO stays ON                               |
 // |                      | (the value is the same wrapped result)      |                                                    |
 // | limit-crossed        | LIMIT = MIN(MAX(IN, MN), MX): MX if MN > MX | IN > MN ? (IN < MX ? IN : MX) : MN: MN if MN >= IN |
 // | mux-negative         | MUX with K < 0: ENO OFF, output not assigned| ENO ON, OUT = 0 (MATIEC tests only K >= n)         |
@@ -46,9 +47,9 @@ export const PROFILE_DIFFERENCES: readonly ProfileDifference[] = [
   {
     id: 'time-conversion-unit',
     summary: 'Unit of TIME_TO_* and *_TO_TIME conversions',
-    iec: 'Milliseconds: TIME_TO_DINT(T#1s500ms) = 1500, DINT_TO_TIME(250) = T#250ms.',
+    iec: 'Milliseconds: TIME_TO_DINT(T#1s500ms) = 1500, DINT_TO_TIME(250) = T#250ms. INTEGRAL, DERIVATIVE and PID read CYCLE as TIME_TO_REAL does: in ms, so PID\'s TR and TD are in ms.',
     openplc:
-      'Seconds: TIME_TO_DINT(T#1s500ms) = 1, DINT_TO_TIME(250) = T#4m10s, TIME_TO_REAL(T#1s500ms) = 1.5.',
+      'Seconds: TIME_TO_DINT(T#1s500ms) = 1, DINT_TO_TIME(250) = T#4m10s, TIME_TO_REAL(T#1s500ms) = 1.5. INTEGRAL, DERIVATIVE and PID read CYCLE in seconds (PID\'s TR and TD in seconds).',
   },
   {
     id: 'mod-by-zero',
@@ -59,7 +60,7 @@ export const PROFILE_DIFFERENCES: readonly ProfileDifference[] = [
   {
     id: 'conversion-range',
     summary: 'Conversions whose value does not fit the target type',
-    iec: 'ENO goes OFF; OUT is the wrapped value (INT_TO_SINT(300) = 44, REAL_TO_UINT(-1.0) = 0).',
+    iec: 'ENO goes OFF; OUT is the wrapped value (INT_TO_SINT(300) = 44, REAL_TO_UINT(-1.0) = 0). TRUNC alike.',
     openplc: 'ENO stays ON; OUT is the same wrapped value (a C cast).',
   },
   {
