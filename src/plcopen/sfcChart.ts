@@ -155,6 +155,23 @@ export function readSfcChart(pouEl: XmlElement, sfc: XmlElement, library: BlockL
     const ref = cond && child(cond, 'reference');
     if (ref) {
       const name = ref.attrs.name ?? '';
+      const known = referenced.get(name.toUpperCase());
+      if (known) return known;
+      const code = referencedCondition(name, id);
+      referenced.set(name.toUpperCase(), code);
+      return code;
+    }
+    const wires = cond && child(cond, 'connectionPointIn');
+    if (wires) {
+      const result = `_SFC_C${id}`;
+      return placed(graphicCondition(wires, byId, result, `the condition of transition ${id}`), result);
+    }
+    return { language: 'none', why: `transition ${id} has no condition` };
+  };
+  /** A transition body named by transitions (its blocks run once, however many transitions name it). */
+  const referenced = new Map<string, SfcCode>();
+  const referencedCondition = (name: string, id: string): SfcCode => {
+    {
       const decl = declaredTransitions.get(name.toUpperCase());
       if (!decl) return { language: 'none', why: `transition ${id} refers to "${name}", which the POU does not declare` };
       const body = child(decl, 'body');
@@ -182,12 +199,6 @@ export function readSfcChart(pouEl: XmlElement, sfc: XmlElement, library: BlockL
       const result = `_SFC_${name}`;
       return placed(graphicCondition(wires, ids, result, `transition "${name}"`), result);
     }
-    const wires = cond && child(cond, 'connectionPointIn');
-    if (wires) {
-      const result = `_SFC_C${id}`;
-      return placed(graphicCondition(wires, byId, result, `the condition of transition ${id}`), result);
-    }
-    return { language: 'none', why: `transition ${id} has no condition` };
   };
   /** A graphical condition: run where the transition is tested, or (with blocks) in COMPUTE_FUNCTION_BLOCKS. */
   const placed = (g: { networks: Network[] | string; blocks: boolean }, result: string): SfcCode => {
