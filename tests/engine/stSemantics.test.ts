@@ -11,6 +11,12 @@ describe('ST arithmetic', () => {
     expect(scanRead(plc, 1, ['q1', 'q2', 'm1', 'm2', 'm3', 'q3'])).toEqual([-3, -3, -1, 1, 2, 3]);
   });
 
+  test('division by zero: integers give 0 (the C code MATIEC writes would stop the runtime), REAL gives IEEE infinities as C does', () => {
+    const plc = stMain('q := a / z; m := a MOD z; r := x / rz; n := rz / rz; k := 1.0 / 3.0;', vars('q INT := 5', 'm INT := 5', 'a INT := 7', 'z INT', 'r REAL', 'x REAL := -2.0', 'rz REAL', 'n REAL', 'k REAL'));
+    const [q, m, r, n, k] = scanRead(plc, 1, ['q', 'm', 'r', 'n', 'k']);
+    expect([q, m, r, Number.isNaN(n), k]).toEqual([0, 0, -Infinity, true, Math.fround(1 / 3)]);
+  });
+
   test('results wrap at the width of their type', () => {
     const plc = stMain(
       `i := i + 1; s := s + 1; u := u + 1; d := d + 1; ud := ud - 1; l := l + 1;

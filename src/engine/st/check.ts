@@ -507,7 +507,9 @@ export class StChecker {
     if (arith) {
       const a = this.expr(e.a, hint);
       const b = this.expr(e.b, hint);
-      return this.applyFunction(arith, [a, b], [e.a.pos, e.b.pos], e.pos, hint);
+      const r = this.applyFunction(arith, [a, b], [e.a.pos, e.b.pos], e.pos, hint);
+      if (op === '/' && r.k === 'fn' && isRealType(r.type)) return { k: 'rdiv', type: r.type, a: r.args[0]!, b: r.args[1]! };
+      return r;
     }
     const cmp = CMP[op];
     if (cmp) {

@@ -238,6 +238,12 @@ class StGen {
         const pow = `Math.pow(${a.code}, Number(${b.code}))`;
         return { pre: [...a.pre, ...b.pre], code: e.type === 'REAL' ? `Math.fround(${pow})` : pow };
       }
+      case 'rdiv': {
+        const a = this.expr(e.a);
+        const b = this.expr(e.b);
+        const q = `(${a.code} / ${b.code})`;
+        return { pre: [...a.pre, ...b.pre], code: e.type === 'REAL' ? `Math.fround${q}` : q };
+      }
       case 'seq': {
         const pre = this.stmts(e.pre);
         const v = this.expr(e.value);

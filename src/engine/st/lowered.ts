@@ -16,6 +16,8 @@ export type TExpr =
   | { readonly k: 'cmp'; readonly type: 'BOOL'; readonly op: CompareOp; readonly a: TExpr; readonly b: TExpr }
   /** A number-held integer used where a 64-bit (bigint-held) type is expected. */
   | { readonly k: 'big'; readonly type: ElementaryType; readonly a: TExpr }
+  /** `/` on REAL or LREAL: IEEE division as MATIEC's C does it (x / 0 is +-Inf or NaN, not an error). */
+  | { readonly k: 'rdiv'; readonly type: ElementaryType; readonly a: TExpr; readonly b: TExpr }
   /** `**` (EXPT): a REAL or LREAL base. */
   | { readonly k: 'pow'; readonly type: ElementaryType; readonly a: TExpr; readonly b: TExpr }
   /** IL's current result (slot 0) or a saved one. */
@@ -90,6 +92,7 @@ export function stFacts(body: readonly TStmt[]): { calls: { first: number; end: 
       case 'logic':
       case 'cmp':
       case 'pow':
+      case 'rdiv':
         expr(e.a);
         expr(e.b);
         return;
