@@ -207,8 +207,9 @@ export const FUNCTION_SIGNATURES_BASE: readonly BlockSignature[] = [
   fn('MOVE', 'move', [p('IN', 'ANY', true)], p('OUT', 'ANY', true), 'Copies IN to OUT.'),
   arith2('ADD', 'ANY_MAGNITUDE', 'OUT := IN1 + IN2 + ...', true),
   arith2('SUB', 'ANY_MAGNITUDE', 'OUT := IN1 - IN2', false),
-  arith2('MUL', 'ANY_NUM', 'OUT := IN1 * IN2 * ...', true),
-  arith2('DIV', 'ANY_NUM', 'OUT := IN1 / IN2 (integer division truncates; division by zero turns ENO OFF).', false),
+  // ANY_MAGNITUDE, not ANY_NUM: IN1 may be a TIME when IN2 is a number (MATIEC's MUL/DIV of TIME, as MULTIME/DIVTIME).
+  arith2('MUL', 'ANY_MAGNITUDE', 'OUT := IN1 * IN2 * ... (also a TIME times a number, as MULTIME)', true),
+  arith2('DIV', 'ANY_MAGNITUDE', 'OUT := IN1 / IN2 (integer division truncates; division by zero turns ENO OFF; a TIME divided by a number, as DIVTIME).', false),
   arith2('MOD', 'ANY_INT', 'OUT := IN1 MOD IN2 (IN2 = 0 gives 0 and turns ENO OFF).', false),
   fn('ABS', 'arithmetic', [p('IN', 'ANY_NUM', true)], p('OUT', 'ANY_NUM', true), 'Absolute value.'),
   fn('NEG', 'arithmetic', [p('IN', 'ANY_NUM', true)], p('OUT', 'ANY_NUM', true), 'Negation (signed types).'),

@@ -72,7 +72,7 @@ const OWN_LITERAL_DEFAULT: Partial<Record<GenericType, ElementaryType>> = { ANY_
 const OWN_OUTPUT_DEFAULT: Partial<Record<GenericType, ElementaryType>> = { ANY_INT: 'DINT' };
 
 /** How a generic pin type reads in a message. */
-const GENERIC_WORDS: Record<GenericType, string> = {
+const GENERIC_WORDS: Partial<Record<GenericType, string>> = {
   ANY: 'a value',
   ANY_ELEMENTARY: 'a value',
   ANY_MAGNITUDE: 'a number or a TIME',
@@ -209,6 +209,19 @@ function implement(
   }
 }
 
+/**
+ * MUL and DIV of a TIME (IN1) by a number (IN2): MATIEC's MUL__TIME__TIME__ANY_NUM and
+ * DIV__TIME__TIME__ANY_NUM, listed in OpenPLC Editor's Time section (deprecated names of MULTIME
+ * and DIVTIME, and what `T * 2` means in ST). An untyped IN2 literal is read as LREAL.
+ */
+function timeScaling(name: string, argTypes: readonly (ElementaryType | undefined)[]): ResolvedFunction | undefined {
+  if ((name !== 'MUL' && name !== 'DIV') || argTypes.length !== 2 || argTypes[0] !== 'TIME') return undefined;
+  const n = argTypes[1] ?? 'LREAL';
+  if (!GENERIC_MEMBERS.ANY_NUM.includes(n)) return undefined;
+  const impl2 = timeFunction(name === 'MUL' ? 'MULTIME' : 'DIVTIME');
+  return { name, argTypes: ['TIME', n], outType: 'TIME', inputNames: ['IN1', 'IN2'], impl: fromImpl2(impl2), impl2 };
+}
+
 /** A generic output of its own (TRUNC's ANY_INT): the type of the variable OUT is written to, else the default. */
 function ownOutputType(generic: GenericType, hint: ElementaryType | undefined): ElementaryType {
   if (hint && admits(generic, hint)) return hint;
@@ -232,6 +245,9 @@ export function resolveFunction(
   const pins = expandInputs(sig, argTypes.length);
   if (typeof pins === 'string') return { ok: false, message: pins };
   const out = sig.outputs[0]!;
+
+  const scaled = timeScaling(fname, argTypes);
+  if (scaled) return { ok: true, fn: scaled };
 
   // The shared type of the poly pins.
   const polyIndexes = pins.flatMap((p, i) => (p.poly ? [i] : []));
@@ -261,7 +277,7 @@ export function resolveFunction(
       concrete.push(pin.type);
     } else {
       if (arg && !admits(pin.type, arg))
-        return { ok: false, message: `${fname} input ${pin.name} needs ${GENERIC_WORDS[pin.type]} (${pin.type}), not ${arg}` };
+        return { ok: false, message: `${fname} input ${pin.name} needs ${GENERIC_WORDS[pin.type] ?? 'a value'} (${pin.type}), not ${arg}` };
       concrete.push(arg ?? OWN_LITERAL_DEFAULT[pin.type] ?? LITERAL_DEFAULT[pin.type]);
     }
   }

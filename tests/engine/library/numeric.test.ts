@@ -198,6 +198,18 @@ describe('functions of TIME', () => {
     expect(resolved('MULTIME', ['TIME', undefined]).argTypes).toEqual(['TIME', 'LREAL']);
   });
 
+  it('MUL and DIV of a TIME by a number are MULTIME and DIVTIME (the palette’s Time section)', () => {
+    expect(call('MUL', ['TIME', 'INT'], [100, 3])).toEqual([300, true]);
+    expect(call('DIV', ['TIME', 'LREAL'], [1000, 0.5])).toEqual([2000, true]);
+    expect(call('DIV', ['TIME', 'DINT'], [1000, 0])[1]).toBe(false);
+    const mul = resolved('MUL', ['TIME', undefined]);
+    expect([mul.argTypes, mul.outType]).toEqual([['TIME', 'LREAL'], 'TIME']);
+    // Only TIME by a number: a number times a TIME, or TIME by TIME, is refused as before.
+    expect(refusal('MUL', ['INT', 'TIME'])).toBe('MUL cannot multiply INT and TIME');
+    expect(refusal('DIV', ['TIME', 'TIME'])).toBe('DIV cannot divide TIME values');
+    expect(refusal('MUL', ['TIME', 'INT', 'INT'])).toBe('MUL cannot multiply TIME and INT');
+  });
+
   it('DIVTIME by 0 is an error: ENO OFF (undefined behaviour in MATIEC)', () => {
     expect(call('DIVTIME', ['TIME', 'INT'], [1000, 0])[1]).toBe(false);
     expect(call('DIVTIME', ['TIME', 'LREAL'], [1000, 0], 'openplc')[1]).toBe(false);

@@ -141,6 +141,17 @@ describe('in a ladder program (openplc profile)', () => {
     expect([plc.read('R'), plc.read('Busy')]).toEqual([8, false]);
   });
 
+  it('MUL and DIV boxes take a TIME and a number (the palette’s Time section)', () => {
+    const p = project(vars('A BOOL', 'Base TIME := T#250ms', 'Long TIME', 'Short TIME'), [
+      ladder(tall('[A] # # .', 3), { boxes: [{ row: 0, col: 1, type: 'MUL', inputs: { IN1: 'Base', IN2: '4' }, outputs: { OUT: 'Long' } }] }),
+      ladder(tall('[A] # # .', 3), { boxes: [{ row: 0, col: 1, type: 'DIV', inputs: { IN1: 'Base', IN2: '2.5' }, outputs: { OUT: 'Short' } }] }),
+    ]);
+    const plc = plcOf(p);
+    plc.write('A', true);
+    plc.scan();
+    expect([plc.read('Long'), plc.read('Short')]).toEqual([1000, 100]);
+  });
+
   it('refuses wrong types on the pins, naming the block', () => {
     const p = project(vars('A BOOL', 'N INT', 'Y REAL'), [
       ladder(tall('[A] # # .', 2), { boxes: [{ row: 0, col: 1, type: 'SQRT', inputs: { IN: 'N' }, outputs: { OUT: 'Y' } }] }),

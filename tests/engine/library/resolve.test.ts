@@ -55,7 +55,7 @@ describe('resolveFunction', () => {
   it.each<[string, Parameters<typeof resolveFunction>[1], string]>([
     ['ADD', ['BOOL', 'INT'], 'ADD cannot add BOOL and INT'],
     ['ADD', ['BOOL', 'BOOL'], 'ADD cannot add BOOL'],
-    ['MUL', ['TIME', 'TIME'], 'MUL cannot multiply TIME'],
+    ['MUL', ['TIME', 'TIME'], 'MUL cannot multiply TIME values'],
     ['MOD', ['REAL', 'REAL'], 'MOD cannot take the remainder of REAL'],
     ['AND', ['INT', 'INT'], 'AND cannot combine INT'],
     ['NOT', ['REAL'], 'NOT cannot invert REAL'],
