@@ -54,6 +54,46 @@ describe('several programs per task', () => {
     ]);
   });
 
+  test('programs that call FBs: each program runs once, in task order, and its calls with it', () => {
+    // Inc counts its calls; P1 calls two instances, P2 one; P2 copies P1's count into its own.
+    const inc = pou('Inc', 'FUNCTION_BLOCK', io('output', 'Q INT'), [add('Q')]);
+    const call = (instance: string, out: string, row = 0) =>
+      box('Inc', row, 1, { instance, outputs: { Q: out } });
+    const p1 = pou('P1', 'PROGRAM', vars('A INT', 'B INT', 'I1 Inc', 'I2 Inc'), [
+      ladder(['. # # .', '. # # .'], { boxes: [call('I1', 'A')] }),
+      ladder(['. # # .', '. # # .'], { boxes: [call('I2', 'B')] }),
+    ]);
+    const p2 = pou('P2', 'PROGRAM', [...vars('C INT', 'Seen INT', 'I3 Inc'), ...io('external', 'Total INT')], [
+      ladder(['. # # .', '. # # .'], { boxes: [call('I3', 'C')] }),
+      ladder(['- # # .', '. # # .'], { boxes: [box('MOVE', 0, 1, { inputs: { IN: 'Total' }, outputs: { OUT: 'Seen' } })] }),
+    ]);
+    const p0 = pou('P0', 'PROGRAM', io('external', 'Total INT'), [add('Total')]);
+    const project = newProject('Plant', {
+      pous: [p1, p2, p0, inc],
+      globals: vars('Total INT'),
+      tasks: [
+        {
+          name: 'Main',
+          cycleMs: 10,
+          priority: 1,
+          programs: [
+            { instance: 'X', pou: 'P1' },
+            { instance: 'T', pou: 'P0' },
+            { instance: 'Y', pou: 'P2' },
+          ],
+        },
+      ],
+    });
+    const { program, diagnostics } = compileProgram(project, { configuration: true });
+    expect(diagnostics.filter((d) => d.severity === 'error')).toEqual([]);
+    const plc = createPlc(program!, { cycleMs: 10 });
+    expect(trace(plc, [{}, {}, {}], ['X.A', 'X.B', 'Y.C', 'Total', 'Y.Seen'])).toEqual([
+      [1, 1, 1, 1, 1],
+      [2, 2, 2, 2, 2],
+      [3, 3, 3, 3, 3],
+    ]);
+  });
+
   test('one program of the configuration can still be compiled alone (--pou)', () => {
     const { program } = compileProgram(configProject(), { pou: 'Count' });
     const plc = createPlc(program!, { cycleMs: 10 });

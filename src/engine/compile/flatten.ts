@@ -24,6 +24,15 @@ export interface BodyInfo {
   readonly parent: number;
 }
 
+/** A body's network range, allocated before it is lowered. */
+export interface ReservedBody {
+  readonly pou: Pou;
+  readonly info: { readonly kind: BodyInfo['kind']; readonly instance?: string };
+  readonly index: number;
+  readonly first: number;
+  readonly end: number;
+}
+
 /** Deeper than this, calls are certainly recursive (LD-E21 reports it); a guard, never reached otherwise. */
 const MAX_DEPTH = 256;
 
@@ -58,6 +67,18 @@ export class Flattener implements CallBuilder {
     /** The instance's own table, when `scope` is this call's copy (a chart's step names are bound in both). */
     own: SymbolTable = scope,
   ): { first: number; end: number } | undefined {
+    const reserved = this.reserve(pou, info);
+    if (!reserved) return undefined;
+    this.lower(reserved, scope, out, own);
+    return { first: reserved.first, end: reserved.end };
+  }
+
+  /**
+   * Allocates the network range of a body without lowering it. Program instances of a
+   * configuration are reserved first, so their ranges are contiguous at the start of the network
+   * array (their callees' bodies come after them) and run in task order.
+   */
+  reserve(pou: Pou, info: { kind: BodyInfo['kind']; instance?: string }): ReservedBody | undefined {
     if (this.depth >= MAX_DEPTH) {
       this.ok = false;
       return undefined;
@@ -80,6 +101,13 @@ export class Flattener implements CallBuilder {
       this.shapes.push(shape);
       this.bodyOf.push(index);
     }
+    return { pou, info, index, first, end };
+  }
+
+  /** Lowers a reserved body over `scope`. */
+  lower(reserved: ReservedBody, scope: SymbolTable, out?: Diagnostic[], own: SymbolTable = scope): void {
+    const { pou, info, index, first } = reserved;
+    const sfc = pou.language === 'SFC';
     const sink: Diagnostic[] = out ?? [];
     const parent = this.current;
     this.current = index;
@@ -101,7 +129,6 @@ export class Flattener implements CallBuilder {
       this.ok = false;
       if (!out) this.errors.push(...sink.filter((d) => d.severity === 'error'));
     }
-    return { first, end };
   }
 
   fbBody(instance: UfbSymbol, refs: ReadonlyMap<string, Access>): { first: number; end: number } | undefined {

@@ -99,11 +99,13 @@ export function assembleProgram(
     for (const pou of roots) lowerPou(project, pou, profile, diagnostics, []);
     if (!checkCallees(project, roots, profile, diagnostics)) return { diagnostics: [...globals, ...diagnostics] };
     flat.setRoot(root);
-    for (const b of bound) {
+    // Every program's range first (contiguous, in task order), then their bodies and callees.
+    const reserved = bound.map((b) => flat.reserve(b.pou, { kind: 'program', instance: b.name }));
+    bound.forEach((b, i) => {
       const u = root.instantiate(b.pou, b.name, false);
       root.bind(b.name, u);
-      flat.body(b.pou, u.scope, { kind: 'program', instance: b.name });
-    }
+      if (reserved[i]) flat.lower(reserved[i], u.scope);
+    });
   } else {
     const pou = opts.pou ? findPou(project, opts.pou) : project.pous.find((p) => p.kind === 'PROGRAM');
     const r = new Reporter(diagnostics, opts.pou ?? project.name, -1);
