@@ -80,7 +80,7 @@ const ADDITIONAL_FB_SIGNATURES: readonly BlockSignature[] = [
     'control',
     'AUTO:BOOL PV:REAL SP:REAL X0:REAL KP:REAL TR:REAL TD:REAL CYCLE:TIME',
     'XOUT:REAL',
-    'PID controller: XOUT = KP * (ERROR + integral/TR + derivative*TD), ERROR = PV - SP; AUTO OFF tracks X0.',
+    'PID controller: XOUT = KP * (ERROR + integral/TR + derivative*TD), ERROR = PV - SP; with AUTO OFF (manual), XOUT = KP * X0.',
   ),
   fbSig(
     'RAMP',
