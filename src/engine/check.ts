@@ -1,15 +1,18 @@
 // checkProject: every rule of LD-SEMANTICS.md section 9 (and the LD-E/LD-W checks) over every
 // POU of a project, as located diagnostics for the editor's problem list and `rungsmith check`:
-// each POU on its own (user FBs and functions too, called or not), then recursion (LD-E21).
+// each POU on its own (user FBs and functions too, called or not), then recursion (LD-E21) and
+// the POUs' names (LD-E25).
 import type { Project } from '../model/project';
 import type { Diagnostic } from './api';
 import { checkRecursion } from './compile/callGraph';
 import { lowerPou } from './compile/pou';
+import { checkPouNames } from './compile/pouNames';
 
 export function checkProject(project: Project): Diagnostic[] {
   const out: Diagnostic[] = [];
   const globals: Diagnostic[] = [];
   project.pous.forEach((pou, i) => lowerPou(project, pou, project.profile, out, i === 0 ? globals : []));
   checkRecursion(project, out);
+  checkPouNames(project, out);
   return [...globals, ...out];
 }

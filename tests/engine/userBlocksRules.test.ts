@@ -136,3 +136,24 @@ describe('calls', () => {
     expect(errors(checkProject(p)).map(brief)).toEqual(['LD-R08 Unused/1', 'LD-R08 Unused/1']);
   });
 });
+
+describe('LD-E25 POU names', () => {
+  test('a POU named like a standard block, twice, or not an identifier is refused by name', () => {
+    const body = [ladder(['[A] (B)'])];
+    const project = multiProject([
+      pou('Main', 'PROGRAM', vars('A BOOL', 'B BOOL'), body),
+      pou('PID', 'FUNCTION_BLOCK', vars('A BOOL', 'B BOOL'), body),
+      pou('Motor', 'FUNCTION_BLOCK', vars('A BOOL', 'B BOOL'), body),
+      pou('MOTOR', 'FUNCTION_BLOCK', vars('A BOOL', 'B BOOL'), body),
+      pou('2nd', 'FUNCTION_BLOCK', vars('A BOOL', 'B BOOL'), body),
+    ]);
+    const named = checkProject(project).filter((d) => d.rule === 'LD-E25');
+    expect(named.map((d) => [d.pou, d.severity])).toEqual([
+      ['PID', 'error'],
+      ['MOTOR', 'error'],
+      ['2nd', 'error'],
+    ]);
+    expect(named[0]!.message).toMatch(/standard function block PID/);
+    expect(named[1]!.message).toMatch(/already used by Motor/);
+  });
+});
