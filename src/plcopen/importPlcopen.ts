@@ -194,9 +194,6 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     }
   };
 
-  // A file Rungsmith wrote holds the LD of SFC actions/transitions twice: inside the chart and as the
-  // program imported from it. The program wins, so repeated round trips do not multiply programs.
-  const fileNames = new Set(pouEls.map((p) => (p.attrs.name ?? '').toUpperCase()));
   /** VAR_EXTERNAL declarations, checked against the configuration's and resources' globals below. */
   const externals: { pou: string; name: string; type: string; el: XmlElement }[] = [];
   // First pass: every POU's interface, so a body can call a POU declared after it in the file.
@@ -333,56 +330,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
           pouEl,
         );
     }
-    const base = { kind: head.kind, language: 'LD' as const, comment: head.comment, variables: head.variables };
-    // LD inside SFC actions and transitions: each becomes a POU of its own.
-    for (const action of childrenNamed(child(pouEl, 'actions') ?? pouEl, 'action')) {
-      const ld = child(child(action, 'body') ?? action, 'LD');
-      if (!ld) continue;
-      if (fileNames.has(`${name}_${action.attrs.name ?? 'action'}`.toUpperCase())) continue;
-      const pname = uniqueName(pous, `${name}_${action.attrs.name ?? 'action'}`);
-      warn(
-        `the LD of action "${action.attrs.name}" of ${lang.name} POU "${name}" was imported as program "${pname}" (the chart itself is not simulated)`,
-        action,
-      );
-      pous.push({
-        id: newId<'PouId'>('p') as PouId,
-        name: pname,
-        ...base,
-        kind: 'PROGRAM',
-        networks: importLd(pname, ld, `action ${action.attrs.name} of ${name}`, library)!,
-      });
-    }
-    for (const tr of childrenNamed(child(pouEl, 'transitions') ?? pouEl, 'transition')) {
-      const ld = child(child(tr, 'body') ?? tr, 'LD');
-      if (!ld) continue;
-      const tname = tr.attrs.name ?? 'transition';
-      if (fileNames.has(`${name}_${tname}`.toUpperCase())) continue;
-      const pname = uniqueName(pous, `${name}_${tname}`);
-      warn(
-        `the LD of transition "${tname}" of ${lang.name} POU "${name}" was imported as program "${pname}" with a BOOL output "${tname}"`,
-        tr,
-      );
-      const vars = head.variables.some((v) => v.name.toUpperCase() === tname.toUpperCase())
-        ? head.variables
-        : [
-            ...head.variables,
-            {
-              name: tname,
-              type: 'BOOL',
-              varClass: 'output' as const,
-              retain: false,
-              comment: 'SFC transition condition',
-            },
-          ];
-      pous.push({
-        id: newId<'PouId'>('p') as PouId,
-        name: pname,
-        ...base,
-        kind: 'PROGRAM',
-        variables: vars,
-        networks: importLd(pname, ld, `transition ${tname} of ${name}`, library)!,
-      });
-    }
+    // The LD of SFC actions and transitions stays inside the chart (Pou.sfc), which runs it.
   }
   currentPou = undefined;
   for (const holder of [root, contentHeader]) {
@@ -460,11 +408,4 @@ function upgradeLegacyText(xml: string): string {
     /<(content|documentation|ST|IL|alternativeText)>(\s*)<!\[CDATA\[([\s\S]*?)\]\]>(\s*)<\/\1>/g,
     (_m, tag: string, _a: string, body: string) => `<${tag}><xhtml:p><![CDATA[${body}]]></xhtml:p></${tag}>`,
   );
-}
-
-function uniqueName(pous: readonly Pou[], wanted: string): string {
-  const taken = new Set(pous.map((p) => p.name.toUpperCase()));
-  let name = wanted.replace(/[^A-Za-z0-9_]/g, '_');
-  for (let i = 2; taken.has(name.toUpperCase()); i++) name = `${wanted}_${i}`;
-  return name;
 }

@@ -129,25 +129,34 @@ describe('PLCopen import: hand-written fixtures', () => {
     expect(plc.read('Elapsed')).toBe(2000);
   });
 
-  it('LD inside SFC actions and transitions becomes programs; POUs in other languages are POUs kept as written', async () => {
+  it('LD inside SFC actions and transitions stays in the chart (no extra programs); POUs in other languages are POUs kept as written', async () => {
     const { project, report } = imported('sfc-ld-actions.xml');
     expect(project.pous.map((p) => [p.name, p.language])).toEqual([
       ['Sequence', 'SFC'],
-      ['Sequence_Light', 'LD'],
-      ['Sequence_Started', 'LD'],
       ['Nothing', 'LD'],
       ['Main', 'ST'],
     ]);
-    expect(project.pous[2]!.variables.map((v) => v.name)).toEqual(['Go', 'Lamp', 'Started']);
-    expect(project.pous[3]!.networks).toEqual([]);
+    const chart = project.pous[0]!.sfc!;
+    expect(chart.actions.map((a) => [a.name, a.body.language])).toEqual([['Light', 'LD']]);
+    expect(project.pous[1]!.networks).toEqual([]);
     expect(project.pous[0]!.networks).toEqual([]);
     expect(project.pous[0]!.source).toMatch(/^<SFC>/);
     const text = report.warnings.map((w) => w.message).join('\n');
     expect(text).toContain('POU "Main" is written in ST');
-    expect(text).toContain('the chart itself is not simulated');
+    expect(text).not.toContain('was imported as program');
+    // The chart runs its LD action and transition: Light sets Lamp in scan 1, Started fires in scan 2.
+    const plc = run(project, 'Main');
+    const at = () => [plc.read('Seq.Init.X'), plc.read('Seq.Done.X'), plc.read('Seq.Lamp')];
+    expect(at()).toEqual([true, false, false]);
+    plc.scans(1);
+    expect(at()).toEqual([true, false, true]);
+    plc.scans(1);
+    expect(at()).toEqual([false, true, true]);
     const xml = exportPlcopen(project);
     expect(await schemaErrors(xml)).toEqual([]);
     const again = importPlcopen(xml);
     expect(again.ok && again.project.pous.map((p) => p.name)).toEqual(project.pous.map((p) => p.name));
+    expect(again.ok && again.project.pous[0]!.sfc!.actions.map((a) => [a.name, a.body.language])).toEqual([['Light', 'LD']]);
+    expect(again.ok && again.project.pous[0]!.sfc!.transitions.length).toBe(chart.transitions.length);
   });
 });
