@@ -194,6 +194,34 @@ export interface PlcProbe {
   readonly words: Int32Array;
   /** The snapshot's decoding of recorded words: `executed[i]` 1 when network i ran in that scan. */
   decode(power: Int32Array, executed: Uint8Array): NetworkPower[];
+  /**
+   * Changes made from outside the scans, counted (a live view): [0] the input image written at a scan
+   * boundary (write to an input, setInputs); [1] anything else (other writes, forces, restarts,
+   * importState, clearFault, restore) and any change made in the middle of a scan.
+   */
+  readonly changes: Int32Array;
+  /** The input image the next input read applies (a live view: copy what you keep). */
+  readonly inputImage: readonly Value[];
+  /** Wall-clock execution time of the last scan, ms. */
+  readonly execMs: number;
+  /** The complete state at a scan boundary: every variable, FB instance, edge memory, power word, the input image, forces, scan count and time. */
+  save(): PlcImage;
+  /** Takes back a state save() gave on a PLC of the same compiled program (at a scan boundary, fault cleared). */
+  restore(image: PlcImage): void;
+  /**
+   * Runs one scan at PLC time `timeMs` whatever the clock says, with `inputs` (when given) as the
+   * input image: a recorded scan replayed exactly. Returns the fault when the scan faulted.
+   */
+  replay(timeMs: number, inputs?: readonly Value[]): Fault | undefined;
+}
+
+/** A PLC's complete state (PlcProbe.save): opaque but for what it is of and its estimated size. */
+export interface PlcImage {
+  /** Scans completed and the time of the last one when it was taken. */
+  readonly scan: number;
+  readonly timeMs: number;
+  /** Estimated memory held, in bytes. */
+  readonly bytes: number;
 }
 
 export interface Plc {

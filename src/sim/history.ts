@@ -1,10 +1,14 @@
-// Scan history: every recorded scan's values and packed power words, kept as a change log with
-// periodic key frames, bounded by a number of scans and a memory budget (the oldest go first).
-// Pure TS: used by the simulation worker (src/sim/session.ts) and by tests and benchmarks.
+// Scan history (issue 14): what it takes to rebuild any recorded scan exactly, bounded by a number of
+// scans and a memory budget (the oldest go first). Pure TS: used by the simulation worker through
+// HistoryRecorder (src/sim/historyRecorder.ts), and by tests and benchmarks.
 //
-// A chunk starts with a key frame (the full state after its first scan); each later scan of the
-// chunk stores only what changed since the scan before. Seeking = the chunk's key frame plus its
-// deltas up to the scan, so it costs at most one chunk of deltas whatever the depth.
+// A scan is a pure function of the PLC's state, its input image, forces and its time. So the history
+// keeps, per scan, only its times and (when it changed) the input image it read; and now and then a
+// key: the PLC's complete state after a scan (PlcProbe.save). A segment is a key and the scans after
+// it up to the next key; a scan is rebuilt by restoring its segment's key on a second PLC of the same
+// program and replaying the scans after it (src/sim/replay.ts). A key is also taken after any other
+// change from outside (a write, a force, a restart, a change in the middle of a scan), so replaying
+// never needs more than the recorded times and input images.
 import type { Value } from '../model/iecTypes';
 
 export interface HistoryOptions {
@@ -12,119 +16,125 @@ export interface HistoryOptions {
   readonly maxScans?: number;
   /** Memory budget in bytes (default 64 MB); the oldest scans are dropped first to stay under it. */
   readonly budgetBytes?: number;
-  /** Scans per key frame (default 256). A chunk also ends early when its deltas outgrow its key frame. */
+  /** Most scans between two keys (default 2,048): bounds the scans a seek replays. */
   readonly keyEvery?: number;
+  /** A key is also taken once the scans since the last one took this long to run (ms, default 10): bounds a seek's time on slow programs. */
+  readonly keyReplayMs?: number;
 }
 
 export const DEFAULT_HISTORY_SCANS = 100_000;
 export const DEFAULT_HISTORY_BUDGET = 64 * 1024 * 1024;
+export const DEFAULT_KEY_EVERY = 2048;
+export const DEFAULT_KEY_REPLAY_MS = 10;
 
-/** The state after one scan, as recorded. */
-export interface HistoryState {
-  readonly scan: number;
-  readonly timeMs: number;
-  /** Aligned with the recorder's names (SimLayout.variables). */
-  readonly values: Value[];
-  /** Packed power words, then one executed flag (0/1) per network. */
-  readonly power: Int32Array;
+/** A key's state, as the history holds it: only its size matters here. */
+export interface KeyImage {
+  readonly bytes: number;
 }
 
-/** Estimated bytes of one stored value and one delta entry (index + value), for the budget. */
+/** Bytes per recorded scan (two times) and per recorded input image beyond its values. */
+const SCAN_BYTES = 16;
+const INPUTS_BYTES = 32;
 const VALUE_BYTES = 8;
-const DELTA_BYTES = 12;
 
-/** A growable Int32 array (deltas are appended scan by scan). */
-class IntLog {
-  data = new Int32Array(64);
-  length = 0;
-  push(v: number): void {
-    if (this.length === this.data.length) {
-      const next = new Int32Array(this.data.length * 2);
-      next.set(this.data);
-      this.data = next;
-    }
-    this.data[this.length++] = v;
-  }
-}
-
-class Chunk {
-  /** Scans firstScan .. firstScan + count - 1 (consecutive). */
+/** A key and the scans after it, up to the next key. */
+export class Segment<I extends KeyImage> {
+  /** Scans firstScan .. firstScan + count - 1. */
   count = 1;
-  readonly times: number[];
-  /** valEnd[k]: end (exclusive) of scan firstScan+k's value deltas in valIdx/valVal; k = 0 is the key frame (none). */
-  readonly valEnd = new IntLog();
-  readonly valIdx = new IntLog();
-  readonly valVal: Value[] = [];
-  readonly powEnd = new IntLog();
-  readonly powIdx = new IntLog();
-  readonly powVal = new IntLog();
+  /** Per scan (index = scan - firstScan): the session's time of the scan and the PLC's own time (what its timers saw). */
+  times: Float64Array;
+  plcTimes: Float64Array;
+  /** Offsets of the scans that read a changed input image, ascending, and those images. */
+  readonly inputAt: number[] = [];
+  readonly inputs: (readonly Value[])[] = [];
   bytes: number;
 
   constructor(
     readonly firstScan: number,
     timeMs: number,
-    readonly keyValues: Value[],
-    readonly keyPower: Int32Array,
+    plcTimeMs: number,
+    /** The complete state after firstScan. */
+    readonly image: I,
   ) {
-    this.times = [timeMs];
-    this.valEnd.push(0);
-    this.powEnd.push(0);
-    this.bytes = keyValues.length * VALUE_BYTES + keyPower.length * 4 + 64;
+    this.times = new Float64Array(16);
+    this.plcTimes = new Float64Array(16);
+    this.times[0] = timeMs;
+    this.plcTimes[0] = plcTimeMs;
+    this.bytes = image.bytes + 128;
   }
 
   get lastScan(): number {
     return this.firstScan + this.count - 1;
   }
 
-  get deltaEntries(): number {
-    return this.valIdx.length + this.powIdx.length;
+  /** Appends the next scan; returns the bytes it added. */
+  push(timeMs: number, plcTimeMs: number, inputs?: readonly Value[]): number {
+    const k = this.count++;
+    if (k === this.times.length) {
+      const times = new Float64Array(k * 2);
+      times.set(this.times);
+      this.times = times;
+      const plc = new Float64Array(k * 2);
+      plc.set(this.plcTimes);
+      this.plcTimes = plc;
+    }
+    this.times[k] = timeMs;
+    this.plcTimes[k] = plcTimeMs;
+    let added = SCAN_BYTES;
+    if (inputs) {
+      this.inputAt.push(k);
+      this.inputs.push(inputs);
+      added += INPUTS_BYTES + inputs.length * VALUE_BYTES;
+    }
+    this.bytes += added;
+    return added;
   }
 
-  /** Writes the state after scan `scan` (within this chunk) into values/power. */
-  stateAt(scan: number, values: Value[], power: Int32Array): void {
-    for (let i = 0; i < this.keyValues.length; i++) values[i] = this.keyValues[i]!;
-    power.set(this.keyPower);
+  /** Index in inputAt of the first input image recorded at or after `scan`. */
+  inputIndex(scan: number): number {
     const k = scan - this.firstScan;
-    const vEnd = this.valEnd.data[k]!;
-    const vi = this.valIdx.data;
-    for (let j = 0; j < vEnd; j++) values[vi[j]!] = this.valVal[j]!;
-    const pEnd = this.powEnd.data[k]!;
-    const pi = this.powIdx.data;
-    const pv = this.powVal.data;
-    for (let j = 0; j < pEnd; j++) power[pi[j]!] = pv[j]!;
+    const at = this.inputAt;
+    let lo = 0;
+    let hi = at.length;
+    while (lo < hi) {
+      const mid = (lo + hi) >> 1;
+      if (at[mid]! < k) lo = mid + 1;
+      else hi = mid;
+    }
+    return lo;
   }
 }
 
-export class ScanHistory {
+export class ScanHistory<I extends KeyImage = KeyImage> {
   readonly maxScans: number;
   readonly budgetBytes: number;
   readonly keyEvery: number;
-  private chunks: Chunk[] = [];
-  /** The state after the last recorded scan. */
-  private readonly cur: Value[];
-  private readonly curPower: Int32Array;
+  readonly keyReplayMs: number;
+  private segs: Segment<I>[] = [];
   private totalBytes = 0;
-  /** First scan that may be seeked (older scans of the first chunk are beyond maxScans). */
-  private floor = 0;
+  /** Set when one segment alone is over the budget: only scans from here on can be seeked. */
+  private overBudgetFloor = -Infinity;
 
-  constructor(
-    readonly valueCount: number,
-    readonly powerCount: number,
-    opts: HistoryOptions = {},
-  ) {
+  constructor(opts: HistoryOptions = {}) {
     this.maxScans = Math.max(1, Math.floor(opts.maxScans ?? DEFAULT_HISTORY_SCANS));
     this.budgetBytes = Math.max(1024, opts.budgetBytes ?? DEFAULT_HISTORY_BUDGET);
-    this.keyEvery = Math.max(2, Math.floor(opts.keyEvery ?? 256));
-    this.cur = new Array<Value>(valueCount).fill(false);
-    this.curPower = new Int32Array(powerCount);
+    this.keyEvery = Math.max(2, Math.floor(opts.keyEvery ?? DEFAULT_KEY_EVERY));
+    this.keyReplayMs = Math.max(0, opts.keyReplayMs ?? DEFAULT_KEY_REPLAY_MS);
+  }
+
+  /** The segment being recorded into, undefined when nothing is recorded. */
+  get open(): Segment<I> | undefined {
+    return this.segs[this.segs.length - 1];
   }
 
   /** First and last scan that can be seeked, undefined when nothing is recorded. */
   get first(): number | undefined {
-    return this.chunks.length ? Math.max(this.floor, this.chunks[0]!.firstScan) : undefined;
+    const first = this.segs[0];
+    if (!first) return undefined;
+    return Math.max(first.firstScan, this.open!.lastScan - this.maxScans + 1, this.overBudgetFloor);
   }
   get last(): number | undefined {
-    return this.chunks.length ? this.chunks[this.chunks.length - 1]!.lastScan : undefined;
+    return this.open?.lastScan;
   }
   /** Scans that can be seeked. */
   get count(): number {
@@ -135,214 +145,85 @@ export class ScanHistory {
   get bytes(): number {
     return this.totalBytes;
   }
-  get chunkCount(): number {
-    return this.chunks.length;
+  get segmentCount(): number {
+    return this.segs.length;
   }
 
   clear(): void {
-    this.chunks = [];
+    this.segs = [];
     this.totalBytes = 0;
-    this.floor = 0;
+    this.overBudgetFloor = -Infinity;
   }
 
   /**
-   * Records the state after scan `scan`: `values` aligned with the names, `power` the packed words and
-   * executed flags. A scan that does not follow the last one (a restart) starts the history over.
+   * Starts a segment with scan `scan` and the complete state after it. A scan that does not follow
+   * the last recorded one (a restart) starts the history over.
    */
-  record(scan: number, timeMs: number, values: ArrayLike<Value>, power: ArrayLike<number>): void {
-    const last = this.chunks[this.chunks.length - 1];
-    if (!last || scan !== last.lastScan + 1 || last.count >= this.keyEvery || last.deltaEntries > 4 * (this.valueCount + this.powerCount) + 64) {
-      if (last && scan !== last.lastScan + 1) this.clear();
-      this.keyFrame(scan, timeMs, values, power);
-    } else {
-      this.delta(last, timeMs, values, power);
-    }
+  key(scan: number, timeMs: number, plcTimeMs: number, image: I): void {
+    const open = this.open;
+    if (open && scan !== open.lastScan + 1) this.clear();
+    const seg = new Segment(scan, timeMs, plcTimeMs, image);
+    this.segs.push(seg);
+    this.totalBytes += seg.bytes;
     this.evict();
   }
 
-  private keyFrame(scan: number, timeMs: number, values: ArrayLike<Value>, power: ArrayLike<number>): void {
-    const cur = this.cur;
-    for (let i = 0; i < cur.length; i++) cur[i] = values[i]!;
-    for (let i = 0; i < this.curPower.length; i++) this.curPower[i] = power[i]!;
-    const chunk = new Chunk(scan, timeMs, cur.slice(), this.curPower.slice());
-    this.chunks.push(chunk);
-    this.totalBytes += chunk.bytes;
+  /**
+   * Records scan `scan` after the last one: its times and, when it read a changed input image, that
+   * image. Call key() instead for the first scan, after a gap, and after any other change.
+   */
+  scan(timeMs: number, plcTimeMs: number, inputs?: readonly Value[]): void {
+    this.totalBytes += this.open!.push(timeMs, plcTimeMs, inputs);
+    if (this.totalBytes > this.budgetBytes) this.evict();
   }
 
-  private delta(chunk: Chunk, timeMs: number, values: ArrayLike<Value>, power: ArrayLike<number>): void {
-    const cur = this.cur;
-    let entries = 0;
-    for (let i = 0; i < cur.length; i++) {
-      const v = values[i]!;
-      if (v !== cur[i]) {
-        cur[i] = v;
-        chunk.valIdx.push(i);
-        chunk.valVal.push(v);
-        entries++;
-      }
-    }
-    const cp = this.curPower;
-    for (let i = 0; i < cp.length; i++) {
-      const w = power[i]!;
-      if (w !== cp[i]) {
-        cp[i] = w;
-        chunk.powIdx.push(i);
-        chunk.powVal.push(w);
-        entries++;
-      }
-    }
-    chunk.valEnd.push(chunk.valIdx.length);
-    chunk.powEnd.push(chunk.powIdx.length);
-    chunk.times.push(timeMs);
-    chunk.count++;
-    const added = entries * DELTA_BYTES + 16;
-    chunk.bytes += added;
-    this.totalBytes += added;
-  }
-
-  /** Drops the oldest chunks while over budget, and hides scans beyond maxScans. */
+  /** Drops the oldest segments while over budget or wholly older than maxScans. */
   private evict(): void {
-    while (this.chunks.length > 1 && this.totalBytes > this.budgetBytes) this.dropOldest();
-    const last = this.last!;
-    this.floor = last - this.maxScans + 1;
-    while (this.chunks.length > 1 && this.chunks[0]!.lastScan < this.floor) this.dropOldest();
-    if (this.totalBytes > this.budgetBytes) this.floor = Math.max(this.floor, last); // one chunk over budget: keep the last scan only
+    while (this.segs.length > 1 && this.totalBytes > this.budgetBytes) this.dropOldest();
+    const floor = this.open!.lastScan - this.maxScans + 1;
+    while (this.segs.length > 1 && this.segs[0]!.lastScan < floor) this.dropOldest();
+    // One segment over budget on its own: keep its last scan only (seeking it replays the segment).
+    if (this.totalBytes > this.budgetBytes) this.overBudgetFloor = this.open!.lastScan;
   }
 
   private dropOldest(): void {
-    const c = this.chunks.shift()!;
-    this.totalBytes -= c.bytes;
+    const seg = this.segs.shift()!;
+    this.totalBytes -= seg.bytes;
   }
 
-  private chunkOf(scan: number): Chunk | undefined {
+  /** The segment holding `scan`, when it can be seeked. */
+  segmentOf(scan: number): Segment<I> | undefined {
     const first = this.first;
     if (first === undefined || scan < first || scan > this.last!) return undefined;
+    const segs = this.segs;
     let lo = 0;
-    let hi = this.chunks.length - 1;
+    let hi = segs.length - 1;
     while (lo < hi) {
       const mid = (lo + hi + 1) >> 1;
-      if (this.chunks[mid]!.firstScan <= scan) lo = mid;
+      if (segs[mid]!.firstScan <= scan) lo = mid;
       else hi = mid - 1;
     }
-    return this.chunks[lo];
+    return segs[lo];
+  }
+
+  /** The segment before / after `seg` (undefined at either end). */
+  previous(seg: Segment<I>): Segment<I> | undefined {
+    const i = this.segs.indexOf(seg);
+    return i > 0 ? this.segs[i - 1] : undefined;
+  }
+  next(seg: Segment<I>): Segment<I> | undefined {
+    const i = this.segs.indexOf(seg);
+    return i >= 0 ? this.segs[i + 1] : undefined;
   }
 
   /** True when the scan can be seeked. */
   has(scan: number): boolean {
-    return this.chunkOf(scan) !== undefined;
+    return this.segmentOf(scan) !== undefined;
   }
 
-  /** The state after `scan`, exactly as recorded; undefined when it is not (or no longer) recorded. */
-  seek(scan: number): HistoryState | undefined {
-    const chunk = this.chunkOf(scan);
-    if (!chunk) return undefined;
-    const values = new Array<Value>(this.valueCount);
-    const power = new Int32Array(this.powerCount);
-    chunk.stateAt(scan, values, power);
-    return { scan, timeMs: chunk.times[scan - chunk.firstScan]!, values, power };
-  }
-
+  /** The session's time of a recorded scan. */
   timeOf(scan: number): number | undefined {
-    const chunk = this.chunkOf(scan);
-    return chunk ? chunk.times[scan - chunk.firstScan] : undefined;
-  }
-
-  /** Value `index` after `scan`. */
-  valueAt(scan: number, index: number): Value | undefined {
-    const chunk = this.chunkOf(scan);
-    if (!chunk) return undefined;
-    let v = chunk.keyValues[index]!;
-    const end = chunk.valEnd.data[scan - chunk.firstScan]!;
-    const idx = chunk.valIdx.data;
-    for (let j = 0; j < end; j++) if (idx[j] === index) v = chunk.valVal[j]!;
-    return v;
-  }
-
-  /**
-   * The scan at which value `index` last changed at or before `scan` (its value after that scan
-   * differs from the scan before); undefined when it did not change in the recorded range.
-   */
-  lastChange(index: number, scan: number): number | undefined {
-    const target = this.valueAt(scan, index);
-    if (target === undefined) return undefined;
-    const first = this.first!;
-    for (let s = scan; s > first; ) {
-      const chunk = this.chunkOf(s)!;
-      // Deltas of this chunk, newest first, within (chunk.firstScan, s].
-      const k = s - chunk.firstScan;
-      const idx = chunk.valIdx.data;
-      const ends = chunk.valEnd.data;
-      for (let step = k; step >= 1; step--) {
-        if (chunk.firstScan + step <= first) return undefined;
-        for (let j = ends[step - 1]!; j < ends[step]!; j++) if (idx[j] === index) return chunk.firstScan + step;
-      }
-      // The key frame scan itself: compare with the scan before it.
-      const atKey = chunk.firstScan;
-      if (atKey <= first) return undefined;
-      if (this.valueAt(atKey - 1, index) !== chunk.keyValues[index]) return atKey;
-      s = atKey - 1;
-    }
-    return undefined;
-  }
-
-  /** The first scan after `scan` (or before, with direction -1) where value `index` changes. */
-  nextChange(index: number, scan: number, direction: 1 | -1): number | undefined {
-    if (direction === -1) {
-      const at = this.lastChange(index, scan);
-      if (at === undefined) return undefined;
-      return at < scan ? at : this.lastChange(index, scan - 1);
-    }
-    let prev = this.valueAt(scan, index);
-    if (prev === undefined) return undefined;
-    const last = this.last!;
-    for (let s = scan + 1; s <= last; ) {
-      const chunk = this.chunkOf(s)!;
-      const k0 = s - chunk.firstScan;
-      if (k0 === 0) {
-        const v = chunk.keyValues[index]!;
-        if (v !== prev) return s;
-        prev = v;
-      }
-      const idx = chunk.valIdx.data;
-      const ends = chunk.valEnd.data;
-      for (let step = Math.max(1, k0); step < chunk.count; step++) {
-        for (let j = ends[step - 1]!; j < ends[step]!; j++) if (idx[j] === index && chunk.valVal[j] !== prev) return chunk.firstScan + step;
-      }
-      s = chunk.lastScan + 1;
-    }
-    return undefined;
-  }
-
-  /**
-   * Walks scans from `from` (inclusive) forwards (or backwards) and returns the first for which
-   * `test(values)` holds; the values array is reused between calls (read it, do not keep it).
-   */
-  find(from: number, direction: 1 | -1, test: (values: readonly Value[], scan: number) => boolean): number | undefined {
-    const first = this.first;
-    if (first === undefined) return undefined;
-    const last = this.last!;
-    const values = new Array<Value>(this.valueCount);
-    const power = new Int32Array(this.powerCount);
-    if (direction === -1) {
-      for (let s = Math.min(from, last); s >= first; s--) {
-        this.chunkOf(s)!.stateAt(s, values, power);
-        if (test(values, s)) return s;
-      }
-      return undefined;
-    }
-    let s = Math.max(from, first);
-    while (s <= last) {
-      const chunk = this.chunkOf(s)!;
-      chunk.stateAt(s, values, power);
-      if (test(values, s)) return s;
-      const idx = chunk.valIdx.data;
-      const ends = chunk.valEnd.data;
-      for (let step = s - chunk.firstScan + 1; step < chunk.count; step++) {
-        for (let j = ends[step - 1]!; j < ends[step]!; j++) values[idx[j]!] = chunk.valVal[j]!;
-        if (test(values, chunk.firstScan + step)) return chunk.firstScan + step;
-      }
-      s = chunk.lastScan + 1;
-    }
-    return undefined;
+    const seg = this.segmentOf(scan);
+    return seg ? seg.times[scan - seg.firstScan] : undefined;
   }
 }

@@ -1,7 +1,9 @@
-// Records every completed scan of the running PLC into a ScanHistory (values of every layout name,
-// FB pins included, and the packed power words with each network's executed flag), and reads a
-// recorded scan back as a frame for the UI, a ScanView for "Why?", a trace CSV or a scenario.
-import type { Plc, PlcProbe } from '../engine/api';
+// Records every completed scan of the running PLC into a ScanHistory — its times, the input image
+// when it changed, and now and then the PLC's complete state (a key) — and rebuilds a recorded scan by
+// replay (src/sim/replay.ts) as a frame for the UI, a ScanView for "Why?", a trace CSV or a scenario.
+// Recording costs a few counters and two stored times per scan; keys are spaced so that saving them
+// stays a small share of scan time while a seek replays at most a few thousand scans.
+import type { Plc, PlcImage, PlcProbe } from '../engine/api';
 import { explain, netOn, type Explanation, type ExplainTarget, type ScanView } from '../engine/explain';
 import type { CompiledProgram } from '../engine/plc';
 import { csvValue } from '../engine/values/literals';
@@ -11,16 +13,28 @@ import { compileCondition } from './condition';
 import { csvRow } from './csv';
 import { packNetworks } from './frames';
 import { ScanHistory, type HistoryOptions } from './history';
+import { ChangeIndex, sameValue } from './historyChanges';
 import type { HistoryView, SimLayout } from './protocol';
+import { Replayer } from './replay';
+
+/** Periodic keys wait until the scans since the last key took this many times what saving one takes ... */
+const SAVE_SHARE = 20;
+/** ... but never longer than this many times keyEvery scans. */
+const MAX_KEY_SPACING = 4;
 
 export class HistoryRecorder {
-  readonly history: ScanHistory;
+  readonly history: ScanHistory<PlcImage>;
   private readonly probe: PlcProbe;
-  private readonly sample: (out: Value[]) => void;
-  private readonly values: Value[];
-  private readonly wordCount: number;
-  private readonly scratch: Int32Array;
+  private readonly replayer: Replayer;
+  private readonly changes: ChangeIndex;
   private readonly index = new Map<string, number>();
+  private readonly names: readonly string[];
+  /** Outside-change counters (PlcProbe.changes) as of the last recorded scan. */
+  private seenInputs = -1;
+  private seenState = -1;
+  /** Execution time of the scans since the last key, and the least a key took to save (ms; the first ones run before the JIT has optimised saving, and a garbage collection can make any slow). */
+  private execSinceKey = 0;
+  private saveMs = Infinity;
 
   constructor(
     private readonly plc: Plc,
@@ -30,13 +44,11 @@ export class HistoryRecorder {
     opts: HistoryOptions,
   ) {
     this.probe = plc.probe!();
-    this.sample = this.probe.sampler(layout.variables.map((v) => v.name));
-    this.values = new Array<Value>(layout.variables.length).fill(false);
-    layout.variables.forEach((v, i) => this.index.set(v.name.toUpperCase(), i));
-    this.wordCount = this.probe.power.length;
-    const networks = this.probe.ranIn.length;
-    this.scratch = new Int32Array(this.wordCount + networks);
-    this.history = new ScanHistory(layout.variables.length, this.scratch.length, opts);
+    this.names = layout.variables.map((v) => v.name);
+    this.names.forEach((name, i) => this.index.set(name.toUpperCase(), i));
+    this.history = new ScanHistory<PlcImage>(opts);
+    this.replayer = new Replayer(program, this.history, this.names);
+    this.changes = new ChangeIndex(this.history, this.replayer, (i) => this.names[i]!);
   }
 
   /** A recorder when the PLC offers a probe (the real engine does). */
@@ -44,37 +56,78 @@ export class HistoryRecorder {
     return plc.probe && pou ? new HistoryRecorder(plc, layout, program as CompiledProgram, pou, opts) : undefined;
   }
 
-  /** After a completed scan: `scan` is the session's scan number. */
+  /** After a completed scan: `scan` is the session's scan number, `timeMs` the time it started at. */
   record(scan: number, timeMs: number): void {
-    const { scratch, probe, wordCount } = this;
-    scratch.set(probe.power);
-    const own = this.plc.scanCount;
-    const ranIn = probe.ranIn;
-    for (let n = 0; n < ranIn.length; n++) scratch[wordCount + n] = ranIn[n] === own ? 1 : 0;
-    this.sample(this.values);
-    this.history.record(scan, timeMs, this.values, scratch);
+    const h = this.history;
+    const probe = this.probe;
+    const counts = probe.changes;
+    const exec = (this.execSinceKey += probe.execMs);
+    const open = h.open;
+    if (
+      open === undefined ||
+      scan !== open.firstScan + open.count ||
+      counts[1] !== this.seenState ||
+      ((open.count >= h.keyEvery || exec >= h.keyReplayMs) && (exec >= SAVE_SHARE * this.saveMs || open.count >= MAX_KEY_SPACING * h.keyEvery))
+    ) {
+      this.key(scan, timeMs);
+    } else if (counts[0] !== this.seenInputs) {
+      this.seenInputs = counts[0]!;
+      h.scan(timeMs, this.plc.timeMs, probe.inputImage.slice());
+    } else {
+      h.scan(timeMs, this.plc.timeMs);
+    }
+  }
+
+  private key(scan: number, timeMs: number): void {
+    const t0 = performance.now();
+    const image = this.probe.save();
+    this.saveMs = Math.min(this.saveMs, performance.now() - t0);
+    const cleared = this.history.open !== undefined && scan !== this.history.last! + 1;
+    this.history.key(scan, timeMs, this.plc.timeMs, image);
+    if (cleared) this.forget();
+    this.seenInputs = this.probe.changes[0]!;
+    this.seenState = this.probe.changes[1]!;
+    this.execSinceKey = 0;
+  }
+
+  /** Starts the history over (a cold restart). */
+  clear(): void {
+    this.history.clear();
+    this.forget();
+  }
+
+  private forget(): void {
+    this.replayer.reset();
+    this.changes.clear();
   }
 
   indexOf(name: string): number | undefined {
     return this.index.get(name.trim().toUpperCase());
   }
 
+  /** The state after a recorded scan, rebuilt. */
+  seek(scan: number) {
+    return this.replayer.state(scan);
+  }
+
   /** The recorded scan as the UI draws it: power bytes by layout and values. */
   view(scan: number): HistoryView | undefined {
-    const state = this.history.seek(scan);
+    const state = this.replayer.state(scan);
     if (!state) return undefined;
-    const executed = Uint8Array.from(state.power.subarray(this.wordCount));
-    const networks = this.probe.decode(state.power.subarray(0, this.wordCount), executed);
+    const words = this.probe.power.length;
+    const executed = Uint8Array.from(state.power.subarray(words));
+    const networks = this.probe.decode(state.power.subarray(0, words), executed);
     const packed = packNetworks(networks, this.layout);
     return { scan, timeMs: state.timeMs, ...packed, values: state.values };
   }
 
   /** The recorded scan as "Why?" reads it. */
   scanView(scan: number, forced?: ReadonlySet<string>): ScanView | undefined {
-    const state = this.history.seek(scan);
+    const state = this.replayer.state(scan);
     if (!state) return undefined;
-    const { program, wordCount } = this;
+    const { program } = this;
     const words = this.probe.words;
+    const wordCount = this.probe.power.length;
     const ran = (n: number) => state.power[wordCount + n] === 1;
     return {
       scan,
@@ -87,7 +140,7 @@ export class HistoryRecorder {
       net: (n, net) => netOn(program, words, state.power, ran(n), n, net),
       changedAt: (name) => {
         const i = this.indexOf(name);
-        return i === undefined ? undefined : this.history.lastChange(i, scan);
+        return i === undefined ? undefined : this.changes.lastChange(i, scan);
       },
       ...(forced ? { forced } : {}),
     };
@@ -102,12 +155,45 @@ export class HistoryRecorder {
   findChange(name: string, from: number, direction: 1 | -1): number | undefined {
     const i = this.indexOf(name);
     if (i === undefined) throw new Error(`"${name}" is not recorded`);
-    return this.history.nextChange(i, from, direction);
+    if (direction === 1) return this.changes.nextChange(i, from);
+    const at = this.changes.lastChange(i, from);
+    if (at === undefined) return undefined;
+    return at < from ? at : this.changes.lastChange(i, from - 1);
   }
 
   findCondition(expression: string, from: number, direction: 1 | -1): number | undefined {
-    const test = compileCondition(expression, (n) => this.indexOf(n));
-    return this.history.find(from + direction, direction, (values) => test(values));
+    const names: string[] = [];
+    const test = compileCondition(expression, (n) => {
+      const i = this.indexOf(n);
+      if (i === undefined) return undefined;
+      const name = this.names[i]!;
+      const at = names.indexOf(name);
+      return at >= 0 ? at : names.push(name) - 1;
+    });
+    const first = this.history.first;
+    if (first === undefined) return undefined;
+    const last = this.history.last!;
+    const values = new Array<Value>(names.length);
+    const sample = this.replayer.probe.sampler(names);
+    const holds = () => {
+      sample(values);
+      return test(values);
+    };
+    const start = from + direction;
+    if (direction === 1) return start > last ? undefined : this.replayer.walk(Math.max(start, first), last, holds);
+    // Backwards: segment by segment from the newest, the last scan where it holds in each.
+    for (let upTo = Math.min(start, last); upTo >= first; ) {
+      const seg = this.history.segmentOf(upTo)!;
+      const segFrom = Math.max(seg.firstScan, first);
+      let found: number | undefined;
+      this.replayer.walk(segFrom, upTo, (scan) => {
+        if (holds()) found = scan;
+        return false;
+      });
+      if (found !== undefined) return found;
+      upTo = segFrom - 1;
+    }
+    return undefined;
   }
 
   private range(from?: number, to?: number): [number, number] | undefined {
@@ -125,16 +211,25 @@ export class HistoryRecorder {
     });
   }
 
+  /** Replays the range, calling `visit` with the values of `cols` after each scan (the array is reused). */
+  private each(cols: readonly { name: string }[], range: [number, number], visit: (values: readonly Value[], scan: number) => void): void {
+    const values = new Array<Value>(cols.length);
+    const sample = this.replayer.probe.sampler(cols.map((c) => c.name));
+    this.replayer.walk(range[0], range[1], (scan) => {
+      sample(values);
+      visit(values, scan);
+      return false;
+    });
+  }
+
   /** The recorded range as a trace in the CLI's format: scan,time_ms,<names...> (BOOL 0/1, TIME in ms). */
   traceCsv(names: readonly string[], from?: number, to?: number): string {
     const cols = this.types(names);
     const lines = [csvRow(['scan', 'time_ms', ...cols.map((c) => c.name)])];
     const range = this.range(from, to);
     if (range)
-      this.history.find(range[0], 1, (values, scan) => {
-        if (scan > range[1]) return true;
-        lines.push(csvRow([String(scan), String(this.history.timeOf(scan)), ...cols.map((c) => csvValue(c.type, values[c.index]!))]));
-        return false;
+      this.each(cols, range, (values, scan) => {
+        lines.push(csvRow([String(scan), String(this.history.timeOf(scan)), ...cols.map((c, j) => csvValue(c.type, values[j]!))]));
       });
     return `${lines.join('\n')}\n`;
   }
@@ -150,16 +245,15 @@ export class HistoryRecorder {
     const head = [`# Recorded from scans ${range ? `${range[0]} to ${range[1]}` : '(none)'} of a simulation`, `# cycle: ${cycleMs}ms`];
     const lines = [csvRow(['scan', ...ins.map((c) => c.name), ...outs.map((c) => `expect ${c.name}`)])];
     if (range) {
+      const n = ins.length;
       let prev: Value[] | undefined;
-      this.history.find(range[0], 1, (values, scan) => {
-        if (scan > range[1]) return true;
+      this.each([...ins, ...outs], range, (values, scan) => {
         const k = scan - range[0] + 1;
-        const changedIn = ins.map((c) => !prev || prev[c.index] !== values[c.index]);
-        const changedOut = outs.some((c) => !prev || prev[c.index] !== values[c.index]);
+        const changedIn = ins.map((_, j) => !prev || !sameValue(prev[j]!, values[j]!));
+        const changedOut = outs.some((_, j) => !prev || !sameValue(prev[n + j]!, values[n + j]!));
         if (changedIn.some(Boolean) || changedOut || scan === range[1])
-          lines.push(csvRow([String(k), ...ins.map((c, j) => (changedIn[j] ? csvValue(c.type, values[c.index]!) : '')), ...outs.map((c) => csvValue(c.type, values[c.index]!))]));
+          lines.push(csvRow([String(k), ...ins.map((c, j) => (changedIn[j] ? csvValue(c.type, values[j]!) : '')), ...outs.map((c, j) => csvValue(c.type, values[n + j]!))]));
         prev = values.slice();
-        return false;
       });
     }
     return `${[...head, ...lines].join('\n')}\n`;

@@ -1,96 +1,78 @@
-// The scan history store: key frames and deltas, seeking any scan exactly, changes, budget eviction.
+// The scan history store: segments of a key and the scans after it (times, changed input images),
+// the seekable range, the depth and memory bounds (the oldest go first), a restart starting over.
+// Rebuilding scans from it by replay: tests/sim/replay.test.ts.
 import { describe, expect, it } from 'vitest';
 import { ScanHistory } from '../../src/sim/history';
-import type { Value } from '../../src/model/iecTypes';
 
-/** A made-up process: value 0 toggles every 7 scans, value 1 counts, value 2 is a bigint, power word 0 mirrors value 0. */
-function stateOf(scan: number): { values: Value[]; power: number[] } {
-  const on = Math.floor(scan / 7) % 2 === 1;
-  return { values: [on, scan * 10, BigInt(scan) * 3n, false], power: [on ? 5 : 0, 1] };
-}
+const key = (bytes = 100) => ({ bytes });
 
-function recordScans(h: ScanHistory, from: number, to: number, state = stateOf): void {
+/** Records scans from..to, a key every `every` scans, the times scan x 10 (PLC time scan x 10 - 5). */
+function recordScans(h: ScanHistory, from: number, to: number, every = 10, inputsAt: (s: number) => boolean = () => false): void {
   for (let s = from; s <= to; s++) {
-    const { values, power } = state(s);
-    h.record(s, (s - 1) * 10, values, power);
+    if (s === from || (s - from) % every === 0) h.key(s, s * 10, s * 10 - 5, key());
+    else h.scan(s * 10, s * 10 - 5, inputsAt(s) ? [s % 2 === 0, s] : undefined);
   }
 }
 
-describe('scan history', () => {
-  it('gives back every scan exactly as recorded, across key frames', () => {
-    const h = new ScanHistory(4, 2, { keyEvery: 16 });
-    recordScans(h, 1, 200);
-    expect([h.first, h.last, h.count]).toEqual([1, 200, 200]);
-    expect(h.chunkCount).toBe(13);
-    for (const s of [1, 2, 15, 16, 17, 33, 199, 200]) {
-      const got = h.seek(s)!;
-      expect(got.values).toEqual(stateOf(s).values);
-      expect([...got.power]).toEqual(stateOf(s).power);
-      expect(got.timeMs).toBe((s - 1) * 10);
-    }
-    expect(h.seek(0)).toBeUndefined();
-    expect(h.seek(201)).toBeUndefined();
+describe('scan history store', () => {
+  it('finds the segment of any recorded scan with its key, times and input images', () => {
+    const h = new ScanHistory();
+    recordScans(h, 1, 95, 10, (s) => s % 7 === 0);
+    expect([h.first, h.last, h.count, h.segmentCount]).toEqual([1, 95, 95, 10]);
+    const seg = h.segmentOf(37)!;
+    expect([seg.firstScan, seg.lastScan]).toEqual([31, 40]);
+    expect(seg.times[37 - 31]).toBe(370);
+    expect(seg.plcTimes[37 - 31]).toBe(365);
+    expect(seg.inputAt.map((k) => seg.firstScan + k)).toEqual([35]);
+    expect(seg.inputs[0]).toEqual([false, 35]);
+    expect(seg.inputIndex(36)).toBe(1);
+    expect(h.timeOf(95)).toBe(950);
+    expect(h.segmentOf(0)).toBeUndefined();
+    expect(h.segmentOf(96)).toBeUndefined();
+    expect(h.previous(seg)!.firstScan).toBe(21);
+    expect(h.next(seg)!.firstScan).toBe(41);
+    expect(h.next(h.open!)).toBeUndefined();
   });
 
-  it('stores only changes between key frames', () => {
-    const still = new ScanHistory(4, 2, { keyEvery: 1000 });
-    recordScans(still, 1, 500, () => ({ values: [true, 1, 2n, false], power: [3, 1] }));
-    const busy = new ScanHistory(4, 2, { keyEvery: 1000 });
-    recordScans(busy, 1, 500);
-    expect(still.bytes).toBeLessThan(500 * 20);
-    expect(busy.bytes).toBeGreaterThan(still.bytes + 500 * 12 * 2);
-  });
-
-  it('finds the previous and next change of a value and when it last changed', () => {
-    const h = new ScanHistory(4, 2, { keyEvery: 5 });
-    recordScans(h, 1, 60);
-    // value 0 is TRUE on scans 7..13, 21..27 ...
-    expect(h.lastChange(0, 10)).toBe(7);
-    expect(h.lastChange(0, 7)).toBe(7);
-    expect(h.lastChange(0, 6)).toBeUndefined();
-    expect(h.nextChange(0, 7, 1)).toBe(14);
-    expect(h.nextChange(0, 14, -1)).toBe(7);
-    expect(h.nextChange(0, 15, -1)).toBe(14);
-    expect(h.nextChange(3, 1, 1)).toBeUndefined();
-    expect(h.valueAt(22, 0)).toBe(true);
-    expect(h.valueAt(22, 2)).toBe(66n);
-  });
-
-  it('finds the first scan where a condition holds, forwards and backwards', () => {
-    const h = new ScanHistory(4, 2, { keyEvery: 8 });
-    recordScans(h, 1, 100);
-    expect(h.find(1, 1, (v) => v[0] === true && (v[1] as number) > 150)).toBe(21);
-    expect(h.find(100, -1, (v) => v[0] === true)).toBe(97);
-    expect(h.find(1, 1, (v) => v[3] === true)).toBeUndefined();
+  it('costs a few bytes per scan between keys, more for a changed input image', () => {
+    const still = new ScanHistory();
+    recordScans(still, 1, 1000, 1000);
+    expect(still.bytes).toBeLessThan(100 + 128 + 1000 * 16);
+    const busy = new ScanHistory();
+    recordScans(busy, 1, 1000, 1000, () => true);
+    expect(busy.bytes).toBeGreaterThan(still.bytes + 1000 * 32);
   });
 
   it('keeps at most maxScans scans, the oldest dropped first', () => {
-    const h = new ScanHistory(4, 2, { keyEvery: 10, maxScans: 50 });
+    const h = new ScanHistory({ maxScans: 50 });
     recordScans(h, 1, 1000);
     expect([h.first, h.last, h.count]).toEqual([951, 1000, 50]);
-    expect(h.seek(950)).toBeUndefined();
-    expect(h.seek(951)!.values).toEqual(stateOf(951).values);
-    expect(h.chunkCount).toBeLessThanOrEqual(7);
+    expect(h.has(950)).toBe(false);
+    expect(h.has(951)).toBe(true);
+    // The segment holding the first scan is kept whole (its key is needed to rebuild it).
+    expect(h.segmentOf(951)!.firstScan).toBe(951);
+    expect(h.segmentCount).toBeLessThanOrEqual(6);
   });
 
-  it('stays under its memory budget by dropping the oldest scans', () => {
-    const h = new ScanHistory(100, 10, { keyEvery: 64, budgetBytes: 64 * 1024 });
-    const values = new Array<Value>(100).fill(0);
-    for (let s = 1; s <= 5000; s++) {
-      values[s % 100] = s;
-      h.record(s, s, values, [s & 0xff, 0, 0, 0, 0, 0, 0, 0, 0, 0]);
+  it('stays under its memory budget by dropping the oldest segments', () => {
+    const h = new ScanHistory({ budgetBytes: 64 * 1024 });
+    for (let s = 1; s <= 20_000; s++) {
+      if (s % 100 === 1) h.key(s, s, s, key(1000));
+      else h.scan(s, s, [true, s]);
     }
     expect(h.bytes).toBeLessThanOrEqual(64 * 1024);
-    expect(h.last).toBe(5000);
-    expect(h.count).toBeGreaterThan(1000);
-    expect(h.count).toBeLessThan(1300);
-    expect(h.seek(h.first!)!.values[h.first! % 100]).toBe(h.first);
+    expect(h.last).toBe(20_000);
+    expect(h.count).toBeGreaterThan(500);
+    expect(h.count).toBeLessThan(1000);
+    expect(h.segmentOf(h.first!)!.firstScan).toBe(h.first);
   });
 
   it('starts over when the scan numbers restart (cold restart)', () => {
-    const h = new ScanHistory(4, 2);
+    const h = new ScanHistory();
     recordScans(h, 1, 30);
     recordScans(h, 1, 5);
-    expect([h.first, h.last]).toEqual([1, 5]);
+    expect([h.first, h.last, h.segmentCount]).toEqual([1, 5, 1]);
+    h.clear();
+    expect([h.first, h.last, h.count, h.bytes]).toEqual([undefined, undefined, 0, 0]);
   });
 });

@@ -30,6 +30,9 @@ import type { CompiledProgram } from '../compile/program';
 import type { Access, VarSymbol } from '../compile/symbols';
 import { coerce, Memory } from './memory';
 import { exportMemory, importMemory, stateItemsOf } from './instanceState';
+import { imageBytes, restoreMemory, saveMemory, type MachineImage } from './machineImage';
+
+type Image = MachineImage<Value, readonly [VarSymbol, Value]>;
 
 /** Networks run per call of a dispatch function before the scan time is checked (watchdog). */
 const CHUNK = 1024;
@@ -99,6 +102,10 @@ export class ScanPlc implements Plc {
   private lastExecMs = 0;
   private clockOrigin = 0;
   private currentFault: Fault | undefined;
+  /** PlcProbe.changes: [0] input image written at a boundary, [1] any other change from outside. */
+  private readonly changes = new Int32Array(2);
+  /** The time of a scan being replayed (PlcProbe.replay), instead of the clock's. */
+  private replayAt: number | undefined;
 
   constructor(
     private readonly program: CompiledProgram,
@@ -188,7 +195,9 @@ export class ScanPlc implements Plc {
 
   private startScan(): void {
     this.count++;
-    this.time = this.opts.clock
+    this.time = this.replayAt !== undefined
+      ? this.replayAt
+      : this.opts.clock
       ? this.opts.clock.now() - this.clockOrigin
       : (this.count - 1) * this.opts.cycleMs;
     this.scanStart = now();
@@ -474,6 +483,7 @@ export class ScanPlc implements Plc {
   }
 
   clearFault(): void {
+    this.changes[1]!++;
     this.currentFault = undefined;
     this.cursor = -1;
     this.stepper = undefined;
@@ -495,7 +505,9 @@ export class ScanPlc implements Plc {
   write(name: string, value: Value): void {
     const a = this.access(name);
     const v = coerce(a.type, value, `"${name}"`);
-    if (a.kind === 'var' && a.v.location?.area === 'I') {
+    const input = a.kind === 'var' && a.v.location?.area === 'I';
+    this.changes[input && this.cursor === -1 ? 0 : 1]!++;
+    if (input) {
       this.inputImage[this.inputs.indexOf(a.v)] = v;
       return;
     }
@@ -513,6 +525,7 @@ export class ScanPlc implements Plc {
     const v = this.forceTarget(name);
     const val = coerce(v.type, value, `"${name}"`);
     const fresh = !this.forces.has(v);
+    this.changes[1]!++;
     this.forces.set(v, val);
     this.mem.store(v, val);
     if (fresh) this.redirectWriters(v, true);
@@ -520,10 +533,12 @@ export class ScanPlc implements Plc {
 
   unforce(name: string): void {
     const v = this.forceTarget(name);
+    this.changes[1]!++;
     if (this.forces.delete(v)) this.redirectWriters(v, false);
   }
 
   unforceAll(): void {
+    this.changes[1]!++;
     const vars = [...this.forces.keys()];
     this.forces.clear();
     for (const v of vars) this.redirectWriters(v, false);
@@ -546,6 +561,7 @@ export class ScanPlc implements Plc {
   }
 
   setInputs(values: Readonly<Record<string, Value>>): void {
+    this.changes[this.cursor === -1 ? 0 : 1]!++;
     for (const [loc, value] of Object.entries(values)) {
       const v = this.program.symbols.atLocation(loc, false);
       const index = v ? this.inputs.indexOf(v) : -1;
@@ -576,6 +592,7 @@ export class ScanPlc implements Plc {
   // ---- restarts ----
 
   private resetCommon(): void {
+    this.changes[1]!++;
     this.cursor = -1;
     this.stepper = undefined;
     this.frames = [];
@@ -616,11 +633,14 @@ export class ScanPlc implements Plc {
   }
 
   importState(state: PlcState): StateTransfer {
+    this.changes[1]!++;
     return importMemory(this.program, this.mem, state, this.nextScanTime());
   }
 
   probe(): PlcProbe {
     const { program, mem, words } = this;
+    // eslint-disable-next-line @typescript-eslint/no-this-alias -- the execMs getter reads the live field
+    const self = this;
     return {
       reader: (name) => {
         const a = this.access(name);
@@ -645,7 +665,63 @@ export class ScanPlc implements Plc {
         const ranIn = Int32Array.from(executed, (e) => (e ? 1 : -1));
         return networkPower(program, { scan: 1, power, words, ranIn });
       },
+      changes: this.changes,
+      inputImage: this.inputImage,
+      get execMs() {
+        return self.lastExecMs;
+      },
+      save: () => this.saveImage(),
+      restore: (image) => this.restoreImage(image as Image),
+      replay: (timeMs, inputs) => {
+        if (inputs) for (let i = 0; i < this.inputImage.length; i++) this.inputImage[i] = inputs[i]!;
+        this.replayAt = timeMs;
+        try {
+          this.runScans(1);
+        } finally {
+          this.replayAt = undefined;
+        }
+        return this.currentFault;
+      },
     };
+  }
+
+  /** The complete state at a scan boundary (PlcProbe.save). */
+  private saveImage(): Image {
+    const mem = saveMemory(this.mem);
+    const extra = this.power.length / 2 + this.ranIn.length / 2 + this.inputImage.length + this.outputImage.length + this.forces.size * 2;
+    return {
+      scan: this.count,
+      timeMs: this.time,
+      bytes: imageBytes(mem, extra),
+      mem,
+      power: this.power.slice(),
+      ranIn: this.ranIn.slice(),
+      inputs: this.inputImage.slice(),
+      outputs: this.outputImage.slice(),
+      forces: [...this.forces],
+    };
+  }
+
+  /** Takes back a saved state (PlcProbe.restore): memory, power, input and output images, forces, scan count and time. */
+  private restoreImage(image: Image): void {
+    this.clearFault();
+    restoreMemory(this.mem, image.mem);
+    this.power.set(image.power);
+    this.ranIn.set(image.ranIn);
+    image.inputs.forEach((v, i) => (this.inputImage[i] = v));
+    image.outputs.forEach((v, i) => (this.outputImage[i] = v));
+    const forced = new Map(image.forces);
+    for (const v of [...this.forces.keys()]) if (!forced.has(v)) {
+      this.forces.delete(v);
+      this.redirectWriters(v, false);
+    }
+    for (const [v, value] of forced) {
+      const fresh = !this.forces.has(v);
+      this.forces.set(v, value);
+      if (fresh) this.redirectWriters(v, true);
+    }
+    this.count = image.scan;
+    this.time = image.timeMs;
   }
 
   snapshot(opts: SnapshotOptions = {}): PowerSnapshot {
