@@ -26,7 +26,10 @@ import type { Value } from '../model/iecTypes';
 import type { Binding } from './mapping';
 import type { SimulationPorts } from './simulationLink';
 
-export type StepRequest = { readonly kind: 'scans'; readonly scans: number } | { readonly kind: 'network' };
+export type StepRequest =
+  | { readonly kind: 'scans'; readonly scans: number }
+  /** One network; `into`: a call stops before its body's first network (step into). */
+  | { readonly kind: 'network'; readonly into?: boolean };
 
 /** off: stepping does not touch the hardware (not asked yet, or no hardware); confirming: the question is open; stepping: confirmed. */
 export type SteppingPhase = 'off' | 'confirming' | 'stepping';

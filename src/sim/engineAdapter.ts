@@ -2,11 +2,13 @@
 import { compileProgram, createPlc } from '../engine/plc';
 import { parseValueText } from '../engine/values/literals';
 import { isElementaryType } from '../model/iecTypes';
+import { runOptions } from './runTarget';
 import type { SimEngine } from './session';
 
 export const realEngine: SimEngine = {
   compile(project) {
-    return compileProgram(project);
+    // What the project's tasks run (a configuration when they list several program instances).
+    return compileProgram(project, runOptions(project));
   },
   createPlc(program, options) {
     return createPlc(program as Parameters<typeof createPlc>[0], options);

@@ -1,10 +1,12 @@
 // What the UI needs to know about a loaded program: its networks (to align power bytes with the
 // document) and every readable name with its type (to format and parse values).
-import { blockSignature } from '../model/blocks';
+import type { InstanceInfo } from '../engine/api';
 import { findVariable } from '../model/factory';
 import { parseLocation } from '../model/iecTypes';
-import type { Pou, Project } from '../model/project';
-import type { SimLayout, SimVariable, VariableRole } from './protocol';
+import { blockLibrary } from '../model/library';
+import type { Pou, Project, Variable } from '../model/project';
+import type { SimLayout, SimVariable, SimView, VariableRole } from './protocol';
+import { programInstances, type ProgramInstance } from './runTarget';
 
 const roleOfLocation = (location: string | undefined): VariableRole => {
   const area = location ? parseLocation(location)?.area : undefined;
@@ -14,62 +16,121 @@ const roleOfLocation = (location: string | undefined): VariableRole => {
   return 'local';
 };
 
-/** Type and role of a readable name: a variable, or `Instance.PIN` of a function block instance. */
-export function describeName(project: Project, pou: Pou, name: string): SimVariable | undefined {
-  const declared = findVariable(project, pou, name);
-  if (declared) {
-    return {
-      name,
-      type: declared.type.toUpperCase(),
-      role: roleOfLocation(declared.location),
-      ...(declared.location ? { location: declared.location } : {}),
-    };
-  }
-  const dot = name.indexOf('.');
-  if (dot < 0) return undefined;
-  const instance = findVariable(project, pou, name.slice(0, dot));
-  const signature = instance ? blockSignature(instance.type) : undefined;
-  if (!signature || signature.kind !== 'fb') return undefined;
-  const pinName = name.slice(dot + 1).toUpperCase();
-  const pin = [...signature.inputs, ...signature.outputs].find((p) => p.name === pinName);
-  return pin ? { name, type: pin.type, role: 'pin' } : undefined;
+/** Type and role of a declared variable as a readable name. */
+function declaredName(name: string, declared: Variable, inBody: boolean): SimVariable {
+  return {
+    name,
+    type: declared.type.toUpperCase(),
+    // A variable of an FB instance or of a configuration's program instance is the instance's own
+    // memory (forceable, never bound to I/O by the instance's path).
+    role: inBody && !declared.location ? 'local' : roleOfLocation(declared.location),
+    ...(declared.location ? { location: declared.location } : {}),
+  };
 }
+
+/**
+ * Type and role of a readable name: a variable, `Instance.PIN` of a standard FB instance, a user FB
+ * instance's variable by path (`Motor1.Run`, `Line.Motor1.T1.ET`), or in a configuration a program
+ * instance's (`Prog1.Motor1.Run`). `pou` is the program the names are relative to.
+ */
+export function describeName(project: Project, pou: Pou, name: string): SimVariable | undefined {
+  const library = blockLibrary(project);
+  const parts = name.split('.');
+  let scope: Pou = pou;
+  let first = 0;
+  // A configuration: the first part may be a program instance (globals keep their names).
+  const program = parts.length > 1 ? programInstances(project).find((p) => sameName(p.instance, parts[0]!)) : undefined;
+  if (program && !findVariable(project, pou, parts[0]!)) {
+    const runs = findPou(project, program.pou);
+    if (!runs) return undefined;
+    scope = runs;
+    first = 1;
+  }
+  for (let i = first; i < parts.length; i++) {
+    const part = parts[i]!;
+    const declared = i === 0 || (i === first && scope === pou) ? findVariable(project, scope, part) : scope.variables.find((v) => sameName(v.name, part));
+    if (!declared) return undefined;
+    if (i === parts.length - 1) return declaredName(name, declared, i > 0);
+    const user = library.userPou(declared.type);
+    if (user && user.kind === 'FUNCTION_BLOCK' && project.pous.includes(user)) {
+      scope = user;
+      continue;
+    }
+    // A standard (or external) FB instance: its pins, by the block's signature.
+    const signature = library.signature(declared.type);
+    if (!signature || signature.kind !== 'fb' || i !== parts.length - 2) return undefined;
+    const pinName = parts[i + 1]!.toUpperCase();
+    const pin = [...signature.inputs, ...signature.outputs].find((p) => p.name.toUpperCase() === pinName);
+    return pin ? { name, type: pin.type, role: 'pin' } : undefined;
+  }
+  return undefined;
+}
+
+const sameName = (a: string, b: string) => a.toUpperCase() === b.toUpperCase();
 
 export function findPou(project: Project, name: string): Pou | undefined {
   const key = name.toUpperCase();
   return project.pous.find((p) => p.name.toUpperCase() === key);
 }
 
-/** Layout of a compiled program; `names` is the engine's list of readable names in declaration order. */
-export function buildLayout(project: Project, pouName: string, names: readonly string[], cycleMs: number): SimLayout {
-  const pou = findPou(project, pouName);
-  if (!pou) throw new Error(`the program "${pouName}" is not in the project`);
+/** Where each network of a POU starts in a frame's packed power, found by element id. */
+function networkFields(pou: Pou | undefined): Pick<SimLayout, 'networkIds' | 'elementOffsets' | 'vlinkOffsets' | 'elementIds' | 'vlinkKeys'> {
   const elementOffsets = [0];
   const vlinkOffsets = [0];
   const elementIds: string[] = [];
   const vlinkKeys: string[] = [];
-  for (const network of pou.networks) {
+  const networks = pou?.networks ?? [];
+  for (const network of networks) {
     for (const el of network.elements) elementIds.push(el.id);
     for (const v of network.vlinks) vlinkKeys.push(`${v.row}|${v.boundary}`);
     elementOffsets.push(elementOffsets[elementOffsets.length - 1]! + network.elements.length);
     vlinkOffsets.push(vlinkOffsets[vlinkOffsets.length - 1]! + network.vlinks.length);
   }
+  return { networkIds: networks.map((n) => n.id), elementOffsets, vlinkOffsets, elementIds, vlinkKeys };
+}
+
+/** What a loaded program offers to monitor besides its own networks. */
+export interface LayoutExtras {
+  /** User FB instances (plc.instances()). */
+  readonly instances?: readonly InstanceInfo[];
+  /** A configuration's program instances, in task order. */
+  readonly programs?: readonly ProgramInstance[];
+}
+
+/** Layout of a compiled program; `names` is the engine's list of readable names in declaration order. */
+export function buildLayout(project: Project, pouName: string, names: readonly string[], cycleMs: number, extras: LayoutExtras = {}): SimLayout {
+  const pou = findPou(project, pouName);
+  if (!pou) throw new Error(`the program "${pouName}" is not in the project`);
   const variables: SimVariable[] = [];
   for (const name of names) {
     const described = describeName(project, pou, name);
     // Names the engine can read but whose type the document cannot tell are not shown (none expected).
     if (described && described.type !== 'ANY') variables.push(described);
   }
+  const programs = extras.programs ?? [];
+  const first = programs[0];
   return {
     pou: pou.name,
-    networkIds: pou.networks.map((n) => n.id),
-    elementOffsets,
-    vlinkOffsets,
-    elementIds,
-    vlinkKeys,
+    view: { pou: pou.name, ...(first ? { instance: first.instance } : {}) },
+    ...(extras.instances ? { instances: extras.instances } : {}),
+    ...(programs.length > 0 ? { programs } : {}),
+    ...networkFields(pou),
     variables,
     cycleMs,
   };
+}
+
+/** The layout with its network fields describing another body (the view): an FB instance's, a function's, another program instance's. */
+export function withView(project: Project, layout: SimLayout, view: SimView): SimLayout {
+  const pou = findPou(project, view.pou);
+  return { ...layout, view: { pou: pou?.name ?? view.pou, ...(view.instance ? { instance: view.instance } : {}) }, ...networkFields(pou) };
+}
+
+/** True when a view is the program's own (first) body: the one the scan history and "Why?" describe. */
+export function isProgramView(layout: SimLayout, view: SimView | undefined = layout.view): boolean {
+  if (!view) return true;
+  const first = layout.programs?.[0]?.instance;
+  return sameName(view.pou, layout.pou) && sameName(view.instance ?? '', first ?? '');
 }
 
 /**
@@ -82,17 +143,35 @@ export function programFingerprint(project: Project): string {
   );
 }
 
-/** Every name a user can watch in a POU, from the document alone: variables, then `Instance.PIN` of FB instances. */
+/** Deepest nesting of user FB instances listed by readableNames (recursion is refused by the compiler anyway). */
+const MAX_NESTING = 8;
+
+/**
+ * Every name a user can watch in a POU, from the document alone: variables, `Instance.PIN` of
+ * standard FB instances, and the variables of user FB instances by path (`Motor1.Run`, `Motor1.T1.ET`).
+ */
 export function readableNames(project: Project, pou: Pou): SimVariable[] {
+  const library = blockLibrary(project);
   const out: SimVariable[] = [];
-  // A VAR_EXTERNAL names a global, listed once with the globals.
-  for (const v of [...pou.variables.filter((x) => x.varClass !== 'external'), ...project.globals]) {
-    const signature = blockSignature(v.type);
-    if (signature?.kind === 'fb') {
-      for (const pin of [...signature.inputs, ...signature.outputs]) out.push({ name: `${v.name}.${pin.name}`, type: pin.type, role: 'pin' });
-    } else {
-      out.push({ name: v.name, type: v.type.toUpperCase(), role: roleOfLocation(v.location), ...(v.location ? { location: v.location } : {}) });
+  const add = (prefix: string, variables: readonly Variable[], depth: number) => {
+    for (const v of variables) {
+      const name = `${prefix}${v.name}`;
+      const user = library.userPou(v.type);
+      if (user && user.kind === 'FUNCTION_BLOCK' && project.pous.includes(user)) {
+        if (depth < MAX_NESTING) add(`${name}.`, user.variables.filter((x) => x.varClass !== 'external' && x.varClass !== 'temp'), depth + 1);
+        continue;
+      }
+      const signature = library.signature(v.type);
+      if (signature?.kind === 'fb') {
+        for (const pin of [...signature.inputs, ...signature.outputs]) out.push({ name: `${name}.${pin.name}`, type: pin.type, role: 'pin' });
+      } else if (depth > 0) {
+        out.push(declaredName(name, v, true));
+      } else {
+        out.push(declaredName(name, v, false));
+      }
     }
-  }
+  };
+  // A VAR_EXTERNAL names a global, listed once with the globals.
+  add('', [...pou.variables.filter((x) => x.varClass !== 'external'), ...project.globals], 0);
   return out;
 }

@@ -5,10 +5,11 @@
 // Gateway seam (issue 6): a bridge feeds each scan's input image with `setInputs` (IEC locations,
 // applied at the next input read, exactly like a PLC's input card) and receives the output image
 // with `outputs` events after every scan that changed it, once it sent `subscribeOutputs`.
-import type { Diagnostic, Fault } from '../engine/api';
+import type { Diagnostic, Fault, InstanceInfo, StepFrame } from '../engine/api';
 import type { Value } from '../model/iecTypes';
 import type { Project, Scenario } from '../model/project';
 import type { ExplainTarget, Explanation } from '../engine/explain';
+import type { ProgramInstance } from './runTarget';
 import type { ScenarioResult } from './scenario';
 
 export const SIM_PROTOCOL_VERSION = 1;
@@ -34,15 +35,24 @@ export type HostMessage =
   | ({ readonly type: 'run' } & WithProject)
   | { readonly type: 'pause' }
   | ({ readonly type: 'step'; readonly scans: number } & WithProject)
-  | ({ readonly type: 'stepNetwork' } & WithProject)
+  /**
+   * One network. Step over (default): the next network runs whole, calls included (inside a body:
+   * the body's network). Step into (`into`): a call's body stops before each of its networks.
+   */
+  | ({ readonly type: 'stepNetwork'; readonly into?: boolean } & WithProject)
   /** Cold restart: every variable to its initial value, scan count 0, mode stopped. Forces stay. */
   | { readonly type: 'reset' }
   /** Warm restart: RETAIN and M/SM/RM variables keep their values; a running PLC keeps running. */
   | { readonly type: 'warmRestart' }
   /** Cycle time in ms (0 = as fast as possible). Applies from the next scan. */
   | { readonly type: 'setCycle'; readonly cycleMs: number }
-  /** 0-based network indexes; execution pauses before any of them. */
-  | { readonly type: 'setBreakpoints'; readonly networks: readonly number[] }
+  /**
+   * Execution pauses before any of these networks: `networks` are 0-based indexes in the program,
+   * `ids` document network ids of any POU (in an FB's or function's body: in every call of it).
+   */
+  | { readonly type: 'setBreakpoints'; readonly networks?: readonly number[]; readonly ids?: readonly string[] }
+  /** The body whose power frames carry (layout network fields follow): a program, an FB instance, a function. */
+  | { readonly type: 'setView'; readonly view: SimView }
   | { readonly type: 'write'; readonly name: string; readonly input: SimValueInput }
   | { readonly type: 'force'; readonly name: string; readonly input: SimValueInput }
   | { readonly type: 'unforce'; readonly name: string }
@@ -122,10 +132,26 @@ export interface SimVariable {
   readonly role: VariableRole;
 }
 
+/**
+ * A body to monitor: a program (`instance` absent, or a configuration's program instance), an FB
+ * instance (`Motor1`, `Line.Motor1`), or a function (no instance: the call that ran last).
+ */
+export interface SimView {
+  readonly pou: string;
+  readonly instance?: string;
+}
+
 /** What the loaded program looks like; frames are aligned with it. */
 export interface SimLayout {
+  /** The program run (a configuration: its first program instance's POU). */
   readonly pou: string;
-  /** Document network ids in order, so the canvas can find a network's power by id. */
+  /** The body the network fields and the frames' power describe; absent: the program's (first) body. */
+  readonly view?: SimView;
+  /** User FB instances of the program (`Motor1`, `Line.Motor1`; a configuration's prefixed by the program instance). */
+  readonly instances?: readonly InstanceInfo[];
+  /** A configuration's program instances in task order (absent when one program runs). */
+  readonly programs?: readonly ProgramInstance[];
+  /** Document network ids (of the viewed body's POU) in order, so the canvas can find a network's power by id. */
   readonly networkIds: readonly string[];
   /** elementOffsets[n] = index of network n's first element byte in a frame's `elements`; length networks + 1. */
   readonly elementOffsets: readonly number[];
@@ -164,8 +190,12 @@ export interface SimFrame {
   readonly fault?: Fault;
   /** Network that executes next when stepping (-1 at a scan boundary). */
   readonly nextNetwork: number;
-  /** Set when execution stopped at a breakpoint before this network. */
+  /** Set when execution stopped at a breakpoint before this network (0-based, in `breakpointAt.pou`). */
   readonly breakpointHit?: number;
+  /** The breakpoint execution stopped at: the POU, the instance and the network. */
+  readonly breakpointAt?: StepFrame;
+  /** Where execution stands while stepping: the caller frames, then the network to run next; empty at a scan boundary. */
+  readonly position?: readonly StepFrame[];
   /** Scans dropped because the worker could not keep the cycle. */
   readonly overruns: number;
   /** Power bytes (api.ts NetworkPower), all networks packed, see SimLayout offsets. Transferred. */
@@ -208,6 +238,8 @@ export type WorkerMessage =
       readonly program?: string;
     }
   | { readonly type: 'frame'; readonly frame: SimFrame }
+  /** The view changed (setView): the layout's network fields now describe that body. */
+  | { readonly type: 'layout'; readonly layout: SimLayout }
   /** A command failed (unknown variable, bad value ...): shown to the user. */
   | { readonly type: 'error'; readonly message: string }
   /** Gateway: output image by IEC location after a scan that changed it. */

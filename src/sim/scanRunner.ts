@@ -1,7 +1,8 @@
 // Executes scans for the session: the PLC clock, Run paced by the wall clock, Step N in slices,
 // single-network steps, breakpoints and execution-time statistics. The session owns the mode and
 // the program; the runner reports back through RunnerHost.
-import type { Fault, Plc } from '../engine/api';
+import type { Fault, Plc, StepFrame } from '../engine/api';
+import { breakpointAt, needsStepInto, nextStop, type Breakpoint } from '../engine/runtime/breakpoints';
 import type { ExecStats } from './protocol';
 import type { Scheduler } from './scheduler';
 import { SimClock } from './simClock';
@@ -39,11 +40,13 @@ interface RunTimeline {
 export class ScanRunner {
   readonly clock = new SimClock();
   cycleMs = 10;
-  breakpoints = new Set<number>();
-  breakpointHit: number | undefined;
+  /** Breakpoints by POU and network (in a body: every instance, or the one named). */
+  breakpoints: readonly Breakpoint[] = [];
+  /** Where execution stopped at a breakpoint: the POU, the instance and the network. */
+  breakpointHit: StepFrame | undefined;
   overruns = 0;
-  /** A breakpoint being resumed from: the next check for this network lets it run. */
-  private resumeAt: number | undefined;
+  /** A breakpoint being resumed from (its position): the next check there lets it run. */
+  private resumeAt: string | undefined;
   private nextScanTime = 0;
   private scanStartTime = 0;
   private lastScanTime = 0;
@@ -119,8 +122,12 @@ export class ScanRunner {
     this.guarded(() => this.batchTick());
   }
 
-  /** Executes one network (starting a scan if needed), ignoring breakpoints. */
-  stepNetwork(): Fault | undefined {
+  /**
+   * Executes one network (starting a scan if needed), ignoring breakpoints. Step over: the network
+   * where execution stands runs whole, calls included (inside a body, the body's network: then the
+   * step may come back out to the caller). Step into: a call stops before its body's first network.
+   */
+  stepNetwork(into = false): Fault | undefined {
     this.stop();
     if (this.host.current().nextNetwork === -1) this.host.atBoundary();
     const plc = this.host.current();
@@ -128,7 +135,10 @@ export class ScanRunner {
     this.breakpointHit = undefined;
     this.resumeAt = undefined;
     const t0 = this.wallNow();
-    const report = plc.stepNetwork();
+    const depth = plc.position().length;
+    let report = plc.stepNetwork(into || depth > 1 ? { into: true } : undefined);
+    // Over inside a body: on until execution stands at this depth again (next network) or above.
+    if (!into && depth > 1) while (!report.fault && !report.scanDone && plc.position().length > depth) report = plc.stepNetwork({ into: true });
     this.stepExecMs += this.wallNow() - t0;
     if (report.fault) this.endScan(plc, this.stepExecMs, report.fault);
     else if (report.scanDone) this.endScan(plc, this.stepExecMs, undefined);
@@ -136,7 +146,7 @@ export class ScanRunner {
   }
 
   private resume(): void {
-    this.resumeAt = this.breakpointHit;
+    this.resumeAt = this.breakpointHit ? positionKey(this.host.current()) : undefined;
     this.breakpointHit = undefined;
   }
 
@@ -166,22 +176,28 @@ export class ScanRunner {
   private scanOnce(startTime: number): ScanOutcome {
     if (this.host.current().nextNetwork === -1) this.host.atBoundary();
     const plc = this.host.current();
-    if (this.breakpoints.size === 0 && plc.nextNetwork === -1) {
+    if (this.breakpoints.length === 0 && plc.nextNetwork === -1) {
       this.beginScan(startTime);
       const report = plc.scan();
       return this.endScan(plc, report.execMs, report.fault);
     }
+    // Breakpoints inside bodies are reached by stepping into calls.
+    const step = needsStepInto(plc, this.breakpoints) ? { into: true } : undefined;
     for (;;) {
       const atBoundary = plc.nextNetwork === -1;
-      const next = atBoundary ? 0 : plc.nextNetwork;
-      if (this.breakpoints.has(next) && this.resumeAt !== next) {
-        this.breakpointHit = next;
-        return 'break';
+      const hit = breakpointAt(plc, this.breakpoints);
+      if (hit) {
+        const at = positionKey(plc);
+        if (this.resumeAt !== at) {
+          this.breakpointHit = nextStop(plc);
+          this.resumeAt = undefined;
+          return 'break';
+        }
       }
       this.resumeAt = undefined;
       if (atBoundary) this.beginScan(startTime);
       const t0 = this.wallNow();
-      const report = plc.stepNetwork();
+      const report = plc.stepNetwork(step);
       this.stepExecMs += this.wallNow() - t0;
       if (report.fault) return this.endScan(plc, this.stepExecMs, report.fault);
       if (report.scanDone) return this.endScan(plc, this.stepExecMs, undefined);
@@ -253,4 +269,12 @@ export class ScanRunner {
     this.host.progress();
     this.schedule(() => this.batchTick(), 0);
   }
+}
+
+/** Where execution stands, as a key (a scan boundary: empty). */
+function positionKey(plc: Plc): string {
+  return plc
+    .position()
+    .map((f) => `${f.pou}/${f.instance ?? ''}/${f.network}`)
+    .join('>');
 }

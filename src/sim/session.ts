@@ -5,15 +5,18 @@ import type { Diagnostic, Plc, PlcOptions } from '../engine/api';
 import { parseLocation, type Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import { carryForces, carryInstances, carryValues, planInstances, valueFor } from './carryOver';
-import { outputsChanged, packPower, readValues } from './frames';
+import { outputsChanged, readValues } from './frames';
 import { HistoryRecorder } from './historyRecorder';
 import type { HistoryOptions } from './history';
-import { buildLayout, findPou, programFingerprint } from './layout';
+import { buildLayout, findPou, isProgramView, programFingerprint, withView } from './layout';
 import { parseScenario, prepareScenario, runPrepared, scenarioCycle, type ScenarioResult } from './scenario';
 import type { CompiledProgram } from '../engine/plc';
 import type { Pou, Scenario } from '../model/project';
 import { fingerprintId } from './programId';
-import type { HostMessage, OnlineChangePlan, SimFrame, SimLayout, SimMode, WorkerMessage } from './protocol';
+import type { HostMessage, OnlineChangePlan, SimFrame, SimLayout, SimMode, SimView, WorkerMessage } from './protocol';
+import { programInstances, runOptions } from './runTarget';
+import { packView } from './viewPower';
+import type { Breakpoint } from '../engine/runtime/breakpoints';
 import { ScanRunner, type ScanOutcome } from './scanRunner';
 import type { Scheduler } from './scheduler';
 import { TrendRecorder } from './trendRecorder';
@@ -43,6 +46,8 @@ interface LoadedProgram {
   /** The compiled program and its document POU, for the scan history and "Why?". */
   readonly program: unknown;
   readonly pou: Pou | undefined;
+  /** The document it was compiled from (breakpoints by network id, views of other POUs). */
+  readonly project: Project;
 }
 
 interface PendingChange {
@@ -85,6 +90,10 @@ export class SimSession {
   /** Records every scan of the installed program (issue 14); a new program starts a new history. */
   private recorder: HistoryRecorder | undefined;
   private historyOptions: HistoryOptions = {};
+  /** The body the UI monitors (setView); absent: the program's. */
+  private view: SimView | undefined;
+  /** Breakpoints as the UI sent them: program network indexes and document network ids. */
+  private breakpointRequest: { networks: readonly number[]; ids: readonly string[] } = { networks: [], ids: [] };
 
   constructor(private readonly deps: SessionDeps) {
     this.runner = new ScanRunner(
@@ -148,7 +157,7 @@ export class SimSession {
       case 'stepNetwork': {
         if (!this.loadToStart(m.project) || this.refuseIfFaulted()) return;
         this.requirePlc();
-        this.mode = this.runner.stepNetwork() ? 'faulted' : 'paused';
+        this.mode = this.runner.stepNetwork(m.into === true) ? 'faulted' : 'paused';
         this.postFrame();
         return;
       }
@@ -167,8 +176,17 @@ export class SimSession {
         this.postFrame();
         return;
       case 'setBreakpoints':
-        this.runner.breakpoints = new Set(m.networks);
+        this.breakpointRequest = { networks: m.networks ?? [], ids: m.ids ?? [] };
+        this.resolveBreakpoints();
         this.postFrame();
+        return;
+      case 'setView':
+        this.view = m.view;
+        if (this.loaded && this.layout) {
+          this.layout = withView(this.loaded.project, this.layout, m.view);
+          this.deps.post({ type: 'layout', layout: this.layout });
+          this.postFrame();
+        }
         return;
       case 'write':
         this.requirePlc().write(m.name, valueFor(this.deps.engine, this.layout, m.name, m.input));
@@ -224,6 +242,8 @@ export class SimSession {
         return;
       }
       case 'explain': {
+        if (m.target.kind === 'element' && this.layout && !isProgramView(this.layout))
+          throw new Error('Why? explains the networks of the program: open the program\'s tab (or its first instance) and ask again');
         const forced = new Set([...(this.plc?.forced().keys() ?? [])].map((n) => n.toUpperCase()));
         const explanation = this.requireHistory().explain(m.scan, m.target, forced);
         if (!explanation) throw new Error(`scan ${m.scan} is not in the history`);
@@ -318,12 +338,17 @@ export class SimSession {
     const clock = this.runner.clock;
     if (!online) clock.set(0);
     const plc = this.deps.engine.createPlc(program, { cycleMs: this.runner.cycleMs, clock });
+    const layout = buildLayout(project, plc.pou, plc.variableNames(), this.runner.cycleMs, {
+      instances: plc.instances(),
+      ...(runOptions(project).configuration ? { programs: programInstances(project) } : {}),
+    });
     const next: LoadedProgram = {
       plc,
-      layout: buildLayout(project, plc.pou, plc.variableNames(), this.runner.cycleMs),
+      layout: this.view && findPou(project, this.view.pou) ? withView(project, layout, this.view) : layout,
       fingerprint,
       program,
       pou: findPou(project, plc.pou),
+      project,
     };
     if (!online) {
       this.install(next, false, diagnostics);
@@ -378,6 +403,7 @@ export class SimSession {
     this.plc = next.plc;
     this.layout = next.layout;
     this.loaded = next;
+    this.resolveBreakpoints();
     this.recorder = HistoryRecorder.for(next.plc, next.layout, next.program, next.pou, this.historyOptions);
     this.fingerprint = next.fingerprint;
     this.programId = fingerprintId(next.fingerprint);
@@ -386,6 +412,21 @@ export class SimSession {
     if (!online) this.resetCounters();
     this.deps.post({ type: 'compiled', ok: true, online, diagnostics, layout: next.layout, program: this.programId });
     this.postFrame();
+  }
+
+  /** The runner's breakpoints in the installed program: network ids found in every POU of its document. */
+  private resolveBreakpoints(): void {
+    const { networks, ids } = this.breakpointRequest;
+    const list: Breakpoint[] = [];
+    if (this.plc) for (const network of networks) list.push({ pou: this.plc.pou, network });
+    if (this.loaded && ids.length > 0) {
+      const wanted = new Set(ids);
+      for (const pou of this.loaded.project.pous)
+        pou.networks.forEach((n, network) => {
+          if (wanted.has(n.id)) list.push({ pou: pou.name, network });
+        });
+    }
+    this.runner.breakpoints = list;
   }
 
   private configureTrend(): void {
@@ -464,9 +505,14 @@ export class SimSession {
 
   private frame(): SimFrame {
     const { plc, layout, runner } = this;
-    const power = plc && layout ? packPower(plc, layout) : undefined;
+    const power = plc && layout ? packView(plc, layout, this.loaded?.program as CompiledProgram | undefined) : undefined;
     const trend = this.trend.take();
     const fault = plc?.fault;
+    // At a scan boundary a configuration stands before its first program instance's network 1.
+    const first = layout?.programs?.[0]?.instance;
+    const hit = runner.breakpointHit && first !== undefined && runner.breakpointHit.instance === undefined && plc?.position().length === 0
+      ? { ...runner.breakpointHit, instance: first }
+      : runner.breakpointHit;
     return {
       mode: this.mode,
       scan: this.scanBase + (plc?.scanCount ?? 0),
@@ -475,7 +521,8 @@ export class SimSession {
       exec: runner.exec(),
       ...(fault ? { fault } : {}),
       nextNetwork: plc?.nextNetwork ?? -1,
-      ...(runner.breakpointHit !== undefined ? { breakpointHit: runner.breakpointHit } : {}),
+      ...(hit !== undefined ? { breakpointHit: hit.network, breakpointAt: hit } : {}),
+      position: plc ? plc.position() : [],
       overruns: runner.overruns,
       elements: power?.elements ?? new Uint8Array(0),
       vlinks: power?.vlinks ?? new Uint8Array(0),
@@ -502,11 +549,14 @@ export class SimSession {
   }
 
   private postHistoryView(scan: number): void {
-    const view = this.requireHistory().view(scan);
+    let view = this.requireHistory().view(scan);
     if (!view) {
       const h = this.recorder!.history;
       throw new Error(`scan ${scan} is not in the history (scans ${h.first} to ${h.last} are recorded)`);
     }
+    // The history records the program's networks: another body monitored (an FB instance, a function)
+    // shows the recorded values without power flow.
+    if (this.layout && !isProgramView(this.layout)) view = { ...view, elements: new Uint8Array(0), vlinks: new Uint8Array(0), executed: new Uint8Array(0) };
     this.deps.post({ type: 'historyView', view }, [view.elements.buffer, view.vlinks.buffer, view.executed.buffer]);
   }
 

@@ -6,7 +6,7 @@
 // (src/editor/sim/simContext.ts) through narrow selectors. Commands that run the program take the
 // current document, which is compiled first when it changed since the last command.
 import { createStore, type StoreApi } from 'zustand';
-import type { Diagnostic, Fault } from '../engine/api';
+import type { Diagnostic, Fault, StepFrame } from '../engine/api';
 import type { Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import type { SimTransport } from '../sim/host';
@@ -16,6 +16,7 @@ import type { ExplainTarget, Explanation } from '../engine/explain';
 import type { Scenario } from '../model/project';
 import type { ScenarioResult } from '../sim/scenario';
 import { appendTrend, emptyTrend, type TrendBuffer } from '../sim/trendBuffer';
+import { scopeFor, viewKey, type CanvasScope, type ShownPou } from '../sim/scope';
 
 export const DEFAULT_CYCLE_MS = 10;
 export const DEFAULT_TREND_SCANS = 500;
@@ -39,7 +40,10 @@ export type OnlineChangeState =
 export interface SimContextMenu {
   readonly x: number;
   readonly y: number;
+  /** The variable the menu acts on ('' for a call box's menu). */
   readonly variable: string;
+  /** A call of a user FB: "Open instance" shows its body with this instance picked. */
+  readonly call?: { readonly pou: string; readonly instance: string };
 }
 
 export interface SimState {
@@ -51,6 +55,22 @@ export interface SimState {
   readonly fault: Fault | undefined;
   readonly nextNetwork: number;
   readonly breakpointHit: number | undefined;
+  /** The breakpoint execution stopped at: POU, instance, network. */
+  readonly breakpointAt: StepFrame | undefined;
+  /** Where execution stands while stepping: caller frames, then the network to run next (empty at a scan boundary). */
+  readonly position: readonly StepFrame[];
+  /**
+   * Counts the stops a debugger follows (a step, a breakpoint hit): the editor then shows the body
+   * where execution stands (`stop`), with the caller's instance picked.
+   */
+  readonly stopSeq: number;
+  readonly stop: StepFrame | undefined;
+  /** The POU on the canvas (the editor says which); undefined: the program's. */
+  readonly shownPou: ShownPou | undefined;
+  /** The instance picked for each FB (a configuration: each program), by upper-case POU name. */
+  readonly picked: ReadonlyMap<string, string>;
+  /** The body the canvas monitors and how its operand names are read; undefined when it is not running. */
+  readonly canvasScope: CanvasScope | undefined;
   readonly overruns: number;
   readonly layout: SimLayout | undefined;
   /** True when power flow and live values should be drawn (a program is loaded and has run). */
@@ -89,7 +109,12 @@ export interface SimState {
   run(project: Project): void;
   pause(): void;
   step(project: Project, scans: number): void;
-  stepNetwork(project: Project): void;
+  /** One network: over (the network runs whole, calls included) or into (stops in a call's body). */
+  stepNetwork(project: Project, into?: boolean): void;
+  /** The editor shows another POU (tab): the canvas monitors its body (the picked instance of an FB). */
+  showPou(pou: ShownPou | undefined): void;
+  /** Picks the instance of an FB (or a configuration's program instance) whose body the canvas shows. */
+  pickInstance(pou: string, instance: string): void;
   reset(): void;
   /** Another project was opened: stop, forget the program (the next Run compiles the new one). */
   unload(): void;
@@ -196,11 +221,27 @@ export function createSimStore(transport: SimTransport): SimStore {
     return project;
   };
   const nextEpoch = () => ++epoch;
+  // Breakpoints go by network id: the worker finds them in every POU of the program it runs.
   const sendBreakpoints = () => {
     const { layout, breakpoints } = store.getState();
     if (!layout) return;
-    const networks = breakpoints.map((id) => layout.networkIds.indexOf(id)).filter((i) => i >= 0);
-    send({ type: 'setBreakpoints', networks });
+    send({ type: 'setBreakpoints', ids: breakpoints });
+  };
+  /** A step or Run was asked: the next stop (a step's end, a breakpoint) is followed by the editor. */
+  let followNext = false;
+  let lastStopKey = '';
+  /** The view last asked of the worker. */
+  let sentView = '';
+  /** Works out the canvas scope from the layout, the shown POU and the picked instance; asks the worker for that body's power. */
+  const updateScope = () => {
+    const { layout, shownPou, picked, canvasScope } = store.getState();
+    const scope = scopeFor(layout, shownPou, shownPou ? picked.get(shownPou.name.toUpperCase()) : undefined);
+    if (!sameScope(scope, canvasScope)) store.setState({ canvasScope: scope });
+    if (!layout || !scope) return;
+    const key = viewKey(scope.view);
+    if (key === viewKey(layout.view) || key === sentView) return;
+    sentView = key;
+    send({ type: 'setView', view: scope.view });
   };
   const sendTrend = () => {
     const { trendNames, trendCapacity } = store.getState();
@@ -222,6 +263,13 @@ export function createSimStore(transport: SimTransport): SimStore {
       fault: undefined,
       nextNetwork: -1,
       breakpointHit: undefined,
+      breakpointAt: undefined,
+      position: [],
+      stopSeq: 0,
+      stop: undefined,
+      shownPou: undefined,
+      picked: new Map(),
+      canvasScope: undefined,
       overruns: 0,
       layout: undefined,
       live: false,
@@ -250,17 +298,32 @@ export function createSimStore(transport: SimTransport): SimStore {
       explanation: undefined,
 
       run: (project) => {
+        followNext = true;
         set({ refusal: undefined, notice: undefined });
         send({ type: 'run', ...withProject(fresh(project)), epoch: nextEpoch() });
       },
       pause: () => send({ type: 'pause' }),
       step: (project, scans) => {
+        followNext = true;
         set({ refusal: undefined, notice: undefined });
         send({ type: 'step', scans, ...withProject(fresh(project)), epoch: nextEpoch() });
       },
-      stepNetwork: (project) => {
+      stepNetwork: (project, into) => {
+        followNext = true;
         set({ refusal: undefined, notice: undefined });
-        send({ type: 'stepNetwork', ...withProject(fresh(project)), epoch: nextEpoch() });
+        send({ type: 'stepNetwork', ...(into ? { into: true } : {}), ...withProject(fresh(project)), epoch: nextEpoch() });
+      },
+      showPou: (pou) => {
+        const shown = get().shownPou;
+        if (shown?.name === pou?.name && shown?.kind === pou?.kind) return;
+        set({ shownPou: pou });
+        updateScope();
+      },
+      pickInstance: (pou, instance) => {
+        const picked = new Map(get().picked);
+        picked.set(pou.toUpperCase(), instance);
+        set({ picked });
+        updateScope();
       },
       reset: () => {
         set({ notice: undefined, trend: emptyTrend(get().trendNames) });
@@ -440,9 +503,16 @@ export function createSimStore(transport: SimTransport): SimStore {
         }
         if (message.layout) {
           store.setState({ refusal: undefined, ...indexLayout(message.layout) });
-          // Breakpoints are kept by network id; send their indexes in the new program.
+          // Breakpoints are kept by network id; the new program has them where those networks are.
           sendBreakpoints();
+          sentView = '';
+          updateScope();
         }
+        return;
+      case 'layout':
+        // The monitored body changed: its power comes with the next frame.
+        store.setState({ ...indexLayout(message.layout), elements: new Uint8Array(0), vlinks: new Uint8Array(0), executed: new Uint8Array(0) });
+        updateScope();
         return;
       case 'frame': {
         const { program } = message.frame;
@@ -469,7 +539,7 @@ export function createSimStore(transport: SimTransport): SimStore {
           liveStash = undefined;
           patch = { ...patch, historyScan: undefined, historyTimeMs: undefined };
         }
-        store.setState({ ...patch, history: message.frame.history });
+        store.setState({ ...patch, history: message.frame.history, ...followStop(message.frame, message.frame.epoch === epoch) });
         return;
       }
       case 'error':
@@ -520,7 +590,22 @@ export function createSimStore(transport: SimTransport): SimStore {
     const gone = !state.layout && (kind === 'confirm' || kind === 'pending');
     const restarted = kind === 'applied' && state.mode === 'stopped' && state.scan === 0;
     if (gone || restarted) store.setState({ onlineChange: undefined });
+    if (!state.layout && state.canvasScope) store.setState({ canvasScope: undefined });
   });
+
+  /**
+   * A stop the editor follows: after a step (or a Run/Step N that a breakpoint stopped), where
+   * execution stands, once per new stop.
+   */
+  function followStop(frame: SimFrame, current: boolean): Partial<SimState> {
+    const at = frame.breakpointAt ?? frame.position?.at(-1);
+    const key = at ? `${at.pou}|${at.instance ?? ''}|${at.network}` : '';
+    if (!current || frame.mode === 'running' || frame.mode === 'stopped') return {};
+    const follow = at !== undefined && (followNext || (frame.breakpointAt !== undefined && key !== lastStopKey));
+    followNext = false;
+    lastStopKey = key;
+    return follow ? { stop: at, stopSeq: store.getState().stopSeq + 1 } : {};
+  }
 
   /** The worker runs a program that is not the one shown: stop it, forget it and say so. */
   function refuseHiddenProgram(): void {
@@ -546,6 +631,11 @@ const NO_PROGRAM: Pick<SimState, 'live' | 'layout' | 'elementIndex' | 'vlinkInde
   vlinkIndex: new Map(),
   variableIndex: new Map(),
 };
+
+function sameScope(a: CanvasScope | undefined, b: CanvasScope | undefined): boolean {
+  if (!a || !b) return a === b;
+  return viewKey(a.view) === viewKey(b.view) && a.prefix === b.prefix && a.choices.join('\n') === b.choices.join('\n');
+}
 
 function viewOf(view: HistoryView): Partial<SimState> {
   return { historyScan: view.scan, historyTimeMs: view.timeMs, elements: view.elements, vlinks: view.vlinks, executed: view.executed, values: view.values };
@@ -575,6 +665,8 @@ function applyFrame(state: SimState, frame: SimFrame): Partial<SimState> {
     fault: frame.fault,
     nextNetwork: frame.nextNetwork,
     breakpointHit: frame.breakpointHit,
+    breakpointAt: frame.breakpointAt,
+    position: frame.position ?? [],
     overruns: frame.overruns,
     live: state.layout !== undefined && (frame.mode !== 'stopped' || frame.scan > 0 || frame.nextNetwork !== -1),
     elements: frame.elements,

@@ -1,8 +1,10 @@
-// The status bar: last message, where the cursor is, what is wrong there, the zoom.
+// The status bar: last message, where the simulation's execution stands, where the cursor is, what
+// is wrong there, the zoom.
 import { useMemo } from 'react';
 import { selectActivePou, selectNetworks, useDocument } from '../../store/documentStore';
 import { selectCursor, useUi, useUiStore } from '../../store/uiStore';
 import { useDiagnostics } from '../problems/useDiagnostics';
+import { SimPosition } from '../sim/SimPosition';
 
 export function StatusBar() {
   const ui = useUiStore();
@@ -40,6 +42,7 @@ export function StatusBar() {
           {here.rule}: {here.message}
         </span>
       )}
+      <SimPosition />
       <span className="rs-spacer" />
       {cursor && index >= 0 && (
         <span data-testid="cursor-position">

@@ -2,21 +2,64 @@
 // The canvas opens it with simStore.openContextMenu({ x, y, variable }) (page coordinates).
 // With hardware attached, a field input (a %I variable the gateway has as a point) comes from the
 // device: the menu says so, and forcing it asks for a confirmation first, as stepping on hardware does.
-import { useEffect, useRef, useState } from 'react';
+import { useEffect, useRef, useState, type RefObject } from 'react';
 import type { SimValueInput } from '../../sim/protocol';
 import type { SimState } from '../../store/simStore';
 import { fieldInputAddress, fieldInputWords } from '../hardware/fieldIo';
 import { useGateway } from '../hardware/useGateway';
 import { showWhyTab } from '../history/useWhyKey';
 import { forcedText, liveText } from './liveValues';
+import { useDocumentStore } from '../../store/documentStore';
 import { useSim, useSimStore } from './simContext';
+import { openBody } from './useFollowExecution';
 import './sim.css';
 
 const selectMenu = (s: SimState) => s.contextMenu;
 
 export function SimContextMenu() {
   const menu = useSim(selectMenu);
+  if (menu?.call) return <CallMenu key={`${menu.call.instance}@${menu.x},${menu.y}`} x={menu.x} y={menu.y} call={menu.call} />;
   return menu ? <OpenMenu key={`${menu.variable}@${menu.x},${menu.y}`} x={menu.x} y={menu.y} variable={menu.variable} /> : null;
+}
+
+/** Closes the menu on a press outside it or Escape; focuses its first item. */
+function useMenuDismiss(ref: RefObject<HTMLDivElement | null>): void {
+  const sim = useSimStore();
+  useEffect(() => {
+    ref.current?.querySelector<HTMLElement>('[role="menuitem"]')?.focus();
+    const onDown = (e: PointerEvent) => {
+      if (!ref.current?.contains(e.target as Node)) sim.getState().closeContextMenu();
+    };
+    const onKey = (e: KeyboardEvent) => e.key === 'Escape' && sim.getState().closeContextMenu();
+    window.addEventListener('pointerdown', onDown, true);
+    window.addEventListener('keydown', onKey);
+    return () => {
+      window.removeEventListener('pointerdown', onDown, true);
+      window.removeEventListener('keydown', onKey);
+    };
+  }, [sim, ref]);
+}
+
+/** A call of a user FB: open its body with this instance picked (as CODESYS's "Open instance"). */
+function CallMenu({ x, y, call }: { x: number; y: number; call: { pou: string; instance: string } }) {
+  const sim = useSimStore();
+  const documents = useDocumentStore();
+  const ref = useRef<HTMLDivElement>(null);
+  useMenuDismiss(ref);
+  return (
+    <div ref={ref} className="rs-sim-menu" role="menu" aria-label={`Simulation: ${call.instance}`} style={{ left: x, top: y }} data-testid="sim-context-menu">
+      <div className="rs-sim-menu-title">
+        {call.instance} <span className="rs-sim-unit">({call.pou})</span>
+      </div>
+      <button type="button" role="menuitem" data-testid="sim-open-instance"
+        onClick={() => {
+          sim.getState().closeContextMenu();
+          openBody(documents, sim, call.pou, call.instance);
+        }}>
+        Open instance {call.instance}
+      </button>
+    </div>
+  );
 }
 
 function OpenMenu({ x, y, variable }: { x: number; y: number; variable: string }) {
@@ -34,19 +77,7 @@ function OpenMenu({ x, y, variable }: { x: number; y: number; variable: string }
   /** A force of a field input waiting for the confirmation. */
   const [confirming, setConfirming] = useState<{ input: SimValueInput; words: string } | undefined>();
   const close = () => sim.getState().closeContextMenu();
-  useEffect(() => {
-    ref.current?.querySelector<HTMLElement>('[role="menuitem"]')?.focus();
-    const onDown = (e: PointerEvent) => {
-      if (!ref.current?.contains(e.target as Node)) sim.getState().closeContextMenu();
-    };
-    const onKey = (e: KeyboardEvent) => e.key === 'Escape' && sim.getState().closeContextMenu();
-    window.addEventListener('pointerdown', onDown, true);
-    window.addEventListener('keydown', onKey);
-    return () => {
-      window.removeEventListener('pointerdown', onDown, true);
-      window.removeEventListener('keydown', onKey);
-    };
-  }, [sim]);
+  useMenuDismiss(ref);
   const act = (fn: () => void) => () => {
     fn();
     close();

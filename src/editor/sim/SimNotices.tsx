@@ -8,15 +8,16 @@ import { useSim, useSimStore } from './simContext';
 const selectRefusal = (s: SimState) => s.refusal;
 const selectFault = (s: SimState) => s.fault;
 const selectNotice = (s: SimState) => s.notice;
-const selectBreakpointHit = (s: SimState) => s.breakpointHit;
+const selectBreakpointAt = (s: SimState) => s.breakpointAt;
 const selectMode = (s: SimState) => s.mode;
 const selectOnlineChange = (s: SimState) => s.onlineChange;
 
 const where = (d: Pick<Diagnostic, 'network' | 'networkLabel'>) =>
   d.network < 0 ? 'variables' : `network ${d.network + 1}${d.networkLabel ? ` (${d.networkLabel})` : ''}`;
 
+/** A fault in words; inside a body it names the instance and the POU: `in Motor1 (Motor) network 2`. */
 export const describeFault = (f: Fault) =>
-  `${f.kind === 'watchdog' ? 'Watchdog fault' : 'Runtime fault'} in ${f.pou} ${where(f)}: ${f.message.replace(/^watchdog:\s*/, '')}`;
+  `${f.kind === 'watchdog' ? 'Watchdog fault' : 'Runtime fault'} in ${f.instance ? `${f.instance} (${f.pou})` : f.pou} ${where(f)}: ${f.message.replace(/^watchdog:\s*/, '')}`;
 
 const MAX_LISTED = 5;
 
@@ -25,7 +26,7 @@ export function SimNotices() {
   const refusal = useSim(selectRefusal);
   const fault = useSim(selectFault);
   const notice = useSim(selectNotice);
-  const hit = useSim(selectBreakpointHit);
+  const hit = useSim(selectBreakpointAt);
   const mode = useSim(selectMode);
   const online = useSim(selectOnlineChange);
   const errors = refusal?.diagnostics.filter((d) => d.severity === 'error') ?? [];
@@ -58,7 +59,7 @@ export function SimNotices() {
       )}
       {hit !== undefined && mode === 'paused' && (
         <div className="rs-sim-notice" role="status" data-testid="sim-breakpoint-hit">
-          Paused at the breakpoint before network {hit + 1}.
+          Paused at the breakpoint before network {hit.network + 1} of {hit.instance ? `${hit.instance} (${hit.pou})` : hit.pou}.
         </div>
       )}
       {online?.kind === 'confirm' && <OnlineChangeDialog plan={online.plan} onAnswer={(apply) => sim.getState().answerOnlineChange(apply)} />}

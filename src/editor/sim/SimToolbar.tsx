@@ -5,6 +5,7 @@ import type { SimState } from '../../store/simStore';
 import { SteppingBadge } from '../hardware/HardwareStepping';
 import { useSimCommands } from '../hardware/useHardwareStepping';
 import { SimNotices } from './SimNotices';
+import { useStepKeys } from './useStepKeys';
 import { useSim, useSimStore } from './simContext';
 import './sim.css';
 
@@ -48,6 +49,7 @@ export function SimToolbar() {
 
   const running = mode === 'running';
   const faulted = mode === 'faulted';
+  useStepKeys(commands, running || faulted);
   const n = Number.parseInt(stepCount, 10);
   const stepN = Number.isFinite(n) && n >= 1 ? Math.min(n, 1_000_000) : undefined;
 
@@ -74,9 +76,13 @@ export function SimToolbar() {
           onChange={(e) => setStepCount(e.target.value)} data-testid="sim-step-count" />
         <span className="rs-sim-unit">scans</span>
       </span>
-      <button type="button" className="rs-sim-btn" title="Step one network (the next network is highlighted)"
-        disabled={running || faulted} onClick={() => commands.step({ kind: 'network' })} data-testid="sim-step-network">
+      <button type="button" className="rs-sim-btn" title="Step over (F10): the next network runs whole, calls included (the next network is highlighted)"
+        aria-keyshortcuts="F10" disabled={running || faulted} onClick={() => commands.step({ kind: 'network' })} data-testid="sim-step-network">
         Step network
+      </button>
+      <button type="button" className="rs-sim-btn" title="Step into (F11): a call of a function block or function stops before its body's first network, shown in the callee's tab"
+        aria-keyshortcuts="F11" disabled={running || faulted} onClick={() => commands.step({ kind: 'network', into: true })} data-testid="sim-step-into">
+        Step into
       </button>
       <button type="button" className="rs-sim-btn" title="Reset (cold restart): every variable to its initial value"
         onClick={commands.reset} data-testid="sim-reset">

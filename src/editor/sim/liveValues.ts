@@ -1,6 +1,7 @@
 // Formatting live values for display: the engine's IEC text (TRUE, T#1s500ms, 2.5).
 import { formatValue } from '../../engine/values/literals';
 import { isElementaryType, type Value } from '../../model/iecTypes';
+import { scopedName } from '../../sim/scope';
 import type { SimState } from '../../store/simStore';
 
 export function formatLive(type: string, value: Value): string {
@@ -29,4 +30,12 @@ export function forcedText(s: SimState, name: string): string | undefined {
   const i = s.variableIndex.get(name.toUpperCase());
   const type = s.layout?.variables[i ?? -1]?.type ?? (typeof value === 'boolean' ? 'BOOL' : 'DINT');
   return formatLive(type, value);
+}
+
+/**
+ * The readable name an operand on the canvas stands for in the monitored body: `Motor1.Run` for
+ * `Run` inside the picked instance Motor1, a global as it is; undefined when the shown POU is not running.
+ */
+export function canvasName(s: SimState, name: string): string | undefined {
+  return scopedName(s.canvasScope, name, (n) => s.variableIndex.has(n.toUpperCase()));
 }

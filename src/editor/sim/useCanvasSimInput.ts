@@ -4,17 +4,21 @@
 // - Alt + press on it: TRUE while held (a push-button);
 // - with hardware attached (controller), an input the gateway has as a point comes from the device:
 //   a click does not write it, it opens the menu that says so and offers a (confirmed) force;
-// - right-click a contact or coil: the force/watch/trend menu.
+// - right-click a contact or coil: the force/watch/trend menu;
+// - right-click or double-click a call of a user FB: "Open instance", the FB's tab with that instance picked.
+// Inside an FB's body the operands are the monitored instance's (`Motor1.Start`), globals as they are.
 // Shift/Ctrl-clicks and every other element go to the editor as usual.
 import { useEffect } from 'react';
 import type { LdElement } from '../../model/elements';
-import { selectNetworks, useDocumentStore } from '../../store/documentStore';
+import { selectLibrary, selectNetworks, useDocumentStore } from '../../store/documentStore';
 import { elementAt } from '../../store/networkEdits';
 import type { SimState } from '../../store/simStore';
 import { useUiStore } from '../../store/uiStore';
 import { hitTest, layoutNetworks } from '../canvas/geometry';
 import { fieldInputAddress } from '../hardware/fieldIo';
+import { canvasName } from './liveValues';
 import { useSimStore } from './simContext';
+import { openBody } from './useFollowExecution';
 
 const simulating = (s: SimState) => s.mode === 'running' || s.mode === 'paused';
 
@@ -37,14 +41,42 @@ export function useCanvasSimInput(): void {
       const hit = hitTest(layoutNetworks(networks), networks, point);
       if (hit.area !== 'grid') return undefined;
       const network = networks[hit.index];
-      return network ? elementAt(network, hit.cell) : undefined;
+      // With the project's blocks: a user FB's box covers all its cells.
+      return network ? elementAt(network, hit.cell, selectLibrary(documents.getState())) : undefined;
+    };
+
+    /** The readable variable an operand stands for in the monitored body (`Motor1.Start` inside Motor1). */
+    const variableOf = (s: SimState, operand: string) => {
+      const name = canvasName(s, operand);
+      return name === undefined ? undefined : s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1];
     };
 
     /** The BOOL input variable a contact reads, in the running program's own spelling. */
     const inputOf = (s: SimState, el: LdElement | undefined): string | undefined => {
       if (el?.kind !== 'contact' || !el.variable) return undefined;
-      const v = s.layout?.variables[s.variableIndex.get(el.variable.toUpperCase()) ?? -1];
+      const v = variableOf(s, el.variable);
       return v?.role === 'input' && v.type === 'BOOL' ? v.name : undefined;
+    };
+
+    /** A call of a user FB under the pointer: its POU and the instance's path in the running program. */
+    const callOf = (s: SimState, el: LdElement | undefined): { pou: string; instance: string } | undefined => {
+      if (el?.kind !== 'box' || !el.instance || !s.layout) return undefined;
+      const pou = selectLibrary(documents.getState()).userPou(el.blockType);
+      if (pou?.kind !== 'FUNCTION_BLOCK') return undefined;
+      const prefix = s.canvasScope?.prefix;
+      const path = prefix ? `${prefix}.${el.instance}` : el.instance;
+      const known = s.layout.instances?.find((i) => i.path.toUpperCase() === path.toUpperCase());
+      return known ? { pou: pou.name, instance: known.path } : undefined;
+    };
+
+    const onDoubleClick = (e: MouseEvent) => {
+      const s = sim.getState();
+      if (!s.live || e.shiftKey || e.ctrlKey || e.metaKey) return;
+      const call = callOf(s, elementUnder(e));
+      if (!call) return;
+      e.stopPropagation();
+      e.preventDefault();
+      openBody(documents, sim, call.pou, call.instance);
     };
 
     const onPointerDown = (e: PointerEvent) => {
@@ -78,8 +110,15 @@ export function useCanvasSimInput(): void {
       const s = sim.getState();
       if (!s.layout || !s.live) return;
       const el = elementUnder(e);
+      const call = callOf(s, el);
+      if (call) {
+        e.preventDefault();
+        e.stopPropagation();
+        s.openContextMenu({ x: e.clientX, y: e.clientY, variable: '', call });
+        return;
+      }
       if ((el?.kind !== 'contact' && el?.kind !== 'coil') || !el.variable) return;
-      const v = s.layout.variables[s.variableIndex.get(el.variable.toUpperCase()) ?? -1];
+      const v = variableOf(s, el.variable);
       if (!v) return;
       e.preventDefault();
       e.stopPropagation();
@@ -91,6 +130,7 @@ export function useCanvasSimInput(): void {
     window.addEventListener('pointercancel', release, true);
     window.addEventListener('blur', release);
     document.addEventListener('contextmenu', onContextMenu, true);
+    document.addEventListener('dblclick', onDoubleClick, true);
     return () => {
       release();
       document.removeEventListener('pointerdown', onPointerDown, true);
@@ -98,6 +138,7 @@ export function useCanvasSimInput(): void {
       window.removeEventListener('pointercancel', release, true);
       window.removeEventListener('blur', release);
       document.removeEventListener('contextmenu', onContextMenu, true);
+      document.removeEventListener('dblclick', onDoubleClick, true);
     };
   }, [documents, ui, sim]);
 }

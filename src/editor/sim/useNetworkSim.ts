@@ -4,16 +4,19 @@
 // a network re-renders only when its own state changed.
 import { useMemo } from 'react';
 import type { NetworkPower } from '../../engine/api';
-import { blockSignature } from '../../model/blocks';
 import type { LdElement } from '../../model/elements';
+import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
+import { selectLibrary, useDocument } from '../../store/documentStore';
 import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
 import type { SimState } from '../../store/simStore';
-import { isForced, liveText } from './liveValues';
+import { canvasName, isForced, liveText } from './liveValues';
 import { useSim } from './simContext';
 
 function powerKey(s: SimState, network: Network): string {
   if (!s.live || !s.layout) return '';
+  // Power of another body than the layout's (a view change in flight) is never drawn.
+  if (s.elements.length !== s.layout.elementOffsets[s.layout.networkIds.length]) return '';
   const n = s.layout.networkIds.indexOf(network.id);
   if (n < 0) return '';
   let key = s.executed[n] ? '1' : '0';
@@ -43,27 +46,34 @@ export function useNetworkPower(network: Network): NetworkPower | undefined {
 
 const FORCED_MARK = ' [F]';
 
-const withForce = (s: SimState, name: string, text: string | undefined) =>
-  text === undefined ? undefined : isForced(s, name) ? `${text}${FORCED_MARK}` : text;
+/** The live text of an operand of the shown body (read in the monitored instance), marked when forced. */
+const operandText = (s: SimState, operand: string): string | undefined => {
+  const name = canvasName(s, operand);
+  const text = name === undefined ? undefined : liveText(s, name);
+  return text === undefined ? undefined : isForced(s, name!) ? `${text}${FORCED_MARK}` : text;
+};
 
-/** Text shown under an element while simulating: its variable's state, an FB's outputs, a function's assigned outputs. */
-export function elementLiveText(s: SimState, el: LdElement): string | undefined {
+/**
+ * Text shown under an element while simulating: its variable's state, an FB's outputs (a user FB's
+ * too, with the project's library), a function's assigned outputs. Names are read in the monitored body.
+ */
+export function elementLiveText(s: SimState, el: LdElement, library: BlockLibrary = STANDARD_LIBRARY): string | undefined {
   switch (el.kind) {
     case 'contact':
     case 'coil':
-      return el.variable ? withForce(s, el.variable, liveText(s, el.variable)) : undefined;
+      return el.variable ? operandText(s, el.variable) : undefined;
     case 'box': {
-      const signature = blockSignature(el.blockType);
+      const signature = library.signature(el.blockType);
       if (!signature) return undefined;
       const parts: string[] = [];
       if (signature.kind === 'fb' && el.instance) {
         for (const pin of signature.outputs) {
-          const text = withForce(s, `${el.instance}.${pin.name}`, liveText(s, `${el.instance}.${pin.name}`));
+          const text = operandText(s, `${el.instance}.${pin.name}`);
           if (text !== undefined) parts.push(`${pin.name}=${text}`);
         }
       } else {
         for (const [pin, target] of Object.entries(el.outputs)) {
-          const text = target ? withForce(s, target, liveText(s, target)) : undefined;
+          const text = target ? operandText(s, target) : undefined;
           if (text !== undefined) parts.push(`${pin}=${text}`);
         }
       }
@@ -76,29 +86,33 @@ export function elementLiveText(s: SimState, el: LdElement): string | undefined 
   }
 }
 
-function liveKey(s: SimState, network: Network): string {
+function liveKey(s: SimState, network: Network, library: BlockLibrary): string {
   if (!s.live) return '';
   const entries: [string, string][] = [];
   for (const el of network.elements) {
-    const text = elementLiveText(s, el);
+    const text = elementLiveText(s, el, library);
     if (text !== undefined) entries.push([el.id, text]);
   }
   return entries.length > 0 ? JSON.stringify(entries) : '';
 }
 
 /** True when the element's variable, or one of the outputs it shows, is forced. */
-export function elementForced(s: SimState, el: LdElement): boolean {
+export function elementForced(s: SimState, el: LdElement, library: BlockLibrary = STANDARD_LIBRARY): boolean {
+  const forced = (operand: string) => {
+    const name = operand ? canvasName(s, operand) : undefined;
+    return name !== undefined && isForced(s, name);
+  };
   switch (el.kind) {
     case 'contact':
     case 'coil':
-      return el.variable !== '' && isForced(s, el.variable);
+      return forced(el.variable);
     case 'box': {
-      const signature = blockSignature(el.blockType);
+      const signature = library.signature(el.blockType);
       if (signature?.kind === 'fb' && el.instance) {
         const instance = el.instance;
-        return signature.outputs.some((pin) => isForced(s, `${instance}.${pin.name}`));
+        return signature.outputs.some((pin) => forced(`${instance}.${pin.name}`));
       }
-      return Object.values(el.outputs).some((target) => Boolean(target) && isForced(s, target));
+      return Object.values(el.outputs).some((target) => Boolean(target) && forced(target));
     }
     case 'link':
     case 'jump':
@@ -107,22 +121,24 @@ export function elementForced(s: SimState, el: LdElement): boolean {
   }
 }
 
-function forcedKey(s: SimState, network: Network): string {
+function forcedKey(s: SimState, network: Network, library: BlockLibrary): string {
   if (s.forced.size === 0) return '';
   return network.elements
-    .filter((el) => elementForced(s, el))
+    .filter((el) => elementForced(s, el, library))
     .map((el) => el.id)
     .join('\n');
 }
 
 /** Ids of the network's elements with a forced variable, or undefined when none is forced. */
 export function useNetworkForced(network: Network): ReadonlySet<ElementId> | undefined {
-  const key = useSim((s) => forcedKey(s, network));
+  const library = useDocument(selectLibrary);
+  const key = useSim((s) => forcedKey(s, network, library));
   return useMemo(() => (key ? new Set(key.split('\n') as ElementId[]) : undefined), [key]);
 }
 
 /** Live value text by element id, or undefined when not simulating. */
 export function useNetworkLiveValues(network: Network): ReadonlyMap<ElementId, string> | undefined {
-  const key = useSim((s) => liveKey(s, network));
+  const library = useDocument(selectLibrary);
+  const key = useSim((s) => liveKey(s, network, library));
   return useMemo(() => (key ? new Map(JSON.parse(key) as [ElementId, string][]) : undefined), [key]);
 }

@@ -1,5 +1,6 @@
 // Narrow hooks for the canvas: each element reads only its own power byte and live value, so a
 // frame re-renders only the elements whose state changed. All return undefined when not simulating.
+import type { StepFrame } from '../../engine/api';
 import type { SimState } from '../../store/simStore';
 import { isForced, liveText } from './liveValues';
 import { useSim } from './simContext';
@@ -36,10 +37,21 @@ export function useIsForced(name: string | undefined): boolean {
 
 const networkIndex = (s: SimState, networkId: string) => s.layout?.networkIds.indexOf(networkId) ?? -1;
 
-/** The network the debugger will execute next (stepping or stopped at a breakpoint). */
+/** Where execution stands for the debugger: the breakpoint it stopped at, or the next network of the innermost frame. */
+export const stopOf = (s: SimState): StepFrame | undefined => s.breakpointAt ?? s.position.at(-1);
+
+const same = (a: string | undefined, b: string | undefined) => (a ?? '').toUpperCase() === (b ?? '').toUpperCase();
+
+/**
+ * The network the debugger will execute next (stepping or stopped at a breakpoint), in the body the
+ * canvas shows: the same POU and instance (inside an FB, the picked instance's call).
+ */
 export function useIsCurrentNetwork(networkId: string): boolean {
   return useSim((s) => {
     if (s.mode === 'running' || s.mode === 'stopped' || !s.live) return false;
+    const stop = stopOf(s);
+    const view = s.layout?.view;
+    if (stop && view) return same(stop.pou, view.pou) && same(stop.instance, view.instance) && networkIndex(s, networkId) === stop.network;
     const current = s.breakpointHit ?? s.nextNetwork;
     return current >= 0 && networkIndex(s, networkId) === current;
   });
