@@ -2,7 +2,7 @@
 import type { Value } from '../model/iecTypes';
 import type { PointType, WireValue } from '../protocol/points';
 
-const toNumber = (v: Value): number => (typeof v === 'bigint' ? Number(BigInt.asIntN(64, v)) : typeof v === 'boolean' ? (v ? 1 : 0) : v);
+const toNumber = (v: Value): number => (typeof v === 'bigint' ? Number(BigInt.asIntN(64, v)) : typeof v === 'boolean' ? (v ? 1 : 0) : typeof v === 'string' ? 0 : v);
 
 /** A program value as the point's wire value: BOOL -> boolean; registers -> the low 16 bits in the point's range. */
 export function toWire(type: PointType, value: Value): WireValue {

@@ -161,7 +161,7 @@ export interface StateItem {
  * next scan would start at (negative: in the past), so they carry exactly to another PLC clock.
  */
 export interface PlcState {
-  readonly fbs: readonly { readonly item: StateItem; readonly fields: Readonly<Record<string, number | boolean>> }[];
+  readonly fbs: readonly { readonly item: StateItem; readonly fields: Readonly<Record<string, number | boolean | string>> }[];
   readonly edges: readonly { readonly item: StateItem; readonly memory: boolean }[];
 }
 

@@ -32,6 +32,7 @@ export interface BlockSignature {
     | 'numerical'
     | 'time'
     | 'control'
+    | 'string'
     | 'user'
     | 'external';
   readonly description: string;
@@ -274,16 +275,65 @@ export const MORE_FUNCTION_SIGNATURES: readonly BlockSignature[] = [
   fn('DIVTIME', 'time', [p('IN1', 'TIME'), p('IN2', 'ANY_NUM')], p('OUT', 'TIME'), 'OUT := IN1 / IN2, a TIME divided by a number (to whole ms; IN2 = 0 turns ENO OFF).'),
 ];
 
-/** Every A_TO_B conversion between the supported elementary types. */
-export const CONVERSION_SIGNATURES: readonly BlockSignature[] = ELEMENTARY_TYPES.flatMap((from) =>
-  ELEMENTARY_TYPES.filter((to) => to !== from).map((to) =>
-    fn(`${from}_TO_${to}`, 'conversion', [p('IN', from)], p('OUT', to), `Converts ${from} to ${to} (out of range turns ENO OFF).`),
+const str = (name: string, inputs: PinSignature[], out: PinSignature, d: string, extensible?: BlockSignature['extensible']) =>
+  fn(name, 'string', inputs, out, d, extensible);
+
+/**
+ * The character string functions (IEC 61131-3 table 29), positions counted from 1, with MATIEC's
+ * behaviour on lengths and positions out of range (engine/library/strings.ts).
+ */
+export const STRING_FUNCTION_SIGNATURES: readonly BlockSignature[] = [
+  str('LEN', [p('IN', 'ANY_STRING')], p('OUT', 'ANY_INT'), 'Length of IN in characters.'),
+  str('LEFT', [p('IN', 'ANY_STRING', true), p('L', 'ANY_INT')], p('OUT', 'ANY_STRING', true), 'The first L characters of IN (L < 0 turns ENO OFF).'),
+  str('RIGHT', [p('IN', 'ANY_STRING', true), p('L', 'ANY_INT')], p('OUT', 'ANY_STRING', true), 'The last L characters of IN (L < 0 turns ENO OFF).'),
+  str(
+    'MID',
+    [p('IN', 'ANY_STRING', true), p('L', 'ANY_INT'), p('P', 'ANY_INT')],
+    p('OUT', 'ANY_STRING', true),
+    'L characters of IN from position P (1 = first; P beyond the end gives an empty string).',
+  ),
+  str('CONCAT', [p('IN1', 'ANY_STRING', true), p('IN2', 'ANY_STRING', true)], p('OUT', 'ANY_STRING', true), 'IN1, IN2, ... joined (cut at 126 characters).', ext('IN', 1)),
+  str(
+    'INSERT',
+    [p('IN1', 'ANY_STRING', true), p('IN2', 'ANY_STRING', true), p('P', 'ANY_INT')],
+    p('OUT', 'ANY_STRING', true),
+    'IN2 inserted into IN1 after its first P characters.',
+  ),
+  str(
+    'DELETE',
+    [p('IN', 'ANY_STRING', true), p('L', 'ANY_INT'), p('P', 'ANY_INT')],
+    p('OUT', 'ANY_STRING', true),
+    'IN without the L characters from position P (1 = first).',
+  ),
+  str(
+    'REPLACE',
+    [p('IN1', 'ANY_STRING', true), p('IN2', 'ANY_STRING', true), p('L', 'ANY_INT'), p('P', 'ANY_INT')],
+    p('OUT', 'ANY_STRING', true),
+    'IN1 with the L characters from position P replaced by IN2.',
+  ),
+  str('FIND', [p('IN1', 'ANY_STRING', true), p('IN2', 'ANY_STRING', true)], p('OUT', 'ANY_INT'), 'Position of the first IN2 in IN1 (1 = first; 0 when there is none).'),
+];
+
+/**
+ * Every A_TO_B conversion between the supported elementary types. WSTRING has none: MATIEC's
+ * library converts only STRING (its WSTRING has no C type).
+ */
+export const CONVERSION_SIGNATURES: readonly BlockSignature[] = ELEMENTARY_TYPES.filter((t) => t !== 'WSTRING').flatMap((from) =>
+  ELEMENTARY_TYPES.filter((to) => to !== from && to !== 'WSTRING').map((to) =>
+    fn(`${from}_TO_${to}`, 'conversion', [p('IN', from)], p('OUT', to), conversionText(from, to)),
   ),
 );
+
+function conversionText(from: ElementaryType, to: ElementaryType): string {
+  if (to === 'STRING') return `Converts ${from} to its text, as MATIEC writes it.`;
+  if (from === 'STRING') return `Reads a ${to} from the text, as MATIEC reads it.`;
+  return `Converts ${from} to ${to} (out of range turns ENO OFF).`;
+}
 
 export const FUNCTION_SIGNATURES: readonly BlockSignature[] = [
   ...FUNCTION_SIGNATURES_BASE,
   ...MORE_FUNCTION_SIGNATURES,
+  ...STRING_FUNCTION_SIGNATURES,
   ...CONVERSION_SIGNATURES,
 ];
 

@@ -17,6 +17,8 @@ export const ELEMENTARY_TYPES = [
   'REAL',
   'LREAL',
   'TIME',
+  'STRING',
+  'WSTRING',
 ] as const;
 export type ElementaryType = (typeof ELEMENTARY_TYPES)[number];
 
@@ -26,6 +28,13 @@ export const isElementaryType = (t: string): t is ElementaryType =>
 export type IntegerType = 'SINT' | 'INT' | 'DINT' | 'LINT' | 'USINT' | 'UINT' | 'UDINT' | 'ULINT';
 export type BitStringType = 'BOOL' | 'BYTE' | 'WORD' | 'DWORD' | 'LWORD';
 export type RealType = 'REAL' | 'LREAL';
+export type StringType = 'STRING' | 'WSTRING';
+
+/**
+ * Most characters a STRING or WSTRING holds: MATIEC's STR_MAX_LEN (lib/C/iec_types.h), the body of
+ * its C STRING. Longer results are cut there, as MATIEC's string functions cut them.
+ */
+export const STRING_MAX_LEN = 126;
 
 /** Bit width and signedness of integer and bit-string types. */
 export const INT_INFO: Record<IntegerType | Exclude<BitStringType, 'BOOL'>, { bits: 8 | 16 | 32 | 64; signed: boolean }> = {
@@ -44,7 +53,15 @@ export const INT_INFO: Record<IntegerType | Exclude<BitStringType, 'BOOL'>, { bi
 };
 
 /** Generic type classes used in block signatures (IEC 61131-3 table 11). */
-export type GenericType = 'ANY' | 'ANY_ELEMENTARY' | 'ANY_MAGNITUDE' | 'ANY_NUM' | 'ANY_INT' | 'ANY_REAL' | 'ANY_BIT';
+export type GenericType =
+  | 'ANY'
+  | 'ANY_ELEMENTARY'
+  | 'ANY_MAGNITUDE'
+  | 'ANY_NUM'
+  | 'ANY_INT'
+  | 'ANY_REAL'
+  | 'ANY_BIT'
+  | 'ANY_STRING';
 export type PinType = ElementaryType | GenericType;
 
 const INTS: readonly ElementaryType[] = ['SINT', 'INT', 'DINT', 'LINT', 'USINT', 'UINT', 'UDINT', 'ULINT'];
@@ -60,15 +77,17 @@ export const GENERIC_MEMBERS: Record<GenericType, readonly ElementaryType[]> = {
   ANY_INT: INTS,
   ANY_REAL: REALS,
   ANY_BIT: BITS,
+  ANY_STRING: ['STRING', 'WSTRING'],
 };
 
 /**
  * Value representation shared by engine, simulator, CLI and UI:
  * BOOL -> boolean; 64-bit integer and bit-string types (LINT, ULINT, LWORD) -> bigint;
  * other integers and bit strings -> number; REAL/LREAL -> number (REAL held rounded to 32 bits);
- * TIME -> number of milliseconds (signed).
+ * TIME -> number of milliseconds (signed); STRING -> a JavaScript string of single-byte characters
+ * (codes 0-255, one character per byte); WSTRING -> a JavaScript string (UTF-16 code units).
  */
-export type Value = boolean | number | bigint;
+export type Value = boolean | number | bigint | string;
 
 /** IEC directly represented variable: %IX0.0, %QX1.7, %MX2.3, %IW0, %QW3, %MW10, %ID.., %MD... */
 export const LOCATION_RE = /^%([IQM])([XBWDL]?)(\d+)(?:\.(\d+))?$/;

@@ -14,13 +14,17 @@ const LIST_OF: Record<VarClass, string> = {
   temp: 'tempVars',
 };
 
-/** `<BOOL/>`, `<string/>`, `<derived name="TON"/>`. */
+const SIZED_STRING = /^(W?STRING)\s*[[(]\s*(\d+)\s*[\])]$/;
+
+/** `<BOOL/>`, `<string/>`, `<string length="20"/>` (STRING[20]), `<derived name="TON"/>`. */
 export function writeType(w: XmlWriter, type: string): void {
   const t = type.trim();
   const upper = t.toUpperCase();
-  if (isElementaryType(upper)) w.empty(upper);
-  else if (upper === 'STRING') w.empty('string');
+  const sized = SIZED_STRING.exec(upper);
+  if (upper === 'STRING') w.empty('string');
   else if (upper === 'WSTRING') w.empty('wstring');
+  else if (sized) w.empty(sized[1]!.toLowerCase(), { length: sized[2] });
+  else if (isElementaryType(upper)) w.empty(upper);
   else if (['DATE', 'TIME_OF_DAY', 'TOD', 'DATE_AND_TIME', 'DT', 'LTIME', 'CHAR', 'WCHAR'].includes(upper))
     w.empty(upper === 'TOD' ? 'TOD' : upper === 'DT' ? 'DT' : upper);
   else w.empty('derived', { name: t });

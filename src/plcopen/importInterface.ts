@@ -23,7 +23,8 @@ export function readType(typeEl: XmlElement | undefined, warn: Warn): string {
   const t = typeEl?.children[0];
   if (!t) return 'BOOL';
   if (t.name === 'derived') return t.attrs.name ?? 'BOOL';
-  if (TYPE_ALIASES[t.name]) return TYPE_ALIASES[t.name]!;
+  // <string length="20"/>: STRING[20] (the declared length; values hold up to 126 characters).
+  if (TYPE_ALIASES[t.name]) return t.attrs.length ? `${TYPE_ALIASES[t.name]!}[${t.attrs.length}]` : TYPE_ALIASES[t.name]!;
   if (
     t.name === 'array' ||
     t.name === 'struct' ||

@@ -353,7 +353,7 @@ describe('the variable table', () => {
     ['LD-E12', 'a malformed location', [...vars('A BOOL', 'X BOOL', 'Q BOOL %QX0.9')]],
     ['LD-E13', 'a location that does not hold the type', [...vars('A BOOL', 'X BOOL', 'Q INT %QX0.1')]],
     ['LD-E14', 'a bad initial value', [...vars('A BOOL', 'X BOOL', 'N INT := 70000')]],
-    ['LD-E15', 'an unknown type', [...vars('A BOOL', 'X BOOL', 'N STRING')]],
+    ['LD-E15', 'an unknown type', [...vars('A BOOL', 'X BOOL', 'N MYTYPE')]],
     ['LD-W02', 'two variables at one location', [...vars('A BOOL %IX0.0', 'X BOOL', 'Alias BOOL %IX0.0')]],
   ] as const)('%s %s (network -1)', (rule, _what, specs) => {
     expect(table(...specs)).toContain(`${rule} -1`);

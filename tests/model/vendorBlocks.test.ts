@@ -90,9 +90,9 @@ describe('OpenPLC vendor blocks', () => {
   });
 
   test('sakunamary i2c_test: blocks no shipped library defines become external blocks with the pins the file wires', () => {
-    // I2C_AHT20 and I2C_OLED come from a fork's library; REAL_TO_STRING converts to STRING, which Rungsmith lacks.
+    // I2C_AHT20 and I2C_OLED come from a fork's library; REAL_TO_STRING is a standard conversion.
     const calls = foreignCalls('sakunamary__i2c_test.xml');
-    expect(calls.map((c) => c.typeName).sort()).toEqual(['I2C_AHT20', 'I2C_OLED', 'REAL_TO_STRING']);
+    expect(calls.map((c) => c.typeName).sort()).toEqual(['I2C_AHT20', 'I2C_OLED']);
     expect(vendorBlock('I2C_AHT20')).toBeUndefined();
     const externalBlocks: ExternalBlock[] = calls.map((c) => ({
       name: c.typeName,
@@ -108,28 +108,25 @@ describe('OpenPLC vendor blocks', () => {
     expect(pinNames(lib.signature('I2C_OLED')!.inputs)).toEqual(['LINE1', 'LINE2', 'LINE3', 'LINE4']);
     expect(lib.isExternal('i2c_oled')).toBe(true);
     expect(externalInfo(lib.userPou('I2C_OLED'))).toEqual({ origin: 'project' });
-    const toString = lib.signature('REAL_TO_STRING')!;
-    expect(toString.kind).toBe('function');
-    expect(pinNames(toString.inputs)).toEqual(['IN']);
-    expect(pinNames(toString.outputs)).toEqual(['OUT']);
-    expect(boxLayout({ blockType: 'REAL_TO_STRING' }, lib)!.outputs.map((p) => p.name)).toEqual(['ENO', 'OUT']);
+    expect(lib.isExternal('REAL_TO_STRING')).toBe(false);
+    expect(lib.signature('REAL_TO_STRING')!.category).toBe('conversion');
     // The OpenPLC library's own I2C block is still there.
     expect(lib.signature('I2C_THREMO_4_OUT')?.outputs.length).toBe(4);
   });
 
-  test('an MQTT block: its interface as OpenPLC declares it, STRING pins kept as declared and shown as ANY', () => {
+  test('an MQTT block: its interface as OpenPLC declares it, STRING pins typed STRING', () => {
     const lib = blockLibrary(newProject('P'));
     const send = lib.signature('mqtt_send')!;
     expect(send.inputs.map((p) => `${p.name}:${declaredPinType(p)}:${p.type}`)).toEqual([
       'SEND:BOOL:BOOL',
-      'TOPIC:STRING:ANY',
-      'MESSAGE:STRING:ANY',
+      'TOPIC:STRING:STRING',
+      'MESSAGE:STRING:STRING',
     ]);
     expect(send.outputs.map((p) => `${p.name}:${p.type}`)).toEqual(['SUCCESS:BOOL']);
     expect(send.description).toMatch(/^Publishes MESSAGE to TOPIC/);
     expect(send.description).toContain('External block (OpenPLC MQTT library)');
     expect(send.description).toContain('outputs hold their initial values');
-    expect(send.description).toContain('TOPIC (STRING), MESSAGE (STRING)');
+    expect(send.description).not.toContain('show as ANY');
     expect(lib.signature('P1_08N')!.description).not.toContain('ANY');
     // Drawn like any FB: power flow through SEND and SUCCESS, or EN/ENO on request.
     expect(boxLayout({ blockType: 'MQTT_SEND' }, lib)!.inputs.map((p) => p.name)).toEqual(['SEND', 'TOPIC', 'MESSAGE']);

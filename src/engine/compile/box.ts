@@ -432,6 +432,8 @@ export function lowerOutput(
 }
 
 export function initialText(type: string): string {
+  if (type === 'STRING') return "''";
+  if (type === 'WSTRING') return '""';
   return type === 'BOOL'
     ? 'FALSE'
     : type === 'TIME'

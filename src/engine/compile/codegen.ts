@@ -14,6 +14,7 @@ import { chartRanges } from '../sfc/ir';
 import { emitChart } from '../sfc/codegen';
 import { emitSt } from '../st/emit';
 import { singleWriterNets } from './nets';
+import { isBigIntType } from '../values/types';
 import { storeOf, type Access, type Store } from './symbols';
 
 /** Power-flow nets packed per 32-bit word of the snapshot array W. */
@@ -266,13 +267,13 @@ class Emitter {
           return this.constant(a.value);
       }
     }
-    return storeOf(from) === 'n' && storeOf(to) === 'g' ? `BigInt(${expr})` : expr;
+    return storeOf(from) === 'n' && isBigIntType(to) ? `BigInt(${expr})` : expr;
   }
 
   /** Statement writing a value expression of type `from` to an access. */
   writeValue(a: Access, x: string, from: ElementaryType): string {
     if (a.type === 'BOOL') return this.writeBit(a, `(${x}) ? 1 : 0`);
-    const v = storeOf(from) === 'n' && storeOf(a.type) === 'g' ? `BigInt(${x})` : x;
+    const v = storeOf(from) === 'n' && isBigIntType(a.type) ? `BigInt(${x})` : x;
     switch (a.kind) {
       case 'var':
         return `${a.v.store}[${this.w(a.v.store, a.v.slot)}] = ${v};`;

@@ -5,6 +5,7 @@ import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import {
   IDENTIFIER_RE,
   INT_INFO,
+  STRING_MAX_LEN,
   isElementaryType,
   locationAdmits,
   parseLocation,
@@ -14,13 +15,36 @@ import {
 } from '../../model/iecTypes';
 import type { Pou, Project, Variable } from '../../model/project';
 import { parseLiteral } from '../values/literals';
-import { defaultValue, isBigIntType } from '../values/types';
+import { defaultValue, isBigIntType, isStringType } from '../values/types';
 import type { Reporter } from './report';
 
-/** b: BOOL bytes (Uint8Array); n: other numbers (Float64Array); g: 64-bit integers (bigint[]). */
+/**
+ * b: BOOL bytes (Uint8Array); n: other numbers (Float64Array); g: values held as JavaScript objects
+ * in a plain array: 64-bit integers (bigint) and STRING/WSTRING (string).
+ */
 export type Store = 'b' | 'n' | 'g';
 
-export const storeOf = (t: ElementaryType): Store => (t === 'BOOL' ? 'b' : isBigIntType(t) ? 'g' : 'n');
+export const storeOf = (t: ElementaryType): Store =>
+  t === 'BOOL' ? 'b' : isBigIntType(t) || isStringType(t) ? 'g' : 'n';
+
+/**
+ * `STRING[20]` or `STRING(20)` (a declared length, 1 to STRING_MAX_LEN): the type it names. As in
+ * MATIEC, whose C STRING always has room for STRING_MAX_LEN characters, the length is kept in the
+ * declaration (and exported) but does not cut the values.
+ */
+const SIZED_STRING = /^(W?STRING)\s*[[(]\s*(\d+)\s*[\])]$/;
+
+/** The elementary type a declared type text names (`STRING[20]` names STRING), or undefined. */
+export function declaredElementaryType(text: string): { type: ElementaryType } | { error: string } | undefined {
+  const upper = text.trim().toUpperCase();
+  if (isElementaryType(upper)) return { type: upper };
+  const m = SIZED_STRING.exec(upper);
+  if (!m) return undefined;
+  const length = Number(m[2]);
+  if (length < 1 || length > STRING_MAX_LEN)
+    return { error: `the length ${length} of ${m[1]} is out of range: a ${m[1]} holds 1 to ${STRING_MAX_LEN} characters` };
+  return { type: m[1] as ElementaryType };
+}
 
 export interface VarSymbol {
   readonly kind: 'var';
@@ -170,8 +194,8 @@ export class SymbolTable {
       return;
     }
     if (existing) return; // a POU variable hides the global of the same name
-    const type = decl.type.toUpperCase();
-    const user = this.library.userPou(type);
+    const typeText = decl.type.toUpperCase();
+    const user = this.library.userPou(typeText);
     if (user && user.kind === 'FUNCTION_BLOCK') {
       if (decl.location) r.error('LD-E13', `${what} is a ${user.name} instance and cannot have a location`);
       if (decl.initial) r.error('LD-E14', `${what} is a ${user.name} instance and cannot have an initial value`);
@@ -181,13 +205,13 @@ export class SymbolTable {
       else this.byName.set(key, u);
       return;
     }
-    if (this.library.isFbType(type)) {
-      if (decl.location) r.error('LD-E13', `${what} is a ${type} instance and cannot have a location`);
-      if (decl.initial) r.error('LD-E14', `${what} is a ${type} instance and cannot have an initial value`);
+    if (this.library.isFbType(typeText)) {
+      if (decl.location) r.error('LD-E13', `${what} is a ${typeText} instance and cannot have a location`);
+      if (decl.initial) r.error('LD-E14', `${what} is a ${typeText} instance and cannot have an initial value`);
       const fb: FbSymbol = {
         kind: 'fb',
         name: this.prefix + decl.name,
-        type,
+        type: typeText,
         index: this.fbs.length,
         retain: decl.retain,
       };
@@ -196,13 +220,19 @@ export class SymbolTable {
       else this.byName.set(key, fb);
       return;
     }
-    if (!isElementaryType(type)) {
+    const elementary = declaredElementaryType(typeText);
+    if (elementary && 'error' in elementary) {
+      r.error('LD-E15', `${what}: ${elementary.error}`);
+      return;
+    }
+    if (!elementary) {
       r.error(
         'LD-E15',
-        `${what} has the unknown type "${decl.type}"; use an elementary type (BOOL, INT, TIME, ...) or a standard block (TON, CTU, ...)`,
+        `${what} has the unknown type "${decl.type}"; use an elementary type (BOOL, INT, TIME, STRING, ...) or a standard block (TON, CTU, ...)`,
       );
       return;
     }
+    const type = elementary.type;
     let location: ParsedLocation | undefined;
     if (decl.location !== undefined && decl.location.trim() !== '') {
       location = parseLocation(decl.location);
@@ -506,7 +536,8 @@ function checkExternal(table: SymbolTable, project: Project, pou: Pou, decl: Var
   }
   const sym = table.lookup(key);
   if (!sym || sym.kind === 'ref') return; // the global's own declaration is in error (reported with the globals)
-  const type = decl.type.trim().toUpperCase();
+  const declared = declaredElementaryType(decl.type);
+  const type = declared && 'type' in declared ? declared.type : decl.type.trim().toUpperCase();
   if (type !== sym.type.toUpperCase())
     r.error('LD-E16', `${what} is declared ${type} but the global variable "${global.name}" is ${sym.type}`);
 }

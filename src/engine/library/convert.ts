@@ -12,10 +12,12 @@
 // - LREAL_TO_REAL rounds to 32 bits; a finite value too large for REAL is an error in `iec`.
 // - TIME counts milliseconds in `iec` and seconds in `openplc` (MATIEC's timespec tv_sec; its
 //   TIME_TO_REAL keeps the fraction of a second, REAL_TO_TIME reads one).
+// - To and from STRING: strings.ts.
 import { INT_INFO, type ElementaryType, type Value } from '../../model/iecTypes';
 import type { Profile } from '../../model/project';
 import { isBigIntType, isBitStringType, isRealType, isSizedType, normalize, typeRange } from '../values/types';
 import { timeConversionUnitMs } from './profiles';
+import { stringConversion } from './strings';
 import { num, type FnContext, type FnImpl1 } from './fnTypes';
 
 /** Round to nearest, ties to even. */
@@ -50,6 +52,7 @@ function toSized(to: ElementaryType, transfer: boolean, strict: boolean): (ctx: 
 }
 
 export function conversion(from: ElementaryType, to: ElementaryType, profile: Profile): FnImpl1 {
+  if (from === 'STRING' || to === 'STRING') return stringConversion(from, to, profile);
   const strict = profile === 'iec';
   const unit = timeConversionUnitMs(profile);
   if (to === 'BOOL') return (_c, a) => !isZero(a);

@@ -25,5 +25,8 @@ export interface ResolvedFunction {
 }
 
 /** Accepts a number where a bigint is expected, so a caller that skipped widening INT -> LINT still computes right. */
-export const big = (v: Value): bigint => (typeof v === 'bigint' ? v : BigInt(typeof v === 'boolean' ? (v ? 1 : 0) : Math.trunc(v)));
-export const num = (v: Value): number => (typeof v === 'number' ? v : typeof v === 'bigint' ? Number(v) : v ? 1 : 0);
+export const big = (v: Value): bigint =>
+  typeof v === 'bigint' ? v : BigInt(typeof v === 'boolean' ? (v ? 1 : 0) : typeof v === 'string' ? 0 : Math.trunc(v));
+/** A number (a string, which no numeric function is given, reads as NaN). */
+export const num = (v: Value): number =>
+  typeof v === 'number' ? v : typeof v === 'bigint' ? Number(v) : typeof v === 'string' ? Number.NaN : v ? 1 : 0;

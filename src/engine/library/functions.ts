@@ -5,11 +5,11 @@
 // argument (an untyped literal: INT for ANY_INT, LREAL for ANY_NUM, so EXPT(x, 0.5) reads 0.5), the
 // output (TRUNC's ANY_INT) the type of the variable OUT is written to, else DINT. Behaviour per
 // function lives in arithmetic.ts, bitwise.ts, select.ts, convert.ts, numeric.ts, bcd.ts,
-// timeFunctions.ts.
+// timeFunctions.ts, strings.ts (string functions, and comparisons, MAX, MIN, LIMIT of strings).
 import { blockSignature, conversionTypes, type BlockSignature, type PinSignature } from '../../model/blocks';
 import { GENERIC_MEMBERS, isElementaryType, type ElementaryType, type GenericType, type Value } from '../../model/iecTypes';
 import type { Profile } from '../../model/project';
-import { canWiden, commonType, isSignedType } from '../values/types';
+import { canWiden, commonType, isSignedType, isStringType } from '../values/types';
 import { absolute, arithmetic, negate, type ArithOp } from './arithmetic';
 import { complement, logic, shift, type LogicOp, type ShiftOp } from './bitwise';
 import { bcdToInt, intToBcd } from './bcd';
@@ -18,6 +18,7 @@ import { isRealFunction, power, realFunction } from './numeric';
 import { isTimeFunction, timeFunction } from './timeFunctions';
 import type { FnContext, FnImpl, FnImpl1, FnImpl2, ResolvedFunction } from './fnTypes';
 import { compare, extreme, limit, multiplex, select, type CompareOp } from './select';
+import { isStringComparison, isStringFunction, stringComparison, stringFunction } from './strings';
 
 export type { FnContext, ResolvedFunction } from './fnTypes';
 
@@ -63,6 +64,15 @@ const VERB: Record<string, string> = {
   ATAN: 'take the arc tangent of',
   EXPT: 'raise',
   TRUNC: 'truncate',
+  LEN: 'measure',
+  LEFT: 'cut',
+  RIGHT: 'cut',
+  MID: 'cut',
+  CONCAT: 'join',
+  INSERT: 'insert into',
+  DELETE: 'delete from',
+  REPLACE: 'replace in',
+  FIND: 'search',
 };
 
 /** Type an untyped literal takes on a generic input that is not poly (MUX's K, EXPT's IN2). */
@@ -80,6 +90,7 @@ const GENERIC_WORDS: Partial<Record<GenericType, string>> = {
   ANY_INT: 'an integer',
   ANY_REAL: 'a REAL or LREAL',
   ANY_BIT: 'a bit string',
+  ANY_STRING: 'a STRING or WSTRING',
 };
 
 /** Type an untyped literal takes when neither a typed argument nor a hint says more. */
@@ -91,6 +102,7 @@ const LITERAL_DEFAULT: Record<GenericType, ElementaryType> = {
   ANY_INT: 'INT',
   ANY_REAL: 'REAL',
   ANY_BIT: 'BOOL',
+  ANY_STRING: 'STRING',
 };
 
 const admits = (pinType: PinSignature['type'], t: ElementaryType): boolean =>
@@ -146,6 +158,8 @@ function implement(
 ): Impls {
   const one = (f: FnImpl1): Impls => ({ impl: fromImpl1(f), impl1: f });
   const two = (f: FnImpl2, extensible: boolean): Impls => ({ impl: extensible ? fold(f) : fromImpl2(f), impl2: f });
+  if (isStringFunction(name)) return stringFunction(name, outType, profile);
+  if (isStringType(t) && isStringComparison(name)) return stringComparison(name, t, argTypes.length, profile);
   const conv = conversionTypes(name);
   if (conv) return one(conversion(conv.from, conv.to, profile));
   if (isRealFunction(name)) return one(realFunction(name, t));

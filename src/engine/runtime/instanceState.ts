@@ -45,8 +45,8 @@ function ownVars(u: UfbSymbol): VarSymbol[] {
   return out;
 }
 
-function saveVars(u: UfbSymbol, mem: Memory): Record<string, number | boolean> {
-  const out: Record<string, number | boolean> = {};
+function saveVars(u: UfbSymbol, mem: Memory): Record<string, number | boolean | string> {
+  const out: Record<string, number | boolean | string> = {};
   for (const v of ownVars(u)) {
     const value = mem.load(v);
     const key = v.name.slice(u.name.length + 1).toUpperCase();
@@ -58,7 +58,7 @@ function saveVars(u: UfbSymbol, mem: Memory): Record<string, number | boolean> {
   return out;
 }
 
-function loadVars(u: UfbSymbol, mem: Memory, fields: Readonly<Record<string, number | boolean>>): void {
+function loadVars(u: UfbSymbol, mem: Memory, fields: Readonly<Record<string, number | boolean | string>>): void {
   for (const v of ownVars(u)) {
     const key = v.name.slice(u.name.length + 1).toUpperCase();
     const plain = fields[key];
@@ -68,6 +68,7 @@ function loadVars(u: UfbSymbol, mem: Memory, fields: Readonly<Record<string, num
       mem.store(v, BigInt.asIntN(64, (BigInt(hi) << 32n) + BigInt(lo)));
     else if (v.store === 'b' && typeof plain === 'boolean') mem.store(v, plain);
     else if (v.store === 'n' && typeof plain === 'number') mem.store(v, plain);
+    else if (v.store === 'g' && typeof plain === 'string') mem.store(v, plain);
   }
 }
 
@@ -130,7 +131,8 @@ export function importMemory(program: CompiledProgram, mem: Memory, state: PlcSt
     const id = identity(item);
     const user = users.get(id);
     if (item.kind === 'fb' && user) loadVars(user, mem, fbFields.get(id)!);
-    else if (item.kind === 'fb') mem.fbs[fbIndex.get(id)!]!.loadState(fbFields.get(id)!, timeBase);
+    // A standard FB's fields are numbers and booleans (its saveState gave them).
+    else if (item.kind === 'fb') mem.fbs[fbIndex.get(id)!]!.loadState(fbFields.get(id)! as Readonly<Record<string, number | boolean>>, timeBase);
     else mem.edges[edgeIndex.get(id)!] = edgeMemory.get(id) ? 1 : 0;
   }
   return plan;

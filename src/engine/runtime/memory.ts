@@ -3,13 +3,14 @@
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { FbInstance } from '../library/fbs';
 import { createFb } from '../library/fbs';
-import { defaultValue, isValueOfType, normalize } from '../values/types';
+import { defaultValue, isSingleByte, isStringType, isValueOfType, normalize } from '../values/types';
 import type { CompiledProgram } from '../compile/program';
 import type { Access, VarSymbol } from '../compile/symbols';
 
 export class Memory {
   readonly b: Uint8Array;
   readonly n: Float64Array;
+  /** 64-bit integers and STRING/WSTRING values (symbols.ts Store 'g'); `load` reads either. */
   readonly g: bigint[];
   readonly fbs: FbInstance[];
   readonly edges: Uint8Array;
@@ -39,6 +40,7 @@ export class Memory {
     this.edges.fill(0);
     for (const d of this.program.dataSlots) {
       const v = defaultValue(d.type);
+      // g holds bigints and strings (symbols.ts Store).
       if (d.store === 'g') this.g[d.slot] = v as bigint;
       else this.n[d.slot] = v as number;
     }
@@ -51,7 +53,7 @@ export class Memory {
       case 'n':
         return this.n[v.slot]!;
       case 'g':
-        return this.g[v.slot]!;
+        return this.g[v.slot] as Value;
     }
   }
 
@@ -112,9 +114,17 @@ export class Memory {
 
 /**
  * Brings a value given by a user or a tool into a type's representation: BOOL takes booleans
- * (or 0/1), numbers and bigints are wrapped or rounded like a PLC store. Throws on a wrong kind.
+ * (or 0/1), numbers and bigints are wrapped or rounded like a PLC store, strings are cut at
+ * STRING_MAX_LEN characters. Throws on a wrong kind.
  */
 export function coerce(type: ElementaryType, value: Value, what: string): Value {
+  if (isStringType(type)) {
+    if (typeof value !== 'string') throw new Error(`${what} is ${type}; ${String(value)} is not text (give a string)`);
+    if (type === 'STRING' && !isSingleByte(value))
+      throw new Error(`${what} is STRING; it holds single-byte characters (codes 0-255), not ${JSON.stringify(value)}`);
+    return normalize(type, value);
+  }
+  if (typeof value === 'string') throw new Error(`${what} is ${type}; the text ${JSON.stringify(value)} is not a ${type} value`);
   if (type === 'BOOL') {
     if (typeof value === 'boolean') return value;
     if (value === 0 || value === 1 || value === 0n || value === 1n) return value === 1 || value === 1n;

@@ -8,8 +8,22 @@
 //   to it (canWiden), else it is refused.
 // - Based literals (16#FF) have no sign and must fit the type as numbers: SINT#16#FF is refused.
 // - TIME literals are held in whole milliseconds (finer parts rounded to the nearest ms).
+// - 'abc' is a STRING and "abc" a WSTRING (stringText.ts); neither converts to the other or to a
+//   number implicitly.
 import { ELEMENTARY_TYPES, isElementaryType, type ElementaryType, type Value } from '../../model/iecTypes';
-import { canWiden, isRealType, isSizedType, normalize, typeRange, widen, type SizedType } from './types';
+import {
+  canWiden,
+  hasControlCharacter,
+  isRealType,
+  isSingleByte,
+  isSizedType,
+  isStringType,
+  normalize,
+  typeRange,
+  widen,
+  type SizedType,
+} from './types';
+import { formatStringLiteral, looksLikeStringLiteral, parseStringLiteral } from './stringText';
 import { formatTime, parseTimeBody } from './time';
 import { realDisplay, shortestLreal, shortestReal } from './realText';
 
@@ -21,6 +35,7 @@ type Raw =
   | { kind: 'int'; value: bigint }
   | { kind: 'real'; value: number }
   | { kind: 'time'; ms: number }
+  | { kind: 'string'; value: string; wide: boolean }
   | { kind: 'error'; message: string };
 
 const DECIMAL = /^[+-]?\d(?:_?\d)*$/;
@@ -28,7 +43,7 @@ const BASED = /^(2|8|16)#([0-9A-Fa-f](?:_?[0-9A-Fa-f])*)$/;
 const REAL_TEXT = /^[+-]?\d(?:_?\d)*(?:\.\d(?:_?\d)*)?(?:[eE][+-]?\d(?:_?\d)*)?$/;
 const BASE_DIGITS: Record<string, RegExp> = { '2': /^[01_]+$/, '8': /^[0-7_]+$/, '16': /^[0-9A-Fa-f_]+$/ };
 const TIME_PREFIX = /^(?:T|TIME)#/i;
-const UNSUPPORTED_PREFIX = /^(LTIME|LT|TOD|TIME_OF_DAY|D|DATE|DT|DATE_AND_TIME|STRING|WSTRING)#/i;
+const UNSUPPORTED_PREFIX = /^(LTIME|LT|TOD|TIME_OF_DAY|D|DATE|DT|DATE_AND_TIME)#/i;
 
 function parseInteger(text: string): Raw | undefined {
   if (DECIMAL.test(text)) return { kind: 'int', value: BigInt(text.replaceAll('_', '')) };
@@ -45,6 +60,10 @@ function parseInteger(text: string): Raw | undefined {
 
 /** Reads the literal's own form, before any type is applied. */
 function parseRaw(text: string): Raw {
+  if (looksLikeStringLiteral(text)) {
+    const s = parseStringLiteral(text);
+    return s.ok ? { kind: 'string', value: s.value, wide: s.wide } : { kind: 'error', message: s.message };
+  }
   const upper = text.toUpperCase();
   if (upper === 'TRUE') return { kind: 'bool', value: true };
   if (upper === 'FALSE') return { kind: 'bool', value: false };
@@ -55,7 +74,10 @@ function parseRaw(text: string): Raw {
   const int = parseInteger(text);
   if (int) return int;
   if (REAL_TEXT.test(text)) return { kind: 'real', value: Number(text.replaceAll('_', '')) };
-  return { kind: 'error', message: `"${text}" is not a value: write TRUE/FALSE, a number (42, -7, 16#FF, 1.5), or a TIME (T#1s500ms)` };
+  return {
+    kind: 'error',
+    message: `"${text}" is not a value: write TRUE/FALSE, a number (42, -7, 16#FF, 1.5), a TIME (T#1s500ms) or a STRING ('text')`,
+  };
 }
 
 const describe = (raw: Raw, text: string): string => {
@@ -68,6 +90,8 @@ const describe = (raw: Raw, text: string): string => {
       return `${text} is a real number`;
     case 'time':
       return `${text} is a TIME`;
+    case 'string':
+      return `${text} is a ${raw.wide ? 'WSTRING' : 'STRING'}`;
     case 'error':
       return raw.message;
   }
@@ -81,6 +105,14 @@ const rangeText = (t: SizedType): string => {
 /** Gives an untyped literal the type `type`, or says in plain words why it cannot have it. */
 function applyType(raw: Raw, type: ElementaryType, text: string): LiteralResult {
   if (raw.kind === 'error') return { ok: false, message: raw.message };
+  if (isStringType(type)) {
+    const wide = type === 'WSTRING';
+    if (raw.kind === 'string' && raw.wide === wide) return { ok: true, value: raw.value, type };
+    if (raw.kind === 'string')
+      return { ok: false, message: `${text} is a ${raw.wide ? 'WSTRING' : 'STRING'}, not a ${type} (write a ${type} between ${wide ? 'double quotes: "abc"' : "single quotes: 'abc'"})` };
+    return { ok: false, message: `${describe(raw, text)}, not a ${type} (write a ${type} between ${wide ? 'double quotes: "abc"' : "single quotes: 'abc'"})` };
+  }
+  if (raw.kind === 'string') return { ok: false, message: `${describe(raw, text)}, not ${article(type)} ${type}` };
   if (type === 'BOOL') {
     if (raw.kind === 'bool') return { ok: true, value: raw.value, type };
     if (raw.kind === 'int' && (raw.value === 0n || raw.value === 1n)) return { ok: true, value: raw.value === 1n, type };
@@ -122,6 +154,8 @@ function naturalType(raw: Raw): ElementaryType | undefined {
       return 'TIME';
     case 'real':
       return 'REAL';
+    case 'string':
+      return raw.wide ? 'WSTRING' : 'STRING';
     case 'int':
       return (['INT', 'DINT', 'LINT', 'ULINT'] as const).find((t) => raw.value >= typeRange(t).min && raw.value <= typeRange(t).max);
     case 'error':
@@ -131,7 +165,7 @@ function naturalType(raw: Raw): ElementaryType | undefined {
 
 /**
  * Parses an IEC literal: TRUE, 0, 1, -5, 1_000, 16#FF, 8#17, 2#1010_1010, INT#-5, UINT#16#FF, BOOL#1,
- * 1.5, -2.0E3, REAL#1.5, T#1s500ms, TIME#-2h, t#1.5s.
+ * 1.5, -2.0E3, REAL#1.5, T#1s500ms, TIME#-2h, t#1.5s, 'text$N', "wide", STRING#'abc'.
  */
 export function parseLiteral(text: string, expected?: ElementaryType): LiteralResult {
   const trimmed = text.trim();
@@ -170,8 +204,12 @@ export function isUntypedLiteral(text: string): boolean {
   return (raw.kind === 'int' || raw.kind === 'real') && !/^[A-Za-z_]/.test(t);
 }
 
-/** Text for the user: TRUE/FALSE, decimal integers, REAL in the shortest form that reads back exactly (2.0, 0.1), T#1s500ms. */
+/**
+ * Text for the user: TRUE/FALSE, decimal integers, REAL in the shortest form that reads back exactly
+ * (2.0, 0.1), T#1s500ms, a STRING as its literal ('it$'s').
+ */
 export function formatValue(type: ElementaryType, v: Value): string {
+  if (isStringType(type)) return formatStringLiteral(String(v), type === 'WSTRING');
   if (type === 'BOOL') return v === true || v === 1 || v === 1n ? 'TRUE' : 'FALSE';
   if (type === 'TIME') return formatTime(Number(v));
   if (type === 'REAL') return realDisplay(shortestReal(Number(v)));
@@ -179,8 +217,18 @@ export function formatValue(type: ElementaryType, v: Value): string {
   return String(v);
 }
 
-/** Text for CSV traces: BOOL 0/1, integers in decimal, REAL/LREAL in the shortest digits that read back exactly, TIME in ms. */
+/**
+ * Text for CSV traces: BOOL 0/1, integers in decimal, REAL/LREAL in the shortest digits that read
+ * back exactly, TIME in ms, a STRING as its text (as its literal when the plain text would read back
+ * otherwise: empty, spaces around it, control characters, or a leading quote). The CSV writer
+ * quotes the cell (RFC 4180) where it has to.
+ */
 export function csvValue(type: ElementaryType, v: Value): string {
+  if (isStringType(type)) {
+    const s = String(v);
+    const plain = s !== '' && s.trim() === s && !hasControlCharacter(s) && !looksLikeStringLiteral(s);
+    return plain ? s : formatStringLiteral(s, type === 'WSTRING');
+  }
   if (type === 'BOOL') return v === true || v === 1 || v === 1n ? '1' : '0';
   if (type === 'REAL') return shortestReal(Number(v));
   if (type === 'LREAL') return shortestLreal(Number(v));
@@ -189,10 +237,17 @@ export function csvValue(type: ElementaryType, v: Value): string {
 
 /**
  * Reads a value typed by a user or found in a CSV stimulus file: 0/1/true/false/on/off for BOOL,
- * plain numbers (a TIME as a number of ms), or any IEC literal that fits the type.
+ * plain numbers (a TIME as a number of ms), or any IEC literal that fits the type. A STRING is its
+ * literal ('a$Nb', '' for empty) or, when the text does not start with a quote, the text itself.
  */
 export function parseValueText(type: ElementaryType, text: string): ValueResult {
   const trimmed = text.trim();
+  if (isStringType(type) && !looksLikeStringLiteral(trimmed)) {
+    const value = normalize(type, text);
+    if (type === 'STRING' && !isSingleByte(text))
+      return { ok: false, message: `"${text}" has characters a STRING cannot hold (it holds single bytes); use a WSTRING` };
+    return { ok: true, value };
+  }
   if (type === 'BOOL') {
     const lower = trimmed.toLowerCase();
     if (lower === 'on') return { ok: true, value: true };

@@ -1,7 +1,16 @@
 // Value representation and typing rules for the elementary IEC types (LD-SEMANTICS.md section 8).
 // Representation (see model/iecTypes.ts): BOOL -> boolean; LINT/ULINT/LWORD -> bigint;
-// other integers and bit strings -> number; REAL/LREAL -> number; TIME -> integer milliseconds.
-import { INT_INFO, type ElementaryType, type IntegerType, type BitStringType, type Value } from '../../model/iecTypes';
+// other integers and bit strings -> number; REAL/LREAL -> number; TIME -> integer milliseconds;
+// STRING/WSTRING -> string (at most STRING_MAX_LEN characters).
+import {
+  INT_INFO,
+  STRING_MAX_LEN,
+  type BitStringType,
+  type ElementaryType,
+  type IntegerType,
+  type StringType,
+  type Value,
+} from '../../model/iecTypes';
 
 export type SizedType = IntegerType | Exclude<BitStringType, 'BOOL'>;
 
@@ -12,12 +21,14 @@ export const isIntegerType = (t: ElementaryType): t is IntegerType =>
 export const isBitStringType = (t: ElementaryType): t is BitStringType =>
   t === 'BOOL' || t === 'BYTE' || t === 'WORD' || t === 'DWORD' || t === 'LWORD';
 export const isRealType = (t: ElementaryType): t is 'REAL' | 'LREAL' => t === 'REAL' || t === 'LREAL';
+export const isStringType = (t: string): t is StringType => t === 'STRING' || t === 'WSTRING';
 export const isSignedType = (t: ElementaryType): boolean =>
   t === 'SINT' || t === 'INT' || t === 'DINT' || t === 'LINT' || t === 'REAL' || t === 'LREAL' || t === 'TIME';
 
 /** Initial value of a variable of this type when its declaration gives none. */
 export function defaultValue(type: ElementaryType): Value {
   if (type === 'BOOL') return false;
+  if (isStringType(type)) return '';
   return isBigIntType(type) ? 0n : 0;
 }
 
@@ -28,7 +39,11 @@ export function typeRange(type: SizedType): { min: bigint; max: bigint } {
   return signed ? { min: -(1n << (b - 1n)), max: (1n << (b - 1n)) - 1n } : { min: 0n, max: (1n << b) - 1n };
 }
 
-const toNumber = (v: Value): number => (typeof v === 'boolean' ? (v ? 1 : 0) : typeof v === 'bigint' ? Number(v) : v);
+const toNumber = (v: Value): number =>
+  typeof v === 'boolean' ? (v ? 1 : 0) : typeof v === 'bigint' ? Number(v) : typeof v === 'string' ? Number.NaN : v;
+
+/** A string cut to the most characters a STRING holds (MATIEC cuts every result there). */
+export const clipString = (s: string): string => (s.length > STRING_MAX_LEN ? s.slice(0, STRING_MAX_LEN) : s);
 
 /** Truncates toward zero; NaN and infinities (no integer meaning) become 0. */
 const toInteger = (v: number): number => (Number.isFinite(v) ? Math.trunc(v) : 0);
@@ -36,7 +51,7 @@ const toInteger = (v: number): number => (Number.isFinite(v) ? Math.trunc(v) : 0
 const toBigInt = (v: Value): bigint => {
   if (typeof v === 'bigint') return v;
   if (typeof v === 'boolean') return v ? 1n : 0n;
-  return BigInt(toInteger(v));
+  return BigInt(toInteger(toNumber(v)));
 };
 
 /**
@@ -45,8 +60,11 @@ const toBigInt = (v: Value): bigint => {
  */
 export function normalize(type: ElementaryType, v: Value): Value {
   switch (type) {
+    case 'STRING':
+    case 'WSTRING':
+      return clipString(typeof v === 'string' ? v : String(v));
     case 'BOOL':
-      return typeof v === 'boolean' ? v : typeof v === 'bigint' ? v !== 0n : v !== 0 && !Number.isNaN(v);
+      return typeof v === 'boolean' ? v : typeof v === 'bigint' ? v !== 0n : typeof v === 'string' ? v !== '' : v !== 0 && !Number.isNaN(v);
     case 'REAL':
       return Math.fround(toNumber(v));
     case 'LREAL':
@@ -87,6 +105,8 @@ export function normalize(type: ElementaryType, v: Value): Value {
 /** True when `v` is exactly a value of `type` in the engine's representation. */
 export function isValueOfType(type: ElementaryType, v: Value): boolean {
   if (type === 'BOOL') return typeof v === 'boolean';
+  if (type === 'STRING') return typeof v === 'string' && v.length <= STRING_MAX_LEN && isSingleByte(v);
+  if (type === 'WSTRING') return typeof v === 'string' && v.length <= STRING_MAX_LEN;
   if (type === 'LREAL') return typeof v === 'number';
   if (type === 'REAL') return typeof v === 'number' && (Number.isNaN(v) || Math.fround(v) === v);
   if (type === 'TIME') return typeof v === 'number' && Number.isInteger(v);
@@ -96,6 +116,21 @@ export function isValueOfType(type: ElementaryType, v: Value): boolean {
   const { min, max } = typeRange(type as SizedType);
   const b = BigInt(v);
   return b >= min && b <= max;
+}
+
+/** True when every character is one byte (code 0-255), as a STRING holds them. */
+export function isSingleByte(s: string): boolean {
+  for (let i = 0; i < s.length; i++) if (s.charCodeAt(i) > 0xff) return false;
+  return true;
+}
+
+/** True when the text holds a control character (codes 0-31 and 127). */
+export function hasControlCharacter(s: string): boolean {
+  for (let i = 0; i < s.length; i++) {
+    const c = s.charCodeAt(i);
+    if (c < 0x20 || c === 0x7f) return true;
+  }
+  return false;
 }
 
 /**

@@ -20,8 +20,10 @@ describe('every conversion in CONVERSION_SIGNATURES', () => {
       for (const profile of ['iec', 'openplc'] as const) {
         const fn = resolved(sig.name, [from], profile);
         expect(fn.outType).toBe(to);
-        const out = callFunction(fn, [defaultValue(from)]);
-        expect(isValueOfType(to, out.value), `${sig.name}(${String(defaultValue(from))})`).toBe(true);
+        // A STRING is read as text: '0' reads as every target type ('' is no number).
+        const input = from === 'STRING' ? '0' : defaultValue(from);
+        const out = callFunction(fn, [input]);
+        expect(isValueOfType(to, out.value), `${sig.name}(${String(input)})`).toBe(true);
         expect(out.eno).toBe(true);
       }
     }
