@@ -6,6 +6,7 @@ import { compileProgram } from '../../src/engine/plc';
 import { io, multiProject, pou } from './userBlocksHelpers';
 import { ladder, plcOf, trace, vars, type BoxSpec } from './ladder';
 import { sfcPou, step, tr } from './sfcHelpers';
+import { textPou } from './stHelpers';
 
 describe('SFC charts', () => {
   test('a sequence: transitions, N on a BOOL variable, step time T', () => {
@@ -111,6 +112,60 @@ describe('SFC function blocks', () => {
       [1, 1, 1, 1, 10],
       [0, 1, 0, 1, 20], // T grows before the transitions are tested, and keeps its value once Run ends
     ]);
+  });
+});
+
+describe('ST in charts (the ST compiler: the whole language)', () => {
+  test('an ST action calls a user function, a user FB and a TON; a condition calls a function', () => {
+    const twice = textPou('Twice', 'FUNCTION', io('input', 'X INT'), 'Twice := X * 2;', { returnType: 'INT' });
+    const acc = textPou('Acc', 'FUNCTION_BLOCK', [...io('input', 'Inc INT'), ...io('output', 'Sum INT')], 'Sum := Sum + Inc;');
+    const main = sfcPou('Main', 'PROGRAM', vars('Go BOOL', 'A Acc', 'T1 TON', 'Val INT', 'Total INT', 'Done BOOL'), {
+      steps: [step('Idle*'), step('Run', 'N Work'), step('End')],
+      transitions: [tr('Idle', 'Run', 'Go'), tr('Run', 'End', 'T1.Q AND Twice(Total) >= 20')],
+      actions: [
+        {
+          name: 'Work',
+          body: {
+            language: 'ST',
+            text: 'Val := Twice(Val + 1);\nA(Inc := Val);\nTotal := A.Sum;\nT1(IN := TRUE, PT := T#20ms, Q => Done);',
+          },
+        },
+      ],
+    });
+    const plc = plcOf(multiProject([main, twice, acc]));
+    // Scan 1: Idle -> Run, Work runs: Val = 2*(0+1) = 2, Sum = 2, T1 starts. Scan 2: Val = 2*3 = 6,
+    // Sum = 8. Scan 3: Val = 14, Sum = 22, T1 has run 20 ms: Done. Scan 4: T1.Q AND 2*22 >= 20:
+    // Run -> End, Work no longer runs.
+    expect(trace(plc, [{ Go: true }, {}, {}, {}, {}], ['Run.X', 'End.X', 'Val', 'Total', 'Done'])).toEqual([
+      [1, 0, 2, 2, 0],
+      [1, 0, 6, 8, 0],
+      [1, 0, 14, 22, 1],
+      [0, 1, 14, 22, 1],
+      [0, 1, 14, 22, 1],
+    ]);
+  });
+
+  test('CASE and FOR in an action; an error names the line and column', () => {
+    const main = sfcPou('Main', 'PROGRAM', vars('Go BOOL', 'I INT', 'N INT', 'Mode INT'), {
+      steps: [step('A*', 'N Work')],
+      transitions: [],
+      actions: [{ name: 'Work', body: { language: 'ST', text: 'CASE Mode OF 0: N := 0; ELSE FOR I := 1 TO Mode DO N := N + I; END_FOR; END_CASE; Mode := Mode + 1;' } }],
+    });
+    const plc = plcOf(multiProject([main]));
+    expect(trace(plc, [{}, {}, {}, {}], ['N', 'Mode'])).toEqual([
+      [0, 1],
+      [1, 2],
+      [4, 3],
+      [10, 4],
+    ]);
+    const bad = sfcPou('Main', 'PROGRAM', vars('Go BOOL'), {
+      steps: [step('A*', 'N Work')],
+      transitions: [],
+      actions: [{ name: 'Work', body: { language: 'ST', text: 'Go := TRUE;\nNope(1);' } }],
+    });
+    const errs = compileProgram(multiProject([bad]), {}).diagnostics.filter((d) => d.severity === 'error');
+    expect(errs.map((d) => d.rule)).toEqual(['LD-E44']);
+    expect(errs[0]!.message).toMatch(/the action Work of Main .*line 2 col 1: .*Nope/);
   });
 });
 

@@ -115,6 +115,7 @@ export class Flattener implements CallBuilder {
     const lowered = sfc
       ? lowerChartBody(pou, scope, scope === own ? [scope] : [own, scope], sink, first, (piece) =>
           this.body(piece, scope, { kind: 'fb', ...(info.instance ? { instance: info.instance } : {}) }, sink),
+          { profile: this.profile, functions: this.shared.functions, calls: this },
         )
       : lowerPouBody(this.project, pou, this.profile, scope, sink, {
           first,

@@ -64,11 +64,18 @@ export function lowerPou(
 /** An SFC POU checked on its own: its chart (steps, transitions, qualifiers, the code inside it). */
 function checkChart(project: Project, pou: Pou, profile: Profile, symbols: SymbolTable, out: Diagnostic[], place: Placement): LoweredPou {
   const start = out.length;
-  lowerChart(pou, symbols, [symbols], new Reporter(out, pou.name, -1), (piece) => {
-    lowerPouBody(project, piece, profile, symbols, out);
-    return undefined;
-  });
   const ctx = newPouContext(project, pou, profile, symbols, new Map(), place);
+  lowerChart(
+    pou,
+    symbols,
+    [symbols],
+    new Reporter(out, pou.name, -1),
+    (piece) => {
+      lowerPouBody(project, piece, profile, symbols, out);
+      return undefined;
+    },
+    { profile, functions: ctx.functions, network: 0 },
+  );
   return { ctx, networks: [], ok: !out.slice(start).some((d) => d.severity === 'error') };
 }
 

@@ -5,7 +5,7 @@ import type { Diagnostic } from '../api';
 import type { NetworkIR } from '../compile/ir';
 import { Reporter } from '../compile/report';
 import type { SymbolTable } from '../compile/symbols';
-import { lowerChart, type PieceLowering } from './chart';
+import { lowerChart, type ChartStContext, type PieceLowering } from './chart';
 
 export function lowerChartBody(
   pou: Pou,
@@ -14,9 +14,10 @@ export function lowerChartBody(
   out: Diagnostic[],
   index: number,
   lowerPiece: PieceLowering,
+  st: Omit<ChartStContext, 'network'>,
 ): { networks: NetworkIR[]; ok: boolean } {
   const r = new Reporter(out, pou.name, -1);
-  const chart = lowerChart(pou, scope, scopes, r, lowerPiece);
+  const chart = lowerChart(pou, scope, scopes, r, lowerPiece, { ...st, network: index });
   const network: NetworkIR = {
     index,
     ops: chart ? [{ op: 'sfc', node: -1, chart }] : [],

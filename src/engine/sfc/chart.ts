@@ -1,21 +1,36 @@
 // A chart checked against its POU and lowered over an instance's scope: its steps become variables
 // of the instance (`Step.X`, `Step.T`, watchable as `Instance.Step.X`), MATIEC's hidden records
 // (previous X, action flags and countdowns, transition values, last call time) hidden variables
-// under `Instance._SFC.`, LD pieces bodies of networks, ST pieces checked expressions and
-// statements. All of it lives in the program's stores, so it is reset on a cold restart and kept
+// under `Instance._SFC.`, LD pieces bodies of networks, ST pieces compiled by the ST compiler
+// (src/engine/st: the whole language, calls of functions and FBs included) into `st` operations
+// (a condition assigns the transition's value). All of it lives in the program's stores, so it is reset on a cold restart and kept
 // with the instance's variables.
-import type { Network, Pou, SfcChart, SfcCode, Variable } from '../../model/project';
+import type { Network, Pou, Profile, SfcChart, SfcCode, Variable } from '../../model/project';
+import type { ResolvedFunction } from '../library/fnTypes';
+import type { CallBuilder } from '../compile/context';
+import type { StOp } from '../compile/ir';
+import { compileStExpression, compileStStatements, describeStError, stOp, type StError, type StScope } from '../st/index';
 import { parseLiteral } from '../values/literals';
 import type { Reporter } from '../compile/report';
 import { SymbolTable, type Access, type UfbSymbol, type VarSymbol } from '../compile/symbols';
 import type { ActionIR, AssociationIR, ChartIR, RangeIR, StepIR, TransitionIR } from './ir';
-import { parseStCondition, parseStStatements, StError } from './st';
 
 export const QUALIFIERS = ['N', 'R', 'S', 'L', 'D', 'P', 'P0', 'P1', 'SD', 'DS', 'SL'] as const;
 const TIMED = new Set(['L', 'D', 'SD', 'DS', 'SL']);
 
 /** Lowers an LD piece of the chart (an action body or a condition) as a body of networks over the scope. */
 export type PieceLowering = (piece: Pou) => RangeIR | undefined;
+
+/** What the ST inside a chart is compiled with (see st/index.ts StScope), and the chart's network. */
+export interface ChartStContext {
+  readonly profile: Profile;
+  /** The program's function table. */
+  readonly functions: ResolvedFunction[];
+  /** Builds the bodies of user FB and function calls; absent when the POU is only checked. */
+  readonly calls?: CallBuilder;
+  /** The network holding the chart (named by the watchdog when an ST loop runs too long). */
+  readonly network: number;
+}
 
 const bool = (name: string, initial?: string): Variable => ({
   name,
@@ -127,6 +142,7 @@ export function lowerChart(
   scopes: readonly SymbolTable[],
   r: Reporter,
   lowerPiece: PieceLowering,
+  stContext: ChartStContext,
 ): ChartIR | undefined {
   const before = r.errors;
   const chart = pou.sfc;
@@ -173,6 +189,22 @@ export function lowerChart(
       networks: code.networks as Network[],
     });
   };
+  const stScope: StScope = {
+    symbols: scope,
+    profile: stContext.profile,
+    functions: stContext.functions,
+    ...(stContext.calls ? { calls: stContext.calls } : {}),
+    pouName: pou.name,
+  };
+  /** An ST piece compiled into an `st` operation, or undefined after LD-E44 naming every error. */
+  const stPiece = (text: string, what: string, compile: () => { stmts?: StOp['body']; errors: StError[] }): StOp | undefined => {
+    const c = compile();
+    if (c.stmts && !c.errors.length) return stOp(c.stmts, stContext.network, 'ST');
+    const shown = text.replace(/\s+/g, ' ').trim();
+    for (const e of c.errors)
+      r.error('LD-E44', `${what} (ST "${shown.length > 60 ? `${shown.slice(0, 57)}...` : shown}") does not compile: ${describeStError(e)}`);
+    return undefined;
+  };
   const code = (c: SfcCode, what: string): boolean => {
     if (c.language !== 'none') return true;
     r.error('LD-E44', `${what} cannot run: ${c.why}`);
@@ -189,13 +221,12 @@ export function lowerChart(
     const rec = actionRecord(state, a.name.toUpperCase());
     let body: ActionIR['body'];
     if (a.body.language === 'ST') {
-      try {
-        body = { st: parseStStatements(a.body.text, scope) };
-      } catch (e) {
-        if (!(e instanceof StError)) throw e;
-        r.error('LD-E44', `${what} (ST "${a.body.text.slice(0, 60)}"): ${e.message}`);
-        continue;
-      }
+      const text = a.body.text;
+      const op = stPiece(text, what, () => {
+        const c = compileStStatements(text, stScope);
+        return { ...(c.body ? { stmts: c.body } : {}), errors: c.errors };
+      });
+      if (op) body = { st: op }; // else LD-E44 is reported; the action stays known to its steps
     } else {
       const range = piece(a.body, a.name);
       if (range) body = { range };
@@ -252,13 +283,14 @@ export function lowerChart(
     if (!code(t.condition, what)) return;
     let condition: TransitionIR['condition'] | undefined;
     if (t.condition.language === 'ST') {
-      try {
-        condition = { st: parseStCondition(t.condition.text, scope) };
-      } catch (e) {
-        if (!(e instanceof StError)) throw e;
-        r.error('LD-E44', `${what} (ST "${t.condition.text.slice(0, 60)}"): ${e.message}`);
-        return;
-      }
+      const text = t.condition.text.replace(/;\s*$/, '');
+      const flag = acc(state.flags[k]!);
+      const op = stPiece(text, what, () => {
+        const c = compileStExpression(text, stScope, 'BOOL');
+        return { ...(c.expr ? { stmts: [{ k: 'assign', dst: flag, value: c.expr }] } : {}), errors: c.errors };
+      });
+      if (!op) return;
+      condition = { st: op };
     } else if (t.condition.language === 'LD') {
       const resultName = t.condition.result ?? '';
       const res = scope.resolve(resultName, { literals: false, implicitLocations: false });

@@ -11,18 +11,17 @@
 //   6. set stores an action, reset clears it; Q := Q OR stored;
 //   7. BOOL variables used as actions: reset -> FALSE, else set -> TRUE; then each action body
 //      whose Q is TRUE runs, in text order.
-import type { ElementaryType, Value } from '../../model/iecTypes';
+import type { StOp } from '../compile/ir';
 import type { Access } from '../compile/symbols';
+import { emitSt, type StEmitter } from '../st/emit';
 import type { ChartIR, RangeIR } from './ir';
-import { emitExpr, emitStatements } from './st';
 
-/** What the chart's code needs from codegen's Emitter. */
-export interface ChartEmitter {
+/** What the chart's code needs from codegen's Emitter (its ST pieces are written by st/emit.ts). */
+export interface ChartEmitter extends StEmitter {
   readBit(a: Access): string;
   writeBit(a: Access, x: string): string;
-  readValue(src: { from: 'access'; access: Access }, to: ElementaryType): string;
-  writeValue(a: Access, x: string, from: ElementaryType): string;
-  constant(v: Value): string;
+  /** FB instances held in locals declared in the current block. */
+  fbLocals: Map<number, string>;
 }
 
 export function emitChart(
@@ -36,6 +35,16 @@ export function emitChart(
   const wr = (a: Access, x: string) => em.writeValue(a, x, 'TIME');
   const bit = (a: Access) => em.readBit(a);
   const set = (a: Access, x: string) => em.writeBit(a, x);
+  // Each ST piece sits in a block of its own: the locals it declares for FB instances stay in it.
+  const st = (op: StOp) => {
+    const saved = { lines: em.lines, fbLocals: em.fbLocals };
+    em.lines = [];
+    em.fbLocals = new Map();
+    emitSt(em, op, (first, end) => runBody({ first, end }));
+    L.push('{', ...em.lines, '}');
+    em.lines = saved.lines;
+    em.fbLocals = saved.fbLocals;
+  };
   L.push(`{ // SFC ${c.pou}`);
   L.push(`const el$ = now - ${rd(c.lasttick)}; ${wr(c.lasttick, 'now')}`);
   // 1. steps
@@ -56,7 +65,7 @@ export function emitChart(
     const t = c.transitions[k]!;
     const active = t.from.map((s) => bit(c.steps[s]!.x)).join(' & ') || '0';
     L.push(`if (${active}) {`);
-    if ('st' in t.condition) L.push(set(t.flag, `(${emitExpr(em, t.condition.st)}) ? 1 : 0`));
+    if ('st' in t.condition) st(t.condition.st);
     else {
       L.push(...runBody(t.condition.range));
       L.push(set(t.flag, bit(t.condition.result)));
@@ -139,7 +148,7 @@ export function emitChart(
     const a = c.actions[k]!;
     L.push(`if (${bit(a.state)}) {`);
     if (a.body && 'range' in a.body) L.push(...runBody(a.body.range));
-    else if (a.body) emitStatements(em, a.body.st, L);
+    else if (a.body) st(a.body.st);
     L.push('}');
   }
   L.push('}');

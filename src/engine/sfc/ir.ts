@@ -1,6 +1,6 @@
 // The checked form of a chart that code generation turns into one cycle of MATIEC's SFC code.
+import type { StOp } from '../compile/ir';
 import type { Access } from '../compile/symbols';
-import type { StExpr, StStmt } from './st';
 
 /** A range of the program's networks (a body lowered from LD). */
 export interface RangeIR {
@@ -27,7 +27,8 @@ export interface ActionIR {
   readonly resetTime: Access;
   /** A BOOL variable used as an action (N, S, R... write it directly). */
   readonly variable?: Access;
-  readonly body?: { readonly range: RangeIR } | { readonly st: readonly StStmt[] };
+  /** An LD body (a range of networks) or ST statements (an `st` operation run in place). */
+  readonly body?: { readonly range: RangeIR } | { readonly st: StOp };
 }
 
 export interface TransitionIR {
@@ -36,7 +37,8 @@ export interface TransitionIR {
   readonly priority: boolean;
   /** The transition's value in this cycle (MATIEC's __transition_list[k]). */
   readonly flag: Access;
-  readonly condition: { readonly st: StExpr } | { readonly range: RangeIR; readonly result: Access };
+  /** ST: statements assigning `flag`; LD: a body writing `result`. */
+  readonly condition: { readonly st: StOp } | { readonly range: RangeIR; readonly result: Access };
 }
 
 export interface AssociationIR {
@@ -64,11 +66,11 @@ export interface ChartIR {
   readonly bodies: readonly number[];
 }
 
-/** Every range a chart runs (for size estimates). */
+/** Every range a chart runs, its LD pieces and the calls of its ST (for size estimates). */
 export function chartRanges(c: ChartIR): RangeIR[] {
   const out: RangeIR[] = [];
-  for (const t of c.transitions) if ('range' in t.condition) out.push(t.condition.range);
-  for (const a of c.actions) if (a.body && 'range' in a.body) out.push(a.body.range);
+  for (const t of c.transitions) out.push(...('range' in t.condition ? [t.condition.range] : t.condition.st.calls));
+  for (const a of c.actions) if (a.body) out.push(...('range' in a.body ? [a.body.range] : a.body.st.calls));
   return out;
 }
 
