@@ -9,6 +9,7 @@ import { diffNetwork, type Change, type VariableScope } from './changes';
 import type { DocumentState, NetworkPatch } from './documentStore';
 import * as edits from './networkEdits';
 import { transferElements } from './networkTransfer';
+import * as units from './networkUnits';
 import { followInterface } from './pouEdits';
 import { declaresLocally, renameInElement } from './variableEdits';
 
@@ -212,6 +213,61 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
       const pou = s.project.pous.find((p) => p.id === s.activePouId);
       if (!pou || from === to || !pou.networks[from] || to < 0 || to >= pou.networks.length) return;
       commit('moveNetwork', [{ type: 'network.move', pou: pou.id, from, to }]);
+    },
+    pasteNetworks: (pouId, index, clip, mode) => {
+      const project = get().project;
+      const pou = project.pous.find((p) => p.id === pouId);
+      if (!pou) return [];
+      const prepared = units.preparePaste(project, pou, clip, mode);
+      const changes = units.pasteChanges(pou, index, prepared);
+      commit('pasteNetworks', [...changes, ...followInterface(project, pou.id, changes)]);
+      return prepared.networks.map((n) => n.id);
+    },
+    duplicateNetworks: (ids, mode) => {
+      const found = ids.length ? locate(get().project, ids[0]!) : undefined;
+      const clip = found && units.copyNetworks(found.pou, ids);
+      if (!found || !clip) return [];
+      const last = Math.max(...clip.networks.map((n) => found.pou.networks.indexOf(n)));
+      const prepared = units.preparePaste(get().project, found.pou, clip, mode);
+      const changes = units.pasteChanges(found.pou, last + 1, prepared);
+      commit('duplicateNetworks', [...changes, ...followInterface(get().project, found.pou.id, changes)]);
+      return prepared.networks.map((n) => n.id);
+    },
+    deleteNetworks: (ids) => {
+      const found = ids.length ? locate(get().project, ids[0]!) : undefined;
+      if (found) commit('deleteNetworks', units.deleteChanges(found.pou, ids));
+    },
+    moveNetworks: (ids, delta) => {
+      const found = ids.length ? locate(get().project, ids[0]!) : undefined;
+      const changes = found && units.moveChanges(found.pou, ids, delta);
+      if (!changes) return false;
+      commit('moveNetworks', changes);
+      return true;
+    },
+    moveNetworksTo: (ids, before) => {
+      const found = ids.length ? locate(get().project, ids[0]!) : undefined;
+      const changes = found && units.moveToChanges(found.pou, ids, before);
+      if (!changes) return false;
+      commit('moveNetworks', changes);
+      return true;
+    },
+    replaceNetworks: (name, networks) => {
+      const changes = networks.flatMap((x) => diffNetwork(x.pou, x.before, x.after));
+      commit(name, changes);
+      return changes.length > 0;
+    },
+    setCollapsed: (ids, collapsed) => {
+      const s = get();
+      const pou = s.project.pous.find((p) => p.id === s.activePouId);
+      if (!pou) return;
+      const set = ids === 'all' ? undefined : new Set(ids);
+      const changes: Change[] = [];
+      for (const net of pou.networks) {
+        if ((set && !set.has(net.id)) || !!net.collapsed === collapsed) continue;
+        const { collapsed: _c, ...rest } = net;
+        changes.push(...diffNetwork(pou.id, net, collapsed ? { ...rest, collapsed: true } : rest));
+      }
+      commit(collapsed ? 'collapseNetworks' : 'expandNetworks', changes);
     },
     updateNetwork: (id, patch) => {
       const clean: { -readonly [K in keyof NetworkPatch]: NetworkPatch[K] } = { ...patch };

@@ -50,6 +50,15 @@
 //   addNetwork(partial?) / insertNetwork(index, partial?)  return the new NetworkId
 //   deleteNetwork(id), moveNetwork(from, to), updateNetwork(id, {label,title,comment,collapsed,rows,cols})
 //                                     (label: '' or undefined removes the label)
+//   pasteNetworks(pou, index, clip, mode)  whole networks (src/store/networkUnits.ts): new ids,
+//                                     labels kept unique (jumps follow), FB instances kept or
+//                                     renamed to the next free name ('keep' | 'new'), missing
+//                                     declarations added; returns the new ids. One undo step.
+//   duplicateNetworks(ids, mode)      a copy of the networks below the last of them
+//   deleteNetworks(ids), moveNetworks(ids, ±1), moveNetworksTo(ids, before)  sets of networks
+//   setCollapsed(ids | 'all', collapsed)  collapse/expand networks of the shown POU
+//   replaceNetworks(name, [{pou, before, after}])  networks of any POUs rewritten (find/replace,
+//                                     src/store/find.ts) as one undo step
 //   addVariable(v, scope?)            false when the name is taken (case-insensitive) in that scope
 //   updateVariable(name, patch, scope?)  renaming RENAMES EVERY REFERENCE too (contacts, coils,
 //                                     box instances and operands incl. `Name.Pin`) in the POU, or
@@ -80,6 +89,7 @@ import { documentCommands, locate } from './documentCommands';
 import { pouCommands, type PouCommands } from './pouCommands';
 import { EMPTY_HISTORY, record, squash as squashHistory, type History } from './history';
 import type { ClipContent, ElementTemplate } from './networkEdits';
+import type { InstanceMode, NetworkClip } from './networkUnits';
 
 type DistributivePatch<T> = T extends unknown ? Partial<Omit<T, 'id' | 'kind'>> : never;
 /** Fields of one element kind: `{ variable: 'Start' }`, `{ inputs: { PT: 'T#5s' } }`, `{ row: 2 }`. */
@@ -131,6 +141,16 @@ export interface DocumentState {
   deleteNetwork(id: NetworkId): void;
   moveNetwork(from: number, to: number): void;
   updateNetwork(id: NetworkId, patch: NetworkPatch): void;
+  pasteNetworks(pou: PouId, index: number, clip: NetworkClip, mode: InstanceMode): NetworkId[];
+  duplicateNetworks(ids: readonly NetworkId[], mode: InstanceMode): NetworkId[];
+  deleteNetworks(ids: readonly NetworkId[]): void;
+  moveNetworks(ids: readonly NetworkId[], delta: number): boolean;
+  moveNetworksTo(ids: readonly NetworkId[], before: number): boolean;
+  setCollapsed(ids: readonly NetworkId[] | 'all', collapsed: boolean): void;
+  replaceNetworks(
+    name: string,
+    networks: readonly { pou: PouId; before: Network; after: Network }[],
+  ): boolean;
 
   addVariable(v: Variable, scope?: VariableScope): boolean;
   updateVariable(name: string, patch: Partial<Variable>, scope?: VariableScope): boolean;

@@ -10,6 +10,10 @@
 //   focusRequest { network, cell, seq } — set by focusCell(); the canvas scrolls there and moves the cursor
 //   editing      { element } | undefined — the element whose variable is being typed inline
 //   blockPicker  { network, cell } | undefined — the searchable block picker is open for that cell
+//   networkSelection  whole networks selected by their headers (click, Shift/Ctrl-click,
+//                Shift+arrows); selecting elements clears it and the reverse
+//   pastePrompt  network clip text waiting for the choice keep / new FB instances
+//   finder       'find' | 'goto' | undefined — the find/replace panel or the go-to box is open
 import { createElement, createContext, useContext, type ReactNode } from 'react';
 import { createStore, useStore, type StoreApi } from 'zustand';
 import type { Cell } from '../model/grid';
@@ -53,6 +57,9 @@ export interface UiState {
     { readonly network: NetworkId; readonly cell: Cell; readonly seq: number } | undefined;
   readonly editing: { readonly element: ElementId } | undefined;
   readonly blockPicker: { readonly network: NetworkId; readonly cell: Cell } | undefined;
+  readonly networkSelection: readonly NetworkId[];
+  readonly pastePrompt: { readonly text: string; readonly instances: readonly string[] } | undefined;
+  readonly finder: 'find' | 'goto' | undefined;
   /** A short message for the status bar ("Nothing to paste"), cleared by the next action. */
   readonly status: string;
 
@@ -70,6 +77,9 @@ export interface UiState {
   openBlockPicker(network: NetworkId, cell: Cell): void;
   closeBlockPicker(): void;
   setStatus(text: string): void;
+  selectNetworks(ids: readonly NetworkId[]): void;
+  setPastePrompt(p: UiState['pastePrompt']): void;
+  setFinder(f: UiState['finder']): void;
 }
 
 export type UiStore = StoreApi<UiState>;
@@ -88,9 +98,17 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme'>> = {}): Ui
     editing: undefined,
     blockPicker: undefined,
     status: '',
+    networkSelection: [],
+    pastePrompt: undefined,
+    finder: undefined,
 
-    select: (network, elements) => set({ selection: { network, elements: [...elements] } }),
+    select: (network, elements) =>
+      set({
+        selection: { network, elements: [...elements] },
+        ...(get().networkSelection.length && (network || elements.length) ? { networkSelection: [] } : {}),
+      }),
     toggleSelected: (network, element) => {
+      if (get().networkSelection.length) set({ networkSelection: [] });
       const sel = get().selection;
       if (sel.network !== network) return set({ selection: { network, elements: [element] } });
       const has = sel.elements.includes(element);
@@ -101,7 +119,7 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme'>> = {}): Ui
         },
       });
     },
-    clearSelection: () => set({ selection: { network: undefined, elements: [] } }),
+    clearSelection: () => set({ selection: { network: undefined, elements: [] }, networkSelection: [] }),
     setCursor: (cursor) => set({ cursor }),
     setTool: (tool) => set({ tool }),
     setViewport: (patch) => set({ viewport: { ...get().viewport, ...patch } }),
@@ -116,6 +134,10 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme'>> = {}): Ui
     openBlockPicker: (network, cell) => set({ blockPicker: { network, cell } }),
     closeBlockPicker: () => set({ blockPicker: undefined }),
     setStatus: (status) => set({ status }),
+    selectNetworks: (ids) =>
+      set({ networkSelection: [...new Set(ids)], selection: { network: undefined, elements: [] } }),
+    setPastePrompt: (pastePrompt) => set({ pastePrompt }),
+    setFinder: (finder) => set({ finder }),
   }));
 }
 
@@ -124,6 +146,7 @@ export const selectCursor = (s: UiState) => s.cursor;
 export const selectTool = (s: UiState) => s.tool;
 export const selectZoom = (s: UiState) => s.viewport.zoom;
 export const selectTheme = (s: UiState) => s.theme;
+export const selectNetworkSelection = (s: UiState) => s.networkSelection;
 
 const UiStoreContext = createContext<UiStore | null>(null);
 

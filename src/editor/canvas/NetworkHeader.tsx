@@ -3,9 +3,11 @@
 import { memo, useState, type DragEvent, type KeyboardEvent } from 'react';
 import type { Network } from '../../model/project';
 import { useDocumentStore } from '../../store/documentStore';
-import { useUiStore } from '../../store/uiStore';
+import { useUi, useUiStore } from '../../store/uiStore';
+import { clickNetwork } from '../commands/networkActions';
 import { commentLines, COMMENT_LINE_H, headerHeight, RAIL_X } from './geometry';
 import { NetworkSimMarker } from '../sim/NetworkSimMarker';
+import '../outline/outline.css';
 
 const DRAG_TYPE = 'application/x-rungsmith-network';
 
@@ -81,21 +83,30 @@ export const NetworkHeader = memo(function NetworkHeader({
   const doc = useDocumentStore();
   const ui = useUiStore();
   const [dropTarget, setDropTarget] = useState(false);
+  const selected = useUi((s) => s.networkSelection.includes(n.id));
   const no = index + 1;
   const update = (patch: Parameters<ReturnType<typeof doc.getState>['updateNetwork']>[1]) =>
     doc.getState().updateNetwork(n.id, patch);
 
+  // A drag carries the dragged network's index; when that network is selected, the whole
+  // selection moves (before this network when coming from below, after it from above).
   const onDrop = (e: DragEvent) => {
     const from = Number(e.dataTransfer.getData(DRAG_TYPE));
     setDropTarget(false);
     if (!Number.isInteger(from) || from === index) return;
     e.preventDefault();
-    doc.getState().moveNetwork(from, index);
+    const nets = doc.getState().project.pous.find((p) => p.networks.some((x) => x.id === n.id))?.networks;
+    const dragged = nets?.[from];
+    const sel = ui.getState().networkSelection;
+    if (!nets || !dragged || !sel.includes(dragged.id)) return doc.getState().moveNetwork(from, index);
+    const ids = nets.filter((x) => sel.includes(x.id)).map((x) => x.id);
+    doc.getState().moveNetworksTo(ids, from < index ? index + 1 : index);
   };
 
   return (
     <div
-      className={`rs-network-header${dropTarget ? ' rs-drop-target' : ''}`}
+      className={`rs-network-header${dropTarget ? ' rs-drop-target' : ''}${selected ? ' rs-network-selected' : ''}`}
+      data-selected={selected || undefined}
       style={{ top, left: RAIL_X - 20, width: Math.max(420, width - RAIL_X), height: headerHeight(n) - 4 }}
       role="group"
       aria-label={`Network ${no}${n.label ? ` (${n.label})` : ''}`}
@@ -137,8 +148,14 @@ export const NetworkHeader = memo(function NetworkHeader({
         <button
           type="button"
           className="rs-network-number"
-          title="Put the cursor in this network"
-          onClick={() => ui.getState().focusCell(n.id, { row: 0, col: 0 })}
+          data-testid={`network-number-${n.id}`}
+          aria-pressed={selected}
+          title="Select this network (Shift: a range, Ctrl: add or remove); copy, cut, paste, duplicate, delete and Alt+↑/↓ then act on whole networks"
+          onClick={(e) => {
+            const toggle = e.ctrlKey || e.metaKey;
+            if (!e.shiftKey && !toggle && !n.collapsed) ui.getState().setCursor({ network: n.id, row: 0, col: 0 });
+            clickNetwork({ doc, ui }, n.id, { shift: e.shiftKey, toggle });
+          }}
         >
           Network {no}
         </button>

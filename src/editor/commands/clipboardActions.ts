@@ -7,11 +7,14 @@ import { clipText, parseClip, type Clip } from '../../store/clipboard';
 import { selectActivePou } from '../../store/documentStore';
 import { copyElements } from '../../store/networkEdits';
 import { ensureCursor, libraryOf, networkById, targets, type EditorContext } from './editorActions';
+import { deleteSelectedNetworks, hasNetworkSelection, networkCopyText, pasteNetworksText } from './networkActions';
+import { parseNetworkClip } from '../../store/networkUnits';
 
 let inPage: string | undefined;
 
-/** The clip text of the current targets, or undefined when nothing is selected. */
+/** The clip text of the selected networks, else of the current targets; undefined when nothing is selected. */
 export function copyText(ctx: EditorContext): string | undefined {
+  if (hasNetworkSelection(ctx)) return networkCopyText(ctx);
   const t = targets(ctx);
   const n = t && networkById(ctx, t.network);
   const content = n && copyElements(n, t.ids, libraryOf(ctx));
@@ -49,6 +52,11 @@ export function copy(ctx: EditorContext, systemClipboard = true): string | undef
 }
 
 export function cut(ctx: EditorContext, systemClipboard = true): string | undefined {
+  if (hasNetworkSelection(ctx)) {
+    const text = copy(ctx, systemClipboard);
+    if (text) deleteSelectedNetworks(ctx);
+    return text;
+  }
   const t = targets(ctx);
   const text = copy(ctx, systemClipboard);
   if (!text || !t) return undefined;
@@ -57,8 +65,9 @@ export function cut(ctx: EditorContext, systemClipboard = true): string | undefi
   return text;
 }
 
-/** Pastes clip text at the cursor (declaring the copied variables that this POU lacks) as one undo step. */
+/** Pastes clip text: whole networks (networkActions.ts), or elements at the cursor (declaring the copied variables that this POU lacks) as one undo step. */
 export function pasteText(ctx: EditorContext, text: string | undefined): boolean {
+  if (text && pasteNetworksText(ctx, text)) return true;
   const clip: Clip | undefined = text ? parseClip(text) : undefined;
   if (!clip) {
     ctx.ui.getState().setStatus('The clipboard holds no ladder elements.');
@@ -88,5 +97,5 @@ export async function pasteFromSystem(ctx: EditorContext): Promise<void> {
   } catch {
     text = undefined;
   }
-  pasteText(ctx, text && parseClip(text) ? text : inPage);
+  pasteText(ctx, text && (parseClip(text) || parseNetworkClip(text)) ? text : inPage);
 }

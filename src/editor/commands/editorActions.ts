@@ -221,7 +221,7 @@ export function escape(ctx: EditorContext) {
   const ui = ctx.ui.getState();
   if (ui.blockPicker) return ui.closeBlockPicker();
   if (ui.tool.kind !== 'select') return ui.setTool({ kind: 'select' });
-  ui.select(undefined, []);
+  ui.clearSelection();
 }
 
 /** Zoom so the widest network fits the visible width. */

@@ -21,6 +21,14 @@ import {
   zoomToFit,
   type EditorContext,
 } from './editorActions';
+import {
+  deleteSelectedNetworks,
+  duplicateSelectedNetworks,
+  extendNetworkSelection,
+  hasNetworkSelection,
+  moveSelectedNetworks,
+  selectAllNetworks,
+} from './networkActions';
 
 export type CommandGroup = 'Edit' | 'Insert' | 'Network' | 'View' | 'Navigate';
 
@@ -50,8 +58,14 @@ function focusHeaderField(ctx: EditorContext, field: 'label' | 'title' | 'commen
 
 const hasDocSelectionOrCursor = (ctx: EditorContext) => {
   const ui = ctx.ui.getState();
-  return ui.selection.elements.length > 0 || ui.cursor !== undefined;
+  return ui.selection.elements.length > 0 || ui.cursor !== undefined || hasNetworkSelection(ctx);
 };
+
+/** Runs `onNetworks` when whole networks are selected (by their headers), else `onElements`. */
+const unitOr =
+  (onNetworks: (ctx: EditorContext) => void, onElements: (ctx: EditorContext) => void) =>
+  (ctx: EditorContext) =>
+    hasNetworkSelection(ctx) ? onNetworks(ctx) : onElements(ctx);
 
 const placeCommands: EditorCommand[] = PALETTE_ITEMS.map((item) => ({
   id: `place.${item.id}`,
@@ -115,7 +129,7 @@ export const COMMANDS: readonly EditorCommand[] = [
     group: 'Edit',
     keys: ['mod+d'],
     inMenu: true,
-    run: duplicateTargets,
+    run: unitOr(duplicateSelectedNetworks, duplicateTargets),
     enabled: hasDocSelectionOrCursor,
   },
   {
@@ -124,7 +138,7 @@ export const COMMANDS: readonly EditorCommand[] = [
     group: 'Edit',
     keys: ['delete', 'backspace'],
     inMenu: true,
-    run: deleteTargets,
+    run: unitOr(deleteSelectedNetworks, deleteTargets),
     enabled: hasDocSelectionOrCursor,
   },
   {
@@ -133,7 +147,7 @@ export const COMMANDS: readonly EditorCommand[] = [
     group: 'Edit',
     keys: ['mod+a'],
     inMenu: true,
-    run: selectAllInNetwork,
+    run: unitOr(selectAllNetworks, selectAllInNetwork),
   },
   {
     id: 'edit.branch',
@@ -233,6 +247,54 @@ export const COMMANDS: readonly EditorCommand[] = [
     run: deleteCurrentNetwork,
   },
   {
+    id: 'network.moveUp',
+    label: 'Move selected networks up',
+    group: 'Network',
+    inMenu: true,
+    run: (ctx) => moveSelectedNetworks(ctx, -1),
+    enabled: hasNetworkSelection,
+  },
+  {
+    id: 'network.moveDown',
+    label: 'Move selected networks down',
+    group: 'Network',
+    inMenu: true,
+    run: (ctx) => moveSelectedNetworks(ctx, 1),
+    enabled: hasNetworkSelection,
+  },
+  {
+    id: 'network.collapseAll',
+    label: 'Collapse all networks',
+    group: 'Network',
+    keys: ['mod+shift+arrowup'],
+    inMenu: true,
+    run: (ctx) => ctx.doc.getState().setCollapsed('all', true),
+  },
+  {
+    id: 'network.expandAll',
+    label: 'Expand all networks',
+    group: 'Network',
+    keys: ['mod+shift+arrowdown'],
+    inMenu: true,
+    run: (ctx) => ctx.doc.getState().setCollapsed('all', false),
+  },
+  {
+    id: 'nav.goto',
+    label: 'Go to network…',
+    group: 'Network',
+    keys: ['mod+g'],
+    inMenu: true,
+    run: (ctx) => ctx.ui.getState().setFinder('goto'),
+  },
+  {
+    id: 'edit.find',
+    label: 'Find / replace…',
+    group: 'Edit',
+    keys: ['mod+f', 'mod+h'],
+    inMenu: true,
+    run: (ctx) => ctx.ui.getState().setFinder('find'),
+  },
+  {
     id: 'network.label',
     label: 'Network label',
     group: 'Network',
@@ -297,14 +359,18 @@ export const COMMANDS: readonly EditorCommand[] = [
       label: `Extend selection ${dir.toLowerCase()}`,
       group: 'Navigate',
       keys: [`shift+arrow${dir.toLowerCase()}`],
-      run: (ctx) => moveCursor(ctx, dRow, dCol, true),
+      run: (ctx) =>
+        hasNetworkSelection(ctx) && dRow !== 0
+          ? extendNetworkSelection(ctx, dRow)
+          : moveCursor(ctx, dRow, dCol, true),
     },
     {
       id: `edit.move${dir}`,
       label: `Move selection ${dir.toLowerCase()}`,
       group: 'Edit',
       keys: [`alt+arrow${dir.toLowerCase()}`],
-      run: (ctx) => nudgeTargets(ctx, dRow, dCol),
+      run: (ctx) =>
+        hasNetworkSelection(ctx) ? dRow !== 0 && moveSelectedNetworks(ctx, dRow) : nudgeTargets(ctx, dRow, dCol),
     },
   ]),
   {

@@ -1,6 +1,7 @@
 // Global keyboard shortcuts from the command registry. Typing in a field never triggers them.
 import { useEffect } from 'react';
 import { parseClip } from '../../store/clipboard';
+import { parseNetworkClip } from '../../store/networkUnits';
 import { copyText, pasteInPage, pasteText } from './clipboardActions';
 import type { EditorContext } from './editorActions';
 import { matches, parseKeys } from './keys';
@@ -33,7 +34,7 @@ export function useShortcuts(ctx: EditorContext) {
     const onKeyDown = (e: KeyboardEvent) => {
       if (e.defaultPrevented || isTypingTarget(e.target)) return;
       const ui = ctx.ui.getState();
-      if (ui.editing || ui.blockPicker) return;
+      if (ui.editing || ui.blockPicker || ui.pastePrompt) return;
       const binding = BINDINGS.find((b) => matches(b.spec, e));
       if (!binding) return;
       if (binding.command.id === 'edit.paste') {
@@ -56,7 +57,7 @@ export function useShortcuts(ctx: EditorContext) {
       pendingPaste = undefined;
       const text = e.clipboardData?.getData('text/plain');
       e.preventDefault();
-      if (text && parseClip(text)) pasteText(ctx, text);
+      if (text && (parseClip(text) || parseNetworkClip(text))) pasteText(ctx, text);
       else pasteInPage(ctx);
     };
 

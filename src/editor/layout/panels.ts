@@ -19,6 +19,10 @@ import { TrendPanel } from '../sim/TrendPanel';
 import { WatchPanel } from '../sim/WatchPanel';
 import { WhyPanel } from '../history/WhyPanel';
 import { TestsPanel } from '../scenarios/TestsPanel';
+import { NetworkUnitsHost } from '../outline/NetworkUnitsHost';
+import { OutlinePanel } from '../outline/OutlinePanel';
+import { FindHost } from '../find/FindHost';
+import { XrefPanel } from '../find/XrefPanel';
 
 export interface PanelSlot {
   readonly id: string;
@@ -37,6 +41,7 @@ export const RIGHT_PANELS: readonly PanelSlot[] = [
   { id: 'variables', title: 'Variables', component: VariablesPanel },
   { id: 'hardware', title: 'Hardware', component: HardwarePanel },
   { id: 'inputs', title: 'Inputs', component: InputsPanel },
+  { id: 'outline', title: 'Outline', component: OutlinePanel },
 ];
 
 /** Tabs of the bottom panel; the first is open at start. */
@@ -47,6 +52,7 @@ export const BOTTOM_PANELS: readonly PanelSlot[] = [
   { id: 'breakpoints', title: 'Breakpoints & forces', component: SimulationPanel },
   { id: 'why', title: 'Why?', component: WhyPanel },
   { id: 'tests', title: 'Tests', component: TestsPanel },
+  { id: 'xref', title: 'Cross-reference', component: XrefPanel },
 ];
 
 /** Items in the top bar, after the menus (e.g. simulation controls). */
@@ -58,6 +64,8 @@ export const HOSTS: readonly BarSlot[] = [
   { id: 'plcopen', component: PlcopenHost },
   { id: 'simulation', component: SimHostMount },
   { id: 'hardware-sim-link', component: HardwareSimLink },
+  { id: 'network-units', component: NetworkUnitsHost },
+  { id: 'find', component: FindHost },
 ];
 
 /** Power flow and live values on the canvas (see src/editor/canvas/overlay.ts); undefined: none. */

@@ -1,0 +1,108 @@
+// Mounted once: the paste prompt (keep or renew the FB instances of pasted networks) and the
+// Ctrl+G "go to network" box.
+import { useMemo, useState, type KeyboardEvent } from 'react';
+import { selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
+import { useUi, useUiStore } from '../../store/uiStore';
+import type { EditorContext } from '../commands/editorActions';
+import { pasteNetworksText } from '../commands/networkActions';
+import { goToNetwork } from './goTo';
+import './outline.css';
+
+function PastePrompt({ ctx }: { readonly ctx: EditorContext }) {
+  const prompt = useUi((s) => s.pastePrompt);
+  if (!prompt) return null;
+  const cancel = () => ctx.ui.getState().setPastePrompt(undefined);
+  const onKeyDown = (e: KeyboardEvent) => {
+    e.stopPropagation();
+    if (e.key === 'Escape') cancel();
+  };
+  return (
+    <div
+      className="rs-floating"
+      role="dialog"
+      aria-label="Paste networks"
+      data-testid="paste-prompt"
+      onKeyDown={onKeyDown}
+    >
+      <div>
+        The pasted networks call FB instances this POU already has:{' '}
+        <strong className="rs-mono">{prompt.instances.join(', ')}</strong>
+      </div>
+      <div className="rs-row">
+        <button
+          type="button"
+          autoFocus
+          data-testid="paste-new-instances"
+          title="Each instance gets the next free name (Timer1 → Timer2), declared with the same type"
+          onClick={() => pasteNetworksText(ctx, prompt.text, 'new')}
+        >
+          New instances
+        </button>
+        <button
+          type="button"
+          data-testid="paste-keep-instances"
+          title="Call the same instances again (legal IEC; the checks warn, LD-R10)"
+          onClick={() => pasteNetworksText(ctx, prompt.text, 'keep')}
+        >
+          Keep instances
+        </button>
+        <button type="button" onClick={cancel}>
+          Cancel
+        </button>
+      </div>
+    </div>
+  );
+}
+
+function GoToBox({ ctx }: { readonly ctx: EditorContext }) {
+  const open = useUi((s) => s.finder === 'goto');
+  const count = useDocument(selectNetworks).length;
+  const [text, setText] = useState('');
+  const [error, setError] = useState('');
+  if (!open) return null;
+  const close = () => {
+    setText('');
+    setError('');
+    ctx.ui.getState().setFinder(undefined);
+  };
+  const go = () => {
+    const problem = goToNetwork(ctx, text);
+    if (problem) setError(problem);
+    else close();
+  };
+  return (
+    <div className="rs-floating" role="dialog" aria-label="Go to network" data-testid="goto-box">
+      <label>
+        Go to network (1–{count}) or label
+        <input
+          autoFocus
+          data-testid="goto-input"
+          value={text}
+          onChange={(e) => setText(e.target.value)}
+          onKeyDown={(e) => {
+            e.stopPropagation();
+            if (e.key === 'Enter') go();
+            if (e.key === 'Escape') close();
+          }}
+        />
+      </label>
+      {error && (
+        <div className="rs-row" role="alert">
+          {error}
+        </div>
+      )}
+    </div>
+  );
+}
+
+export function NetworkUnitsHost() {
+  const doc = useDocumentStore();
+  const ui = useUiStore();
+  const ctx = useMemo<EditorContext>(() => ({ doc, ui }), [doc, ui]);
+  return (
+    <>
+      <PastePrompt ctx={ctx} />
+      <GoToBox ctx={ctx} />
+    </>
+  );
+}
