@@ -8,6 +8,7 @@ import type { Profile, Project } from '../model/project';
 import { parseInterval } from '../plcopen/durations';
 import { UsageError, type CliIo } from './io';
 import { parseStimulus, type Stimulus } from './stimulus';
+import { csvRow } from '../sim/csv';
 
 export interface SimulateOptions {
   readonly pou?: string;
@@ -122,7 +123,7 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
   }
   const lastStim = stim?.rows.length ? stim.rows[stim.rows.length - 1]!.scan : 0;
   const scans = opts.scans ?? Math.max(lastStim, 10);
-  const lines: string[] = [['scan', 'time_ms', ...watch].join(',')];
+  const lines: string[] = [csvRow(['scan', 'time_ms', ...watch])];
   let next = 0;
   for (let k = 1; k <= scans; k++) {
     while (stim && next < stim.rows.length && stim.rows[next]!.scan === k) {
@@ -148,7 +149,8 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
     }
     const row = [String(k), String((k - 1) * cycleMs)];
     watch.forEach((w, i) => row.push(csvValue(types[i]!, plc.read(w))));
-    lines.push(row.join(','));
+    // RFC 4180: a cell with a comma, a quote or a line break is quoted (STRING values).
+    lines.push(csvRow(row));
   }
   io.out(`${lines.join('\n')}\n`);
   return 0;

@@ -14,6 +14,12 @@
 // |                      | (the value is the same wrapped result)      |                                                    |
 // | limit-crossed        | LIMIT = MIN(MAX(IN, MN), MX): MX if MN > MX | IN > MN ? (IN < MX ? IN : MX) : MN: MN if MN >= IN |
 // | mux-negative         | MUX with K < 0: ENO OFF, output not assigned| ENO ON, OUT = 0 (MATIEC tests only K >= n)         |
+// | string-compare       | strings compare character by character,     | __STR_CMP: memcmp over the shorter length, so      |
+// |                      | a prefix before the longer string           | 'abc' = 'abcd' and '' equals every string          |
+// | string-find          | FIND: first occurrence, 0 when none         | __pfind: misses overlapping starts, LEN+1 when none|
+// | time-to-string       | TIME_TO_STRING(T#1s500ms) = 'T#1s500ms'     | 'T#0d0h0m1s500ms' (__time_to_string)               |
+// | string-to-number     | STRING_TO_<num/TIME> reads an IEC literal,  | __pstring_to_sint/atof: skips what it cannot read, |
+// |                      | other text is an error (ENO OFF, 0)         | ENO ON; TIME in seconds                            |
 //
 // Same in both (checked): timers, edge detection, bistables; DIV by zero (ENO OFF, result 0);
 // REAL_TO_<int> rounds to nearest with ties to even (MATIEC __real_round); negative REAL to an
@@ -68,6 +74,30 @@ export const PROFILE_DIFFERENCES: readonly ProfileDifference[] = [
     summary: 'MUX with a negative selector K',
     iec: 'An error: ENO goes OFF and the output variable keeps its value.',
     openplc: 'ENO stays ON and OUT is 0 (the type\'s initial value): MATIEC checks only K >= the input count.',
+  },
+  {
+    id: 'string-compare',
+    summary: 'Comparing strings (EQ, GT, ..., MAX, MIN, LIMIT)',
+    iec: "Character by character; a string that is the start of a longer one is smaller: 'abc' < 'abcd'.",
+    openplc: "MATIEC compares the shorter length only (memcmp): 'abc' = 'abcd', and '' equals every string.",
+  },
+  {
+    id: 'string-find',
+    summary: 'FIND when IN2 is not found, or starts inside a partial match',
+    iec: "The position of the first occurrence, 0 when there is none: FIND('aab', 'ab') = 2.",
+    openplc: "MATIEC's scan resumes after a partial match and gives LEN(IN1) + 1 when nothing is found: FIND('aab', 'ab') = 4, FIND('abc', 'xy') = 4.",
+  },
+  {
+    id: 'time-to-string',
+    summary: 'Text of TIME_TO_STRING',
+    iec: "An IEC literal: TIME_TO_STRING(T#1s500ms) = 'T#1s500ms'.",
+    openplc: "MATIEC's format, days first: 'T#0d0h0m1s500ms' ('T#0d' for zero).",
+  },
+  {
+    id: 'string-to-number',
+    summary: 'STRING_TO_<number or TIME> on text',
+    iec: "Reads a literal of the type ('42', '16#FF', '1.5', 'T#2s' or a number of ms); other text is an error (ENO OFF, OUT 0).",
+    openplc: "MATIEC's readers: digits are read from the end and other characters skipped ('1 000' = 1000, '12abc34' = 12); REAL with atof; TIME in seconds; ENO stays ON.",
   },
   {
     id: 'limit-crossed',

@@ -10,8 +10,8 @@ import type { Access, VarSymbol } from '../compile/symbols';
 export class Memory {
   readonly b: Uint8Array;
   readonly n: Float64Array;
-  /** 64-bit integers and STRING/WSTRING values (symbols.ts Store 'g'); `load` reads either. */
-  readonly g: bigint[];
+  /** 64-bit integers (bigint) and STRING/WSTRING values (string): symbols.ts Store 'g'. */
+  readonly g: (bigint | string)[];
   readonly fbs: FbInstance[];
   readonly edges: Uint8Array;
   /** A spare slot per store, after the variables: writes to a forced variable land there. */
@@ -22,7 +22,7 @@ export class Memory {
     this.sink = { b: counts.b, n: counts.n, g: counts.g };
     this.b = new Uint8Array(counts.b + 1);
     this.n = new Float64Array(counts.n + 1);
-    this.g = new Array<bigint>(counts.g + 1).fill(0n);
+    this.g = new Array<bigint | string>(counts.g + 1).fill(0n);
     this.fbs = fbs.map((f) => {
       const inst = createFb(f.type, program.profile);
       if (!inst) throw new Error(`no implementation for the function block ${f.type}`);
@@ -41,7 +41,7 @@ export class Memory {
     for (const d of this.program.dataSlots) {
       const v = defaultValue(d.type);
       // g holds bigints and strings (symbols.ts Store).
-      if (d.store === 'g') this.g[d.slot] = v as bigint;
+      if (d.store === 'g') this.g[d.slot] = v as bigint | string;
       else this.n[d.slot] = v as number;
     }
   }
@@ -53,7 +53,7 @@ export class Memory {
       case 'n':
         return this.n[v.slot]!;
       case 'g':
-        return this.g[v.slot] as Value;
+        return this.g[v.slot]!;
     }
   }
 
@@ -67,7 +67,7 @@ export class Memory {
         this.n[v.slot] = value as number;
         return;
       case 'g':
-        this.g[v.slot] = value as bigint;
+        this.g[v.slot] = value as bigint | string;
     }
   }
 
