@@ -195,15 +195,14 @@ export interface PlcProbe {
   /** The snapshot's decoding of recorded words: `executed[i]` 1 when network i ran in that scan. */
   decode(power: Int32Array, executed: Uint8Array): NetworkPower[];
   /**
-   * Changes made from outside the scans, counted (a live view): [0] the input image written at a scan
-   * boundary (write to an input, setInputs); [1] anything else (other writes, forces, restarts,
-   * importState, clearFault, restore) and any change made in the middle of a scan.
+   * A live view: [0] and [1] count changes made from outside the scans: [0] the input image written
+   * at a scan boundary (write to an input, setInputs), [1] anything else (other writes, forces,
+   * restarts, importState, clearFault, restore) and any change made in the middle of a scan;
+   * [2] the wall-clock execution time of the last scan, ms.
    */
-  readonly changes: Int32Array;
+  readonly meters: Float64Array;
   /** The input image the next input read applies (a live view: copy what you keep). */
   readonly inputImage: readonly Value[];
-  /** Wall-clock execution time of the last scan, ms. */
-  readonly execMs: number;
   /** The complete state at a scan boundary: every variable, FB instance, edge memory, power word, the input image, forces, scan count and time. */
   save(): PlcImage;
   /** Takes back a state save() gave on a PLC of the same compiled program (at a scan boundary, fault cleared). */

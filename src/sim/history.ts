@@ -41,13 +41,16 @@ const VALUE_BYTES = 8;
 export class Segment<I extends KeyImage> {
   /** Scans firstScan .. firstScan + count - 1. */
   count = 1;
-  /** Per scan (index = scan - firstScan): the session's time of the scan and the PLC's own time (what its timers saw). */
-  times: Float64Array;
-  plcTimes: Float64Array;
+  /**
+   * Per scan k (k = scan - firstScan): at 2k the session's time of the scan, at 2k + 1 the PLC's own
+   * time (what its timers saw; they differ after an online change).
+   */
+  private t: Float64Array;
   /** Offsets of the scans that read a changed input image, ascending, and those images. */
   readonly inputAt: number[] = [];
   readonly inputs: (readonly Value[])[] = [];
-  bytes: number;
+  /** Bytes of the input images. */
+  private inputBytes = 0;
 
   constructor(
     readonly firstScan: number,
@@ -56,38 +59,47 @@ export class Segment<I extends KeyImage> {
     /** The complete state after firstScan. */
     readonly image: I,
   ) {
-    this.times = new Float64Array(16);
-    this.plcTimes = new Float64Array(16);
-    this.times[0] = timeMs;
-    this.plcTimes[0] = plcTimeMs;
-    this.bytes = image.bytes + 128;
+    this.t = new Float64Array(32);
+    this.t[0] = timeMs;
+    this.t[1] = plcTimeMs;
   }
 
   get lastScan(): number {
     return this.firstScan + this.count - 1;
   }
 
-  /** Appends the next scan; returns the bytes it added. */
-  push(timeMs: number, plcTimeMs: number, inputs?: readonly Value[]): number {
-    const k = this.count++;
-    if (k === this.times.length) {
-      const times = new Float64Array(k * 2);
-      times.set(this.times);
-      this.times = times;
-      const plc = new Float64Array(k * 2);
-      plc.set(this.plcTimes);
-      this.plcTimes = plc;
+  /** Estimated memory held, in bytes. */
+  get bytes(): number {
+    return this.image.bytes + 128 + this.count * SCAN_BYTES + this.inputBytes;
+  }
+
+  /** The session's time of scan firstScan + k, and the PLC's. */
+  timeAt(k: number): number {
+    return this.t[2 * k]!;
+  }
+  plcTimeAt(k: number): number {
+    return this.t[2 * k + 1]!;
+  }
+
+  /** Appends the next scan. */
+  push(timeMs: number, plcTimeMs: number): void {
+    const at = 2 * this.count++;
+    let t = this.t;
+    if (at === t.length) {
+      t = new Float64Array(at * 2);
+      t.set(this.t);
+      this.t = t;
     }
-    this.times[k] = timeMs;
-    this.plcTimes[k] = plcTimeMs;
-    let added = SCAN_BYTES;
-    if (inputs) {
-      this.inputAt.push(k);
-      this.inputs.push(inputs);
-      added += INPUTS_BYTES + inputs.length * VALUE_BYTES;
-    }
-    this.bytes += added;
-    return added;
+    t[at] = timeMs;
+    t[at + 1] = plcTimeMs;
+  }
+
+  /** Appends the next scan, which read a changed input image. */
+  pushInputs(timeMs: number, plcTimeMs: number, inputs: readonly Value[]): void {
+    this.inputAt.push(this.count);
+    this.inputs.push(inputs);
+    this.inputBytes += INPUTS_BYTES + inputs.length * VALUE_BYTES;
+    this.push(timeMs, plcTimeMs);
   }
 
   /** Index in inputAt of the first input image recorded at or after `scan`. */
@@ -111,7 +123,8 @@ export class ScanHistory<I extends KeyImage = KeyImage> {
   readonly keyEvery: number;
   readonly keyReplayMs: number;
   private segs: Segment<I>[] = [];
-  private totalBytes = 0;
+  /** Bytes of the segments before the open one. */
+  private closedBytes = 0;
   /** Set when one segment alone is over the budget: only scans from here on can be seeked. */
   private overBudgetFloor = -Infinity;
 
@@ -143,7 +156,8 @@ export class ScanHistory<I extends KeyImage = KeyImage> {
   }
   /** Estimated memory held, in bytes. */
   get bytes(): number {
-    return this.totalBytes;
+    const open = this.open;
+    return open ? this.closedBytes + open.bytes : 0;
   }
   get segmentCount(): number {
     return this.segs.length;
@@ -151,7 +165,7 @@ export class ScanHistory<I extends KeyImage = KeyImage> {
 
   clear(): void {
     this.segs = [];
-    this.totalBytes = 0;
+    this.closedBytes = 0;
     this.overBudgetFloor = -Infinity;
   }
 
@@ -162,9 +176,8 @@ export class ScanHistory<I extends KeyImage = KeyImage> {
   key(scan: number, timeMs: number, plcTimeMs: number, image: I): void {
     const open = this.open;
     if (open && scan !== open.lastScan + 1) this.clear();
-    const seg = new Segment(scan, timeMs, plcTimeMs, image);
-    this.segs.push(seg);
-    this.totalBytes += seg.bytes;
+    else if (open) this.closedBytes += open.bytes;
+    this.segs.push(new Segment(scan, timeMs, plcTimeMs, image));
     this.evict();
   }
 
@@ -173,22 +186,24 @@ export class ScanHistory<I extends KeyImage = KeyImage> {
    * image. Call key() instead for the first scan, after a gap, and after any other change.
    */
   scan(timeMs: number, plcTimeMs: number, inputs?: readonly Value[]): void {
-    this.totalBytes += this.open!.push(timeMs, plcTimeMs, inputs);
-    if (this.totalBytes > this.budgetBytes) this.evict();
+    const open = this.open!;
+    if (inputs) open.pushInputs(timeMs, plcTimeMs, inputs);
+    else open.push(timeMs, plcTimeMs);
+    if (this.closedBytes + open.bytes > this.budgetBytes) this.evict();
   }
 
   /** Drops the oldest segments while over budget or wholly older than maxScans. */
   private evict(): void {
-    while (this.segs.length > 1 && this.totalBytes > this.budgetBytes) this.dropOldest();
+    while (this.segs.length > 1 && this.bytes > this.budgetBytes) this.dropOldest();
     const floor = this.open!.lastScan - this.maxScans + 1;
     while (this.segs.length > 1 && this.segs[0]!.lastScan < floor) this.dropOldest();
     // One segment over budget on its own: keep its last scan only (seeking it replays the segment).
-    if (this.totalBytes > this.budgetBytes) this.overBudgetFloor = this.open!.lastScan;
+    if (this.bytes > this.budgetBytes) this.overBudgetFloor = this.open!.lastScan;
   }
 
   private dropOldest(): void {
-    const seg = this.segs.shift()!;
-    this.totalBytes -= seg.bytes;
+    // Never the open segment: at least one stays.
+    this.closedBytes -= this.segs.shift()!.bytes;
   }
 
   /** The segment holding `scan`, when it can be seeked. */
@@ -224,6 +239,6 @@ export class ScanHistory<I extends KeyImage = KeyImage> {
   /** The session's time of a recorded scan. */
   timeOf(scan: number): number | undefined {
     const seg = this.segmentOf(scan);
-    return seg ? seg.times[scan - seg.firstScan] : undefined;
+    return seg ? seg.timeAt(scan - seg.firstScan) : undefined;
   }
 }

@@ -29,7 +29,7 @@ export class HistoryRecorder {
   private readonly changes: ChangeIndex;
   private readonly index = new Map<string, number>();
   private readonly names: readonly string[];
-  /** Outside-change counters (PlcProbe.changes) as of the last recorded scan. */
+  /** Outside-change counters (PlcProbe.meters) as of the last recorded scan. */
   private seenInputs = -1;
   private seenState = -1;
   /** Execution time of the scans since the last key, and the least a key took to save (ms; the first ones run before the JIT has optimised saving, and a garbage collection can make any slow). */
@@ -60,18 +60,18 @@ export class HistoryRecorder {
   record(scan: number, timeMs: number): void {
     const h = this.history;
     const probe = this.probe;
-    const counts = probe.changes;
-    const exec = (this.execSinceKey += probe.execMs);
+    const meters = probe.meters;
+    const exec = (this.execSinceKey += meters[2]!);
     const open = h.open;
     if (
       open === undefined ||
       scan !== open.firstScan + open.count ||
-      counts[1] !== this.seenState ||
+      meters[1] !== this.seenState ||
       ((open.count >= h.keyEvery || exec >= h.keyReplayMs) && (exec >= SAVE_SHARE * this.saveMs || open.count >= MAX_KEY_SPACING * h.keyEvery))
     ) {
       this.key(scan, timeMs);
-    } else if (counts[0] !== this.seenInputs) {
-      this.seenInputs = counts[0]!;
+    } else if (meters[0] !== this.seenInputs) {
+      this.seenInputs = meters[0]!;
       h.scan(timeMs, this.plc.timeMs, probe.inputImage.slice());
     } else {
       h.scan(timeMs, this.plc.timeMs);
@@ -85,8 +85,8 @@ export class HistoryRecorder {
     const cleared = this.history.open !== undefined && scan !== this.history.last! + 1;
     this.history.key(scan, timeMs, this.plc.timeMs, image);
     if (cleared) this.forget();
-    this.seenInputs = this.probe.changes[0]!;
-    this.seenState = this.probe.changes[1]!;
+    this.seenInputs = this.probe.meters[0]!;
+    this.seenState = this.probe.meters[1]!;
     this.execSinceKey = 0;
   }
 

@@ -72,7 +72,7 @@ export class Replayer {
     const k = scan - seg.firstScan;
     let inputs: readonly Value[] | undefined;
     if (this.inputPos < seg.inputAt.length && seg.inputAt[this.inputPos] === k) inputs = seg.inputs[this.inputPos++];
-    const fault = this.probe.replay(seg.plcTimes[k]!, inputs);
+    const fault = this.probe.replay(seg.plcTimeAt(k), inputs);
     if (fault) {
       this.reset();
       throw new Error(`replaying scan ${scan} faulted (${fault.message}); the history cannot show it`);
@@ -113,6 +113,6 @@ export class Replayer {
     const own = this.plc!.scanCount;
     for (let n = 0; n < ranIn.length; n++) power[words + n] = ranIn[n] === own ? 1 : 0;
     const seg = this.seg!;
-    return { scan, timeMs: seg.times[scan - seg.firstScan]!, values, power };
+    return { scan, timeMs: seg.timeAt(scan - seg.firstScan), values, power };
   }
 }

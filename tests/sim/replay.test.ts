@@ -68,7 +68,7 @@ function stProgram(): Project {
   const main = textPou(
     'Main',
     'PROGRAM',
-    vars('A BOOL %IX0.0', 'B BOOL %IX0.1', 'Level INT %IW1', 'Out BOOL %QX0.0', 'Count INT', 'Acc DINT', 'Big LINT := 1', 'T1 TON', 'F1 Edge', 'i INT', 'Ratio REAL'),
+    vars('A BOOL %IX0.0', 'B BOOL %IX0.1', 'Level INT %IW1', 'Out BOOL %QX0.0', 'Count INT', 'Acc DINT', 'Big LINT := 1', 'T1 TON', 'F1 Edge', 'i INT', 'Ratio REAL', 'P1 PID', 'Drive REAL'),
     [
       'T1(IN := A, PT := T#35ms);',
       'F1(X := B);',
@@ -78,6 +78,9 @@ function stProgram(): Project {
       'FOR i := 0 TO 3 DO Acc := Acc + i; END_FOR;',
       'Ratio := DINT_TO_REAL(Acc) / 7.0;',
       'Out := T1.Q XOR B;',
+      // A PID holds inner FBs (its integral and derivative terms).
+      'P1(AUTO := A, PV := Ratio, SP := 5.0, KP := 0.5, TR := 2.0, TD := 0.1, CYCLE := T#10ms);',
+      'Drive := P1.XOUT;',
     ].join('\n'),
   );
   return stProject([main, edge]);
@@ -165,7 +168,7 @@ describe('replaying recorded scans', () => {
     expect(programs).toBeGreaterThanOrEqual(20);
   });
 
-  it('rebuilds every scan of an ST program calling a user FB (timers, LINT, REAL, loops)', () => {
+  it('rebuilds every scan of an ST program calling a user FB (timers, a PID, LINT, REAL, loops)', () => {
     const { recorder, live } = runLive(stProgram(), 99, 600, { keyEvery: 64 });
     expectReplayEqualsLive(recorder, live, 'ST');
     // Out of order, as a user drags the timeline.

@@ -102,8 +102,8 @@ export class ScanPlc implements Plc {
   private lastExecMs = 0;
   private clockOrigin = 0;
   private currentFault: Fault | undefined;
-  /** PlcProbe.changes: [0] input image written at a boundary, [1] any other change from outside. */
-  private readonly changes = new Int32Array(2);
+  /** PlcProbe.meters: [0] input image written at a boundary, [1] any other change from outside, [2] last scan's execution ms. */
+  private readonly meters = new Float64Array(3);
   /** The time of a scan being replayed (PlcProbe.replay), instead of the clock's. */
   private replayAt: number | undefined;
 
@@ -216,7 +216,7 @@ export class ScanPlc implements Plc {
     for (let i = 0; i < this.outputsVars.length; i++)
       this.outputImage[i] = this.mem.load(this.outputsVars[i]!);
     this.cursor = -1;
-    this.lastExecMs = now() - this.scanStart;
+    this.lastExecMs = this.meters[2] = now() - this.scanStart;
     this.tiering.afterScan(this.evals);
   }
 
@@ -483,7 +483,7 @@ export class ScanPlc implements Plc {
   }
 
   clearFault(): void {
-    this.changes[1]!++;
+    this.meters[1]!++;
     this.currentFault = undefined;
     this.cursor = -1;
     this.stepper = undefined;
@@ -506,7 +506,7 @@ export class ScanPlc implements Plc {
     const a = this.access(name);
     const v = coerce(a.type, value, `"${name}"`);
     const input = a.kind === 'var' && a.v.location?.area === 'I';
-    this.changes[input && this.cursor === -1 ? 0 : 1]!++;
+    this.meters[input && this.cursor === -1 ? 0 : 1]!++;
     if (input) {
       this.inputImage[this.inputs.indexOf(a.v)] = v;
       return;
@@ -525,7 +525,7 @@ export class ScanPlc implements Plc {
     const v = this.forceTarget(name);
     const val = coerce(v.type, value, `"${name}"`);
     const fresh = !this.forces.has(v);
-    this.changes[1]!++;
+    this.meters[1]!++;
     this.forces.set(v, val);
     this.mem.store(v, val);
     if (fresh) this.redirectWriters(v, true);
@@ -533,12 +533,12 @@ export class ScanPlc implements Plc {
 
   unforce(name: string): void {
     const v = this.forceTarget(name);
-    this.changes[1]!++;
+    this.meters[1]!++;
     if (this.forces.delete(v)) this.redirectWriters(v, false);
   }
 
   unforceAll(): void {
-    this.changes[1]!++;
+    this.meters[1]!++;
     const vars = [...this.forces.keys()];
     this.forces.clear();
     for (const v of vars) this.redirectWriters(v, false);
@@ -561,7 +561,7 @@ export class ScanPlc implements Plc {
   }
 
   setInputs(values: Readonly<Record<string, Value>>): void {
-    this.changes[this.cursor === -1 ? 0 : 1]!++;
+    this.meters[this.cursor === -1 ? 0 : 1]!++;
     for (const [loc, value] of Object.entries(values)) {
       const v = this.program.symbols.atLocation(loc, false);
       const index = v ? this.inputs.indexOf(v) : -1;
@@ -592,7 +592,7 @@ export class ScanPlc implements Plc {
   // ---- restarts ----
 
   private resetCommon(): void {
-    this.changes[1]!++;
+    this.meters[1]!++;
     this.cursor = -1;
     this.stepper = undefined;
     this.frames = [];
@@ -633,14 +633,12 @@ export class ScanPlc implements Plc {
   }
 
   importState(state: PlcState): StateTransfer {
-    this.changes[1]!++;
+    this.meters[1]!++;
     return importMemory(this.program, this.mem, state, this.nextScanTime());
   }
 
   probe(): PlcProbe {
     const { program, mem, words } = this;
-    // eslint-disable-next-line @typescript-eslint/no-this-alias -- the execMs getter reads the live field
-    const self = this;
     return {
       reader: (name) => {
         const a = this.access(name);
@@ -665,11 +663,8 @@ export class ScanPlc implements Plc {
         const ranIn = Int32Array.from(executed, (e) => (e ? 1 : -1));
         return networkPower(program, { scan: 1, power, words, ranIn });
       },
-      changes: this.changes,
+      meters: this.meters,
       inputImage: this.inputImage,
-      get execMs() {
-        return self.lastExecMs;
-      },
       save: () => this.saveImage(),
       restore: (image) => this.restoreImage(image as Image),
       replay: (timeMs, inputs) => {
