@@ -12,6 +12,9 @@ import type { LdElement } from '../src/model/elements';
 import { newNetwork, newPou, newProject, variable } from '../src/model/factory';
 import type { ElementId } from '../src/model/ids';
 import type { Network, Project, Variable } from '../src/model/project';
+import { findInProject } from '../src/store/find';
+import { copyNetworks } from '../src/store/networkUnits';
+import { crossReference } from '../src/store/xref';
 
 const NETWORKS = 1000;
 
@@ -42,6 +45,42 @@ function generate(): Project {
     );
   }
   return newProject('Bench', { pous: [newPou('Main', { networks, variables })] });
+}
+
+/** Median time of `fn` over `runs` runs, in ms (Node, the pure store logic). */
+function median(runs: number, fn: () => void): number {
+  const t: number[] = [];
+  for (let i = 0; i < runs; i++) {
+    const t0 = performance.now();
+    fn();
+    t.push(performance.now() - t0);
+  }
+  return t.sort((a, b) => a - b)[Math.floor(runs / 2)]!;
+}
+
+/** Find across the 1,000 networks, and the cross-reference of a variable used 1,000 times. */
+function logicFigures(project: Project) {
+  const find = median(9, () => findInProject(project, { text: 'Motor5', mode: 'text' }));
+  const main = project.pous[0]!;
+  // Every network's third contact reads one variable `Guard`: 1,000 uses.
+  const shared: Project = {
+    ...project,
+    pous: [
+      {
+        ...main,
+        variables: [...main.variables, variable('Guard', 'BOOL')],
+        networks: main.networks.map((n) => ({
+          ...n,
+          elements: n.elements.map((e) => (e.kind === 'contact' && e.id.endsWith('_c') ? { ...e, variable: 'Guard' } : e)),
+        })),
+      },
+    ],
+  };
+  let uses = 0;
+  const xref = median(9, () => {
+    uses = crossReference(shared, main.id, 'Guard').length;
+  });
+  return { find, xref, uses };
 }
 
 const percentile = (sorted: number[], p: number) =>
@@ -121,6 +160,24 @@ async function main() {
       return times;
     });
 
+    // Paste 100 whole networks (new instances, labels checked) from clip text: command to painted frame.
+    const clip = copyNetworks(project.pous[0]!, project.pous[0]!.networks.slice(0, 100).map((n) => n.id))!;
+    const paste = await page.evaluate(async (c) => {
+      const doc = window.rungsmith!.documentStore!;
+      const times: number[] = [];
+      for (let k = 0; k < 5; k++) {
+        const s = doc.getState();
+        const t0 = performance.now();
+        s.pasteNetworks(s.activePouId, 0, c, 'new');
+        await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+        times.push(performance.now() - t0);
+        doc.getState().undo();
+        await new Promise((r) => setTimeout(r, 100));
+      }
+      return times.sort((a, b) => a - b)[2]!;
+    }, clip);
+    const logic = logicFigures(project);
+
     const sorted = [...frames.deltas].sort((a, b) => a - b);
     const median = percentile(sorted, 0.5);
     const p95 = percentile(sorted, 0.95);
@@ -134,8 +191,11 @@ async function main() {
     console.log(
       `edit (insert a contact in series, command to painted frame): median ${round(edit)} ms, max ${round(editSorted[editSorted.length - 1]!)} ms over ${edits.length} edits`,
     );
+    console.log(`paste 100 networks (command to painted frame, ${NETWORKS}-network POU): median ${round(paste)} ms`);
+    console.log(`find across ${NETWORKS} networks (store logic): median ${round(logic.find)} ms`);
+    console.log(`cross-reference of a variable used ${logic.uses} times (store logic): median ${round(logic.xref)} ms`);
     console.log(
-      `bench:editor first-render-ms=${Math.round(firstRender)} p95-frame-ms=${round(p95)} edit-ms=${round(edit)}`,
+      `bench:editor first-render-ms=${Math.round(firstRender)} p95-frame-ms=${round(p95)} edit-ms=${round(edit)} paste100-ms=${round(paste)} find1000-ms=${round(logic.find)} xref1000-ms=${round(logic.xref)}`,
     );
   } finally {
     await browser.close();
