@@ -36,6 +36,14 @@ export type StringType = 'STRING' | 'WSTRING';
  */
 export const STRING_MAX_LEN = 126;
 
+const SIZED_STRING = /^(W?STRING)\s*[[(]\s*(\d+)\s*[\])]$/i;
+
+/** `STRING[20]`, `WSTRING(8)`: a string type with a declared length (not checked against STRING_MAX_LEN). */
+export function parseSizedString(text: string): { type: StringType; length: number } | undefined {
+  const m = SIZED_STRING.exec(text.trim());
+  return m ? { type: m[1]!.toUpperCase() as StringType, length: Number(m[2]) } : undefined;
+}
+
 /** Bit width and signedness of integer and bit-string types. */
 export const INT_INFO: Record<IntegerType | Exclude<BitStringType, 'BOOL'>, { bits: 8 | 16 | 32 | 64; signed: boolean }> = {
   SINT: { bits: 8, signed: true },

@@ -1,6 +1,6 @@
 // Variable declarations → PLCopen var lists. Consecutive variables sharing class and attributes form
 // one list, so declaration order survives the round trip.
-import { isElementaryType } from '../model/iecTypes';
+import { isElementaryType, parseSizedString } from '../model/iecTypes';
 import type { VarClass, Variable } from '../model/project';
 import { RS_VARIABLE } from './types';
 import type { XmlWriter } from './xml/write';
@@ -14,16 +14,14 @@ const LIST_OF: Record<VarClass, string> = {
   temp: 'tempVars',
 };
 
-const SIZED_STRING = /^(W?STRING)\s*[[(]\s*(\d+)\s*[\])]$/;
-
 /** `<BOOL/>`, `<string/>`, `<string length="20"/>` (STRING[20]), `<derived name="TON"/>`. */
 export function writeType(w: XmlWriter, type: string): void {
   const t = type.trim();
   const upper = t.toUpperCase();
-  const sized = SIZED_STRING.exec(upper);
+  const sized = parseSizedString(upper);
   if (upper === 'STRING') w.empty('string');
   else if (upper === 'WSTRING') w.empty('wstring');
-  else if (sized) w.empty(sized[1]!.toLowerCase(), { length: sized[2] });
+  else if (sized) w.empty(sized.type.toLowerCase(), { length: String(sized.length) });
   else if (isElementaryType(upper)) w.empty(upper);
   else if (['DATE', 'TIME_OF_DAY', 'TOD', 'DATE_AND_TIME', 'DT', 'LTIME', 'CHAR', 'WCHAR'].includes(upper))
     w.empty(upper === 'TOD' ? 'TOD' : upper === 'DT' ? 'DT' : upper);

@@ -144,6 +144,7 @@ const CATEGORY_ORDER: readonly BlockSignature['category'][] = [
   'bitwise',
   'selection',
   'conversion',
+  'string',
   'time',
   // Vendor library blocks the simulator does not run (library.externalBlocks): last.
   'external',

@@ -7,6 +7,8 @@ import {
   isElementaryType,
   locationAdmits,
   parseLocation,
+  parseSizedString,
+  type ElementaryType,
   type ParsedLocation,
 } from '../../model/iecTypes';
 import type { Project, Variable } from '../../model/project';
@@ -108,7 +110,7 @@ export function identifierProblem(name: string): string | undefined {
 }
 
 export const isKnownVariableType = (type: string, lib: BlockLibrary = STANDARD_LIBRARY): boolean =>
-  isElementaryType(type.toUpperCase()) || lib.isFbType(type);
+  isElementaryType(type.toUpperCase()) || parseSizedString(type) !== undefined || lib.isFbType(type);
 
 /** An address in one canonical spelling, so %ix0.0 and %IX0.0 compare equal. */
 export function canonicalLocation(loc: ParsedLocation): string {
@@ -260,8 +262,8 @@ export function validateVariables(
           field: 'initial',
           message: `a ${lib.signature(type)?.name ?? type} instance takes no initial value`,
         });
-      else if (isElementaryType(type)) {
-        const problem = checkInitialValue(v.initial, type);
+      else if (isElementaryType(type) || parseSizedString(type)) {
+        const problem = checkInitialValue(v.initial, parseSizedString(type)?.type ?? (type as ElementaryType));
         if (problem) issues.push({ index, field: 'initial', message: problem });
       }
     }

@@ -9,6 +9,7 @@ import {
   isElementaryType,
   locationAdmits,
   parseLocation,
+  parseSizedString,
   type ElementaryType,
   type ParsedLocation,
   type Value,
@@ -28,22 +29,19 @@ export const storeOf = (t: ElementaryType): Store =>
   t === 'BOOL' ? 'b' : isBigIntType(t) || isStringType(t) ? 'g' : 'n';
 
 /**
- * `STRING[20]` or `STRING(20)` (a declared length, 1 to STRING_MAX_LEN): the type it names. As in
- * MATIEC, whose C STRING always has room for STRING_MAX_LEN characters, the length is kept in the
- * declaration (and exported) but does not cut the values.
+ * The elementary type a declared type text names, or undefined. `STRING[20]` or `STRING(20)` (a
+ * declared length, 1 to STRING_MAX_LEN) names STRING: as in MATIEC, whose C STRING always has room
+ * for STRING_MAX_LEN characters, the length is kept in the declaration (and exported) but does not
+ * cut the values.
  */
-const SIZED_STRING = /^(W?STRING)\s*[[(]\s*(\d+)\s*[\])]$/;
-
-/** The elementary type a declared type text names (`STRING[20]` names STRING), or undefined. */
 export function declaredElementaryType(text: string): { type: ElementaryType } | { error: string } | undefined {
   const upper = text.trim().toUpperCase();
   if (isElementaryType(upper)) return { type: upper };
-  const m = SIZED_STRING.exec(upper);
-  if (!m) return undefined;
-  const length = Number(m[2]);
-  if (length < 1 || length > STRING_MAX_LEN)
-    return { error: `the length ${length} of ${m[1]} is out of range: a ${m[1]} holds 1 to ${STRING_MAX_LEN} characters` };
-  return { type: m[1] as ElementaryType };
+  const sized = parseSizedString(upper);
+  if (!sized) return undefined;
+  if (sized.length < 1 || sized.length > STRING_MAX_LEN)
+    return { error: `the length ${sized.length} of ${sized.type} is out of range: a ${sized.type} holds 1 to ${STRING_MAX_LEN} characters` };
+  return { type: sized.type };
 }
 
 export interface VarSymbol {
