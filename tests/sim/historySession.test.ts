@@ -5,7 +5,7 @@ import { describe, expect, test } from 'vitest';
 import { POWER_OUT } from '../../src/editor/sim/useSimOverlay';
 import { EXAMPLES } from '../../src/model/examples';
 import { SimHarness } from './harness';
-import { motorProgram } from './programs';
+import { motorProgram, timerProgram } from './programs';
 
 const lastOf = <T,>(xs: T[]): T => xs[xs.length - 1]!;
 
@@ -92,6 +92,36 @@ describe('scan history in the session', () => {
     h.send({ type: 'step', scans: 2 }).advance(10);
     expect(h.frame.scan).toBe(6);
     expect(h.frame.timeMs).toBe(50);
+  });
+
+  test('scans from thousands of scans ago show exactly what the frames showed then, through writes, forces and gateway inputs', () => {
+    const h = new SimHarness().send({ type: 'run', project: timerProgram() }).advance(1000);
+    const seen: { scan: number; values: unknown[]; elements: number[] }[] = [];
+    const snap = () => {
+      h.send({ type: 'pause' });
+      seen.push({ scan: h.frame.scan, values: [...h.frame.values], elements: [...h.frame.elements] });
+    };
+    snap();
+    h.send({ type: 'write', name: 'Enable', input: { value: false } }, { type: 'step', scans: 3 }).advance(50);
+    snap();
+    h.send({ type: 'setInputs', values: { '%IX0.0': true } }, { type: 'step', scans: 6 }).advance(100);
+    snap(); // the timer half-way
+    h.send({ type: 'run' }).advance(250);
+    snap();
+    h.send({ type: 'force', name: 'Lamp', input: { value: false } }, { type: 'run' }).advance(20_000);
+    h.send({ type: 'setInputs', values: { '%IX0.0': false } }).advance(300);
+    h.send({ type: 'setInputs', values: { '%IX0.0': true } }).advance(35);
+    snap();
+    h.send({ type: 'unforce', name: 'Lamp' }, { type: 'setInputs', values: { '%IX0.0': false } }, { type: 'run' }).advance(30_000);
+    const et = h.layout.variables.findIndex((v) => v.name === 'T1.ET');
+    expect(seen.map((s) => s.values[et])).toEqual([100, 0, 50, 100, expect.any(Number)]);
+    expect(h.frame.history!.last - h.frame.history!.first).toBeGreaterThan(5000);
+    for (const then of seen.reverse()) {
+      h.send({ type: 'historySeek', scan: then.scan });
+      const view = lastOf(h.of('historyView')).view;
+      expect(view.values, `values after scan ${then.scan}`).toEqual(then.values);
+      expect([...view.elements], `power of scan ${then.scan}`).toEqual(then.elements);
+    }
   });
 
   test('a cold restart and a new program start the history over; the budget applies', () => {

@@ -12,6 +12,7 @@ import { HistoryRecorder } from '../../src/sim/historyRecorder';
 import type { HistoryOptions } from '../../src/sim/history';
 import { buildLayout, findPou } from '../../src/sim/layout';
 import { ladder, project, vars } from '../engine/ladder';
+import { sfcPou, step, tr } from '../engine/sfcHelpers';
 import { io, stProject, textPou } from '../engine/stHelpers';
 
 function rng(seed: number) {
@@ -84,6 +85,16 @@ function stProgram(): Project {
     ].join('\n'),
   );
   return stProject([main, edge]);
+}
+
+/** A chart with timed steps and timed qualifiers (D, L, SD), step times read by the program. */
+function sfcProgram(): Project {
+  const main = sfcPou('Main', 'PROGRAM', vars('Go BOOL %IX0.0', 'Stop BOOL %IX0.1', 'Busy BOOL', 'Late BOOL', 'Short BOOL', 'Kept BOOL', 'Cnt INT'), {
+    steps: [step('Idle*'), step('Run', 'N Busy', 'D Late T#40ms', 'L Short T#25ms', 'SD Kept T#30ms', 'N Count'), step('Done', 'R Kept')],
+    transitions: [tr('Idle', 'Run', 'Go'), tr('Run', 'Done', 'Run.T >= T#70ms OR Stop'), tr('Done', 'Idle', 'NOT Go')],
+    actions: [{ name: 'Count', body: { language: 'ST', text: 'Cnt := Cnt + 1;' } }],
+  });
+  return stProject([main]);
 }
 
 interface Live {
@@ -173,6 +184,15 @@ describe('replaying recorded scans', () => {
     expectReplayEqualsLive(recorder, live, 'ST');
     // Out of order, as a user drags the timeline.
     for (const s of [600, 1, 333, 332, 64, 65, 129, 7]) expect(recorder.seek(s)!.values).toEqual(live[s - 1]!.values);
+  });
+
+  it('rebuilds every scan of an SFC chart (step times, timed qualifiers)', () => {
+    const { recorder, live, names } = runLive(sfcProgram(), 21, 500, { keyEvery: 32 });
+    expectReplayEqualsLive(recorder, live, 'SFC');
+    // The chart really moved: Run (N Busy) became active and left again.
+    const run = names.indexOf('Busy');
+    expect(live.filter((l) => l.values[run] === true).length).toBeGreaterThan(10);
+    expect(live.filter((l) => l.values[run] === false).length).toBeGreaterThan(10);
   });
 
   it('records only times and changed input images between keys', () => {
