@@ -145,7 +145,8 @@ export function LadderCanvas() {
     const x = RAIL_X + focusRequest.cell.col * CELL_W;
     el.scrollTop = Math.max(0, (y - 80) * zoom - el.clientHeight / 3);
     el.scrollLeft = Math.max(0, x * zoom - el.clientWidth / 2);
-    el.focus({ preventScroll: true });
+    // A panel that shows places one after another (find: Enter for the next) keeps the keyboard.
+    if (!document.activeElement?.closest('[data-keeps-focus]')) el.focus({ preventScroll: true });
     // Only a new request scrolls; later layout changes must not pull the view back.
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [focusRequest]);

@@ -28,11 +28,13 @@ function FindPanel({ ctx }: { readonly ctx: EditorContext }) {
   const hits = typeof result === 'string' ? [] : result;
   const close = () => ctx.ui.getState().setFinder(undefined);
 
-  const go = (delta: number) => {
-    if (!hits.length) return;
-    const i = (index + delta + hits.length) % hits.length;
+  /** Shows a hit (the panel keeps the keyboard: data-keeps-focus, see LadderCanvas). */
+  const show = (i: number) => {
     setIndex(i);
     revealPlace(ctx, hits[i]!);
+  };
+  const go = (delta: number) => {
+    if (hits.length) show((index + delta + hits.length) % hits.length);
   };
   const onKeyDown = (e: KeyboardEvent) => {
     e.stopPropagation();
@@ -61,7 +63,7 @@ function FindPanel({ ctx }: { readonly ctx: EditorContext }) {
   };
 
   return (
-    <div className="rs-floating rs-find" role="dialog" aria-label="Find and replace" data-testid="find-panel" onKeyDown={onKeyDown}>
+    <div className="rs-floating rs-find" role="dialog" aria-label="Find and replace" data-testid="find-panel" data-keeps-focus onKeyDown={onKeyDown}>
       <div className="rs-row">
         <input
           autoFocus
@@ -137,10 +139,7 @@ function FindPanel({ ctx }: { readonly ctx: EditorContext }) {
               <button
                 type="button"
                 aria-current={i === index}
-                onClick={() => {
-                  setIndex(i);
-                  revealPlace(ctx, h);
-                }}
+                onClick={() => show(i)}
               >
                 <span className="rs-find-where">{where(h)}</span>{' '}
                 <span className="rs-mono">
