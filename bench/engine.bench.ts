@@ -1,7 +1,8 @@
 // npm run bench:engine — compile time, scan speed and memory of the LD engine on generated programs
 // of 1,000 and 10,000 networks (mixed contacts, branches, coils; one TON and one CTU every 10
 // networks), against hand-written straight-line JavaScript for the same logic in the same process;
-// then 100 and 1,000 calls of a user FB against the same logic drawn inline (userBlocksBench.ts).
+// then 100 and 1,000 calls of a user FB against the same logic drawn inline (userBlocksBench.ts),
+// and 1,000 calls of it from one ST body against the same calls from LD networks (stCallsBench.ts).
 //
 // Fairness: the baseline is generated from the same rung descriptions as plain JS over plain
 // variables (0/1 numbers, bitwise logic), in functions of 100 rungs, calling the same TON/CTU
@@ -15,6 +16,7 @@ import type { Network, Project, Variable } from '../src/model/project';
 import { compileProgram, createPlc } from '../src/engine/plc';
 import { createFb } from '../src/engine/library/fbs';
 import { fbProject, inlineProject } from './userBlocksBench';
+import { measureStCalls } from './stCallsBench';
 
 type Rung =
   | { kind: 'branch'; a: string; b: string; c: string; d: string; out: string }
@@ -363,7 +365,9 @@ const small = measure(1_000, 2_000, 6_000);
 const large = measure(10_000, 200, 15_000);
 const calls100 = measureCalls(100, 3_000);
 const calls1000 = measureCalls(1_000, 6_000);
+const st1000 = measureStCalls(1_000, 8_000);
 console.log(
   `bench:engine worst-ratio=${Math.max(small.ratio, large.ratio).toFixed(2)} ns-per-network-10k=${Math.round(large.nsEngine)} ` +
-    `fb-calls-ratio-100=${calls100.ratio.toFixed(2)} fb-calls-ratio-1000=${calls1000.ratio.toFixed(2)} fb-1000-calls-us-per-scan=${calls1000.usFb.toFixed(1)}`,
+    `fb-calls-ratio-100=${calls100.ratio.toFixed(2)} fb-calls-ratio-1000=${calls1000.ratio.toFixed(2)} fb-1000-calls-us-per-scan=${calls1000.usFb.toFixed(1)} ` +
+    `st-1000-calls-us-per-scan=${st1000.usSt.toFixed(1)} ld-1000-calls-us-per-scan=${st1000.usLd.toFixed(1)} st-vs-ld-ratio=${st1000.ratio.toFixed(2)}`,
 );

@@ -119,6 +119,23 @@ describe('ST statements', () => {
     expect(scanRead(plc, 5, ['a', 'b'])).toEqual([5, 2]);
   });
 
+  test('a long body (run as several networks) runs its statements in order, once each; a runaway loop late in it is named by its line', () => {
+    // 60 statements x(k) := x(k-1) + 1 on the same scan, then a sum over an FB called before and after.
+    const chain = Array.from({ length: 60 }, (_, k) => `x${k + 1} := x${k} + 1;`).join('\n');
+    const decl = vars(...Array.from({ length: 61 }, (_, k) => `x${k} INT`), 'T1 TON', 'q BOOL');
+    const plc = stMain(`x0 := x0 + 10;\n${chain}\nT1(IN := TRUE, PT := T#20ms, Q => q);`, decl);
+    expect(scanRead(plc, 1, ['x1', 'x30', 'x60', 'q'])).toEqual([11, 40, 70, false]);
+    expect(scanRead(plc, 2, ['x0', 'x60', 'q'])).toEqual([30, 90, true]);
+    const looping = stPlc(stProject([textPou('Main', 'PROGRAM', [...vars('x DINT'), ...decl], `${chain}\nWHILE TRUE DO\n  x := x + 1;\nEND_WHILE;`)]), { maxScanMs: 30 });
+    expect(looping.scan().fault?.message).toMatch(/looping in the loop at line 61 of Main/);
+  });
+
+  test('RETURN in a long body ends it for this scan', () => {
+    const chain = Array.from({ length: 40 }, (_, k) => `x${k + 1} := x${k} + 1;`).join('\n');
+    const plc = stMain(`x0 := x0 + 1;\n${chain}\nIF x0 > 1 THEN RETURN; END_IF;\nb := b + 1;\n${chain}`, vars(...Array.from({ length: 41 }, (_, k) => `x${k} INT`), 'b INT'));
+    expect(scanRead(plc, 3, ['x0', 'x40', 'b'])).toEqual([3, 43, 1]);
+  });
+
   test('a runaway WHILE faults with the POU and the line of the loop named', () => {
     const plc = stPlc(stProject([textPou('Main', 'PROGRAM', vars('x DINT'), 'x := 0;\nWHILE TRUE DO\n  x := x + 1;\nEND_WHILE;')]), { maxScanMs: 30 });
     const report = plc.scan();

@@ -58,7 +58,7 @@ export class ProgramConstants {
   readonly functionsUsed = new Set<number>();
   readonly fbsUsed = new Set<number>();
   private readonly byKey = new Map<string, number>();
-  private readonly straightBodies = new Map<number, boolean>();
+  private readonly straightBodies = new Map<number, number>();
   constructor(
     readonly functions: readonly ResolvedFunction[],
     readonly fbTypes: readonly string[],
@@ -72,13 +72,17 @@ export class ProgramConstants {
   ) {}
   /** True when the body [first, end) is written in place of its calls. */
   inlines(first: number, end: number): boolean {
-    if (!this.inlineCalls || !this.program) return false;
+    return this.inlinedOps(first, end) !== undefined;
+  }
+  /** Operations the body [first, end) adds where it is written in place (undefined: it is called). */
+  inlinedOps(first: number, end: number): number | undefined {
+    if (!this.inlineCalls || !this.program) return undefined;
     let hit = this.straightBodies.get(first);
     if (hit === undefined) {
-      hit = isStraight(this.program.networks, first, end);
+      hit = straightOps(this.program.networks, first, end) ?? -1;
       this.straightBodies.set(first, hit);
     }
-    return hit;
+    return hit < 0 ? undefined : hit;
   }
   /** Name of a K constant (bigints, non-finite numbers, -0). */
   constant(v: Value): string {
@@ -110,6 +114,11 @@ export const INLINE_OPS = 200;
  * has a size limit).
  */
 export function isStraight(networks: readonly NetworkIR[], first: number, end: number): boolean {
+  return straightOps(networks, first, end) !== undefined;
+}
+
+/** The operations of a straight body with the nested bodies written in it; undefined when it is not straight. */
+function straightOps(networks: readonly NetworkIR[], first: number, end: number): number | undefined {
   let ops = 0;
   const visit = (a: number, b: number): boolean => {
     for (let i = a; i < b; i++)
@@ -127,8 +136,15 @@ export function isStraight(networks: readonly NetworkIR[], first: number, end: n
       }
     return true;
   };
-  return visit(first, end);
+  return visit(first, end) ? ops : undefined;
 }
+
+/**
+ * Most operations of one ST body with the bodies it calls written in place (as a segment of LD
+ * networks, segments.ts SEGMENT_OPS): past it, its calls run their bodies as nested ranges, so the
+ * JavaScript function stays small enough for V8 to optimise.
+ */
+export const ST_INLINE_OPS = 400;
 
 class Emitter {
   lines: string[] = [];
@@ -430,10 +446,14 @@ function emitOp(em: Emitter, op: Op): void {
       return emitFb(em, op);
     case 'call':
       return emitCall(em, op);
-    case 'st':
-      return emitSt(em, op, (first, end) =>
-        em.pc.inlines(first, end) ? inlineBody(em, first, end) : [`${CALL_TEXT}${em.p(first)}, ${em.p(end)}, now, scan);`],
-      );
+    case 'st': {
+      let budget = ST_INLINE_OPS - op.weight;
+      return emitSt(em, op, (first, end) => {
+        const ops = em.pc.inlinedOps(first, end);
+        if (ops !== undefined && (budget -= ops) >= 0) return inlineBody(em, first, end);
+        return [`${CALL_TEXT}${em.p(first)}, ${em.p(end)}, now, scan);`];
+      });
+    }
     case 'sfc':
       return emitChart(em, op.chart, (b) => runBody(em, b.first, b.end), L);
   }

@@ -35,6 +35,10 @@ export function planSegments(networks: readonly NetworkIR[], bodyStarts: readonl
       for (const op of networks[i]!.ops) {
         w++;
         if (op.op === 'call') for (let k = op.first; k < op.end; k++) w += weight(k);
+        if (op.op === 'st') {
+          w += op.weight;
+          for (const c of op.calls) for (let k = c.first; k < c.end; k++) w += weight(k);
+        }
       }
       weights.set(i, w);
     }

@@ -7,17 +7,12 @@ import { newPouContext } from '../compile/context';
 import type { LoweredPou, Placement } from '../compile/pou';
 import { Reporter } from '../compile/report';
 import type { SymbolTable } from '../compile/symbols';
-import { compileTextBody, describeStError } from './index';
+import { bodyChunks, compileTextBody, describeStError } from './index';
 
-/** Networks a POU's body takes in a program: one for ST and IL, one per network for LD. */
-export function bodyNetworkCount(pou: Pou): number {
-  return pou.language === 'ST' || pou.language === 'IL' ? 1 : pou.networks.length;
-}
-
-/** Element and vertical-link counts per network of a body (ST/IL: one network with none). */
+/** Element and vertical-link counts per network of a body (ST/IL: networks with none, see st/index.ts bodyChunks). */
 export function bodyShapes(pou: Pou): { elements: number; vlinks: number }[] {
   return pou.language === 'ST' || pou.language === 'IL'
-    ? [{ elements: 0, vlinks: 0 }]
+    ? bodyChunks(pou).map(() => ({ elements: 0, vlinks: 0 }))
     : pou.networks.map((n) => ({ elements: n.elements.length, vlinks: n.vlinks.length }));
 }
 
@@ -39,7 +34,7 @@ export function lowerTextBody(
   for (const p of result.pragmas)
     r.warning('LD-W50', `the pragma {${p.text.trim()}} in the ${pou.language} body of ${pou.name} (line ${p.pos.line}) is C code for the MATIEC runtime; the simulator ignores it`);
   for (const e of result.errors) r.error('LD-E50', `the ${pou.language} body of ${pou.name} does not compile: ${describeStError(e)}`);
-  return { ctx, networks: [result.network], ok: !!result.network };
+  return { ctx, networks: result.networks ?? bodyChunks(pou).map(() => undefined), ok: !!result.networks };
 }
 
 /** LD-E51: a body in a language the simulator does not run (an FBD body the import kept as FBD). */

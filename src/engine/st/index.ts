@@ -183,15 +183,63 @@ export function stNetwork(op: StOp, label?: string): NetworkIR {
   };
 }
 
-/** Compiles the body of an ST or IL POU over `scope` into its network (index `network`). */
+/**
+ * Most syntax nodes of the top-level statements one network of an ST body holds. A larger body
+ * (without RETURN) is split into consecutive networks of whole top-level statements, so neither
+ * its JavaScript nor the bodies its calls write in place make a function too large for V8 to
+ * optimise (segments and dispatch functions are cut between networks). The split changes nothing
+ * a program sees: the networks run in order, once each.
+ */
+export const ST_NETWORK_NODES = 48;
+
+const nodeCount = (x: unknown): number => {
+  if (Array.isArray(x)) return x.reduce((a: number, y) => a + nodeCount(y), 0);
+  if (!x || typeof x !== 'object') return 0;
+  let n = 'k' in x ? 1 : 0;
+  for (const y of Object.values(x)) n += nodeCount(y);
+  return n;
+};
+const hasReturn = (x: unknown): boolean =>
+  Array.isArray(x) ? x.some(hasReturn) : !!x && typeof x === 'object' && ((x as { k?: string }).k === 'return' || Object.values(x).some(hasReturn));
+
+/** Where the networks of an ST/IL body start: indexes of its top-level statements (one network: [0]). */
+export function bodyChunks(pou: Pou): number[] {
+  const stmts = pou.language === 'ST' ? parseBody(pou).stmts : undefined;
+  if (!stmts || stmts.length < 2 || hasReturn(stmts)) return [0];
+  const starts = [0];
+  let nodes = 0;
+  stmts.forEach((st, k) => {
+    const n = nodeCount(st);
+    if (k > 0 && nodes + n > ST_NETWORK_NODES) {
+      starts.push(k);
+      nodes = 0;
+    }
+    nodes += n;
+  });
+  return starts;
+}
+
+/** Compiles the body of an ST or IL POU over `scope` into its networks (from index `network`; as many as bodyChunks). */
 export function compileTextBody(
   pou: Pou & { language: 'ST' | 'IL' },
   scope: StScope,
   network: number,
-): { network?: NetworkIR; errors: StError[]; pragmas: ParsedBody['pragmas'] } {
+): { networks?: NetworkIR[]; errors: StError[]; pragmas: ParsedBody['pragmas'] } {
   const parsed = parseBody(pou);
   if (!parsed.stmts) return { errors: parsed.errors, pragmas: parsed.pragmas };
-  const r = check(parsed.stmts, scope);
-  if (r.errors.length) return { errors: r.errors, pragmas: parsed.pragmas };
-  return { network: stNetwork(stOp(r.body, network, pou.language, r.crSlots)), errors: [], pragmas: parsed.pragmas };
+  const starts = bodyChunks(pou);
+  if (starts.length === 1) {
+    const r = check(parsed.stmts, scope);
+    if (r.errors.length) return { errors: r.errors, pragmas: parsed.pragmas };
+    return { networks: [stNetwork(stOp(r.body, network, pou.language, r.crSlots))], errors: [], pragmas: parsed.pragmas };
+  }
+  // Each network's statements checked in order over the same scope (an ST body has no labels).
+  const checker = new StChecker(scope);
+  const networks: NetworkIR[] = [];
+  starts.forEach((from, j) => {
+    const body = checker.statements(parsed.stmts!.slice(from, starts[j + 1] ?? parsed.stmts!.length));
+    networks.push(stNetwork(stOp(body, network + j, pou.language)));
+  });
+  if (checker.errors.length) return { errors: checker.errors, pragmas: parsed.pragmas };
+  return { networks, errors: [], pragmas: parsed.pragmas };
 }
