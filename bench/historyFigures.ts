@@ -61,8 +61,8 @@ const timed = <T,>(fn: () => T): [T, number] => {
   return [result, performance.now() - t0];
 };
 
-export function historyFigures(): HistoryFigures {
-  const project = generateSimProgram(100);
+export function historyFigures(networks = 100): HistoryFigures {
+  const project = generateSimProgram(networks);
   // Overhead: one PLC warmed up (the engine's tiering, the JIT), then alternating blocks.
   const bench = setup(project);
   runScans(bench.plc, bench.recorder, 40_000);
@@ -114,18 +114,19 @@ export function historyFigures(): HistoryFigures {
 }
 
 /** The figures as one line of words (bench:sim prints it). */
-export function describeHistoryFigures(f: HistoryFigures): string {
+export function describeHistoryFigures(f: HistoryFigures, networks = 100): string {
   return (
-    `Scan history, 100 networks: ${f.scanUs.toFixed(2)} µs per scan, ${f.recordedScanUs.toFixed(2)} µs recorded (${f.overheadPct >= 0 ? '+' : ''}${f.overheadPct.toFixed(0)} %, budget 20 %); ` +
+    `Scan history, ${networks.toLocaleString('en-US')} networks: ${f.scanUs.toFixed(2)} µs per scan, ${f.recordedScanUs.toFixed(2)} µs recorded (${f.overheadPct >= 0 ? '+' : ''}${f.overheadPct.toFixed(0)} %, budget 20 %); ` +
     `${f.scans.toLocaleString('en-US')} scans in ${(f.bytes / 1048576).toFixed(1)} MB; ` +
     `seek to a random scan median ${f.seekMedianMs.toFixed(2)} ms, max ${f.seekMaxMs.toFixed(2)} ms, the first ${f.firstSeekMs.toFixed(2)} ms (budget 50 ms); ` +
     `replaying all of them to find a change ${f.changeSearchMs.toFixed(0)} ms (again ${f.changeSearchAgainMs.toFixed(1)} ms), a condition ${f.conditionSearchMs.toFixed(0)} ms forwards, ${f.conditionBackMs.toFixed(0)} ms backwards`
   );
 }
 
-// Run alone: `npx tsx bench/historyFigures.ts`.
+// Run alone: `npx tsx bench/historyFigures.ts [networks]` (default 100).
 if (process.argv[1]?.endsWith('historyFigures.ts')) {
-  const f = historyFigures();
-  console.log(describeHistoryFigures(f));
+  const networks = Number(process.argv[2] ?? 100);
+  const f = historyFigures(networks);
+  console.log(describeHistoryFigures(f, networks));
   console.log(JSON.stringify(f));
 }

@@ -45,14 +45,13 @@ export class ChangeIndex {
     }
     const known = byValue.get(seg);
     if (known && known.upTo >= upTo) return known;
-    const read = this.replayer.probe.reader(this.nameOf(index));
     const from = Math.max(seg.firstScan, this.history.first!);
     const end = seg.lastScan;
     const changes: number[] = [];
     let first: Value | undefined;
     let prev: Value = false;
-    this.replayer.walk(from, end, (scan) => {
-      const v = read();
+    this.replayer.walk(from, end, [this.nameOf(index)], (values, scan) => {
+      const v = values[0]!;
       if (first === undefined) first = v;
       else if (!sameValue(v, prev)) changes.push(scan);
       prev = v;

@@ -47,7 +47,7 @@ export class HistoryRecorder {
     this.names = layout.variables.map((v) => v.name);
     this.names.forEach((name, i) => this.index.set(name.toUpperCase(), i));
     this.history = new ScanHistory<PlcImage>(opts);
-    this.replayer = new Replayer(program, this.history, this.names);
+    this.replayer = new Replayer(plc, program, this.history, this.names, (changes) => (this.seenState += changes));
     this.changes = new ChangeIndex(this.history, this.replayer, (i) => this.names[i]!);
   }
 
@@ -173,21 +173,16 @@ export class HistoryRecorder {
     const first = this.history.first;
     if (first === undefined) return undefined;
     const last = this.history.last!;
-    const values = new Array<Value>(names.length);
-    const sample = this.replayer.probe.sampler(names);
-    const holds = () => {
-      sample(values);
-      return test(values);
-    };
+    const holds = (values: readonly Value[]) => test(values);
     const start = from + direction;
-    if (direction === 1) return start > last ? undefined : this.replayer.walk(Math.max(start, first), last, holds);
+    if (direction === 1) return start > last ? undefined : this.replayer.walk(Math.max(start, first), last, names, holds);
     // Backwards: segment by segment from the newest, the last scan where it holds in each.
     for (let upTo = Math.min(start, last); upTo >= first; ) {
       const seg = this.history.segmentOf(upTo)!;
       const segFrom = Math.max(seg.firstScan, first);
       let found: number | undefined;
-      this.replayer.walk(segFrom, upTo, (scan) => {
-        if (holds()) found = scan;
+      this.replayer.walk(segFrom, upTo, names, (values, scan) => {
+        if (holds(values)) found = scan;
         return false;
       });
       if (found !== undefined) return found;
@@ -213,13 +208,15 @@ export class HistoryRecorder {
 
   /** Replays the range, calling `visit` with the values of `cols` after each scan (the array is reused). */
   private each(cols: readonly { name: string }[], range: [number, number], visit: (values: readonly Value[], scan: number) => void): void {
-    const values = new Array<Value>(cols.length);
-    const sample = this.replayer.probe.sampler(cols.map((c) => c.name));
-    this.replayer.walk(range[0], range[1], (scan) => {
-      sample(values);
-      visit(values, scan);
-      return false;
-    });
+    this.replayer.walk(
+      range[0],
+      range[1],
+      cols.map((c) => c.name),
+      (values, scan) => {
+        visit(values, scan);
+        return false;
+      },
+    );
   }
 
   /** The recorded range as a trace in the CLI's format: scan,time_ms,<names...> (BOOL 0/1, TIME in ms). */

@@ -106,7 +106,7 @@ interface Live {
  * Runs `scans` scans of `p` on a real-time-like clock with random outside changes, recording into a
  * recorder and keeping what the live PLC showed after each scan.
  */
-function runLive(p: Project, seed: number, scans: number, opts: HistoryOptions) {
+function runLive(p: Project, seed: number, scans: number, opts: HistoryOptions, meddle?: (recorder: HistoryRecorder, scan: number) => void) {
   const { program, diagnostics } = compileProgram(p);
   if (!program) throw new Error(diagnostics.map((d) => d.message).join('\n'));
   const clock = { t: 0, now() { return this.t; } };
@@ -139,6 +139,7 @@ function runLive(p: Project, seed: number, scans: number, opts: HistoryOptions) 
     let done = false;
     if (r() < 0.08) {
       done = plc.stepNetwork().scanDone;
+      if (!done && scan > 0) meddle?.(recorder, scan);
       if (!done && r() < 0.5 && locals.length) plc.write(locals[0]!.name, r() < 0.5);
       else if (!done && inputs.length) plc.write(inputs[0]!.name, randomValue(inputs[0]!.type));
     }
@@ -152,6 +153,7 @@ function runLive(p: Project, seed: number, scans: number, opts: HistoryOptions) 
     const values = names.map((n) => plc.read(n));
     const power = [...probe.power, ...Array.from(probe.ranIn, (s) => (s === plc.scanCount ? 1 : 0))];
     live.push({ values, power });
+    meddle?.(recorder, scan);
   }
   return { recorder, live, names };
 }
@@ -193,6 +195,23 @@ describe('replaying recorded scans', () => {
     const run = names.indexOf('Busy');
     expect(live.filter((l) => l.values[run] === true).length).toBeGreaterThan(10);
     expect(live.filter((l) => l.values[run] === false).length).toBeGreaterThan(10);
+  });
+
+  it('seeks and searches between live scans (and in the middle of one) leave the live run as it was', () => {
+    for (const [p, seed] of [
+      [randomProgram(4), 4],
+      [stProgram(), 8],
+    ] as const) {
+      const plain = runLive(p, seed, 400, { keyEvery: 50 });
+      const meddled = runLive(p, seed, 400, { keyEvery: 50 }, (recorder, scan) => {
+        if (scan % 7 === 0) recorder.seek(1 + ((scan * 31) % scan));
+        if (scan % 29 === 0) recorder.findChange(plain.names[0]!, 1, 1);
+        if (scan % 41 === 0) recorder.findCondition(`${plain.names[1]!} AND NOT ${plain.names[0]!}`, scan, -1);
+      });
+      expect(meddled.live).toEqual(plain.live);
+      expect(meddled.recorder.history.segmentCount).toBe(plain.recorder.history.segmentCount);
+      expectReplayEqualsLive(meddled.recorder, meddled.live, `meddled seed ${seed}`);
+    }
   });
 
   it('records only times and changed input images between keys', () => {
