@@ -10,6 +10,9 @@ import { call } from './library/fnHelpers';
 import { ladder, plcOf, project, vars } from './ladder';
 import { io, multiProject, pou } from './userBlocksHelpers';
 import { checkProject } from '../../src/engine/check';
+import { compileProgram } from '../../src/engine/plc';
+import { ScanPlc } from '../../src/engine/runtime/scanner';
+import { DEFAULT_TIERING } from '../../src/engine/runtime/tiering';
 
 const S = 'STRING' as const;
 const long = (n: number, c = 'x') => c.repeat(n);
@@ -326,5 +329,27 @@ describe('STRING in programs', () => {
     const plc = plcOf(p);
     plc.scan();
     expect(plc.read('Out')).toBe('A1');
+  });
+
+  it('runs the same on the dispatch loops and on straight-line segments, forced strings included', () => {
+    const p = project([variable('A', 'STRING', { initial: "'x'" }), variable('B', 'STRING'), variable('C', 'STRING'), ...vars('N INT')], [
+      ladder(['- # # -'], { boxes: [{ row: 0, col: 1, type: 'CONCAT', inputs: { IN1: 'A', IN2: "'-'" }, outputs: { OUT: 'B' } }] }),
+      ladder(['- # # -'], { boxes: [{ row: 0, col: 1, type: 'RIGHT', inputs: { IN: 'B', L: '3' }, outputs: { OUT: 'C' } }] }),
+      ladder(['- # # -'], { boxes: [{ row: 0, col: 1, type: 'LEN', inputs: { IN: 'B' }, outputs: { OUT: 'N' } }] }),
+    ]);
+    const { program } = compileProgram(p);
+    const loops = new ScanPlc(program!, { cycleMs: 10 }, { ...DEFAULT_TIERING, startAfterEvals: Infinity });
+    const segments = new ScanPlc(program!, { cycleMs: 10 }, { ...DEFAULT_TIERING, startAfterEvals: 0, minScans: 1, msPerNetwork: 0, batch: 1 });
+    for (let k = 0; k < 40; k++) {
+      for (const plc of [loops, segments]) {
+        plc.write('A', `${k}`.repeat(k % 5));
+        if (k === 20) plc.force('C', 'held');
+        if (k === 30) plc.unforce('C');
+        plc.scan();
+      }
+      expect(segments.values()).toEqual(loops.values());
+    }
+    expect(segments.read('B')).toBe('39393939-');
+    expect(segments.read('C')).toBe('39-');
   });
 });
