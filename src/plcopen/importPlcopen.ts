@@ -305,7 +305,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       const pou: Pou = {
         ...head,
         source,
-        ...(lang.name === 'SFC' && !legacy ? { sfc: readSfcChart(pouEl, lang, library) } : {}),
+        ...(lang.name === 'SFC' && !legacy ? { sfc: readSfcChart(pouEl, lang, library, (m) => warn(`in the chart of ${name}, ${m}`, pouEl)) } : {}),
       };
       const actions = child(pouEl, 'actions');
       const transitions = child(pouEl, 'transitions');

@@ -6,7 +6,9 @@
 // transitions, associates actions and runs action bodies in that text order, so the chart keeps it.
 // LD and FBD pieces (action bodies, transition bodies, graphics wired to a condition) are read
 // with the LD importer; blocks in conditions run in a COMPUTE_FUNCTION_BLOCKS action stored on the
-// first initial step, as Beremiz generates it, and the condition reads what they gave.
+// first initial step, as Beremiz generates it, and the condition reads what they gave. A feedback
+// wire in a condition reads the FB output's value of the previous call, as MATIEC's depth-first
+// order does; the pieces' import findings are reported through `warn`.
 import type { BlockLibrary } from '../model/library';
 import type { Network, SfcAction, SfcAssociation, SfcChart, SfcCode, SfcStep, SfcTransition } from '../model/project';
 import { importLdBody } from './importBody';
@@ -34,7 +36,7 @@ interface TransitionInfo {
 const num = (s: string | undefined): number | undefined => (s !== undefined && s !== '' ? Number(s) : undefined);
 
 /** Reads the chart of `pouEl` (its body's `<SFC>`, `<actions>` and `<transitions>`). */
-export function readSfcChart(pouEl: XmlElement, sfc: XmlElement, library: BlockLibrary): SfcChart {
+export function readSfcChart(pouEl: XmlElement, sfc: XmlElement, library: BlockLibrary, warn: (message: string) => void = () => {}): SfcChart {
   const byId = new Map<number, XmlElement>();
   for (const el of sfc.children) {
     const id = num(el.attrs.localId);
@@ -88,7 +90,7 @@ export function readSfcChart(pouEl: XmlElement, sfc: XmlElement, library: BlockL
   const importPiece = (xml: string, from: string): Network[] | string => {
     try {
       const body = parseXml(xml);
-      const { networks } = importLdBody(body, (e) => e.doc.src.slice(e.offset, e.end), () => {}, library);
+      const { networks } = importLdBody(body, (e) => e.doc.src.slice(e.offset, e.end), (f) => warn(`${from}: ${f.message}`), library);
       return networks;
     } catch (e) {
       if (e instanceof LdGraphError) return `${from}: ${e.message}`;
@@ -104,21 +106,29 @@ export function readSfcChart(pouEl: XmlElement, sfc: XmlElement, library: BlockL
     result: string,
     from: string,
   ): { networks: Network[] | string; blocks: boolean } => {
+    // Depth first from the condition, as MATIEC orders the blocks. A wire back to an element still
+    // being visited (a feedback loop: TON3.IN from SR0, SR0.R from TON3.Q) carries the value of the
+    // previous call: it becomes a read of the FB instance's output, which holds exactly that value.
     const seen = new Set<XmlElement>();
+    const open = new Set<XmlElement>();
+    const feedback: { consumer: XmlElement; wire: XmlElement; source: XmlElement }[] = [];
     const visit = (el: XmlElement) => {
       if (seen.has(el)) return;
       seen.add(el);
+      open.add(el);
       const ins: XmlElement[] = [];
       const gather = (e: XmlElement) => {
         for (const c of e.children) {
           if (c.name === 'connection') {
             const hit = elementsById.get(num(c.attrs.refLocalId) ?? -1);
-            if (hit) ins.push(hit);
+            if (hit && open.has(hit)) feedback.push({ consumer: el, wire: c, source: hit });
+            else if (hit) ins.push(hit);
           } else if (c.name !== 'connectionPointOut') gather(c);
         }
       };
       gather(el);
       ins.forEach(visit);
+      open.delete(el);
     };
     const wires = childrenNamed(connections, 'connection');
     for (const w of wires) {
@@ -126,6 +136,31 @@ export function readSfcChart(pouEl: XmlElement, sfc: XmlElement, library: BlockL
       if (hit) visit(hit);
     }
     const parts = [...seen];
+    const replaced = new Map<XmlElement, { wire: XmlElement; text: string }[]>();
+    let nextId = 2_000_000;
+    for (const f of feedback) {
+      const instance = f.source.attrs.instanceName;
+      const pin = f.wire.attrs.formalParameter;
+      const wireName = `${f.source.attrs.instanceName ?? f.source.attrs.typeName ?? f.source.name}${pin ? `.${pin}` : ''} -> ${f.consumer.attrs.instanceName ?? f.consumer.attrs.typeName ?? f.consumer.name} (localId ${f.consumer.attrs.localId ?? '?'})`;
+      if (f.source.name !== 'block' || !instance || !pin)
+        return {
+          networks: `${from}: the wire ${wireName} closes a loop through ${f.source.name === 'block' ? `the function ${f.source.attrs.typeName}` : `a ${f.source.name}`}, whose value of the previous call is not kept; only a function block's output can feed back`,
+          blocks: true,
+        };
+      const id = nextId++;
+      parts.push(
+        parseXml(`<inVariable localId="${id}" height="30" width="60"><position x="0" y="0"/><connectionPointOut><relPosition x="60" y="15"/></connectionPointOut><expression>${instance}.${pin}</expression></inVariable>`),
+      );
+      const list = replaced.get(f.consumer) ?? [];
+      list.push({ wire: f.wire, text: `<connection refLocalId="${id}"/>` });
+      replaced.set(f.consumer, list);
+    }
+    const partText = (el: XmlElement): string => {
+      let text = rawOf(el);
+      const list = [...(replaced.get(el) ?? [])].sort((a, b) => b.wire.offset - a.wire.offset);
+      for (const r of list) text = text.slice(0, r.wire.offset - el.offset) + r.text + text.slice(r.wire.end - el.offset);
+      return text;
+    };
     const blocks = parts.some((p) => p.name === 'block');
     const ld = parts.some((p) => p.name === 'leftPowerRail' || p.name === 'contact' || p.name === 'coil');
     const wireText = wires
@@ -139,7 +174,7 @@ export function readSfcChart(pouEl: XmlElement, sfc: XmlElement, library: BlockL
       ? `<coil localId="${id}" height="15" width="21"><position x="0" y="0"/><connectionPointIn>${wireText}</connectionPointIn><connectionPointOut/><variable>${result}</variable></coil><rightPowerRail localId="${id + 1}" height="40" width="3"><position x="0" y="0"/><connectionPointIn><connection refLocalId="${id}"/></connectionPointIn></rightPowerRail>`
       : `<outVariable localId="${id}" height="30" width="60"><position x="0" y="0"/><connectionPointIn>${wireText}</connectionPointIn><expression>${result}</expression></outVariable>`;
     const tag = ld ? 'LD' : 'FBD';
-    const xml = `<${tag}>${parts.map(rawOf).join('')}${sink}</${tag}>`;
+    const xml = `<${tag}>${parts.map(partText).join('')}${sink}</${tag}>`;
     return { networks: importPiece(xml, from), blocks };
   };
 

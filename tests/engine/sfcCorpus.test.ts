@@ -97,6 +97,34 @@ describe('traffic light (svghmi_traffic_light), as MATIEC runs it', () => {
     expect(at(369)).toEqual(['Standstill', '01000']);
   });
 
+  test('a pedestrian request ends GREEN 2 s later: SR0 and TON3 in a feedback loop, TON3.Q fed back from the previous call', () => {
+    const { program, diagnostics } = compileProgram({ ...project, pous: [main, ...project.pous] }, { pou: 'TL' });
+    expect(diagnostics.filter((d) => d.severity === 'error')).toEqual([]);
+    const plc = createPlc(program!, { cycleMs: 100 });
+    const at = (scan: number) => {
+      plc.scans(scan - plc.scanCount);
+      return state(plc);
+    };
+    // Scan 1 with the switch off stores COMPUTE_FUNCTION_BLOCKS (SR0, TON3, OR run every scan from then on).
+    expect(at(1)).toEqual(['Standstill', '00000']);
+    plc.write('SWITCH_BUTTON', true);
+    expect(at(166)).toEqual(['GREEN', '00110']);
+    // Scan 170 (t = 16.9 s), button pressed for one scan: SR0(S1 := TRUE, R := TON3.Q = FALSE) sets
+    // Q1; TON3(IN := SR0.Q1) starts.
+    expect(at(169)).toEqual(['GREEN', '00110']);
+    plc.write('PEDESTRIAN_BUTTON', true);
+    expect(at(170)).toEqual(['GREEN', '00110']);
+    expect([plc.read('SR0.Q1'), plc.read('TON3.Q')]).toEqual([true, false]);
+    plc.write('PEDESTRIAN_BUTTON', false);
+    // Scan 190 (t = 18.9 s): TON3's ET reaches T#2s, Q; SR0 ran first and read TON3.Q of scan 189 (FALSE).
+    expect(at(190)).toEqual(['GREEN', '00110']);
+    expect([plc.read('SR0.Q1'), plc.read('TON3.Q')]).toEqual([true, true]);
+    // Scan 191: the transition reads OR(TON3.Q, WARN_CARS) of scan 190: GREEN -> ORANGE; SR0 is
+    // reset by TON3.Q of scan 190, so TON3 stops.
+    expect(at(191)).toEqual(['ORANGE', '01010']);
+    expect([plc.read('SR0.Q1'), plc.read('TON3.Q')]).toEqual([false, false]);
+  });
+
   test('switched on at the first scan, the chart never stores COMPUTE_FUNCTION_BLOCKS (as in MATIEC)', () => {
     const { program } = compileProgram({ ...project, pous: [main, ...project.pous] }, { pou: 'TL' });
     const plc = createPlc(program!, { cycleMs: 100 });
