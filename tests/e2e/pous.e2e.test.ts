@@ -2,8 +2,8 @@
 // used twice from the program (block search and palette), renamed (calls and instance types
 // follow), deleted (the editor says where it is used) and brought back with Undo; a FUNCTION with
 // a return type; the variable table fully visible at 1280×720; an ST POU shown read-only.
-// (Running the program and looking inside an instance come later: the journey leaves room for a
-// run step after "no problems".)
+// Run: the values inside one instance picked on the Motor tab, then the other; step into the call
+// and over the body's network back out to Main.
 import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
 import { newPou, newProject } from '../../src/model/factory';
@@ -12,6 +12,7 @@ import type { Project } from '../../src/model/project';
 import { openApp, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 import { EditorPage, poll } from './panelsPage';
+import { SimPage } from './simPage';
 
 const browser = useChromium();
 let page: Page;
@@ -153,8 +154,70 @@ test('the FB is called twice from the program: from the block search and from th
     { Start: 'Start2', Stop: 'Stop2', Run: 'Lamp2' },
   ]);
   await poll(() => draw.problemsSummary()).toBe('No problems');
-  // (A run step goes here once the engine runs user FBs in the browser.)
 });
+
+test('run: the values inside one instance, the other instance, step into the call', async () => {
+  const sim = new SimPage(page);
+  await sim.button('run').click();
+  await sim.waitForMode('Running');
+  // Press Start of Motor1 (its Start1 operand) from the watch table, then let go.
+  await sim.tab('Watch');
+  await page.getByTestId('watch-add-name').fill('Start1');
+  await page.getByTestId('watch-add').click();
+  const start = page.getByTestId('watch-row-Start1');
+  await start.getByTestId('watch-input').fill('TRUE');
+  await start.getByTestId('watch-write').click();
+  await sim.waitForValue('Motor1.Run', true);
+  await start.getByTestId('watch-input').fill('FALSE');
+  await start.getByTestId('watch-write').click();
+  await sim.waitForValue('Start1', false);
+  // The Motor tab monitors one instance: Motor1 first, sealed in (power through Run's branch).
+  await page.getByTestId('pou-tab-Motor').click();
+  const picker = page.getByTestId('instance-picker');
+  await poll(() => picker.inputValue()).toBe('Motor1');
+  expect(await picker.locator('option').allTextContents()).toEqual(['Motor1', 'Motor2']);
+  await poll(() => sim.wireLit(0, 0, 5)).toBe(true);
+  await poll(() => sim.wireLit(0, 1, 0)).toBe(true);
+  expect(await canvasValue('Run')).toBe('TRUE');
+  // Motor2 was never started: its body shows no power, Run FALSE.
+  await picker.selectOption('Motor2');
+  await poll(() => sim.wireLit(0, 0, 5)).toBe(false);
+  expect(await canvasValue('Run')).toBe('FALSE');
+  // Pause, step into the call of Motor1: its body with Motor1 picked, network 1 next.
+  await sim.button('pause').click();
+  await sim.waitForMode('Paused');
+  await page.getByTestId('sim-step-into').click();
+  await poll(() => page.getByTestId('sim-position').textContent()).toBe('▶ Main / network 1 → Motor1 (Motor) / network 1');
+  expect(await page.getByTestId('pou-tab-Motor').getAttribute('aria-selected')).toBe('true');
+  await poll(() => picker.inputValue()).toBe('Motor1');
+  await page.getByTestId('network-next-0').waitFor();
+  // Step over: the body's network runs; the next stop is the call of Motor2 in the same network of Main.
+  await sim.button('step-network').click();
+  await poll(() => page.getByTestId('sim-position').textContent()).toBe('▶ Main / network 1 → Motor2 (Motor) / network 1');
+  await poll(() => picker.inputValue()).toBe('Motor2');
+  await page.getByTestId('network-next-0').waitFor();
+  // Over the end of the scan: no position left, paused.
+  await sim.button('step-network').click();
+  await page.getByTestId('sim-position').waitFor({ state: 'detached' });
+  expect(await sim.mode()).toBe('Paused');
+  await sim.button('reset').click();
+  await sim.waitForMode('Stopped');
+  await editor.tab('Problems');
+});
+
+/** The value the canvas shows for an operand of the shown body (read in the picked instance). */
+const canvasValue = (operand: string) =>
+  page.evaluate((name) => {
+    const store = window.rungsmith!.simStore as { getState(): unknown };
+    const s = store.getState() as {
+      canvasScope?: { prefix?: string };
+      variableIndex: Map<string, number>;
+      values: unknown[];
+    };
+    const path = s.canvasScope?.prefix ? `${s.canvasScope.prefix}.${name}` : name;
+    const v = s.values[s.variableIndex.get(path.toUpperCase()) ?? -1];
+    return v === undefined ? undefined : v ? 'TRUE' : 'FALSE';
+  }, operand);
 
 test('renaming the FB to FB_Motor renames the calls and the instance types', async () => {
   await page.getByTestId('tab-project').click();

@@ -8,8 +8,6 @@ import { multiProject } from '../engine/userBlocksHelpers';
 import type { SimFrame } from '../../src/sim/protocol';
 
 const POWER_OUT = 2;
-/** The power byte of element `k` of network `n` of the layout's view in the last frame. */
-const power = (h: SimHarness, n: number, k: number) => h.frame.elements[h.layout.elementOffsets[n]! + k]!;
 const where = (f: SimFrame) => (f.position ?? []).map((p) => `${p.instance ? `${p.instance} (${p.pou})` : p.pou}/${p.network + 1}`).join(' → ');
 
 /** The layout after the last `compiled` or `layout` message. */
