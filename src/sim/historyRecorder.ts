@@ -15,7 +15,7 @@ import { packNetworks } from './frames';
 import { ScanHistory, type HistoryOptions } from './history';
 import { ChangeIndex, sameValue } from './historyChanges';
 import type { HistoryView, SimLayout } from './protocol';
-import { Replayer } from './replay';
+import { Replayer, type HistoryState } from './replay';
 
 /** Periodic keys wait until the scans since the last key took this many times what saving one takes ... */
 const SAVE_SHARE = 20;
@@ -90,12 +90,6 @@ export class HistoryRecorder {
     this.execSinceKey = 0;
   }
 
-  /** Starts the history over (a cold restart). */
-  clear(): void {
-    this.history.clear();
-    this.forget();
-  }
-
   private forget(): void {
     this.replayer.reset();
     this.changes.clear();
@@ -106,7 +100,7 @@ export class HistoryRecorder {
   }
 
   /** The state after a recorded scan, rebuilt. */
-  seek(scan: number) {
+  seek(scan: number): HistoryState | undefined {
     return this.replayer.state(scan);
   }
 
