@@ -1,5 +1,6 @@
 // Design decisions on the order of evaluation (LD-SEMANTICS.md section 6). These results are
 // part of the engine's contract: the editor, the docs and PLCopen round trips rely on them.
+import { checkProject } from '../../src/engine/check';
 import { describe, expect, test } from 'vitest';
 import { ladder, plcOf, project, vars } from './ladder';
 
@@ -106,5 +107,17 @@ describe('evaluation order (design decisions)', () => {
     );
     plc.scan();
     expect(plc.read('I')).toBe(5);
+  });
+
+  test('LD-W03: a backward jump is named as a possible loop; a forward jump is not', () => {
+    const loop = project(vars('Again BOOL', 'Skip BOOL', 'X BOOL'), [
+      ladder(['[Skip] >>END']),
+      ladder(['[X] (X)'], { label: 'LOOP' }),
+      ladder(['[Again] >>LOOP']),
+      ladder(['[X] (X)'], { label: 'END' }),
+    ]);
+    const warned = checkProject(loop).filter((d) => d.rule === 'LD-W03');
+    expect(warned.map((d) => [d.network, d.severity])).toEqual([[2, 'warning']]);
+    expect(warned[0]!.message).toMatch(/jumps back to network 2 \("LOOP"\)/);
   });
 });

@@ -160,7 +160,17 @@ export function lowerNetwork(
             `${describeElement(el)} has no target: no network of ${ctx.pouName} is labelled "${el.target}"`,
             el,
           );
-        else ops.push({ op: 'jump', node: node.index, inNet, target });
+        else {
+          // LD-W03: a jump back (to its own network or an earlier one) runs those networks again in
+          // the same scan, looping until its condition goes FALSE (the watchdog stops an endless one).
+          if (target - ctx.first <= index)
+            r.warning(
+              'LD-W03',
+              `${describeElement(el)} jumps back to network ${target - ctx.first + 1} ("${el.target.trim()}"): legal, but networks ${target - ctx.first + 1} to ${index + 1} run again in the same scan until the jump's condition goes FALSE; make sure it does, or the watchdog stops the PLC`,
+              el,
+            );
+          ops.push({ op: 'jump', node: node.index, inNet, target });
+        }
         break;
       }
       case 'return':
