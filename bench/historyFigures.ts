@@ -44,6 +44,7 @@ export interface HistoryFigures {
   readonly recordedScanUs: number;
   readonly firstSeekMs: number;
   readonly seekMedianMs: number;
+  readonly seekP99Ms: number;
   readonly seekMaxMs: number;
   readonly bytes: number;
   readonly scans: number;
@@ -103,6 +104,7 @@ export function historyFigures(networks = 100): HistoryFigures {
     recordedScanUs: recorded * 1000,
     firstSeekMs,
     seekMedianMs: times[times.length >> 1]!,
+    seekP99Ms: times[Math.floor(times.length * 0.99)]!,
     seekMaxMs: times[times.length - 1]!,
     bytes: h.bytes,
     scans: h.count,
@@ -118,7 +120,7 @@ export function describeHistoryFigures(f: HistoryFigures, networks = 100): strin
   return (
     `Scan history, ${networks.toLocaleString('en-US')} networks: ${f.scanUs.toFixed(2)} µs per scan, ${f.recordedScanUs.toFixed(2)} µs recorded (${f.overheadPct >= 0 ? '+' : ''}${f.overheadPct.toFixed(0)} %, budget 20 %); ` +
     `${f.scans.toLocaleString('en-US')} scans in ${(f.bytes / 1048576).toFixed(1)} MB; ` +
-    `seek to a random scan median ${f.seekMedianMs.toFixed(2)} ms, max ${f.seekMaxMs.toFixed(2)} ms, the first ${f.firstSeekMs.toFixed(2)} ms (budget 50 ms); ` +
+    `seek to a random scan median ${f.seekMedianMs.toFixed(2)} ms, p99 ${f.seekP99Ms.toFixed(2)} ms, max ${f.seekMaxMs.toFixed(2)} ms, the first ${f.firstSeekMs.toFixed(2)} ms (budget 50 ms); ` +
     `replaying all of them to find a change ${f.changeSearchMs.toFixed(0)} ms (again ${f.changeSearchAgainMs.toFixed(1)} ms), a condition ${f.conditionSearchMs.toFixed(0)} ms forwards, ${f.conditionBackMs.toFixed(0)} ms backwards`
   );
 }

@@ -16,7 +16,7 @@ export interface HistoryOptions {
   readonly maxScans?: number;
   /** Memory budget in bytes (default 64 MB); the oldest scans are dropped first to stay under it. */
   readonly budgetBytes?: number;
-  /** Most scans between two keys (default 2,048): bounds the scans a seek replays. */
+  /** Most scans between two keys (default 1,024): bounds the scans a seek replays. */
   readonly keyEvery?: number;
   /** A key is also taken once the scans since the last one took this long to run (ms, default 10): bounds a seek's time on slow programs. */
   readonly keyReplayMs?: number;
@@ -24,7 +24,7 @@ export interface HistoryOptions {
 
 export const DEFAULT_HISTORY_SCANS = 100_000;
 export const DEFAULT_HISTORY_BUDGET = 64 * 1024 * 1024;
-export const DEFAULT_KEY_EVERY = 2048;
+export const DEFAULT_KEY_EVERY = 1024;
 export const DEFAULT_KEY_REPLAY_MS = 10;
 
 /** A key's state, as the history holds it: only its size matters here. */
