@@ -272,6 +272,14 @@ export const MORE_FUNCTION_SIGNATURES: readonly BlockSignature[] = [
   fn('ADD_TIME', 'time', [p('IN1', 'TIME'), p('IN2', 'TIME')], p('OUT', 'TIME'), 'OUT := IN1 + IN2 (TIME).'),
   fn('SUB_TIME', 'time', [p('IN1', 'TIME'), p('IN2', 'TIME')], p('OUT', 'TIME'), 'OUT := IN1 - IN2 (TIME).'),
   fn('MULTIME', 'time', [p('IN1', 'TIME'), p('IN2', 'ANY_NUM')], p('OUT', 'TIME'), 'OUT := IN1 * IN2, a TIME times a number (to whole ms).'),
+  fn('ADD_TOD_TIME', 'time', [p('IN1', 'TOD'), p('IN2', 'TIME')], p('OUT', 'TOD'), 'OUT := IN1 + IN2, a time of day moved by a TIME.'),
+  fn('ADD_DT_TIME', 'time', [p('IN1', 'DT'), p('IN2', 'TIME')], p('OUT', 'DT'), 'OUT := IN1 + IN2, a date and time moved by a TIME.'),
+  fn('SUB_DATE_DATE', 'time', [p('IN1', 'DATE'), p('IN2', 'DATE')], p('OUT', 'TIME'), 'OUT := IN1 - IN2, the TIME between two dates.'),
+  fn('SUB_TOD_TIME', 'time', [p('IN1', 'TOD'), p('IN2', 'TIME')], p('OUT', 'TOD'), 'OUT := IN1 - IN2, a time of day moved back by a TIME.'),
+  fn('SUB_TOD_TOD', 'time', [p('IN1', 'TOD'), p('IN2', 'TOD')], p('OUT', 'TIME'), 'OUT := IN1 - IN2, the TIME between two times of day.'),
+  fn('SUB_DT_TIME', 'time', [p('IN1', 'DT'), p('IN2', 'TIME')], p('OUT', 'DT'), 'OUT := IN1 - IN2, a date and time moved back by a TIME.'),
+  fn('SUB_DT_DT', 'time', [p('IN1', 'DT'), p('IN2', 'DT')], p('OUT', 'TIME'), 'OUT := IN1 - IN2, the TIME between two dates and times.'),
+  fn('CONCAT_DATE_TOD', 'time', [p('IN1', 'DATE'), p('IN2', 'TOD')], p('OUT', 'DT'), 'OUT := the date IN1 at the time of day IN2.'),
   fn('DIVTIME', 'time', [p('IN1', 'TIME'), p('IN2', 'ANY_NUM')], p('OUT', 'TIME'), 'OUT := IN1 / IN2, a TIME divided by a number (to whole ms; IN2 = 0 turns ENO OFF).'),
 ];
 
@@ -314,14 +322,17 @@ export const STRING_FUNCTION_SIGNATURES: readonly BlockSignature[] = [
   str('FIND', [p('IN1', 'ANY_STRING', true), p('IN2', 'ANY_STRING', true)], p('OUT', 'ANY_INT'), 'Position of the first IN2 in IN1 (1 = first; 0 when there is none).'),
 ];
 
+const TIMES: readonly ElementaryType[] = ['TIME', 'DATE', 'TOD', 'DT'];
+
 /**
- * Every A_TO_B conversion between the supported elementary types. WSTRING has none: MATIEC's
- * library converts only STRING (its WSTRING has no C type).
+ * Every A_TO_B conversion between the supported elementary types that MATIEC's library has:
+ * WSTRING has none (its WSTRING has no C type), and between TIME, DATE, TOD and DT only DT_TO_DATE
+ * and DT_TO_TOD ("Not supported" in its iec_std_functions.h).
  */
 export const CONVERSION_SIGNATURES: readonly BlockSignature[] = ELEMENTARY_TYPES.filter((t) => t !== 'WSTRING').flatMap((from) =>
-  ELEMENTARY_TYPES.filter((to) => to !== from && to !== 'WSTRING').map((to) =>
-    fn(`${from}_TO_${to}`, 'conversion', [p('IN', from)], p('OUT', to), conversionText(from, to)),
-  ),
+  ELEMENTARY_TYPES.filter(
+    (to) => to !== from && to !== 'WSTRING' && !(TIMES.includes(from) && TIMES.includes(to) && !(from === 'DT' && to !== 'TIME')),
+  ).map((to) => fn(`${from}_TO_${to}`, 'conversion', [p('IN', from)], p('OUT', to), conversionText(from, to))),
 );
 
 function conversionText(from: ElementaryType, to: ElementaryType): string {

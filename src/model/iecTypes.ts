@@ -17,6 +17,9 @@ export const ELEMENTARY_TYPES = [
   'REAL',
   'LREAL',
   'TIME',
+  'DATE',
+  'TOD',
+  'DT',
   'STRING',
   'WSTRING',
 ] as const;
@@ -29,6 +32,10 @@ export type IntegerType = 'SINT' | 'INT' | 'DINT' | 'LINT' | 'USINT' | 'UINT' | 
 export type BitStringType = 'BOOL' | 'BYTE' | 'WORD' | 'DWORD' | 'LWORD';
 export type RealType = 'REAL' | 'LREAL';
 export type StringType = 'STRING' | 'WSTRING';
+export type DateType = 'DATE' | 'TOD' | 'DT';
+
+/** The long names IEC also gives TOD and DT. */
+export const DATE_TYPE_ALIASES: Readonly<Record<string, DateType>> = { TIME_OF_DAY: 'TOD', DATE_AND_TIME: 'DT' };
 
 /**
  * Most characters a STRING or WSTRING holds: MATIEC's STR_MAX_LEN (lib/C/iec_types.h), the body of
@@ -92,7 +99,8 @@ export const GENERIC_MEMBERS: Record<GenericType, readonly ElementaryType[]> = {
  * Value representation shared by engine, simulator, CLI and UI:
  * BOOL -> boolean; 64-bit integer and bit-string types (LINT, ULINT, LWORD) -> bigint;
  * other integers and bit strings -> number; REAL/LREAL -> number (REAL held rounded to 32 bits);
- * TIME -> number of milliseconds (signed); STRING -> a JavaScript string of single-byte characters
+ * TIME -> number of milliseconds (signed); DATE, TOD (TIME_OF_DAY), DT (DATE_AND_TIME) -> number of
+ * milliseconds since 1970-01-01 (DATE, DT; UTC) or since midnight (TOD); STRING -> a JavaScript string of single-byte characters
  * (codes 0-255, one character per byte); WSTRING -> a JavaScript string (UTF-16 code units).
  */
 export type Value = boolean | number | bigint | string;

@@ -23,8 +23,9 @@ export function writeType(w: XmlWriter, type: string): void {
   else if (upper === 'WSTRING') w.empty('wstring');
   else if (sized) w.empty(sized.type.toLowerCase(), { length: String(sized.length) });
   else if (isElementaryType(upper)) w.empty(upper);
-  else if (['DATE', 'TIME_OF_DAY', 'TOD', 'DATE_AND_TIME', 'DT', 'LTIME', 'CHAR', 'WCHAR'].includes(upper))
-    w.empty(upper === 'TOD' ? 'TOD' : upper === 'DT' ? 'DT' : upper);
+  else if (upper === 'TIME_OF_DAY') w.empty('TOD');
+  else if (upper === 'DATE_AND_TIME') w.empty('DT');
+  else if (['LTIME', 'CHAR', 'WCHAR'].includes(upper)) w.empty(upper);
   else w.empty('derived', { name: t });
 }
 

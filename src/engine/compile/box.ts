@@ -434,6 +434,9 @@ export function lowerOutput(
 export function initialText(type: string): string {
   if (type === 'STRING') return "''";
   if (type === 'WSTRING') return '""';
+  if (type === 'DATE') return 'D#1970-01-01';
+  if (type === 'TOD') return 'TOD#00:00:00';
+  if (type === 'DT') return 'DT#1970-01-01-00:00:00';
   return type === 'BOOL'
     ? 'FALSE'
     : type === 'TIME'

@@ -10,6 +10,7 @@ import {
   locationAdmits,
   parseLocation,
   parseSizedString,
+  DATE_TYPE_ALIASES,
   type ElementaryType,
   type ParsedLocation,
   type Value,
@@ -37,6 +38,7 @@ export const storeOf = (t: ElementaryType): Store =>
 export function declaredElementaryType(text: string): { type: ElementaryType } | { error: string } | undefined {
   const upper = text.trim().toUpperCase();
   if (isElementaryType(upper)) return { type: upper };
+  if (DATE_TYPE_ALIASES[upper]) return { type: DATE_TYPE_ALIASES[upper] };
   const sized = parseSizedString(upper);
   if (!sized) return undefined;
   if (sized.length < 1 || sized.length > STRING_MAX_LEN)

@@ -12,10 +12,12 @@
 // - LREAL_TO_REAL rounds to 32 bits; a finite value too large for REAL is an error in `iec`.
 // - TIME counts milliseconds in `iec` and seconds in `openplc` (MATIEC's timespec tv_sec; its
 //   TIME_TO_REAL keeps the fraction of a second, REAL_TO_TIME reads one).
-// - To and from STRING: strings.ts.
+// - DATE, TOD and DT convert like TIME (ms in `iec`, seconds in `openplc`); DT_TO_DATE and DT_TO_TOD
+//   keep the day or the time of day. To and from STRING: strings.ts.
 import { INT_INFO, type ElementaryType, type Value } from '../../model/iecTypes';
 import type { Profile } from '../../model/project';
-import { isBigIntType, isBitStringType, isRealType, isSizedType, normalize, typeRange } from '../values/types';
+import { isBigIntType, isBitStringType, isRealType, isSizedType, isTimeLike, normalize, typeRange } from '../values/types';
+import { DAY_MS } from '../values/dateText';
 import { timeConversionUnitMs } from './profiles';
 import { stringConversion } from './strings';
 import { num, type FnContext, type FnImpl1 } from './fnTypes';
@@ -28,6 +30,7 @@ export function roundHalfEven(x: number): number {
 }
 
 const isZero = (v: Value): boolean => v === false || v === 0 || v === 0n;
+const mod = (a: number, m: number): number => ((a % m) + m) % m;
 
 /**
  * An exact integer to a sized type: wrapped to its width, flagged as an error in `iec` when out of
@@ -53,11 +56,14 @@ function toSized(to: ElementaryType, transfer: boolean, strict: boolean): (ctx: 
 
 export function conversion(from: ElementaryType, to: ElementaryType, profile: Profile): FnImpl1 {
   if (from === 'STRING' || to === 'STRING') return stringConversion(from, to, profile);
+  // MATIEC's __date_and_time_to_date / __date_and_time_to_time_of_day.
+  if (from === 'DT' && to === 'DATE') return (_c, a) => num(a) - mod(num(a), DAY_MS);
+  if (from === 'DT' && to === 'TOD') return (_c, a) => mod(num(a), DAY_MS);
   const strict = profile === 'iec';
   const unit = timeConversionUnitMs(profile);
   if (to === 'BOOL') return (_c, a) => !isZero(a);
   if (from === 'BOOL') {
-    if (to === 'TIME') return (_c, a) => (a ? unit : 0);
+    if (isTimeLike(to)) return (_c, a) => (a ? unit : 0);
     return (_c, a) => normalize(to, a ? 1 : 0);
   }
 
@@ -70,7 +76,7 @@ export function conversion(from: ElementaryType, to: ElementaryType, profile: Pr
       };
     }
     if (to === 'LREAL') return (_c, a) => num(a);
-    if (to === 'TIME') {
+    if (isTimeLike(to)) {
       return (ctx, a) => {
         const ms = num(a) * unit;
         if (!Number.isFinite(ms) || Math.abs(ms) > Number.MAX_SAFE_INTEGER) {
@@ -97,7 +103,7 @@ export function conversion(from: ElementaryType, to: ElementaryType, profile: Pr
     };
   }
 
-  if (from === 'TIME') {
+  if (isTimeLike(from)) {
     if (to === 'REAL') return (_c, a) => Math.fround(num(a) / unit);
     if (to === 'LREAL') return (_c, a) => num(a) / unit;
     // MATIEC's tv_sec of a normalised timespec: whole seconds, truncated toward zero.
@@ -109,7 +115,7 @@ export function conversion(from: ElementaryType, to: ElementaryType, profile: Pr
   const transferFrom = isBitStringType(from);
   if (to === 'REAL') return (_c, a) => Math.fround(num(a));
   if (to === 'LREAL') return (_c, a) => num(a);
-  if (to === 'TIME') return (_c, a) => normalize('TIME', num(a) * unit);
+  if (isTimeLike(to)) return (_c, a) => normalize(to, num(a) * unit);
   const sized = toSized(to, transferFrom || isBitStringType(to), strict);
   return (ctx, a) => sized(ctx, a as number | bigint);
 }

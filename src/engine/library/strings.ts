@@ -14,11 +14,12 @@
 // Profiles (profiles.ts): comparisons (string-compare), FIND (string-find), TIME_TO_STRING
 // (time-to-string), STRING_TO_<number, TIME> (string-to-number); openplc also takes INSERT, DELETE
 // and REPLACE's L and P modulo 256 (MATIEC casts them to its 8-bit length type).
-import type { ElementaryType, Value } from '../../model/iecTypes';
+import type { DateType, ElementaryType, Value } from '../../model/iecTypes';
 import type { Profile } from '../../model/project';
 import { parseLiteral } from '../values/literals';
 import { formatTime } from '../values/time';
-import { clipString, defaultValue, isStringType, normalize } from '../values/types';
+import { clipString, defaultValue, isDateType, isStringType, isTimeLike, normalize } from '../values/types';
+import { brokenDown, DAY_MS, formatDate } from '../values/dateText';
 import { num, type FnContext, type FnImpl, type FnImpl1, type FnImpl2 } from './fnTypes';
 
 export const STRING_FUNCTIONS = ['LEN', 'LEFT', 'RIGHT', 'MID', 'CONCAT', 'INSERT', 'DELETE', 'REPLACE', 'FIND'] as const;
@@ -176,6 +177,7 @@ export function toStringText(from: ElementaryType, v: Value, profile: Profile): 
   if (from === 'BYTE' || from === 'WORD' || from === 'DWORD' || from === 'LWORD') return `16#${BigInt.asUintN(64, BigInt(v as number | bigint)).toString(16)}`;
   if (from === 'REAL' || from === 'LREAL') return printfG(num(v), 10);
   if (from === 'TIME') return profile === 'openplc' ? matiecTimeText(num(v)) : formatTime(num(v));
+  if (isDateType(from)) return profile === 'openplc' ? matiecDateText(from, num(v)) : formatDate(from, num(v));
   if (isStringType(from)) return str(v);
   return String(v);
 }
@@ -213,6 +215,21 @@ export function matiecTimeText(ms: number): string {
   const head = `T#${days.quot}d${hours.quot}h${minutes.quot}m${minutes.rem}s`;
   return fracMs === 0 ? head : `${head}${printfG(fracMs, 6)}ms`;
 }
+
+/**
+ * MATIEC's __date_to_string, __tod_to_string and __dt_to_string: D#2024-01-31, TOD#12:30:15 or
+ * with a fraction TOD#12:30:05.500000 (printf %09.6f seconds), DT#2024-01-31-12:30:15.
+ */
+export function matiecDateText(type: DateType, ms: number): string {
+  const b = brokenDown(ms);
+  const date = `${b.y}-${pad2(b.mo)}-${pad2(b.d)}`;
+  if (type === 'DATE') return `D#${date}`;
+  const seconds = b.milli === 0 ? pad2(b.s) : (b.s + b.milli / 1000).toFixed(6).padStart(9, '0');
+  const clock = `${pad2(b.h)}:${pad2(b.mi)}:${seconds}`;
+  return type === 'TOD' ? `TOD#${clock}` : `DT#${date}-${clock}`;
+}
+
+const pad2 = (n: number) => String(n).padStart(2, '0');
 
 /** MATIEC's __pstring_to_sint: a LINT read from 2#.., 8#.., 16#.. or decimal text, skipping what it cannot read. */
 export function matiecStringToInt(s: string): bigint {
@@ -273,10 +290,11 @@ export function fromStringConversion(to: ElementaryType, profile: Profile): FnIm
       return s.length === 1 ? s === '1' : s.toUpperCase() === 'TRUE';
     };
   if (profile === 'iec') {
-    // A TIME may also be a plain number of milliseconds (the iec unit of TIME conversions).
+    // A TIME, DATE, TOD or DT may also be a plain number of milliseconds (the iec unit of their conversions).
     return (ctx, a) => {
       const text = str(a).trim();
-      const r = parseLiteral(to === 'TIME' && /^[+-]?\d+$/.test(text) ? `T#${text}ms` : text, to);
+      if (isTimeLike(to) && /^[+-]?\d+$/.test(text)) return normalize(to, Number(text));
+      const r = parseLiteral(text, to);
       if (r.ok) return r.value;
       ctx.error = true;
       return defaultValue(to);
@@ -284,14 +302,15 @@ export function fromStringConversion(to: ElementaryType, profile: Profile): FnIm
   }
   if (to === 'REAL') return (_c, a) => Math.fround(matiecStringToReal(str(a)));
   if (to === 'LREAL') return (_c, a) => matiecStringToReal(str(a));
-  if (to === 'TIME') {
-    // __string_to_time: seconds; with a '.', atof's whole seconds (its fraction is lost to a cast).
+  if (isTimeLike(to)) {
+    // __string_to_time (also for DATE, TOD, DT): seconds; with a '.', atof's whole seconds (its
+    // fraction is lost to a cast).
     return (_c, a) => {
       const s = str(a);
       let l = s.length;
       while (l > 0 && s[--l] !== '.');
       const seconds = l !== 0 ? Math.trunc(atof(s)) : Number(matiecStringToInt(s));
-      return normalize('TIME', seconds * 1000);
+      return normalize(to, seconds * 1000);
     };
   }
   // Integers and bit strings: the LINT read, cast to the type (wrapped to its width).
@@ -300,6 +319,15 @@ export function fromStringConversion(to: ElementaryType, profile: Profile): FnIm
 
 /** X_TO_STRING or STRING_TO_X. */
 export function stringConversion(from: ElementaryType, to: ElementaryType, profile: Profile): FnImpl1 {
+  // MATIEC's __tod_to_string: a TOD of a day or more is an error, 'TOD#ERROR'.
+  if (from === 'TOD' && to === 'STRING')
+    return (ctx, a) => {
+      if (num(a) >= DAY_MS || num(a) < 0) {
+        ctx.error = true;
+        return 'TOD#ERROR';
+      }
+      return toStringText(from, a, profile);
+    };
   if (to === 'STRING') return (_c, a) => clipString(toStringText(from, a, profile));
   return fromStringConversion(to, profile);
 }

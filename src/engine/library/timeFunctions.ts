@@ -6,17 +6,20 @@
 import { normalize } from '../values/types';
 import { num, type FnImpl2 } from './fnTypes';
 
-export type TimeFunctionName = 'ADD_TIME' | 'SUB_TIME' | 'MULTIME' | 'DIVTIME';
+// The date functions (ADD_TOD_TIME ... CONCAT_DATE_TOD) add and subtract milliseconds as MATIEC's
+// __time_add/__time_sub add timespecs: a TOD is not wrapped at midnight.
+const ADDS = ['ADD_TIME', 'ADD_TOD_TIME', 'ADD_DT_TIME', 'CONCAT_DATE_TOD'] as const;
+const SUBS = ['SUB_TIME', 'SUB_DATE_DATE', 'SUB_TOD_TIME', 'SUB_TOD_TOD', 'SUB_DT_TIME', 'SUB_DT_DT'] as const;
+
+export type TimeFunctionName = (typeof ADDS)[number] | (typeof SUBS)[number] | 'MULTIME' | 'DIVTIME';
 
 export const isTimeFunction = (name: string): name is TimeFunctionName =>
-  name === 'ADD_TIME' || name === 'SUB_TIME' || name === 'MULTIME' || name === 'DIVTIME';
+  (ADDS as readonly string[]).includes(name) || (SUBS as readonly string[]).includes(name) || name === 'MULTIME' || name === 'DIVTIME';
 
 export function timeFunction(name: TimeFunctionName): FnImpl2 {
+  if ((ADDS as readonly string[]).includes(name)) return (_c, a, b) => (a as number) + (b as number);
+  if ((SUBS as readonly string[]).includes(name)) return (_c, a, b) => (a as number) - (b as number);
   switch (name) {
-    case 'ADD_TIME':
-      return (_c, a, b) => (a as number) + (b as number);
-    case 'SUB_TIME':
-      return (_c, a, b) => (a as number) - (b as number);
     case 'MULTIME':
       return (_c, a, b) => normalize('TIME', (a as number) * num(b));
     case 'DIVTIME':
@@ -28,5 +31,7 @@ export function timeFunction(name: TimeFunctionName): FnImpl2 {
         }
         return normalize('TIME', (a as number) / d);
       };
+    default:
+      throw new Error(`${name} is not a TIME function`);
   }
 }

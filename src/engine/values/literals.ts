@@ -14,6 +14,7 @@ import { ELEMENTARY_TYPES, isElementaryType, type ElementaryType, type Value } f
 import {
   canWiden,
   hasControlCharacter,
+  isDateType,
   isRealType,
   isSingleByte,
   isSizedType,
@@ -24,6 +25,7 @@ import {
   type SizedType,
 } from './types';
 import { formatStringLiteral, looksLikeStringLiteral, parseStringLiteral } from './stringText';
+import { datePrefix, formatDate, parseDateBody, type DateKind } from './dateText';
 import { formatTime, parseTimeBody } from './time';
 import { realDisplay, shortestLreal, shortestReal } from './realText';
 
@@ -36,6 +38,7 @@ type Raw =
   | { kind: 'real'; value: number }
   | { kind: 'time'; ms: number }
   | { kind: 'string'; value: string; wide: boolean }
+  | { kind: 'date'; type: DateKind; ms: number }
   | { kind: 'error'; message: string };
 
 const DECIMAL = /^[+-]?\d(?:_?\d)*$/;
@@ -43,7 +46,7 @@ const BASED = /^(2|8|16)#([0-9A-Fa-f](?:_?[0-9A-Fa-f])*)$/;
 const REAL_TEXT = /^[+-]?\d(?:_?\d)*(?:\.\d(?:_?\d)*)?(?:[eE][+-]?\d(?:_?\d)*)?$/;
 const BASE_DIGITS: Record<string, RegExp> = { '2': /^[01_]+$/, '8': /^[0-7_]+$/, '16': /^[0-9A-Fa-f_]+$/ };
 const TIME_PREFIX = /^(?:T|TIME)#/i;
-const UNSUPPORTED_PREFIX = /^(LTIME|LT|TOD|TIME_OF_DAY|D|DATE|DT|DATE_AND_TIME)#/i;
+const UNSUPPORTED_PREFIX = /^(LTIME|LT)#/i;
 
 function parseInteger(text: string): Raw | undefined {
   if (DECIMAL.test(text)) return { kind: 'int', value: BigInt(text.replaceAll('_', '')) };
@@ -63,6 +66,11 @@ function parseRaw(text: string): Raw {
   if (looksLikeStringLiteral(text)) {
     const s = parseStringLiteral(text);
     return s.ok ? { kind: 'string', value: s.value, wide: s.wide } : { kind: 'error', message: s.message };
+  }
+  const dateKind = datePrefix(text);
+  if (dateKind) {
+    const d = parseDateBody(dateKind, text.slice(text.indexOf('#') + 1));
+    return d.ok ? { kind: 'date', type: dateKind, ms: d.ms } : { kind: 'error', message: d.message };
   }
   const upper = text.toUpperCase();
   if (upper === 'TRUE') return { kind: 'bool', value: true };
@@ -92,6 +100,8 @@ const describe = (raw: Raw, text: string): string => {
       return `${text} is a TIME`;
     case 'string':
       return `${text} is a ${raw.wide ? 'WSTRING' : 'STRING'}`;
+    case 'date':
+      return `${text} is a ${raw.type}`;
     case 'error':
       return raw.message;
   }
@@ -113,6 +123,11 @@ function applyType(raw: Raw, type: ElementaryType, text: string): LiteralResult 
     return { ok: false, message: `${describe(raw, text)}, not a ${type} (write a ${type} between ${wide ? 'double quotes: "abc"' : "single quotes: 'abc'"})` };
   }
   if (raw.kind === 'string') return { ok: false, message: `${describe(raw, text)}, not ${article(type)} ${type}` };
+  if (isDateType(type)) {
+    if (raw.kind === 'date' && raw.type === type) return { ok: true, value: raw.ms, type };
+    return { ok: false, message: `${describe(raw, text)}, not ${article(type)} ${type} (write ${DATE_EXAMPLE[type]})` };
+  }
+  if (raw.kind === 'date') return { ok: false, message: `${describe(raw, text)}, not ${article(type)} ${type}` };
   if (type === 'BOOL') {
     if (raw.kind === 'bool') return { ok: true, value: raw.value, type };
     if (raw.kind === 'int' && (raw.value === 0n || raw.value === 1n)) return { ok: true, value: raw.value === 1n, type };
@@ -145,6 +160,8 @@ function applyType(raw: Raw, type: ElementaryType, text: string): LiteralResult 
 
 const article = (type: string): string => (/^[AEIOU]/.test(type) ? 'an' : 'a');
 
+const DATE_EXAMPLE: Record<DateKind, string> = { DATE: 'D#2024-01-31', TOD: 'TOD#12:30:15', DT: 'DT#2024-01-31-12:30:15' };
+
 /** Type an untyped literal takes when nothing is expected of it. */
 function naturalType(raw: Raw): ElementaryType | undefined {
   switch (raw.kind) {
@@ -156,6 +173,8 @@ function naturalType(raw: Raw): ElementaryType | undefined {
       return 'REAL';
     case 'string':
       return raw.wide ? 'WSTRING' : 'STRING';
+    case 'date':
+      return raw.type;
     case 'int':
       return (['INT', 'DINT', 'LINT', 'ULINT'] as const).find((t) => raw.value >= typeRange(t).min && raw.value <= typeRange(t).max);
     case 'error':
@@ -175,7 +194,7 @@ export function parseLiteral(text: string, expected?: ElementaryType): LiteralRe
   }
   const typed = /^([A-Za-z_][A-Za-z0-9_]*)#(.+)$/.exec(trimmed);
   let result: LiteralResult;
-  if (typed && !TIME_PREFIX.test(trimmed)) {
+  if (typed && !TIME_PREFIX.test(trimmed) && !datePrefix(trimmed)) {
     const typeName = typed[1]!.toUpperCase();
     if (!isElementaryType(typeName)) return { ok: false, message: `"${typed[1]}" in "${trimmed}" is not a known type` };
     const body = typed[2]!;
@@ -210,6 +229,7 @@ export function isUntypedLiteral(text: string): boolean {
  */
 export function formatValue(type: ElementaryType, v: Value): string {
   if (isStringType(type)) return formatStringLiteral(String(v), type === 'WSTRING');
+  if (isDateType(type)) return formatDate(type, Number(v));
   if (type === 'BOOL') return v === true || v === 1 || v === 1n ? 'TRUE' : 'FALSE';
   if (type === 'TIME') return formatTime(Number(v));
   if (type === 'REAL') return realDisplay(shortestReal(Number(v)));
@@ -224,6 +244,7 @@ export function formatValue(type: ElementaryType, v: Value): string {
  * quotes the cell (RFC 4180) where it has to.
  */
 export function csvValue(type: ElementaryType, v: Value): string {
+  if (isDateType(type)) return formatDate(type, Number(v));
   if (isStringType(type)) {
     const s = String(v);
     const plain = s !== '' && s.trim() === s && !hasControlCharacter(s) && !looksLikeStringLiteral(s);
@@ -253,7 +274,7 @@ export function parseValueText(type: ElementaryType, text: string): ValueResult 
     if (lower === 'on') return { ok: true, value: true };
     if (lower === 'off') return { ok: true, value: false };
   }
-  if (type === 'TIME' && /^[+-]?\d+(?:\.\d+)?$/.test(trimmed)) return { ok: true, value: normalize('TIME', Number(trimmed)) };
+  if ((type === 'TIME' || isDateType(type)) && /^[+-]?\d+(?:\.\d+)?$/.test(trimmed)) return { ok: true, value: normalize(type, Number(trimmed)) };
   if (isSizedType(type) && /^[+-]?\d+\.0*$/.test(trimmed)) return parseValueText(type, trimmed.replace(/\.0*$/, ''));
   const r = parseLiteral(trimmed, type);
   return r.ok ? { ok: true, value: r.value } : { ok: false, message: r.message };

@@ -6,6 +6,7 @@ import {
   INT_INFO,
   STRING_MAX_LEN,
   type BitStringType,
+  type DateType,
   type ElementaryType,
   type IntegerType,
   type StringType,
@@ -22,6 +23,9 @@ export const isBitStringType = (t: ElementaryType): t is BitStringType =>
   t === 'BOOL' || t === 'BYTE' || t === 'WORD' || t === 'DWORD' || t === 'LWORD';
 export const isRealType = (t: ElementaryType): t is 'REAL' | 'LREAL' => t === 'REAL' || t === 'LREAL';
 export const isStringType = (t: string): t is StringType => t === 'STRING' || t === 'WSTRING';
+export const isDateType = (t: string): t is DateType => t === 'DATE' || t === 'TOD' || t === 'DT';
+/** TIME and the date types: whole milliseconds held as numbers. */
+export const isTimeLike = (t: string): boolean => t === 'TIME' || isDateType(t);
 export const isSignedType = (t: ElementaryType): boolean =>
   t === 'SINT' || t === 'INT' || t === 'DINT' || t === 'LINT' || t === 'REAL' || t === 'LREAL' || t === 'TIME';
 
@@ -69,7 +73,10 @@ export function normalize(type: ElementaryType, v: Value): Value {
       return Math.fround(toNumber(v));
     case 'LREAL':
       return toNumber(v);
-    case 'TIME': {
+    case 'TIME':
+    case 'DATE':
+    case 'TOD':
+    case 'DT': {
       const n = toNumber(v);
       return Number.isFinite(n) ? Math.round(n) || 0 : 0;
     }
@@ -109,7 +116,7 @@ export function isValueOfType(type: ElementaryType, v: Value): boolean {
   if (type === 'WSTRING') return typeof v === 'string' && v.length <= STRING_MAX_LEN;
   if (type === 'LREAL') return typeof v === 'number';
   if (type === 'REAL') return typeof v === 'number' && (Number.isNaN(v) || Math.fround(v) === v);
-  if (type === 'TIME') return typeof v === 'number' && Number.isInteger(v);
+  if (isTimeLike(type)) return typeof v === 'number' && Number.isInteger(v);
   if (isBigIntType(type)) {
     if (typeof v !== 'bigint') return false;
   } else if (typeof v !== 'number' || !Number.isInteger(v)) return false;
