@@ -9,7 +9,8 @@
 // - Based literals (16#FF) have no sign and must fit the type as numbers: SINT#16#FF is refused.
 // - TIME literals are held in whole milliseconds (finer parts rounded to the nearest ms).
 // - 'abc' is a STRING and "abc" a WSTRING (stringText.ts); neither converts to the other or to a
-//   number implicitly.
+//   number implicitly. D#, TOD#, DT# (and DATE#, TIME_OF_DAY#, DATE_AND_TIME#) are dates and times
+//   of day in ms (dateText.ts); a CSV or watch value may also give them as a number of ms.
 import { ELEMENTARY_TYPES, isElementaryType, type ElementaryType, type Value } from '../../model/iecTypes';
 import {
   canWiden,
