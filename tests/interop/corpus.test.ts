@@ -191,6 +191,8 @@ describe('PLCopen corpus', () => {
   });
 
   it('simulates most LD programs of the corpus', () => {
-    expect(simulated).toBeGreaterThanOrEqual(25);
+    // The corpus's own PROGRAM POUs (the LD of SFC actions and transitions is no longer imported as
+    // extra programs: it runs inside its chart, see tests/engine/sfcCorpus.test.ts).
+    expect(simulated).toBeGreaterThanOrEqual(15);
   });
 });
