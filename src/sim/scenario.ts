@@ -14,7 +14,7 @@
 import type { Plc } from '../engine/api';
 import type { CompiledProgram } from '../engine/plc';
 import { compileProgram, createPlc } from '../engine/plc';
-import { csvValue, parseValueText } from '../engine/values/literals';
+import { csvValue, formatValue, parseValueText } from '../engine/values/literals';
 import type { ElementaryType, Value } from '../model/iecTypes';
 import type { Project, Scenario } from '../model/project';
 import { readCsv } from './csv';
@@ -147,8 +147,12 @@ function typeOf(program: CompiledProgram, name: string, line: number): Elementar
   return r.access.type;
 }
 
+/** A value in a failure message: as in the CSV, a string as its literal ('a, b') so its ends show. */
+const checkText = (type: ElementaryType, v: Value): string =>
+  type === 'STRING' || type === 'WSTRING' ? formatValue(type, v) : csvValue(type, v);
+
 function matches(check: Check, actual: Value): boolean {
-  if (check.type === 'BOOL') return actual === check.value;
+  if (check.type === 'BOOL' || typeof actual === 'string') return actual === check.value;
   if (typeof actual === 'bigint' && typeof check.value === 'bigint' && check.tolerance === 0) return actual === check.value;
   return Math.abs(Number(actual) - Number(check.value)) <= check.tolerance;
 }
@@ -209,8 +213,8 @@ export function runPrepared(plc: Plc, prep: PreparedScenario, afterScan?: (scan:
           scan,
           line: parsed.rows[at]!.line,
           name: col.name,
-          expected: `${csvValue(check.type, check.value)}${check.tolerance ? ` ± ${check.tolerance}` : ''}`,
-          actual: csvValue(check.type, actual),
+          expected: `${checkText(check.type, check.value)}${check.tolerance ? ` ± ${check.tolerance}` : ''}`,
+          actual: checkText(check.type, actual),
         });
     }
     if (divergences.length) return { ok: false, scans: scan, divergences };

@@ -8,7 +8,7 @@ import { readCsv } from '../../src/sim/csv';
 import { rungsmith } from './memoryIo';
 
 /** Msg := CONCAT(Name, ', ok'); N := LEN(Name). */
-function project(): string {
+function project(scenarios: { name: string; csv: string }[] = []): string {
   const box = (id: string, row: number, blockType: string, inputs: Record<string, string>, outputs: Record<string, string>) => ({
     id: id as ElementId,
     kind: 'box' as const,
@@ -27,7 +27,7 @@ function project(): string {
       net(box('b2', 0, 'LEN', { IN: 'Name' }, { OUT: 'N' })),
     ],
   });
-  return saveProject(newProject('S', { pous: [main] }));
+  return saveProject({ ...newProject('S', { pous: [main] }), scenarios });
 }
 
 describe('rungsmith simulate with STRING', () => {
@@ -62,5 +62,16 @@ describe('rungsmith simulate with STRING', () => {
     });
     expect(r.code).not.toBe(0);
     expect(r.err).toMatch(/stim\.csv line 2, column Name: .*\$/);
+  });
+
+  it('rungsmith test checks STRING expectations exactly', () => {
+    const csv = "scan,Name,expect Msg,expect N\n1,Pump,\"Pump, ok\",4\n2,'',\"', ok'\",0\n";
+    const pass = rungsmith(['test', 'p.json'], { 'p.json': project([{ name: 'strings', csv }]) });
+    expect(pass.out).toMatch(/^PASS strings/m);
+    expect(pass.code).toBe(0);
+    const wrong = csv.replace('"Pump, ok"', '"Pump ok"');
+    const fail = rungsmith(['test', 'p.json'], { 'p.json': project([{ name: 'strings', csv: wrong }]) });
+    expect(fail.code).toBe(1);
+    expect(fail.out).toContain("Msg expected 'Pump ok', got 'Pump, ok'");
   });
 });
