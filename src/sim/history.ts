@@ -32,10 +32,16 @@ export interface KeyImage {
   readonly bytes: number;
 }
 
-/** Bytes per recorded scan (two times) and per recorded input image beyond its values. */
+/** Bytes per recorded scan (two times), per recorded input change and per changed input in it. */
 const SCAN_BYTES = 16;
-const INPUTS_BYTES = 32;
-const VALUE_BYTES = 8;
+const INPUTS_BYTES = 48;
+const INPUT_BYTES = 12;
+
+/** The inputs a scan read that differ from what the scan before read: their indexes in the input image, and their values. */
+export interface InputChange {
+  readonly index: readonly number[];
+  readonly values: readonly Value[];
+}
 
 /** A key and the scans after it, up to the next key. */
 export class Segment<I extends KeyImage> {
@@ -46,10 +52,10 @@ export class Segment<I extends KeyImage> {
    * time (what its timers saw; they differ after an online change).
    */
   private t: Float64Array;
-  /** Offsets of the scans that read a changed input image, ascending, and those images. */
+  /** Offsets of the scans that read a changed input image, ascending, and what changed. */
   readonly inputAt: number[] = [];
-  readonly inputs: (readonly Value[])[] = [];
-  /** Bytes of the input images. */
+  readonly inputs: InputChange[] = [];
+  /** Bytes of the input changes. */
   private inputBytes = 0;
 
   constructor(
@@ -95,14 +101,14 @@ export class Segment<I extends KeyImage> {
   }
 
   /** Appends the next scan, which read a changed input image. */
-  pushInputs(timeMs: number, plcTimeMs: number, inputs: readonly Value[]): void {
+  pushInputs(timeMs: number, plcTimeMs: number, inputs: InputChange): void {
     this.inputAt.push(this.count);
     this.inputs.push(inputs);
-    this.inputBytes += INPUTS_BYTES + inputs.length * VALUE_BYTES;
+    this.inputBytes += INPUTS_BYTES + inputs.index.length * INPUT_BYTES;
     this.push(timeMs, plcTimeMs);
   }
 
-  /** Index in inputAt of the first input image recorded at or after `scan`. */
+  /** Index in inputAt of the first input change recorded at or after `scan`. */
   inputIndex(scan: number): number {
     const k = scan - this.firstScan;
     const at = this.inputAt;
@@ -182,10 +188,10 @@ export class ScanHistory<I extends KeyImage = KeyImage> {
   }
 
   /**
-   * Records scan `scan` after the last one: its times and, when it read a changed input image, that
-   * image. Call key() instead for the first scan, after a gap, and after any other change.
+   * Records the scan after the last one: its times and, when it read a changed input image, what
+   * changed. Call key() instead for the first scan, after a gap, and after any other change.
    */
-  scan(timeMs: number, plcTimeMs: number, inputs?: readonly Value[]): void {
+  scan(timeMs: number, plcTimeMs: number, inputs?: InputChange): void {
     const open = this.open!;
     if (inputs) open.pushInputs(timeMs, plcTimeMs, inputs);
     else open.push(timeMs, plcTimeMs);

@@ -12,7 +12,7 @@ import type { Pou } from '../model/project';
 import { compileCondition } from './condition';
 import { csvRow } from './csv';
 import { packNetworks } from './frames';
-import { ScanHistory, type HistoryOptions } from './history';
+import { ScanHistory, type HistoryOptions, type InputChange } from './history';
 import { ChangeIndex, sameValue } from './historyChanges';
 import type { HistoryView, SimLayout } from './protocol';
 import { Replayer, type HistoryState } from './replay';
@@ -35,6 +35,8 @@ export class HistoryRecorder {
   /** Execution time of the scans since the last key, and the least a key took to save (ms; the first ones run before the JIT has optimised saving, and a garbage collection can make any slow). */
   private execSinceKey = 0;
   private saveMs = Infinity;
+  /** The input image as of the last recorded scan. */
+  private lastInputs: Value[] = [];
 
   constructor(
     private readonly plc: Plc,
@@ -72,10 +74,26 @@ export class HistoryRecorder {
       this.key(scan, timeMs);
     } else if (meters[0] !== this.seenInputs) {
       this.seenInputs = meters[0]!;
-      h.scan(timeMs, this.plc.timeMs, probe.inputImage.slice());
+      h.scan(timeMs, this.plc.timeMs, this.inputChange());
     } else {
       h.scan(timeMs, this.plc.timeMs);
     }
+  }
+
+  /** What the input image holds now that it did not at the last recorded scan (undefined: nothing). */
+  private inputChange(): InputChange | undefined {
+    const image = this.probe.inputImage;
+    const last = this.lastInputs;
+    let index: number[] | undefined;
+    let values: Value[] | undefined;
+    for (let i = 0; i < image.length; i++) {
+      const v = image[i]!;
+      if (sameValue(v, last[i]!)) continue;
+      last[i] = v;
+      (index ??= []).push(i);
+      (values ??= []).push(v);
+    }
+    return index ? { index, values: values! } : undefined;
   }
 
   private key(scan: number, timeMs: number): void {
@@ -85,6 +103,7 @@ export class HistoryRecorder {
     const cleared = this.history.open !== undefined && scan !== this.history.last! + 1;
     this.history.key(scan, timeMs, this.plc.timeMs, image);
     if (cleared) this.forget();
+    this.lastInputs = this.probe.inputImage.slice();
     this.seenInputs = this.probe.meters[0]!;
     this.seenState = this.probe.meters[1]!;
     this.execSinceKey = 0;

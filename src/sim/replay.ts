@@ -42,8 +42,9 @@ export class Replayer {
   /** Where the own PLC stands: after scan `at` of `seg` (none: undefined). */
   private seg: Segment<PlcImage> | undefined;
   private at = -1;
-  /** Next input image of `seg` to apply (index in seg.inputAt). */
+  /** Next input change of `seg` to apply (index in seg.inputAt), and the input image it applies to. */
   private inputPos = 0;
+  private image: Value[] = [];
 
   constructor(
     livePlc: Plc,
@@ -120,13 +121,19 @@ export class Replayer {
     this.seg = seg;
     this.at = seg.firstScan;
     this.inputPos = seg.inputIndex(seg.firstScan + 1);
+    this.image = r.probe.inputImage.slice();
   }
 
   private step(r: Replaying, seg: Segment<PlcImage>): void {
     const scan = ++this.at;
     const k = scan - seg.firstScan;
     let inputs: readonly Value[] | undefined;
-    if (this.inputPos < seg.inputAt.length && seg.inputAt[this.inputPos] === k) inputs = seg.inputs[this.inputPos++];
+    if (this.inputPos < seg.inputAt.length && seg.inputAt[this.inputPos] === k) {
+      const change = seg.inputs[this.inputPos++]!;
+      const image = this.image;
+      change.index.forEach((i, j) => (image[i] = change.values[j]!));
+      inputs = image;
+    }
     const fault = r.probe.replay(seg.plcTimeAt(k), inputs);
     if (fault) {
       this.reset();

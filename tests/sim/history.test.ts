@@ -10,7 +10,7 @@ const key = (bytes = 100) => ({ bytes });
 function recordScans(h: ScanHistory, from: number, to: number, every = 10, inputsAt: (s: number) => boolean = () => false): void {
   for (let s = from; s <= to; s++) {
     if (s === from || (s - from) % every === 0) h.key(s, s * 10, s * 10 - 5, key());
-    else h.scan(s * 10, s * 10 - 5, inputsAt(s) ? [s % 2 === 0, s] : undefined);
+    else h.scan(s * 10, s * 10 - 5, inputsAt(s) ? { index: [1], values: [s] } : undefined);
   }
 }
 
@@ -24,7 +24,7 @@ describe('scan history store', () => {
     expect(seg.timeAt(37 - 31)).toBe(370);
     expect(seg.plcTimeAt(37 - 31)).toBe(365);
     expect(seg.inputAt.map((k) => seg.firstScan + k)).toEqual([35]);
-    expect(seg.inputs[0]).toEqual([false, 35]);
+    expect(seg.inputs[0]).toEqual({ index: [1], values: [35] });
     expect(seg.inputIndex(36)).toBe(1);
     expect(h.timeOf(95)).toBe(950);
     expect(h.segmentOf(0)).toBeUndefined();
@@ -40,7 +40,7 @@ describe('scan history store', () => {
     expect(still.bytes).toBeLessThanOrEqual(100 + 128 + 1000 * 16);
     const busy = new ScanHistory();
     recordScans(busy, 1, 1000, 1000, () => true);
-    expect(busy.bytes).toBeGreaterThan(still.bytes + 1000 * 32);
+    expect(busy.bytes).toBeGreaterThan(still.bytes + 1000 * 48);
   });
 
   it('keeps at most maxScans scans, the oldest dropped first', () => {
@@ -58,7 +58,7 @@ describe('scan history store', () => {
     const h = new ScanHistory({ budgetBytes: 64 * 1024 });
     for (let s = 1; s <= 20_000; s++) {
       if (s % 100 === 1) h.key(s, s, s, key(1000));
-      else h.scan(s, s, [true, s]);
+      else h.scan(s, s, { index: [0, 1], values: [true, s] });
     }
     expect(h.bytes).toBeLessThanOrEqual(64 * 1024);
     expect(h.last).toBe(20_000);
