@@ -321,7 +321,9 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       pous.push(withKeep(pou, keep));
       if (keep.pou)
         warn(
-          `POU "${name}" is written in ${lang.name}: its interface can be called from LD and it is kept unchanged for export, but Rungsmith only edits and simulates LD${fbdKept ? ` (read as LD, ${fbdKept})` : ''}`,
+          lang.name === 'FBD'
+            ? `POU "${name}" is written in FBD: its interface can be called from LD and it is kept unchanged for export, but Rungsmith cannot run it (read as LD, ${fbdKept ?? 'its body cannot be read as a graph'}): its calls cannot run`
+            : `POU "${name}" is written in ${lang.name}: Rungsmith runs it and keeps it unchanged for export, but shows it read-only (the editor edits LD)`,
           pouEl,
         );
       else
