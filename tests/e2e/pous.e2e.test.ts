@@ -200,6 +200,19 @@ test('run: the values inside one instance, the other instance, step into the cal
   await sim.button('step-network').click();
   await page.getByTestId('sim-position').waitFor({ state: 'detached' });
   expect(await sim.mode()).toBe('Paused');
+  // From a call box in Main: "Open instance" (right-click), or a double-click.
+  await page.getByTestId('pou-tab-Main').click();
+  const call1 = await draw.cellPoint(0, 0, 1);
+  await page.mouse.click(call1.x, call1.y, { button: 'right' });
+  await page.getByTestId('sim-open-instance').click();
+  await poll(() => page.getByTestId('pou-tab-Motor').getAttribute('aria-selected')).toBe('true');
+  await poll(() => picker.inputValue()).toBe('Motor1');
+  await page.getByTestId('pou-tab-Main').click();
+  const call2 = await draw.cellPoint(0, 2, 2);
+  await page.mouse.dblclick(call2.x, call2.y);
+  await poll(() => page.getByTestId('pou-tab-Motor').getAttribute('aria-selected')).toBe('true');
+  await poll(() => picker.inputValue()).toBe('Motor2');
+  await page.getByTestId('pou-tab-Main').click();
   await sim.button('reset').click();
   await sim.waitForMode('Stopped');
   await editor.tab('Problems');

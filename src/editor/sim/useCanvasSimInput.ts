@@ -31,7 +31,9 @@ export function useCanvasSimInput(): void {
 
     const elementUnder = (e: MouseEvent): LdElement | undefined => {
       const target = e.target;
-      if (!(target instanceof HTMLCanvasElement)) return undefined;
+      // The stage's canvas, or the sticky layer over it (a double-click's second press can land there);
+      // never a field or a button of a network header.
+      if (!(target instanceof HTMLCanvasElement) && !(target instanceof HTMLDivElement)) return undefined;
       const scroller = target.closest<HTMLElement>('.rs-canvas');
       if (!scroller) return undefined;
       const networks = selectNetworks(documents.getState());
