@@ -3,12 +3,12 @@
 // HistoryRecorder (src/sim/historyRecorder.ts), and by tests and benchmarks.
 //
 // A scan is a pure function of the PLC's state, its input image, forces and its time. So the history
-// keeps, per scan, only its times and (when it changed) the input image it read; and now and then a
-// key: the PLC's complete state after a scan (PlcProbe.save). A segment is a key and the scans after
-// it up to the next key; a scan is rebuilt by restoring its segment's key on a second PLC of the same
-// program and replaying the scans after it (src/sim/replay.ts). A key is also taken after any other
-// change from outside (a write, a force, a restart, a change in the middle of a scan), so replaying
-// never needs more than the recorded times and input images.
+// keeps, per scan, only its times and (when the input image changed) the inputs that changed; and now
+// and then a key: the PLC's complete state after a scan (PlcProbe.save). A segment is a key and the
+// scans after it up to the next key; a scan is rebuilt by restoring its segment's key on a PLC of the
+// same program and replaying the scans after it (src/sim/replay.ts). A key is also taken after any
+// other change from outside (a write, a force, a restart, a change in the middle of a scan), so
+// replaying never needs more than the recorded times and inputs.
 import type { Value } from '../model/iecTypes';
 
 export interface HistoryOptions {
