@@ -4,7 +4,9 @@ import { describe, expect, test } from 'vitest';
 import { buildLayout, describeName, readableNames } from '../../src/sim/layout';
 import { SimHarness } from './harness';
 import { configurationProject, mainProgram, motorFb, motorProject } from './monitorPrograms';
-import { multiProject } from '../engine/userBlocksHelpers';
+import { io, multiProject, pou } from '../engine/userBlocksHelpers';
+import { ladder, vars } from '../engine/ladder';
+import { faultWords, positionWords } from '../../src/editor/sim/position';
 import type { SimFrame } from '../../src/sim/protocol';
 
 const POWER_OUT = 2;
@@ -149,5 +151,17 @@ describe('names of a whole program', () => {
     expect(names).toEqual(expect.arrayContaining(['Start1', 'Motor1.Start', 'Motor1.Stop', 'Motor1.Run', 'Motor2.Lamp']));
     const layout = buildLayout(project, 'Main', ['Start1', 'Motor1.Run', 'Motor1.Lamp'], 10);
     expect(layout.variables.map((v) => v.name)).toEqual(['Start1', 'Motor1.Run', 'Motor1.Lamp']);
+  });
+});
+
+describe('faults inside a body', () => {
+  test('a runaway loop in an FB faults naming the instance, the POU and the network', () => {
+    const loop = pou('Looper', 'FUNCTION_BLOCK', [...io('input', 'Go BOOL')], [ladder(['[Go] (Go)']), ladder(['>>AGAIN'], { label: 'AGAIN' })]);
+    const main = pou('Main', 'PROGRAM', vars('L1 Looper', 'Go BOOL'), [ladder(['[Go] # .'], { boxes: [{ row: 0, col: 1, type: 'Looper', instance: 'L1' }] })]);
+    const h = new SimHarness().send({ type: 'step', scans: 1, project: multiProject([main, loop]) });
+    expect(h.frame.mode).toBe('faulted');
+    expect(h.frame.fault).toMatchObject({ kind: 'watchdog', pou: 'Looper', instance: 'L1', network: 1 });
+    expect(faultWords(h.frame.fault!)).toMatch(/^Watchdog fault in L1 \(Looper\) network 2 \(AGAIN\): /);
+    expect(positionWords([{ pou: 'Main', network: 3 }, { pou: 'FB_Motor', instance: 'Motor1', network: 1 }])).toBe('Main / network 4 → Motor1 (FB_Motor) / network 2');
   });
 });

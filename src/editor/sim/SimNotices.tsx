@@ -3,6 +3,7 @@ import type { Diagnostic, Fault } from '../../engine/api';
 import { describeOnlineChange, describeTransfer } from '../../sim/carryOver';
 import type { SimState } from '../../store/simStore';
 import { OnlineChangeDialog } from './OnlineChangeDialog';
+import { faultWords } from './position';
 import { useSim, useSimStore } from './simContext';
 
 const selectRefusal = (s: SimState) => s.refusal;
@@ -15,9 +16,8 @@ const selectOnlineChange = (s: SimState) => s.onlineChange;
 const where = (d: Pick<Diagnostic, 'network' | 'networkLabel'>) =>
   d.network < 0 ? 'variables' : `network ${d.network + 1}${d.networkLabel ? ` (${d.networkLabel})` : ''}`;
 
-/** A fault in words; inside a body it names the instance and the POU: `in Motor1 (Motor) network 2`. */
-export const describeFault = (f: Fault) =>
-  `${f.kind === 'watchdog' ? 'Watchdog fault' : 'Runtime fault'} in ${f.instance ? `${f.instance} (${f.pou})` : f.pou} ${where(f)}: ${f.message.replace(/^watchdog:\s*/, '')}`;
+/** A fault in words, naming the instance and POU inside a body (position.ts). */
+export const describeFault = (f: Fault) => faultWords(f);
 
 const MAX_LISTED = 5;
 
