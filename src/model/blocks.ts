@@ -57,8 +57,8 @@ const fbSig = (
 
 /**
  * SEMA (OpenPLC Editor's Standard_Function_Blocks.xml) and the blocks of its
- * Additional_Function_Blocks.xml, from the standard's annex F (MATIEC AnnexF/*_st.txt), except RTC,
- * whose PDT/CDT pins are DATE_AND_TIME. TIME_TO_REAL in their bodies follows the profile's unit.
+ * Additional_Function_Blocks.xml, from the standard's annex F (MATIEC AnnexF/*_st.txt), and RTC
+ * (MATIEC lib/rtc.txt). TIME_TO_REAL in their bodies follows the profile's unit.
  */
 const ADDITIONAL_FB_SIGNATURES: readonly BlockSignature[] = [
   fbSig('SEMA', 'bistable', 'CLAIM:BOOL RELEASE:BOOL', 'BUSY:BOOL', 'Semaphore: BUSY goes ON with CLAIM and stays ON until RELEASE (CLAIM wins).'),
@@ -89,6 +89,13 @@ const ADDITIONAL_FB_SIGNATURES: readonly BlockSignature[] = [
     'RUN:BOOL X0:REAL X1:REAL TR:TIME CYCLE:TIME',
     'BUSY:BOOL XOUT:REAL',
     'Ramp: with RUN, XOUT goes from X0 to X1 in TR (CYCLE per call); without RUN, XOUT tracks X0.',
+  ),
+  fbSig(
+    'RTC',
+    'control',
+    'IN:BOOL PDT:DT',
+    'Q:BOOL CDT:DT',
+    'Real-time clock: CDT is the current date and time; a rising edge of IN loads PDT, and while IN is ON CDT runs on from it. Q copies IN.',
   ),
   fbSig(
     'HYSTERESIS',

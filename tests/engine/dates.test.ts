@@ -5,7 +5,7 @@ import { csvValue, formatValue, parseLiteral, parseValueText } from '../../src/e
 import { CONVERSION_SIGNATURES } from '../../src/model/blocks';
 import { variable } from '../../src/model/factory';
 import { call } from './library/fnHelpers';
-import { ladder, plcOf, project } from './ladder';
+import { ladder, plcOf, project, vars } from './ladder';
 
 const D = (y: number, m: number, d: number) => Date.UTC(y, m - 1, d);
 const H = 3_600_000;
@@ -83,6 +83,29 @@ describe('conversions of DATE, TOD and DT', () => {
     expect(call('DT_TO_STRING', 'DT', [D(2024, 1, 31) + 12 * H + 30 * 60_000], 'openplc')).toEqual(['DT#2024-01-31-12:30:00', true]);
     expect(call('STRING_TO_DATE', 'STRING', ['D#2024-01-31'])).toEqual([D(2024, 1, 31), true]);
     expect(call('STRING_TO_TOD', 'STRING', ['60'], 'openplc')).toEqual([60_000, true]);
+  });
+});
+
+describe('RTC (MATIEC lib/rtc.txt)', () => {
+  it('gives the PLC clock, or PDT plus the time since IN rose', () => {
+    const p = project(
+      [...vars('Set BOOL', 'T1 RTC'), variable('Now', 'DT'), variable('Preset', 'DT', { initial: 'DT#2024-01-31-12:00:00' })],
+      [ladder(['[Set] # # -'], { boxes: [{ row: 0, col: 1, type: 'RTC', instance: 'T1', inputs: { PDT: 'Preset' }, outputs: { CDT: 'Now' } }] })],
+    );
+    const plc = plcOf(p, 100);
+    plc.scan();
+    expect(plc.read('Now')).toBe(0);
+    plc.scan();
+    expect(plc.read('Now')).toBe(100);
+    plc.write('Set', true);
+    plc.scan();
+    expect(plc.read('Now')).toBe(D(2024, 1, 31) + 12 * H);
+    plc.scans(10);
+    expect(plc.read('Now')).toBe(D(2024, 1, 31) + 12 * H + 1000);
+    expect(plc.read('T1.Q')).toBe(true);
+    plc.write('Set', false);
+    plc.scan();
+    expect(plc.read('Now')).toBe(1300);
   });
 });
 

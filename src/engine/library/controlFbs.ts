@@ -6,7 +6,7 @@
 // `openplc` (MATIEC: T#100ms -> 0.1), milliseconds in `iec` (profiles.ts, time-conversion-unit),
 // so INTEGRAL, DERIVATIVE and PID's TR and TD count in that unit. CYCLE is an input: the blocks
 // assume they are called once per CYCLE and do not read the clock.
-// RTC is not here: its PDT and CDT pins are DATE_AND_TIME, a type Rungsmith does not have yet.
+// RTC (DATE_AND_TIME pins) is in rtc.ts.
 import type { Profile } from '../../model/project';
 import { StandardFb, type FbState } from './fbBase';
 import { timeConversionUnitMs } from './profiles';

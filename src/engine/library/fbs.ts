@@ -8,6 +8,7 @@ import { COUNTER_TYPES, type CounterType } from '../../model/blocks';
 import type { Profile } from '../../model/project';
 import { defaultValue } from '../values/types';
 import { DERIVATIVE, HYSTERESIS, INTEGRAL, PID, RAMP, SEMA } from './controlFbs';
+import { RTC } from './rtc';
 import { StandardFb, type FbInstance, type FbState } from './fbBase';
 import { counterLimits, type CounterLimits } from './profiles';
 
@@ -326,6 +327,8 @@ export function createFb(type: string, profile: Profile): FbInstance | undefined
       return new RAMP(profile);
     case 'HYSTERESIS':
       return new HYSTERESIS();
+    case 'RTC':
+      return new RTC();
     default:
       return undefined;
   }

@@ -43,8 +43,8 @@ describe('signatures', () => {
       expect(FB_SIGNATURES).toContain(blockSignature(name));
       expect(make(name).pins()).toEqual([...blockSignature(name)!.inputs, ...blockSignature(name)!.outputs].map((p) => p.name));
     }
-    // RTC needs DATE_AND_TIME pins: not a block yet.
-    expect(blockSignature('RTC')).toBeUndefined();
+    // RTC (DATE_AND_TIME pins): behaviour in tests/engine/dates.test.ts.
+    expect(pins('RTC')).toEqual(['fb', 'control', 'IN:BOOL PDT:DT', 'Q:BOOL CDT:DT']);
   });
 });
 
