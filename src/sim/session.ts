@@ -224,7 +224,8 @@ export class SimSession {
         return;
       case 'setHistory':
         this.historyOptions = { maxScans: m.maxScans, budgetBytes: m.budgetBytes };
-        if (this.plc && this.layout && this.recorder) this.recorder = HistoryRecorder.for(this.plc, this.layout, this.loaded?.program, this.loaded?.pou, this.historyOptions);
+        if (this.plc && this.layout && this.recorder && this.loaded)
+          this.recorder = HistoryRecorder.for(this.plc, programLayout(this.loaded.project, this.layout), this.loaded.program, this.loaded.pou, this.historyOptions);
         this.postFrame();
         return;
       case 'historySeek':
@@ -404,7 +405,8 @@ export class SimSession {
     this.layout = next.layout;
     this.loaded = next;
     this.resolveBreakpoints();
-    this.recorder = HistoryRecorder.for(next.plc, next.layout, next.program, next.pou, this.historyOptions);
+    // The history records the program's own networks whatever body is monitored.
+    this.recorder = HistoryRecorder.for(next.plc, programLayout(next.project, next.layout), next.program, next.pou, this.historyOptions);
     this.fingerprint = next.fingerprint;
     this.programId = fingerprintId(next.fingerprint);
     this.lastOutputs = undefined;
@@ -591,6 +593,13 @@ export class SimSession {
     this.postFrame();
     this.deps.post({ type: 'scenarioReplayed', id, result });
   }
+}
+
+/** The layout with its network fields on the program's own (first) body, as the history records it. */
+function programLayout(project: Project, layout: SimLayout): SimLayout {
+  if (isProgramView(layout)) return layout;
+  const first = layout.programs?.[0]?.instance;
+  return withView(project, layout, { pou: layout.pou, ...(first !== undefined ? { instance: first } : {}) });
 }
 
 /** The PLC with its clock set before each scan (scan k at (k - 1) x cycle), for runPrepared. */

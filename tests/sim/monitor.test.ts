@@ -165,3 +165,18 @@ describe('faults inside a body', () => {
     expect(positionWords([{ pou: 'Main', network: 3 }, { pou: 'FB_Motor', instance: 'Motor1', network: 1 }])).toBe('Main / network 4 → Motor1 (FB_Motor) / network 2');
   });
 });
+
+describe('the scan history while an instance is monitored', () => {
+  test("the history records the program's networks; an FB's view of a recorded scan has values, no power", () => {
+    const project = motorProject();
+    const h = new SimHarness().send({ type: 'setView', view: { pou: 'Motor', instance: 'Motor1' } }, { type: 'step', scans: 3, project });
+    expect(h.layout.view).toEqual({ pou: 'Motor', instance: 'Motor1' });
+    h.send({ type: 'historySeek', scan: 2 });
+    expect(h.of('historyView').at(-1)!.view.elements).toHaveLength(0);
+    h.send({ type: 'setView', view: { pou: 'Main' } }, { type: 'historySeek', scan: 2 });
+    const main = currentLayout(h);
+    const view = h.of('historyView').at(-1)!.view;
+    expect(view.elements).toHaveLength(main.elementOffsets.at(-1)!);
+    expect(view.executed).toEqual(new Uint8Array([1, 1, 1]));
+  });
+});
