@@ -149,6 +149,10 @@ describe('names of a whole program', () => {
     expect(describeName(project, main, 'Motor1.Nothing')).toBeUndefined();
     const names = readableNames(project, main).map((v) => v.name);
     expect(names).toEqual(expect.arrayContaining(['Start1', 'Motor1.Start', 'Motor1.Stop', 'Motor1.Run', 'Motor2.Lamp']));
+    // A standard FB inside a user FB: its pins by path.
+    const timed = { ...project, pous: project.pous.map((p) => (p.name === 'Motor' ? { ...p, variables: [...p.variables, ...vars('T1 TON')] } : p)) };
+    expect(describeName(timed, main, 'Motor2.T1.ET')).toEqual({ name: 'Motor2.T1.ET', type: 'TIME', role: 'pin' });
+    expect(readableNames(timed, main).map((v) => v.name)).toContain('Motor1.T1.Q');
     const layout = buildLayout(project, 'Main', ['Start1', 'Motor1.Run', 'Motor1.Lamp'], 10);
     expect(layout.variables.map((v) => v.name)).toEqual(['Start1', 'Motor1.Run', 'Motor1.Lamp']);
   });
