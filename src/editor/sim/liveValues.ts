@@ -37,5 +37,7 @@ export function forcedText(s: SimState, name: string): string | undefined {
  * `Run` inside the picked instance Motor1, a global as it is; undefined when the shown POU is not running.
  */
 export function canvasName(s: SimState, name: string): string | undefined {
+  // No program loaded: names as written (nothing is monitored yet).
+  if (!s.layout) return name || undefined;
   return scopedName(s.canvasScope, name, (n) => s.variableIndex.has(n.toUpperCase()));
 }
