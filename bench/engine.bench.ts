@@ -15,7 +15,7 @@ import type { ElementId } from '../src/model/ids';
 import type { Network, Project, Variable } from '../src/model/project';
 import { compileProgram, createPlc } from '../src/engine/plc';
 import { createFb } from '../src/engine/library/fbs';
-import { fbProject, inlineProject } from './userBlocksBench';
+import { compareMotorPrograms, fbProject, inlineProject } from './userBlocksBench';
 import { measureStCalls } from './stCallsBench';
 
 type Rung =
@@ -319,46 +319,15 @@ function measure(count: number, scans: number, warmMs: number): { ratio: number;
  * inline (3 networks per motor), both compiled by the engine; outputs compared at the end.
  */
 function measureCalls(count: number, warmMs: number): { ratio: number; usFb: number } {
-  const make = (p: Project) => {
-    const { program, diagnostics } = compileProgram(p);
-    if (!program) throw new Error(`bench program does not compile: ${diagnostics[0]?.message}`);
-    return createPlc(program, { cycleMs: 10, maxScanMs: 60_000 });
-  };
-  const inline = make(inlineProject(count));
-  const calls = make(fbProject(count));
-  let k = 0;
-  const run = (plc: ReturnType<typeof make>, scans: number, from: number): number => {
-    const t = performance.now();
-    for (let s = 0; s < scans; s++) {
-      plc.write('Tick', ((from + s) >> 3) % 2 === 0);
-      plc.scan();
-    }
-    return (performance.now() - t) / scans;
-  };
-  const scans = Math.max(200, Math.round(400_000 / count));
-  const started = performance.now();
-  while (performance.now() - started < warmMs) {
-    run(inline, scans, k);
-    run(calls, scans, k);
-    k += scans;
-  }
-  let bestInline = Infinity;
-  let bestCalls = Infinity;
-  for (let round = 0; round < 5; round++) {
-    bestInline = Math.min(bestInline, run(inline, scans, k));
-    bestCalls = Math.min(bestCalls, run(calls, scans, k));
-    k += scans;
-  }
-  let mismatches = 0;
-  for (let m = 0; m < count; m++) if (inline.read(`Out${m}`) !== calls.read(`Out${m}`)) mismatches++;
-  const ratio = bestCalls / bestInline;
+  const { usA: usInline, usB: usFb, mismatches } = compareMotorPrograms(inlineProject(count), fbProject(count), count, warmMs);
+  const ratio = usFb / usInline;
   console.log(
-    `${count.toLocaleString('en-US')} calls of a 3-network FB: ${(bestCalls * 1000).toFixed(1)} µs/scan; ` +
-      `same logic inline (${(3 * count).toLocaleString('en-US')} networks): ${(bestInline * 1000).toFixed(1)} µs/scan; ` +
+    `${count.toLocaleString('en-US')} calls of a 3-network FB: ${usFb.toFixed(1)} µs/scan; ` +
+      `same logic inline (${(3 * count).toLocaleString('en-US')} networks): ${usInline.toFixed(1)} µs/scan; ` +
       `ratio ${ratio.toFixed(2)}; outputs ${mismatches === 0 ? 'agree' : `DIFFER for ${mismatches} motors`}`,
   );
   if (mismatches) process.exitCode = 1;
-  return { ratio, usFb: bestCalls * 1000 };
+  return { ratio, usFb };
 }
 
 const small = measure(1_000, 2_000, 6_000);
