@@ -66,7 +66,31 @@ export interface BoxElement extends Placed {
   readonly outputs: Readonly<Record<string, string>>;
 }
 
-export type LdElement = LinkElement | ContactElement | CoilElement | JumpElement | ReturnElement | BoxElement;
+/**
+ * `>NAME>` connector (IEC 61131-3 connection, PLCopen `connector`): ends the line on its left.
+ * Its state or value is carried on by every continuation of the same NAME in the network, as if
+ * the two were joined by a wire. Lets any graph be drawn without crossings.
+ */
+export interface ConnectorElement extends Placed {
+  readonly kind: 'connector';
+  readonly name: string;
+}
+
+/** `>NAME>` continuation (PLCopen `continuation`): starts a line on its right with connector NAME's state or value. */
+export interface ContinuationElement extends Placed {
+  readonly kind: 'continuation';
+  readonly name: string;
+}
+
+export type LdElement =
+  | LinkElement
+  | ContactElement
+  | CoilElement
+  | JumpElement
+  | ReturnElement
+  | BoxElement
+  | ConnectorElement
+  | ContinuationElement;
 export type ElementKind = LdElement['kind'];
 
 /** A vertical link joining point (row, boundary) to point (row + 1, boundary). */

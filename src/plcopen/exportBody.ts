@@ -199,6 +199,10 @@ function placeElement(el: LdElement, top: number, ids: IdAllocator, library: Blo
       return { id: ids.next(), pins: new Map([['in', pt(x0 + 8, y)]]) };
     case 'link':
       return { id: -1, pins: new Map() };
+    case 'connector':
+      return { id: ids.next(), pins: new Map([['in', pt(x0 + 8, y)]]) };
+    case 'continuation':
+      return { id: ids.next(), pins: new Map([['out', pt(x0 + CELL_W - 8, y)]]) };
     case 'box': {
       const bp = boxPins(el, library);
       const left = x0 + BOX_MARGIN_X;
@@ -306,5 +310,25 @@ function writeElement(
     case 'box':
       writeBox(w, el, p, ids, srcOf, inBar, connect, addData, library);
       return;
+    case 'connector': {
+      const inP = p.pins.get('in')!;
+      const origin = pt(inP.x, inP.y - ELEMENT_H / 2);
+      w.open('connector', { name: el.name, localId: p.id, height: ELEMENT_H, width: CELL_W - 16 }, () => {
+        w.empty('position', { x: origin.x, y: origin.y });
+        connect(inP, origin, srcOf('in'), inBar('in'));
+        addData();
+      });
+      return;
+    }
+    case 'continuation': {
+      const out = p.pins.get('out')!;
+      const origin = pt(out.x - (CELL_W - 16), out.y - ELEMENT_H / 2);
+      w.open('continuation', { name: el.name, localId: p.id, height: ELEMENT_H, width: CELL_W - 16 }, () => {
+        w.empty('position', { x: origin.x, y: origin.y });
+        w.open('connectionPointOut', undefined, () => rel(w, out, origin));
+        addData();
+      });
+      return;
+    }
   }
 }

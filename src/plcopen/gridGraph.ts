@@ -42,6 +42,10 @@ export function elementPins(
       return { inputs: [{ pin: 'in', row: el.row, boundary: el.col }], outputs: [] };
     case 'link':
       return NO_PINS;
+    case 'connector':
+      return { inputs: [{ pin: 'in', row: el.row, boundary: el.col }], outputs: [] };
+    case 'continuation':
+      return { inputs: [], outputs: [{ pin: 'out', row: el.row, boundary: el.col + 1 }] };
     case 'box': {
       const layout = boxLayout(el, library);
       if (!layout) return NO_PINS;

@@ -44,6 +44,8 @@ export function renameInElement(el: LdElement, from: string, to: string): LdElem
     case 'link':
     case 'jump':
     case 'return':
+    case 'connector':
+    case 'continuation':
       return el;
   }
 }

@@ -4,6 +4,7 @@
 //   [A] contact   [/A] normally closed   [P:A] [N:A] transition   [NOT] inverting   [TRUE] constant
 //   (A) coil      (/A) negated   (S:A) (R:A) set/reset   (M:A) (SM:A) (RM:A) retentive   (P:A) (N:A) transition
 //   -  line       .  empty cell  #  cell covered by a box   >>LABEL jump   <RET> return
+//   >C>|  connector C (ends the line on its left)   |>C>  continuation C (starts a line on its right)
 // A `+` between tokens marks a point of a vertical line on that boundary (before the first token:
 // the left rail): `+` at the same boundary in consecutive rows are joined by vertical links.
 import type { CoilType, ContactType, LdElement, VLink } from '../../src/model/elements';
@@ -40,6 +41,10 @@ function cellElement(token: string, row: number, col: number): LdElement | undef
   if (token === '.' || token === '#') return undefined;
   if (token === '-') return { ...at, kind: 'link' };
   if (token === '<RET>') return { ...at, kind: 'return' };
+  let c = /^>(.*)>\|$/.exec(token);
+  if (c) return { ...at, kind: 'connector', name: c[1]! };
+  c = /^\|>(.*)>$/.exec(token);
+  if (c) return { ...at, kind: 'continuation', name: c[1]! };
   if (token.startsWith('>>')) return { ...at, kind: 'jump', target: token.slice(2) };
   let m = /^\[(.*)\]$/.exec(token);
   if (m) {

@@ -47,6 +47,9 @@ function token(el: LdElement): string {
       return `>>${el.target}`;
     case 'return':
       return '<RET>';
+    case 'connector':
+    case 'continuation':
+      return `>${el.name}>`;
   }
 }
 

@@ -26,6 +26,9 @@ function currentName(el: LdElement): string {
       return el.instance ?? '';
     case 'jump':
       return el.target;
+    case 'connector':
+    case 'continuation':
+      return el.name;
     case 'link':
     case 'return':
       return '';

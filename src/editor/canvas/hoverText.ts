@@ -15,6 +15,8 @@ function elementText(el: LdElement): string | undefined {
       return el.instance ? `${el.instance}: ${elementTitle(el)}` : elementTitle(el);
     case 'jump':
     case 'return':
+    case 'connector':
+    case 'continuation':
       return elementTitle(el);
   }
 }

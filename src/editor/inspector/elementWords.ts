@@ -33,6 +33,10 @@ export function elementTitle(el: LdElement): string {
       return `Jump  -->>${el.target || 'LABEL'}`;
     case 'return':
       return 'Return  <RETURN>';
+    case 'connector':
+      return `Connector  >${el.name || 'NAME'}>`;
+    case 'continuation':
+      return `Continuation  >${el.name || 'NAME'}>`;
     case 'box':
       return `${el.blockType} ${el.instance !== undefined ? 'function block' : 'function'}`;
   }

@@ -82,6 +82,8 @@ export function elementLiveText(s: SimState, el: LdElement, library: BlockLibrar
     case 'link':
     case 'jump':
     case 'return':
+    case 'connector':
+    case 'continuation':
       return undefined;
   }
 }
@@ -117,6 +119,8 @@ export function elementForced(s: SimState, el: LdElement, library: BlockLibrary 
     case 'link':
     case 'jump':
     case 'return':
+    case 'connector':
+    case 'continuation':
       return false;
   }
 }

@@ -32,6 +32,8 @@ function operandsOf(el: LdElement): string[] {
     case 'link':
     case 'jump':
     case 'return':
+    case 'connector':
+    case 'continuation':
       return [];
   }
 }

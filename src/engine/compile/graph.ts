@@ -2,6 +2,8 @@
 // form nets (union-find). Every other element sits between nets through its terminals:
 // contacts, coils, jumps and returns have an input at (row, col) and (except jumps/returns) an
 // output at (row, col + 1); boxes have their pins where boxLayout puts them.
+// A connector `>NAME>` (its point at (row, col)) and every continuation `>NAME>` of the network
+// (its point at (row, col + 1)) are one net, as if a wire joined them; they are not nodes.
 import { boxLayout, type BoxLayout } from '../../model/boxLayout';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { BoxElement, LdElement } from '../../model/elements';
@@ -48,7 +50,7 @@ export interface NetworkGraph {
   readonly nets: readonly Net[];
   /** Net id of every point (row * (cols + 1) + boundary). */
   readonly netOfPoint: Int32Array;
-  /** Net id of each horizontal link (by element index); -1 for other elements. */
+  /** Net id of each horizontal link, connector and continuation (by element index); -1 for other elements. */
   readonly linkNet: Int32Array;
   /** Net id of each vertical link (by vlink index); -1 for one outside the grid. */
   readonly vlinkNet: Int32Array;
@@ -56,7 +58,18 @@ export interface NetworkGraph {
   readonly misplaced: readonly { index: number; reason: string }[];
   /** Vertical links outside the grid (vlink index). */
   readonly badVlinks: readonly number[];
+  /**
+   * Connector/continuation pairs: the connector's point (left side) → the points of its
+   * continuations (right side). Power and values go from the first to the others (LD-R14).
+   */
+  readonly connections: ReadonlyMap<number, readonly number[]>;
+  /** Connectors and continuations that could not be paired (element index and reason), LD-R14. */
+  readonly unpaired: readonly { index: number; reason: string; severity: 'error' | 'warning' }[];
 }
+
+/** Point of a connector (its left side) or a continuation (its right side). */
+export const connectionPoint = (el: { kind: string; row: number; col: number }, cols: number): number =>
+  el.row * (cols + 1) + (el.kind === 'continuation' ? el.col + 1 : el.col);
 
 class UnionFind {
   private readonly parent: Int32Array;
@@ -129,6 +142,45 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
     else uf.union(point(v.row, v.boundary), point(v.row + 1, v.boundary));
   });
 
+  // Connectors and continuations by name (names compare as IEC identifiers: case-insensitive).
+  const connectors = new Map<string, number[]>();
+  const continuations = new Map<string, number[]>();
+  network.elements.forEach((el, index) => {
+    if (!placed[index] || (el.kind !== 'connector' && el.kind !== 'continuation')) return;
+    const key = el.name.trim().toUpperCase();
+    const into = el.kind === 'connector' ? connectors : continuations;
+    into.set(key, [...(into.get(key) ?? []), index]);
+  });
+  const connections = new Map<number, number[]>();
+  const unpaired: { index: number; reason: string; severity: 'error' | 'warning' }[] = [];
+  for (const [key, list] of connectors) {
+    const at = network.elements[list[0]!]!;
+    for (const extra of list.slice(1))
+      unpaired.push({
+        index: extra,
+        reason: `has the same name as the connector at R${at.row + 1}C${at.col + 1}; a connector name is used once per network`,
+        severity: 'error',
+      });
+    const conts = continuations.get(key) ?? [];
+    if (key === '') unpaired.push({ index: list[0]!, reason: 'has no name', severity: 'error' });
+    else if (!conts.length)
+      unpaired.push({ index: list[0]!, reason: 'has no continuation of its name in this network: its value goes nowhere', severity: 'warning' });
+    const from = connectionPoint(at, cols);
+    connections.set(
+      from,
+      conts.map((i) => connectionPoint(network.elements[i]!, cols)),
+    );
+    for (const i of conts) uf.union(from, connectionPoint(network.elements[i]!, cols));
+  }
+  for (const [key, list] of continuations)
+    if (!connectors.has(key))
+      for (const index of list)
+        unpaired.push({
+          index,
+          reason: key === '' ? 'has no name' : 'has no connector of its name in this network: it carries nothing',
+          severity: 'error',
+        });
+
   // Dense net ids in point order (stable: the upper-left point names the net).
   const netOfPoint = new Int32Array(rows * width);
   const rootToNet = new Map<number, number>();
@@ -182,6 +234,10 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
       nets[id]!.links.push(index);
       return;
     }
+    if (el.kind === 'connector' || el.kind === 'continuation') {
+      linkNet[index] = netOfPoint[connectionPoint(el, cols)]!;
+      return;
+    }
     let inputs: Terminal[];
     let outputs: Terminal[];
     let layout: BoxLayout | undefined;
@@ -205,7 +261,7 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
     for (const t of outputs) nets[t.net]!.sources.push({ node, pin: t.pin, point: point(t.row, t.boundary) });
   });
 
-  return { rows, cols, nodes, nets, netOfPoint, linkNet, vlinkNet, misplaced, badVlinks };
+  return { rows, cols, nodes, nets, netOfPoint, linkNet, vlinkNet, misplaced, badVlinks, connections, unpaired };
 }
 
 /** True when the net holds wires or element terminals (not just an untouched grid point). */

@@ -186,7 +186,7 @@ export function lowerNetwork(
   if (!structureOk || r.errors > errorsBefore) return undefined;
 
   const elementNets = network.elements.map((el, i): [number, number] => {
-    if (el.kind === 'link') {
+    if (el.kind === 'link' || el.kind === 'connector' || el.kind === 'continuation') {
       const net = g.linkNet[i]!;
       return net >= 0 && nets.hasPower(net) ? [nets.powerNet(net), nets.powerNet(net)] : [-1, -1];
     }

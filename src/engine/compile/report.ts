@@ -48,6 +48,10 @@ export function describeElement(el: LdElement): string {
         : `the ${el.blockType} block at ${at}`;
     case 'link':
       return `the line at ${at}`;
+    case 'connector':
+      return el.name.trim() === '' ? `the connector at ${at}` : `the connector ">${el.name}>"`;
+    case 'continuation':
+      return el.name.trim() === '' ? `the continuation at ${at}` : `the continuation ">${el.name}>" at ${at}`;
   }
 }
 

@@ -60,6 +60,17 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
   });
   for (const n of g.nodes)
     for (const t of [...n.inputs, ...n.outputs]) terminals[t.row * width + t.boundary] = 1;
+  for (const [from, to] of g.connections) {
+    terminals[from] = 1;
+    for (const p of to) terminals[p] = 1;
+  }
+
+  // LD-R14: connectors and continuations pair up by name within the network.
+  for (const u of g.unpaired) {
+    const el = network.elements[u.index]!;
+    if (u.severity === 'error') r.error('LD-R14', `${describeElement(el)} ${u.reason}`, el);
+    else r.warning('LD-R14', `${describeElement(el)} ${u.reason}`, el);
+  }
 
   // LD-R03 (002, warning): dangling wire ends. A line carries power or nothing; it changes no result.
   const reportedLinks = new Set<number>();
@@ -253,6 +264,7 @@ function checkFlowDirection(
         linkRight[p]! >= 0 ? p + 1 : -1,
         vDown[p]! >= 0 ? p + width : -1,
         vUp[p]! >= 0 ? p - width : -1,
+        ...(g.connections.get(p) ?? []),
       ];
       for (const q of next) {
         if (q < 0 || seen[q]) continue;

@@ -19,6 +19,9 @@ export function elementSymbol(el: LdElement): string {
       return '<RETURN>';
     case 'link':
       return 'the line';
+    case 'connector':
+    case 'continuation':
+      return `>${el.name.trim()}>`;
   }
 }
 
