@@ -172,6 +172,43 @@ export interface ExternalBlock {
   readonly comment?: string;
 }
 
+/**
+ * A user data type (IEC 61131-3 TYPE ... END_TYPE; PLCopen `types/dataTypes/dataType`).
+ * Type names in `base`, `of` and member types are elementary types, STRING[n], function block
+ * types or other data types of the project (declared in any order; cycles are an error).
+ */
+export type DataTypeDef =
+  /** `TYPE Color : (RED, GREEN, BLUE); END_TYPE` — values in order (stored as their index). */
+  | { readonly kind: 'enum'; readonly values: readonly string[] }
+  /** `TYPE Point : STRUCT X : INT; Y : INT := 5; END_STRUCT; END_TYPE`. */
+  | {
+      readonly kind: 'struct';
+      readonly members: readonly { readonly name: string; readonly type: string; readonly initial?: string; readonly comment?: string }[];
+    }
+  /** `TYPE Grid : ARRAY[1..8, 0..3] OF INT; END_TYPE` — one entry per dimension. */
+  | {
+      readonly kind: 'array';
+      readonly dims: readonly { readonly lower: number; readonly upper: number }[];
+      readonly of: string;
+    }
+  /** `TYPE Percent : INT (0..100); END_TYPE`. */
+  | { readonly kind: 'subrange'; readonly base: string; readonly lower: number; readonly upper: number }
+  /** `TYPE Speed : REAL; END_TYPE` (a derived/alias type, e.g. SVGHMI's HMI_BOOL : BOOL). */
+  | { readonly kind: 'alias'; readonly base: string };
+
+export interface DataType {
+  readonly name: string;
+  readonly def: DataTypeDef;
+  /**
+   * Initial value as IEC literal text: `GREEN` (enum), `(X := 1, Y := 2)` (struct),
+   * `[32(0), 30(1)]` (array, with repetition), `10` (subrange/alias). Absent: the base's default.
+   */
+  readonly initial?: string;
+  readonly comment?: string;
+  /** Vendor data kept for round trips (PLCopen addData); never interpreted. */
+  readonly extensions?: Readonly<Record<string, unknown>>;
+}
+
 /** A test scenario stored in the project: its name and its CSV text (src/sim/scenario.ts). */
 export interface Scenario {
   readonly name: string;
@@ -200,5 +237,7 @@ export interface Project {
    * Not POUs of the project: export writes only their calls.
    */
   readonly externalBlocks?: readonly ExternalBlock[];
+  /** User data types (enumerations, structures, arrays, subranges, aliases). */
+  readonly dataTypes?: readonly DataType[];
   readonly extensions?: Readonly<Record<string, unknown>>;
 }
