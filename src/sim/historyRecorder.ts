@@ -16,6 +16,7 @@ import { ScanHistory, type HistoryOptions, type InputChange } from './history';
 import { ChangeIndex, sameValue } from './historyChanges';
 import type { HistoryView, SimLayout } from './protocol';
 import { Replayer, type HistoryState } from './replay';
+import { recordedBody } from './viewPower';
 
 /** Periodic keys wait until the scans since the last key took this many times what saving one takes ... */
 const SAVE_SHARE = 20;
@@ -124,13 +125,19 @@ export class HistoryRecorder {
   }
 
   /** The recorded scan as the UI draws it: power bytes by layout and values. */
-  view(scan: number): HistoryView | undefined {
+  /**
+   * The recorded scan as a frame of the program's networks, or of the body another `shown` layout
+   * monitors (an FB instance, a function: its call that ran in that scan).
+   */
+  view(scan: number, shown?: SimLayout): HistoryView | undefined {
     const state = this.replayer.state(scan);
     if (!state) return undefined;
     const words = this.probe.power.length;
     const executed = Uint8Array.from(state.power.subarray(words));
     const networks = this.probe.decode(state.power.subarray(0, words), executed);
-    const packed = packNetworks(networks, this.layout);
+    const packed = shown
+      ? packNetworks(recordedBody(this.program, shown, networks), shown)
+      : packNetworks(networks, this.layout);
     return { scan, timeMs: state.timeMs, ...packed, values: state.values };
   }
 

@@ -551,14 +551,13 @@ export class SimSession {
   }
 
   private postHistoryView(scan: number): void {
-    let view = this.requireHistory().view(scan);
+    // Another body monitored (an FB instance, a function) shows its call's power flow in that scan.
+    const shown = this.layout && !isProgramView(this.layout) ? this.layout : undefined;
+    const view = this.requireHistory().view(scan, shown);
     if (!view) {
       const h = this.recorder!.history;
       throw new Error(`scan ${scan} is not in the history (scans ${h.first} to ${h.last} are recorded)`);
     }
-    // The history records the program's networks: another body monitored (an FB instance, a function)
-    // shows the recorded values without power flow.
-    if (this.layout && !isProgramView(this.layout)) view = { ...view, elements: new Uint8Array(0), vlinks: new Uint8Array(0), executed: new Uint8Array(0) };
     this.deps.post({ type: 'historyView', view }, [view.elements.buffer, view.vlinks.buffer, view.executed.buffer]);
   }
 

@@ -24,6 +24,24 @@ export function functionBody(program: CompiledProgram, pou: string, ranIn: Int32
 
 const EMPTY: readonly NetworkPower[] = [];
 
+/**
+ * The networks of the shown body in a recorded scan (`networks`: the whole program's, as decoded
+ * from the history): an FB or program instance's call, or a function's, that ran last in the scan
+ * (the later of the calls that ran: calls run in body order), else its first call, as the live
+ * view picks it. Nothing when the view is the program or names no body.
+ */
+export function recordedBody(program: CompiledProgram, layout: SimLayout, networks: readonly NetworkPower[]): readonly NetworkPower[] {
+  const view = layout.view;
+  if (!view) return networks;
+  let best: BodyInfo | undefined;
+  for (const b of program.bodies) {
+    const mine = view.instance !== undefined ? same(b.instance, view.instance) : b.kind === 'function' && same(b.pou, view.pou);
+    if (!mine) continue;
+    if (!best || (b.end > b.first && networks[b.first]?.executed)) best = b;
+  }
+  return best ? networks.slice(best.first, best.end) : EMPTY;
+}
+
 /** Power of the layout's view in the PLC's last (or current) scan; nothing when the view is not called. */
 export function viewNetworks(plc: Plc, layout: SimLayout, program: CompiledProgram | undefined): readonly NetworkPower[] {
   const view = layout.view;

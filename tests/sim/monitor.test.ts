@@ -171,12 +171,27 @@ describe('faults inside a body', () => {
 });
 
 describe('the scan history while an instance is monitored', () => {
-  test("the history records the program's networks; an FB's view of a recorded scan has values, no power", () => {
+  test("an FB's view of a recorded scan shows that instance's power flow as it was in that scan", () => {
     const project = motorProject();
-    const h = new SimHarness().send({ type: 'setView', view: { pou: 'Motor', instance: 'Motor1' } }, { type: 'step', scans: 3, project });
+    const fb = project.pous.find((p) => p.name === 'Motor')!;
+    const coil = fb.networks[0]!.elements.findIndex((e) => e.kind === 'coil');
+    // Start1 pressed in scan 2 only: Motor1's Run coil is lit in scans 2 and 3 (seal-in), off in scan 1.
+    const h = new SimHarness().send({ type: 'setView', view: { pou: 'Motor', instance: 'Motor1' } }, { type: 'step', scans: 1, project });
+    h.send({ type: 'write', name: 'Start1', input: { value: true } }, { type: 'step', scans: 1 });
+    h.send({ type: 'write', name: 'Start1', input: { value: false } }, { type: 'step', scans: 1 });
     expect(h.layout.view).toEqual({ pou: 'Motor', instance: 'Motor1' });
-    h.send({ type: 'historySeek', scan: 2 });
-    expect(h.of('historyView').at(-1)!.view.elements).toHaveLength(0);
+    const layout = currentLayout(h);
+    const coilOf = (scan: number) => {
+      h.send({ type: 'historySeek', scan });
+      const view = h.of('historyView').at(-1)!.view;
+      expect(view.elements).toHaveLength(layout.elementOffsets.at(-1)!);
+      return view.elements[layout.elementOffsets[0]! + coil]! & POWER_OUT;
+    };
+    expect(coilOf(1)).toBe(0);
+    expect(coilOf(2)).toBe(POWER_OUT);
+    // Motor2 never started: its body's coil is dark in the same recorded scan.
+    h.send({ type: 'setView', view: { pou: 'Motor', instance: 'Motor2' } });
+    expect(coilOf(2)).toBe(0);
     h.send({ type: 'setView', view: { pou: 'Main' } }, { type: 'historySeek', scan: 2 });
     const main = currentLayout(h);
     const view = h.of('historyView').at(-1)!.view;
