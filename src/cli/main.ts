@@ -3,6 +3,7 @@ import { parseArgs } from 'node:util';
 import { checkProject } from '../engine/check';
 import { formatDiagnostic } from '../engine/compile/report';
 import { saveProject } from '../model/load';
+import { exportBehaviour, formatExportWarning } from '../plcopen/exportBehaviour';
 import { exportPlcopen } from '../plcopen/exportPlcopen';
 import { HELP } from './help';
 import { loadInput } from './input';
@@ -107,6 +108,9 @@ function run(io: CliIo, argv: readonly string[]): number {
       const xml = exportPlcopen(project);
       if (values.output) io.writeFile(values.output, xml);
       else io.out(xml);
+      // What Beremiz/OpenPLC would run differently (LD-X rules): said, never an error.
+      for (const w of exportBehaviour(project))
+        io.err(`${formatExportWarning(w)}${w.fix ? ` Fix: ${w.fix.label}.` : ''}\n`);
       return 0;
     }
     case 'import': {
