@@ -63,8 +63,11 @@ export function tokenize(text: string): Token[] {
       continue;
     }
     if (c === "'" || c === '"') {
-      const end = text.indexOf(c, i + 1);
-      if (end < 0) throw new StSyntaxError(at, 'this string is never closed');
+      // `$` escapes the next character (`$'`, `$$`, `$L`, `$0A`): the string ends at the first
+      // unescaped quote of its kind; the literal's value is read by parseStringLiteral.
+      let end = i + 1;
+      while (end < text.length && text[end] !== c) end += text[end] === '$' ? 2 : 1;
+      if (end >= text.length) throw new StSyntaxError(at, 'this string is never closed');
       push('string', i, end + 1, at);
       advanceTo(end + 1);
       continue;
