@@ -6,6 +6,7 @@ import { blockLibrary } from '../model/library';
 import { newId, type ElementId, type NetworkId, type PouId } from '../model/ids';
 import type { Network, Pou, Project, Variable } from '../model/project';
 import { diffNetwork, type Change, type VariableScope } from './changes';
+import type { DataTypeCommands } from './dataTypeCommands';
 import type { DocumentState, NetworkPatch } from './documentStore';
 import * as edits from './networkEdits';
 import { transferElements } from './networkTransfer';
@@ -68,11 +69,14 @@ type Commands = Omit<
   | 'renamePou'
   | 'duplicatePou'
   | 'deletePou'
+  | keyof DataTypeCommands
   | 'updatePou'
   | 'undo'
   | 'redo'
   | 'mark'
   | 'squash'
+  | 'lastStep'
+  | 'joinSince'
   | 'batch'
 >;
 
@@ -104,13 +108,22 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
       const ok = editNetwork(
         'placeElement',
         network,
-        (n) => edits.placeElement(n, cell, t, id, lib()) ?? edits.insertInSeries(n, cell, t, id, lib()),
+        (n) =>
+          edits.placeBoxOffRail(n, cell, t, id, newElementId, lib()) ??
+          edits.placeElement(n, cell, t, id, lib()) ??
+          edits.insertInSeries(n, cell, t, id, lib()),
       );
       return ok ? id : undefined;
     },
     insertInSeries: (network, cell, t) => {
       const id = newElementId();
-      return editNetwork('insertInSeries', network, (n) => edits.insertInSeries(n, cell, t, id, lib()))
+      return editNetwork(
+        'insertInSeries',
+        network,
+        (n) =>
+          edits.placeBoxOffRail(n, cell, t, id, newElementId, lib()) ??
+          edits.insertInSeries(n, cell, t, id, lib()),
+      )
         ? id
         : undefined;
     },

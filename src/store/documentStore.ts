@@ -30,6 +30,10 @@
 //   deletePou(id)                     also drops its task entries; calls stay (checks report them);
 //                                     never the last POU (see pouUsages() for what uses it)
 //   updatePou(id, {comment, kind, returnType})   a FUNCTION always has a return type
+//   addDataType(kind, name?) / renameDataType(name, to) / duplicateDataType(name) /
+//   deleteDataType(name) / updateDataType(name, {def, initial, comment})   user data types
+//                                     (src/store/dataTypeCommands.ts); a rename retypes every
+//                                     declaration, return type and data type naming it
 //   Editing the variables of a FUNCTION_BLOCK/FUNCTION updates its calls: a renamed interface
 //   variable renames the pin's operands on every box and `Instance.Pin` operands; a box that grows
 //   (new pin) gets room (rows inserted below it when something is in the way).
@@ -67,6 +71,8 @@
 //   setProjectProfile(profile), updateProject({name, description})
 //   undo(), redo()                    never touch selection (src/store/uiStore.ts)
 //   mark() / squash(mark, name)       merge the steps since mark into one (e.g. a typing burst)
+//   lastStep() / joinSince(step, name)  the newest undo step (an opaque token), and merging it with
+//                                     every step after it into one (placing + naming an element)
 //   batch(name, fn)                   run several commands as one undo step
 // `scope` is the active POU by default, or 'globals'.
 import { createElement, createContext, useContext, type ReactNode } from 'react';
@@ -87,7 +93,15 @@ import {
 } from './changes';
 import { documentCommands, locate } from './documentCommands';
 import { pouCommands, type PouCommands } from './pouCommands';
-import { EMPTY_HISTORY, record, squash as squashHistory, type History } from './history';
+import { dataTypeCommands, type DataTypeCommands } from './dataTypeCommands';
+import {
+  EMPTY_HISTORY,
+  record,
+  squash as squashHistory,
+  squashFrom,
+  type History,
+  type HistoryEntry,
+} from './history';
 import type { ClipContent, ElementTemplate } from './networkEdits';
 import type { InstanceMode, NetworkClip } from './networkUnits';
 
@@ -120,6 +134,11 @@ export interface DocumentState {
   duplicatePou: PouCommands['duplicatePou'];
   deletePou: PouCommands['deletePou'];
   updatePou: PouCommands['updatePou'];
+  addDataType: DataTypeCommands['addDataType'];
+  renameDataType: DataTypeCommands['renameDataType'];
+  duplicateDataType: DataTypeCommands['duplicateDataType'];
+  deleteDataType: DataTypeCommands['deleteDataType'];
+  updateDataType: DataTypeCommands['updateDataType'];
 
   placeElement(network: NetworkId, cell: Cell, t: ElementTemplate): ElementId | undefined;
   insertInSeries(network: NetworkId, cell: Cell, t: ElementTemplate): ElementId | undefined;
@@ -162,6 +181,8 @@ export interface DocumentState {
   redo(): void;
   mark(): number;
   squash(mark: number, name: string): void;
+  lastStep(): HistoryEntry | undefined;
+  joinSince(step: HistoryEntry | undefined, name: string): void;
   batch<T>(name: string, fn: () => T): T;
 }
 
@@ -248,6 +269,7 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
 
       ...documentCommands({ get, commit, editNetwork }),
       ...pouCommands({ project: () => get().project, commit, open }),
+      ...dataTypeCommands({ project: () => get().project, commit }),
 
       undo: () => {
         const s = get();
@@ -279,6 +301,10 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
       },
       mark: () => get().history.undo.length,
       squash: (mark, name) => set(historyFlags(squashHistory(get().history, mark, name))),
+      lastStep: () => get().history.undo[get().history.undo.length - 1],
+      joinSince: (step, name) => {
+        if (step) set(historyFlags(squashFrom(get().history, step, name)));
+      },
       batch: (name, fn) => {
         if (pending) return fn();
         pending = { name, changes: [] };

@@ -31,6 +31,8 @@ export function pouNameProblem(project: Project, name: string, except?: PouId): 
   if (isElementaryType(n.toUpperCase())) return `"${n}" is the name of the type ${n.toUpperCase()}.`;
   const other = project.pous.find((p) => p.id !== except && same(p.name, n));
   if (other) return `The project already has a ${POU_KIND_WORDS[other.kind]} named ${other.name}.`;
+  const type = project.dataTypes?.find((t) => same(t.name, n));
+  if (type) return `The project already has a data type named ${type.name}.`;
   return undefined;
 }
 
