@@ -14,6 +14,8 @@
 //                Shift+arrows); selecting elements clears it and the reverse
 //   pastePrompt  network clip text waiting for the choice keep / new FB instances
 //   finder       'find' | 'goto' | undefined — the find/replace panel or the go-to box is open
+//   panels       sizes (CSS px) and collapsed flags of the shell's left, right and bottom panels, and
+//                where the variable table is docked; remembered by src/editor/layout/panelSizes.ts
 import { createElement, createContext, useContext, type ReactNode } from 'react';
 import { createStore, useStore, type StoreApi } from 'zustand';
 import type { Cell } from '../model/grid';
@@ -44,6 +46,28 @@ export interface Viewport {
   readonly height: number;
 }
 
+/** The shell's panels: sizes in CSS pixels, collapsed flags, where the variable table sits. */
+export interface PanelLayout {
+  readonly left: number;
+  readonly right: number;
+  readonly bottom: number;
+  readonly leftCollapsed: boolean;
+  readonly rightCollapsed: boolean;
+  readonly bottomCollapsed: boolean;
+  /** 'bottom': the variable table is a full-width tab of the bottom panel (every column visible). */
+  readonly variablesDock: 'side' | 'bottom';
+}
+
+export const DEFAULT_PANELS: PanelLayout = {
+  left: 230,
+  right: 340,
+  bottom: 190,
+  leftCollapsed: false,
+  rightCollapsed: false,
+  bottomCollapsed: false,
+  variablesDock: 'side',
+};
+
 export const MIN_ZOOM = 0.25;
 export const MAX_ZOOM = 3;
 
@@ -62,6 +86,7 @@ export interface UiState {
   readonly finder: 'find' | 'goto' | undefined;
   /** A short message for the status bar ("Nothing to paste"), cleared by the next action. */
   readonly status: string;
+  readonly panels: PanelLayout;
 
   select(network: NetworkId | undefined, elements: readonly ElementId[]): void;
   toggleSelected(network: NetworkId, element: ElementId): void;
@@ -80,13 +105,14 @@ export interface UiState {
   selectNetworks(ids: readonly NetworkId[]): void;
   setPastePrompt(p: UiState['pastePrompt']): void;
   setFinder(f: UiState['finder']): void;
+  setPanels(patch: Partial<PanelLayout>): void;
 }
 
 export type UiStore = StoreApi<UiState>;
 
 export const clampZoom = (z: number) => Math.min(MAX_ZOOM, Math.max(MIN_ZOOM, Math.round(z * 100) / 100));
 
-export function createUiStore(initial: Partial<Pick<UiState, 'theme'>> = {}): UiStore {
+export function createUiStore(initial: Partial<Pick<UiState, 'theme' | 'panels'>> = {}): UiStore {
   let seq = 0;
   return createStore<UiState>()((set, get) => ({
     selection: { network: undefined, elements: [] },
@@ -101,6 +127,7 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme'>> = {}): Ui
     networkSelection: [],
     pastePrompt: undefined,
     finder: undefined,
+    panels: initial.panels ?? DEFAULT_PANELS,
 
     select: (network, elements) =>
       set({
@@ -138,6 +165,7 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme'>> = {}): Ui
       set({ networkSelection: [...new Set(ids)], selection: { network: undefined, elements: [] } }),
     setPastePrompt: (pastePrompt) => set({ pastePrompt }),
     setFinder: (finder) => set({ finder }),
+    setPanels: (patch) => set({ panels: { ...get().panels, ...patch } }),
   }));
 }
 
@@ -147,6 +175,7 @@ export const selectTool = (s: UiState) => s.tool;
 export const selectZoom = (s: UiState) => s.viewport.zoom;
 export const selectTheme = (s: UiState) => s.theme;
 export const selectNetworkSelection = (s: UiState) => s.networkSelection;
+export const selectPanels = (s: UiState) => s.panels;
 
 const UiStoreContext = createContext<UiStore | null>(null);
 

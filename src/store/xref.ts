@@ -4,7 +4,7 @@
 import type { ElementKind, LdElement } from '../model/elements';
 import { blockLibrary, isInOutPin, type BlockLibrary } from '../model/library';
 import type { ElementId, NetworkId, PouId } from '../model/ids';
-import type { Pou, Project, Variable } from '../model/project';
+import type { Network, Pou, Project, Variable } from '../model/project';
 import type { VariableScope } from './changes';
 import { isLiteral } from './find';
 
@@ -54,6 +54,29 @@ function elementRefs(el: LdElement, lib: BlockLibrary): { operand: string; pin?:
   }
 }
 
+function toUse(
+  pou: Pou,
+  network: Network,
+  networkIndex: number,
+  el: LdElement,
+  ref: { operand: string; pin?: string; access: Access },
+): XrefUse {
+  return {
+    pou: pou.id,
+    pouName: pou.name,
+    network: network.id,
+    networkIndex,
+    element: el.id,
+    elementKind: el.kind,
+    detail: el.kind === 'contact' ? el.contact : el.kind === 'coil' ? el.coil : el.kind === 'box' ? el.blockType : el.kind,
+    row: el.row,
+    col: el.col,
+    ...(ref.pin ? { pin: ref.pin } : {}),
+    operand: ref.operand,
+    access: ref.access,
+  };
+}
+
 /** POUs whose names refer to a variable of `scope`: the POU itself, or for a global every POU that does not shadow it. */
 function pousSeeing(project: Project, scope: VariableScope, name: string): Pou[] {
   const key = name.toUpperCase();
@@ -72,20 +95,7 @@ export function crossReference(project: Project, scope: VariableScope, name: str
       for (const el of els)
         for (const ref of elementRefs(el, lib)) {
           if (head(ref.operand) !== key) continue;
-          out.push({
-            pou: pou.id,
-            pouName: pou.name,
-            network: network.id,
-            networkIndex,
-            element: el.id,
-            elementKind: el.kind,
-            detail: el.kind === 'contact' ? el.contact : el.kind === 'coil' ? el.coil : el.kind === 'box' ? el.blockType : el.kind,
-            row: el.row,
-            col: el.col,
-            ...(ref.pin ? { pin: ref.pin } : {}),
-            operand: ref.operand,
-            access: ref.access,
-          });
+          out.push(toUse(pou, network, networkIndex, el, ref));
         }
     });
   return out;
@@ -161,3 +171,35 @@ export function unusedVariables(project: Project): VariableSummary[] {
 /** Variables written by more than one element (coils, box outputs): legal, often a mistake. */
 export const writtenInSeveralPlaces = (project: Project): VariableSummary[] =>
   variableSummary(project).filter((s) => s.writers > 1);
+
+/**
+ * Every use of every declared variable in one pass (the print's cross-reference): per scope
+ * ('globals' or a POU id), per upper-case name, the uses in POU and network order. Names no scope
+ * declares are left out.
+ */
+export function projectCrossReference(project: Project): Map<VariableScope, Map<string, XrefUse[]>> {
+  const lib = blockLibrary(project);
+  const globals = new Set(project.globals.map((v) => v.name.toUpperCase()));
+  const out = new Map<VariableScope, Map<string, XrefUse[]>>();
+  const add = (scope: VariableScope, key: string, use: XrefUse) => {
+    let byName = out.get(scope);
+    if (!byName) out.set(scope, (byName = new Map()));
+    const list = byName.get(key);
+    if (list) list.push(use);
+    else byName.set(key, [use]);
+  };
+  for (const pou of project.pous) {
+    const own = new Set(pou.variables.map((v) => v.name.toUpperCase()));
+    pou.networks.forEach((network, networkIndex) => {
+      const els = [...network.elements].sort((a, b) => a.row - b.row || a.col - b.col);
+      for (const el of els)
+        for (const ref of elementRefs(el, lib)) {
+          const key = head(ref.operand);
+          const scope: VariableScope | undefined = own.has(key) ? pou.id : globals.has(key) ? 'globals' : undefined;
+          if (!scope) continue;
+          add(scope, key, toUse(pou, network, networkIndex, el, ref));
+        }
+    });
+  }
+  return out;
+}

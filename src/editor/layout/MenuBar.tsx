@@ -5,6 +5,7 @@ import type { EditorContext } from '../commands/editorActions';
 import { keyLabel } from '../commands/keys';
 import { COMMANDS, type CommandGroup } from '../commands/registry';
 import { FILE_MENU_COMMANDS } from '../files/FileMenu';
+import { SHELL_COMMANDS } from './shellCommands';
 
 interface MenuItem {
   readonly id: string;
@@ -21,6 +22,10 @@ interface Menu {
   readonly items: readonly MenuItem[];
 }
 
+/** Print goes after the File menu's own commands and PLCopen import/export, before the examples. */
+const FIRST_EXAMPLE = FILE_MENU_COMMANDS.findIndex((c) => c.group === 'Examples');
+const FILE_PRINT_AFTER = FIRST_EXAMPLE < 0 ? FILE_MENU_COMMANDS.length : FIRST_EXAMPLE;
+
 function buildMenus(ctx: EditorContext): Menu[] {
   const fileItems: MenuItem[] = FILE_MENU_COMMANDS.map((c, i) => ({
     id: c.id,
@@ -31,6 +36,16 @@ function buildMenus(ctx: EditorContext): Menu[] {
     enabled: () => true,
     run: () => c.run(ctx),
   }));
+  const shell = (menu: 'File' | 'View'): MenuItem[] =>
+    SHELL_COMMANDS.filter((c) => c.menu === menu).map((c, i) => ({
+      id: c.id,
+      label: c.label,
+      ...(c.keys?.[0] ? { shortcut: keyLabel(c.keys[0]) } : {}),
+      title: c.description,
+      separatorBefore: i === 0,
+      enabled: () => true,
+      run: () => c.run(ctx),
+    }));
   const group = (g: CommandGroup): MenuItem[] =>
     COMMANDS.filter((c) => c.group === g && c.inMenu).map((c) => ({
       id: c.id,
@@ -40,11 +55,11 @@ function buildMenus(ctx: EditorContext): Menu[] {
       run: () => c.run(ctx),
     }));
   return [
-    { name: 'File', items: fileItems },
+    { name: 'File', items: [...fileItems.slice(0, FILE_PRINT_AFTER), ...shell('File'), ...fileItems.slice(FILE_PRINT_AFTER)] },
     { name: 'Edit', items: group('Edit') },
     { name: 'Insert', items: group('Insert') },
     { name: 'Network', items: group('Network') },
-    { name: 'View', items: group('View') },
+    { name: 'View', items: [...group('View'), ...shell('View')] },
   ];
 }
 

@@ -6,12 +6,19 @@ export function TabbedPanel({
   panels,
   label,
   className,
+  onActivate,
 }: {
   readonly panels: readonly PanelSlot[];
   readonly label: string;
   readonly className: string;
+  /** Called when a tab is chosen (a click, the keyboard, or code clicking the tab). */
+  readonly onActivate?: () => void;
 }) {
-  const [active, setActive] = useState(panels[0]?.id ?? '');
+  const [active, setChosen] = useState(panels[0]?.id ?? '');
+  const setActive = (id: string) => {
+    setChosen(id);
+    onActivate?.();
+  };
   const current = panels.find((p) => p.id === active) ?? panels[0];
   const onKeyDown = (e: KeyboardEvent) => {
     if (e.key !== 'ArrowLeft' && e.key !== 'ArrowRight') return;

@@ -23,6 +23,7 @@ import { NetworkUnitsHost } from '../outline/NetworkUnitsHost';
 import { OutlinePanel } from '../outline/OutlinePanel';
 import { FindHost } from '../find/FindHost';
 import { XrefPanel } from '../find/XrefPanel';
+import { PrintHost } from '../print/PrintHost';
 
 export interface PanelSlot {
   readonly id: string;
@@ -35,10 +36,13 @@ export interface BarSlot {
   readonly component: ComponentType;
 }
 
+/** The variable table: a tab of the side panel, or of the full-width bottom panel in the wide view. */
+export const VARIABLES_PANEL: PanelSlot = { id: 'variables', title: 'Variables', component: VariablesPanel };
+
 /** Tabs of the right side panel; the first is open at start. */
 export const RIGHT_PANELS: readonly PanelSlot[] = [
   { id: 'inspector', title: 'Inspector', component: InspectorPanel },
-  { id: 'variables', title: 'Variables', component: VariablesPanel },
+  VARIABLES_PANEL,
   { id: 'hardware', title: 'Hardware', component: HardwarePanel },
   { id: 'inputs', title: 'Inputs', component: InputsPanel },
   { id: 'outline', title: 'Outline', component: OutlinePanel },
@@ -66,6 +70,7 @@ export const HOSTS: readonly BarSlot[] = [
   { id: 'hardware-sim-link', component: HardwareSimLink },
   { id: 'network-units', component: NetworkUnitsHost },
   { id: 'find', component: FindHost },
+  { id: 'print', component: PrintHost },
 ];
 
 /** Power flow and live values on the canvas (see src/editor/canvas/overlay.ts); undefined: none. */

@@ -1,0 +1,101 @@
+// The printed blocks: a POU heading, a network (its header and its grid as drawn by the canvas
+// code), source text, headings and notes, a row of the variable list or of the cross-reference,
+// and those tables' headers. Rows are grids of fixed columns, so a row's height does not depend on
+// the other rows and each can be measured on its own.
+import type { ReactNode } from 'react';
+import { classLabel, pouTitle, type PrintItem } from './printModel';
+import type { NetworkDrawing } from './networkSvg';
+
+const VAR_COLUMNS = ['Class', 'Name', 'Type', 'Address', 'Initial', 'Attributes', 'Comment'] as const;
+const XREF_COLUMNS = ['Name', 'Declared in', 'Type', 'Address', 'Uses', 'Count'] as const;
+
+function Row({ cells, className }: { readonly cells: readonly ReactNode[]; readonly className: string }) {
+  return (
+    <div className={`rs-print-row ${className}`} role="row">
+      {cells.map((c, i) => (
+        <span key={i} role="cell">
+          {c}
+        </span>
+      ))}
+    </div>
+  );
+}
+
+/** The header of the table a row belongs to, repeated on each page the table reaches. */
+export function TableHead({ table }: { readonly table: string }) {
+  const xref = table === 'xref';
+  return (
+    <div className={`rs-print-row rs-print-head ${xref ? 'rs-print-xref' : 'rs-print-var'}`} role="row">
+      {(xref ? XREF_COLUMNS : VAR_COLUMNS).map((c) => (
+        <span key={c} role="columnheader">
+          {c}
+        </span>
+      ))}
+    </div>
+  );
+}
+
+export function PrintBlockView({ item, drawing }: { readonly item: PrintItem; readonly drawing?: NetworkDrawing }) {
+  switch (item.kind) {
+    case 'pou':
+      return (
+        <div className="rs-print-pou">
+          <h2>{pouTitle(item.pou)}</h2>
+          {item.pou.comment && <p>{item.pou.comment}</p>}
+        </div>
+      );
+    case 'network': {
+      const n = item.network;
+      return (
+        <div className="rs-print-network" data-testid="print-network">
+          <div className="rs-print-net-head">
+            <strong>Network {item.index + 1}</strong>
+            {n.label && <code>{n.label}:</code>}
+            <span>{n.title}</span>
+          </div>
+          {n.comment && <p className="rs-print-net-comment">{n.comment}</p>}
+          <div
+            className="rs-print-net-grid"
+            role="img"
+            aria-label={`Network ${item.index + 1} of ${item.pou.name}`}
+            dangerouslySetInnerHTML={{ __html: drawing?.svg ?? '' }}
+          />
+        </div>
+      );
+    }
+    case 'source':
+      return <pre className="rs-print-source">{item.text || '(empty)'}</pre>;
+    case 'heading':
+      return (
+        <div className="rs-print-heading">
+          <h3>{item.text}</h3>
+          {item.note && <p>{item.note}</p>}
+        </div>
+      );
+    case 'note':
+      return <p className="rs-print-note">{item.text}</p>;
+    case 'var': {
+      const v = item.variable;
+      const attributes = [v.retain ? 'RETAIN' : '', v.constant ? 'CONSTANT' : ''].filter(Boolean).join(' ');
+      return (
+        <Row
+          className="rs-print-var"
+          cells={[classLabel(v, item.global), v.name, v.type, v.location ?? '', v.initial ?? '', attributes, v.comment]}
+        />
+      );
+    }
+    case 'xref': {
+      const r = item.row;
+      return (
+        <Row
+          className="rs-print-xref"
+          cells={[r.name, r.declaredIn, r.type, r.address, r.uses, String(r.count)]}
+        />
+      );
+    }
+  }
+}
+
+/** The table a block is a row of, if it is one. */
+export const tableOf = (item: PrintItem): string | undefined =>
+  item.kind === 'var' || item.kind === 'xref' ? item.table : undefined;
