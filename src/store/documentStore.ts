@@ -199,6 +199,8 @@ const historyFlags = (history: History) => ({
 export function createDocumentStore(initial: Project = makeProject()): DocumentStore {
   /** Inside batch(): changes collect here and are recorded once at the end. */
   let pending: { name: string; changes: Change[] } | undefined;
+  /** joinSince() called inside batch(): applied once the batch's step is recorded. */
+  let joinAfterBatch: { step: HistoryEntry; name: string } | undefined;
 
   return createStore<DocumentState>()((set, get) => {
     const commit = (name: string, changes: readonly Change[]) => {
@@ -303,7 +305,8 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
       squash: (mark, name) => set(historyFlags(squashHistory(get().history, mark, name))),
       lastStep: () => get().history.undo[get().history.undo.length - 1],
       joinSince: (step, name) => {
-        if (step) set(historyFlags(squashFrom(get().history, step, name)));
+        if (step && pending) joinAfterBatch = { step, name };
+        else if (step) set(historyFlags(squashFrom(get().history, step, name)));
       },
       batch: (name, fn) => {
         if (pending) return fn();
@@ -315,6 +318,9 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
           pending = undefined;
           if (done.changes.length > 0)
             set(historyFlags(record(get().history, { name: done.name, changes: done.changes })));
+          const join = joinAfterBatch;
+          joinAfterBatch = undefined;
+          if (join) set(historyFlags(squashFrom(get().history, join.step, join.name)));
         }
       },
     };

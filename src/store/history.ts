@@ -34,3 +34,13 @@ export function squash(h: History, mark: number, name: string): History {
   const merged = h.undo.slice(mark).flatMap((e) => e.changes);
   return { ...h, undo: [...h.undo.slice(0, mark), { name, changes: merged }] };
 }
+
+/**
+ * Merges `entry` (still on the undo stack) and every entry recorded after it into one step named
+ * `name`: placing an element and naming it right away undo together. Found by identity, so the
+ * oldest steps dropped at HISTORY_LIMIT do not shift it; unchanged when it is gone (undone).
+ */
+export function squashFrom(h: History, entry: HistoryEntry, name: string): History {
+  const at = h.undo.lastIndexOf(entry);
+  return at < 0 ? h : squash(h, at, name);
+}

@@ -8,7 +8,11 @@
 // branch join). On other rows, where a connection crossed boundary `c` (something ended at `c`
 // — the left rail, an element or a vertical link — and something started at `c`), horizontal
 // links fill the gap so every other path keeps its meaning. `cols` grows when needed.
-import { boxLayout } from '../model/boxLayout';
+//
+// A box dropped on the first column does not sit on the left rail (that would feed the rail's
+// power into every input): it goes one column right, and a link joins the rail to its power-flow
+// input only (EN, else the first BOOL input). Its other inputs stay open for operands.
+import { boxLayout, type BoxLayout, type PlacedPin } from '../model/boxLayout';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../model/library';
 import type { LdElement, VLink } from '../model/elements';
 import { elementCells, elementSize } from '../model/factory';
@@ -99,6 +103,48 @@ export function placeElement(
 /** Does element `el` connect to the point on row `row` at its left (side 'in') or right ('out') edge? */
 function pinOnRow(el: LdElement, row: number, side: 'in' | 'out', lib: BlockLibrary): boolean {
   if (el.kind !== 'box') return el.row === row;
+/** The input that takes the power flow: EN (functions, FBs with EN/ENO), else the first BOOL input. */
+export const powerFlowInput = (layout: BoxLayout): PlacedPin | undefined =>
+  layout.inputs.find((p) => p.name === 'EN') ?? layout.inputs.find((p) => p.type === 'BOOL');
+
+/**
+ * A box put on the first column (see the file comment): placed (or inserted in series) at column
+ * 1 with one link from the rail to its power-flow input; links from the rail to its other inputs
+ * go. Undefined for anything else, or when there is no room (the caller places it as asked).
+ */
+export function placeBoxOffRail(
+  n: Network,
+  cell: Cell,
+  t: ElementTemplate,
+  id: ElementId,
+  newId: () => ElementId,
+  lib: BlockLibrary = STANDARD_LIBRARY,
+): Network | undefined {
+  if (t.kind !== 'box' || cell.col !== 0) return undefined;
+  const layout = boxLayout(t, lib);
+  if (!layout) return undefined;
+  // An element on the first cell: make a column of room before it (the box goes in front of it).
+  const occupant = elementAt(n, cell, lib);
+  const room =
+    occupant && occupant.kind !== 'link'
+      ? insertInSeries(n, cell, { kind: 'link' }, newId(), lib)
+      : n;
+  if (!room) return undefined;
+  const at = { row: cell.row, col: 1 };
+  const out = placeElement(room, at, t, id, lib) ?? insertInSeries(room, at, t, id, lib);
+  const box = out?.elements.find((e) => e.id === id);
+  if (!out || !box || box.col !== 1) return undefined;
+  const power = powerFlowInput(layout);
+  const powerRow = power ? box.row + power.rowOffset : -1;
+  const inputRows = new Set(layout.inputs.map((p) => box.row + p.rowOffset));
+  const elements = out.elements.filter(
+    (e) => !(e.kind === 'link' && e.col === 0 && inputRows.has(e.row) && e.row !== powerRow),
+  );
+  if (power && !elements.some((e) => e.col === 0 && e.row === powerRow))
+    elements.push({ kind: 'link', id: newId(), row: powerRow, col: 0 });
+  return grow(out, elements, out.vlinks, lib);
+}
+
   const layout = boxLayout(el, lib);
   if (!layout) return el.row === row;
   const pins = side === 'in' ? layout.inputs : layout.outputs;

@@ -8,7 +8,9 @@
 //   viewport     { zoom, scrollLeft, scrollTop, width, height } in CSS pixels of the canvas scroll area
 //   theme        'light' | 'dark'
 //   focusRequest { network, cell, seq } — set by focusCell(); the canvas scrolls there and moves the cursor
-//   editing      { element } | undefined — the element whose variable is being typed inline
+//   editing      { element, pin?, joinUndo? } | undefined — the element whose variable (or, with
+//                `pin`, whose box pin operand) is being typed inline; `joinUndo`: the undo step
+//                (placing it) the name joins, so placing and naming undo together
 //   blockPicker  { network, cell } | undefined — the searchable block picker is open for that cell
 //   networkSelection  whole networks selected by their headers (click, Shift/Ctrl-click,
 //                Shift+arrows); selecting elements clears it and the reverse
@@ -19,6 +21,7 @@
 import { createElement, createContext, useContext, type ReactNode } from 'react';
 import { createStore, useStore, type StoreApi } from 'zustand';
 import type { Cell } from '../model/grid';
+import type { HistoryEntry } from './history';
 import type { ElementId, NetworkId } from '../model/ids';
 import type { ElementTemplate } from './networkEdits';
 
@@ -71,6 +74,14 @@ export const DEFAULT_PANELS: PanelLayout = {
 export const MIN_ZOOM = 0.25;
 export const MAX_ZOOM = 3;
 
+/** What the inline editor edits (see the file comment). */
+export interface EditingState {
+  readonly element: ElementId;
+  /** A box pin ('PT', 'Q'): its operand is edited instead of the element's name. */
+  readonly pin?: string;
+  readonly joinUndo?: HistoryEntry;
+}
+
 export interface UiState {
   readonly selection: Selection;
   readonly cursor: CursorCell | undefined;
@@ -79,7 +90,7 @@ export interface UiState {
   readonly theme: Theme;
   readonly focusRequest:
     { readonly network: NetworkId; readonly cell: Cell; readonly seq: number } | undefined;
-  readonly editing: { readonly element: ElementId } | undefined;
+  readonly editing: EditingState | undefined;
   readonly blockPicker: { readonly network: NetworkId; readonly cell: Cell } | undefined;
   readonly networkSelection: readonly NetworkId[];
   readonly pastePrompt: { readonly text: string; readonly instances: readonly string[] } | undefined;
@@ -97,7 +108,7 @@ export interface UiState {
   setZoom(zoom: number): void;
   setTheme(theme: Theme): void;
   focusCell(network: NetworkId, cell: Cell): void;
-  startEditing(element: ElementId): void;
+  startEditing(element: ElementId, opts?: Omit<EditingState, 'element'>): void;
   stopEditing(): void;
   openBlockPicker(network: NetworkId, cell: Cell): void;
   closeBlockPicker(): void;
@@ -156,7 +167,7 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme' | 'panels'>
       seq += 1;
       set({ focusRequest: { network, cell, seq }, cursor: { network, ...cell } });
     },
-    startEditing: (element) => set({ editing: { element } }),
+    startEditing: (element, opts) => set({ editing: { element, ...opts } }),
     stopEditing: () => set({ editing: undefined }),
     openBlockPicker: (network, cell) => set({ blockPicker: { network, cell } }),
     closeBlockPicker: () => set({ blockPicker: undefined }),

@@ -111,11 +111,10 @@ test('copy and paste a rung into a new network, delete and undo, see a typo repo
   expect((await draw.elements(2)).some((e) => e.name === 'Stop')).toBe(false);
   await page.keyboard.press('Control+z');
   expect(await draw.elements(2)).toEqual(SEAL_IN);
-  // A typo (an undeclared name, kept by closing the suggestions with Escape) is reported as LD-R08.
+  // A typo (an undeclared name, kept as typed with Shift+Enter) is reported as LD-R08.
   await page.keyboard.press('Enter');
   await page.getByTestId('inline-editor').fill('Stopp');
-  await page.keyboard.press('Escape');
-  await page.keyboard.press('Enter');
+  await page.keyboard.press('Shift+Enter');
   await expect
     .poll(async () => (await page.getByTestId('problem').allTextContents()).join('\n'), CHECKS)
     .toMatch(/LD-R08.*Stopp/);

@@ -1,14 +1,16 @@
 // A name field with completion from the variable table (an ARIA combobox). Typing an undeclared
 // name offers to declare it right in the list ("Declare Motor : BOOL output at %QX0.0"); choosing
-// that declares the variable and binds it as one undo step.
+// that declares the variable and binds it as one undo step. Enter takes the highlighted offer;
+// Shift+Enter keeps the text exactly as typed; one Escape leaves the field unchanged.
 //
 // Used by the inspector and by the canvas's inline editor:
 //   <VariableInput value={el.variable} role={{ kind: 'contact' }} onCommit={(name) => ...} onCancel={...} autoFocus />
 // onCommit gets the final text (trimmed); it is called inside a document batch when a declaration
 // was chosen, so the caller's own edit joins the same undo step.
-import { useId, useMemo, useState, type KeyboardEvent } from 'react';
+import { useId, useMemo, useRef, useState, type KeyboardEvent } from 'react';
 import { parseLiteral } from '../../engine/values/literals';
 import { selectActivePou, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
+import { focusCanvas } from '../canvas/focusCanvas';
 import { declareChoices, type DeclareChoice } from './declareOffer';
 import { blockLibrary } from '../../model/library';
 import { freshInstanceName } from '../../store/pouEdits';
@@ -18,13 +20,17 @@ import './inspector.css';
 export interface VariableInputProps {
   readonly value: string;
   readonly role: BindingRole;
-  readonly onCommit: (text: string) => void;
+  /** `how`: the key that committed (Enter, or Tab / Shift+Tab with `tabMoves`); undefined on leaving the field. */
+  readonly onCommit: (text: string, how?: EndKey) => void;
   /**
-   * The field closes without a change: Escape with the list closed ('escape'), Enter on the
-   * unchanged text ('enter': the caller may move on as after a commit), or leaving the field when
-   * commitOnBlur is false ('blur').
+   * The field closes without a change: Escape ('escape': one press, also with the list open; the
+   * keyboard goes back to the canvas when the caller does not take it), Enter (or Tab with
+   * `tabMoves`) on the unchanged text (the caller may move on as after a commit), or leaving the
+   * field when commitOnBlur is false ('blur').
    */
   readonly onCancel?: (how: CancelReason) => void;
+  /** Tab / Shift+Tab end the edit like Enter and report 'tab' / 'backtab' (the caller moves on). */
+  readonly tabMoves?: boolean;
   /** Leaving the field commits the text (inspector); false: leaving cancels (inline editor). Default true. */
   readonly commitOnBlur?: boolean;
   readonly autoFocus?: boolean;
@@ -36,7 +42,8 @@ export interface VariableInputProps {
   readonly className?: string;
 }
 
-export type CancelReason = 'escape' | 'enter' | 'blur';
+export type EndKey = 'enter' | 'tab' | 'backtab';
+export type CancelReason = EndKey | 'escape' | 'blur';
 
 type Option =
   | { readonly kind: 'candidate'; readonly candidate: Candidate }
@@ -55,6 +62,8 @@ export function VariableInput(props: VariableInputProps) {
   const [draft, setDraft] = useState<string | undefined>(undefined);
   const [open, setOpen] = useState(false);
   const [active, setActive] = useState(0);
+  /** Set while Escape moves the focus away: that blur must not commit. */
+  const escaping = useRef(false);
   const text = draft ?? value;
 
   const options = useMemo<Option[]>(() => {
@@ -84,22 +93,22 @@ export function VariableInput(props: VariableInputProps) {
   const activeIndex = Math.min(active, options.length - 1);
 
   /** Commits a changed text; an unchanged one ends the edit as `unchanged` says (undefined: silently). */
-  const finish = (final: string, unchanged?: CancelReason) => {
+  const finish = (final: string, how?: EndKey) => {
     setDraft(undefined);
     setOpen(false);
     setActive(0);
-    if (final.trim() !== value.trim()) onCommit(final.trim());
-    else if (unchanged) onCancel?.(unchanged);
+    if (final.trim() !== value.trim()) onCommit(final.trim(), how);
+    else if (how) onCancel?.(how);
   };
-  const choose = (option: Option) => {
-    if (option.kind === 'candidate') return finish(option.candidate.text, 'enter');
+  const choose = (option: Option, how: EndKey = 'enter') => {
+    if (option.kind === 'candidate') return finish(option.candidate.text, how);
     const name = option.choice.variable.name;
     store.getState().batch('declareVariable', () => {
       store.getState().addVariable(option.choice.variable);
       setDraft(undefined);
       setOpen(false);
       setActive(0);
-      onCommit(name);
+      onCommit(name, how);
     });
   };
 
@@ -110,17 +119,24 @@ export function VariableInput(props: VariableInputProps) {
       if (!shown) return setOpen(true);
       const step = e.key === 'ArrowDown' ? 1 : -1;
       setActive((activeIndex + step + options.length) % options.length);
-    } else if (e.key === 'Enter') {
+    } else if (e.key === 'Enter' || (e.key === 'Tab' && props.tabMoves)) {
       e.preventDefault();
-      const option = shown ? options[activeIndex] : undefined;
-      if (option) choose(option);
-      else finish(text, 'enter');
+      const how: EndKey = e.key === 'Enter' ? 'enter' : e.shiftKey ? 'backtab' : 'tab';
+      // Shift+Enter keeps the text exactly as typed (an undeclared name), whatever the list offers.
+      const option = shown && !(e.key === 'Enter' && e.shiftKey) ? options[activeIndex] : undefined;
+      if (option) choose(option, how);
+      else finish(text, how);
     } else if (e.key === 'Escape') {
       e.preventDefault();
-      if (shown) setOpen(false);
-      else {
-        setDraft(undefined);
-        onCancel?.('escape');
+      setDraft(undefined);
+      setOpen(false);
+      setActive(0);
+      const field = e.currentTarget;
+      onCancel?.('escape');
+      if (document.activeElement === field) {
+        escaping.current = true;
+        focusCanvas(field);
+        escaping.current = false;
       }
     } else if (e.key === 'Tab' && shown) {
       const option = options[activeIndex];
@@ -156,6 +172,7 @@ export function VariableInput(props: VariableInputProps) {
         }}
         onFocus={() => setOpen(true)}
         onBlur={() => {
+          if (escaping.current) return;
           if (commitOnBlur) finish(text);
           else {
             setDraft(undefined);
