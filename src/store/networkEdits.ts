@@ -100,9 +100,6 @@ export function placeElement(
   return grow(n, [...kept, placed(t, id, cell.row, cell.col)], n.vlinks, lib);
 }
 
-/** Does element `el` connect to the point on row `row` at its left (side 'in') or right ('out') edge? */
-function pinOnRow(el: LdElement, row: number, side: 'in' | 'out', lib: BlockLibrary): boolean {
-  if (el.kind !== 'box') return el.row === row;
 /** The input that takes the power flow: EN (functions, FBs with EN/ENO), else the first BOOL input. */
 export const powerFlowInput = (layout: BoxLayout): PlacedPin | undefined =>
   layout.inputs.find((p) => p.name === 'EN') ?? layout.inputs.find((p) => p.type === 'BOOL');
@@ -145,6 +142,9 @@ export function placeBoxOffRail(
   return grow(out, elements, out.vlinks, lib);
 }
 
+/** Does element `el` connect to the point on row `row` at its left (side 'in') or right ('out') edge? */
+function pinOnRow(el: LdElement, row: number, side: 'in' | 'out', lib: BlockLibrary): boolean {
+  if (el.kind !== 'box') return el.row === row;
   const layout = boxLayout(el, lib);
   if (!layout) return el.row === row;
   const pins = side === 'in' ? layout.inputs : layout.outputs;

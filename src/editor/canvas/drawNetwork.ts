@@ -8,6 +8,7 @@ import type { LdElement } from '../../model/elements';
 import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
 import type { CanvasTheme } from '../theme/canvasTheme';
+import { drawConnectionPartners } from './drawConnectors';
 import { drawElement } from './drawSymbols';
 import { CELL_H, CELL_W, GRID_PAD_BOTTOM, WIRE_Y } from './geometry';
 
@@ -149,6 +150,7 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     ctx.fillRect(el.col * CELL_W + 2, el.row * CELL_H + 2, s.cols * CELL_W - 4, s.rows * CELL_H - 4);
     ctx.strokeRect(el.col * CELL_W + 2, el.row * CELL_H + 2, s.cols * CELL_W - 4, s.rows * CELL_H - 4);
   }
+  if (paint.hover) drawConnectionPartners(ctx, t, n, paint.hover, paint.library);
   for (const m of paint.markers) {
     const x = m.cell.col * CELL_W;
     const y = m.cell.row * CELL_H;

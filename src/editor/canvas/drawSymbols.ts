@@ -4,6 +4,7 @@ import { boxLayout } from '../../model/boxLayout';
 import type { BlockLibrary } from '../../model/library';
 import type { BoxElement, CoilElement, ContactElement, LdElement } from '../../model/elements';
 import type { CanvasTheme } from '../theme/canvasTheme';
+import { drawConnection } from './drawConnectors';
 import { CELL_H, CELL_W, WIRE_Y } from './geometry';
 
 export const FONT = '12px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
@@ -245,5 +246,8 @@ export function drawElement(ctx: Ctx, t: CanvasTheme, el: LdElement, paint: Elem
       return drawJumpOrReturn(ctx, t, `>>${el.target || '???'}`, paint, !el.target);
     case 'return':
       return drawJumpOrReturn(ctx, t, '<RETURN>', paint, false);
+    case 'connector':
+    case 'continuation':
+      return drawConnection(ctx, t, el, paint);
   }
 }
