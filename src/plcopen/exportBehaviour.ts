@@ -289,7 +289,7 @@ function ordering(project: Project, pou: Pou, views: readonly NetView[], library
 
     for (const [bi, node] of g.nodes.entries()) {
       const el = node.el;
-      if (el.kind !== 'box' || pulled.has(bi)) continue;
+      if (el.kind !== 'box') continue;
       const layout = boxLayout(el, library);
       if (!layout) continue;
       const isFb = library.isFbType(el.blockType);
@@ -307,7 +307,7 @@ function ordering(project: Project, pou: Pou, views: readonly NetView[], library
           });
         continue;
       }
-      if (!el.instance) continue;
+      if (!el.instance || pulled.has(bi)) continue;
       const inst = up(el.instance);
       // Readers of the instance's outputs that run after the call here (before the end of the scan there).
       const readersAfter: number[] = [];

@@ -1,5 +1,6 @@
 // Mount once inside the DocumentStoreProvider: the hidden .xml file picker of File > Import PLCopen
-// XML…, the import report (what was dropped or changed, which POU to open) and import errors.
+// XML…, the import report (what was dropped or changed, which POU to open), import errors, and the
+// export review (what Beremiz/OpenPLC would run differently, before the download).
 import { useEffect, useState } from 'react';
 import { useStore } from 'zustand';
 import type { PouId } from '../../model/ids';
@@ -7,6 +8,7 @@ import type { ImportIssue } from '../../plcopen/types';
 import { useDocumentStore } from '../../store/documentStore';
 import { HiddenFilePicker } from '../files/HiddenFilePicker';
 import { ModalDialog, OkButton } from '../files/ModalDialog';
+import { ExportReviewDialog } from './ExportReviewDialog';
 import { openImported, readImportFile } from './plcopenActions';
 import { plcopenUi } from './plcopenUi';
 import './plcopen.css';
@@ -23,6 +25,7 @@ export function PlcopenHost() {
       />
       <ImportReportDialog />
       <ImportFailureDialog />
+      <ExportReviewDialog />
     </>
   );
 }

@@ -18,18 +18,23 @@ export interface ImportFailure {
 export interface PlcopenUiState {
   readonly pending: PendingImport | undefined;
   readonly failure: ImportFailure | undefined;
+  /** The export review is open: what Beremiz/OpenPLC would run differently, before the download. */
+  readonly reviewingExport: boolean;
   /** Opens the browser's file picker for .xml files; set by <PlcopenHost> while mounted. */
   readonly openPicker: (() => void) | undefined;
   setPending(p: PendingImport | undefined): void;
   setFailure(f: ImportFailure | undefined): void;
+  setReviewingExport(open: boolean): void;
   setOpenPicker(fn: (() => void) | undefined): void;
 }
 
 export const plcopenUi = createStore<PlcopenUiState>()((set) => ({
   pending: undefined,
   failure: undefined,
+  reviewingExport: false,
   openPicker: undefined,
   setPending: (pending) => set({ pending }),
   setFailure: (failure) => set({ failure }),
+  setReviewingExport: (reviewingExport) => set({ reviewingExport }),
   setOpenPicker: (openPicker) => set({ openPicker }),
 }));
