@@ -1,4 +1,4 @@
-// The open POUs as tabs above the canvas: click to show one, × (or middle click) to close it.
+// The open POUs (then the open data types) as tabs above the canvas: click to show one, × (or middle click) to close it.
 import type { PouId } from '../../model/ids';
 import {
   selectActivePouId,
@@ -7,6 +7,8 @@ import {
   useDocument,
   useDocumentStore,
 } from '../../store/documentStore';
+import { DataTypeTabs } from '../dataTypes/TypeTabs';
+import { dataTypeTabs, useDataTypeTabs } from '../dataTypes/dataTypeTabs';
 import { InstancePicker } from '../sim/InstancePicker';
 import { KIND_ICONS, KIND_TITLES } from './pouWords';
 
@@ -15,6 +17,7 @@ export function PouTabs() {
   const project = useDocument(selectProject);
   const open = useDocument(selectOpenPouIds);
   const active = useDocument(selectActivePouId);
+  const typeShown = useDataTypeTabs((s) => s.shown) !== undefined;
   const close = (id: PouId) => store.getState().closePou(id);
   return (
     <>
@@ -22,7 +25,7 @@ export function PouTabs() {
         {open.map((id) => {
           const pou = project.pous.find((p) => p.id === id);
           if (!pou) return null;
-          const selected = id === active;
+          const selected = id === active && !typeShown;
           return (
             <div key={id} className={selected ? 'rs-pou-tab rs-active' : 'rs-pou-tab'}>
               <button
@@ -31,7 +34,10 @@ export function PouTabs() {
                 aria-selected={selected}
                 data-testid={`pou-tab-${pou.name}`}
                 title={`${KIND_TITLES[pou.kind]} ${pou.name}${pou.language === 'LD' ? '' : ` (${pou.language}, read-only)`}`}
-                onClick={() => store.getState().setActivePou(id)}
+                onClick={() => {
+                  store.getState().setActivePou(id);
+                  dataTypeTabs(store).getState().showPou();
+                }}
                 onAuxClick={(e) => e.button === 1 && close(id)}
               >
                 <span className={`rs-kind-icon rs-kind-${pou.kind}`} aria-hidden="true">
@@ -53,6 +59,7 @@ export function PouTabs() {
             </div>
           );
         })}
+        <DataTypeTabs />
       </div>
       {/* While simulating: which instance of the shown FB the canvas monitors. */}
       <InstancePicker />

@@ -1,17 +1,26 @@
 // The centre of the editor: the open POUs' tabs, then the ladder canvas of the shown POU (or the
-// read-only source of a POU in another language).
+// read-only source of a POU in another language), or the editor of an open data type.
 import { selectActivePou, useDocument } from '../../store/documentStore';
 import { LadderCanvas } from '../canvas/LadderCanvas';
+import { DataTypeEditor } from '../dataTypes/DataTypeEditor';
+import { useShownDataType } from '../dataTypes/dataTypeTabs';
 import { PouTabs } from './PouTabs';
 import { SourceView } from './SourceView';
 
 export function PouView() {
   const pou = useDocument(selectActivePou);
+  const dataType = useShownDataType();
   return (
     <div className="rs-pou-view">
       <PouTabs />
       <div className="rs-pou-body">
-        {pou && pou.language !== 'LD' ? <SourceView pou={pou} /> : <LadderCanvas key={pou?.id} />}
+        {dataType ? (
+          <DataTypeEditor name={dataType} />
+        ) : pou && pou.language !== 'LD' ? (
+          <SourceView pou={pou} />
+        ) : (
+          <LadderCanvas key={pou?.id} />
+        )}
       </div>
     </div>
   );

@@ -1,13 +1,16 @@
-// The project tree: programs, function blocks and functions (with kind icons), the global
-// variables and the tasks. Click a POU to open it in a tab; add, rename, duplicate and delete
+// The project tree: programs, function blocks and functions (with kind icons), the data types,
+// the global variables and the tasks. Click a POU to open it in a tab; add, rename, duplicate and delete
 // POUs (renames follow into calls, instance types and tasks; deleting a used POU asks first).
 import { useState } from 'react';
 import type { PouId } from '../../model/ids';
 import type { Pou, PouKind } from '../../model/project';
 import { selectActivePouId, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { pouNameProblem, pouUsages } from '../../store/pouEdits';
+import { DataTypesSection } from '../dataTypes/DataTypesSection';
+import { dataTypeTabs } from '../dataTypes/dataTypeTabs';
 import { focusVariable } from '../variables/variableFocus';
 import { DeletePouDialog } from './DeletePouDialog';
+import { NameField } from './NameField';
 import { PouProperties } from './PouProperties';
 import { KIND_ICONS, KIND_TITLES } from './pouWords';
 import './project.css';
@@ -82,7 +85,10 @@ export function ProjectTree() {
                     pou={pou}
                     active={pou.id === activeId}
                     renaming={renaming === pou.id}
-                    onOpen={() => store.getState().setActivePou(pou.id)}
+                    onOpen={() => {
+                      store.getState().setActivePou(pou.id);
+                      dataTypeTabs(store).getState().showPou();
+                    }}
                     onStartRename={() => setRenaming(pou.id)}
                     onEndRename={() => setRenaming(undefined)}
                     onDuplicate={() => store.getState().duplicatePou(pou.id)}
@@ -94,6 +100,7 @@ export function ProjectTree() {
             </li>
           );
         })}
+        <DataTypesSection />
         <li className="rs-tree-section">
           <button
             type="button"
@@ -231,36 +238,13 @@ function PouRow({
 function RenameField({ pou, onDone }: { readonly pou: Pou; readonly onDone: () => void }) {
   const store = useDocumentStore();
   const project = useDocument(selectProject);
-  const [text, setText] = useState(pou.name);
-  const problem = text.trim() === pou.name ? undefined : pouNameProblem(project, text, pou.id);
-  const commit = () => {
-    if (!problem && text.trim() !== pou.name) store.getState().renamePou(pou.id, text);
-    onDone();
-  };
   return (
-    <span className="rs-tree-rename">
-      <input
-        autoFocus
-        aria-label={`New name for ${pou.name}`}
-        data-testid="pou-rename"
-        className="rs-cell-input rs-mono"
-        value={text}
-        spellCheck={false}
-        aria-invalid={problem ? true : undefined}
-        onFocus={(e) => e.currentTarget.select()}
-        onChange={(e) => setText(e.target.value)}
-        onBlur={commit}
-        onKeyDown={(e) => {
-          e.stopPropagation();
-          if (e.key === 'Enter' && !problem) commit();
-          else if (e.key === 'Escape') onDone();
-        }}
-      />
-      {problem && (
-        <span role="alert" className="rs-error-text rs-tree-message">
-          {problem}
-        </span>
-      )}
-    </span>
+    <NameField
+      name={pou.name}
+      testId="pou-rename"
+      problem={(text) => pouNameProblem(project, text, pou.id)}
+      onRename={(text) => store.getState().renamePou(pou.id, text)}
+      onDone={onDone}
+    />
   );
 }
