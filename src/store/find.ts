@@ -1,13 +1,22 @@
 // Find and replace across every network of every POU: variables (contacts, coils, FB instances,
 // pin operands), literals (pin operands that are constants), network comments, titles and labels,
-// jump targets and block types. Pure functions over the Project; the editor's find panel
+// jump targets, connector/continuation names and block types. Pure functions over the Project; the editor's find panel
 // (src/editor/find) shows the hits and applies a replacement as one undo step.
 import type { ElementKind, LdElement } from '../model/elements';
 import type { ElementId, NetworkId, PouId } from '../model/ids';
 import type { Network, Project } from '../model/project';
 
-export type FindField = 'variable' | 'literal' | 'comment' | 'title' | 'label' | 'jump' | 'block';
-export const FIND_FIELDS: readonly FindField[] = ['variable', 'literal', 'comment', 'title', 'label', 'jump', 'block'];
+export type FindField = 'variable' | 'literal' | 'comment' | 'title' | 'label' | 'jump' | 'connector' | 'block';
+export const FIND_FIELDS: readonly FindField[] = [
+  'variable',
+  'literal',
+  'comment',
+  'title',
+  'label',
+  'jump',
+  'connector',
+  'block',
+];
 
 export interface FindQuery {
   readonly text: string;
@@ -54,6 +63,10 @@ function elementTexts(el: LdElement): { field: FindField; pin?: string; text: st
       return el.variable ? [{ field: 'variable', text: el.variable }] : [];
     case 'jump':
       return [{ field: 'jump', text: el.target }];
+    // A connector and its continuations share the field: replacing a name renames the pair.
+    case 'connector':
+    case 'continuation':
+      return el.name ? [{ field: 'connector', text: el.name }] : [];
     case 'box': {
       const out: { field: FindField; pin?: string; text: string }[] = [{ field: 'block', text: el.blockType }];
       if (el.instance) out.push({ field: 'variable', pin: 'instance', text: el.instance });
@@ -164,6 +177,9 @@ function replaceInElement(el: LdElement, r: Replacement): LdElement {
       return field === 'variable' ? { ...el, variable: r.after } : el;
     case 'jump':
       return field === 'jump' ? { ...el, target: r.after } : el;
+    case 'connector':
+    case 'continuation':
+      return field === 'connector' ? { ...el, name: r.after } : el;
     case 'box': {
       if (field === 'block') return { ...el, blockType: r.after };
       if (pin === 'instance') return { ...el, instance: r.after };

@@ -17,6 +17,7 @@ import { STANDARD_LIBRARY, type BlockLibrary } from '../model/library';
 import type { LdElement, VLink } from '../model/elements';
 import { elementCells, elementSize } from '../model/factory';
 import { cellKey, type Cell } from '../model/grid';
+import { withDefaultName } from './connectors';
 import type { ElementId } from '../model/ids';
 import type { Network } from '../model/project';
 
@@ -79,15 +80,17 @@ function cellsAt(t: ElementTemplate, row: number, col: number, lib: BlockLibrary
 /**
  * Places an element at `cell` when every cell it covers is free or a horizontal link (the links
  * go). Returns undefined when another element is in the way (the caller inserts in series).
+ * An unnamed connector or continuation gets its default name (src/store/connectors.ts).
  */
 export function placeElement(
   n: Network,
   cell: Cell,
-  t: ElementTemplate,
+  template: ElementTemplate,
   id: ElementId,
   lib: BlockLibrary = STANDARD_LIBRARY,
 ): Network | undefined {
   if (cell.row < 0 || cell.col < 0) return undefined;
+  const t = withDefaultName(n, template);
   const occ = occupancy(n, undefined, lib);
   const replaced = new Set<ElementId>();
   for (const c of cellsAt(t, cell.row, cell.col, lib)) {
@@ -158,10 +161,11 @@ function pinOnRow(el: LdElement, row: number, side: 'in' | 'out', lib: BlockLibr
 export function insertInSeries(
   n: Network,
   cell: Cell,
-  t: ElementTemplate,
+  template: ElementTemplate,
   id: ElementId,
   lib: BlockLibrary = STANDARD_LIBRARY,
 ): Network | undefined {
+  const t = withDefaultName(n, template);
   const occupant = elementAt(n, cell, lib);
   if (!occupant || occupant.kind === 'link') {
     const direct = placeElement(n, cell, t, id, lib);

@@ -5,6 +5,7 @@
 import { useEffect, useMemo } from 'react';
 import type { LdElement } from '../../model/elements';
 import type { NetworkId } from '../../model/ids';
+import { connectionNamesFor, isConnection, renameConnection } from '../../store/connectors';
 import { selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
 import { useUi, useUiStore } from '../../store/uiStore';
 import { advancePast, type EditorContext } from '../commands/editorActions';
@@ -78,6 +79,7 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
     if (el.kind === 'contact' || el.kind === 'coil') doc.getState().updateElement(el.id, { variable: name });
     else if (el.kind === 'box') doc.getState().updateElement(el.id, { instance: name });
     else if (el.kind === 'jump') doc.getState().updateElement(el.id, { target: name });
+    else if (isConnection(el)) renameConnection(doc, el.id, name);
     close(true);
   };
 
@@ -90,9 +92,12 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
       ? `Instance name of ${el.blockType}`
       : el.kind === 'jump'
         ? 'Jump target label'
-        : `Variable of the ${el.kind}`;
+        : isConnection(el)
+          ? `Name of the ${el.kind}`
+          : `Variable of the ${el.kind}`;
 
-  if (el.kind === 'jump') {
+  if (el.kind === 'jump' || isConnection(el)) {
+    const options = isConnection(el) ? connectionNamesFor(network, el) : labels;
     return (
       <div className="rs-inline-editor" style={style}>
         <input
@@ -101,7 +106,8 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
           data-testid="inline-editor"
           className="rs-cell-input rs-mono"
           list="rs-network-labels"
-          defaultValue={el.target}
+          defaultValue={currentName(el)}
+          onFocus={(e) => e.currentTarget.select()}
           onKeyDown={(e) => {
             e.stopPropagation();
             if (e.key === 'Enter') commit(e.currentTarget.value);
@@ -110,7 +116,7 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
           onBlur={() => close(false)}
         />
         <datalist id="rs-network-labels">
-          {labels.map((l) => (
+          {options.map((l) => (
             <option key={l} value={l} />
           ))}
         </datalist>

@@ -232,6 +232,7 @@ export function LadderCanvas() {
           title={hoverText(
             hoverNetwork && hover && elementAt(hoverNetwork, hover.cell, library),
             hoverProblems,
+            hoverNetwork,
           )}
           {...handlers}
         >

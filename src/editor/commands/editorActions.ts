@@ -25,6 +25,8 @@ export const needsName = (
 ): boolean =>
   el.kind === 'coil' ||
   el.kind === 'jump' ||
+  el.kind === 'connector' ||
+  el.kind === 'continuation' ||
   (el.kind === 'contact' && el.contact !== 'NOT') ||
   (el.kind === 'box' && el.instance !== undefined);
 

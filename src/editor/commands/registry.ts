@@ -1,6 +1,7 @@
 // One registry of editor commands drives the menus, the palette tooltips and the keyboard
 // shortcuts, so a shortcut shown anywhere is the one that works.
 import { layoutNetworks } from '../canvas/geometry';
+import { goToPartner } from '../outline/goTo';
 import { PALETTE_ITEMS } from '../palette/paletteItems';
 import { copy, cut, pasteFromSystem } from './clipboardActions';
 import {
@@ -317,6 +318,17 @@ export const COMMANDS: readonly EditorCommand[] = [
     keys: ['k'],
     inMenu: true,
     run: (ctx) => focusHeaderField(ctx, 'comment'),
+  },
+  {
+    id: 'nav.partner',
+    label: 'Go to connector / continuation',
+    group: 'Edit',
+    keys: ['g'],
+    inMenu: true,
+    run: (ctx) => {
+      const problem = goToPartner(ctx);
+      if (problem) ctx.ui.getState().setStatus(problem);
+    },
   },
   {
     id: 'nav.left',

@@ -11,6 +11,7 @@ import { useDocumentStore } from '../../store/documentStore';
 import { CommitInput } from '../variables/CommitInput';
 import { BindingField } from './BindingField';
 import { BoxInspector } from './BoxInspector';
+import { ConnectionInspector } from './ConnectionInspector';
 import { COIL_WORDS, CONTACT_WORDS, elementTitle } from './elementWords';
 
 interface Props {
@@ -113,6 +114,9 @@ export function ElementInspector({ element: el, network, networkIndex, labels }:
       {el.kind === 'return' && <p>When powered, the POU ends for this scan.</p>}
       {el.kind === 'link' && <p>Copies the state on its left to its right.</p>}
       {el.kind === 'box' && <BoxInspector box={el} />}
+      {(el.kind === 'connector' || el.kind === 'continuation') && (
+        <ConnectionInspector element={el} network={network} />
+      )}
     </div>
   );
 }

@@ -1,9 +1,15 @@
 // Going to a network: by number (Ctrl+G), by label, or to a network of another POU (outline,
-// find results, cross-reference). A collapsed network opens when the view goes into it.
+// find results, cross-reference). A collapsed network opens when the view goes into it. Also:
+// from a connector or continuation to its partner, and to the network execution stands at.
 import type { Cell } from '../../model/grid';
-import type { NetworkId, PouId } from '../../model/ids';
+import type { ElementId, NetworkId, PouId } from '../../model/ids';
+import type { LdElement } from '../../model/elements';
+import type { Network } from '../../model/project';
+import { isConnection, partnersOf } from '../../store/connectors';
+import { elementAt } from '../../store/networkEdits';
+import { CELL_H, headerHeight, layoutNetworks } from '../canvas/geometry';
 import type { EditorContext } from '../commands/editorActions';
-import { networksOf } from '../commands/editorActions';
+import { libraryOf, networksOf } from '../commands/editorActions';
 
 /** Shows the POU, scrolls to the cell of the network and puts the cursor there. */
 export function revealNetwork(ctx: EditorContext, pou: PouId, network: NetworkId, cell: Cell = { row: 0, col: 0 }) {
@@ -25,4 +31,73 @@ export function goToNetwork(ctx: EditorContext, text: string): string {
   revealNetwork(ctx, pou, target.id);
   ctx.ui.getState().selectNetworks([target.id]);
   return '';
+}
+
+/** Element `id`, else the one selected alone, else the one at the cursor, with its network. */
+function elementInFocus(ctx: EditorContext, id?: ElementId): { network: Network; el: LdElement } | undefined {
+  const ui = ctx.ui.getState();
+  const nets = networksOf(ctx);
+  const wanted = id ?? (ui.selection.elements.length === 1 ? ui.selection.elements[0] : undefined);
+  if (wanted) {
+    for (const network of nets) {
+      const el = network.elements.find((e) => e.id === wanted);
+      if (el) return { network, el };
+    }
+    return undefined;
+  }
+  const network = ui.cursor && nets.find((n) => n.id === ui.cursor!.network);
+  const el = network && elementAt(network, ui.cursor!, libraryOf(ctx));
+  return network && el ? { network, el } : undefined;
+}
+
+/**
+ * Goes from a connector to its first continuation, or from a continuation to its connector
+ * (element `id`, else the selected one, else the one at the cursor), selecting it. Returns a
+ * problem to show, or ''.
+ */
+export function goToPartner(ctx: EditorContext, id?: ElementId): string {
+  const found = elementInFocus(ctx, id);
+  if (!found || !isConnection(found.el)) return 'Select a connector or continuation to go to its partner.';
+  const { network, el } = found;
+  const target = partnersOf(network, el)[0];
+  if (!target)
+    return el.kind === 'connector'
+      ? `The connector >${el.name}> has no continuation in this network (LD-R14).`
+      : `The continuation >${el.name}> has no connector in this network (LD-R14).`;
+  goToElement(ctx, network.id, target);
+  return '';
+}
+
+/** Scrolls to an element of the shown POU and selects it (the cursor goes there). */
+export function goToElement(ctx: EditorContext, network: NetworkId, el: Pick<LdElement, 'id' | 'row' | 'col'>) {
+  revealNetwork(ctx, ctx.doc.getState().activePouId, network, { row: el.row, col: el.col });
+  ctx.ui.getState().select(network, [el.id]);
+}
+
+/** The canvas's scroll area, when it is on the page. */
+const canvasElement = (): HTMLElement | null =>
+  typeof document === 'undefined' ? null : document.querySelector<HTMLElement>('[data-testid="ladder-canvas"]');
+
+/** Room kept above a network scrolled into view, screen pixels. */
+const REVEAL_MARGIN = 24;
+
+/**
+ * Scrolls the canvas so network `index` of the shown POU is on screen (its header and first row),
+ * unless it already is: following execution while stepping must not make the view jump. Only the
+ * view moves: cursor, selection and the document stay as they are (a collapsed network stays
+ * collapsed). Returns whether it scrolled.
+ */
+export function scrollNetworkIntoView(ctx: EditorContext, index: number): boolean {
+  const nets = networksOf(ctx);
+  const network = nets[index];
+  const el = canvasElement();
+  if (!network || !el) return false;
+  const zoom = ctx.ui.getState().viewport.zoom;
+  const top = layoutNetworks(nets).tops[index]!;
+  const firstRow = headerHeight(network) + (network.collapsed ? 0 : CELL_H);
+  const from = top * zoom;
+  const to = (top + firstRow) * zoom;
+  if (from >= el.scrollTop && to <= el.scrollTop + el.clientHeight) return false;
+  el.scrollTop = Math.max(0, from - REVEAL_MARGIN);
+  return true;
 }

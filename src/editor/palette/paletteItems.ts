@@ -96,6 +96,26 @@ export const PALETTE_ITEMS: readonly PaletteItem[] = [
     description: 'A wire: copies the state on its left to its right.',
   },
   {
+    id: 'connector',
+    label: 'Connector',
+    symbol: '—>C>',
+    group: 'Wires',
+    template: { kind: 'connector', name: '' },
+    keys: 'x',
+    description:
+      'Ends a line here and carries its state to every continuation of the same name in the network (no crossing wires). New ones are named C1, C2…',
+  },
+  {
+    id: 'continuation',
+    label: 'Continuation',
+    symbol: '>C>—',
+    group: 'Wires',
+    template: { kind: 'continuation', name: '' },
+    keys: 'shift+x',
+    description:
+      'Starts a line here with the state of the connector of the same name in this network.',
+  },
+  {
     id: 'jump',
     label: 'Jump',
     symbol: '->>L',
