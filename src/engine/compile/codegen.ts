@@ -232,8 +232,15 @@ class Emitter {
         return `(${this.fbRef(a.fb.index)}.${a.pin} ? 1 : 0)`;
       case 'const':
         return a.value === true ? '1' : '0';
+      case 'elem':
+        return `b[${this.elemSlot(a)}]`;
     }
   }
+
+  /** Slot expression of an element chosen by variable indexes (set by the ST emitter, which writes the index code). */
+  elemSlot: (a: Extract<Access, { kind: 'elem' }>) => string = (a) => {
+    throw new Error(`${a.text}: variable indexes are only compiled in ST bodies`);
+  };
 
   /** Statement writing a 0/1 expression to a BOOL access. */
   writeBit(a: Access, x: string): string {
@@ -255,6 +262,8 @@ class Emitter {
         return `${this.fbRef(a.fb.index)}.${a.pin} = (${x}) !== 0;`;
       case 'const':
         return '';
+      case 'elem':
+        return `b[X.ws('b', ${this.elemSlot(a)})] = ${x};`;
     }
   }
 
@@ -281,6 +290,9 @@ class Emitter {
           break;
         case 'const':
           return this.constant(a.value);
+        case 'elem':
+          expr = a.v.store === 'b' ? `(b[${this.elemSlot(a)}] === 1)` : `${a.v.store}[${this.elemSlot(a)}]`;
+          break;
       }
     }
     return storeOf(from) === 'n' && isBigIntType(to) ? `BigInt(${expr})` : expr;
@@ -295,6 +307,8 @@ class Emitter {
         return `${a.v.store}[${this.w(a.v.store, a.v.slot)}] = ${v};`;
       case 'pin':
         return `${this.fbRef(a.fb.index)}.${a.pin} = ${v};`;
+      case 'elem':
+        return `${a.v.store}[X.ws('${a.v.store}', ${this.elemSlot(a)})] = ${v};`;
       default:
         return '';
     }

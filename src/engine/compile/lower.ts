@@ -337,5 +337,7 @@ export function accessWords(a: Access): string {
       return `"${a.fb.name}.${a.pin}"`;
     case 'const':
       return `constant ${a.text}`;
+    case 'elem':
+      return `"${a.text}"`;
   }
 }

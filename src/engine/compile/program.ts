@@ -71,7 +71,7 @@ export function assembleProgram(
       r.error('LD-E20', 'no task runs a program; add a program instance to a task');
       return { diagnostics };
     }
-    root = new SymbolTable(new Storage(), '', library);
+    root = new SymbolTable(new Storage(project), '', library);
     declareGlobals(root, project, new Reporter(globals, 'globals', -1));
     roots = [];
     const seen = new Set<string>();

@@ -16,6 +16,8 @@ import {
   type Value,
 } from '../../model/iecTypes';
 import type { Pou, Project, Variable } from '../../model/project';
+import { type Dim } from '../../model/dataTypes';
+import { declareDataTyped, describeNode, elementAt, memberOf, type AggNode, type AggSymbol, type IndexTerm } from './aggregates';
 import { parseLiteral } from '../values/literals';
 import { defaultValue, isBigIntType, isStringType } from '../values/types';
 import type { Reporter } from './report';
@@ -66,6 +68,18 @@ export interface VarSymbol {
   readonly hidden?: boolean;
   /** Declared VAR_TEMP (re-initialised on every call of its FB). */
   readonly temp?: boolean;
+  /** Declared with a data type (enum, subrange, alias) or a leaf of a struct/array variable. */
+  readonly dataType?: DataTypeInfo;
+}
+
+/** What a variable's data type adds to its elementary type (aggregates.ts). */
+export interface DataTypeInfo {
+  /** The declared type name of the value (`Color`, `Percent`, `HMI_BOOL`, `INT` for a struct member). */
+  readonly name: string;
+  /** An enum: its values (stored as their index). */
+  readonly enumValues?: readonly string[];
+  /** A subrange: its declared range (checked on literals at compile time; not at run time, as in MATIEC). */
+  readonly range?: Dim;
 }
 
 export interface FbSymbol {
@@ -99,7 +113,8 @@ export interface RefSymbol {
   readonly access: Access;
 }
 
-export type Sym = VarSymbol | FbSymbol | UfbSymbol | RefSymbol;
+export type Sym = VarSymbol | FbSymbol | UfbSymbol | RefSymbol | AggSymbol;
+export type { AggNode, AggSymbol, IndexTerm } from './aggregates';
 
 /** Storage shared by every scope of one program: variable slots, FB instances, locations, globals. */
 export class Storage {
@@ -108,7 +123,13 @@ export class Storage {
   readonly ufbs: UfbSymbol[] = [];
   readonly counts = { b: 0, n: 0, g: 0 };
   readonly byLocation = new Map<string, VarSymbol>();
-  readonly globals = new Map<string, VarSymbol | FbSymbol | UfbSymbol>();
+  readonly globals = new Map<string, VarSymbol | FbSymbol | UfbSymbol | AggSymbol>();
+  /** Struct and array variables of the program (all scopes), in declaration order. */
+  readonly aggs: AggSymbol[] = [];
+  constructor(
+    /** Where data type names resolve (Project.dataTypes; user FB types from its POUs). */
+    readonly types: Pick<Project, 'dataTypes' | 'pous'> = { pous: [] },
+  ) {}
 }
 
 export type Access =
@@ -121,9 +142,17 @@ export type Access =
       readonly type: ElementaryType;
       readonly dir: 'in' | 'out';
     }
-  | { readonly kind: 'const'; readonly type: ElementaryType; readonly value: Value; readonly text: string };
+  | { readonly kind: 'const'; readonly type: ElementaryType; readonly value: Value; readonly text: string }
+  /**
+   * ST: an element of an array reached through variable indexes: the slot of `v` (the leaf at the
+   * lower bounds) plus, per index, (index - lower) * mult[store]; out of bounds faults (LD-E62).
+   */
+  | { readonly kind: 'elem'; readonly v: VarSymbol; readonly type: ElementaryType; readonly terms: readonly IndexTerm[]; readonly text: string };
 
-export type Resolved = { ok: true; access: Access } | { ok: false; message: string; unknown?: boolean };
+export type Resolved =
+  | { ok: true; access: Access }
+  /** `aggregate`: the text names a whole struct or array (ST assigns those as a whole). */
+  | { ok: false; message: string; unknown?: boolean; aggregate?: AggNode };
 
 export const canonicalLocation = (loc: ParsedLocation): string =>
   `%${loc.area}${loc.size}${loc.index}${loc.bit !== undefined ? `.${loc.bit}` : ''}`;
@@ -226,31 +255,16 @@ export class SymbolTable {
       return;
     }
     if (!elementary) {
-      r.error(
-        'LD-E15',
-        `${what} has the unknown type "${decl.type}"; use an elementary type (BOOL, INT, TIME, STRING, ...) or a standard block (TON, CTU, ...)`,
-      );
+      const sym = declareDataTyped(this, decl, global, r, temp);
+      if (!sym) return;
+      if (global) this.storage.globals.set(key, sym);
+      else this.byName.set(key, sym);
+      if (sym.kind === 'var') this.noteLocation(sym, what, r);
       return;
     }
     const type = elementary.type;
-    let location: ParsedLocation | undefined;
-    if (decl.location !== undefined && decl.location.trim() !== '') {
-      location = parseLocation(decl.location);
-      if (!location) {
-        r.error(
-          'LD-E12',
-          `${what} has the invalid location "${decl.location}"; write it like %IX0.0, %QX1.7, %MW3 or %ID2`,
-        );
-        return;
-      }
-      if (!locationAdmits(location, type)) {
-        r.error(
-          'LD-E13',
-          `${what} is ${type} but its location ${decl.location} holds ${sizeWords(location)}`,
-        );
-        return;
-      }
-    }
+    const location = this.declaredLocation(decl, type, r);
+    if (location === false) return;
     let initial = defaultValue(type);
     if (decl.initial !== undefined && decl.initial.trim() !== '') {
       const lit = parseLiteral(decl.initial, type);
@@ -273,15 +287,31 @@ export class SymbolTable {
     );
     if (global) this.storage.globals.set(key, v);
     else this.byName.set(key, v);
-    if (v.locationText) {
-      const other = this.storage.byLocation.get(v.locationText);
-      if (other)
-        r.warning(
-          'LD-W02',
-          `${what} shares the location ${v.locationText} with "${other.name}"; both name the same memory`,
-        );
-      else this.storage.byLocation.set(v.locationText, v);
+    this.noteLocation(v, what, r);
+  }
+
+  /** The location of a declaration of `type` (undefined: none; false: reported as an error). */
+  declaredLocation(decl: Variable, type: ElementaryType, r: Reporter): ParsedLocation | undefined | false {
+    if (decl.location === undefined || decl.location.trim() === '') return undefined;
+    const what = `the variable "${decl.name}"`;
+    const location = parseLocation(decl.location);
+    if (!location) {
+      r.error('LD-E12', `${what} has the invalid location "${decl.location}"; write it like %IX0.0, %QX1.7, %MW3 or %ID2`);
+      return false;
     }
+    if (!locationAdmits(location, type)) {
+      r.error('LD-E13', `${what} is ${type} but its location ${decl.location} holds ${sizeWords(location)}`);
+      return false;
+    }
+    return location;
+  }
+
+  private noteLocation(v: VarSymbol, what: string, r: Reporter): void {
+    if (!v.locationText) return;
+    const other = this.storage.byLocation.get(v.locationText);
+    if (other)
+      r.warning('LD-W02', `${what} shares the location ${v.locationText} with "${other.name}"; both name the same memory`);
+    else this.storage.byLocation.set(v.locationText, v);
   }
 
   /**
@@ -302,7 +332,7 @@ export class SymbolTable {
     return u;
   }
 
-  private addVar(
+  addVar(
     name: string,
     type: ElementaryType,
     initial: Value,
@@ -312,6 +342,7 @@ export class SymbolTable {
     global: boolean,
     implicit: boolean,
     temp = false,
+    dataType?: DataTypeInfo,
   ): VarSymbol {
     const store = storeOf(type);
     const v: VarSymbol = {
@@ -328,6 +359,7 @@ export class SymbolTable {
       implicit,
       ...(this.hidden ? { hidden: true } : {}),
       ...(temp ? { temp: true } : {}),
+      ...(dataType ? { dataType } : {}),
     };
     this.storage.vars.push(v);
     return v;
@@ -369,14 +401,18 @@ export class SymbolTable {
         ? { ok: false, message: `no variable is declared at ${t}`, unknown: true }
         : { ok: false, message: `"${t}" is not a valid location (like %IX0.0 or %MW3)` };
     }
-    const parts = t.split('.');
-    if (parts.length > 1 && IDENTIFIER_RE.test(parts[0]!) && parts.every((x) => /^[A-Za-z_0-9]+$/.test(x))) {
-      let head: Sym | undefined = this.lookup(parts[0]!);
-      if (!head) return { ok: false, message: `"${parts[0]}" is not declared`, unknown: true };
-      let path = parts[0]!;
-      for (let k = 1; k < parts.length; k++) {
-        const tail = parts[k]!;
-        const last = k === parts.length - 1;
+    const segs = splitPath(t);
+    const first = segs?.[0];
+    if (segs && segs.length > 1 && typeof first === 'string' && IDENTIFIER_RE.test(first)) {
+      let head: Sym | undefined = this.lookup(first);
+      if (!head) return { ok: false, message: `"${first}" is not declared`, unknown: true };
+      let path = first;
+      for (let k = 1; k < segs.length; k++) {
+        const seg = segs[k]!;
+        if (head.kind === 'agg') return walkStatic(head.node, path, segs.slice(k));
+        if (typeof seg !== 'string') return { ok: false, message: `"${path}" is not an array; it has no elements [${seg.join(',')}]` };
+        const tail = seg;
+        const last = k === segs.length - 1;
         if (head.kind === 'ref' && head.access.kind === 'var') head = head.access.v;
         if (head.kind === 'ufb') {
           const member: Sym | undefined = head.scope.own(tail);
@@ -437,8 +473,81 @@ export class SymbolTable {
   }
 }
 
+/**
+ * `A.B[1, 2].C` -> ['A', 'B', [1, 2], 'C'] (names, and constant index lists); undefined when the
+ * text is not such a path (an index that is not an integer literal, unbalanced brackets).
+ */
+export function splitPath(text: string): (string | number[])[] | undefined {
+  const out: (string | number[])[] = [];
+  let i = 0;
+  const s = text.trim();
+  const ident = /^[A-Za-z_0-9]+/;
+  while (i < s.length) {
+    if (out.length > 0) {
+      if (s[i] === '.') i++;
+      else if (s[i] !== '[') return undefined;
+    }
+    if (s[i] === '[') {
+      const end = s.indexOf(']', i);
+      if (end < 0) return undefined;
+      const parts = s.slice(i + 1, end).split(',').map((x) => x.trim());
+      if (!parts.every((x) => /^[+-]?\d+$/.test(x))) return undefined;
+      out.push(parts.map(Number));
+      i = end + 1;
+      continue;
+    }
+    const m = ident.exec(s.slice(i));
+    if (!m) return undefined;
+    out.push(m[0]);
+    i += m[0].length;
+  }
+  return out;
+}
+
+/** Resolves the rest of a path under a struct/array node: every index constant. */
+function walkStatic(start: AggNode, path: string, segs: readonly (string | number[])[]): Resolved {
+  let node = start;
+  for (const seg of segs) {
+    if (node.kind === 'leaf') {
+      // a bit of a word member: `P.Flags.3`
+      if (typeof seg === 'string' && /^\d+$/.test(seg)) {
+        const v = node.v;
+        if (!['BYTE', 'WORD', 'DWORD', 'LWORD'].includes(v.type))
+          return { ok: false, message: `"${path}" is ${v.type}; only BYTE, WORD, DWORD and LWORD have addressable bits` };
+        const bit = Number(seg);
+        if (bit >= bitWidth(v.type)) return { ok: false, message: `${v.type} "${path}" has bits 0 to ${bitWidth(v.type) - 1}, not ${bit}` };
+        return segs.indexOf(seg) === segs.length - 1
+          ? { ok: true, access: { kind: 'bit', v, bit, type: 'BOOL' } }
+          : { ok: false, message: `"${path}.${seg}" is a bit; it has no members` };
+      }
+      return { ok: false, message: `"${path}" is ${describeNode(node)}; it has no ${typeof seg === 'string' ? `member ${seg}` : 'elements'}` };
+    }
+    if (typeof seg === 'string') {
+      if (node.kind !== 'struct') return { ok: false, message: `"${path}" is ${describeNode(node)}; it has no member ${seg} (name an element like ${path}[${node.dims.map((d) => d.lower).join(',')}])` };
+      const m = memberOf(node, seg);
+      if (!m) return { ok: false, message: `${node.type} "${path}" has no member ${seg} (it has: ${node.members.map((x) => x.name).join(', ')})` };
+      node = m;
+      path += `.${seg}`;
+      continue;
+    }
+    if (node.kind !== 'array') return { ok: false, message: `"${path}" is ${describeNode(node)}, not an array` };
+    const k = elementAt(node, seg, path);
+    if (typeof k === 'string') return { ok: false, message: k };
+    node = node.elems[k]!;
+    path += `[${seg.join(',')}]`;
+  }
+  if (node.kind === 'leaf') return { ok: true, access: { kind: 'var', v: node.v, type: node.v.type } };
+  return { ok: false, message: `"${path}" is ${describeNode(node)}, not a single value; name one of its ${node.kind === 'struct' ? 'members' : 'elements'}`, aggregate: node };
+}
+
 function accessOf(sym: Sym, path: string): Resolved {
   switch (sym.kind) {
+    case 'agg':
+      return {
+        ok: false,
+        message: `"${path}" is ${describeNode(sym.node)}, not a single value; name one of its ${sym.node.kind === 'struct' ? 'members' : 'elements'}`,
+        aggregate: sym.node,
+      };
     case 'var':
       return { ok: true, access: { kind: 'var', v: sym, type: sym.type } };
     case 'ref':
@@ -504,7 +613,7 @@ export function buildSymbols(
   globalsReporter: Reporter,
   library: BlockLibrary = STANDARD_LIBRARY,
 ): SymbolTable {
-  const table = new SymbolTable(new Storage(), '', library);
+  const table = new SymbolTable(new Storage(project), '', library);
   table.instantiating = new Set([pou.name.toUpperCase()]);
   for (const v of pou.variables) if (v.varClass !== 'external') table.declare(v, false, r, v.varClass === 'temp');
   if (pou.kind === 'FUNCTION' && !pou.variables.some((v) => v.name.toUpperCase() === pou.name.toUpperCase()))
@@ -538,6 +647,7 @@ function checkExternal(table: SymbolTable, project: Project, pou: Pou, decl: Var
   if (!sym || sym.kind === 'ref') return; // the global's own declaration is in error (reported with the globals)
   const declared = declaredElementaryType(decl.type);
   const type = declared && 'type' in declared ? declared.type : decl.type.trim().toUpperCase();
-  if (type !== sym.type.toUpperCase())
+  const globalType = sym.kind === 'var' && sym.dataType ? sym.dataType.name : sym.type;
+  if (type !== globalType.toUpperCase())
     r.error('LD-E16', `${what} is declared ${type} but the global variable "${global.name}" is ${sym.type}`);
 }

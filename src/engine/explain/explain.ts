@@ -130,6 +130,7 @@ function accessName(a: Access): string {
     case 'pin':
       return `${a.fb.name}.${a.pin}`;
     case 'const':
+    case 'elem':
       return a.text;
   }
 }

@@ -125,6 +125,7 @@ export function accessKey(a: Access): string | undefined {
     case 'pin':
       return `p:${a.fb.index}:${a.pin}`;
     case 'const':
+    case 'elem':
       return undefined;
   }
 }

@@ -85,6 +85,8 @@ export class Memory {
         return this.fbs[a.fb.index]!.get(a.pin);
       case 'const':
         return a.value;
+      case 'elem':
+        throw new Error(`${a.text}: an element chosen by a variable index has no fixed place`);
     }
   }
 
@@ -108,6 +110,8 @@ export class Memory {
         return this.fbs[a.fb.index]!.set(a.pin, value);
       case 'const':
         throw new Error(`${a.text} is a constant`);
+      case 'elem':
+        throw new Error(`${a.text}: an element chosen by a variable index has no fixed place`);
     }
   }
 }
