@@ -1,6 +1,7 @@
 // The data-type editor's checks: each problem names the field it belongs to, in plain words.
 import { expect, test } from 'vitest';
-import { newProject } from '../../src/model/factory';
+import { newProject, variable } from '../../src/model/factory';
+import { validateVariables } from '../../src/editor/variables/validation';
 import type { DataType, DataTypeDef, Project } from '../../src/model/project';
 import { declarationText } from '../../src/editor/dataTypes/typeText';
 import { dataTypeProblems } from '../../src/editor/dataTypes/validation';
@@ -64,4 +65,22 @@ test('a good type has no problems and is written as IEC text', () => {
   expect(declarationText(p.dataTypes![0]!)).toBe(
     'TYPE\n  Point : STRUCT\n    X : INT;\n    Y : INT := 5;\n  END_STRUCT;\nEND_TYPE',
   );
+});
+
+test('the variable table knows data types and inline arrays, and checks their initial values', () => {
+  const p: Project = {
+    ...withTypes(dt('Point', { kind: 'struct', members: [{ name: 'X', type: 'INT' }, { name: 'Y', type: 'INT' }] })),
+  };
+  const vars = [
+    variable('P', 'Point', { initial: '(X := 1, Y := 2)' }),
+    variable('A', 'ARRAY[1..10] OF INT'),
+    variable('Q', 'Point', { initial: '(Z := 1)' }),
+    variable('B', 'ARRAY[1..2] OF Pointe'),
+    variable('C', 'Pointe'),
+  ];
+  const issues = validateVariables(vars, { project: p, pou: 'Main' }).map((i) => `${vars[i.index]!.name} ${i.field}: ${i.message}`);
+  expect(issues).toHaveLength(3);
+  expect(issues[0]).toMatch(/^Q initial: .*no member Z/);
+  expect(issues[1]).toMatch(/^B type: .*Pointe/);
+  expect(issues[2]).toBe('C type: unknown type "Pointe"');
 });

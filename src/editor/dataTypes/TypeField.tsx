@@ -6,12 +6,12 @@ import { typeChoices } from './typeText';
 
 export const TYPE_LIST_ID = 'rs-datatype-type-choices';
 
-/** The datalist every TypeField completes from; render once per editor. */
-export function TypeChoices() {
+/** The datalist a TypeField completes from (id TYPE_LIST_ID unless given); render once per view. */
+export function TypeChoices({ id = TYPE_LIST_ID }: { readonly id?: string }) {
   const project = useDocument(selectProject);
   const { elementary, dataTypes, fbs } = typeChoices(project);
   return (
-    <datalist id={TYPE_LIST_ID}>
+    <datalist id={id}>
       {dataTypes.map((t) => (
         <option key={`d-${t}`} value={t}>
           data type

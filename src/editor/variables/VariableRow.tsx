@@ -1,8 +1,10 @@
 // One row of the variable table: every field edits the document as one undoable step on commit.
+import { useState } from 'react';
 import { FB_SIGNATURES } from '../../model/blocks';
 import { ELEMENTARY_TYPES, parseLocation } from '../../model/iecTypes';
 import type { BlockLibrary } from '../../model/library';
-import type { GlobalScope, Variable, VarClass } from '../../model/project';
+import type { DataType, GlobalScope, Variable, VarClass } from '../../model/project';
+import { TypeChoices } from '../dataTypes/TypeField';
 import { CommitInput } from './CommitInput';
 import { canonicalLocation, type VariableField } from './validation';
 
@@ -36,6 +38,8 @@ interface Props {
   readonly showScope?: boolean;
   /** The project's blocks: FB instance types offered, standard and the project's own. */
   readonly library: BlockLibrary;
+  /** The project's data types, offered as types. */
+  readonly dataTypes?: readonly DataType[] | undefined;
   /** First row of its class: drawn with a separator above it. */
   readonly firstOfClass?: boolean;
   readonly focusName: boolean;
@@ -45,6 +49,9 @@ interface Props {
   readonly onChange: (patch: Partial<Variable>) => void;
   readonly onDelete: () => void;
 }
+
+const OTHER_TYPE = '\u0000other';
+const TYPED_TYPE_LIST = 'rs-variable-type-choices';
 
 /** Empty text clears an optional field; an address is written in its canonical spelling. */
 const optional = (text: string): string | undefined => (text.trim() === '' ? undefined : text.trim());
@@ -60,6 +67,7 @@ export function VariableRow({
   showClass,
   showScope = false,
   library,
+  dataTypes = [],
   firstOfClass = false,
   focusName,
   useCount,
@@ -71,7 +79,10 @@ export function VariableRow({
   const typeKnown =
     (ELEMENTARY_TYPES as readonly string[]).includes(v.type) ||
     FB_SIGNATURES.some((s) => s.name === v.type) ||
-    userFbs.some((s) => s.name === v.type);
+    userFbs.some((s) => s.name === v.type) ||
+    dataTypes.some((t) => t.name === v.type);
+  // "Other type...": the type is typed (ARRAY[1..10] OF INT, STRING[20]) instead of picked.
+  const [typing, setTyping] = useState(false);
   const invalid = (field: VariableField) =>
     issues[field] ? { 'aria-invalid': true, title: issues[field] } : {};
   const messages = (Object.keys(issues) as VariableField[]).map((f) => `${FIELD_WORDS[f]}: ${issues[f]}`);
@@ -124,38 +135,68 @@ export function VariableRow({
           />
         </td>
         <td data-col="type">
-          <select
-            aria-label="Type"
-            className="rs-cell-input"
-            value={v.type}
-            onChange={(e) => onChange({ type: e.target.value })}
-            {...invalid('type')}
-          >
-            {!typeKnown && <option value={v.type}>{v.type || '(choose)'}</option>}
-            <optgroup label="Elementary types">
-              {ELEMENTARY_TYPES.map((t) => (
-                <option key={t} value={t}>
-                  {t}
-                </option>
-              ))}
-            </optgroup>
-            {userFbs.length > 0 && (
-              <optgroup label="This project's function blocks">
-                {userFbs.map((s) => (
+          {typing ? (
+            <>
+              <TypeChoices id={TYPED_TYPE_LIST} />
+              <CommitInput
+                aria-label="Type"
+                className="rs-cell-input rs-mono"
+                autoFocus
+                list={TYPED_TYPE_LIST}
+                spellCheck={false}
+                placeholder="ARRAY[1..10] OF INT"
+                value={v.type}
+                onCommit={(type) => type.trim() && onChange({ type: type.trim() })}
+                onBlur={() => setTyping(false)}
+                {...invalid('type')}
+              />
+            </>
+          ) : (
+            <select
+              aria-label="Type"
+              className="rs-cell-input"
+              value={v.type}
+              onChange={(e) =>
+                e.target.value === OTHER_TYPE ? setTyping(true) : onChange({ type: e.target.value })
+              }
+              {...invalid('type')}
+            >
+              {!typeKnown && <option value={v.type}>{v.type || '(choose)'}</option>}
+              <optgroup label="Elementary types">
+                {ELEMENTARY_TYPES.map((t) => (
+                  <option key={t} value={t}>
+                    {t}
+                  </option>
+                ))}
+              </optgroup>
+              {dataTypes.length > 0 && (
+                <optgroup label="This project's data types">
+                  {dataTypes.map((t) => (
+                    <option key={t.name} value={t.name}>
+                      {t.name}
+                    </option>
+                  ))}
+                </optgroup>
+              )}
+              {userFbs.length > 0 && (
+                <optgroup label="This project's function blocks">
+                  {userFbs.map((s) => (
+                    <option key={s.name} value={s.name}>
+                      {s.name}
+                    </option>
+                  ))}
+                </optgroup>
+              )}
+              <optgroup label="Function block instances">
+                {FB_SIGNATURES.map((s) => (
                   <option key={s.name} value={s.name}>
                     {s.name}
                   </option>
                 ))}
               </optgroup>
-            )}
-            <optgroup label="Function block instances">
-              {FB_SIGNATURES.map((s) => (
-                <option key={s.name} value={s.name}>
-                  {s.name}
-                </option>
-              ))}
-            </optgroup>
-          </select>
+              <option value={OTHER_TYPE}>Other type (ARRAY[..] OF, STRING[n])…</option>
+            </select>
+          )}
         </td>
         <td data-col="address">
           <CommitInput

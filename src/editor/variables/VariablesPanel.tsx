@@ -253,6 +253,7 @@ export function VariablesPanel() {
                 showClass={!showGlobals}
                 showScope={showGlobals}
                 library={library}
+                dataTypes={project.dataTypes}
                 firstOfClass={
                   !showGlobals && rows.first + i > 0 && shown[rows.first + i - 1]?.v.varClass !== v.varClass
                 }

@@ -1,6 +1,7 @@
 // Checks a variable table the way a PLC programmer expects to be told about mistakes: per row and
 // per field, in plain words. Pure functions: the table shows the result inline.
 import { blockSignature } from '../../model/blocks';
+import { leafPaths, resolveType } from '../../model/dataTypes';
 import { blockLibrary, STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import {
   IDENTIFIER_RE,
@@ -222,8 +223,16 @@ export function validateVariables(
     }
     const type = v.type.trim().toUpperCase();
     if (type === '') issues.push({ index, field: 'type', message: 'choose a type' });
-    else if (!isKnownVariableType(type, lib))
-      issues.push({ index, field: 'type', message: `unknown type "${v.type}"` });
+    else if (!isKnownVariableType(type, lib)) {
+      // A data type of the project or an inline ARRAY[..] OF (src/model/dataTypes.ts).
+      const resolved = scope.project ? resolveType(scope.project, v.type) : undefined;
+      if (!resolved?.ok)
+        issues.push({
+          index,
+          field: 'type',
+          message: resolved && /^ARRAY\b/i.test(v.type.trim()) ? resolved.message : `unknown type "${v.type}"`,
+        });
+    }
     else if (owner?.kind === 'FUNCTION' && lib.isFbType(type))
       issues.push({
         index,
@@ -265,6 +274,9 @@ export function validateVariables(
       else if (isElementaryType(type) || parseSizedString(type)) {
         const problem = checkInitialValue(v.initial, parseSizedString(type)?.type ?? (type as ElementaryType));
         if (problem) issues.push({ index, field: 'initial', message: problem });
+      } else if (scope.project && resolveType(scope.project, v.type).ok) {
+        const leaves = leafPaths(scope.project, v);
+        if (!leaves.ok) issues.push({ index, field: 'initial', message: leaves.message });
       }
     }
     if (v.constant && v.retain)
