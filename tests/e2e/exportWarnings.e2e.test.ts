@@ -9,18 +9,20 @@ import { schemaErrors } from '../plcopen/xsd';
 
 const browser = useChromium();
 
-async function openExample(editor: EditorPage, id: string) {
+/** Opens an example in a new editor and chooses File > Export PLCopen XML; the review is shown. */
+async function reviewExport(id: string) {
+  const editor = await EditorPage.open(browser());
   const example = EXAMPLES.find((e) => e.id === id)!;
   await editor.menu('File', `Example: ${example.title}`);
   await poll(async () => (await editor.project()).name).toBe(example.build().name);
-}
-
-test('exporting a program with a jump lists the dropped jump; Export anyway downloads valid XML', async () => {
-  const editor = await EditorPage.open(browser());
-  await openExample(editor, 'jump-label');
   await editor.menu('File', 'Export PLCopen XML');
   const review = editor.page.getByTestId('export-review');
   await review.waitFor();
+  return { editor, review };
+}
+
+test('exporting a program with a jump lists the dropped jump; Export anyway downloads valid XML', async () => {
+  const { editor, review } = await reviewExport('jump-label');
   const items = review.getByTestId('export-warning');
   expect(await items.count()).toBe(1);
   const text = (await items.first().textContent())!;
@@ -38,11 +40,7 @@ test('exporting a program with a jump lists the dropped jump; Export anyway down
 });
 
 test('the traffic light: apply the coil fixes (one undo step each), then export; a network name goes to it', async () => {
-  const editor = await EditorPage.open(browser());
-  await openExample(editor, 'traffic-light');
-  await editor.menu('File', 'Export PLCopen XML');
-  const review = editor.page.getByTestId('export-review');
-  await review.waitFor();
+  const { editor, review } = await reviewExport('traffic-light');
   await poll(() => review.getByTestId('export-warning').count()).toBe(2);
   expect(await review.getByTestId('export-warning').first().textContent()).toContain(
     "what reads RedTime's outputs in networks 4 and 5 sees them one scan late",

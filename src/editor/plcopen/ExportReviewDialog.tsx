@@ -9,6 +9,7 @@ import { exportBehaviour, type ExportWarning } from '../../plcopen/exportBehavio
 import { useDocumentStore } from '../../store/documentStore';
 import { useUiStore } from '../../store/uiStore';
 import { ModalDialog } from '../files/ModalDialog';
+import { CancelOr } from './CancelOrButtons';
 import { revealNetwork } from '../outline/goTo';
 import { applyExportFixTo, downloadPlcopenFile } from './plcopenActions';
 import { plcopenUi } from './plcopenUi';
@@ -61,22 +62,14 @@ function ReviewBody() {
       testId="export-review"
       onClose={close}
       buttons={
-        <>
-          <button type="button" className="rs-button" onClick={close}>
-            Cancel
-          </button>
-          <button
-            type="button"
-            className="rs-button rs-primary"
-            autoFocus
-            onClick={() => {
-              close();
-              downloadPlcopenFile(doc);
-            }}
-          >
-            {n ? 'Export anyway' : 'Export'}
-          </button>
-        </>
+        <CancelOr
+          label={n ? 'Export anyway' : 'Export'}
+          onCancel={close}
+          onConfirm={() => {
+            close();
+            downloadPlcopenFile(doc);
+          }}
+        />
       }
     >
       {n ? (

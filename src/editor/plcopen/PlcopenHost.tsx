@@ -8,6 +8,7 @@ import type { ImportIssue } from '../../plcopen/types';
 import { useDocumentStore } from '../../store/documentStore';
 import { HiddenFilePicker } from '../files/HiddenFilePicker';
 import { ModalDialog, OkButton } from '../files/ModalDialog';
+import { CancelOr } from './CancelOrButtons';
 import { ExportReviewDialog } from './ExportReviewDialog';
 import { openImported, readImportFile } from './plcopenActions';
 import { plcopenUi } from './plcopenUi';
@@ -73,20 +74,12 @@ function ImportReportDialog() {
       testId="plcopen-report"
       onClose={close}
       buttons={
-        <>
-          <button type="button" className="rs-button" onClick={close}>
-            Cancel
-          </button>
-          <button
-            type="button"
-            className="rs-button rs-primary"
-            autoFocus
-            disabled={project.pous.length === 0}
-            onClick={() => openImported(store, pending, (pou || undefined) as PouId | undefined)}
-          >
-            Open
-          </button>
-        </>
+        <CancelOr
+          label="Open"
+          disabled={project.pous.length === 0}
+          onCancel={close}
+          onConfirm={() => openImported(store, pending, (pou || undefined) as PouId | undefined)}
+        />
       }
     >
       <p>
