@@ -1,8 +1,9 @@
 // Page object for drawing on the ladder canvas in a real browser: cell positions on screen from
 // the editor's own geometry, and the document read through window.rungsmith.
 import type { Page } from 'playwright-core';
-import { CELL_H, CELL_W, headerHeight, layoutNetworks, RAIL_X } from '../../src/editor/canvas/geometry';
-import type { Network } from '../../src/model/project';
+import { cellCentre, layoutNetworks, type CanvasLayout } from '../../src/editor/canvas/geometry';
+import { blockLibrary } from '../../src/model/library';
+import type { Network, Project } from '../../src/model/project';
 import { chooseMenuItem } from './appPage';
 
 export interface ElementSummary {
@@ -29,6 +30,16 @@ export class DrawPage {
     });
   }
 
+  /** The shown POU's networks laid out as the canvas lays them out (columns sized with the project's blocks). */
+  async layout(): Promise<{ networks: Network[]; layout: CanvasLayout }> {
+    const project = await this.page.evaluate(() => {
+      const s = window.rungsmith!.documentStore!.getState();
+      return JSON.parse(JSON.stringify({ project: s.project, active: s.activePouId })) as { project: Project; active: string };
+    });
+    const networks = project.project.pous.find((p) => p.id === project.active)!.networks as Network[];
+    return { networks, layout: layoutNetworks(networks, blockLibrary(project.project)) };
+  }
+
   /** Elements of network `index` as (kind, row, col, name, type), sorted by position. */
   async elements(index: number): Promise<ElementSummary[]> {
     const n = (await this.networks())[index]!;
@@ -50,11 +61,8 @@ export class DrawPage {
 
   /** Screen position of the middle of a cell (the canvas scrolled to show it first). */
   async cellPoint(index: number, row: number, col: number): Promise<{ x: number; y: number }> {
-    const networks = await this.networks();
-    const layout = layoutNetworks(networks);
-    const n = networks[index]!;
-    const contentX = RAIL_X + col * CELL_W + CELL_W / 2;
-    const contentY = layout.tops[index]! + headerHeight(n) + row * CELL_H + CELL_H / 2;
+    const { networks, layout } = await this.layout();
+    const { x: contentX, y: contentY } = cellCentre(layout, networks, index, { row, col });
     const { zoom, left, top, boxX, boxY } = await this.canvas().evaluate(
       (el, p) => {
         const z = window.rungsmith!.uiStore!.getState().viewport.zoom;

@@ -2,7 +2,7 @@
 // the theme's --forced colour on every element showing a forced variable, gone when unforced.
 import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
-import { CELL_H, CELL_W } from '../../src/editor/canvas/geometry';
+import { CELL_H, cellRect, columnsOf } from '../../src/editor/canvas/geometry';
 import { openApp, useChromium } from './appPage';
 import { collectPageErrors } from './browser';
 import { SimPage } from './simPage';
@@ -20,8 +20,10 @@ beforeAll(async () => {
 async function forcedMark(network: number, row: number, col: number): Promise<boolean> {
   const centre = await sim.draw.cellPoint(network, row, col);
   const zoom = await page.evaluate(() => window.rungsmith!.uiStore!.getState().viewport.zoom);
+  const { networks, layout } = await sim.draw.layout();
+  const width = cellRect(columnsOf(layout, networks[network]!), { row, col }).width;
   // The tag covers content pixels 2..16 from the cell's corner; sample around (6, 6).
-  const x = centre.x + (6 - CELL_W / 2) * zoom;
+  const x = centre.x + (6 - width / 2) * zoom;
   const y = centre.y + (6 - CELL_H / 2) * zoom;
   return page.evaluate(
     ({ x, y }) => {

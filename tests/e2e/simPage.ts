@@ -1,7 +1,7 @@
 // Page object for the simulator in a real browser: the toolbar, panels and canvas pixels.
 // The simulation state is read through window.rungsmith.simStore only to check what the user sees.
 import type { Page } from 'playwright-core';
-import { CELL_H, CELL_W, headerHeight, layoutNetworks, WIRE_Y } from '../../src/editor/canvas/geometry';
+import { CELL_H, cellRect, columnsOf, WIRE_Y } from '../../src/editor/canvas/geometry';
 import type { Project } from '../../src/model/project';
 import { DrawPage } from './drawPage';
 
@@ -79,13 +79,11 @@ export class SimPage {
    * (read from the canvas pixels, as a user would see it).
    */
   async wireLit(network: number, row: number, col: number): Promise<boolean> {
-    const networks = await this.draw.networks();
-    const layout = layoutNetworks(networks);
+    const { networks, layout } = await this.draw.layout();
     const n = networks[network]!;
     const point = await this.draw.cellPoint(network, row, col);
-    const contentYMid = layout.tops[network]! + headerHeight(n) + row * CELL_H + CELL_H / 2;
-    const contentYWire = layout.tops[network]! + headerHeight(n) + row * CELL_H + WIRE_Y;
-    const dx = CELL_W / 2 - 5;
+    const dx = cellRect(columnsOf(layout, n), { row, col }).width / 2 - 5;
+    const dy = WIRE_Y - CELL_H / 2;
     return this.page.evaluate(
       ({ x, y }) => {
         const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="ladder-canvas"] canvas');
@@ -102,7 +100,7 @@ export class SimPage {
         }
         return false;
       },
-      { x: point.x + dx, y: point.y + (contentYWire - contentYMid) * (await this.zoom()) },
+      { x: point.x + dx * (await this.zoom()), y: point.y + dy * (await this.zoom()) },
     );
   }
 

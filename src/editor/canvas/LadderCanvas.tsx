@@ -28,7 +28,7 @@ import { useDiagnosticsByNetwork } from '../problems/useDiagnostics';
 import { readCanvasTheme, type CanvasTheme } from '../theme/canvasTheme';
 import { BlockPicker } from './BlockPicker';
 import { CanvasEmpty } from './CanvasEmpty';
-import { CELL_H, CELL_W, headerHeight, layoutNetworks, RAIL_X, visibleRange } from './geometry';
+import { CELL_H, cellRect, columnsOf, headerHeight, layoutNetworks, RAIL_X, visibleRange } from './geometry';
 import { hoverText } from './hoverText';
 import { InlineEditor } from './InlineEditor';
 import type { CellMarker, NetworkPaint } from './drawNetwork';
@@ -64,7 +64,7 @@ export function LadderCanvas() {
   const themeName = useUi(selectTheme);
   const tool = useUi((s) => s.tool);
   const focusRequest = useUi((s) => s.focusRequest);
-  const layout = useMemo(() => layoutNetworks(networks), [networks]);
+  const layout = useMemo(() => layoutNetworks(networks, library), [networks, library]);
   const diagnostics = useDiagnosticsByNetwork(pou?.name);
   const markers = useMemo(() => markersByNetwork(networks, diagnostics), [networks, diagnostics]);
 
@@ -142,7 +142,7 @@ export function LadderCanvas() {
     if (!n) return;
     if (n.collapsed) doc.getState().updateNetwork(n.id, { collapsed: false });
     const y = layout.tops[i]! + headerHeight(n) + focusRequest.cell.row * CELL_H;
-    const x = RAIL_X + focusRequest.cell.col * CELL_W;
+    const x = RAIL_X + cellRect(columnsOf(layout, n), focusRequest.cell).x;
     el.scrollTop = Math.max(0, (y - 80) * zoom - el.clientHeight / 3);
     el.scrollLeft = Math.max(0, x * zoom - el.clientWidth / 2);
     // A panel that shows places one after another (find: Enter for the next) keeps the keyboard.
@@ -159,15 +159,16 @@ export function LadderCanvas() {
     const n = networks[i];
     if (!n) return;
     const top = (layout.tops[i]! + headerHeight(n) + cursor.row * CELL_H) * zoom;
-    const left = (RAIL_X + cursor.col * CELL_W) * zoom;
+    const cell = cellRect(columnsOf(layout, n), cursor);
+    const left = (RAIL_X + cell.x) * zoom;
     const margin = 24;
     if (top < el.scrollTop + margin)
       el.scrollTop = top - (i > 0 && cursor.row === 0 ? headerHeight(n) * zoom : 0) - margin;
     else if (top + CELL_H * zoom > el.scrollTop + el.clientHeight - margin)
       el.scrollTop = top + CELL_H * zoom - el.clientHeight + margin;
     if (left < el.scrollLeft) el.scrollLeft = left - margin;
-    else if (left + CELL_W * zoom > el.scrollLeft + el.clientWidth)
-      el.scrollLeft = left + CELL_W * zoom - el.clientWidth + margin;
+    else if (left + cell.width * zoom > el.scrollLeft + el.clientWidth)
+      el.scrollLeft = left + cell.width * zoom - el.clientWidth + margin;
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [cursor]);
 
@@ -275,7 +276,7 @@ export function LadderCanvas() {
                     index={i}
                     count={networks.length}
                     top={layout.tops[i]!}
-                    width={layout.totalWidth}
+                    width={Math.max(layout.totalWidth, size.width / zoom - 16)}
                     errors={m?.errors ?? 0}
                     warnings={m?.warnings ?? 0}
                   />

@@ -51,7 +51,7 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
     }),
     [library, selected, cursor, hover, markers, drag, overlay.power, overlay.liveValues, overlay.forced, overlay.device],
   );
-  const width = networkWidth(network);
+  const width = networkWidth(network, library);
   const height = network.rows * CELL_H + GRID_PAD_BOTTOM;
   // Each network is drawn once into a bitmap; scrolling then only copies bitmaps, which keeps
   // frames short with many symbols and texts on screen. Redrawn when anything it shows changes.

@@ -9,7 +9,8 @@ import { isConnection, partnersOf, type ConnectionElement } from '../../store/co
 import { elementAt } from '../../store/networkEdits';
 import type { CanvasTheme } from '../theme/canvasTheme';
 import { elide, type ElementPaint } from './drawSymbols';
-import { CELL_H, CELL_W, WIRE_Y } from './geometry';
+import { networkColumns } from './columns';
+import { CELL_H, CELL_W, cellRect, WIRE_Y } from './geometry';
 
 type Ctx = CanvasRenderingContext2D;
 
@@ -38,7 +39,8 @@ function tagPath(ctx: Ctx, a: number, b: number) {
 export function drawConnection(ctx: Ctx, t: CanvasTheme, el: ConnectionElement, paint: ElementPaint) {
   const on = Boolean(paint.power && paint.power & 1);
   const connector = el.kind === 'connector';
-  const w = CELL_W;
+  // The column may be wider than CELL_W (columns grow to their longest name: columns.ts).
+  const w = paint.width ?? CELL_W;
   const a = connector ? LEAD : 2;
   const b = connector ? w - 2 : w - LEAD;
   ctx.lineCap = 'butt';
@@ -79,6 +81,10 @@ export function drawConnectionPartners(ctx: Ctx, t: CanvasTheme, n: Network, hov
   ctx.strokeStyle = t.selection;
   ctx.lineWidth = 2;
   ctx.setLineDash([3, 3]);
-  for (const p of [el, ...partners]) ctx.strokeRect(p.col * CELL_W + 4, p.row * CELL_H + 6, CELL_W - 8, CELL_H - 12);
+  const nc = networkColumns(n, lib);
+  for (const p of [el, ...partners]) {
+    const r = cellRect(nc, p);
+    ctx.strokeRect(r.x + 4, r.y + 6, r.width - 8, CELL_H - 12);
+  }
   ctx.setLineDash([]);
 }

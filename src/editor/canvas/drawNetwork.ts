@@ -7,10 +7,14 @@ import type { Cell } from '../../model/grid';
 import type { LdElement } from '../../model/elements';
 import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
+import { elementAt } from '../../store/networkEdits';
 import type { CanvasTheme } from '../theme/canvasTheme';
+import { FORCED_BADGE } from '../theme/monitorStyle';
+import { networkColumns, type NetworkColumns } from './columns';
 import { drawConnectionPartners } from './drawConnectors';
-import { drawElement } from './drawSymbols';
-import { CELL_H, CELL_W, GRID_PAD_BOTTOM, WIRE_Y } from './geometry';
+import { openInputs } from './pinOperands';
+import { drawElement, wire, wireStyle } from './drawSymbols';
+import { CELL_H, cellRect, GRID_PAD_BOTTOM, WIRE_Y } from './geometry';
 
 export interface CellMarker {
   readonly cell: Cell;
@@ -46,57 +50,99 @@ export interface NetworkPaint {
 }
 
 type Ctx = CanvasRenderingContext2D;
+type Rect = { x: number; y: number; width: number; height: number };
+
+/** An element's drawn rectangle (grid coordinates). */
+const elementRect = (nc: NetworkColumns, el: LdElement, lib?: BlockLibrary): Rect => {
+  const s = elementSize(el, lib);
+  return cellRect(nc, el, s.cols, s.rows);
+};
 
 /** The device holds another value than the program: a boxed "device: FALSE" tag over the element's top edge. */
-function drawDeviceMark(ctx: Ctx, t: CanvasTheme, el: LdElement, text: string, lib?: BlockLibrary) {
-  const s = elementSize(el, lib);
-  const x = el.col * CELL_W;
-  const y = el.row * CELL_H;
+function drawDeviceMark(ctx: Ctx, t: CanvasTheme, r: Rect, text: string) {
   ctx.font = 'bold 10px system-ui, sans-serif';
-  const w = Math.min(ctx.measureText(text).width + 8, s.cols * CELL_W - 4);
-  const left = x + s.cols * CELL_W - 2 - w;
+  const w = Math.min(ctx.measureText(text).width + 8, r.width - 4);
+  const left = r.x + r.width - 2 - w;
   ctx.fillStyle = t.networkBg;
-  ctx.fillRect(left, y + 1, w, 13);
+  ctx.fillRect(left, r.y + 1, w, 13);
   ctx.strokeStyle = t.warning;
   ctx.lineWidth = 1.5;
-  ctx.strokeRect(left, y + 1, w, 13);
+  ctx.strokeRect(left, r.y + 1, w, 13);
   ctx.fillStyle = t.text;
   ctx.textAlign = 'center';
   ctx.textBaseline = 'middle';
-  ctx.fillText(text, left + w / 2, y + 8, w - 4);
+  ctx.fillText(text, left + w / 2, r.y + 8, w - 4);
   ctx.textBaseline = 'alphabetic';
 }
 
-/** A forced element: an outline and an "F" tag at its top-left corner, in the theme's forced colour. */
-function drawForcedMark(ctx: Ctx, t: CanvasTheme, el: LdElement, lib?: BlockLibrary) {
-  const s = elementSize(el, lib);
-  const x = el.col * CELL_W;
-  const y = el.row * CELL_H;
+/** A forced element: an outline and the forced badge (FORCED_BADGE, as in the watch table) at its top-left corner. */
+export function drawForcedMark(ctx: Ctx, t: CanvasTheme, r: Rect) {
+  const size = FORCED_BADGE.size;
   ctx.strokeStyle = t.forced;
-  ctx.fillStyle = t.forced;
   ctx.lineWidth = 2;
-  ctx.strokeRect(x + 2, y + 2, s.cols * CELL_W - 4, s.rows * CELL_H - 4);
-  ctx.fillRect(x + 2, y + 2, 14, 14);
-  ctx.fillStyle = t.networkBg;
-  ctx.font = 'bold 11px system-ui, sans-serif';
+  ctx.strokeRect(r.x + 2, r.y + 2, r.width - 4, r.height - 4);
+  ctx.fillStyle = t.forced;
+  ctx.fillRect(r.x + 2, r.y + 2, size, size);
+  ctx.fillStyle = FORCED_BADGE.letterColour;
+  ctx.font = FORCED_BADGE.font;
   ctx.textAlign = 'center';
   ctx.textBaseline = 'middle';
-  ctx.fillText('F', x + 9, y + 9.5);
+  ctx.fillText(FORCED_BADGE.letter, r.x + 2 + size / 2, r.y + 2.5 + size / 2);
   ctx.textBaseline = 'alphabetic';
+}
+
+/** Top of a diagnostic marker's outline inside an element's first row: below the names drawn over it. */
+export const MARKER_TOP = WIRE_Y - 14;
+/** Side of the marker's corner triangle (bottom-left of the cell, away from every name). */
+export const MARKER_CORNER = 13;
+
+/**
+ * A diagnostic marker: a dashed outline around the element's symbol (below its name or
+ * instance name, so it never hides them) and a filled triangle in the cell's bottom-left corner.
+ */
+function drawMarker(ctx: Ctx, t: CanvasTheme, m: CellMarker, r: Rect) {
+  ctx.strokeStyle = m.severity === 'error' ? t.error : t.warning;
+  ctx.fillStyle = ctx.strokeStyle;
+  ctx.lineWidth = 2;
+  ctx.setLineDash([5, 3]);
+  ctx.strokeRect(r.x + 3, r.y + MARKER_TOP, r.width - 6, r.height - MARKER_TOP - 3);
+  ctx.setLineDash([]);
+  const bottom = m.cell.row * CELL_H + CELL_H - 3;
+  ctx.beginPath();
+  ctx.moveTo(r.x + 3, bottom - MARKER_CORNER);
+  ctx.lineTo(r.x + 3, bottom);
+  ctx.lineTo(r.x + 3 + MARKER_CORNER, bottom);
+  ctx.closePath();
+  ctx.fill();
+}
+
+/** The wire drawn on from a coil's own cell to the coil at the right rail. */
+function drawCoilRuns(ctx: Ctx, t: CanvasTheme, n: Network, nc: NetworkColumns, paint: NetworkPaint) {
+  n.elements.forEach((el, i) => {
+    if (el.kind !== 'coil' || nc.alignedAt[el.row] !== el.col) return;
+    const power = paint.power ? (paint.power.elements[i] ?? 0) : undefined;
+    ctx.save();
+    if (paint.drag?.ids.has(el.id)) ctx.globalAlpha = 0.35;
+    ctx.lineCap = 'round';
+    wire(ctx, t, nc.xs[el.col]!, nc.xs[n.cols - 1]!, el.row * CELL_H + WIRE_Y, power, 1);
+    ctx.restore();
+  });
 }
 
 export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: NetworkPaint) {
-  const w = n.cols * CELL_W;
+  const nc = networkColumns(n, paint.library);
+  const w = nc.xs[n.cols]!;
   const h = n.rows * CELL_H;
   ctx.fillStyle = t.networkBg;
   ctx.fillRect(0, 0, w, h + GRID_PAD_BOTTOM);
   // Cell corners as small dots: enough to read the grid without clutter.
   ctx.fillStyle = t.grid;
   for (let r = 0; r <= n.rows; r++)
-    for (let c = 1; c < n.cols; c++) ctx.fillRect(c * CELL_W - 1, r * CELL_H - 1, 2, 2);
+    for (let c = 1; c < n.cols; c++) ctx.fillRect(nc.xs[c]! - 1, r * CELL_H - 1, 2, 2);
   if (paint.hover) {
+    const r = cellRect(nc, paint.hover);
     ctx.fillStyle = t.hover;
-    ctx.fillRect(paint.hover.col * CELL_W, paint.hover.row * CELL_H, CELL_W, CELL_H);
+    ctx.fillRect(r.x, r.y, r.width, r.height);
   }
   // Power rails: the left one is always ON.
   ctx.lineCap = 'butt';
@@ -112,82 +158,80 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
   ctx.lineTo(w, h - 4);
   ctx.stroke();
   n.vlinks.forEach((v, j) => {
+    const simulating = paint.power !== undefined;
     const on = Boolean(paint.power?.vlinks[j]);
-    ctx.strokeStyle = on ? t.energised : t.wire;
-    ctx.lineWidth = on ? 3 : 1.5;
+    const x = nc.xs[v.boundary] ?? w;
+    wireStyle(ctx, t, simulating, on);
     ctx.beginPath();
-    ctx.moveTo(v.boundary * CELL_W, v.row * CELL_H + WIRE_Y);
-    ctx.lineTo(v.boundary * CELL_W, (v.row + 1) * CELL_H + WIRE_Y);
+    ctx.moveTo(x, v.row * CELL_H + WIRE_Y);
+    ctx.lineTo(x, (v.row + 1) * CELL_H + WIRE_Y);
     ctx.stroke();
-    ctx.fillStyle = on ? t.energised : t.wire;
-    ctx.fillRect(v.boundary * CELL_W - 2, v.row * CELL_H + WIRE_Y - 2, 4, 4);
-    ctx.fillRect(v.boundary * CELL_W - 2, (v.row + 1) * CELL_H + WIRE_Y - 2, 4, 4);
+    ctx.setLineDash([]);
+    ctx.fillStyle = ctx.strokeStyle;
+    ctx.fillRect(x - 2, v.row * CELL_H + WIRE_Y - 2, 4, 4);
+    ctx.fillRect(x - 2, (v.row + 1) * CELL_H + WIRE_Y - 2, 4, 4);
   });
+  drawCoilRuns(ctx, t, n, nc, paint);
   n.elements.forEach((el, i) => {
     const dragged = paint.drag?.ids.has(el.id);
+    const r = elementRect(nc, el, paint.library);
     ctx.save();
     if (dragged) ctx.globalAlpha = 0.35;
-    ctx.translate(el.col * CELL_W, el.row * CELL_H);
+    ctx.translate(r.x, r.y);
     const live = paint.liveValues?.get(el.id);
     drawElement(ctx, t, el, {
+      width: r.width,
+      ...(el.kind === 'box' ? { openPins: openInputs(n, el, paint.library) } : {}),
       ...(paint.library ? { library: paint.library } : {}),
       ...(paint.power ? { power: paint.power.elements[i] ?? 0 } : {}),
       ...(live ? { liveValue: live } : {}),
     });
     ctx.restore();
   });
-  if (paint.forced) for (const el of n.elements) if (paint.forced.has(el.id)) drawForcedMark(ctx, t, el, paint.library);
-  if (paint.device) for (const el of n.elements) {
-    const text = paint.device.get(el.id);
-    if (text) drawDeviceMark(ctx, t, el, text, paint.library);
-  }
+  if (paint.forced)
+    for (const el of n.elements) if (paint.forced.has(el.id)) drawForcedMark(ctx, t, elementRect(nc, el, paint.library));
+  if (paint.device)
+    for (const el of n.elements) {
+      const text = paint.device.get(el.id);
+      if (text) drawDeviceMark(ctx, t, elementRect(nc, el, paint.library), text);
+    }
   for (const el of n.elements) {
     if (!paint.selected.has(el.id)) continue;
-    const s = elementSize(el, paint.library);
+    const r = elementRect(nc, el, paint.library);
     ctx.fillStyle = t.selectionFill;
     ctx.strokeStyle = t.selection;
     ctx.lineWidth = 2;
-    ctx.fillRect(el.col * CELL_W + 2, el.row * CELL_H + 2, s.cols * CELL_W - 4, s.rows * CELL_H - 4);
-    ctx.strokeRect(el.col * CELL_W + 2, el.row * CELL_H + 2, s.cols * CELL_W - 4, s.rows * CELL_H - 4);
+    ctx.fillRect(r.x + 2, r.y + 2, r.width - 4, r.height - 4);
+    ctx.strokeRect(r.x + 2, r.y + 2, r.width - 4, r.height - 4);
   }
   if (paint.hover) drawConnectionPartners(ctx, t, n, paint.hover, paint.library);
   for (const m of paint.markers) {
-    const x = m.cell.col * CELL_W;
-    const y = m.cell.row * CELL_H;
-    ctx.strokeStyle = m.severity === 'error' ? t.error : t.warning;
-    ctx.fillStyle = ctx.strokeStyle;
-    ctx.lineWidth = 2;
-    ctx.setLineDash([5, 3]);
-    ctx.strokeRect(x + 3, y + 3, CELL_W - 6, CELL_H - 6);
-    ctx.setLineDash([]);
-    ctx.beginPath();
-    ctx.moveTo(x + CELL_W - 16, y + 3);
-    ctx.lineTo(x + CELL_W - 3, y + 3);
-    ctx.lineTo(x + CELL_W - 3, y + 16);
-    ctx.closePath();
-    ctx.fill();
+    const el = elementAt(n, m.cell, paint.library);
+    drawMarker(ctx, t, m, el ? { ...elementRect(nc, el, paint.library), height: CELL_H, y: m.cell.row * CELL_H } : cellRect(nc, m.cell));
   }
   if (paint.drag) {
     const { dRow, dCol, blocked, ids, ghost } = paint.drag;
     const shown = ghost ?? n.elements.filter((el) => ids.has(el.id));
     const offset = ghost ? { dRow: 0, dCol: 0 } : { dRow, dCol };
     for (const el of shown) {
+      const moved = { ...el, row: el.row + offset.dRow, col: el.col + offset.dCol };
+      const r = elementRect(nc, moved, paint.library);
       ctx.save();
-      ctx.translate((el.col + offset.dCol) * CELL_W, (el.row + offset.dRow) * CELL_H);
+      ctx.translate(r.x, r.y);
       ctx.globalAlpha = 0.85;
-      drawElement(ctx, t, el, paint.library ? { library: paint.library } : {});
-      const s = elementSize(el, paint.library);
+      drawElement(ctx, t, moved, { width: r.width, ...(paint.library ? { library: paint.library } : {}) });
       ctx.strokeStyle = blocked ? t.error : t.selection;
       ctx.setLineDash([4, 3]);
       ctx.lineWidth = 1.5;
-      ctx.strokeRect(1, 1, s.cols * CELL_W - 2, s.rows * CELL_H - 2);
+      ctx.strokeRect(1, 1, r.width - 2, r.height - 2);
       ctx.setLineDash([]);
       ctx.restore();
     }
   }
   if (paint.cursor) {
+    const r = cellRect(nc, paint.cursor);
     ctx.strokeStyle = t.cursor;
     ctx.lineWidth = 2.5;
-    ctx.strokeRect(paint.cursor.col * CELL_W + 1, paint.cursor.row * CELL_H + 1, CELL_W - 2, CELL_H - 2);
+    ctx.strokeRect(r.x + 1, r.y + 1, r.width - 2, r.height - 2);
   }
 }

@@ -1,24 +1,38 @@
 // IEC 61131-3 LD symbols drawn on a 2D canvas context, one element at a time, at the
-// element's top-left cell corner. Pure drawing: no state, no React.
+// element's top-left cell corner, `width` wide (its columns are as wide as its names: columns.ts).
+// Pure drawing: no state, no React. Names are never cut: when a font draws wider than its
+// estimate the text is drawn narrower rather than shortened.
 import { boxLayout } from '../../model/boxLayout';
 import type { BlockLibrary } from '../../model/library';
 import type { BoxElement, CoilElement, ContactElement, LdElement } from '../../model/elements';
 import type { CanvasTheme } from '../theme/canvasTheme';
+import {
+  boolState,
+  SYMBOL_TRUE_FILL_ALPHA,
+  WIRE_EDIT,
+  WIRE_FALSE,
+  WIRE_FALSE_DASH,
+  WIRE_TRUE,
+} from '../theme/monitorStyle';
+import { BOX_MARGIN, boxMetrics, CELL_W, jumpText } from './columns';
 import { drawConnection } from './drawConnectors';
-import { CELL_H, CELL_W, WIRE_Y } from './geometry';
+import { CELL_H, WIRE_Y } from './geometry';
+import { FONT, FONT_BOLD, FONT_SMALL, FONT_SMALL_BOLD, MONO_SMALL_BOLD } from './textWidth';
 
-export const FONT = '12px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
-export const FONT_BOLD = 'bold 12px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
-export const FONT_SMALL = '11px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
-const MONO_SMALL = '11px ui-monospace, "SF Mono", Menlo, Consolas, monospace';
+export { FONT, FONT_BOLD, FONT_SMALL } from './textWidth';
 
 /** Power flow byte of an element (NetworkPower): bit 0 input side energised, bit 1 output side. */
 export interface ElementPaint {
   /** The project's blocks (user FBs and functions); standard blocks only when absent. */
   readonly library?: BlockLibrary;
+  /** Present while simulating (0 when nothing is energised). */
   readonly power?: number;
   /** Live value shown under the element during simulation (e.g. "ET=1.2s"). */
   readonly liveValue?: string;
+  /** Drawn width of the element's columns (CELL_W per column when absent). */
+  readonly width?: number;
+  /** Box inputs that are unwired and have no operand: drawn with a `???` operand (pinOperands.ts). */
+  readonly openPins?: ReadonlySet<string>;
 }
 
 type Ctx = CanvasRenderingContext2D;
@@ -35,6 +49,12 @@ export function elide(ctx: Ctx, text: string, width: number): string {
   return `${text.slice(0, lo)}…`;
 }
 
+/** Draws a name whole: narrower than its font when it would not fit `width` (never shortened). */
+export function fillName(ctx: Ctx, text: string, x: number, y: number, width: number) {
+  if (ctx.measureText(text).width <= width) ctx.fillText(text, x, y);
+  else ctx.fillText(text, x, y, Math.max(1, width));
+}
+
 function line(ctx: Ctx, x1: number, y1: number, x2: number, y2: number) {
   ctx.beginPath();
   ctx.moveTo(x1, y1);
@@ -42,41 +62,98 @@ function line(ctx: Ctx, x1: number, y1: number, x2: number, y2: number) {
   ctx.stroke();
 }
 
-const wireColour = (t: CanvasTheme, on: boolean) => (on ? t.energised : t.wire);
+/**
+ * Sets the stroke for a wire: while simulating TRUE is thick and in the energised colour, FALSE
+ * thin, dashed and blue-grey; when editing, the plain wire.
+ */
+export function wireStyle(ctx: Ctx, t: CanvasTheme, simulating: boolean, on: boolean) {
+  ctx.setLineDash(simulating && !on ? WIRE_FALSE_DASH : []);
+  ctx.strokeStyle = !simulating ? t.wire : on ? t.energised : t.falseState;
+  ctx.lineWidth = !simulating ? WIRE_EDIT : on ? WIRE_TRUE : WIRE_FALSE;
+}
+
+/** A horizontal wire in the element's power state (bit `bit` of its power byte). */
+export function wire(ctx: Ctx, t: CanvasTheme, x1: number, x2: number, y: number, power: number | undefined, bit: number) {
+  wireStyle(ctx, t, power !== undefined, Boolean(power && power & bit));
+  line(ctx, x1, y, x2, y);
+  ctx.setLineDash([]);
+}
 
 /** Lead wires of a 1-cell symbol: left from 0 to a, right from b to the cell's end. */
-function leads(ctx: Ctx, t: CanvasTheme, a: number, b: number, power: number | undefined) {
-  ctx.lineWidth = power && power & 1 ? 3 : 1.5;
-  ctx.strokeStyle = wireColour(t, Boolean(power && power & 1));
-  line(ctx, 0, WIRE_Y, a, WIRE_Y);
-  ctx.lineWidth = power && power & 2 ? 3 : 1.5;
-  ctx.strokeStyle = wireColour(t, Boolean(power && power & 2));
-  line(ctx, b, WIRE_Y, CELL_W, WIRE_Y);
+function leads(ctx: Ctx, t: CanvasTheme, a: number, b: number, w: number, power: number | undefined) {
+  wire(ctx, t, 0, a, WIRE_Y, power, 1);
+  wire(ctx, t, b, w, WIRE_Y, power, 2);
   ctx.lineWidth = 1.5;
   ctx.strokeStyle = t.symbol;
 }
 
-function nameAbove(ctx: Ctx, t: CanvasTheme, text: string, missing: string) {
+function nameAbove(ctx: Ctx, t: CanvasTheme, text: string, missing: string, w: number) {
   ctx.font = FONT;
   ctx.textAlign = 'center';
   ctx.textBaseline = 'alphabetic';
   ctx.fillStyle = text ? t.operand : t.muted;
-  ctx.fillText(elide(ctx, text || missing, CELL_W - 6), CELL_W / 2, WIRE_Y - 18);
+  fillName(ctx, text || missing, w / 2, WIRE_Y - 18, w - 6);
 }
 
-function liveBelow(ctx: Ctx, t: CanvasTheme, paint: ElementPaint) {
-  if (!paint.liveValue) return;
-  ctx.font = FONT_SMALL;
+/**
+ * The value under an element while simulating: TRUE as a filled tag in the energised colour,
+ * FALSE as an outlined blue-grey tag, anything else (numbers, times, FB outputs) in neutral text.
+ */
+function liveBelow(ctx: Ctx, t: CanvasTheme, text: string | undefined, cx: number, y: number, w: number) {
+  if (!text) return;
+  const state = boolState(text);
   ctx.textAlign = 'center';
-  ctx.fillStyle = t.energised;
-  ctx.fillText(elide(ctx, paint.liveValue, CELL_W - 6), CELL_W / 2, WIRE_Y + 20);
+  ctx.textBaseline = 'middle';
+  if (!state) {
+    ctx.font = FONT_SMALL;
+    ctx.fillStyle = t.text;
+    ctx.fillText(elide(ctx, text, w - 6), cx, y);
+    ctx.textBaseline = 'alphabetic';
+    return;
+  }
+  ctx.font = state === 'TRUE' ? FONT_SMALL_BOLD : FONT_SMALL;
+  const shown = elide(ctx, text, w - 12);
+  const tw = ctx.measureText(shown).width + 8;
+  const left = cx - tw / 2;
+  if (state === 'TRUE') {
+    ctx.fillStyle = t.energised;
+    ctx.fillRect(left, y - 7, tw, 14);
+    ctx.fillStyle = t.networkBg;
+  } else {
+    ctx.strokeStyle = t.falseState;
+    ctx.lineWidth = 1;
+    ctx.strokeRect(left + 0.5, y - 6.5, tw - 1, 13);
+    ctx.fillStyle = t.falseState;
+  }
+  ctx.fillText(shown, cx, y + 0.5);
+  ctx.textBaseline = 'alphabetic';
 }
 
-function drawContact(ctx: Ctx, t: CanvasTheme, el: ContactElement, paint: ElementPaint) {
-  const a = CELL_W / 2 - 12;
-  const b = CELL_W / 2 + 12;
-  leads(ctx, t, a, b, paint.power);
+/** Fill inside a contact or coil whose variable is TRUE while simulating. */
+function symbolFill(ctx: Ctx, t: CanvasTheme, paint: ElementPaint, draw: () => void) {
+  if (boolState(paint.liveValue) !== 'TRUE') return;
+  ctx.save();
+  ctx.globalAlpha = SYMBOL_TRUE_FILL_ALPHA;
+  ctx.fillStyle = t.energised;
+  draw();
+  ctx.restore();
+}
+
+/** The symbol's stroke: thick in the energised colour for TRUE while simulating, blue-grey for FALSE. */
+function symbolStroke(ctx: Ctx, t: CanvasTheme, paint: ElementPaint) {
+  const state = boolState(paint.liveValue);
+  ctx.strokeStyle = state === 'TRUE' ? t.energised : state === 'FALSE' ? t.falseState : t.symbol;
+  ctx.lineWidth = state === 'TRUE' ? 2.5 : 1.5;
+}
+
+function drawContact(ctx: Ctx, t: CanvasTheme, el: ContactElement, paint: ElementPaint, w: number) {
+  const cx = w / 2;
+  const a = cx - 12;
+  const b = cx + 12;
+  leads(ctx, t, a, b, w, paint.power);
   const h = 12;
+  symbolFill(ctx, t, paint, () => ctx.fillRect(a, WIRE_Y - h, b - a, 2 * h));
+  symbolStroke(ctx, t, paint);
   line(ctx, a, WIRE_Y - h, a, WIRE_Y + h);
   line(ctx, b, WIRE_Y - h, b, WIRE_Y + h);
   ctx.fillStyle = t.symbol;
@@ -91,16 +168,16 @@ function drawContact(ctx: Ctx, t: CanvasTheme, el: ContactElement, paint: Elemen
     case 'P':
     case 'N':
       ctx.font = FONT_BOLD;
-      ctx.fillText(el.contact, CELL_W / 2, WIRE_Y + 1);
+      ctx.fillText(el.contact, cx, WIRE_Y + 1);
       break;
     case 'NOT':
       ctx.font = '10px system-ui, sans-serif';
-      ctx.fillText('NOT', CELL_W / 2, WIRE_Y + 1);
+      ctx.fillText('NOT', cx, WIRE_Y + 1);
       break;
   }
   ctx.textBaseline = 'alphabetic';
-  if (el.contact !== 'NOT') nameAbove(ctx, t, el.variable, '???');
-  liveBelow(ctx, t, paint);
+  if (el.contact !== 'NOT') nameAbove(ctx, t, el.variable, '???', w);
+  liveBelow(ctx, t, paint.liveValue, cx, WIRE_Y + 16, w);
 }
 
 const COIL_LETTER: Record<CoilElement['coil'], string> = {
@@ -115,10 +192,16 @@ const COIL_LETTER: Record<CoilElement['coil'], string> = {
   N: 'N',
 };
 
-function drawCoil(ctx: Ctx, t: CanvasTheme, el: CoilElement, paint: ElementPaint) {
+function drawCoil(ctx: Ctx, t: CanvasTheme, el: CoilElement, paint: ElementPaint, w: number) {
   const r = 13;
-  const cx = CELL_W / 2;
-  leads(ctx, t, cx - r, cx + r, paint.power);
+  const cx = w / 2;
+  leads(ctx, t, cx - r, cx + r, w, paint.power);
+  symbolFill(ctx, t, paint, () => {
+    ctx.beginPath();
+    ctx.arc(cx, WIRE_Y, r - 1, 0, Math.PI * 2);
+    ctx.fill();
+  });
+  symbolStroke(ctx, t, paint);
   ctx.beginPath();
   ctx.arc(cx + 4, WIRE_Y, r + 1, Math.PI * 0.72, Math.PI * 1.28);
   ctx.stroke();
@@ -135,17 +218,21 @@ function drawCoil(ctx: Ctx, t: CanvasTheme, el: CoilElement, paint: ElementPaint
     ctx.fillText(letter, cx, WIRE_Y + 1);
     ctx.textBaseline = 'alphabetic';
   }
-  nameAbove(ctx, t, el.variable, '???');
-  liveBelow(ctx, t, paint);
+  nameAbove(ctx, t, el.variable, '???', w);
+  liveBelow(ctx, t, paint.liveValue, cx, WIRE_Y + 16, w);
 }
 
-function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint) {
+/** Where the instance name of a box is drawn (relative to the box's top-left cell corner). */
+export const INSTANCE_BASELINE = WIRE_Y - 30;
+const BOX_TOP = WIRE_Y - 24;
+
+function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint, w: number) {
   const layout = boxLayout(el, paint.library);
   const rows = layout?.rows ?? 1;
-  const w = CELL_W * 2;
-  const left = 18;
-  const right = w - 18;
-  const top = WIRE_Y - 24;
+  const m = layout ? boxMetrics(el, layout) : undefined;
+  const left = m?.left ?? BOX_MARGIN;
+  const right = w - (m?.rightMargin ?? BOX_MARGIN);
+  const top = BOX_TOP;
   const bottom = (rows - 1) * CELL_H + WIRE_Y + 14;
   ctx.fillStyle = t.boxFill;
   ctx.strokeStyle = layout ? t.symbol : t.error;
@@ -156,39 +243,37 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint) 
   ctx.textAlign = 'center';
   ctx.fillStyle = t.symbol;
   ctx.font = FONT_BOLD;
-  ctx.fillText(elide(ctx, el.blockType, right - left - 8), w / 2, top + 13);
+  const mid = (left + right) / 2;
+  fillName(ctx, el.blockType, mid, top + 13, right - left - 8);
   if (layout?.signature.kind === 'fb') {
     ctx.font = FONT;
     ctx.fillStyle = el.instance ? t.operand : t.muted;
-    ctx.fillText(elide(ctx, el.instance || '???', w - 8), w / 2, top - 6);
+    const name = el.instance || '???';
+    const half = Math.min(w, ctx.measureText(name).width + 8) / 2;
+    fillName(ctx, name, Math.max(half, Math.min(w - half, mid)), INSTANCE_BASELINE, w - 4);
   }
   if (!layout) return;
   const enEno = layout.signature.kind === 'function' || el.executionControl === true;
   const flowIn = enEno ? 'EN' : layout.inputs.find((p) => p.type === 'BOOL')?.name;
   const flowOut = enEno ? 'ENO' : layout.outputs.find((p) => p.type === 'BOOL')?.name;
-  ctx.font = FONT_SMALL;
   for (const pin of layout.inputs) {
     const y = pin.rowOffset * CELL_H + WIRE_Y;
-    const on = pin.name === flowIn && Boolean(paint.power && paint.power & 1);
-    ctx.strokeStyle = wireColour(t, on);
-    ctx.lineWidth = on ? 3 : 1.5;
-    line(ctx, 0, y, left, y);
+    wire(ctx, t, 0, left, y, pin.name === flowIn ? paint.power : undefined, 1);
+    ctx.font = FONT_SMALL;
     ctx.fillStyle = t.symbol;
     ctx.textAlign = 'left';
     ctx.fillText(pin.name, left + 4, y + 4);
-    const operand = el.inputs[pin.name];
+    const operand = el.inputs[pin.name] || (paint.openPins?.has(pin.name) ? '???' : '');
     if (operand) {
-      ctx.fillStyle = t.operand;
+      ctx.fillStyle = el.inputs[pin.name] ? t.operand : t.muted;
       ctx.textAlign = 'right';
-      ctx.fillText(elide(ctx, operand, CELL_W - 8), left - 2, y - 4);
+      fillName(ctx, operand, left - 3, y - 4, left - 6);
     }
   }
   for (const pin of layout.outputs) {
     const y = pin.rowOffset * CELL_H + WIRE_Y;
-    const on = pin.name === flowOut && Boolean(paint.power && paint.power & 2);
-    ctx.strokeStyle = wireColour(t, on);
-    ctx.lineWidth = on ? 3 : 1.5;
-    line(ctx, right, y, w, y);
+    wire(ctx, t, right, w, y, pin.name === flowOut ? paint.power : undefined, 2);
+    ctx.font = FONT_SMALL;
     ctx.fillStyle = t.symbol;
     ctx.textAlign = 'right';
     ctx.fillText(pin.name, right - 4, y + 4);
@@ -196,35 +281,24 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint) 
     if (operand) {
       ctx.fillStyle = t.operand;
       ctx.textAlign = 'left';
-      ctx.fillText(elide(ctx, operand, CELL_W - 8), right + 2, y - 4);
+      fillName(ctx, operand, right + 3, y - 4, w - right - 6);
     }
   }
-  if (paint.liveValue) {
-    ctx.font = FONT_SMALL;
-    ctx.textAlign = 'center';
-    ctx.fillStyle = t.energised;
-    ctx.fillText(elide(ctx, paint.liveValue, w - 8), w / 2, bottom + 12);
-  }
+  liveBelow(ctx, t, paint.liveValue, mid, bottom + 9, Math.max(right - left, w - 8));
 }
 
-function drawLink(ctx: Ctx, t: CanvasTheme, paint: ElementPaint) {
-  const on = Boolean(paint.power && paint.power & 1);
-  ctx.strokeStyle = wireColour(t, on);
-  ctx.lineWidth = on ? 3 : 1.5;
-  line(ctx, 0, WIRE_Y, CELL_W, WIRE_Y);
+function drawLink(ctx: Ctx, t: CanvasTheme, paint: ElementPaint, w: number) {
+  wire(ctx, t, 0, w, WIRE_Y, paint.power, 1);
 }
 
-/** Jump and return labels may run into the next cell: they end a rung, nothing sits right of them. */
-function drawJumpOrReturn(ctx: Ctx, t: CanvasTheme, text: string, paint: ElementPaint, missing: boolean) {
-  const on = Boolean(paint.power && paint.power & 1);
-  ctx.strokeStyle = wireColour(t, on);
-  ctx.lineWidth = on ? 3 : 1.5;
-  line(ctx, 0, WIRE_Y, 8, WIRE_Y);
-  ctx.font = `bold ${MONO_SMALL}`;
+/** Jump and return labels end a rung; their column is as wide as the label. */
+function drawJumpOrReturn(ctx: Ctx, t: CanvasTheme, text: string, paint: ElementPaint, missing: boolean, w: number) {
+  wire(ctx, t, 0, 8, WIRE_Y, paint.power, 1);
+  ctx.font = MONO_SMALL_BOLD;
   ctx.textAlign = 'left';
   ctx.textBaseline = 'middle';
   ctx.fillStyle = missing ? t.muted : t.symbol;
-  ctx.fillText(elide(ctx, text, CELL_W * 2 - 14), 10, WIRE_Y + 1);
+  fillName(ctx, text, 10, WIRE_Y + 1, w - 12);
   ctx.textBaseline = 'alphabetic';
 }
 
@@ -233,21 +307,21 @@ export function drawElement(ctx: Ctx, t: CanvasTheme, el: LdElement, paint: Elem
   ctx.lineCap = 'round';
   ctx.strokeStyle = t.symbol;
   ctx.lineWidth = 1.5;
+  const w = paint.width ?? CELL_W * (el.kind === 'box' ? 2 : 1);
   switch (el.kind) {
     case 'link':
-      return drawLink(ctx, t, paint);
+      return drawLink(ctx, t, paint, w);
     case 'contact':
-      return drawContact(ctx, t, el, paint);
+      return drawContact(ctx, t, el, paint, w);
     case 'coil':
-      return drawCoil(ctx, t, el, paint);
+      return drawCoil(ctx, t, el, paint, w);
     case 'box':
-      return drawBox(ctx, t, el, paint);
+      return drawBox(ctx, t, el, paint, w);
     case 'jump':
-      return drawJumpOrReturn(ctx, t, `>>${el.target || '???'}`, paint, !el.target);
     case 'return':
-      return drawJumpOrReturn(ctx, t, '<RETURN>', paint, false);
+      return drawJumpOrReturn(ctx, t, jumpText(el), paint, el.kind === 'jump' && !el.target, w);
     case 'connector':
     case 'continuation':
-      return drawConnection(ctx, t, el, paint);
+      return drawConnection(ctx, t, el, { ...paint, width: w });
   }
 }

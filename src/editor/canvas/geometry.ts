@@ -1,7 +1,21 @@
 // Cells to pixels and back. Model positions are cells (src/model/grid.ts); pixels live only here,
 // in unscaled content coordinates (zoom is applied by the stage and the header overlay).
 import type { Cell } from '../../model/grid';
+import type { BlockLibrary } from '../../model/library';
 import type { Network } from '../../model/project';
+import {
+  boundaryAtX,
+  colAtX,
+  colLeft,
+  displayCol,
+  modelBoundary,
+  modelCol,
+  networkColumns,
+  spanWidth,
+  type NetworkColumns,
+} from './columns';
+
+export { CELL_W } from './columns';
 
 /** A position in canvas content pixels (before zoom). Not a Cell. */
 export interface PixelPoint {
@@ -9,7 +23,6 @@ export interface PixelPoint {
   readonly y: number;
 }
 
-export const CELL_W = 72;
 export const CELL_H = 64;
 /** Height of the wire inside a cell, leaving room for the variable name above it. */
 export const WIRE_Y = 40;
@@ -32,7 +45,9 @@ export const gridHeight = (n: Pick<Network, 'rows' | 'collapsed'>): number =>
 
 export const networkHeight = (n: Network): number => headerHeight(n) + gridHeight(n) + NETWORK_GAP;
 
-export const networkWidth = (n: Pick<Network, 'cols'>): number => RAIL_X * 2 + n.cols * CELL_W;
+/** Width of a network's drawing: the rails and its columns (each as wide as its longest name). */
+export const networkWidth = (n: Network, library?: BlockLibrary): number =>
+  RAIL_X * 2 + networkColumns(n, library).xs[n.cols]!;
 
 export interface CanvasLayout {
   /** Top of each network (content pixels). */
@@ -40,9 +55,11 @@ export interface CanvasLayout {
   readonly heights: Float64Array;
   readonly totalHeight: number;
   readonly totalWidth: number;
+  /** The project's blocks the columns were measured with (user FB boxes and their pins). */
+  readonly library: BlockLibrary | undefined;
 }
 
-export function layoutNetworks(networks: readonly Network[]): CanvasLayout {
+export function layoutNetworks(networks: readonly Network[], library?: BlockLibrary): CanvasLayout {
   const tops = new Float64Array(networks.length);
   const heights = new Float64Array(networks.length);
   let y = 8;
@@ -51,9 +68,26 @@ export function layoutNetworks(networks: readonly Network[]): CanvasLayout {
     tops[i] = y;
     heights[i] = networkHeight(n);
     y += heights[i]!;
-    width = Math.max(width, networkWidth(n) + 40);
+    width = Math.max(width, networkWidth(n, library) + 40);
   });
-  return { tops, heights, totalHeight: y + 40, totalWidth: width };
+  return { tops, heights, totalHeight: y + 40, totalWidth: width, library };
+}
+
+/** The columns of network `n` as laid out (the layout's library). */
+export const columnsOf = (layout: CanvasLayout, n: Network): NetworkColumns => networkColumns(n, layout.library);
+
+/**
+ * A model cell's rectangle relative to the grid's top-left (a rail-aligned coil's cell is drawn in
+ * the last column); `cols` columns wide.
+ */
+export function cellRect(
+  nc: NetworkColumns,
+  cell: Cell,
+  cols = 1,
+  rows = 1,
+): { x: number; y: number; width: number; height: number } {
+  const d = displayCol(nc, cell.row, cell.col);
+  return { x: colLeft(nc, d), y: cell.row * CELL_H, width: spanWidth(nc, d, cols), height: rows * CELL_H };
 }
 
 /** Index of the network containing content y (the last one starting at or above y), -1 before the first. */
@@ -107,11 +141,19 @@ export function hitTest(layout: CanvasLayout, networks: readonly Network[], p: P
   const origin = gridOrigin(n);
   if (local < origin.y) return { area: 'header', index };
   if (n.collapsed || local > origin.y + n.rows * CELL_H + GRID_PAD_BOTTOM) return { area: 'none' };
+  const nc = columnsOf(layout, n);
   const gx = p.x - origin.x;
   const gy = local - origin.y;
   const row = Math.min(n.rows - 1, Math.max(0, Math.floor(gy / CELL_H)));
-  const col = Math.max(0, Math.floor(gx / CELL_W));
-  const boundary = Math.max(0, Math.min(n.cols, Math.round(gx / CELL_W)));
+  const col = modelCol(nc, row, colAtX(nc, gx));
   const wireRow = Math.max(0, Math.min(n.rows - 1, Math.floor((gy - WIRE_Y) / CELL_H)));
+  const boundary = modelBoundary(nc, wireRow, boundaryAtX(nc, gx));
   return { area: 'grid', index, cell: { row, col }, boundary, wireRow };
+}
+
+/** Content point of the middle of a model cell of network `index` (where a user clicks it). */
+export function cellCentre(layout: CanvasLayout, networks: readonly Network[], index: number, cell: Cell): PixelPoint {
+  const n = networks[index]!;
+  const r = cellRect(columnsOf(layout, n), cell);
+  return { x: RAIL_X + r.x + r.width / 2, y: layout.tops[index]! + headerHeight(n) + r.y + CELL_H / 2 };
 }

@@ -22,7 +22,8 @@ import { elementAt } from '../../store/networkEdits';
 import { needsName, placeAt, type EditorContext } from '../commands/editorActions';
 import { canMove, dropInto, type DragState } from './dragTargets';
 import { useEdgeScroll } from './useEdgeScroll';
-import { CELL_H, CELL_W, gridOrigin, hitTest, type CanvasLayout, type PixelPoint } from './geometry';
+import { colAtX, modelCol } from './columns';
+import { CELL_H, cellRect, columnsOf, gridOrigin, hitTest, type CanvasLayout, type PixelPoint } from './geometry';
 
 export type { DragState } from './dragTargets';
 
@@ -65,11 +66,18 @@ export interface PointerView {
   readonly library: BlockLibrary;
 }
 
-/** Cell offset of a content point from a start point, in whole cells (snapping). */
-const cellDelta = (a: PixelPoint, b: PixelPoint) => ({
-  dRow: Math.round((b.y - a.y) / CELL_H),
-  dCol: Math.round((b.x - a.x) / CELL_W),
-});
+/**
+ * Cell offset of a drag in network `n` from the grabbed cell: whole rows by the pointer's travel,
+ * and the model column under the pointer in the target row (columns differ in width; the wire
+ * drawn on to a rail-aligned coil counts as the coil's cell).
+ */
+function cellDelta(layout: CanvasLayout, n: Network, startCell: Cell, a: PixelPoint, b: PixelPoint) {
+  const dRow = Math.round((b.y - a.y) / CELL_H);
+  const nc = columnsOf(layout, n);
+  const row = Math.max(0, Math.min(n.rows - 1, startCell.row + dRow));
+  const col = modelCol(nc, row, colAtX(nc, b.x - gridOrigin(n).x));
+  return { dRow, dCol: col - startCell.col };
+}
 
 const sameDrag = (a: DragState | undefined, b: DragState | undefined) =>
   a === b ||
@@ -120,7 +128,7 @@ export function useCanvasPointer(
       if (!d) return undefined;
       return { ...base, blocked: d.blocked, into: { network: target.id, ...d } };
     }
-    const { dRow, dCol } = cellDelta(start, p);
+    const { dRow, dCol } = cellDelta(layout, n, startCell, start, p);
     return { ...base, dRow, dCol, blocked: !canMove(n, ids, dRow, dCol, view.current.library) };
   };
 
@@ -271,10 +279,12 @@ export function useCanvasPointer(
       const x2 = Math.max(m.start.x, p.x) - o.x;
       const y1 = Math.min(m.start.y, p.y) - top;
       const y2 = Math.max(m.start.y, p.y) - top;
+      const nc = columnsOf(layout, n);
       const inside = n.elements.filter((el) => {
         const s = elementSize(el, view.current.library);
-        const cx = (el.col + s.cols / 2) * CELL_W;
-        const cy = (el.row + s.rows / 2) * CELL_H;
+        const r = cellRect(nc, el, s.cols, s.rows);
+        const cx = r.x + r.width / 2;
+        const cy = r.y + r.height / 2;
         return cx >= x1 && cx <= x2 && cy >= y1 && cy <= y2;
       });
       const ui = ctx.ui.getState();

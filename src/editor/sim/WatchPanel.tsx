@@ -7,6 +7,7 @@ import { fieldInputAddress, fieldInputWords } from '../hardware/fieldIo';
 import { useGateway } from '../hardware/useGateway';
 import { forcedText, liveText } from './liveValues';
 import { useSim, useSimStore } from './simContext';
+import { ForcedBadge } from '../theme/ForcedBadge';
 import { useWatchCandidates } from './useWatchCandidates';
 import { VariablePicker } from './VariablePicker';
 import './sim.css';
@@ -73,7 +74,7 @@ function WatchRow({ name, variable }: { name: string; variable: SimVariable | un
       <td className={forced !== undefined ? 'rs-sim-forced' : undefined} data-testid="watch-value"
         title={forced !== undefined ? `forced to ${forced}` : undefined}>
         {value ?? '—'}
-        {forced !== undefined && <span className="rs-sim-forced-tag"> F</span>}
+        {forced !== undefined && <ForcedBadge title={`forced to ${forced}`} />}
         {device !== undefined && (
           <span className="rs-sim-device-tag" data-testid="watch-device" title="The value the device holds now">
             {' '}

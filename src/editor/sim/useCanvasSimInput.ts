@@ -40,7 +40,7 @@ export function useCanvasSimInput(): void {
       const zoom = ui.getState().viewport.zoom;
       const rect = scroller.getBoundingClientRect();
       const point = { x: (e.clientX - rect.left + scroller.scrollLeft) / zoom, y: (e.clientY - rect.top + scroller.scrollTop) / zoom };
-      const hit = hitTest(layoutNetworks(networks), networks, point);
+      const hit = hitTest(layoutNetworks(networks, selectLibrary(documents.getState())), networks, point);
       if (hit.area !== 'grid') return undefined;
       const network = networks[hit.index];
       // With the project's blocks: a user FB's box covers all its cells.

@@ -15,6 +15,8 @@ export interface CanvasTheme {
   readonly error: string;
   readonly warning: string;
   readonly energised: string;
+  /** A FALSE value while simulating (wires, symbols and value tags; drawn thin and hollow too). */
+  readonly falseState: string;
   readonly boxFill: string;
   readonly networkBg: string;
   /** Forced variables (simulation). */
@@ -37,6 +39,7 @@ const KEYS: Record<keyof CanvasTheme, string> = {
   error: '--canvas-error',
   warning: '--canvas-warning',
   energised: '--canvas-energised',
+  falseState: '--canvas-false',
   boxFill: '--canvas-box-fill',
   networkBg: '--canvas-network-bg',
   forced: '--forced',
