@@ -10,7 +10,7 @@ import { selectNetworks, useDocument, useDocumentStore } from '../../store/docum
 import { useUi, useUiStore } from '../../store/uiStore';
 import { advancePast, type EditorContext } from '../commands/editorActions';
 import { VariableInput } from '../inspector/VariableInput';
-import { CELL_H, CELL_W, headerHeight, RAIL_X, type CanvasLayout } from './geometry';
+import { CELL_H, cellRect, columnsOf, headerHeight, RAIL_X, type CanvasLayout } from './geometry';
 
 export interface InlineEditorProps {
   readonly layout: CanvasLayout;
@@ -83,9 +83,10 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
     close(true);
   };
 
-  const x = (RAIL_X + el.col * CELL_W) * zoom;
+  const cell = cellRect(columnsOf(layout, network), el);
+  const x = (RAIL_X + cell.x) * zoom;
   const y = (layout.tops[index]! + headerHeight(network) + el.row * CELL_H + 4) * zoom;
-  const width = Math.max(140, CELL_W * zoom + 40);
+  const width = Math.max(140, cell.width * zoom + 40);
   const style = { left: x - 20, top: y, width };
   const what =
     el.kind === 'box'
