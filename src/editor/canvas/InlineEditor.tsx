@@ -1,7 +1,8 @@
 // The name field that opens over an element on the canvas (after placing it, Enter, or a
 // double-click): the variable of a contact or coil, the instance of a function block, the
 // label a jump goes to. Enter commits (or keeps an unchanged name) and moves the cursor on;
-// Escape or clicking elsewhere leaves the name as it was.
+// Escape or clicking elsewhere leaves the name as it was. Naming an element right after placing it
+// joins the placing's undo step. On a box, Tab goes on to its pin operands (PinOperandEditor).
 import { useEffect, useMemo } from 'react';
 import type { LdElement } from '../../model/elements';
 import type { NetworkId } from '../../model/ids';
@@ -9,7 +10,10 @@ import { connectionNamesFor, isConnection, renameConnection } from '../../store/
 import { selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
 import { useUi, useUiStore } from '../../store/uiStore';
 import { advancePast, type EditorContext } from '../commands/editorActions';
-import { VariableInput } from '../inspector/VariableInput';
+import { tabToField } from '../commands/pinActions';
+import { VariableInput, type EndKey } from '../inspector/VariableInput';
+import { PinOperandEditor } from './PinOperandEditor';
+import { INSTANCE_FIELD } from './pinOperands';
 import { CELL_H, cellRect, columnsOf, headerHeight, RAIL_X, type CanvasLayout } from './geometry';
 
 export interface InlineEditorProps {
@@ -74,13 +78,20 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
     }
     onDone();
   };
-  const commit = (text: string) => {
+  const join = editing?.joinUndo;
+  const moveOn = (how: EndKey | undefined) =>
+    how === 'tab' || how === 'backtab'
+      ? tabToField(ctx, network.id as NetworkId, el.id, INSTANCE_FIELD, how === 'backtab')
+      : close(true);
+  const commit = (text: string, how?: EndKey) => {
     const name = text.trim();
     if (el.kind === 'contact' || el.kind === 'coil') doc.getState().updateElement(el.id, { variable: name });
     else if (el.kind === 'box') doc.getState().updateElement(el.id, { instance: name });
     else if (el.kind === 'jump') doc.getState().updateElement(el.id, { target: name });
     else if (isConnection(el)) renameConnection(doc, el.id, name);
-    close(true);
+    if (join) doc.getState().joinSince(join, 'placeElement');
+    if (el.kind === 'box') moveOn(how);
+    else close(true);
   };
 
   const cell = cellRect(columnsOf(layout, network), el);
@@ -97,6 +108,20 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
           ? `Name of the ${el.kind}`
           : `Variable of the ${el.kind}`;
 
+  if (editing?.pin !== undefined && el.kind === 'box') {
+    return (
+      <PinOperandEditor
+        box={el}
+        network={network}
+        pin={editing.pin}
+        left={x}
+        width={cell.width * zoom}
+        top={y}
+        zoom={zoom}
+        close={close}
+      />
+    );
+  }
   if (el.kind === 'jump' || isConnection(el)) {
     const options = isConnection(el) ? connectionNamesFor(network, el) : labels;
     return (
@@ -137,11 +162,17 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
         role={role}
         autoFocus
         commitOnBlur={false}
+        tabMoves={el.kind === 'box'}
         aria-label={what}
         data-testid="inline-editor"
         placeholder={el.kind === 'box' ? 'instance' : 'variable'}
         onCommit={commit}
-        onCancel={(how) => close(how === 'enter')}
+        onCancel={(how) => {
+          if (how === 'tab' || how === 'backtab') moveOn(how);
+          // A blur after Tab moved to a pin (this field going away) ends nothing.
+          else if (how !== 'blur' || (ui.getState().editing?.element === el.id && !ui.getState().editing?.pin))
+            close(how === 'enter');
+        }}
       />
     </div>
   );

@@ -9,6 +9,7 @@ import type { Network } from '../../model/project';
 import { selectNetworks, type DocumentStore } from '../../store/documentStore';
 import { elementAt, type ElementTemplate } from '../../store/networkEdits';
 import type { CursorCell, UiStore } from '../../store/uiStore';
+import { editBox } from './pinActions';
 
 export interface EditorContext {
   readonly doc: DocumentStore;
@@ -65,7 +66,8 @@ export function placeAt(
   const el = networkById(ctx, network)?.elements.find((e) => e.id === id);
   if (!el) return id;
   ui.setCursor({ network, row: el.row, col: el.col });
-  if (needsName(el)) ui.startEditing(id);
+  // Naming it right away joins the placing's undo step.
+  if (needsName(el)) ui.startEditing(id, { joinUndo: ctx.doc.getState().lastStep() });
   else advancePast(ctx, network, el);
   return id;
 }
@@ -164,16 +166,14 @@ export function duplicateTargets(ctx: EditorContext) {
   ctx.ui.getState().select(t.network, ids);
 }
 
-/** Enter: edit the name of the element under the cursor (or the single selected element). */
+/** Enter: edit the name of the element under the cursor (or the single selected element); on a box, its first open pin operand. */
 export function editAtCursor(ctx: EditorContext) {
   const t = targets(ctx);
   const n = t && networkById(ctx, t.network);
   const el = n?.elements.find((e) => e.id === t?.ids[0]);
-  if (!el) return;
-  if (!needsName(el))
-    return ctx.ui
-      .getState()
-      .setStatus(el.kind === 'box' ? 'Edit the pins in the Inspector.' : 'This element has no name to edit.');
+  if (!n || !el) return;
+  if (el.kind === 'box') return editBox(ctx, n, el);
+  if (!needsName(el)) return ctx.ui.getState().setStatus('This element has no name to edit.');
   ctx.ui.getState().startEditing(el.id);
 }
 

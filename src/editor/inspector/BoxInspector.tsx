@@ -6,18 +6,7 @@ import { declaredPinType } from '../../model/library';
 import { selectLibrary, useDocument, useDocumentStore } from '../../store/documentStore';
 import { BindingField } from './BindingField';
 import { CommitInput } from '../variables/CommitInput';
-
-/** Operands with `pin` set to `text`, or removed when the text is empty. */
-function withOperand(
-  rec: Readonly<Record<string, string>>,
-  pin: string,
-  text: string,
-): Record<string, string> {
-  const out = { ...rec };
-  if (text.trim() === '') delete out[pin];
-  else out[pin] = text.trim();
-  return out;
-}
+import { withOperand } from '../canvas/pinOperands';
 
 export function BoxInspector({ box }: { box: BoxElement }) {
   const store = useDocumentStore();
