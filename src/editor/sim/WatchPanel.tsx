@@ -1,5 +1,9 @@
 // Watch table: chosen variables with live values; write a value once, force or unforce it, trend it.
-import { useState } from 'react';
+// A structure or array (or FB instance) is a tree row whose members expand below it (collapsed at
+// first), each watchable, writable and forceable by its path (`P.X`, `A[2]`); an enumeration shows
+// and is written by value name.
+import { useMemo, useState } from 'react';
+import { selectProject, useDocument } from '../../store/documentStore';
 import type { SimVariable } from '../../sim/protocol';
 import type { SimState } from '../../store/simStore';
 import { useDeviceMark } from '../hardware/deviceMarks';
@@ -10,6 +14,7 @@ import { useSim, useSimStore } from './simContext';
 import { ForcedBadge } from '../theme/ForcedBadge';
 import { useWatchCandidates } from './useWatchCandidates';
 import { VariablePicker } from './VariablePicker';
+import { aggregateCandidates, enumText, leafCount, modelLeaf, watchTree, type WatchNode } from './watchTree';
 import './sim.css';
 
 const selectWatch = (s: SimState) => s.watch;
@@ -19,7 +24,10 @@ export function WatchPanel() {
   const sim = useSimStore();
   const watch = useSim(selectWatch);
   const forcedCount = useSim(selectForcedCount);
-  const candidates = useWatchCandidates();
+  const readable = useWatchCandidates();
+  const project = useDocument(selectProject);
+  // Readable names, then the struct/array variables (watched as trees of their members).
+  const candidates = useMemo(() => [...readable, ...aggregateCandidates(project, readable)], [readable, project]);
   const add = (text: string) => {
     const name = text.trim();
     if (!name) return;
@@ -44,9 +52,16 @@ export function WatchPanel() {
             <tr><th>Variable</th><th>Type</th><th>Value</th><th>New value</th><th /></tr>
           </thead>
           <tbody>
-            {watch.map((name) => (
-              <WatchRow key={name} name={name} variable={candidates.find((c) => c.name.toUpperCase() === name.toUpperCase())} />
-            ))}
+            {watch.map((name) => {
+              const variable = readable.find((c) => c.name.toUpperCase() === name.toUpperCase());
+              const members = variable ? [] : watchTree(name, readable);
+              return members.length > 0 ? (
+                <WatchGroup key={name} node={{ path: name, label: name, children: members }} depth={0}
+                  type={candidates.find((c) => c.name.toUpperCase() === name.toUpperCase())?.type} />
+              ) : (
+                <WatchRow key={name} name={name} variable={variable} />
+              );
+            })}
           </tbody>
         </table>
       )}
@@ -54,22 +69,66 @@ export function WatchPanel() {
   );
 }
 
-function WatchRow({ name, variable }: { name: string; variable: SimVariable | undefined }) {
-  const type = variable?.type ?? '?';
+/** A structure, array or instance row: ▸ expands its members (groups nest); × stops watching a top row. */
+function WatchGroup({ node, depth, type }: { node: WatchNode; depth: number; type?: string | undefined }) {
+  const sim = useSimStore();
+  const [open, setOpen] = useState(false);
+  const count = leafCount(node.children);
+  return (
+    <>
+      <tr data-testid={`watch-row-${node.path}`} className="rs-watch-group">
+        <td style={{ paddingLeft: `${depth * 14 + 2}px` }}>
+          <button type="button" className="rs-sim-icon rs-watch-toggle" aria-expanded={open}
+            aria-label={`${open ? 'Collapse' : 'Expand'} ${node.path}`} data-testid="watch-expand" onClick={() => setOpen(!open)}>
+            {open ? '▾' : '▸'}
+          </button>{' '}
+          {node.label}
+        </td>
+        <td>{type ?? ''}</td>
+        <td colSpan={2}>{count} value{count === 1 ? '' : 's'}</td>
+        <td className="rs-sim-actions">
+          {depth === 0 && (
+            <button type="button" className="rs-sim-icon" aria-label={`Stop watching ${node.path}`}
+              onClick={() => sim.getState().removeWatch(node.path)}>×</button>
+          )}
+        </td>
+      </tr>
+      {open &&
+        node.children.map((child) =>
+          child.leaf ? (
+            <WatchRow key={child.path} name={child.path} variable={child.leaf} depth={depth + 1} label={child.label} />
+          ) : (
+            <WatchGroup key={child.path} node={child} depth={depth + 1} />
+          ),
+        )}
+    </>
+  );
+}
+
+function WatchRow({ name, variable, depth = 0, label }: { name: string; variable: SimVariable | undefined; depth?: number; label?: string }) {
+  const project = useDocument(selectProject);
+  const leaf = modelLeaf(project, name);
+  const enumValues = leaf?.enumValues;
+  const type = leaf && leaf.typeName.toUpperCase() !== leaf.type ? leaf.typeName : (variable?.type ?? '?');
   const pin = variable?.role === 'pin';
   const sim = useSimStore();
-  const value = useSim((s) => liveText(s, name));
-  const forced = useSim((s) => forcedText(s, name));
+  const value = enumText(leaf, useSim((s) => liveText(s, name)));
+  const forced = enumText(leaf, useSim((s) => forcedText(s, name)));
   const inTrend = useSim((s) => s.trendNames.some((n) => n.toUpperCase() === name.toUpperCase()));
   const device = useDeviceMark(name);
   // With hardware attached a field input comes from the device: no one-off write, only a confirmed force.
   const field = fieldInputAddress(variable, useGateway());
   const [confirmForce, setConfirmForce] = useState(false);
   const [text, setText] = useState('');
-  const input = () => ({ text: text.trim() || (type === 'BOOL' ? (value === 'TRUE' ? 'FALSE' : 'TRUE') : '') });
+  const input = () => {
+    // An enumeration value is stored as its index.
+    const index = enumValues?.findIndex((v) => v.toUpperCase() === text.trim().toUpperCase()) ?? -1;
+    if (index >= 0) return { value: index };
+    return { text: text.trim() || (type === 'BOOL' ? (value === 'TRUE' ? 'FALSE' : 'TRUE') : '') };
+  };
   return (
     <tr data-testid={`watch-row-${name}`}>
-      <td>{name}</td>
+      <td style={depth > 0 ? { paddingLeft: `${depth * 14 + 18}px` } : undefined} title={name}>{label ?? name}</td>
       <td>{type}</td>
       <td className={forced !== undefined ? 'rs-sim-forced' : undefined} data-testid="watch-value"
         title={forced !== undefined ? `forced to ${forced}` : undefined}>
@@ -83,9 +142,17 @@ function WatchRow({ name, variable }: { name: string; variable: SimVariable | un
         )}
       </td>
       <td>
-        <input className="rs-sim-text rs-sim-narrow" aria-label={`New value for ${name}`} value={text}
+{enumValues ? (
+          <select className="rs-sim-text rs-sim-narrow" aria-label={`New value for ${name}`} value={text}
+            onChange={(e) => setText(e.target.value)} data-testid="watch-input">
+            <option value="">(value)</option>
+            {enumValues.map((v) => <option key={v} value={v}>{v}</option>)}
+          </select>
+        ) : (
+                <input className="rs-sim-text rs-sim-narrow" aria-label={`New value for ${name}`} value={text}
           placeholder={type === 'BOOL' ? 'TRUE/FALSE' : type} onChange={(e) => setText(e.target.value)}
           onKeyDown={(e) => e.key === 'Enter' && !field && sim.getState().write(name, input())} data-testid="watch-input" />
+        )}
       </td>
       <td className="rs-sim-actions">
         <button type="button" className="rs-sim-btn" disabled={field !== undefined}
