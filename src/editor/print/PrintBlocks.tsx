@@ -35,7 +35,16 @@ export function TableHead({ table }: { readonly table: string }) {
   );
 }
 
-export function PrintBlockView({ item, drawing }: { readonly item: PrintItem; readonly drawing?: NetworkDrawing }) {
+export function PrintBlockView({
+  item,
+  drawing,
+  frameOnly,
+}: {
+  readonly item: PrintItem;
+  readonly drawing?: NetworkDrawing;
+  /** Measuring: the grid's room without its drawing. */
+  readonly frameOnly?: boolean;
+}) {
   switch (item.kind) {
     case 'pou':
       return (
@@ -58,7 +67,7 @@ export function PrintBlockView({ item, drawing }: { readonly item: PrintItem; re
             className="rs-print-net-grid"
             role="img"
             aria-label={`Network ${item.index + 1} of ${item.pou.name}`}
-            dangerouslySetInnerHTML={{ __html: drawing?.svg ?? '' }}
+            dangerouslySetInnerHTML={{ __html: (frameOnly ? drawing?.frame : drawing?.svg) ?? '' }}
           />
         </div>
       );

@@ -200,7 +200,7 @@ export function PrintView({
               </div>
               {items.map((item, i) => (
                 <div key={item.key} data-block={i} className="rs-print-block">
-                  <PrintBlockView item={item} {...(drawings[i] ? { drawing: drawings[i] } : {})} />
+                  <PrintBlockView item={item} {...(drawings[i] ? { drawing: drawings[i] } : {})} frameOnly />
                 </div>
               ))}
             </div>

@@ -84,7 +84,7 @@ function xrefRows(project: Project, pous: readonly Pou[], whole: boolean): XrefR
     const r = row('globals', v, 'Global');
     if (whole || r.count > 0) rows.push(r);
   }
-  return rows.sort((a, b) => a.name.localeCompare(b.name, 'en', { sensitivity: 'base' }) || a.declaredIn.localeCompare(b.declaredIn));
+  return rows.sort((a, b) => a.name.localeCompare(b.name, 'en', { sensitivity: 'base', numeric: true }) || a.declaredIn.localeCompare(b.declaredIn));
 }
 
 /** The POUs the options print: the chosen one, or all of them in project order. */

@@ -47,6 +47,10 @@ export const escapeXml = (s: string) =>
 
 const colour = (style: unknown) => (typeof style === 'string' ? style : '#000');
 
+/** An <svg> element of the given size around `content` (empty: a frame that takes the room only). */
+export const svgFrame = (width: number, height: number, attrs = '', content = '') =>
+  `<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 ${num(width)} ${num(height)}" width="${num(width)}" height="${num(height)}"${attrs ? ` ${attrs}` : ''}>${content}</svg>`;
+
 export class SvgContext {
   private state: State = {
     fillStyle: '#000',
@@ -229,7 +233,7 @@ export class SvgContext {
 
   /** The drawing as SVG markup of the given size (user units = CSS px). */
   toSvg(width: number, height: number, attrs = ''): string {
-    return `<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 ${num(width)} ${num(height)}" width="${num(width)}" height="${num(height)}"${attrs ? ` ${attrs}` : ''}>${this.out.join('')}</svg>`;
+    return svgFrame(width, height, attrs, this.out.join(''));
   }
 }
 
