@@ -34,7 +34,6 @@ const NOT_YET: Readonly<Record<string, string>> = {
     "CounterLD's wiring cannot be drawn exactly on the grid (SEL.G fed from a contact below the ADD box that feeds SEL.IN0)",
   'beremiz__legacy_tc6v10_test_master_DS401GUI.xml':
     'its only PROGRAM, MAIN_TEST, is a legacy v1.0 FBD body and calls Test_SFC, whose variables have the user data type MYTYPE (LD-E15)',
-  'beremiz__svghmi_traffic_light.xml': 'main_program declares its lamps and buttons with the user data type HMI_BOOL (LD-E15)',
   // Facts of the files (the corpus test's EXPLAINED rules): they run only with their vendor's runtime.
   'gracesrm__OpenSWat.xml': 'the sensors sit at %IW0.0/%IW0.1, an address form IEC does not have (LD-E12)',
   'openplc-editor__Arduino_7_Segments.xml':
