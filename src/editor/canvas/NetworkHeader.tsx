@@ -5,6 +5,7 @@ import type { Network } from '../../model/project';
 import { useDocumentStore } from '../../store/documentStore';
 import { useUi, useUiStore } from '../../store/uiStore';
 import { clickNetwork } from '../commands/networkActions';
+import { useCommitField } from '../variables/CommitInput';
 import { commentLines, COMMENT_LINE_H, headerHeight, RAIL_X } from './geometry';
 import { NetworkSimMarker } from '../sim/NetworkSimMarker';
 import '../outline/outline.css';
@@ -21,43 +22,31 @@ interface FieldProps {
   readonly multiline?: number;
 }
 
-/** A field that edits locally and commits once, on Enter (Ctrl+Enter in a comment) or leaving it; Escape reverts. */
+/**
+ * A field that edits locally and commits once, on Enter or leaving it (a comment takes a new line
+ * with Shift+Enter); Escape reverts. Enter and Escape give the keyboard back to the canvas.
+ */
 function CommitField({ value, onCommit, label, testId, placeholder, className, multiline }: FieldProps) {
-  const [draft, setDraft] = useState<string | undefined>(undefined);
-  const commit = () => {
-    if (draft !== undefined && draft !== value) onCommit(draft);
-    setDraft(undefined);
-  };
-  const onKeyDown = (e: KeyboardEvent<HTMLInputElement | HTMLTextAreaElement>) => {
-    e.stopPropagation();
-    if (e.key === 'Escape') {
-      setDraft(undefined);
-      e.currentTarget.blur();
-    } else if (e.key === 'Enter' && (!multiline || e.ctrlKey || e.metaKey)) {
-      e.preventDefault();
-      commit();
-      e.currentTarget.blur();
-    }
-  };
+  const field = useCommitField<HTMLInputElement | HTMLTextAreaElement>(value, onCommit, {
+    multiline: Boolean(multiline),
+    leaveOnEnter: true,
+  });
   const common = {
+    ...field,
     'aria-label': label,
     'data-testid': testId,
     placeholder,
     className,
-    value: draft ?? value,
     spellCheck: false,
-    onBlur: commit,
-    onKeyDown,
+    onKeyDown: (e: KeyboardEvent<HTMLInputElement | HTMLTextAreaElement>) => {
+      e.stopPropagation();
+      field.onKeyDown(e);
+    },
   };
   return multiline ? (
-    <textarea
-      {...common}
-      rows={multiline}
-      style={{ height: multiline * COMMENT_LINE_H }}
-      onChange={(e) => setDraft(e.target.value)}
-    />
+    <textarea {...common} rows={multiline} style={{ height: multiline * COMMENT_LINE_H }} />
   ) : (
-    <input {...common} onChange={(e) => setDraft(e.target.value)} />
+    <input {...common} />
   );
 }
 

@@ -2,7 +2,7 @@
 import { elementSize } from '../../model/factory';
 import type { Network } from '../../model/project';
 import { selectLibrary, useDocument, useDocumentStore } from '../../store/documentStore';
-import { CommitInput } from '../variables/CommitInput';
+import { CommitInput, CommitTextArea } from '../variables/CommitInput';
 import { labelProblem } from './networkLabel';
 
 export function NetworkInspector({
@@ -63,11 +63,10 @@ export function NetworkInspector({
       </div>
       <div className="rs-field">
         <label htmlFor={`comment-${network.id}`}>Comment</label>
-        <textarea
+        <CommitTextArea
           id={`comment-${network.id}`}
-          key={`${network.id}:${network.comment}`}
-          defaultValue={network.comment}
-          onBlur={(e) => e.target.value !== network.comment && update({ comment: e.target.value })}
+          value={network.comment}
+          onCommit={(comment) => update({ comment })}
         />
       </div>
       <div className="rs-field">

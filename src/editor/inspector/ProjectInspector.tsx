@@ -1,7 +1,7 @@
 // Nothing selected: the project itself (name, description, semantics profile).
 import type { Profile } from '../../model/project';
 import { selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
-import { CommitInput } from '../variables/CommitInput';
+import { CommitInput, CommitTextArea } from '../variables/CommitInput';
 
 export function ProjectInspector() {
   const store = useDocumentStore();
@@ -35,14 +35,10 @@ export function ProjectInspector() {
       </div>
       <div className="rs-field">
         <label htmlFor="project-description">Description</label>
-        <textarea
+        <CommitTextArea
           id="project-description"
-          key={project.description}
-          defaultValue={project.description}
-          onBlur={(e) =>
-            e.target.value !== project.description &&
-            store.getState().updateProject({ description: e.target.value })
-          }
+          value={project.description}
+          onCommit={(description) => store.getState().updateProject({ description })}
         />
       </div>
     </div>

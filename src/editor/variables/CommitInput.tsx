@@ -1,38 +1,88 @@
-// A text field that edits a document value as one step: typing changes only a draft; Enter or
-// leaving the field commits it, Escape restores the document value.
-import { useState, type InputHTMLAttributes } from 'react';
+// Text fields that edit a document value as one step: typing changes only a draft; Enter or
+// leaving the field commits it (Shift+Enter is a new line in a multi-line field), Escape restores
+// the document value and leaves the field, giving the keyboard back to the canvas.
+import {
+  useRef,
+  useState,
+  type InputHTMLAttributes,
+  type KeyboardEvent,
+  type TextareaHTMLAttributes,
+} from 'react';
+import { focusCanvas } from '../canvas/focusCanvas';
 
-type Props = Omit<InputHTMLAttributes<HTMLInputElement>, 'value' | 'onChange' | 'defaultValue'> & {
+type Field = HTMLInputElement | HTMLTextAreaElement;
+
+export interface CommitOptions {
+  /** Shift+Enter inserts a new line; Enter alone still commits. */
+  readonly multiline?: boolean;
+  /** Enter also leaves the field for the canvas (the network header's title and comment). */
+  readonly leaveOnEnter?: boolean;
+}
+
+/** The value, change, key and blur handlers of a field that commits once (see the file comment). */
+export function useCommitField<E extends Field>(
+  value: string,
+  onCommit: (text: string) => void,
+  { multiline = false, leaveOnEnter = false }: CommitOptions = {},
+) {
+  const [draft, setDraft] = useState<string | undefined>(undefined);
+  /** Set while Escape moves the focus away: that blur must not commit. */
+  const reverting = useRef(false);
+  const commit = () => {
+    if (!reverting.current && draft !== undefined && draft !== value) onCommit(draft);
+    setDraft(undefined);
+  };
+  return {
+    value: draft ?? value,
+    onChange: (e: { target: { value: string } }) => setDraft(e.target.value),
+    onKeyDown: (e: KeyboardEvent<E>) => {
+      if (e.key === 'Enter' && !(multiline && e.shiftKey)) {
+        e.preventDefault();
+        commit();
+        if (leaveOnEnter) focusCanvas(e.currentTarget);
+      } else if (e.key === 'Escape') {
+        e.preventDefault();
+        setDraft(undefined);
+        reverting.current = true;
+        focusCanvas(e.currentTarget);
+        reverting.current = false;
+      }
+    },
+    onBlur: commit,
+  };
+}
+
+type InputProps = Omit<InputHTMLAttributes<HTMLInputElement>, 'value' | 'onChange' | 'defaultValue'> & {
   readonly value: string;
   readonly onCommit: (text: string) => void;
 };
 
-export function CommitInput({ value, onCommit, onKeyDown, onBlur, ...rest }: Props) {
-  const [draft, setDraft] = useState<string | undefined>(undefined);
-  const commit = () => {
-    if (draft !== undefined && draft !== value) onCommit(draft);
-    setDraft(undefined);
-  };
+export function CommitInput({ value, onCommit, onKeyDown, onBlur, ...rest }: InputProps) {
+  const field = useCommitField<HTMLInputElement>(value, onCommit);
   return (
     <input
       {...rest}
-      value={draft ?? value}
-      onChange={(e) => setDraft(e.target.value)}
+      value={field.value}
+      onChange={field.onChange}
       onKeyDown={(e) => {
         onKeyDown?.(e);
-        if (e.defaultPrevented) return;
-        if (e.key === 'Enter') {
-          e.preventDefault();
-          commit();
-        } else if (e.key === 'Escape') {
-          e.preventDefault();
-          setDraft(undefined);
-        }
+        if (!e.defaultPrevented) field.onKeyDown(e);
       }}
       onBlur={(e) => {
-        commit();
+        field.onBlur();
         onBlur?.(e);
       }}
     />
   );
+}
+
+type AreaProps = Omit<TextareaHTMLAttributes<HTMLTextAreaElement>, 'value' | 'onChange' | 'defaultValue'> & {
+  readonly value: string;
+  readonly onCommit: (text: string) => void;
+};
+
+/** A multi-line CommitInput: Enter commits, Shift+Enter is a new line. */
+export function CommitTextArea({ value, onCommit, ...rest }: AreaProps) {
+  const field = useCommitField<HTMLTextAreaElement>(value, onCommit, { multiline: true });
+  return <textarea {...rest} {...field} />;
 }
