@@ -47,6 +47,26 @@ export function withDefaultName(n: Network, t: ElementTemplate): ElementTemplate
   return { ...t, name: defaultConnectionName(n, t.kind) };
 }
 
+/**
+ * Elements pasted into network `n`: a pasted connector whose name the network already uses gets
+ * the next free name, and the continuations pasted with it follow, so a copied pair stays a pair
+ * and the original keeps its own (one connector per name, LD-R14). Other pasted continuations
+ * keep their names: they read the network's connector of that name.
+ */
+export function renamePastedConnectors<T extends LdElement>(n: Network, pasted: readonly T[]): T[] {
+  const taken = (name: string) => n.elements.some((e) => e.kind === 'connector' && key(e.name) === key(name));
+  const renames = new Map<string, string>();
+  let scratch: Network = n;
+  for (const el of pasted) {
+    if (el.kind !== 'connector' || !key(el.name) || !taken(el.name) || renames.has(key(el.name))) continue;
+    const name = defaultConnectionName(scratch, 'connector');
+    renames.set(key(el.name), name);
+    scratch = { ...scratch, elements: [...scratch.elements, { ...el, name }] };
+  }
+  if (renames.size === 0) return [...pasted];
+  return pasted.map((el) => (isConnection(el) && renames.has(key(el.name)) ? { ...el, name: renames.get(key(el.name))! } : el));
+}
+
 /** The other side(s) of a connector or continuation in its network, in grid order. */
 export function partnersOf(n: Network, el: LdElement): ConnectionElement[] {
   if (!isConnection(el) || !key(el.name)) return [];

@@ -17,7 +17,7 @@ import { STANDARD_LIBRARY, type BlockLibrary } from '../model/library';
 import type { LdElement, VLink } from '../model/elements';
 import { elementCells, elementSize } from '../model/factory';
 import { cellKey, type Cell } from '../model/grid';
-import { withDefaultName } from './connectors';
+import { renamePastedConnectors, withDefaultName } from './connectors';
 import type { ElementId } from '../model/ids';
 import type { Network } from '../model/project';
 
@@ -364,7 +364,10 @@ export function pasteElements(
     ...n.vlinks.map((v) => v.row + 2),
   );
   const row = fits(at.row) ? at.row : below;
-  const pasted = clip.elements.map((e) => ({ ...e, id: newId(), row: e.row + row, col: e.col + at.col }));
+  const pasted = renamePastedConnectors(
+    n,
+    clip.elements.map((e) => ({ ...e, id: newId(), row: e.row + row, col: e.col + at.col })),
+  );
   const occ = occupancy(n, undefined, lib);
   const replaced = new Set<ElementId>();
   for (const el of pasted)

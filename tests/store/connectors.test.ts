@@ -13,7 +13,7 @@ import {
   type ConnectionElement,
 } from '../../src/store/connectors';
 import { createDocumentStore, selectNetworks } from '../../src/store/documentStore';
-import type { ElementTemplate } from '../../src/store/networkEdits';
+import { copyElements, type ElementTemplate } from '../../src/store/networkEdits';
 import { applyReplacements, findInProject, planReplace, type FindHit } from '../../src/store/find';
 
 const CONNECTOR = { kind: 'connector', name: '' } as const;
@@ -129,4 +129,25 @@ test('unnamed elements of other kinds are not touched by the connector defaults'
   const e = editor();
   const id = e.store.getState().placeElement(e.net().id, { row: 0, col: 0 }, { kind: 'jump', target: '' })!;
   expect((e.net().elements.find((x) => x.id === id) as LdElement & { target: string }).target).toBe('');
+});
+
+test('a copied pair pasted into the same network becomes a new pair (C2); into another network it keeps its name', () => {
+  const e = editor();
+  const s = () => e.store.getState();
+  const a = e.place(0, 2, CONNECTOR);
+  const b = e.place(1, 0, CONTINUATION);
+  const pair = copyElements(e.net(), [a, b])!;
+  s().pasteElements(e.net().id, pair, { row: 3, col: 0 });
+  expect(e.names()).toEqual(['>C1>|', '|>C1>', '>C2>|', '|>C2>']);
+  // A continuation pasted alone still reads the network's connector.
+  s().pasteElements(e.net().id, copyElements(e.net(), [b])!, { row: 5, col: 0 });
+  expect(e.names()).toEqual(['>C1>|', '|>C1>', '>C2>|', '|>C2>', '|>C1>']);
+  expect(checkProject(s().project).filter((d) => d.rule === 'LD-R14')).toEqual([]);
+
+  const other = s().addNetwork();
+  s().pasteElements(other, pair, { row: 0, col: 0 });
+  const names = selectNetworks(s())
+    .find((n) => n.id === other)!
+    .elements.map((x) => (x as ConnectionElement).name);
+  expect(names).toEqual(['C1', 'C1']);
 });
