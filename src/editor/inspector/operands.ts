@@ -13,6 +13,7 @@ import {
 import type { Pou, Project, Variable } from '../../model/project';
 import { parseLiteral } from '../../engine/values/literals';
 import { canWiden } from '../../engine/values/types';
+import { isAggregateVariable, memberCandidates, resolveMemberPath } from '../dataTypes/operandPaths';
 
 /** The place a name is typed into. */
 export type BindingRole =
@@ -50,7 +51,7 @@ export interface Candidate {
 const describe = (v: Variable): string =>
   [v.location, v.comment].filter((s) => s && s.trim() !== '').join('  ');
 
-/** Declared variables and FB instance pins (`T1.Q`) whose type fits the role. */
+/** Declared variables, FB instance pins (`T1.Q`) and struct/array members (`P.X`) whose type fits the role. */
 export function candidatesFor(project: Project, pou: Pou, role: BindingRole): Candidate[] {
   const accepted = new Set(acceptedTypes(role));
   const all = [
@@ -64,6 +65,8 @@ export function candidatesFor(project: Project, pou: Pou, role: BindingRole): Ca
   for (const v of all) {
     const type = v.type.toUpperCase();
     if (accepted.has(type)) out.push({ text: v.name, type, detail: describe(v) });
+    if (role.kind !== 'instance' && isAggregateVariable(project, v))
+      out.push(...memberCandidates(project, [v], accepted));
     if (role.kind === 'instance' || !lib.isFbType(type)) continue;
     const sig = lib.signature(type);
     if (!sig) continue;
@@ -99,10 +102,12 @@ export type Resolution =
   | { readonly status: 'undeclared'; readonly name: string }
   | { readonly status: 'other'; readonly message: string };
 
-/** Whether a typed name refers to something declared (plain name, `Instance.Pin` or `Word.3`). */
+/** Whether a typed name refers to something declared (plain name, `Instance.Pin`, `Word.3`, `P.X`, `A[3]`). */
 export function resolveName(project: Project, pou: Pou, text: string): Resolution {
   const name = text.trim();
   if (name === '') return { status: 'empty' };
+  const memberPath = resolveMemberPath(project, pou, name);
+  if (memberPath) return memberPath;
   const [base = '', member, ...rest] = name.split('.');
   const v = findVariable(project, pou, base);
   if (member === undefined)
@@ -144,6 +149,6 @@ export function describeLiteral(text: string, pinType: PinType): { ok: boolean; 
           text: `${text} is a ${literal.type} literal; this pin takes ${members.length > 4 ? pinType : members.join(' or ')}`,
         };
   }
-  const looksLikeName = /^[A-Za-z_][A-Za-z0-9_.]*$/.test(text) && !text.includes('#');
+  const looksLikeName = /^[A-Za-z_][A-Za-z0-9_.]*(\[[-+0-9, ]+\][A-Za-z0-9_.]*)*$/.test(text) && !text.includes('#');
   return looksLikeName ? undefined : { ok: false, text: literal.message };
 }

@@ -1,5 +1,5 @@
 // Where variables are used on the canvas: contacts, coils, FB instances and box pin operands
-// (`Name`, `Name.Pin`, `Name.3` all count as a use of Name).
+// (`Name`, `Name.Pin`, `Name.3`, `Name[2].X` all count as a use of Name).
 import type { LdElement } from '../../model/elements';
 import type { ElementId, NetworkId, PouId } from '../../model/ids';
 import type { Network, Pou, Project } from '../../model/project';
@@ -14,7 +14,7 @@ export interface VariableUse {
 
 /** The variable an operand refers to, upper-cased (IEC names ignore case); undefined for none. */
 function operandHead(operand: string): string | undefined {
-  const head = operand.trim().split('.')[0] ?? '';
+  const head = operand.trim().split(/[.[]/)[0] ?? '';
   return /^[A-Za-z_][A-Za-z0-9_]*$/.test(head) ? head.toUpperCase() : undefined;
 }
 
