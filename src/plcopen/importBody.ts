@@ -5,6 +5,7 @@ import type { BlockLibrary } from '../model/library';
 import { newNetwork } from '../model/factory';
 import type { Network } from '../model/project';
 import { LAYOUT_STRATEGIES, prepareLayout } from './layout';
+import { addCuts, allNodeWires, CUT_ROUNDS, cutView, type CutPin, type CutView } from './layoutCut';
 import { instantiate, LayoutCache, shapeKey } from './layoutCache';
 import type { LaidOut } from './layoutShapes';
 import { buildLdGraph, type Finding, type GNode } from './ldGraph';
@@ -255,9 +256,9 @@ function readBatch(
     } else {
       // Every layout is checked against the file; the first strategy that draws it exactly wins.
       let best: { laid: LaidOut; mismatches: Mismatch[]; needCols: number } | undefined;
-      const tryAll = () => {
+      const tryAll = (view: CutView = { nodes, members: g.nodes }) => {
         for (let s = 0; s < LAYOUT_STRATEGIES; s++) {
-          const prepared = prepareLayout(nodes, g.nodes, library, s);
+          const prepared = prepareLayout(view.nodes, view.members, library, s);
           const tryLaid = prepared.run(Math.max(width, prepared.needCols));
           const m = verify(nodes, g.nodes, tryLaid, library);
           if (!best || m.length < best.mismatches.length)
@@ -279,6 +280,15 @@ function readBatch(
           for (const i of implicit) nodes[i]!.inputs.set('EN', [{ kind: 'rail' }]);
           best = before;
         }
+      }
+      // Wires the grid cannot route are drawn through connector/continuation pairs (layoutCut.ts).
+      if (best!.mismatches.length) {
+        const cuts: CutPin[] = [];
+        for (let round = 0; round < CUT_ROUNDS && best!.mismatches.length; round++) {
+          addCuts(nodes, g.nodes, best!.mismatches, cuts);
+          tryAll(cutView(nodes, g.nodes, cuts));
+        }
+        if (best!.mismatches.length) tryAll(cutView(nodes, g.nodes, allNodeWires(nodes, g.nodes)));
       }
       ({ laid, mismatches } = best!);
       cols = Math.max(cols, best!.needCols);

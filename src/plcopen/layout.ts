@@ -208,6 +208,12 @@ class ColumnLayout implements Prepared {
   }
   private settle(i: number): void {
     let c = 0;
+    if (this.all[i]!.kind === 'continuation') {
+      // Drawn right before the pin it feeds (run() moves it there once the columns are known).
+      this.col.set(i, 0);
+      this.topo.push(i);
+      return;
+    }
     for (const p of this.shapes.get(i)!.inputs) {
       const net = this.inNet(i, p.pin);
       // Boundary 0 is the left rail on every row: an input that is not wired stays off it. A box
@@ -301,6 +307,13 @@ class ColumnLayout implements Prepared {
     const { col, nets } = this;
     this.tails();
     for (const [i, t] of this.tail) col.set(i, Math.max(col.get(i)!, cols - t));
+    // A continuation sits in the cell left of the pin it feeds (it feeds one pin, see layoutCut.ts).
+    for (const i of this.nodes) {
+      if (this.all[i]!.kind !== 'continuation') continue;
+      let at = Infinity;
+      for (const c of this.outNet(i, 'out')?.consumers ?? []) at = Math.min(at, col.get(c.node)!);
+      if (at !== Infinity) col.set(i, Math.max(0, at - 1));
+    }
     for (const net of nets) net.b = this.barOf(net);
     return placeRows(this.all, this.nodes, this.shapes, col, nets, this.inNet, this.outNet, cols);
   }

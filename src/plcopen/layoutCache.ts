@@ -13,12 +13,14 @@ import type { LaidOut } from './layoutShapes';
 export interface LayoutTemplate {
   readonly rows: number;
   readonly cols: number;
-  /** Per element: member position (-1 for a link), cell and id suffix. */
+  /** Per element: member position (-1 for a link or a drawn connector/continuation), cell and id suffix. */
   readonly elements: readonly {
     readonly member: number;
     readonly row: number;
     readonly col: number;
     readonly suffix: string;
+    /** A connector or continuation the layout drew (layoutCut.ts). */
+    readonly pair?: { readonly kind: 'connector' | 'continuation'; readonly name: string };
   }[];
   readonly vlinks: readonly VLink[];
   /** Members placed where they touch another net. */
@@ -40,6 +42,8 @@ export function shapeKey(nodes: readonly GNode[], members: readonly number[]): s
     key += n.kind;
     if (n.kind === 'box') key += `:${n.blockType ?? ''}/${n.inputCount ?? ''}${n.executionControl ? '/en' : ''}`;
     if (n.feedsRightRail) key += '!';
+    // The file's own connector names may name drawn pairs: networks with other names differ.
+    if (n.via) key += JSON.stringify(n.via);
     key += '(';
     for (const [pin, srcs] of n.inputs) {
       key += `${pin}=`;
@@ -100,6 +104,7 @@ export class LayoutCache {
         row: e.row,
         col: e.col,
         suffix: e.id.slice(e.id.lastIndexOf('_')),
+        ...(e.kind === 'connector' || e.kind === 'continuation' ? { pair: { kind: e.kind, name: e.name } } : {}),
       })),
       vlinks: laid.vlinks.map((v) => ({ ...v })),
       forced: laid.forced.map((node) => position.get(node)!),
@@ -113,7 +118,10 @@ export function instantiate(t: LayoutTemplate, nodes: readonly GNode[], members:
   const elementOf = new Map<number, ElementId>();
   const elements: LdElement[] = t.elements.map((e) => {
     const id = `${prefix}${e.suffix}` as ElementId;
-    if (e.member === -1) return { id, kind: 'link', row: e.row, col: e.col };
+    if (e.member === -1)
+      return e.pair
+        ? { id, kind: e.pair.kind, name: e.pair.name, row: e.row, col: e.col }
+        : { id, kind: 'link', row: e.row, col: e.col };
     const node = members[e.member]!;
     elementOf.set(node, id);
     return elementFor(nodes[node]!, id, e.row, e.col);

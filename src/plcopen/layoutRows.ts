@@ -44,6 +44,8 @@ class RowPlacer {
   readonly chainOf = new Map<number, ChainTarget>();
   readonly placing = new Set<number>();
   readonly byPosition: (a: number, b: number) => number;
+  /** Set once every other node is placed: continuations left over are placed on their own. */
+  leftovers = false;
 
   constructor(
     readonly all: readonly GNode[],
@@ -122,6 +124,12 @@ class RowPlacer {
     this.mine.set(k, this.own--);
     return true;
   }
+  /** The continuation that alone feeds this input pin, not yet placed (it is drawn with the pin). */
+  pendingContinuation(net: Net | undefined): number | undefined {
+    if (!net || net.producers.length !== 1 || net.rail) return undefined;
+    const p = net.producers[0]!.node;
+    return this.all[p]!.kind === 'continuation' && !this.row.has(p) ? p : undefined;
+  }
   fits(i: number, r: number): boolean {
     const sh = this.shapes.get(i)!;
     const c = this.col.get(i)!;
@@ -130,6 +138,13 @@ class RowPlacer {
     this.own = -1;
     for (let y = 0; y < sh.h; y++)
       for (let x = 0; x < sh.w; x++) if (this.cellOwner.has((r + y) * KEY + c + x)) return false;
+    for (const p of sh.inputs) {
+      const k = this.pendingContinuation(this.inNet(i, p.pin));
+      if (k === undefined) continue;
+      const kc = this.col.get(k)!;
+      if (this.cellOwner.has((r + p.off) * KEY + kc)) return false;
+      if (kc !== 0 && !this.block(r + p.off, kc)) return false;
+    }
     for (let y = 0; y < sh.h; y++) for (let x = 1; x < sh.w; x++) if (!this.block(r + y, c + x)) return false;
     for (const p of sh.inputs) {
       const net = this.inNet(i, p.pin);
@@ -246,13 +261,21 @@ class RowPlacer {
   }
   place(i: number, prefer?: number): void {
     if (this.row.has(i) || this.placing.has(i)) return;
+    // A continuation is drawn with the pin it feeds (unless that failed: then where it fits).
+    if (this.all[i]!.kind === 'continuation' && !this.leftovers) return;
     this.placing.add(i);
     const sh = this.shapes.get(i)!;
     let later: { node: number; row: number }[] | undefined;
+    let conts: { node: number; row: number }[] | undefined;
     // Everything feeding my input bars first, top to bottom (chains drawn on a lower pin: after me).
     for (const p of sh.inputs) {
       const net = this.inNet(i, p.pin);
       if (!net) continue;
+      const k = this.pendingContinuation(net);
+      if (k !== undefined) {
+        (conts ??= []).push({ node: k, row: p.off });
+        continue;
+      }
       const only = net.producers.length === 1 ? net.producers[0]!.node : undefined;
       if (only !== undefined && !this.row.has(only) && this.chainTarget(only)?.box === i) {
         (later ??= []).push({ node: only, row: p.off });
@@ -269,6 +292,7 @@ class RowPlacer {
       this.forced.push(i);
     }
     this.commit(i, r);
+    if (conts) for (const k of conts) if (!this.row.has(k.node)) this.commit(k.node, r + k.row);
     this.placing.delete(i);
     if (later) for (const l of later) this.place(l.node, r + l.row);
     // Then what I feed: siblings in the same bars, then consumers, depth-first. Siblings wait while
@@ -297,6 +321,8 @@ class RowPlacer {
     for (const i of starts) if (!this.chainTarget(i)) this.place(i);
     const rest = sortSmall([...this.members], this.byPosition);
     for (const i of rest) if (!this.chainTarget(i)) this.place(i);
+    for (const i of rest) this.place(i);
+    this.leftovers = true;
     for (const i of rest) this.place(i);
 
     // Cosmetic: wires to the right rail where the row is free.
@@ -346,6 +372,9 @@ export function elementFor(n: GNode, id: ElementId, r: number, c: number): LdEle
       return { id, row: r, col: c, kind: 'jump', target: n.target ?? '' };
     case 'return':
       return { id, row: r, col: c, kind: 'return' };
+    case 'connector':
+    case 'continuation':
+      return { id, row: r, col: c, kind: n.kind, name: n.name ?? '' };
     case 'box':
       return {
         id,

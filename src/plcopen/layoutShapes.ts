@@ -33,7 +33,11 @@ export function shapeOf(n: GNode, library: BlockLibrary): Shape {
       return CELL_SHAPE;
     case 'jump':
     case 'return':
+    case 'connector':
       return END_SHAPE;
+    case 'continuation':
+      // Its left side is never wired: the row pass keeps other wires off it, as for an open input.
+      return CELL_SHAPE;
     case 'box': {
       const l = boxLayoutFor(n.blockType ?? '', n.inputCount, library, n.executionControl === true);
       if (!l) return UNKNOWN_SHAPE;

@@ -18,6 +18,8 @@ const RAIL: GSource = { kind: 'rail' };
 export function canonicalPin(sig: BlockSignature | undefined, pin: string): string {
   const upper = pin.toUpperCase();
   if (!sig || upper === 'EN' || upper === 'ENO') return upper;
+  // TC6 v1.0 (Beremiz's legacy files) leaves a function's result pin unnamed: it is OUT.
+  if (upper === '') return sig.outputs.find((p) => p.name.toUpperCase() !== 'ENO')?.name ?? upper;
   for (const p of sig.outputs) if (p.name.toUpperCase() === upper) return p.name;
   for (const p of sig.inputs) if (p.name.toUpperCase() === upper) return p.name;
   return upper;
@@ -29,6 +31,8 @@ export function buildBox(
   sourcesOf: (pin: RawPin, consumer: RawObject, operandTarget?: (text: string) => void) => GSource[],
   warn: (f: Finding) => void,
   library: BlockLibrary,
+  /** An inverting contact fed by these sources, for a negated BOOL input (its output). */
+  invert?: (srcs: GSource[]) => GSource,
 ): void {
   const typeName = o.text;
   const sig = library.signature(typeName);
@@ -87,7 +91,10 @@ export function buildBox(
         });
       continue;
     }
-    if (pin.negated)
+    // A negated BOOL input wired from elements (FBD): an inverting contact before the pin.
+    const bool = layout?.inputs.find((p) => p.name === name)?.type === 'BOOL';
+    const inverted = pin.negated && bool && invert !== undefined;
+    if (pin.negated && !inverted)
       warn({ message: `block ${instance ?? sig.name}: negation of input ${name} is dropped`, obj: o });
     if (pin.edge) {
       const counterPin = sig.category === 'counter' && (name === 'CU' || name === 'CD');
@@ -100,8 +107,11 @@ export function buildBox(
     }
     let operand: string | undefined;
     const src = sourcesOf(pin, o, (t) => (operand = t));
-    if (operand !== undefined) n.operandsIn[name] = operand;
-    else if (src.length) n.inputs.set(name, src);
+    if (operand !== undefined) {
+      n.operandsIn[name] = operand;
+      if (inverted)
+        warn({ message: `block ${instance ?? sig.name}: negation of input ${name} (${operand}) is dropped`, obj: o });
+    } else if (src.length) n.inputs.set(name, inverted ? [invert(src)] : src);
   }
   if ((sig.kind === 'function' || n.executionControl) && !hasEn) {
     n.inputs.set('EN', [RAIL]);

@@ -14,7 +14,12 @@ export type GSource =
 export interface GNode {
   readonly index: number;
   readonly obj: RawObject;
-  readonly kind: 'contact' | 'coil' | 'box' | 'jump' | 'return';
+  /** 'connector' and 'continuation' are drawn by the layout only (layoutCut.ts), never read from a file. */
+  readonly kind: 'contact' | 'coil' | 'box' | 'jump' | 'return' | 'connector' | 'continuation';
+  /** Name of a drawn connector or continuation. */
+  name?: string;
+  /** Input pins the file wires through one of its own connector/continuation pairs: the pair's name. */
+  via?: Record<string, string>;
   contact?: ContactType;
   coil?: CoilType;
   variable?: string;
@@ -326,7 +331,15 @@ export function buildLdGraph(
 
   for (const n of [...nodes]) {
     const o = n.obj;
-    if (n.kind === 'box') buildBox(n, o, sourcesOf, warn, library);
+    if (n.kind === 'box')
+      buildBox(n, o, sourcesOf, warn, library, (srcs) => {
+        const not = newNode(o, 'contact', n.order);
+        not.contact = 'NOT';
+        not.variable = '';
+        not.inputs.set('in', srcs);
+        nodeOf.set(o, n); // the block's object still names the block
+        return { kind: 'node', node: not.index, pin: 'out' };
+      });
     else if (n.kind === 'contact' && n.contact === 'NOT' && o.kind === 'block') {
       const src = sourcesOf(o.inputs[0] ?? { pin: 'IN', connections: [], negated: false }, o);
       if (src.length) n.inputs.set('in', src);
@@ -399,7 +412,7 @@ export function buildLdGraph(
 
   // Unknown addData on graphical objects is kept per object.
   for (const n of nodes) {
-    if (!n.obj.hasAddData) continue;
+    if (!n.obj.hasAddData || nodeOf.get(n.obj) !== n) continue;
     const add = child(n.obj.xml, 'addData');
     if (!add) continue;
     const keep: string[] = [];

@@ -34,6 +34,10 @@ const describe = (n: GNode): string => {
       return `jump to ${n.target}`;
     case 'return':
       return 'return';
+    case 'connector':
+      return `connector ${n.name ?? ''}`;
+    case 'continuation':
+      return `continuation ${n.name ?? ''}`;
   }
 };
 
@@ -61,10 +65,16 @@ export function verify(
   const memberSet = new Set(members);
   const out: Mismatch[] = [];
   const drawnOf = new Map<number, Map<string, { srcs: GSource[]; leftward: boolean }>>();
+  let reach: ((net: (typeof g.nets)[number]) => Set<number>) | undefined;
   for (const net of g.nets) {
     if (!net.sinks.length || (!net.sources.length && !net.leftRail)) continue;
     let maxSource = -1;
     for (const s of net.sources) maxSource = Math.max(maxSource, s.point % W);
+    // Through a connector pair a net may run leftwards on the grid: then what counts is that
+    // every source reaches every pin moving right (the engine's LD-R01 check).
+    const unreached = g.connections.size && net.sinks.some((s) => maxSource > s.point % W)
+      ? (reach ??= reachability(g, laid))(net)
+      : undefined;
     const srcs: GSource[] = [];
     for (const s of net.sources) {
       const m = memberOf[s.node]!;
@@ -76,7 +86,10 @@ export function verify(
       if (m < 0) continue;
       let pins = drawnOf.get(m);
       if (!pins) drawnOf.set(m, (pins = new Map()));
-      pins.set(pinName(g, s.node, s.pin), { srcs, leftward: maxSource > s.point % W });
+      pins.set(pinName(g, s.node, s.pin), {
+        srcs,
+        leftward: unreached ? unreached.has(s.point) : maxSource > s.point % W,
+      });
     }
   }
   for (const b of g.misplaced) {
@@ -99,6 +112,37 @@ export function verify(
       }
   }
   return out;
+}
+
+/**
+ * For a net, the sink points some source (or the left rail) of the net cannot reach moving right
+ * along links, either way along vertical links, and from a connector to its continuations.
+ */
+function reachability(g: NetworkGraph, laid: LaidOut): (net: NetworkGraph['nets'][number]) => Set<number> {
+  const W = g.cols + 1;
+  const right = new Set<number>();
+  for (const el of laid.elements) if (el.kind === 'link') right.add(el.row * W + el.col);
+  const down = new Set<number>();
+  for (const v of laid.vlinks) down.add(v.row * W + v.boundary);
+  return (net) => {
+    const starts = [...net.sources.map((s) => s.point), ...net.points.filter((p) => p % W === 0)];
+    const unreached = new Set<number>();
+    for (const start of starts) {
+      const seen = new Set<number>([start]);
+      const stack = [start];
+      while (stack.length) {
+        const p = stack.pop()!;
+        const next = [right.has(p) ? p + 1 : -1, down.has(p) ? p + W : -1, down.has(p - W) ? p - W : -1];
+        for (const q of [...next, ...(g.connections.get(p) ?? [])])
+          if (q >= 0 && !seen.has(q)) {
+            seen.add(q);
+            stack.push(q);
+          }
+      }
+      for (const s of net.sinks) if (!seen.has(s.point)) unreached.add(s.point);
+    }
+    return unreached;
+  };
 }
 
 /** The sources of a pin in the file, within the network. */

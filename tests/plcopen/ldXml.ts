@@ -20,7 +20,11 @@ export type LdObj =
       outputs: string[];
       /** Output pins assigned to a variable (an outVariable wired from the pin). */
       assign?: Record<string, string>;
-    };
+    }
+  /** A PLCopen connector: ends the wire `in` under a name. */
+  | { id: number; kind: 'connector'; name: string; in: Ref[] }
+  /** A PLCopen continuation: starts a wire with the connector of its name (refer to it by id). */
+  | { id: number; kind: 'continuation'; name: string };
 
 export interface LdNetwork {
   readonly objects: LdObj[];
@@ -97,6 +101,12 @@ export function ldXml(vars: readonly LdVar[], networks: readonly LdNetwork[]): s
             );
           break;
         }
+        case 'connector':
+          body += `<connector localId="${o.id}" name="${esc(o.name)}">${pos(o.id)}${connections(o.in, rail, extra, nextId)}</connector>\n`;
+          break;
+        case 'continuation':
+          body += `<continuation localId="${o.id}" name="${esc(o.name)}">${pos(o.id)}<connectionPointOut/></continuation>\n`;
+          break;
       }
     }
     for (const e of extra) body += e + '\n';
@@ -180,6 +190,8 @@ export function specGraph(networks: readonly LdNetwork[]): string[] {
           return `coil:${o.storage === 'set' ? 'SET' : o.storage === 'reset' ? 'RESET' : o.neg ? 'NEG' : 'COIL'}:${o.v}`;
         case 'block':
           return `box:${o.type}:${o.instance ?? ''}`;
+        default:
+          return o.kind;
       }
     };
     const add = (consumer: string, refs: Ref[]) => {
@@ -188,11 +200,17 @@ export function specGraph(networks: readonly LdNetwork[]): string[] {
         if (r === 'rail') out.push(`${consumer} <- rail`);
         else {
           const [id, pin] = r.split('.');
-          out.push(`${consumer} <- ${label(byId.get(Number(id))!)}.${pin ?? 'OUT'}`);
+          const src = byId.get(Number(id))!;
+          if (src.kind === 'continuation') {
+            // A continuation carries what its connector is wired to (the engine joins them).
+            const conn = net.objects.find((x) => x.kind === 'connector' && x.name.toUpperCase() === src.name.toUpperCase());
+            if (conn && conn.kind === 'connector') add(consumer, conn.in);
+          } else out.push(`${consumer} <- ${label(src)}.${pin ?? 'OUT'}`);
         }
       }
     };
     for (const o of net.objects) {
+      if (o.kind === 'connector' || o.kind === 'continuation') continue;
       if (o.kind === 'block')
         for (const [pin, refs] of Object.entries(o.inputs)) add(`${label(o)}.${pin}`, refs);
       else add(`${label(o)}.IN`, o.in);

@@ -1,0 +1,148 @@
+// Wires the ladder grid cannot route: drawn through IEC connector/continuation pairs (`>NAME>`).
+// A cut input pin loses its wire on the grid: its sources feed a connector drawn right after them,
+// and a continuation of the same name, drawn in the cell left of the pin, feeds the pin. The engine
+// joins a connector and its continuations into one net (src/engine/compile/graph.ts), so the graph
+// it compiles is the file's; evaluation follows that graph, not where the pair sits (LD-SEMANTICS
+// section 1). Cuts are made on a view of the nodes: the file's nodes stay as read, for verification.
+import type { GNode, GSource } from './ldGraph';
+import type { Mismatch } from './verifyLayout';
+
+/** Rounds of cutting the pins the grid drew wrongly before every wire between elements is cut. */
+export const CUT_ROUNDS = 3;
+
+/** An input pin to draw through a connector pair. */
+export interface CutPin {
+  readonly node: number;
+  readonly pin: string;
+}
+
+/** The nodes of a network with some input pins cut: a view over `nodes`, and the members to lay out. */
+export interface CutView {
+  readonly nodes: readonly GNode[];
+  readonly members: readonly number[];
+}
+
+const srcKey = (s: GSource) => (s.kind === 'rail' ? 'R' : `${s.node}>${s.pin}`);
+const IDENT = /^[A-Za-z_][A-Za-z0-9_]*$/;
+
+/**
+ * The view with `cuts` drawn through connector pairs: one connector per distinct set of sources
+ * (named after the file's own connector when the file wired the pin through one, else C1, C2, …,
+ * unique in the network), one continuation per cut pin.
+ */
+export function cutView(nodes: readonly GNode[], members: readonly number[], cuts: readonly CutPin[]): CutView {
+  if (!cuts.length) return { nodes, members };
+  const view = nodes.slice();
+  const extra: number[] = [];
+  const clones = new Map<number, GNode>();
+  const connectorOf = new Map<string, GNode>();
+  // Names the file gave its connectors are kept; generated names (C1, C2, …) avoid them.
+  const reserved = new Set<string>();
+  for (const c of cuts) {
+    const wanted = nodes[c.node]!.via?.[c.pin];
+    if (wanted && IDENT.test(wanted)) reserved.add(wanted.toUpperCase());
+  }
+  const used = new Set<string>();
+  let counter = 0;
+  const nameFor = (wanted: string | undefined): string => {
+    if (wanted && IDENT.test(wanted) && !used.has(wanted.toUpperCase())) {
+      used.add(wanted.toUpperCase());
+      return wanted;
+    }
+    let name: string;
+    do name = `C${++counter}`;
+    while (used.has(name) || reserved.has(name));
+    used.add(name);
+    return name;
+  };
+  const add = (n: GNode) => {
+    view.push(n);
+    extra.push(n.index);
+  };
+  for (const { node, pin } of cuts) {
+    const orig = nodes[node]!;
+    const srcs = (clones.get(node) ?? orig).inputs.get(pin);
+    if (!srcs?.length) continue;
+    let clone = clones.get(node);
+    if (!clone) {
+      clone = { ...orig, inputs: new Map(orig.inputs) };
+      clones.set(node, clone);
+      view[node] = clone;
+    }
+    const key = srcs.map(srcKey).sort().join(' ');
+    let conn = connectorOf.get(key);
+    if (!conn) {
+      const name = nameFor(orig.via?.[pin]);
+      const first = srcs.find((s) => s.kind === 'node');
+      const at = first && first.kind === 'node' ? nodes[first.node]! : orig;
+      conn = {
+        index: view.length,
+        obj: at.obj,
+        kind: 'connector',
+        name,
+        inputs: new Map([['in', [...srcs]]]),
+        operandsIn: {},
+        operandsOut: {},
+        x: at.x + 0.5,
+        y: at.y,
+        order: at.order,
+        feedsRightRail: false,
+      };
+      connectorOf.set(key, conn);
+      add(conn);
+    }
+    const cont: GNode = {
+      index: view.length,
+      obj: orig.obj,
+      kind: 'continuation',
+      name: conn.name!,
+      inputs: new Map(),
+      operandsIn: {},
+      operandsOut: {},
+      x: orig.x - 0.5,
+      y: orig.y,
+      order: orig.order,
+      feedsRightRail: false,
+    };
+    add(cont);
+    clone.inputs.set(pin, [{ kind: 'node', node: cont.index, pin: 'out' }]);
+  }
+  return { nodes: view, members: [...members, ...extra] };
+}
+
+/** Every input pin of the network wired from another element (the cut that always draws). */
+export function allNodeWires(nodes: readonly GNode[], members: readonly number[]): CutPin[] {
+  const out: CutPin[] = [];
+  for (const i of members)
+    for (const [pin, srcs] of nodes[i]!.inputs) if (srcs.some((s) => s.kind === 'node')) out.push({ node: i, pin });
+  return out;
+}
+
+/**
+ * Adds to `cuts` the pins of these mismatches that the file wires, and every pin the file feeds
+ * from a source the grid joined where it should not (that source's wire crossed another).
+ */
+export function addCuts(
+  nodes: readonly GNode[],
+  members: readonly number[],
+  mismatches: readonly Mismatch[],
+  cuts: CutPin[],
+): void {
+  const have = new Set(cuts.map((c) => `${c.node}<${c.pin}`));
+  const cut = (node: number, pin: string) => {
+    const k = `${node}<${pin}`;
+    if (have.has(k) || !nodes[node]!.inputs.get(pin)?.length) return;
+    have.add(k);
+    cuts.push({ node, pin });
+  };
+  const stray = new Set<string>();
+  for (const m of mismatches) {
+    if (m.pin === 'in' && !m.extra.length && !m.missing.length && !m.leftward)
+      for (const pin of nodes[m.node]!.inputs.keys()) cut(m.node, pin); // could not be placed
+    cut(m.node, m.pin);
+    for (const s of m.extra) if (s.kind === 'node') stray.add(srcKey(s));
+  }
+  if (stray.size)
+    for (const i of members)
+      for (const [pin, srcs] of nodes[i]!.inputs) if (srcs.some((s) => stray.has(srcKey(s)))) cut(i, pin);
+}
