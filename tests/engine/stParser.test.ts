@@ -9,6 +9,7 @@ function show(e: Expr): string {
     case 'lit':
       return e.text;
     case 'name':
+    case 'path':
       return e.text;
     case 'unary':
       return `(${e.op} ${show(e.a)})`;

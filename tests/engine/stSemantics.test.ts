@@ -208,8 +208,8 @@ describe('ST errors are located and name the POU', () => {
     expect(errorsOf('i := i + w;')[0]).toMatch(/line 1 col 8: ADD cannot add INT and WORD/);
     expect(errorsOf('IF b THEN\n  i := 1;\nEND_IF')[0]).toMatch(/line 3 col 7: expected ";" to end the statement, found the end of the text/);
     expect(errorsOf('IF i THEN i := 1; END_IF;')[0]).toMatch(/line 1 col 4: the IF condition must be BOOL; "i" is INT/);
-    expect(errorsOf('i := arr[1];')[0]).toMatch(/LD-E50 .*line 1 col 9: arrays are not supported/);
-    expect(errorsOf("i := 'abc';")[0]).toMatch(/line 1 col 6: strings \(STRING\) are not supported/);
+    expect(errorsOf('i := arr[1];')[0]).toMatch(/LD-E50 .*line 1 col 6: "arr" is not declared/);
+    expect(errorsOf("i := 'abc';")[0]).toMatch(/line 1 col 6: cannot assign to i: INT is needed and the value is STRING/);
   });
 
   test('several errors are all reported', () => {

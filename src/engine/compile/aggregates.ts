@@ -49,8 +49,9 @@ export interface IndexTerm {
   readonly lower: number;
   readonly upper: number;
   readonly mult: PerStore;
-  /** What is indexed, for the bounds fault (`A`, `S.Pts`). */
+  /** What is indexed, for the bounds fault (`A`, `S.Pts`), and the ST line. */
   readonly what: string;
+  readonly line: number;
 }
 
 const typeName = (n: AggNode): string => (n.kind === 'leaf' ? n.v.dataType?.name ?? n.v.type : n.type);
@@ -125,6 +126,10 @@ export function declareDataTyped(
   }
   const shape = res.shape;
   const leaves = res.leaves;
+  if (shape.kind === 'fb') {
+    r.error('LD-E15', `${what} has the type "${decl.type}", a function block the simulator cannot instantiate here`);
+    return undefined;
+  }
   const single = shape.kind === 'elementary' || shape.kind === 'enum' || shape.kind === 'subrange';
   const values: Value[] = [];
   let failed = false;

@@ -9,6 +9,7 @@ import {
   isElementaryType,
   locationAdmits,
   parseLocation,
+  locationText,
   parseSizedString,
   DATE_TYPE_ALIASES,
   type ElementaryType,
@@ -154,8 +155,7 @@ export type Resolved =
   /** `aggregate`: the text names a whole struct or array (ST assigns those as a whole). */
   | { ok: false; message: string; unknown?: boolean; aggregate?: AggNode };
 
-export const canonicalLocation = (loc: ParsedLocation): string =>
-  `%${loc.area}${loc.size}${loc.index}${loc.bit !== undefined ? `.${loc.bit}` : ''}`;
+export const canonicalLocation = (loc: ParsedLocation): string => locationText(loc);
 
 export class SymbolTable {
   private readonly byName = new Map<string, Sym>();

@@ -88,6 +88,18 @@ export class ScanPlc implements Plc {
     call: (first: number, end: number, t: number, scan: number): void => this.callBody(first, end, t, scan),
     stepCall: (first: number, end: number, t: number, scan: number): Generator<void, void> =>
       this.stepRange(first, end, t, scan),
+    /**
+     * An array index chosen at run time (ST `A[i]`): i - lower, or a fault (LD-E62) when i is
+     * outside lower..upper. MATIEC's C does not check: it reads or writes memory outside the array.
+     */
+    ix: (network: number, line: number, value: number | bigint, lower: number, upper: number, what: string): number => {
+      const i = Number(value);
+      if (i >= lower && i <= upper) return i - lower;
+      this.runtimeFault = `LD-E62 line ${line}: the index ${i} of ${what} is outside ${lower}..${upper}; the scan stops here (MATIEC does not check array bounds: its compiled C would read or write memory outside the array, or crash)`;
+      throw new WatchdogTrip(network);
+    },
+    /** The slot a write through a variable index goes to: the spare slot while that element is forced. */
+    ws: (store: 'b' | 'n' | 'g', slot: number): number => (this.forcedSlots.has(`${store}:${slot}`) ? this.mem.sink[store] : slot),
     /** Asked every 65,536 iterations of an ST/IL loop (or backward IL jump) in network `network`, at `line`. */
     loop: (network: number, line: number): void => {
       if (now() - this.scanStart <= this.maxScanMs) return;
@@ -98,6 +110,10 @@ export class ScanPlc implements Plc {
   };
   /** Line of the ST/IL loop that tripped the watchdog (0: none). */
   private loopLine = 0;
+  /** Message of a runtime fault (an array index out of bounds) being thrown out of the scan. */
+  private runtimeFault: string | undefined;
+  /** `store:slot` of every forced variable (writes through variable indexes check it). */
+  private readonly forcedSlots = new Set<string>();
   private scanStart = 0;
   private lastExecMs = 0;
   private clockOrigin = 0;
@@ -299,6 +315,21 @@ export class ScanPlc implements Plc {
   }
 
   private trip(at: number): void {
+    if (this.runtimeFault !== undefined) {
+      const w = this.where(at);
+      this.currentFault = {
+        kind: 'runtime',
+        pou: w.pou,
+        ...(w.instance ? { instance: w.instance } : {}),
+        network: w.network,
+        ...(w.label ? { networkLabel: w.label } : {}),
+        message: `${this.runtimeFault} in ${w.instance ? `${w.instance} (${w.pou})` : w.pou}`,
+      };
+      this.runtimeFault = undefined;
+      this.cursor = -1;
+      this.lastExecMs = now() - this.scanStart;
+      return;
+    }
     const network = this.backJump >= 0 ? this.backJump : at;
     const w = this.where(network);
     const inBody = this.program.bodyOf[network]! >= this.program.programs || this.program.programs > 1;
@@ -554,6 +585,8 @@ export class ScanPlc implements Plc {
    */
   private redirectWriters(v: VarSymbol, forced: boolean): void {
     const key = slotKey(v.store, v.slot);
+    if (forced) this.forcedSlots.add(key);
+    else this.forcedSlots.delete(key);
     const target = forced ? this.mem.sink[v.store] : v.slot;
     for (const at of this.plan.writes.get(key) ?? []) this.plan.P[at] = target;
     for (const at of this.stepPlan?.writes.get(key) ?? []) this.stepPlan!.P[at] = target;

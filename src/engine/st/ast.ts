@@ -28,13 +28,18 @@ export type BinaryOp =
 export type Expr =
   /** A literal as written: 42, 16#FF, 1.5, INT#5, T#1s, TRUE. */
   | { readonly k: 'lit'; readonly text: string; readonly pos: Pos }
-  /** A variable, `Instance.Pin`, `Word.3` or a location `%IX0.0`. */
+  /** A variable, `Instance.Pin`, `Word.3`, `P.X`, `A[3]` (constant indexes) or a location `%IX0.0`. */
   | { readonly k: 'name'; readonly text: string; readonly pos: Pos }
+  /** An element chosen by index expressions: `A[i]`, `G[i, j + 1].X`; `head` is the text before the first `[`. */
+  | { readonly k: 'path'; readonly head: string; readonly steps: readonly PathStep[]; readonly text: string; readonly pos: Pos }
   | { readonly k: 'unary'; readonly op: '-' | 'NOT'; readonly a: Expr; readonly pos: Pos }
   | { readonly k: 'binary'; readonly op: BinaryOp; readonly a: Expr; readonly b: Expr; readonly pos: Pos }
   | { readonly k: 'call'; readonly name: string; readonly args: readonly Arg[]; readonly pos: Pos }
   /** IL: the current result (slot 0) or a result saved by a deferred operator `AND(` (slot > 0). */
   | { readonly k: 'cr'; readonly slot: number; readonly pos: Pos };
+
+/** A step of a path after its head: a member `.X` or an index list `[i, j]`. */
+export type PathStep = { readonly member: string } | { readonly index: readonly Expr[] };
 
 /** A call argument: positional (`a`), an input or in-out (`IN := a`), an output (`Q => y`, `NOT Q => y`). */
 export interface Arg {

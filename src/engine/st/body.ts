@@ -33,7 +33,7 @@ export function lowerTextBody(
   );
   for (const p of result.pragmas)
     r.warning('LD-W50', `the pragma {${p.text.trim()}} in the ${pou.language} body of ${pou.name} (line ${p.pos.line}) is C code for the MATIEC runtime; the simulator ignores it`);
-  for (const e of result.errors) r.error('LD-E50', `the ${pou.language} body of ${pou.name} does not compile: ${describeStError(e)}`);
+  for (const e of result.errors) r.error(e.rule ?? 'LD-E50', `the ${pou.language} body of ${pou.name} does not compile: ${describeStError(e)}`);
   return { ctx, networks: result.networks ?? bodyChunks(pou).map(() => undefined), ok: !!result.networks };
 }
 

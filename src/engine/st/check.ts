@@ -12,6 +12,9 @@ import { canWiden, commonType, isIntegerType, isBitStringType, isRealType, defau
 import type { CallBuilder } from '../compile/context';
 import { storeOf, type Access, type SymbolTable } from '../compile/symbols';
 import type { Arg, BinaryOp, Expr, Pos, Stmt } from './ast';
+import type { RuleId } from '../api';
+import { ENUM_STORAGE } from '../../model/dataTypes';
+import { Places } from './places';
 import type { CompareOp, TExpr, TStmt } from './lowered';
 
 /** What ST statements are checked against. */
@@ -29,12 +32,15 @@ export interface StScope {
 export interface StError {
   readonly pos: Pos;
   readonly message: string;
+  /** The rule broken, when it is not LD-E50 (a body that does not compile). */
+  readonly rule?: RuleId;
 }
 
-class Fail extends Error {
+export class Fail extends Error {
   constructor(
     readonly pos: Pos,
     message: string,
+    readonly rule?: RuleId,
   ) {
     super(message);
   }
@@ -55,6 +61,7 @@ const describe = (e: Expr): string => {
     case 'lit':
       return e.text;
     case 'name':
+    case 'path':
       return `"${e.text}"`;
     case 'call':
       return `${e.name}(...)`;
@@ -81,7 +88,12 @@ export class StChecker {
   private nest = 0;
   private reachable = true;
 
-  constructor(readonly scope: StScope) {}
+  /** Struct members, array elements, enum values, subrange checks (places.ts). */
+  private readonly places: Places;
+
+  constructor(readonly scope: StScope) {
+    this.places = new Places(this, scope.symbols);
+  }
 
   // ---- statements ----
 
@@ -94,7 +106,7 @@ export class StChecker {
         if (t) out.push(...t);
       } catch (e) {
         if (!(e instanceof Fail)) throw e;
-        this.errors.push({ pos: e.pos, message: e.message });
+        this.errors.push({ pos: e.pos, message: e.message, ...(e.rule ? { rule: e.rule } : {}) });
       }
     }
     return out;
@@ -113,9 +125,11 @@ export class StChecker {
   private statement(s: Stmt): TStmt[] | undefined {
     switch (s.k) {
       case 'assign': {
+        const whole = this.places.wholeAssignment(s.target, s.value);
+        if (whole) return whole;
         const dst = this.target(s.target);
         const value = this.expr(s.value, dst.type);
-        return [{ k: 'assign', dst, value: this.to(value, dst.type, s.value.pos, `assign to ${s.target.k === 'name' ? s.target.text : 'it'}`) }];
+        return [this.places.assign(dst, this.to(value, dst.type, s.value.pos, `assign to ${s.target.k === 'name' || s.target.k === 'path' ? s.target.text : 'it'}`), s.value.pos)];
       }
       case 'call':
         return [this.callStatement(s.name, s.args, s.pos)];
@@ -213,7 +227,9 @@ export class StChecker {
     if (!isIntegerType(type) && !isBitStringType(type) || type === 'BOOL')
       throw new Fail(s.selector.pos, `the CASE selector must be an integer; ${describe(s.selector)} is ${type}`);
     const label = (e: Expr): Value => {
-      if (e.k !== 'lit') throw new Fail(e.pos, 'a CASE label must be an integer literal (like 3 or 16#0F)');
+      const en = this.places.enumValue(e);
+      if (en !== undefined) return en;
+      if (e.k !== 'lit') throw new Fail(e.pos, 'a CASE label must be an integer literal (like 3 or 16#0F) or an enum value');
       const lit = parseLiteral(e.text, type);
       if (!lit.ok) throw new Fail(e.pos, lit.message);
       return lit.value;
@@ -292,6 +308,10 @@ export class StChecker {
         return;
       }
       const member = inst.scope.own(decl.name);
+      if (member?.kind === 'agg') {
+        assigns.push(...this.places.copyInto(member.node, a.value, `the input ${decl.name} of ${pou.name}`));
+        return;
+      }
       if (member?.kind !== 'var') throw new Fail(a.pos, `the input ${decl.name} of ${pou.name} has a type the simulator does not run (${decl.type})`);
       const dst: Access = { kind: 'var', v: member, type: member.type };
       assigns.push({ dst, value: this.to(this.expr(a.value, dst.type), dst.type, a.value.pos, `give the input ${decl.name}`) });
@@ -380,13 +400,15 @@ export class StChecker {
         refs.set(decl.name, this.inOutArgument(a, decl.name, decl.type, pou.name));
         return;
       }
-      const declared = decl.type.trim().toUpperCase();
+      const m = site?.scope.own(decl.name);
+      if (m?.kind === 'agg') {
+        assigns.push(...this.places.copyInto(m.node, a.value, `the input ${decl.name} of ${pou.name}`));
+        return;
+      }
+      const declared = m?.kind === 'var' ? m.type : decl.type.trim().toUpperCase();
       if (!isElementaryType(declared)) throw new Fail(a.pos, `the input ${decl.name} of ${pou.name} is ${decl.type}, a type the simulator does not run`);
       const value = this.to(this.expr(a.value, declared), declared, a.value.pos, `give the input ${decl.name}`);
-      if (site) {
-        const m = site.scope.own(decl.name);
-        if (m?.kind === 'var') assigns.push({ dst: { kind: 'var', v: m, type: m.type }, value });
-      }
+      if (m?.kind === 'var') assigns.push({ dst: { kind: 'var', v: m, type: m.type }, value });
     });
     for (const v of inputs)
       if (v.varClass === 'inOut' && !given.has(v.name.toUpperCase())) throw new Fail(pos, `the in-out ${v.name} of ${pou.name} must be given (it is passed by reference)`);
@@ -434,12 +456,10 @@ export class StChecker {
 
   /** A writable variable. */
   target(e: Expr): Access {
-    if (e.k !== 'name') throw new Fail(e.pos, `${describe(e)} is not a variable and cannot be assigned`);
-    const r = this.scope.symbols.resolve(e.text, { literals: false, implicitLocations: true });
-    if (!r.ok) throw new Fail(e.pos, r.message);
-    const a = r.access;
+    if (e.k !== 'name' && e.k !== 'path') throw new Fail(e.pos, `${describe(e)} is not a variable and cannot be assigned`);
+    const a = this.places.leaf(e);
     if (a.kind === 'const') throw new Fail(e.pos, `"${e.text}" is a constant`);
-    if ((a.kind === 'var' || a.kind === 'bit') && a.v.constant) throw new Fail(e.pos, `"${e.text}" is CONSTANT and cannot be written`);
+    if ((a.kind === 'var' || a.kind === 'bit' || a.kind === 'elem') && a.v.constant) throw new Fail(e.pos, `"${e.text}" is CONSTANT and cannot be written`);
     if (a.kind === 'pin' && a.dir === 'out') throw new Fail(e.pos, `"${e.text}" is an output of ${a.fb.type} "${a.fb.name}"; only the block writes it`);
     return a;
   }
@@ -462,6 +482,8 @@ export class StChecker {
   expr(e: Expr, hint?: ElementaryType): TExpr {
     switch (e.k) {
       case 'lit': {
+        const en = this.places.enumValue(e);
+        if (en !== undefined) return { k: 'const', type: ENUM_STORAGE, value: en };
         const lit = parseLiteral(e.text);
         if (!lit.ok) throw new Fail(e.pos, lit.message);
         const untyped = /^[+-]?(\d|\d[\d_]*#)/.test(e.text) && !/^[+-]?\d[\d_]*#.*#/.test(e.text);
@@ -471,11 +493,13 @@ export class StChecker {
         }
         return { k: 'const', type: lit.type, value: lit.value, ...(untyped ? { literal: e.text } : {}) };
       }
-      case 'name': {
-        const r = this.scope.symbols.resolve(e.text, { literals: false, implicitLocations: true });
-        if (!r.ok) throw new Fail(e.pos, r.message);
-        if (r.access.kind === 'const') return { k: 'const', type: r.access.type, value: r.access.value };
-        return { k: 'read', type: r.access.type, access: r.access };
+      case 'name':
+      case 'path': {
+        const en = this.places.enumValue(e);
+        if (en !== undefined) return { k: 'const', type: ENUM_STORAGE, value: en };
+        const a = this.places.leaf(e);
+        if (a.kind === 'const') return { k: 'const', type: a.type, value: a.value };
+        return { k: 'read', type: a.type, access: a };
       }
       case 'cr': {
         const lit = this.crLiterals.get(e.slot);

@@ -21,6 +21,8 @@ export interface StEmitter {
   fbRef(index: number): string;
   readValue(src: Source, to: ElementaryType): string;
   writeValue(a: Access, x: string, from: ElementaryType): string;
+  /** Slot expression of an element chosen by variable indexes (set while an ST body is written). */
+  elemSlot: (a: Extract<Access, { kind: 'elem' }>) => string;
 }
 
 /** Statement text running a body: written in place, or `X.call(first, end, now, scan);`. */
@@ -52,6 +54,33 @@ class StGen {
   }
 
   run(): string[] {
+    const before = this.em.elemSlot;
+    this.em.elemSlot = (a) => this.elemSlot(a);
+    try {
+      return this.body_();
+    } finally {
+      this.em.elemSlot = before;
+    }
+  }
+
+  /**
+   * `slot + X.ix(network, line, i, lower, upper, what) * mult + ...`: X.ix checks the bounds (a
+   * runtime fault, LD-E62) and gives i - lower. Index expressions are plain values (no calls of
+   * user functions, which need statements first).
+   */
+  private elemSlot(a: Extract<Access, { kind: 'elem' }>): string {
+    const em = this.em;
+    const parts = a.terms.map((t) => {
+      const c = this.expr(t.index);
+      if (c.pre.length) throw new Error(`${t.what}: an index calling a user FUNCTION is not supported`);
+      const m = t.mult[a.v.store];
+      const ix = `X.ix(${em.p(this.op.network)}, ${t.line}, ${c.code}, ${em.p(t.lower)}, ${em.p(t.upper)}, ${JSON.stringify(t.what)})`;
+      return m === 1 ? ix : `${ix} * ${em.p(m)}`;
+    });
+    return `${em.p(a.v.slot)} + ${parts.join(' + ')}`;
+  }
+
+  private body_(): string[] {
     const out: string[] = [`${this.block}: {`];
     if (this.op.crSlots > 0) out.push(`let ${Array.from({ length: this.op.crSlots }, (_, i) => `c${this.d}_${i} = 0`).join(', ')};`);
     if (this.op.labels) {

@@ -1,7 +1,7 @@
 // Recursive-descent parser of Structured Text statements and expressions. Precedence, highest
 // first (IEC 61131-3 table 71): ( ), function call, **, unary - and NOT, * / MOD, + -,
 // < > <= >=, = <>, AND &, XOR, OR; operators of one level group left to right.
-import { StSyntaxError, type Arg, type BinaryOp, type CaseLabel, type Expr, type Pos, type Stmt } from './ast';
+import { StSyntaxError, type Arg, type BinaryOp, type CaseLabel, type Expr, type PathStep, type Pos, type Stmt } from './ast';
 import { tokenize, type Token } from './lexer';
 
 /** Words that end a statement list (and cannot start a statement). */
@@ -277,16 +277,31 @@ export class Parser {
     if (t.kind !== 'ident' || KEYWORDS.has(t.upper)) this.fail('expected a variable');
     this.k++;
     let text = t.text;
-    while (this.is('.')) {
+    let head: string | undefined;
+    const steps: PathStep[] = [];
+    let constant = true;
+    while (this.is('.') || this.is('[')) {
+      if (this.accept('[')) {
+        head ??= text;
+        const index: Expr[] = [];
+        do index.push(this.expression());
+        while (this.accept(','));
+        this.expect(']', 'to close the index list');
+        steps.push({ index });
+        if (!index.every((e) => e.k === 'lit' && /^[+-]?\d+$/.test(e.text))) constant = false;
+        text += `[${index.map(exprText).join(',')}]`;
+        continue;
+      }
       const part = this.peek();
       if (part.kind !== 'ident' && !(part.kind === 'literal' && /^\d+$/.test(part.text)))
         this.fail('expected a member name or a bit number after "."', part);
       this.k += 2;
       text += `.${part.text}`;
+      if (head !== undefined) steps.push({ member: part.text });
     }
-    if (this.is('[')) this.fail('arrays are not supported');
     if (this.is('^')) this.fail('pointers (^) are not supported');
-    return { k: 'name', text, pos: t.pos };
+    if (head === undefined || constant) return { k: 'name', text, pos: t.pos };
+    return { k: 'path', head, steps, text, pos: t.pos };
   }
 
   /** Arguments after `(`, through the closing `)`. */
@@ -381,7 +396,10 @@ export class Parser {
       this.k++;
       return { k: 'lit', text: t.text, pos: t.pos };
     }
-    if (t.kind === 'string') this.fail('strings (STRING) are not supported');
+    if (t.kind === 'string') {
+      this.k++;
+      return { k: 'lit', text: t.text, pos: t.pos };
+    }
     if (t.kind === 'ident' && (t.upper === 'TRUE' || t.upper === 'FALSE')) {
       this.k++;
       return { k: 'lit', text: t.upper, pos: t.pos };
@@ -392,6 +410,24 @@ export class Parser {
     }
     if ((t.kind === 'ident' && !KEYWORDS.has(t.upper)) || t.kind === 'location') return this.variable();
     this.fail('expected a value (a variable, a literal, a call or "(")');
+  }
+}
+
+/** An index expression as text, for names and messages (`i`, `3`, `i + 1`). */
+function exprText(e: Expr): string {
+  switch (e.k) {
+    case 'lit':
+    case 'name':
+    case 'path':
+      return e.text;
+    case 'binary':
+      return `${exprText(e.a)} ${e.op} ${exprText(e.b)}`;
+    case 'unary':
+      return `${e.op === 'NOT' ? 'NOT ' : '-'}${exprText(e.a)}`;
+    case 'call':
+      return `${e.name}(...)`;
+    case 'cr':
+      return 'CR';
   }
 }
 
