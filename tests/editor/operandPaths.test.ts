@@ -1,9 +1,11 @@
 // Operands naming a struct member or an array element (P.X, A[3]): accepted, typed, offered by
 // completion after "P.", and wrong paths explained.
 import { expect, test } from 'vitest';
-import { newProject, variable } from '../../src/model/factory';
+import { newNetwork, newPou, newProject, variable } from '../../src/model/factory';
+import type { LdElement } from '../../src/model/elements';
+import { undeclaredVariables } from '../../src/editor/variables/undeclared';
 import type { Project } from '../../src/model/project';
-import { candidatesFor, describeLiteral, rankCandidates, resolveName } from '../../src/editor/inspector/operands';
+import { candidatesFor, describeLiteral, pinRole, rankCandidates, resolveName } from '../../src/editor/inspector/operands';
 import { pouVariableUses } from '../../src/editor/variables/usage';
 
 function project(): Project {
@@ -54,4 +56,17 @@ test('a member operand counts as a use of its variable', () => {
     pous: [{ ...pou, networks: [{ ...net, elements: [{ id: 'e1' as never, kind: 'contact', contact: 'NO', variable: 'A[2]', row: 0, col: 0 }] }] }],
   };
   expect(pouVariableUses(withUse.pous[0]!).get('A')).toHaveLength(1);
+});
+
+test("an operand on a user block's pin declared with a data type is declared with that type", () => {
+  const p = project();
+  const fb = newPou('Plot', { kind: 'FUNCTION_BLOCK', variables: [variable('Pt', 'Point', { varClass: 'input' })] });
+  const box = {
+    id: 'b1', kind: 'box', blockType: 'Plot', instance: 'Plot1', inputs: { Pt: 'Here' }, outputs: {}, row: 0, col: 1,
+  } as unknown as LdElement;
+  const main = { ...p.pous[0]!, networks: [newNetwork({ rows: 4, cols: 8, elements: [box] })] };
+  const withCall: Project = { ...p, pous: [main, fb] };
+  expect(undeclaredVariables(withCall, main).map((v) => `${v.name} : ${v.type}`)).toEqual(['Plot1 : Plot', 'Here : Point']);
+  const offered = candidatesFor(withCall, main, pinRole({ name: 'Pt', type: 'ANY', declaredType: 'Point' } as never, 'input'));
+  expect(offered.map((c) => c.text)).toEqual(['P']);
 });

@@ -5,6 +5,7 @@ import type { BoxElement } from '../../model/elements';
 import { declaredPinType } from '../../model/library';
 import { selectLibrary, useDocument, useDocumentStore } from '../../store/documentStore';
 import { BindingField } from './BindingField';
+import { pinRole } from './operands';
 import { CommitInput } from '../variables/CommitInput';
 import { withOperand } from '../canvas/pinOperands';
 
@@ -95,7 +96,7 @@ export function BoxInspector({ box }: { box: BoxElement }) {
             key={pin.name}
             label={`${pin.name} : ${declaredPinType(pin)}`}
             value={box.inputs[pin.name] ?? ''}
-            role={{ kind: 'pin', pinType: pin.type, direction: 'input' }}
+            role={pinRole(pin, 'input')}
             placeholder={pin.name === powerIn ? 'power flow from the left' : 'variable or literal'}
             testId={`pin-${pin.name}`}
             onCommit={(text) => update(box.id, { inputs: withOperand(box.inputs, pin.name, text) })}
@@ -109,7 +110,7 @@ export function BoxInspector({ box }: { box: BoxElement }) {
             key={pin.name}
             label={`${pin.name} : ${declaredPinType(pin)}`}
             value={box.outputs[pin.name] ?? ''}
-            role={{ kind: 'pin', pinType: pin.type, direction: 'output' }}
+            role={pinRole(pin, 'output')}
             placeholder={pin.name === powerOut ? 'power flow to the right' : 'assign to a variable'}
             testId={`pin-${pin.name}`}
             onCommit={(text) => update(box.id, { outputs: withOperand(box.outputs, pin.name, text) })}

@@ -24,7 +24,7 @@ export function suggestedType(role: BindingRole): string {
       // A standard block's name (TON), or a user FB as the project spells it (Motor).
       return blockSignature(role.blockType)?.name ?? role.blockType;
     case 'pin':
-      return concreteType(role.pinType);
+      return role.declaredType ?? concreteType(role.pinType);
   }
 }
 

@@ -1,7 +1,8 @@
 // What an element or pin binds to, and which declared names fit there. Pure: used by the
 // completion list, the inspector and the "declare it?" offer.
 import { findVariable } from '../../model/factory';
-import { blockLibrary } from '../../model/library';
+import { blockLibrary, declaredPinType } from '../../model/library';
+import type { PinSignature } from '../../model/blocks';
 import {
   GENERIC_MEMBERS,
   INT_INFO,
@@ -20,7 +21,19 @@ export type BindingRole =
   | { readonly kind: 'contact' }
   | { readonly kind: 'coil' }
   | { readonly kind: 'instance'; readonly blockType: string }
-  | { readonly kind: 'pin'; readonly pinType: PinType; readonly direction: 'input' | 'output' };
+  | {
+      readonly kind: 'pin';
+      readonly pinType: PinType;
+      readonly direction: 'input' | 'output';
+      /** A user block's pin declared with a data type (`Point`): its pinType is ANY. */
+      readonly declaredType?: string;
+    };
+
+/** The role of a block pin's operand, keeping a user pin's declared data type (see declaredPinType). */
+export function pinRole(pin: PinSignature, direction: 'input' | 'output'): BindingRole {
+  const declared = declaredPinType(pin);
+  return { kind: 'pin', pinType: pin.type, direction, ...(declared !== pin.type ? { declaredType: declared } : {}) };
+}
 
 /** The elementary types a pin type admits. */
 export function pinTypeMembers(type: PinType): readonly ElementaryType[] {
@@ -36,7 +49,7 @@ export function acceptedTypes(role: BindingRole): readonly string[] {
     case 'instance':
       return [role.blockType.toUpperCase()];
     case 'pin':
-      return pinTypeMembers(role.pinType);
+      return role.declaredType ? [role.declaredType.toUpperCase()] : pinTypeMembers(role.pinType);
   }
 }
 

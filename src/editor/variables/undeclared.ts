@@ -6,7 +6,7 @@ import { blockLibrary, type BlockLibrary } from '../../model/library';
 import { variable } from '../../model/factory';
 import type { Pou, Project, Variable } from '../../model/project';
 import { suggestedType } from '../inspector/declareOffer';
-import type { BindingRole } from '../inspector/operands';
+import { pinRole, type BindingRole } from '../inspector/operands';
 import { parseLiteral } from '../../engine/values/literals';
 import { identifierProblem } from './validation';
 
@@ -25,13 +25,13 @@ function* namedOperands(pou: Pou, lib: BlockLibrary): Generator<{ name: string; 
         for (const pin of layout.inputs) {
           const operand = el.inputs[pin.name];
           if (operand !== undefined && !parseLiteral(operand.trim()).ok) {
-            yield { name: operand, role: { kind: 'pin', pinType: pin.type, direction: 'input' } };
+            yield { name: operand, role: pinRole(pin, 'input') };
           }
         }
         for (const pin of layout.outputs) {
           const operand = el.outputs[pin.name];
           if (operand !== undefined)
-            yield { name: operand, role: { kind: 'pin', pinType: pin.type, direction: 'output' } };
+            yield { name: operand, role: pinRole(pin, 'output') };
         }
       }
     }
