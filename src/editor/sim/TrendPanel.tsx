@@ -1,10 +1,11 @@
-// Trend (timing diagram) of chosen signals over the last N scans, drawn with uPlot.
+// Trend (timing diagram) of chosen signals over the last N scans, drawn with uPlot: a lane per
+// signal against the simulated time (src/editor/sim/trendChart.ts).
 import { useEffect, useMemo, useRef, useState } from 'react';
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import type { SimState } from '../../store/simStore';
 import { useSim, useSimStore } from './simContext';
-import { trendData, trendOptions, type TrendSignal } from './trendChart';
+import { trendData, trendLayout, trendOptions, type TrendSignal, type TrendView } from './trendChart';
 import { useWatchCandidates } from './useWatchCandidates';
 import { VariablePicker } from './VariablePicker';
 import './sim.css';
@@ -47,7 +48,7 @@ export function TrendPanel() {
         ))}
       </div>
       {names.length === 0 ? (
-        <p className="rs-sim-empty">Add signals to see them scan by scan: BOOL as digital traces, numbers as lines.</p>
+        <p className="rs-sim-empty">Add signals to see them over time: each BOOL in its own thin lane, each number in a lane on its own scale.</p>
       ) : (
         <TrendChart types={candidates} />
       )}
@@ -67,12 +68,17 @@ function TrendChart({ types }: { types: readonly { name: string; type: string }[
     [trend.names, types],
   );
   const signalKey = signals.map((s) => `${s.name}:${s.type}`).join(',');
+  /** The samples and lanes drawn now; the chart's axes, legend and tip read them. */
+  const view = useRef<TrendView | undefined>(undefined);
 
   useEffect(() => {
     const el = host.current;
     if (!el) return;
     const text = getComputedStyle(el).color || '#333';
-    const chart = new uPlot(trendOptions(signals, 400, 120, () => sim.getState().trend, text), trendData(signals, sim.getState().trend), el);
+    const buffer = sim.getState().trend;
+    view.current = { buffer, layout: trendLayout(signals, buffer) };
+    const current = () => view.current!;
+    const chart = new uPlot(trendOptions(signals, 400, 120, current, text), trendData(current().layout, buffer), el);
     plot.current = chart;
     // Fill the panel: the plot gets the host's size less the legend under it.
     const fit = () => {
@@ -92,15 +98,19 @@ function TrendChart({ types }: { types: readonly { name: string; type: string }[
   }, [signalKey, sim]);
 
   useEffect(() => {
-    plot.current?.setData(trendData(signals, trend));
+    if (!plot.current) return;
+    view.current = { buffer: trend, layout: trendLayout(signals, trend) };
+    plot.current.setData(trendData(view.current.layout, trend));
   }, [trend, signals]);
 
   // Scan history: the cursor stands on the recorded scan shown on the canvas (issue 14).
   const historyScan = useSim(selectHistoryScan);
   useEffect(() => {
     const chart = plot.current;
-    if (!chart || historyScan === undefined) return;
-    chart.setCursor({ left: chart.valToPos(historyScan, 'x'), top: 0 });
+    const at = historyScan === undefined ? -1 : trend.scans.indexOf(historyScan);
+    const t = trend.timesMs[at];
+    if (!chart || t === undefined) return;
+    chart.setCursor({ left: chart.valToPos(t, 'x'), top: 0 });
   }, [historyScan, trend]);
 
   return <div ref={host} className="rs-sim-chart" data-testid="trend-chart" />;

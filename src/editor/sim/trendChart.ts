@@ -1,94 +1,255 @@
-// The trend as a uPlot timing diagram: x = scan number; each BOOL signal is a digital trace in its
-// own lane (left axis names the lanes), numeric signals are lines against the right axis.
+// The trend as a uPlot timing diagram, one lane per signal stacked top to bottom in the order
+// chosen: a BOOL signal is a thin digital trace in its own lane; a number has a taller lane on its
+// own scale (the lane spans the lowest to the highest value in the window, both written on the
+// right). x is the simulated time (ms, or s over longer windows); the legend and the hover tip give
+// the time, the scan number and every value at the cursor.
 import uPlot from 'uplot';
 import type { TrendBuffer } from '../../sim/trendBuffer';
 import { formatLive } from './liveValues';
 
 const COLOURS = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '#17becf', '#8c564b', '#e377c2', '#7f7f7f', '#bcbd22'];
-const LANE = 1.5;
-const HIGH = 1;
+/** Lane heights in lane units: a BOOL trace is thin, a number gets room for its shape. */
+const BOOL_LANE = 1;
+const NUMBER_LANE = 3;
+/** Space between a trace and its lane's edges (lane units). */
+const PAD = 0.2;
 
 export interface TrendSignal {
   readonly name: string;
   readonly type: string;
 }
 
-/** Lane index of every BOOL signal (-1 for numbers). */
-const lanes = (signals: readonly TrendSignal[]): number[] => {
-  let next = 0;
-  return signals.map((s) => (s.type === 'BOOL' ? next++ : -1));
-};
+export interface TrendLane {
+  readonly name: string;
+  readonly type: string;
+  readonly boolean: boolean;
+  /** Lane edges on the 'lanes' scale (0 at the bottom of the chart). */
+  readonly bottom: number;
+  readonly top: number;
+  /** The window's lowest and highest value (numbers), drawn at the lane's lower and upper trace edges. */
+  readonly min: number;
+  readonly max: number;
+}
 
-export function trendOptions(signals: readonly TrendSignal[], width: number, height: number, buffer: () => TrendBuffer, textColour: string): uPlot.Options {
-  const laneOf = lanes(signals);
-  const boolCount = laneOf.filter((l) => l >= 0).length;
-  const hasNumbers = signals.some((s) => s.type !== 'BOOL');
-  const raw = (seriesIdx: number, idx: number | null) => (idx === null ? undefined : buffer().series[seriesIdx - 1]?.[idx]);
+export interface TrendLayout {
+  readonly lanes: readonly TrendLane[];
+  /** Height of all lanes (lane units). */
+  readonly total: number;
+}
+
+/** What the chart draws now: the samples and their lanes (both change with every frame). */
+export interface TrendView {
+  readonly buffer: TrendBuffer;
+  readonly layout: TrendLayout;
+}
+
+const seriesOf = (buffer: TrendBuffer, name: string): readonly number[] => buffer.series[buffer.names.indexOf(name)] ?? [];
+
+/** Lanes for the signals, numbers scaled to the values in the buffer. */
+export function trendLayout(signals: readonly TrendSignal[], buffer: TrendBuffer): TrendLayout {
+  const total = signals.reduce((h, s) => h + (s.type === 'BOOL' ? BOOL_LANE : NUMBER_LANE), 0);
+  let top = total;
+  const lanes = signals.map((s): TrendLane => {
+    const boolean = s.type === 'BOOL';
+    const bottom = top - (boolean ? BOOL_LANE : NUMBER_LANE);
+    let min = Infinity;
+    let max = -Infinity;
+    if (!boolean)
+      for (const v of seriesOf(buffer, s.name)) {
+        if (!Number.isFinite(v)) continue;
+        if (v < min) min = v;
+        if (v > max) max = v;
+      }
+    const lane = { name: s.name, type: s.type, boolean, bottom, top, min: boolean ? 0 : min, max: boolean ? 1 : max };
+    top = bottom;
+    return lane;
+  });
+  return { lanes, total };
+}
+
+/** Where value `v` of a lane is drawn on the 'lanes' scale. */
+export function laneY(lane: TrendLane, v: number): number {
+  const low = lane.bottom + PAD;
+  const high = lane.top - PAD;
+  if (lane.boolean) return v ? high : low;
+  if (!(lane.max > lane.min)) return (low + high) / 2;
+  return low + ((v - lane.min) / (lane.max - lane.min)) * (high - low);
+}
+
+/** uPlot's aligned data: x = time (ms), then one row per lane on the 'lanes' scale. */
+export function trendData(layout: TrendLayout, buffer: TrendBuffer): uPlot.AlignedData {
+  const rows = layout.lanes.map((lane) => seriesOf(buffer, lane.name).map((v) => laneY(lane, v)));
+  return [[...buffer.timesMs], ...rows];
+}
+
+/** Time as the x axis and the tip write it: ms when the window spans under 2 s, else seconds. */
+export function formatTime(ms: number, spanMs: number): string {
+  if (spanMs < 2000) return `${Math.round(ms)} ms`;
+  const s = ms / 1000;
+  const digits = spanMs < 20000 ? 2 : spanMs < 200000 ? 1 : 0;
+  return `${Number(s.toFixed(digits))} s`;
+}
+
+const span = (u: uPlot) => (u.scales.x!.max ?? 0) - (u.scales.x!.min ?? 0);
+
+/** The value of lane `i` at sample `idx` as text ('—' when there is none). */
+function valueText(view: () => TrendView, i: number, idx: number | null | undefined): string {
+  if (idx === null || idx === undefined) return '—';
+  const { buffer, layout } = view();
+  const lane = layout.lanes[i];
+  const value = lane ? seriesOf(buffer, lane.name)[idx] : undefined;
+  if (!lane || value === undefined) return '—';
+  return lane.boolean ? (value ? 'TRUE' : 'FALSE') : formatLive(lane.type, value);
+}
+
+/** The tip beside the cursor: time, scan number, and each signal's value at that scan. */
+function tipPlugin(view: () => TrendView): uPlot.Plugin {
+  let tip: HTMLDivElement | undefined;
+  return {
+    hooks: {
+      init: [
+        (u) => {
+          tip = document.createElement('div');
+          tip.className = 'rs-trend-tip';
+          tip.setAttribute('data-testid', 'trend-tip');
+          tip.style.display = 'none';
+          u.over.appendChild(tip);
+        },
+      ],
+      setCursor: [
+        (u) => {
+          const idx = u.cursor.idx;
+          const { buffer, layout } = view();
+          const t = idx === null || idx === undefined ? undefined : buffer.timesMs[idx];
+          if (!tip || t === undefined || u.cursor.left === undefined || u.cursor.left < 0) {
+            if (tip) tip.style.display = 'none';
+            return;
+          }
+          tip.replaceChildren();
+          const head = document.createElement('div');
+          head.className = 'rs-trend-tip-head';
+          head.textContent = `t = ${formatTime(t, span(u))} · scan ${buffer.scans[idx!]}`;
+          tip.appendChild(head);
+          layout.lanes.forEach((lane, i) => {
+            const line = document.createElement('div');
+            line.textContent = `${lane.name} = ${valueText(view, i, idx)}`;
+            line.style.color = COLOURS[i % COLOURS.length]!;
+            tip!.appendChild(line);
+          });
+          tip.style.display = 'block';
+          const width = u.over.clientWidth;
+          const left = u.cursor.left + 12;
+          tip.style.left = `${left + tip.offsetWidth > width ? Math.max(0, u.cursor.left - 12 - tip.offsetWidth) : left}px`;
+          tip.style.top = `${Math.max(0, Math.min((u.cursor.top ?? 0) + 12, u.over.clientHeight - tip.offsetHeight))}px`;
+        },
+      ],
+    },
+  };
+}
+
+/**
+ * After each draw, what the chart shows is written on its host element for tests and tools:
+ * data-lanes "Name:TYPE:top-bottom|..." and data-time-labels "0 ms|250 ms|...".
+ */
+function describePlugin(view: () => TrendView, timeLabels: { current: string[] }): uPlot.Plugin {
+  return {
+    hooks: {
+      draw: [
+        (u) => {
+          const host = u.root.parentElement;
+          if (!host) return;
+          host.dataset.lanes = view()
+            .layout.lanes.map((l) => `${l.name}:${l.type}:${l.top}-${l.bottom}`)
+            .join('|');
+          host.dataset.timeLabels = timeLabels.current.join('|');
+        },
+      ],
+    },
+  };
+}
+
+export function trendOptions(
+  signals: readonly TrendSignal[],
+  width: number,
+  height: number,
+  view: () => TrendView,
+  textColour: string,
+): uPlot.Options {
   const axisStyle = { stroke: textColour, grid: { stroke: '#8884', width: 1 }, ticks: { stroke: '#8884', width: 1 } };
+  const lanes = () => view().layout.lanes;
+  const hasNumbers = signals.some((s) => s.type !== 'BOOL');
+  const timeLabels = { current: [] as string[] };
   return {
     width,
     height,
     legend: { show: true, live: true },
     cursor: { drag: { x: false, y: false } },
-    // With both kinds, BOOL lanes take the upper half and numbers the lower half, so they never overlap.
+    plugins: [tipPlugin(view), describePlugin(view, timeLabels)],
     scales: {
       x: { time: false },
-      bool: { range: [hasNumbers ? -Math.max(1, boolCount) * LANE - 0.3 : -0.3, Math.max(1, boolCount) * LANE] },
-      num: {
-        range: (_u, min, max) => {
-          const span = max - min || Math.abs(max) || 1;
-          return [min - span * 0.05, boolCount > 0 ? max + span * 1.15 : max + span * 0.05];
-        },
-      },
+      lanes: { range: () => [0, Math.max(1, view().layout.total)] },
     },
     axes: [
-      { ...axisStyle, scale: 'x', size: 30 },
       {
         ...axisStyle,
-        scale: 'bool',
-        show: boolCount > 0,
+        scale: 'x',
+        size: 30,
+        values: (u, splits) => (timeLabels.current = splits.map((v) => formatTime(v, span(u)))),
+      },
+      {
+        // Lane names, at the middle of each lane; the grid lines are the lanes' edges.
+        ...axisStyle,
+        scale: 'lanes',
         size: 90,
-        splits: () => signals.flatMap((_, i) => (laneOf[i]! >= 0 ? [laneOf[i]! * LANE + HIGH / 2] : [])),
-        values: () => signals.filter((s) => s.type === 'BOOL').map((s) => s.name),
+        splits: () => lanes().map((l) => (l.top + l.bottom) / 2),
+        values: () => lanes().map((l) => l.name),
+        grid: { show: false },
+        ticks: { show: false },
+      },
+      {
+        ...axisStyle,
+        scale: 'lanes',
+        size: 0,
+        splits: () => lanes().slice(1).map((l) => l.top),
+        values: (_u, splits) => splits.map(() => ''),
+        ticks: { show: false },
+      },
+      {
+        // Each number's scale: its lowest and highest value in the window, on the right.
+        ...axisStyle,
+        scale: 'lanes',
+        side: 1,
+        show: hasNumbers,
+        size: 70,
+        splits: () => lanes().flatMap((l) => (l.boolean || !(l.max >= l.min) ? [] : l.max > l.min ? [laneY(l, l.min), laneY(l, l.max)] : [laneY(l, l.min)])),
+        values: () =>
+          lanes().flatMap((l) =>
+            l.boolean || !(l.max >= l.min) ? [] : l.max > l.min ? [formatLive(l.type, l.min), formatLive(l.type, l.max)] : [formatLive(l.type, l.min)],
+          ),
         grid: { show: false },
       },
-      { ...axisStyle, scale: 'num', side: 1, show: hasNumbers, grid: { show: !boolCount } },
     ],
     series: [
       {
         label: 'scan',
-        value: (_u, v, _s, idx) => {
-          const t = idx === null ? undefined : buffer().timesMs[idx];
-          return v === null || v === undefined ? '—' : `${v}${t !== undefined ? ` (t = ${t} ms)` : ''}`;
+        value: (_u, _v, _s, idx) => {
+          const { buffer } = view();
+          const scan = idx === null ? undefined : buffer.scans[idx];
+          const t = idx === null ? undefined : buffer.timesMs[idx];
+          return scan === undefined ? '—' : `${scan}${t !== undefined ? ` (t = ${t} ms)` : ''}`;
         },
       },
-      ...signals.map((s, i): uPlot.Series => {
-        const boolean = s.type === 'BOOL';
-        return {
+      ...signals.map(
+        (s, i): uPlot.Series => ({
           label: s.name,
-          scale: boolean ? 'bool' : 'num',
+          scale: 'lanes',
           stroke: COLOURS[i % COLOURS.length]!,
-          width: boolean ? 2 : 1.5,
-          paths: boolean ? uPlot.paths.stepped!({ align: 1 }) : undefined,
+          width: s.type === 'BOOL' ? 2 : 1.5,
+          paths: s.type === 'BOOL' ? uPlot.paths.stepped!({ align: 1 }) : undefined,
           points: { show: false },
-          value: (_u, _v, seriesIdx, idx) => {
-            const value = raw(seriesIdx, idx);
-            if (value === undefined) return '—';
-            return boolean ? (value ? 'TRUE' : 'FALSE') : formatLive(s.type, value);
-          },
-        };
-      }),
+          value: (_u, _v, seriesIdx, idx) => valueText(view, seriesIdx - 1, idx),
+        }),
+      ),
     ],
   };
-}
-
-/** uPlot's aligned data: x = scans, then one row per signal (BOOL lifted into its lane). */
-export function trendData(signals: readonly TrendSignal[], buffer: TrendBuffer): uPlot.AlignedData {
-  const laneOf = lanes(signals);
-  const rows = signals.map((s, i) => {
-    const values = buffer.series[buffer.names.indexOf(s.name)] ?? [];
-    const lane = laneOf[i]!;
-    return lane >= 0 ? values.map((v) => lane * LANE + (v ? HIGH : 0)) : [...values];
-  });
-  return [[...buffer.scans], ...rows];
 }

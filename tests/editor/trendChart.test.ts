@@ -1,0 +1,66 @@
+// The trend's lanes: each BOOL apart in a thin lane, each number in a taller lane on its own
+// scale, and time written in ms or s.
+import { describe, expect, test } from 'vitest';
+import { formatTime, laneY, trendData, trendLayout } from '../../src/editor/sim/trendChart';
+import type { TrendBuffer } from '../../src/sim/trendBuffer';
+
+const buffer: TrendBuffer = {
+  names: ['Run', 'Count', 'Done', 'Level'],
+  scans: [1, 2, 3, 4],
+  timesMs: [10, 20, 30, 40],
+  series: [
+    [0, 1, 1, 0],
+    [0, 5, 10, 20],
+    [0, 0, 0, 1],
+    [1000, 1000, 1000, 1000],
+  ],
+};
+const signals = [
+  { name: 'Run', type: 'BOOL' },
+  { name: 'Count', type: 'INT' },
+  { name: 'Done', type: 'BOOL' },
+  { name: 'Level', type: 'REAL' },
+];
+
+describe('trend lanes', () => {
+  test('one lane per signal, top to bottom in the order chosen; BOOL lanes thin, numbers taller', () => {
+    const { lanes, total } = trendLayout(signals, buffer);
+    expect(lanes.map((l) => `${l.name} ${l.top}-${l.bottom}`)).toEqual(['Run 8-7', 'Count 7-4', 'Done 4-3', 'Level 3-0']);
+    expect(total).toBe(8);
+  });
+
+  test('every trace stays inside its own lane, whatever its values', () => {
+    const layout = trendLayout(signals, buffer);
+    const data = trendData(layout, buffer);
+    expect(data[0]).toEqual([10, 20, 30, 40]);
+    layout.lanes.forEach((lane, i) => {
+      for (const y of data[i + 1] as number[]) {
+        expect(y).toBeGreaterThan(lane.bottom);
+        expect(y).toBeLessThan(lane.top);
+      }
+    });
+  });
+
+  test('a number spans its lane from its lowest to its highest value in the window', () => {
+    const count = trendLayout(signals, buffer).lanes[1]!;
+    expect([count.min, count.max]).toEqual([0, 20]);
+    expect(laneY(count, 20) - laneY(count, 0)).toBeCloseTo(3 - 0.4);
+    expect(laneY(count, 10)).toBeCloseTo((laneY(count, 0) + laneY(count, 20)) / 2);
+  });
+
+  test('BOOL FALSE and TRUE are the low and high edge of the thin lane; a constant number sits in the middle', () => {
+    const [run, , , level] = trendLayout(signals, buffer).lanes;
+    expect(laneY(run!, 0)).toBeCloseTo(7.2);
+    expect(laneY(run!, 1)).toBeCloseTo(7.8);
+    expect(laneY(level!, 1000)).toBeCloseTo(1.5);
+  });
+});
+
+describe('time on the x axis', () => {
+  test('ms for short windows, seconds for longer ones', () => {
+    expect(formatTime(250, 1000)).toBe('250 ms');
+    expect(formatTime(5250, 8000)).toBe('5.25 s');
+    expect(formatTime(65000, 60000)).toBe('65 s');
+    expect(formatTime(300000, 600000)).toBe('300 s');
+  });
+});
