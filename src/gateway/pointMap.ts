@@ -18,7 +18,7 @@ const isBit = (address: string) => /^%[IQ]X/.test(address);
 /** OpenPLC: %IXn.b -> discrete input 8n+b, %QXn.b -> coil 8n+b, %IWn -> input register n, %QWn -> holding register n. */
 export function openPlcRegister(address: string): { table: ModbusTable; register: number } | undefined {
   const loc = parseLocation(address);
-  if (!loc) return undefined;
+  if (!loc || loc.levels) return undefined; // hierarchical addresses (%IW0.0) have no OpenPLC register
   if (loc.size === 'X' && loc.bit !== undefined && loc.index <= 99) {
     return { table: loc.area === 'I' ? 'discreteInputs' : 'coils', register: loc.index * 8 + loc.bit };
   }

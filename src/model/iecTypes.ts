@@ -106,14 +106,23 @@ export const GENERIC_MEMBERS: Record<GenericType, readonly ElementaryType[]> = {
 export type Value = boolean | number | bigint | string;
 
 /** IEC directly represented variable: %IX0.0, %QX1.7, %MX2.3, %IW0, %QW3, %MW10, %ID.., %MD... */
-export const LOCATION_RE = /^%([IQM])([XBWDL]?)(\d+)(?:\.(\d+))?$/;
+export const LOCATION_RE = /^%([IQM])([XBWDL]?)(\d+)((?:\.\d+)*)$/;
 
 export interface ParsedLocation {
   area: 'I' | 'Q' | 'M';
   size: 'X' | 'B' | 'W' | 'D' | 'L';
   index: number;
   bit?: number;
+  /**
+   * Further fields of a hierarchical address, as MATIEC reads them (`%IW0.0` → index 0, levels [0];
+   * `%IB0.0.32.24576.1` from CANopen configurations): a location of its own, not the flat `%IW0`.
+   */
+  levels?: readonly number[];
 }
+
+/** An address in one canonical spelling, so %ix0.0 and %IX0.0 compare equal. */
+export const locationText = (loc: ParsedLocation): string =>
+  `%${loc.area}${loc.size}${loc.index}${loc.bit !== undefined ? `.${loc.bit}` : ''}${(loc.levels ?? []).map((l) => `.${l}`).join('')}`;
 
 /** Parses an IEC location; returns undefined when the text is not a valid location. */
 export function parseLocation(text: string): ParsedLocation | undefined {
@@ -121,12 +130,14 @@ export function parseLocation(text: string): ParsedLocation | undefined {
   if (!m) return undefined;
   const size = (m[2] || 'X') as ParsedLocation['size'];
   const index = Number(m[3]);
-  const bit = m[4] !== undefined ? Number(m[4]) : undefined;
+  // Fields after the index: a bit address's bit, then (any size) the levels of a hierarchical address.
+  const rest = m[4] ? m[4].slice(1).split('.').map(Number) : [];
+  const bit = size === 'X' ? rest.shift() : undefined;
   if (size === 'X') {
     if (m[2] === '' && bit === undefined) return undefined; // "%I3" is ambiguous; require %IX3.0 style
-    if (bit !== undefined && bit > 7) return undefined;
-  } else if (bit !== undefined) return undefined;
-  return { area: m[1] as ParsedLocation['area'], size, index, ...(bit !== undefined ? { bit } : {}) };
+    if (bit !== undefined && bit > 7 && !rest.length) return undefined;
+  }
+  return { area: m[1] as ParsedLocation['area'], size, index, ...(bit !== undefined ? { bit } : {}), ...(rest.length ? { levels: rest } : {}) };
 }
 
 /** The IEC types a location can hold: X -> BOOL, B -> 8 bit, W -> 16 bit, D -> 32 bit, L -> 64 bit. */

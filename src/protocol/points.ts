@@ -42,7 +42,7 @@ export const zeroOf = (type: PointType): WireValue => (type === 'BOOL' ? false :
  */
 export function canonicalAddress(text: string): string | undefined {
   const loc = parseLocation(text);
-  if (!loc || loc.area === 'M') return undefined;
+  if (!loc || loc.area === 'M' || loc.levels) return undefined;
   if (loc.size === 'X' && loc.bit !== undefined) return `%${loc.area}X${loc.index}.${loc.bit}`;
   if (loc.size === 'W') return `%${loc.area}W${loc.index}`;
   return undefined;

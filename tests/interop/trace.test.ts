@@ -35,7 +35,6 @@ const NOT_YET: Readonly<Record<string, string>> = {
   'beremiz__legacy_tc6v10_test_master_DS401GUI.xml':
     'its only PROGRAM, MAIN_TEST, is a legacy v1.0 FBD body and calls Test_SFC, whose variables have the user data type MYTYPE (LD-E15)',
   // Facts of the files (the corpus test's EXPLAINED rules): they run only with their vendor's runtime.
-  'gracesrm__OpenSWat.xml': 'the sensors sit at %IW0.0/%IW0.1, an address form IEC does not have (LD-E12)',
   'openplc-editor__Arduino_7_Segments.xml':
     "the VAR_EXTERNAL current_count is declared by the file's Arduino sketch, not by the file (LD-E16)",
 };

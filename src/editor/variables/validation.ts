@@ -8,6 +8,7 @@ import {
   isElementaryType,
   locationAdmits,
   parseLocation,
+  locationText,
   parseSizedString,
   type ElementaryType,
   type ParsedLocation,
@@ -114,9 +115,7 @@ export const isKnownVariableType = (type: string, lib: BlockLibrary = STANDARD_L
   isElementaryType(type.toUpperCase()) || parseSizedString(type) !== undefined || lib.isFbType(type);
 
 /** An address in one canonical spelling, so %ix0.0 and %IX0.0 compare equal. */
-export function canonicalLocation(loc: ParsedLocation): string {
-  return `%${loc.area}${loc.size}${loc.index}${loc.bit !== undefined ? `.${loc.bit}` : ''}`;
-}
+export const canonicalLocation = (loc: ParsedLocation): string => locationText(loc);
 
 /** Every located variable of the project, by canonical address, with who holds it. */
 export function addressOwners(project: Project): Map<string, { pou: string | undefined; name: string }[]> {
