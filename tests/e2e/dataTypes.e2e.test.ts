@@ -8,13 +8,11 @@ import type { Project } from '../../src/model/project';
 import { openApp, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 import { EditorPage, poll } from './panelsPage';
-import { SimPage } from './simPage';
 
 const browser = useChromium();
 let page: Page;
 let draw: DrawPage;
 let editor: EditorPage;
-let sim: SimPage;
 let errors: string[];
 
 beforeAll(async () => {
@@ -22,7 +20,6 @@ beforeAll(async () => {
   await page.evaluate(() => window.rungsmith!.documentStore!.getState().newProject('Plant'));
   draw = new DrawPage(page);
   editor = new EditorPage(page);
-  sim = new SimPage(page);
 });
 
 const project = (): Promise<Project> =>
