@@ -19,11 +19,13 @@ export function ResizeHandle({ side, controls }: { readonly side: PanelSide; rea
   const drag = useRef<{ start: number; size: number } | undefined>(undefined);
   const horizontal = side === 'bottom';
 
-  /** Sets the size, collapsing the panel when dragged below half its smallest size. */
-  const resize = (next: number) => {
+  /** Sets the size; dragged below half its smallest size, the panel collapses (keeping the size
+   * it had when the drag started, for when it opens again). */
+  const resize = (next: number, start: number) => {
     const panels = ui.getState().panels;
     if (next < PANEL_LIMITS[side].min / 2) {
-      if (!panels[collapsedKey(side)]) ui.getState().setPanels({ [collapsedKey(side)]: true });
+      if (!panels[collapsedKey(side)])
+        ui.getState().setPanels({ [collapsedKey(side)]: true, ...(start > 0 ? { [side]: start } : {}) });
       return;
     }
     ui.getState().setPanels({ [side]: clampSize(side, next, panels, windowSize()), [collapsedKey(side)]: false });
@@ -40,7 +42,7 @@ export function ResizeHandle({ side, controls }: { readonly side: PanelSide; rea
     const d = drag.current;
     if (!d) return;
     const delta = (horizontal ? e.clientY : e.clientX) - d.start;
-    resize(d.size + (side === 'left' ? delta : -delta));
+    resize(d.size + (side === 'left' ? delta : -delta), d.size);
   };
   const onPointerUp = (e: PointerEvent<HTMLDivElement>) => {
     drag.current = undefined;

@@ -1,6 +1,7 @@
 // Commands of the shell itself: show or hide each panel, dock the variable table, print. Shaped
 // like the command registry's (src/editor/commands/registry.ts) so the menus show them with their
 // keys; useShellKeys binds the keys.
+import type { UiStore } from '../../store/uiStore';
 import type { EditorContext } from '../commands/editorActions';
 import { printState } from '../print/printState';
 import { collapsedKey, type PanelSide } from './panelSizes';
@@ -20,10 +21,11 @@ const toggle = (side: PanelSide) => (ctx: EditorContext) => {
   ui.setPanels({ [collapsedKey(side)]: !ui.panels[collapsedKey(side)] });
 };
 
-/** Shows the variable table's tab wherever it is docked, its panel expanded. */
-export function showVariables(ctx: EditorContext) {
-  const ui = ctx.ui.getState();
-  ui.setPanels(ui.panels.variablesDock === 'bottom' ? { bottomCollapsed: false } : { rightCollapsed: false });
+/** Moves the variable table between the side panel and the full-width bottom panel, and shows it. */
+export function toggleVariablesDock(store: UiStore) {
+  const ui = store.getState();
+  const dock = ui.panels.variablesDock === 'bottom' ? 'side' : 'bottom';
+  ui.setPanels({ variablesDock: dock, ...(dock === 'bottom' ? { bottomCollapsed: false } : { rightCollapsed: false }) });
   requestAnimationFrame(() => document.getElementById('rs-tab-variables')?.click());
 }
 
@@ -65,10 +67,6 @@ export const SHELL_COMMANDS: readonly ShellCommand[] = [
     label: 'Variable table: wide view in the bottom panel',
     menu: 'View',
     description: 'Dock the variable table in the full-width bottom panel (every column on one line), or back in the side panel',
-    run: (ctx) => {
-      const ui = ctx.ui.getState();
-      ui.setPanels({ variablesDock: ui.panels.variablesDock === 'bottom' ? 'side' : 'bottom' });
-      showVariables(ctx);
-    },
+    run: (ctx) => toggleVariablesDock(ctx.ui),
   },
 ];

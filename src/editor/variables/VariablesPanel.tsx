@@ -7,7 +7,8 @@ import { useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { VariableScope } from '../../store/changes';
 import { selectProject, useDocument, useDocumentStore, type DocumentState } from '../../store/documentStore';
-import { useUiStore } from '../../store/uiStore';
+import { useUi, useUiStore } from '../../store/uiStore';
+import { toggleVariablesDock } from '../layout/shellCommands';
 import { variable } from '../../model/factory';
 import { blockLibrary } from '../../model/library';
 import type { Variable } from '../../model/project';
@@ -55,6 +56,7 @@ export function VariablesPanel() {
     [showGlobals, project, pou],
   );
   const uiStore = useUiStore();
+  const wide = useUi((s) => s.panels.variablesDock === 'bottom');
   const nextUse = useRef(new Map<string, number>());
   const focusRequest = useStore(variableFocus, (s) => s.request);
   const panel = useRef<HTMLElement>(null);
@@ -190,6 +192,20 @@ export function VariablesPanel() {
         />
         <button type="button" className="rs-button" onClick={add} data-testid="add-variable">
           Add variable
+        </button>
+        <button
+          type="button"
+          className="rs-button"
+          aria-pressed={wide}
+          title={
+            wide
+              ? 'Back to the side panel'
+              : 'Wide view: the table in the full-width bottom panel, every column on one line'
+          }
+          onClick={() => toggleVariablesDock(uiStore)}
+          data-testid="variables-wide"
+        >
+          Wide view
         </button>
         {undeclared.length > 0 && (
           <button
