@@ -11,8 +11,11 @@ import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { Network } from '../../model/project';
 import { SPEC_BOLD, SPEC_FONT, SPEC_MONO_SMALL, SPEC_SMALL, textWidth } from './textWidth';
 
-/** Narrowest column (content pixels): a contact or coil symbol with its leads. */
-export const CELL_W = 72;
+/**
+ * Narrowest column (content pixels): a contact or coil symbol with its leads. Ten of them (a new
+ * network) fit the canvas beside the side panels at 1280×720; longer names widen their column.
+ */
+export const CELL_W = 60;
 /** Room left and right of a name drawn over a contact or coil. */
 export const LABEL_PAD = 10;
 /** A box's margin between its cell edge and its body when no operand is written there. */

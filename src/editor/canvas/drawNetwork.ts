@@ -13,7 +13,7 @@ import { FORCED_BADGE } from '../theme/monitorStyle';
 import { networkColumns, type NetworkColumns } from './columns';
 import { drawConnectionPartners } from './drawConnectors';
 import { openInputs } from './pinOperands';
-import { drawElement, wire, wireStyle } from './drawSymbols';
+import { BOX_TOP, drawElement, wire, wireStyle } from './drawSymbols';
 import { CELL_H, cellRect, GRID_PAD_BOTTOM, WIRE_Y } from './geometry';
 
 export interface CellMarker {
@@ -93,6 +93,8 @@ export function drawForcedMark(ctx: Ctx, t: CanvasTheme, r: Rect) {
 
 /** Top of a diagnostic marker's outline inside an element's first row: below the names drawn over it. */
 export const MARKER_TOP = WIRE_Y - 14;
+/** On a box: just above its body, below its instance name (so the title stays clear too). */
+const BOX_MARKER_TOP = BOX_TOP - 2;
 /** Side of the marker's corner triangle (bottom-left of the cell, away from every name). */
 export const MARKER_CORNER = 13;
 
@@ -100,12 +102,13 @@ export const MARKER_CORNER = 13;
  * A diagnostic marker: a dashed outline around the element's symbol (below its name or
  * instance name, so it never hides them) and a filled triangle in the cell's bottom-left corner.
  */
-function drawMarker(ctx: Ctx, t: CanvasTheme, m: CellMarker, r: Rect) {
+function drawMarker(ctx: Ctx, t: CanvasTheme, m: CellMarker, r: Rect, box: boolean) {
+  const top = box ? BOX_MARKER_TOP : MARKER_TOP;
   ctx.strokeStyle = m.severity === 'error' ? t.error : t.warning;
   ctx.fillStyle = ctx.strokeStyle;
   ctx.lineWidth = 2;
   ctx.setLineDash([5, 3]);
-  ctx.strokeRect(r.x + 3, r.y + MARKER_TOP, r.width - 6, r.height - MARKER_TOP - 3);
+  ctx.strokeRect(r.x + 3, r.y + top, r.width - 6, r.height - top - 3);
   ctx.setLineDash([]);
   const bottom = m.cell.row * CELL_H + CELL_H - 3;
   ctx.beginPath();
@@ -207,7 +210,8 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
   if (paint.hover) drawConnectionPartners(ctx, t, n, paint.hover, paint.library);
   for (const m of paint.markers) {
     const el = elementAt(n, m.cell, paint.library);
-    drawMarker(ctx, t, m, el ? { ...elementRect(nc, el, paint.library), height: CELL_H, y: m.cell.row * CELL_H } : cellRect(nc, m.cell));
+    const r = el ? { ...elementRect(nc, el, paint.library), height: CELL_H, y: m.cell.row * CELL_H } : cellRect(nc, m.cell);
+    drawMarker(ctx, t, m, r, el?.kind === 'box' && el.row === m.cell.row);
   }
   if (paint.drag) {
     const { dRow, dCol, blocked, ids, ghost } = paint.drag;

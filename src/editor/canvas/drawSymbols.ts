@@ -112,7 +112,8 @@ function liveBelow(ctx: Ctx, t: CanvasTheme, text: string | undefined, cx: numbe
     return;
   }
   ctx.font = state === 'TRUE' ? FONT_SMALL_BOLD : FONT_SMALL;
-  const shown = elide(ctx, text, w - 12);
+  // A forced value's "[F]" is the forced badge's job on the canvas (drawNetwork's drawForcedMark).
+  const shown = elide(ctx, state, w - 12);
   const tw = ctx.measureText(shown).width + 8;
   const left = cx - tw / 2;
   if (state === 'TRUE') {
@@ -223,8 +224,9 @@ function drawCoil(ctx: Ctx, t: CanvasTheme, el: CoilElement, paint: ElementPaint
 }
 
 /** Where the instance name of a box is drawn (relative to the box's top-left cell corner). */
-export const INSTANCE_BASELINE = WIRE_Y - 30;
-const BOX_TOP = WIRE_Y - 24;
+export const INSTANCE_BASELINE = WIRE_Y - 31;
+/** Top of a box's body; the instance name ends above it, a diagnostic outline runs between. */
+export const BOX_TOP = WIRE_Y - 24;
 
 function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint, w: number) {
   const layout = boxLayout(el, paint.library);

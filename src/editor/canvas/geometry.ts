@@ -68,7 +68,7 @@ export function layoutNetworks(networks: readonly Network[], library?: BlockLibr
     tops[i] = y;
     heights[i] = networkHeight(n);
     y += heights[i]!;
-    width = Math.max(width, networkWidth(n, library) + 40);
+    width = Math.max(width, networkWidth(n, library) + 16);
   });
   return { tops, heights, totalHeight: y + 40, totalWidth: width, library };
 }
