@@ -2,6 +2,7 @@
 // one list, so declaration order survives the round trip.
 import { isElementaryType, parseSizedString } from '../model/iecTypes';
 import type { VarClass, Variable } from '../model/project';
+import { writeInitialValue, writeTypeText } from './dataTypes';
 import { RS_VARIABLE } from './types';
 import type { XmlWriter } from './xml/write';
 
@@ -31,9 +32,8 @@ export function writeType(w: XmlWriter, type: string): void {
 
 export function writeVariable(w: XmlWriter, v: Variable, impliedRetain: boolean): void {
   w.open('variable', { name: v.name, address: v.location || undefined }, () => {
-    w.open('type', undefined, () => writeType(w, v.type));
-    if (v.initial !== undefined && v.initial !== '')
-      w.open('initialValue', undefined, () => w.empty('simpleValue', { value: v.initial }));
+    w.open('type', undefined, () => writeTypeText(w, v.type, writeType));
+    if (v.initial !== undefined && v.initial !== '') writeInitialValue(w, v.initial);
     if (impliedRetain) {
       w.open('addData', undefined, () =>
         w.open('data', { name: RS_VARIABLE, handleUnknown: 'discard' }, () =>

@@ -3,11 +3,12 @@ import { blockLibrary, type BlockLibrary } from '../model/library';
 import type { Pou, Project } from '../model/project';
 import { formatInterval } from './durations';
 import { writeNetwork } from './exportBody';
-import { writeVarLists } from './exportInterface';
+import { writeType, writeVarLists } from './exportInterface';
 import { writeInterface, writeOtherPou } from './otherPous';
 import { NETWORK_GAP, SCALING } from './geometry';
 import { TC6_0201, XHTML_NS, preserved, type PreservedPou, type PreservedProject } from './types';
 import { XmlWriter } from './xml/write';
+import { writeDataTypes } from './dataTypes';
 
 export interface ExportOptions {
   /** Timestamp written in fileHeader/contentHeader (default: now). */
@@ -135,9 +136,7 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
       });
     });
     w.open('types', undefined, () => {
-      if (keep?.dataTypes?.length)
-        w.open('dataTypes', undefined, () => keep.dataTypes!.forEach((d) => w.raw(d)));
-      else w.empty('dataTypes');
+      writeDataTypes(w, project.dataTypes ?? [], keep?.dataTypes ?? [], writeType);
       w.open('pous', undefined, () => {
         for (const i of calleesFirst(project.pous, library)) writePou(w, project.pous[i]!, localByCoil[i]!, library);
         const names = new Set(project.pous.map((p) => p.name.toUpperCase()));

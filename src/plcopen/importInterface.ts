@@ -1,6 +1,7 @@
 // PLCopen declarations → model variables, and configurations → tasks.
 import type { Task, VarClass, Variable } from '../model/project';
 import { parseInterval } from './durations';
+import { readTypeText, readValueText } from './dataTypes';
 import { RS_VARIABLE } from './types';
 import { child, childrenNamed, deepText, type XmlElement } from './xml/parse';
 
@@ -23,6 +24,10 @@ export function readType(typeEl: XmlElement | undefined, warn: Warn): string {
   const t = typeEl?.children[0];
   if (!t) return 'BOOL';
   if (t.name === 'derived') return t.attrs.name ?? 'BOOL';
+  if (t.name === 'array') {
+    const text = readTypeText(typeEl, warn); // an anonymous array: ARRAY[1..3] OF INT
+    if (text !== undefined) return text;
+  }
   // <string length="20"/>: STRING[20] (the declared length; values hold up to 126 characters).
   if (TYPE_ALIASES[t.name]) return t.attrs.length ? `${TYPE_ALIASES[t.name]!}[${t.attrs.length}]` : TYPE_ALIASES[t.name]!;
   if (
@@ -52,6 +57,8 @@ function initialValue(v: XmlElement, warn: Warn): string | undefined {
   if (!iv) return undefined;
   const simple = child(iv, 'simpleValue');
   if (simple) return simple.attrs.value;
+  const structured = readValueText(iv); // [32(0), 30(1)], (X := 1, Y := 2)
+  if (structured !== undefined) return structured;
   warn(`the initial value of "${v.attrs.name}" (array or structure) is not supported and was dropped`, iv);
   return undefined;
 }

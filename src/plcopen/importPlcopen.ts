@@ -39,6 +39,7 @@ import {
   XmlSyntaxError,
   type XmlElement,
 } from './xml/parse';
+import { readDataTypes } from './dataTypes';
 
 const KIND: Record<string, PouKind> = {
   program: 'PROGRAM',
@@ -143,11 +144,9 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
   }
 
   const keepProject: { addData: string[]; dataTypes: string[] } = { addData: [], dataTypes: [] };
-  const dataTypes = child(types, 'dataTypes');
-  for (const dt of dataTypes?.children ?? []) {
-    keepProject.dataTypes.push(raw(dt));
-    warn(`data type "${dt.attrs.name}" is kept for export but not used by Rungsmith`, dt);
-  }
+  // User data types (dataTypes.ts); the ones Rungsmith cannot read are kept raw for export.
+  const userTypes = readDataTypes(child(types, 'dataTypes'), warn, raw);
+  keepProject.dataTypes.push(...userTypes.raw);
   const pous: Pou[] = [];
   const reportPous: { name: string; networks: number; from: string }[] = [];
   const pouEls = childrenNamed(child(types, 'pous') ?? types, 'pou');
@@ -389,6 +388,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     globals: inst.globals,
     tasks,
     ...(externalBlocks.length ? { externalBlocks } : {}),
+    ...(userTypes.types.length ? { dataTypes: userTypes.types } : {}),
     extensions: { plcopen: keep },
   };
   const report: ImportReport = { namespace: ns || '(none)', producer, pous: reportPous, warnings };
