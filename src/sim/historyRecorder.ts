@@ -4,17 +4,17 @@
 // Recording costs a few counters and two stored times per scan; keys are spaced so that saving them
 // stays a small share of scan time while a seek replays at most a few thousand scans.
 import type { Plc, PlcImage, PlcProbe } from '../engine/api';
-import { explain, netOn, type Explanation, type ExplainTarget, type ScanView } from '../engine/explain';
+import { explain, flatNetwork, flattenedPou, netOn, type Explanation, type ExplainTarget, type ScanView } from '../engine/explain';
 import type { CompiledProgram } from '../engine/plc';
 import { csvValue } from '../engine/values/literals';
 import type { ElementaryType, Value } from '../model/iecTypes';
-import type { Pou } from '../model/project';
+import type { Pou, Project } from '../model/project';
 import { compileCondition } from './condition';
 import { csvRow } from './csv';
 import { packNetworks } from './frames';
 import { ScanHistory, type HistoryOptions, type InputChange } from './history';
 import { ChangeIndex, sameValue } from './historyChanges';
-import type { HistoryView, SimLayout } from './protocol';
+import type { HistoryView, SimLayout, SimView } from './protocol';
 import { Replayer, type HistoryState } from './replay';
 import { recordedBody } from './viewPower';
 
@@ -166,9 +166,27 @@ export class HistoryRecorder {
     };
   }
 
-  explain(scan: number, target: ExplainTarget, forced?: ReadonlySet<string>): Explanation | undefined {
+  /**
+   * "Why?" at a recorded scan. With the `project`, explanations follow values through every body the
+   * program runs (FB instances by path); with a `shown` body (an FB instance, a function, another
+   * program instance), an element target is one of that body's networks, in its call of that scan.
+   */
+  explain(
+    scan: number,
+    target: ExplainTarget,
+    forced?: ReadonlySet<string>,
+    whole?: { readonly project: Project; readonly shown?: SimView },
+  ): Explanation | undefined {
     const view = this.scanView(scan, forced);
-    return view ? explain(this.program, this.pou, view, target) : undefined;
+    if (!view) return undefined;
+    const pou = whole ? flattenedPou(this.program, whole.project, this.pou) : this.pou;
+    if (whole?.shown && target.kind === 'element') {
+      const network = flatNetwork(this.program, whole.shown, target.network, view.executed);
+      if (network === undefined)
+        return { scan, target, title: 'Nothing to explain', lines: [`${whole.shown.instance ?? whole.shown.pou} is not called by the program, so its networks did not run.`], marks: [], links: [] };
+      return { ...explain(this.program, pou, view, { ...target, network }), target };
+    }
+    return explain(this.program, pou, view, target);
   }
 
   /** Next/previous change of a name, or the next/previous scan where a condition holds (not `from` itself). */

@@ -243,10 +243,14 @@ export class SimSession {
         return;
       }
       case 'explain': {
-        if (m.target.kind === 'element' && this.layout && !isProgramView(this.layout))
-          throw new Error('Why? explains the networks of the program: open the program\'s tab (or its first instance) and ask again');
         const forced = new Set([...(this.plc?.forced().keys() ?? [])].map((n) => n.toUpperCase()));
-        const explanation = this.requireHistory().explain(m.scan, m.target, forced);
+        const shown = this.layout && !isProgramView(this.layout) ? this.layout.view : undefined;
+        const explanation = this.requireHistory().explain(
+          m.scan,
+          m.target,
+          forced,
+          this.loaded ? { project: this.loaded.project, ...(shown ? { shown } : {}) } : undefined,
+        );
         if (!explanation) throw new Error(`scan ${m.scan} is not in the history`);
         this.deps.post({ type: 'explanation', id: m.id, explanation });
         return;

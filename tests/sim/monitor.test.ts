@@ -198,4 +198,39 @@ describe('the scan history while an instance is monitored', () => {
     expect(view.elements).toHaveLength(main.elementOffsets.at(-1)!);
     expect(view.executed).toEqual(new Uint8Array([1, 1, 1]));
   });
+
+  test('"Why?" inside an FB body explains the monitored instance in the recorded scan, naming values by path', () => {
+    const project = motorProject();
+    const fb = project.pous.find((p) => p.name === 'Motor')!;
+    const coil = fb.networks[0]!.elements.findIndex((e) => e.kind === 'coil');
+    // Motor1 started in scan 2 and Stop1 pressed in scan 3; Motor2 never ran its motor.
+    const h = new SimHarness().send({ type: 'setView', view: { pou: 'Motor', instance: 'Motor1' } }, { type: 'step', scans: 1, project });
+    h.send({ type: 'write', name: 'Start1', input: { value: true } }, { type: 'step', scans: 1 });
+    h.send({ type: 'write', name: 'Start1', input: { value: false } }, { type: 'write', name: 'Stop1', input: { value: true } }, { type: 'step', scans: 1 });
+    const why = (scan: number) => {
+      h.send({ type: 'explain', id: scan, scan, target: { kind: 'element', network: 0, element: coil } });
+      return h.of('explanation').at(-1)!.explanation;
+    };
+    const on = why(2);
+    expect(on.title).toBe('( ) Motor1.Run: Motor1.Run is TRUE after scan 2');
+    expect(on.lines.join('\n')).toMatch(/energised through/);
+    const off = why(3);
+    expect(off.title).toBe('( ) Motor1.Run: Motor1.Run is FALSE after scan 3');
+    expect(off.lines.join('\n')).toMatch(/\|\/\| Motor1\.Stop is open: Motor1\.Stop is TRUE/);
+    // The marks name the FB body's elements, which the FB tab shows.
+    const stop = fb.networks[0]!.elements.find((e) => e.kind === 'contact' && e.variable === 'Stop')!;
+    expect(off.marks.some((m) => m.elementId === stop.id && m.role === 'blocking')).toBe(true);
+    // The other instance, in the same scan: its own story.
+    h.send({ type: 'setView', view: { pou: 'Motor', instance: 'Motor2' } });
+    expect(why(3).title).toBe('( ) Motor2.Run: Motor2.Run is FALSE after scan 3');
+  });
+
+  test('"Why?" on the program follows a value into the FB body that wrote it', () => {
+    const project = motorProject();
+    const h = new SimHarness().send({ type: 'step', scans: 1, project });
+    h.send({ type: 'write', name: 'Start1', input: { value: true } }, { type: 'step', scans: 1 });
+    h.send({ type: 'explain', id: 1, scan: 2, target: { kind: 'variable', name: 'Motor1.Run' } });
+    const text = h.of('explanation').at(-1)!.explanation.lines.join('\n');
+    expect(text).toMatch(/network 1 of Motor1 \(Motor\)/);
+  });
 });

@@ -12,6 +12,7 @@ import { formatValue } from '../values/literals';
 import { accessKey, networkGraph, pathsTo, writesOf, type Arc, type PowerPath } from './graph';
 import { fbReason } from './fbReasons';
 import { elementSymbol, plural } from './words';
+import { bodyAt } from './flatPou';
 
 /** What the engine computed in one scan, as the history recorded it. */
 export interface ScanView {
@@ -115,10 +116,15 @@ class Builder {
   }
 }
 
-/** Network n in words: `network 3` or `network 3 (label Fill)`. */
+/**
+ * Network n (of the flattened program) in words: `network 3` or `network 3 (label Fill)` in the
+ * program's own body, `network 2 of Motor1 (Motor)` in an FB instance's or another program's body.
+ */
 function networkName(b: Builder, n: number): string {
   const label = b.pou.networks[n]?.label;
-  return `network ${n + 1}${label ? ` (label ${label})` : ''}`;
+  const body = bodyAt(b.program, n);
+  const where = body && (body.first > 0 || body.instance) ? ` of ${body.instance ? `${body.instance} (${body.pou})` : body.pou}` : '';
+  return `network ${n - (where ? body!.first : 0) + 1}${where}${label ? ` (label ${label})` : ''}`;
 }
 
 function accessName(a: Access): string {

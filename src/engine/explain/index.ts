@@ -4,3 +4,4 @@ export type { ExplainLink, ExplainMark, ExplainTarget, Explanation, MarkRole, Pa
 export { networkGraph, pathsTo } from './graph';
 export { netOn } from './view';
 export { liveScanView } from './liveView';
+export { flattenedPou, flatNetwork } from './flatPou';
