@@ -22,8 +22,7 @@ beforeAll(async () => {
   editor = new EditorPage(page);
 });
 
-const project = (): Promise<Project> =>
-  page.evaluate(() => JSON.parse(JSON.stringify(window.rungsmith!.documentStore!.getState().project)) as Project);
+const project = (): Promise<Project> => editor.project();
 
 /** Renames a member row of the open structure editor. */
 async function nameMember(from: string, to: string) {

@@ -51,6 +51,20 @@ interface Props {
 }
 
 const OTHER_TYPE = '\u0000other';
+
+/** One group of the type picker (left out when empty). */
+function TypeGroup({ label, names }: { readonly label: string; readonly names: readonly string[] }) {
+  if (names.length === 0) return null;
+  return (
+    <optgroup label={label}>
+      {names.map((t) => (
+        <option key={t} value={t}>
+          {t}
+        </option>
+      ))}
+    </optgroup>
+  );
+}
 const TYPED_TYPE_LIST = 'rs-variable-type-choices';
 
 /** Empty text clears an optional field; an address is written in its canonical spelling. */
@@ -162,38 +176,10 @@ export function VariableRow({
               {...invalid('type')}
             >
               {!typeKnown && <option value={v.type}>{v.type || '(choose)'}</option>}
-              <optgroup label="Elementary types">
-                {ELEMENTARY_TYPES.map((t) => (
-                  <option key={t} value={t}>
-                    {t}
-                  </option>
-                ))}
-              </optgroup>
-              {dataTypes.length > 0 && (
-                <optgroup label="This project's data types">
-                  {dataTypes.map((t) => (
-                    <option key={t.name} value={t.name}>
-                      {t.name}
-                    </option>
-                  ))}
-                </optgroup>
-              )}
-              {userFbs.length > 0 && (
-                <optgroup label="This project's function blocks">
-                  {userFbs.map((s) => (
-                    <option key={s.name} value={s.name}>
-                      {s.name}
-                    </option>
-                  ))}
-                </optgroup>
-              )}
-              <optgroup label="Function block instances">
-                {FB_SIGNATURES.map((s) => (
-                  <option key={s.name} value={s.name}>
-                    {s.name}
-                  </option>
-                ))}
-              </optgroup>
+              <TypeGroup label="Elementary types" names={ELEMENTARY_TYPES} />
+              <TypeGroup label="This project's data types" names={dataTypes.map((t) => t.name)} />
+              <TypeGroup label="This project's function blocks" names={userFbs.map((s) => s.name)} />
+              <TypeGroup label="Function block instances" names={FB_SIGNATURES.map((s) => s.name)} />
               <option value={OTHER_TYPE}>Other type (ARRAY[..] OF, STRING[n])…</option>
             </select>
           )}
