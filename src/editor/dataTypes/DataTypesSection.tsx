@@ -71,7 +71,7 @@ export function DataTypesSection() {
                   }}>
                   <span className="rs-kind-icon rs-kind-TYPE" aria-hidden="true">T</span>
                   <span className="rs-mono rs-tree-name">{t.name}</span>
-                  <span className="rs-tree-lang">{DATA_TYPE_KIND_WORDS[t.def.kind]}</span>
+                  <span className="rs-tree-lang">{t.def.kind}</span>
                 </button>
               )}
               <span className="rs-tree-actions">

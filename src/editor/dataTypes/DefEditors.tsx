@@ -114,7 +114,7 @@ export function ArrayEditor({ def, issue, onChange }: EditorProps<'array'>) {
       <h3>Dimensions</h3>
       <ol className="rs-dt-list" data-testid="array-dims">
         {def.dims.map((d, i) => (
-          <li key={i} {...invalid(issue(`dim:${i}`))}>
+          <li key={i}>
             <CommitInput aria-label={`Dimension ${i + 1} lower bound`} className="rs-cell-input rs-mono rs-dt-bound"
               value={String(d.lower)} onCommit={(t) => bound(i, 'lower', t)} {...invalid(issue(`dim:${i}`))} />
             <span className="rs-mono"> .. </span>
