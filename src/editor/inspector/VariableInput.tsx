@@ -64,6 +64,8 @@ export function VariableInput(props: VariableInputProps) {
   const [active, setActive] = useState(0);
   /** Set while Escape moves the focus away: that blur must not commit. */
   const escaping = useRef(false);
+  /** The user moved in the list with the arrows (an untouched field's list is only a suggestion). */
+  const navigated = useRef(false);
   const text = draft ?? value;
 
   const options = useMemo<Option[]>(() => {
@@ -94,6 +96,7 @@ export function VariableInput(props: VariableInputProps) {
 
   /** Commits a changed text; an unchanged one ends the edit as `unchanged` says (undefined: silently). */
   const finish = (final: string, how?: EndKey) => {
+    navigated.current = false;
     setDraft(undefined);
     setOpen(false);
     setActive(0);
@@ -103,6 +106,7 @@ export function VariableInput(props: VariableInputProps) {
   const choose = (option: Option, how: EndKey = 'enter') => {
     if (option.kind === 'candidate') return finish(option.candidate.text, how);
     const name = option.choice.variable.name;
+    navigated.current = false;
     store.getState().batch('declareVariable', () => {
       store.getState().addVariable(option.choice.variable);
       setDraft(undefined);
@@ -117,13 +121,18 @@ export function VariableInput(props: VariableInputProps) {
     if (e.key === 'ArrowDown' || e.key === 'ArrowUp') {
       e.preventDefault();
       if (!shown) return setOpen(true);
+      navigated.current = true;
       const step = e.key === 'ArrowDown' ? 1 : -1;
       setActive((activeIndex + step + options.length) % options.length);
     } else if (e.key === 'Enter' || (e.key === 'Tab' && props.tabMoves)) {
       e.preventDefault();
       const how: EndKey = e.key === 'Enter' ? 'enter' : e.shiftKey ? 'backtab' : 'tab';
       // Shift+Enter keeps the text exactly as typed (an undeclared name), whatever the list offers.
-      const option = shown && !(e.key === 'Enter' && e.shiftKey) ? options[activeIndex] : undefined;
+      // On a field not typed in, only an offer to declare (a new instance) or an option the user
+      // moved to is taken: Enter or Tab through an untouched pin leaves it empty.
+      const offered = shown && !(e.key === 'Enter' && e.shiftKey) ? options[activeIndex] : undefined;
+      const option =
+        offered && (draft !== undefined || navigated.current || offered.kind === 'declare') ? offered : undefined;
       if (option) choose(option, how);
       else finish(text, how);
     } else if (e.key === 'Escape') {
