@@ -17,7 +17,8 @@
 import { blockSignature, FB_SIGNATURES, FUNCTION_SIGNATURES, type BlockSignature, type PinSignature } from './blocks';
 import { externalBlockPou, externalSignature } from './externalBlocks';
 import { isElementaryType, type PinType } from './iecTypes';
-import type { ExternalBlock, Pou, Project } from './project';
+import type { DataType, ExternalBlock, Pou, Project } from './project';
+import { ENUM_STORAGE, resolveType } from './dataTypes';
 import { VENDOR_BLOCKS } from './vendorBlocks';
 
 /** A pin of a user block: its declared type text, kept even when it is not an elementary type. */
@@ -48,31 +49,41 @@ export interface BlockLibrary {
   all(): readonly BlockSignature[];
 }
 
+const NO_TYPES: readonly DataType[] = [];
+
 /** The name PLCopen and Beremiz give a function's result pin. */
 export const FUNCTION_RESULT_PIN = 'OUT';
 
-/** A pin type the box drawing and the type checks can use: the elementary type, or ANY for others. */
-const pinType = (declared: string): PinType => {
+/**
+ * A pin type the box drawing and the type checks can use: the elementary type (that of an alias,
+ * subrange or enum data type, dataTypes.ts: an enum is stored as INT), or ANY for others.
+ */
+const pinType = (declared: string, dataTypes: readonly DataType[]): PinType => {
   const t = declared.trim().toUpperCase();
-  return isElementaryType(t) ? t : 'ANY';
+  if (isElementaryType(t)) return t;
+  const r = resolveType({ pous: [], dataTypes }, declared);
+  if (!r.ok) return 'ANY';
+  const s = r.shape;
+  return s.kind === 'elementary' ? s.type : s.kind === 'subrange' ? s.base : s.kind === 'enum' ? ENUM_STORAGE : 'ANY';
 };
 
-const userPin = (name: string, declared: string, inOut: boolean): UserPinSignature => ({
+const userPin = (name: string, declared: string, inOut: boolean, dataTypes: readonly DataType[]): UserPinSignature => ({
   name,
-  type: pinType(declared),
+  type: pinType(declared, dataTypes),
   declaredType: declared.trim(),
   ...(inOut ? { inOut: true as const } : {}),
 });
 
 /** The block signature of a FUNCTION_BLOCK or FUNCTION POU; undefined for a PROGRAM. */
-export function pouSignature(pou: Pou): BlockSignature | undefined {
+export function pouSignature(pou: Pou, dataTypes: readonly DataType[] = NO_TYPES): BlockSignature | undefined {
   if (pou.kind === 'PROGRAM') return undefined;
   const inputs: UserPinSignature[] = [];
   const outputs: UserPinSignature[] = [];
-  if (pou.kind === 'FUNCTION') outputs.push(userPin(FUNCTION_RESULT_PIN, pou.returnType ?? 'BOOL', false));
-  for (const v of pou.variables) if (v.varClass === 'input' || v.varClass === 'inOut') inputs.push(userPin(v.name, v.type, v.varClass === 'inOut'));
-  for (const v of pou.variables) if (v.varClass === 'output') outputs.push(userPin(v.name, v.type, false));
-  for (const v of pou.variables) if (v.varClass === 'inOut') outputs.push(userPin(v.name, v.type, true));
+  const pin = (name: string, declared: string, inOut: boolean) => userPin(name, declared, inOut, dataTypes);
+  if (pou.kind === 'FUNCTION') outputs.push(pin(FUNCTION_RESULT_PIN, pou.returnType ?? 'BOOL', false));
+  for (const v of pou.variables) if (v.varClass === 'input' || v.varClass === 'inOut') inputs.push(pin(v.name, v.type, v.varClass === 'inOut'));
+  for (const v of pou.variables) if (v.varClass === 'output') outputs.push(pin(v.name, v.type, false));
+  for (const v of pou.variables) if (v.varClass === 'inOut') outputs.push(pin(v.name, v.type, true));
   return {
     name: pou.name,
     kind: pou.kind === 'FUNCTION' ? 'function' : 'fb',
@@ -112,12 +123,12 @@ function addEntries(into: Map<string, Entry>, entries: Iterable<Entry | undefine
 let vendorEntries: readonly Entry[] | undefined;
 const vendor = () => (vendorEntries ??= VENDOR_BLOCKS.map((b) => externalEntry(b, 'vendor')).filter((e) => e !== undefined));
 
-function makeLibrary(pous: readonly Pou[], externals: readonly ExternalBlock[], withVendor: boolean): BlockLibrary {
+function makeLibrary(pous: readonly Pou[], externals: readonly ExternalBlock[], withVendor: boolean, dataTypes: readonly DataType[] = NO_TYPES): BlockLibrary {
   const byName = new Map<string, Entry>();
   const users = addEntries(
     byName,
     pous.map((pou) => {
-      const sig = pouSignature(pou);
+      const sig = pouSignature(pou, dataTypes);
       return sig && { pou, sig };
     }),
   );
@@ -142,25 +153,31 @@ function makeLibrary(pous: readonly Pou[], externals: readonly ExternalBlock[], 
 export const STANDARD_LIBRARY: BlockLibrary = makeLibrary([], [], false);
 
 const NO_EXTERNALS: readonly ExternalBlock[] = [];
-const cache = new WeakMap<readonly Pou[], WeakMap<readonly ExternalBlock[], BlockLibrary>>();
+const cache = new WeakMap<readonly Pou[], WeakMap<readonly ExternalBlock[], WeakMap<readonly DataType[], BlockLibrary>>>();
 
 /**
  * The blocks of a project: standard, its own POUs, its external blocks and the vendor blocks.
  * Memoised on the project's `pous` and `externalBlocks` arrays: projects are immutable, so an edit
  * that changes a POU or an external block gives a new array and a new library.
  */
-export function blockLibrary(project: Pick<Project, 'pous' | 'externalBlocks'> | undefined): BlockLibrary {
+export function blockLibrary(project: Pick<Project, 'pous' | 'externalBlocks' | 'dataTypes'> | undefined): BlockLibrary {
   if (!project) return STANDARD_LIBRARY;
   const externals = project.externalBlocks ?? NO_EXTERNALS;
+  const types = project.dataTypes ?? NO_TYPES;
   let byExternals = cache.get(project.pous);
   if (!byExternals) {
     byExternals = new WeakMap();
     cache.set(project.pous, byExternals);
   }
-  let lib = byExternals.get(externals);
+  let byTypes = byExternals.get(externals);
+  if (!byTypes) {
+    byTypes = new WeakMap();
+    byExternals.set(externals, byTypes);
+  }
+  let lib = byTypes.get(types);
   if (!lib) {
-    lib = makeLibrary(project.pous, externals, true);
-    byExternals.set(externals, lib);
+    lib = makeLibrary(project.pous, externals, true, types);
+    byTypes.set(types, lib);
   }
   return lib;
 }

@@ -105,8 +105,8 @@ export const dimsText = (dims: readonly Dim[]): string => dims.map((d) => `${d.l
 /**
  * Declares a variable whose type is not elementary (and not a function block): an enum, subrange
  * or alias variable (returns its VarSymbol) or a struct/array variable (returns its AggSymbol).
- * Errors: LD-E15 unknown type, LD-E14 bad initial value, LD-E61 initial value outside a subrange,
- * LD-E13 a location on a struct or array.
+ * Errors: LD-E15 unknown type, LD-E14 bad initial value, LD-E13 a location on a struct or array.
+ * Warning LD-W61: initial values outside a subrange (IEC forbids them; MATIEC keeps them).
  */
 export function declareDataTyped(
   table: SymbolTable,
@@ -133,14 +133,25 @@ export function declareDataTyped(
   const single = shape.kind === 'elementary' || shape.kind === 'enum' || shape.kind === 'subrange';
   const values: Value[] = [];
   let failed = false;
+  const outOfRange: Leaf[] = [];
   for (const leaf of leaves) {
     const v = leafInitial(leaf);
     if (typeof v === 'object' && v !== null && 'error' in v) {
-      r.error(v.rule, `${what}: ${v.error}`);
+      r.error('LD-E14', `${what}: ${v.error}`);
       failed = true;
-    } else values.push(v as Value);
+      continue;
+    }
+    if (leaf.range && outside(v as Value, leaf.range)) outOfRange.push(leaf);
+    values.push(v as Value);
   }
   if (failed) return undefined;
+  if (outOfRange.length) {
+    const first = outOfRange[0]!;
+    r.warning(
+      'LD-W61',
+      `${what}: ${outOfRange.length === 1 ? 'the initial value' : `${outOfRange.length} initial values`} ${outOfRange.length === 1 ? 'is' : 'are'} outside ${first.typeName} (${first.range!.lower}..${first.range!.upper}), first ${first.path} := ${first.initial}; IEC 61131-3 forbids it, MATIEC starts with the value as given and so does the simulator`,
+    );
+  }
   const retain = decl.retain;
   const constant = decl.constant === true;
   if (single) {
@@ -192,20 +203,18 @@ function infoOf(leaf: Leaf): DataTypeInfo {
 }
 
 /** The initial value of a leaf: its literal, an enum value's index, a subrange's lower bound by default. */
-function leafInitial(leaf: Leaf): Value | { error: string; rule: 'LD-E14' | 'LD-E61' } {
+function leafInitial(leaf: Leaf): Value | { error: string } {
   if (leaf.initial === undefined) {
     if (leaf.range) return literalOf(String(leaf.range.lower), leaf.type);
     return defaultValue(leaf.type);
   }
   if (leaf.enumValues) {
     const i = enumIndexOf(leaf, leaf.initial);
-    if (!i) return { rule: 'LD-E14', error: `${leaf.path}: ${leaf.initial} is not a value of ${leaf.typeName} (${leaf.enumValues.join(', ')})` };
+    if (!i) return { error: `${leaf.path}: ${leaf.initial} is not a value of ${leaf.typeName} (${leaf.enumValues.join(', ')})` };
     return i - 1;
   }
   const lit = parseLiteral(leaf.initial, leaf.type);
-  if (!lit.ok) return { rule: 'LD-E14', error: `${leaf.path}: ${lit.message}` };
-  if (leaf.range && outside(lit.value, leaf.range))
-    return { rule: 'LD-E61', error: `${leaf.path}: the initial value ${leaf.initial} is outside ${leaf.typeName} (${leaf.range.lower}..${leaf.range.upper})` };
+  if (!lit.ok) return { error: `${leaf.path}: ${lit.message}` };
   return lit.value;
 }
 
