@@ -250,10 +250,18 @@ test('at 1280×720 long names are drawn whole, clear of the rails, and coils sit
   expect(errors).toEqual([]);
 });
 
-test('at 1280×720 a new network of short names fits the canvas without scrolling sideways', async () => {
+test('at 1280×720 a new network of short names fits the canvas without scrolling sideways, its header as wide as the view', async () => {
   await load(project(vars('Start BOOL', 'Stop BOOL', 'Motor BOOL'), [ladder(['[Start] [/Stop] (Motor)'], { cols: 10 })]));
   const widths = await page.getByTestId('ladder-canvas').evaluate((el) => [el.scrollWidth, el.clientWidth]);
   expect(widths[0]).toBeLessThanOrEqual(widths[1]!);
+  // Its header is as wide as the view, not only as the grid.
+  const edges = await page.evaluate(() => {
+    const canvas = document.querySelector('[data-testid="ladder-canvas"]')!;
+    const header = document.querySelector('[data-testid="network-header-0"]')!.getBoundingClientRect();
+    return { canvasRight: canvas.getBoundingClientRect().left + canvas.clientWidth, headerRight: header.right };
+  });
+  expect(edges.headerRight).toBeGreaterThan(edges.canvasRight - 30);
+  expect(edges.headerRight).toBeLessThanOrEqual(edges.canvasRight);
   expect(errors).toEqual([]);
 });
 

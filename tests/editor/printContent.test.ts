@@ -17,7 +17,7 @@ const measure = (font: string, text: string) => text.length * (font.includes('11
 const THEME: CanvasTheme = {
   bg: '#fff', grid: '#eee', rail: '#222', wire: '#222', symbol: '#111', text: '#111', operand: '#05a',
   muted: '#888', selection: '#00f', selectionFill: '#00f2', cursor: '#f80', hover: '#00f1', error: '#d00',
-  warning: '#e80', energised: '#1a4', boxFill: '#f7f9fc', networkBg: '#fbfcfd', forced: '#b19',
+  warning: '#e80', energised: '#1a4', falseState: '#789', boxFill: '#f7f9fc', networkBg: '#fbfcfd', forced: '#b19',
 };
 
 const texts = (svg: string) => [...svg.matchAll(/<text[^>]*>([^<]*)<\/text>/g)].map((m) => m[1]);

@@ -276,7 +276,7 @@ export function LadderCanvas() {
                     index={i}
                     count={networks.length}
                     top={layout.tops[i]!}
-                    width={Math.max(layout.totalWidth, size.width / zoom - 16)}
+                    width={Math.max(layout.totalWidth, headerViewWidth(size.width, zoom))}
                     errors={m?.errors ?? 0}
                     warnings={m?.warnings ?? 0}
                   />
@@ -305,6 +305,9 @@ export function LadderCanvas() {
 }
 
 const NO_MARKERS: readonly CellMarker[] = [];
+
+/** The `width` a network header takes to end 8 px short of the view's right edge (its left is RAIL_X - 20, it spans width - RAIL_X). */
+const headerViewWidth = (viewWidth: number, zoom: number) => viewWidth / zoom + 12;
 
 /** What each network shows of a drag: the faded originals and the ghost where they would land. */
 function dragPaintsFor(drag: DragState | undefined): ReadonlyMap<NetworkId, NetworkPaint['drag']> {
