@@ -26,7 +26,7 @@ export function networkSvg(
   library?: BlockLibrary,
 ): NetworkDrawing {
   const ctx = new SvgContext(measure);
-  const width = networkWidth(network);
+  const width = networkWidth(network, library);
   const height = network.rows * CELL_H + GRID_PAD_BOTTOM;
   ctx.translate(RAIL_X, 0);
   drawNetworkGrid(ctx as unknown as CanvasRenderingContext2D, theme, network, library ? { ...PAINT, library } : PAINT);
