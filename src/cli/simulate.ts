@@ -60,7 +60,8 @@ function defaultWatch(project: Project, pouName: string, names: readonly string[
           out.push(`${name}.${m.name}`);
       continue;
     }
-    const pins = names.filter((n) => n.toUpperCase().startsWith(`${name.toUpperCase()}.`));
+    // FB pins, and the leaves of a struct or array variable (P.X, A[1], G[1,2]).
+    const pins = names.filter((n) => n.toUpperCase().startsWith(`${name.toUpperCase()}.`) || n.toUpperCase().startsWith(`${name.toUpperCase()}[`));
     if (pins.length) out.push(...pins);
     else if (known.has(name.toUpperCase())) out.push(name);
   }
@@ -103,7 +104,7 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
   const watch =
     opts.watch !== undefined
       ? opts.watch
-          .split(',')
+          .split(/,(?![^[]*\])/) // commas between names, not inside G[1,2]
           .map((s) => s.trim())
           .filter(Boolean)
       : configuration

@@ -140,6 +140,32 @@ const externalBlockSchema = z
   })
   .strict();
 
+const dim = z.object({ lower: int, upper: int }).strict();
+const dataTypeDefSchema = z.discriminatedUnion('kind', [
+  z.object({ kind: z.literal('enum'), values: z.array(z.string()) }).strict(),
+  z
+    .object({
+      kind: z.literal('struct'),
+      members: z.array(
+        z.object({ name: z.string(), type: z.string(), initial: z.string().optional(), comment: z.string().optional() }).strict(),
+      ),
+    })
+    .strict(),
+  z.object({ kind: z.literal('array'), dims: z.array(dim), of: z.string() }).strict(),
+  z.object({ kind: z.literal('subrange'), base: z.string(), lower: int, upper: int }).strict(),
+  z.object({ kind: z.literal('alias'), base: z.string() }).strict(),
+]);
+/** A user data type (Project.dataTypes); its meaning is checked by dataTypes.ts when it is used. */
+const dataTypeSchema = z
+  .object({
+    name: z.string().min(1),
+    def: dataTypeDefSchema,
+    initial: z.string().optional(),
+    comment: z.string().optional(),
+    extensions,
+  })
+  .strict();
+
 export const projectSchema = z
   .object({
     format: z.literal(PROJECT_FORMAT),
@@ -161,6 +187,7 @@ export const projectSchema = z
     ),
     externalBlocks: z.array(externalBlockSchema).optional(),
     scenarios: z.array(z.object({ name: z.string().min(1), csv: z.string() }).strict()).optional(),
+    dataTypes: z.array(dataTypeSchema).optional(),
     extensions,
   })
   .strict();
