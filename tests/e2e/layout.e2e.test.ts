@@ -6,6 +6,7 @@ import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, beforeEach, expect, test } from 'vitest';
 import { newNetwork, newPou, newProject, variable } from '../../src/model/factory';
 import type { ElementId } from '../../src/model/ids';
+import { DEFAULT_PANELS } from '../../src/store/uiStore';
 import { openApp, useChromium } from './appPage';
 
 const browser = useChromium();
@@ -22,17 +23,7 @@ beforeAll(async () => {
 beforeEach(async () => {
   // Each test starts from the default layout, whatever the one before left.
   await page.setViewportSize({ width: 1440, height: 900 });
-  await page.evaluate(() =>
-    window.rungsmith!.uiStore!.getState().setPanels({
-      left: 230,
-      right: 340,
-      bottom: 190,
-      leftCollapsed: false,
-      rightCollapsed: false,
-      bottomCollapsed: false,
-      variablesDock: 'side',
-    }),
-  );
+  await page.evaluate((p) => window.rungsmith!.uiStore!.getState().setPanels(p), DEFAULT_PANELS);
 });
 
 afterAll(() => {
