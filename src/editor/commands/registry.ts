@@ -12,6 +12,7 @@ import {
   ensureCursor,
   escape,
   insertNetworkBelow,
+  libraryOf,
   moveCursor,
   networksOf,
   nudgeTargets,
@@ -415,7 +416,7 @@ export const COMMANDS: readonly EditorCommand[] = [
     group: 'View',
     keys: ['mod+9'],
     inMenu: true,
-    run: (ctx) => zoomToFit(ctx, layoutNetworks(networksOf(ctx)).totalWidth),
+    run: (ctx) => zoomToFit(ctx, layoutNetworks(networksOf(ctx), libraryOf(ctx)).totalWidth),
   },
   {
     id: 'view.theme',
