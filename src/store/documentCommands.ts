@@ -6,6 +6,7 @@ import { blockLibrary } from '../model/library';
 import { newId, type ElementId, type NetworkId, type PouId } from '../model/ids';
 import type { Network, Pou, Project, Variable } from '../model/project';
 import { diffNetwork, type Change, type VariableScope } from './changes';
+import type { TaskCommands } from './taskCommands';
 import type { DataTypeCommands } from './dataTypeCommands';
 import type { DocumentState, NetworkPatch } from './documentStore';
 import * as edits from './networkEdits';
@@ -70,6 +71,7 @@ type Commands = Omit<
   | 'duplicatePou'
   | 'deletePou'
   | keyof DataTypeCommands
+  | keyof TaskCommands
   | 'updatePou'
   | 'undo'
   | 'redo'

@@ -94,6 +94,7 @@ import {
 import { documentCommands, locate } from './documentCommands';
 import { pouCommands, type PouCommands } from './pouCommands';
 import { dataTypeCommands, type DataTypeCommands } from './dataTypeCommands';
+import { taskCommands, type TaskCommands } from './taskCommands';
 import {
   EMPTY_HISTORY,
   record,
@@ -139,6 +140,10 @@ export interface DocumentState {
   duplicateDataType: DataTypeCommands['duplicateDataType'];
   deleteDataType: DataTypeCommands['deleteDataType'];
   updateDataType: DataTypeCommands['updateDataType'];
+  setTasks: TaskCommands['setTasks'];
+  addTask: TaskCommands['addTask'];
+  deleteTask: TaskCommands['deleteTask'];
+  addProgramInstance: TaskCommands['addProgramInstance'];
 
   placeElement(network: NetworkId, cell: Cell, t: ElementTemplate): ElementId | undefined;
   insertInSeries(network: NetworkId, cell: Cell, t: ElementTemplate): ElementId | undefined;
@@ -272,6 +277,7 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
       ...documentCommands({ get, commit, editNetwork }),
       ...pouCommands({ project: () => get().project, commit, open }),
       ...dataTypeCommands({ project: () => get().project, commit }),
+      ...taskCommands({ project: () => get().project, commit }),
 
       undo: () => {
         const s = get();

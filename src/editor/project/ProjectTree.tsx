@@ -10,6 +10,7 @@ import { DataTypesSection } from '../dataTypes/DataTypesSection';
 import { dataTypeTabs } from '../dataTypes/dataTypeTabs';
 import { focusVariable } from '../variables/variableFocus';
 import { DeletePouDialog } from './DeletePouDialog';
+import { TasksDialog } from './TasksDialog';
 import { NameField } from './NameField';
 import { PouProperties } from './PouProperties';
 import { KIND_ICONS, KIND_TITLES } from './pouWords';
@@ -28,6 +29,7 @@ export function ProjectTree() {
   const [renaming, setRenaming] = useState<PouId | undefined>(undefined);
   const [deleting, setDeleting] = useState<Pou | undefined>(undefined);
   const [message, setMessage] = useState('');
+  const [tasksOpen, setTasksOpen] = useState(false);
 
   const add = (kind: PouKind) => {
     const id = store.getState().addPou(kind);
@@ -118,6 +120,15 @@ export function ProjectTree() {
         <li className="rs-tree-section">
           <span className="rs-tree-heading">
             Tasks <span className="rs-tree-count">{project.tasks.length}</span>
+            <button
+              type="button"
+              className="rs-icon-button"
+              data-testid="tree-tasks-edit"
+              title="Configure the tasks: interval, priority and the programs they run"
+              onClick={() => setTasksOpen(true)}
+            >
+              ⚙
+            </button>
           </span>
           <ul aria-label="Tasks">
             {project.tasks.map((t) => (
@@ -139,6 +150,7 @@ export function ProjectTree() {
         </li>
       </ul>
       {active && <PouProperties key={active.id} pou={active} />}
+      {tasksOpen && <TasksDialog onClose={() => setTasksOpen(false)} />}
       {deleting && (
         <DeletePouDialog
           pou={deleting}

@@ -1,0 +1,216 @@
+// The project's tasks as a PLC programmer configures them (CODESYS "Task configuration", Beremiz's
+// resource): name, cyclic interval, priority, and the program instances each task runs, in order.
+// Every change is checked first (taskProblems) and is one undo step; a refused change keeps the
+// field as typed with the reason beside it until it is fixed or the dialog is closed.
+import { useState } from 'react';
+import type { Task } from '../../model/project';
+import { selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
+import { taskProblems, type TaskProblem } from '../../store/taskCommands';
+import { ModalDialog } from '../files/ModalDialog';
+
+const int = (text: string) => (/^\s*\d+\s*$/.test(text) ? Number(text) : NaN);
+
+export function TasksDialog({ onClose }: { readonly onClose: () => void }) {
+  const store = useDocumentStore();
+  const project = useDocument(selectProject);
+  // The list as edited: what the project holds, or a draft that does not pass the checks yet.
+  const [draft, setDraft] = useState<readonly Task[] | undefined>(undefined);
+  const [message, setMessage] = useState('');
+  const tasks = draft ?? project.tasks;
+  const problems = draft ? taskProblems(project, draft) : [];
+  const programs = project.pous.filter((p) => p.kind === 'PROGRAM');
+
+  const apply = (next: readonly Task[]) => {
+    const refused = store.getState().setTasks(next);
+    setDraft(refused ? next : undefined);
+    setMessage('');
+  };
+  const editTask = (ti: number, patch: Partial<Task>) => apply(tasks.map((t, i) => (i === ti ? { ...t, ...patch } : t)));
+  const editProgram = (ti: number, pi: number, patch: Partial<Task['programs'][number]>) =>
+    editTask(ti, { programs: tasks[ti]!.programs.map((p, i) => (i === pi ? { ...p, ...patch } : p)) });
+  const moveProgram = (ti: number, pi: number, by: -1 | 1) => {
+    const list = [...tasks[ti]!.programs];
+    const [moved] = list.splice(pi, 1);
+    list.splice(pi + by, 0, moved!);
+    editTask(ti, { programs: list });
+  };
+  const problemOf = (ti: number, field: TaskProblem['field'], pi?: number) =>
+    problems.find((p) => p.task === ti && p.field === field && p.program === pi)?.message;
+  const say = (problem: TaskProblem | undefined) => setMessage(problem?.message ?? '');
+
+  return (
+    <ModalDialog
+      role="dialog"
+      titleId="rs-tasks-title"
+      title="Tasks"
+      describedBy="rs-tasks-text"
+      className="rs-tasks-dialog"
+      testId="tasks-dialog"
+      onClose={onClose}
+      buttons={
+        <button type="button" className="rs-button rs-primary" data-testid="tasks-close" onClick={onClose}>
+          Close
+        </button>
+      }
+    >
+      <p id="rs-tasks-text" className="rs-tree-detail">
+        Each cyclic task runs its program instances in the order listed. The simulator runs every task&apos;s
+        programs each scan, task after task, at the first task&apos;s interval; the interval and priority
+        of the others go to the PLCopen export for the PLC.
+      </p>
+      {tasks.map((t, ti) => (
+        // Keyed by content: an undo or a refused draft shows the fields as they now are.
+        <fieldset key={`${ti}:${JSON.stringify(t)}`} className="rs-task" data-testid={`task-${ti}`}>
+          <legend className="rs-mono">{t.name || '(no name)'}</legend>
+          <div className="rs-field">
+            <label htmlFor={`task-name-${ti}`}>Name</label>
+            <input
+              id={`task-name-${ti}`}
+              className="rs-cell-input"
+              data-testid={`task-name-${ti}`}
+              defaultValue={t.name}
+              onBlur={(e) => e.target.value !== t.name && editTask(ti, { name: e.target.value.trim() })}
+              onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
+            />
+            <label htmlFor={`task-cycle-${ti}`}>Interval (ms)</label>
+            <input
+              id={`task-cycle-${ti}`}
+              className="rs-cell-input"
+              inputMode="numeric"
+              data-testid={`task-cycle-${ti}`}
+              defaultValue={String(t.cycleMs)}
+              onBlur={(e) => int(e.target.value) !== t.cycleMs && editTask(ti, { cycleMs: int(e.target.value) })}
+              onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
+            />
+            <label htmlFor={`task-priority-${ti}`}>Priority</label>
+            <input
+              id={`task-priority-${ti}`}
+              className="rs-cell-input"
+              inputMode="numeric"
+              data-testid={`task-priority-${ti}`}
+              defaultValue={String(t.priority)}
+              onBlur={(e) => int(e.target.value) !== t.priority && editTask(ti, { priority: int(e.target.value) })}
+              onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
+            />
+          </div>
+          {(['name', 'cycleMs', 'priority'] as const).map((f) => {
+            const m = problemOf(ti, f);
+            return m ? (
+              <p key={f} className="rs-field-problem" role="alert" data-testid={`task-problem-${ti}`}>
+                {m}
+              </p>
+            ) : null;
+          })}
+          <table className="rs-task-programs">
+            <thead>
+              <tr>
+                <th scope="col">Program instance</th>
+                <th scope="col">Program</th>
+                <th scope="col">
+                  <span className="rs-visually-hidden">Order</span>
+                </th>
+              </tr>
+            </thead>
+            <tbody>
+              {t.programs.map((p, pi) => (
+                <tr key={`${pi}:${p.instance}`} data-testid={`task-${ti}-program-${pi}`}>
+                  <td>
+                    <input
+                      className="rs-cell-input rs-mono"
+                      aria-label={`Instance name of ${p.pou}`}
+                      defaultValue={p.instance}
+                      onBlur={(e) => e.target.value !== p.instance && editProgram(ti, pi, { instance: e.target.value.trim() })}
+                      onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
+                    />
+                    {problemOf(ti, 'instance', pi) && (
+                      <p className="rs-field-problem" role="alert">
+                        {problemOf(ti, 'instance', pi)}
+                      </p>
+                    )}
+                  </td>
+                  <td>
+                    <select
+                      className="rs-cell-input"
+                      aria-label={`Program run by ${p.instance}`}
+                      value={p.pou}
+                      onChange={(e) => editProgram(ti, pi, { pou: e.target.value })}
+                    >
+                      {!programs.some((x) => x.name === p.pou) && <option value={p.pou}>{p.pou}</option>}
+                      {programs.map((x) => (
+                        <option key={x.id} value={x.name}>
+                          {x.name}
+                        </option>
+                      ))}
+                    </select>
+                    {problemOf(ti, 'pou', pi) && (
+                      <p className="rs-field-problem" role="alert">
+                        {problemOf(ti, 'pou', pi)}
+                      </p>
+                    )}
+                  </td>
+                  <td className="rs-task-order">
+                    <button type="button" className="rs-icon-button" disabled={pi === 0} title="Run earlier" onClick={() => moveProgram(ti, pi, -1)}>
+                      ↑
+                    </button>
+                    <button type="button" className="rs-icon-button" disabled={pi === t.programs.length - 1} title="Run later" onClick={() => moveProgram(ti, pi, 1)}>
+                      ↓
+                    </button>
+                    <button
+                      type="button"
+                      className="rs-icon-button"
+                      title={`Stop running ${p.instance}`}
+                      data-testid={`task-${ti}-remove-${pi}`}
+                      onClick={() => editTask(ti, { programs: t.programs.filter((_, i) => i !== pi) })}
+                    >
+                      ✕
+                    </button>
+                  </td>
+                </tr>
+              ))}
+            </tbody>
+          </table>
+          <div className="rs-task-actions">
+            <select
+              className="rs-cell-input"
+              aria-label={`Add a program instance to ${t.name}`}
+              data-testid={`task-add-program-${ti}`}
+              value=""
+              disabled={draft !== undefined}
+              onChange={(e) => e.target.value && say(store.getState().addProgramInstance(ti, e.target.value))}
+            >
+              <option value="">Run a program…</option>
+              {programs.map((x) => (
+                <option key={x.id} value={x.name}>
+                  {x.name}
+                </option>
+              ))}
+            </select>
+            <button
+              type="button"
+              className="rs-button"
+              data-testid={`task-delete-${ti}`}
+              disabled={draft !== undefined}
+              onClick={() => say(store.getState().deleteTask(ti))}
+            >
+              Delete task
+            </button>
+          </div>
+        </fieldset>
+      ))}
+      <button
+        type="button"
+        className="rs-button"
+        data-testid="task-add"
+        disabled={draft !== undefined}
+        onClick={() => say(store.getState().addTask())}
+      >
+        Add task
+      </button>
+      {message && (
+        <p className="rs-field-problem" role="alert" data-testid="tasks-message">
+          {message}
+        </p>
+      )}
+    </ModalDialog>
+  );
+}
