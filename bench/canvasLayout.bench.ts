@@ -7,18 +7,9 @@ import { layoutNetworks } from '../src/editor/canvas/geometry';
 import { blockLibrary } from '../src/model/library';
 import type { Network } from '../src/model/project';
 import { sealInProject } from '../tests/e2e/sealInProject';
+import { median } from './median';
 
 const NETWORKS = 1000;
-
-function median(runs: number, fn: () => void): number {
-  const t: number[] = [];
-  for (let i = 0; i < runs; i++) {
-    const t0 = performance.now();
-    fn();
-    t.push(performance.now() - t0);
-  }
-  return t.sort((a, b) => a - b)[Math.floor(runs / 2)]!;
-}
 
 const project = sealInProject(NETWORKS);
 const library = blockLibrary(project);

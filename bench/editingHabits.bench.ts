@@ -7,16 +7,7 @@ import type { BoxElement, LdElement } from '../src/model/elements';
 import { newNetwork } from '../src/model/factory';
 import type { ElementId } from '../src/model/ids';
 import type { TrendBuffer } from '../src/sim/trendBuffer';
-
-function median(runs: number, fn: () => void): number {
-  const t: number[] = [];
-  for (let i = 0; i < runs; i++) {
-    const t0 = performance.now();
-    fn();
-    t.push(performance.now() - t0);
-  }
-  return t.sort((a, b) => a - b)[Math.floor(runs / 2)]!;
-}
+import { median } from './median';
 
 // Trend: 4 BOOL and 4 numeric signals, a 10,000-scan window (what one frame redraws).
 const SAMPLES = 10_000;

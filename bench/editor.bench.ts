@@ -14,22 +14,12 @@ import type { Project } from '../src/model/project';
 import { findInProject } from '../src/store/find';
 import { copyNetworks } from '../src/store/networkUnits';
 import { crossReference } from '../src/store/xref';
+import { median } from './median';
 
 const NETWORKS = 1000;
 
 /** A seal-in style rung per network: 3 contacts, 6 links, a coil and a parallel contact (11 elements). */
 const generate = (): Project => sealInProject(NETWORKS);
-
-/** Median time of `fn` over `runs` runs, in ms (Node, the pure store logic). */
-function median(runs: number, fn: () => void): number {
-  const t: number[] = [];
-  for (let i = 0; i < runs; i++) {
-    const t0 = performance.now();
-    fn();
-    t.push(performance.now() - t0);
-  }
-  return t.sort((a, b) => a - b)[Math.floor(runs / 2)]!;
-}
 
 /** Find across the 1,000 networks, and the cross-reference of a variable used 1,000 times. */
 function logicFigures(project: Project) {
