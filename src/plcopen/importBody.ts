@@ -80,6 +80,8 @@ export function importLdBody(
   warn: (f: Finding) => void,
   library: BlockLibrary,
   tuning: BodyTuning = {},
+  /** Whether a variable the body names is BOOL (negated inputs of generic blocks, FBD). */
+  isBool?: (name: string) => boolean,
 ): BodyResult {
   const plan = planBody(body, tuning.batchObjects);
   const cache = new LayoutCache(tuning.shareLayouts ?? true);
@@ -89,7 +91,7 @@ export function importLdBody(
   const widths: number[] = [];
   const itemsOf: Item[][] = [];
   plan.batches.forEach((positions, b) => {
-    const out = readBatch(body.doc, plan, positions, cols, cache, raw, warn, library);
+    const out = readBatch(body.doc, plan, positions, cols, cache, raw, warn, library, isBool);
     cols = Math.max(cols, out.cols);
     widths[b] = out.cols;
     itemsOf[b] = out.items.map((it): Item => ({ ...it, seq: seq++ }));
@@ -98,7 +100,7 @@ export function importLdBody(
   // Batches laid out narrower than a later one: read again (their findings were reported once).
   plan.batches.forEach((positions, b) => {
     if (widths[b]! >= cols) return;
-    const again = readBatch(body.doc, plan, positions, cols, cache, raw, () => {}, library).items;
+    const again = readBatch(body.doc, plan, positions, cols, cache, raw, () => {}, library, isBool).items;
     let k = 0;
     for (const it of itemsOf[b]!) {
       if (it.kind !== 'network') continue;
@@ -193,6 +195,7 @@ function readBatch(
   raw: (el: XmlElement) => string,
   warn: (f: Finding) => void,
   library: BlockLibrary,
+  isBool?: (name: string) => boolean,
 ): { items: BatchItem[]; cols: number } {
   const inBatch = new Set(positions);
   const keepRef = (ref: string) => {
@@ -200,7 +203,7 @@ function readBatch(
     return p === undefined || inBatch.has(p);
   };
   const objects = readLdObjects(doc, plan.children, positions, keepRef);
-  const graph = buildLdGraph(objects, raw, warn, library);
+  const graph = buildLdGraph(objects, raw, warn, library, isBool);
   splitSharedSources(graph.nodes, warn);
   const { nodes } = graph;
   const { hasGeometry } = plan;

@@ -161,7 +161,9 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     from: string,
     library: BlockLibrary,
     quiet?: ImportIssue[],
+    variables: readonly Variable[] = [],
   ): Pou['networks'] | undefined => {
+    const bools = new Set(variables.filter((v) => v.type.toUpperCase() === 'BOOL').map((v) => v.name.toUpperCase()));
     try {
       const found: ImportIssue[] = [];
       const { networks } = importLdBody(
@@ -170,6 +172,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
         (f: Finding) => found.push({ ...at(f.obj?.xml), pou: pouName, message: f.message }),
         library,
         tuning,
+        (v) => bools.has(v.toUpperCase()),
       );
       // In file order (a large body is read in batches, each reporting as it goes).
       found.sort((a, b) => (a.line ?? Infinity) - (b.line ?? Infinity));
@@ -275,12 +278,12 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     let networks: Pou['networks'] | undefined;
     /** Why an FBD body stays FBD. */
     let fbdKept: string | undefined;
-    if (lang.name === 'LD') networks = importLd(name, lang, 'POU body', library);
+    if (lang.name === 'LD') networks = importLd(name, lang, 'POU body', library, undefined, head.variables);
     else if (lang.name === 'FBD') {
       // FBD and LD share their graph vocabulary: an FBD body that the grid draws exactly, with
       // nothing dropped, becomes LD; otherwise it stays FBD (kept, not simulated).
       const found: ImportIssue[] = [];
-      const tried = importLd(name, lang, 'FBD body', library, found);
+      const tried = importLd(name, lang, 'FBD body', library, found, head.variables);
       const lost = found.filter((f) => !EXACT_FBD.some((re) => re.test(f.message)));
       if (tried && !lost.length) {
         networks = tried;

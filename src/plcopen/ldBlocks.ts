@@ -31,8 +31,12 @@ export function buildBox(
   sourcesOf: (pin: RawPin, consumer: RawObject, operandTarget?: (text: string) => void) => GSource[],
   warn: (f: Finding) => void,
   library: BlockLibrary,
-  /** An inverting contact fed by these sources, for a negated BOOL input (its output). */
-  invert?: (srcs: GSource[]) => GSource,
+  /**
+   * The negation of a negated input as power flow (FBD): an inverting contact fed by the pin's
+   * sources, or a normally-closed contact of its variable; undefined when the value is not BOOL
+   * (a declared BOOL pin, or sources and variables known to be BOOL).
+   */
+  negate?: (what: GSource[] | string, boolPin: boolean) => GSource | undefined,
 ): void {
   const typeName = o.text;
   const sig = library.signature(typeName);
@@ -91,11 +95,6 @@ export function buildBox(
         });
       continue;
     }
-    // A negated BOOL input wired from elements (FBD): an inverting contact before the pin.
-    const bool = layout?.inputs.find((p) => p.name === name)?.type === 'BOOL';
-    const inverted = pin.negated && bool && invert !== undefined;
-    if (pin.negated && !inverted)
-      warn({ message: `block ${instance ?? sig.name}: negation of input ${name} is dropped`, obj: o });
     if (pin.edge) {
       const counterPin = sig.category === 'counter' && (name === 'CU' || name === 'CD');
       warn({
@@ -107,11 +106,18 @@ export function buildBox(
     }
     let operand: string | undefined;
     const src = sourcesOf(pin, o, (t) => (operand = t));
-    if (operand !== undefined) {
-      n.operandsIn[name] = operand;
-      if (inverted)
-        warn({ message: `block ${instance ?? sig.name}: negation of input ${name} (${operand}) is dropped`, obj: o });
-    } else if (src.length) n.inputs.set(name, inverted ? [invert(src)] : src);
+    // A negated BOOL input (FBD): drawn as an inverting or normally-closed contact before the pin.
+    if (pin.negated && (operand !== undefined || src.length)) {
+      const bool = layout?.inputs.find((p) => p.name === name)?.type === 'BOOL';
+      const inverted = negate?.(operand ?? src, bool);
+      if (inverted) {
+        n.inputs.set(name, [inverted]);
+        continue;
+      }
+      warn({ message: `block ${instance ?? sig.name}: negation of input ${name} is dropped`, obj: o });
+    }
+    if (operand !== undefined) n.operandsIn[name] = operand;
+    else if (src.length) n.inputs.set(name, src);
   }
   if ((sig.kind === 'function' || n.executionControl) && !hasEn) {
     n.inputs.set('EN', [RAIL]);

@@ -89,6 +89,8 @@ export function buildLdGraph(
   raw: (el: XmlElement) => string,
   warn: (f: Finding) => void,
   library: BlockLibrary,
+  /** Whether a variable of the POU is BOOL (for negated inputs of generic blocks). */
+  isBool?: (name: string) => boolean,
 ): LdGraph {
   const byId = new Map<string, RawObject>();
   for (const o of objects) {
@@ -282,6 +284,13 @@ export function buildLdGraph(
     return n;
   };
 
+  /** Whether a wire carries BOOL: power flow, or a block output declared BOOL. */
+  const boolSource = (s: GSource): boolean => {
+    if (s.kind === 'rail') return true;
+    const src = nodes[s.node]!;
+    if (src.kind !== 'box') return true;
+    return library.signature(src.blockType ?? src.obj.text)?.outputs.find((p) => p.name === s.pin)?.type === 'BOOL';
+  };
   /** The model's name of a pin of a block object (see canonicalPin). */
   const boxPin = (o: RawObject, pin: string): string => canonicalPin(library.signature(o.text), pin);
   const pinName = (n: GNode, pin: string): string | undefined => {
@@ -332,13 +341,16 @@ export function buildLdGraph(
   for (const n of [...nodes]) {
     const o = n.obj;
     if (n.kind === 'box')
-      buildBox(n, o, sourcesOf, warn, library, (srcs) => {
-        const not = newNode(o, 'contact', n.order);
-        not.contact = 'NOT';
-        not.variable = '';
-        not.inputs.set('in', srcs);
+      buildBox(n, o, sourcesOf, warn, library, (what, boolPin) => {
+        const variable = typeof what === 'string' ? what : undefined;
+        if (!boolPin && (variable !== undefined ? !isBool?.(variable) : !(what as GSource[]).every(boolSource)))
+          return undefined;
+        const c = newNode(o, 'contact', n.order);
+        c.contact = variable !== undefined ? 'NC' : 'NOT';
+        c.variable = variable ?? '';
+        c.inputs.set('in', variable !== undefined ? [RAIL] : (what as GSource[]));
         nodeOf.set(o, n); // the block's object still names the block
-        return { kind: 'node', node: not.index, pin: 'out' };
+        return { kind: 'node', node: c.index, pin: 'out' };
       });
     else if (n.kind === 'contact' && n.contact === 'NOT' && o.kind === 'block') {
       const src = sourcesOf(o.inputs[0] ?? { pin: 'IN', connections: [], negated: false }, o);
@@ -351,6 +363,20 @@ export function buildLdGraph(
       }
     }
   }
+
+  // Pins the file wires through one of its own connector pairs: drawn with that name where cut.
+  if (connectors.size)
+    for (const n of nodes) {
+      const o = n.obj;
+      if (nodeOf.get(o) !== n) continue;
+      const pins = n.kind === 'box' ? o.inputs : o.inputs.slice(0, 1);
+      for (const pin of pins) {
+        const c = pin.connections.length === 1 ? byId.get(pin.connections[0]!.ref) : undefined;
+        if (c?.kind !== 'continuation') continue;
+        const name = n.kind === 'box' ? boxPin(o, pin.pin) : 'in';
+        if (n.inputs.has(name)) (n.via ??= {})[name] = c.text;
+      }
+    }
 
   // Data variables written in the body.
   for (const o of objects) {

@@ -30,10 +30,8 @@ const SCANS = 200;
  */
 const NOT_YET: Readonly<Record<string, string>> = {
   // Being worked on (issue 12, other parts):
-  'beremiz__first_steps.xml':
-    "CounterLD's wiring cannot be drawn exactly on the grid (SEL.G fed from a contact below the ADD box that feeds SEL.IN0)",
   'beremiz__legacy_tc6v10_test_master_DS401GUI.xml':
-    'its only PROGRAM, MAIN_TEST, is a legacy v1.0 FBD body and calls Test_SFC, whose variables have the user data type MYTYPE (LD-E15)',
+    'its only PROGRAM, MAIN_TEST (legacy v1.0 FBD, read as LD), passes UINT# literals to USINT pins (LD-E03) and calls its TOF t1 as a TP (LD-R10); it calls Test_SFC, a legacy v1.0 chart (LD-E40)',
   // Facts of the files (the corpus test's EXPLAINED rules): they run only with their vendor's runtime.
   'openplc-editor__Arduino_7_Segments.xml':
     "the VAR_EXTERNAL current_count is declared by the file's Arduino sketch, not by the file (LD-E16)",
