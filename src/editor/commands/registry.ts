@@ -162,7 +162,7 @@ export const COMMANDS: readonly EditorCommand[] = [
   },
   {
     id: 'edit.name',
-    label: 'Edit variable',
+    label: 'Edit name or pin operand',
     group: 'Edit',
     keys: ['enter', 'f2'],
     inMenu: true,
