@@ -4,6 +4,7 @@
 // the POUs' names (LD-E25).
 import type { Project } from '../model/project';
 import type { Diagnostic } from './api';
+import { reportDataTypes } from './compile/aggregates';
 import { checkRecursion } from './compile/callGraph';
 import { lowerPou } from './compile/pou';
 import { checkPouNames } from './compile/pouNames';
@@ -11,6 +12,7 @@ import { checkPouNames } from './compile/pouNames';
 export function checkProject(project: Project): Diagnostic[] {
   const out: Diagnostic[] = [];
   const globals: Diagnostic[] = [];
+  reportDataTypes(project, globals);
   project.pous.forEach((pou, i) => lowerPou(project, pou, project.profile, out, i === 0 ? globals : []));
   checkRecursion(project, out);
   checkPouNames(project, out);

@@ -2,6 +2,8 @@ import { describe, expect, it } from 'vitest';
 import type { DataType, Pou, Project, Variable } from '../../src/model/project';
 import { ladder, plcOf, project, trace, vars } from './ladder';
 import { io, stErrors, stPlc, stProject, textPou } from './stHelpers';
+import { checkProject } from '../../src/engine/check';
+import { formatDiagnostic } from '../../src/engine/compile/report';
 
 const TYPES: DataType[] = [
   { name: 'Color', def: { kind: 'enum', values: ['RED', 'GREEN', 'BLUE'] }, initial: 'GREEN' },
@@ -138,5 +140,27 @@ describe('ST string literals', () => {
     const plc = stPlc(stProject([textPou('Main', 'PROGRAM', vars('s STRING', 'w WSTRING', 'n INT'), `s := 'it$'s $$5$N$41$42'; w := "say $"hi$" $00e9"; n := LEN(s);`)]));
     plc.scan();
     expect([plc.read('s'), plc.read('w'), plc.read('n')]).toEqual(["it's $5\nAB", 'say "hi" é', 10]);
+  });
+});
+
+describe('data type declarations', () => {
+  it('reports broken type declarations (LD-E60) and variables of unknown types (LD-E15)', () => {
+    const bad: DataType[] = [
+      { name: 'Loop', def: { kind: 'struct', members: [{ name: 'Next', type: 'Loop' }] } },
+      { name: 'Empty', def: { kind: 'subrange', base: 'INT', lower: 5, upper: 1 } },
+    ];
+    const p = withTypes(project(vars('A Nope', 'Lamp BOOL'), [ladder(['[Lamp] - (Lamp)'])]), bad);
+    const errors = checkProject(p).filter((d) => d.severity === 'error').map(formatDiagnostic);
+    expect(errors).toEqual([
+      'error LD-E60 types/variables Loop: the data type Loop contains itself (LOOP -> LOOP)',
+      'error LD-E60 types/variables Empty: the subrange Empty (5..1) is empty',
+      expect.stringMatching(/^error LD-E15 Main\/variables .*"A" has the type "Nope", which cannot be used: "Nope" is not a type/),
+    ]);
+  });
+
+  it('an alias of an elementary type (SVGHMI HMI_BOOL, HMI_INT) behaves as its base', () => {
+    const p = project(vars('Count HMI_INT := 3', 'Run HMI_BOOL', 'Big BOOL'), [ladder(['[Run] - (Big)'])]);
+    const plc = plcOf(p);
+    expect(trace(plc, [{}, { Run: true }], ['Big', 'Count'])).toEqual([[0, 3], [1, 3]]);
   });
 });

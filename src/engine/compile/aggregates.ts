@@ -4,13 +4,15 @@
 // VarSymbols named by their paths (`P.X`, `A[3]`, `G[1,2]`, `S.Pts[1].X`), allocated in order,
 // so an array's elements are evenly spaced in each store (`per`: leaves of one element per store)
 // and an element chosen by a variable index is `slot of the first element + (i - lower) * stride`.
-import { enumIndexOf, leafPaths, type Dim, type Leaf, type TypeShape } from '../../model/dataTypes';
+import { checkDataTypes, enumIndexOf, leafPaths, type Dim, type Leaf, type TypeShape } from '../../model/dataTypes';
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { Variable } from '../../model/project';
 import { parseLiteral } from '../values/literals';
 import { defaultValue } from '../values/types';
 import type { TExpr } from '../st/lowered';
-import type { Reporter } from './report';
+import { Reporter } from './report';
+import type { Diagnostic } from '../api';
+import type { Project } from '../../model/project';
 import type { DataTypeInfo, SymbolTable, VarSymbol } from './symbols';
 
 export type PerStore = { readonly b: number; readonly n: number; readonly g: number };
@@ -216,6 +218,12 @@ function leafInitial(leaf: Leaf): Value | { error: string } {
   const lit = parseLiteral(leaf.initial, leaf.type);
   if (!lit.ok) return { error: `${leaf.path}: ${lit.message}` };
   return lit.value;
+}
+
+/** LD-E60: the problems of the project's data type declarations (unknown names, cycles, empty ranges...), under "types". */
+export function reportDataTypes(project: Project, out: Diagnostic[]): void {
+  const r = new Reporter(out, 'types', -1);
+  for (const e of checkDataTypes(project)) r.error('LD-E60', `${e.name}: ${e.message}`);
 }
 
 export const outside = (v: Value, range: Dim): boolean => Number(v) < range.lower || Number(v) > range.upper;

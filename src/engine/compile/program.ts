@@ -8,6 +8,7 @@ import type { ResolvedFunction } from '../library/fnTypes';
 import type { ElementaryType } from '../../model/iecTypes';
 import { checkRecursion, reachablePous } from './callGraph';
 import type { EdgeOwner } from './context';
+import { reportDataTypes } from './aggregates';
 import { Flattener, type BodyInfo } from './flatten';
 import type { NetworkIR } from './ir';
 import { lowerPou } from './pou';
@@ -59,6 +60,7 @@ export function assembleProgram(
 ): { program?: CompiledProgram; diagnostics: Diagnostic[] } {
   const diagnostics: Diagnostic[] = [];
   const globals: Diagnostic[] = [];
+  reportDataTypes(project, globals);
   const profile = opts.profile ?? project.profile;
   const library = blockLibrary(project);
   const flat = new Flattener(project, profile);
