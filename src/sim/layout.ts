@@ -2,6 +2,7 @@
 // document) and every readable name with its type (to format and parse values).
 import type { InstanceInfo } from '../engine/api';
 import { findVariable } from '../model/factory';
+import { elementaryOf, leafPaths } from '../model/dataTypes';
 import { parseLocation } from '../model/iecTypes';
 import { blockLibrary } from '../model/library';
 import type { Pou, Project, Variable } from '../model/project';
@@ -47,9 +48,12 @@ export function describeName(project: Project, pou: Pou, name: string): SimVaria
     first = 1;
   }
   for (let i = first; i < parts.length; i++) {
-    const part = parts[i]!;
+    const part = parts[i]!.replace(/\[.*$/s, ''); // `A[2]`: the variable A
     const declared = i === 0 || (i === first && scope === pou) ? findVariable(project, scope, part) : scope.variables.find((v) => sameName(v.name, part));
     if (!declared) return undefined;
+    // A variable of a data type: one of its leaves (`P.X`, `A[2]`), or itself with its elementary type.
+    const leaf = dataTypeLeaf(project, declared, parts.slice(i).join('.'));
+    if (leaf) return { ...declaredName(name, declared, i > 0), type: leaf };
     if (i === parts.length - 1) return declaredName(name, declared, i > 0);
     const user = library.userPou(declared.type);
     if (user && user.kind === 'FUNCTION_BLOCK' && project.pous.includes(user)) {
@@ -67,6 +71,15 @@ export function describeName(project: Project, pou: Pou, name: string): SimVaria
 }
 
 const sameName = (a: string, b: string) => a.toUpperCase() === b.toUpperCase();
+
+/** The elementary type of `path` (`P.X`, `G[1, 2]`, `V`) in a variable of a user data type. */
+function dataTypeLeaf(project: Project, declared: Variable, path: string): string | undefined {
+  if (elementaryOf(declared.type)) return undefined;
+  const r = leafPaths(project, declared);
+  if (!r.ok) return undefined;
+  const key = path.replace(/\s+/g, '').toUpperCase();
+  return r.leaves.find((l) => l.path.toUpperCase() === key)?.type;
+}
 
 export function findPou(project: Project, name: string): Pou | undefined {
   const key = name.toUpperCase();
