@@ -45,6 +45,16 @@ async function printPreview(choices: { whole?: boolean; variables: boolean; cros
   return page.getByTestId('print-view');
 }
 
+/** Nothing is cut off at the bottom of a page: what was measured is what the pages hold. */
+async function expectNothingCut() {
+  const cut = await page.evaluate(() =>
+    [...document.querySelectorAll<HTMLElement>('[data-testid="print-page"] .rs-print-body')]
+      .map((body, i) => ({ page: i + 1, over: body.scrollHeight - body.clientHeight }))
+      .filter((p) => p.over > 0),
+  );
+  expect(cut).toEqual([]);
+}
+
 async function closePreview() {
   await page.getByTestId('print-close').click();
   await page.getByTestId('print-view').waitFor({ state: 'detached' });
@@ -94,12 +104,20 @@ test('a 100-network POU prints on the expected number of pages, no network split
     expect.arrayContaining(['Start0', 'Stop0', 'Guard0', 'Motor0']),
   );
 
+  await expectNothingCut();
   expect(await pdfPages()).toBe(count);
   await closePreview();
 });
 
 test('with variable lists and the cross-reference, in portrait: every page prints, tables keep their headers', async () => {
-  await load(sealInProject(100, 'Conveyor line'));
+  // A comment long enough to wrap over several lines in its row.
+  const project = sealInProject(100, 'Conveyor line');
+  const main = project.pous[0]!;
+  const long = 'Motor of the infeed conveyor, belt 3; stops on the light curtain and on any emergency stop of zone B. '.repeat(3);
+  await load({
+    ...project,
+    pous: [{ ...main, variables: main.variables.map((v) => (v.name === 'Motor0' ? { ...v, comment: long } : v)) }],
+  });
   const view = await printPreview({ variables: true, crossReference: true, portrait: true });
   const pages = view.getByTestId('print-page');
   const count = await pages.count();
@@ -118,8 +136,12 @@ test('with variable lists and the cross-reference, in portrait: every page print
     }),
   );
   expect(headersOk).toBe(true);
+  const wrapped = view.locator('.rs-print-row.rs-print-var').filter({ hasText: 'Motor0' });
+  const oneLine = view.locator('.rs-print-row.rs-print-var').filter({ hasText: 'Motor1' }).first();
+  expect((await wrapped.boundingBox())!.height).toBeGreaterThan(2 * (await oneLine.boundingBox())!.height);
   const motor7 = view.locator('.rs-print-row.rs-print-xref').filter({ hasText: 'Motor7' }).first();
   expect(await motor7.locator('span').allTextContents()).toEqual(['Motor7', 'Main', 'BOOL', '', 'Main: N8 W, N8 R', '2']);
+  await expectNothingCut();
   expect(await pdfPages()).toBe(count);
   await closePreview();
 });
@@ -163,6 +185,7 @@ test('a network taller than a page is split between rows with continued marks', 
     }),
   );
   for (const c of cuts) expect(Math.abs(c - Math.round(c))).toBeLessThan(0.01);
+  await expectNothingCut();
   expect(await pdfPages()).toBe(await view.getByTestId('print-page').count());
   await closePreview();
 });

@@ -35,6 +35,17 @@ export function TableHead({ table }: { readonly table: string }) {
   );
 }
 
+/** A one-line row of the table: measured once, it gives the height of every row whose cells all fit. */
+export function SampleRow({ table }: { readonly table: string }) {
+  const xref = table === 'xref';
+  return (
+    <Row
+      className={`rs-print-sample ${xref ? 'rs-print-xref' : 'rs-print-var'}`}
+      cells={(xref ? XREF_COLUMNS : VAR_COLUMNS).map(() => 'X')}
+    />
+  );
+}
+
 export function PrintBlockView({
   item,
   drawing,
@@ -83,26 +94,22 @@ export function PrintBlockView({
       );
     case 'note':
       return <p className="rs-print-note">{item.text}</p>;
-    case 'var': {
-      const v = item.variable;
-      const attributes = [v.retain ? 'RETAIN' : '', v.constant ? 'CONSTANT' : ''].filter(Boolean).join(' ');
-      return (
-        <Row
-          className="rs-print-var"
-          cells={[classLabel(v, item.global), v.name, v.type, v.location ?? '', v.initial ?? '', attributes, v.comment]}
-        />
-      );
-    }
-    case 'xref': {
-      const r = item.row;
-      return (
-        <Row
-          className="rs-print-xref"
-          cells={[r.name, r.declaredIn, r.type, r.address, r.uses, String(r.count)]}
-        />
-      );
-    }
+    case 'var':
+    case 'xref':
+      return <Row className={item.kind === 'xref' ? 'rs-print-xref' : 'rs-print-var'} cells={rowCells(item)} />;
   }
+}
+
+/** The cells' texts of a table row (empty for other blocks). */
+export function rowCells(item: PrintItem): string[] {
+  if (item.kind === 'xref') {
+    const r = item.row;
+    return [r.name, r.declaredIn, r.type, r.address, r.uses, String(r.count)];
+  }
+  if (item.kind !== 'var') return [];
+  const v = item.variable;
+  const attributes = [v.retain ? 'RETAIN' : '', v.constant ? 'CONSTANT' : ''].filter(Boolean).join(' ');
+  return [classLabel(v, item.global), v.name, v.type, v.location ?? '', v.initial ?? '', attributes, v.comment];
 }
 
 /** The table a block is a row of, if it is one. */
