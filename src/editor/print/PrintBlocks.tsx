@@ -9,11 +9,11 @@ import type { NetworkDrawing } from './networkSvg';
 const VAR_COLUMNS = ['Class', 'Name', 'Type', 'Address', 'Initial', 'Attributes', 'Comment'] as const;
 const XREF_COLUMNS = ['Name', 'Declared in', 'Type', 'Address', 'Uses', 'Count'] as const;
 
-function Row({ cells, className }: { readonly cells: readonly ReactNode[]; readonly className: string }) {
+function Row(props: { readonly cells: readonly ReactNode[]; readonly className: string; readonly head?: boolean }) {
   return (
-    <div className={`rs-print-row ${className}`} role="row">
-      {cells.map((c, i) => (
-        <span key={i} role="cell">
+    <div className={`rs-print-row ${props.className}`} role="row">
+      {props.cells.map((c, i) => (
+        <span key={i} role={props.head ? 'columnheader' : 'cell'}>
           {c}
         </span>
       ))}
@@ -21,29 +21,17 @@ function Row({ cells, className }: { readonly cells: readonly ReactNode[]; reado
   );
 }
 
+const columnsOf = (table: string) => (table === 'xref' ? XREF_COLUMNS : VAR_COLUMNS);
+const tableClass = (table: string) => (table === 'xref' ? 'rs-print-xref' : 'rs-print-var');
+
 /** The header of the table a row belongs to, repeated on each page the table reaches. */
 export function TableHead({ table }: { readonly table: string }) {
-  const xref = table === 'xref';
-  return (
-    <div className={`rs-print-row rs-print-head ${xref ? 'rs-print-xref' : 'rs-print-var'}`} role="row">
-      {(xref ? XREF_COLUMNS : VAR_COLUMNS).map((c) => (
-        <span key={c} role="columnheader">
-          {c}
-        </span>
-      ))}
-    </div>
-  );
+  return <Row className={`rs-print-head ${tableClass(table)}`} cells={columnsOf(table)} head />;
 }
 
 /** A one-line row of the table: measured once, it gives the height of every row whose cells all fit. */
 export function SampleRow({ table }: { readonly table: string }) {
-  const xref = table === 'xref';
-  return (
-    <Row
-      className={`rs-print-sample ${xref ? 'rs-print-xref' : 'rs-print-var'}`}
-      cells={(xref ? XREF_COLUMNS : VAR_COLUMNS).map(() => 'X')}
-    />
-  );
+  return <Row className={`rs-print-sample ${tableClass(table)}`} cells={columnsOf(table).map(() => 'X')} />;
 }
 
 export function PrintBlockView({
@@ -96,7 +84,7 @@ export function PrintBlockView({
       return <p className="rs-print-note">{item.text}</p>;
     case 'var':
     case 'xref':
-      return <Row className={item.kind === 'xref' ? 'rs-print-xref' : 'rs-print-var'} cells={rowCells(item)} />;
+      return <Row className={tableClass(item.table)} cells={rowCells(item)} />;
   }
 }
 
