@@ -15,7 +15,8 @@
 //   elementary values a variable of a struct/array type is made of, in storage order, as paths
 //   (`P.X`, `A[1]`, `G[2,3]`, `S.Pts[1].X`), each with its elementary type, the declared type name,
 //   enum values or subrange, and its initial value text (variable initial, else the type's, else
-//   the member's declaration, else the element type's; absent: the type's default). A variable of
+//   the member's declaration, else the element type's; absent: the type's default, which is an
+//   enum's first value and a subrange's lower bound). A variable of
 //   an elementary, enum, subrange or alias type has one leaf: its own name.
 // - `enumValues(project, typeName)` -> the values of an enum type (or undefined).
 // - `parseInitial(text)` / `formatInitial(value)`: IEC initial values: `5`, `GREEN`, `'a,b'`,

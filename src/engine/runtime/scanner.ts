@@ -317,17 +317,8 @@ export class ScanPlc implements Plc {
   private trip(at: number): void {
     if (this.runtimeFault !== undefined) {
       const w = this.where(at);
-      this.currentFault = {
-        kind: 'runtime',
-        pou: w.pou,
-        ...(w.instance ? { instance: w.instance } : {}),
-        network: w.network,
-        ...(w.label ? { networkLabel: w.label } : {}),
-        message: `${this.runtimeFault} in ${w.instance ? `${w.instance} (${w.pou})` : w.pou}`,
-      };
+      this.stopWith('runtime', w, `${this.runtimeFault} in ${w.instance ? `${w.instance} (${w.pou})` : w.pou}`);
       this.runtimeFault = undefined;
-      this.cursor = -1;
-      this.lastExecMs = now() - this.scanStart;
       return;
     }
     const network = this.backJump >= 0 ? this.backJump : at;
@@ -341,13 +332,18 @@ export class ScanPlc implements Plc {
       this.evals >= this.maxEvals
         ? `${this.maxEvals.toLocaleString('en-US')} network evaluations`
         : `${this.maxScanMs} ms`;
+    this.stopWith('watchdog', w, `watchdog: scan exceeded ${limit}; ${this.backJump >= 0 ? `looping in ${where}` : `stopped at ${where}`}`);
+  }
+
+  /** Ends the scan with a fault at `w`. */
+  private stopWith(kind: Fault['kind'], w: ReturnType<ScanPlc['where']>, message: string): void {
     this.currentFault = {
-      kind: 'watchdog',
+      kind,
       pou: w.pou,
       ...(w.instance ? { instance: w.instance } : {}),
       network: w.network,
       ...(w.label ? { networkLabel: w.label } : {}),
-      message: `watchdog: scan exceeded ${limit}; ${this.backJump >= 0 ? `looping in ${where}` : `stopped at ${where}`}`,
+      message,
     };
     this.cursor = -1;
     this.lastExecMs = now() - this.scanStart;
