@@ -62,7 +62,12 @@ export class DrawPage {
   /** Screen position of the middle of a cell (the canvas scrolled to show it first). */
   async cellPoint(index: number, row: number, col: number): Promise<{ x: number; y: number }> {
     const { networks, layout } = await this.layout();
-    const { x: contentX, y: contentY } = cellCentre(layout, networks, index, { row, col });
+    return this.screenPoint(cellCentre(layout, networks, index, { row, col }));
+  }
+
+  /** Screen position of a point in canvas content pixels (the canvas scrolled to show it first). */
+  async screenPoint(content: { x: number; y: number }): Promise<{ x: number; y: number }> {
+    const { x: contentX, y: contentY } = content;
     const { zoom, left, top, boxX, boxY } = await this.canvas().evaluate(
       (el, p) => {
         const z = window.rungsmith!.uiStore!.getState().viewport.zoom;

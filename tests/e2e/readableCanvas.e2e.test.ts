@@ -5,7 +5,7 @@
 // page), not screenshots.
 import type { Page } from 'playwright-core';
 import { afterEach, beforeEach, expect, inject, test } from 'vitest';
-import { CELL_W } from '../../src/editor/canvas/geometry';
+import { CELL_W, cellCentre, columnsOf, RAIL_X } from '../../src/editor/canvas/geometry';
 import { FORCED_BADGE } from '../../src/editor/theme/monitorStyle';
 import type { Project } from '../../src/model/project';
 import { ladder, project, vars } from '../engine/ladder';
@@ -380,3 +380,42 @@ test('monitoring: TRUE and FALSE differ in colour and shape; a forced value has 
   });
   expect(errors).toEqual([]);
 });
+
+test('a coil drawn at the rail: clicking its wire with a contact puts the contact in series before it', async () => {
+  await page.evaluate(() => window.rungsmith!.documentStore!.getState().newProject('Rail'));
+  const draw = sim.draw;
+  await draw.pickPalette('contact-NO');
+  await draw.clickCell(0, 0, 0);
+  await draw.typeName('Start');
+  await draw.pickPalette('coil-COIL');
+  await draw.clickCell(0, 0, 1);
+  await draw.typeName('Motor');
+  let { networks, layout } = await draw.layout();
+  const nc = columnsOf(layout, networks[0]!);
+  // The coil sits in the last column; the wire from its cell runs there.
+  expect(nc.alignedAt[0]).toBe(1);
+  const y = cellCentre(layout, networks, 0, { row: 0, col: 0 }).y;
+  const onWire = await draw.screenPoint({ x: RAIL_X + (nc.xs[4]! + nc.xs[5]!) / 2, y });
+  await draw.pickPalette('contact-NC');
+  await page.mouse.click(onWire.x, onWire.y);
+  await draw.typeName('Stop');
+  expect(await draw.elements(0)).toEqual([
+    { kind: 'contact', row: 0, col: 0, name: 'Start', type: 'NO' },
+    { kind: 'contact', row: 0, col: 1, name: 'Stop', type: 'NC' },
+    { kind: 'coil', row: 0, col: 2, name: 'Motor', type: 'COIL' },
+  ]);
+  ({ networks, layout } = await draw.layout());
+  expect(columnsOf(layout, networks[0]!).alignedAt[0]).toBe(2);
+  // Clicking the coil where it is drawn, at the rail, selects it.
+  await draw.pickPalette('select');
+  await draw.clickCell(0, 0, 2);
+  const selected = await page.evaluate(() => {
+    const ui = window.rungsmith!.uiStore!.getState();
+    const doc = window.rungsmith!.documentStore!.getState();
+    const n = doc.project.pous.find((p) => p.id === doc.activePouId)!.networks[0]!;
+    return ui.selection.elements.map((id) => n.elements.find((e) => e.id === id)?.kind);
+  });
+  expect(selected).toEqual(['coil']);
+  expect(errors).toEqual([]);
+});
+

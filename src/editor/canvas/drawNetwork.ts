@@ -233,9 +233,16 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     }
   }
   if (paint.cursor) {
-    const r = cellRect(nc, paint.cursor);
+    const { row, col } = paint.cursor;
+    const k = nc.alignedAt[row] ?? -1;
     ctx.strokeStyle = t.cursor;
     ctx.lineWidth = 2.5;
-    ctx.strokeRect(r.x + 1, r.y + 1, r.width - 2, r.height - 2);
+    if (k >= 0 && col > k && col < n.cols) {
+      // An empty cell past a rail-aligned coil: after the end of the rung, a bar right of the rail.
+      ctx.strokeRect(w + 4, row * CELL_H + 6, 5, CELL_H - 12);
+    } else {
+      const r = cellRect(nc, paint.cursor);
+      ctx.strokeRect(r.x + 1, r.y + 1, r.width - 2, r.height - 2);
+    }
   }
 }
