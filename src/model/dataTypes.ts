@@ -460,9 +460,8 @@ export function checkDataTypes(project: Pick<Project, 'dataTypes' | 'pous'>): { 
     if (!leaves.ok) add(leaves.message);
     else
       for (const l of leaves.leaves) {
+        // (An initial value outside a subrange is only a warning where a variable uses it: MATIEC keeps it.)
         if (l.enumValues && l.initial !== undefined && !enumIndexOf(l, l.initial)) add(`${l.path}: ${l.initial} is not a value of ${l.typeName} (${l.enumValues.join(', ')})`);
-        if (l.range && l.initial !== undefined && /^[+-]?\d+$/.test(l.initial) && (Number(l.initial) < l.range.lower || Number(l.initial) > l.range.upper))
-          add(`${l.path}: the initial value ${l.initial} is outside ${l.typeName} (${l.range.lower}..${l.range.upper})`);
       }
   }
   return out;

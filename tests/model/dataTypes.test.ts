@@ -95,13 +95,13 @@ describe('initial value texts', () => {
     expect(parseInitial('[1, 2')).toMatchObject({ error: expect.any(String) });
   });
 
-  it('checks declared types: empty ranges, duplicate enum values, initial values out of range', () => {
+  it('checks declared types: empty ranges, duplicate enum values, bad enum initial values, non-integer subranges', () => {
     const bad = {
       pous: [],
       dataTypes: [
         { name: 'E', def: { kind: 'enum', values: ['A', 'a'] } },
         { name: 'R', def: { kind: 'subrange', base: 'INT', lower: 5, upper: 1 } },
-        { name: 'Q', def: { kind: 'subrange', base: 'INT', lower: 0, upper: 10 }, initial: '11' },
+        { name: 'Q', def: { kind: 'enum', values: ['A'] }, initial: 'B' },
         { name: 'F', def: { kind: 'subrange', base: 'REAL', lower: 0, upper: 10 } },
       ],
     } as unknown as Project;
@@ -109,7 +109,7 @@ describe('initial value texts', () => {
     expect(msgs).toEqual([
       'E: the enumeration E has the value a twice',
       'R: the subrange R (5..1) is empty',
-      'Q: Q: the initial value 11 is outside Q (0..10)',
+      'Q: Q: B is not a value of Q (A)',
       'F: the subrange F must be of an integer type, not REAL',
     ]);
   });
