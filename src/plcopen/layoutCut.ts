@@ -5,6 +5,7 @@
 // it compiles is the file's; evaluation follows that graph, not where the pair sits (LD-SEMANTICS
 // section 1). Cuts are made on a view of the nodes: the file's nodes stay as read, for verification.
 import type { GNode, GSource } from './ldGraph';
+import { srcKey } from './ldNormalize';
 import type { Mismatch } from './verifyLayout';
 
 /** Rounds of cutting the pins the grid drew wrongly before every wire between elements is cut. */
@@ -22,7 +23,6 @@ export interface CutView {
   readonly members: readonly number[];
 }
 
-const srcKey = (s: GSource) => (s.kind === 'rail' ? 'R' : `${s.node}>${s.pin}`);
 const IDENT = /^[A-Za-z_][A-Za-z0-9_]*$/;
 
 /**
@@ -72,38 +72,13 @@ export function cutView(nodes: readonly GNode[], members: readonly number[], cut
     const key = srcs.map(srcKey).sort().join(' ');
     let conn = connectorOf.get(key);
     if (!conn) {
-      const name = nameFor(orig.via?.[pin]);
       const first = srcs.find((s) => s.kind === 'node');
       const at = first && first.kind === 'node' ? nodes[first.node]! : orig;
-      conn = {
-        index: view.length,
-        obj: at.obj,
-        kind: 'connector',
-        name,
-        inputs: new Map([['in', [...srcs]]]),
-        operandsIn: {},
-        operandsOut: {},
-        x: at.x + 0.5,
-        y: at.y,
-        order: at.order,
-        feedsRightRail: false,
-      };
+      conn = drawn(view.length, 'connector', nameFor(orig.via?.[pin]), at, 0.5, new Map([['in', [...srcs]]]));
       connectorOf.set(key, conn);
       add(conn);
     }
-    const cont: GNode = {
-      index: view.length,
-      obj: orig.obj,
-      kind: 'continuation',
-      name: conn.name!,
-      inputs: new Map(),
-      operandsIn: {},
-      operandsOut: {},
-      x: orig.x - 0.5,
-      y: orig.y,
-      order: orig.order,
-      feedsRightRail: false,
-    };
+    const cont = drawn(view.length, 'continuation', conn.name!, orig, -0.5, new Map());
     add(cont);
     clone.inputs.set(pin, [{ kind: 'node', node: cont.index, pin: 'out' }]);
   }
@@ -145,4 +120,28 @@ export function addCuts(
   if (stray.size)
     for (const i of members)
       for (const [pin, srcs] of nodes[i]!.inputs) if (srcs.some((s) => stray.has(srcKey(s)))) cut(i, pin);
+}
+
+/** A connector or continuation node drawn beside `at` (right of it: dx > 0; left: dx < 0). */
+function drawn(
+  index: number,
+  kind: 'connector' | 'continuation',
+  name: string,
+  at: GNode,
+  dx: number,
+  inputs: Map<string, GSource[]>,
+): GNode {
+  return {
+    index,
+    obj: at.obj,
+    kind,
+    name,
+    inputs,
+    operandsIn: {},
+    operandsOut: {},
+    x: at.x + dx,
+    y: at.y,
+    order: at.order,
+    feedsRightRail: false,
+  };
 }

@@ -5,7 +5,8 @@
 // would draw it.
 import type { Finding, GNode, GSource } from './ldGraph';
 
-const srcKey = (s: GSource) => (s.kind === 'rail' ? 'R' : `${s.node}>${s.pin}`);
+/** A source as a string key (the rail, or node and pin). */
+export const srcKey = (s: GSource) => (s.kind === 'rail' ? 'R' : `${s.node}>${s.pin}`);
 
 export function splitSharedSources(nodes: GNode[], warn: (f: Finding) => void): void {
   for (let round = 0; round < 4; round++) if (!splitOnce(nodes, warn)) return;

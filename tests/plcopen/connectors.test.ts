@@ -69,7 +69,7 @@ describe('connector pairs where the grid cannot route a wire', () => {
     expect(pairs(project).length).toBeGreaterThan(0);
     expect(checkProject(project)).toEqual([]);
     // Out = C1.CV >= 2 ? Stop : C1.Q (C1 counts Pulse up to PV 3); Run = Start AND NOT Stop.
-    const steps = [
+    const steps: Record<string, boolean>[] = [
       { Pulse: true, Start: true },
       { Pulse: false },
       { Pulse: true },
