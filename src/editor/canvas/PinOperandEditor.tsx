@@ -11,9 +11,11 @@ import type { EditorContext } from '../commands/editorActions';
 import { tabToField } from '../commands/pinActions';
 import { VariableInput, type CancelReason, type EndKey } from '../inspector/VariableInput';
 import { pinSlots, withOperand } from './pinOperands';
-import { CELL_H } from './geometry';
+import { CELL_H, WIRE_Y } from './geometry';
 
-const FIELD_W = 132;
+const FIELD_W = 120;
+/** The field's height (content pixels): it sits just above the pin's wire, where the operand is written. */
+const FIELD_H = 26;
 /** Where the box's pin lines meet its body, from its outer edges (content pixels). */
 const PIN_LEAD = 18;
 
@@ -21,7 +23,7 @@ export interface PinOperandEditorProps {
   readonly box: BoxElement;
   readonly network: Network;
   readonly pin: string;
-  /** The box's left edge, its width and its top row's top (screen pixels of the scrolled world). */
+  /** The box's left edge, its width and its top row's top + 4 (screen pixels of the scrolled world). */
   readonly left: number;
   readonly width: number;
   readonly top: number;
@@ -59,7 +61,7 @@ export function PinOperandEditor({ box, network, pin, left, width, top, zoom, cl
   const x = slot.side === 'input' ? left + PIN_LEAD * zoom - FIELD_W : left + width - PIN_LEAD * zoom;
   const style = {
     left: Math.max(0, x),
-    top: top + slot.rowOffset * CELL_H * zoom,
+    top: top + (slot.rowOffset * CELL_H + WIRE_Y - 4 - FIELD_H) * zoom,
     width: FIELD_W,
   };
   const label = `${slot.side === 'input' ? 'Input' : 'Output'} ${pin} of ${box.instance || box.blockType}`;

@@ -9,6 +9,7 @@ import type { BoxElement, LdElement } from '../../model/elements';
 import { elementSize } from '../../model/factory';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { Network } from '../../model/project';
+import { openInputs } from './pinOperands';
 import { SPEC_BOLD, SPEC_FONT, SPEC_MONO_SMALL, SPEC_SMALL, textWidth } from './textWidth';
 
 /**
@@ -44,14 +45,15 @@ export interface BoxMetrics {
 export const operandWidth = (text: string): number => textWidth(text, SPEC_SMALL);
 export const nameWidth = (text: string): number => textWidth(text, SPEC_FONT);
 
-export function boxMetrics(el: BoxElement, layout: BoxLayout): BoxMetrics {
+/** `open`: inputs drawn with a `???` operand (unwired, none given; pinOperands.ts), which need its room. */
+export function boxMetrics(el: BoxElement, layout: BoxLayout, open?: ReadonlySet<string>): BoxMetrics {
   let inOperand = 0;
   let outOperand = 0;
   let inPin = 0;
   let outPin = 0;
   for (const pin of layout.inputs) {
     inPin = Math.max(inPin, textWidth(pin.name, SPEC_SMALL));
-    const operand = el.inputs[pin.name];
+    const operand = el.inputs[pin.name] || (open?.has(pin.name) ? '???' : '');
     if (operand) inOperand = Math.max(inOperand, operandWidth(operand));
   }
   for (const pin of layout.outputs) {
@@ -72,7 +74,7 @@ export const jumpText = (el: LdElement): string =>
   el.kind === 'jump' ? `>>${el.target || '???'}` : el.kind === 'return' ? '<RETURN>' : '';
 
 /** Widths the element needs, one per column it covers (before the network's minimum). */
-function needs(el: LdElement, lib: BlockLibrary): number[] {
+function needs(el: LdElement, lib: BlockLibrary, n: Network): number[] {
   switch (el.kind) {
     case 'contact':
       return [el.contact === 'NOT' ? CELL_W : nameWidth(el.variable || '???') + LABEL_PAD];
@@ -89,7 +91,7 @@ function needs(el: LdElement, lib: BlockLibrary): number[] {
     case 'box': {
       const layout = boxLayout(el, lib);
       if (!layout) return [textWidth(el.blockType, SPEC_BOLD) + 2 * BOX_MARGIN + 8];
-      const m = boxMetrics(el, layout);
+      const m = boxMetrics(el, layout, openInputs(n, el, lib));
       const total = m.left + m.body + m.rightMargin;
       const extra = Math.max(0, m.instance - total) / 2;
       const first = m.left + m.body / 2 + extra;
@@ -136,7 +138,7 @@ export function networkColumns(n: Network, lib: BlockLibrary = STANDARD_LIBRARY)
   const widths = new Float64Array(Math.max(0, n.cols)).fill(CELL_W);
   for (const el of n.elements) {
     const d = el.row < n.rows && alignedAt[el.row] === el.col && el.kind === 'coil' ? n.cols - 1 : el.col;
-    needs(el, lib).forEach((w, i) => {
+    needs(el, lib, n).forEach((w, i) => {
       const c = d + i;
       if (c < widths.length) widths[c] = Math.max(widths[c]!, Math.ceil(w));
     });

@@ -231,7 +231,7 @@ export const BOX_TOP = WIRE_Y - 24;
 function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint, w: number) {
   const layout = boxLayout(el, paint.library);
   const rows = layout?.rows ?? 1;
-  const m = layout ? boxMetrics(el, layout) : undefined;
+  const m = layout ? boxMetrics(el, layout, paint.openPins) : undefined;
   const left = m?.left ?? BOX_MARGIN;
   const right = w - (m?.rightMargin ?? BOX_MARGIN);
   const top = BOX_TOP;
