@@ -6,7 +6,7 @@ import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { trace } from './behaviour';
 import { fixture, run } from './fixtures';
 import { CASES } from './layoutCases';
-import { graphOf, specGraph } from './ldXml';
+import { graphOf, ldXml, specGraph, type LdNetwork } from './ldXml';
 
 describe('layout draws exactly the file (hand-written shapes)', () => {
   it.each(CASES)('$name: $about', ({ name, networks, connectors }) => {
@@ -59,5 +59,44 @@ describe('layout draws exactly the file (hand-written shapes)', () => {
     expect([plc.read('A'), plc.read('B'), plc.read('C'), plc.read('Count')]).toEqual([false, false, true, 0]);
     for (let k = 0; k < 3; k++) pulse('Up');
     expect([plc.read('A'), plc.read('B'), plc.read('C'), plc.read('Count')]).toEqual([true, true, false, 3]);
+  });
+});
+
+describe('the layout follows the file’s geometry', () => {
+  it('elements on one y share a row, columns follow x, the OR branch sits below', () => {
+    const net = {
+      objects: [
+        { id: 1, kind: 'contact', v: 'A', in: ['rail'] },
+        { id: 2, kind: 'contact', v: 'B', in: ['1'] },
+        { id: 3, kind: 'contact', v: 'C', in: ['rail'] },
+        { id: 4, kind: 'contact', v: 'D', in: ['3'] },
+        { id: 5, kind: 'coil', v: 'X', in: ['2', '4'] },
+        { id: 6, kind: 'coil', v: 'Y', in: ['2', '4'] },
+      ],
+      toRail: [5, 6],
+      pos: {
+        1: { x: 50, y: 20 },
+        2: { x: 120, y: 20 },
+        3: { x: 50, y: 80 },
+        4: { x: 120, y: 80 },
+        5: { x: 400, y: 20 },
+        6: { x: 400, y: 80 },
+      },
+    } satisfies LdNetwork;
+    const r = importPlcopen(ldXml([...'ABCDXY'].map((name) => ({ name, type: 'BOOL' })), [net]));
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    expect(graphOf(r.project)).toEqual(specGraph([net]));
+    const at = new Map(
+      r.project.pous[0]!.networks[0]!.elements.flatMap((e) =>
+        e.kind === 'contact' || e.kind === 'coil' ? [[e.variable, [e.row, e.col]] as const] : [],
+      ),
+    );
+    const row = (v: string) => at.get(v)![0];
+    const col = (v: string) => at.get(v)![1];
+    expect([row('A'), row('B'), row('X')]).toEqual([0, 0, 0]);
+    expect([row('C'), row('D'), row('Y')]).toEqual([1, 1, 1]);
+    expect(col('A')).toBeLessThan(col('B'));
+    expect(col('C')).toBeLessThan(col('D'));
+    expect(col('X')).toBe(col('Y'));
   });
 });
