@@ -1,5 +1,5 @@
-// The tooltip of the cell under the pointer: the element's full name and kind (names longer than
-// a cell are shortened on the canvas) and the problems marked on that cell.
+// The tooltip of the cell under the pointer: the element's full name and kind (the canvas draws
+// names whole too, in columns as wide as they need) and the problems marked on that cell.
 import type { LdElement } from '../../model/elements';
 import type { Network } from '../../model/project';
 import { partnerWords } from '../../store/connectors';
