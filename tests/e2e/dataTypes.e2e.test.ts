@@ -1,18 +1,22 @@
 // A PLC programmer declares a structure Point (X, Y : INT) in the project tree's data-type editor,
 // declares P : Point in the variable table, writes 42 into P.X with a MOVE box (the inspector
 // accepts the member operand), runs, expands P in the watch table to see X's value and forces P.Y.
-// Renaming the type in the tree retypes P; deleting it while used says where first.
+// Renaming the type in the tree retypes P; deleting it while used says where first. An enumeration
+// shows and is written by value name; an array expands into its elements.
 import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
+import { newProject, variable } from '../../src/model/factory';
 import type { Project } from '../../src/model/project';
 import { openApp, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 import { EditorPage, poll } from './panelsPage';
+import { SimPage } from './simPage';
 
 const browser = useChromium();
 let page: Page;
 let draw: DrawPage;
 let editor: EditorPage;
+let sim: SimPage;
 let errors: string[];
 
 beforeAll(async () => {
@@ -20,6 +24,7 @@ beforeAll(async () => {
   await page.evaluate(() => window.rungsmith!.documentStore!.getState().newProject('Plant'));
   draw = new DrawPage(page);
   editor = new EditorPage(page);
+  sim = new SimPage(page);
 });
 
 const project = (): Promise<Project> => editor.project();
@@ -89,6 +94,29 @@ test('P.X on a MOVE output is accepted by the inspector with its member type', a
   await poll(() => editor.inspector.getByText('INT', { exact: true }).count()).toBeGreaterThan(0);
 });
 
+test('running, P expands in the watch table to X = 42; P.Y is forced', async () => {
+  await sim.button('run').click();
+  await sim.waitForMode('Running');
+  await sim.tab('Watch');
+  await page.getByTestId('watch-add-name').fill('P');
+  await page.getByTestId('watch-add').click();
+  const p = page.getByTestId('watch-row-P');
+  await p.waitFor();
+  // Collapsed at first: the members appear when P is expanded.
+  expect(await page.getByTestId('watch-row-P.X').count()).toBe(0);
+  await p.getByTestId('watch-expand').click();
+  const x = page.getByTestId('watch-row-P.X');
+  await poll(() => x.getByTestId('watch-value').textContent()).toBe('42');
+  const y = page.getByTestId('watch-row-P.Y');
+  await y.getByTestId('watch-input').fill('7');
+  await y.getByTestId('watch-force').click();
+  await poll(() => y.getByTestId('watch-value').textContent()).toBe('7 F');
+  await sim.waitForValue('P.Y', 7);
+  await y.getByTestId('watch-unforce').click();
+  await poll(() => y.getByTestId('watch-value').textContent()).toBe('7');
+  await sim.button('pause').click();
+});
+
 test('renaming Point in the tree retypes P; deleting it while used says where first', async () => {
   await page.getByTestId('tab-project').click();
   await page.getByTestId('tree-datatype-Point').getByRole('button', { name: 'Rename Point' }).click();
@@ -106,5 +134,29 @@ test('renaming Point in the tree retypes P; deleting it while used says where fi
   // One undo step brings the old name back everywhere.
   await draw.menu('Edit', 'Undo');
   await poll(async () => (await project()).pous[0]!.variables.map((v) => v.type)).toEqual(['Point']);
+  expect(errors).toEqual([]);
+});
+
+test('an enumeration shows and is written by value name; an array expands into its elements', async () => {
+  const base = newProject('Colors');
+  const main = {
+    ...base.pous[0]!,
+    variables: [variable('C', 'Color', { initial: 'GREEN' }), variable('A', 'ARRAY[1..3] OF INT', { initial: '[1, 2, 3]' })],
+  };
+  await sim.load({ ...base, pous: [main], dataTypes: [{ name: 'Color', def: { kind: 'enum', values: ['RED', 'GREEN', 'BLUE'] } }] });
+  await sim.button('run').click();
+  await sim.waitForMode('Running');
+  await sim.tab('Watch');
+  for (const name of ['C', 'A']) {
+    await page.getByTestId('watch-add-name').fill(name);
+    await page.getByTestId('watch-add').click();
+  }
+  const c = page.getByTestId('watch-row-C');
+  await poll(() => c.getByTestId('watch-value').textContent()).toBe('GREEN');
+  await c.getByTestId('watch-input').selectOption('BLUE');
+  await c.getByTestId('watch-write').click();
+  await poll(() => c.getByTestId('watch-value').textContent()).toBe('BLUE');
+  await page.getByTestId('watch-row-A').getByTestId('watch-expand').click();
+  await poll(() => page.getByTestId('watch-row-A[3]').getByTestId('watch-value').textContent()).toBe('3');
   expect(errors).toEqual([]);
 });

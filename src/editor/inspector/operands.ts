@@ -49,7 +49,9 @@ export function acceptedTypes(role: BindingRole): readonly string[] {
     case 'instance':
       return [role.blockType.toUpperCase()];
     case 'pin':
-      return role.declaredType ? [role.declaredType.toUpperCase()] : pinTypeMembers(role.pinType);
+      // A data type pin takes its type; an alias/enum/subrange pin also its elementary type.
+      if (!role.declaredType) return pinTypeMembers(role.pinType);
+      return [role.declaredType.toUpperCase(), ...(role.pinType === 'ANY' ? [] : pinTypeMembers(role.pinType))];
   }
 }
 
