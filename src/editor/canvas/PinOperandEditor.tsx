@@ -9,6 +9,7 @@ import { selectLibrary, useDocument, useDocumentStore } from '../../store/docume
 import { useUiStore } from '../../store/uiStore';
 import type { EditorContext } from '../commands/editorActions';
 import { tabToField } from '../commands/pinActions';
+import { pinRole } from '../inspector/operands';
 import { VariableInput, type CancelReason, type EndKey } from '../inspector/VariableInput';
 import { pinSlots, withOperand } from './pinOperands';
 import { CELL_H, WIRE_Y } from './geometry';
@@ -38,6 +39,9 @@ export function PinOperandEditor({ box, network, pin, left, width, top, zoom, cl
   const library = useDocument(selectLibrary);
   const slot = pinSlots(network, box, library).find((s) => s.pin === pin);
   if (!slot) return null;
+  // The pin's signature: a user pin declared with a data type keeps its name (Point) for completion.
+  const signature = library.signature(box.blockType);
+  const pinSig = signature && [...signature.inputs, ...signature.outputs].find((p) => p.name === pin);
   const ctx: EditorContext = { doc, ui };
   const stillMine = () => {
     const now = ui.getState().editing;
@@ -70,7 +74,7 @@ export function PinOperandEditor({ box, network, pin, left, width, top, zoom, cl
       <VariableInput
         key={pin}
         value={slot.operand}
-        role={{ kind: 'pin', pinType: slot.type, direction: slot.side }}
+        role={pinSig ? pinRole(pinSig, slot.side, slot.type) : { kind: 'pin', pinType: slot.type, direction: slot.side }}
         autoFocus
         commitOnBlur={false}
         tabMoves

@@ -29,10 +29,13 @@ export type BindingRole =
       readonly declaredType?: string;
     };
 
-/** The role of a block pin's operand, keeping a user pin's declared data type (see declaredPinType). */
-export function pinRole(pin: PinSignature, direction: 'input' | 'output'): BindingRole {
+/**
+ * The role of a block pin's operand, keeping a user pin's declared data type (see declaredPinType);
+ * `pinType`: the pin's type as placed, when the box narrowed it.
+ */
+export function pinRole(pin: PinSignature, direction: 'input' | 'output', pinType: PinType = pin.type): BindingRole {
   const declared = declaredPinType(pin);
-  return { kind: 'pin', pinType: pin.type, direction, ...(declared !== pin.type ? { declaredType: declared } : {}) };
+  return { kind: 'pin', pinType, direction, ...(declared !== pin.type ? { declaredType: declared } : {}) };
 }
 
 /** The elementary types a pin type admits. */
