@@ -258,12 +258,14 @@ function readBatch(
       laid = instantiate(template, nodes, g.nodes);
     } else {
       // Every layout is checked against the file; the first strategy that draws it exactly wins.
+      // `base` is the file's graph as drawn: the nodes, or a copy with implicit ENs left open.
+      let base: readonly GNode[] = nodes;
       let best: { laid: LaidOut; mismatches: Mismatch[]; needCols: number } | undefined;
-      const tryAll = (view: CutView = { nodes, members: g.nodes }) => {
+      const tryAll = (view: CutView = { nodes: base, members: g.nodes }) => {
         for (let s = 0; s < LAYOUT_STRATEGIES; s++) {
           const prepared = prepareLayout(view.nodes, view.members, library, s);
           const tryLaid = prepared.run(Math.max(width, prepared.needCols));
-          const m = verify(nodes, g.nodes, tryLaid, library);
+          const m = verify(base, g.nodes, tryLaid, library);
           if (!best || m.length < best.mismatches.length)
             best = { laid: tryLaid, mismatches: m, needCols: prepared.needCols };
           if (!m.length) return;
@@ -272,15 +274,22 @@ function readBatch(
       tryAll();
       // A block whose EN the file leaves out runs unconditionally (MATIEC, and the engine, run a
       // block with an open EN): drawn with EN wired to the rail where the rail reaches it, open
-      // where it cannot (a function fed by another block's output, FBD style).
+      // where it cannot (a function fed by another block's output, FBD style). The file's nodes
+      // stay as read (a network read again, or of the same shape, starts from them).
       const implicit = best!.mismatches.length ? g.nodes.filter((i) => nodes[i]!.implicitEn) : [];
       if (implicit.length) {
         const before = best!;
-        for (const i of implicit) nodes[i]!.inputs.delete('EN');
+        const open = nodes.slice();
+        for (const i of implicit) {
+          const n = { ...nodes[i]!, inputs: new Map(nodes[i]!.inputs) };
+          n.inputs.delete('EN');
+          open[i] = n;
+        }
+        base = open;
         best = undefined;
         tryAll();
         if (best!.mismatches.length >= before.mismatches.length) {
-          for (const i of implicit) nodes[i]!.inputs.set('EN', [{ kind: 'rail' }]);
+          base = nodes;
           best = before;
         }
       }
@@ -288,10 +297,10 @@ function readBatch(
       if (best!.mismatches.length) {
         const cuts: CutPin[] = [];
         for (let round = 0; round < CUT_ROUNDS && best!.mismatches.length; round++) {
-          addCuts(nodes, g.nodes, best!.mismatches, cuts);
-          tryAll(cutView(nodes, g.nodes, cuts));
+          addCuts(base, g.nodes, best!.mismatches, cuts);
+          tryAll(cutView(base, g.nodes, cuts));
         }
-        if (best!.mismatches.length) tryAll(cutView(nodes, g.nodes, allNodeWires(nodes, g.nodes)));
+        if (best!.mismatches.length) tryAll(cutView(base, g.nodes, allNodeWires(base, g.nodes)));
       }
       ({ laid, mismatches } = best!);
       cols = Math.max(cols, best!.needCols);
