@@ -9,7 +9,7 @@ import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { trace as ladderTrace } from '../engine/ladder';
 import { trace } from './behaviour';
-import { imported, run } from './fixtures';
+import { canonical, fixture, imported, run } from './fixtures';
 import { graphOf } from './ldXml';
 
 const pairs = (project: Project) =>
@@ -102,4 +102,15 @@ describe('connector pairs where the grid cannot route a wire', () => {
     );
     roundTrip(project);
   });
+
+  it.each(['conn-crossing.xml', 'conn-fbd-crossing.xml', 'conn-explicit.xml'])(
+    '%s: the same drawing in every batch size, with or without shared layouts',
+    (name) => {
+      const text = fixture(name);
+      const base = importPlcopen(text);
+      const plain = importPlcopen(text, { batchObjects: 1, shareLayouts: false });
+      if (!base.ok || !plain.ok) throw new Error('import');
+      expect(canonical(plain.project)).toBe(canonical(base.project));
+    },
+  );
 });
