@@ -2,6 +2,7 @@
 // by the layout's network fields.
 import type { NetworkPower, Plc } from '../engine/api';
 import type { CompiledProgram } from '../engine/plc';
+import { shownBody } from '../engine/explain/flatPou';
 import { packNetworks, type PackedPower } from './frames';
 import type { SimLayout } from './protocol';
 
@@ -33,13 +34,8 @@ const EMPTY: readonly NetworkPower[] = [];
 export function recordedBody(program: CompiledProgram, layout: SimLayout, networks: readonly NetworkPower[]): readonly NetworkPower[] {
   const view = layout.view;
   if (!view) return networks;
-  let best: BodyInfo | undefined;
-  for (const b of program.bodies) {
-    const mine = view.instance !== undefined ? same(b.instance, view.instance) : b.kind === 'function' && same(b.pou, view.pou);
-    if (!mine) continue;
-    if (!best || (b.end > b.first && networks[b.first]?.executed)) best = b;
-  }
-  return best ? networks.slice(best.first, best.end) : EMPTY;
+  const body = shownBody(program, view, (n) => networks[n]?.executed === true);
+  return body ? networks.slice(body.first, body.end) : EMPTY;
 }
 
 /** Power of the layout's view in the PLC's last (or current) scan; nothing when the view is not called. */

@@ -70,11 +70,25 @@ export function flatNetwork(
   network: number,
   executed: (network: number) => boolean,
 ): number | undefined {
+  const body = shownBody(program, view, executed);
+  return body && network < body.end - body.first ? body.first + network : undefined;
+}
+
+/**
+ * The body a view shows in a scan: the call of `instance` (an FB instance path or a program
+ * instance), or of function `pou`, that ran — the last of several (calls run in body order) — else
+ * its first call.
+ */
+export function shownBody(
+  program: CompiledProgram,
+  view: { readonly pou: string; readonly instance?: string },
+  executed: (network: number) => boolean,
+): BodyInfo | undefined {
   let best: BodyInfo | undefined;
   for (const b of program.bodies) {
     const mine = view.instance !== undefined ? same(b.instance, view.instance) : b.kind === 'function' && same(b.pou, view.pou);
     if (!mine) continue;
     if (!best || (b.end > b.first && executed(b.first))) best = b;
   }
-  return best && network < best.end - best.first ? best.first + network : undefined;
+  return best;
 }
