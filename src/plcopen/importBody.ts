@@ -71,8 +71,8 @@ function compareItems(a: Item, b: Item): number {
  *
  * Large bodies are read in batches of whole networks (see ldBatches.ts); networks are ordered
  * like Beremiz runs them (executionOrderId first, then top to bottom) once all are laid out.
- * Every network of the POU shares one width, coils on one right rail: networks are laid out at
- * the widest width seen so far, and those laid out before a wider one came are laid out again.
+ * Each network is as wide as its own elements need (at least MIN_COLS), its coils at its own
+ * right rail; the editor draws every network at its own width.
  */
 export function importLdBody(
   body: XmlElement,
@@ -86,32 +86,13 @@ export function importLdBody(
   const plan = planBody(body, tuning.batchObjects);
   const cache = new LayoutCache(tuning.shareLayouts ?? true);
   const items: Item[] = [];
-  let cols = MIN_COLS;
   let seq = 0;
-  const widths: number[] = [];
-  const itemsOf: Item[][] = [];
-  plan.batches.forEach((positions, b) => {
-    const out = readBatch(body.doc, plan, positions, cols, cache, raw, warn, library, isBool);
-    cols = Math.max(cols, out.cols);
-    widths[b] = out.cols;
-    itemsOf[b] = out.items.map((it): Item => ({ ...it, seq: seq++ }));
-    for (const it of itemsOf[b]) items.push(it);
-  });
-  // Batches laid out narrower than a later one: read again (their findings were reported once).
-  plan.batches.forEach((positions, b) => {
-    if (widths[b]! >= cols) return;
-    const again = readBatch(body.doc, plan, positions, cols, cache, raw, () => {}, library, isBool).items;
-    let k = 0;
-    for (const it of itemsOf[b]!) {
-      if (it.kind !== 'network') continue;
-      while (again[k]!.kind !== 'network') k++;
-      const redo = again[k++] as Extract<Item, { kind: 'network' }>;
-      const mine = it as Extract<Item, { kind: 'network' }>;
-      mine.laid = redo.laid;
-      mine.findings = redo.findings;
-    }
-  });
+  for (const positions of plan.batches)
+    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool))
+      items.push({ ...it, seq: seq++ });
   items.sort(compareItems);
+  // A network with nothing but a label or a comment: as narrow as a network gets.
+  const cols = MIN_COLS;
 
   const networks: Network[] = [];
   let pendingLabel: string | undefined;
@@ -185,18 +166,17 @@ export function importLdBody(
   return { networks };
 }
 
-/** Reads, interprets and lays out one batch of whole networks, at least `minCols` wide. */
+/** Reads, interprets and lays out one batch of whole networks, each as wide as it needs. */
 function readBatch(
   doc: XmlDoc,
   plan: BodyPlan,
   positions: readonly number[],
-  minCols: number,
   cache: LayoutCache,
   raw: (el: XmlElement) => string,
   warn: (f: Finding) => void,
   library: BlockLibrary,
   isBool?: (name: string) => boolean,
-): { items: BatchItem[]; cols: number } {
+): BatchItem[] {
   const inBatch = new Set(positions);
   const keepRef = (ref: string) => {
     const p = plan.positionOf(ref);
@@ -245,16 +225,14 @@ function readBatch(
   const groups: Group[] = [];
   for (const list of comps.values()) groups.push({ nodes: list, key: keyOf(list.map((i) => nodes[i]!.obj)) });
 
-  let cols = minCols;
   const laidOut: { group: Group; laid: LaidNetwork; findings: Finding[] }[] = [];
-  const layOut = (g: Group, width: number, findings: Finding[]): LaidNetwork => {
+  const layOut = (g: Group, findings: Finding[]): LaidNetwork => {
     const key = cache.enabled ? shapeKey(nodes, g.nodes) : '';
     const known = cache.needCols(key);
-    const template = known === undefined ? undefined : cache.template(key, Math.max(width, known));
+    const template = known === undefined ? undefined : cache.template(key, Math.max(MIN_COLS, known));
     let laid: LaidOut;
     let mismatches: Mismatch[] = [];
     if (template) {
-      cols = Math.max(cols, known!);
       laid = instantiate(template, nodes, g.nodes);
     } else {
       // Every layout is checked against the file; the first strategy that draws it exactly wins.
@@ -264,7 +242,7 @@ function readBatch(
       const tryAll = (view: CutView = { nodes: base, members: g.nodes }) => {
         for (let s = 0; s < LAYOUT_STRATEGIES; s++) {
           const prepared = prepareLayout(view.nodes, view.members, library, s);
-          const tryLaid = prepared.run(Math.max(width, prepared.needCols));
+          const tryLaid = prepared.run(Math.max(MIN_COLS, prepared.needCols));
           const m = verify(base, g.nodes, tryLaid, library);
           if (!best || m.length < best.mismatches.length)
             best = { laid: tryLaid, mismatches: m, needCols: prepared.needCols };
@@ -303,7 +281,6 @@ function readBatch(
         if (best!.mismatches.length) tryAll(cutView(base, g.nodes, allNodeWires(base, g.nodes)));
       }
       ({ laid, mismatches } = best!);
-      cols = Math.max(cols, best!.needCols);
       cache.remember(key, best!.needCols, g.nodes, laid, mismatches);
     }
     findings.length = 0;
@@ -319,9 +296,8 @@ function readBatch(
   };
   for (const g of groups) {
     const findings: Finding[] = [];
-    laidOut.push({ group: g, laid: layOut(g, cols, findings), findings });
+    laidOut.push({ group: g, laid: layOut(g, findings), findings });
   }
-  for (const l of laidOut) if (l.laid.cols < cols) l.laid = layOut(l.group, cols, l.findings);
 
   const items: BatchItem[] = laidOut.map((l) => ({
     kind: 'network',
@@ -342,7 +318,7 @@ function readBatch(
     items.push({ kind: 'comment', key: keyOfSingle(o), rank: RANK.comment, ...commentOf(o) });
   for (const o of graph.vendor)
     items.push({ kind: 'vendor', key: keyOfSingle(o), rank: RANK.vendor, raw: raw(o.xml) });
-  return { items, cols };
+  return items;
 }
 
 function commentsOf(list: readonly { text: string; title: string }[]): { comment: string; title: string } {
