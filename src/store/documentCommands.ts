@@ -134,13 +134,13 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
         edits.wrapInParallelBranch(n, ids, newElementId, lib()),
       ),
     moveElements: (network, ids, dRow, dCol) =>
-      editNetwork('moveElements', network, (n) => edits.moveElements(n, ids, dRow, dCol, lib())),
+      editNetwork('moveElements', network, (n) => edits.moveElements(n, ids, dRow, dCol, lib(), newElementId)),
     moveElementsToNetwork: (from, ids, to, at) => {
       const project = get().project;
       const src = locate(project, from);
       const dst = locate(project, to);
       if (!src || !dst) return false;
-      const t = transferElements(src.net, dst.net, ids, at, lib());
+      const t = transferElements(src.net, dst.net, ids, at, lib(), newElementId);
       if (!t) return false;
       commit('moveElementsToNetwork', [
         ...diffNetwork(src.pou.id, src.net, t.source),

@@ -11,14 +11,16 @@
 //
 // A box dropped on the first column does not sit on the left rail (that would feed the rail's
 // power into every input): it goes one column right, and a link joins the rail to its power-flow
-// input only (EN, else the first BOOL input). Its other inputs stay open for operands.
+// input only (EN, else the first BOOL input). Its other inputs stay open for operands. Moving or
+// pasting elements so that a box lands on the first column does the same: they all go one column
+// further right, and the rail feeds each such box's power-flow input only.
 import { boxLayout, type BoxLayout, type PlacedPin } from '../model/boxLayout';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../model/library';
 import type { LdElement, VLink } from '../model/elements';
 import { elementCells, elementSize } from '../model/factory';
 import { cellKey, type Cell } from '../model/grid';
 import { renamePastedConnectors, withDefaultName } from './connectors';
-import type { ElementId } from '../model/ids';
+import { newId, type ElementId } from '../model/ids';
 import type { Network } from '../model/project';
 
 type DistributiveOmit<T, K extends PropertyKey> = T extends unknown ? Omit<T, K> : never;
@@ -134,16 +136,43 @@ export function placeBoxOffRail(
   const out = placeElement(room, at, t, id, lib) ?? insertInSeries(room, at, t, id, lib);
   const box = out?.elements.find((e) => e.id === id);
   if (!out || !box || box.col !== 1) return undefined;
-  const power = powerFlowInput(layout);
-  const powerRow = power ? box.row + power.rowOffset : -1;
-  const inputRows = new Set(layout.inputs.map((p) => box.row + p.rowOffset));
-  const elements = out.elements.filter(
-    (e) => !(e.kind === 'link' && e.col === 0 && inputRows.has(e.row) && e.row !== powerRow),
-  );
-  if (power && !elements.some((e) => e.col === 0 && e.row === powerRow))
-    elements.push({ kind: 'link', id: newId(), row: powerRow, col: 0 });
-  return grow(out, elements, out.vlinks, lib);
+  return feedFromRail(out, [id], newId, lib);
 }
+
+/** Columns that moved or pasted elements go further right: 1 when one of them is a box on the first column. */
+export const offRailShift = (els: readonly Pick<LdElement, 'kind' | 'col'>[]): number =>
+  els.some((e) => e.kind === 'box' && e.col === 0) ? 1 : 0;
+
+/**
+ * The rail feeds only the power-flow input of each of these boxes at column 1: a link joins the
+ * rail to that input where its cell in column 0 is free, links from the rail to its other inputs go.
+ */
+export function feedFromRail(
+  n: Network,
+  boxIds: readonly ElementId[],
+  newId: () => ElementId,
+  lib: BlockLibrary = STANDARD_LIBRARY,
+): Network {
+  let elements = [...n.elements];
+  for (const id of boxIds) {
+    const box = elements.find((e) => e.id === id);
+    const layout = box?.kind === 'box' && box.col === 1 ? boxLayout(box, lib) : undefined;
+    if (!box || !layout) continue;
+    const power = powerFlowInput(layout);
+    const powerRow = power ? box.row + power.rowOffset : -1;
+    const inputRows = new Set(layout.inputs.map((p) => box.row + p.rowOffset));
+    elements = elements.filter(
+      (e) => !(e.kind === 'link' && e.col === 0 && inputRows.has(e.row) && e.row !== powerRow),
+    );
+    const occ = occupancy({ ...n, elements }, undefined, lib);
+    if (power && !occ.has(cellKey(powerRow, 0))) elements.push({ kind: 'link', id: newId(), row: powerRow, col: 0 });
+  }
+  return grow(n, elements, n.vlinks, lib);
+}
+
+/** Boxes among `els` (moved or pasted `shift` columns further right) that went off the rail to column 1. */
+export const shiftedBoxes = (els: readonly LdElement[], shift: number): ElementId[] =>
+  shift ? els.filter((e) => e.kind === 'box' && e.col === 1).map((e) => e.id) : [];
 
 /** Does element `el` connect to the point on row `row` at its left (side 'in') or right ('out') edge? */
 function pinOnRow(el: LdElement, row: number, side: 'in' | 'out', lib: BlockLibrary): boolean {
@@ -276,8 +305,22 @@ export function moveElements(
   dRow: number,
   dCol: number,
   lib: BlockLibrary = STANDARD_LIBRARY,
+  makeId: () => ElementId = () => newId<'ElementId'>('e'),
 ): Network | undefined {
   const set = new Set(ids);
+  const shift = offRailShift(n.elements.filter((e) => set.has(e.id)).map((e) => ({ ...e, col: e.col + dCol })));
+  const out = moveBy(n, set, dRow, dCol + shift, lib);
+  if (!out || out === n || !shift) return out;
+  return feedFromRail(out, shiftedBoxes(out.elements.filter((e) => set.has(e.id)), shift), makeId, lib);
+}
+
+function moveBy(
+  n: Network,
+  set: ReadonlySet<ElementId>,
+  dRow: number,
+  dCol: number,
+  lib: BlockLibrary,
+): Network | undefined {
   if (dRow === 0 && dCol === 0) return n;
   const moved = n.elements
     .filter((e) => set.has(e.id))
@@ -349,10 +392,12 @@ export function pasteElements(
   newId: () => ElementId,
   lib: BlockLibrary = STANDARD_LIBRARY,
 ): { network: Network; ids: ElementId[] } {
+  const shift = offRailShift(clip.elements.map((e) => ({ ...e, col: e.col + at.col })));
+  const col = at.col + shift;
   const fits = (row: number) => {
     const occ = occupancy(n, undefined, lib);
     return clip.elements.every((e) =>
-      elementCells({ ...e, row: e.row + row, col: e.col + at.col }, lib).every((c) => {
+      elementCells({ ...e, row: e.row + row, col: e.col + col }, lib).every((c) => {
         const o = occ.get(cellKey(c.row, c.col));
         return !o || o.kind === 'link';
       }),
@@ -366,7 +411,7 @@ export function pasteElements(
   const row = fits(at.row) ? at.row : below;
   const pasted = renamePastedConnectors(
     n,
-    clip.elements.map((e) => ({ ...e, id: newId(), row: e.row + row, col: e.col + at.col })),
+    clip.elements.map((e) => ({ ...e, id: newId(), row: e.row + row, col: e.col + col })),
   );
   const occ = occupancy(n, undefined, lib);
   const replaced = new Set<ElementId>();
@@ -377,11 +422,11 @@ export function pasteElements(
     }
   const vlinks = [...n.vlinks];
   for (const v of clip.vlinks) {
-    const moved = { row: v.row + row, boundary: v.boundary + at.col };
+    const moved = { row: v.row + row, boundary: v.boundary + col };
     if (!vlinks.some((w) => w.row === moved.row && w.boundary === moved.boundary)) vlinks.push(moved);
   }
   const network = grow(n, [...n.elements.filter((e) => !replaced.has(e.id)), ...pasted], vlinks, lib);
-  return { network, ids: pasted.map((e) => e.id) };
+  return { network: feedFromRail(network, shiftedBoxes(pasted, shift), newId, lib), ids: pasted.map((e) => e.id) };
 }
 
 /**

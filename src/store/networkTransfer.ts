@@ -3,14 +3,15 @@
 // `at` in the target. Horizontal links in the way in the target go (like a move within a network);
 // any other element in the way refuses the move. Vertical links inside the moved area (strictly
 // between its left and right edges) move along; links on its edges stay in the source, where
-// other paths may still use them. The target grows to fit.
+// other paths may still use them. The target grows to fit. A box that would land on the first
+// column goes one column right with the rest, its power-flow input fed from the rail (networkEdits.ts).
 import type { LdElement, VLink } from '../model/elements';
 import { elementCells } from '../model/factory';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../model/library';
 import { cellKey, type Cell } from '../model/grid';
-import type { ElementId } from '../model/ids';
+import { newId, type ElementId } from '../model/ids';
 import type { Network } from '../model/project';
-import { boundsOf, grow, occupancy } from './networkEdits';
+import { boundsOf, feedFromRail, grow, occupancy, offRailShift, shiftedBoxes } from './networkEdits';
 
 export interface Transfer {
   readonly source: Network;
@@ -24,6 +25,7 @@ export function transferElements(
   ids: readonly ElementId[],
   at: Cell,
   lib: BlockLibrary = STANDARD_LIBRARY,
+  makeId: () => ElementId = () => newId<'ElementId'>('e'),
 ): Transfer | undefined {
   if (source.id === target.id || at.row < 0 || at.col < 0) return undefined;
   const set = new Set(ids);
@@ -31,7 +33,8 @@ export function transferElements(
   const b = boundsOf(moving, lib);
   if (!b) return undefined;
   const dRow = at.row - b.top;
-  const dCol = at.col - b.left;
+  const shift = offRailShift(moving.map((e) => ({ ...e, col: e.col - b.left + at.col })));
+  const dCol = at.col + shift - b.left;
   const moved: LdElement[] = moving.map((e) => ({ ...e, row: e.row + dRow, col: e.col + dCol }));
   const occ = occupancy(target, undefined, lib);
   const replaced = new Set<ElementId>();
@@ -57,6 +60,6 @@ export function transferElements(
       elements: source.elements.filter((e) => !set.has(e.id)),
       vlinks: source.vlinks.filter((v) => !inside(v)),
     },
-    target: grow(target, elements, vlinks, lib),
+    target: feedFromRail(grow(target, elements, vlinks, lib), shiftedBoxes(moved, shift), makeId, lib),
   };
 }

@@ -1,12 +1,11 @@
 // Where a drag of selected elements would put them: within their own network (an offset in whole
 // cells) or into another network's grid (the grabbed cell follows the pointer's cell there).
 import type { LdElement } from '../../model/elements';
-import { elementSize } from '../../model/factory';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { Cell } from '../../model/grid';
 import type { ElementId, NetworkId } from '../../model/ids';
 import type { Network } from '../../model/project';
-import { boundsOf } from '../../store/networkEdits';
+import { boundsOf, moveElements, offRailShift } from '../../store/networkEdits';
 import { transferElements } from '../../store/networkTransfer';
 
 export interface DragState {
@@ -15,6 +14,8 @@ export interface DragState {
   readonly dRow: number;
   readonly dCol: number;
   readonly blocked: boolean;
+  /** Where the elements land when that is not the offset (a box kept off the left rail). */
+  readonly ghost?: readonly LdElement[];
   /** Over another network: the elements as they would land there (its cells). */
   readonly into?: {
     readonly network: NetworkId;
@@ -24,31 +25,25 @@ export interface DragState {
   };
 }
 
-/** Can `ids` move by (dRow, dCol) inside `n`? Horizontal links in the way are replaced. */
-export function canMove(
+/**
+ * Moving `ids` by (dRow, dCol) inside `n`: blocked (another element in the way; horizontal links
+ * are replaced) and, when a box would land on the first column and the move puts it one column
+ * further right (networkEdits.ts), the ghost where they land.
+ */
+export function moveWithin(
   n: Network,
   ids: readonly ElementId[],
   dRow: number,
   dCol: number,
   lib: BlockLibrary = STANDARD_LIBRARY,
-): boolean {
+): { blocked: boolean; ghost?: LdElement[] } {
   const set = new Set(ids);
-  const taken = new Map<string, boolean>();
-  for (const e of n.elements) {
-    if (set.has(e.id)) continue;
-    const s = elementSize(e, lib);
-    for (let r = 0; r < s.rows; r++)
-      for (let c = 0; c < s.cols; c++) taken.set(`${e.row + r}:${e.col + c}`, e.kind === 'link');
-  }
-  for (const e of n.elements) {
-    if (!set.has(e.id)) continue;
-    if (e.row + dRow < 0 || e.col + dCol < 0) return false;
-    const s = elementSize(e, lib);
-    for (let r = 0; r < s.rows; r++)
-      for (let c = 0; c < s.cols; c++)
-        if (taken.get(`${e.row + dRow + r}:${e.col + dCol + c}`) === false) return false;
-  }
-  return true;
+  const moved = n.elements.filter((e) => set.has(e.id)).map((e) => ({ ...e, row: e.row + dRow, col: e.col + dCol }));
+  const shift = offRailShift(moved);
+  return {
+    blocked: !moveElements(n, ids, dRow, dCol, lib),
+    ...(shift ? { ghost: moved.map((e) => ({ ...e, col: e.col + shift })) } : {}),
+  };
 }
 
 /**
@@ -71,6 +66,8 @@ export function dropInto(
     row: Math.max(0, cell.row - (grabbed.row - b.top)),
     col: Math.max(0, cell.col - (grabbed.col - b.left)),
   };
-  const ghost = moving.map((e) => ({ ...e, row: e.row - b.top + at.row, col: e.col - b.left + at.col }));
+  const placed = moving.map((e) => ({ ...e, row: e.row - b.top + at.row, col: e.col - b.left + at.col }));
+  const shift = offRailShift(placed);
+  const ghost = placed.map((e) => ({ ...e, col: e.col + shift }));
   return { at, ghost, blocked: !transferElements(source, target, ids, at, lib) };
 }

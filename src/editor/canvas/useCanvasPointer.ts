@@ -20,7 +20,7 @@ import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
 import { elementAt } from '../../store/networkEdits';
 import { needsName, placeAt, type EditorContext } from '../commands/editorActions';
-import { canMove, dropInto, type DragState } from './dragTargets';
+import { dropInto, moveWithin, type DragState } from './dragTargets';
 import { useEdgeScroll } from './useEdgeScroll';
 import { colAtX, modelCol } from './columns';
 import { CELL_H, cellRect, columnsOf, gridOrigin, hitTest, type CanvasLayout, type PixelPoint } from './geometry';
@@ -129,7 +129,7 @@ export function useCanvasPointer(
       return { ...base, blocked: d.blocked, into: { network: target.id, ...d } };
     }
     const { dRow, dCol } = cellDelta(layout, n, startCell, start, p);
-    return { ...base, dRow, dCol, blocked: !canMove(n, ids, dRow, dCol, view.current.library) };
+    return { ...base, dRow, dCol, ...moveWithin(n, ids, dRow, dCol, view.current.library) };
   };
 
   /** Stops a press, drag or rubber band without applying it (a second finger started a pinch). */
