@@ -27,8 +27,9 @@ export interface CompileOptions {
   /** POU to compile as the program to run; default: the first PROGRAM. */
   readonly pou?: string;
   /**
-   * Compile the whole configuration instead: every program instance of the project's tasks, run in
-   * task order each scan; a program's variables are `Instance.Var`, globals keep their names.
+   * Compile the whole configuration instead: every program instance of the project's tasks, each
+   * task at its own interval (TaskSchedule); a program's variables are `Instance.Var`, globals keep
+   * their names.
    */
   readonly configuration?: boolean;
   /** Default: the project's profile. */
@@ -125,8 +126,36 @@ export interface Clock {
   now(): number;
 }
 
+/**
+ * How a configuration's tasks share the scans, as MATIEC's resource runs them: one scan is one tick
+ * of the common tick (the greatest common divisor of every task's interval); a task runs in the
+ * scans whose tick number (0 for the first scan after a cold restart) is a multiple of `every`, its
+ * program instances in declaration order (task order, then the order within the task).
+ */
+export interface TaskSchedule {
+  /** The common tick, ms: the virtual clock advances by it per scan. */
+  readonly tickMs: number;
+  /** Every task of the project, in its order. */
+  readonly tasks: readonly TaskRate[];
+  /** True when some task runs less often than every scan (a scan then runs only the tasks due). */
+  readonly multiRate: boolean;
+}
+
+export interface TaskRate {
+  readonly name: string;
+  readonly intervalMs: number;
+  /** Ticks from one run to the next: intervalMs / tickMs. */
+  readonly every: number;
+  /** Its program instances, in declaration order. */
+  readonly instances: readonly string[];
+}
+
 export interface PlcOptions {
-  /** Virtual clock: time advances by cycleMs per scan, scan k starts at (k-1) x cycleMs. */
+  /**
+   * Virtual clock: time advances by cycleMs per scan, scan k starts at (k-1) x cycleMs. A
+   * configuration whose tasks run at different intervals takes its common tick
+   * (TaskSchedule.tickMs) and nothing else.
+   */
   readonly cycleMs: number;
   /** Real-time clock instead of the virtual one (live run). */
   readonly clock?: Clock;
@@ -226,6 +255,8 @@ export interface PlcImage {
 export interface Plc {
   readonly pou: string;
   readonly profile: Profile;
+  /** What runs in which scan, when the PLC runs a configuration (several program instances). */
+  readonly schedule?: TaskSchedule;
   readonly scanCount: number;
   readonly timeMs: number;
   readonly fault: Fault | undefined;

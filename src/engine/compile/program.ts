@@ -1,9 +1,10 @@
 // compileProgram: the checked, lowered form of one PROGRAM POU (or of a task configuration: every
-// program instance of the project's tasks, in task order), with every call of a user FB or
-// function flattened into body networks (flatten.ts), ready for createPlc.
+// program instance of the project's tasks, in declaration order, each run by its task at the task's
+// interval: taskSchedule.ts), with every call of a user FB or function flattened into body networks
+// (flatten.ts), ready for createPlc.
 import type { Pou, Project } from '../../model/project';
 import { blockLibrary } from '../../model/library';
-import type { CompileOptions, Diagnostic } from '../api';
+import type { CompileOptions, Diagnostic, TaskSchedule } from '../api';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { ElementaryType } from '../../model/iecTypes';
 import { checkRecursion, reachablePous } from './callGraph';
@@ -14,6 +15,7 @@ import type { NetworkIR } from './ir';
 import { lowerPou } from './pou';
 import { Reporter } from './report';
 import { buildSymbols, declareGlobals, Storage, SymbolTable, type Store, type VarSymbol } from './symbols';
+import { taskSchedule } from './taskSchedule';
 
 export type { EdgeOwner } from './context';
 export type { BodyInfo } from './flatten';
@@ -38,8 +40,14 @@ export interface CompiledProgram {
   }[];
   /** Variables kept over a warm restart: RETAIN ones and those written by M/SM/RM coils. */
   readonly retentive: ReadonlySet<VarSymbol>;
-  /** The programs run each scan, in order: bodies 0..programs-1. */
+  /** The programs, in declaration order: bodies 0..programs-1. */
   readonly programs: number;
+  /**
+   * A configuration: its tasks' rates, and the task of each program (indexed like bodies
+   * 0..programs-1). A scan runs the programs whose task is due at that tick.
+   */
+  readonly schedule?: TaskSchedule;
+  readonly programTask?: Int32Array;
   /** Network ranges: programs, then one per call of a user FB or function. */
   readonly bodies: readonly BodyInfo[];
   /** Body of each network. */
@@ -66,9 +74,10 @@ export function assembleProgram(
   const flat = new Flattener(project, profile);
   let root: SymbolTable;
   let roots: Pou[];
+  let schedule: { rates: TaskSchedule; programTask: Int32Array } | undefined;
   if (opts.configuration) {
     const r = new Reporter(diagnostics, project.name, -1);
-    const instances = project.tasks.flatMap((t) => t.programs);
+    const instances = project.tasks.flatMap((t, task) => t.programs.map((p) => ({ ...p, task })));
     if (instances.length === 0) {
       r.error('LD-E20', 'no task runs a program; add a program instance to a task');
       return { diagnostics };
@@ -77,7 +86,7 @@ export function assembleProgram(
     declareGlobals(root, project, new Reporter(globals, 'globals', -1));
     roots = [];
     const seen = new Set<string>();
-    const bound: { name: string; pou: Pou }[] = [];
+    const bound: { name: string; pou: Pou; task: number }[] = [];
     for (const inst of instances) {
       const pou = findPou(project, inst.pou);
       if (!pou || pou.kind !== 'PROGRAM') {
@@ -95,19 +104,20 @@ export function assembleProgram(
       }
       seen.add(inst.instance.toUpperCase());
       if (!roots.includes(pou)) roots.push(pou);
-      bound.push({ name: inst.instance, pou });
+      bound.push({ name: inst.instance, pou, task: inst.task });
     }
     if (diagnostics.some((d) => d.severity === 'error')) return { diagnostics };
     for (const pou of roots) lowerPou(project, pou, profile, diagnostics, []);
     if (!checkCallees(project, roots, profile, diagnostics)) return { diagnostics: [...globals, ...diagnostics] };
     flat.setRoot(root);
-    // Every program's range first (contiguous, in task order), then their bodies and callees.
+    // Every program's range first (contiguous, in declaration order), then their bodies and callees.
     const reserved = bound.map((b) => flat.reserve(b.pou, { kind: 'program', instance: b.name }));
     bound.forEach((b, i) => {
       const u = root.instantiate(b.pou, b.name, false);
       root.bind(b.name, u);
       if (reserved[i]) flat.lower(reserved[i], u.scope);
     });
+    schedule = { rates: taskSchedule(project.tasks), programTask: Int32Array.from(bound, (b) => b.task) };
   } else {
     const pou = opts.pou ? findPou(project, opts.pou) : project.pous.find((p) => p.kind === 'PROGRAM');
     const r = new Reporter(diagnostics, opts.pou ?? project.name, -1);
@@ -161,6 +171,7 @@ export function assembleProgram(
       dataSlots: flat.shared.dataSlots,
       retentive,
       programs,
+      ...(schedule ? { schedule: schedule.rates, programTask: schedule.programTask } : {}),
       bodies: flat.bodies,
       bodyOf: Int32Array.from(flat.bodyOf),
       mainEnd,

@@ -1,6 +1,8 @@
 // The scan cycle (LD-SEMANTICS.md section 7): input image -> networks (jumps, returns) -> output
 // image, on a virtual clock (scan k starts at (k-1) x cycleMs) or an injected real clock, with a
-// watchdog, forcing, cold/warm restart, stepping one network at a time and power snapshots.
+// watchdog, forcing, cold/warm restart, stepping one network at a time and power snapshots. A
+// configuration whose tasks run at different intervals runs, each scan (one common tick), only the
+// programs whose task is due (TaskSchedule).
 import type { Value } from '../../model/iecTypes';
 import type {
   Fault,
@@ -12,6 +14,7 @@ import type {
   PlcState,
   PowerSnapshot,
   ScanReport,
+  TaskSchedule,
   SnapshotOptions,
   StateItem,
   StateTransfer,
@@ -83,6 +86,14 @@ export class ScanPlc implements Plc {
   /** Where the programs' networks end, and the end of the program holding each of them. */
   private readonly mainEnd: number;
   private readonly programEnd: Int32Array;
+  readonly schedule: TaskSchedule | undefined;
+  /**
+   * Several rates: the ticks from one run of each program to the next, the program starting at
+   * each network (-1: none), and whether each program's task is due in this scan.
+   */
+  private readonly rates: { every: Int32Array; startOf: Int32Array; due: Uint8Array } | undefined;
+  /** Virtual clock step, ms. */
+  private readonly cycleMs: number;
   /** What the generated code calls to run a body of networks (`X.call(first, end, now, scan)`). */
   private readonly exec = {
     call: (first: number, end: number, t: number, scan: number): void => this.callBody(first, end, t, scan),
@@ -154,6 +165,9 @@ export class ScanPlc implements Plc {
       this.programEnd.fill(body.end, body.first, body.end);
     }
     this.maxScanMs = opts.maxScanMs ?? 1000;
+    this.schedule = program.schedule;
+    this.rates = programRates(program);
+    this.cycleMs = program.schedule?.multiRate ? program.schedule.tickMs : opts.cycleMs;
     const m = this.mem;
     const link = (body: string, constants: unknown, shape: Int32Array) =>
       (new Function(...DISPATCH_PARAMS, body) as (...args: unknown[]) => unknown)(
@@ -215,14 +229,17 @@ export class ScanPlc implements Plc {
       ? this.replayAt
       : this.opts.clock
       ? this.opts.clock.now() - this.clockOrigin
-      : (this.count - 1) * this.opts.cycleMs;
+      : (this.count - 1) * this.cycleMs;
     this.scanStart = now();
+    // The tasks due at this tick (the first scan is tick 0: every task runs).
+    const rates = this.rates;
+    if (rates) for (let p = 0; p < rates.every.length; p++) rates.due[p] = (this.count - 1) % rates.every[p]! === 0 ? 1 : 0;
     // 1. Input image: inputs do not change during the scan; forced inputs keep their forced value.
     for (let i = 0; i < this.inputs.length; i++) {
       const v = this.inputs[i]!;
       if (!this.forces.has(v)) this.mem.store(v, this.inputImage[i]!);
     }
-    this.cursor = this.mainEnd > 0 ? 0 : -2;
+    this.cursor = this.dueFrom(0);
     this.evals = 0;
     this.backJump = -1;
   }
@@ -250,8 +267,14 @@ export class ScanPlc implements Plc {
     let checked = this.evals;
     let i = this.cursor;
     let last = -1;
+    const rates = this.rates;
     try {
       while (i >= 0 && i < count) {
+        // A program whose task is not due at this tick: on to the next program.
+        if (rates && rates.startOf[i]! >= 0 && rates.due[rates.startOf[i]!] === 0) {
+          i = programEnd[i]!;
+          continue;
+        }
         const end = programEnd[i]!;
         const segment = single ? undefined : fast[i];
         const next = segment
@@ -275,8 +298,15 @@ export class ScanPlc implements Plc {
       this.trip(e.network);
       return e.network;
     }
-    this.cursor = i >= 0 && i < count ? i : -2;
+    this.cursor = i >= 0 && i < count ? this.dueFrom(i) : -2;
     return last;
+  }
+
+  /** The first network from `i` on that runs in this scan (skipping programs not due), -2 for none. */
+  private dueFrom(i: number): number {
+    const rates = this.rates;
+    if (rates) while (i < this.mainEnd && rates.startOf[i]! >= 0 && rates.due[rates.startOf[i]!] === 0) i = this.programEnd[i]!;
+    return i < this.mainEnd ? i : -2;
   }
 
   /** Runs the body [first, end) of a call, from the generated code; RETURN (-1) ends it. */
@@ -453,10 +483,10 @@ export class ScanPlc implements Plc {
   }
 
   private *stepScan(from: number, t: number, scan: number): Generator<void, void> {
-    for (let i = from; i >= 0 && i < this.mainEnd; ) {
+    for (let i = this.dueFrom(from); i >= 0; ) {
       const end = this.programEnd[i]!;
       yield* this.stepRange(i, end, t, scan);
-      i = end;
+      i = end < this.mainEnd ? this.dueFrom(end) : -2;
     }
   }
 
@@ -650,7 +680,7 @@ export class ScanPlc implements Plc {
 
   /** The time the next scan would start at, on this PLC's clock. */
   private nextScanTime(): number {
-    return this.opts.clock ? this.opts.clock.now() - this.clockOrigin : this.count * this.opts.cycleMs;
+    return this.opts.clock ? this.opts.clock.now() - this.clockOrigin : this.count * this.cycleMs;
   }
 
   stateItems(): readonly StateItem[] {
@@ -749,14 +779,14 @@ export class ScanPlc implements Plc {
   }
 
   snapshot(opts: SnapshotOptions = {}): PowerSnapshot {
+    const body = opts.instance === undefined ? this.program.bodies[0] : this.bodyOfInstance(opts.instance);
+    if (!body) throw new Error(`${opts.instance}: no FB or program instance of this name is called`);
     const trace: PowerTrace = {
-      scan: this.count,
+      scan: this.shownScan(body),
       power: this.power,
       words: this.words,
       ranIn: this.ranIn,
     };
-    const body = opts.instance === undefined ? this.program.bodies[0] : this.bodyOfInstance(opts.instance);
-    if (!body) throw new Error(`${opts.instance}: no FB or program instance of this name is called`);
     return {
       scan: this.count,
       timeMs: this.time,
@@ -764,6 +794,21 @@ export class ScanPlc implements Plc {
       ...(opts.instance !== undefined && body.instance ? { instance: body.instance } : {}),
       networks: networkPower(this.program, trace, body?.first ?? 0, body?.end ?? 0),
     };
+  }
+
+  /**
+   * The scan whose power flow a body shows: this one, or, when its program's task was not due at
+   * this tick, the program's last run (its power is unchanged since: the view does not blink).
+   */
+  private shownScan(body: BodyInfo): number {
+    const rates = this.rates;
+    if (!rates) return this.count;
+    const bodies = this.program.bodies;
+    let root = body;
+    while (root.parent >= 0) root = bodies[root.parent]!;
+    const p = bodies.indexOf(root);
+    if (p < 0 || p >= rates.due.length || rates.due[p] === 1 || root.end <= root.first) return this.count;
+    return this.ranIn[root.first]!;
   }
 
   /** The body of an instance's call that ran last in the scan (the first call if none ran). */
@@ -776,4 +821,17 @@ export class ScanPlc implements Plc {
     }
     return best;
   }
+}
+
+/** Several rates: each program's ticks between runs and the program starting at each network; else undefined. */
+function programRates(program: CompiledProgram): { every: Int32Array; startOf: Int32Array; due: Uint8Array } | undefined {
+  const { schedule, programTask } = program;
+  if (!schedule?.multiRate || !programTask) return undefined;
+  const every = Int32Array.from(programTask, (task) => schedule.tasks[task]!.every);
+  const startOf = new Int32Array(program.mainEnd).fill(-1);
+  for (let p = 0; p < program.programs; p++) {
+    const body = program.bodies[p]!;
+    if (body.end > body.first) startOf[body.first] = p;
+  }
+  return { every, startOf, due: new Uint8Array(program.programs).fill(1) };
 }

@@ -1,0 +1,52 @@
+// The tasks of a configuration as MATIEC compiles a resource (stage4/generate_c/generate_c.cc):
+// the common tick is the greatest common divisor of the task intervals (`common_ticktime__`); each
+// tick, a task's flag is `!(tick % (interval / common_ticktime))`, and the program instances run in
+// their declaration order when their task's flag is set. Priorities order nothing: the runtime runs
+// the whole resource in one thread.
+import type { Task } from '../../model/project';
+import type { TaskRate, TaskSchedule } from '../api';
+
+/** Intervals are compared in whole microseconds (a file may give T#500us). */
+const US = 1000;
+
+function gcd(a: number, b: number): number {
+  while (b !== 0) [a, b] = [b, a % b];
+  return a;
+}
+
+/** The common tick, ms, of cyclic intervals given in ms (0 when there is none). */
+export function commonTickMs(intervalsMs: readonly number[]): number {
+  let g = 0;
+  for (const ms of intervalsMs) {
+    const us = Math.round(ms * US);
+    if (us > 0) g = g === 0 ? us : gcd(us, g);
+  }
+  return g / US;
+}
+
+/** The schedule of every task of the project (tasks without programs count in the tick, as in MATIEC). */
+export function taskSchedule(tasks: readonly Task[]): TaskSchedule {
+  const tickMs = commonTickMs(tasks.map((t) => t.cycleMs));
+  const rates: TaskRate[] = tasks.map((t) => ({
+    name: t.name,
+    intervalMs: t.cycleMs,
+    every: tickMs > 0 ? Math.max(1, Math.round((t.cycleMs * US) / (tickMs * US))) : 1,
+    instances: t.programs.map((p) => p.instance),
+  }));
+  return { tickMs, tasks: rates, multiRate: rates.some((r) => r.every > 1) };
+}
+
+/** In words, for the Tasks dialog, the README's example and the CLI: "Fast runs every tick (10 ms); Slow every 3rd tick (30 ms)". */
+export function describeSchedule(s: TaskSchedule): string {
+  const parts = s.tasks.map((t, i) => {
+    const when = t.every === 1 ? 'every tick' : `every ${ordinal(t.every)} tick`;
+    return `${t.name}${i === 0 ? ' runs' : ''} ${when} (${t.intervalMs} ms)`;
+  });
+  return `${parts.join('; ')}`;
+}
+
+function ordinal(n: number): string {
+  const tens = n % 100;
+  const suffix = tens >= 11 && tens <= 13 ? 'th' : n % 10 === 1 ? 'st' : n % 10 === 2 ? 'nd' : n % 10 === 3 ? 'rd' : 'th';
+  return `${n}${suffix}`;
+}
