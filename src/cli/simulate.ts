@@ -1,5 +1,6 @@
 // `rungsmith simulate`: N scans on the virtual clock, a CSV trace of the watched values on stdout.
 import { formatDiagnostic } from '../engine/compile/report';
+import { describeSchedule } from '../engine/compile/taskSchedule';
 import { compileProgram, createPlc, type CompiledProgram } from '../engine/plc';
 import { csvValue, parseValueText } from '../engine/values/literals';
 import type { ElementaryType } from '../model/iecTypes';
@@ -26,6 +27,20 @@ export function parseCycle(text: string): number {
   if (ms === undefined || !(ms > 0))
     throw new UsageError(`--cycle "${text}" is not a cycle time; write it like 10ms, 0.5s or T#100ms`);
   return ms;
+}
+
+/**
+ * The time of one scan: --cycle, else the task's interval; tasks at different intervals run on their
+ * common tick (a scan is one tick), which --cycle cannot change.
+ */
+function scanCycle(program: CompiledProgram, cycle: string | undefined, taskMs: number): number {
+  const s = program.schedule;
+  if (!s?.multiRate) return cycle !== undefined ? parseCycle(cycle) : taskMs;
+  if (cycle !== undefined && parseCycle(cycle) !== s.tickMs)
+    throw new UsageError(
+      `--cycle ${cycle}: the tasks run at different intervals (${describeSchedule(s)}), so a scan is their common tick of ${s.tickMs} ms; leave --cycle out or give ${s.tickMs}ms`,
+    );
+  return s.tickMs;
 }
 
 function programName(project: Project, wanted: string | undefined): string {
@@ -98,7 +113,8 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
   const task = configuration
     ? project.tasks.find((t) => t.programs.length > 0)
     : project.tasks.find((t) => t.programs.some((p) => p.pou.toUpperCase() === pou.toUpperCase()));
-  const cycleMs = opts.cycle !== undefined ? parseCycle(opts.cycle) : (task?.cycleMs ?? 10);
+  const cycleMs = scanCycle(program, opts.cycle, task?.cycleMs ?? 10);
+  if (program.schedule?.multiRate) io.err(`one scan = one tick of ${cycleMs} ms: ${describeSchedule(program.schedule)}\n`);
   const plc = createPlc(program, { cycleMs });
   const names = plc.variableNames();
   const watch =
