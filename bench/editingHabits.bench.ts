@@ -2,7 +2,7 @@
 // lanes and lane data for a full window, and the `???` pin check of a network of boxes.
 // Run: `npx tsx bench/editingHabits.bench.ts`.
 import { trendData, trendLayout } from '../src/editor/sim/trendChart';
-import { openInputs } from '../src/editor/canvas/pinOperands';
+import { openPins } from '../src/editor/canvas/pinOperands';
 import type { BoxElement, LdElement } from '../src/model/elements';
 import { newNetwork } from '../src/model/factory';
 import type { ElementId } from '../src/model/ids';
@@ -35,6 +35,6 @@ for (let k = 0; k < 40; k++) {
 const net = newNetwork({ rows: 80, cols: 4, elements });
 const boxes = elements.filter((e): e is BoxElement => e.kind === 'box');
 const pins = median(21, () => {
-  for (const b of boxes) openInputs(net, b);
+  for (const b of boxes) openPins(net, b);
 });
 console.log(`??? pin check, 40 boxes / 120 elements in one network: ${pins.toFixed(2)} ms per draw (median of 21)`);

@@ -109,6 +109,10 @@ export function placeElement(
 export const powerFlowInput = (layout: BoxLayout): PlacedPin | undefined =>
   layout.inputs.find((p) => p.name === 'EN') ?? layout.inputs.find((p) => p.type === 'BOOL');
 
+/** The output that carries the power flow on: ENO (functions, FBs with EN/ENO), else the first BOOL output. */
+export const powerFlowOutput = (layout: BoxLayout): PlacedPin | undefined =>
+  layout.outputs.find((p) => p.name === 'ENO') ?? layout.outputs.find((p) => p.type === 'BOOL');
+
 /**
  * A box put on the first column (see the file comment): placed (or inserted in series) at column
  * 1 with one link from the rail to its power-flow input; links from the rail to its other inputs

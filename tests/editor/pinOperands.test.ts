@@ -7,7 +7,7 @@ import {
   firstField,
   INSTANCE_FIELD,
   nextField,
-  openInputs,
+  openPins,
   pinSlots,
   tabStops,
 } from '../../src/editor/canvas/pinOperands';
@@ -41,12 +41,12 @@ describe('pin operand fields', () => {
       'output Q',
       'output ET',
     ]);
-    expect([...openInputs(n, box)]).toEqual(['PT']);
+    expect([...openPins(n, box).inputs]).toEqual(['PT']);
   });
 
   test('an input with an operand is no longer drawn as ???', () => {
     const { n, box } = draw([0, 0, TON('T1', { PT: 'T#2s' })]);
-    expect([...openInputs(n, box)]).toEqual([]);
+    expect([...openPins(n, box).inputs]).toEqual([]);
   });
 
   test('an output joined to a coil is wired: Tab skips it', () => {
@@ -80,7 +80,7 @@ describe('pin operand fields', () => {
     const { n, box } = draw([0, 0, { kind: 'box', blockType: 'ADD', inputs: {}, outputs: {} }]);
     expect(tabStops(n, box)).toEqual(['IN1', 'IN2', 'OUT']);
     expect(firstField(n, box)).toBe('IN1');
-    expect([...openInputs(n, box)]).toEqual(['IN1', 'IN2']);
+    expect([...openPins(n, box).inputs]).toEqual(['IN1', 'IN2']);
   });
 
   test('a box on the rail with every pin wired has no field to type', () => {

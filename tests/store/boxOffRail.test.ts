@@ -54,7 +54,7 @@ describe('a box moved onto the first column', () => {
     const { s, nets } = setup();
     const n = nets()[0]!.id;
     const box = s().placeElement(n, { row: 0, col: 2 }, TON)!;
-    const coil = s().placeElement(n, { row: 0, col: 5 }, { kind: 'coil', coil: 'NORMAL', variable: 'Q' })!;
+    const coil = s().placeElement(n, { row: 0, col: 5 }, { kind: 'coil', coil: 'COIL', variable: 'Q' })!;
     expect(s().moveElements(n, [box, coil], 0, -2)).toBe(true);
     expect(at(nets()[0]!.elements)).toEqual(['box@0,1', 'coil@0,4', 'link@0,0']);
   });

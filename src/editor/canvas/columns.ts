@@ -9,7 +9,7 @@ import type { BoxElement, LdElement } from '../../model/elements';
 import { elementSize } from '../../model/factory';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { Network } from '../../model/project';
-import { openInputs } from './pinOperands';
+import { openPins, type OpenPins } from './pinOperands';
 import { SPEC_BOLD, SPEC_FONT, SPEC_MONO_SMALL, SPEC_SMALL, textWidth } from './textWidth';
 
 /**
@@ -45,20 +45,20 @@ export interface BoxMetrics {
 export const operandWidth = (text: string): number => textWidth(text, SPEC_SMALL);
 export const nameWidth = (text: string): number => textWidth(text, SPEC_FONT);
 
-/** `open`: inputs drawn with a `???` operand (unwired, none given; pinOperands.ts), which need its room. */
-export function boxMetrics(el: BoxElement, layout: BoxLayout, open?: ReadonlySet<string>): BoxMetrics {
+/** `open`: pins drawn with a `???` operand (unwired, none given; pinOperands.ts), which need its room. */
+export function boxMetrics(el: BoxElement, layout: BoxLayout, open?: OpenPins): BoxMetrics {
   let inOperand = 0;
   let outOperand = 0;
   let inPin = 0;
   let outPin = 0;
   for (const pin of layout.inputs) {
     inPin = Math.max(inPin, textWidth(pin.name, SPEC_SMALL));
-    const operand = el.inputs[pin.name] || (open?.has(pin.name) ? '???' : '');
+    const operand = el.inputs[pin.name] || (open?.inputs.has(pin.name) ? '???' : '');
     if (operand) inOperand = Math.max(inOperand, operandWidth(operand));
   }
   for (const pin of layout.outputs) {
     outPin = Math.max(outPin, textWidth(pin.name, SPEC_SMALL));
-    const operand = el.outputs[pin.name];
+    const operand = el.outputs[pin.name] || (open?.outputs.has(pin.name) ? '???' : '');
     if (operand) outOperand = Math.max(outOperand, operandWidth(operand));
   }
   return {
@@ -91,7 +91,7 @@ function needs(el: LdElement, lib: BlockLibrary, n: Network): number[] {
     case 'box': {
       const layout = boxLayout(el, lib);
       if (!layout) return [textWidth(el.blockType, SPEC_BOLD) + 2 * BOX_MARGIN + 8];
-      const m = boxMetrics(el, layout, openInputs(n, el, lib));
+      const m = boxMetrics(el, layout, openPins(n, el, lib));
       const total = m.left + m.body + m.rightMargin;
       const extra = Math.max(0, m.instance - total) / 2;
       const first = m.left + m.body / 2 + extra;

@@ -12,7 +12,7 @@ import type { CanvasTheme } from '../theme/canvasTheme';
 import { FORCED_BADGE } from '../theme/monitorStyle';
 import { networkColumns, type NetworkColumns } from './columns';
 import { drawConnectionPartners } from './drawConnectors';
-import { openInputs } from './pinOperands';
+import { openPins } from './pinOperands';
 import { BOX_TOP, drawElement, wire, wireStyle } from './drawSymbols';
 import { CELL_H, cellRect, GRID_PAD_BOTTOM, WIRE_Y } from './geometry';
 
@@ -184,7 +184,7 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     const live = paint.liveValues?.get(el.id);
     drawElement(ctx, t, el, {
       width: r.width,
-      ...(el.kind === 'box' ? { openPins: openInputs(n, el, paint.library) } : {}),
+      ...(el.kind === 'box' ? { openPins: openPins(n, el, paint.library) } : {}),
       ...(paint.library ? { library: paint.library } : {}),
       ...(paint.power ? { power: paint.power.elements[i] ?? 0 } : {}),
       ...(live ? { liveValue: live } : {}),

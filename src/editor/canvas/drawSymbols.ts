@@ -5,6 +5,7 @@
 import { boxLayout } from '../../model/boxLayout';
 import type { BlockLibrary } from '../../model/library';
 import type { BoxElement, CoilElement, ContactElement, LdElement } from '../../model/elements';
+import { powerFlowInput, powerFlowOutput } from '../../store/networkEdits';
 import type { CanvasTheme } from '../theme/canvasTheme';
 import {
   boolState,
@@ -17,6 +18,7 @@ import {
 import { BOX_MARGIN, boxMetrics, CELL_W, jumpText } from './columns';
 import { drawConnection } from './drawConnectors';
 import { CELL_H, WIRE_Y } from './geometry';
+import type { OpenPins } from './pinOperands';
 import { FONT, FONT_BOLD, FONT_SMALL, FONT_SMALL_BOLD, MONO_SMALL_BOLD } from './textWidth';
 
 export { FONT, FONT_BOLD, FONT_SMALL } from './textWidth';
@@ -31,8 +33,8 @@ export interface ElementPaint {
   readonly liveValue?: string;
   /** Drawn width of the element's columns (CELL_W per column when absent). */
   readonly width?: number;
-  /** Box inputs that are unwired and have no operand: drawn with a `???` operand (pinOperands.ts). */
-  readonly openPins?: ReadonlySet<string>;
+  /** Box pins that are unwired and have no operand: drawn with a `???` operand (pinOperands.ts). */
+  readonly openPins?: OpenPins;
 }
 
 type Ctx = CanvasRenderingContext2D;
@@ -255,9 +257,8 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint, 
     fillName(ctx, name, Math.max(half, Math.min(w - half, mid)), INSTANCE_BASELINE, w - 4);
   }
   if (!layout) return;
-  const enEno = layout.signature.kind === 'function' || el.executionControl === true;
-  const flowIn = enEno ? 'EN' : layout.inputs.find((p) => p.type === 'BOOL')?.name;
-  const flowOut = enEno ? 'ENO' : layout.outputs.find((p) => p.type === 'BOOL')?.name;
+  const flowIn = powerFlowInput(layout)?.name;
+  const flowOut = powerFlowOutput(layout)?.name;
   for (const pin of layout.inputs) {
     const y = pin.rowOffset * CELL_H + WIRE_Y;
     wire(ctx, t, 0, left, y, pin.name === flowIn ? paint.power : undefined, 1);
@@ -265,7 +266,7 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint, 
     ctx.fillStyle = t.symbol;
     ctx.textAlign = 'left';
     ctx.fillText(pin.name, left + 4, y + 4);
-    const operand = el.inputs[pin.name] || (paint.openPins?.has(pin.name) ? '???' : '');
+    const operand = el.inputs[pin.name] || (paint.openPins?.inputs.has(pin.name) ? '???' : '');
     if (operand) {
       ctx.fillStyle = el.inputs[pin.name] ? t.operand : t.muted;
       ctx.textAlign = 'right';
@@ -279,9 +280,9 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint, 
     ctx.fillStyle = t.symbol;
     ctx.textAlign = 'right';
     ctx.fillText(pin.name, right - 4, y + 4);
-    const operand = el.outputs[pin.name];
+    const operand = el.outputs[pin.name] || (paint.openPins?.outputs.has(pin.name) ? '???' : '');
     if (operand) {
-      ctx.fillStyle = t.operand;
+      ctx.fillStyle = el.outputs[pin.name] ? t.operand : t.muted;
       ctx.textAlign = 'left';
       fillName(ctx, operand, right + 3, y - 4, w - right - 6);
     }

@@ -1,12 +1,14 @@
 // The operand fields beside a box's pins, typed from the keyboard: which pins take one (those not
 // wired on the grid; EN/ENO never), in the order Tab visits them (the instance name of a function
 // block first, then the inputs top to bottom, then the outputs), and the `???` drawn beside an
-// unwired input that has no operand yet.
+// unwired pin that has no operand yet (on the output side, not beside the BOOL output that carries
+// the power flow on, nor beside an in-out pin, whose operand is its input's).
 import { boxLayout, type PlacedPin } from '../../model/boxLayout';
 import type { BoxElement, LdElement } from '../../model/elements';
 import { elementSize } from '../../model/factory';
-import type { BlockLibrary } from '../../model/library';
+import { isInOutPin, type BlockLibrary } from '../../model/library';
 import type { Network } from '../../model/project';
+import { powerFlowOutput } from '../../store/networkEdits';
 
 /** The instance name of a function block box, in the Tab order of its fields. */
 export const INSTANCE_FIELD = '';
@@ -112,9 +114,23 @@ export function withOperand(
   return out;
 }
 
-/** Inputs of the box drawn with a `???` operand: unwired and without an operand yet. */
-export function openInputs(n: Network, box: BoxElement, lib?: BlockLibrary): ReadonlySet<string> {
-  const open = new Set<string>();
-  for (const s of pinSlots(n, box, lib)) if (s.side === 'input' && !s.wired && !s.operand) open.add(s.pin);
-  return open;
+/** Pins of a box drawn with a `???` operand, per side (an in-out pin is on both sides). */
+export interface OpenPins {
+  readonly inputs: ReadonlySet<string>;
+  readonly outputs: ReadonlySet<string>;
+}
+
+/** The box's pins drawn with a `???` operand: unwired and without an operand yet (see the file comment). */
+export function openPins(n: Network, box: BoxElement, lib?: BlockLibrary): OpenPins {
+  const inputs = new Set<string>();
+  const outputs = new Set<string>();
+  const layout = boxLayout(box, lib);
+  const flow = layout && powerFlowOutput(layout)?.name;
+  const inOut = new Set(layout?.outputs.filter(isInOutPin).map((p) => p.name));
+  for (const s of pinSlots(n, box, lib)) {
+    if (s.wired || s.operand) continue;
+    if (s.side === 'input') inputs.add(s.pin);
+    else if (s.pin !== flow && !inOut.has(s.pin)) outputs.add(s.pin);
+  }
+  return { inputs, outputs };
 }
