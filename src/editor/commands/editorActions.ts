@@ -9,6 +9,7 @@ import type { Network } from '../../model/project';
 import { selectNetworks, type DocumentStore } from '../../store/documentStore';
 import { elementAt, type ElementTemplate } from '../../store/networkEdits';
 import type { CursorCell, UiStore } from '../../store/uiStore';
+import { modelCol, networkColumns } from '../canvas/columns';
 import { editBox } from './pinActions';
 
 export interface EditorContext {
@@ -75,12 +76,19 @@ export function placeAt(
 /** The project's blocks: standard blocks and its own FBs and functions. */
 export const libraryOf = (ctx: EditorContext) => blockLibrary(ctx.doc.getState().project);
 
+/**
+ * The column the cursor lands on for model cell (row, col) of `n`: the cells right of a coil
+ * drawn at the right rail are under its wire, so the cursor lands on the coil (columns.ts).
+ */
+const cursorCol = (ctx: EditorContext, n: Network, row: number, col: number): number =>
+  modelCol(networkColumns(n, libraryOf(ctx)), row, col);
+
 /** Moves the cursor to the cell right of an element (after placing or naming it). */
 export function advancePast(ctx: EditorContext, network: NetworkId, el: LdElement) {
   const n = networkById(ctx, network);
   if (!n) return;
   const col = Math.min(n.cols - 1, el.col + elementSize(el, libraryOf(ctx)).cols);
-  ctx.ui.getState().setCursor({ network, row: el.row, col });
+  ctx.ui.getState().setCursor({ network, row: el.row, col: cursorCol(ctx, n, el.row, col) });
 }
 
 export function placeAtCursor(ctx: EditorContext, t: ElementTemplate): ElementId | undefined {
@@ -112,7 +120,7 @@ export function moveCursor(ctx: EditorContext, dRow: number, dCol: number, exten
     n = target;
     row = step < 0 ? n.rows - 1 : 0;
   }
-  col = Math.max(0, Math.min(n.cols - 1, col));
+  col = cursorCol(ctx, n, row, Math.max(0, Math.min(n.cols - 1, col)));
   const ui = ctx.ui.getState();
   ui.setCursor({ network: n.id, row, col });
   const el = elementAt(n, { row, col }, libraryOf(ctx));
