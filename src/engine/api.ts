@@ -135,7 +135,7 @@ export interface Clock {
 export interface TaskSchedule {
   /** The common tick, ms: the virtual clock advances by it per scan. */
   readonly tickMs: number;
-  /** Every task of the project, in its order. */
+  /** The tasks that run program instances, in the project's order. */
   readonly tasks: readonly TaskRate[];
   /** True when some task runs less often than every scan (a scan then runs only the tasks due). */
   readonly multiRate: boolean;

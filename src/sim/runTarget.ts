@@ -1,6 +1,7 @@
 // Which program the simulator runs: the project's task configuration, never "whatever tab is open".
-// Several program instances in the tasks run as a configuration (every instance in task order each
-// scan, variables named `Instance.Var`); one instance runs its program; no task runs the first PROGRAM.
+// Several program instances in the tasks run as a configuration (each task at its own interval on
+// their common tick, instances in declaration order, variables named `Instance.Var`); one instance
+// runs its program; no task runs the first PROGRAM.
 import type { CompileOptions } from '../engine/api';
 import type { Project } from '../model/project';
 

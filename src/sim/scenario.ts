@@ -11,7 +11,8 @@
 // within TOL (TIME in ms or with a unit: `50ms`, `T#0.1s`). Comment lines `# cycle: 100ms` and
 // `# pou: Main` set the cycle and the PROGRAM. Used by the Tests panel, the worker (replay into the
 // timeline) and `rungsmith test`.
-import type { Plc } from '../engine/api';
+import type { Plc, TaskSchedule } from '../engine/api';
+import { describeSchedule } from '../engine/compile/taskSchedule';
 import type { CompiledProgram } from '../engine/plc';
 import { compileProgram, createPlc } from '../engine/plc';
 import { csvValue, formatValue, parseValueText } from '../engine/values/literals';
@@ -233,8 +234,16 @@ export function scenarioProgram(project: Project, parsed: ParsedScenario): strin
   return project.pous.find((p) => p.kind === 'PROGRAM')?.name;
 }
 
-/** The scenario's cycle: its `# cycle:` line, else the task's interval, else 10 ms. */
-export function scenarioCycle(project: Project, parsed: ParsedScenario, pou: string | undefined): number {
+/**
+ * The scenario's cycle: its `# cycle:` line, else the task's interval, else 10 ms. A configuration
+ * whose tasks run at different intervals (`schedule`) scans at their common tick, whatever the line says.
+ */
+export function scenarioCycle(project: Project, parsed: ParsedScenario, pou: string | undefined, schedule?: TaskSchedule): number {
+  if (schedule?.multiRate) {
+    if (parsed.cycleMs !== undefined && parsed.cycleMs !== schedule.tickMs)
+      throw new ScenarioError(0, `"# cycle: ${parsed.cycleMs}ms" cannot apply: the tasks run at different intervals (${describeSchedule(schedule)}), so a scan is their common tick of ${schedule.tickMs} ms`);
+    return schedule.tickMs;
+  }
   if (parsed.cycleMs) return parsed.cycleMs;
   const task = project.tasks.find((t) => t.programs.some((p) => p.pou.toUpperCase() === pou?.toUpperCase()));
   return task?.cycleMs ?? 10;

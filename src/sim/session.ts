@@ -72,6 +72,8 @@ export class SimSession {
   private confirmOnline = false;
   private onlineIds = 0;
   private mode: SimMode = 'stopped';
+  /** The cycle the UI set; a program whose tasks run at different intervals scans at their common tick instead. */
+  private requestedCycle: number | undefined;
   private scanBase = 0;
   private lastFrameAt = -Infinity;
   private readonly trend = new TrendRecorder();
@@ -171,8 +173,8 @@ export class SimSession {
         if (!Number.isFinite(m.cycleMs) || m.cycleMs < 0 || m.cycleMs > 60_000) {
           throw new Error(`cycle time ${m.cycleMs} ms is out of range (0 to 60000 ms)`);
         }
-        this.runner.setCycle(m.cycleMs);
-        if (this.layout) this.layout = { ...this.layout, cycleMs: m.cycleMs };
+        this.requestedCycle = m.cycleMs;
+        this.applyCycle(this.plc);
         this.postFrame();
         return;
       case 'setBreakpoints':
@@ -343,7 +345,7 @@ export class SimSession {
     const clock = this.runner.clock;
     if (!online) clock.set(0);
     const plc = this.deps.engine.createPlc(program, { cycleMs: this.runner.cycleMs, clock });
-    const layout = buildLayout(project, plc.pou, plc.variableNames(), this.runner.cycleMs, {
+    const layout = buildLayout(project, plc.pou, plc.variableNames(), this.cycleFor(plc), {
       instances: plc.instances(),
       ...(runOptions(project).configuration ? { programs: programInstances(project) } : {}),
     });
@@ -408,6 +410,7 @@ export class SimSession {
     this.plc = next.plc;
     this.layout = next.layout;
     this.loaded = next;
+    this.applyCycle(next.plc);
     this.resolveBreakpoints();
     // The history records the program's own networks whatever body is monitored.
     this.recorder = HistoryRecorder.for(next.plc, programLayout(next.project, next.layout), next.program, next.pou, this.historyOptions);
@@ -418,6 +421,21 @@ export class SimSession {
     if (!online) this.resetCounters();
     this.deps.post({ type: 'compiled', ok: true, online, diagnostics, layout: next.layout, program: this.programId });
     this.postFrame();
+  }
+
+  /**
+   * The scan cycle for a PLC: the common tick when its tasks run at different intervals (a scan is
+   * one tick, the Cycle field shows it read-only), else the cycle the UI set (at first the runner's).
+   */
+  private cycleFor(plc: Plc | undefined): number {
+    const s = plc?.schedule;
+    return s?.multiRate ? s.tickMs : (this.requestedCycle ?? this.runner.cycleMs);
+  }
+
+  private applyCycle(plc: Plc | undefined): void {
+    const cycle = this.cycleFor(plc);
+    if (this.runner.cycleMs !== cycle) this.runner.setCycle(cycle);
+    if (this.layout && this.layout.cycleMs !== cycle) this.layout = { ...this.layout, cycleMs: cycle };
   }
 
   /** The runner's breakpoints in the installed program: network ids found in every POU of its document. */
@@ -575,7 +593,7 @@ export class SimSession {
     try {
       const parsed = parseScenario(scenario.csv, scenario.name);
       const prep = prepareScenario(parsed, this.loaded!.program as CompiledProgram);
-      const cycle = scenarioCycle(project, parsed, plc.pou);
+      const cycle = scenarioCycle(project, parsed, plc.pou, plc.schedule);
       this.runner.setCycle(cycle);
       if (this.layout) this.layout = { ...this.layout, cycleMs: cycle };
       const clock = this.runner.clock;

@@ -126,6 +126,14 @@ describe('unchanged without several rates', () => {
     expect(trace(plc, scans(4), ['F.N', 'S.N', 'S.Et', 'Trace'])).toEqual([[1, 1, 0, 12], [2, 2, 25, 1212], [3, 3, 50, 121212], [4, 4, 75, 12121212]]);
   });
 
+  test('a task without program instances does not count in the tick', () => {
+    const p = ratesProject();
+    const spare = { name: 'Spare', cycleMs: 7, priority: 3, programs: [] };
+    const s = taskSchedule([...p.tasks, spare]);
+    expect(s.tickMs).toBe(10);
+    expect(s.tasks.map((t) => t.name)).toEqual(['Fast', 'Slow']);
+  });
+
   test('two tasks of the same interval run every scan', () => {
     const plc = configPlc(ratesProject({ slowMs: 10 }));
     expect(trace(plc, scans(3), ['F.N', 'S.N'])).toEqual([[1, 1], [2, 2], [3, 3]]);

@@ -77,7 +77,8 @@ export function assembleProgram(
   let schedule: { rates: TaskSchedule; programTask: Int32Array } | undefined;
   if (opts.configuration) {
     const r = new Reporter(diagnostics, project.name, -1);
-    const instances = project.tasks.flatMap((t, task) => t.programs.map((p) => ({ ...p, task })));
+    // Indexed like the schedule's tasks: those that run programs.
+    const instances = project.tasks.filter((t) => t.programs.length > 0).flatMap((t, task) => t.programs.map((p) => ({ ...p, task })));
     if (instances.length === 0) {
       r.error('LD-E20', 'no task runs a program; add a program instance to a task');
       return { diagnostics };

@@ -24,10 +24,14 @@ export function commonTickMs(intervalsMs: readonly number[]): number {
   return g / US;
 }
 
-/** The schedule of every task of the project (tasks without programs count in the tick, as in MATIEC). */
+/**
+ * The schedule of the tasks that run program instances, in the project's order. A task without
+ * programs does not count in the tick (MATIEC counts it: its ticks would run nothing).
+ */
 export function taskSchedule(tasks: readonly Task[]): TaskSchedule {
-  const tickMs = commonTickMs(tasks.map((t) => t.cycleMs));
-  const rates: TaskRate[] = tasks.map((t) => ({
+  const running = tasks.filter((t) => t.programs.length > 0);
+  const tickMs = commonTickMs(running.map((t) => t.cycleMs));
+  const rates: TaskRate[] = running.map((t) => ({
     name: t.name,
     intervalMs: t.cycleMs,
     every: tickMs > 0 ? Math.max(1, Math.round((t.cycleMs * US) / (tickMs * US))) : 1,
