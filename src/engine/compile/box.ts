@@ -19,6 +19,7 @@ import { storeOf, type Access, type UfbSymbol } from './symbols';
 import type { PlacedPin } from '../../model/boxLayout';
 import { isInOutPin } from '../../model/library';
 import { lowerUserCall } from './userCall';
+import { aggregatePinShape, lowerAggregateInput, type AggValue } from './aggregatePins';
 
 const admitsType = (pinType: string, t: ElementaryType): boolean =>
   isElementaryType(pinType) ? pinType === t : (GENERIC_MEMBERS[pinType as GenericType] ?? []).includes(t);
@@ -33,6 +34,8 @@ export interface InputInfo {
   literal?: string;
   /** A function input left unconnected: it takes its type's initial value (IEC; MATIEC's default). */
   open?: boolean;
+  /** A struct/array pin of a user block: the whole value given to it (aggregatePins.ts). */
+  agg?: AggValue;
 }
 
 /** An output pin of a box: its net, whether a line is attached, the variable written beside it. */
@@ -159,6 +162,14 @@ export function lowerBox(
     infos.push(info);
     if (wired && operand) {
       r.error('LD-R10', `input ${pin.name} of ${name} is both wired and given "${operand}"; keep one`, el);
+      continue;
+    }
+    const aggShape = userPou ? aggregatePinShape(ctx.symbols.storage.types, pin) : undefined;
+    if (aggShape) {
+      const agg = lowerAggregateInput({ symbols: ctx.symbols, nets, el, name, r }, pin, aggShape, { net: t.net, wired, operand });
+      if (agg) info.agg = agg;
+      else if (isFb && !wired && !operand && !isInOutPin(pin))
+        r.warning('LD-R10', `input ${pin.name} of ${name} is not connected: it keeps the instance's value (the initial value of ${aggShape.name} at first); wire it or write a variable beside it`, el);
       continue;
     }
     if (wired) {

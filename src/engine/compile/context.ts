@@ -4,7 +4,7 @@ import type { LdElement } from '../../model/elements';
 import type { Project, Profile } from '../../model/project';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { ElementaryType } from '../../model/iecTypes';
-import type { Access, FbSymbol, Store, SymbolTable, UfbSymbol, VarSymbol } from './symbols';
+import type { Access, AggSymbol, FbSymbol, Store, SymbolTable, UfbSymbol, VarSymbol } from './symbols';
 
 export type CoilFamily = 'assign' | 'negated' | 'pulse' | 'latch';
 
@@ -70,8 +70,8 @@ export interface PouContext {
 
 /** Flattening (compile/flatten.ts): the body networks of one call, placed in the program's network array. */
 export interface CallBuilder {
-  /** Body of a call of a user FB instance, with its in-out names bound to the caller's variables. */
-  fbBody(instance: UfbSymbol, refs: ReadonlyMap<string, Access>): { first: number; end: number } | undefined;
+  /** Body of a call of a user FB instance, with its in-out names bound to the caller's variables (a struct/array one: its AggSymbol). */
+  fbBody(instance: UfbSymbol, refs: ReadonlyMap<string, Access | AggSymbol>): { first: number; end: number } | undefined;
   /** A function call site: its own variables (scope) and body. */
   functionCall(pou: Project['pous'][number], site: string): FunctionSite;
 }
@@ -79,7 +79,7 @@ export interface CallBuilder {
 export interface FunctionSite {
   readonly scope: SymbolTable;
   /** Lowers the body once the in-out references are known. */
-  body(refs: ReadonlyMap<string, Access>): { first: number; end: number } | undefined;
+  body(refs: ReadonlyMap<string, Access | AggSymbol>): { first: number; end: number } | undefined;
 }
 
 /** What a body lowering shares with the rest of the program (absent: a POU checked on its own). */

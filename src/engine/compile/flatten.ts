@@ -10,7 +10,7 @@ import type { NetworkIR } from './ir';
 import { lowerChartBody } from '../sfc/body';
 import { lowerPouBody } from './pou';
 import { bodyShapes } from '../st/body';
-import { SymbolTable, type Access, type Sym, type UfbSymbol } from './symbols';
+import { SymbolTable, type Access, type AggSymbol, type Sym, type UfbSymbol } from './symbols';
 
 /** A range of the program's networks that runs one POU: a program, an FB instance's call, a function call. */
 export interface BodyInfo {
@@ -132,7 +132,7 @@ export class Flattener implements CallBuilder {
     }
   }
 
-  fbBody(instance: UfbSymbol, refs: ReadonlyMap<string, Access>): { first: number; end: number } | undefined {
+  fbBody(instance: UfbSymbol, refs: ReadonlyMap<string, Access | AggSymbol>): { first: number; end: number } | undefined {
     return this.body(instance.pou, withRefs(instance.scope, refs), { kind: 'fb', instance: instance.name }, undefined, instance.scope);
   }
 
@@ -171,10 +171,10 @@ export class Flattener implements CallBuilder {
   }
 }
 
-function withRefs(scope: SymbolTable, refs: ReadonlyMap<string, Access>): SymbolTable {
+function withRefs(scope: SymbolTable, refs: ReadonlyMap<string, Access | AggSymbol>): SymbolTable {
   if (refs.size === 0) return scope;
   const extra = new Map<string, Sym>();
-  for (const [name, access] of refs) extra.set(name, { kind: 'ref', name, access });
+  for (const [name, access] of refs) extra.set(name, access.kind === 'agg' ? access : { kind: 'ref', name, access });
   return scope.withRefs(extra);
 }
 

@@ -16,7 +16,9 @@ import type { CallOp, OutIR, Source } from './ir';
 import type { NetMap } from './lower';
 import { accessWords } from './lower';
 import type { Reporter } from './report';
-import type { Access, SymbolTable, UfbSymbol } from './symbols';
+import type { Access, AggSymbol, SymbolTable, UfbSymbol } from './symbols';
+import { aggregatePinShape, aggregateRef, leafCopies, lowerAggregateOutput, type AggValue } from './aggregatePins';
+import { nodeLeaves } from './aggregates';
 
 export interface UserCallParts {
   readonly el: BoxElement;
@@ -43,13 +45,24 @@ export function lowerUserCall(ctx: PouContext, c: UserCallParts): CallOp | undef
   const { el, name, r, pou } = c;
   const isFb = pou.kind === 'FUNCTION_BLOCK';
   let en: Source | undefined;
-  const refs = new Map<string, Access>();
+  const refs = new Map<string, Access | AggSymbol>();
   const given: { pin: string; src: Source; type: ElementaryType }[] = [];
+  const aggGiven: { pin: string; value: AggValue }[] = [];
   const open: string[] = [];
   for (const info of c.infos) {
     const pin = info.pin;
     if (pin.name === 'EN') {
       if (info.src) en = info.src;
+      continue;
+    }
+    if (info.agg) {
+      // A struct/array: an input is copied in; an in-out names the caller's variable itself.
+      if (!isInOutPin(pin)) aggGiven.push({ pin: pin.name, value: info.agg });
+      else if (!info.agg.variable)
+        r.error('LD-E23', `the in-out ${pin.name} of ${name} must name a variable: it is passed by reference, and ${info.agg.what} carries a function's result`, el);
+      else if (info.agg.constant)
+        r.error('LD-E23', `the in-out ${pin.name} of ${name} cannot be ${info.agg.what}, which is CONSTANT`, el);
+      else if (info.agg.node) refs.set(pin.name, aggregateRef(info.agg.node, info.agg.what));
       continue;
     }
     const pinType = pin.type as ElementaryType;
@@ -103,7 +116,8 @@ export function lowerUserCall(ctx: PouContext, c: UserCallParts): CallOp | undef
   // A function's open inputs start at their declared initial value.
   for (const pin of open) {
     const decl = pou.variables.find((v) => v.name.toUpperCase() === pin.toUpperCase());
-    const initial = decl?.initial?.trim() || initialText(decl?.type.toUpperCase() ?? 'BOOL');
+    const type = decl?.type.toUpperCase() ?? 'BOOL';
+    const initial = decl?.initial?.trim() || (isElementaryType(type) ? initialText(type) : `the initial value of ${decl?.type}`);
     r.warning(
       'LD-R10',
       `input ${pin} of ${name} is not connected: it takes its initial value (${initial}); wire it or write a variable or a literal beside it`,
@@ -127,16 +141,27 @@ export function lowerUserCall(ctx: PouContext, c: UserCallParts): CallOp | undef
 
   const outs: { out: OutIR; src: Access }[] = [];
   let eno: OutIR | undefined;
+  const site = { symbols: ctx.symbols, nets: c.nets, el, name, r };
   for (const o of c.outputs) {
     if (o.pin.name === 'ENO') {
       eno = lowerOutput(ctx, c.nets, el, name, o, 'BOOL', undefined, r);
       continue;
     }
+    const member = o.pin.name === 'OUT' && !isFb ? pou.name : o.pin.name;
+    const aggShape = aggregatePinShape(ctx.symbols.storage.types, o.pin);
+    if (aggShape) {
+      const ref = isInOutPin(o.pin) ? refs.get(o.pin.name) : scope?.own(member);
+      const node = ref?.kind === 'agg' ? ref.node : undefined;
+      for (const copy of lowerAggregateOutput(site, o, aggShape, node, isFb || isInOutPin(o.pin)))
+        outs.push({ out: { pin: o.pin.name, type: copy.dst.type, dst: copy.dst }, src: copy.src });
+      continue;
+    }
     const type = o.pin.type as ElementaryType;
+    const ref = isInOutPin(o.pin) ? refs.get(o.pin.name) : undefined;
     const src = isInOutPin(o.pin)
-      ? refs.get(o.pin.name)
+      ? ref?.kind === 'agg' ? undefined : ref
       : scope
-        ? memberAccess(scope, o.pin.name === 'OUT' && !isFb ? pou.name : o.pin.name)
+        ? memberAccess(scope, member)
         : undefined;
     const out = lowerOutput(ctx, c.nets, el, name, o, type, src, r);
     if (out && src) outs.push({ out, src });
@@ -148,12 +173,20 @@ export function lowerUserCall(ctx: PouContext, c: UserCallParts): CallOp | undef
     const dst = memberAccess(scope, g.pin);
     if (dst) assigns.push({ dst, src: g.src });
   }
-  // Temporaries (an FB's VAR_TEMP; every variable of a function) start at their initial values.
+  for (const g of aggGiven) {
+    const dst = scope.own(g.pin);
+    if (dst?.kind === 'agg' && g.value.node)
+      for (const copy of leafCopies(dst.node, g.value.node)) assigns.push({ dst: copy.dst, src: { from: 'access', access: copy.src } });
+  }
+  // Temporaries (an FB's VAR_TEMP; every variable of a function) start at their initial values
+  // (every leaf of a struct/array one).
   const inits: { dst: Access; value: Value }[] = [];
-  const assigned = new Set(given.map((g) => g.pin.toUpperCase()));
-  for (const [key, m] of scope.ownNames())
-    if (m.kind === 'var' && (isFb ? m.temp === true : !assigned.has(key)))
-      inits.push({ dst: { kind: 'var', v: m, type: m.type }, value: m.initial });
+  const assigned = new Set([...given, ...aggGiven].map((g) => g.pin.toUpperCase()));
+  for (const [key, m] of scope.ownNames()) {
+    if (isFb ? false : assigned.has(key)) continue;
+    const vars = m.kind === 'var' ? [m] : m.kind === 'agg' ? nodeLeaves(m.node) : [];
+    for (const v of vars) if (!isFb || v.temp === true) inits.push({ dst: { kind: 'var', v, type: v.type }, value: v.initial });
+  }
 
   return {
     op: 'call',
