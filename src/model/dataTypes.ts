@@ -6,8 +6,12 @@
 // - `findDataType(project, name)` -> DataType | undefined: the project's own type, else a vendor
 //   type (vendorTypes.ts: SVGHMI's HMI_BOOL ...). Case-insensitive.
 // - `resolveType(project, text)` -> `{ ok: true, shape }` | `{ ok: false, message }`: a type text
-//   (elementary, STRING[n], a function block type, a data type, an alias chain, or the anonymous
-//   `ARRAY[1..3, 0..1] OF T`) as a TypeShape tree; unknown names and cycles are errors.
+//   (elementary, STRING[n], a function block type, a data type, an alias chain, or an anonymous
+//   type written in a declaration: `ARRAY[1..3, 0..1] OF T`, `STRUCT X : INT; Y : INT := 5;
+//   END_STRUCT`, `(Idle, Run, Fault)`, `INT (0..100)`) as a TypeShape tree; unknown names and cycles
+//   are errors. An anonymous type's shape is named by its canonical text (`anonymousText`).
+// - `anonymousType(text)` -> the definition an anonymous STRUCT / enum / subrange text declares
+//   (`DataTypeDef`), a message, or undefined (not such a text); `anonymousText(def)` writes one back.
 // - `isFbTypeName(project, name)`: standard FB, user FUNCTION_BLOCK (`fb` shapes).
 // - `checkDataTypes(project)` -> `{ name, message }[]`: every problem of the declared types
 //   (unknown names, cycles, empty/duplicate enum values, bad ranges, bad initial values).
@@ -24,7 +28,7 @@
 // Enum values are stored as their index (0 for the first value) in an INT.
 import { FB_SIGNATURES } from './blocks';
 import { DATE_TYPE_ALIASES, IDENTIFIER_RE, isElementaryType, parseSizedString, type ElementaryType } from './iecTypes';
-import type { DataType, Project } from './project';
+import type { DataType, DataTypeDef, Project } from './project';
 import { vendorType } from './vendorTypes';
 
 export interface Dim {
@@ -70,6 +74,79 @@ export function isFbTypeName(project: Pick<Project, 'pous'>, name: string): bool
 }
 
 const ARRAY_RE = /^ARRAY\s*\[(.*?)\]\s*OF\s+(.+)$/is;
+const STRUCT_RE = /^STRUCT\b([\s\S]*)\bEND_STRUCT\s*;?$/i;
+const ENUM_RE = /^\(\s*[A-Za-z_][A-Za-z0-9_]*\s*(,\s*[A-Za-z_][A-Za-z0-9_]*\s*)*\)$/;
+const SUBRANGE_RE = /^([A-Za-z_][A-Za-z0-9_]*)\s*\(\s*([+-]?\d+)\s*\.\.\s*([+-]?\d+)\s*\)$/;
+
+type AnonymousDef = Extract<DataTypeDef, { kind: 'struct' | 'enum' | 'subrange' }>;
+
+/**
+ * The definition an anonymous type text declares: `STRUCT X : INT; Y : INT := 5; END_STRUCT`,
+ * `(Idle, Run, Fault)`, `INT (0..100)`; a message when it is such a text but malformed; undefined
+ * otherwise (a type name, an elementary type, an ARRAY).
+ */
+export function anonymousType(text: string): AnonymousDef | string | undefined {
+  const t = text.trim();
+  if (ENUM_RE.test(t)) return { kind: 'enum', values: t.slice(1, -1).split(',').map((v) => v.trim()) };
+  const sub = SUBRANGE_RE.exec(t);
+  if (sub) return { kind: 'subrange', base: sub[1]!.toUpperCase(), lower: Number(sub[2]), upper: Number(sub[3]) };
+  const st = STRUCT_RE.exec(t);
+  if (!st) return /^STRUCT\b/i.test(t) ? `${t}: a structure ends with END_STRUCT` : undefined;
+  const members: { name: string; type: string; initial?: string }[] = [];
+  for (const part of splitTop(st[1]!, ';')) {
+    if (part.trim() === '') continue;
+    const m = /^\s*([A-Za-z_][A-Za-z0-9_]*)\s*:(?!=)([\s\S]*)$/.exec(part);
+    if (!m) return `"${part.trim()}" is not a member like X : INT`;
+    const [type, ...init] = splitTop(m[2]!, ':=');
+    if (!type || type.trim() === '') return `the member ${m[1]} has no type`;
+    members.push({ name: m[1]!, type: type.trim(), ...(init.length ? { initial: init.join(':=').trim() } : {}) });
+  }
+  if (members.length === 0) return `${t}: a structure has at least one member`;
+  return { kind: 'struct', members };
+}
+
+/** The canonical text of an anonymous definition (the inverse of `anonymousType`). */
+export function anonymousText(def: AnonymousDef): string {
+  switch (def.kind) {
+    case 'enum':
+      return `(${def.values.join(', ')})`;
+    case 'subrange':
+      return `${def.base} (${def.lower}..${def.upper})`;
+    case 'struct':
+      return `STRUCT ${def.members.map((m) => `${m.name} : ${m.type}${m.initial !== undefined ? ` := ${m.initial}` : ''}; `).join('')}END_STRUCT`;
+  }
+}
+
+/** Splits at `sep` outside brackets, parentheses, quotes and nested STRUCT ... END_STRUCT. */
+function splitTop(text: string, sep: string): string[] {
+  const out: string[] = [];
+  let depth = 0;
+  let start = 0;
+  for (let i = 0; i < text.length; i++) {
+    const c = text[i]!;
+    if (c === "'" || c === '"') {
+      i++;
+      while (i < text.length && text[i] !== c) i += text[i] === '$' ? 2 : 1;
+      continue;
+    }
+    if (c === '(' || c === '[') depth++;
+    else if (c === ')' || c === ']') depth--;
+    else if (/[A-Za-z_]/.test(c) && (i === 0 || !/[A-Za-z0-9_]/.test(text[i - 1]!))) {
+      const word = /^[A-Za-z_][A-Za-z0-9_]*/.exec(text.slice(i))![0].toUpperCase();
+      if (word === 'STRUCT') depth++;
+      else if (word === 'END_STRUCT') depth--;
+      i += word.length - 1;
+      continue;
+    }
+    if (depth === 0 && text.startsWith(sep, i)) {
+      out.push(text.slice(start, i));
+      start = i + sep.length;
+      i += sep.length - 1;
+    }
+  }
+  out.push(text.slice(start));
+  return out;
+}
 
 /** `1..8, 0..3` -> dims, or an error message. */
 export function parseDims(text: string): Dim[] | string {
@@ -116,6 +193,9 @@ function resolveIn(project: Pick<Project, 'dataTypes' | 'pous'>, text: string, s
     if (typeof dims === 'string') throw new TypeError_(`${text}: ${dims}`);
     return { kind: 'array', name: text, dims, of: resolveIn(project, arr[2]!.trim(), stack) };
   }
+  const anonymous = anonymousType(text);
+  if (typeof anonymous === 'string') throw new TypeError_(anonymous);
+  if (anonymous) return resolveDef(project, anonymousText(anonymous), anonymous, {}, stack);
   if (isFbTypeName(project, text)) return { kind: 'fb', name: text.toUpperCase() };
   const dt = findDataType(project, text);
   if (!dt) throw new TypeError_(`"${text}" is not a type: not elementary, not a function block and not a data type of the project`);
@@ -123,20 +203,30 @@ function resolveIn(project: Pick<Project, 'dataTypes' | 'pous'>, text: string, s
   if (stack.includes(key)) throw new TypeError_(`the data type ${dt.name} contains itself (${[...stack, key].join(' -> ')})`);
   const inner = [...stack, key];
   const initial = dt.initial !== undefined && dt.initial.trim() !== '' ? { initial: dt.initial.trim() } : {};
-  const def = dt.def;
+  return resolveDef(project, dt.name, dt.def, initial, inner);
+}
+
+/** The shape of a definition named `name` (a data type's, or an anonymous type's text). */
+function resolveDef(
+  project: Pick<Project, 'dataTypes' | 'pous'>,
+  name: string,
+  def: DataTypeDef,
+  initial: { initial?: string },
+  inner: readonly string[],
+): TypeShape {
   switch (def.kind) {
     case 'enum':
-      return { kind: 'enum', name: dt.name, values: def.values, ...initial };
+      return { kind: 'enum', name, values: def.values, ...initial };
     case 'subrange': {
       const base = resolveIn(project, def.base, inner);
       if (base.kind !== 'elementary' || !INTEGER_TYPES.has(base.type))
-        throw new TypeError_(`the subrange ${dt.name} must be of an integer type, not ${def.base}`);
-      return { kind: 'subrange', name: dt.name, base: base.type, lower: def.lower, upper: def.upper, ...initial };
+        throw new TypeError_(`the subrange ${name} must be of an integer type, not ${def.base}`);
+      return { kind: 'subrange', name, base: base.type, lower: def.lower, upper: def.upper, ...initial };
     }
     case 'struct':
       return {
         kind: 'struct',
-        name: dt.name,
+        name,
         members: def.members.map((m) => ({
           name: m.name,
           type: resolveIn(project, m.type, inner),
@@ -145,12 +235,12 @@ function resolveIn(project: Pick<Project, 'dataTypes' | 'pous'>, text: string, s
         ...initial,
       };
     case 'array':
-      return { kind: 'array', name: dt.name, dims: def.dims, of: resolveIn(project, def.of, inner), ...initial };
+      return { kind: 'array', name, dims: def.dims, of: resolveIn(project, def.of, inner), ...initial };
     case 'alias': {
       const base = resolveIn(project, def.base, inner);
-      if (base.kind === 'fb') throw new TypeError_(`the data type ${dt.name} names the function block ${base.name}; declare an instance instead`);
+      if (base.kind === 'fb') throw new TypeError_(`the data type ${name} names the function block ${base.name}; declare an instance instead`);
       const own = initial.initial ?? base.initial;
-      return { ...base, name: dt.name, ...(own !== undefined ? { initial: own } : {}) };
+      return { ...base, name, ...(own !== undefined ? { initial: own } : {}) };
     }
   }
 }

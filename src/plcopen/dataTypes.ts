@@ -4,9 +4,12 @@
 // `<structValue>` <-> `(X := 1, Y := 2)`).
 //
 // Read: enum, struct, array, subrangeSigned/subrangeUnsigned and derived/elementary (an alias).
-// Not read (kept raw for export, the caller warns): pointers and anonymous enums, structs or
-// subranges nested inside another declaration.
-import { elementaryOf, formatInitial, parseDims, parseInitial, type InitValue } from '../model/dataTypes';
+// Anonymous types inside a declaration (a variable's or a member's `<type>`: `<array>`, `<struct>`,
+// `<enum>`, `<subrangeSigned>`) become the type texts model/dataTypes.ts resolves
+// (`ARRAY[0..9] OF INT`, `STRUCT X : INT; END_STRUCT`, `(Idle, Run)`, `INT (0..100)`) and are
+// written back as the same anonymous elements. Not read (kept raw for export, the caller warns):
+// pointers.
+import { anonymousText, anonymousType, elementaryOf, formatInitial, parseDims, parseInitial, type InitValue } from '../model/dataTypes';
 import type { DataType, DataTypeDef } from '../model/project';
 import { child, childrenNamed, deepText, type XmlElement } from './xml/parse';
 import type { XmlWriter } from './xml/write';
@@ -34,14 +37,15 @@ function typeTextOf(t: XmlElement): string {
     if (!base) throw new Unsupported('an array without a base type', t);
     return `ARRAY[${dims.join(', ')}] OF ${typeTextOf(base)}`;
   }
-  if (['enum', 'struct', 'subrangeSigned', 'subrangeUnsigned', 'pointer'].includes(t.name))
-    throw new Unsupported(`an anonymous ${t.name} type inside a declaration is not supported (declare it as a data type)`, t);
+  if (['enum', 'struct', 'subrangeSigned', 'subrangeUnsigned'].includes(t.name))
+    return anonymousText(defOf(t) as Extract<DataTypeDef, { kind: 'enum' | 'struct' | 'subrange' }>);
+  if (t.name === 'pointer') throw new Unsupported('a pointer type inside a declaration is not supported', t);
   return t.name.toUpperCase();
 }
 
 /**
- * The type text of a variable's `<type>`: elementary, derived, STRING[n], or an anonymous array.
- * Undefined (after a warning) for the anonymous types Rungsmith does not read.
+ * The type text of a variable's `<type>`: elementary, derived, STRING[n], or an anonymous array,
+ * structure, enumeration or subrange. Undefined (after a warning) for a pointer.
  */
 export function readTypeText(typeEl: XmlElement | undefined, warn: Warn): string | undefined {
   const t = typeEl?.children[0];
@@ -151,8 +155,13 @@ export function readDataTypes(dataTypes: XmlElement | undefined, warn: Warn, raw
 
 const ARRAY_TEXT = /^ARRAY\s*\[(.*?)\]\s*OF\s+(.+)$/is;
 
-/** Writes a type text: anonymous arrays as `<array>`, the rest through `elementary`. */
+/** Writes a type text: anonymous arrays, structures, enumerations and subranges as such, the rest through `elementary`. */
 export function writeTypeText(w: XmlWriter, text: string, elementary: (w: XmlWriter, t: string) => void): void {
+  const anonymous = anonymousType(text);
+  if (anonymous && typeof anonymous !== 'string') {
+    writeDef(w, anonymous, (t) => writeTypeText(w, t, elementary));
+    return;
+  }
   const m = ARRAY_TEXT.exec(text.trim());
   const dims = m ? parseDims(m[1]!) : undefined;
   if (!m || typeof dims === 'string' || !dims) {
@@ -203,41 +212,43 @@ export function writeDataTypes(w: XmlWriter, types: readonly DataType[], raw: re
   w.open('dataTypes', undefined, () => {
     for (const dt of types)
       w.open('dataType', { name: dt.name }, () => {
-        w.open('baseType', undefined, () => {
-          const d = dt.def;
-          switch (d.kind) {
-            case 'enum':
-              w.open('enum', undefined, () => w.open('values', undefined, () => d.values.forEach((v) => w.empty('value', { name: v }))));
-              return;
-            case 'struct':
-              w.open('struct', undefined, () => {
-                for (const m of d.members)
-                  w.open('variable', { name: m.name }, () => {
-                    w.open('type', undefined, () => typeOf(m.type));
-                    if (m.initial) writeInitialValue(w, m.initial);
-                    if (m.comment) w.formatted('documentation', m.comment);
-                  });
-              });
-              return;
-            case 'array':
-              w.open('array', undefined, () => {
-                for (const x of d.dims) w.empty('dimension', { lower: String(x.lower), upper: String(x.upper) });
-                w.open('baseType', undefined, () => typeOf(d.of));
-              });
-              return;
-            case 'subrange':
-              w.open(d.lower >= 0 && /^(U|BYTE$|WORD$|DWORD$|LWORD$)/.test(elementaryOf(d.base) ?? '') ? 'subrangeUnsigned' : 'subrangeSigned', undefined, () => {
-                w.empty('range', { lower: String(d.lower), upper: String(d.upper) });
-                w.open('baseType', undefined, () => typeOf(d.base));
-              });
-              return;
-            case 'alias':
-              typeOf(d.base);
-          }
-        });
+        w.open('baseType', undefined, () => writeDef(w, dt.def, typeOf));
         if (dt.initial) writeInitialValue(w, dt.initial);
         if (dt.comment) w.formatted('documentation', dt.comment);
       });
     for (const r of raw) if (!names.has((/<dataType\s[^>]*name="([^"]*)"/.exec(r)?.[1] ?? '').toUpperCase())) w.raw(r);
   });
+}
+
+/** The element of a definition (`<enum>`, `<struct>`, `<array>`, `<subrangeSigned>`, an alias's base type). */
+function writeDef(w: XmlWriter, d: DataTypeDef, typeOf: (t: string) => void): void {
+  switch (d.kind) {
+    case 'enum':
+      w.open('enum', undefined, () => w.open('values', undefined, () => d.values.forEach((v) => w.empty('value', { name: v }))));
+      return;
+    case 'struct':
+      w.open('struct', undefined, () => {
+        for (const m of d.members)
+          w.open('variable', { name: m.name }, () => {
+            w.open('type', undefined, () => typeOf(m.type));
+            if (m.initial) writeInitialValue(w, m.initial);
+            if (m.comment) w.formatted('documentation', m.comment);
+          });
+      });
+      return;
+    case 'array':
+      w.open('array', undefined, () => {
+        for (const x of d.dims) w.empty('dimension', { lower: String(x.lower), upper: String(x.upper) });
+        w.open('baseType', undefined, () => typeOf(d.of));
+      });
+      return;
+    case 'subrange':
+      w.open(d.lower >= 0 && /^(U|BYTE$|WORD$|DWORD$|LWORD$)/.test(elementaryOf(d.base) ?? '') ? 'subrangeUnsigned' : 'subrangeSigned', undefined, () => {
+        w.empty('range', { lower: String(d.lower), upper: String(d.upper) });
+        w.open('baseType', undefined, () => typeOf(d.base));
+      });
+      return;
+    case 'alias':
+      typeOf(d.base);
+  }
 }

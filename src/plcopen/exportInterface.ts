@@ -15,8 +15,16 @@ const LIST_OF: Record<VarClass, string> = {
   temp: 'tempVars',
 };
 
-/** `<BOOL/>`, `<string/>`, `<string length="20"/>` (STRING[20]), `<derived name="TON"/>`. */
+/**
+ * A type element: `<BOOL/>`, `<string length="20"/>` (STRING[20]), `<derived name="TON"/>`, or an
+ * anonymous `<array>`, `<struct>`, `<enum>`, `<subrangeSigned>` for such a type text.
+ */
 export function writeType(w: XmlWriter, type: string): void {
+  writeTypeText(w, type, writeNamedType);
+}
+
+/** `<BOOL/>`, `<string/>`, `<string length="20"/>` (STRING[20]), `<derived name="TON"/>`. */
+function writeNamedType(w: XmlWriter, type: string): void {
   const t = type.trim();
   const upper = t.toUpperCase();
   const sized = parseSizedString(upper);
@@ -32,7 +40,7 @@ export function writeType(w: XmlWriter, type: string): void {
 
 export function writeVariable(w: XmlWriter, v: Variable, impliedRetain: boolean): void {
   w.open('variable', { name: v.name, address: v.location || undefined }, () => {
-    w.open('type', undefined, () => writeTypeText(w, v.type, writeType));
+    w.open('type', undefined, () => writeType(w, v.type));
     if (v.initial !== undefined && v.initial !== '') writeInitialValue(w, v.initial);
     if (impliedRetain) {
       w.open('addData', undefined, () =>

@@ -19,31 +19,30 @@ const CLASS_OF: Record<string, VarClass> = {
 
 const TYPE_ALIASES: Record<string, string> = { string: 'STRING', wstring: 'WSTRING' };
 
-/** The type text of a `<type>` (or returnType) element. */
+/**
+ * The type text of a `<type>` (or returnType) element. Anonymous arrays, structures, enumerations
+ * and subranges become type texts (`ARRAY[0..9] OF INT`, `STRUCT X : INT; END_STRUCT`,
+ * `(Idle, Run)`, `INT (0..100)`, plcopen/dataTypes.ts) that the engine resolves like named types.
+ */
 export function readType(typeEl: XmlElement | undefined, warn: Warn): string {
   const t = typeEl?.children[0];
   if (!t) return 'BOOL';
   if (t.name === 'derived') return t.attrs.name ?? 'BOOL';
-  if (t.name === 'array') {
-    const text = readTypeText(typeEl, warn); // an anonymous array: ARRAY[1..3] OF INT
-    if (text !== undefined) return text;
-  }
   // <string length="20"/>: STRING[20] (the declared length; values hold up to 126 characters).
   if (TYPE_ALIASES[t.name]) return t.attrs.length ? `${TYPE_ALIASES[t.name]!}[${t.attrs.length}]` : TYPE_ALIASES[t.name]!;
-  if (
-    t.name === 'array' ||
-    t.name === 'struct' ||
-    t.name === 'enum' ||
-    t.name === 'subrangeSigned' ||
-    t.name === 'subrangeUnsigned' ||
-    t.name === 'pointer'
-  ) {
+  if (ANONYMOUS.has(t.name)) {
+    const text = readTypeText(typeEl, warn);
+    if (text !== undefined) return text;
+  }
+  if (ANONYMOUS.has(t.name) || t.name === 'pointer') {
     warn(`a ${t.name} type is not supported by Rungsmith; the variable keeps the name of its base type`, t);
     const base = descendType(t);
     return base ?? t.name.toUpperCase();
   }
   return t.name.toUpperCase();
 }
+
+const ANONYMOUS = new Set(['array', 'struct', 'enum', 'subrangeSigned', 'subrangeUnsigned']);
 
 function descendType(el: XmlElement): string | undefined {
   const base = child(el, 'baseType')?.children[0];
