@@ -64,3 +64,31 @@ test('the tasks dialog edits interval and priority, adds a task running a second
   await sim.button('pause').click();
   expect(errors).toEqual([]);
 });
+
+test('the dialog says what runs in which tick; the simulator scans on the common tick, its Cycle read-only', async () => {
+  const schedule = () => page.getByTestId('tasks-schedule').textContent();
+  await page.getByTestId('tree-tasks-edit').click();
+  await page.getByTestId('tasks-dialog').waitFor();
+  expect(await schedule()).toBe("Tick 20 ms: MainTask runs every 2nd tick (40 ms); Task every tick (20 ms). The simulator's Cycle is this tick.");
+  await setField('task-cycle-1', '40');
+  await expect.poll(schedule).toBe("Tick 40 ms: MainTask runs every tick (40 ms); Task every tick (40 ms). The simulator's Cycle starts at this interval and can be changed there.");
+  await setField('task-cycle-1', '10');
+  await expect.poll(schedule).toBe("Tick 10 ms: MainTask runs every 4th tick (40 ms); Task every tick (10 ms). The simulator's Cycle is this tick.");
+  await page.getByTestId('tasks-close').click();
+
+  const cycle = page.getByTestId('sim-cycle');
+  await expect.poll(() => cycle.inputValue()).toBe('10');
+  expect(await cycle.getAttribute('readonly')).not.toBeNull();
+  // Eight scans from a cold restart are eight 10 ms ticks.
+  const sim = new SimPage(page);
+  await sim.button('reset').click();
+  await page.getByTestId('sim-step-count').fill('8');
+  await sim.button('step-n').click();
+  const state = () =>
+    page.evaluate(() => {
+      const s = (window.rungsmith as unknown as { simStore: { getState(): { scan: number; timeMs: number; cycleMs: number } } }).simStore.getState();
+      return `${s.scan} ${s.timeMs} ${s.cycleMs}`;
+    });
+  await expect.poll(state).toBe('8 70 10');
+  expect(errors).toEqual([]);
+});

@@ -1,8 +1,10 @@
 // The project's tasks as a PLC programmer configures them (CODESYS "Task configuration", Beremiz's
-// resource): name, cyclic interval, priority, and the program instances each task runs, in order.
+// resource): name, cyclic interval, priority, and the program instances each task runs, in order;
+// what runs in which tick of the simulator (taskSchedule: MATIEC's common tick).
 // Every change is checked first (taskProblems) and is one undo step; a refused change keeps the
 // field as typed with the reason beside it until it is fixed or the dialog is closed.
 import { useState } from 'react';
+import { describeSchedule, taskSchedule } from '../../engine/compile/taskSchedule';
 import type { Task } from '../../model/project';
 import { selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { taskProblems, type TaskProblem } from '../../store/taskCommands';
@@ -54,9 +56,13 @@ export function TasksDialog({ onClose }: { readonly onClose: () => void }) {
       }
     >
       <p id="rs-tasks-text" className="rs-tree-detail">
-        Each cyclic task runs its program instances in the order listed. The simulator runs every task&apos;s
-        programs each scan, task after task, at the first task&apos;s interval; the interval and priority
-        of the others go to the PLCopen export for the PLC.
+        Each cyclic task runs its program instances at its own interval, as MATIEC runs a resource: a scan
+        is one tick of the greatest common divisor of the intervals, and a task runs in the ticks that are a
+        multiple of its interval. In a tick, the instances run in the order declared (task after task, as
+        listed); the priority goes to the PLCopen export and reorders nothing.
+      </p>
+      <p className="rs-tree-detail" data-testid="tasks-schedule">
+        {scheduleText(problems.length === 0 ? tasks : project.tasks)}
       </p>
       {tasks.map((t, ti) => (
         // Keyed by content: an undo or a refused draft shows the fields as they now are.
@@ -213,4 +219,14 @@ export function TasksDialog({ onClose }: { readonly onClose: () => void }) {
       )}
     </ModalDialog>
   );
+}
+
+/** What runs when, in words: "Tick 10 ms: Fast runs every tick (10 ms); Slow every 3rd tick (30 ms)." */
+function scheduleText(tasks: readonly Task[]): string {
+  const s = taskSchedule(tasks);
+  if (s.tasks.length === 0) return 'No task runs a program yet.';
+  const cycle = s.multiRate
+    ? " The simulator's Cycle is this tick."
+    : " The simulator's Cycle starts at this interval and can be changed there.";
+  return `Tick ${s.tickMs} ms: ${describeSchedule(s)}.${cycle}`;
 }

@@ -1,5 +1,6 @@
 // Run/Pause/Step/Reset controls and the status line (mode, scan, PLC time, execution time).
 import { useEffect, useState } from 'react';
+import { taskSchedule } from '../../engine/compile/taskSchedule';
 import { useDocument, type DocumentState } from '../../store/documentStore';
 import type { SimState } from '../../store/simStore';
 import { SteppingBadge } from '../hardware/HardwareStepping';
@@ -18,8 +19,15 @@ const selectExecAvg = (s: SimState) => s.exec.avgMs;
 const selectExecMax = (s: SimState) => s.exec.maxMs;
 const selectOverruns = (s: SimState) => s.overruns;
 
-/** The project's cyclic task interval: the cycle a real PLC would run this program at. */
-const selectTaskCycle = (s: DocumentState): number | undefined => s.project.tasks[0]?.cycleMs;
+/**
+ * The project's cyclic task interval: the cycle a real PLC would run this program at; tasks at
+ * different intervals: their common tick (one scan per tick), which the Cycle field then only shows.
+ */
+const selectTaskCycle = (s: DocumentState): number | undefined => {
+  const schedule = taskSchedule(s.project.tasks);
+  return schedule.multiRate ? schedule.tickMs : s.project.tasks[0]?.cycleMs;
+};
+const selectMultiRate = (s: DocumentState): boolean => taskSchedule(s.project.tasks).multiRate;
 
 const MODE_LABEL = { stopped: 'Stopped', running: 'Running', paused: 'Paused', faulted: 'Faulted' } as const;
 
@@ -105,6 +113,7 @@ export function SimToolbar() {
 function CycleInput() {
   const sim = useSimStore();
   const cycle = useSim(selectCycle);
+  const fixed = useDocument(selectMultiRate);
   const [text, setText] = useState(String(cycle));
   useEffect(() => setText(String(cycle)), [cycle]);
   const commit = () => {
@@ -113,9 +122,11 @@ function CycleInput() {
     else setText(String(cycle));
   };
   return (
-    <label className="rs-sim-group" title="Cycle time: a scan starts every cycle (0 = as fast as possible)">
+    <label className="rs-sim-group" title={fixed
+      ? "Cycle time: the tasks run at different intervals, so a scan is their common tick (change the intervals in the Tasks dialog)"
+      : 'Cycle time: a scan starts every cycle (0 = as fast as possible)'}>
       <span className="rs-sim-unit">Cycle</span>
-      <input className="rs-sim-number" aria-label="Cycle time in ms" value={text} inputMode="numeric" data-testid="sim-cycle"
+      <input className="rs-sim-number" aria-label="Cycle time in ms" value={text} inputMode="numeric" data-testid="sim-cycle" readOnly={fixed}
         onChange={(e) => setText(e.target.value)} onBlur={commit} onKeyDown={(e) => e.key === 'Enter' && commit()} />
       <span className="rs-sim-unit">ms</span>
     </label>
