@@ -1,7 +1,8 @@
 // ST over variables of data types: struct members and array elements (constant indexes resolve
 // like LD operands; variable indexes give an `elem` access whose slot is computed at run time,
 // with a bounds check that faults, LD-E62), whole struct/array assignment and copies into struct
-// inputs (leaf by leaf), enum values (`Color#RED`, bare `RED`, stored as their index), and the
+// inputs (leaf by leaf), enum values (`Color#RED`, bare `RED` of a named or an anonymous
+// enumeration, stored as their index), and the
 // compile-time check of literals assigned to a subrange variable (LD-E61; MATIEC checks nothing at
 // run time, so neither does the engine).
 import { resolveType } from '../../model/dataTypes';
@@ -106,8 +107,10 @@ export class Places {
     if (e.k !== 'name' || !IDENTIFIER_RE.test(e.text) || this.symbols.lookup(e.text)) return undefined;
     if (!this.enums) {
       this.enums = new Map();
-      for (const dt of this.symbols.storage.types.dataTypes ?? [])
-        if (dt.def.kind === 'enum') dt.def.values.forEach((v, i) => this.enums!.has(v.toUpperCase()) || this.enums!.set(v.toUpperCase(), i));
+      const add = (values: readonly string[]) => values.forEach((v, i) => this.enums!.has(v.toUpperCase()) || this.enums!.set(v.toUpperCase(), i));
+      for (const dt of this.symbols.storage.types.dataTypes ?? []) if (dt.def.kind === 'enum') add(dt.def.values);
+      // Anonymous enumerations of the declarations (`State : (Idle, Run, Fault)`).
+      for (const v of this.symbols.storage.vars) if (v.dataType?.enumValues) add(v.dataType.enumValues);
     }
     return this.enums.get(e.text.toUpperCase());
   }
