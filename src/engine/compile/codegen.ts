@@ -354,13 +354,53 @@ function emitNetwork(em: Emitter, ir: NetworkIR, firstWord: number, idx: string)
     em.rails = rails;
     em.single = single;
   }
-  for (let w = 0; w * NETS_PER_WORD < ir.netCount; w++) {
+  packWords(em, live, ir.netCount, firstWord);
+  for (const k of ir.runLate ?? []) emitLate(em, k);
+  if (controls) L.push(`if (next !== ${idx} + 1) { S[0] = ${idx}; return next; }`);
+}
+
+/** Packs nets [0, count) minus rails into snapshot words `W[first + w]`. */
+function packWords(em: Emitter, live: readonly number[], count: number, firstWord: number): void {
+  for (let w = 0; w * NETS_PER_WORD < count; w++) {
     const bits = live
       .filter((i) => Math.floor(i / NETS_PER_WORD) === w)
       .map((i) => (i % NETS_PER_WORD ? `(n${i} << ${i % NETS_PER_WORD})` : `n${i}`));
-    L.push(`W[${em.p(firstWord + w)}] = ${bits.length ? bits.join(' | ') : '0'};`);
+    em.lines.push(`W[${em.p(firstWord + w)}] = ${bits.length ? bits.join(' | ') : '0'};`);
   }
-  if (controls) L.push(`if (next !== ${idx} + 1) { S[0] = ${idx}; return next; }`);
+}
+
+/**
+ * openplc profile: the late operations of network k (its blocks no coil needed), run at the end
+ * of its POU body. Network k's nets are read back from its power words (a late block may read a
+ * BOOL output computed by k's coils), updated, and written back for the power display.
+ */
+function emitLate(em: Emitter, k: number): void {
+  const { networks, words } = em.pc.program!;
+  const ir = networks[k]!;
+  const ops = ir.late ?? [];
+  const L = em.lines;
+  const rails = new Set(ir.railNets);
+  const live = Array.from({ length: ir.netCount }, (_, i) => i).filter((i) => !rails.has(i));
+  const saved = { rails: em.rails, single: em.single };
+  const single = singleWriterNets(ir, ops);
+  em.rails = rails;
+  em.single = single;
+  L.push(`{ // late blocks of network ${k + 1}`);
+  for (let w = 0; w * NETS_PER_WORD < ir.netCount; w++) {
+    const mine = live.filter((i) => Math.floor(i / NETS_PER_WORD) === w);
+    if (!mine.length) continue;
+    L.push(`const w${w} = W[${em.p(words[k]! + w)}];`);
+    L.push(`let ${mine.map((i) => `n${i} = (w${w} >>> ${i % NETS_PER_WORD}) & 1`).join(', ')};`);
+  }
+  for (const op of ops) {
+    emitOp(em, op);
+    em.rails = rails;
+    em.single = single;
+  }
+  packWords(em, live, ir.netCount, words[k]!);
+  L.push('}');
+  em.rails = saved.rails;
+  em.single = saved.single;
 }
 
 /** The networks of a straight body, each in a block of its own, marked as run in this scan. */
@@ -450,6 +490,8 @@ function emitOp(em: Emitter, op: Op): void {
       if (op.outNet !== op.inNet) L.push(em.setNet(op.outNet, i));
       return;
     }
+    case 'pass':
+      return void L.push(em.setNet(op.outNet, em.net(op.inNet)));
     case 'jump':
       return void L.push(`if (${em.net(op.inNet)} && go === 0) { go = 1; next = ${em.p(op.target)}; }`);
     case 'return':

@@ -26,13 +26,18 @@ export interface EdgeOwner {
 export class EdgeTable {
   readonly owners: EdgeOwner[] = [];
   private readonly byKey = new Map<string, number>();
-  allocate(el: LdElement, pou: string, network: number, instance: string | undefined): number {
-    const key = `${instance ?? ''}/${el.id}`;
+  /**
+   * `trace` (openplc profile, LD-SEMANTICS.md section 6): the k-th reading of the same |P| |N|
+   * contact in one scan (k >= 1) has a memory of its own, as each R_TRIG Beremiz generates.
+   */
+  allocate(el: LdElement, pou: string, network: number, instance: string | undefined, trace = 0): number {
+    const id = trace > 0 ? `${el.id}#${trace + 1}` : el.id;
+    const key = `${instance ?? ''}/${id}`;
     const hit = this.byKey.get(key);
     if (hit !== undefined) return hit;
     const symbol = el.kind === 'contact' ? `|${el.contact}|` : el.kind === 'coil' ? `(${el.coil})` : '?';
     const operand = el.kind === 'contact' || el.kind === 'coil' ? el.variable.trim() : '';
-    this.owners.push({ elementId: el.id, network, symbol, operand, pou, ...(instance ? { instance } : {}) });
+    this.owners.push({ elementId: id, network, symbol, operand, pou, ...(instance ? { instance } : {}) });
     this.byKey.set(key, this.owners.length - 1);
     return this.owners.length - 1;
   }

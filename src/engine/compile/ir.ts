@@ -50,6 +50,11 @@ export type Op =
       readonly outNet: number;
       readonly edge?: number;
     }
+  /**
+   * openplc profile: carries a value that is not re-read into an OR join of a later reading (a
+   * block output computed once, or a coil's left side passed on by the coil), `out |= in`.
+   */
+  | { readonly op: 'pass'; readonly node: number; readonly inNet: number; readonly outNet: number }
   | { readonly op: 'jump'; readonly node: number; readonly inNet: number; readonly target: number }
   | { readonly op: 'return'; readonly node: number; readonly inNet: number }
   | {
@@ -129,4 +134,12 @@ export interface NetworkIR {
   readonly vlinkNets: readonly number[];
   /** Constants used by the generated code (literals that are not plain numbers/booleans). */
   readonly constants: readonly Value[];
+  /**
+   * openplc profile (LD-SEMANTICS.md section 6): this network's blocks no coil needed, run after
+   * every coil of the POU body, by the body's last network (`runLate`). Their nets are this
+   * network's (its power words are read, updated and written back there).
+   */
+  readonly late?: readonly Op[];
+  /** openplc profile: networks (program indexes) whose `late` operations run at the end of this one. */
+  readonly runLate?: readonly number[];
 }

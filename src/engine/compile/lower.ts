@@ -1,6 +1,6 @@
 // One network: graph, structural rules, evaluation order, then each element's operands and types
 // (LD-R07, LD-R08, LD-R10, LD-R11, LD-R12, LD-R13) and the ordered operations for code generation.
-import type { CoilElement, ContactElement } from '../../model/elements';
+import type { CoilElement, ContactElement, JumpElement } from '../../model/elements';
 import type { Network } from '../../model/project';
 import type { CoilFamily, PouContext } from './context';
 import { buildGraph, type NetworkGraph } from './graph';
@@ -10,6 +10,7 @@ import { describeElement, type Reporter } from './report';
 import { checkStructure } from './structure';
 import type { Access } from './symbols';
 import { lowerBox } from './box';
+import { startGenerated } from './generated';
 
 /** Maps graph nets to what the generated code reads for them. */
 export class NetMap {
@@ -27,8 +28,21 @@ export class NetMap {
     }
   }
 
+  /**
+   * openplc profile (generated.ts): the locals of the reading being generated, which take
+   * precedence; every reading of a contact gets locals of its own.
+   */
+  overlay: ReadonlyMap<number, number> | undefined;
+
+  /** A new power-flow local, bound to no graph net (openplc readings). */
+  fresh(): number {
+    return this.count++;
+  }
+
   /** The power-flow local for a graph net (allocated on first use). */
   powerNet(net: number): number {
+    const over = this.overlay?.get(net);
+    if (over !== undefined) return over;
     let id = this.power.get(net);
     if (id === undefined) {
       id = this.count++;
@@ -77,12 +91,26 @@ const FAMILY: Record<CoilElement['coil'], CoilFamily> = {
   RM: 'latch',
 };
 
+/** A network being lowered: `finish` gives its IR once every network of the POU body is started. */
+export interface PendingNetwork {
+  finish(): NetworkIR | undefined;
+}
+
 export function lowerNetwork(
   ctx: PouContext,
   network: Network,
   index: number,
   r: Reporter,
 ): NetworkIR | undefined {
+  return startNetwork(ctx, network, index, r).finish();
+}
+
+/**
+ * Starts lowering a network. Profile `openplc`: in the order Beremiz's generator runs it
+ * (generated.ts), whose blocks no coil needs are lowered by `finish`, after every network of the
+ * body has lowered its coils; `iec`: completely, here.
+ */
+export function startNetwork(ctx: PouContext, network: Network, index: number, r: Reporter): PendingNetwork {
   const g = buildGraph(network, ctx.symbols.library);
   const structureOk = checkStructure(network, g, r);
   let order = structureOk ? evaluationOrder(g) : undefined;
@@ -91,6 +119,20 @@ export function lowerNetwork(
       'LD-R01',
       'an element feeds its own input through a wire going back to the left; power must flow left to right',
     );
+  if (order && ctx.profile === 'openplc') return startGenerated(ctx, network, index, r, g);
+  const ir = lowerInOrder(ctx, network, index, r, g, structureOk, order);
+  return { finish: () => ir };
+}
+
+function lowerInOrder(
+  ctx: PouContext,
+  network: Network,
+  index: number,
+  r: Reporter,
+  g: NetworkGraph,
+  structureOk: boolean,
+  order: number[] | undefined,
+): NetworkIR | undefined {
   if (!order) {
     order = g.nodes
       .map((_, i) => i)
@@ -147,30 +189,8 @@ export function lowerNetwork(
         break;
       }
       case 'jump': {
-        const target = ctx.labels.get(el.target.trim().toUpperCase());
-        if (el.target.trim() === '')
-          r.error(
-            'LD-R07',
-            `${describeElement(el)} names no label; write the label of the network to continue at`,
-            el,
-          );
-        else if (target === undefined)
-          r.error(
-            'LD-R07',
-            `${describeElement(el)} has no target: no network of ${ctx.pouName} is labelled "${el.target}"`,
-            el,
-          );
-        else {
-          // LD-W03: a jump back (to its own network or an earlier one) runs those networks again in
-          // the same scan, looping until its condition goes FALSE (the watchdog stops an endless one).
-          if (target - ctx.first <= index)
-            r.warning(
-              'LD-W03',
-              `${describeElement(el)} jumps back to network ${target - ctx.first + 1} ("${el.target.trim()}"): legal, but networks ${target - ctx.first + 1} to ${index + 1} run again in the same scan until the jump's condition goes FALSE; make sure it does, or the watchdog stops the PLC`,
-              el,
-            );
-          ops.push({ op: 'jump', node: node.index, inNet, target });
-        }
+        const target = jumpTarget(ctx, el, index, r);
+        if (target !== undefined) ops.push({ op: 'jump', node: node.index, inNet, target });
         break;
       }
       case 'return':
@@ -225,18 +245,44 @@ export function lowerNetwork(
   };
 }
 
+/** The network a jump goes to (LD-R07: its label exists); `back`: warn when it jumps back (LD-W03). */
+export function jumpTarget(ctx: PouContext, el: JumpElement, index: number, r: Reporter, back = true): number | undefined {
+  const target = ctx.labels.get(el.target.trim().toUpperCase());
+  if (el.target.trim() === '')
+    r.error(
+      'LD-R07',
+      `${describeElement(el)} names no label; write the label of the network to continue at`,
+      el,
+    );
+  else if (target === undefined)
+    r.error(
+      'LD-R07',
+      `${describeElement(el)} has no target: no network of ${ctx.pouName} is labelled "${el.target}"`,
+      el,
+    );
+  // LD-W03: a jump back (to its own network or an earlier one) runs those networks again in
+  // the same scan, looping until its condition goes FALSE (the watchdog stops an endless one).
+  else if (back && target - ctx.first <= index)
+    r.warning(
+      'LD-W03',
+      `${describeElement(el)} jumps back to network ${target - ctx.first + 1} ("${el.target.trim()}"): legal, but networks ${target - ctx.first + 1} to ${index + 1} run again in the same scan until the jump's condition goes FALSE; make sure it does, or the watchdog stops the PLC`,
+      el,
+    );
+  return target;
+}
+
 /** The edge memory of a |P| |N| contact or (P) (N) coil; a FUNCTION has none to keep (LD-E22). */
-function edgeOf(ctx: PouContext, el: ContactElement | CoilElement, network: number, r: Reporter): number {
-  if (ctx.pouKind === 'FUNCTION')
+export function edgeOf(ctx: PouContext, el: ContactElement | CoilElement, network: number, r: Reporter, trace = 0): number {
+  if (ctx.pouKind === 'FUNCTION' && trace === 0)
     r.error(
       'LD-E22',
       `${describeElement(el)} detects an edge, which a FUNCTION cannot: a function keeps nothing between calls, so the memory of the previous value would be lost; use a FUNCTION_BLOCK`,
       el,
     );
-  return ctx.edges.allocate(el, ctx.pouName, network, ctx.instance);
+  return ctx.edges.allocate(el, ctx.pouName, network, ctx.instance, trace);
 }
 
-function contactOperand(ctx: PouContext, el: ContactElement, r: Reporter): Access | undefined {
+export function contactOperand(ctx: PouContext, el: ContactElement, r: Reporter): Access | undefined {
   const edge = el.contact === 'P' || el.contact === 'N';
   if (el.variable.trim() === '') {
     r.error('LD-R08', `${describeElement(el)} names no variable; write a BOOL variable on it`, el);
@@ -269,7 +315,7 @@ function contactOperand(ctx: PouContext, el: ContactElement, r: Reporter): Acces
   return res.access;
 }
 
-function coilOperand(ctx: PouContext, el: CoilElement, network: number, r: Reporter): Access | undefined {
+export function coilOperand(ctx: PouContext, el: CoilElement, network: number, r: Reporter): Access | undefined {
   if (el.variable.trim() === '') {
     r.error('LD-R08', `${describeElement(el)} names no variable; write a BOOL variable on it`, el);
     return undefined;

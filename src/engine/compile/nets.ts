@@ -1,14 +1,15 @@
 // Facts about a network's power-flow nets that code generation relies on.
-import type { NetworkIR } from './ir';
+import type { NetworkIR, Op } from './ir';
 
 /** Nets written exactly once, unconditionally (function outputs are written only when EN is ON). */
-export function singleWriterNets(ir: NetworkIR): Set<number> {
+export function singleWriterNets(ir: NetworkIR, ops: readonly Op[] = ir.ops): Set<number> {
   const writes = new Map<number, number>();
   const add = (net: number | undefined, n = 1) => {
     if (net !== undefined) writes.set(net, (writes.get(net) ?? 0) + n);
   };
-  for (const op of ir.ops) {
-    if (op.op === 'contact') {
+  for (const op of ops) {
+    if (op.op === 'pass') add(op.outNet);
+    else if (op.op === 'contact') {
       add(op.outNet);
       add(op.ownNet);
     } else if (op.op === 'coil' && op.outNet !== op.inNet) add(op.outNet);

@@ -7,7 +7,7 @@ import { blockLibrary } from '../../model/library';
 import { newPouContext, type CallBuilder, type CoilFamily, type PouContext, type SharedParts } from './context';
 import type { NetworkIR } from './ir';
 import { lowerChart } from '../sfc/chart';
-import { lowerNetwork } from './lower';
+import { startNetwork } from './lower';
 import { lowerTextBody, refuseBody } from '../st/body';
 import { Reporter } from './report';
 import { buildSymbols, type SymbolTable } from './symbols';
@@ -130,11 +130,11 @@ export function lowerPouBody(
   });
 
   const ctx = newPouContext(project, pou, profile, symbols, labels, place);
-  const networks = pou.networks.map((net, i) => {
+  const started = pou.networks.map((net, i) => {
     const r = new Reporter(out, pou.name, i, net.label?.trim());
     if (net.elements.length === 0 && net.vlinks.length === 0) {
       r.warning('LD-W01', 'this network is empty; draw a rung in it or delete it');
-      return {
+      const ir: NetworkIR = {
         index: place.first + i,
         ops: [],
         netCount: 0,
@@ -143,10 +143,17 @@ export function lowerPouBody(
         vlinkNets: [],
         constants: [],
         ...(net.label ? { label: net.label } : {}),
-      } satisfies NetworkIR;
+      };
+      return { finish: () => ir };
     }
-    return lowerNetwork(ctx, net, i, r);
+    return startNetwork(ctx, net, i, r);
   });
+  // Profile openplc: each network's blocks no coil needed are lowered after every network's coils,
+  // and run at the end of the body's last network (generated.ts).
+  const lowered = started.map((p) => p.finish());
+  const lateOf = lowered.flatMap((ir) => (ir?.late ? [ir.index] : []));
+  const last = lowered[lowered.length - 1];
+  const networks = lateOf.length && last ? [...lowered.slice(0, -1), { ...last, runLate: lateOf }] : lowered;
 
   // LD-R12: a variable written by coils of different kinds.
   for (const [v, families] of ctx.coilWrites) {

@@ -24,6 +24,8 @@ function arcOf(op: Op): Arc {
       };
     case 'coil':
       return { op, element: op.node, inNets: op.inNet >= 0 ? [op.inNet] : [], outNets: op.outNet !== op.inNet ? [op.outNet] : [] };
+    case 'pass':
+      return { op, element: op.node, inNets: [op.inNet], outNets: [op.outNet] };
     case 'jump':
     case 'return':
       return { op, element: op.node, inNets: op.inNet >= 0 ? [op.inNet] : [], outNets: [] };
@@ -70,7 +72,8 @@ const graphs = new WeakMap<NetworkIR, NetworkGraph>();
 export function networkGraph(ir: NetworkIR): NetworkGraph {
   let g = graphs.get(ir);
   if (g) return g;
-  const arcs = ir.ops.map(arcOf);
+  // openplc: a network's late blocks (run at the end of its POU body) drive its nets too.
+  const arcs = [...ir.ops, ...(ir.late ?? [])].map(arcOf);
   const drivers = new Map<number, Arc[]>();
   for (const arc of arcs)
     for (const net of arc.outNets) {
@@ -106,7 +109,9 @@ export function pathsTo(g: NetworkGraph, net: number, limit = MAX_PATHS): PowerP
     }
     for (const arc of g.drivers.get(n) ?? []) {
       const own = arc.op.op === 'contact' && arc.op.ownNet !== undefined ? arc.op.ownNet : n;
-      const step = [{ arc, outNet: own }, ...tail];
+      // openplc: a block output passed into a join is the block's own step (it drives the input net).
+      const sameBlock = arc.op.op === 'pass' && (g.drivers.get(arc.inNets[0]!) ?? []).some((a) => a.element === arc.element);
+      const step = sameBlock ? tail : [{ arc, outNet: own }, ...tail];
       if (arc.inNets.length === 0) out.push(step);
       else for (const i of arc.inNets) walk(i, step, depth + 1);
       if (out.length >= limit) return;
@@ -133,7 +138,7 @@ export function accessKey(a: Access): string | undefined {
 /** Accesses an operation writes (coil operand, outputs assigned to variables, FB pins it sets by executing). */
 export function writesOf(op: Op): { readonly access?: Access; readonly fb?: number }[] {
   if (op.op === 'coil') return [{ access: op.dst }];
-  if (op.op === 'contact' || op.op === 'jump' || op.op === 'return') return [];
+  if (op.op === 'contact' || op.op === 'pass' || op.op === 'jump' || op.op === 'return') return [];
   const b = op as unknown as BoxLike & { readonly op: string; readonly fb?: number };
   const outs = [...(b.out ? [b.out] : []), ...(b.outs ?? []).map(outIR), ...(b.eno ? [b.eno] : [])];
   return [...(b.op === 'fb' && b.fb !== undefined ? [{ fb: b.fb }] : []), ...outs.flatMap((o) => (o.dst ? [{ access: o.dst }] : []))];
