@@ -294,7 +294,9 @@ export function useCanvasPointer(
   };
 
   const onDoubleClick = (e: MouseEvent<HTMLDivElement>) => {
-    if (!(e.target instanceof HTMLCanvasElement)) return;
+    // The press captured the pointer on this layer, so Chromium sends the click and the
+    // double-click to the layer itself, not to the canvas under it; a header field never counts.
+    if (!(e.target instanceof HTMLCanvasElement) && e.target !== e.currentTarget) return;
     const { layout, networks } = view.current;
     const hit = hitTest(layout, networks, contentPoint(e));
     if (hit.area !== 'grid') return;
