@@ -100,6 +100,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
         }
       : {};
   const warnings: ImportIssue[] = [];
+  const notes: ImportIssue[] = [];
   let currentPou: string | undefined;
   const warn = (message: string, el?: XmlElement) =>
     warnings.push({ ...at(el), ...(currentPou ? { pou: currentPou } : {}), message });
@@ -352,9 +353,11 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     const g = globalTypes.get(x.name.toUpperCase());
     const issue = (message: string) => warnings.push({ ...at(x.el), pou: x.pou, message });
     if (!g)
-      issue(
-        `VAR_EXTERNAL "${x.name}" of POU "${x.pou}" names no global variable of the configuration or its resources`,
-      );
+      notes.push({
+        ...at(x.el),
+        pou: x.pou,
+        message: `${x.name} is declared outside the file (VAR_EXTERNAL of ${x.pou}); the simulator keeps it as a global ${x.type}, and export writes the file back without it`,
+      });
     else if (g.type.toUpperCase() !== x.type.toUpperCase())
       issue(`VAR_EXTERNAL "${x.name}" of POU "${x.pou}" is ${x.type} but the global variable is ${g.type}`);
   }
@@ -394,7 +397,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     ...(userTypes.types.length ? { dataTypes: userTypes.types } : {}),
     extensions: { plcopen: keep },
   };
-  const report: ImportReport = { namespace: ns || '(none)', producer, pous: reportPous, warnings };
+  const report: ImportReport = { namespace: ns || '(none)', producer, pous: reportPous, warnings, notes };
   return { ok: true, project, report };
 }
 

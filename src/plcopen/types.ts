@@ -33,6 +33,11 @@ export interface ImportReport {
   readonly pous: readonly { readonly name: string; readonly networks: number; readonly from: string }[];
   /** Things dropped or changed on the way in. */
   readonly warnings: readonly ImportIssue[];
+  /**
+   * What the import did that loses nothing but a user should know: wires drawn through connector
+   * pairs (one line per network), VAR_EXTERNALs whose global is declared outside the file.
+   */
+  readonly notes: readonly ImportIssue[];
 }
 
 export type ImportResult =

@@ -6,6 +6,7 @@ import { elementaryOf, leafPaths } from '../model/dataTypes';
 import { parseLocation } from '../model/iecTypes';
 import { blockLibrary } from '../model/library';
 import type { Pou, Project, Variable } from '../model/project';
+import { globalsWithOutside } from '../model/outsideGlobals';
 import type { SimLayout, SimVariable, SimView, VariableRole } from './protocol';
 import { programInstances, type ProgramInstance } from './runTarget';
 
@@ -184,7 +185,7 @@ export function readableNames(project: Project, pou: Pou): SimVariable[] {
       }
     }
   };
-  // A VAR_EXTERNAL names a global, listed once with the globals.
-  add('', [...pou.variables.filter((x) => x.varClass !== 'external'), ...project.globals], 0);
+  // A VAR_EXTERNAL names a global, listed once with the globals (also one declared outside the project).
+  add('', [...pou.variables.filter((x) => x.varClass !== 'external'), ...globalsWithOutside(project)], 0);
   return out;
 }

@@ -31,10 +31,7 @@ const SCANS = 200;
 const NOT_YET: Readonly<Record<string, string>> = {
   // Being worked on (issue 12, other parts):
   'beremiz__legacy_tc6v10_test_master_DS401GUI.xml':
-    'its only PROGRAM, MAIN_TEST (legacy v1.0 FBD, read as LD), passes UINT# literals to USINT pins (LD-E03) and calls its TOF t1 as a TP (LD-R10); it calls Test_SFC, a legacy v1.0 chart (LD-E40)',
-  // Facts of the files (the corpus test's EXPLAINED rules): they run only with their vendor's runtime.
-  'openplc-editor__Arduino_7_Segments.xml':
-    "the VAR_EXTERNAL current_count is declared by the file's Arduino sketch, not by the file (LD-E16)",
+    'its only PROGRAM, MAIN_TEST (legacy v1.0 FBD, read as LD), calls Test_SFC, a legacy v1.0 chart (LD-E40)',
 };
 
 /** Programs traced, and those whose trace changes over the scans (the stimulus reaches them). */

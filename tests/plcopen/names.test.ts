@@ -126,24 +126,28 @@ describe('configuration and resource globals, used through VAR_EXTERNAL', () => 
 describe('VAR_EXTERNAL without a matching global', () => {
   const { project, report } = imported('names-external-missing.xml');
 
-  it('the import report and the check name it, located', () => {
-    expect(report.warnings.map((w) => [w.line, w.pou, w.message])).toEqual([
+  it('the import report and the check name them, located: Motor runs as a global declared outside the file, Speed is an error', () => {
+    expect(report.notes.map((w) => [w.line, w.pou, w.message])).toEqual([
       [
         10,
         'Main',
-        'VAR_EXTERNAL "Motor" of POU "Main" names no global variable of the configuration or its resources',
+        'Motor is declared outside the file (VAR_EXTERNAL of Main); the simulator keeps it as a global BOOL, and export writes the file back without it',
       ],
+    ]);
+    expect(report.warnings.map((w) => [w.line, w.pou, w.message])).toEqual([
       [11, 'Main', 'VAR_EXTERNAL "Speed" of POU "Main" is DINT but the global variable is INT'],
     ]);
-    const errors = checkProject(project).filter((d) => d.rule === 'LD-E16');
-    expect(errors.map((d) => [d.severity, d.pou, d.network, d.message])).toEqual([
+    const found = checkProject(project).filter((d) => d.rule === 'LD-E16' || d.rule === 'LD-W16');
+    expect(found.map((d) => [d.rule, d.severity, d.pou, d.network, d.message])).toEqual([
       [
-        'error',
+        'LD-W16',
+        'warning',
         'Main',
         -1,
-        'the VAR_EXTERNAL "Motor" names no global variable; declare "Motor" in the global variables',
+        'Motor is declared outside the project (VAR_EXTERNAL, no global of that name); the simulator keeps it as a global BOOL, which you can write and force in the watch table',
       ],
       [
+        'LD-E16',
         'error',
         'Main',
         -1,

@@ -115,6 +115,12 @@ function ImportReportDialog() {
       ) : (
         <p data-testid="plcopen-warnings">Nothing was dropped or changed.</p>
       )}
+      {report.notes.length ? (
+        <>
+          <h3>Notes (nothing lost)</h3>
+          <IssueList issues={report.notes} testId="plcopen-notes" />
+        </>
+      ) : null}
     </ModalDialog>
   );
 }

@@ -4,6 +4,7 @@ import { useMemo } from 'react';
 import { useDocument, selectProject } from '../../store/documentStore';
 import type { SimState } from '../../store/simStore';
 import { findPou, readableNames } from '../../sim/layout';
+import { globalsWithOutside } from '../../model/outsideGlobals';
 import { programInstances, runOptions } from '../../sim/runTarget';
 import type { SimVariable } from '../../sim/protocol';
 import { useSim } from './simContext';
@@ -18,7 +19,7 @@ export function useWatchCandidates(): readonly SimVariable[] {
     // What Run will run: the task's program, or each program instance of a configuration by prefix.
     const target = runOptions(project);
     if (target.configuration) {
-      const globals = new Set(project.globals.map((g) => g.name.toUpperCase()));
+      const globals = new Set(globalsWithOutside(project).map((g) => g.name.toUpperCase()));
       const names = new Map<string, SimVariable>();
       for (const inst of programInstances(project)) {
         const pou = findPou(project, inst.pou);

@@ -9,14 +9,14 @@ import {
 import type { BoxElement } from '../../model/elements';
 import { resolveFunction } from '../library/functions';
 import { isUntypedLiteral, parseLiteral } from '../values/literals';
-import { canWiden, defaultValue } from '../values/types';
+import { canWiden, defaultValue, normalize, typeRange, type SizedType } from '../values/types';
 import type { PouContext } from './context';
 import type { GraphNode } from './graph';
 import type { ArgIR, Op, OutIR, Source } from './ir';
 import { accessWords, type NetMap } from './lower';
 import { describeElement, type Reporter } from './report';
 import { storeOf, type Access, type UfbSymbol } from './symbols';
-import type { PlacedPin } from '../../model/boxLayout';
+import { boxLayoutFor, type BoxLayout, type PlacedPin } from '../../model/boxLayout';
 import { isInOutPin } from '../../model/library';
 import { lowerUserCall } from './userCall';
 import { aggregatePinShape, lowerAggregateInput, type AggValue } from './aggregatePins';
@@ -54,9 +54,9 @@ export function lowerBox(
   r: Reporter,
 ): Op | undefined {
   const el = node.el as BoxElement;
-  const layout = node.layout;
   const name = describeElement(el);
-  if (!layout) {
+  const layout = node.layout && calledAs(ctx, node, nets, name, r);
+  if (!node.layout) {
     const program = ctx.project.pous.find(
       (p) => p.kind === 'PROGRAM' && p.name.toUpperCase() === el.blockType.trim().toUpperCase(),
     );
@@ -74,6 +74,7 @@ export function lowerBox(
       );
     return undefined;
   }
+  if (!layout) return undefined; // LD-R10: the box's type does not fit its instance's (calledAs)
   const sig = layout.signature;
   const isFb = sig.kind === 'fb';
   const lib = ctx.symbols.library;
@@ -127,7 +128,7 @@ export function lowerBox(
         `${name}: the instance "${inst}" is not declared; add a variable "${inst}" of type ${sig.name}`,
         el,
       );
-    else if ((sym.kind !== 'fb' && sym.kind !== 'ufb') || sym.type.toUpperCase() !== sig.name.toUpperCase())
+    else if (sym.kind !== 'fb' && sym.kind !== 'ufb')
       r.error(
         'LD-R10',
         `${name}: "${inst}" is declared as ${sym.kind === 'ref' ? sym.access.type : sym.type}, not ${sig.name}`,
@@ -198,6 +199,17 @@ export function lowerBox(
         literals: true,
         implicitLocations: true,
       });
+      const loose = !res.ok && expected ? foreignIntLiteral(operand, expected) : undefined;
+      if (loose) {
+        r.warning(
+          'LD-W03',
+          `input ${pin.name} of ${name}: ${operand} is typed ${loose.from} but the input is ${expected}; its value ${loose.text} fits, so the simulator passes it, but Beremiz and OpenPLC refuse this; write ${loose.text} or ${expected}#${loose.text}`,
+          el,
+        );
+        info.src = { from: 'access', access: loose.access };
+        info.type = expected;
+        continue;
+      }
       if (!res.ok) {
         r.error(res.unknown ? 'LD-E02' : 'LD-E03', `input ${pin.name} of ${name}: ${res.message}`, el);
         continue;
@@ -466,4 +478,84 @@ export function describeSource(src: Source): string {
   if (src.from === 'power') return 'its line';
   if (src.from === 'data') return 'the wired value';
   return accessWords(src.access);
+}
+
+/**
+ * The layout a box is called with. An FB box whose type differs from its instance's declared type
+ * (a box typed TP on a TOF instance t1): Beremiz and OpenPLC call an FB by its instance name only
+ * (`t1(IN := ..., PT := ...)`, outputs read as `t1.Q`), so MATIEC compiles the call against the
+ * declared type. It runs as the declared type (LD-R10 warning) when every pin the box wires or
+ * names exists on the declared type with a compatible type; otherwise LD-R10 error, undefined. The
+ * canvas keeps the file's box (its type and pins), which is what the file shows in Beremiz.
+ */
+function calledAs(ctx: PouContext, node: GraphNode, nets: NetMap, name: string, r: Reporter): BoxLayout | undefined {
+  const el = node.el as BoxElement;
+  const layout = node.layout!;
+  const sig = layout.signature;
+  const inst = (el.instance ?? '').trim();
+  if (sig.kind !== 'fb' || !inst) return layout;
+  const sym = ctx.symbols.lookup(inst);
+  if (!sym || (sym.kind !== 'fb' && sym.kind !== 'ufb') || sym.type.toUpperCase() === sig.name.toUpperCase()) return layout;
+  const declared = ctx.symbols.library.signature(sym.type);
+  const declaredLayout = declared?.kind === 'fb' ? boxLayoutFor(declared.name, undefined, ctx.symbols.library, el.executionControl) : undefined;
+  const used = (pins: readonly PlacedPin[], side: 'inputs' | 'outputs', rec: Readonly<Record<string, string>>) =>
+    pins.filter((pin) => {
+      const t = node[side].find((x) => x.pin === pin.name);
+      return (t !== undefined && nets.isWired(t.net)) || Object.keys(rec).some((k) => k.toUpperCase() === pin.name.toUpperCase() && rec[k]!.trim());
+    });
+  const missing: string[] = [];
+  const fit = (pins: readonly PlacedPin[], theirs: readonly PlacedPin[] | undefined, input: boolean): PlacedPin[] => {
+    const out: PlacedPin[] = [];
+    for (const pin of pins) {
+      const other = theirs?.find((p) => p.name.toUpperCase() === pin.name.toUpperCase());
+      const ok =
+        other &&
+        (other.type === pin.type ||
+          (isElementaryType(pin.type) &&
+            isElementaryType(other.type) &&
+            (input ? canWiden(pin.type, other.type) : canWiden(other.type, pin.type))));
+      if (!ok) missing.push(`${pin.name}${other ? ` (${other.type} there)` : ''}`);
+      else out.push({ ...other, rowOffset: pin.rowOffset });
+    }
+    return out;
+  };
+  const usedIn = used(layout.inputs, 'inputs', el.inputs);
+  const usedOut = used(layout.outputs, 'outputs', el.outputs);
+  const inputs = fit(usedIn, declaredLayout?.inputs, true);
+  const outputs = fit(usedOut, declaredLayout?.outputs, false);
+  if (!declaredLayout || missing.length) {
+    r.error(
+      'LD-R10',
+      `${name}: "${inst}" is declared as ${sym.type}, not ${sig.name}${declaredLayout ? `, and ${sym.type} has no ${missing.join(', ')} as the box wires` : ''}; make the box a ${sym.type} or declare "${inst}" as ${sig.name}`,
+      el,
+    );
+    return undefined;
+  }
+  r.warning(
+    'LD-R10',
+    `the box says ${sig.name} but ${inst} is declared ${declared!.name}; Beremiz/OpenPLC call ${inst} as a ${declared!.name} and so does the simulator`,
+    el,
+  );
+  // The box's own pins (where its lines attach), typed as the declared type's; pins the box does not
+  // use are left out of the call (an FB input left out keeps the instance's value).
+  return { ...layout, signature: declared!, inputs, outputs };
+}
+
+/**
+ * LD-W03: a typed literal of another integer type whose value fits the input's type (UINT#3 on a
+ * USINT input). IEC and MATIEC refuse it, CODESYS-era tools accepted it; the value is passed.
+ */
+function foreignIntLiteral(
+  text: string,
+  expected: ElementaryType,
+): { from: ElementaryType; text: string; access: Access } | undefined {
+  const ints = GENERIC_MEMBERS.ANY_INT;
+  if (!ints.includes(expected) || !/^[A-Za-z_][A-Za-z0-9_]*#/.test(text.trim())) return undefined;
+  const lit = parseLiteral(text);
+  if (!lit.ok || !ints.includes(lit.type) || lit.type === expected) return undefined;
+  const v = BigInt(lit.value as number | bigint);
+  const { min, max } = typeRange(expected as SizedType);
+  if (v < min || v > max) return undefined; // does not fit: LD-E03
+  const plain = String(v);
+  return { from: lit.type, text: plain, access: { kind: 'const', type: expected, value: normalize(expected, lit.value), text: plain } };
 }

@@ -17,6 +17,7 @@ import {
   type Value,
 } from '../../model/iecTypes';
 import type { Pou, Project, Variable } from '../../model/project';
+import { globalsWithOutside, outsideGlobals } from '../../model/outsideGlobals';
 import { type Dim } from '../../model/dataTypes';
 import { declareDataTyped, describeNode, elementAt, memberOf, type AggNode, type AggSymbol, type IndexTerm } from './aggregates';
 import { parseLiteral } from '../values/literals';
@@ -618,14 +619,14 @@ export function buildSymbols(
   for (const v of pou.variables) if (v.varClass !== 'external') table.declare(v, false, r, v.varClass === 'temp');
   if (pou.kind === 'FUNCTION' && !pou.variables.some((v) => v.name.toUpperCase() === pou.name.toUpperCase()))
     table.declare({ name: pou.name, type: pou.returnType ?? 'BOOL', varClass: 'output', retain: false, comment: '' }, false, r);
-  for (const v of project.globals) table.declare(v, true, globalsReporter);
+  for (const v of globalsWithOutside(project)) table.declare(v, true, globalsReporter);
   for (const v of pou.variables) if (v.varClass === 'external') checkExternal(table, project, pou, v, r);
   return table;
 }
 
 /** Declares the project's globals into a program's storage (once per program). */
 export function declareGlobals(table: SymbolTable, project: Project, r: Reporter): void {
-  for (const v of project.globals) table.declare(v, true, r);
+  for (const v of globalsWithOutside(project)) table.declare(v, true, r);
 }
 
 function checkExternal(table: SymbolTable, project: Project, pou: Pou, decl: Variable, r: Reporter): void {
@@ -640,14 +641,21 @@ function checkExternal(table: SymbolTable, project: Project, pou: Pou, decl: Var
   }
   const global = project.globals.find((g) => g.name.toUpperCase() === key);
   if (!global) {
-    r.error('LD-E16', `${what} names no global variable; declare "${decl.name}" in the global variables`);
-    return;
+    // LD-W16: declared outside the project (a board's sketch, another file); kept as a global (outsideGlobals).
+    const kept = outsideGlobals(project).find((g) => g.name.trim().toUpperCase() === key);
+    if (kept)
+      r.warning(
+        'LD-W16',
+        `${decl.name} is declared outside the project (VAR_EXTERNAL, no global of that name); the simulator keeps it as a global ${kept.type}${kept.initial ? ` starting at ${kept.initial}` : ''}, which you can write and force in the watch table`,
+      );
+    if (!kept || kept.type.trim().toUpperCase() === decl.type.trim().toUpperCase()) return;
   }
+  const globalName = global?.name ?? decl.name;
   const sym = table.lookup(key);
   if (!sym || sym.kind === 'ref') return; // the global's own declaration is in error (reported with the globals)
   const declared = declaredElementaryType(decl.type);
   const type = declared && 'type' in declared ? declared.type : decl.type.trim().toUpperCase();
   const globalType = sym.kind === 'var' && sym.dataType ? sym.dataType.name : sym.type;
   if (type !== globalType.toUpperCase())
-    r.error('LD-E16', `${what} is declared ${type} but the global variable "${global.name}" is ${sym.type}`);
+    r.error('LD-E16', `${what} is declared ${type} but the global variable "${globalName}" is ${sym.type}`);
 }
