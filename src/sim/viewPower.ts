@@ -2,6 +2,7 @@
 // by the layout's network fields.
 import type { NetworkPower, Plc } from '../engine/api';
 import type { CompiledProgram } from '../engine/plc';
+import { programOf } from '../engine/compile/taskSchedule';
 import { shownBody } from '../engine/explain/flatPou';
 import { packNetworks, type PackedPower } from './frames';
 import type { SimLayout } from './protocol';
@@ -55,7 +56,11 @@ export function viewNetworks(plc: Plc, layout: SimLayout, program: CompiledProgr
   if (!probe || !program) return EMPTY;
   const body = functionBody(program, view.pou, probe.ranIn);
   if (!body) return EMPTY;
-  const executed = Uint8Array.from(probe.ranIn, (scan) => (scan === plc.scanCount && scan > 0 ? 1 : 0));
+  // At a boundary, a function called by a program whose task did not run in this tick shows that
+  // program's last run (as the engine's snapshot shows a program or FB instance).
+  const root = programOf(program.bodies, body);
+  const shown = plc.schedule?.multiRate && plc.nextNetwork === -1 && root.end > root.first ? probe.ranIn[root.first]! : plc.scanCount;
+  const executed = Uint8Array.from(probe.ranIn, (scan) => (scan === shown && scan > 0 ? 1 : 0));
   return probe.decode(probe.power, executed).slice(body.first, body.end);
 }
 

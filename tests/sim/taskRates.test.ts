@@ -55,6 +55,17 @@ describe('tasks at 10 ms and 30 ms in the simulator', () => {
     ]);
   });
 
+  test('in a tick Slow does not run, its tab and the function it calls show the power flow of its last run', () => {
+    const h = new SimHarness().send({ type: 'step', scans: 2, project: ratesProject() }).advance(0);
+    expect(h.value('S.D')).toBe(42);
+    h.send({ type: 'setView', view: { pou: 'Slow', instance: 'S' } });
+    expect(Array.from(h.frame.executed)).toEqual([1, 1, 1, 1, 1, 1]);
+    h.send({ type: 'setView', view: { pou: 'Twice' } });
+    expect(Array.from(h.frame.executed)).toEqual([1]);
+    h.send({ type: 'setView', view: { pou: 'Fast', instance: 'F' } });
+    expect(Array.from(h.frame.executed)).toEqual([1, 1, 1, 1]);
+  });
+
   test('a scenario replays on the tick; a "# cycle:" other than the tick is refused with the reason', () => {
     const csv = 'scan,expect F.N,expect S.N,expect S.Et\n1,1,1,0\n4,4,2,30\n7,7,3,60\n';
     const h = new SimHarness().send({ type: 'replayScenario', id: 1, project: ratesProject(), scenario: { name: 'rates', csv } });

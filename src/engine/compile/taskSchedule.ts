@@ -5,6 +5,7 @@
 // the whole resource in one thread.
 import type { Task } from '../../model/project';
 import type { TaskRate, TaskSchedule } from '../api';
+import type { BodyInfo } from './flatten';
 
 /** Intervals are compared in whole microseconds (a file may give T#500us). */
 const US = 1000;
@@ -53,4 +54,11 @@ function ordinal(n: number): string {
   const tens = n % 100;
   const suffix = tens >= 11 && tens <= 13 ? 'th' : n % 10 === 1 ? 'st' : n % 10 === 2 ? 'nd' : n % 10 === 3 ? 'rd' : 'th';
   return `${n}${suffix}`;
+}
+
+/** The program (body 0..programs-1) a body runs in: its caller's, up to the program. */
+export function programOf(bodies: readonly BodyInfo[], body: BodyInfo): BodyInfo {
+  let root = body;
+  while (root.parent >= 0) root = bodies[root.parent]!;
+  return root;
 }

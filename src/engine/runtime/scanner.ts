@@ -30,6 +30,7 @@ import { generateSegment, planSegments } from '../compile/segments';
 import { networkPower, type PowerTrace } from './snapshot';
 import { DEFAULT_TIERING, Tiering, type TieringOptions } from './tiering';
 import type { CompiledProgram } from '../compile/program';
+import { programOf } from '../compile/taskSchedule';
 import type { Access, VarSymbol } from '../compile/symbols';
 import { coerce, Memory } from './memory';
 import { exportMemory, importMemory, stateItemsOf } from './instanceState';
@@ -803,10 +804,8 @@ export class ScanPlc implements Plc {
   private shownScan(body: BodyInfo): number {
     const rates = this.rates;
     if (!rates) return this.count;
-    const bodies = this.program.bodies;
-    let root = body;
-    while (root.parent >= 0) root = bodies[root.parent]!;
-    const p = bodies.indexOf(root);
+    const root = programOf(this.program.bodies, body);
+    const p = this.program.bodies.indexOf(root);
     if (p < 0 || p >= rates.due.length || rates.due[p] === 1 || root.end <= root.first) return this.count;
     return this.ranIn[root.first]!;
   }
