@@ -95,7 +95,8 @@ export function VariableRow({
     FB_SIGNATURES.some((s) => s.name === v.type) ||
     userFbs.some((s) => s.name === v.type) ||
     dataTypes.some((t) => t.name === v.type);
-  // "Other type...": the type is typed (ARRAY[1..10] OF INT, STRING[20]) instead of picked.
+  // "Other type...": the type is typed instead of picked: ARRAY[1..10] OF INT, STRING[20], or an
+  // anonymous STRUCT X : INT; END_STRUCT, enumeration (Idle, Run) or subrange INT (0..100).
   const [typing, setTyping] = useState(false);
   const invalid = (field: VariableField) =>
     issues[field] ? { 'aria-invalid': true, title: issues[field] } : {};
@@ -180,7 +181,7 @@ export function VariableRow({
               <TypeGroup label="This project's data types" names={dataTypes.map((t) => t.name)} />
               <TypeGroup label="This project's function blocks" names={userFbs.map((s) => s.name)} />
               <TypeGroup label="Function block instances" names={FB_SIGNATURES.map((s) => s.name)} />
-              <option value={OTHER_TYPE}>Other type (ARRAY[..] OF, STRING[n])…</option>
+              <option value={OTHER_TYPE}>Other type (ARRAY[..] OF, STRUCT, (A, B), STRING[n])…</option>
             </select>
           )}
         </td>

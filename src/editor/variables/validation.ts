@@ -1,7 +1,7 @@
 // Checks a variable table the way a PLC programmer expects to be told about mistakes: per row and
 // per field, in plain words. Pure functions: the table shows the result inline.
 import { blockSignature } from '../../model/blocks';
-import { leafPaths, resolveType } from '../../model/dataTypes';
+import { anonymousType, leafPaths, resolveType } from '../../model/dataTypes';
 import { blockLibrary, STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import {
   IDENTIFIER_RE,
@@ -223,13 +223,15 @@ export function validateVariables(
     const type = v.type.trim().toUpperCase();
     if (type === '') issues.push({ index, field: 'type', message: 'choose a type' });
     else if (!isKnownVariableType(type, lib)) {
-      // A data type of the project or an inline ARRAY[..] OF (src/model/dataTypes.ts).
+      // A data type of the project or an anonymous type written in place: ARRAY[..] OF, STRUCT ..
+      // END_STRUCT, (A, B), INT (0..100) (src/model/dataTypes.ts).
       const resolved = scope.project ? resolveType(scope.project, v.type) : undefined;
+      const written = /^ARRAY\b/i.test(v.type.trim()) || anonymousType(v.type) !== undefined;
       if (!resolved?.ok)
         issues.push({
           index,
           field: 'type',
-          message: resolved && /^ARRAY\b/i.test(v.type.trim()) ? resolved.message : `unknown type "${v.type}"`,
+          message: resolved && written ? resolved.message : `unknown type "${v.type}"`,
         });
     }
     else if (owner?.kind === 'FUNCTION' && lib.isFbType(type))
