@@ -66,6 +66,19 @@ describe('tasks at 10 ms and 30 ms in the simulator', () => {
     expect(Array.from(h.frame.executed)).toEqual([1, 1, 1, 1]);
   });
 
+  test('a breakpoint in the slow program stops only in the ticks its task runs: scans 1, 4, 7', () => {
+    const project = ratesProject();
+    const slowNet = project.pous.find((p) => p.name === 'Slow')!.networks[0]!.id;
+    const h = new SimHarness().send({ type: 'setBreakpoints', ids: [slowNet] });
+    const hits: number[] = [];
+    for (let k = 0; k < 3; k++) {
+      h.send({ type: 'step', scans: 20, project }).advance(0);
+      expect(h.frame.breakpointAt).toMatchObject({ pou: 'Slow', instance: 'S', network: 0 });
+      hits.push(h.frame.scan);
+    }
+    expect(hits).toEqual([1, 4, 7]);
+  });
+
   test('a scenario replays on the tick; a "# cycle:" other than the tick is refused with the reason', () => {
     const csv = 'scan,expect F.N,expect S.N,expect S.Et\n1,1,1,0\n4,4,2,30\n7,7,3,60\n';
     const h = new SimHarness().send({ type: 'replayScenario', id: 1, project: ratesProject(), scenario: { name: 'rates', csv } });
