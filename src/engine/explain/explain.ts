@@ -371,7 +371,9 @@ export function explain(program: CompiledProgram, pou: Pou, view: ScanView, targ
     b.mark(target.network, target.element, 'subject');
     const sym = elementSymbol(el);
     const ran = view.executed(target.network);
-    const arc = program.networks[target.network] ? networkGraph(program.networks[target.network]!).arcs.find((a) => a.element === target.element) : undefined;
+    // openplc: a contact is read again at each coil's turn; its latest reading is the one shown.
+    const readings = program.networks[target.network] ? networkGraph(program.networks[target.network]!).arcs.filter((a) => a.element === target.element && a.op.op !== 'pass') : [];
+    const arc = el.kind === 'contact' ? readings[readings.length - 1] : readings[0];
     title = `${sym} in ${networkName(b, target.network)}, ${scanText}`;
     if (!ran) b.lines.push(`${networkName(b, target.network)} did not run in ${scanText}: a jump or RETURN skipped it, so nothing in it was evaluated.`);
     if (el.kind === 'coil') {
@@ -392,6 +394,10 @@ export function explain(program: CompiledProgram, pou: Pou, view: ScanView, targ
         else if (outOn) b.lines.push(name ? `It is closed: ${name} is ${b.show(name)}.` : 'It passes power.');
         else if (name) b.lines.push(`${name} is ${b.show(name)}.`);
         if (!inOn) analysePaths(b, target.network, arc.op.inNet, `Its left side`);
+        if (readings.length > 1)
+          b.lines.push(
+            `Under the openplc profile this contact is read ${readings.length} times in each scan, once for each coil or block whose path holds it (as Beremiz and OpenPLC generate it); this is its last reading. A coil read by an earlier reading may have seen another value: ask "Why?" on that coil.`,
+          );
       }
       if (name) {
         explainWriters(b, name);

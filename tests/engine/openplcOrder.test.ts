@@ -1,0 +1,170 @@
+// Profile `openplc`: an LD POU runs as Beremiz and OpenPLC run it (LD-SEMANTICS.md section 6,
+// issue 12). Their generator (PLCGenerator.py) writes one ST statement per coil, by position, each
+// re-reading the coil's whole path; blocks run once, at the first coil that needs them, and blocks
+// no coil needs after every coil of the POU; jumps and RETURNs are never generated. Each case runs
+// under both profiles; the comment gives the ST Beremiz generates for it.
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { describe, expect, test } from 'vitest';
+import { checkProject } from '../../src/engine/check';
+import { compileProgram, createPlc } from '../../src/engine/plc';
+import { explain, liveScanView } from '../../src/engine/explain';
+import type { Network, Profile, Variable } from '../../src/model/project';
+import { importPlcopen } from '../../src/plcopen/importPlcopen';
+import { ladder, plcOf, project, trace, vars } from './ladder';
+
+type Steps = readonly Record<string, boolean | number>[];
+
+/** The trace of the same program under each profile. */
+function both(variables: readonly Variable[], networks: readonly Network[], steps: Steps, names: readonly string[], cycleMs = 10) {
+  const run = (profile: Profile) => trace(plcOf(project(variables, networks, profile), cycleMs), steps, names);
+  return { iec: run('iec'), openplc: run('openplc') };
+}
+
+const V = vars('A BOOL', 'B BOOL', 'X BOOL', 'Y BOOL', 'Run BOOL', 'Mid BOOL', 'Lamp BOOL', 'T1 TON');
+
+describe('openplc: every coil re-reads its path at its own turn', () => {
+  test('a contact shared by two coils is read again after the upper coil reset its variable', () => {
+    // IF B THEN B := FALSE; (*reset*) END_IF;
+    // Y := B;
+    const t = both(V, [ladder(['[B] + (R:B)', '. + (Y)'])], [{ B: true }], ['B', 'Y']);
+    expect(t.iec).toEqual([[0, 1]]); // one reading of B feeds both coils
+    expect(t.openplc).toEqual([[0, 0]]); // Y's statement reads B after the reset
+  });
+
+  test('a set coil drawn above a reset coil: the reset coil sees the variable the set coil wrote', () => {
+    // IF NOT(X) THEN X := TRUE; (*set*) END_IF;
+    // IF NOT(X) THEN Y := FALSE; (*reset*) END_IF;
+    const t = both(V, [ladder(['[/X] + (S:X)', '. + (R:Y)'])], [{ Y: true }, {}], ['X', 'Y']);
+    expect(t.iec).toEqual([[1, 0], [1, 0]]);
+    expect(t.openplc).toEqual([[1, 1], [1, 1]]);
+  });
+
+  test('a coil after a coil passes on its left side, re-read: coils in series', () => {
+    // IF X THEN X := FALSE; (*reset*) END_IF;
+    // Y := X;
+    const t = both(V, [ladder(['[X] (R:X) (Y)'])], [{ X: true }], ['X', 'Y']);
+    expect(t.iec).toEqual([[0, 1]]);
+    expect(t.openplc).toEqual([[0, 0]]);
+  });
+
+  test('an edge contact on the paths of two coils has two edge memories, one per reading', () => {
+    // R_TRIG1(CLK := A);
+    // IF R_TRIG1.Q THEN A := FALSE; (*reset*) END_IF;
+    // R_TRIG2(CLK := A);
+    // Y := R_TRIG2.Q;
+    const t = both(V, [ladder(['[P:A] + (R:A)', '. + (Y)'])], [{ A: true }, { A: true }, { A: true }], ['A', 'Y']);
+    // iec: one memory, read once per scan: the edge resets A and energises Y in the same scan.
+    expect(t.iec).toEqual([[0, 1], [1, 0], [1, 0]]);
+    // openplc: the second R_TRIG saw A already reset in scan 1, and sees its own rising edge in scan 2.
+    expect(t.openplc).toEqual([[0, 0], [1, 1], [1, 0]]);
+    const { program } = compileProgram(project(V, [ladder(['[P:A] + (R:A)', '. + (Y)'])], 'openplc'));
+    expect(program!.edgeCount).toBe(2);
+  });
+});
+
+describe('openplc: blocks run once, when a coil first needs them', () => {
+  const timer = { row: 0, col: 1, type: 'TON', instance: 'T1', inputs: { PT: 'T#20ms' } };
+
+  test('an FB whose output reaches only the right rail runs after every coil of the POU (the lamp is one scan late)', () => {
+    // Lamp := T1.Q;
+    // T1(IN := Run, PT := T#20ms);   (* no coil needs T1: generated after every coil *)
+    const networks = [ladder(['[Run] # # -', '. # # .'], { boxes: [timer] }), ladder(['[T1.Q] (Lamp)'])];
+    const t = both(V, networks, [{ Run: true }, {}, {}, {}], ['T1.Q', 'Lamp']);
+    expect(t.iec).toEqual([[0, 0], [0, 0], [1, 1], [1, 1]]);
+    expect(t.openplc).toEqual([[0, 0], [0, 0], [1, 0], [1, 1]]);
+  });
+
+  test('an FB runs at the turn of the first coil that needs it, not at its own position', () => {
+    // Mid := T1.Q;                    (* Mid is drawn above Lamp *)
+    // T1(IN := Run, PT := T#20ms);    (* Lamp needs T1 through the connector C *)
+    // Lamp := T1.Q;
+    const net = ladder(['[Run] # # >C>| .', '. # # . .', '[T1.Q] - - - (Mid)', '|>C> - - - (Lamp)'], { boxes: [timer] });
+    const t = both(V, [net], [{ Run: true }, {}, {}, {}], ['Mid', 'Lamp']);
+    expect(t.iec).toEqual([[0, 0], [0, 0], [1, 1], [1, 1]]);
+    expect(t.openplc).toEqual([[0, 0], [0, 0], [0, 1], [1, 1]]);
+  });
+
+  test('a block read by two coils runs once: the second coil reads its stored output', () => {
+    // X := T1.Q;  (* T1 called here, once *)   Y := T1.Q;
+    const net = ladder(['[Run] # # - + (X)', '. # # . + .', '. . . . + (Y)'], { boxes: [timer] });
+    const { program } = compileProgram(project(V, [net], 'openplc'));
+    expect(program!.networks[0]!.ops.filter((op) => op.op === 'fb')).toHaveLength(1);
+    const t = both(V, [net], [{ Run: true }, {}, {}], ['X', 'Y']);
+    expect(t.openplc).toEqual(t.iec);
+    expect(t.openplc).toEqual([[0, 0], [0, 0], [1, 1]]);
+  });
+
+  test('a function with no input connected is not called under openplc (LD-W22)', () => {
+    // ("MOVE" function cancelled in "Main" POU: No input connected): X keeps its value.
+    const net = ladder(['. # # .'], { boxes: [{ row: 0, col: 1, type: 'MOVE', outputs: { OUT: 'I' } }] });
+    const p = (profile: Profile) => project(vars('I INT := 5'), [net], profile);
+    expect(checkProject(p('openplc')).some((d) => d.rule === 'LD-W22' && d.network === 0)).toBe(true);
+    expect(checkProject(p('iec')).some((d) => d.rule === 'LD-W22')).toBe(false);
+    const run = (profile: Profile) => {
+      const plc = plcOf(p(profile));
+      plc.scan();
+      return plc.read('I');
+    };
+    expect(run('iec')).toBe(0); // the open input takes INT's initial value
+    expect(run('openplc')).toBe(5); // not called: I keeps its value
+  });
+});
+
+describe('openplc: jumps and RETURNs are never generated', () => {
+  test('a powered jump does nothing, with a located warning (LD-W20)', () => {
+    const networks = [ladder(['[A] >>SKIP']), ladder(['[B] (X)']), ladder(['[B] (Y)'], { label: 'SKIP' })];
+    const t = both(V, networks, [{ A: true, B: true }], ['X', 'Y']);
+    expect(t.iec).toEqual([[0, 1]]);
+    expect(t.openplc).toEqual([[1, 1]]);
+    const warnings = checkProject(project(V, networks, 'openplc')).filter((d) => d.rule === 'LD-W20');
+    expect(warnings).toHaveLength(1);
+    expect(warnings[0]!.network).toBe(0);
+    expect(warnings[0]!.message).toMatch(/Beremiz and OpenPLC drop this jump.*under the openplc profile it does nothing/);
+    expect(checkProject(project(V, networks, 'iec')).some((d) => d.rule === 'LD-W20')).toBe(false);
+  });
+
+  test('a powered RETURN does nothing, with a located warning (LD-W21)', () => {
+    const networks = [ladder(['[A] <RET>']), ladder(['[B] (X)'])];
+    const t = both(V, networks, [{ A: true, B: true }], ['X']);
+    expect(t.iec).toEqual([[0]]);
+    expect(t.openplc).toEqual([[1]]);
+    expect(checkProject(project(V, networks, 'openplc')).filter((d) => d.rule === 'LD-W21').map((d) => d.network)).toEqual([0]);
+  });
+});
+
+describe('openplc: power display and Why?', () => {
+  test("each element shows its latest reading, and Why? on a coil explains the coil's own reading", () => {
+    const p = project(V, [ladder(['[B] + (R:B)', '. + (Y)'])], 'openplc');
+    const { program } = compileProgram(p);
+    const plc = createPlc(program!, { cycleMs: 10 });
+    plc.write('B', true);
+    plc.scan();
+    const pou = p.pous[0]!;
+    const index = (kind: string, variable: string) =>
+      pou.networks[0]!.elements.findIndex((e) => e.kind === kind && 'variable' in e && e.variable === variable);
+    const power = plc.snapshot().networks[0]!.elements;
+    // Contact B: its latest reading (for Y) found B FALSE; the reset coil was energised by the first one.
+    expect(power[index('contact', 'B')]! & 2).toBe(0);
+    expect(power[index('coil', 'B')]! & 1).toBe(1);
+    expect(power[index('coil', 'Y')]! & 1).toBe(0);
+    const why = (element: number) => explain(program!, pou, liveScanView(plc, program!), { kind: 'element', network: 0, element });
+    expect(why(index('coil', 'B')).lines[0]).toMatch(/energised through \| \| B/);
+    expect(why(index('coil', 'Y')).lines.join('\n')).toMatch(/gets no power/);
+    expect(why(index('contact', 'B')).lines.join('\n')).toMatch(/read 2 times in each scan.*this is its last reading/);
+  });
+});
+
+describe('openplc: a PLCopen file imported and run under the openplc profile', () => {
+  test('the fixture runs as Beremiz generates it: Y re-reads B, the lamp follows T1.Q one scan late', () => {
+    const r = importPlcopen(readFileSync(join(__dirname, '../fixtures/plcopen/openplc-order.xml'), 'utf8'));
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    const run = (profile: Profile) => {
+      const { program, diagnostics } = compileProgram({ ...r.project, profile }, { pou: 'Main' });
+      if (!program) throw new Error(diagnostics.map((d) => d.message).join('\n'));
+      return trace(createPlc(program, { cycleMs: 10 }), [{ B: true, Run: true }, {}, {}, {}], ['B', 'Y', 'T1.Q', 'Lamp']);
+    };
+    expect(run('iec')).toEqual([[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 1, 1], [0, 0, 1, 1]]);
+    expect(run('openplc')).toEqual([[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]]);
+  });
+});
