@@ -25,11 +25,13 @@ Runs N scans of a PROGRAM on the virtual clock and writes CSV to stdout:
 
 Options:
   --pou NAME        the PROGRAM to run (default: the first one run by a task; when the tasks run
-                    several program instances, all of them, in task order, each scan)
+                    several program instances, all of them, each task at its own interval: a scan
+                    is one tick of the gcd of the intervals, instances in declaration order)
   --inputs FILE     stimulus CSV: header scan,<var>,...; a row sets those variables just before the
                     input read of that scan (1-based); an empty cell leaves the value as it is
   --scans N         number of scans (default: the last stimulus scan, at least 10)
-  --cycle TIME      scan cycle, e.g. 10ms, 0.5s, T#100ms (default: the task's interval, else 10ms)
+  --cycle TIME      scan cycle, e.g. 10ms, 0.5s, T#100ms (default: the task's interval, else 10ms;
+                    tasks at different intervals: their common tick, which --cycle cannot change)
   --watch LIST      comma-separated variables or FB pins (T1.Q), paths into FB instances
                     (Motor1.Run, Line.Motor1.T1.ET) and, for several programs, Instance.Var;
                     default: every variable of the POU in declaration order, FB instances as
