@@ -113,7 +113,7 @@ export function lowerNetwork(
 export function startNetwork(ctx: PouContext, network: Network, index: number, r: Reporter): PendingNetwork {
   const g = buildGraph(network, ctx.symbols.library);
   const structureOk = checkStructure(network, g, r);
-  let order = structureOk ? evaluationOrder(g) : undefined;
+  const order = structureOk ? evaluationOrder(g) : undefined;
   if (structureOk && !order)
     r.error(
       'LD-R01',
