@@ -17,6 +17,8 @@
 //   engine evaluates each element once in a topological order (section 6). A contact on the path of
 //   a coil reads a variable another coil of the same network writes: when the write comes between
 //   the two reads in one order and not in the other, the two differ (LD-X05).
+// The simulator's openplc profile runs LD bodies in that order (engine/compile/generated.ts): for
+// a project under it the warnings stay (the export is the same) and say the simulation shows it.
 // Pure: no React, no DOM.
 import { buildGraph, type NetworkGraph } from '../engine/compile/graph';
 import { evaluationOrder } from '../engine/compile/order';
@@ -56,6 +58,15 @@ export interface ExportWarning {
 }
 
 const TOOLS = 'Beremiz and OpenPLC';
+
+/** What a warning adds when the project's profile is openplc: the simulation already behaves so. */
+const SIMULATED_SO: Record<ExportRuleId, string> = {
+  'LD-X01': 'This project runs under the openplc profile, so the simulator ignores this jump too (LD-W20).',
+  'LD-X02': 'This project runs under the openplc profile, so the simulator ignores this RETURN too (LD-W21).',
+  'LD-X03': 'This project runs under the openplc profile, so the simulator already calls it there: what you see in simulation is what the exported program does.',
+  'LD-X04': 'This project runs under the openplc profile, so the simulator does not call it either (LD-W22).',
+  'LD-X05': 'This project runs under the openplc profile, so the simulator already reads it again: what you see in simulation is what the exported program does.',
+};
 const up = (s: string) => s.trim().toUpperCase();
 
 /** `warning LD-X03 Main/network 1:R1C3 message` (the shape of the check's lines). */
@@ -421,7 +432,7 @@ function reread(pou: Pou, v: NetView, library: BlockLibrary, out: ExportWarning[
       out.push({
         ...locate(pou, v, contact),
         rule: 'LD-X05',
-        message: `${TOOLS} read ${describeElement(contact)} again for ${describeElement(reader)}, ${oursNew ? 'before' : 'after'} ${describeElement(writer)} writes it (their code generator re-traces every coil's path from the left rail); Rungsmith reads it once, ${oursNew ? 'after' : 'before'} that write. Split the network so each coil's path has its own contacts, or move the coil that writes "${name}" below the others.`,
+        message: `${TOOLS} read ${describeElement(contact)} again for ${describeElement(reader)}, ${oursNew ? 'before' : 'after'} ${describeElement(writer)} writes it (their code generator re-traces every coil's path from the left rail); the simulator's iec profile reads it once, ${oursNew ? 'after' : 'before'} that write. Split the network so each coil's path has its own contacts, or move the coil that writes "${name}" below the others.`,
       });
     }
   }
@@ -512,6 +523,11 @@ export function exportBehaviour(project: Project): ExportWarning[] {
     dropped(pou, views, out);
     ordering(project, pou, views, library, out);
   }
+  // Profile openplc: the simulator already runs the project as Beremiz and OpenPLC do (LD-SEMANTICS.md
+  // section 6), so the warnings stay (the export is the same) but say the simulation shows it.
+  if (project.profile === 'openplc')
+    for (const [k, w] of out.entries())
+      out[k] = { ...w, message: `${w.message} ${SIMULATED_SO[w.rule]}` };
   return out.sort((a, b) =>
     a.pou === b.pou ? a.network - b.network || a.rule.localeCompare(b.rule) : 0,
   );

@@ -10,6 +10,7 @@ import { checkProject } from '../../src/engine/check';
 import { compileProgram, createPlc } from '../../src/engine/plc';
 import { explain, liveScanView } from '../../src/engine/explain';
 import type { Network, Profile, Variable } from '../../src/model/project';
+import { exportBehaviour } from '../../src/plcopen/exportBehaviour';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { ladder, plcOf, project, trace, vars } from './ladder';
 
@@ -166,5 +167,17 @@ describe('openplc: a PLCopen file imported and run under the openplc profile', (
     };
     expect(run('iec')).toEqual([[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 1, 1], [0, 0, 1, 1]]);
     expect(run('openplc')).toEqual([[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]]);
+  });
+});
+
+describe('openplc: the export review of a project the simulator already runs that way', () => {
+  test('LD-X05 stays, and says the simulation under openplc already shows the re-read', () => {
+    const networks = [ladder(['[B] + (R:B)', '. + (Y)'])];
+    const x05 = (profile: Profile) => exportBehaviour(project(V, networks, profile)).filter((w) => w.rule === 'LD-X05');
+    expect(x05('iec')).toHaveLength(1);
+    expect(x05('iec')[0]!.message).toContain("the simulator's iec profile reads it once");
+    expect(x05('iec')[0]!.message).not.toContain('runs under the openplc profile');
+    expect(x05('openplc')).toHaveLength(1);
+    expect(x05('openplc')[0]!.message).toMatch(/runs under the openplc profile, so the simulator already reads it again/);
   });
 });
