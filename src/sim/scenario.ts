@@ -19,6 +19,7 @@ import { csvValue, formatValue, parseValueText } from '../engine/values/literals
 import type { ElementaryType, Value } from '../model/iecTypes';
 import type { Project, Scenario } from '../model/project';
 import { readCsv } from './csv';
+import { runOptions } from './runTarget';
 
 export interface ScenarioColumn {
   readonly name: string;
@@ -223,17 +224,6 @@ export function runPrepared(plc: Plc, prep: PreparedScenario, afterScan?: (scan:
   return { ok: true, scans: parsed.scans, divergences: [] };
 }
 
-/** The PROGRAM a scenario runs: its `# pou:` line, else the first one a task runs, else the first PROGRAM. */
-export function scenarioProgram(project: Project, parsed: ParsedScenario): string | undefined {
-  if (parsed.pou) return parsed.pou;
-  for (const t of project.tasks)
-    for (const p of t.programs) {
-      const pou = project.pous.find((x) => x.name.toUpperCase() === p.pou.toUpperCase() && x.kind === 'PROGRAM');
-      if (pou) return pou.name;
-    }
-  return project.pous.find((p) => p.kind === 'PROGRAM')?.name;
-}
-
 /**
  * The scenario's cycle: its `# cycle:` line, else the task's interval, else 10 ms. A configuration
  * whose tasks run at different intervals (`schedule`) scans at their common tick, whatever the line says.
@@ -265,8 +255,9 @@ export function runScenario(project: Project, scenario: Scenario): ScenarioRun {
   } catch (e) {
     return fail((e as Error).message);
   }
-  const pou = scenarioProgram(project, parsed);
-  const { program, diagnostics } = compileProgram(project, pou ? { pou } : {});
+  // Without `# pou:`, what the simulator runs: the tasks' program instances (a configuration when
+  // there are several, each task at its own interval), as "Open failure in timeline" replays it.
+  const { program, diagnostics } = compileProgram(project, parsed.pou ? { pou: parsed.pou } : runOptions(project));
   if (!program) {
     const first = diagnostics.find((d) => d.severity === 'error');
     return fail(`the program does not compile${first ? `: ${first.rule} ${first.pou}${first.network >= 0 ? ` network ${first.network + 1}` : ''}: ${first.message}` : ''}`);
@@ -277,7 +268,13 @@ export function runScenario(project: Project, scenario: Scenario): ScenarioRun {
   } catch (e) {
     return fail((e as Error).message);
   }
-  const plc = createPlc(program, { cycleMs: scenarioCycle(project, parsed, pou) });
+  let cycleMs: number;
+  try {
+    cycleMs = scenarioCycle(project, parsed, program.pou, program.schedule);
+  } catch (e) {
+    return fail((e as Error).message);
+  }
+  const plc = createPlc(program, { cycleMs });
   const r = runPrepared(plc, prep);
   return { result: { name: scenario.name, ...r }, ...(r.ok ? {} : { plc, program }) };
 }

@@ -4,6 +4,7 @@
 import { describe, expect, test } from 'vitest';
 import { newProject } from '../../src/model/factory';
 import type { Project } from '../../src/model/project';
+import { runScenario } from '../../src/sim/scenario';
 import { ratesProject } from '../engine/taskRatesProject';
 import { SimHarness } from './harness';
 
@@ -85,5 +86,8 @@ describe('tasks at 10 ms and 30 ms in the simulator', () => {
     expect(lastOf(h.of('scenarioReplayed')).result).toMatchObject({ ok: true, scans: 7 });
     h.send({ type: 'replayScenario', id: 2, project: ratesProject(), scenario: { name: 'slow', csv: `# cycle: 30ms\n${csv}` } });
     expect(lastOf(h.of('scenarioReplayed')).result.error).toMatch(/the tasks run at different intervals \(Fast runs every tick \(10 ms\); Slow every 3rd tick \(30 ms\)\), so a scan is their common tick of 10 ms/);
+    // The Tests panel (and `rungsmith test`) runs the same configuration on the same tick.
+    expect(runScenario(ratesProject(), { name: 'rates', csv }).result).toMatchObject({ ok: true, scans: 7 });
+    expect(runScenario(ratesProject(), { name: 'slow', csv: `# cycle: 30ms\n${csv}` }).result.error).toMatch(/common tick of 10 ms/);
   });
 });
