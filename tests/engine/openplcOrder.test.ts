@@ -10,6 +10,7 @@ import { checkProject } from '../../src/engine/check';
 import { compileProgram, createPlc } from '../../src/engine/plc';
 import { explain, liveScanView } from '../../src/engine/explain';
 import type { Network, Profile, Variable } from '../../src/model/project';
+import { buildGraph } from '../../src/engine/compile/graph';
 import { exportBehaviour } from '../../src/plcopen/exportBehaviour';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { ladder, plcOf, project, trace, vars } from './ladder';
@@ -179,5 +180,132 @@ describe('openplc: the export review of a project the simulator already runs tha
     expect(x05('iec')[0]!.message).not.toContain('runs under the openplc profile');
     expect(x05('openplc')).toHaveLength(1);
     expect(x05('openplc')[0]!.message).toMatch(/runs under the openplc profile, so the simulator already reads it again/);
+  });
+});
+
+// A reference of the generator's ST for networks of contacts, inverting contacts and coils: each
+// coil in drawing order computes `coil := <its path>`, its path read from the variables as they are
+// at that moment; a |P| |N| contact has a memory per reading (R_TRIGn); an inverting contact is a
+// NOT block, computed once per scan when a coil first needs it.
+function generatorScan(networks: readonly Network[], state: Map<string, boolean>, memory: Map<string, boolean>): void {
+  networks.forEach((network, ni) => {
+    const g = buildGraph(network);
+    const notOut = new Map<number, boolean>();
+    const readings = new Map<number, number>();
+    const read = (name: string) => state.get(name.toUpperCase()) ?? false;
+    const net = (id: number, memo: Map<number, boolean>): boolean => {
+      const known = memo.get(id);
+      if (known !== undefined) return known;
+      const n = g.nets[id]!;
+      let v = n.leftRail;
+      if (!v) for (const s of n.sources) v = source(s.node, memo) || v; // every source is read
+      memo.set(id, v);
+      return v;
+    };
+    const source = (i: number, memo: Map<number, boolean>): boolean => {
+      const node = g.nodes[i]!;
+      const el = node.el;
+      if (el.kind === 'coil') return net(node.inputs[0]!.net, memo);
+      if (el.kind !== 'contact') return false;
+      if (el.contact === 'NOT') {
+        if (!notOut.has(i)) notOut.set(i, !net(node.inputs[0]!.net, new Map()));
+        return notOut.get(i)!;
+      }
+      const power = net(node.inputs[0]!.net, memo);
+      const x = read(el.variable);
+      if (el.contact === 'NO') return power && x;
+      if (el.contact === 'NC') return power && !x;
+      const k = readings.get(i) ?? 0;
+      readings.set(i, k + 1);
+      const key = `${ni}/${i}/${k}`;
+      const clk = el.contact === 'P' ? x : !x;
+      const q = clk && !(memory.get(key) ?? false);
+      memory.set(key, clk);
+      return power && q;
+    };
+    const coils = g.nodes
+      .map((n, i) => ({ el: n.el, i }))
+      .filter((c) => c.el.kind === 'coil')
+      .sort((a, b) => a.el.row - b.el.row || a.el.col - b.el.col);
+    for (const { el, i } of coils) {
+      if (el.kind !== 'coil') continue;
+      const input = g.nodes[i]!.inputs[0]!.net;
+      if (!g.nets[input]!.leftRail && g.nets[input]!.sources.length === 0) continue;
+      const p = net(input, new Map());
+      const name = el.variable.toUpperCase();
+      const edge = (clk: boolean) => {
+        const q = clk && !(memory.get(`coil/${ni}/${i}`) ?? false);
+        memory.set(`coil/${ni}/${i}`, clk);
+        return q;
+      };
+      if (el.coil === 'COIL') state.set(name, p);
+      else if (el.coil === 'NEG') state.set(name, !p);
+      else if (el.coil === 'SET') { if (p) state.set(name, true); }
+      else if (el.coil === 'RESET') { if (p) state.set(name, false); }
+      else if (el.coil === 'P') state.set(name, edge(p));
+      else if (el.coil === 'N') state.set(name, edge(!p));
+    }
+  });
+}
+
+describe('openplc: random networks of contacts and coils run as the generator writes them', () => {
+  const rng = (seed: number) => {
+    let s = seed >>> 0;
+    return () => ((s = (s * 1664525 + 1013904223) >>> 0) / 2 ** 32);
+  };
+  const INPUTS = ['A', 'B', 'C'];
+  const WRITTEN = ['X', 'Y', 'Z'];
+  const randomNetwork = (r: () => number): Network => {
+    const pick = <T,>(xs: readonly T[]) => xs[Math.floor(r() * xs.length)]!;
+    const rows = 1 + Math.floor(r() * 3);
+    const cols = 1 + Math.floor(r() * 3);
+    const lines: string[] = [];
+    for (let row = 0; row < rows; row++) {
+      const tokens = ['+'];
+      for (let col = 0; col < cols; col++) {
+        const v = pick([...INPUTS, ...WRITTEN]);
+        tokens.push(r() < 0.1 ? '-' : pick([`[${v}]`, `[${v}]`, `[/${v}]`, `[P:${v}]`, `[N:${v}]`, '[NOT]']));
+        if (col < cols - 1 && r() < 0.3) tokens.push('+');
+      }
+      if (r() < 0.7) tokens.push('+');
+      tokens.push(pick(['(X)', '(Y)', '(Z)', '(/X)', '(S:Y)', '(R:Y)', '(S:Z)', '(R:X)', '(P:Z)', '(N:X)']));
+      lines.push(tokens.join(' '));
+    }
+    return ladder(lines);
+  };
+
+  test('every variable after every scan equals the reference, over 150 random programs', () => {
+    let compared = 0;
+    let differFromIec = 0;
+    for (let seed = 1; seed <= 150; seed++) {
+      const r = rng(seed);
+      const networks = Array.from({ length: 1 + Math.floor(r() * 3) }, () => randomNetwork(r));
+      const variables = vars(...[...INPUTS, ...WRITTEN].map((n) => `${n} BOOL`));
+      const { program } = compileProgram(project(variables, networks, 'openplc'));
+      if (!program) continue; // a random shape the rules refuse
+      const iec = compileProgram(project(variables, networks, 'iec')).program!;
+      const plc = createPlc(program, { cycleMs: 10 });
+      const other = createPlc(iec, { cycleMs: 10 });
+      const state = new Map<string, boolean>();
+      const memory = new Map<string, boolean>();
+      for (let scan = 0; scan < 10; scan++) {
+        for (const n of INPUTS) {
+          const v = r() < 0.5;
+          plc.write(n, v);
+          other.write(n, v);
+          state.set(n, v);
+        }
+        plc.scan();
+        other.scan();
+        generatorScan(networks, state, memory);
+        const names = [...INPUTS, ...WRITTEN];
+        expect(names.map((n) => plc.read(n)), `seed ${seed} scan ${scan}: ${networks.map((n) => n.title ?? '').join(' | ')}`).toEqual(names.map((n) => state.get(n) ?? false));
+        if (names.some((n) => other.read(n) !== plc.read(n))) differFromIec++;
+        compared++;
+      }
+    }
+    expect(compared).toBeGreaterThan(500);
+    // The programs are varied enough that the two profiles often differ.
+    expect(differFromIec).toBeGreaterThan(20);
   });
 });
