@@ -8,6 +8,8 @@ import type { Plc } from '../../src/engine/api';
 import { formatDiagnostic } from '../../src/engine/compile/report';
 import { newProject } from '../../src/model/factory';
 import type { Project } from '../../src/model/project';
+import { ScanPlc } from '../../src/engine/runtime/scanner';
+import { DEFAULT_TIERING } from '../../src/engine/runtime/tiering';
 import { trace } from './ladder';
 import { ratesProject } from './taskRatesProject';
 
@@ -107,6 +109,21 @@ describe('tasks of 10 ms and 30 ms', () => {
     expect(slow.networks.every((n) => n.executed)).toBe(true);
     const lamp = slow.networks[2]!;
     expect(Array.from(lamp.elements)).toEqual([7, 7]);
+  });
+
+  test('the same scan by scan whether networks run in the dispatch loops or in straight-line code', () => {
+    const { program } = compileProgram(ratesProject({ fastMs: 20 }), { configuration: true });
+    const loops = new ScanPlc(program!, { cycleMs: 10 }, { ...DEFAULT_TIERING, startAfterEvals: Infinity });
+    const straight = new ScanPlc(program!, { cycleMs: 10 }, { ...DEFAULT_TIERING, startAfterEvals: 0, minScans: 1, msPerNetwork: 0, batch: 1 });
+    const names = ['F.N', 'S.N', 'S.Et', 'Trace'];
+    for (let k = 0; k < 12; k++) {
+      loops.scan();
+      straight.scan();
+      expect(names.map((n) => straight.read(n))).toEqual(names.map((n) => loops.read(n)));
+      expect(straight.outputs()).toEqual(loops.outputs());
+    }
+    // Ticks 0..11: Fast (every 2nd) ran 6 times, Slow (every 3rd) 4 times.
+    expect([straight.read('F.N'), straight.read('S.N')]).toEqual([6, 4]);
   });
 
   test('a virtual clock other than the common tick is refused', () => {
