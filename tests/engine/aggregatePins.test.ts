@@ -8,6 +8,7 @@ import { variable } from '../../src/model/factory';
 import type { DataType, Pou, Variable } from '../../src/model/project';
 import { ladder, plcOf, trace, vars, type BoxSpec } from './ladder';
 import { io, multiProject, pou } from './userBlocksHelpers';
+import { stErrors, stPlc, stProject, textPou } from './stHelpers';
 
 const box = (type: string, row: number, col: number, extra: Partial<BoxSpec> = {}): BoxSpec => ({ row, col, type, ...extra });
 const v = (name: string, type: string, varClass: Variable['varClass'] = 'local'): Variable => variable(name, type, { varClass });
@@ -155,6 +156,30 @@ describe('struct and array pins of user blocks', () => {
     const errors = errorsOf(typed([main, keep, makeCfg]));
     expect(errors).toEqual([
       'error LD-E23 Main/network 1:R2C4 the in-out Buf of the Keep block "K1" must name a variable: it is passed by reference, and the line from output OUT of the MakeCfg block at R1C2 carries a function\'s result',
+    ]);
+  });
+});
+
+describe('struct and array arguments of user blocks called from ST', () => {
+  const makePair = textPou('MakePair', 'FUNCTION', [...io('input', 'A INT')], 'MakePair.X := A; MakePair.Y := A * 2;', { returnType: 'Pair' });
+  // Swap: Old := P (copied out); P.X and P.Y swapped in the caller's variable (by reference).
+  const swap = textPou('Swap', 'FUNCTION_BLOCK', [v('P', 'Pair', 'inOut'), v('Old', 'Pair', 'output'), ...vars('T INT')], 'Old := P; T := P.X; P.X := P.Y; P.Y := T;');
+
+  test('a FUNCTION returning a structure assigned whole; an in-out struct by reference; a struct output copied out', () => {
+    const main = textPou('Main', 'PROGRAM', [v('Q', 'Pair'), v('R', 'Pair'), ...vars('S1 Swap', 'K INT')], 'Q := MakePair(K); S1(P := Q, Old => R);');
+    const plc = stPlc({ ...stProject([main, makePair, swap]), dataTypes: TYPES });
+    expect(trace(plc, [{ K: 3 }, { K: 5 }], ['Q.X', 'Q.Y', 'R.X', 'R.Y'])).toEqual([
+      [6, 3, 3, 6],
+      [10, 5, 5, 10],
+    ]);
+  });
+
+  test('a structure of another type is refused, at its line', () => {
+    const main = textPou('Main', 'PROGRAM', [v('C', 'ScaleCfg'), v('R', 'Pair'), ...vars('S1 Swap')], 'C := MakePair(1);\nS1(P := C);\nS1(P := R, Old => C);');
+    expect(stErrors({ ...stProject([main, makePair, swap]), dataTypes: TYPES })).toEqual([
+      'error LD-E50 Main/network 1 the ST body of Main does not compile: line 1 col 6: "C" is the structure ScaleCfg; MakePair(...) returns Pair',
+      'error LD-E50 Main/network 1 the ST body of Main does not compile: line 2 col 9: the in-out P of Swap is Pair; "C" is the structure ScaleCfg',
+      'error LD-E50 Main/network 1 the ST body of Main does not compile: line 3 col 19: the output Old of Swap is the structure Pair; "C" is the structure ScaleCfg',
     ]);
   });
 });

@@ -10,10 +10,12 @@ import { resolveFunction, type ResolvedFunction } from '../library/functions';
 import { parseLiteral } from '../values/literals';
 import { canWiden, commonType, isIntegerType, isBitStringType, isRealType, defaultValue } from '../values/types';
 import type { CallBuilder } from '../compile/context';
-import { storeOf, type Access, type SymbolTable } from '../compile/symbols';
+import { storeOf, type Access, type AggSymbol, type Sym, type SymbolTable, type VarSymbol } from '../compile/symbols';
+import { nodeLeaves, type AggNode } from '../compile/aggregates';
+import { shapeKey } from '../compile/aggregatePins';
 import type { Arg, BinaryOp, Expr, Pos, Stmt } from './ast';
 import type { RuleId } from '../api';
-import { ENUM_STORAGE } from '../../model/dataTypes';
+import { ENUM_STORAGE, resolveType } from '../../model/dataTypes';
 import { Places } from './places';
 import type { CompareOp, TExpr, TStmt } from './lowered';
 
@@ -56,7 +58,7 @@ const CMP: Record<string, { fn: string; js: CompareOp }> = {
 };
 const ARITH: Record<string, string> = { '+': 'ADD', '-': 'SUB', '*': 'MUL', '/': 'DIV', MOD: 'MOD' };
 
-const describe = (e: Expr): string => {
+export const describe = (e: Expr): string => {
   switch (e.k) {
     case 'lit':
       return e.text;
@@ -291,7 +293,7 @@ export class StChecker {
 
   private userFbCall(inst: Extract<ReturnType<SymbolTable['lookup']>, { kind: 'ufb' }>, args: readonly Arg[], pos: Pos): TStmt {
     const pou = inst.pou;
-    const refs = new Map<string, Access>();
+    const refs = new Map<string, Access | AggSymbol>();
     const assigns: { dst: Access; value: TExpr }[] = [];
     const outArgs: Arg[] = [];
     const inputs = pou.variables.filter((v) => v.varClass === 'input' || v.varClass === 'inOut');
@@ -316,15 +318,17 @@ export class StChecker {
       const dst: Access = { kind: 'var', v: member, type: member.type };
       assigns.push({ dst, value: this.to(this.expr(a.value, dst.type), dst.type, a.value.pos, `give the input ${decl.name}`) });
     });
-    const outs = outArgs.map((a) => this.outputArgument(a, pou, refs, (name) => inst.scope.own(name)));
+    const outs = outArgs.flatMap((a) => this.outputArgument(a, pou, refs, (name) => inst.scope.own(name)));
     const body = this.scope.calls ? this.scope.calls.fbBody(inst, refs) : { first: -1, end: -1 };
     if (!body) throw new Fail(pos, `the call of ${inst.name} cannot be built`);
-    const inits: { dst: Access; value: Value }[] = [];
-    for (const [, m] of inst.scope.ownNames()) if (m.kind === 'var' && m.temp) inits.push({ dst: { kind: 'var', v: m, type: m.type }, value: m.initial });
+    const inits = initialLeaves(inst.scope, (v) => v.temp === true);
     return { k: 'call', inits, assigns, first: body.first, end: body.end, outs };
   }
 
-  private inOutArgument(a: Arg, pin: string, declared: string, callee: string): Access {
+  private inOutArgument(a: Arg, pin: string, declared: string, callee: string): Access | AggSymbol {
+    if (a.value.k !== 'name' && a.value.k !== 'path') throw new Fail(a.pos, `the in-out ${pin} of ${callee} must name a variable: it is passed by reference`);
+    const whole = this.places.byReference(a.value, declared, `the in-out ${pin} of ${callee}`);
+    if (whole) return whole;
     if (a.value.k !== 'name') throw new Fail(a.pos, `the in-out ${pin} of ${callee} must name a variable: it is passed by reference`);
     const acc = this.target(a.value);
     const type = declared.trim().toUpperCase();
@@ -335,14 +339,20 @@ export class StChecker {
   private outputArgument(
     a: Arg,
     pou: Pou,
-    refs: Map<string, Access>,
+    refs: Map<string, Access | AggSymbol>,
     member: (name: string) => ReturnType<SymbolTable['own']>,
-  ): { dst: Access; src: Access; negated?: boolean } {
+  ): { dst: Access; src: Access; negated?: boolean }[] {
     const decl = pou.variables.find((v) => v.name.toUpperCase() === a.name!.toUpperCase() && (v.varClass === 'output' || v.varClass === 'inOut'));
     if (!decl) throw new Fail(a.pos, `${pou.name} has no output ${a.name} (outputs: ${pou.variables.filter((v) => v.varClass === 'output').map((v) => v.name).join(', ')})`);
+    const from = decl.varClass === 'inOut' ? refs.get(decl.name) : member(decl.name);
+    if (from?.kind === 'agg') {
+      // A struct/array output: copied leaf by leaf into a variable of the same type.
+      if (a.negated) throw new Fail(a.pos, `NOT applies to BOOL outputs; ${decl.name} is ${decl.type}`);
+      return this.places.copyFrom(from.node, a.value, `the output ${decl.name} of ${pou.name}`);
+    }
     const dst = this.target(a.value);
     let src: Access | undefined;
-    if (decl.varClass === 'inOut') src = refs.get(decl.name);
+    if (decl.varClass === 'inOut') src = refs.get(decl.name) as Access | undefined;
     else {
       const m = member(decl.name);
       if (m?.kind === 'var') src = { kind: 'var', v: m, type: m.type };
@@ -350,7 +360,7 @@ export class StChecker {
     if (!src) throw new Fail(a.pos, `the output ${decl.name} of ${pou.name} cannot be read here`);
     if (a.negated && src.type !== 'BOOL') throw new Fail(a.pos, `NOT applies to BOOL outputs; ${decl.name} is ${src.type}`);
     if (!canWiden(src.type, dst.type)) throw new Fail(a.pos, `the output ${decl.name} is ${src.type}; ${describe(a.value)} is ${dst.type}`);
-    return { dst, src, ...(a.negated ? { negated: true } : {}) };
+    return [{ dst, src, ...(a.negated ? { negated: true } : {}) }];
   }
 
   /** A function call in an expression (or as a statement): standard or the project's own. */
@@ -381,10 +391,38 @@ export class StChecker {
 
   private userFunctionCall(pou: Pou, args: readonly Arg[], pos: Pos): TExpr {
     const type = (pou.returnType ?? 'BOOL').toUpperCase();
-    if (!isElementaryType(type)) throw new Fail(pos, `${pou.name} returns ${pou.returnType}, a type the simulator does not run`);
+    if (!isElementaryType(type)) {
+      const shape = resolveType(this.scope.symbols.storage.types, pou.returnType ?? 'BOOL');
+      if (shape.ok && (shape.shape.kind === 'struct' || shape.shape.kind === 'array'))
+        throw new Fail(pos, `${pou.name} returns ${pou.returnType}, a whole ${shape.shape.kind === 'struct' ? 'structure' : 'array'}: assign it to a variable of that type (V := ${pou.name}(...);) and use its ${shape.shape.kind === 'struct' ? 'members' : 'elements'}`);
+      throw new Fail(pos, `${pou.name} returns ${pou.returnType}, a type the simulator does not run`);
+    }
+    const { call, result } = this.userFunctionCallStmt(pou, args, pos);
+    if (!call) return { k: 'const', type, value: defaultValue(type) };
+    if (result?.kind !== 'var') throw new Fail(pos, `${pou.name} has no result variable`);
+    return { k: 'seq', type, pre: [call], value: { k: 'read', type: result.type, access: { kind: 'var', v: result, type: result.type } } };
+  }
+
+  /**
+   * `V := F(...)` where the project's FUNCTION F returns a structure or an array: the call, and
+   * the call site's result variable to copy from (both absent when the POU is only checked).
+   * Undefined when `e` is not such a call.
+   */
+  aggregateCall(e: Expr): { call?: TStmt; node?: AggNode; type: string; key: string } | undefined {
+    if (e.k !== 'call') return undefined;
+    const pou = this.scope.symbols.library.userPou(e.name);
+    if (!pou || pou.kind !== 'FUNCTION' || blockSignature(e.name)) return undefined;
+    const shape = resolveType(this.scope.symbols.storage.types, pou.returnType ?? 'BOOL');
+    if (!shape.ok || (shape.shape.kind !== 'struct' && shape.shape.kind !== 'array')) return undefined;
+    const { call, result } = this.userFunctionCallStmt(pou, e.args, e.pos);
+    return { ...(call ? { call } : {}), ...(result?.kind === 'agg' ? { node: result.node } : {}), type: shape.shape.name, key: shapeKey(shape.shape) };
+  }
+
+  /** The call of a user FUNCTION (its inputs, body and outputs) and its result variable; no call when the POU is only checked. */
+  private userFunctionCallStmt(pou: Pou, args: readonly Arg[], pos: Pos): { call?: TStmt; result?: Sym } {
     const inputs = pou.variables.filter((v) => v.varClass === 'input' || v.varClass === 'inOut');
     const site = this.scope.calls?.functionCall(pou, `${this.scope.symbols.prefix}${this.scope.pouName}@L${pos.line}C${pos.col}`);
-    const refs = new Map<string, Access>();
+    const refs = new Map<string, Access | AggSymbol>();
     const assigns: { dst: Access; value: TExpr }[] = [];
     const given = new Set<string>();
     const outArgs: Arg[] = [];
@@ -414,21 +452,14 @@ export class StChecker {
       if (v.varClass === 'inOut' && !given.has(v.name.toUpperCase())) throw new Fail(pos, `the in-out ${v.name} of ${pou.name} must be given (it is passed by reference)`);
     if (!site) {
       for (const a of outArgs) this.target(a.value);
-      return { k: 'const', type, value: defaultValue(type) };
+      return {};
     }
-    const outs = outArgs.map((a) => this.outputArgument(a, pou, refs, (name) => site.scope.own(name)));
+    const outs = outArgs.flatMap((a) => this.outputArgument(a, pou, refs, (name) => site.scope.own(name)));
     const body = site.body(refs);
     if (!body) throw new Fail(pos, `the call of ${pou.name} cannot be built`);
-    const inits: { dst: Access; value: Value }[] = [];
-    for (const [key, m] of site.scope.ownNames()) if (m.kind === 'var' && !given.has(key)) inits.push({ dst: { kind: 'var', v: m, type: m.type }, value: m.initial });
+    const inits = initialLeaves(site.scope, (_, key) => !given.has(key));
     const result = site.scope.own(pou.name);
-    if (result?.kind !== 'var') throw new Fail(pos, `${pou.name} has no result variable`);
-    return {
-      k: 'seq',
-      type,
-      pre: [{ k: 'call', inits, assigns, first: body.first, end: body.end, outs }],
-      value: { k: 'read', type: result.type, access: { kind: 'var', v: result, type: result.type } },
-    };
+    return { call: { k: 'call', inits, assigns, first: body.first, end: body.end, outs }, ...(result ? { result } : {}) };
   }
 
   /** A standard function applied to checked arguments; untyped literals take the resolved types. */
@@ -570,3 +601,13 @@ function conversionHint(from: ElementaryType, to: ElementaryType): string {
 
 /** The common type of several typed values (for tests and tools). */
 export const common = commonType;
+
+/** Initial values of a callee's variables (`which` leaves; a struct/array variable's every leaf). */
+function initialLeaves(scope: SymbolTable, which: (v: VarSymbol, key: string) => boolean): { dst: Access; value: Value }[] {
+  const out: { dst: Access; value: Value }[] = [];
+  for (const [key, m] of scope.ownNames()) {
+    const vars = m.kind === 'var' ? [m] : m.kind === 'agg' ? nodeLeaves(m.node) : [];
+    for (const v of vars) if (which(v, key)) out.push({ dst: { kind: 'var', v, type: v.type }, value: v.initial });
+  }
+  return out;
+}

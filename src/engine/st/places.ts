@@ -9,9 +9,10 @@ import { resolveType } from '../../model/dataTypes';
 import { IDENTIFIER_RE } from '../../model/iecTypes';
 import { isIntegerType } from '../values/types';
 import { describeNode, dimsText, elementAt, memberOf, nodeLeaves, outside, sameShape, type AggNode, type IndexTerm } from '../compile/aggregates';
-import type { Access, SymbolTable } from '../compile/symbols';
+import type { Access, AggSymbol, SymbolTable } from '../compile/symbols';
+import { aggregateRef, nodeKey, shapeKey } from '../compile/aggregatePins';
 import type { Expr, Pos } from './ast';
-import { Fail, type StChecker } from './check';
+import { describe, Fail, type StChecker } from './check';
 import type { TExpr, TStmt } from './lowered';
 
 type Place = { readonly access: Access } | { readonly node: AggNode; readonly terms: readonly IndexTerm[]; readonly text: string };
@@ -123,10 +124,23 @@ export class Places {
     return this.copyInto(dst, value, `"${dst.text}"`).map((a) => ({ k: 'assign', ...a }));
   }
 
-  /** Leaf-by-leaf copies of `value` into a struct/array place (a whole assignment, a struct input). */
+  /**
+   * Leaf-by-leaf copies of `value` into a struct/array place (a whole assignment, a struct input):
+   * `value` names a variable of the same type, or calls a FUNCTION returning that type.
+   */
   copyInto(dst: AggNode | Place, value: Expr, what: string): { dst: Access; value: TExpr }[] {
     const to: Place = 'kind' in dst ? { node: dst, terms: [], text: what } : dst;
     if ('access' in to) throw new Fail(value.pos, `${what} is a single value`);
+    const call = this.ck.aggregateCall(value);
+    if (call) {
+      if (call.key !== nodeKey(to.node)) throw new Fail(value.pos, `${what} is ${describeNode(to.node)}; ${describe(value)} returns ${call.type}`);
+      if (!call.call || !call.node) return [];
+      const srcs = nodeLeaves(call.node);
+      return this.leaves(to).map((d, i) => {
+        const read: TExpr = { k: 'read', type: srcs[i]!.type, access: { kind: 'var', v: srcs[i]!, type: srcs[i]!.type } };
+        return { dst: d, value: i === 0 ? { k: 'seq', type: read.type, pre: [call.call!], value: read } : read };
+      });
+    }
     const from = value.k === 'name' || value.k === 'path' ? this.place(value) : undefined;
     if (!from || 'access' in from)
       throw new Fail(value.pos, `${what} is ${describeNode(to.node)}; give it a variable of the same type (member by member otherwise)`);
@@ -136,6 +150,31 @@ export class Places {
     const srcs = this.leaves(from);
     if (dsts.some((a) => a.kind !== 'const' && 'v' in a && a.v.constant)) throw new Fail(value.pos, `${what} is CONSTANT and cannot be written`);
     return dsts.map((d, i) => ({ dst: d, value: { k: 'read', type: srcs[i]!.type, access: srcs[i]! } }));
+  }
+
+  /** Leaf-by-leaf copies of a callee's struct/array output into the variable `target` names (`S1(Last => Got)`). */
+  copyFrom(src: AggNode, target: Expr, what: string): { dst: Access; src: Access }[] {
+    const to = target.k === 'name' || target.k === 'path' ? this.place(target) : undefined;
+    if (!to || 'access' in to) throw new Fail(target.pos, `${what} is ${describeNode(src)}; give it a variable of the same type`);
+    if (!sameShape(to.node, src)) throw new Fail(target.pos, `${what} is ${describeNode(src)}; "${to.text}" is ${describeNode(to.node)}`);
+    const dsts = this.leaves(to);
+    if (dsts.some((a) => 'v' in a && a.v.constant)) throw new Fail(target.pos, `"${to.text}" is CONSTANT and cannot be written`);
+    const from = nodeLeaves(src);
+    return dsts.map((d, i) => ({ dst: d, src: { kind: 'var', v: from[i]!, type: from[i]!.type } }));
+  }
+
+  /**
+   * A whole struct/array variable passed to an in-out of type `declared` (by reference: the
+   * callee's name is bound to it); undefined when `e` names a single value.
+   */
+  byReference(e: Expr, declared: string, what: string): AggSymbol | undefined {
+    const p = this.place(e);
+    if ('access' in p) return undefined;
+    const shape = resolveType(this.symbols.storage.types, declared);
+    if (!shape.ok || nodeKey(p.node) !== shapeKey(shape.shape)) throw new Fail(e.pos, `${what} is ${declared}; "${p.text}" is ${describeNode(p.node)}`);
+    if (p.terms.length) throw new Fail(e.pos, `${what} is passed by reference; "${p.text}" picks its element with a variable index: pass a constant index or a whole variable`);
+    if (nodeLeaves(p.node).some((v) => v.constant)) throw new Fail(e.pos, `${what} cannot be "${p.text}", which is CONSTANT`);
+    return aggregateRef(p.node, p.text);
   }
 
   private leaves(p: Extract<Place, { node: AggNode }>): Access[] {
