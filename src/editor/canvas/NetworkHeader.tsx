@@ -6,11 +6,22 @@ import { useDocumentStore } from '../../store/documentStore';
 import { useUi, useUiStore } from '../../store/uiStore';
 import { clickNetwork } from '../commands/networkActions';
 import { useCommitField } from '../variables/CommitInput';
-import { commentLines, COMMENT_LINE_H, headerHeight, RAIL_X } from './geometry';
+import {
+  COMMENT_LINE_H,
+  COMMENT_W,
+  commentLines,
+  HEADER_LEFT,
+  headerHeight,
+  headerNeed,
+  RAIL_X,
+  TITLE_W,
+  titleFieldWidth,
+} from './geometry';
 import { NetworkSimMarker } from '../sim/NetworkSimMarker';
 import '../outline/outline.css';
 
 const DRAG_TYPE = 'application/x-rungsmith-network';
+const LABEL_W = 100;
 
 interface FieldProps {
   readonly value: string;
@@ -20,13 +31,16 @@ interface FieldProps {
   readonly placeholder: string;
   readonly className: string;
   readonly multiline?: number;
+  /** The field's width and narrowest width (content pixels): a title is shown whole. */
+  readonly width?: number;
+  readonly minWidth?: number;
 }
 
 /**
  * A field that edits locally and commits once, on Enter or leaving it (a comment takes a new line
  * with Shift+Enter); Escape reverts. Enter and Escape give the keyboard back to the canvas.
  */
-function CommitField({ value, onCommit, label, testId, placeholder, className, multiline }: FieldProps) {
+function CommitField({ value, onCommit, label, testId, placeholder, className, multiline, width, minWidth }: FieldProps) {
   const field = useCommitField<HTMLInputElement | HTMLTextAreaElement>(value, onCommit, {
     multiline: Boolean(multiline),
     leaveOnEnter: true,
@@ -44,9 +58,9 @@ function CommitField({ value, onCommit, label, testId, placeholder, className, m
     },
   };
   return multiline ? (
-    <textarea {...common} rows={multiline} style={{ height: multiline * COMMENT_LINE_H }} />
+    <textarea {...common} rows={multiline} style={{ maxWidth: COMMENT_W, height: multiline * COMMENT_LINE_H + 2 }} />
   ) : (
-    <input {...common} />
+    <input {...common} style={{ width, minWidth }} />
   );
 }
 
@@ -96,7 +110,7 @@ export const NetworkHeader = memo(function NetworkHeader({
     <div
       className={`rs-network-header${dropTarget ? ' rs-drop-target' : ''}${selected ? ' rs-network-selected' : ''}`}
       data-selected={selected || undefined}
-      style={{ top, left: RAIL_X - 20, width: Math.max(420, width - RAIL_X), height: headerHeight(n) - 4 }}
+      style={{ top, left: HEADER_LEFT, width: Math.max(headerNeed(n), width - RAIL_X), height: headerHeight(n) - 4 }}
       role="group"
       aria-label={`Network ${no}${n.label ? ` (${n.label})` : ''}`}
       data-testid={`network-header-${index}`}
@@ -155,6 +169,7 @@ export const NetworkHeader = memo(function NetworkHeader({
           testId={`network-label-${n.id}`}
           placeholder="label"
           className="rs-network-label rs-mono"
+          width={LABEL_W}
         />
         <CommitField
           value={n.title}
@@ -163,6 +178,8 @@ export const NetworkHeader = memo(function NetworkHeader({
           testId={`network-title-${n.id}`}
           placeholder="Title"
           className="rs-network-title"
+          width={Math.max(TITLE_W, titleFieldWidth(n))}
+          minWidth={titleFieldWidth(n)}
         />
         {errors + warnings > 0 && (
           <span

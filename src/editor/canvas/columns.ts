@@ -69,6 +69,10 @@ export function boxMetrics(el: BoxElement, layout: BoxLayout, open?: OpenPins): 
   };
 }
 
+/** Where a jump's or return's label starts in its cell, and the room kept between it and the right rail. */
+export const JUMP_TEXT_X = 10;
+export const JUMP_RAIL_GAP = 14;
+
 /** The label a jump or return shows, and the width it needs. */
 export const jumpText = (el: LdElement): string =>
   el.kind === 'jump' ? `>>${el.target || '???'}` : el.kind === 'return' ? '<RETURN>' : '';
@@ -82,7 +86,7 @@ function needs(el: LdElement, lib: BlockLibrary, n: Network): number[] {
       return [nameWidth(el.variable || '???') + LABEL_PAD];
     case 'jump':
     case 'return':
-      return [textWidth(jumpText(el), SPEC_MONO_SMALL) + 16];
+      return [JUMP_TEXT_X + textWidth(jumpText(el), SPEC_MONO_SMALL) + JUMP_RAIL_GAP];
     case 'connector':
     case 'continuation':
       return [textWidth(`>${el.name}>`, SPEC_BOLD) + 2 * LABEL_PAD];

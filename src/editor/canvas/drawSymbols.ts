@@ -15,7 +15,7 @@ import {
   WIRE_FALSE_DASH,
   WIRE_TRUE,
 } from '../theme/monitorStyle';
-import { BOX_MARGIN, boxMetrics, CELL_W, jumpText } from './columns';
+import { BOX_MARGIN, boxMetrics, CELL_W, JUMP_RAIL_GAP, JUMP_TEXT_X, jumpText } from './columns';
 import { drawConnection } from './drawConnectors';
 import { CELL_H, WIRE_Y } from './geometry';
 import type { OpenPins } from './pinOperands';
@@ -294,14 +294,17 @@ function drawLink(ctx: Ctx, t: CanvasTheme, paint: ElementPaint, w: number) {
   wire(ctx, t, 0, w, WIRE_Y, paint.power, 1);
 }
 
-/** Jump and return labels end a rung; their column is as wide as the label. */
+/**
+ * Jump and return labels end a rung; their column is as wide as the label, and the label keeps
+ * clear of the right rail (a jump is not connected to it).
+ */
 function drawJumpOrReturn(ctx: Ctx, t: CanvasTheme, text: string, paint: ElementPaint, missing: boolean, w: number) {
-  wire(ctx, t, 0, 8, WIRE_Y, paint.power, 1);
+  wire(ctx, t, 0, JUMP_TEXT_X - 2, WIRE_Y, paint.power, 1);
   ctx.font = MONO_SMALL_BOLD;
   ctx.textAlign = 'left';
   ctx.textBaseline = 'middle';
   ctx.fillStyle = missing ? t.muted : t.symbol;
-  fillName(ctx, text, 10, WIRE_Y + 1, w - 12);
+  fillName(ctx, text, JUMP_TEXT_X, WIRE_Y + 1, w - JUMP_TEXT_X - JUMP_RAIL_GAP);
   ctx.textBaseline = 'alphabetic';
 }
 

@@ -15,6 +15,8 @@ import {
   type NetworkColumns,
 } from './columns';
 
+import { textWidth, wrappedLines, type FontSpec } from './textWidth';
+
 export { CELL_W } from './columns';
 
 /** A position in canvas content pixels (before zoom). Not a Cell. */
@@ -30,12 +32,53 @@ export const WIRE_Y = 40;
 export const RAIL_X = 28;
 export const HEADER_TITLE_H = 36;
 export const COMMENT_LINE_H = 20;
-export const MAX_COMMENT_LINES = 4;
 export const GRID_PAD_BOTTOM = 14;
 export const NETWORK_GAP = 10;
 
-export const commentLines = (n: Pick<Network, 'comment'>): number =>
-  Math.min(MAX_COMMENT_LINES, Math.max(1, n.comment.split('\n').length));
+/** The header's text (13px; the title bold), as canvas.css sets it. */
+const HEADER_FONT: FontSpec = { size: 13 };
+const TITLE_FONT: FontSpec = { size: 13, bold: true };
+/**
+ * A comment is shown whole: its field spans the header (less COMMENT_INSET) up to COMMENT_W, and
+ * its lines wrap at that width (the same for every network, so the layout never depends on the
+ * view); the header is at least as wide as the comment's longest line needs (up to COMMENT_W).
+ */
+export const COMMENT_W = 640;
+/** The header's width around its comment field: padding, the field's left margin and right gap. */
+const COMMENT_INSET = 48;
+/** The comment field's padding and border. */
+const COMMENT_PAD = 10;
+/** The title field's usual width; it shrinks to its text when the header is narrow, never below it. */
+export const TITLE_W = 260;
+const TITLE_MIN_W = 80;
+/** The title bar without its title field: handle, marks, number, label, badge, buttons, gaps. */
+export const TITLEBAR_REST_W = 520;
+
+const commentMemo = new Map<string, { lines: number; widest: number }>();
+function commentText(comment: string): { lines: number; widest: number } {
+  let m = commentMemo.get(comment);
+  if (!m) {
+    if (commentMemo.size > 4096) commentMemo.clear();
+    let widest = 0;
+    for (const line of comment.split('\n')) widest = Math.max(widest, textWidth(line, HEADER_FONT));
+    m = { lines: Math.max(1, wrappedLines(comment, COMMENT_W - COMMENT_PAD, HEADER_FONT)), widest };
+    commentMemo.set(comment, m);
+  }
+  return m;
+}
+
+/** Lines the comment field shows: every line of the comment, long ones wrapped (at least one). */
+export const commentLines = (n: Pick<Network, 'comment'>): number => (n.comment ? commentText(n.comment).lines : 1);
+
+/** The title field's narrowest width: the whole title with the field's padding and border. */
+export const titleFieldWidth = (n: Pick<Network, 'title'>): number =>
+  Math.max(TITLE_MIN_W, Math.ceil(textWidth(n.title, TITLE_FONT)) + 14);
+
+/** The width a network's header needs: the title bar with the whole title, the comment's longest line. */
+export function headerNeed(n: Pick<Network, 'title' | 'comment'>): number {
+  const comment = Math.min(COMMENT_W, Math.ceil(commentText(n.comment).widest) + COMMENT_PAD + 2);
+  return Math.max(TITLEBAR_REST_W + titleFieldWidth(n), COMMENT_INSET + comment);
+}
 
 export const headerHeight = (n: Pick<Network, 'comment'>): number =>
   HEADER_TITLE_H + commentLines(n) * COMMENT_LINE_H + 6;
@@ -68,7 +111,7 @@ export function layoutNetworks(networks: readonly Network[], library?: BlockLibr
     tops[i] = y;
     heights[i] = networkHeight(n);
     y += heights[i]!;
-    width = Math.max(width, networkWidth(n, library) + 16);
+    width = Math.max(width, networkWidth(n, library) + 16, HEADER_LEFT + headerNeed(n) + 8);
   });
   return { tops, heights, totalHeight: y + 40, totalWidth: width, library };
 }
@@ -115,6 +158,9 @@ export function visibleRange(
   const last = networkIndexAt(layout, bottom);
   return { first, last };
 }
+
+/** The left edge of a network's header (content pixels). */
+export const HEADER_LEFT = RAIL_X - 20;
 
 /** Top-left of a network's cell grid relative to the network's top. */
 export const gridOrigin = (n: Pick<Network, 'comment'>): PixelPoint => ({ x: RAIL_X, y: headerHeight(n) });

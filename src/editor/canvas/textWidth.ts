@@ -48,3 +48,30 @@ export function textWidth(text: string, font: FontSpec = SPEC_FONT): number {
   }
   return (hundredths / 100) * font.size;
 }
+
+/**
+ * Lines `text` takes wrapped at `width` pixels the way a textarea wraps it: at spaces, a word
+ * longer than a line broken inside it, every newline a new line. Measured with the estimates
+ * above, so at least as many lines as the browser draws.
+ */
+export function wrappedLines(text: string, width: number, font: FontSpec = SPEC_FONT): number {
+  const space = textWidth(' ', font);
+  let lines = 0;
+  for (const paragraph of text.split('\n')) {
+    lines++;
+    let x = 0;
+    for (const word of paragraph.split(' ')) {
+      const w = textWidth(word, font);
+      if (x > 0 && x + space + w <= width) {
+        x += space + w;
+        continue;
+      }
+      if (x > 0) lines++;
+      // A word wider than a line fills whole lines and goes on in the next.
+      const full = w > width ? Math.ceil(w / width) - 1 : 0;
+      lines += full;
+      x = w - full * width;
+    }
+  }
+  return lines;
+}
