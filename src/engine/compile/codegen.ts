@@ -122,7 +122,7 @@ function straightOps(networks: readonly NetworkIR[], first: number, end: number)
   let ops = 0;
   const visit = (a: number, b: number): boolean => {
     for (let i = a; i < b; i++)
-      for (const op of networks[i]!.ops) {
+      for (const op of [...networks[i]!.ops, ...(networks[i]!.runLate ?? []).flatMap((k) => networks[k]!.late ?? [])]) {
         if (op.op === 'jump' || op.op === 'return') return false;
         if (++ops > INLINE_OPS) return false;
         if (op.op === 'st') {

@@ -207,7 +207,7 @@ export function startGenerated(
   const cancelled = (el: GraphNode['el'], type: string) =>
     r.warning(
       'LD-W22',
-      `${describeElement(el)}: no input of this ${type} function is connected; Beremiz and OpenPLC cancel such a function ("function cancelled ... No input connected"), so under the openplc profile it is not called and its outputs stay FALSE/0`,
+      `${describeElement(el)}: no input of this ${type} function is connected; Beremiz and OpenPLC cancel such a function ("function cancelled ... No input connected"), so under the openplc profile it is not called: variables written beside its outputs keep their values and its wired outputs carry FALSE/0`,
       el,
     );
 
