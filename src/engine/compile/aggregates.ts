@@ -13,7 +13,7 @@ import type { TExpr } from '../st/lowered';
 import { Reporter } from './report';
 import type { Diagnostic } from '../api';
 import type { Project } from '../../model/project';
-import type { DataTypeInfo, SymbolTable, VarSymbol } from './symbols';
+import type { Access, DataTypeInfo, SymbolTable, VarSymbol } from './symbols';
 
 export type PerStore = { readonly b: number; readonly n: number; readonly g: number };
 
@@ -231,4 +231,14 @@ export const outside = (v: Value, range: Dim): boolean => Number(v) < range.lowe
 function literalOf(text: string, type: ElementaryType): Value {
   const lit = parseLiteral(text, type);
   return lit.ok ? lit.value : defaultValue(type);
+}
+
+/** Initial values of a callee's variables (`which` leaves; a struct/array variable's every leaf). */
+export function initialLeaves(scope: SymbolTable, which: (v: VarSymbol, key: string) => boolean): { dst: Access; value: Value }[] {
+  const out: { dst: Access; value: Value }[] = [];
+  for (const [key, m] of scope.ownNames()) {
+    const vars = m.kind === 'var' ? [m] : m.kind === 'agg' ? nodeLeaves(m.node) : [];
+    for (const v of vars) if (which(v, key)) out.push({ dst: { kind: 'var', v, type: v.type }, value: v.initial });
+  }
+  return out;
 }

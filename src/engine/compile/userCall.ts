@@ -3,9 +3,11 @@
 // left open keeps its value; a function's takes its declared initial value), VAR_IN_OUT pins name
 // the caller's variable (by reference, LD-E23), the body runs, outputs are read after. A function
 // keeps nothing: its variables start at their initial values on every call. With EN OFF, an FB is
-// not executed and keeps its outputs; a function is not called and assigns nothing.
+// not executed and keeps its outputs; a function is not called and assigns nothing. Struct and
+// array pins (aggregatePins.ts): inputs and outputs are copied leaf by leaf, in-outs bound to the
+// caller's variable.
 import type { BoxElement } from '../../model/elements';
-import { isElementaryType, type ElementaryType, type Value } from '../../model/iecTypes';
+import { isElementaryType, type ElementaryType } from '../../model/iecTypes';
 import { isInOutPin } from '../../model/library';
 import type { Pou } from '../../model/project';
 import { canWiden } from '../values/types';
@@ -18,7 +20,7 @@ import { accessWords } from './lower';
 import type { Reporter } from './report';
 import type { Access, AggSymbol, SymbolTable, UfbSymbol } from './symbols';
 import { aggregatePinShape, aggregateRef, leafCopies, lowerAggregateOutput, type AggValue } from './aggregatePins';
-import { nodeLeaves } from './aggregates';
+import { initialLeaves } from './aggregates';
 
 export interface UserCallParts {
   readonly el: BoxElement;
@@ -180,13 +182,8 @@ export function lowerUserCall(ctx: PouContext, c: UserCallParts): CallOp | undef
   }
   // Temporaries (an FB's VAR_TEMP; every variable of a function) start at their initial values
   // (every leaf of a struct/array one).
-  const inits: { dst: Access; value: Value }[] = [];
   const assigned = new Set([...given, ...aggGiven].map((g) => g.pin.toUpperCase()));
-  for (const [key, m] of scope.ownNames()) {
-    if (isFb ? false : assigned.has(key)) continue;
-    const vars = m.kind === 'var' ? [m] : m.kind === 'agg' ? nodeLeaves(m.node) : [];
-    for (const v of vars) if (!isFb || v.temp === true) inits.push({ dst: { kind: 'var', v, type: v.type }, value: v.initial });
-  }
+  const inits = initialLeaves(scope, (v, key) => (isFb ? v.temp === true : !assigned.has(key)));
 
   return {
     op: 'call',

@@ -10,8 +10,8 @@ import { resolveFunction, type ResolvedFunction } from '../library/functions';
 import { parseLiteral } from '../values/literals';
 import { canWiden, commonType, isIntegerType, isBitStringType, isRealType, defaultValue } from '../values/types';
 import type { CallBuilder } from '../compile/context';
-import { storeOf, type Access, type AggSymbol, type Sym, type SymbolTable, type VarSymbol } from '../compile/symbols';
-import { nodeLeaves, type AggNode } from '../compile/aggregates';
+import { storeOf, type Access, type AggSymbol, type Sym, type SymbolTable } from '../compile/symbols';
+import { initialLeaves, type AggNode } from '../compile/aggregates';
 import { shapeKey } from '../compile/aggregatePins';
 import type { Arg, BinaryOp, Expr, Pos, Stmt } from './ast';
 import type { RuleId } from '../api';
@@ -601,13 +601,3 @@ function conversionHint(from: ElementaryType, to: ElementaryType): string {
 
 /** The common type of several typed values (for tests and tools). */
 export const common = commonType;
-
-/** Initial values of a callee's variables (`which` leaves; a struct/array variable's every leaf). */
-function initialLeaves(scope: SymbolTable, which: (v: VarSymbol, key: string) => boolean): { dst: Access; value: Value }[] {
-  const out: { dst: Access; value: Value }[] = [];
-  for (const [key, m] of scope.ownNames()) {
-    const vars = m.kind === 'var' ? [m] : m.kind === 'agg' ? nodeLeaves(m.node) : [];
-    for (const v of vars) if (which(v, key)) out.push({ dst: { kind: 'var', v, type: v.type }, value: v.initial });
-  }
-  return out;
-}
