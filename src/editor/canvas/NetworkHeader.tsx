@@ -58,7 +58,7 @@ function CommitField({ value, onCommit, label, testId, placeholder, className, m
     },
   };
   return multiline ? (
-    <textarea {...common} rows={multiline} style={{ maxWidth: COMMENT_W, height: multiline * COMMENT_LINE_H + 2 }} />
+    <textarea {...common} rows={multiline} style={{ maxWidth: COMMENT_W, height: multiline * COMMENT_LINE_H + 4 }} />
   ) : (
     <input {...common} style={{ width, minWidth }} />
   );
