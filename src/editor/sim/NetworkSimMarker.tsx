@@ -1,15 +1,17 @@
 // Debugger marks in a network's header: the breakpoint toggle, "next" when execution is paused
-// before this network (with a frame around the whole network), "skipped" when a jump skipped it.
+// before this network (with a frame around the whole network), "skipped" when a jump skipped it,
+// "not run" when no network of the body ran (its task was not due in this tick, or it was not called).
 import type { Network } from '../../model/project';
 import { gridHeight, headerHeight } from '../canvas/geometry';
 import { useSimStore } from './simContext';
-import { useHasBreakpoint, useIsCurrentNetwork, useNetworkExecuted } from './useSimOverlay';
+import { useBodyRan, useHasBreakpoint, useIsCurrentNetwork, useNetworkExecuted } from './useSimOverlay';
 
 export function NetworkSimMarker({ network, index }: { network: Network; index: number }) {
   const sim = useSimStore();
   const breakpoint = useHasBreakpoint(network.id);
   const current = useIsCurrentNetwork(network.id);
   const executed = useNetworkExecuted(network.id);
+  const bodyRan = useBodyRan();
   const no = index + 1;
   return (
     <>
@@ -31,7 +33,16 @@ export function NetworkSimMarker({ network, index }: { network: Network; index: 
         </>
       )}
       {executed === false && (
-        <span className="rs-sim-skipped" title="A jump or return skipped this network in the last scan">skipped</span>
+        <span
+          className="rs-sim-skipped"
+          title={
+            bodyRan === false
+              ? 'This body did not run in this scan: its task was not due in this tick, or nothing called it'
+              : 'A jump or return skipped this network in this scan'
+          }
+        >
+          {bodyRan === false ? 'not run' : 'skipped'}
+        </span>
       )}
     </>
   );

@@ -70,5 +70,16 @@ export function useNetworkExecuted(networkId: string): boolean | undefined {
   });
 }
 
+/**
+ * Whether any network of the shown body ran in the last scan (undefined when not known): a body none
+ * of whose networks ran was not executed at all (its task was not due in this tick, or nothing called it).
+ */
+export function useBodyRan(): boolean | undefined {
+  return useSim((s) => {
+    if (!s.live || s.nextNetwork !== -1 || !s.layout) return undefined;
+    return s.layout.networkIds.some((_, i) => s.executed[i] === 1);
+  });
+}
+
 /** True while the simulation has a program that is running or paused (editing applies as an online change). */
 export const useSimActive = (): boolean => useSim((s) => s.mode !== 'stopped' || s.scan > 0);
