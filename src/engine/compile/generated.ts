@@ -28,7 +28,7 @@ import { lowerBox } from './box';
 import type { PouContext } from './context';
 import type { GraphNode, NetworkGraph } from './graph';
 import type { NetworkIR, Op } from './ir';
-import { coilOperand, contactOperand, edgeOf, jumpTarget, NetMap, type PendingNetwork } from './lower';
+import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget, NetMap, networkIR, type PendingNetwork } from './lower';
 import { describeElement, type Reporter } from './report';
 import type { Access } from './symbols';
 
@@ -125,17 +125,7 @@ export function startGenerated(
     const k = readings.get(s.node) ?? 0;
     readings.set(s.node, k + 1);
     const edge = el.contact === 'P' || el.contact === 'N' ? edgeOf(ctx, el, index, r, k) : undefined;
-    const src = operands.get(s.node);
-    sink.push({
-      op: 'contact',
-      node: node.index,
-      contact: el.contact,
-      ...(src ? { src } : {}),
-      inNet,
-      outNet,
-      ...(ownNet !== undefined ? { ownNet } : {}),
-      ...(edge !== undefined ? { edge } : {}),
-    });
+    sink.push(contactOp(node.index, el.contact, operands.get(s.node), inNet, outNet, ownNet, edge));
     latest.set(s.node, [inNet, ownNet ?? outNet]);
     return ownNet ?? outNet;
   };
@@ -259,17 +249,12 @@ export function startGenerated(
         const ni = g.nodes.findIndex((n) => n.index === i);
         return ni >= 0 ? (latest.get(ni) ?? [-1, -1]) : [-1, -1];
       });
-      return {
-        index: ctx.first + index,
-        ...(network.label ? { label: network.label } : {}),
+      return networkIR(ctx, network, index, nets, {
         ops,
-        netCount: nets.powerCount,
-        railNets: nets.railNets(),
         elementNets,
         vlinkNets: network.vlinks.map((_, i) => netOf(g.vlinkNet[i]!)),
-        constants: [],
-        ...(late.length ? { late } : {}),
-      };
+        late,
+      });
     },
   };
 }

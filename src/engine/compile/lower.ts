@@ -154,16 +154,7 @@ function lowerInOrder(
         // Where other outputs join this contact's right side, keep its own result for the power display.
         const joined = g.nets[outGraphNet]!.sources.length > 1 || g.nets[outGraphNet]!.leftRail;
         const ownNet = joined ? nets.powerNet(-1 - ni) : undefined;
-        ops.push({
-          op: 'contact',
-          node: node.index,
-          contact: el.contact,
-          ...(src ? { src } : {}),
-          inNet,
-          outNet,
-          ...(ownNet !== undefined ? { ownNet } : {}),
-          ...(edge !== undefined ? { edge } : {}),
-        });
+        ops.push(contactOp(node.index, el.contact, src, inNet, outNet, ownNet, edge));
         break;
       }
       case 'coil': {
@@ -233,15 +224,27 @@ function lowerInOrder(
     const net = g.vlinkNet[i]!;
     return net >= 0 && nets.hasPower(net) ? nets.powerNet(net) : -1;
   });
+  return networkIR(ctx, network, index, nets, { ops, elementNets, vlinkNets });
+}
+
+/** A lowered network's IR from its operations and its elements' nets. */
+export function networkIR(
+  ctx: PouContext,
+  network: Network,
+  index: number,
+  nets: NetMap,
+  parts: Pick<NetworkIR, 'ops' | 'elementNets' | 'vlinkNets' | 'late'>,
+): NetworkIR {
   return {
     index: ctx.first + index,
     ...(network.label ? { label: network.label } : {}),
-    ops,
+    ops: parts.ops,
     netCount: nets.powerCount,
     railNets: nets.railNets(),
-    elementNets,
-    vlinkNets,
+    elementNets: parts.elementNets,
+    vlinkNets: parts.vlinkNets,
     constants: [],
+    ...(parts.late?.length ? { late: parts.late } : {}),
   };
 }
 
@@ -269,6 +272,28 @@ export function jumpTarget(ctx: PouContext, el: JumpElement, index: number, r: R
       el,
     );
   return target;
+}
+
+/** A contact's operation (`ownNet`: its own result where other outputs join its right side). */
+export function contactOp(
+  node: number,
+  contact: ContactElement['contact'],
+  src: Access | undefined,
+  inNet: number,
+  outNet: number,
+  ownNet: number | undefined,
+  edge: number | undefined,
+): Op {
+  return {
+    op: 'contact',
+    node,
+    contact,
+    ...(src ? { src } : {}),
+    inNet,
+    outNet,
+    ...(ownNet !== undefined ? { ownNet } : {}),
+    ...(edge !== undefined ? { edge } : {}),
+  };
 }
 
 /** The edge memory of a |P| |N| contact or (P) (N) coil; a FUNCTION has none to keep (LD-E22). */
