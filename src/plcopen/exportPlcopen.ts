@@ -2,6 +2,7 @@
 import { blockLibrary, type BlockLibrary } from '../model/library';
 import type { Pou, Project } from '../model/project';
 import { formatInterval } from './durations';
+import { uniqueConnectorNames } from './connectorNames';
 import { writeNetwork } from './exportBody';
 import { writeType, writeVarLists } from './exportInterface';
 import { writeInterface, writeOtherPou } from './otherPous';
@@ -58,7 +59,7 @@ function writePou(w: XmlWriter, pou: Pou, local: ReadonlySet<string>, library: B
         let next = 1;
         const ids = { next: () => next++ };
         let top = NETWORK_GAP;
-        for (const net of pou.networks) top = writeNetwork(w, net, top, ids, library) + NETWORK_GAP;
+        for (const net of uniqueConnectorNames(pou.networks)) top = writeNetwork(w, net, top, ids, library) + NETWORK_GAP;
       });
     });
     const keep = preserved<PreservedPou>(pou.extensions);

@@ -1,5 +1,6 @@
 // An LD body → the networks of a POU: connected components ordered like Beremiz runs them
 // (executionOrderId first, then top to bottom), labels and comments attached to the network below.
+import { uniqueConnectorNames } from './connectorNames';
 import type { LdElement } from '../model/elements';
 import type { BlockLibrary } from '../model/library';
 import { newNetwork } from '../model/factory';
@@ -163,7 +164,8 @@ export function importLdBody(
         }),
       );
   }
-  return { networks };
+  // The layout names its pairs C1, C2, … per network; PLCopen names are the body's.
+  return { networks: [...uniqueConnectorNames(networks)] };
 }
 
 /** Reads, interprets and lays out one batch of whole networks, each as wide as it needs. */

@@ -19,6 +19,7 @@ import { LdGraphError, type Finding } from './ldGraph';
 import { pouFingerprint } from './otherPous';
 import { unknownBlocks } from './unknownBlocks';
 import { readSfcChart } from './sfcChart';
+import { upgradeLegacySfc, upgradeLegacyText } from './legacySfc';
 import {
   TC6_0200,
   TC6_0201,
@@ -304,22 +305,30 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     if (networks) pous.push(withKeep({ ...head, language: 'LD', networks }, keepAddData));
     else {
       const legacy = ns === TC6_V10;
-      const source = lang.name === 'ST' || lang.name === 'IL' ? deepText(lang).replace(/\r\n?/g, '\n') : raw(lang);
+      // A legacy v1.0 chart differs from v2.01 only in its text markup and in how a condition is
+      // wired (legacySfc.ts): it is rewritten as v2.01, then read, run and exported like one.
+      const upgraded = legacy && lang.name === 'SFC' ? upgradeLegacySfc(raw(pouEl)) : undefined;
+      const pouXml = upgraded?.pou ?? pouEl;
+      const langXml = upgraded?.sfc ?? lang;
+      const rawOf = (el: XmlElement) => (upgraded ? el.doc.src.slice(el.offset, el.end) : raw(el));
+      const source = lang.name === 'ST' || lang.name === 'IL' ? deepText(lang).replace(/\r\n?/g, '\n') : rawOf(langXml);
       const pou: Pou = {
         ...head,
         source,
-        ...(lang.name === 'SFC' && !legacy ? { sfc: readSfcChart(pouEl, lang, library, (m) => warn(`in the chart of ${name}, ${m}`, pouEl)) } : {}),
+        ...(lang.name === 'SFC' && (!legacy || upgraded)
+          ? { sfc: readSfcChart(pouXml, langXml, library, (m) => warn(`in the chart of ${name}, ${m}`, pouEl)) }
+          : {}),
       };
-      const actions = child(pouEl, 'actions');
-      const transitions = child(pouEl, 'transitions');
+      const actions = child(pouXml, 'actions');
+      const transitions = child(pouXml, 'transitions');
       const keep: PreservedPou = {
         ...keepAddData,
-        // v1.0 graphical bodies differ from v2.01 (SFC actions, FBD blocks): only text bodies are carried over.
-        ...(legacy && lang.name !== 'ST' && lang.name !== 'IL'
+        // v1.0 FBD bodies that do not read as LD differ from v2.01 (blocks): only text bodies and charts are carried over.
+        ...(legacy && lang.name !== 'ST' && lang.name !== 'IL' && !upgraded
           ? { legacyBody: true as const }
-          : { pou: legacy ? upgradeLegacyText(raw(pouEl)) : raw(pouEl), fingerprint: pouFingerprint(pou) }),
-        ...(actions && !legacy ? { actions: raw(actions) } : {}),
-        ...(transitions && !legacy ? { transitions: raw(transitions) } : {}),
+          : { pou: upgraded ? upgraded.text : legacy ? upgradeLegacyText(raw(pouEl)) : raw(pouEl), fingerprint: pouFingerprint(pou) }),
+        ...(actions && (!legacy || upgraded) ? { actions: rawOf(actions) } : {}),
+        ...(transitions && (!legacy || upgraded) ? { transitions: rawOf(transitions) } : {}),
       };
       pous.push(withKeep(pou, keep));
       if (keep.pou)
@@ -408,12 +417,4 @@ function rawElement(text: string, el: XmlElement): string {
   const indent = /^[ \t]*$/.test(lead) ? lead.length : 0;
   const lines = text.slice(el.offset, el.end).replace(/\r\n?/g, '\n').split('\n');
   return lines.map((l, i) => (i === 0 ? l : l.replace(new RegExp(`^[ \\t]{0,${indent}}`), ''))).join('\n');
-}
-
-/** TC6 v1.0 wrote formatted text as bare CDATA; v2.01 wants it inside <xhtml:p> (Beremiz upgrades the same way). */
-function upgradeLegacyText(xml: string): string {
-  return xml.replace(
-    /<(content|documentation|ST|IL|alternativeText)>(\s*)<!\[CDATA\[([\s\S]*?)\]\]>(\s*)<\/\1>/g,
-    (_m, tag: string, _a: string, body: string) => `<${tag}><xhtml:p><![CDATA[${body}]]></xhtml:p></${tag}>`,
-  );
 }

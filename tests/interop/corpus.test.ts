@@ -37,16 +37,19 @@ const FILES = readdirSync(CORPUS)
  * vendor-only rules (LD-R02, LD-R03, ...), a VAR_EXTERNAL whose global the board's sketch declares
  * (LD-W16: Arduino_7_Segments' current_count) are never errors here. Every FBD body of the corpus
  * becomes LD (wires the grid cannot route go through connector pairs), also the legacy v1.0 ones
- * (DS401GUI's MAIN_TEST, GETBIT, SETBIT); LD-E40 names an SFC body in the legacy v1.0 format whose
- * chart is not carried over (DS401GUI's Test_SFC).
+ * (DS401GUI's MAIN_TEST, GETBIT, SETBIT), and legacy v1.0 charts are read as v2.01 (Test_SFC).
  */
-const EXPLAINED = new Set(['LD-E02', 'LD-E40']);
+const EXPLAINED = new Set(['LD-E02']);
 /**
- * Errors of one file's own making beyond those (none left: DS401GUI's UINT# literals on USINT
- * inputs are LD-W03 warnings, its TOF instance t1 called through a TP box is an LD-R10 warning and
- * runs as the TOF it is declared, as MATIEC compiles Beremiz's `t1(IN := ..., PT := ...)`).
+ * Errors of one file's own making beyond those. DS401GUI's Test_SFC (a legacy v1.0 chart, read and
+ * run) has an action COUNT2 that writes TEST_ARRAY[0,0] of an ARRAY[1..8, 1..8]: MATIEC's stage 3
+ * (array_range_check) refuses a constant index out of bounds ("Array access out of bounds."), the
+ * simulator refuses it as LD-E44. Its UINT# literals on USINT inputs are LD-W03 warnings and its TOF
+ * instance t1 called through a TP box is an LD-R10 warning (it runs as the TOF it is declared).
  */
-const FILE_ERRORS: Record<string, readonly string[]> = {};
+const FILE_ERRORS: Record<string, readonly string[]> = {
+  'beremiz__legacy_tc6v10_test_master_DS401GUI.xml': ['LD-E44'],
+};
 const explained = (file: string, rule: string) => EXPLAINED.has(rule) || (FILE_ERRORS[file] ?? []).includes(rule);
 
 /** Files whose programs use STRING variables, literals and pins (issue 12 part 4): no error, they run. */
@@ -177,6 +180,38 @@ describe('PLCopen corpus', () => {
     expect(found.filter((d) => d.rule === 'LD-R10' && /the box says TP/.test(d.message)).map((d) => d.message)).toEqual([
       'the box says TP but t1 is declared TOF; Beremiz/OpenPLC call t1 as a TOF and so does the simulator',
     ]);
+  });
+
+  it('DS401GUI: Test_SFC, a legacy v1.0 chart, is read as v2.01 and exported valid; with COUNT2’s out-of-bounds index corrected, MAIN_TEST runs it', async () => {
+    const text = readFileSync(join(CORPUS, 'beremiz__legacy_tc6v10_test_master_DS401GUI.xml'), 'utf8');
+    const r = importPlcopen(text);
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    const chart = r.project.pous.find((p) => p.name === 'Test_SFC')!.sfc!;
+    expect(chart.steps.map((s) => s.name).sort()).toEqual(
+      ['Start', 'Step1', 'Step2', 'Step3', 'Step4', 'TIMED_WAIT', 'WAIT1', 'WAIT2'].sort(),
+    );
+    expect(r.report.warnings.filter((w) => /legacy v1\.0 format|cannot be carried/.test(w.message))).toEqual([]);
+    // As written, MATIEC refuses TEST_ARRAY[0,0] of an ARRAY[1..8, 1..8]; so does the simulator.
+    expect(checkProject(r.project).filter((d) => d.severity === 'error').map((d) => `${d.rule} ${d.pou}`)).toEqual(['LD-E44 Test_SFC']);
+    const xml = exportPlcopen(r.project);
+    expect(await schemaErrors(xml)).toEqual([]);
+    expect(xml).toMatch(/<condition>\s*<connectionPointIn>\s*<connection refLocalId="42"/);
+    const fixed = importPlcopen(text.replace('TEST_ARRAY[0,0] := TEST_ARRAY[0,1] + 50;', 'TEST_ARRAY[1,1] := TEST_ARRAY[1,2] + 50;'));
+    if (!fixed.ok) throw new Error(JSON.stringify(fixed.errors));
+    const { program, diagnostics } = compileProgram(fixed.project, { pou: 'MAIN_TEST' });
+    expect(program, diagnostics.map((d) => d.message).join('\n')).toBeDefined();
+    const plc = createPlc(program!, { cycleMs: 100 });
+    plc.write('AnalogIn1', 5);
+    plc.write('DigitalIn', 1); // bit 0: CNT1 (the contacts CNT1, NOT CNT2 wired to the transition into Step1)
+    const active = () => ['Start', 'Step1', 'TIMED_WAIT'].filter((s) => plc.read(`Test2.${s}.X`));
+    const seen: string[] = [];
+    for (let k = 0; k < 40; k++) {
+      plc.scan();
+      const now = active().join();
+      if (now !== seen[seen.length - 1]) seen.push(now);
+    }
+    // Step1 counts OUT1 (COUNT1) up to UPPER1; TIMED_WAIT sets GO after its D T#2s action; the jump returns to Start.
+    expect(seen.slice(0, 4)).toEqual(['Step1', 'TIMED_WAIT', 'Start', 'Step1']);
   });
 
   it('the Aqua program calls its FB principal with every contact and coil wired to the call', () => {
