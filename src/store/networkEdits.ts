@@ -147,6 +147,12 @@ export function placeBoxOffRail(
 export const offRailShift = (els: readonly Pick<LdElement, 'kind' | 'col'>[]): number =>
   els.some((e) => e.kind === 'box' && e.col === 0) ? 1 : 0;
 
+/** The extra columns elements `ids` of `n` go when moved `dCol` columns (offRailShift). */
+export function moveShift(n: Network, ids: readonly ElementId[], dCol: number): number {
+  const set = new Set(ids);
+  return offRailShift(n.elements.filter((e) => set.has(e.id)).map((e) => ({ ...e, col: e.col + dCol })));
+}
+
 /**
  * The rail feeds only the power-flow input of each of these boxes at column 1: a link joins the
  * rail to that input where its cell in column 0 is free, links from the rail to its other inputs go.
@@ -311,10 +317,12 @@ export function moveElements(
   lib: BlockLibrary = STANDARD_LIBRARY,
   makeId: () => ElementId = () => newId<'ElementId'>('e'),
 ): Network | undefined {
+  if (dRow === 0 && dCol === 0) return n;
   const set = new Set(ids);
-  const shift = offRailShift(n.elements.filter((e) => set.has(e.id)).map((e) => ({ ...e, col: e.col + dCol })));
+  const shift = moveShift(n, ids, dCol);
   const out = moveBy(n, set, dRow, dCol + shift, lib);
-  if (!out || out === n || !shift) return out;
+  // A box moved left onto the first column from column 1 stays there and is fed like a placed one.
+  if (!out || !shift) return out;
   return feedFromRail(out, shiftedBoxes(out.elements.filter((e) => set.has(e.id)), shift), makeId, lib);
 }
 

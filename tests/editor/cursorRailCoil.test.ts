@@ -1,5 +1,6 @@
-// A coil that ends its rung is drawn at the right rail; the cells between its own cell and the
-// rail lie under its wire. The keyboard cursor never stops there: it lands on the coil.
+// The keyboard cursor: a coil that ends its rung is drawn at the right rail, the cells between its
+// own cell and the rail lie under its wire, and the cursor never stops there (it lands on the
+// coil); a box nudged onto the first column stays right of the rail, the cursor with it.
 import { expect, test } from 'vitest';
 import type { EditorContext } from '../../src/editor/commands/editorActions';
 import { commandById } from '../../src/editor/commands/registry';
@@ -66,4 +67,24 @@ test('a row whose coil already stands in the last column is walked cell by cell'
   e.run('nav.down');
   for (let i = 0; i < 6; i++) e.run('nav.right');
   expect(e.at()).toEqual([1, 5]);
+});
+
+test('Alt+Left puts a box onto the first column right of the rail; the cursor stays on the box', () => {
+  const doc = createDocumentStore(newProject('t'));
+  const ui = createUiStore();
+  const ctx: EditorContext = { doc, ui };
+  const net = selectNetworks(doc.getState())[0]!.id;
+  const id = doc.getState().placeElement(net, { row: 0, col: 1 }, {
+    kind: 'box',
+    blockType: 'TON',
+    instance: 'T1',
+    inputs: {},
+    outputs: {},
+  })!;
+  ui.getState().select(net, [id]);
+  ui.getState().setCursor({ network: net, row: 0, col: 1 });
+  commandById('edit.moveLeft')!.run(ctx);
+  const els = selectNetworks(doc.getState())[0]!.elements.map((e) => `${e.kind}@${e.row},${e.col}`).sort();
+  expect(els).toEqual(['box@0,1', 'link@0,0']);
+  expect(ui.getState().cursor).toMatchObject({ row: 0, col: 1 });
 });

@@ -108,3 +108,16 @@ describe('a box pasted onto the first column', () => {
     expect(railFedPins(nets()[1]!)).toEqual(['EN']);
   });
 });
+
+describe('a box nudged onto the first column', () => {
+  test('from column 2: the first nudge moves it to column 1, the second wires IN from the rail', () => {
+    const { s, nets } = setup();
+    const n = nets()[0]!.id;
+    const id = s().placeElement(n, { row: 0, col: 2 }, TON)!;
+    expect(s().moveElements(n, [id], 0, -1)).toBe(true);
+    expect(at(nets()[0]!.elements)).toEqual(['box@0,1']);
+    expect(s().moveElements(n, [id], 0, -1)).toBe(true);
+    expect(at(nets()[0]!.elements)).toEqual(['box@0,1', 'link@0,0']);
+    expect(railFedPins(nets()[0]!)).toEqual(['IN']);
+  });
+});

@@ -5,7 +5,7 @@ import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { Cell } from '../../model/grid';
 import type { ElementId, NetworkId } from '../../model/ids';
 import type { Network } from '../../model/project';
-import { boundsOf, moveElements, offRailShift } from '../../store/networkEdits';
+import { boundsOf, moveElements, moveShift, offRailShift } from '../../store/networkEdits';
 import { transferElements } from '../../store/networkTransfer';
 
 export interface DragState {
@@ -38,12 +38,10 @@ export function moveWithin(
   lib: BlockLibrary = STANDARD_LIBRARY,
 ): { blocked: boolean; ghost?: LdElement[] } {
   const set = new Set(ids);
-  const moved = n.elements.filter((e) => set.has(e.id)).map((e) => ({ ...e, row: e.row + dRow, col: e.col + dCol }));
-  const shift = offRailShift(moved);
-  return {
-    blocked: !moveElements(n, ids, dRow, dCol, lib),
-    ...(shift ? { ghost: moved.map((e) => ({ ...e, col: e.col + shift })) } : {}),
-  };
+  const shift = moveShift(n, ids, dCol);
+  const ghost = (): LdElement[] =>
+    n.elements.filter((e) => set.has(e.id)).map((e) => ({ ...e, row: e.row + dRow, col: e.col + dCol + shift }));
+  return { blocked: !moveElements(n, ids, dRow, dCol, lib), ...(shift ? { ghost: ghost() } : {}) };
 }
 
 /**

@@ -18,7 +18,7 @@ import type { BlockLibrary } from '../../model/library';
 import type { Cell } from '../../model/grid';
 import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
-import { elementAt } from '../../store/networkEdits';
+import { elementAt, moveShift } from '../../store/networkEdits';
 import { needsName, placeAt, type EditorContext } from '../commands/editorActions';
 import { dropInto, moveWithin, type DragState } from './dragTargets';
 import { useEdgeScroll } from './useEdgeScroll';
@@ -263,9 +263,10 @@ export function useCanvasPointer(
           ui.setCursor({ network: into.network, row: into.at.row, col: into.at.col });
         } else ui.setStatus('Cannot move there: another element is in the way.');
       } else if (d.dRow !== 0 || d.dCol !== 0) {
+        const shift = moveShift(n, m.ids, d.dCol);
         const moved = ctx.doc.getState().moveElements(n.id, m.ids, d.dRow, d.dCol);
         if (moved)
-          ui.setCursor({ network: n.id, row: m.startCell.row + d.dRow, col: m.startCell.col + d.dCol });
+          ui.setCursor({ network: n.id, row: m.startCell.row + d.dRow, col: m.startCell.col + d.dCol + shift });
         else ui.setStatus('Cannot move there: another element is in the way.');
       }
     } else if (m.kind === 'banding') {

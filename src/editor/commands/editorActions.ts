@@ -7,7 +7,7 @@ import type { Cell } from '../../model/grid';
 import type { ElementId, NetworkId } from '../../model/ids';
 import type { Network } from '../../model/project';
 import { selectNetworks, type DocumentStore } from '../../store/documentStore';
-import { elementAt, type ElementTemplate } from '../../store/networkEdits';
+import { elementAt, moveShift, type ElementTemplate } from '../../store/networkEdits';
 import type { CursorCell, UiStore } from '../../store/uiStore';
 import { modelCol, networkColumns } from '../canvas/columns';
 import { editBox } from './pinActions';
@@ -132,6 +132,9 @@ export function moveCursor(ctx: EditorContext, dRow: number, dCol: number, exten
 export function nudgeTargets(ctx: EditorContext, dRow: number, dCol: number) {
   const t = targets(ctx);
   if (!t) return;
+  const n = networkById(ctx, t.network);
+  // A box nudged onto the first column stays right of the rail (networkEdits.ts): the cursor follows it.
+  const shift = n ? moveShift(n, t.ids, dCol) : 0;
   if (!ctx.doc.getState().moveElements(t.network, t.ids, dRow, dCol)) {
     ctx.ui.getState().setStatus('Cannot move there: another element is in the way, or the edge of the grid.');
     return;
@@ -139,7 +142,7 @@ export function nudgeTargets(ctx: EditorContext, dRow: number, dCol: number) {
   const ui = ctx.ui.getState();
   ui.select(t.network, t.ids);
   if (ui.cursor?.network === t.network)
-    ui.setCursor({ ...ui.cursor, row: ui.cursor.row + dRow, col: ui.cursor.col + dCol });
+    ui.setCursor({ ...ui.cursor, row: ui.cursor.row + dRow, col: ui.cursor.col + dCol + shift });
 }
 
 /** The elements a command acts on: the selection, else the element under the cursor. */
