@@ -13,6 +13,10 @@ import type { Network, Profile, Variable } from '../../src/model/project';
 import { buildGraph } from '../../src/engine/compile/graph';
 import { exportBehaviour } from '../../src/plcopen/exportBehaviour';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
+import { EXAMPLES } from '../../src/model/examples';
+import { ScanPlc } from '../../src/engine/runtime/scanner';
+import { DEFAULT_TIERING } from '../../src/engine/runtime/tiering';
+import { io, multiProject, pou } from './userBlocksHelpers';
 import { ladder, plcOf, project, trace, vars } from './ladder';
 
 type Steps = readonly Record<string, boolean | number>[];
@@ -307,5 +311,48 @@ describe('openplc: random networks of contacts and coils run as the generator wr
     expect(compared).toBeGreaterThan(500);
     // The programs are varied enough that the two profiles often differ.
     expect(differFromIec).toBeGreaterThan(20);
+  });
+});
+
+describe('openplc: dispatch loops and straight-line functions agree, late blocks included', () => {
+  const dispatchOnly = { ...DEFAULT_TIERING, startAfterEvals: Infinity };
+  const switchAtOnce = { ...DEFAULT_TIERING, startAfterEvals: 0, minScans: 1, msPerNetwork: 0, batch: 1 };
+  // A user FB whose TON reaches only the rail (a late block of its body) and whose coil reads it.
+  const blinker = pou('Blinker', 'FUNCTION_BLOCK', [...io('input', 'Go BOOL'), ...io('output', 'Lamp BOOL'), ...vars('T1 TON')], [
+    ladder(['[Go] # # -', '. # # .'], { boxes: [{ row: 0, col: 1, type: 'TON', instance: 'T1', inputs: { PT: 'T#30ms' } }] }),
+    ladder(['[T1.Q] (Lamp)']),
+  ]);
+  const main = pou('Main', 'PROGRAM', vars('Go BOOL %IX0.0', 'Lamp BOOL %QX0.0', 'B1 Blinker'), [
+    ladder(['[Go] # # (Lamp)', '. # # .'], { boxes: [{ row: 0, col: 1, type: 'Blinker', instance: 'B1' }] }),
+  ]);
+  const programs = [
+    ...EXAMPLES.map((e) => [e.id, e.build()] as const),
+    ['user FB with a late TON', multiProject([main, blinker])] as const,
+  ];
+  test.each(programs)('%s, scan by scan (values, outputs, power)', (_id, p) => {
+    const { program, diagnostics } = compileProgram({ ...p, profile: 'openplc' });
+    if (!program) throw new Error(diagnostics.map((d) => d.message).join('\n'));
+    const inputs = program.symbols.vars.filter((v) => v.location?.area === 'I' && v.type === 'BOOL');
+    const plcs = [new ScanPlc(program, { cycleMs: 10 }, dispatchOnly), new ScanPlc(program, { cycleMs: 10 }, switchAtOnce)];
+    const r = ((s: number) => () => ((s = (s * 1103515245 + 12345) % 2147483648) & 0x10000) !== 0)(11);
+    const state = (plc: ScanPlc) => ({ values: plc.values(), outputs: plc.outputs(), power: plc.snapshot().networks });
+    for (let scan = 1; scan <= 120; scan++) {
+      const values = Object.fromEntries(inputs.map((v) => [v.locationText!, scan % 17 < 12 ? true : r()]));
+      for (const plc of plcs) {
+        plc.setInputs(values);
+        plc.scan();
+      }
+      expect(state(plcs[1])).toEqual(state(plcs[0]));
+    }
+  });
+
+  test('in the user FB, the lamp follows its TON one scan late under openplc', () => {
+    const run = (profile: Profile) => {
+      const { program } = compileProgram({ ...multiProject([main, blinker]), profile });
+      const plc = createPlc(program!, { cycleMs: 10 });
+      return trace(plc, [{ Go: true }, {}, {}, {}, {}], ['B1.T1.Q', 'Lamp']);
+    };
+    expect(run('iec')).toEqual([[0, 0], [0, 0], [0, 0], [1, 1], [1, 1]]);
+    expect(run('openplc')).toEqual([[0, 0], [0, 0], [0, 0], [1, 0], [1, 1]]);
   });
 });

@@ -381,10 +381,13 @@ function emitLate(em: Emitter, k: number): void {
   const L = em.lines;
   const rails = new Set(ir.railNets);
   const live = Array.from({ length: ir.netCount }, (_, i) => i).filter((i) => !rails.has(i));
-  const saved = { rails: em.rails, single: em.single };
+  const saved = { rails: em.rails, single: em.single, fbLocals: em.fbLocals, fbPrefix: em.fbPrefix };
   const single = singleWriterNets(ir, ops);
   em.rails = rails;
   em.single = single;
+  // FB locals declared in this block are its own (a later block or network must not use them).
+  em.fbLocals = new Map();
+  em.fbPrefix = `${saved.fbPrefix}L${k}_`;
   L.push(`{ // late blocks of network ${k + 1}`);
   for (let w = 0; w * NETS_PER_WORD < ir.netCount; w++) {
     const mine = live.filter((i) => Math.floor(i / NETS_PER_WORD) === w);
@@ -401,6 +404,8 @@ function emitLate(em: Emitter, k: number): void {
   L.push('}');
   em.rails = saved.rails;
   em.single = saved.single;
+  em.fbLocals = saved.fbLocals;
+  em.fbPrefix = saved.fbPrefix;
 }
 
 /** The networks of a straight body, each in a block of its own, marked as run in this scan. */
@@ -412,6 +417,8 @@ function inlineBody(em: Emitter, first: number, end: number): string[] {
   em.fbLocals = new Map();
   em.fbPrefix = `F${em.depth}_`;
   for (let i = first; i < end; i++) {
+    // Each network is a block of its own: its FB locals are declared in it (not reused from the previous one).
+    em.fbLocals = new Map();
     em.lines.push(`{ R[${em.p(i)}] = scan;`);
     emitNetwork(em, networks[i]!, words[i]!, String(i));
     em.lines.push('}');
