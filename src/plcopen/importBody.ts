@@ -19,6 +19,8 @@ import { child, childrenNamed, type XmlDoc, type XmlElement } from './xml/parse'
 
 export interface BodyResult {
   readonly networks: Network[];
+  /** One line per network the grid draws with connector pairs (see pairNotes). */
+  readonly notes: string[];
 }
 
 /** How a body is read (the defaults are right; tests use these to check that results do not depend on them). */
@@ -165,7 +167,35 @@ export function importLdBody(
       );
   }
   // The layout names its pairs C1, C2, … per network; PLCopen names are the body's.
-  return { networks: [...uniqueConnectorNames(networks)] };
+  const named = [...uniqueConnectorNames(networks)];
+  return { networks: named, notes: pairNotes(named) };
+}
+
+/**
+ * What the import report says of the connector pairs the layout drew: every pair on an imported
+ * network was drawn where the grid cannot route a wire (a file's own pairs are followed, then drawn
+ * again only where needed). One line per network: the wires (one continuation each) and the pairs.
+ */
+export function pairNotes(networks: readonly Network[]): string[] {
+  const out: string[] = [];
+  networks.forEach((net, k) => {
+    const names: string[] = [];
+    let wires = 0;
+    for (const el of net.elements) {
+      if (el.kind === 'connector' && !names.includes(el.name)) names.push(el.name);
+      if (el.kind === 'continuation') wires++;
+    }
+    if (!names.length) return;
+    const many = wires !== 1;
+    const pairs = names
+      .sort((a, b) => a.localeCompare(b, 'en', { numeric: true }))
+      .map((n) => `>${n}>`)
+      .join(', ');
+    out.push(
+      `network ${k + 1}: ${wires} wire${many ? 's' : ''} drawn through ${names.length > 1 ? `connector pairs ${pairs}` : `the connector pair ${pairs}`} because the grid cannot route ${many ? 'them' : 'it'}`,
+    );
+  });
+  return out;
 }
 
 /** Reads, interprets and lays out one batch of whole networks, each as wide as it needs. */

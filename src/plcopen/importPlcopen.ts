@@ -164,11 +164,13 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     library: BlockLibrary,
     quiet?: ImportIssue[],
     variables: readonly Variable[] = [],
+    /** The body's notes (connector pairs drawn), for the caller to report once the body is kept. */
+    bodyNotes: ImportIssue[] = notes,
   ): Pou['networks'] | undefined => {
     const bools = new Set(variables.filter((v) => v.type.toUpperCase() === 'BOOL').map((v) => v.name.toUpperCase()));
     try {
       const found: ImportIssue[] = [];
-      const { networks } = importLdBody(
+      const { networks, notes: drawn } = importLdBody(
         bodyLd,
         raw,
         (f: Finding) => found.push({ ...at(f.obj?.xml), pou: pouName, message: f.message }),
@@ -178,6 +180,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       );
       // In file order (a large body is read in batches, each reporting as it goes).
       found.sort((a, b) => (a.line ?? Infinity) - (b.line ?? Infinity));
+      for (const message of drawn) bodyNotes.push({ ...at(bodyLd), pou: pouName, message });
       if (quiet) {
         quiet.push(...found);
         return networks;
@@ -285,11 +288,13 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       // FBD and LD share their graph vocabulary: an FBD body that the grid draws exactly, with
       // nothing dropped, becomes LD; otherwise it stays FBD (kept, not simulated).
       const found: ImportIssue[] = [];
-      const tried = importLd(name, lang, 'FBD body', library, found, head.variables);
+      const drawn: ImportIssue[] = [];
+      const tried = importLd(name, lang, 'FBD body', library, found, head.variables, drawn);
       const lost = found.filter((f) => !EXACT_FBD.some((re) => re.test(f.message)));
       if (tried && !lost.length) {
         networks = tried;
         for (const f of found) warnings.push(f);
+        notes.push(...drawn);
         reportPous.push({ name, networks: tried.length, from: 'FBD body' });
         warn(`POU "${name}" was converted from FBD to LD (${tried.length} networks, every wire kept)`, pouEl);
       } else {
@@ -335,7 +340,9 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
         warn(
           lang.name === 'FBD'
             ? `POU "${name}" is written in FBD: its interface can be called from LD and it is kept unchanged for export, but Rungsmith cannot run it (read as LD, ${fbdKept ?? 'its body cannot be read as a graph'}): its calls cannot run`
-            : `POU "${name}" is written in ${lang.name}: Rungsmith runs it and keeps it unchanged for export, but shows it read-only (the editor edits LD)`,
+            : upgraded
+              ? `POU "${name}" is written in SFC in the legacy v1.0 format: read as v2.01 (the same chart), Rungsmith runs it and exports it in v2.01, but shows it read-only (the editor edits LD)`
+              : `POU "${name}" is written in ${lang.name}: Rungsmith runs it and keeps it unchanged for export, but shows it read-only (the editor edits LD)`,
           pouEl,
         );
       else
