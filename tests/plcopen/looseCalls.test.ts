@@ -4,6 +4,7 @@
 // global is declared outside the file (LD-W16).
 import { describe, expect, it } from 'vitest';
 import { checkProject } from '../../src/engine/check';
+import type { Plc } from '../../src/engine/api';
 import type { Project } from '../../src/model/project';
 import { readableNames } from '../../src/sim/layout';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
@@ -16,6 +17,13 @@ function load(xml: string): { project: Project; report: ImportReport } {
   const r = importPlcopen(xml);
   if (!r.ok) throw new Error(JSON.stringify(r.errors));
   return r;
+}
+/** One rising edge on A: a scan with A on, one with A off. */
+function pulse(plc: Plc): void {
+  plc.write('A', true);
+  plc.scan();
+  plc.write('A', false);
+  plc.scan();
 }
 const found = (project: Project) => checkProject(project).map((d) => `${d.severity} ${d.rule} ${d.message}`);
 
@@ -113,10 +121,7 @@ describe('a typed literal of another integer type (DS401GUI passes UINT#n to USI
     const plc = run(project, 'Main');
     const q: boolean[] = [];
     for (let i = 0; i < 3; i++) {
-      plc.write('A', true);
-      plc.scan();
-      plc.write('A', false);
-      plc.scan();
+      pulse(plc);
       q.push(plc.read('Q') as boolean);
     }
     expect(q).toEqual([false, false, true]);
@@ -165,12 +170,7 @@ describe('a VAR_EXTERNAL whose global is declared outside the file (OpenPLC Ardu
     expect(readableNames(project, project.pous[0]!).find((v) => v.name === 'current_count')).toMatchObject({ type: 'INT' });
     const plc = run(project, 'Main');
     expect(plc.read('current_count')).toBe(5);
-    for (let i = 0; i < 3; i++) {
-      plc.write('A', true);
-      plc.scan();
-      plc.write('A', false);
-      plc.scan();
-    }
+    for (let i = 0; i < 3; i++) pulse(plc);
     expect(plc.read('current_count')).toBe(3);
     plc.force('current_count', 42);
     plc.scan();
