@@ -128,24 +128,31 @@ export interface Clock {
 
 /**
  * How a configuration's tasks share the scans, as MATIEC's resource runs them: one scan is one tick
- * of the common tick (the greatest common divisor of every task's interval); a task runs in the
- * scans whose tick number (0 for the first scan after a cold restart) is a multiple of `every`, its
- * program instances in declaration order (task order, then the order within the task).
+ * of the common tick (the greatest common divisor of every task's interval); a cyclic task runs in
+ * the scans whose tick number (0 for the first scan after a cold restart) is a multiple of `every`,
+ * an event task in the scans where its trigger has risen since the last tick; the program instances
+ * of the tasks due run in declaration order (task order, then the order within the task).
  */
 export interface TaskSchedule {
   /** The common tick, ms: the virtual clock advances by it per scan. */
   readonly tickMs: number;
   /** The tasks that run program instances, in the project's order. */
   readonly tasks: readonly TaskRate[];
-  /** True when some task runs less often than every scan (a scan then runs only the tasks due). */
+  /**
+   * True when some task runs less often than every scan, or on an event (a scan then runs only the
+   * tasks due, and the scan is the tick).
+   */
   readonly multiRate: boolean;
 }
 
 export interface TaskRate {
   readonly name: string;
+  /** The interval, ms (an event task's: 0 when none is given; it only counts in the tick). */
   readonly intervalMs: number;
-  /** Ticks from one run to the next: intervalMs / tickMs. */
+  /** Ticks from one run to the next: intervalMs / tickMs; 0 for an event task. */
   readonly every: number;
+  /** An event task's trigger: the BOOL global whose rising edge runs it (MATIEC: `SINGLE :=`). */
+  readonly single?: string;
   /** Its program instances, in declaration order. */
   readonly instances: readonly string[];
 }

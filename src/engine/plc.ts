@@ -21,6 +21,6 @@ export function createPlc(program: CompiledProgram, opts: PlcOptions): Plc {
     throw new Error('cycleMs must be a positive number of milliseconds');
   const s = program.schedule;
   if (s?.multiRate && !opts.clock && opts.cycleMs !== s.tickMs)
-    throw new Error(`the tasks run at different intervals: a scan is their common tick of ${s.tickMs} ms, not ${opts.cycleMs} ms`);
+    throw new Error(`the tasks run at different intervals or on events: a scan is their common tick of ${s.tickMs} ms, not ${opts.cycleMs} ms`);
   return new ScanPlc(program, opts);
 }

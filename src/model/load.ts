@@ -179,11 +179,17 @@ export const projectSchema = z
       z
         .object({
           name: z.string().min(1),
-          cycleMs: z.number().positive(),
+          cycleMs: z.number().nonnegative(),
+          single: z.string().min(1).optional(),
           priority: int,
           programs: z.array(z.object({ instance: z.string().min(1), pou: z.string().min(1) }).strict()),
         })
-        .strict(),
+        .strict()
+        // A cyclic task needs an interval; an event task may have none (it runs on its trigger).
+        .refine((t) => t.cycleMs > 0 || t.single !== undefined, {
+          path: ['cycleMs'],
+          message: 'a cyclic task needs an interval above 0 ms (only an event task, with "single", may have none)',
+        }),
     ),
     externalBlocks: z.array(externalBlockSchema).optional(),
     scenarios: z.array(z.object({ name: z.string().min(1), csv: z.string() }).strict()).optional(),

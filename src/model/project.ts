@@ -133,8 +133,16 @@ export interface SfcChart {
 
 export interface Task {
   readonly name: string;
-  /** Cyclic interval in milliseconds. */
+  /**
+   * Cyclic interval in milliseconds. An event task's interval (0: none given) only counts in the
+   * common tick, as MATIEC counts it; the task runs on its trigger, never by the interval.
+   */
   readonly cycleMs: number;
+  /**
+   * Event task (IEC 61131-3 `SINGLE :=`, PLCopen `single`): the BOOL global whose rising edge,
+   * sampled once per tick before the programs run, runs the task's programs. Absent: cyclic.
+   */
+  readonly single?: string;
   readonly priority: number;
   /** Program instances run by this task. */
   readonly programs: readonly { readonly instance: string; readonly pou: string }[];

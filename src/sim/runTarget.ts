@@ -1,9 +1,11 @@
 // Which program the simulator runs: the project's task configuration, never "whatever tab is open".
-// Several program instances in the tasks run as a configuration (each task at its own interval on
-// their common tick, instances in declaration order, variables named `Instance.Var`); one instance
-// runs its program; no task runs the first PROGRAM.
+// Several program instances in the tasks, or an event task, run as a configuration (each task at its
+// own interval on their common tick or on its trigger, instances in declaration order, variables
+// named `Instance.Var`); one instance of a cyclic task runs its program; no task runs the first
+// PROGRAM.
 import type { CompileOptions } from '../engine/api';
 import type { Project } from '../model/project';
+import { hasEventTask } from '../engine/compile/taskSchedule';
 
 export interface ProgramInstance {
   readonly instance: string;
@@ -17,7 +19,8 @@ export const programInstances = (project: Project): ProgramInstance[] =>
 /** The compile options that run what the project's tasks say. */
 export function runOptions(project: Project): Pick<CompileOptions, 'pou' | 'configuration'> {
   const instances = programInstances(project);
-  if (instances.length > 1) return { configuration: true };
+  // An event task's program runs only on its trigger's rising edge: only the configuration says so.
+  if (instances.length > 1 || hasEventTask(project.tasks)) return { configuration: true };
   if (instances.length === 1) return { pou: instances[0]!.pou };
   return {};
 }

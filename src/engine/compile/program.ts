@@ -1,6 +1,6 @@
 // compileProgram: the checked, lowered form of one PROGRAM POU (or of a task configuration: every
 // program instance of the project's tasks, in declaration order, each run by its task at the task's
-// interval: taskSchedule.ts), with every call of a user FB or function flattened into body networks
+// interval or on its trigger's rising edge: taskSchedule.ts, taskTriggers.ts), with every call of a user FB or function flattened into body networks
 // (flatten.ts), ready for createPlc.
 import type { Pou, Project } from '../../model/project';
 import { blockLibrary } from '../../model/library';
@@ -16,6 +16,7 @@ import { lowerPou } from './pou';
 import { Reporter } from './report';
 import { buildSymbols, declareGlobals, Storage, SymbolTable, type Store, type VarSymbol } from './symbols';
 import { taskSchedule } from './taskSchedule';
+import { taskTriggers, type TaskTrigger } from './taskTriggers';
 
 export type { EdgeOwner } from './context';
 export type { BodyInfo } from './flatten';
@@ -48,6 +49,8 @@ export interface CompiledProgram {
    */
   readonly schedule?: TaskSchedule;
   readonly programTask?: Int32Array;
+  /** Each event task's trigger (indexed like `schedule.tasks`; undefined for a cyclic task). */
+  readonly triggers?: readonly (TaskTrigger | undefined)[];
   /** Network ranges: programs, then one per call of a user FB or function. */
   readonly bodies: readonly BodyInfo[];
   /** Body of each network. */
@@ -74,7 +77,7 @@ export function assembleProgram(
   const flat = new Flattener(project, profile);
   let root: SymbolTable;
   let roots: Pou[];
-  let schedule: { rates: TaskSchedule; programTask: Int32Array } | undefined;
+  let schedule: { rates: TaskSchedule; programTask: Int32Array; triggers: (TaskTrigger | undefined)[] } | undefined;
   if (opts.configuration) {
     const r = new Reporter(diagnostics, project.name, -1);
     // Indexed like the schedule's tasks: those that run programs.
@@ -107,7 +110,9 @@ export function assembleProgram(
       if (!roots.includes(pou)) roots.push(pou);
       bound.push({ name: inst.instance, pou, task: inst.task });
     }
-    if (diagnostics.some((d) => d.severity === 'error')) return { diagnostics };
+    const rates = taskSchedule(project.tasks);
+    const triggers = taskTriggers(root, rates, r);
+    if (diagnostics.some((d) => d.severity === 'error') || !triggers) return { diagnostics };
     for (const pou of roots) lowerPou(project, pou, profile, diagnostics, []);
     if (!checkCallees(project, roots, profile, diagnostics)) return { diagnostics: [...globals, ...diagnostics] };
     flat.setRoot(root);
@@ -118,7 +123,7 @@ export function assembleProgram(
       root.bind(b.name, u);
       if (reserved[i]) flat.lower(reserved[i], u.scope);
     });
-    schedule = { rates: taskSchedule(project.tasks), programTask: Int32Array.from(bound, (b) => b.task) };
+    schedule = { rates, programTask: Int32Array.from(bound, (b) => b.task), triggers };
   } else {
     const pou = opts.pou ? findPou(project, opts.pou) : project.pous.find((p) => p.kind === 'PROGRAM');
     const r = new Reporter(diagnostics, opts.pou ?? project.name, -1);
@@ -172,7 +177,7 @@ export function assembleProgram(
       dataSlots: flat.shared.dataSlots,
       retentive,
       programs,
-      ...(schedule ? { schedule: schedule.rates, programTask: schedule.programTask } : {}),
+      ...(schedule ? { schedule: schedule.rates, programTask: schedule.programTask, triggers: schedule.triggers } : {}),
       bodies: flat.bodies,
       bodyOf: Int32Array.from(flat.bodyOf),
       mainEnd,

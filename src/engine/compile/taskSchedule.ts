@@ -1,8 +1,10 @@
 // The tasks of a configuration as MATIEC compiles a resource (stage4/generate_c/generate_c.cc):
-// the common tick is the greatest common divisor of the task intervals (`common_ticktime__`); each
-// tick, a task's flag is `!(tick % (interval / common_ticktime))`, and the program instances run in
-// their declaration order when their task's flag is set. Priorities order nothing: the runtime runs
-// the whole resource in one thread.
+// the common tick is the greatest common divisor of the task intervals (`common_ticktime__`,
+// calculate_common_ticktime_c: every INTERVAL counts, an event task's too); each tick, a cyclic
+// task's flag is `!(tick % (interval / common_ticktime))`, an event task's the Q of an R_TRIG fed
+// with its SINGLE variable (generate_c_resources_c, task_initialization_c), and the program
+// instances run in their declaration order when their task's flag is set. Priorities order nothing:
+// the runtime runs the whole resource in one thread.
 import type { Task } from '../../model/project';
 import type { TaskRate, TaskSchedule } from '../api';
 import type { BodyInfo } from './flatten';
@@ -35,17 +37,26 @@ export function taskSchedule(tasks: readonly Task[]): TaskSchedule {
   const rates: TaskRate[] = running.map((t) => ({
     name: t.name,
     intervalMs: t.cycleMs,
-    every: tickMs > 0 ? Math.max(1, Math.round((t.cycleMs * US) / (tickMs * US))) : 1,
+    every: t.single ? 0 : tickMs > 0 ? Math.max(1, Math.round((t.cycleMs * US) / (tickMs * US))) : 1,
+    ...(t.single ? { single: t.single } : {}),
     instances: t.programs.map((p) => p.instance),
   }));
-  return { tickMs, tasks: rates, multiRate: rates.some((r) => r.every > 1) };
+  // No interval at all (only event tasks without one): MATIEC refuses the configuration (LD-E20).
+  return { tickMs, tasks: rates, multiRate: tickMs > 0 && rates.some((r) => r.every !== 1) };
 }
 
-/** In words, for the Tasks dialog, the README's example and the CLI: "Fast runs every tick (10 ms); Slow every 3rd tick (30 ms)". */
+/** True when an event task runs programs: the tasks then run as a configuration, even one instance. */
+export const hasEventTask = (tasks: readonly Task[]): boolean => tasks.some((t) => t.single && t.programs.length > 0);
+
+/**
+ * In words, for the Tasks dialog, the README's example and the CLI: "Fast runs every tick (10 ms);
+ * Slow every 3rd tick (30 ms); E runs when StartPulse rises".
+ */
 export function describeSchedule(s: TaskSchedule): string {
   const parts = s.tasks.map((t, i) => {
+    if (t.single) return `${t.name} runs when ${t.single} rises`;
     const when = t.every === 1 ? 'every tick' : `every ${ordinal(t.every)} tick`;
-    return `${t.name}${i === 0 ? ' runs' : ''} ${when} (${t.intervalMs} ms)`;
+    return `${t.name}${i === 0 || s.tasks[i - 1]!.single ? ' runs' : ''} ${when} (${t.intervalMs} ms)`;
   });
   return `${parts.join('; ')}`;
 }

@@ -1,8 +1,9 @@
 // The scan cycle (LD-SEMANTICS.md section 7): input image -> networks (jumps, returns) -> output
 // image, on a virtual clock (scan k starts at (k-1) x cycleMs) or an injected real clock, with a
 // watchdog, forcing, cold/warm restart, stepping one network at a time and power snapshots. A
-// configuration whose tasks run at different intervals runs, each scan (one common tick), only the
-// programs whose task is due (TaskSchedule).
+// configuration whose tasks run at different intervals or on events runs, each scan (one common
+// tick), only the programs whose task is due (TaskSchedule; an event task's trigger is sampled after
+// the input image, before any program).
 import type { Value } from '../../model/iecTypes';
 import type {
   Fault,
@@ -30,6 +31,7 @@ import { generateSegment, planSegments } from '../compile/segments';
 import { networkPower, type PowerTrace } from './snapshot';
 import { DEFAULT_TIERING, Tiering, type TieringOptions } from './tiering';
 import type { CompiledProgram } from '../compile/program';
+import type { TaskTrigger } from '../compile/taskTriggers';
 import { programOf } from '../compile/taskSchedule';
 import type { Access, VarSymbol } from '../compile/symbols';
 import { coerce, Memory } from './memory';
@@ -88,11 +90,8 @@ export class ScanPlc implements Plc {
   private readonly mainEnd: number;
   private readonly programEnd: Int32Array;
   readonly schedule: TaskSchedule | undefined;
-  /**
-   * Several rates: the ticks from one run of each program to the next, the program starting at
-   * each network (-1: none), and whether each program's task is due in this scan.
-   */
-  private readonly rates: { every: Int32Array; startOf: Int32Array; due: Uint8Array } | undefined;
+  /** Several rates or event tasks: which programs run in this scan (programRates). */
+  private readonly rates: ProgramRates | undefined;
   /** Virtual clock step, ms. */
   private readonly cycleMs: number;
   /** What the generated code calls to run a body of networks (`X.call(first, end, now, scan)`). */
@@ -232,14 +231,12 @@ export class ScanPlc implements Plc {
       ? this.opts.clock.now() - this.clockOrigin
       : (this.count - 1) * this.cycleMs;
     this.scanStart = now();
-    // The tasks due at this tick (the first scan is tick 0: every task runs).
-    const rates = this.rates;
-    if (rates) for (let p = 0; p < rates.every.length; p++) rates.due[p] = (this.count - 1) % rates.every[p]! === 0 ? 1 : 0;
     // 1. Input image: inputs do not change during the scan; forced inputs keep their forced value.
     for (let i = 0; i < this.inputs.length; i++) {
       const v = this.inputs[i]!;
       if (!this.forces.has(v)) this.mem.store(v, this.inputImage[i]!);
     }
+    if (this.rates) this.dueTasks(this.rates);
     this.cursor = this.dueFrom(0);
     this.evals = 0;
     this.backJump = -1;
@@ -301,6 +298,27 @@ export class ScanPlc implements Plc {
     }
     this.cursor = i >= 0 && i < count ? this.dueFrom(i) : -2;
     return last;
+  }
+
+  /**
+   * The tasks due at this tick, before any program runs (MATIEC's RES_run__: every task's flag,
+   * then the programs): a cyclic task when the tick (0 for the first scan) is a multiple of its
+   * `every`; an event task when its trigger rose since the last tick (R_TRIG: Q = CLK AND NOT M;
+   * M = CLK, M FALSE after a restart, so a trigger already TRUE runs the task in the first scan).
+   */
+  private dueTasks(rates: ProgramRates): void {
+    const tick = this.count - 1;
+    for (let k = 0; k < rates.every.length; k++) {
+      const trigger = rates.triggers[k];
+      if (!trigger) {
+        rates.taskDue[k] = tick % rates.every[k]! === 0 ? 1 : 0;
+        continue;
+      }
+      const clk = this.mem.load(trigger.clk) === true;
+      rates.taskDue[k] = clk && this.mem.load(trigger.m) !== true ? 1 : 0;
+      this.mem.store(trigger.m, clk);
+    }
+    for (let p = 0; p < rates.due.length; p++) rates.due[p] = rates.taskDue[rates.taskOf[p]!]!;
   }
 
   /** The first network from `i` on that runs in this scan (skipping programs not due), -2 for none. */
@@ -822,15 +840,35 @@ export class ScanPlc implements Plc {
   }
 }
 
-/** Several rates: each program's ticks between runs and the program starting at each network; else undefined. */
-function programRates(program: CompiledProgram): { every: Int32Array; startOf: Int32Array; due: Uint8Array } | undefined {
+/** Which programs run in a scan when the tasks run at several rates or on events. */
+interface ProgramRates {
+  /** Per task (like schedule.tasks): ticks between runs (0: an event task) and its trigger. */
+  readonly every: Int32Array;
+  readonly triggers: readonly (TaskTrigger | undefined)[];
+  /** Per task: due in this scan. */
+  readonly taskDue: Uint8Array;
+  /** Per program: its task, and whether it runs in this scan. */
+  readonly taskOf: Int32Array;
+  readonly due: Uint8Array;
+  /** The program starting at each network (-1: none). */
+  readonly startOf: Int32Array;
+}
+
+/** Several rates or event tasks: what decides which programs run in a scan; else undefined. */
+function programRates(program: CompiledProgram): ProgramRates | undefined {
   const { schedule, programTask } = program;
   if (!schedule?.multiRate || !programTask) return undefined;
-  const every = Int32Array.from(programTask, (task) => schedule.tasks[task]!.every);
   const startOf = new Int32Array(program.mainEnd).fill(-1);
   for (let p = 0; p < program.programs; p++) {
     const body = program.bodies[p]!;
     if (body.end > body.first) startOf[body.first] = p;
   }
-  return { every, startOf, due: new Uint8Array(program.programs).fill(1) };
+  return {
+    every: Int32Array.from(schedule.tasks, (t) => t.every),
+    triggers: schedule.tasks.map((_, k) => program.triggers?.[k]),
+    taskDue: new Uint8Array(schedule.tasks.length).fill(1),
+    taskOf: programTask,
+    due: new Uint8Array(program.programs).fill(1),
+    startOf,
+  };
 }
