@@ -1,6 +1,6 @@
 // `rungsmith simulate`: N scans on the virtual clock, a CSV trace of the watched values on stdout.
 import { formatDiagnostic } from '../engine/compile/report';
-import { describeSchedule } from '../engine/compile/taskSchedule';
+import { describeSchedule, hasEventTask } from '../engine/compile/taskSchedule';
 import { compileProgram, createPlc, type CompiledProgram } from '../engine/plc';
 import { csvValue, parseValueText } from '../engine/values/literals';
 import type { ElementaryType } from '../model/iecTypes';
@@ -83,10 +83,10 @@ function defaultWatch(project: Project, pouName: string, names: readonly string[
   return out;
 }
 
-/** Program instances of the project's tasks, when there are several: simulated together. */
+/** Program instances of the project's tasks, when there are several or an event task: simulated together. */
 function configurationOf(project: Project): { instance: string; pou: string }[] | undefined {
   const instances = project.tasks.flatMap((t) => t.programs);
-  return instances.length > 1 ? instances : undefined;
+  return instances.length > 1 || hasEventTask(project.tasks) ? instances : undefined;
 }
 
 function typeOf(program: CompiledProgram, name: string): ElementaryType {

@@ -152,7 +152,8 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
             project.tasks.forEach((t) =>
               w.open(
                 'task',
-                { name: t.name, priority: t.priority, interval: formatInterval(t.cycleMs) },
+                // Schema order: name, single, interval, priority; an event task may have no interval.
+                { name: t.name, single: t.single, interval: t.cycleMs > 0 ? formatInterval(t.cycleMs) : undefined, priority: t.priority },
                 () => {
                   for (const p of t.programs) w.empty('pouInstance', { name: p.instance, typeName: p.pou });
                 },

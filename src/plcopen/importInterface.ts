@@ -111,6 +111,7 @@ export function readInstances(instances: XmlElement | undefined, warn: Warn): In
   const globals: Variable[] = [];
   let configuration: string | undefined;
   let resource: string | undefined;
+  const triggers: { el: XmlElement; single: string }[] = [];
   const configs = instances
     ? childrenNamed(child(instances, 'configurations') ?? instances, 'configuration')
     : [];
@@ -120,18 +121,18 @@ export function readInstances(instances: XmlElement | undefined, warn: Warn): In
     for (const res of childrenNamed(conf, 'resource')) {
       resource ??= res.attrs.name;
       for (const t of childrenNamed(res, 'task')) {
-        let cycleMs = 10;
+        // An event task (single="StartPulse") runs on its trigger; its interval, if any, only
+        // counts in the common tick (MATIEC), so none given is 0.
+        const single = t.attrs.single?.trim() || undefined;
+        let cycleMs = single ? 0 : 10;
         const interval = t.attrs.interval;
         if (interval) {
           const ms = parseInterval(interval);
           if (ms === undefined || ms <= 0)
-            warn(`task ${t.attrs.name}: interval "${interval}" is not a duration; using 10 ms`, t);
+            warn(`task ${t.attrs.name}: interval "${interval}" is not a duration; using ${single ? 'none' : '10 ms'}`, t);
           else cycleMs = ms;
-        } else
-          warn(
-            `task ${t.attrs.name}: event task (single="${t.attrs.single ?? ''}") runs cyclically every 10 ms in Rungsmith`,
-            t,
-          );
+        } else if (!single) warn(`task ${t.attrs.name} has neither an interval nor a trigger (single); it runs every 10 ms`, t);
+        if (single) triggers.push({ el: t, single });
         const programs = childrenNamed(t, 'pouInstance')
           .map((pi) => ({ instance: pi.attrs.name ?? '', pou: pi.attrs.typeName || pi.attrs.type || '' }))
           .filter((p) => {
@@ -143,6 +144,7 @@ export function readInstances(instances: XmlElement | undefined, warn: Warn): In
         tasks.push({
           name: t.attrs.name ?? `task${tasks.length}`,
           cycleMs,
+          ...(single ? { single } : {}),
           priority: Number.isFinite(priority) ? priority : 0,
           programs,
         });
@@ -151,6 +153,14 @@ export function readInstances(instances: XmlElement | undefined, warn: Warn): In
         warn(`program instance "${pi.attrs.name}" is not attached to a task; it is not run`, pi);
       for (const v of readVarLists(res, warn, ['globalVars'])) globals.push({ ...v, scope: 'resource' });
     }
+  }
+  for (const { el, single } of triggers) {
+    const g = globals.find((v) => v.name.toUpperCase() === single.toUpperCase());
+    if (!g || g.type.trim().toUpperCase() !== 'BOOL')
+      warn(
+        `task ${el.attrs.name}: its trigger single="${single}" ${g ? `is ${g.type}, not BOOL` : 'names no global variable of the configuration or resource'}; the task cannot run until it names a BOOL global (LD-E20)`,
+        el,
+      );
   }
   return { tasks, globals, ...(configuration ? { configuration } : {}), ...(resource ? { resource } : {}) };
 }

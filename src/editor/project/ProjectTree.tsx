@@ -135,7 +135,7 @@ export function ProjectTree() {
               <li key={t.name} className="rs-tree-task" data-testid={`tree-task-${t.name}`}>
                 <span className="rs-mono">{t.name}</span>{' '}
                 <span className="rs-tree-detail">
-                  every {t.cycleMs} ms, priority {t.priority}
+                  {t.single ? `when ${t.single} rises` : `every ${t.cycleMs} ms`}, priority {t.priority}
                 </span>
                 <ul>
                   {t.programs.map((p) => (
