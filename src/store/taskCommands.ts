@@ -1,6 +1,6 @@
-// The project's tasks (IEC 61131-3 configuration: TASK with INTERVAL and PRIORITY, and the PROGRAM
-// instances WITH each task): the checks a PLCopen configuration must pass, and the commands that edit
-// them. A command whose result would break a check changes nothing and says why; each is one undo
+// The project's tasks (IEC 61131-3 configuration: TASK with INTERVAL or SINGLE and PRIORITY, and
+// the PROGRAM instances WITH each task): the checks a PLCopen configuration must pass, and the
+// commands that edit them. A command whose result would break a check changes nothing and says why; each is one undo
 // step (one 'tasks.update' change).
 import { IDENTIFIER_RE } from '../model/iecTypes';
 import type { Project, Task } from '../model/project';
@@ -12,7 +12,7 @@ const same = (a: string, b: string) => a.trim().toUpperCase() === b.trim().toUpp
 export interface TaskProblem {
   readonly task: number;
   readonly program?: number;
-  readonly field: 'name' | 'cycleMs' | 'priority' | 'instance' | 'pou';
+  readonly field: 'name' | 'cycleMs' | 'single' | 'priority' | 'instance' | 'pou';
   readonly message: string;
 }
 
@@ -26,8 +26,22 @@ export function taskProblems(project: Project, tasks: readonly Task[]): TaskProb
     const name = t.name.trim();
     if (!isIdentifier(name)) out.push({ task: ti, field: 'name', message: `"${t.name}" is not an IEC identifier; a task needs a name like Fast or MainTask` });
     else if (tasks.some((o, k) => k < ti && same(o.name, name))) out.push({ task: ti, field: 'name', message: `Another task is already called ${name}` });
-    if (!Number.isInteger(t.cycleMs) || t.cycleMs < 1 || t.cycleMs > 3_600_000)
-      out.push({ task: ti, field: 'cycleMs', message: `${name || 'The task'}: the interval is whole milliseconds from 1 ms to 1 h (T#1ms .. T#1h)` });
+    // An event task may have no interval (0): it runs on its trigger; one it has counts in the tick.
+    if (!Number.isInteger(t.cycleMs) || t.cycleMs < (t.single ? 0 : 1) || t.cycleMs > 3_600_000)
+      out.push({
+        task: ti,
+        field: 'cycleMs',
+        message: `${name || 'The task'}: the interval is whole milliseconds from 1 ms to 1 h (T#1ms .. T#1h)${t.single ? ', or none for an event task' : ''}`,
+      });
+    if (t.single !== undefined) {
+      const g = project.globals.find((v) => same(v.name, t.single!));
+      if (!g || g.type.trim().toUpperCase() !== 'BOOL')
+        out.push({
+          task: ti,
+          field: 'single',
+          message: `${name || 'The task'}: ${t.single} ${g ? `is ${g.type}` : 'is not a global variable'}; an event task runs on the rising edge of a BOOL global`,
+        });
+    }
     if (!Number.isInteger(t.priority) || t.priority < 0 || t.priority > 255)
       out.push({ task: ti, field: 'priority', message: `${name || 'The task'}: the priority is a whole number from 0 (highest) to 255` });
     t.programs.forEach((p, pi) => {
@@ -45,6 +59,16 @@ export function taskProblems(project: Project, tasks: readonly Task[]): TaskProb
   });
   return out;
 }
+
+/** `task` run on the rising edge of the BOOL global `single`, or cyclic when it is empty. */
+export function withTrigger(task: Task, single: string | undefined): Task {
+  const { single: _old, ...cyclic } = task;
+  return single ? { ...cyclic, single } : cyclic;
+}
+
+/** The project's BOOL globals: what an event task can run on. */
+export const triggerCandidates = (project: Project): string[] =>
+  project.globals.filter((g) => g.type.trim().toUpperCase() === 'BOOL').map((g) => g.name);
 
 /** A name like `base`, `base2`, ... that `taken` does not hold (case-insensitive). */
 function fresh(base: string, taken: Iterable<string>): string {

@@ -1,5 +1,6 @@
 // The project's tasks as a PLC programmer configures them (CODESYS "Task configuration", Beremiz's
-// resource): name, cyclic interval, priority, and the program instances each task runs, in order;
+// resource): name, cyclic interval or event trigger (a BOOL global), priority, and the program
+// instances each task runs, in order;
 // what runs in which tick of the simulator (taskSchedule: MATIEC's common tick).
 // Every change is checked first (taskProblems) and is one undo step; a refused change keeps the
 // field as typed with the reason beside it until it is fixed or the dialog is closed.
@@ -7,10 +8,12 @@ import { useState } from 'react';
 import { describeSchedule, taskSchedule } from '../../engine/compile/taskSchedule';
 import type { Task } from '../../model/project';
 import { selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
-import { taskProblems, type TaskProblem } from '../../store/taskCommands';
+import { taskProblems, triggerCandidates, withTrigger, type TaskProblem } from '../../store/taskCommands';
 import { ModalDialog } from '../files/ModalDialog';
 
 const int = (text: string) => (/^\s*\d+\s*$/.test(text) ? Number(text) : NaN);
+/** An interval as typed: empty is none (0), which only an event task may have. */
+const interval = (text: string) => (text.trim() === '' ? 0 : int(text));
 
 export function TasksDialog({ onClose }: { readonly onClose: () => void }) {
   const store = useDocumentStore();
@@ -21,6 +24,7 @@ export function TasksDialog({ onClose }: { readonly onClose: () => void }) {
   const tasks = draft ?? project.tasks;
   const problems = draft ? taskProblems(project, draft) : [];
   const programs = project.pous.filter((p) => p.kind === 'PROGRAM');
+  const triggers = triggerCandidates(project);
 
   const apply = (next: readonly Task[]) => {
     const refused = store.getState().setTasks(next);
@@ -58,8 +62,10 @@ export function TasksDialog({ onClose }: { readonly onClose: () => void }) {
       <p id="rs-tasks-text" className="rs-tree-detail">
         Each cyclic task runs its program instances at its own interval, as MATIEC runs a resource: a scan
         is one tick of the greatest common divisor of the intervals, and a task runs in the ticks that are a
-        multiple of its interval. In a tick, the instances run in the order declared (task after task, as
-        listed); the priority goes to the PLCopen export and reorders nothing.
+        multiple of its interval. An event task runs its instances in the ticks where its BOOL global rose
+        since the last tick (sampled before any program runs); an interval it has only counts in the tick.
+        In a tick, the instances run in the order declared (task after task, as listed); the priority goes
+        to the PLCopen export and reorders nothing.
       </p>
       <p className="rs-tree-detail" data-testid="tasks-schedule">
         {scheduleText(problems.length === 0 ? tasks : project.tasks)}
@@ -84,10 +90,27 @@ export function TasksDialog({ onClose }: { readonly onClose: () => void }) {
               className="rs-cell-input"
               inputMode="numeric"
               data-testid={`task-cycle-${ti}`}
-              defaultValue={String(t.cycleMs)}
-              onBlur={(e) => int(e.target.value) !== t.cycleMs && editTask(ti, { cycleMs: int(e.target.value) })}
+              defaultValue={t.single && t.cycleMs === 0 ? '' : String(t.cycleMs)}
+              placeholder={t.single ? 'none' : undefined}
+              onBlur={(e) => interval(e.target.value) !== t.cycleMs && editTask(ti, { cycleMs: interval(e.target.value) })}
               onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
             />
+            <label htmlFor={`task-single-${ti}`}>Runs on rising edge of</label>
+            <select
+              id={`task-single-${ti}`}
+              className="rs-cell-input rs-mono"
+              data-testid={`task-single-${ti}`}
+              value={t.single ?? ''}
+              onChange={(e) => apply(tasks.map((x, i) => (i === ti ? withTrigger(x, e.target.value) : x)))}
+            >
+              <option value="">(nothing: cyclic)</option>
+              {t.single && !triggers.some((g) => g.toUpperCase() === t.single!.toUpperCase()) && <option value={t.single}>{t.single}</option>}
+              {triggers.map((g) => (
+                <option key={g} value={g}>
+                  {g}
+                </option>
+              ))}
+            </select>
             <label htmlFor={`task-priority-${ti}`}>Priority</label>
             <input
               id={`task-priority-${ti}`}
@@ -99,7 +122,7 @@ export function TasksDialog({ onClose }: { readonly onClose: () => void }) {
               onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
             />
           </div>
-          {(['name', 'cycleMs', 'priority'] as const).map((f) => {
+          {(['name', 'cycleMs', 'single', 'priority'] as const).map((f) => {
             const m = problemOf(ti, f);
             return m ? (
               <p key={f} className="rs-field-problem" role="alert" data-testid={`task-problem-${ti}`}>
@@ -221,10 +244,12 @@ export function TasksDialog({ onClose }: { readonly onClose: () => void }) {
   );
 }
 
-/** What runs when, in words: "Tick 10 ms: Fast runs every tick (10 ms); Slow every 3rd tick (30 ms)." */
+/** What runs when, in words: "Tick 10 ms: Fast runs every tick (10 ms); E runs when StartPulse rises." */
 function scheduleText(tasks: readonly Task[]): string {
   const s = taskSchedule(tasks);
   if (s.tasks.length === 0) return 'No task runs a program yet.';
+  if (s.tickMs === 0)
+    return `No task has an interval: MATIEC needs a periodic task to set the tick, so Run refuses this (LD-E20). ${describeSchedule(s)}.`;
   const cycle = s.multiRate
     ? " The simulator's Cycle is this tick."
     : " The simulator's Cycle starts at this interval and can be changed there.";
