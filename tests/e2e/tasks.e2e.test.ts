@@ -1,9 +1,13 @@
 // A PLC programmer configures the tasks in the project tree: the interval and priority of the
 // task, a second task running another instance of the program, a bad interval refused with the
-// reason, and Run runs exactly the configured program instances.
+// reason, and Run runs exactly the configured program instances; an event task on a BOOL global,
+// whose program's networks say "not run" until the trigger first rises.
 import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
+import { newPou, newProject } from '../../src/model/factory';
 import type { Project } from '../../src/model/project';
+import { ladder, vars } from '../engine/ladder';
+import { io } from '../engine/userBlocksHelpers';
 import { openApp, useChromium } from './appPage';
 import { SimPage } from './simPage';
 
@@ -90,5 +94,73 @@ test('the dialog says what runs in which tick; the simulator scans on the common
       return `${s.scan} ${s.timeMs} ${s.cycleMs}`;
     });
   await expect.poll(state).toBe('8 70 10');
+  expect(errors).toEqual([]);
+});
+
+/** Main (task Cyclic, 10 ms) lights Lamp from Go; OnStart (task E, 20 ms until made an event task) toggles Seen. */
+function eventPlant(): Project {
+  const main = newPou('Main', { variables: io('external', 'Go BOOL', 'Lamp BOOL'), networks: [ladder(['[Go] (Lamp)'])] });
+  const onStart = newPou('OnStart', { variables: io('external', 'Seen BOOL'), networks: [ladder(['[/Seen] (Seen)'])] });
+  return newProject('Events', {
+    pous: [main, onStart],
+    globals: vars('Go BOOL', 'Lamp BOOL', 'Seen BOOL', 'StartPulse BOOL', 'Level INT'),
+    tasks: [
+      { name: 'Cyclic', cycleMs: 10, priority: 1, programs: [{ instance: 'MainInst', pou: 'Main' }] },
+      { name: 'E', cycleMs: 20, priority: 0, programs: [{ instance: 'EvInst', pou: 'OnStart' }] },
+    ],
+  });
+}
+
+test('an event task: its trigger is chosen among the BOOL globals (one undo step); its program says "not run" until the trigger rises', async () => {
+  const sim = new SimPage(page);
+  await sim.button('reset').click();
+  await sim.load(eventPlant());
+  await page.getByTestId('tab-project').click();
+  await page.getByTestId('tree-tasks-edit').click();
+  await page.getByTestId('tasks-dialog').waitFor();
+  const trigger = page.getByTestId('task-single-1');
+  expect(await trigger.locator('option').allTextContents()).toEqual(['(nothing: cyclic)', 'Go', 'Lamp', 'Seen', 'StartPulse']);
+  await trigger.selectOption('StartPulse');
+  await expect.poll(async () => (await tasks())[1]).toEqual({ name: 'E', cycleMs: 20, single: 'StartPulse', priority: 0, programs: [{ instance: 'EvInst', pou: 'OnStart' }] });
+  const schedule = () => page.getByTestId('tasks-schedule').textContent();
+  await expect.poll(schedule).toBe("Tick 10 ms: Cyclic runs every tick (10 ms); E runs when StartPulse rises. The simulator's Cycle is this tick.");
+  // One undo step: undo makes it cyclic again (the field shows it), redo brings the trigger back.
+  await page.evaluate(() => window.rungsmith!.documentStore!.getState().undo());
+  await expect.poll(() => page.getByTestId('task-single-1').inputValue()).toBe('');
+  expect('single' in (await tasks())[1]!).toBe(false);
+  await page.evaluate(() => window.rungsmith!.documentStore!.getState().redo());
+  await expect.poll(() => page.getByTestId('task-single-1').inputValue()).toBe('StartPulse');
+  // An event task may have no interval: the field is emptied, the trigger runs it.
+  await setField('task-cycle-1', '');
+  await expect.poll(async () => (await tasks())[1]!.cycleMs).toBe(0);
+  await page.getByTestId('tasks-close').click();
+  await expect.poll(() => page.getByTestId('tree-task-E').textContent()).toMatch(/when StartPulse rises, priority 0/);
+
+  // Show OnStart, step one scan: its task was not due (no rise yet), so its network did not run.
+  await page.evaluate(() => {
+    const d = window.rungsmith!.documentStore!.getState();
+    d.setActivePou(d.project.pous.find((p) => p.name === 'OnStart')!.id);
+  });
+  await sim.button('reset').click();
+  await sim.button('step-scan').click();
+  const marker = page.locator('.rs-sim-skipped');
+  await expect.poll(() => marker.allTextContents()).toEqual(['not run']);
+  await sim.button('step-scan').click();
+  await expect.poll(() => marker.allTextContents()).toEqual(['not run']);
+  // The trigger rises (written from the watch table): the next scan runs OnStart once; no marker.
+  await page.evaluate(() =>
+    (window.rungsmith as unknown as { simStore: { getState(): { write(n: string, i: { value: boolean }): void } } }).simStore.getState().write('StartPulse', { value: true }),
+  );
+  await sim.button('step-scan').click();
+  await sim.waitForValue('Seen', true);
+  await expect.poll(() => marker.count()).toBe(0);
+  // Main's task is due in every tick: its network never says "not run".
+  await page.evaluate(() => {
+    const d = window.rungsmith!.documentStore!.getState();
+    d.setActivePou(d.project.pous.find((p) => p.name === 'Main')!.id);
+  });
+  await sim.button('step-scan').click();
+  await expect.poll(() => marker.count()).toBe(0);
+  expect(await sim.value('Seen')).toBe(true);
   expect(errors).toEqual([]);
 });

@@ -48,3 +48,14 @@ describe('an event task in the simulator', () => {
     expect(lastOf(h.of('scenarioReplayed')).result).toMatchObject({ ok: true, scans: 5 });
   });
 });
+
+test('the event program\'s view: nothing ran before its first trigger; then its last run, as a slower task\'s view shows', () => {
+  const project = eventProject();
+  const h = new SimHarness().send({ type: 'step', scans: 2, project }).advance(0);
+  h.send({ type: 'setView', view: { pou: 'Ev', instance: 'V' } });
+  expect(Array.from(h.frame.executed)).toEqual([0, 0, 0, 0]);
+  h.send({ type: 'write', name: 'StartPulse', input: { value: true } }, { type: 'step', scans: 1, project }).advance(0);
+  expect(Array.from(h.frame.executed)).toEqual([1, 1, 1, 1]);
+  h.send({ type: 'step', scans: 1, project }).advance(0);
+  expect([h.frame.scan, Array.from(h.frame.executed)]).toEqual([4, [1, 1, 1, 1]]);
+});

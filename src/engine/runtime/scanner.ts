@@ -825,7 +825,8 @@ export class ScanPlc implements Plc {
     const root = programOf(this.program.bodies, body);
     const p = this.program.bodies.indexOf(root);
     if (p < 0 || p >= rates.due.length || rates.due[p] === 1 || root.end <= root.first) return this.count;
-    return this.ranIn[root.first]!;
+    // Never run yet (an event task not triggered since the restart): scan 0, which no network ran in.
+    return Math.max(0, this.ranIn[root.first]!);
   }
 
   /** The body of an instance's call that ran last in the scan (the first call if none ran). */
