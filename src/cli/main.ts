@@ -125,6 +125,7 @@ function run(io: CliIo, argv: readonly string[]): number {
         io.err(
           `imported ${report.pous.length} LD POU${report.pous.length === 1 ? '' : 's'}: ${pous || 'none'}; ${report.warnings.length} warning${report.warnings.length === 1 ? '' : 's'}\n`,
         );
+        io.err(`${report.profileReason} (rungsmith simulate --profile overrides it)\n`);
       }
       return 0;
     }

@@ -10,6 +10,7 @@ import { NETWORK_GAP, SCALING } from './geometry';
 import { TC6_0201, XHTML_NS, preserved, type PreservedPou, type PreservedProject } from './types';
 import { XmlWriter } from './xml/write';
 import { writeDataTypes } from './dataTypes';
+import { profileData } from './profileChoice';
 
 export interface ExportOptions {
   /** Timestamp written in fileHeader/contentHeader (default: now). */
@@ -165,7 +166,11 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
         }),
       ),
     );
-    if (keep?.addData?.length) w.open('addData', undefined, () => keep.addData!.forEach((d) => w.raw(d)));
+    // The profile the project runs under, so that importing this file gives it back (profileChoice.ts).
+    w.open('addData', undefined, () => {
+      keep?.addData?.forEach((d) => w.raw(d));
+      w.raw(profileData(project.profile));
+    });
   });
   return `<?xml version="1.0" encoding="utf-8"?>\n${w.toString()}`;
 }

@@ -20,6 +20,7 @@ import { pouFingerprint } from './otherPous';
 import { unknownBlocks } from './unknownBlocks';
 import { readSfcChart } from './sfcChart';
 import { upgradeLegacySfc, upgradeLegacyText } from './legacySfc';
+import { PROFILE_DATA_NAME, chooseProfile } from './profileChoice';
 import {
   TC6_0200,
   TC6_0201,
@@ -354,10 +355,12 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     // The LD of SFC actions and transitions stays inside the chart (Pou.sfc), which runs it.
   }
   currentPou = undefined;
+  let recordedProfile: string | undefined;
   for (const holder of [root, contentHeader]) {
     const add = holder ? child(holder, 'addData') : undefined;
     for (const d of add ? childrenNamed(add, 'data') : []) {
-      if (d.attrs.handleUnknown === 'discard')
+      if (d.attrs.name === PROFILE_DATA_NAME) recordedProfile ??= child(d, 'profile')?.attrs.name ?? '';
+      else if (d.attrs.handleUnknown === 'discard')
         warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
       else keepProject.addData.push(raw(d));
     }
@@ -400,12 +403,17 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     ...(inst.configuration ? { configuration: inst.configuration } : {}),
     ...(inst.resource ? { resource: inst.resource } : {}),
   };
+  const profile = chooseProfile({
+    namespace: ns,
+    ...(fileHeader?.attrs.companyName ? { companyName: fileHeader.attrs.companyName } : {}),
+    ...(recordedProfile !== undefined ? { recorded: recordedProfile } : {}),
+  });
   const project: Project = {
     format: PROJECT_FORMAT,
     version: PROJECT_VERSION,
     name: contentHeader?.attrs.name || fileHeader?.attrs.productName || 'Imported',
     description: contentHeader ? (child(contentHeader, 'Comment')?.text.trim() ?? '') : '',
-    profile: 'iec',
+    profile: profile.profile,
     pous,
     globals: inst.globals,
     tasks,
@@ -413,7 +421,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     ...(userTypes.types.length ? { dataTypes: userTypes.types } : {}),
     extensions: { plcopen: keep },
   };
-  const report: ImportReport = { namespace: ns || '(none)', producer, pous: reportPous, warnings, notes };
+  const report: ImportReport = { namespace: ns || '(none)', producer, pous: reportPous, warnings, notes, profileReason: profile.reason };
   return { ok: true, project, report };
 }
 

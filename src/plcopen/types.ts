@@ -38,6 +38,8 @@ export interface ImportReport {
    * pairs (one line per network), VAR_EXTERNALs whose global is declared outside the file.
    */
   readonly notes: readonly ImportIssue[];
+  /** Why the project runs under the profile it got (profileChoice.ts): `semantics profile openplc: ...`. */
+  readonly profileReason: string;
 }
 
 export type ImportResult =

@@ -71,7 +71,10 @@ describe('rungsmith export and import', () => {
     expect(xml).toContain('<project xmlns="http://www.plcopen.org/xml/tc6_0201"');
     const im = rungsmith(['import', 'm.xml', '-o', 'back.json'], { 'm.xml': xml });
     expect(im.code).toBe(0);
-    expect(im.err).toBe('imported 1 LD POU: Main (1 network); 0 warnings\n');
+    expect(im.err).toBe(
+      'imported 1 LD POU: Main (1 network); 0 warnings\n' +
+        'semantics profile iec, as recorded by Rungsmith in the file (rungsmith simulate --profile overrides it)\n',
+    );
     const back = loadProject(im.files.get('back.json')!);
     expect(back.ok && back.project.pous[0]!.variables).toEqual(EXAMPLES[0]!.build().pous[0]!.variables);
   });

@@ -21,7 +21,20 @@ describe('PLCopen import: hand-written fixtures', () => {
       { name: 'Fast', cycleMs: 5, priority: 0, programs: [{ instance: 'inst0', pou: 'Main' }] },
     ]);
     expect(noErrors(project)).toEqual([]);
-    const plc = run(project, 'Main');
+    // A TC6 v2.01 file is what Beremiz and OpenPLC write: it runs as they run it, jump and RETURN
+    // dropped by their generator (LD-W20/LD-W21 say so on the elements).
+    expect(project.profile).toBe('openplc');
+    expect(report.profileReason).toMatch(/^semantics profile openplc: PLCopen TC6 v2\.01 is written by Beremiz and OpenPLC/);
+    expect(checkProject(project).filter((d) => d.severity === 'warning').map((d) => d.rule)).toEqual(
+      expect.arrayContaining(['LD-W20', 'LD-W21']),
+    );
+    const generated = run(project, 'Main');
+    generated.write('Skip', true);
+    generated.write('Stop', true);
+    generated.scan();
+    expect([generated.read('A'), generated.read('B'), generated.read('C')]).toEqual([true, true, true]);
+    // Under the iec profile the jump and the RETURN act (IEC 61131-3 4.2.6).
+    const plc = run({ ...project, profile: 'iec' }, 'Main');
     plc.write('Skip', true);
     plc.scan();
     expect([plc.read('A'), plc.read('B'), plc.read('C')]).toEqual([false, true, true]);

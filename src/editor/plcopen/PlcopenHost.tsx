@@ -88,6 +88,9 @@ function ImportReportDialog() {
         {project.tasks.length} task
         {project.tasks.length === 1 ? '' : 's'}.
       </p>
+      <p data-testid="plcopen-profile">
+        Runs under the {report.profileReason}. Change it in the project inspector (Semantics).
+      </p>
       {project.pous.length > 1 ? (
         <label className="rs-plcopen-pou">
           Open on POU{' '}
