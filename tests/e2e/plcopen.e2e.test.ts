@@ -36,6 +36,9 @@ test('export downloads valid PLCopen XML; importing it gives back the same progr
   const report = editor.page.getByTestId('plcopen-report');
   await report.waitFor();
   expect(await report.textContent()).toContain('Nothing was dropped or changed.');
+  expect(await report.getByTestId('plcopen-profile').textContent()).toContain(
+    `semantics profile ${original.profile}, as recorded by Rungsmith in the file`,
+  );
   await report.getByRole('button', { name: 'Open' }).click();
   await poll(async () => (await editor.project()).name).toBe(original.name);
   const back = await editor.project();
@@ -57,6 +60,10 @@ test('a file with several POUs shows the report and opens on the POU the user pi
   await report.waitFor();
   expect(await report.textContent()).toMatch(/2 LD POUs/);
   expect(await report.getByTestId('plcopen-warnings').textContent()).toContain('I2C_AHT20');
+  // A TC6 v2.01 file from OpenPLC runs as OpenPLC runs it; the report says so and where to change it.
+  expect(await report.getByTestId('plcopen-profile').textContent()).toMatch(
+    /^Runs under the semantics profile openplc: PLCopen TC6 v2\.01 is written by Beremiz and OpenPLC.*Change it in the project inspector \(Semantics\)\.$/,
+  );
   await report.getByTestId('plcopen-pou-choice').selectOption({ label: 'get_temp (program, 2 networks)' });
   await report.getByRole('button', { name: 'Open' }).click();
   await poll(async () => (await editor.project()).pous.map((p) => p.name).join(',')).toBe('main,get_temp');
