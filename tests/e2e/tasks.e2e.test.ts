@@ -97,6 +97,13 @@ test('the dialog says what runs in which tick; the simulator scans on the common
   expect(errors).toEqual([]);
 });
 
+/** Opens a POU's tab, as a click in the project tree does. */
+const showPou = (name: string) =>
+  page.evaluate((n) => {
+    const d = window.rungsmith!.documentStore!.getState();
+    d.setActivePou(d.project.pous.find((p) => p.name === n)!.id);
+  }, name);
+
 /** Main (task Cyclic, 10 ms) lights Lamp from Go; OnStart (task E, 20 ms until made an event task) toggles Seen. */
 function eventPlant(): Project {
   const main = newPou('Main', { variables: io('external', 'Go BOOL', 'Lamp BOOL'), networks: [ladder(['[Go] (Lamp)'])] });
@@ -137,10 +144,7 @@ test('an event task: its trigger is chosen among the BOOL globals (one undo step
   await expect.poll(() => page.getByTestId('tree-task-E').textContent()).toMatch(/when StartPulse rises, priority 0/);
 
   // Show OnStart, step one scan: its task was not due (no rise yet), so its network did not run.
-  await page.evaluate(() => {
-    const d = window.rungsmith!.documentStore!.getState();
-    d.setActivePou(d.project.pous.find((p) => p.name === 'OnStart')!.id);
-  });
+  await showPou('OnStart');
   await sim.button('reset').click();
   await sim.button('step-scan').click();
   const marker = page.locator('.rs-sim-skipped');
@@ -155,10 +159,7 @@ test('an event task: its trigger is chosen among the BOOL globals (one undo step
   await sim.waitForValue('Seen', true);
   await expect.poll(() => marker.count()).toBe(0);
   // Main's task is due in every tick: its network never says "not run".
-  await page.evaluate(() => {
-    const d = window.rungsmith!.documentStore!.getState();
-    d.setActivePou(d.project.pous.find((p) => p.name === 'Main')!.id);
-  });
+  await showPou('Main');
   await sim.button('step-scan').click();
   await expect.poll(() => marker.count()).toBe(0);
   expect(await sim.value('Seen')).toBe(true);

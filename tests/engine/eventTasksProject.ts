@@ -4,14 +4,9 @@
 // runs in N, appends 2 and toggles the lamp %QX0.0.
 import { newProject } from '../../src/model/factory';
 import type { Project, Task } from '../../src/model/project';
-import { ladder, vars, type BoxSpec } from './ladder';
+import { ladder, vars } from './ladder';
+import { append, twoIn } from './taskRatesProject';
 import { io, pou } from './userBlocksHelpers';
-
-const box = (type: string, row: number, col: number, extra: Partial<BoxSpec> = {}): BoxSpec => ({ row, col, type, ...extra });
-const twoIn = (type: 'ADD' | 'MUL', v: string, k: string) =>
-  ladder(['- # # .', '. # # .', '. # # .'], { boxes: [box(type, 0, 1, { inputs: { IN1: v, IN2: k }, outputs: { OUT: v } })] });
-/** Trace := Trace * 10 + id: the order in which programs ran, one digit per run. */
-const append = (id: string) => [twoIn('MUL', 'Trace', '10'), twoIn('ADD', 'Trace', id)];
 
 const cyc = () =>
   pou('Cyc', 'PROGRAM', [...vars('N DINT'), ...io('external', 'Trace DINT', 'Go BOOL', 'StartPulse BOOL')], [

@@ -8,10 +8,11 @@ import { ladder, vars, type BoxSpec } from './ladder';
 import { io, pou } from './userBlocksHelpers';
 
 const box = (type: string, row: number, col: number, extra: Partial<BoxSpec> = {}): BoxSpec => ({ row, col, type, ...extra });
-const twoIn = (type: 'ADD' | 'MUL', v: string, k: string) =>
+/** One network: v := type(v, k). */
+export const twoIn = (type: 'ADD' | 'MUL', v: string, k: string) =>
   ladder(['- # # .', '. # # .', '. # # .'], { boxes: [box(type, 0, 1, { inputs: { IN1: v, IN2: k }, outputs: { OUT: v } })] });
 /** Trace := Trace * 10 + id: the order in which programs ran, one digit per run. */
-const append = (id: string) => [twoIn('MUL', 'Trace', '10'), twoIn('ADD', 'Trace', id)];
+export const append = (id: string) => [twoIn('MUL', 'Trace', '10'), twoIn('ADD', 'Trace', id)];
 
 const fast = () =>
   pou('Fast', 'PROGRAM', [...vars('N DINT', 'Blink BOOL %QX0.0'), ...io('external', 'Trace DINT')], [
