@@ -123,7 +123,7 @@ function CycleInput() {
   };
   return (
     <label className="rs-sim-group" title={fixed
-      ? "Cycle time: the tasks run at different intervals, so a scan is their common tick (change the intervals in the Tasks dialog)"
+      ? "Cycle time: the tasks run at different intervals or on a trigger, so a scan is their common tick (change the tasks in the Tasks dialog)"
       : 'Cycle time: a scan starts every cycle (0 = as fast as possible)'}>
       <span className="rs-sim-unit">Cycle</span>
       <input className="rs-sim-number" aria-label="Cycle time in ms" value={text} inputMode="numeric" data-testid="sim-cycle" readOnly={fixed}
