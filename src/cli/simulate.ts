@@ -1,6 +1,6 @@
 // `rungsmith simulate`: N scans on the virtual clock, a CSV trace of the watched values on stdout.
 import { formatDiagnostic } from '../engine/compile/report';
-import { describeSchedule, hasEventTask } from '../engine/compile/taskSchedule';
+import { describeSchedule, hasEventTask, tickConflict } from '../engine/compile/taskSchedule';
 import { compileProgram, createPlc, type CompiledProgram } from '../engine/plc';
 import { csvValue, parseValueText } from '../engine/values/literals';
 import type { ElementaryType } from '../model/iecTypes';
@@ -36,10 +36,8 @@ export function parseCycle(text: string): number {
 function scanCycle(program: CompiledProgram, cycle: string | undefined, taskMs: number): number {
   const s = program.schedule;
   if (!s?.multiRate) return cycle !== undefined ? parseCycle(cycle) : taskMs;
-  if (cycle !== undefined && parseCycle(cycle) !== s.tickMs)
-    throw new UsageError(
-      `--cycle ${cycle}: the tasks run at different intervals (${describeSchedule(s)}), so a scan is their common tick of ${s.tickMs} ms; leave --cycle out or give ${s.tickMs}ms`,
-    );
+  const conflict = tickConflict(s, cycle === undefined ? undefined : parseCycle(cycle));
+  if (conflict) throw new UsageError(`--cycle ${cycle}: ${conflict}; leave --cycle out or give ${s.tickMs}ms`);
   return s.tickMs;
 }
 

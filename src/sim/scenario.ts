@@ -12,7 +12,7 @@
 // `# pou: Main` set the cycle and the PROGRAM. Used by the Tests panel, the worker (replay into the
 // timeline) and `rungsmith test`.
 import type { Plc, TaskSchedule } from '../engine/api';
-import { describeSchedule } from '../engine/compile/taskSchedule';
+import { tickConflict } from '../engine/compile/taskSchedule';
 import type { CompiledProgram } from '../engine/plc';
 import { compileProgram, createPlc } from '../engine/plc';
 import { csvValue, formatValue, parseValueText } from '../engine/values/literals';
@@ -230,8 +230,8 @@ export function runPrepared(plc: Plc, prep: PreparedScenario, afterScan?: (scan:
  */
 export function scenarioCycle(project: Project, parsed: ParsedScenario, pou: string | undefined, schedule?: TaskSchedule): number {
   if (schedule?.multiRate) {
-    if (parsed.cycleMs !== undefined && parsed.cycleMs !== schedule.tickMs)
-      throw new ScenarioError(0, `"# cycle: ${parsed.cycleMs}ms" cannot apply: the tasks run at different intervals (${describeSchedule(schedule)}), so a scan is their common tick of ${schedule.tickMs} ms`);
+    const conflict = tickConflict(schedule, parsed.cycleMs);
+    if (conflict) throw new ScenarioError(0, `"# cycle: ${parsed.cycleMs}ms" cannot apply: ${conflict}`);
     return schedule.tickMs;
   }
   if (parsed.cycleMs) return parsed.cycleMs;

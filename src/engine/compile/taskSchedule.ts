@@ -61,6 +61,16 @@ export function describeSchedule(s: TaskSchedule): string {
   return `${parts.join('; ')}`;
 }
 
+/**
+ * Why a cycle the user asks for (`requested`, ms) cannot apply: the tasks run on their common tick
+ * (`the tasks run at different intervals (...), so a scan is their common tick of 10 ms`); undefined
+ * when it can (one rate, or the request is the tick). Shared by scenarios' `# cycle:` and `--cycle`.
+ */
+export function tickConflict(s: TaskSchedule | undefined, requested: number | undefined): string | undefined {
+  if (!s?.multiRate || requested === undefined || requested === s.tickMs) return undefined;
+  return `the tasks run at different intervals (${describeSchedule(s)}), so a scan is their common tick of ${s.tickMs} ms`;
+}
+
 function ordinal(n: number): string {
   const tens = n % 100;
   const suffix = tens >= 11 && tens <= 13 ? 'th' : n % 10 === 1 ? 'st' : n % 10 === 2 ? 'nd' : n % 10 === 3 ? 'rd' : 'th';
