@@ -10,7 +10,7 @@ import { checkProject } from '../../src/engine/check';
 import { compileProgram, createPlc } from '../../src/engine/plc';
 import { explain, liveScanView } from '../../src/engine/explain';
 import type { Network, Profile, Variable } from '../../src/model/project';
-import { buildGraph } from '../../src/engine/compile/graph';
+import { buildGraph, upstream } from '../../src/engine/compile/graph';
 import { exportBehaviour } from '../../src/plcopen/exportBehaviour';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { EXAMPLES } from '../../src/model/examples';
@@ -203,6 +203,8 @@ function generatorScan(networks: readonly Network[], state: Map<string, boolean>
       const n = g.nets[id]!;
       let v = n.leftRail;
       if (!v) for (const s of n.sources) v = source(s.node, memo) || v; // every source is read
+      // A one-way bridge (a fan-out into two different ORs) is one more term of the OR.
+      if (!v) for (const b of n.feeds) v = net(g.bridges[b]!.from, memo) || v;
       memo.set(id, v);
       return v;
     };
@@ -234,7 +236,7 @@ function generatorScan(networks: readonly Network[], state: Map<string, boolean>
     for (const { el, i } of coils) {
       if (el.kind !== 'coil') continue;
       const input = g.nodes[i]!.inputs[0]!.net;
-      if (!g.nets[input]!.leftRail && g.nets[input]!.sources.length === 0) continue;
+      if (!upstream(g, input).fed) continue;
       const p = net(input, new Map());
       const name = el.variable.toUpperCase();
       const edge = (clk: boolean) => {

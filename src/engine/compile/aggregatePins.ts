@@ -193,7 +193,7 @@ export function lowerAggregateOutput(
   }
   if (!out.wired) return copies;
   const g = nets.g.nets[out.net]!;
-  if (g.sources.length > 1 || g.leftRail) {
+  if (g.sources.length > 1 || g.leftRail || g.feeds.length || g.feedsOut.length) {
     r.error('LD-R11', `${gives}; its line is joined to other outputs or to the rail`, el);
     return copies;
   }

@@ -418,7 +418,7 @@ export function lowerOutput(
   }
   if (!o.wired) return { pin: o.pin.name, type, ...(dst ? { dst } : {}) };
   // A data line: one source, read only by block inputs.
-  if (g.sources.length > 1 || g.leftRail) {
+  if (g.sources.length > 1 || g.leftRail || g.feeds.length || g.feedsOut.length) {
     r.error(
       'LD-R11',
       `output ${o.pin.name} of ${name} carries ${type}; its line is joined to other outputs or to the rail`,

@@ -26,7 +26,7 @@ import type { Network } from '../../model/project';
 import { isElementaryType } from '../../model/iecTypes';
 import { lowerBox } from './box';
 import type { PouContext } from './context';
-import type { GraphNode, NetworkGraph } from './graph';
+import { upstream, type GraphNode, type NetworkGraph } from './graph';
 import type { NetworkIR, Op } from './ir';
 import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget, NetMap, networkIR, type PendingNetwork } from './lower';
 import { describeElement, type Reporter } from './report';
@@ -98,10 +98,15 @@ export function startGenerated(
       return bind(net, id);
     }
     const sources = [...n.sources].sort((a, b) => byPosition(at(g, a.node), at(g, b.node)));
-    if (sources.length === 0) return bind(net, nets.fresh()); // fed by nothing: OFF
-    if (sources.length === 1) return bind(net, source(sources[0]!, undefined));
+    if (sources.length + n.feeds.length === 0) return bind(net, nets.fresh()); // fed by nothing: OFF
+    if (sources.length === 1 && !n.feeds.length) return bind(net, source(sources[0]!, undefined));
     const join = bind(net, nets.fresh());
     for (const s of sources) source(s, join);
+    // One-way bridges (graph.ts): the nets bridged in are more terms of the OR.
+    for (const b of n.feeds) {
+      const { from, via } = g.bridges[b]!;
+      sink.push({ op: 'pass', node: via, inNet: value(from), outNet: join });
+    }
     return join;
   };
 
@@ -137,7 +142,7 @@ export function startGenerated(
     if (!pins) blockOut.set(ni, (pins = new Map()));
     pins.set(t.pin, id);
     const n = g.nets[t.net]!;
-    if (n.sources.length === 1 && !n.leftRail) latestNet.set(t.net, id);
+    if (n.sources.length === 1 && !n.leftRail && !n.feeds.length) latestNet.set(t.net, id);
     return id;
   };
 
@@ -153,7 +158,7 @@ export function startGenerated(
       // Blocks feeding its inputs (value lines too) run first.
       for (const t of node.inputs)
         if (wiredIn(t.net))
-          for (const s of g.nets[t.net]!.sources) if (isBlock(g.nodes[s.node]!)) generateBlock(s.node);
+          for (const s of upstream(g, t.net).sources) if (isBlock(g.nodes[s.node]!)) generateBlock(s.node);
       if (node.el.kind === 'contact') {
         // The inverting contact: a NOT block. Unconnected, the generator cancels it (its output stays FALSE).
         const t = node.inputs[0]!;

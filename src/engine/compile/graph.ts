@@ -1,13 +1,19 @@
 // Grid -> element graph. Points (row, boundary) joined by horizontal links and vertical links
-// form nets (union-find). Every other element sits between nets through its terminals:
+// form nets (wires.ts: vertical links are one-way, so a wire whose sources do not all reach all
+// its inputs moving right is split into nets joined by bridges). Every other element sits between
+// nets through its terminals:
 // contacts, coils, jumps and returns have an input at (row, col) and (except jumps/returns) an
 // output at (row, col + 1); boxes have their pins where boxLayout puts them.
 // A connector `>NAME>` (its point at (row, col)) and every continuation `>NAME>` of the network
-// (its point at (row, col + 1)) are one net, as if a wire joined them; they are not nodes.
+// (its point at (row, col + 1)) are joined as if a wire ran from the first to the others; they
+// are not nodes.
 import { boxLayout, type BoxLayout } from '../../model/boxLayout';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { BoxElement, LdElement } from '../../model/elements';
 import type { Network } from '../../model/project';
+import { wireNets, type Bridge, type WireEdge } from './wires';
+
+export type { Bridge } from './wires';
 
 export type NodeElement = Exclude<LdElement, { kind: 'link' }>;
 
@@ -41,6 +47,9 @@ export interface Net {
   /** Horizontal links (element indexes) and vertical links (vlink indexes) in the net. */
   readonly links: number[];
   readonly vlinks: number[];
+  /** Bridges (indexes in NetworkGraph.bridges) whose state is OR-ed into this net, and out of it. */
+  readonly feeds: number[];
+  readonly feedsOut: number[];
 }
 
 export interface NetworkGraph {
@@ -63,6 +72,11 @@ export interface NetworkGraph {
    * continuations (right side). Power and values go from the first to the others (LD-R14).
    */
   readonly connections: ReadonlyMap<number, readonly number[]>;
+  /**
+   * One-way joins between nets (wires.ts): the state of `to` is its own sources OR-ed with the
+   * state of every net bridged into it. Empty unless a wire's sources do not all reach all its inputs.
+   */
+  readonly bridges: readonly Bridge[];
   /** Connectors and continuations that could not be paired (element index and reason), LD-R14. */
   readonly unpaired: readonly { index: number; reason: string; severity: 'error' | 'warning' }[];
 }
@@ -71,30 +85,6 @@ export interface NetworkGraph {
 export const connectionPoint = (el: { kind: string; row: number; col: number }, cols: number): number =>
   el.row * (cols + 1) + (el.kind === 'continuation' ? el.col + 1 : el.col);
 
-class UnionFind {
-  private readonly parent: Int32Array;
-  constructor(n: number) {
-    this.parent = new Int32Array(n);
-    for (let i = 0; i < n; i++) this.parent[i] = i;
-  }
-  find(a: number): number {
-    let r = a;
-    while (this.parent[r] !== r) r = this.parent[r]!;
-    let x = a;
-    while (this.parent[x] !== r) {
-      const next = this.parent[x]!;
-      this.parent[x] = r;
-      x = next;
-    }
-    return r;
-  }
-  union(a: number, b: number): void {
-    const ra = this.find(a);
-    const rb = this.find(b);
-    if (ra !== rb) this.parent[ra] = rb;
-  }
-}
-
 const boxOf = (el: LdElement): BoxElement | undefined => (el.kind === 'box' ? el : undefined);
 
 /** The graph of a network; boxes of user blocks need the project's `library` for their pins. */
@@ -102,7 +92,9 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
   const { rows, cols } = network;
   const width = cols + 1;
   const point = (row: number, boundary: number) => row * width + boundary;
-  const uf = new UnionFind(rows * width);
+  const edges: WireEdge[] = [];
+  const bars: [number, number][] = [];
+  const layouts: (BoxLayout | undefined)[] = [];
   const misplaced: { index: number; reason: string }[] = [];
   const occupied = new Map<number, number>();
   const placed: boolean[] = [];
@@ -110,6 +102,7 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
   network.elements.forEach((el, index) => {
     const box = boxOf(el);
     const layout = box ? boxLayout(box, library) : undefined;
+    layouts.push(layout);
     const h = layout ? layout.rows : 1;
     const w = layout ? layout.cols : 1;
     if (el.row < 0 || el.col < 0 || el.row + h > rows || el.col + w > cols) {
@@ -133,13 +126,13 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
     for (let r = 0; r < h; r++)
       for (let c = 0; c < w; c++) occupied.set((el.row + r) * cols + el.col + c, index);
     placed.push(true);
-    if (el.kind === 'link') uf.union(point(el.row, el.col), point(el.row, el.col + 1));
+    if (el.kind === 'link') edges.push({ from: point(el.row, el.col), to: point(el.row, el.col + 1), via: index });
   });
 
   const badVlinks: number[] = [];
   network.vlinks.forEach((v, i) => {
     if (v.row < 0 || v.row + 1 >= rows || v.boundary < 0 || v.boundary > cols) badVlinks.push(i);
-    else uf.union(point(v.row, v.boundary), point(v.row + 1, v.boundary));
+    else bars.push([point(v.row, v.boundary), point(v.row + 1, v.boundary)]);
   });
 
   // Connectors and continuations by name (names compare as IEC identifiers: case-insensitive).
@@ -170,7 +163,7 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
       from,
       conts.map((i) => connectionPoint(network.elements[i]!, cols)),
     );
-    for (const i of conts) uf.union(from, connectionPoint(network.elements[i]!, cols));
+    for (const i of conts) edges.push({ from, to: connectionPoint(network.elements[i]!, cols), via: i });
   }
   for (const [key, list] of continuations)
     if (!connectors.has(key))
@@ -181,29 +174,49 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
           severity: 'error',
         });
 
-  // Dense net ids in point order (stable: the upper-left point names the net).
-  const netOfPoint = new Int32Array(rows * width);
-  const rootToNet = new Map<number, number>();
-  const nets: Net[] = [];
+  // Element terminals (boxes where boxLayout puts their pins), then the nets of the wiring.
+  const terminals: { inputs: [string, number, number][]; outputs: [string, number, number][] }[] = [];
+  const sourceAt = new Uint8Array(rows * width);
+  const sinkAt = new Uint8Array(rows * width);
   for (let p = 0; p < rows * width; p++) {
-    const root = uf.find(p);
-    let id = rootToNet.get(root);
-    if (id === undefined) {
-      id = nets.length;
-      rootToNet.set(root, id);
-      nets.push({
-        id,
-        points: [],
-        leftRail: false,
-        rightRail: false,
-        sources: [],
-        sinks: [],
-        links: [],
-        vlinks: [],
-      });
+    if (p % width === 0) sourceAt[p] = 1;
+    if (p % width === cols) sinkAt[p] = 1;
+  }
+  network.elements.forEach((el, index) => {
+    const t: (typeof terminals)[number] = { inputs: [], outputs: [] };
+    terminals.push(t);
+    if (!placed[index] || el.kind === 'link' || el.kind === 'connector' || el.kind === 'continuation') return;
+    if (el.kind === 'box') {
+      const l = layouts[index];
+      if (l) {
+        for (const pin of l.inputs) t.inputs.push([pin.name, el.row + pin.rowOffset, el.col]);
+        for (const pin of l.outputs) t.outputs.push([pin.name, el.row + pin.rowOffset, el.col + l.cols]);
+      }
+    } else {
+      t.inputs.push(['IN', el.row, el.col]);
+      if (el.kind !== 'jump' && el.kind !== 'return') t.outputs.push(['OUT', el.row, el.col + 1]);
     }
-    netOfPoint[p] = id;
-    const net = nets[id]!;
+    for (const [, r, b] of t.inputs) sinkAt[point(r, b)] = 1;
+    for (const [, r, b] of t.outputs) sourceAt[point(r, b)] = 1;
+  });
+  const wired = wireNets({ points: rows * width, bars, edges, sourceAt, sinkAt });
+  const netOfPoint = wired.netOfPoint;
+  const nets: Net[] = [];
+  for (let id = 0; id < wired.count; id++)
+    nets.push({
+      id,
+      points: [],
+      leftRail: false,
+      rightRail: false,
+      sources: [],
+      sinks: [],
+      links: [],
+      vlinks: [],
+      feeds: [],
+      feedsOut: [],
+    });
+  for (let p = 0; p < rows * width; p++) {
+    const net = nets[netOfPoint[p]!]!;
     (net.points as number[]).push(p);
     const b = p % width;
     if (b === 0) (net as { leftRail: boolean }).leftRail = true;
@@ -234,36 +247,90 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
       nets[id]!.links.push(index);
       return;
     }
-    if (el.kind === 'connector' || el.kind === 'continuation') {
+    if (el.kind === 'connector') {
       linkNet[index] = netOfPoint[connectionPoint(el, cols)]!;
       return;
     }
-    let inputs: Terminal[];
-    let outputs: Terminal[];
-    let layout: BoxLayout | undefined;
-    if (el.kind === 'box') {
-      layout = boxLayout(el, library);
-      if (!layout) {
-        inputs = [];
-        outputs = [];
-      } else {
-        const l = layout;
-        inputs = l.inputs.map((pin) => terminal(pin.name, el.row + pin.rowOffset, el.col));
-        outputs = l.outputs.map((pin) => terminal(pin.name, el.row + pin.rowOffset, el.col + l.cols));
-      }
-    } else {
-      inputs = [terminal('IN', el.row, el.col)];
-      outputs = el.kind === 'jump' || el.kind === 'return' ? [] : [terminal('OUT', el.row, el.col + 1)];
+    if (el.kind === 'continuation') {
+      // A continuation shows what its connector carries.
+      const key = el.name.trim().toUpperCase();
+      const from = connectors.get(key)?.[0];
+      linkNet[index] = netOfPoint[from !== undefined ? connectionPoint(network.elements[from]!, cols) : connectionPoint(el, cols)]!;
+      return;
     }
+    const layout = layouts[index];
+    const inputs = terminals[index]!.inputs.map(([pin, r, b]) => terminal(pin, r, b));
+    const outputs = terminals[index]!.outputs.map(([pin, r, b]) => terminal(pin, r, b));
     const node = nodes.length;
     nodes.push({ index, el, ...(layout ? { layout } : {}), inputs, outputs });
     for (const t of inputs) nets[t.net]!.sinks.push({ node, pin: t.pin, point: point(t.row, t.boundary) });
     for (const t of outputs) nets[t.net]!.sources.push({ node, pin: t.pin, point: point(t.row, t.boundary) });
   });
 
-  return { rows, cols, nodes, nets, netOfPoint, linkNet, vlinkNet, misplaced, badVlinks, connections, unpaired };
+  wired.bridges.forEach((b, i) => {
+    nets[b.from]!.feedsOut.push(i);
+    nets[b.to]!.feeds.push(i);
+  });
+  return {
+    rows,
+    cols,
+    nodes,
+    nets,
+    netOfPoint,
+    linkNet,
+    vlinkNet,
+    misplaced,
+    badVlinks,
+    bridges: wired.bridges,
+    connections,
+    unpaired,
+  };
 }
 
 /** True when the net holds wires or element terminals (not just an untouched grid point). */
 export const netIsUsed = (net: Net): boolean =>
-  net.links.length > 0 || net.vlinks.length > 0 || net.sources.length > 0 || net.sinks.length > 0;
+  net.links.length > 0 ||
+  net.vlinks.length > 0 ||
+  net.sources.length > 0 ||
+  net.sinks.length > 0 ||
+  net.feeds.length > 0 ||
+  net.feedsOut.length > 0;
+
+/** What drives a net: its own sources and the left rail, and those of every net bridged into it. */
+export interface Upstream {
+  readonly sources: readonly Net['sources'][number][];
+  readonly leftRail: boolean;
+  /** The rail or some element output drives the net (directly or through bridges). */
+  readonly fed: boolean;
+}
+
+const upstreamMemo = new WeakMap<NetworkGraph, Map<number, Upstream>>();
+
+/** The sources driving a net, following bridges upstream (the net's own when it has none). */
+export function upstream(g: NetworkGraph, net: number): Upstream {
+  const n = g.nets[net]!;
+  if (!n.feeds.length) return { sources: n.sources, leftRail: n.leftRail, fed: n.leftRail || n.sources.length > 0 };
+  let memo = upstreamMemo.get(g);
+  if (!memo) upstreamMemo.set(g, (memo = new Map()));
+  const hit = memo.get(net);
+  if (hit) return hit;
+  const sources: Net['sources'][number][] = [];
+  let leftRail = false;
+  const seen = new Set<number>([net]);
+  const stack = [net];
+  while (stack.length) {
+    const m = g.nets[stack.pop()!]!;
+    sources.push(...m.sources);
+    leftRail ||= m.leftRail;
+    for (const b of m.feeds) {
+      const from = g.bridges[b]!.from;
+      if (!seen.has(from)) {
+        seen.add(from);
+        stack.push(from);
+      }
+    }
+  }
+  const up = { sources, leftRail, fed: leftRail || sources.length > 0 };
+  memo.set(net, up);
+  return up;
+}

@@ -3,7 +3,7 @@
 import type { CoilElement, ContactElement, JumpElement } from '../../model/elements';
 import type { Network } from '../../model/project';
 import type { CoilFamily, PouContext } from './context';
-import { buildGraph, type NetworkGraph } from './graph';
+import { buildGraph, upstream, type NetworkGraph } from './graph';
 import type { NetworkIR, Op, Source } from './ir';
 import { evaluationOrder } from './order';
 import { describeElement, type Reporter } from './report';
@@ -69,13 +69,16 @@ export class NetMap {
   }
   /** True when the net is driven: by the left rail or an element's output (LD-R03: a line that starts nowhere is not). */
   isFed(net: number): boolean {
-    const n = this.g.nets[net]!;
-    return n.leftRail || n.sources.length > 0;
+    return upstream(this.g, net).fed;
   }
   /** True when something besides the terminal itself is attached to the net (a wire or another element). */
   isWired(net: number): boolean {
     const n = this.g.nets[net]!;
-    return n.leftRail || n.links.length + n.vlinks.length > 0 || n.sources.length + n.sinks.length > 1;
+    return (
+      n.leftRail ||
+      n.links.length + n.vlinks.length + n.feeds.length + n.feedsOut.length > 0 ||
+      n.sources.length + n.sinks.length > 1
+    );
   }
 }
 
@@ -141,9 +144,22 @@ function lowerInOrder(
   const nets = new NetMap(g);
   const ops: Op[] = [];
   const errorsBefore = r.errors;
+  // One-way bridges (graph.ts): a net's bridged-in states are OR-ed into it before it is first read.
+  const bridged = new Set<number>();
+  const bridgeInto = (net: number): void => {
+    for (const b of g.nets[net]!.feeds) {
+      if (bridged.has(b)) continue;
+      bridged.add(b);
+      const { from, via } = g.bridges[b]!;
+      bridgeInto(from);
+      if (!nets.dataPending.has(from) && !nets.data.has(from))
+        ops.push({ op: 'pass', node: via, inNet: nets.powerNet(from), outNet: nets.powerNet(net) });
+    }
+  };
   for (const ni of order) {
     const node = g.nodes[ni]!;
     const el = node.el;
+    for (const t of node.inputs) bridgeInto(t.net);
     const inNet = node.inputs[0] ? nets.powerNet(node.inputs[0].net) : -1;
     switch (el.kind) {
       case 'contact': {
@@ -152,7 +168,8 @@ function lowerInOrder(
         const outGraphNet = node.outputs[0]!.net;
         const outNet = nets.powerNet(outGraphNet);
         // Where other outputs join this contact's right side, keep its own result for the power display.
-        const joined = g.nets[outGraphNet]!.sources.length > 1 || g.nets[outGraphNet]!.leftRail;
+        const out = g.nets[outGraphNet]!;
+        const joined = out.sources.length > 1 || out.leftRail || out.feeds.length > 0;
         const ownNet = joined ? nets.powerNet(-1 - ni) : undefined;
         ops.push(contactOp(node.index, el.contact, src, inNet, outNet, ownNet, edge));
         break;
@@ -162,7 +179,8 @@ function lowerInOrder(
         const edge = el.coil === 'P' || el.coil === 'N' ? edgeOf(ctx, el, index, r) : undefined;
         // A coil passes its left link on: when nothing else drives its right side, both sides are one net.
         const outGraph = g.nets[node.outputs[0]!.net]!;
-        if (outGraph.sources.length === 1 && !outGraph.leftRail && inNet >= 0) nets.alias(outGraph.id, inNet);
+        if (outGraph.sources.length === 1 && !outGraph.leftRail && !outGraph.feeds.length && inNet >= 0)
+          nets.alias(outGraph.id, inNet);
         const outNet = nets.powerNet(outGraph.id);
         // LD-R03: a coil fed by nothing is not executed (Beremiz generates no assignment for a coil
         // whose input has no connection), so its variable keeps its value.
@@ -194,6 +212,8 @@ function lowerInOrder(
       }
     }
   }
+  // Nets read by no element (a line to the right rail) still show their state.
+  for (const net of g.nets) bridgeInto(net.id);
   if (!structureOk || r.errors > errorsBefore) return undefined;
 
   const elementNets = network.elements.map((el, i): [number, number] => {

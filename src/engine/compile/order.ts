@@ -2,15 +2,15 @@
 // element graph where, among the elements ready at the same time, the one on the upper row goes
 // first, then the one further left (a box counts at its top-left cell). Parallel coils therefore
 // run top to bottom, and a contact reads what a coil above it in the same network just wrote.
-import type { NetworkGraph } from './graph';
+import { upstream, type NetworkGraph } from './graph';
 
 /** Node indexes in evaluation order, or undefined when the graph has a cycle (a feedback wire). */
 export function evaluationOrder(g: NetworkGraph): number[] | undefined {
   const n = g.nodes.length;
-  // Producers of each net (nodes with an output terminal on it).
-  const producers: number[][] = g.nets.map(() => []);
-  g.nodes.forEach((node, i) => {
-    for (const t of node.outputs) producers[t.net]!.push(i);
+  // Producers of each net: nodes with an output terminal on it or on a net bridged into it.
+  const producers: number[][] = g.nets.map((net) => {
+    const up = net.feeds.length ? upstream(g, net.id).sources : net.sources;
+    return [...new Set(up.map((s) => s.node))];
   });
   const dependents: number[][] = g.nodes.map(() => []);
   const waiting = new Int32Array(n);

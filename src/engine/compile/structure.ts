@@ -9,7 +9,7 @@
 import type { LdElement, VLink } from '../../model/elements';
 import type { Network } from '../../model/project';
 import type { GraphNode, Net, NetworkGraph } from './graph';
-import { netIsUsed } from './graph';
+import { netIsUsed, upstream } from './graph';
 import { cellName, describeElement, type Reporter } from './report';
 
 const isCoil = (el: LdElement) => el.kind === 'coil';
@@ -106,9 +106,27 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
 
   for (const net of g.nets) {
     if (!netIsUsed(net)) continue;
-    const hasSource = net.leftRail || net.sources.length > 0;
-    const hasSink = net.rightRail || net.sinks.length > 0;
+    const hasSource = upstream(g, net.id).fed;
+    const hasSink = net.rightRail || net.sinks.length > 0 || net.feedsOut.length > 0;
     const nodeOf = (i: number) => g.nodes[i]!;
+    // LD-R01: a line fed by nothing on its left that joins, further right, a line that is fed:
+    // drawn as if power came back to it from the right, which a one-way vertical link never does.
+    if (!hasSource && (net.sinks.length || net.rightRail) && fedOnItsRight(g, net)) {
+      const via = network.elements[g.bridges[net.feedsOut[0]!]!.via]!;
+      for (const s of net.sinks)
+        r.error(
+          'LD-R01',
+          `${describeElement(nodeOf(s.node).el)} is fed from its right: power would flow right to left through the branch at row ${via.row + 1}; redraw the branch so it runs left to right`,
+          nodeOf(s.node).el,
+        );
+      if (!net.sinks.length)
+        r.error(
+          'LD-R01',
+          `the line reaching the right rail at row ${via.row + 1} carries power right to left; redraw the branch so it runs left to right`,
+          { row: via.row, col: g.cols - 1 },
+        );
+      continue;
+    }
     // LD-R03 (002, warning): element sides left open. Beremiz generates code from coils and blocks
     // backwards: a contact whose right side leads nowhere is never read, a coil with nothing on its
     // left gets no assignment, a block input with no connection is left out of the call.
@@ -148,8 +166,6 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
       }
     }
     if (!hasSource || !hasSink) continue;
-
-    checkFlowDirection(g, net, r, linkRight, vUp, vDown);
 
     // LD-R02 short circuit; LD-R09 transition coils on the left rail.
     const coilSinks = net.sinks.filter((s) => isCoil(nodeOf(s.node).el));
@@ -233,61 +249,23 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
 }
 
 /**
- * LD-R01: every source of a net must reach every sink of the net moving only rightwards along
- * horizontal links (vertical links go both ways). Otherwise part of the net carries power from
- * right to left (a feedback branch or a U-turn), which the language forbids.
+ * LD-R01: true when a net fed by nothing bridges into a net that is fed (graph.ts, wires.ts): its
+ * wire carries power only if power ran right to left, which the language forbids (section 1).
  */
-function checkFlowDirection(
-  g: NetworkGraph,
-  net: Net,
-  r: Reporter,
-  linkRight: Int32Array,
-  vUp: Int32Array,
-  vDown: Int32Array,
-): void {
-  const width = g.cols + 1;
-  const starts = [...net.sources.map((s) => s.point), ...net.points.filter((p) => p % width === 0)];
-  const targets: { point: number; el?: LdElement }[] = [
-    ...net.sinks.map((s) => ({ point: s.point, el: g.nodes[s.node]!.el })),
-    ...net.points.filter((p) => p % width === g.cols).map((point) => ({ point })),
-  ];
-  if (targets.length === 0 || starts.length === 0) return;
-  const seen = new Uint8Array(g.rows * width);
-  const blamed = new Set<number>();
-  for (const start of starts) {
-    seen.fill(0);
-    const stack = [start];
-    seen[start] = 1;
-    while (stack.length) {
-      const p = stack.pop()!;
-      const next = [
-        linkRight[p]! >= 0 ? p + 1 : -1,
-        vDown[p]! >= 0 ? p + width : -1,
-        vUp[p]! >= 0 ? p - width : -1,
-        ...(g.connections.get(p) ?? []),
-      ];
-      for (const q of next) {
-        if (q < 0 || seen[q]) continue;
-        seen[q] = 1;
-        stack.push(q);
-      }
-    }
-    for (const t of targets) {
-      if (seen[t.point] || blamed.has(t.point)) continue;
-      blamed.add(t.point);
-      const row = Math.floor(t.point / width);
-      if (t.el)
-        r.error(
-          'LD-R01',
-          `${describeElement(t.el)} is fed from its right: power would flow right to left through the branch at row ${row + 1}; redraw the branch so it runs left to right`,
-          t.el,
-        );
-      else
-        r.error(
-          'LD-R01',
-          `the line reaching the right rail at row ${row + 1} carries power right to left; redraw the branch so it runs left to right`,
-          { row, col: g.cols - 1 },
-        );
+function fedOnItsRight(g: NetworkGraph, net: Net): boolean {
+  const seen = new Set<number>([net.id]);
+  const stack = [net.id];
+  while (stack.length) {
+    const n = g.nets[stack.pop()!]!;
+    if (n.id !== net.id && upstream(g, n.id).fed) return true;
+    for (const b of [...n.feeds, ...n.feedsOut]) {
+      const { from, to } = g.bridges[b]!;
+      for (const m of [from, to])
+        if (!seen.has(m)) {
+          seen.add(m);
+          stack.push(m);
+        }
     }
   }
+  return false;
 }
