@@ -20,6 +20,36 @@ import { storeOf, type Access, type Store } from './symbols';
 /** Power-flow nets packed per 32-bit word of the snapshot array W. */
 export const NETS_PER_WORD = 31;
 
+/**
+ * openplc profile: the late blocks of each network (its `late` operations) are a dispatch entry of
+ * their own, a *late unit*, numbered after the networks and the end marker: unit j has the plan
+ * index `networks.length + 1 + j` and runs the late operations of network `owners[j]`, in the order
+ * of the runners' `runLate` lists. A body's last network runs its units with one call
+ * `X.late(first, end, now, scan)`. Written into that network's code instead, 1,000 late TONs made
+ * one switch case of 400 KB that V8 never optimised (bench/openplcOrder.bench.ts: 9x the iec scan).
+ */
+export interface LateUnits {
+  readonly owners: readonly number[];
+  /** Plan index of the unit of each late network. */
+  readonly unitOf: ReadonlyMap<number, number>;
+}
+
+const lateCache = new WeakMap<readonly NetworkIR[], LateUnits>();
+
+export function lateUnits(networks: readonly NetworkIR[]): LateUnits {
+  let units = lateCache.get(networks);
+  if (!units) {
+    const owners = networks.flatMap((ir) => ir.runLate ?? []);
+    units = { owners, unitOf: new Map(owners.map((k, j) => [k, networks.length + 1 + j])) };
+    lateCache.set(networks, units);
+  }
+  return units;
+}
+
+/** The statement running late units [first, end) (rewritten to `yield* X.stepLate(` for stepping). */
+export const LATE_TEXT = 'X.late(';
+export const STEP_LATE_TEXT = 'yield* X.stepLate(';
+
 export const slotKey = (store: string, slot: number): string => `${store}:${slot}`;
 
 /** A parameter holding a variable slot the network writes (pointed elsewhere while the variable is forced). */
@@ -70,6 +100,15 @@ export class ProgramConstants {
     readonly program?: { readonly networks: readonly NetworkIR[]; readonly words: ArrayLike<number> },
     readonly inlineCalls = true,
   ) {}
+  /**
+   * openplc profile: the plan index of each late network's unit (its `late` operations as one
+   * dispatch entry, see lateUnits), by late network.
+   */
+  lateUnit(k: number): number {
+    const u = lateUnits(this.program!.networks).unitOf.get(k);
+    if (u === undefined) throw new Error(`network ${k + 1} has no late blocks`);
+    return u;
+  }
   /** True when the body [first, end) is written in place of its calls. */
   inlines(first: number, end: number): boolean {
     return this.inlinedOps(first, end) !== undefined;
@@ -122,7 +161,8 @@ function straightOps(networks: readonly NetworkIR[], first: number, end: number)
   let ops = 0;
   const visit = (a: number, b: number): boolean => {
     for (let i = a; i < b; i++)
-      for (const op of [...networks[i]!.ops, ...(networks[i]!.runLate ?? []).flatMap((k) => networks[k]!.late ?? [])]) {
+      // The late blocks a body's last network runs are not written in it (one `X.late` call, see lateUnits).
+      for (const op of networks[i]!.ops) {
         if (op.op === 'jump' || op.op === 'return') return false;
         if (++ops > INLINE_OPS) return false;
         if (op.op === 'st') {
@@ -328,6 +368,39 @@ export function generateNetwork(
 ): NetworkCode {
   const em = new Emitter(pc, mode);
   emitNetwork(em, ir, firstWord, mode.kind === 'inline' ? String(ir.index) : 'i');
+  return codeOf(em);
+}
+
+/**
+ * openplc profile: the code of the late unit of network `ir` (its blocks no coil needed, see
+ * lateUnits), run at the end of its POU body. The network's nets are read back from its power
+ * words (a late block may read a BOOL output computed by its coils), updated, and written back for
+ * the power display.
+ */
+export function generateLate(ir: NetworkIR, pc: ProgramConstants, firstWord: number): NetworkCode {
+  const em = new Emitter(pc, { kind: 'shared' });
+  const ops = ir.late ?? [];
+  const L = em.lines;
+  em.rails = new Set(ir.railNets);
+  em.single = singleWriterNets(ir, ops);
+  const live = Array.from({ length: ir.netCount }, (_, i) => i).filter((i) => !em.rails.has(i));
+  for (let w = 0; w * NETS_PER_WORD < ir.netCount; w++) {
+    const mine = live.filter((i) => Math.floor(i / NETS_PER_WORD) === w);
+    if (!mine.length) continue;
+    L.push(`const w${w} = W[${em.p(firstWord + w)}];`);
+    L.push(`let ${mine.map((i) => `n${i} = (w${w} >>> ${i % NETS_PER_WORD}) & 1`).join(', ')};`);
+  }
+  const { rails, single } = em;
+  for (const op of ops) {
+    emitOp(em, op);
+    em.rails = rails;
+    em.single = single;
+  }
+  packWords(em, live, ir.netCount, firstWord);
+  return codeOf(em);
+}
+
+function codeOf(em: Emitter): NetworkCode {
   return {
     text: em.lines.filter((l) => l !== '').join('\n'),
     ints: em.ints,
@@ -355,7 +428,10 @@ function emitNetwork(em: Emitter, ir: NetworkIR, firstWord: number, idx: string)
     em.single = single;
   }
   packWords(em, live, ir.netCount, firstWord);
-  for (const k of ir.runLate ?? []) emitLate(em, k);
+  // openplc: the body's late blocks, after every coil of the body (their units, see lateUnits).
+  const late = ir.runLate ?? [];
+  if (late.length)
+    L.push(`${LATE_TEXT}${em.p(em.pc.lateUnit(late[0]!))}, ${em.p(em.pc.lateUnit(late[late.length - 1]!) + 1)}, now, scan);`);
   if (controls) L.push(`if (next !== ${idx} + 1) { S[0] = ${idx}; return next; }`);
 }
 
@@ -367,45 +443,6 @@ function packWords(em: Emitter, live: readonly number[], count: number, firstWor
       .map((i) => (i % NETS_PER_WORD ? `(n${i} << ${i % NETS_PER_WORD})` : `n${i}`));
     em.lines.push(`W[${em.p(firstWord + w)}] = ${bits.length ? bits.join(' | ') : '0'};`);
   }
-}
-
-/**
- * openplc profile: the late operations of network k (its blocks no coil needed), run at the end
- * of its POU body. Network k's nets are read back from its power words (a late block may read a
- * BOOL output computed by k's coils), updated, and written back for the power display.
- */
-function emitLate(em: Emitter, k: number): void {
-  const { networks, words } = em.pc.program!;
-  const ir = networks[k]!;
-  const ops = ir.late ?? [];
-  const L = em.lines;
-  const rails = new Set(ir.railNets);
-  const live = Array.from({ length: ir.netCount }, (_, i) => i).filter((i) => !rails.has(i));
-  const saved = { rails: em.rails, single: em.single, fbLocals: em.fbLocals, fbPrefix: em.fbPrefix };
-  const single = singleWriterNets(ir, ops);
-  em.rails = rails;
-  em.single = single;
-  // FB locals declared in this block are its own (a later block or network must not use them).
-  em.fbLocals = new Map();
-  em.fbPrefix = `${saved.fbPrefix}L${k}_`;
-  L.push(`{ // late blocks of network ${k + 1}`);
-  for (let w = 0; w * NETS_PER_WORD < ir.netCount; w++) {
-    const mine = live.filter((i) => Math.floor(i / NETS_PER_WORD) === w);
-    if (!mine.length) continue;
-    L.push(`const w${w} = W[${em.p(words[k]! + w)}];`);
-    L.push(`let ${mine.map((i) => `n${i} = (w${w} >>> ${i % NETS_PER_WORD}) & 1`).join(', ')};`);
-  }
-  for (const op of ops) {
-    emitOp(em, op);
-    em.rails = rails;
-    em.single = single;
-  }
-  packWords(em, live, ir.netCount, words[k]!);
-  L.push('}');
-  em.rails = saved.rails;
-  em.single = saved.single;
-  em.fbLocals = saved.fbLocals;
-  em.fbPrefix = saved.fbPrefix;
 }
 
 /** The networks of a straight body, each in a block of its own, marked as run in this scan. */

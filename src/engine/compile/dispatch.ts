@@ -9,7 +9,18 @@
 // its first scans, and its size depends on the variety of networks, not on their number.
 import type { Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
-import { CALL_TEXT, generateNetwork, NETS_PER_WORD, ProgramConstants, slotKey, STEP_CALL_TEXT } from './codegen';
+import {
+  CALL_TEXT,
+  generateLate,
+  generateNetwork,
+  LATE_TEXT,
+  lateUnits,
+  NETS_PER_WORD,
+  ProgramConstants,
+  slotKey,
+  STEP_CALL_TEXT,
+  STEP_LATE_TEXT,
+} from './codegen';
 import type { NetworkIR } from './ir';
 
 /** What each generated dispatch factory receives, in this order. */
@@ -49,17 +60,20 @@ export type DispatchFn = (first: number, end: number, now: number, scan: number)
 export interface DispatchPlan {
   /** Body of `new Function(...DISPATCH_PARAMS, body)` per dispatch function. */
   readonly bodies: readonly string[];
-  /** Shape of each network, then -1 (the end). */
+  /** Shape of each network, then -1 (the end), then of each late unit (openplc, codegen.ts lateUnits). */
   readonly shape: Int32Array;
-  /** Dispatch function holding each network's shape. */
+  /** Dispatch function holding each network's (and late unit's) shape. */
   readonly groupOf: Int32Array;
-  /** Offset of each network's parameters in P and V. */
+  /** Offset of each network's (and late unit's) parameters in P and V. */
   readonly base: Int32Array;
   readonly P: Int32Array;
   readonly V: Float64Array;
   /** Positions in P of every write to a variable slot (`b:3`), to redirect while it is forced. */
   readonly writes: ReadonlyMap<string, readonly number[]>;
-  /** Networks writing each variable slot. */
+  /**
+   * Networks writing each variable slot (late units not included: they always run on the dispatch
+   * loops, whose writes `writes` redirects).
+   */
   readonly writers: ReadonlyMap<string, ReadonlySet<number>>;
   readonly constants: readonly Value[];
   readonly shapeCount: number;
@@ -96,15 +110,22 @@ export function planDispatch(
   const words = powerWords(networks);
   const wordCount = count ? words[count - 1]! + Math.ceil(networks[count - 1]!.netCount / NETS_PER_WORD) : 0;
   const pc = new ProgramConstants(functions, fbTypes, { networks, words }, inlineCalls);
-  const codes = networks.map((ir, i) => generateNetwork(ir, pc, words[i]!));
+  const units = lateUnits(networks).owners;
+  const codes = [
+    ...networks.map((ir, i) => generateNetwork(ir, pc, words[i]!)),
+    // The end marker's entry (no code), then the late units.
+    { text: '', ints: [], reals: [], writes: [], arrays: [] },
+    ...units.map((k) => generateLate(networks[k]!, pc, words[k]!)),
+  ];
 
   // Shapes in order of first appearance; the argument-array sizes are part of a shape.
   const shapeIds = new Map<string, number>();
   const shapes: { text: string; arrays: readonly number[]; params: number }[] = [];
-  const shape = new Int32Array(count + 1);
-  const base = new Int32Array(count);
+  const shape = new Int32Array(codes.length);
+  const base = new Int32Array(codes.length);
   let params = 0;
   codes.forEach((c, i) => {
+    if (i === count) return void (shape[i] = -1);
     const key = `${c.arrays.join(',')}\n${c.text}`;
     let s = shapeIds.get(key);
     if (s === undefined) {
@@ -116,7 +137,6 @@ export function planDispatch(
     base[i] = params;
     params += c.ints.length;
   });
-  shape[count] = -1;
 
   const P = new Int32Array(Math.max(1, params));
   const V = new Float64Array(Math.max(1, params));
@@ -130,6 +150,7 @@ export function planDispatch(
       const key = slotKey(w.store, w.slot);
       if (!writes.has(key)) writes.set(key, []);
       writes.get(key)!.push(at + w.at);
+      if (i > count) continue;
       if (!writers.has(key)) writers.set(key, new Set());
       writers.get(key)!.add(i);
     }
@@ -191,13 +212,15 @@ export function planDispatch(
           .replace(/\$A(\d+)/g, `A${s}_$1`)
           .split(CALL_TEXT)
           .join(STEP_CALL_TEXT)
+          .split(LATE_TEXT)
+          .join(STEP_LATE_TEXT)
           .split('\n')
           .join('\n  ')}\n  return i + 1;\n};`,
     ),
     'return gens;',
   ].join('\n');
-  const groupOf = new Int32Array(count);
-  for (let i = 0; i < count; i++) groupOf[i] = groupOfShape[shape[i]!]!;
+  const groupOf = new Int32Array(codes.length);
+  for (let i = 0; i < codes.length; i++) if (i !== count) groupOf[i] = groupOfShape[shape[i]!]!;
   return {
     bodies,
     shape,

@@ -99,6 +99,12 @@ export class ScanPlc implements Plc {
     call: (first: number, end: number, t: number, scan: number): void => this.callBody(first, end, t, scan),
     stepCall: (first: number, end: number, t: number, scan: number): Generator<void, void> =>
       this.stepRange(first, end, t, scan),
+    /** openplc: the late units [first, end) a body's last network runs (compile/codegen.ts lateUnits), on the dispatch loops. */
+    late: (first: number, end: number, t: number, scan: number): void => {
+      for (let u = first; u < end; ) u = this.groups[this.groupOf[u]!]!(u, end, t, scan);
+    },
+    stepLate: (first: number, end: number, t: number, scan: number): Generator<void, void> =>
+      this.stepLate(first, end, t, scan),
     /**
      * An array index chosen at run time (ST `A[i]`): i - lower, or a fault (LD-E62) when i is
      * outside lower..upper. MATIEC's C does not check: it reads or writes memory outside the array.
@@ -529,6 +535,12 @@ export class ScanPlc implements Plc {
       i = next;
     }
     this.frames.pop();
+  }
+
+  /** Late units [first, end) in a step: no stop before them (they end their runner network), but calls in them can be stepped into. */
+  private *stepLate(first: number, end: number, t: number, scan: number): Generator<void, void> {
+    const plan = this.stepPlan ?? this.buildStepPlan();
+    for (let u = first; u < end; u++) yield* this.stepGens![plan.shape[u]!]!(u, t, scan);
   }
 
   /** Code where every call runs its body through X.stepCall (bodies are not written in place). */
