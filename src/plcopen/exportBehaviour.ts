@@ -20,7 +20,7 @@
 // The simulator's openplc profile runs LD bodies in that order (engine/compile/generated.ts): for
 // a project under it the warnings stay (the export is the same) and say the simulation shows it.
 // Pure: no React, no DOM.
-import { buildGraph, type NetworkGraph } from '../engine/compile/graph';
+import { buildGraph, upstream as drivers, type NetworkGraph } from '../engine/compile/graph';
 import { evaluationOrder } from '../engine/compile/order';
 import { cellName, describeElement } from '../engine/compile/report';
 import { boxLayout } from '../model/boxLayout';
@@ -114,7 +114,7 @@ function upstream(g: NetworkGraph, from: number, stop?: (node: number) => boolea
   while (todo.length) {
     const n = todo.pop()!;
     for (const t of g.nodes[n]!.inputs)
-      for (const s of g.nets[t.net]!.sources) {
+      for (const s of drivers(g, t.net).sources) {
         if (s.node === from || seen.has(s.node)) continue;
         seen.add(s.node);
         if (!stop?.(s.node)) todo.push(s.node);
@@ -179,7 +179,7 @@ function dropped(pou: Pou, views: readonly NetView[], out: ExportWarning[]): voi
     for (const node of v.g.nodes) {
       const el = node.el;
       if (el.kind !== 'jump' && el.kind !== 'return') continue;
-      const fromRail = node.inputs.some((t) => v.g.nets[t.net]!.leftRail);
+      const fromRail = node.inputs.some((t) => drivers(v.g, t.net).leftRail);
       const when = fromRail ? 'every scan' : 'when it is powered';
       if (el.kind === 'jump') {
         const target = views.findIndex((x) => x.net.label && up(x.net.label) === up(el.target));
@@ -272,7 +272,7 @@ function withCoilOn(v: NetView, boxNode: number, pin: string, variable: string, 
     const coilNode = g2.nodes.findIndex((n) => n.el.kind === 'coil' && n.el.variable === variable);
     const boxEl = g.nodes[boxNode]!.el;
     const fed = g2.nodes[coilNode]?.inputs.some((t) =>
-      g2.nets[t.net]!.sources.some((s) => g2.nodes[s.node]!.el.id === boxEl.id && s.pin === pin),
+      drivers(g2, t.net).sources.some((s) => g2.nodes[s.node]!.el.id === boxEl.id && s.pin === pin),
     );
     if (fed) return after;
   }
@@ -307,7 +307,7 @@ function ordering(project: Project, pou: Pou, views: readonly NetView[], library
       if (!isFb) {
         // GenerateBlock cancels a function none of whose inputs (EN aside) is connected.
         const connected = node.inputs.some(
-          (t) => t.pin !== 'EN' && g.nets[t.net]!.sources.length + (g.nets[t.net]!.leftRail ? 1 : 0) > 0,
+          (t) => t.pin !== 'EN' && drivers(g, t.net).fed,
         );
         const operands = Object.entries(el.inputs).some(([k, x]) => k !== 'EN' && x && x.trim());
         if (!connected && !operands && layout.inputs.some((p) => p.name !== 'EN'))
@@ -480,7 +480,7 @@ function sameForAllValues(v: NetView): boolean | undefined {
     } else state.set(name, el.coil === 'NEG' ? !power : power);
   };
   const netPower = (net: number, out: (node: number) => boolean) =>
-    g.nets[net]!.leftRail || g.nets[net]!.sources.some((s) => out(s.node));
+    drivers(g, net).leftRail || drivers(g, net).sources.some((s) => out(s.node));
   for (let mask = 0; mask < 1 << list.length; mask++) {
     const start = () => new Map(list.map((name, k) => [name, (mask & (1 << k)) !== 0]));
     // The engine: every element once, in its order.

@@ -1,10 +1,13 @@
 // The connections a network grid draws, as a graph: for every element input pin wired on the
 // grid, the element output pins (or the left rail) feeding it. Points joined by horizontal links,
-// vertical links and the left rail form one net (the same rule as the engine's compiler).
+// vertical links and the left rail form nets by the engine's rule (src/engine/compile/wires.ts:
+// vertical links are one-way, so a fan-out into two different ORs feeds each input only what
+// reaches it from its left).
 import { boxLayout } from '../model/boxLayout';
 import type { BlockLibrary } from '../model/library';
 import type { LdElement } from '../model/elements';
 import type { Network } from '../model/project';
+import { wireNets, type WireEdge } from '../engine/compile/wires';
 
 export type Source =
   { readonly kind: 'rail' } | { readonly kind: 'pin'; readonly el: number; readonly pin: string };
@@ -72,21 +75,6 @@ export interface GridGraph {
   readonly barBoundary: Map<number, number>;
 }
 
-/** Union-find root of a point (with path halving). */
-function findRoot(parent: number[], a: number): number {
-  while (parent[a]! !== a) {
-    parent[a] = parent[parent[a]!]!;
-    a = parent[a]!;
-  }
-  return a;
-}
-/** Joins two points; the smaller index becomes the root. */
-function unite(parent: number[], a: number, b: number): void {
-  const ra = findRoot(parent, a);
-  const rb = findRoot(parent, b);
-  if (ra !== rb) parent[Math.max(ra, rb)] = Math.min(ra, rb);
-}
-
 /** The grid's wiring; `library` knows the project's own blocks (standard blocks only without it). */
 export function gridGraph(
   net: Pick<Network, 'rows' | 'cols' | 'elements' | 'vlinks'>,
@@ -96,59 +84,93 @@ export function gridGraph(
   const rows = net.rows;
   const cols = net.cols;
   const n = rows * W;
-  const parent: number[] = new Array<number>(n).fill(0); // small: cheaper than a typed array
-  for (let i = 0; i < n; i++) parent[i] = i;
   const inGrid = (r: number, b: number) => r >= 0 && r < rows && b >= 0 && b <= cols;
-  for (let r = 1; r < rows; r++) unite(parent, 0, r * W); // the left rail joins every row at boundary 0
-  for (const el of net.elements)
-    if (el.kind === 'link' && inGrid(el.row, el.col + 1))
-      unite(parent, el.row * W + el.col, el.row * W + el.col + 1);
-  for (const v of net.vlinks)
-    if (inGrid(v.row + 1, v.boundary)) unite(parent, v.row * W + v.boundary, (v.row + 1) * W + v.boundary);
-
-  const producers = new Map<number, Source[]>();
-  const railNet = rows > 0 ? findRoot(parent, 0) : -1;
-  if (railNet >= 0) producers.set(railNet, [{ kind: 'rail' }]);
+  const bars: [number, number][] = [];
+  for (let r = 1; r < rows; r++) bars.push([(r - 1) * W, r * W]); // the left rail joins every row at boundary 0
+  const edges: WireEdge[] = [];
   const elements = net.elements;
+  for (let ei = 0; ei < elements.length; ei++) {
+    const el = elements[ei]!;
+    if (el.kind === 'link' && inGrid(el.row, el.col) && inGrid(el.row, el.col + 1))
+      edges.push({ from: el.row * W + el.col, to: el.row * W + el.col + 1, via: ei });
+  }
+  for (const v of net.vlinks)
+    if (inGrid(v.row, v.boundary) && inGrid(v.row + 1, v.boundary))
+      bars.push([v.row * W + v.boundary, (v.row + 1) * W + v.boundary]);
+  const sourceAt = new Uint8Array(n);
+  const sinkAt = new Uint8Array(n);
+  for (let r = 0; r < rows; r++) {
+    sourceAt[r * W] = 1;
+    sinkAt[r * W + cols] = 1;
+  }
   const pins: ReturnType<typeof elementPins>[] = new Array<ReturnType<typeof elementPins>>(elements.length);
   for (let ei = 0; ei < elements.length; ei++) {
     const p = (pins[ei] = elementPins(elements[ei]!, library));
-    for (const o of p.outputs) {
-      if (!inGrid(o.row, o.boundary)) continue;
-      const id = findRoot(parent, o.row * W + o.boundary);
-      let list = producers.get(id);
-      if (!list) producers.set(id, (list = []));
-      list.push({ kind: 'pin', el: ei, pin: o.pin });
-    }
+    for (const o of p.outputs) if (inGrid(o.row, o.boundary)) sourceAt[o.row * W + o.boundary] = 1;
+    for (const i of p.inputs) if (inGrid(i.row, i.boundary)) sinkAt[i.row * W + i.boundary] = 1;
   }
+  // One-way vertical links, as the engine reads the grid (src/engine/compile/wires.ts).
+  const wired = wireNets({ points: n, bars, edges, sourceAt, sinkAt });
+  const netOfPoint = wired.netOfPoint;
+
+  const own: Source[][] = Array.from({ length: wired.count }, () => []);
+  const railNet = rows > 0 ? netOfPoint[0]! : -1;
+  if (railNet >= 0) own[railNet]!.push({ kind: 'rail' });
+  for (let ei = 0; ei < elements.length; ei++)
+    for (const o of pins[ei]!.outputs)
+      if (inGrid(o.row, o.boundary)) own[netOfPoint[o.row * W + o.boundary]!]!.push({ kind: 'pin', el: ei, pin: o.pin });
+  // What drives each net: its own sources, then those of the nets bridged into it.
+  const feeds = new Map<number, number[]>();
+  for (const b of wired.bridges) feeds.set(b.to, [...(feeds.get(b.to) ?? []), b.from]);
+  const producersMemo = new Map<number, Source[]>();
+  const producers = (id: number): Source[] => {
+    if (!feeds.has(id)) return own[id]!;
+    const hit = producersMemo.get(id);
+    if (hit) return hit;
+    const list: Source[] = [];
+    const seen = new Set<number>([id]);
+    const stack = [id];
+    while (stack.length) {
+      const m = stack.pop()!;
+      list.push(...own[m]!);
+      for (const f of feeds.get(m) ?? [])
+        if (!seen.has(f)) {
+          seen.add(f);
+          stack.push(f);
+        }
+    }
+    producersMemo.set(id, list);
+    return list;
+  };
+
   const sources = new Map<number, Map<string, Source[]>>();
   for (let ei = 0; ei < elements.length; ei++) {
     for (const i of pins[ei]!.inputs) {
       if (!inGrid(i.row, i.boundary)) continue;
-      const list = producers.get(findRoot(parent, i.row * W + i.boundary));
-      if (!list) continue;
-      let own: Source[] = list;
+      const list = producers(netOfPoint[i.row * W + i.boundary]!);
+      if (!list.length) continue;
+      let mine: Source[] = list;
       for (let k = 0; k < list.length; k++) {
         const s = list[k]!;
         if (s.kind === 'pin' && s.el === ei) {
-          own = list.filter((x) => x.kind === 'rail' || x.el !== ei);
+          mine = list.filter((x) => x.kind === 'rail' || x.el !== ei);
           break;
         }
       }
-      if (!own.length) continue;
+      if (!mine.length) continue;
       let m = sources.get(ei);
       if (!m) sources.set(ei, (m = new Map()));
-      m.set(i.pin, own === list ? list.slice() : own);
+      m.set(i.pin, mine === list ? list.slice() : mine);
     }
   }
   const rightRail = new Map<number, Source[]>();
   for (let r = 0; r < rows; r++) {
-    const id = findRoot(parent, r * W + cols);
-    const list = producers.get(id);
-    if (list && id !== railNet) rightRail.set(r, list);
+    const id = netOfPoint[r * W + cols]!;
+    const list = producers(id);
+    if (list.length && id !== railNet) rightRail.set(r, list);
   }
   const barBoundary = new Map<number, number>();
   for (const v of net.vlinks)
-    if (inGrid(v.row + 1, v.boundary)) barBoundary.set(findRoot(parent, v.row * W + v.boundary), v.boundary);
-  return { sources, rightRail, netOf: (r, b) => findRoot(parent, r * W + b), barBoundary };
+    if (inGrid(v.row, v.boundary) && inGrid(v.row + 1, v.boundary)) barBoundary.set(netOfPoint[v.row * W + v.boundary]!, v.boundary);
+  return { sources, rightRail, netOf: (r, b) => netOfPoint[r * W + b]!, barBoundary };
 }

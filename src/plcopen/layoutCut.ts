@@ -1,9 +1,11 @@
 // Wires the ladder grid cannot route: drawn through IEC connector/continuation pairs (`>NAME>`).
 // A cut input pin loses its wire on the grid: its sources feed a connector drawn right after them,
-// and a continuation of the same name, drawn in the cell left of the pin, feeds the pin. The engine
-// joins a connector and its continuations into one net (src/engine/compile/graph.ts), so the graph
-// it compiles is the file's; evaluation follows that graph, not where the pair sits (LD-SEMANTICS
-// section 1). Cuts are made on a view of the nodes: the file's nodes stay as read, for verification.
+// and a continuation of the same name, drawn in the cell left of the pin, feeds the pin (a pin whose
+// sources also feed other ORs gets one connector per source, and their continuations OR-ed at the
+// pin). The engine carries a connector's state to its continuations one way
+// (src/engine/compile/graph.ts, wires.ts), so the graph it compiles is the file's; evaluation
+// follows that graph, not where the pair sits (LD-SEMANTICS section 1). Cuts are made on a view
+// of the nodes: the file's nodes stay as read, for verification.
 import type { GNode, GSource } from './ldGraph';
 import { srcKey } from './ldNormalize';
 import type { Mismatch } from './verifyLayout';
@@ -36,6 +38,7 @@ export function cutView(nodes: readonly GNode[], members: readonly number[], cut
   const extra: number[] = [];
   const clones = new Map<number, GNode>();
   const connectorOf = new Map<string, GNode>();
+  let setsOf: Map<string, Set<string>> | undefined;
   // Names the file gave its connectors are kept; generated names (C1, C2, …) avoid them.
   const reserved = new Set<string>();
   for (const c of cuts) {
@@ -69,20 +72,47 @@ export function cutView(nodes: readonly GNode[], members: readonly number[], cut
       clones.set(node, clone);
       view[node] = clone;
     }
+    // One connector for the pin's whole set of sources, when each of them feeds only pins of that
+    // same set; else one per source, OR-ed at the pin by their continuations (a vertical link is
+    // one-way, so the continuations of a source shared by two ORs do not join those ORs).
     const key = srcs.map(srcKey).sort().join(' ');
-    let conn = connectorOf.get(key);
-    if (!conn) {
-      const first = srcs.find((s) => s.kind === 'node');
-      const at = first && first.kind === 'node' ? nodes[first.node]! : orig;
-      conn = drawn(view.length, 'connector', nameFor(orig.via?.[pin]), at, 0.5, new Map([['in', [...srcs]]]));
-      connectorOf.set(key, conn);
-      add(conn);
+    const groups = srcs.length > 1 && !onlyThisSet(key, srcs) ? srcs.map((x) => [x]) : [srcs];
+    const fed: GSource[] = [];
+    for (const group of groups) {
+      const gkey = group.length === srcs.length ? key : srcKey(group[0]!);
+      let conn = connectorOf.get(gkey);
+      if (!conn) {
+        const first = group.find((x) => x.kind === 'node');
+        const at = first && first.kind === 'node' ? nodes[first.node]! : orig;
+        conn = drawn(view.length, 'connector', nameFor(orig.via?.[pin]), at, 0.5, new Map([['in', [...group]]]));
+        connectorOf.set(gkey, conn);
+        add(conn);
+      }
+      const cont = drawn(view.length, 'continuation', conn.name!, orig, -0.5, new Map());
+      add(cont);
+      fed.push({ kind: 'node', node: cont.index, pin: 'out' });
     }
-    const cont = drawn(view.length, 'continuation', conn.name!, orig, -0.5, new Map());
-    add(cont);
-    clone.inputs.set(pin, [{ kind: 'node', node: cont.index, pin: 'out' }]);
+    clone.inputs.set(pin, fed);
   }
   return { nodes: view, members: [...members, ...extra] };
+
+  /** True when every source of the set feeds only pins wired from exactly this set. */
+  function onlyThisSet(key: string, srcs: readonly GSource[]): boolean {
+    if (!setsOf) {
+      setsOf = new Map();
+      for (const i of members)
+        for (const list of nodes[i]!.inputs.values()) {
+          const k = list.map(srcKey).sort().join(' ');
+          for (const x of list) {
+            const sk = srcKey(x);
+            const sets = setsOf.get(sk);
+            if (sets) sets.add(k);
+            else setsOf.set(sk, new Set([k]));
+          }
+        }
+    }
+    return srcs.every((x) => [...(setsOf!.get(srcKey(x)) ?? [])].every((k) => k === key));
+  }
 }
 
 /** Every input pin of the network wired from another element (the cut that always draws). */

@@ -124,11 +124,19 @@ class RowPlacer {
     this.mine.set(k, this.own--);
     return true;
   }
-  /** The continuation that alone feeds this input pin, not yet placed (it is drawn with the pin). */
-  pendingContinuation(net: Net | undefined): number | undefined {
-    if (!net || net.producers.length !== 1 || net.rail) return undefined;
-    const p = net.producers[0]!.node;
-    return this.all[p]!.kind === 'continuation' && !this.row.has(p) ? p : undefined;
+  /**
+   * The continuations that alone feed this input pin, not yet placed: drawn with the pin, the first
+   * on its row and the others below it in the same column, OR-ed by the pin's bar (layoutCut.ts
+   * gives a pin one continuation per source where a source also feeds other ORs).
+   */
+  pendingContinuations(net: Net | undefined): number[] | undefined {
+    if (!net || !net.producers.length || net.rail) return undefined;
+    const list: number[] = [];
+    for (const p of net.producers) {
+      if (this.all[p.node]!.kind !== 'continuation' || this.row.has(p.node)) return undefined;
+      list.push(p.node);
+    }
+    return list.length > 1 ? sortSmall(list, this.byPosition) : list;
   }
   fits(i: number, r: number): boolean {
     const sh = this.shapes.get(i)!;
@@ -139,11 +147,17 @@ class RowPlacer {
     for (let y = 0; y < sh.h; y++)
       for (let x = 0; x < sh.w; x++) if (this.cellOwner.has((r + y) * KEY + c + x)) return false;
     for (const p of sh.inputs) {
-      const k = this.pendingContinuation(this.inNet(i, p.pin));
-      if (k === undefined) continue;
-      const kc = this.col.get(k)!;
-      if (this.cellOwner.has((r + p.off) * KEY + kc)) return false;
-      if (kc !== 0 && !this.block(r + p.off, kc)) return false;
+      const net = this.inNet(i, p.pin);
+      const ks = this.pendingContinuations(net);
+      if (!ks) continue;
+      for (let j = 0; j < ks.length; j++) {
+        const kc = this.col.get(ks[j]!)!;
+        const rr = r + p.off + j;
+        if (this.cellOwner.has(rr * KEY + kc)) return false;
+        if (kc !== 0 && !this.block(rr, kc)) return false;
+        // Below the pin's row: the continuation's output and the bar up to the pin.
+        if (j > 0 && !this.runOk(rr, kc + 1, kc + 1, net!, mine)) return false;
+      }
     }
     for (let y = 0; y < sh.h; y++) for (let x = 1; x < sh.w; x++) if (!this.block(r + y, c + x)) return false;
     for (const p of sh.inputs) {
@@ -271,9 +285,9 @@ class RowPlacer {
     for (const p of sh.inputs) {
       const net = this.inNet(i, p.pin);
       if (!net) continue;
-      const k = this.pendingContinuation(net);
-      if (k !== undefined) {
-        (conts ??= []).push({ node: k, row: p.off });
+      const ks = this.pendingContinuations(net);
+      if (ks) {
+        ks.forEach((k, j) => (conts ??= []).push({ node: k, row: p.off + j }));
         continue;
       }
       const only = net.producers.length === 1 ? net.producers[0]!.node : undefined;

@@ -4,7 +4,7 @@
 // power running left to right (every source of a net ends at or left of every pin it feeds, so the
 // grid never holds a branch fed from its right, LD-R01). Where the grid differs, the import says
 // which pin of which element gains or loses which source.
-import { buildGraph, type NetworkGraph } from '../engine/compile/graph';
+import { buildGraph, upstream, type NetworkGraph } from '../engine/compile/graph';
 import type { BlockLibrary } from '../model/library';
 import type { Network } from '../model/project';
 import type { LaidOut } from './layoutShapes';
@@ -67,7 +67,9 @@ export function verify(
   const drawnOf = new Map<number, Map<string, { srcs: GSource[]; leftward: boolean }>>();
   let reach: ((net: (typeof g.nets)[number]) => Set<number>) | undefined;
   for (const net of g.nets) {
-    if (!net.sinks.length || (!net.sources.length && !net.leftRail)) continue;
+    // What drives the net, through one-way bridges too (src/engine/compile/wires.ts).
+    const up = upstream(g, net.id);
+    if (!net.sinks.length || !up.fed) continue;
     let maxSource = -1;
     for (const s of net.sources) maxSource = Math.max(maxSource, s.point % W);
     // Through a connector pair a net may run leftwards on the grid: then what counts is that
@@ -76,11 +78,11 @@ export function verify(
       ? (reach ??= reachability(g, laid))(net)
       : undefined;
     const srcs: GSource[] = [];
-    for (const s of net.sources) {
+    for (const s of up.sources) {
       const m = memberOf[s.node]!;
       if (m >= 0) srcs.push({ kind: 'node', node: m, pin: pinName(g, s.node, s.pin) });
     }
-    if (net.leftRail) srcs.push(RAIL);
+    if (up.leftRail) srcs.push(RAIL);
     for (const s of net.sinks) {
       const m = memberOf[s.node]!;
       if (m < 0) continue;

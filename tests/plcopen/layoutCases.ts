@@ -160,6 +160,50 @@ export const CASES: LayoutCase[] = [
       },
     ],
   },
+  {
+    name: 'output-into-two-ors',
+    connectors: true,
+    about: "one TON's Q into two different ORs: X := T1.Q OR B, Y := T1.Q OR C (vertical links are one-way)",
+    vars: [...bools('A', 'B', 'C', 'X', 'Y'), { name: 'T1', type: 'TON' }],
+    networks: [
+      {
+        objects: [
+          { id: 1, kind: 'contact', v: 'A', in: ['rail'] },
+          {
+            id: 2,
+            kind: 'block',
+            type: 'TON',
+            instance: 'T1',
+            inputs: { IN: ['1'], PT: ['=T#20ms'] },
+            outputs: ['Q', 'ET'],
+          },
+          { id: 3, kind: 'contact', v: 'B', in: ['rail'] },
+          { id: 4, kind: 'contact', v: 'C', in: ['rail'] },
+          { id: 5, kind: 'coil', v: 'X', in: ['2.Q', '3'] },
+          { id: 6, kind: 'coil', v: 'Y', in: ['2.Q', '4'] },
+        ],
+        toRail: [5, 6],
+      },
+    ],
+  },
+  {
+    name: 'contact-into-two-ors',
+    about: 'an edge contact whose output joins two different ORs and a coil alone (X := A OR B, Y := A, Z := A OR C): drawn once per coil',
+    vars: bools('A', 'B', 'C', 'X', 'Y', 'Z'),
+    networks: [
+      {
+        objects: [
+          { id: 1, kind: 'contact', v: 'A', edge: 'rising', in: ['rail'] },
+          { id: 2, kind: 'contact', v: 'B', in: ['rail'] },
+          { id: 3, kind: 'contact', v: 'C', in: ['rail'] },
+          { id: 4, kind: 'coil', v: 'X', in: ['1', '2'] },
+          { id: 5, kind: 'coil', v: 'Y', in: ['1'] },
+          { id: 6, kind: 'coil', v: 'Z', in: ['1', '3'] },
+        ],
+        toRail: [4, 5, 6],
+      },
+    ],
+  },
 ];
 
 if (process.argv[1] === fileURLToPath(import.meta.url))

@@ -45,6 +45,33 @@ describe('layout draws exactly the file (hand-written shapes)', () => {
     }
   });
 
+  it('one output into two ORs: X := T1.Q OR B and Y := T1.Q OR C, scan by scan, and exported back so', () => {
+    const r = importPlcopen(fixture('layout-output-into-two-ors.xml'));
+    if (!r.ok) throw new Error('import');
+    const check = (project: typeof r.project) => {
+      const plc = run(project, 'Main');
+      let differ = 0;
+      for (let k = 0; k < 40; k++) {
+        const [a, b, c] = [k % 8 < 5, k % 3 === 0, k % 5 === 1];
+        plc.write('A', a);
+        plc.write('B', b);
+        plc.write('C', c);
+        plc.scan();
+        const q = plc.read('T1.Q') === true;
+        expect([plc.read('X'), plc.read('Y')], `scan ${k + 1}`).toEqual([q || b, q || c]);
+        if (plc.read('X') !== plc.read('Y')) differ++;
+      }
+      expect(differ).toBeGreaterThan(5);
+    };
+    check(r.project);
+    // The export writes each coil's own OR (X: Q and B; Y: Q and C), through the connector pair.
+    const xml = exportPlcopen(r.project);
+    const again = importPlcopen(xml);
+    if (!again.ok) throw new Error('re-import');
+    expect(again.report.warnings.filter((w) => /cannot be drawn/.test(w.message))).toEqual([]);
+    check(again.project);
+  });
+
   it('CTUD: QU drives A and B, QD drives C, CV goes to Count only', () => {
     const r = importPlcopen(fixture('layout-ctud-outputs.xml'));
     if (!r.ok) throw new Error('import');

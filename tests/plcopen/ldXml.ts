@@ -2,7 +2,7 @@
 // compact style of CODESYS (no route points). Positions are optional (x, y hints; 0,0 otherwise).
 // `graphOf` gives back the same graph from an imported project, drawn as the engine compiles it.
 
-import { buildGraph } from '../../src/engine/compile/graph';
+import { buildGraph, upstream } from '../../src/engine/compile/graph';
 import type { Project } from '../../src/model/project';
 
 /** A wire into a pin: the rail, an element's output (`id` or `id.PIN` for a block), or a variable (`=Name`). */
@@ -169,8 +169,10 @@ export function graphOf(project: Project, pou = 'Main'): string[] {
       return `${n.kind}:${n.name}`;
     };
     for (const n of g.nets) {
-      const srcs = n.sources.map((s) => `${label(s.node)}.${s.pin}`);
-      if (n.leftRail) srcs.push('rail');
+      // What drives the net, through one-way bridges too (a fan-out into two different ORs).
+      const up = upstream(g, n.id);
+      const srcs = up.sources.map((s) => `${label(s.node)}.${s.pin}`);
+      if (up.leftRail) srcs.push('rail');
       for (const s of n.sinks) for (const src of srcs) out.push(`${label(s.node)}.${s.pin} <- ${src}`);
     }
   }
@@ -202,7 +204,7 @@ export function specGraph(networks: readonly LdNetwork[]): string[] {
           const [id, pin] = r.split('.');
           const src = byId.get(Number(id))!;
           if (src.kind === 'continuation') {
-            // A continuation carries what its connector is wired to (the engine joins them).
+            // A continuation carries what its connector is wired to (one way).
             const conn = net.objects.find((x) => x.kind === 'connector' && x.name.toUpperCase() === src.name.toUpperCase());
             if (conn && conn.kind === 'connector') add(consumer, conn.in);
           } else out.push(`${consumer} <- ${label(src)}.${pin ?? 'OUT'}`);
