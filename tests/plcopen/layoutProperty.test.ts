@@ -15,9 +15,11 @@ function rng(seed: number) {
 /**
  * A random network: series/parallel trees of contacts with fan-out, the file's own connector pairs,
  * TON (ET compared by GT), CTUD (QU, QD, CV; R fed by a contact that also drives a coil) or SR
- * blocks, a contact feeding both a block and the final OR, coils alone, in parallel or in series.
+ * blocks, a contact feeding both a block and the final OR, coils alone, in parallel, in two
+ * different ORs of one result, or in series.
  */
-function randomNetwork(rnd: () => number): { vars: LdVar[]; net: LdNetwork } {
+function randomNetwork(rnd: () => number): { vars: LdVar[]; net: LdNetwork; intoTwoOrs: boolean } {
+  let intoTwoOrs = false;
   const objects: LdObj[] = [];
   let id = 1;
   const inputs = ['A', 'B', 'C', 'D', 'E'];
@@ -84,27 +86,34 @@ function randomNetwork(rnd: () => number): { vars: LdVar[]; net: LdNetwork } {
     power = [`${k}.Q1`];
   }
   if (bypass) power = [...power, bypass];
-  // Coils: one, two in parallel, or two in series.
+  // Coils: one, two in parallel, the result fanning out into two different ORs (vertical links
+  // are one-way: X := P OR c1, Y := P OR c2, or X := P, Y := P OR c1), or two in series.
   const shape = rnd();
-  if (shape < 0.4) coil('X', power);
-  else if (shape < 0.7) {
+  if (shape < 0.3) coil('X', power);
+  else if (shape < 0.5) {
     coil('X', power);
     coil('Y', power);
+  } else if (shape < 0.7) {
+    coil('X', rnd() < 0.5 ? power : [...power, contact(['rail'])]);
+    coil('Y', [...power, contact(['rail'])]);
+    intoTwoOrs = true;
   } else {
     const x = coil('X', power);
     toRail.pop();
     coil('Y', [String(x)]);
   }
   if (rnd() < 0.2) coil('V', [contact(power)]);
-  return { vars, net: { objects, toRail } };
+  return { vars, net: { objects, toRail }, intoTwoOrs };
 }
 
 describe('random LD graphs import exactly', () => {
   it('1,000 graphs: exact, and the same graph and 100-scan trace after export and import', () => {
     const rnd = rng(20260112);
     let withPairs = 0;
+    let twoOrs = 0;
     for (let k = 0; k < 1000; k++) {
-      const { vars, net } = randomNetwork(rnd);
+      const { vars, net, intoTwoOrs } = randomNetwork(rnd);
+      if (intoTwoOrs) twoOrs++;
       const xml = ldXml(vars, [net]);
       const r = importPlcopen(xml);
       if (!r.ok) throw new Error(`case ${k}: ${JSON.stringify(r.errors)}`);
@@ -123,5 +132,7 @@ describe('random LD graphs import exactly', () => {
     }
     // Some graphs need connector pairs (the file's own, or drawn where the grid cannot route).
     expect(withPairs).toBeGreaterThan(100);
+    // A fifth of them fan one result out into two different ORs.
+    expect(twoOrs).toBeGreaterThan(150);
   });
 });
