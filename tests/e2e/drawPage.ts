@@ -1,7 +1,15 @@
 // Page object for drawing on the ladder canvas in a real browser: cell positions on screen from
 // the editor's own geometry, and the document read through window.rungsmith.
 import type { Page } from 'playwright-core';
-import { cellCentre, layoutNetworks, type CanvasLayout } from '../../src/editor/canvas/geometry';
+import {
+  CELL_H,
+  cellCentre,
+  columnsOf,
+  gridOrigin,
+  layoutNetworks,
+  WIRE_Y,
+  type CanvasLayout,
+} from '../../src/editor/canvas/geometry';
 import { blockLibrary } from '../../src/model/library';
 import type { Network, Project } from '../../src/model/project';
 import { chooseMenuItem } from './appPage';
@@ -81,6 +89,28 @@ export class DrawPage {
     );
     await this.page.waitForTimeout(0);
     return { x: boxX + contentX * zoom - left, y: boxY + contentY * zoom - top };
+  }
+
+  /**
+   * Screen position of the middle of the vertical link on column boundary `boundary` from row `row`
+   * down to the next row (where it is drawn, and where the vertical link tool takes a click).
+   */
+  async vlinkPoint(index: number, row: number, boundary: number): Promise<{ x: number; y: number }> {
+    const { networks, layout } = await this.layout();
+    const n = networks[index]!;
+    const origin = gridOrigin(n);
+    return this.screenPoint({
+      x: origin.x + columnsOf(layout, n).xs[boundary]!,
+      y: layout.tops[index]! + origin.y + row * CELL_H + WIRE_Y + CELL_H / 2,
+    });
+  }
+
+  /** Adds (or removes) a vertical link with the palette's vertical link tool, as a user clicks it. */
+  async clickVLink(index: number, row: number, boundary: number) {
+    await this.pickPalette('vlink');
+    const p = await this.vlinkPoint(index, row, boundary);
+    await this.page.mouse.click(p.x, p.y);
+    await this.pickPalette('vlink');
   }
 
   async clickCell(index: number, row: number, col: number) {

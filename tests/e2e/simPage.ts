@@ -75,15 +75,27 @@ export class SimPage {
   }
 
   /**
-   * Whether the wire at the right end of a cell is drawn in the theme's energised colour
-   * (read from the canvas pixels, as a user would see it).
+   * Whether the wire at the right end of a cell (or in its middle: a line's own wire, away from a
+   * vertical link on its right) is drawn in the theme's energised colour (read from the canvas
+   * pixels, as a user would see it).
    */
-  async wireLit(network: number, row: number, col: number): Promise<boolean> {
+  async wireLit(network: number, row: number, col: number, at: 'end' | 'middle' = 'end'): Promise<boolean> {
     const { networks, layout } = await this.draw.layout();
     const n = networks[network]!;
     const point = await this.draw.cellPoint(network, row, col);
-    const dx = cellRect(columnsOf(layout, n), { row, col }).width / 2 - 5;
+    const dx = at === 'middle' ? 0 : cellRect(columnsOf(layout, n), { row, col }).width / 2 - 5;
     const dy = WIRE_Y - CELL_H / 2;
+    const zoom = await this.zoom();
+    return this.litAt({ x: point.x + dx * zoom, y: point.y + dy * zoom });
+  }
+
+  /** Whether the vertical link on `boundary` from `row` to the next row is drawn energised. */
+  async vlinkLit(network: number, row: number, boundary: number): Promise<boolean> {
+    return this.litAt(await this.draw.vlinkPoint(network, row, boundary));
+  }
+
+  /** Whether the canvas pixels around a screen point show the theme's energised colour. */
+  async litAt(point: { x: number; y: number }): Promise<boolean> {
     return this.page.evaluate(
       ({ x, y }) => {
         const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="ladder-canvas"] canvas');
@@ -100,7 +112,7 @@ export class SimPage {
         }
         return false;
       },
-      { x: point.x + dx * (await this.zoom()), y: point.y + dy * (await this.zoom()) },
+      point,
     );
   }
 
