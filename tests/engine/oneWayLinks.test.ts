@@ -107,6 +107,24 @@ describe('one-way vertical links', () => {
     expect(differ).toBeGreaterThan(5);
   });
 
+  test('a line from an open contact to an OR bar is drawn dark while the OR is lit (a link shows its left side)', () => {
+    const net = ladder(['[A] - + (X)', '[B] - + .']);
+    const p = project(V, [net]);
+    const { program } = compileProgram(p);
+    const plc = createPlc(program!, { cycleMs: 10 });
+    const linkOn = (row: number) => {
+      const k = net.elements.findIndex((e) => e.kind === 'link' && e.row === row);
+      return plc.snapshot().networks[0]!.elements[k]! & 1;
+    };
+    plc.write('A', true);
+    plc.scan();
+    expect([linkOn(0), linkOn(1), plc.snapshot().networks[0]!.vlinks[0]]).toEqual([1, 0, 1]);
+    plc.write('A', false);
+    plc.write('B', true);
+    plc.scan();
+    expect([linkOn(0), linkOn(1), plc.snapshot().networks[0]!.vlinks[0]]).toEqual([0, 1, 1]);
+  });
+
   test('a line fed only from its right is still refused (LD-R01): a U-turn carries nothing', () => {
     const p = project(V, [ladder(['[A] [B] + . .', '. + - + . .', '. + - - - (X)'])]);
     const d = checkProject(p).find((x) => x.rule === 'LD-R01');

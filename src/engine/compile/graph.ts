@@ -63,6 +63,12 @@ export interface NetworkGraph {
   readonly linkNet: Int32Array;
   /** Net id of each vertical link (by vlink index); -1 for one outside the grid. */
   readonly vlinkNet: Int32Array;
+  /**
+   * For the power display: the node whose output alone drives a horizontal link (through a line
+   * with no vertical link on it), by element index; -1 for other links and elements. Such a line
+   * shows that output's own state, not the OR its net forms further right (section 1).
+   */
+  readonly linkSource: Int32Array;
   /** Elements that could not be placed (outside the grid or overlapping): element index and reason. */
   readonly misplaced: readonly { index: number; reason: string }[];
   /** Vertical links outside the grid (vlink index). */
@@ -267,6 +273,38 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
     for (const t of outputs) nets[t.net]!.sources.push({ node, pin: t.pin, point: point(t.row, t.boundary) });
   });
 
+  // Lines driven by one element output alone (no vertical link on them), for the power display.
+  const linkSource = new Int32Array(network.elements.length).fill(-1);
+  const onBar = new Uint8Array(rows * width);
+  network.vlinks.forEach((v, i) => {
+    if (badVlinks.includes(i)) return;
+    onBar[point(v.row, v.boundary)] = 1;
+    onBar[point(v.row + 1, v.boundary)] = 1;
+  });
+  const outAt = new Int32Array(rows * width).fill(-1);
+  nodes.forEach((n, ni) => {
+    for (const t of n.outputs) {
+      const p = point(t.row, t.boundary);
+      outAt[p] = outAt[p] === -1 ? ni : -2;
+    }
+  });
+  const linkEndingAt = new Int32Array(rows * width).fill(-1);
+  const links: number[] = [];
+  network.elements.forEach((el, i) => {
+    if (el.kind !== 'link' || !placed[i]) return;
+    links.push(i);
+    linkEndingAt[point(el.row, el.col + 1)] = i;
+  });
+  links.sort((a, b) => network.elements[a]!.row - network.elements[b]!.row || network.elements[a]!.col - network.elements[b]!.col);
+  for (const i of links) {
+    const el = network.elements[i]!;
+    const p = point(el.row, el.col);
+    if (onBar[p] || el.col === 0) continue;
+    const before = linkEndingAt[p]!;
+    if (outAt[p]! >= 0 && before < 0) linkSource[i] = outAt[p]!;
+    else if (outAt[p] === -1 && before >= 0) linkSource[i] = linkSource[before]!;
+  }
+
   wired.bridges.forEach((b, i) => {
     nets[b.from]!.feedsOut.push(i);
     nets[b.to]!.feeds.push(i);
@@ -279,6 +317,7 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
     netOfPoint,
     linkNet,
     vlinkNet,
+    linkSource,
     misplaced,
     badVlinks,
     bridges: wired.bridges,

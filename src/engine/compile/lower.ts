@@ -218,6 +218,9 @@ function lowerInOrder(
 
   const elementNets = network.elements.map((el, i): [number, number] => {
     if (el.kind === 'link' || el.kind === 'connector' || el.kind === 'continuation') {
+      // A line from one contact to an OR shows the contact's own result (section 1).
+      const own = g.linkSource[i]!;
+      if (own >= 0 && nets.hasPower(-1 - own)) return [nets.powerNet(-1 - own), nets.powerNet(-1 - own)];
       const net = g.linkNet[i]!;
       return net >= 0 && nets.hasPower(net) ? [nets.powerNet(net), nets.powerNet(net)] : [-1, -1];
     }
