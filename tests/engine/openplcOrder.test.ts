@@ -117,6 +117,75 @@ describe('openplc: blocks run once, when a coil first needs them', () => {
   });
 });
 
+describe('openplc: a statement calls first, then reads its contacts (PLCGenerator GeneratePaths)', () => {
+  const W = vars('A BOOL', 'B BOOL', 'C BOOL', 'D BOOL', 'Set BOOL', 'Rst BOOL', 'Y BOOL', 'W BOOL', 'Z BOOL', 'L SR');
+
+  test('a contact beside a block in the same statement reads the output the block has just written', () => {
+    // L(S1 := A);
+    // Y := L.Q1 OR B AND L.Q1;   (* the contact L.Q1 is read after the call *)
+    const net = ladder(['[L.Q1] - - - + (Y)', '[A] # # [B] + .', '. # # . .'], { boxes: [{ row: 1, col: 1, type: 'SR', instance: 'L' }] });
+    const t = both(W, [net], [{ A: true }, {}], ['L.Q1', 'Y']);
+    expect(t.openplc).toEqual([[1, 1], [1, 1]]);
+    expect(t.iec).toEqual([[1, 0], [1, 1]]); // iec: the upper contact runs before the block
+  });
+
+  test("an edge contact's trigger reads its variable before the blocks of its own path are called", () => {
+    // R_TRIG1(CLK := L.Q1);      (* ExtractModifier writes the trigger before GeneratePaths goes upstream *)
+    // L(S1 := A);
+    // Y := R_TRIG1.Q AND L.Q1;
+    const net = ladder(['[A] # # [P:L.Q1] (Y)', '. # # . .'], { boxes: [{ row: 0, col: 1, type: 'SR', instance: 'L' }] });
+    const t = both(W, [net], [{ A: true }, {}, {}], ['L.Q1', 'Y']);
+    expect(t.openplc).toEqual([[1, 0], [1, 1], [1, 0]]); // the rising edge of L.Q1 is seen one scan later
+    expect(t.iec).toEqual([[1, 1], [1, 0], [1, 0]]);
+  });
+});
+
+describe('openplc: a part of the path that splits and joins again is written once per branch', () => {
+  test('an edge contact before the split gets a trigger per branch, each reading its variable at its own place', () => {
+    // R_TRIG1(CLK := L.Q1);             (* branch C *)
+    // L(S1 := Set, R := Rst);           (* the block on the middle branch *)
+    // R_TRIG2(CLK := L.Q1);             (* branch D: the part before the split written again *)
+    // Y := C AND R_TRIG1.Q OR L.Q1 OR D AND R_TRIG2.Q;
+    const V2 = vars('C BOOL', 'D BOOL', 'Set BOOL', 'Rst BOOL', 'Y BOOL', 'L SR');
+    const rows = ['[P:L.Q1] + [C] - - + (Y)', '. + . # # + .', '. + . # # + .', '. + [D] - - + .'];
+    const net = ladder(rows, { boxes: [{ row: 1, col: 2, type: 'SR', instance: 'L', inputs: { S1: 'Set', R: 'Rst' } }] });
+    const steps: Steps = [{ Set: true, D: true }, { Set: false, Rst: true }];
+    const t = both(V2, [net], steps, ['L.Q1', 'Y']);
+    // Scan 2: L resets; R_TRIG1 saw L.Q1 rise (before the call), R_TRIG2 sees it fall: Y := C = FALSE.
+    expect(t.openplc).toEqual([[1, 1], [0, 0]]);
+    // iec: one edge memory read once: the edge holds for D too.
+    expect(t.iec).toEqual([[1, 1], [0, 1]]);
+    expect(compileProgram(project(V2, [net], 'openplc')).program!.edgeCount).toBe(2);
+    expect(compileProgram(project(V2, [net], 'iec')).program!.edgeCount).toBe(1);
+  });
+});
+
+describe('openplc: a variable beside a block output is written at its own turn', () => {
+  test('a coil drawn above the output variable reads the value from before the call', () => {
+    // _TMP_MOVE2_OUT := MOVE(EN := TRUE, IN := A, ENO => _TMP_MOVE2_ENO);   (* W needs the block (connector C) *)
+    // W := _TMP_MOVE2_ENO AND Z;     (* Z is not written yet *)
+    // IF _TMP_MOVE2_ENO THEN Z := _TMP_MOVE2_OUT; END_IF;   (* the outVariable's own statement, at its position *)
+    const V3 = vars('A BOOL', 'W BOOL', 'Z BOOL');
+    const net = ladder(['|>C> [Z] (W)', '- # # >C>|', '. # # .'], {
+      boxes: [{ row: 1, col: 1, type: 'MOVE', inputs: { IN: 'A' }, outputs: { OUT: 'Z' } }],
+    });
+    const t = both(V3, [net], [{ A: true }, {}, { A: false }, {}], ['Z', 'W']);
+    expect(t.openplc).toEqual([[1, 0], [1, 1], [0, 1], [0, 0]]);
+    expect(t.iec).toEqual([[1, 1], [1, 1], [0, 0], [0, 0]]);
+  });
+
+  test("with the block's EN wired, the output variable is written only while ENO is on", () => {
+    // Z := B;                                                        (* network 1 *)
+    // _TMP_MOVE1_OUT := MOVE(EN := E, IN := A, ENO => _TMP_MOVE1_ENO);  (* network 2 *)
+    // IF _TMP_MOVE1_ENO THEN Z := _TMP_MOVE1_OUT; END_IF;            (* GetUsedEno *)
+    const V3 = vars('A BOOL', 'B BOOL', 'E BOOL', 'Z BOOL');
+    const move = ladder(['[E] # # .', '. # # .'], { boxes: [{ row: 0, col: 1, type: 'MOVE', inputs: { IN: 'A' }, outputs: { OUT: 'Z' } }] });
+    const t = both(V3, [ladder(['[B] (Z)']), move], [{ E: true, A: true }, { E: false }], ['Z']);
+    expect(t.openplc).toEqual([[1], [0]]); // not Z := the value MOVE kept from scan 1
+    expect(t.iec).toEqual(t.openplc);
+  });
+});
+
 describe('openplc: jumps and RETURNs are never generated', () => {
   test('a powered jump does nothing, with a located warning (LD-W20)', () => {
     const networks = [ladder(['[A] >>SKIP']), ladder(['[B] (X)']), ladder(['[B] (Y)'], { label: 'SKIP' })];

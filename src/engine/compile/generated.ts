@@ -2,35 +2,39 @@
 // Beremiz and OpenPLC run it. Their generator (PLCGenerator.py, ComputeProgram) does not run the
 // graph: it writes one ST statement per coil, in drawing order over the whole POU body, each
 // re-tracing the coil's path from the left rail (ComputeExpression), so:
-// - every coil (and every block output written to a variable: an outVariable) takes its turn by
-//   position: network, then row, then column;
-// - at a coil's turn, every contact of its path is read again, with locals of its own (a contact
-//   on the paths of two coils is read twice; a |P| |N| contact gets a new edge memory per
-//   reading: a new R_TRIG/F_TRIG each time the generator traces it);
+// - every coil and every variable written beside a block output (an outVariable) takes its turn by
+//   position: network, then row, then column; the outVariable's statement `X := T1.Q` (or
+//   `X := ADD3_OUT` for a function) is written at its own turn, not when the block runs;
+// - a statement first calls what its path needs, in the generator's order (GeneratePaths: from the
+//   coil back to the rail, a join's branches top first, an edge contact's R_TRIG/F_TRIG before its
+//   own upstream part, a block's inputs in pin order), then evaluates its expression: the plain
+//   contacts of the path are read after every call of the statement (a contact reading an output
+//   of a block called in the same statement sees the new value); an edge contact's trigger reads
+//   its variable at the trigger's place (a snapshot when a block called later in the statement
+//   may change it);
+// - at a coil's turn, every contact of its path is read again; a |P| |N| contact gets a new edge
+//   memory per reading, and per branch when its upstream part splits and joins again (the
+//   generator writes that part once per branch, each with an R_TRIG/F_TRIG of its own);
 // - a coil in series passes its left side on (the generator traces through it);
 // - a block (function, FB, user block; also the inverting contact, which the export writes as a
-//   NOT block) runs once (ComputedBlocks), at the first coil or output variable that needs it, its
-//   inputs traced at that moment; later readings read its stored outputs;
+//   NOT block) runs once (ComputedBlocks), at the first statement that needs it, its inputs traced
+//   at that moment; later readings read its stored outputs;
 // - blocks no coil or output variable needs run after every coil of the POU body (`late`,
 //   finished by pou.ts once all networks are started);
 // - a function with no input connected is not called (LD-W22); jumps and RETURNs are never
 //   generated: they do nothing (LD-W20, LD-W21).
-// Inside one coil's reading the elements run in the graph's order (inputs first). The generator
-// instead calls the blocks and R_TRIGs of the path first and reads the plain contacts in the
-// coil's statement; the two differ only when a contact of the path reads an output of a block
-// called in the same reading. A branch that splits and joins again is read once per coil here;
-// the generator writes its upstream part twice (the same values, except an edge contact there,
-// which gets two memories).
 import type { BoxElement } from '../../model/elements';
 import type { Network } from '../../model/project';
-import { isElementaryType } from '../../model/iecTypes';
+import { isElementaryType, type ElementaryType } from '../../model/iecTypes';
+import { resolveFunction } from '../library/functions';
+import { defaultValue } from '../values/types';
 import { lowerBox } from './box';
 import type { PouContext } from './context';
 import { upstream, type GraphNode, type NetworkGraph } from './graph';
-import type { NetworkIR, Op } from './ir';
+import type { NetworkIR, Op, OutIR } from './ir';
 import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget, NetMap, networkIR, type PendingNetwork } from './lower';
 import { describeElement, type Reporter } from './report';
-import type { Access } from './symbols';
+import { storeOf, type Access } from './symbols';
 
 type Pair = readonly [number, number];
 
@@ -40,6 +44,22 @@ const byPosition = (a: { row: number; col: number }, b: { row: number; col: numb
 /** Blocks for the generator: boxes and inverting contacts (exported as NOT blocks). */
 const isBlock = (node: GraphNode): boolean =>
   node.el.kind === 'box' || (node.el.kind === 'contact' && node.el.contact === 'NOT');
+
+/** Operations that call a block (and may write variables a contact reads). */
+const isCall = (op: Op): boolean => op.op === 'fb' || op.op === 'function' || op.op === 'call';
+
+/**
+ * One generated statement (a coil's, an output variable's, a block call's): what it calls first,
+ * in the generator's order, then its expression, evaluated after every call.
+ */
+interface Statement {
+  readonly calls: Op[];
+  readonly expr: Op[];
+  /** Edge contacts: where their R_TRIG/F_TRIG stands among the calls, and their operation in `expr`. */
+  readonly triggers: { readonly at: number; readonly expr: number }[];
+}
+
+const statement = (): Statement => ({ calls: [], expr: [], triggers: [] });
 
 export function startGenerated(
   ctx: PouContext,
@@ -53,11 +73,14 @@ export function startGenerated(
   const ops: Op[] = [];
   const late: Op[] = [];
   let sink = ops;
+  let stmt = statement();
   /** The locals of the reading being generated: graph net -> local. */
   let trace = new Map<number, number>();
   const readings = new Map<number, number>();
   const computed = new Set<number>();
   const blockOut = new Map<number, Map<string, number>>();
+  /** Per block: the statements writing the variables beside its outputs (by upper-case pin), run at their turns. */
+  const blockWrites = new Map<number, Map<string, Op>>();
   /** Element (node) -> [left, right] locals of its latest evaluation; graph net -> latest local. */
   const latest = new Map<number, Pair>();
   const latestNet = new Map<number, number>();
@@ -79,6 +102,71 @@ export function startGenerated(
     }
   });
 
+  /** A variable of the generated code the program does not declare (the generator's `ADD3_OUT`). */
+  const hiddenVar = (name: string, type: ElementaryType): Access => {
+    const store = storeOf(type);
+    const slot = ctx.symbols.counts[store]++;
+    if (store !== 'b') ctx.dataSlots.push({ store, slot, type });
+    const v = { kind: 'var', name, type, store, slot, initial: defaultValue(type), retain: false, constant: false, global: false, implicit: false, hidden: true } as const;
+    return { kind: 'var', v, type };
+  };
+  /** `dst := src` as a MOVE (node -1 when it belongs to no element: an edge contact's snapshot). */
+  const moveFns = new Map<ElementaryType, number>();
+  const move = (node: number, src: Access, out: OutIR, en?: Access): Op | undefined => {
+    let fn = moveFns.get(src.type);
+    if (fn === undefined) {
+      const res = resolveFunction('MOVE', [src.type], ctx.profile);
+      if (!res.ok) return undefined;
+      fn = ctx.functions.length;
+      ctx.functions.push(res.fn);
+      moveFns.set(src.type, fn);
+    }
+    const args = [{ pin: 'IN', type: src.type, src: { from: 'access', access: src } } as const];
+    return { op: 'function', node, name: 'MOVE', fn, ...(en ? { en: { from: 'access', access: en } } : {}), args, out, eno: { pin: 'ENO', type: 'BOOL' } };
+  };
+
+  /** A statement's operations: its calls, then its expression (snapshots added where the calls move a trigger's variable). */
+  const close = (s: Statement): Op[] => {
+    const moved = s.triggers.filter((t) => s.calls.slice(t.at).some(isCall));
+    for (const t of moved.sort((a, b) => b.at - a.at)) {
+      const op = s.expr[t.expr]!;
+      if (op.op !== 'contact' || !op.src) continue;
+      // R_TRIGn(CLK := V) stands before calls that may write V: V is read there.
+      const held = hiddenVar(`${describeElement(at(g, g.nodes.findIndex((n) => n.index === op.node)))} (clock)`, 'BOOL');
+      const snap = move(-1, op.src, { pin: 'OUT', type: 'BOOL', dst: held });
+      if (!snap) continue;
+      s.calls.splice(t.at, 0, snap);
+      s.expr[t.expr] = { ...op, src: held };
+    }
+    return [...s.calls, ...s.expr];
+  };
+  /** Runs `f` as a statement of its own and writes its operations to the sink. */
+  const asStatement = (f: () => void): void => {
+    stmt = statement();
+    f();
+    sink.push(...close(stmt));
+  };
+
+  /** A |P| |N| contact drives the net through contacts and coils (not through a block): traced once per branch. */
+  const edgeMemo = new Map<number, boolean>();
+  const edgeUpstream = (net: number): boolean => {
+    const known = edgeMemo.get(net);
+    if (known !== undefined) return known;
+    edgeMemo.set(net, false);
+    const n = g.nets[net]!;
+    let found = false;
+    for (const s of n.sources) {
+      const node = g.nodes[s.node]!;
+      const el = node.el;
+      if (isBlock(node) || (el.kind !== 'contact' && el.kind !== 'coil')) continue;
+      if (el.kind === 'contact' && (el.contact === 'P' || el.contact === 'N')) found = true;
+      else if (node.inputs[0] && edgeUpstream(node.inputs[0].net)) found = true;
+    }
+    for (const b of n.feeds) if (edgeUpstream(g.bridges[b]!.from)) found = true;
+    edgeMemo.set(net, found);
+    return found;
+  };
+
   const bind = (net: number, id: number): number => {
     trace.set(net, id);
     latestNet.set(net, id);
@@ -88,7 +176,9 @@ export function startGenerated(
   /** The local holding a net's value in the current reading, generating what it needs. */
   const value = (net: number): number => {
     const hit = trace.get(net);
-    if (hit !== undefined) return hit;
+    // Plain contacts read twice in one statement read the same value: traced once. An edge
+    // contact's part is traced again on every branch (an R_TRIG/F_TRIG per branch).
+    if (hit !== undefined && !edgeUpstream(net)) return hit;
     const n = g.nets[net]!;
     if (n.leftRail) {
       const saved = nets.overlay;
@@ -105,7 +195,8 @@ export function startGenerated(
     // One-way bridges (graph.ts): the nets bridged in are more terms of the OR.
     for (const b of n.feeds) {
       const { from, via } = g.bridges[b]!;
-      sink.push({ op: 'pass', node: via, inNet: value(from), outNet: join });
+      const inNet = value(from);
+      stmt.expr.push({ op: 'pass', node: via, inNet, outNet: join });
     }
     return join;
   };
@@ -115,7 +206,7 @@ export function startGenerated(
     const node = g.nodes[s.node]!;
     const el = node.el;
     const pass = (inNet: number) => {
-      if (join !== undefined) sink.push({ op: 'pass', node: node.index, inNet, outNet: join });
+      if (join !== undefined) stmt.expr.push({ op: 'pass', node: node.index, inNet, outNet: join });
       return inNet;
     };
     if (isBlock(node)) {
@@ -124,13 +215,16 @@ export function startGenerated(
     }
     if (el.kind === 'coil') return pass(node.inputs[0] ? value(node.inputs[0].net) : nets.fresh());
     if (el.kind !== 'contact') return nets.fresh();
+    // ExtractModifier before GeneratePaths: an edge contact's trigger is written before its upstream part.
+    const trigger = stmt.calls.length;
     const inNet = value(node.inputs[0]!.net);
     const outNet = join ?? nets.fresh();
     const ownNet = join !== undefined ? nets.fresh() : undefined;
     const k = readings.get(s.node) ?? 0;
     readings.set(s.node, k + 1);
     const edge = el.contact === 'P' || el.contact === 'N' ? edgeOf(ctx, el, index, r, k) : undefined;
-    sink.push(contactOp(node.index, el.contact, operands.get(s.node), inNet, outNet, ownNet, edge));
+    stmt.expr.push(contactOp(node.index, el.contact, operands.get(s.node), inNet, outNet, ownNet, edge));
+    if (edge !== undefined) stmt.triggers.push({ at: trigger, expr: stmt.expr.length - 1 });
     latest.set(s.node, [inNet, ownNet ?? outNet]);
     return ownNet ?? outNet;
   };
@@ -146,33 +240,80 @@ export function startGenerated(
     return id;
   };
 
-  /** A block, once: its inputs traced now (each input a reading of its own), then the call. */
+  /**
+   * The variables written beside a block's outputs leave its operation: each is a statement of its
+   * own at its turn, reading the FB instance's output there (`X := T1.Q`) or, for a function's
+   * results and ENO, a variable the call writes (`X := _TMP_ADD3_OUT`). When the block's EN is
+   * wired, the generator guards it (GetUsedEno): `IF _TMP_ADD3_ENO THEN X := _TMP_ADD3_OUT; END_IF;`.
+   */
+  const detachWrites = (ni: number, op: Op): Op => {
+    const node = g.nodes[ni]!;
+    const el = node.el;
+    const writes = new Map<string, Op>();
+    blockWrites.set(ni, writes);
+    const guarded = node.inputs.some((t) => t.pin === 'EN' && wiredIn(t.net));
+    const held = (o: OutIR) => hiddenVar(`${describeElement(el)}.${o.pin}`, o.type);
+    // ENO first: the variable holding it guards the other writes.
+    const eno0 = 'eno' in op ? op.eno : undefined;
+    const enoHeld = eno0 && (eno0.dst || guarded) ? held(eno0) : undefined;
+    const later = (o: OutIR, instanceOut: Access | undefined): OutIR => {
+      const from = o.pin === 'ENO' ? enoHeld : instanceOut;
+      if (!o.dst) return o.pin === 'ENO' && from ? { ...o, dst: from } : o;
+      const { dst, ...kept } = o;
+      const src = from ?? held(o);
+      const write = move(node.index, src, { pin: o.pin, type: o.type, dst }, guarded ? enoHeld : undefined);
+      if (!write) return o;
+      writes.set(o.pin.toUpperCase(), write);
+      return from === instanceOut && instanceOut ? kept : { ...kept, dst: src };
+    };
+    switch (op.op) {
+      case 'fb': {
+        const fb = ctx.symbols.fbs[op.fb]!;
+        const outs = op.outs.map((o) => later(o, { kind: 'pin', fb, pin: o.pin, type: o.type, dir: 'out' }));
+        return { ...op, outs, ...(op.eno ? { eno: later(op.eno, undefined) } : {}) };
+      }
+      case 'function':
+        return { ...op, out: later(op.out, undefined), eno: later(op.eno, undefined) };
+      case 'call': {
+        const outs = op.outs.map((o) => ({ ...o, out: later(o.out, op.kind === 'fb' ? o.src : undefined) }));
+        return { ...op, outs, ...(op.eno ? { eno: later(op.eno, undefined) } : {}) };
+      }
+      default:
+        return op;
+    }
+  };
+
+  /** A block, once: its inputs traced now, each in pin order (its calls, then its expression), then the call. */
   const generateBlock = (ni: number): void => {
     if (computed.has(ni)) return;
     computed.add(ni);
     const node = g.nodes[ni]!;
+    const outer = stmt;
     const savedTrace = trace;
     const savedOverlay = nets.overlay;
+    stmt = statement();
     trace = new Map();
+    let call: Op | undefined;
     try {
-      // Blocks feeding its inputs (value lines too) run first.
-      for (const t of node.inputs)
-        if (wiredIn(t.net))
-          for (const s of upstream(g, t.net).sources) if (isBlock(g.nodes[s.node]!)) generateBlock(s.node);
       if (node.el.kind === 'contact') {
         // The inverting contact: a NOT block. Unconnected, the generator cancels it (its output stays FALSE).
         const t = node.inputs[0]!;
         const out = outLocal(ni, node.outputs[0]!);
         if (!wiredIn(t.net)) return void cancelled(node.el, 'NOT');
         const inNet = value(t.net);
-        sink.push({ op: 'contact', node: node.index, contact: 'NOT', inNet, outNet: out });
+        call = { op: 'contact', node: node.index, contact: 'NOT', inNet, outNet: out };
         latest.set(ni, [inNet, out]);
         return;
       }
       const el = node.el as BoxElement;
       const layout = node.layout;
-      for (const t of node.inputs)
-        if (wiredIn(t.net) && !nets.data.has(t.net) && !nets.dataPending.has(t.net)) value(t.net);
+      for (const t of node.inputs) {
+        if (!wiredIn(t.net)) continue;
+        // A value line: the block feeding it runs first. A power line: traced now.
+        if (nets.data.has(t.net) || nets.dataPending.has(t.net)) {
+          for (const s of upstream(g, t.net).sources) if (isBlock(g.nodes[s.node]!)) generateBlock(s.node);
+        } else value(t.net);
+      }
       for (const t of node.outputs) {
         const type = layout?.outputs.find((p) => p.name === t.pin)?.type;
         if (type === undefined || type === 'BOOL' || !isElementaryType(type)) trace.set(t.net, outLocal(ni, t));
@@ -185,7 +326,7 @@ export function startGenerated(
         (t) => t.pin !== 'EN' && (wiredIn(t.net) || Object.entries(el.inputs).some(([k, v]) => k.toUpperCase() === t.pin.toUpperCase() && v.trim() !== '')),
       );
       if (fn && !connected && node.inputs.some((t) => t.pin !== 'EN')) cancelled(el, el.blockType.trim());
-      else if (op) sink.push(op);
+      else if (op) call = detachWrites(ni, op);
       const pIn = layout?.inputs.find((p) => p.type === 'BOOL')?.name;
       const pOut = layout?.outputs.find((p) => p.type === 'BOOL')?.name;
       const tIn = node.inputs.find((t) => t.pin === pIn);
@@ -194,8 +335,12 @@ export function startGenerated(
         pOut !== undefined ? (blockOut.get(ni)?.get(pOut) ?? -1) : -1,
       ]);
     } finally {
+      const own = stmt;
       trace = savedTrace;
       nets.overlay = savedOverlay;
+      stmt = outer;
+      // The whole call (what its inputs call, their expressions, the call) is one call of the outer statement.
+      outer.calls.push(...close(own), ...(call ? [call] : []));
     }
   };
 
@@ -215,9 +360,17 @@ export function startGenerated(
     // LD-R03: a coil fed by nothing is not executed (no assignment is generated).
     if (!node.inputs[0] || !nets.isFed(node.inputs[0].net)) return;
     trace = new Map();
-    const inNet = value(node.inputs[0].net);
+    let inNet = -1;
+    asStatement(() => (inNet = value(node.inputs[0]!.net)));
     latest.set(ni, [inNet, inNet]);
     if (dst) sink.push({ op: 'coil', node: node.index, coil: el.coil, dst, inNet, outNet: inNet, ...(edge !== undefined ? { edge } : {}) });
+  };
+
+  /** An output variable's turn: `X := <the block's output>`, the block called first if no statement needed it yet. */
+  const generateOutVariable = (ni: number, pin: string): void => {
+    asStatement(() => generateBlock(ni));
+    const write = blockWrites.get(ni)?.get(pin.toUpperCase());
+    if (write) sink.push(write);
   };
 
   // Coils and block outputs written to variables (outVariables), by position.
@@ -229,7 +382,7 @@ export function startGenerated(
       for (const pin of node.layout.outputs) {
         const operand = Object.entries(el.outputs).find(([k]) => k.toUpperCase() === pin.name.toUpperCase())?.[1];
         if (operand?.trim())
-          turns.push({ row: el.row + pin.rowOffset, col: el.col + node.layout.cols, run: () => generateBlock(ni) });
+          turns.push({ row: el.row + pin.rowOffset, col: el.col + node.layout.cols, run: () => generateOutVariable(ni, pin.name) });
       }
   });
   turns.sort(byPosition);
@@ -243,7 +396,7 @@ export function startGenerated(
         .map((_, ni) => ni)
         .filter((ni) => isBlock(g.nodes[ni]!) && !computed.has(ni))
         .sort((a, b) => byPosition(at(g, a), at(g, b)))
-        .forEach(generateBlock);
+        .forEach((ni) => asStatement(() => generateBlock(ni)));
       if (r.errors > errorsBefore) return undefined;
       const netOf = (net: number) => (net >= 0 ? (latestNet.get(net) ?? -1) : -1);
       const elementNets = network.elements.map((el, i): Pair => {
