@@ -256,85 +256,149 @@ describe('openplc: the export review of a project the simulator already runs tha
   });
 });
 
-// A reference of the generator's ST for networks of contacts, inverting contacts and coils: each
-// coil in drawing order computes `coil := <its path>`, its path read from the variables as they are
-// at that moment; a |P| |N| contact has a memory per reading (R_TRIGn); an inverting contact is a
-// NOT block, computed once per scan when a coil first needs it.
-function generatorScan(networks: readonly Network[], state: Map<string, boolean>, memory: Map<string, boolean>): void {
-  networks.forEach((network, ni) => {
+// A reference of the generator's ST (PLCGenerator.py) for networks of contacts, inverting contacts,
+// SR boxes and coils, written as the generator writes it: a list of statements built once, run in
+// order every scan. Each coil and each variable beside a block output, by position, gets a
+// statement; GeneratePaths walks its path from the coil back to the rail (a join's branches top
+// first, a branch that splits and joins again once per branch), writing before the statement an
+// R_TRIG/F_TRIG call for each edge contact it meets (before going further upstream) and a call for
+// each block not called yet (its inputs traced the same way first); the statement's expression reads
+// the plain contacts when it runs. Blocks no statement needs are called after every coil of the POU.
+type Expr = () => boolean;
+function generatorProgram(networks: readonly Network[], state: Map<string, boolean>): () => void {
+  const program: (() => void)[] = [];
+  const read = (name: string) => state.get(name.toUpperCase()) ?? false;
+  const trigger = (falling: boolean) => {
+    let mem = false;
+    let q = false;
+    return { call: (clk: boolean) => ((q = (falling ? !clk : clk) && !mem), (mem = falling ? !clk : clk)), q: () => q };
+  };
+  const lateBlocks: (() => void)[] = [];
+  networks.forEach((network) => {
     const g = buildGraph(network);
-    const notOut = new Map<number, boolean>();
-    const readings = new Map<number, number>();
-    const read = (name: string) => state.get(name.toUpperCase()) ?? false;
-    const net = (id: number, memo: Map<number, boolean>): boolean => {
-      const known = memo.get(id);
-      if (known !== undefined) return known;
-      const n = g.nets[id]!;
-      let v = n.leftRail;
-      if (!v) for (const s of n.sources) v = source(s.node, memo) || v; // every source is read
+    const outputs = new Map<number, Expr>(); // ComputedBlocks: a block's output, read when an expression runs
+    const byPosition = (a: { node: number }, b: { node: number }) => {
+      const x = g.nodes[a.node]!.el;
+      const y = g.nodes[b.node]!.el;
+      return x.row - y.row || x.col - y.col;
+    };
+    const fed = (net: number) => upstream(g, net).fed;
+    const paths = (net: number): Expr => {
+      const n = g.nets[net]!;
+      if (n.leftRail) return () => true;
+      const terms = [...n.sources].sort(byPosition).map(source);
       // A one-way bridge (a fan-out into two different ORs) is one more term of the OR.
-      if (!v) for (const b of n.feeds) v = net(g.bridges[b]!.from, memo) || v;
-      memo.set(id, v);
-      return v;
+      for (const b of n.feeds) terms.push(paths(g.bridges[b]!.from));
+      return () => terms.map((t) => t()).some(Boolean);
     };
-    const source = (i: number, memo: Map<number, boolean>): boolean => {
-      const node = g.nodes[i]!;
+    const source = (s: { node: number }): Expr => {
+      const node = g.nodes[s.node]!;
       const el = node.el;
-      if (el.kind === 'coil') return net(node.inputs[0]!.net, memo);
-      if (el.kind !== 'contact') return false;
-      if (el.contact === 'NOT') {
-        if (!notOut.has(i)) notOut.set(i, !net(node.inputs[0]!.net, new Map()));
-        return notOut.get(i)!;
+      if (el.kind === 'box' || (el.kind === 'contact' && el.contact === 'NOT')) return block(s.node);
+      if (el.kind === 'coil') return paths(node.inputs[0]!.net);
+      if (el.kind !== 'contact') return () => false;
+      let own: Expr = () => read(el.variable);
+      if (el.contact === 'NC') own = () => !read(el.variable);
+      if (el.contact === 'P' || el.contact === 'N') {
+        const t = trigger(el.contact === 'N');
+        program.push(() => t.call(read(el.variable))); // R_TRIGn(CLK := v);
+        own = t.q;
       }
-      const power = net(node.inputs[0]!.net, memo);
-      const x = read(el.variable);
-      if (el.contact === 'NO') return power && x;
-      if (el.contact === 'NC') return power && !x;
-      const k = readings.get(i) ?? 0;
-      readings.set(i, k + 1);
-      const key = `${ni}/${i}/${k}`;
-      const clk = el.contact === 'P' ? x : !x;
-      const q = clk && !(memory.get(key) ?? false);
-      memory.set(key, clk);
-      return power && q;
+      const up = paths(node.inputs[0]!.net);
+      return () => own() && up();
     };
-    const coils = g.nodes
-      .map((n, i) => ({ el: n.el, i }))
-      .filter((c) => c.el.kind === 'coil')
-      .sort((a, b) => a.el.row - b.el.row || a.el.col - b.el.col);
-    for (const { el, i } of coils) {
-      if (el.kind !== 'coil') continue;
-      const input = g.nodes[i]!.inputs[0]!.net;
-      if (!upstream(g, input).fed) continue;
-      const p = net(input, new Map());
-      const name = el.variable.toUpperCase();
-      const edge = (clk: boolean) => {
-        const q = clk && !(memory.get(`coil/${ni}/${i}`) ?? false);
-        memory.set(`coil/${ni}/${i}`, clk);
-        return q;
-      };
-      if (el.coil === 'COIL') state.set(name, p);
-      else if (el.coil === 'NEG') state.set(name, !p);
-      else if (el.coil === 'SET') { if (p) state.set(name, true); }
-      else if (el.coil === 'RESET') { if (p) state.set(name, false); }
-      else if (el.coil === 'P') state.set(name, edge(p));
-      else if (el.coil === 'N') state.set(name, edge(!p));
-    }
+    const block = (ni: number): Expr => {
+      const known = outputs.get(ni);
+      if (known) return known;
+      const node = g.nodes[ni]!;
+      const el = node.el;
+      if (el.kind === 'contact') {
+        // NOT: cancelled (FALSE) when its input is not connected.
+        let out = false;
+        outputs.set(ni, () => out);
+        const input = node.inputs[0]!.net;
+        if (fed(input)) {
+          const e = paths(input);
+          program.push(() => (out = !e()));
+        }
+        return () => out;
+      }
+      if (el.kind !== 'box') return () => false;
+      // SR: Q1 := S1 OR (NOT R AND Q1); an input with no wire takes the variable beside it, else keeps its value.
+      const q = `${el.instance}.Q1`;
+      outputs.set(ni, () => read(q));
+      const pins = ['S1', 'R'].map((pin) => {
+        const t = node.inputs.find((i) => i.pin === pin)!;
+        if (fed(t.net)) return paths(t.net);
+        const operand = el.inputs[pin];
+        return operand ? () => read(operand) : undefined;
+      });
+      const held = { s1: false, r: false };
+      program.push(() => {
+        held.s1 = pins[0] ? pins[0]() : held.s1;
+        held.r = pins[1] ? pins[1]() : held.r;
+        state.set(q.toUpperCase(), held.s1 || (!held.r && read(q)));
+      });
+      return () => read(q);
+    };
+    const turns: { row: number; col: number; run: () => void }[] = [];
+    g.nodes.forEach((node, i) => {
+      const el = node.el;
+      if (el.kind === 'box' && el.outputs.Q1)
+        turns.push({ row: el.row, col: el.col + 2, run: () => {
+          const q = block(i);
+          program.push(() => state.set(el.outputs.Q1!.toUpperCase(), q())); // X := L.Q1;
+        } });
+      if (el.kind !== 'coil') return;
+      turns.push({ row: el.row, col: el.col, run: () => {
+        const input = node.inputs[0]!.net;
+        if (!fed(input)) return;
+        const p = paths(input);
+        const name = el.variable.toUpperCase();
+        let mem = false;
+        const edge = (clk: boolean) => {
+          const q = clk && !mem;
+          mem = clk;
+          return q;
+        };
+        program.push(() => {
+          const v = p();
+          if (el.coil === 'COIL') state.set(name, v);
+          else if (el.coil === 'NEG') state.set(name, !v);
+          else if (el.coil === 'SET') { if (v) state.set(name, true); }
+          else if (el.coil === 'RESET') { if (v) state.set(name, false); }
+          else if (el.coil === 'P') state.set(name, edge(v));
+          else if (el.coil === 'N') state.set(name, edge(!v));
+        });
+      } });
+    });
+    turns.sort((a, b) => a.row - b.row || a.col - b.col).forEach((t) => t.run());
+    lateBlocks.push(() =>
+      g.nodes
+        .map((n, i) => ({ el: n.el, i }))
+        .filter(({ el }) => el.kind === 'box' || (el.kind === 'contact' && el.contact === 'NOT'))
+        .sort((a, b) => a.el.row - b.el.row || a.el.col - b.el.col)
+        .forEach(({ i }) => block(i)),
+    );
   });
+  for (const late of lateBlocks) late();
+  return () => program.forEach((statement) => statement());
 }
 
-describe('openplc: random networks of contacts and coils run as the generator writes them', () => {
+describe('openplc: random networks of contacts, SR blocks and coils run as the generator writes them', () => {
   const rng = (seed: number) => {
     let s = seed >>> 0;
     return () => ((s = (s * 1664525 + 1013904223) >>> 0) / 2 ** 32);
   };
   const INPUTS = ['A', 'B', 'C'];
   const WRITTEN = ['X', 'Y', 'Z'];
-  const randomNetwork = (r: () => number): Network => {
-    const pick = <T,>(xs: readonly T[]) => xs[Math.floor(r() * xs.length)]!;
+  const LATCHES = ['L0', 'L1', 'L2'];
+  const COILS = ['(X)', '(Y)', '(Z)', '(/X)', '(S:Y)', '(R:Y)', '(S:Z)', '(R:X)', '(P:Z)', '(N:X)'];
+  const randomNetwork = (r: () => number, l: () => number, index: number): Network => {
+    const pick = <T,>(xs: readonly T[], from = r) => xs[Math.floor(from() * xs.length)]!;
+    const lines: string[] = [];
     const rows = 1 + Math.floor(r() * 3);
     const cols = 1 + Math.floor(r() * 3);
-    const lines: string[] = [];
     for (let row = 0; row < rows; row++) {
       const tokens = ['+'];
       for (let col = 0; col < cols; col++) {
@@ -343,27 +407,50 @@ describe('openplc: random networks of contacts and coils run as the generator wr
         if (col < cols - 1 && r() < 0.3) tokens.push('+');
       }
       if (r() < 0.7) tokens.push('+');
-      tokens.push(pick(['(X)', '(Y)', '(Z)', '(/X)', '(S:Y)', '(R:Y)', '(S:Z)', '(R:X)', '(P:Z)', '(N:X)']));
+      tokens.push(pick(COILS));
       lines.push(tokens.join(' '));
     }
-    return ladder(lines);
+    if (l() >= 0.7) return ladder(lines);
+    // An SR latch below (its own random stream): S1 from a contact, Q1 on to a contact and a coil
+    // (and maybe a variable), its output line joined to the rows above where they meet; R from a
+    // contact or a variable. Its contacts often read the latch itself.
+    const latch = LATCHES[index]!;
+    const cell = () => {
+      const v = l() < 0.3 ? `${latch}.Q1` : pick([...INPUTS, ...WRITTEN], l);
+      return pick([`[${v}]`, `[${v}]`, `[/${v}]`, `[P:${v}]`, `[N:${v}]`, '[NOT]'], l);
+    };
+    const row = lines.length;
+    const tokens = ['+', l() < 0.85 ? cell() : '-', '#', '#'];
+    if (l() < 0.5) tokens.push('+');
+    if (l() < 0.6) tokens.push(l() < 0.5 ? pick([`[P:${latch}.Q1]`, `[/${latch}.Q1]`], l) : cell());
+    if (l() < 0.4) tokens.push('+');
+    if (l() < 0.85) tokens.push(pick(COILS, l));
+    const wired = l() < 0.5;
+    lines.push(tokens.join(' '), `+ ${wired ? cell() : '.'} # #`);
+    const inputs: Record<string, string> = wired ? {} : { R: pick([...INPUTS, ...WRITTEN], l) };
+    const outputs: Record<string, string> = l() < 0.4 ? { Q1: pick(WRITTEN, l) } : {};
+    return ladder(lines, { boxes: [{ row, col: 1, type: 'SR', instance: latch, inputs, outputs }] });
   };
 
   test('every variable after every scan equals the reference, over 150 random programs', () => {
     let compared = 0;
     let differFromIec = 0;
+    let withLatch = 0;
     for (let seed = 1; seed <= 150; seed++) {
       const r = rng(seed);
-      const networks = Array.from({ length: 1 + Math.floor(r() * 3) }, () => randomNetwork(r));
-      const variables = vars(...[...INPUTS, ...WRITTEN].map((n) => `${n} BOOL`));
+      const l = rng(seed + 1000);
+      const networks = Array.from({ length: 1 + Math.floor(r() * 3) }, (_, i) => randomNetwork(r, l, i));
+      const variables = vars(...[...INPUTS, ...WRITTEN].map((n) => `${n} BOOL`), ...LATCHES.map((n) => `${n} SR`));
       const { program } = compileProgram(project(variables, networks, 'openplc'));
       if (!program) continue; // a random shape the rules refuse
+      if (networks.some((n) => n.elements.some((e) => e.kind === 'box'))) withLatch++;
       const iec = compileProgram(project(variables, networks, 'iec')).program!;
       const plc = createPlc(program, { cycleMs: 10 });
       const other = createPlc(iec, { cycleMs: 10 });
       const state = new Map<string, boolean>();
-      const memory = new Map<string, boolean>();
-      for (let scan = 0; scan < 10; scan++) {
+      const scan = generatorProgram(networks, state);
+      const names = [...INPUTS, ...WRITTEN, ...LATCHES.map((latch) => `${latch}.Q1`)];
+      for (let k = 0; k < 10; k++) {
         for (const n of INPUTS) {
           const v = r() < 0.5;
           plc.write(n, v);
@@ -372,14 +459,14 @@ describe('openplc: random networks of contacts and coils run as the generator wr
         }
         plc.scan();
         other.scan();
-        generatorScan(networks, state, memory);
-        const names = [...INPUTS, ...WRITTEN];
-        expect(names.map((n) => plc.read(n)), `seed ${seed} scan ${scan}: ${networks.map((n) => n.title ?? '').join(' | ')}`).toEqual(names.map((n) => state.get(n) ?? false));
+        scan();
+        expect(names.map((n) => plc.read(n)), `seed ${seed} scan ${k}`).toEqual(names.map((n) => state.get(n.toUpperCase()) ?? false));
         if (names.some((n) => other.read(n) !== plc.read(n))) differFromIec++;
         compared++;
       }
     }
     expect(compared).toBeGreaterThan(500);
+    expect(withLatch).toBeGreaterThan(100);
     // The programs are varied enough that the two profiles often differ.
     expect(differFromIec).toBeGreaterThan(20);
   });
