@@ -23,6 +23,8 @@
 //   finished by pou.ts once all networks are started);
 // - a function with no input connected is not called (LD-W22); jumps and RETURNs are never
 //   generated: they do nothing (LD-W20, LD-W21).
+// What still differs (a join's branch order, connectors computed once, executionOrderId) is listed
+// in LD-SEMANTICS.md section 6.
 import type { BoxElement } from '../../model/elements';
 import type { Network } from '../../model/project';
 import { isElementaryType, type ElementaryType } from '../../model/iecTypes';
@@ -131,8 +133,9 @@ export function startGenerated(
     for (const t of moved.sort((a, b) => b.at - a.at)) {
       const op = s.expr[t.expr]!;
       if (op.op !== 'contact' || !op.src) continue;
-      // R_TRIGn(CLK := V) stands before calls that may write V: V is read there.
-      const held = hiddenVar(`${describeElement(at(g, g.nodes.findIndex((n) => n.index === op.node)))} (clock)`, 'BOOL');
+      // R_TRIGn(CLK := V) stands before calls that may write V: V is read there (and shown by its name).
+      const contact = network.elements[op.node];
+      const held = hiddenVar(contact?.kind === 'contact' ? contact.variable.trim() : 'CLK', 'BOOL');
       const snap = move(-1, op.src, { pin: 'OUT', type: 'BOOL', dst: held });
       if (!snap) continue;
       s.calls.splice(t.at, 0, snap);
