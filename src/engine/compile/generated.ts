@@ -254,7 +254,9 @@ export function startGenerated(
     const el = node.el;
     const writes = new Map<string, Op>();
     blockWrites.set(ni, writes);
-    const guarded = node.inputs.some((t) => t.pin === 'EN' && wiredIn(t.net));
+    // EN connected: by a wire or by a variable beside it (an inVariable in PLCopen).
+    const enOperand = el.kind === 'box' && Object.entries(el.inputs).some(([k, v]) => k.toUpperCase() === 'EN' && v.trim() !== '');
+    const guarded = enOperand || node.inputs.some((t) => t.pin === 'EN' && wiredIn(t.net));
     const held = (o: OutIR) => hiddenVar(`${describeElement(el)}.${o.pin}`, o.type);
     // ENO first: the variable holding it guards the other writes.
     const eno0 = 'eno' in op ? op.eno : undefined;
