@@ -107,9 +107,9 @@ describe('one-way vertical links', () => {
     expect(differ).toBeGreaterThan(5);
   });
 
-  test('a line from an open contact to an OR bar is drawn dark while the OR is lit (a link shows its left side)', () => {
+  test.each<Profile>(['iec', 'openplc'])('a line from an open contact to an OR bar is drawn dark while the OR is lit (a link shows its left side; %s)', (profile) => {
     const net = ladder(['[A] - + (X)', '[B] - + .']);
-    const p = project(V, [net]);
+    const p = project(V, [net], profile);
     const { program } = compileProgram(p);
     const plc = createPlc(program!, { cycleMs: 10 });
     const linkOn = (row: number) => {

@@ -406,7 +406,10 @@ export function startGenerated(
       const netOf = (net: number) => (net >= 0 ? (latestNet.get(net) ?? -1) : -1);
       const elementNets = network.elements.map((el, i): Pair => {
         if (el.kind === 'link' || el.kind === 'connector' || el.kind === 'continuation') {
-          const net = netOf(g.linkNet[i]!);
+          // A line from one contact to an OR shows that contact's own (latest) result.
+          const own = g.linkSource[i]!;
+          const mine = own >= 0 ? (latest.get(own)?.[1] ?? -1) : -1;
+          const net = mine >= 0 ? mine : netOf(g.linkNet[i]!);
           return [net, net];
         }
         const ni = g.nodes.findIndex((n) => n.index === i);
