@@ -112,7 +112,8 @@ export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): 
     // LD-R01: a line fed by nothing on its left that joins, further right, a line that is fed:
     // drawn as if power came back to it from the right, which a one-way vertical link never does.
     if (!hasSource && (net.sinks.length || net.rightRail) && fedOnItsRight(g, net)) {
-      const via = network.elements[g.bridges[net.feedsOut[0]!]!.via]!;
+      const bridge = net.feedsOut[0] ?? net.feeds[0];
+      const via = bridge !== undefined ? network.elements[g.bridges[bridge]!.via]! : { row: Math.floor(net.points[0]! / (g.cols + 1)) };
       for (const s of net.sinks)
         r.error(
           'LD-R01',
