@@ -64,6 +64,21 @@ export interface BoxElement extends Placed {
   readonly inputCount?: number;
   readonly inputs: Readonly<Record<string, string>>;
   readonly outputs: Readonly<Record<string, string>>;
+  /**
+   * PLCopen `executionOrderId` of the block (kept from an imported file, written back on export;
+   * absent or 0: none). Under the openplc profile a box with one runs before every coil of its POU
+   * body, in id order (LD-SEMANTICS.md section 6); the iec profile ignores it.
+   */
+  readonly executionOrder?: number;
+  /** `executionOrderId` of the variable written beside each output pin (a PLCopen outVariable), by pin. */
+  readonly outputOrders?: Readonly<Record<string, number>>;
+}
+
+/** The element without its PLCopen execution order (a pasted copy must not jump the queue). */
+export function withoutExecutionOrder<T extends LdElement>(el: T): T {
+  if (el.kind !== 'box' || (el.executionOrder === undefined && el.outputOrders === undefined)) return el;
+  const { executionOrder: _e, outputOrders: _o, ...rest } = el;
+  return rest as T;
 }
 
 /**

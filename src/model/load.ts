@@ -16,6 +16,8 @@ const element = z.discriminatedUnion('kind', [
   z.object({ ...placed, kind: z.literal('coil'), coil: z.enum(COIL_TYPES), variable: z.string() }).strict(),
   z.object({ ...placed, kind: z.literal('jump'), target: z.string() }).strict(),
   z.object({ ...placed, kind: z.literal('return') }).strict(),
+  z.object({ ...placed, kind: z.literal('connector'), name: z.string() }).strict(),
+  z.object({ ...placed, kind: z.literal('continuation'), name: z.string() }).strict(),
   z
     .object({
       ...placed,
@@ -26,6 +28,8 @@ const element = z.discriminatedUnion('kind', [
       inputCount: int.min(1).max(64).optional(),
       inputs: z.record(z.string(), z.string()),
       outputs: z.record(z.string(), z.string()),
+      executionOrder: nonNeg.optional(),
+      outputOrders: z.record(z.string(), nonNeg).optional(),
     })
     .strict(),
 ]);

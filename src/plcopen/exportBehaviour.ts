@@ -5,8 +5,9 @@
 // - ProgramGenerator/PouProgramGenerator.ComputeProgram, for an LD or FBD body, generates only
 //   coils, outVariables/inOutVariables, blocks and connectors. `jump`, `label` and `return`
 //   objects are never looked at: they are dropped without a message (LD-X01, LD-X02).
-// - ComputeProgram orders them: objects with an executionOrderId first (Rungsmith writes none),
-//   then every coil and outVariable of the body sorted by position (SortInstances: top to bottom,
+// - ComputeProgram orders them: blocks and outVariables with an executionOrderId first (Rungsmith
+//   writes back those an imported file had, BoxElement.executionOrder/outputOrders; such a block is
+//   never late, so LD-X03 skips it), then every coil and outVariable of the body sorted by position (SortInstances: top to bottom,
 //   left to right), then the blocks no coil or outVariable needed, then connectors. A block is
 //   generated (GenerateBlock, once per block: ComputedBlocks) when the first coil or outVariable
 //   whose path reaches it is generated. A function block whose outputs reach only the right rail
@@ -318,7 +319,7 @@ function ordering(project: Project, pou: Pou, views: readonly NetView[], library
           });
         continue;
       }
-      if (!el.instance || pulled.has(bi)) continue;
+      if (!el.instance || pulled.has(bi) || el.executionOrder) continue;
       const inst = up(el.instance);
       // Readers of the instance's outputs that run after the call here (before the end of the scan there).
       const readersAfter: number[] = [];

@@ -61,14 +61,14 @@ export function writeBox(
   const width = 2 * CELL_W - 2 * BOX_MARGIN_X;
   // Operands: literals and variables beside unwired pins become in/outVariables joined to the pin.
   const operandIn = new Map<string, number>();
-  const operandOut: { pin: string; id: number; text: string }[] = [];
+  const operandOut: { pin: string; id: number; text: string; order?: number }[] = [];
   for (const i of bp.inputs) {
     const text = el.inputs[i.name];
     if (text !== undefined && text !== '' && !srcOf(i.name)) operandIn.set(i.name, ids.next());
   }
   for (const o of bp.outputs) {
     const text = el.outputs[o.name];
-    if (text !== undefined && text !== '') operandOut.push({ pin: o.name, id: ids.next(), text });
+    if (text !== undefined && text !== '') operandOut.push({ pin: o.name, id: ids.next(), text, order: el.outputOrders?.[o.name] });
   }
   w.open(
     'block',
@@ -78,6 +78,7 @@ export function writeBox(
       height: bp.rows * ROW_H - 2 * BOX_MARGIN_Y,
       typeName: el.blockType,
       instanceName: el.instance || undefined,
+      executionOrderId: el.executionOrder || undefined,
     },
     () => {
       w.empty('position', { x: origin.x, y: origin.y });
@@ -129,7 +130,7 @@ export function writeBox(
     const at = outs.get(o.pin)!;
     const vw = Math.max(30, o.text.length * 7);
     const vo = pt(at.x + 10, at.y - 10);
-    w.open('outVariable', { localId: o.id, height: 20, width: vw, negated: 'false' }, () => {
+    w.open('outVariable', { localId: o.id, height: 20, width: vw, negated: 'false', executionOrderId: o.order || undefined }, () => {
       w.empty('position', { x: vo.x, y: vo.y });
       w.line(() =>
         w.open('connectionPointIn', undefined, () => {

@@ -401,6 +401,8 @@ export function elementFor(n: GNode, id: ElementId, r: number, c: number): LdEle
         ...(n.executionControl ? { executionControl: true } : {}),
         inputs: { ...n.operandsIn },
         outputs: { ...n.operandsOut },
+        ...(n.executionOrder ? { executionOrder: n.executionOrder } : {}),
+        ...(n.outputOrders ? { outputOrders: { ...n.outputOrders } } : {}),
       };
   }
 }

@@ -42,6 +42,10 @@ export interface GNode {
   readonly x: number;
   readonly y: number;
   readonly order: number;
+  /** A block's PLCopen executionOrderId (> 0 only; kept on the box, see BoxElement.executionOrder). */
+  executionOrder?: number;
+  /** executionOrderId (> 0) of the outVariable written beside each output pin, by model pin name. */
+  outputOrders?: Record<string, number>;
   feedsRightRail: boolean;
   /** Raw `<data>` elements of the object's addData kept for the round trip. */
   data?: string[];
@@ -127,6 +131,8 @@ export function buildLdGraph(
       order,
       feedsRightRail: false,
     };
+    // A block's (or, for a MOVE drawn for an outVariable, the variable's) execution order.
+    if (kind === 'box' && obj.executionOrderId > 0) n.executionOrder = obj.executionOrderId;
     nodes.push(n);
     nodeOf.set(obj, n);
     return n;
@@ -390,6 +396,7 @@ export function buildLdGraph(
       const p = boxPin(single.obj, single.pin ?? 'OUT');
       if (n.operandsOut[p] === undefined) {
         n.operandsOut[p] = o.text;
+        if (o.executionOrderId > 0) (n.outputOrders ??= {})[p] = o.executionOrderId;
         continue;
       }
       if (library.signature(single.obj.text)) {

@@ -16,7 +16,7 @@
 // further right, and the rail feeds each such box's power-flow input only.
 import { boxLayout, type BoxLayout, type PlacedPin } from '../model/boxLayout';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../model/library';
-import type { LdElement, VLink } from '../model/elements';
+import { withoutExecutionOrder, type LdElement, type VLink } from '../model/elements';
 import { elementCells, elementSize } from '../model/factory';
 import { cellKey, type Cell } from '../model/grid';
 import { renamePastedConnectors, withDefaultName } from './connectors';
@@ -423,7 +423,8 @@ export function pasteElements(
   const row = fits(at.row) ? at.row : below;
   const pasted = renamePastedConnectors(
     n,
-    clip.elements.map((e) => ({ ...e, id: newId(), row: e.row + row, col: e.col + col })),
+    // A pasted copy keeps no PLCopen execution order: it must not jump the openplc queue.
+    clip.elements.map((e) => ({ ...withoutExecutionOrder(e), id: newId(), row: e.row + row, col: e.col + col })),
   );
   const occ = occupancy(n, undefined, lib);
   const replaced = new Set<ElementId>();

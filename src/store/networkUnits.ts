@@ -7,7 +7,7 @@
 // declares the next free name (`Timer1` -> `Timer2`), declared with the copied declaration.
 // Labels stay unique in the target POU (renamed the same way), and a pasted jump to a label that
 // came along follows the rename; a jump to a label that did not come along keeps its text.
-import type { LdElement } from '../model/elements';
+import { withoutExecutionOrder, type LdElement } from '../model/elements';
 import { newNetwork, newProject } from '../model/factory';
 import { newId, type ElementId, type NetworkId } from '../model/ids';
 import { validateProject } from '../model/load';
@@ -153,7 +153,8 @@ export function preparePaste(project: Project, pou: Pou, clip: NetworkClip, mode
 
   const networks = clip.networks.map((n): Network => {
     const elements = n.elements.map((el) => {
-      let out: LdElement = { ...el, id: newId<'ElementId'>('e') as ElementId };
+      // A pasted copy keeps no PLCopen execution order: it must not jump the openplc queue.
+      let out: LdElement = { ...withoutExecutionOrder(el), id: newId<'ElementId'>('e') as ElementId };
       for (const [from, to] of instances) out = renameInElement(out, from, to);
       if (out.kind === 'jump') {
         const to = labels.get(upper(out.target));

@@ -32,6 +32,15 @@ export function BoxInspector({ box }: { box: BoxElement }) {
   return (
     <>
       <p className="rs-inspector-where">{signature.description}</p>
+      {box.executionOrder ? (
+        <p
+          className="rs-inspector-where"
+          data-testid="box-execution-order"
+          title="PLCopen executionOrderId from the imported file: under the openplc profile this block runs before every coil of the POU, in this order"
+        >
+          Execution order {box.executionOrder} (from the imported file)
+        </p>
+      ) : null}
       {callee && (
         <button
           type="button"
