@@ -74,6 +74,17 @@ export interface BoxElement extends Placed {
   readonly outputOrders?: Readonly<Record<string, number>>;
 }
 
+/**
+ * The PLCopen executionOrderId of a box (0: none), or with `pin`, of the variable written beside
+ * that output pin (pin names compared without case).
+ */
+export function executionOrderOf(el: LdElement, pin?: string): number {
+  if (el.kind !== 'box') return 0;
+  if (pin === undefined) return el.executionOrder ?? 0;
+  const key = Object.keys(el.outputOrders ?? {}).find((k) => k.toUpperCase() === pin.toUpperCase());
+  return key === undefined ? 0 : (el.outputOrders![key] ?? 0);
+}
+
 /** The element without its PLCopen execution order (a pasted copy must not jump the queue). */
 export function withoutExecutionOrder<T extends LdElement>(el: T): T {
   if (el.kind !== 'box' || (el.executionOrder === undefined && el.outputOrders === undefined)) return el;

@@ -26,6 +26,9 @@ export interface BoxSpec {
   readonly inputs?: Record<string, string>;
   readonly outputs?: Record<string, string>;
   readonly inputCount?: number;
+  /** PLCopen executionOrderId of the box, and of the variables beside its outputs (by pin). */
+  readonly executionOrder?: number;
+  readonly outputOrders?: Record<string, number>;
 }
 
 export interface LadderOptions {
@@ -107,6 +110,8 @@ export function ladder(rows: readonly string[], opts: LadderOptions = {}): Netwo
       ...(b.inputCount ? { inputCount: b.inputCount } : {}),
       inputs: b.inputs ?? {},
       outputs: b.outputs ?? {},
+      ...(b.executionOrder ? { executionOrder: b.executionOrder } : {}),
+      ...(b.outputOrders ? { outputOrders: b.outputOrders } : {}),
     });
     width = Math.max(width, b.col + 2);
   }

@@ -443,11 +443,13 @@ export function lowerOutput(
     );
   let data: { store: ReturnType<typeof storeOf>; slot: number } | undefined;
   let source: Source;
-  if (fbPin) source = { from: 'access', access: fbPin };
+  // openplc: a slot a block with an executionOrderId already reads (generated.ts): written here too.
+  const held = nets.heldData.get(o.net);
+  if (fbPin && !held) source = { from: 'access', access: fbPin };
   else {
     const store = storeOf(type);
-    data = { store, slot: ctx.symbols.counts[store]++ };
-    ctx.dataSlots.push({ ...data, type });
+    data = held && held.store === store ? held : { store, slot: ctx.symbols.counts[store]++ };
+    if (data !== held) ctx.dataSlots.push({ ...data, type });
     source = { from: 'data', ...data, type };
   }
   nets.data.set(o.net, source);

@@ -13,7 +13,7 @@ import type { ArgIR, NetworkIR, Op, OutIR, Source } from './ir';
 import { chartRanges } from '../sfc/ir';
 import { emitChart } from '../sfc/codegen';
 import { emitSt } from '../st/emit';
-import { singleWriterNets } from './nets';
+import { singleWriterNets, writtenNets } from './nets';
 import { isBigIntType } from '../values/types';
 import { storeOf, type Access, type Store } from './symbols';
 
@@ -21,32 +21,51 @@ import { storeOf, type Access, type Store } from './symbols';
 export const NETS_PER_WORD = 31;
 
 /**
- * openplc profile: the late blocks of each network (its `late` operations) are a dispatch entry of
- * their own, a *late unit*, numbered after the networks and the end marker: unit j has the plan
- * index `networks.length + 1 + j` and runs the late operations of network `owners[j]`, in the order
- * of the runners' `runLate` lists. A body's last network runs its units with one call
- * `X.late(first, end, now, scan)`. Written into that network's code instead, 1,000 late TONs made
+ * openplc profile: operations of a network that run elsewhere in its POU body, each group a dispatch
+ * entry of its own, a *unit*, numbered after the networks and the end marker (unit j has the plan
+ * index `networks.length + 1 + j`). A network's late blocks (its `late` operations) are one unit,
+ * run by the body's last network in the order of its `runLate` list; each early segment (`early`:
+ * an instance with an executionOrderId) is one unit, run by the body's first network before its
+ * own code in the order of its `runEarly` list. A runner runs its units with one call
+ * `X.late(first, end, now, scan)`. Written into the runner's code instead, 1,000 late TONs made
  * one switch case of 400 KB that V8 never optimised (bench/openplcOrder.bench.ts: 9x the iec scan).
  */
-export interface LateUnits {
-  readonly owners: readonly number[];
-  /** Plan index of the unit of each late network. */
-  readonly unitOf: ReadonlyMap<number, number>;
+export interface BodyUnits {
+  /** Each unit: the network whose nets it uses, its operations, and whether it is early. */
+  readonly units: readonly { readonly owner: number; readonly ops: readonly Op[]; readonly early: boolean }[];
+  /** Plan indexes [first, end) of the units each runner runs: late (by last network), early (by first network). */
+  readonly late: ReadonlyMap<number, readonly [number, number]>;
+  readonly early: ReadonlyMap<number, readonly [number, number]>;
 }
 
-const lateCache = new WeakMap<readonly NetworkIR[], LateUnits>();
+const unitCache = new WeakMap<readonly NetworkIR[], BodyUnits>();
 
-export function lateUnits(networks: readonly NetworkIR[]): LateUnits {
-  let units = lateCache.get(networks);
-  if (!units) {
-    const owners = networks.flatMap((ir) => ir.runLate ?? []);
-    units = { owners, unitOf: new Map(owners.map((k, j) => [k, networks.length + 1 + j])) };
-    lateCache.set(networks, units);
+export function bodyUnits(networks: readonly NetworkIR[]): BodyUnits {
+  let found = unitCache.get(networks);
+  if (!found) {
+    const units: { owner: number; ops: readonly Op[]; early: boolean }[] = [];
+    const late = new Map<number, readonly [number, number]>();
+    const early = new Map<number, readonly [number, number]>();
+    const at = () => networks.length + 1 + units.length;
+    networks.forEach((ir, i) => {
+      if (ir.runEarly?.length) {
+        const first = at();
+        for (const [k, seg] of ir.runEarly) units.push({ owner: k, ops: networks[k]!.early![seg]!, early: true });
+        early.set(i, [first, at()]);
+      }
+      if (ir.runLate?.length) {
+        const first = at();
+        for (const k of ir.runLate) units.push({ owner: k, ops: networks[k]!.late ?? [], early: false });
+        late.set(i, [first, at()]);
+      }
+    });
+    found = { units, late, early };
+    unitCache.set(networks, found);
   }
-  return units;
+  return found;
 }
 
-/** The statement running late units [first, end) (rewritten to `yield* X.stepLate(` for stepping). */
+/** The statement running units [first, end) (rewritten to `yield* X.stepLate(` for stepping). */
 export const LATE_TEXT = 'X.late(';
 export const STEP_LATE_TEXT = 'yield* X.stepLate(';
 
@@ -100,13 +119,10 @@ export class ProgramConstants {
     readonly program?: { readonly networks: readonly NetworkIR[]; readonly words: ArrayLike<number> },
     readonly inlineCalls = true,
   ) {}
-  /**
-   * openplc profile: the plan index of each late network's unit (its `late` operations as one
-   * dispatch entry, see lateUnits), by late network.
-   */
-  lateUnit(k: number): number {
-    const u = lateUnits(this.program!.networks).unitOf.get(k);
-    if (u === undefined) throw new Error(`network ${k + 1} has no late blocks`);
+  /** openplc profile: the plan indexes [first, end) of the late or early units network `i` runs (see bodyUnits). */
+  units(i: number, kind: 'late' | 'early'): readonly [number, number] {
+    const u = bodyUnits(this.program!.networks)[kind].get(i);
+    if (u === undefined) throw new Error(`network ${i + 1} runs no ${kind} units`);
     return u;
   }
   /** True when the body [first, end) is written in place of its calls. */
@@ -161,7 +177,7 @@ function straightOps(networks: readonly NetworkIR[], first: number, end: number)
   let ops = 0;
   const visit = (a: number, b: number): boolean => {
     for (let i = a; i < b; i++)
-      // The late blocks a body's last network runs are not written in it (one `X.late` call, see lateUnits).
+      // The late blocks a body's last network runs are not written in it (one `X.late` call, see bodyUnits).
       for (const op of networks[i]!.ops) {
         if (op.op === 'jump' || op.op === 'return') return false;
         if (++ops > INLINE_OPS) return false;
@@ -372,23 +388,24 @@ export function generateNetwork(
 }
 
 /**
- * openplc profile: the code of the late unit of network `ir` (its blocks no coil needed, see
- * lateUnits), run at the end of its POU body. The network's nets are read back from its power
- * words (a late block may read a BOOL output computed by its coils), updated, and written back for
- * the power display.
+ * openplc profile: the code of a unit (see bodyUnits): operations of network `ir` run elsewhere in
+ * its POU body. The network's nets are read back from its power words (a late block may read a
+ * BOOL output computed by its coils; an early segment one computed by an earlier segment), updated,
+ * and written back for the power display. An early unit runs before the network's own code in the
+ * scan: the nets it writes start at 0, not at the previous scan's values.
  */
-export function generateLate(ir: NetworkIR, pc: ProgramConstants, firstWord: number): NetworkCode {
+export function generateUnit(ir: NetworkIR, ops: readonly Op[], early: boolean, pc: ProgramConstants, firstWord: number): NetworkCode {
   const em = new Emitter(pc, { kind: 'shared' });
-  const ops = ir.late ?? [];
   const L = em.lines;
   em.rails = new Set(ir.railNets);
   em.single = singleWriterNets(ir, ops);
   const live = Array.from({ length: ir.netCount }, (_, i) => i).filter((i) => !em.rails.has(i));
+  const fresh = early ? writtenNets(ops) : new Set<number>();
   for (let w = 0; w * NETS_PER_WORD < ir.netCount; w++) {
     const mine = live.filter((i) => Math.floor(i / NETS_PER_WORD) === w);
     if (!mine.length) continue;
     L.push(`const w${w} = W[${em.p(firstWord + w)}];`);
-    L.push(`let ${mine.map((i) => `n${i} = (w${w} >>> ${i % NETS_PER_WORD}) & 1`).join(', ')};`);
+    L.push(`let ${mine.map((i) => (fresh.has(i) ? `n${i} = 0` : `n${i} = (w${w} >>> ${i % NETS_PER_WORD}) & 1`)).join(', ')};`);
   }
   const { rails, single } = em;
   for (const op of ops) {
@@ -418,7 +435,15 @@ function emitNetwork(em: Emitter, ir: NetworkIR, firstWord: number, idx: string)
   em.rails = rails;
   em.single = single;
   const live = Array.from({ length: ir.netCount }, (_, i) => i).filter((i) => !rails.has(i));
-  if (live.length) L.push(`let ${live.map((i) => `n${i} = 0`).join(', ')};`);
+  // openplc: the instances with an executionOrderId, before everything else of the body (their units, see bodyUnits).
+  if (ir.runEarly?.length) {
+    const [first, end] = em.pc.units(ir.index, 'early');
+    L.push(`${LATE_TEXT}${em.p(first)}, ${em.p(end)}, now, scan);`);
+  }
+  // Nets an early unit of this network wrote this scan are read back from the power words.
+  const before = ir.early?.length ? writtenNets(ir.early.flat()) : undefined;
+  const word = (i: number) => `((W[${em.p(firstWord + Math.floor(i / NETS_PER_WORD))}] >>> ${i % NETS_PER_WORD}) & 1)`;
+  if (live.length) L.push(`let ${live.map((i) => `n${i} = ${before?.has(i) ? word(i) : '0'}`).join(', ')};`);
   const controls = ir.ops.some((op) => op.op === 'jump' || op.op === 'return');
   if (controls) L.push(`go = 0; next = ${idx} + 1;`);
   for (const op of ir.ops) {
@@ -428,10 +453,11 @@ function emitNetwork(em: Emitter, ir: NetworkIR, firstWord: number, idx: string)
     em.single = single;
   }
   packWords(em, live, ir.netCount, firstWord);
-  // openplc: the body's late blocks, after every coil of the body (their units, see lateUnits).
-  const late = ir.runLate ?? [];
-  if (late.length)
-    L.push(`${LATE_TEXT}${em.p(em.pc.lateUnit(late[0]!))}, ${em.p(em.pc.lateUnit(late[late.length - 1]!) + 1)}, now, scan);`);
+  // openplc: the body's late blocks, after every coil of the body (their units, see bodyUnits).
+  if (ir.runLate?.length) {
+    const [first, end] = em.pc.units(ir.index, 'late');
+    L.push(`${LATE_TEXT}${em.p(first)}, ${em.p(end)}, now, scan);`);
+  }
   if (controls) L.push(`if (next !== ${idx} + 1) { S[0] = ${idx}; return next; }`);
 }
 

@@ -11,10 +11,10 @@ import type { Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
 import {
   CALL_TEXT,
-  generateLate,
+  bodyUnits,
   generateNetwork,
+  generateUnit,
   LATE_TEXT,
-  lateUnits,
   NETS_PER_WORD,
   ProgramConstants,
   slotKey,
@@ -60,18 +60,18 @@ export type DispatchFn = (first: number, end: number, now: number, scan: number)
 export interface DispatchPlan {
   /** Body of `new Function(...DISPATCH_PARAMS, body)` per dispatch function. */
   readonly bodies: readonly string[];
-  /** Shape of each network, then -1 (the end), then of each late unit (openplc, codegen.ts lateUnits). */
+  /** Shape of each network, then -1 (the end), then of each unit (openplc, codegen.ts bodyUnits). */
   readonly shape: Int32Array;
-  /** Dispatch function holding each network's (and late unit's) shape. */
+  /** Dispatch function holding each network's (and unit's) shape. */
   readonly groupOf: Int32Array;
-  /** Offset of each network's (and late unit's) parameters in P and V. */
+  /** Offset of each network's (and unit's) parameters in P and V. */
   readonly base: Int32Array;
   readonly P: Int32Array;
   readonly V: Float64Array;
   /** Positions in P of every write to a variable slot (`b:3`), to redirect while it is forced. */
   readonly writes: ReadonlyMap<string, readonly number[]>;
   /**
-   * Networks writing each variable slot (late units not included: they always run on the dispatch
+   * Networks writing each variable slot (units not included: they always run on the dispatch
    * loops, whose writes `writes` redirects).
    */
   readonly writers: ReadonlyMap<string, ReadonlySet<number>>;
@@ -110,12 +110,12 @@ export function planDispatch(
   const words = powerWords(networks);
   const wordCount = count ? words[count - 1]! + Math.ceil(networks[count - 1]!.netCount / NETS_PER_WORD) : 0;
   const pc = new ProgramConstants(functions, fbTypes, { networks, words }, inlineCalls);
-  const units = lateUnits(networks).owners;
+  const { units } = bodyUnits(networks);
   const codes = [
     ...networks.map((ir, i) => generateNetwork(ir, pc, words[i]!)),
-    // The end marker's entry (no code), then the late units.
+    // The end marker's entry (no code), then the units of openplc bodies (early and late).
     { text: '', ints: [], reals: [], writes: [], arrays: [] },
-    ...units.map((k) => generateLate(networks[k]!, pc, words[k]!)),
+    ...units.map((u) => generateUnit(networks[u.owner]!, u.ops, u.early, pc, words[u.owner]!)),
   ];
 
   // Shapes in order of first appearance; the argument-array sizes are part of a shape.

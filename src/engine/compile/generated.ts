@@ -25,7 +25,7 @@
 //   generated: they do nothing (LD-W20, LD-W21).
 // What still differs (a join's branch order, connectors computed once, executionOrderId) is listed
 // in LD-SEMANTICS.md section 6.
-import type { BoxElement } from '../../model/elements';
+import { executionOrderOf as orderOf, type BoxElement } from '../../model/elements';
 import type { Network } from '../../model/project';
 import { isElementaryType, type ElementaryType } from '../../model/iecTypes';
 import { resolveFunction } from '../library/functions';
@@ -33,7 +33,7 @@ import { defaultValue } from '../values/types';
 import { lowerBox } from './box';
 import type { PouContext } from './context';
 import { upstream, type GraphNode, type NetworkGraph } from './graph';
-import type { NetworkIR, Op, OutIR } from './ir';
+import type { NetworkIR, Op, OutIR, Source } from './ir';
 import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget, NetMap, networkIR, type PendingNetwork } from './lower';
 import { describeElement, type Reporter } from './report';
 import { storeOf, type Access } from './symbols';
@@ -87,6 +87,13 @@ export function startGenerated(
   const latest = new Map<number, Pair>();
   const latestNet = new Map<number, number>();
   const wiredIn = (net: number) => nets.isWired(net) && nets.isFed(net);
+  /**
+   * Tracing the inputs of a block with an executionOrderId (GenerateBlock's `order`): the blocks
+   * upstream not called yet are not called, their stored outputs are read.
+   */
+  let ordered = false;
+  /** Blocks whose BOOL outputs were read stored before their call: pin -> the variable their call writes. */
+  const heldOut = new Map<number, Map<string, Access>>();
 
   // Operands are checked once per element, whether or not a coil reads it.
   const operands = new Map<number, Access | undefined>();
@@ -112,18 +119,20 @@ export function startGenerated(
     const v = { kind: 'var', name, type, store, slot, initial: defaultValue(type), retain: false, constant: false, global: false, implicit: false, hidden: true } as const;
     return { kind: 'var', v, type };
   };
-  /** `dst := src` as a MOVE (node -1 when it belongs to no element: an edge contact's snapshot). */
+  /** `dst := src` as a MOVE (node -1 when it belongs to no element: an edge contact's snapshot); `src` a variable or a power-flow local. */
   const moveFns = new Map<ElementaryType, number>();
-  const move = (node: number, src: Access, out: OutIR, en?: Access): Op | undefined => {
-    let fn = moveFns.get(src.type);
+  const move = (node: number, src: Access | number, out: OutIR, en?: Access): Op | undefined => {
+    const type = typeof src === 'number' ? 'BOOL' : src.type;
+    let fn = moveFns.get(type);
     if (fn === undefined) {
-      const res = resolveFunction('MOVE', [src.type], ctx.profile);
+      const res = resolveFunction('MOVE', [type], ctx.profile);
       if (!res.ok) return undefined;
       fn = ctx.functions.length;
       ctx.functions.push(res.fn);
-      moveFns.set(src.type, fn);
+      moveFns.set(type, fn);
     }
-    const args = [{ pin: 'IN', type: src.type, src: { from: 'access', access: src } } as const];
+    const from: Source = typeof src === 'number' ? { from: 'power', net: src } : { from: 'access', access: src };
+    const args = [{ pin: 'IN', type, src: from }];
     return { op: 'function', node, name: 'MOVE', fn, ...(en ? { en: { from: 'access', access: en } } : {}), args, out, eno: { pin: 'ENO', type: 'BOOL' } };
   };
 
@@ -213,6 +222,7 @@ export function startGenerated(
       return inNet;
     };
     if (isBlock(node)) {
+      if (ordered && !computed.has(s.node)) return pass(storedBool(s.node, s.pin));
       generateBlock(s.node);
       return pass(blockOut.get(s.node)?.get(s.pin) ?? nets.fresh());
     }
@@ -296,8 +306,10 @@ export function startGenerated(
     const outer = stmt;
     const savedTrace = trace;
     const savedOverlay = nets.overlay;
+    const savedOrdered = ordered;
     stmt = statement();
     trace = new Map();
+    ordered = orderOf(node.el) > 0;
     let call: Op | undefined;
     try {
       if (node.el.kind === 'contact') {
@@ -316,7 +328,8 @@ export function startGenerated(
         if (!wiredIn(t.net)) continue;
         // A value line: the block feeding it runs first. A power line: traced now.
         if (nets.data.has(t.net) || nets.dataPending.has(t.net)) {
-          for (const s of upstream(g, t.net).sources) if (isBlock(g.nodes[s.node]!)) generateBlock(s.node);
+          for (const s of upstream(g, t.net).sources)
+            if (isBlock(g.nodes[s.node]!) && !(ordered && !computed.has(s.node) && storedData(s, t.net, node.el))) generateBlock(s.node);
         } else value(t.net);
       }
       for (const t of node.outputs) {
@@ -343,10 +356,83 @@ export function startGenerated(
       const own = stmt;
       trace = savedTrace;
       nets.overlay = savedOverlay;
+      ordered = savedOrdered;
       stmt = outer;
       // The whole call (what its inputs call, their expressions, the call) is one call of the outer statement.
-      outer.calls.push(...close(own), ...(call ? [call] : []));
+      outer.calls.push(...close(own), ...(call ? [call, ...holdWrites(ni)] : []));
     }
+  };
+
+  /**
+   * A block output read before the block ran this scan, by a block with an executionOrderId: the
+   * value its last call left (`T1.Q` of an FB instance; a function's `_TMP_AND5_OUT`, here a
+   * variable its call writes). Returns the local holding it.
+   */
+  const storedBool = (ni: number, pin: string): number => {
+    const node = g.nodes[ni]!;
+    const el = node.el;
+    let src: Access | undefined;
+    if (el.kind === 'box' && node.layout?.signature.kind === 'fb' && el.instance?.trim() && pin.toUpperCase() !== 'ENO') {
+      const res = ctx.symbols.resolve(`${el.instance.trim()}.${pin}`, { literals: false, implicitLocations: false });
+      if (res.ok && res.access.type === 'BOOL') src = res.access;
+    }
+    if (!src) {
+      let pins = heldOut.get(ni);
+      if (!pins) heldOut.set(ni, (pins = new Map()));
+      src = pins.get(pin);
+      if (!src) pins.set(pin, (src = hiddenVar(`${describeElement(el)}.${pin}`, 'BOOL')));
+    }
+    const local = nets.fresh();
+    const read = move(node.index, src, { pin: 'OUT', type: 'BOOL', net: local });
+    if (read) stmt.expr.push(read);
+    return local;
+  };
+
+  /** The writes of the stored outputs read before this block's call (storedBool), after it. */
+  const holdWrites = (ni: number): Op[] => {
+    const out: Op[] = [];
+    for (const [pin, dst] of heldOut.get(ni) ?? []) {
+      const local = blockOut.get(ni)?.get(pin);
+      const write = local === undefined ? undefined : move(g.nodes[ni]!.index, local, { pin: 'OUT', type: 'BOOL', dst });
+      if (write) out.push(write);
+    }
+    return out;
+  };
+
+  /**
+   * A data line into a block with an executionOrderId from a block not called yet: the line reads
+   * the block's stored output (an FB instance's output; a slot the function writes when it runs).
+   * False when that cannot be known before the function runs (an output of a generic type): the
+   * function is then called first (LD-W23).
+   */
+  const storedData = (s: { node: number; pin: string }, net: number, reader: GraphNode['el']): boolean => {
+    if (nets.data.has(net)) return true;
+    const node = g.nodes[s.node]!;
+    const el = node.el;
+    if (el.kind !== 'box') return false;
+    if (node.layout?.signature.kind === 'fb' && el.instance?.trim()) {
+      const res = ctx.symbols.resolve(`${el.instance.trim()}.${s.pin}`, { literals: false, implicitLocations: false });
+      if (res.ok) {
+        nets.data.set(net, { from: 'access', access: res.access });
+        return true;
+      }
+      return false;
+    }
+    const type = node.layout?.outputs.find((p) => p.name === s.pin)?.type;
+    if (type !== undefined && isElementaryType(type) && type !== 'BOOL') {
+      const store = storeOf(type);
+      const data = { store, slot: ctx.symbols.counts[store]++ };
+      ctx.dataSlots.push({ ...data, type });
+      nets.heldData.set(net, data);
+      nets.data.set(net, { from: 'data', ...data, type });
+      return true;
+    }
+    r.warning(
+      'LD-W23',
+      `${describeElement(reader)} has an execution order and reads output ${s.pin} of ${describeElement(el)}, which has not run yet in this scan; Beremiz and OpenPLC read the value its last call left, but the type of that output is only known once it runs, so the simulator calls ${describeElement(el)} first here`,
+      reader,
+    );
+    return false;
   };
 
   const cancelled = (el: GraphNode['el'], type: string) =>
@@ -378,18 +464,37 @@ export function startGenerated(
     if (write) sink.push(write);
   };
 
-  // Coils and block outputs written to variables (outVariables), by position.
-  const turns: { row: number; col: number; run: () => void }[] = [];
+  // Coils and block outputs written to variables (outVariables), by position; before them, the
+  // blocks and outVariables with an executionOrderId, in id order (ComputeProgram's orderedInstances).
+  type Turn = { row: number; col: number; run: () => void };
+  const turns: Turn[] = [];
+  const first: (Turn & { id: number })[] = [];
   g.nodes.forEach((node, ni) => {
     const el = node.el;
     if (el.kind === 'coil') turns.push({ row: el.row, col: el.col, run: () => generateCoil(ni) });
-    if (el.kind === 'box' && node.layout)
+    if (el.kind !== 'box') return;
+    const id = orderOf(el);
+    if (id > 0 && node.layout) first.push({ id, row: el.row, col: el.col, run: () => asStatement(() => generateBlock(ni)) });
+    if (node.layout)
       for (const pin of node.layout.outputs) {
         const operand = Object.entries(el.outputs).find(([k]) => k.toUpperCase() === pin.name.toUpperCase())?.[1];
-        if (operand?.trim())
-          turns.push({ row: el.row + pin.rowOffset, col: el.col + node.layout.cols, run: () => generateOutVariable(ni, pin.name) });
+        if (!operand?.trim()) continue;
+        const turn = { row: el.row + pin.rowOffset, col: el.col + node.layout.cols, run: () => generateOutVariable(ni, pin.name) };
+        const order = orderOf(el, pin.name);
+        if (order > 0) first.push({ ...turn, id: order });
+        else turns.push(turn);
       }
   });
+  const early: Op[][] = [];
+  const earlyOrder: number[] = [];
+  for (const t of first.sort((a, b) => a.id - b.id || byPosition(a, b))) {
+    sink = [];
+    t.run();
+    if (!sink.length) continue;
+    early.push(sink);
+    earlyOrder.push(t.id);
+  }
+  sink = ops;
   turns.sort(byPosition);
   for (const t of turns) t.run();
 
@@ -420,6 +525,8 @@ export function startGenerated(
         elementNets,
         vlinkNets: network.vlinks.map((_, i) => netOf(g.vlinkNet[i]!)),
         late,
+        early,
+        earlyOrder,
       });
     },
   };

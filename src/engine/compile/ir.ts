@@ -142,4 +142,14 @@ export interface NetworkIR {
   readonly late?: readonly Op[];
   /** openplc profile: networks (program indexes) whose `late` operations run at the end of this one. */
   readonly runLate?: readonly number[];
+  /**
+   * openplc profile: the statements of this network's instances with a PLCopen executionOrderId
+   * (boxes, variables written beside block outputs), one segment per instance in id order, run
+   * before every coil of the POU body by the body's first network (`runEarly`); `earlyOrder` gives
+   * each segment's id. Their nets are this network's, like the late operations'.
+   */
+  readonly early?: readonly (readonly Op[])[];
+  readonly earlyOrder?: readonly number[];
+  /** openplc profile: early segments [network (program index), segment] run at the start of this network, in order. */
+  readonly runEarly?: readonly (readonly [number, number])[];
 }

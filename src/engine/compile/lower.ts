@@ -8,7 +8,7 @@ import type { NetworkIR, Op, Source } from './ir';
 import { evaluationOrder } from './order';
 import { describeElement, type Reporter } from './report';
 import { checkStructure } from './structure';
-import type { Access } from './symbols';
+import type { Access, Store } from './symbols';
 import { lowerBox } from './box';
 import { startGenerated } from './generated';
 
@@ -20,6 +20,11 @@ export class NetMap {
   readonly data = new Map<number, Source>();
   /** Nets driven by a block output that is not BOOL by signature, before that block is lowered. */
   readonly dataPending = new Set<number>();
+  /**
+   * openplc profile: data slots a block with an executionOrderId read before the function driving
+   * the net ran (its stored output, generated.ts); that function writes its output there.
+   */
+  readonly heldData = new Map<number, { readonly store: Store; readonly slot: number }>();
   constructor(readonly g: NetworkGraph) {
     for (const node of g.nodes) {
       if (node.el.kind !== 'box') continue;
@@ -256,7 +261,7 @@ export function networkIR(
   network: Network,
   index: number,
   nets: NetMap,
-  parts: Pick<NetworkIR, 'ops' | 'elementNets' | 'vlinkNets' | 'late'>,
+  parts: Pick<NetworkIR, 'ops' | 'elementNets' | 'vlinkNets' | 'late' | 'early' | 'earlyOrder'>,
 ): NetworkIR {
   return {
     index: ctx.first + index,
@@ -268,6 +273,7 @@ export function networkIR(
     vlinkNets: parts.vlinkNets,
     constants: [],
     ...(parts.late?.length ? { late: parts.late } : {}),
+    ...(parts.early?.length ? { early: parts.early, earlyOrder: parts.earlyOrder ?? [] } : {}),
   };
 }
 

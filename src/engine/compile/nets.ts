@@ -27,3 +27,20 @@ export function singleWriterNets(ir: NetworkIR, ops: readonly Op[] = ir.ops): Se
   }
   return new Set([...writes].filter(([, n]) => n === 1).map(([net]) => net));
 }
+
+/** Every net the operations write. */
+export function writtenNets(ops: readonly Op[]): Set<number> {
+  const out = new Set<number>();
+  const add = (net: number | undefined) => {
+    if (net !== undefined) out.add(net);
+  };
+  for (const op of ops) {
+    if (op.op === 'pass' || op.op === 'contact' || (op.op === 'coil' && op.outNet !== op.inNet)) add(op.outNet);
+    if (op.op === 'contact') add(op.ownNet);
+    if (op.op === 'fb') for (const o of op.outs) add(o.net);
+    if (op.op === 'call') for (const o of op.outs) add(o.out.net);
+    if (op.op === 'function') add(op.out.net);
+    if ((op.op === 'fb' || op.op === 'call' || op.op === 'function') && op.eno) add(op.eno.net);
+  }
+  return out;
+}

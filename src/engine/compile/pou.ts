@@ -154,6 +154,14 @@ export function lowerPouBody(
   const lateOf = lowered.flatMap((ir) => (ir?.late ? [ir.index] : []));
   const last = lowered[lowered.length - 1];
   const networks = lateOf.length && last ? [...lowered.slice(0, -1), { ...last, runLate: lateOf }] : lowered;
+  // Profile openplc: the instances with an executionOrderId run first, in id order over the whole
+  // body (ties in network order), by the body's first network (generated.ts).
+  const earlyOf = networks
+    .flatMap((ir) => (ir?.early ?? []).map((_, s) => ({ id: ir!.earlyOrder![s]!, at: [ir!.index, s] as const })))
+    .sort((a, b) => a.id - b.id)
+    .map((e) => e.at);
+  const head = networks[0];
+  if (earlyOf.length && head) networks[0] = { ...head, runEarly: earlyOf };
 
   // LD-R12: a variable written by coils of different kinds.
   for (const [v, families] of ctx.coilWrites) {

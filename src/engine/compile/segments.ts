@@ -32,7 +32,7 @@ export function planSegments(networks: readonly NetworkIR[], bodyStarts: readonl
     let w = weights.get(i);
     if (w === undefined) {
       w = 1;
-      // openplc: the late blocks a body's last network runs are one call there (codegen.ts lateUnits).
+      // openplc: the late blocks a body's last network runs are one call there (codegen.ts bodyUnits).
       for (const op of networks[i]!.ops) {
         w++;
         if (op.op === 'call') for (let k = op.first; k < op.end; k++) w += weight(k);

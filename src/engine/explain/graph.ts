@@ -72,8 +72,9 @@ const graphs = new WeakMap<NetworkIR, NetworkGraph>();
 export function networkGraph(ir: NetworkIR): NetworkGraph {
   let g = graphs.get(ir);
   if (g) return g;
-  // openplc: a network's late blocks (run at the end of its POU body) drive its nets too.
-  const arcs = [...ir.ops, ...(ir.late ?? [])].map(arcOf);
+  // openplc: a network's early segments and late blocks (run at the start and the end of its POU
+  // body) drive its nets too.
+  const arcs = [...(ir.early ?? []).flat(), ...ir.ops, ...(ir.late ?? [])].map(arcOf);
   const drivers = new Map<number, Arc[]>();
   for (const arc of arcs)
     for (const net of arc.outNets) {

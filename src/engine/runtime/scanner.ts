@@ -99,7 +99,7 @@ export class ScanPlc implements Plc {
     call: (first: number, end: number, t: number, scan: number): void => this.callBody(first, end, t, scan),
     stepCall: (first: number, end: number, t: number, scan: number): Generator<void, void> =>
       this.stepRange(first, end, t, scan),
-    /** openplc: the late units [first, end) a body's last network runs (compile/codegen.ts lateUnits), on the dispatch loops. */
+    /** openplc: the units [first, end) a body's first network (early) or last network (late) runs (compile/codegen.ts bodyUnits), on the dispatch loops. */
     late: (first: number, end: number, t: number, scan: number): void => {
       for (let u = first; u < end; ) u = this.groups[this.groupOf[u]!]!(u, end, t, scan);
     },
@@ -537,7 +537,7 @@ export class ScanPlc implements Plc {
     this.frames.pop();
   }
 
-  /** Late units [first, end) in a step: no stop before them (they end their runner network), but calls in them can be stepped into. */
+  /** Units [first, end) in a step: no stop before them (they start or end their runner network), but calls in them can be stepped into. */
   private *stepLate(first: number, end: number, t: number, scan: number): Generator<void, void> {
     const plan = this.stepPlan ?? this.buildStepPlan();
     for (let u = first; u < end; u++) yield* this.stepGens![plan.shape[u]!]!(u, t, scan);
