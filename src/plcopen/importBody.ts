@@ -1,5 +1,6 @@
-// An LD body → the networks of a POU: connected components ordered like Beremiz runs them
-// (executionOrderId first, then top to bottom), labels and comments attached to the network below.
+// An LD body → the networks of a POU: connected components ordered top to bottom (or, for a
+// profile other than openplc, by their smallest executionOrderId first), labels and comments
+// attached to the network below.
 import { uniqueConnectorNames } from './connectorNames';
 import type { LdElement } from '../model/elements';
 import type { BlockLibrary } from '../model/library';
@@ -29,6 +30,12 @@ export interface BodyTuning {
   readonly batchObjects?: number;
   /** Whether networks of one shape share a layout (see layoutCache.ts). */
   readonly shareLayouts?: boolean;
+  /**
+   * Whether a network's smallest executionOrderId places it before the networks without one
+   * (default). False under the openplc profile: Beremiz's generator orders instances by their
+   * ids (the engine does too, BoxElement.executionOrder), coils by position, never networks.
+   */
+  readonly orderByIds?: boolean;
 }
 
 const MIN_COLS = 3;
@@ -73,7 +80,7 @@ function compareItems(a: Item, b: Item): number {
  * Imports one LD body into networks. Throws LdGraphError for broken references.
  *
  * Large bodies are read in batches of whole networks (see ldBatches.ts); networks are ordered
- * like Beremiz runs them (executionOrderId first, then top to bottom) once all are laid out.
+ * top to bottom (executionOrderId first unless `tuning.orderByIds` is false) once all are laid out.
  * Each network is as wide as its own elements need (at least MIN_COLS), its coils at its own
  * right rail; the editor draws every network at its own width.
  */
@@ -91,7 +98,7 @@ export function importLdBody(
   const items: Item[] = [];
   let seq = 0;
   for (const positions of plan.batches)
-    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool))
+    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool, tuning.orderByIds !== false))
       items.push({ ...it, seq: seq++ });
   items.sort(compareItems);
   // A network with nothing but a label or a comment: as narrow as a network gets.
@@ -208,6 +215,7 @@ function readBatch(
   warn: (f: Finding) => void,
   library: BlockLibrary,
   isBool?: (name: string) => boolean,
+  orderByIds = true,
 ): BatchItem[] {
   const inBatch = new Set(positions);
   const keepRef = (ref: string) => {
@@ -251,7 +259,7 @@ function readBatch(
       if (o.pos.x < x) x = o.pos.x;
       if (o.order < order) order = o.order;
     }
-    if (eo !== Infinity) return [0, eo];
+    if (eo !== Infinity && orderByIds) return [0, eo];
     return hasGeometry ? [1, y, x] : [1, order];
   };
   const groups: Group[] = [];

@@ -127,6 +127,20 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
   const fileHeader = child(root, 'fileHeader');
   const contentHeader = child(root, 'contentHeader');
   const producer = [fileHeader?.attrs.companyName, fileHeader?.attrs.productName].filter(Boolean).join(' / ');
+  let recordedProfile: string | undefined;
+  for (const holder of [root, contentHeader]) {
+    const add = holder ? child(holder, 'addData') : undefined;
+    for (const d of add ? childrenNamed(add, 'data') : [])
+      if (d.attrs.name === PROFILE_DATA_NAME) recordedProfile ??= child(d, 'profile')?.attrs.name ?? '';
+  }
+  const profile = chooseProfile({
+    namespace: ns,
+    ...(fileHeader?.attrs.companyName ? { companyName: fileHeader.attrs.companyName } : {}),
+    ...(recordedProfile !== undefined ? { recorded: recordedProfile } : {}),
+  });
+  // Under openplc the engine runs the ids itself (Beremiz orders instances, not networks, by them):
+  // networks follow the drawing. Elsewhere a network's smallest id places it (importBody.ts).
+  const bodyTuning: BodyTuning = { ...tuning, orderByIds: profile.profile !== 'openplc' };
   const types = child(root, 'types');
   if (!types)
     throw new ImportFailure({ ...at(root), message: 'the <project> has no <types> element (no POUs)' });
@@ -176,7 +190,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
         raw,
         (f: Finding) => found.push({ ...at(f.obj?.xml), pou: pouName, message: f.message }),
         library,
-        tuning,
+        bodyTuning,
         (v) => bools.has(v.toUpperCase()),
       );
       // In file order (a large body is read in batches, each reporting as it goes).
@@ -355,11 +369,10 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     // The LD of SFC actions and transitions stays inside the chart (Pou.sfc), which runs it.
   }
   currentPou = undefined;
-  let recordedProfile: string | undefined;
   for (const holder of [root, contentHeader]) {
     const add = holder ? child(holder, 'addData') : undefined;
     for (const d of add ? childrenNamed(add, 'data') : []) {
-      if (d.attrs.name === PROFILE_DATA_NAME) recordedProfile ??= child(d, 'profile')?.attrs.name ?? '';
+      if (d.attrs.name === PROFILE_DATA_NAME) continue;
       else if (d.attrs.handleUnknown === 'discard')
         warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
       else keepProject.addData.push(raw(d));
@@ -403,11 +416,6 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     ...(inst.configuration ? { configuration: inst.configuration } : {}),
     ...(inst.resource ? { resource: inst.resource } : {}),
   };
-  const profile = chooseProfile({
-    namespace: ns,
-    ...(fileHeader?.attrs.companyName ? { companyName: fileHeader.attrs.companyName } : {}),
-    ...(recordedProfile !== undefined ? { recorded: recordedProfile } : {}),
-  });
   const project: Project = {
     format: PROJECT_FORMAT,
     version: PROJECT_VERSION,

@@ -3,7 +3,8 @@ import { describe, expect, it } from 'vitest';
 import { checkProject } from '../../src/engine/check';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
-import { imported, run } from './fixtures';
+import type { Project } from '../../src/model/project';
+import { fixture, imported, run } from './fixtures';
 import { schemaErrors } from './xsd';
 
 const noErrors = (p: Parameters<typeof checkProject>[0]) =>
@@ -66,16 +67,21 @@ describe('PLCopen import: hand-written fixtures', () => {
     }
   });
 
-  it('edge contacts and edge coils; executionOrderId > 0 decides the network order', () => {
+  it('edge contacts and edge coils; executionOrderId > 0 decides the network order, except under openplc', () => {
+    const coilsOf = (project: Project) =>
+      project.pous[0]!.networks.map((n) => n.elements.flatMap((e) => (e.kind === 'coil' ? [`${e.coil}:${e.variable}`] : [])));
+    // TC6 v2.0 (CODESYS, TwinCAT; profile iec): the network with the smallest id comes first.
+    const v20 = importPlcopen(fixture('edges-and-order.xml').replace('tc6_0201', 'tc6_0200'));
+    if (!v20.ok) throw new Error(JSON.stringify(v20.errors));
+    expect(v20.project.profile).toBe('iec');
+    expect(coilsOf(v20.project)).toEqual([['P:Pulse', 'COIL:Copy'], ['COIL:Rise'], ['COIL:Fall']]);
+    // TC6 v2.01 (Beremiz, OpenPLC; profile openplc): their generator orders coils by position and
+    // never by id (only blocks and outVariables are ordered): the networks follow the drawing.
     const { project } = imported('edges-and-order.xml');
+    expect(coilsOf(project)).toEqual([['COIL:Rise'], ['COIL:Fall'], ['P:Pulse', 'COIL:Copy']]);
     const nets = project.pous[0]!.networks;
-    const coils = (i: number) =>
-      nets[i]!.elements.flatMap((e) => (e.kind === 'coil' ? [`${e.coil}:${e.variable}`] : []));
-    expect(coils(0)).toEqual(['P:Pulse', 'COIL:Copy']);
-    expect(coils(1)).toEqual(['COIL:Rise']);
-    expect(coils(2)).toEqual(['COIL:Fall']);
-    expect(nets[1]!.elements.find((e) => e.kind === 'contact')).toMatchObject({ contact: 'P' });
-    expect(nets[2]!.elements.find((e) => e.kind === 'contact')).toMatchObject({ contact: 'N' });
+    expect(nets[0]!.elements.find((e) => e.kind === 'contact')).toMatchObject({ contact: 'P' });
+    expect(nets[1]!.elements.find((e) => e.kind === 'contact')).toMatchObject({ contact: 'N' });
     const plc = run(project, 'Main');
     const seen: string[] = [];
     for (const v of [false, true, true, false, false]) {

@@ -20,6 +20,9 @@ export type LdObj =
       outputs: string[];
       /** Output pins assigned to a variable (an outVariable wired from the pin). */
       assign?: Record<string, string>;
+      /** The block's executionOrderId, and those of the outVariables of `assign` (by pin). */
+      order?: number;
+      assignOrder?: Record<string, number>;
     }
   /** A PLCopen connector: ends the wire `in` under a name. */
   | { id: number; kind: 'connector'; name: string; in: Ref[] }
@@ -94,10 +97,10 @@ export function ldXml(vars: readonly LdVar[], networks: readonly LdNetwork[]): s
           let outs = '';
           for (const pin of o.outputs)
             outs += `<variable formalParameter="${pin}"><connectionPointOut/></variable>`;
-          body += `<block localId="${o.id}" typeName="${o.type}"${o.instance ? ` instanceName="${o.instance}"` : ''}>${pos(o.id)}<inputVariables>${ins}</inputVariables><inOutVariables/><outputVariables>${outs}</outputVariables></block>\n`;
+          body += `<block localId="${o.id}" typeName="${o.type}"${o.instance ? ` instanceName="${o.instance}"` : ''}${o.order ? ` executionOrderId="${o.order}"` : ''}>${pos(o.id)}<inputVariables>${ins}</inputVariables><inOutVariables/><outputVariables>${outs}</outputVariables></block>\n`;
           for (const [pin, v] of Object.entries(o.assign ?? {}))
             extra.push(
-              `<outVariable localId="${nextId()}"><position x="0" y="0"/><connectionPointIn><connection refLocalId="${o.id}" formalParameter="${pin}"/></connectionPointIn><expression>${esc(v)}</expression></outVariable>`,
+              `<outVariable localId="${nextId()}"${o.assignOrder?.[pin] ? ` executionOrderId="${o.assignOrder[pin]}"` : ''}><position x="0" y="0"/><connectionPointIn><connection refLocalId="${o.id}" formalParameter="${pin}"/></connectionPointIn><expression>${esc(v)}</expression></outVariable>`,
             );
           break;
         }

@@ -23,8 +23,25 @@
 //   finished by pou.ts once all networks are started);
 // - a function with no input connected is not called (LD-W22); jumps and RETURNs are never
 //   generated: they do nothing (LD-W20, LD-W21).
-// What still differs (a join's branch order, connectors computed once, executionOrderId) is listed
-// in LD-SEMANTICS.md section 6.
+// executionOrderId (ComputeProgram's orderedInstances; BoxElement.executionOrder/outputOrders):
+// - only blocks, outVariables and inOutVariables with an id > 0 are ordered (coils, contacts and
+//   connectors never are); they are generated before every other instance of the POU body (the
+//   whole body, not network by network), sorted by id; then coils and outVariables by position,
+//   then the blocks no one needed, as above;
+// - an ordered block's turn is GenerateBlock(order=False): it runs unless a statement already
+//   called it; an ordered outVariable's turn is its statement `X := <path>`, which calls the
+//   block behind it first if it has not run (ComputeExpression with order=False);
+// - a block with an id traces its inputs with `order` set (GenerateBlock passes executionOrderId >
+//   0 to ComputeExpression; GeneratePaths passes it on through contacts and continuations): a
+//   block upstream that has not run yet is not called, the statement reads its stored output
+//   (`T1.Q`, a function's `_TMP_AND5_OUT`: the value of its last call, or the initial value), and
+//   that block runs later at its own turn. The engine reads an FB instance's output, or a variable
+//   the function's call writes (a slot for a data line; a function whose output type is generic
+//   cannot reserve one before it runs: called first instead, LD-W23). The statements of ordered
+//   instances are this network's `early` segments, run by the body's first network (pou.ts,
+//   codegen.ts bodyUnits).
+// What still differs (a join's branch order, connectors computed once) is listed in
+// LD-SEMANTICS.md section 6.
 import { executionOrderOf as orderOf, type BoxElement } from '../../model/elements';
 import type { Network } from '../../model/project';
 import { isElementaryType, type ElementaryType } from '../../model/iecTypes';
