@@ -1,12 +1,19 @@
 import { describe, expect, test } from 'vitest';
 import { loadProject, saveProject } from '../../src/model/load';
 import { newProject } from '../../src/model/factory';
+import { ladder, project, vars } from '../engine/ladder';
 
 describe('project files', () => {
   test('a new project saves and loads back unchanged', () => {
     const project = newProject('Demo');
     const result = loadProject(saveProject(project));
     expect(result).toEqual({ ok: true, project });
+  });
+
+  test('a project with a connector/continuation pair saves and loads back unchanged (they were refused by the file schema)', () => {
+    const p = project(vars('A BOOL', 'X BOOL'), [ladder(['[A] >C1>| .', '|>C1> - (X)'])]);
+    const result = loadProject(saveProject(p));
+    expect(result).toEqual({ ok: true, project: p });
   });
 
   test('text that is not JSON is refused with a reason', () => {
