@@ -7,7 +7,7 @@ import { boxLayout } from '../model/boxLayout';
 import type { BlockLibrary } from '../model/library';
 import type { LdElement } from '../model/elements';
 import type { Network } from '../model/project';
-import { wireNets, type WireEdge } from '../engine/compile/wires';
+import { feedingNets, wireNets, type WireEdge } from '../engine/compile/wires';
 
 export type Source =
   { readonly kind: 'rail' } | { readonly kind: 'pin'; readonly el: number; readonly pin: string };
@@ -127,18 +127,7 @@ export function gridGraph(
     if (!feeds.has(id)) return own[id]!;
     const hit = producersMemo.get(id);
     if (hit) return hit;
-    const list: Source[] = [];
-    const seen = new Set<number>([id]);
-    const stack = [id];
-    while (stack.length) {
-      const m = stack.pop()!;
-      list.push(...own[m]!);
-      for (const f of feeds.get(m) ?? [])
-        if (!seen.has(f)) {
-          seen.add(f);
-          stack.push(f);
-        }
-    }
+    const list = feedingNets(id, (m) => feeds.get(m) ?? []).flatMap((m) => own[m]!);
     producersMemo.set(id, list);
     return list;
   };

@@ -11,7 +11,7 @@ import { boxLayout, type BoxLayout } from '../../model/boxLayout';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import type { BoxElement, LdElement } from '../../model/elements';
 import type { Network } from '../../model/project';
-import { wireNets, type Bridge, type WireEdge } from './wires';
+import { feedingNets, wireNets, type Bridge, type WireEdge } from './wires';
 
 export type { Bridge } from './wires';
 
@@ -355,19 +355,10 @@ export function upstream(g: NetworkGraph, net: number): Upstream {
   if (hit) return hit;
   const sources: Net['sources'][number][] = [];
   let leftRail = false;
-  const seen = new Set<number>([net]);
-  const stack = [net];
-  while (stack.length) {
-    const m = g.nets[stack.pop()!]!;
+  for (const id of feedingNets(net, (m) => g.nets[m]!.feeds.map((b) => g.bridges[b]!.from))) {
+    const m = g.nets[id]!;
     sources.push(...m.sources);
     leftRail ||= m.leftRail;
-    for (const b of m.feeds) {
-      const from = g.bridges[b]!.from;
-      if (!seen.has(from)) {
-        seen.add(from);
-        stack.push(from);
-      }
-    }
   }
   const up = { sources, leftRail, fed: leftRail || sources.length > 0 };
   memo.set(net, up);

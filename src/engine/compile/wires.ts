@@ -46,6 +46,23 @@ export interface WireNets {
   readonly bridges: readonly Bridge[];
 }
 
+/** `net` and every net whose state reaches it through bridges (`fromOf`: the nets bridged into one). */
+export function feedingNets(net: number, fromOf: (net: number) => Iterable<number>): number[] {
+  const seen = new Set<number>([net]);
+  const stack = [net];
+  const out: number[] = [];
+  while (stack.length) {
+    const m = stack.pop()!;
+    out.push(m);
+    for (const f of fromOf(m))
+      if (!seen.has(f)) {
+        seen.add(f);
+        stack.push(f);
+      }
+  }
+  return out;
+}
+
 class Sets {
   readonly parent: Int32Array;
   constructor(n: number) {
