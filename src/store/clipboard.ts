@@ -25,16 +25,21 @@ export const clipText = (content: ClipContent, variables: readonly Variable[] = 
     variables,
   } satisfies Clip);
 
-/** The clip in `text`, or undefined when the text is not a valid Rungsmith clip. */
-export function parseClip(text: string): Clip | undefined {
+/** The JSON object in `text` (a clip read from the system clipboard), or undefined. */
+export function jsonObject(text: string): Record<string, unknown> | undefined {
   let data: unknown;
   try {
     data = JSON.parse(text);
   } catch {
     return undefined;
   }
-  if (typeof data !== 'object' || data === null) return undefined;
-  const d = data as Record<string, unknown>;
+  return typeof data === 'object' && data !== null ? (data as Record<string, unknown>) : undefined;
+}
+
+/** The clip in `text`, or undefined when the text is not a valid Rungsmith clip. */
+export function parseClip(text: string): Clip | undefined {
+  const d = jsonObject(text);
+  if (!d) return undefined;
   if (
     d.format !== CLIP_FORMAT ||
     d.version !== CLIP_VERSION ||

@@ -13,6 +13,7 @@ import { newId, type ElementId, type NetworkId } from '../model/ids';
 import { validateProject } from '../model/load';
 import type { Network, Pou, Project, Variable } from '../model/project';
 import type { Change } from './changes';
+import { jsonObject } from './clipboard';
 import { renameInElement } from './variableEdits';
 
 export const NETWORK_CLIP_FORMAT = 'rungsmith-networks';
@@ -64,14 +65,8 @@ export const networkClipText = (clip: NetworkClip): string => JSON.stringify(cli
 
 /** The network clip in `text`, or undefined when it is not one (validated like a project file). */
 export function parseNetworkClip(text: string): NetworkClip | undefined {
-  let data: unknown;
-  try {
-    data = JSON.parse(text);
-  } catch {
-    return undefined;
-  }
-  if (typeof data !== 'object' || data === null) return undefined;
-  const d = data as Record<string, unknown>;
+  const d = jsonObject(text);
+  if (!d) return undefined;
   if (d.format !== NETWORK_CLIP_FORMAT || d.version !== NETWORK_CLIP_VERSION || !Array.isArray(d.networks))
     return undefined;
   if (d.networks.length === 0) return undefined;
