@@ -1,10 +1,43 @@
-// Starts `vite preview` on the built app (dist/) on a loopback port and checks for Chromium.
+// Starts the server `npm start` starts (bin/rungsmith-gateway.mjs: the gateway's static server with
+// its CSP and headers, /io and the simulated device) on free loopback ports, serving the built app
+// (dist/), and checks for Chromium. Browser tests therefore run the app exactly as users get it.
+import { spawn, type ChildProcess } from 'node:child_process';
 import { existsSync } from 'node:fs';
-import { preview, type PreviewServer } from 'vite';
 import type { TestProject } from 'vitest/node';
 import { CHROMIUM_PATH } from './browser';
 
-let server: PreviewServer | undefined;
+let server: ChildProcess | undefined;
+
+/** Waits for the line the gateway prints when it is ready: "Rungsmith gateway: open http://127.0.0.1:PORT/#token=…". */
+function startServer(): Promise<{ child: ChildProcess; url: string }> {
+  return new Promise((resolve, reject) => {
+    const child = spawn(process.execPath, ['bin/rungsmith-gateway.mjs', '--port', '0', '--sim-port', '0'], {
+      stdio: ['ignore', 'pipe', 'pipe'],
+      env: { ...process.env, PORT: '' },
+    });
+    let out = '';
+    let err = '';
+    const timer = setTimeout(() => {
+      child.kill('SIGTERM');
+      reject(new Error(`the app server did not print its URL within 60 s\n${err}`));
+    }, 60_000);
+    child.stdout?.setEncoding('utf8');
+    child.stderr?.setEncoding('utf8');
+    child.stderr?.on('data', (d: string) => (err += d));
+    child.stdout?.on('data', (d: string) => {
+      out += d;
+      const m = /open (http:\/\/127\.0\.0\.1:\d+\/#token=\S+)/.exec(out);
+      if (m) {
+        clearTimeout(timer);
+        resolve({ child, url: m[1]! });
+      }
+    });
+    child.once('exit', (code) => {
+      clearTimeout(timer);
+      reject(new Error(`the app server exited (${code}) before it was ready\n${err}`));
+    });
+  });
+}
 
 export async function setup(project: TestProject) {
   if (!existsSync(CHROMIUM_PATH)) {
@@ -13,18 +46,23 @@ export async function setup(project: TestProject) {
     );
   }
   if (!existsSync('dist/index.html')) throw new Error('dist/ is missing: run "npm run build" (npm run test:e2e does it).');
-  server = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'warn' });
-  const address = server.httpServer.address();
-  if (!address || typeof address === 'string') throw new Error('preview server has no port');
-  project.provide('appUrl', `http://127.0.0.1:${address.port}/`);
+  const started = await startServer();
+  server = started.child;
+  project.provide('appUrl', started.url);
 }
 
 export async function teardown() {
-  await new Promise<void>((resolve) => server?.httpServer.close(() => resolve()) ?? resolve());
+  const child = server;
+  if (!child || child.exitCode !== null) return;
+  await new Promise<void>((resolve) => {
+    child.once('exit', () => resolve());
+    child.kill('SIGTERM');
+  });
 }
 
 declare module 'vitest' {
   export interface ProvidedContext {
+    /** The URL the app server printed: http://127.0.0.1:PORT/#token=… */
     appUrl: string;
   }
 }
