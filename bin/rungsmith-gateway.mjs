@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// The gateway: serves the app and the WebSocket endpoint /io on 127.0.0.1 (see README "Gateway and real I/O").
+// The gateway: serves the app and the WebSocket endpoint /io on 127.0.0.1 (see docs/gateway.md).
 // The gateway is TypeScript; tsx's loader runs it without a separate compile step.
 import { register } from 'tsx/esm/api';
 

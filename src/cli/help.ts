@@ -51,7 +51,7 @@ Reads PLCopen TC6 XML (v2.01, v2.0 from CODESYS/TwinCAT, legacy v1.0) into a Run
   test: `Usage: rungsmith test FILE [--junit OUT.xml] [--scenario NAME]
 
 Runs every test scenario stored in the project FILE (its "scenarios": CSV of inputs per scan and
-expected values, see README "Test scenarios") from a cold restart on the virtual clock. Prints
+expected values, see docs/scenarios.md) from a cold restart on the virtual clock. Prints
 PASS or FAIL per scenario; a failure names the first divergent scan, the expected and actual
 values, and "Why?" on the differing output. Then a summary: N passed, N failed.
 

@@ -1,5 +1,5 @@
 // The editor application: one document store and one UI store, provided to the shell.
-// `window.rungsmith` exposes both stores as a scripting aid (README "Scripting"); tests read the
+// `window.rungsmith` exposes both stores as a scripting aid (docs/editor.md "Scripting aid"); tests read the
 // document through it but drive the editor like a user.
 import { useEffect, useState } from 'react';
 import type { Project } from '../model/project';

@@ -141,7 +141,7 @@ function motorStartStop(): Project {
   );
 }
 
-/** Test scenario (README "Test scenarios"): Start seals in, Stop wins, Stop held blocks Start. */
+/** Test scenario (docs/scenarios.md): Start seals in, Stop wins, Stop held blocks Start. */
 const MOTOR_SCENARIO: Scenario = {
   name: 'Start seals in, Stop wins',
   csv: `# Inputs are set before the scan's input read; expect columns are checked after the scan.

@@ -1,4 +1,4 @@
-// The project: plain serialisable data (JSON), versioned. See docs in README "Project format".
+// The project: plain serialisable data (JSON), versioned. See docs/project-files.md.
 import type { LdElement, VLink } from './elements';
 import type { NetworkId, PouId } from './ids';
 
@@ -235,7 +235,7 @@ export interface Project {
   readonly globals: readonly Variable[];
   readonly tasks: readonly Task[];
   /**
-   * Test scenarios (README "Test scenarios"): inputs per scan and expected values as CSV, run by
+   * Test scenarios (docs/scenarios.md): inputs per scan and expected values as CSV, run by
    * the Tests panel and `rungsmith test`. Not part of the program: editing them is no online change.
    */
   readonly scenarios?: readonly Scenario[];

@@ -366,7 +366,7 @@ test('a POU written in ST is listed and opens read-only with its source', async 
     .click();
   const view = page.getByTestId('source-view');
   await view.waitFor();
-  expect(await view.textContent()).toContain('Rungsmith edits and runs LD only');
+  expect(await view.textContent()).toContain('the editor edits LD only');
   expect(await view.locator('pre').textContent()).toBe('OUT := IN * 2;');
   expect(errors).toEqual([]);
 });

@@ -59,7 +59,7 @@ export function PouProperties({ pou }: { readonly pou: Pou }) {
       </div>
       <p className="rs-tree-detail">
         Language {pou.language}
-        {pou.language === 'LD' ? '' : ' (read-only: Rungsmith edits and runs LD only)'}
+        {pou.language === 'LD' ? '' : pou.language === 'FBD' ? ' (read-only; FBD bodies are not run: LD-E51)' : ' (runs; read-only: the editor edits LD only)'}
       </p>
     </div>
   );

@@ -11,7 +11,7 @@ let appStore: SimStore | undefined;
 export function getAppSimStore(): SimStore {
   if (!appStore) {
     appStore = createSimStore(createWorkerTransport());
-    // Scripting aid and test handle, next to the document and UI stores (README "Scripting").
+    // Scripting aid and test handle, next to the document and UI stores (docs/editor.md "Scripting aid").
     const w = window as unknown as { rungsmith?: Record<string, unknown> };
     w.rungsmith = { ...(w.rungsmith ?? {}), simStore: appStore };
   }
