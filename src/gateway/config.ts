@@ -59,6 +59,13 @@ const modbusDeviceSchema = z.strictObject({
   unitId: z.number().int().min(0).max(255).default(1),
   pollMs: z.number().int().min(10).max(60_000).default(100),
   timeoutMs: z.number().int().min(50).max(60_000).default(1000),
+  /**
+   * How long a write of the safe image may take to be answered (a slow device): a pending safe write
+   * is never abandoned to a reconnect before this; it is then retried on a new connection.
+   */
+  safeWriteTimeoutMs: z.number().int().min(100).max(120_000).default(10_000),
+  /** Read the outputs back before each rewrite, to detect another Modbus master writing them. */
+  readBackOutputs: z.boolean().default(true),
   points: z.array(pointEntrySchema).min(1),
 });
 
