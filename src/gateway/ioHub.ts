@@ -293,7 +293,7 @@ export class IoHub {
     if (this.closing) return;
     this.disarm(
       'other-master',
-      `${text}: disarmed. This gateway wrote the safe image once and stops writing that device's outputs so the two masters do not fight; stop the other master, then arm`,
+      `${text}: disarmed. This gateway switched off the outputs it still drove there and stops writing that device's outputs, so the two masters do not fight; stop the other master, then arm`,
     );
   }
 

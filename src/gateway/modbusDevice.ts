@@ -465,9 +465,32 @@ export class ModbusTcpDevice implements Device {
     const more = diffs.length > 1 ? `, and ${diffs.length - 1} more output${diffs.length > 2 ? 's' : ''}` : '';
     this.conflictText = `another Modbus master is writing device "${this.info.id}"'s outputs (${a} read back ${onOff(v)}, we wrote ${onOff(wrote)}${more})`;
     this.handsOff = true;
-    // Ours were driven: the safe image is written once (this poll). Already safe: nothing more is written.
-    if (this.mode === 'drive') this.enterSafe();
+    const wasDriven = this.mode === 'drive';
+    this.enterSafe();
+    // The hub disarms first, so no `drive` can undo this while the writes below are on the wire.
     this.listener?.otherMaster?.(this.conflictText);
+    if (wasDriven) {
+      // Switch off only what is still ours: outputs that read back as we drove them and are not safe.
+      // Outputs the other master changed are left to it (writing them would be one more flip).
+      const zero = safeImage(this.points, this.written, (p) => zeroOf(p.type));
+      const changed = new Map<string, WireValue>();
+      for (const b of this.writeBlocks) {
+        for (const p of b.points) {
+          const safe = zero.get(p.address) ?? zeroOf(p.type);
+          if (seen.get(p.address) !== this.written.get(p.address) || this.written.get(p.address) === safe) continue;
+          if (b.table === 'coils') await this.request(() => client.writeCoil(p.register, safe === true));
+          else await this.request(() => client.writeRegister(p.register, toRegister(safe)));
+          this.written.set(p.address, safe);
+          this.lastSeen.set(p.address, safe);
+          changed.set(p.address, safe);
+        }
+      }
+      if (changed.size) this.listener?.written(changed);
+    }
+    // Our part of the outputs is in the safe state; from here on nothing is written until driven again.
+    this.writeDue = false;
+    this.setSafeAcked(true);
+    [...this.ackWaiters].forEach((w) => w());
     this.listener?.status();
   }
 
