@@ -1,7 +1,7 @@
 // The gateway's config file (JSON), validated with zod. Documented in docs/GATEWAY-CONFIG.md.
 import { readFileSync } from 'node:fs';
 import { isIP } from 'node:net';
-import { parseTree, type Node as JsonNode } from 'jsonc-parser';
+import { parse as parseJsonc, parseTree, printParseErrorCode, type Node as JsonNode, type ParseError } from 'jsonc-parser';
 import { z } from 'zod';
 import { POINT_TYPES } from '../protocol/points';
 import { ConfigError, MODBUS_TABLES } from './configTypes';
@@ -21,6 +21,13 @@ const idSchema = z.string().regex(/^[A-Za-z0-9_.-]{1,40}$/, 'use 1-40 letters, d
 /** Why `host` is not a bare host name or IP address (a URL, `host:port`, a path), or undefined when it is one. */
 export function hostProblem(host: string): string | undefined {
   if (isIP(host)) return undefined; // IPv4, or IPv6 such as ::1 (colons, no brackets)
+  if (/^[0-9.]+$/.test(host)) {
+    // All digits and dots reads as an IPv4 address (no top-level domain is numeric): say what is wrong with it.
+    const parts = host.split('.');
+    const big = parts.find((p) => p !== '' && Number(p) > 255);
+    if (big !== undefined) return `${JSON.stringify(host)} is not an IPv4 address: ${big} is above 255 (each of the four numbers is 0-255)`;
+    return `${JSON.stringify(host)} is not an IPv4 address: it needs four numbers 0-255 separated by dots (e.g. "192.168.1.10")`;
+  }
   if (/^[A-Za-z0-9_](?:[A-Za-z0-9_.-]{0,251}[A-Za-z0-9_])?$/.test(host)) return undefined;
   const text = JSON.stringify(host);
   let url: URL | undefined;
@@ -52,6 +59,13 @@ const modbusDeviceSchema = z.strictObject({
   unitId: z.number().int().min(0).max(255).default(1),
   pollMs: z.number().int().min(10).max(60_000).default(100),
   timeoutMs: z.number().int().min(50).max(60_000).default(1000),
+  /**
+   * How long a write of the safe image may take to be answered (a slow device): a pending safe write
+   * is never abandoned to a reconnect before this; it is then retried on a new connection.
+   */
+  safeWriteTimeoutMs: z.number().int().min(100).max(120_000).default(10_000),
+  /** Read the outputs back before each rewrite, to detect another Modbus master writing them. */
+  readBackOutputs: z.boolean().default(true),
   points: z.array(pointEntrySchema).min(1),
 });
 
@@ -115,12 +129,8 @@ export function loadConfigFile(file: string): ResolvedConfig {
   } catch (e) {
     throw new ConfigError(file, `cannot read the config file (${(e as Error).message})`);
   }
-  let raw: unknown;
-  try {
-    raw = JSON.parse(text);
-  } catch (e) {
-    throw new ConfigError(file, `not valid JSON (${(e as Error).message})`);
-  }
+  if (text.charCodeAt(0) === 0xfeff) text = text.slice(1); // a UTF-8 byte order mark (Windows editors write one)
+  const raw = parseJson(text, file);
   const duplicate = findDuplicateKey(text);
   if (duplicate) {
     throw new ConfigError(
@@ -129,6 +139,47 @@ export function loadConfigFile(file: string): ResolvedConfig {
     );
   }
   return resolveConfig(raw, file);
+}
+
+/** 1-based line and column of a character offset in `text`. */
+export function lineColumn(text: string, offset: number): { line: number; column: number } {
+  const before = text.slice(0, offset);
+  const lineStart = before.lastIndexOf('\n') + 1;
+  return { line: before.split('\n').length, column: offset - lineStart + 1 };
+}
+
+const PARSE_ERROR_WORDS: Partial<Record<string, string>> = {
+  InvalidSymbol: 'unexpected character',
+  InvalidNumberFormat: 'invalid number',
+  PropertyNameExpected: 'a key in double quotes expected',
+  ValueExpected: 'a value expected',
+  ColonExpected: '":" expected',
+  CommaExpected: '"," expected',
+  CloseBraceExpected: '"}" expected',
+  CloseBracketExpected: '"]" expected',
+  EndOfFileExpected: 'nothing more expected after the end of the JSON value',
+  InvalidCommentToken: 'comments are not allowed in JSON',
+  UnexpectedEndOfComment: 'comments are not allowed in JSON',
+  UnexpectedEndOfString: 'the string is not closed',
+  UnexpectedEndOfNumber: 'the number is not complete',
+  InvalidUnicode: 'invalid \\u escape',
+  InvalidEscapeCharacter: 'invalid escape character',
+  InvalidCharacter: 'invalid character in a string (a line break or control character)',
+};
+
+/** Strict JSON (no comments, no trailing commas); a syntax error names the line and column. */
+function parseJson(text: string, file: string): unknown {
+  const errors: ParseError[] = [];
+  const value: unknown = parseJsonc(text, errors, { disallowComments: true, allowTrailingComma: false, allowEmptyContent: false });
+  const first = errors[0];
+  if (first) {
+    const { line, column } = lineColumn(text, first.offset);
+    const code = printParseErrorCode(first.error);
+    const found = text.slice(first.offset, first.offset + Math.min(first.length || 1, 20));
+    const near = first.offset >= text.length ? 'at the end of the file' : `at ${JSON.stringify(found)}`;
+    throw new ConfigError(`${file}:${line}:${column}`, `not valid JSON: ${PARSE_ERROR_WORDS[code] ?? code} ${near} (line ${line}, column ${column})`);
+  }
+  return value;
 }
 
 export interface DuplicateKey {

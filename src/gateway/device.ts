@@ -23,6 +23,15 @@ export interface DeviceListener {
    * desired state from here on, so nothing but the safe image is written until the hub drives it again.
    */
   lost(reason: string): void;
+  /**
+   * The device's outputs read back differently from what this gateway last wrote and the device
+   * acknowledged: another Modbus master (or the device itself) is writing them. The hub disarms; the
+   * device writes the safe image once and then stops writing its outputs until it is driven again.
+   * `text` names the device and the first difference, in plain words.
+   */
+  otherMaster?(text: string): void;
+  /** A line for the gateway log. */
+  log?(line: string): void;
 }
 
 export interface Device {
@@ -57,6 +66,15 @@ export interface Device {
    * acknowledged it.
    */
   finalSafe(deadlineMs: number): Promise<boolean>;
+  /**
+   * While another master was seen writing this device's outputs (and the gateway stopped writing
+   * them): what was seen, in plain words; null otherwise.
+   */
+  conflict?(): string | null;
+  /** Why `arm` must wait: another master changed the outputs moments ago; null when arming is allowed. */
+  armBlocker?(): string | null;
+  /** How long the safe image has been wanted but not acknowledged (ms), or null. */
+  safePendingMs?(): number | null;
   /** Requests waiting in the device's queue (a backlog that must not grow). */
   queueDepth(): number;
   close(): Promise<void>;

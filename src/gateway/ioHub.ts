@@ -76,6 +76,8 @@ export class IoHub {
         written: (v) => this.listener.written(v),
         status: () => this.listener.status(),
         lost: (reason) => this.deviceLost(d, reason),
+        otherMaster: (text) => this.otherMaster(text),
+        log: (line) => this.listener.log(line),
       });
       // Nothing is driven before an arm: whatever a previous run left on the outputs is switched off.
       void d.safe(0);
@@ -106,7 +108,14 @@ export class IoHub {
   }
 
   status(): Omit<StatusMessage, 'v' | 't'> {
-    const devices: DeviceStatus[] = this.devices.map((d) => ({ id: d.info.id, state: d.state, error: d.error, outputs: d.outputsState() }));
+    const devices: DeviceStatus[] = this.devices.map((d) => ({
+      id: d.info.id,
+      state: d.state,
+      error: d.error,
+      outputs: d.outputsState(),
+      safePendingMs: d.safePendingMs?.() ?? null,
+      conflict: d.conflict?.() ?? null,
+    }));
     return {
       devices,
       armed: this.armed,
@@ -208,6 +217,10 @@ export class IoHub {
         message: `device "${d.info.id}" is ${d.state}${d.error ? ` (${d.error})` : ''}: outputs stay in the safe state; arm again when it is online`,
       };
     }
+    for (const d of this.devices) {
+      const blocker = d.armBlocker?.();
+      if (blocker) return { code: 'arm-refused', message: `${blocker}; outputs stay in the safe state` };
+    }
     if (!this.armed) {
       this.setArmed();
       this.listener.log('outputs armed by the controller');
@@ -258,7 +271,8 @@ export class IoHub {
     if (cause === 'watchdog') this.watchdogState = 'tripped';
     else if (this.watchdogState === 'fed') this.watchdogState = 'idle';
     this.armed = false;
-    if (wasArmed || cause === 'shutdown') {
+    // Another master is news even while disarmed: it is why this gateway stopped writing a device.
+    if (wasArmed || cause === 'shutdown' || cause === 'other-master') {
       this.disarmInfo = { cause, message, at: Date.now() };
       this.refusalSent = false;
       this.listener.log(`disarmed (${cause}): ${message}`);
@@ -272,6 +286,15 @@ export class IoHub {
     if (this.armed) {
       this.disarm('device-lost', `device "${d.info.id}" lost its connection (${reason}); it may have restarted, so its outputs are not written again until the controller arms`);
     } else this.listener.status();
+  }
+
+  /** Another Modbus master writes a device's outputs: disarm and say so; the device stops writing them. */
+  private otherMaster(text: string): void {
+    if (this.closing) return;
+    this.disarm(
+      'other-master',
+      `${text}: disarmed. This gateway switched off the outputs it still drove there and stops writing that device's outputs, so the two masters do not fight; stop the other master, then arm`,
+    );
   }
 
   private devicesDown(): Device[] {

@@ -71,6 +71,9 @@ function buildIfNeeded(): void {
   if (r.status !== 0) throw new Error('vite build failed; see the messages above');
 }
 
+/** A write to a closed terminal or pipe. */
+const isBrokenPipe = (e: unknown) => typeof e === 'object' && e !== null && 'code' in e && (e.code === 'EPIPE' || e.code === 'EIO' || e.code === 'ERR_STREAM_DESTROYED');
+
 async function main(): Promise<void> {
   const args = parseArgs(process.argv.slice(2));
   const base: ResolvedConfig = args.config ? loadConfigFile(args.config) : resolveConfig({});
@@ -81,7 +84,16 @@ async function main(): Promise<void> {
   const port = args.port ?? envPort ?? config.port ?? 8080;
   const token = process.env.RUNGSMITH_TOKEN || undefined;
   if (token !== undefined && token.length < 16) throw new ConfigError('RUNGSMITH_TOKEN', 'needs at least 16 characters');
-  const log = (line: string) => process.stderr.write(`[gateway] ${line}\n`);
+  // A closed terminal or a dropped SSH session leaves stdout/stderr as broken pipes (EPIPE, EIO):
+  // a log line must never throw or end the process before the safe write.
+  for (const stream of [process.stdout, process.stderr]) stream.on('error', () => undefined);
+  const log = (line: string) => {
+    try {
+      if (process.stderr.writable) process.stderr.write(`[gateway] ${line}\n`);
+    } catch {
+      // the log is lost; the shutdown is not
+    }
+  };
   const distDir = args.app ? join(ROOT, 'dist') : null;
 
   const running: { gw?: RunningGateway } = {};
@@ -111,9 +123,13 @@ async function main(): Promise<void> {
       process.exit(exitCode);
     }
   };
-  process.on('SIGINT', () => void shutdown('SIGINT', 0));
-  process.on('SIGTERM', () => void shutdown('SIGTERM', 0));
+  // Every catchable way to end the process runs the same shutdown: Ctrl+C, kill, a closed terminal
+  // or dropped SSH session (SIGHUP), Ctrl+\ (SIGQUIT), and on Windows Ctrl+Break / a closed console.
+  const signals: NodeJS.Signals[] = ['SIGINT', 'SIGTERM', 'SIGHUP', 'SIGQUIT'];
+  if (process.platform === 'win32') signals.push('SIGBREAK');
+  for (const signal of signals) process.on(signal, () => void shutdown(signal, 0));
   process.on('uncaughtException', (e) => {
+    if (exiting && isBrokenPipe(e)) return; // a log write to a closed terminal during shutdown
     log(`uncaught error: ${e.stack ?? e.message}`);
     void shutdown('uncaught error', 1);
   });
@@ -126,7 +142,11 @@ async function main(): Promise<void> {
   running.gw = gw;
   const sim = gw.simulated?.modbusServerPort;
   log(gw.simulated ? `simulated I/O device (16 DI, 16 DO, 4 AI, 4 AO)${sim ? `, Modbus TCP on 127.0.0.1:${sim}` : ''}` : `${config.devices.length} Modbus TCP device(s)`);
-  process.stdout.write(`Rungsmith gateway: open ${gw.url}\n`);
+  try {
+    process.stdout.write(`Rungsmith gateway: open ${gw.url}\n`);
+  } catch {
+    log(`open ${gw.url}`);
+  }
 }
 
 main().catch((e: unknown) => {

@@ -13,6 +13,13 @@ import { fromRegister, planBlocks, toRegister, type RequestBlock } from './modbu
 export const FAILED_POLLS_OFFLINE = 3;
 export const BACKOFF_FIRST_MS = 1000;
 export const BACKOFF_MAX_MS = 30_000;
+/** After another master last changed a device's outputs, `arm` waits this long (it is probably still running). */
+export const OTHER_MASTER_QUIET_MS = 3000;
+
+const onOff = (v: WireValue) => (typeof v === 'boolean' ? (v ? 'ON' : 'OFF') : String(v));
+const isTimeout = (e: unknown) => /timed out/i.test(message(e));
+/** A Modbus exception response (the device answered, refusing the request). */
+const isModbusException = (e: unknown) => typeof e === 'object' && e !== null && 'modbusCode' in e;
 
 const message = (e: unknown) => (e instanceof Error ? e.message : typeof e === 'object' && e && 'message' in e ? String(e.message) : String(e));
 
@@ -60,9 +67,27 @@ export class ModbusTcpDevice implements Device {
   private timer: NodeJS.Timeout | undefined;
   private closed = false;
   private requestTimeoutMs: number;
+  /** Since when the safe image is wanted and not acknowledged (null: acknowledged, or driven). */
+  private safeSince: number | null = Date.now();
+  private pendingTimer: NodeJS.Timeout | undefined;
+  private pendingLogged = false;
+  /** The last safe write timed out after its own (long) deadline: start over on a new connection. */
+  private safeWriteTimedOut = false;
+  // Read-back of the outputs (another master): what the outputs should read now (our last
+  // acknowledged write, or what was read back last), valid once written on this connection.
+  private readBackOn: boolean;
+  private readBackRefused: string | null = null;
+  private baselineValid = false;
+  private readonly lastSeen = new Map<string, WireValue>();
+  /** Another master was seen: the safe image is written once, then nothing until driven again. */
+  private handsOff = false;
+  private conflictText: string | null = null;
+  private foreignChangeAt = 0;
+  private readonly aborters = new Set<() => void>();
 
   constructor(private readonly cfg: ResolvedDevice) {
     this.requestTimeoutMs = cfg.timeoutMs;
+    this.readBackOn = cfg.readBackOutputs;
     this.info = { id: cfg.id, kind: 'modbus-tcp' as const, target: `${cfg.host}:${cfg.port} unit ${cfg.unitId}` };
     this.points = cfg.resolvedPoints;
     this.readBlocks = planBlocks(this.points.filter((p) => p.dir === 'in'), false);
@@ -87,12 +112,24 @@ export class ModbusTcpDevice implements Device {
   outputsState(): DeviceOutputs {
     return this.mode === 'drive' ? 'driven' : this.safeAcked ? 'safe' : 'safe-pending';
   }
+  conflict(): string | null {
+    return this.handsOff ? this.conflictText : null;
+  }
+  armBlocker(): string | null {
+    const ago = Date.now() - this.foreignChangeAt;
+    if (!this.handsOff || ago >= OTHER_MASTER_QUIET_MS) return null;
+    return `${this.conflictText ?? `another Modbus master is writing device "${this.info.id}"'s outputs`}; they changed ${(ago / 1000).toFixed(1)} s ago: stop the other master, then arm`;
+  }
+  safePendingMs(): number | null {
+    return this.mode === 'safe' && !this.safeAcked && this.safeSince !== null ? Date.now() - this.safeSince : null;
+  }
   queueDepth(): number {
     return Math.max(0, this.depth - 1); // waiting behind the request on the wire
   }
 
   start(listener: DeviceListener): Promise<void> {
     this.listener = listener;
+    this.setSafeAcked(false); // the safe image is pending from the start
     void this.tick();
     return Promise.resolve();
   }
@@ -102,7 +139,14 @@ export class ModbusTcpDevice implements Device {
     const before = this.outputsState();
     let changed = this.mode !== 'drive';
     this.mode = 'drive';
-    this.safeAcked = false;
+    this.setSafeAcked(false);
+    if (this.handsOff) {
+      // Armed again by the operator: writing resumes; what the other master left is not a conflict of ours.
+      this.handsOff = false;
+      this.conflictText = null;
+      this.baselineValid = false;
+      changed = true;
+    }
     for (const [a, v] of values) {
       if (!this.desired.has(a)) continue;
       if (this.desired.get(a) !== v) changed = true;
@@ -150,6 +194,7 @@ export class ModbusTcpDevice implements Device {
   async close(): Promise<void> {
     this.closed = true;
     clearTimeout(this.timer);
+    clearInterval(this.pendingTimer);
     await withTimeout(this.queue, this.cfg.timeoutMs, 'pending requests').catch(() => undefined);
     this.dropClient();
     this.ackWaiters.forEach((w) => w());
@@ -159,7 +204,7 @@ export class ModbusTcpDevice implements Device {
   private enterSafe(): void {
     if (this.mode === 'safe') return;
     this.mode = 'safe';
-    this.safeAcked = false;
+    this.setSafeAcked(false);
     const image = safeImage(this.points, this.written, (p) => zeroOf(p.type));
     for (const [a, v] of image) this.desired.set(a, v);
     this.desiredVersion++;
@@ -215,7 +260,16 @@ export class ModbusTcpDevice implements Device {
         // write of the current image went out since the last poll.
         const fresh = this.wroteSincePoll && !this.writeDue;
         this.wroteSincePoll = false;
-        if (!fresh) await this.writeAll(true);
+        // Read the outputs back first: another master writing them shows as a difference from our
+        // last acknowledged write (nothing of ours is in flight: this queue is the only writer).
+        this.readBackRefused = null;
+        if (this.readBackDue()) await this.readBack();
+        const wrote = !fresh && (await this.writeAll(true));
+        if (this.readBackRefused !== null && wrote) {
+          // The device takes writes but refuses reads of the same outputs: detection is not possible.
+          this.readBackOn = false;
+          this.listener?.log?.(`device "${this.info.id}" refuses reads of its outputs (${this.readBackRefused}): another Modbus master writing them cannot be detected`);
+        }
         await this.readAll();
       });
       this.pollSucceeded();
@@ -230,6 +284,9 @@ export class ModbusTcpDevice implements Device {
     this.dropClient();
     const client = new ModbusClient();
     client.on('error', () => undefined); // socket errors surface as failed requests
+    client.on('close', () => {
+      if (this.client === client) [...this.aborters].forEach((abort) => abort());
+    });
     client.setTimeout(this.requestTimeoutMs); // before connect: a silent peer must not hang a request
     client.setID(this.cfg.unitId);
     this.client = client;
@@ -244,20 +301,44 @@ export class ModbusTcpDevice implements Device {
     // A new connection may be a restarted device: write the desired image (safe unless driven) first thing.
     this.connected = true;
     this.writeDue = true;
+    this.baselineValid = false; // a new connection may be a restarted device: nothing to compare with yet
   }
 
   /**
    * One Modbus request, settled for sure: modbus-serial's own timeout is cancelled without an answer
    * when the connection is destroyed, which would leave the queue (and every later safe write) stuck.
    */
-  private request<T>(job: () => Promise<T>): Promise<T> {
-    return withTimeout(job(), this.requestTimeoutMs + 100, 'Modbus request');
+  private request<T>(job: () => Promise<T>, timeoutMs = this.requestTimeoutMs): Promise<T> {
+    const client = this.client;
+    if (!client?.isOpen) return Promise.reject(new Error('not connected'));
+    client.setTimeout(timeoutMs);
+    // A connection that closes settles the request at once (a long safe write must not wait out its deadline).
+    let abort: () => void = () => undefined;
+    const closed = new Promise<never>((_, reject) => {
+      abort = () => reject(new Error('the connection closed'));
+    });
+    this.aborters.add(abort);
+    // A long wait (the safe write on a slow device) still counts as failed polls every timeoutMs, so
+    // the device goes offline with stale inputs as promptly as a device that does not answer at all.
+    const slow = timeoutMs > this.requestTimeoutMs ? setInterval(() => this.noteSlow(timeoutMs), Math.max(this.requestTimeoutMs, this.cfg.pollMs)) : undefined;
+    return withTimeout(Promise.race([job(), closed]), timeoutMs + 100, 'Modbus request').finally(() => {
+      clearInterval(slow);
+      this.aborters.delete(abort);
+    });
+  }
+
+  /** The safe write has waited another `timeoutMs` without an answer: one more failed poll, the connection kept. */
+  private noteSlow(waitMs: number): void {
+    this.failedPolls++;
+    this.noteError(new Error(`request timed out after ${this.cfg.timeoutMs} ms; the safe write keeps waiting up to ${waitMs} ms for the answer`));
+    this.offlineIfDue(this.error ?? 'no answer');
   }
 
   private dropClient(): void {
     const client = this.client;
     this.client = undefined;
     client?.destroy(() => undefined);
+    [...this.aborters].forEach((abort) => abort());
   }
 
   /** The device may have restarted or lost its outputs: report it once per connection. */
@@ -265,8 +346,8 @@ export class ModbusTcpDevice implements Device {
     const wasConnected = this.connected;
     this.connected = false;
     this.writeDue = true;
-    if (this.safeAcked) {
-      this.safeAcked = false; // unknown until written again on the next connection
+    if (this.safeAcked && !this.handsOff) {
+      this.setSafeAcked(false); // unknown until written again on the next connection
       this.listener?.status();
     }
     if (wasConnected) this.listener?.lost(reason);
@@ -296,34 +377,151 @@ export class ModbusTcpDevice implements Device {
     }
   }
 
-  /** Writes one snapshot of the desired image, block by block (coils, then registers). */
-  private async writeAll(fromPoll: boolean): Promise<void> {
+  /**
+   * Writes one snapshot of the desired image, block by block (coils, then registers); false when
+   * nothing was written (hands off after another master was seen, the safe image already written).
+   * A write of the safe image waits as long as a slow device needs (`safeWriteTimeoutMs`).
+   */
+  private async writeAll(fromPoll: boolean): Promise<boolean> {
     const client = this.client;
     if (!client?.isOpen) throw new Error('not connected');
+    if (!this.final && this.handsOff && this.mode === 'safe' && this.safeAcked) return false;
     const version = this.desiredVersion;
     const mode = this.mode;
+    const timeoutMs = mode === 'safe' && !this.final ? Math.max(this.requestTimeoutMs, this.cfg.safeWriteTimeoutMs) : this.requestTimeoutMs;
     const image = this.writeBlocks.map((b) => b.points.map((p) => this.desired.get(p.address) ?? zeroOf(p.type)));
     const changed = new Map<string, WireValue>();
-    for (const [i, b] of this.writeBlocks.entries()) {
-      const vals = image[i] ?? [];
-      if (b.table === 'coils') await this.request(() => client.writeCoils(b.start, vals.map((v) => v === true)));
-      else await this.request(() => client.writeRegisters(b.start, vals.map(toRegister)));
-      b.points.forEach((p, k) => {
-        const v = vals[k] ?? zeroOf(p.type);
-        if (this.written.get(p.address) !== v) changed.set(p.address, v);
-        this.written.set(p.address, v);
-      });
+    try {
+      for (const [i, b] of this.writeBlocks.entries()) {
+        const vals = image[i] ?? [];
+        if (b.table === 'coils') await this.request(() => client.writeCoils(b.start, vals.map((v) => v === true)), timeoutMs);
+        else await this.request(() => client.writeRegisters(b.start, vals.map(toRegister)), timeoutMs);
+        b.points.forEach((p, k) => {
+          const v = vals[k] ?? zeroOf(p.type);
+          if (this.written.get(p.address) !== v) changed.set(p.address, v);
+          this.written.set(p.address, v);
+          this.lastSeen.set(p.address, v);
+        });
+      }
+    } catch (e) {
+      this.baselineValid = false; // what the device holds now is unknown until the next acknowledged write
+      if (mode === 'safe' && isTimeout(e)) this.safeWriteTimedOut = true;
+      if (changed.size) this.listener?.written(changed);
+      throw e;
     }
+    this.baselineValid = true;
     if (!fromPoll) this.wroteSincePoll = true;
     if (version === this.desiredVersion) {
       this.writeDue = false;
       if (mode === 'safe' && this.mode === 'safe' && !this.safeAcked) {
-        this.safeAcked = true;
+        this.setSafeAcked(true);
         this.listener?.status();
         [...this.ackWaiters].forEach((w) => w());
       }
     }
     if (changed.size) this.listener?.written(changed);
+    return true;
+  }
+
+  private readBackDue(): boolean {
+    // Never ahead of a pending safe write: it goes first.
+    return this.readBackOn && this.baselineValid && !this.final && !(this.mode === 'safe' && !this.safeAcked);
+  }
+
+  /**
+   * Reads the outputs back and compares them with what they should be: our last acknowledged write,
+   * or (hands off) what was read back last. A difference is another master or the device itself.
+   */
+  private async readBack(): Promise<void> {
+    const client = this.client;
+    if (!client) throw new Error('not connected');
+    const seen = new Map<string, WireValue>();
+    for (const b of this.writeBlocks) {
+      const n = b.points.length;
+      let raw: readonly (boolean | number)[];
+      try {
+        if (b.table === 'coils') raw = (await this.request(() => client.readCoils(b.start, n))).data;
+        else raw = (await this.request(() => client.readHoldingRegisters(b.start, n))).data;
+      } catch (e) {
+        if (!isModbusException(e)) throw e;
+        this.readBackRefused = message(e);
+        return;
+      }
+      b.points.forEach((p, i) => {
+        const r = raw[i];
+        seen.set(p.address, typeof r === 'boolean' ? r : fromRegister(p.type, r ?? 0));
+      });
+    }
+    const diffs: [string, WireValue, WireValue][] = [];
+    for (const [a, v] of seen) {
+      const expected = this.lastSeen.get(a);
+      if (expected !== undefined && expected !== v) diffs.push([a, v, expected]);
+      this.lastSeen.set(a, v);
+    }
+    if (diffs.length === 0) return;
+    this.foreignChangeAt = Date.now();
+    if (this.handsOff) return; // already reported; writing stays stopped
+    const [a, v, wrote] = diffs[0]!;
+    const more = diffs.length > 1 ? `, and ${diffs.length - 1} more output${diffs.length > 2 ? 's' : ''}` : '';
+    this.conflictText = `another Modbus master is writing device "${this.info.id}"'s outputs (${a} read back ${onOff(v)}, we wrote ${onOff(wrote)}${more})`;
+    this.handsOff = true;
+    const wasDriven = this.mode === 'drive';
+    this.enterSafe();
+    // The hub disarms first, so no `drive` can undo this while the writes below are on the wire.
+    this.listener?.otherMaster?.(this.conflictText);
+    if (wasDriven) {
+      // Switch off only what is still ours: outputs that read back as we drove them and are not safe.
+      // Outputs the other master changed are left to it (writing them would be one more flip).
+      const zero = safeImage(this.points, this.written, (p) => zeroOf(p.type));
+      const changed = new Map<string, WireValue>();
+      for (const b of this.writeBlocks) {
+        for (const p of b.points) {
+          const safe = zero.get(p.address) ?? zeroOf(p.type);
+          if (seen.get(p.address) !== this.written.get(p.address) || this.written.get(p.address) === safe) continue;
+          if (b.table === 'coils') await this.request(() => client.writeCoil(p.register, safe === true));
+          else await this.request(() => client.writeRegister(p.register, toRegister(safe)));
+          this.written.set(p.address, safe);
+          this.lastSeen.set(p.address, safe);
+          changed.set(p.address, safe);
+        }
+      }
+      if (changed.size) this.listener?.written(changed);
+    }
+    // Our part of the outputs is in the safe state; from here on nothing is written until driven again.
+    this.writeDue = false;
+    this.setSafeAcked(true);
+    [...this.ackWaiters].forEach((w) => w());
+    this.listener?.status();
+  }
+
+  /** Acknowledged or not; while not, status says for how long (every second) and the log says it once when slow. */
+  private setSafeAcked(acked: boolean): void {
+    const pending = !acked && this.mode === 'safe';
+    this.safeAcked = acked;
+    if (!pending) {
+      if (this.pendingLogged && this.safeSince !== null && acked) {
+        this.listener?.log?.(`device "${this.info.id}": safe state acknowledged after ${((Date.now() - this.safeSince) / 1000).toFixed(1)} s`);
+      }
+      this.safeSince = null;
+      this.pendingLogged = false;
+      clearInterval(this.pendingTimer);
+      this.pendingTimer = undefined;
+      return;
+    }
+    this.safeSince ??= Date.now();
+    if (this.pendingTimer || this.closed) return;
+    this.pendingTimer = setInterval(() => {
+      const ms = this.safePendingMs();
+      if (ms === null) return;
+      if (!this.pendingLogged && ms >= this.cfg.timeoutMs) {
+        this.pendingLogged = true;
+        this.listener?.log?.(
+          `device "${this.info.id}": safe state pending for ${(ms / 1000).toFixed(1)} s (${this.error ?? 'not acknowledged yet'}); each safe write waits up to ${this.cfg.safeWriteTimeoutMs} ms for the device's answer and is retried until acknowledged`,
+        );
+      }
+      this.listener?.status();
+    }, 1000);
+    this.pendingTimer.unref();
   }
 
   private pollSucceeded(): void {
@@ -348,11 +546,23 @@ export class ModbusTcpDevice implements Device {
       this.nextConnectAt = Date.now() + this.backoffMs; // connection lost: first retry after the backoff
     }
     if (this.client && /timed out/i.test(text)) {
-      // A silent peer: start over on a fresh connection so late replies cannot be mistaken for new ones.
-      this.dropClient();
-      this.connectionLost(text);
-      this.nextConnectAt = Date.now() + this.backoffMs;
+      // A silent peer: start over on a fresh connection. Not while the safe image is wanted and its
+      // own write has not timed out: a slow device keeps its connection so the safe write is not
+      // abandoned to a reconnect (a late reply to an earlier request is matched by its transaction
+      // id and dropped).
+      const keep = this.mode === 'safe' && !this.final && !this.safeWriteTimedOut;
+      if (!keep) {
+        this.dropClient();
+        this.connectionLost(text);
+        this.nextConnectAt = Date.now() + this.backoffMs;
+      }
     }
+    this.safeWriteTimedOut = false;
+    this.offlineIfDue(text);
+  }
+
+  /** After FAILED_POLLS_OFFLINE failed polls: offline, inputs stale, and the hub is told (it disarms). */
+  private offlineIfDue(text: string): void {
     if (this.failedPolls >= FAILED_POLLS_OFFLINE && this.state !== 'offline') {
       this.state = 'offline';
       for (const a of this.quality.keys()) this.quality.set(a, 'stale');

@@ -73,6 +73,16 @@ export const deviceStatusSchema = z.object({
   state: deviceStateSchema,
   error: z.string().nullable(),
   outputs: deviceOutputsSchema,
+  /**
+   * Extension of v1 (optional, older gateways omit it): how long (ms) the safe image has been wanted
+   * and not acknowledged (a slow or unreachable device), null when not pending.
+   */
+  safePendingMs: z.number().nonnegative().nullable().optional(),
+  /**
+   * Extension of v1 (optional): another Modbus master was seen writing this device's outputs and the
+   * gateway stopped writing them until armed again, in plain words; null otherwise.
+   */
+  conflict: z.string().nullable().optional(),
 });
 export type DeviceStatus = z.infer<typeof deviceStatusSchema>;
 /** `idle`: no lease running (no outputs yet, or stopped); `fed`: outputs arriving; `tripped`: lease expired. */
@@ -96,9 +106,11 @@ export const writtenSchema = z.object({ v, t: z.literal('written'), seq, values 
  * `start` no controller has armed since the gateway started; `stop` the controller sent stop (STOP
  * or the Safe state button); `watchdog` the lease expired; `controller-lost` the controller's
  * connection closed; `device-lost` a device's connection was lost or it went offline (it may have
- * restarted: its outputs are never re-written without an arm); `shutdown` the gateway is exiting.
+ * restarted: its outputs are never re-written without an arm); `shutdown` the gateway is exiting;
+ * `other-master` (added in v1, for gateways that detect it) another Modbus master was seen writing a
+ * device's outputs.
  */
-export const DISARM_CAUSES = ['start', 'stop', 'watchdog', 'controller-lost', 'device-lost', 'shutdown'] as const;
+export const DISARM_CAUSES = ['start', 'stop', 'watchdog', 'controller-lost', 'device-lost', 'shutdown', 'other-master'] as const;
 export type DisarmCause = (typeof DISARM_CAUSES)[number];
 export const disarmSchema = z.object({
   cause: z.enum(DISARM_CAUSES),

@@ -103,10 +103,48 @@ describe('gateway config', () => {
     expect(loadConfigFile(file).devices[0]?.resolvedPoints).toHaveLength(2);
   });
 
+  it.each([
+    ['{ "devices": [ }', 1, 16, 'a value expected at "}"'],
+    ['{\n  "watchdogMs": 500\n  "autoRearm": true\n}', 3, 3, '"," expected at "\\"autoRearm\\""'],
+    ['{\n  "watchdogMs": 500,\n}', 3, 1, 'a key in double quotes expected at "}"'],
+    ['{\n  // comment\n  "watchdogMs": 500\n}', 2, 3, 'comments are not allowed in JSON'],
+    ['{\n  "devices": [\n', 3, 1, 'at the end of the file'],
+    ["{\n  'watchdogMs': 500\n}", 2, 3, 'unexpected character'],
+  ])('a JSON syntax error names the line and column: %j', (text, line, column, words) => {
+    const dir = mkdtempSync(join(tmpdir(), 'rungsmith-cfg-'));
+    const file = join(dir, 'bad.json');
+    writeFileSync(file, text);
+    expect(() => loadConfigFile(file)).toThrow(`${file}:${line}:${column}: not valid JSON: `);
+    expect(() => loadConfigFile(file)).toThrow(`(line ${line}, column ${column})`);
+    expect(() => loadConfigFile(file)).toThrow(words);
+  });
+
+  it('accepts a file that starts with a UTF-8 byte order mark (as Windows editors save it)', () => {
+    const dir = mkdtempSync(join(tmpdir(), 'rungsmith-cfg-'));
+    const file = join(dir, 'bom.json');
+    const json = JSON.stringify({ watchdogMs: 700, devices: [{ id: 'a', host: '127.0.0.1', points: [{ address: '%QX0.0' }] }] }, null, 2);
+    writeFileSync(file, Buffer.concat([Buffer.from([0xef, 0xbb, 0xbf]), Buffer.from(json, 'utf8')]));
+    const c = loadConfigFile(file);
+    expect(c.watchdogMs).toBe(700);
+    expect(c.devices[0]?.resolvedPoints.map((p) => p.address)).toEqual(['%QX0.0']);
+  });
+
+  it.each([
+    ['999.1.1.1', '"999.1.1.1" is not an IPv4 address: 999 is above 255'],
+    ['192.168.1.256', '"192.168.1.256" is not an IPv4 address: 256 is above 255'],
+    ['10.0.1', '"10.0.1" is not an IPv4 address: it needs four numbers 0-255'],
+    ['1.2.3.4.5', '"1.2.3.4.5" is not an IPv4 address'],
+  ])('refuses the host %s at start, located at its key path', (host, words) => {
+    const dir = mkdtempSync(join(tmpdir(), 'rungsmith-cfg-'));
+    const file = join(dir, 'gw.json');
+    writeFileSync(file, JSON.stringify({ devices: [{ id: 'a', host: '127.0.0.1', points: [{ address: '%IX0.0' }] }, { id: 'b', host, points: [{ address: '%QX0.0' }] }] }));
+    expect(() => loadConfigFile(file)).toThrow(`${file}: invalid gateway config\n  devices[1].host: ${words}`);
+  });
+
   it('names the file when it is not JSON', () => {
     const dir = mkdtempSync(join(tmpdir(), 'rungsmith-cfg-'));
     const file = join(dir, 'bad.json');
     writeFileSync(file, '{ "devices": [ }');
-    expect(() => loadConfigFile(file)).toThrow(`${file}: not valid JSON`);
+    expect(() => loadConfigFile(file)).toThrow(`${file}:1:16: not valid JSON`);
   });
 });

@@ -313,3 +313,28 @@ export class CuttableLink {
     return new Promise((resolve) => this.server.close(() => resolve()));
   }
 }
+
+/** The real gateway process (`bin/rungsmith-gateway.mjs --no-app`) on a config file, with its URL parsed. */
+export interface GatewayProcess {
+  readonly proc: ChildProcessWithoutNullStreams;
+  readonly port: number;
+  readonly token: string;
+  /** Everything the process wrote to stderr so far (its log). */
+  stderr(): string;
+  /** Resolves with the exit code (null when ended by a signal) and the signal. */
+  readonly exited: Promise<{ code: number | null; signal: NodeJS.Signals | null }>;
+}
+
+export async function spawnGateway(configFile: string): Promise<GatewayProcess> {
+  const proc = spawn(process.execPath, ['bin/rungsmith-gateway.mjs', '--port', '0', '--config', configFile, '--no-app'], { stdio: ['pipe', 'pipe', 'pipe'] });
+  let log = '';
+  proc.stderr.on('data', (d: Buffer) => (log += d.toString()));
+  const exited = new Promise<{ code: number | null; signal: NodeJS.Signals | null }>((resolve) => proc.once('exit', (code, signal) => resolve({ code, signal })));
+  const line = await new Promise<string>((resolve, reject) => {
+    createInterface({ input: proc.stdout }).once('line', resolve);
+    proc.once('exit', () => reject(new Error(`gateway exited before printing its URL:\n${log}`)));
+  });
+  const m = /open http:\/\/127\.0\.0\.1:(\d+)\/#token=(\S+)$/.exec(line);
+  if (!m) throw new Error(`unexpected first line: ${line}`);
+  return { proc, port: Number(m[1]), token: m[2] ?? '', stderr: () => log, exited };
+}

@@ -77,15 +77,33 @@ describe('gateway with a Modbus TCP device', () => {
     c.close();
   });
 
-  it('rewrites the outputs every poll, so a coupler that lost them gets them back', async () => {
+  it('a coil changed behind its back (a coupler that cleared it, or another master) disarms instead of being fought over; arm rewrites it', async () => {
     const c = await TestClient.armedController(gw.port, gw.token);
     c.send({ t: 'outputs', seq: 1, values: { '%QX0.2': true } });
     await eventually(async () => (await plant.get('co', 2, 1))[0] === 1, 3000, 'coil on');
-    await plant.set('co', 2, [0]); // the coupler restarted and cleared its coils
+    const mark = c.messages.length;
+    await plant.set('co', 2, [0]); // the coupler cleared its coil (its own watchdog, a restart, a panel)
     const feed = setInterval(() => c.send({ t: 'outputs', seq: 2, values: { '%QX0.2': true } }), 50);
     try {
+      const s = await c.waitFor((m) => m.t === 'status' && m.disarm?.cause === 'other-master', 5000, mark);
+      expect(s.t === 'status' && s.disarm?.message).toContain('another Modbus master is writing device "plant"\'s outputs (%QX0.2 read back OFF, we wrote ON): disarmed');
+      // Not rewritten ON by the running program: the gateway is disarmed and leaves the outputs alone.
+      for (let i = 0; i < 5; i++) {
+        await new Promise((r) => setTimeout(r, POLL_MS));
+        expect(await plant.get('co', 2, 1)).toEqual([0]);
+      }
+      // The operator arms again (once the outputs stay still): the program's image is written again, every poll.
+      await eventually(
+        async () => {
+          const from = c.messages.length;
+          c.send({ t: 'arm' });
+          const r = await c.waitFor((m) => (m.t === 'status' && m.armed) || (m.t === 'error' && m.code === 'arm-refused'), 5000, from);
+          return r.t === 'status';
+        },
+        10_000,
+        'armed again',
+      );
       await eventually(async () => (await plant.get('co', 2, 1))[0] === 1, 3000, 'coil rewritten');
-      expect(await plant.get('co', 2, 1)).toEqual([1]);
     } finally {
       clearInterval(feed);
       c.send({ t: 'stop' });

@@ -2,7 +2,7 @@
 // Safe state latches like STOP: the gateway refuses outputs until Arm, and a running simulation keeps
 // running without re-arming by itself (only Arm, or a new Run / confirmed step, arms).
 import { gatewayLink } from '../../bridge/gatewayLink';
-import { armBlocker, disarmWords, OUTPUTS_WORDS } from './armState';
+import { armBlocker, disarmWords, outputsWords } from './armState';
 import { hardwareStepping } from './useHardwareStepping';
 import { useGateway } from './useGateway';
 
@@ -46,7 +46,7 @@ export function GatewayStatus() {
                 {d.error ? `: ${d.error}` : ''}
               </td>
               <td className={`rs-hw-outputs rs-hw-outputs-${d.outputs}`} data-testid="hw-device-outputs">
-                {OUTPUTS_WORDS[d.outputs]}
+                {outputsWords(d)}
               </td>
             </tr>
           ))}

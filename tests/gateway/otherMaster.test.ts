@@ -1,0 +1,189 @@
+// Issue 21.2: two masters on one device. Two gateways (each with its own Modbus TCP connection) on
+// one pymodbus server: before, one wrote the program's image and the other the safe image every poll
+// (59 coil flips in 3 s). Now each reads the outputs back before rewriting them; the one that sees
+// them changed under it disarms (cause other-master), says so plainly, writes the safe image at most
+// once and stops writing, so the chatter stops. Asserted on the device's write log and its coils.
+import { mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { afterEach, describe, expect, it } from 'vitest';
+import { resolveConfig } from '../../src/gateway/config';
+import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
+import { freeLoopbackPort } from '../../src/gateway/modbusLib';
+import type { GatewayMessage } from '../../src/protocol/messages';
+import { eventually, mbpoll, PyModbusServer, readWriteLog, TestClient, type LoggedWrite } from './helpers';
+
+const POLL_MS = 20;
+const COILS = 4;
+type Status = Extract<GatewayMessage, { t: 'status' }>;
+const sleep = (ms: number) => new Promise((r) => setTimeout(r, ms));
+
+/** When each coil changed on the device, replaying every client's writes in order from all OFF. */
+export function coilFlips(writes: readonly LoggedWrite[], count: number): number[][] {
+  const state = new Array<number>(count).fill(0);
+  const flips: number[][] = Array.from({ length: count }, () => []);
+  for (const w of writes) {
+    if (w.table !== 'co') continue;
+    w.values.forEach((v, i) => {
+      const coil = w.address + i;
+      if (coil >= count || state[coil] === v) return;
+      state[coil] = v;
+      flips[coil]!.push(w.at);
+    });
+  }
+  return flips;
+}
+
+/** The most flips of one coil within any window of `ms`. */
+export function mostFlipsWithin(flips: readonly number[][], ms: number): number {
+  let most = 0;
+  for (const times of flips) {
+    for (let i = 0; i < times.length; i++) {
+      let n = 0;
+      for (let j = i; j < times.length && times[j]! - times[i]! < ms; j++) n++;
+      most = Math.max(most, n);
+    }
+  }
+  return most;
+}
+
+describe('two masters on one device (issue 21.2)', () => {
+  const gateways: RunningGateway[] = [];
+  const clients: TestClient[] = [];
+  const timers: NodeJS.Timeout[] = [];
+  let plant: PyModbusServer | undefined;
+  afterEach(async () => {
+    timers.splice(0).forEach((t) => clearInterval(t));
+    clients.splice(0).forEach((c) => c.close());
+    await Promise.all(gateways.splice(0).map((g) => g.close()));
+    await plant?.kill();
+  });
+
+  async function device(): Promise<{ port: number; writeLog: string }> {
+    const port = await freeLoopbackPort();
+    const writeLog = join(mkdtempSync(join(tmpdir(), 'rungsmith-masters-')), 'writes.log');
+    plant = await PyModbusServer.start(port, writeLog);
+    return { port, writeLog };
+  }
+
+  async function gateway(modbusPort: number, lines: string[]): Promise<RunningGateway> {
+    const config = resolveConfig({
+      watchdogMs: 2000,
+      devices: [{ id: 'plant', host: '127.0.0.1', port: modbusPort, pollMs: POLL_MS, timeoutMs: 500, points: [{ address: '%QX0.0', count: COILS }, { address: '%QW0' }] }],
+    });
+    const gw = await startGateway({ port: 0, config, distDir: null, log: (l) => lines.push(l) });
+    gateways.push(gw);
+    return gw;
+  }
+
+  /** A running program: the same image every 10 ms. */
+  function run(c: TestClient, values: Record<string, boolean | number>): void {
+    timers.push(setInterval(() => c.send({ t: 'outputs', seq: 1, values }), 10));
+  }
+
+  it('a gateway started next to a running one: the chatter stops, the driving one disarms with a plain message, the device ends OFF', async () => {
+    const { port, writeLog } = await device();
+    const linesA: string[] = [];
+    const a = await gateway(port, linesA);
+    const ca = await TestClient.armedController(a.port, a.token);
+    clients.push(ca);
+    run(ca, { '%QX0.0': true, '%QX0.1': false, '%QX0.2': true, '%QX0.3': true, '%QW0': 55 });
+    await eventually(async () => (await plant!.get('co', 0, COILS)).join() === '1,0,1,1', 5000, 'A drives its outputs');
+    const mark = ca.messages.length;
+
+    // A second gateway on the same device, disarmed: it keeps the safe image as its desired state.
+    const b = await gateway(port, []);
+    const ob = await TestClient.hello(b.port, b.token, 'observer');
+    clients.push(ob);
+    const startedB = Date.now();
+    await sleep(3000);
+
+    const s = await ca.waitFor((m): m is Status => m.t === 'status' && m.disarm?.cause === 'other-master', 5000, mark);
+    expect(s.armed).toBe(false);
+    expect(s.disarm?.message).toMatch(/^another Modbus master is writing device "plant"'s outputs \(%QX0\.0 read back OFF, we wrote ON, and \d more outputs?\): disarmed/);
+    expect(s.devices[0]?.conflict).toMatch(/another Modbus master is writing device "plant"'s outputs/);
+    expect(linesA.join('\n')).toContain('disarmed (other-master): another Modbus master is writing device "plant"\'s outputs');
+    // A's program keeps sending ON, but nothing turns them on again: the device ends OFF.
+    expect(await plant!.get('co', 0, COILS)).toEqual([0, 0, 0, 0]);
+    expect(await plant!.get('hr', 0, 1)).toEqual([0]);
+    const flips = coilFlips(readWriteLog(writeLog), COILS).map((times) => times.filter((t) => t >= startedB));
+    expect(flips.map((t) => t.length).every((n) => n <= 1), `flips after B started: ${JSON.stringify(flips)}`).toBe(true);
+    // The arm is refused while the other master is still changing them? Here it only writes the same
+    // safe image, so after the quiet time an arm is the operator's call; A's outputs stay off until then.
+    const last = await plant!.get('co', 0, COILS);
+    await sleep(10 * POLL_MS);
+    expect(await plant!.get('co', 0, COILS)).toEqual(last);
+  });
+
+  it('another master (mbpoll) switching one coil: the gateway switches off only the outputs it still drove, leaves that coil alone, and refuses to arm while it keeps changing', async () => {
+    const { port, writeLog } = await device();
+    const a = await gateway(port, []);
+    const ca = await TestClient.armedController(a.port, a.token);
+    clients.push(ca);
+    run(ca, { '%QX0.0': true, '%QX0.1': true, '%QX0.2': true, '%QX0.3': false, '%QW0': 9 });
+    await eventually(async () => (await plant!.get('co', 0, COILS)).join() === '1,1,1,0', 5000, 'A drives its outputs');
+    const mark = ca.messages.length;
+    // A second Modbus master (Debian's mbpoll) writes coil 3 ON once.
+    await mbpoll(port, ['-t', '0', '-r', '3', '127.0.0.1', '1']);
+    const s = await ca.waitFor((m): m is Status => m.t === 'status' && m.disarm?.cause === 'other-master', 5000, mark);
+    expect(s.disarm?.message).toContain('another Modbus master is writing device "plant"\'s outputs (%QX0.3 read back ON, we wrote OFF): disarmed');
+    // What A still drove is switched off; the coil the other master set is its own business.
+    await eventually(async () => (await plant!.get('co', 0, COILS)).join() === '0,0,0,1' && (await plant!.get('hr', 0, 1))[0] === 0, 5000, 'A switched its outputs off');
+    const mine = readWriteLog(writeLog).filter((w) => w.at >= s.disarm!.at - 1000);
+    expect(mine.some((w) => w.table === 'co' && w.address === 3 && w.values[0] === 0), JSON.stringify(mine)).toBe(false);
+    // The other master keeps changing it: A's operator cannot arm, and A writes nothing meanwhile.
+    const before = readWriteLog(writeLog).length;
+    for (let i = 0; i < 3; i++) {
+      await mbpoll(port, ['-t', '0', '-r', '3', '127.0.0.1', String(i % 2)]);
+      const from = ca.messages.length;
+      ca.send({ t: 'arm' });
+      const r = await ca.waitFor((m) => m.t === 'error' || (m.t === 'status' && m.armed), 5000, from);
+      expect(r.t === 'error' && r.code).toBe('arm-refused');
+      expect(r.t === 'error' && r.message).toMatch(/another Modbus master is writing device "plant"'s outputs .*changed \d+\.\d s ago: stop the other master, then arm/);
+    }
+    await sleep(5 * POLL_MS);
+    expect(readWriteLog(writeLog).slice(before).length).toBe(3); // only mbpoll's three writes
+  });
+
+  it('two armed programs with operators who keep re-arming: no master flips a coil more than once per poll, bursts are bounded, and the flipping stops', async () => {
+    const { port, writeLog } = await device();
+    const a = await gateway(port, []);
+    const b = await gateway(port, []);
+    const ca = await TestClient.armedController(a.port, a.token);
+    const cb = await TestClient.armedController(b.port, b.token);
+    clients.push(ca, cb);
+    const started = Date.now();
+    run(ca, { '%QX0.0': true, '%QX0.1': false, '%QX0.2': true, '%QX0.3': false, '%QW0': 1 });
+    run(cb, { '%QX0.0': false, '%QX0.1': true, '%QX0.2': false, '%QX0.3': true, '%QW0': 2 });
+    // Operators who press Arm every 200 ms whenever disarmed (the worst case).
+    const refusals: string[] = [];
+    for (const c of [ca, cb]) {
+      timers.push(
+        setInterval(() => {
+          if (c.lastStatus()?.armed === false) c.send({ t: 'arm' });
+        }, 200),
+      );
+      c.ws.on('message', (d) => {
+        const m = JSON.parse((d as Buffer).toString()) as { t: string; code?: string; message?: string };
+        if (m.t === 'error' && m.code === 'arm-refused' && m.message) refusals.push(m.message);
+      });
+    }
+    await sleep(6000);
+    const writes = readWriteLog(writeLog).filter((w) => w.at >= started);
+    const flips = coilFlips(readWriteLog(writeLog), COILS);
+    const total = flips.reduce((n, t) => n + t.length, 0);
+    // Before: ~20 flips per second per coil. Now: the masters stop fighting; an arm is refused while
+    // the other master changed the outputs moments ago, so a flip needs a quiet time and an operator.
+    // Each master writes at most once per poll; before either can read back, both may have written once.
+    expect(mostFlipsWithin(flips, POLL_MS), `flips: ${JSON.stringify(flips)}`).toBeLessThanOrEqual(2);
+    // A burst when both operators arm at once is at most each master's image then each one's safe image.
+    expect(mostFlipsWithin(flips, 1000), `flips: ${JSON.stringify(flips)}`).toBeLessThanOrEqual(4);
+    expect(total, `flips: ${JSON.stringify(flips)}`).toBeLessThanOrEqual(COILS * 8);
+    expect(refusals.some((r) => /another Modbus master is writing device "plant"'s outputs .*changed \d+\.\d s ago: stop the other master, then arm/.test(r)), refusals.slice(0, 3).join('\n')).toBe(true);
+    const statuses = [ca, cb].flatMap((c) => c.messages.filter((m): m is Status => m.t === 'status' && m.disarm?.cause === 'other-master'));
+    expect(statuses.length).toBeGreaterThan(0);
+    // The last second: no coil flipped.
+    const lastSecond = flips.flat().filter((t) => t > Date.now() - 1000);
+    expect(lastSecond.length, `writes in the run: ${writes.length}`).toBeLessThanOrEqual(COILS);
+  });
+});
