@@ -4,7 +4,7 @@ import { createServer, type IncomingMessage, type Server } from 'node:http';
 import type { AddressInfo, Socket } from 'node:net';
 import { resolve } from 'node:path';
 import { WebSocketServer } from 'ws';
-import { IO_PATH, MAX_FRAME_BYTES, type GatewayMessageBody } from '../protocol/messages';
+import { IO_PATH, MAX_FRAME_BYTES, PROTOCOL_VERSION, type GatewayMessageBody } from '../protocol/messages';
 import type { Quality, WireValue } from '../protocol/points';
 import { resolveConfig, type ResolvedConfig } from './config';
 import type { Device, Values } from './device';
@@ -21,12 +21,21 @@ import {
   MessageBudgets,
   newToken,
   originAllowed,
+  StallMeter,
 } from './security';
 import { MESSAGES_PER_SECOND, Session } from './session';
 import { SimulatedDevice } from './simulatedDevice';
 import { serveStatic, setSecurityHeaders } from './staticFiles';
 
+/** Sessions that said hello (observers and the controller); the last one is kept for a controller. */
 export const MAX_CLIENTS = 8;
+/**
+ * Sockets still waiting for their hello. They do not take the slots above; when this many wait, the
+ * one that waited longest is closed for a new one, so silent sockets can never lock a controller out.
+ */
+export const MAX_WAITING_FOR_HELLO = 16;
+/** The cached image frame is rebuilt at least this often even when no change was reported. */
+const IMAGE_CACHE_MS = 1000;
 /** Frames between 64 KiB and this get an error reply; beyond it `ws` closes the connection (1009). */
 const HARD_FRAME_LIMIT = 16 * MAX_FRAME_BYTES;
 
@@ -68,11 +77,30 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
     for (const s of sessions) if (s.role) s.send(body);
   };
   const toRecord = (m: Values) => Object.fromEntries(m) as Record<string, WireValue>;
+  // The full image, serialised once and reused for every welcome and resync until something changes
+  // (a large map has thousands of points: building it per request would starve the event loop).
+  let imageCache: { readonly body: string; readonly at: number } | undefined;
+  const imageFrame = (frameSeq: number): string => {
+    const now = Date.now();
+    if (!imageCache || now - imageCache.at > IMAGE_CACHE_MS) {
+      const { values, quality } = hub.image();
+      imageCache = { body: `"values":${JSON.stringify(values)},"quality":${JSON.stringify(quality)}`, at: now };
+    }
+    return `{"v":${PROTOCOL_VERSION},"t":"image","seq":${frameSeq},${imageCache.body}}`;
+  };
   const hub = new IoHub(devices, { watchdogMs: config.watchdogMs, autoRearm: config.autoRearm }, {
-    inputs: (values, quality: ReadonlyMap<string, Quality>) =>
-      broadcast({ t: 'inputs', seq: ++seq, values: toRecord(values), quality: Object.fromEntries(quality) }),
-    written: (values) => broadcast({ t: 'written', seq: ++seq, values: toRecord(values) }),
-    status: () => broadcast({ t: 'status', ...hub.status() }),
+    inputs: (values, quality: ReadonlyMap<string, Quality>) => {
+      imageCache = undefined;
+      broadcast({ t: 'inputs', seq: ++seq, values: toRecord(values), quality: Object.fromEntries(quality) });
+    },
+    written: (values) => {
+      imageCache = undefined;
+      broadcast({ t: 'written', seq: ++seq, values: toRecord(values) });
+    },
+    status: () => {
+      imageCache = undefined;
+      broadcast({ t: 'status', ...hub.status() });
+    },
     log,
   });
   await hub.start();
@@ -98,8 +126,11 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
   // carried across a client's reconnects, and the last of MAX_CLIENTS connections kept for a controller.
   const handshakes = new HandshakeLimiter(HANDSHAKES_PER_SECOND, HANDSHAKE_BURST);
   const budgets = new MessageBudgets(MESSAGES_PER_SECOND);
-  const mayObserve = () => [...sessions].filter((s) => s.role === 'observer').length < MAX_CLIENTS - 1;
-  let connections = 0;
+  const stalls = new StallMeter();
+  const live = () => [...sessions].filter((s) => !s.isClosed);
+  const mayObserve = () => live().filter((s) => s.role === 'observer').length < MAX_CLIENTS - 1;
+  /** Handshakes accepted whose session does not exist yet. */
+  let upgrading = 0;
   let accepting = true;
   server.on('upgrade', (req: IncomingMessage, socket: Socket, head: Buffer) => {
     socket.on('error', () => socket.destroy());
@@ -112,13 +143,24 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
       log(`refused WebSocket from origin ${req.headers.origin}`);
       return reject(socket, 403, 'Forbidden');
     }
-    if (connections >= MAX_CLIENTS) return reject(socket, 503, 'Service Unavailable');
-    connections++; // counted from the handshake on, so simultaneous handshakes cannot exceed the limit
-    socket.once('close', () => connections--);
+    // Slots are taken by hello: only welcomed sessions count against MAX_CLIENTS. Sockets waiting for
+    // their hello are bounded apart, the longest-waiting one giving way to a new one.
+    const open = live();
+    if (open.filter((s) => s.role !== null).length >= MAX_CLIENTS) return reject(socket, 503, 'Service Unavailable');
+    const waiting = open.filter((s) => s.role === null);
+    for (let i = 0; i <= waiting.length + upgrading - MAX_WAITING_FOR_HELLO && i < waiting.length; i++) waiting[i]?.evict();
+    upgrading++;
     const identity = clientIdentity(socket.remoteAddress, req.headers.origin, req.headers['user-agent']);
+    let settled = false;
+    const settle = () => {
+      if (!settled) upgrading--;
+      settled = true;
+    };
+    socket.once('close', settle);
     wss.handleUpgrade(req, socket, head, (ws) => {
+      settle();
       const limiter = budgets.take(identity);
-      const session = new Session(randomUUID().slice(0, 8), ws, { hub, token, simulated, nextSeq: () => ++seq, log, limiter, mayObserve });
+      const session = new Session(randomUUID().slice(0, 8), ws, { hub, token, simulated, nextSeq: () => ++seq, log, limiter, mayObserve, stalls, imageFrame });
       sessions.add(session);
       ws.on('close', () => {
         sessions.delete(session);
@@ -148,6 +190,7 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
     (closing ??= (async () => {
       // 1. Nothing more is dispatched or accepted: no `outputs` can follow the safe write.
       accepting = false;
+      stalls.stop();
       for (const s of sessions) s.silence();
       // 2. The safe image as the last write on every device.
       const report = await hub.shutdown();

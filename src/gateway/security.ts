@@ -57,6 +57,55 @@ export class RateLimiter {
     this.tokens -= 1;
     return true;
   }
+  /**
+   * Like `take`, but the bucket may hold `creditMs` worth of extra tokens: the messages a client sent
+   * while this process could not read them (an event-loop stall) arrive together afterwards, and were
+   * sent at the client's own rate, not as a burst (see StallMeter).
+   */
+  takeWithCredit(creditMs: number, now = Date.now()): boolean {
+    if (creditMs <= 0) return this.take(now);
+    const cap = this.burst + (creditMs / 1000) * this.rate;
+    this.tokens = Math.min(cap, this.tokens + (Math.max(0, now - this.last) / 1000) * this.rate);
+    this.last = Math.max(this.last, now);
+    if (this.tokens < 1) return false;
+    this.tokens -= 1;
+    return true;
+  }
+}
+
+/**
+ * Event-loop stalls of this process: while the gateway is busy (a huge image, a slow disk, the OS
+ * starving it) a client's messages queue in the socket and are all read at once when it resumes.
+ * A tick every TICK_MS notes the time; a message read long after the last tick, or soon after a
+ * tick that came late, arrived behind a stall of that length. The message budget grants that time
+ * as credit, so a backlog is not mistaken for a flood; a client that really sends too fast is still
+ * closed (its rate exceeds the budget outside the stall too).
+ */
+export class StallMeter {
+  static readonly TICK_MS = 20;
+  /** How long after a stall its backlog may still be being read. */
+  static readonly BACKLOG_WINDOW_MS = 1000;
+  private lastTick = Date.now();
+  private stall = { ms: 0, endedAt: 0 };
+  private readonly timer: NodeJS.Timeout;
+  constructor() {
+    this.timer = setInterval(() => this.tick(), StallMeter.TICK_MS);
+    this.timer.unref();
+  }
+  private tick(now = Date.now()): void {
+    const late = now - this.lastTick - StallMeter.TICK_MS;
+    if (late > 2 * StallMeter.TICK_MS) this.stall = { ms: late, endedAt: now };
+    this.lastTick = now;
+  }
+  /** The length of the stall a message read at `now` may have waited behind (0 when none). */
+  creditMs(now = Date.now()): number {
+    const ongoing = now - this.lastTick - StallMeter.TICK_MS;
+    const recent = now - this.stall.endedAt <= StallMeter.BACKLOG_WINDOW_MS ? this.stall.ms : 0;
+    return Math.max(0, recent, ongoing > 2 * StallMeter.TICK_MS ? ongoing : 0);
+  }
+  stop(): void {
+    clearInterval(this.timer);
+  }
 }
 
 /** WebSocket handshakes a remote IP may make at once, then per second (reconnects included). */

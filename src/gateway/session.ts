@@ -11,10 +11,17 @@ import {
   type Role,
 } from '../protocol/messages';
 import type { IoHub } from './ioHub';
-import { RateLimiter, tokenMatches } from './security';
+import { RateLimiter, tokenMatches, type StallMeter } from './security';
 import type { SimulatedDevice } from './simulatedDevice';
 
 export const MESSAGES_PER_SECOND = 200;
+/**
+ * `resync` asks for the whole image (thousands of points on a large map): answered at most this
+ * often per client, with a burst of RESYNC_BURST; more get a polite `too-often` refusal, and the
+ * client's view stays current anyway through `inputs` and `written`.
+ */
+export const RESYNCS_PER_SECOND = 4;
+export const RESYNC_BURST = 8;
 /** A socket that has not said hello by then is closed (1008): silent sockets cannot hold the connection slots. */
 export const HELLO_TIMEOUT_MS = 1500;
 /** Close code when the last connection, kept for a controller, is asked for by an observer. */
@@ -32,11 +39,16 @@ export interface SessionContext {
   readonly limiter?: RateLimiter;
   /** False when one more observer would take the last connection, which is kept for a controller. */
   mayObserve?(): boolean;
+  /** Event-loop stalls: their backlog is not counted as a flood (security.ts StallMeter). */
+  readonly stalls?: StallMeter;
+  /** The full image as one serialised frame, cached until the image changes (gateway.ts). */
+  imageFrame?(seq: number): string;
 }
 
 export class Session {
   role: Role | null = null;
   private readonly limiter: RateLimiter;
+  private readonly resyncs = new RateLimiter(RESYNCS_PER_SECOND, RESYNC_BURST);
   private readonly helloTimer: NodeJS.Timeout;
   private closed = false;
   private silenced = false;
@@ -63,12 +75,39 @@ export class Session {
 
   send(body: GatewayMessageBody): void {
     if (this.closed || this.ws.readyState !== this.ws.OPEN) return;
+    this.sendText(JSON.stringify({ v: PROTOCOL_VERSION, ...body }));
+  }
+
+  private sendText(text: string): void {
+    if (this.closed || this.ws.readyState !== this.ws.OPEN) return;
     // A client that stopped reading is dropped rather than buffered without bound.
     if (this.ws.bufferedAmount > 8 * 1024 * 1024) {
       this.ws.close(1013, 'client too slow');
       return;
     }
-    this.ws.send(JSON.stringify({ v: PROTOCOL_VERSION, ...body }));
+    this.ws.send(text);
+  }
+
+  private sendImage(): void {
+    const seq = this.ctx.nextSeq();
+    if (this.ctx.imageFrame) this.sendText(this.ctx.imageFrame(seq));
+    else this.send({ t: 'image', seq, ...this.ctx.hub.image() });
+  }
+
+  /** Closed, or closing: holds no connection slot any more. */
+  get isClosed(): boolean {
+    return this.closed;
+  }
+
+  /**
+   * A socket that has not said hello gives its place to a newer one (too many are waiting): a
+   * client that says hello at once always gets in, however many silent sockets are open.
+   */
+  evict(): void {
+    if (this.role !== null || this.closed) return;
+    this.refuse('not-hello', 'too many connections are waiting for hello; this one waited longest', null);
+    this.ws.close(TRY_AGAIN_LATER, 'too many connections waiting for hello');
+    this.closeDown();
   }
 
   private refuse(code: ErrorCode, message: string, ref: number | string | null): void {
@@ -83,7 +122,7 @@ export class Session {
 
   private receive(data: Buffer | Buffer[] | ArrayBuffer, isBinary: boolean): void {
     if (this.closed || this.silenced) return;
-    if (!this.limiter.take()) {
+    if (!this.limiter.takeWithCredit(this.ctx.stalls?.creditMs() ?? 0)) {
       this.ctx.log(`session ${this.id}: closed for flooding (over ${MESSAGES_PER_SECOND} messages/s)`);
       this.refuseAndClose('flood', `more than ${MESSAGES_PER_SECOND} messages per second`, null);
       return;
@@ -145,7 +184,7 @@ export class Session {
     this.role = role;
     this.ctx.log(`session ${this.id}: ${this.role}${msg.role !== this.role ? ' (controller lease is taken)' : ''}`);
     this.send({ t: 'welcome', session: this.id, role: this.role, points: hub.pointList(), devices: hub.devices.map((d) => d.info) });
-    this.send({ t: 'image', seq: this.ctx.nextSeq(), ...hub.image() });
+    this.sendImage();
     this.send({ t: 'status', ...hub.status() });
   }
 
@@ -156,7 +195,11 @@ export class Session {
         this.refuse('already-hello', 'this session already said hello', ref);
         return;
       case 'resync':
-        this.send({ t: 'image', seq: this.ctx.nextSeq(), ...hub.image() });
+        if (!this.resyncs.take()) {
+          this.refuse('too-often', `resync is answered at most ${RESYNCS_PER_SECOND} times per second; inputs and written keep the image current meanwhile`, ref);
+          return;
+        }
+        this.sendImage();
         return;
       case 'simulate': {
         if (!this.ctx.simulated) {

@@ -148,6 +148,8 @@ export const ERROR_CODES = [
   'arm-refused',
   'flood',
   'shutting-down',
+  /** A request answered at most so often (resync) came too soon; nothing is closed. */
+  'too-often',
 ] as const;
 export type ErrorCode = (typeof ERROR_CODES)[number];
 export const errorSchema = z.object({

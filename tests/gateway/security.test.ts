@@ -91,8 +91,9 @@ describe('gateway security', () => {
     third.close();
   });
 
-  it('refuses more than 8 clients', async () => {
-    const clients = await Promise.all(Array.from({ length: MAX_CLIENTS }, () => TestClient.connect(gw.port)));
+  it('refuses more than 8 clients that said hello', async () => {
+    const clients = [await TestClient.hello(gw.port, gw.token, 'controller')];
+    for (let i = 1; i < MAX_CLIENTS; i++) clients.push(await TestClient.hello(gw.port, gw.token, 'observer'));
     await expect(TestClient.connect(gw.port)).rejects.toThrow('HTTP 503');
     clients.forEach((c) => c.close());
     await Promise.all(clients.map((c) => c.waitClosed()));
