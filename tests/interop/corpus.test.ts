@@ -1,9 +1,8 @@
 // npm run test:interop — every real PLCopen file in ../shared/plcopen/examples: import, check,
 // simulate each LD program for 100 scans, re-export and validate against the TC6 v2.01 schema.
 // Not part of `npm test` (the corpus lives outside the repository); .ci/run runs it.
-import { existsSync, readdirSync, readFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { checkProject } from '../../src/engine/check';
 import { compileProgram, createPlc } from '../../src/engine/plc';
@@ -13,19 +12,9 @@ import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { canonical } from '../plcopen/fixtures';
 import { schemaErrors } from '../plcopen/xsd';
+import { corpusDir } from './corpusDir';
 
-const root = fileURLToPath(new URL('../..', import.meta.url));
-// RUNGSMITH_PLCOPEN_CORPUS overrides where the corpus is; by default ../shared/plcopen/examples next to the repository.
-const CANDIDATES = [
-  process.env.RUNGSMITH_PLCOPEN_CORPUS,
-  join(root, '..', 'shared', 'plcopen', 'examples'),
-].filter((d): d is string => Boolean(d));
-const CORPUS = CANDIDATES.find((d) => existsSync(d)) ?? CANDIDATES[CANDIDATES.length - 1]!;
-if (!existsSync(CORPUS)) {
-  throw new Error(
-    `The PLCopen corpus is missing: expected the real example files in ${CORPUS} (../shared/plcopen/examples next to the repository, or set RUNGSMITH_PLCOPEN_CORPUS).`,
-  );
-}
+const CORPUS = corpusDir();
 const FILES = readdirSync(CORPUS)
   .filter((f) => f.endsWith('.xml'))
   .sort();

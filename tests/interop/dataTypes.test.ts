@@ -1,9 +1,8 @@
 // npm run test:interop — the user data types of the real corpus files: SVGHMI's HMI_BOOL (a vendor
 // type the traffic-light file uses without declaring it) and the Beremiz DS401 test's MYTYPE ...
 // MYTYPE5 (subranges, an enum, a 2-D array of a derived subrange with arrayValue repetitions).
-import { existsSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { compileProgram, createPlc } from '../../src/engine/plc';
 import { leafPaths } from '../../src/model/dataTypes';
@@ -11,10 +10,9 @@ import type { Project } from '../../src/model/project';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { schemaErrors } from '../plcopen/xsd';
+import { corpusDir } from './corpusDir';
 
-const root = fileURLToPath(new URL('../..', import.meta.url));
-const CORPUS = process.env.RUNGSMITH_PLCOPEN_CORPUS ?? join(root, '..', 'shared', 'plcopen', 'examples');
-if (!existsSync(CORPUS)) throw new Error(`The PLCopen corpus is missing: expected it in ${CORPUS}`);
+const CORPUS = corpusDir();
 
 function load(file: string): Project {
   const r = importPlcopen(readFileSync(join(CORPUS, file), 'utf8'));

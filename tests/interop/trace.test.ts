@@ -2,9 +2,8 @@
 // and no "cannot be drawn exactly" warning, simulates 200 scans under a scripted stimulus
 // (tests/plcopen/trace.ts), re-exports, validates against the TC6 v2.01 schema, re-imports and
 // simulates to the same trace.
-import { existsSync, readdirSync, readFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
@@ -12,17 +11,12 @@ import { compileProgram } from '../../src/engine/plc';
 import type { Project } from '../../src/model/project';
 import { firstDifference, traceProgram, type ProgramTrace } from '../plcopen/trace';
 import { schemaErrors } from '../plcopen/xsd';
+import { corpusDir } from './corpusDir';
 
-const root = fileURLToPath(new URL('../..', import.meta.url));
-const CORPUS =
-  [process.env.RUNGSMITH_PLCOPEN_CORPUS, join(root, '..', 'shared', 'plcopen', 'examples')].find(
-    (d): d is string => Boolean(d) && existsSync(d!),
-  ) ?? join(root, '..', 'shared', 'plcopen', 'examples');
-const FILES = existsSync(CORPUS)
-  ? readdirSync(CORPUS)
-      .filter((f) => f.endsWith('.xml'))
-      .sort()
-  : [];
+const CORPUS = corpusDir();
+const FILES = readdirSync(CORPUS)
+  .filter((f) => f.endsWith('.xml'))
+  .sort();
 
 const SCANS = 200;
 

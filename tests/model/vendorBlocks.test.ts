@@ -10,88 +10,47 @@ import { externalBlockPou, externalInfo } from '../../src/model/externalBlocks';
 import { newPou, newProject, variable } from '../../src/model/factory';
 import { blockLibrary, declaredPinType, isInOutPin, STANDARD_LIBRARY } from '../../src/model/library';
 import { loadProject, saveProject } from '../../src/model/load';
-import type { ExternalBlock, ExternalBlockPin } from '../../src/model/project';
+import type { ExternalBlock } from '../../src/model/project';
 import { VENDOR_BLOCKS, VENDOR_LIBRARIES, vendorBlock } from '../../src/model/vendorBlocks';
-import { childrenNamed, descend, parseXml, type XmlElement } from '../../src/plcopen/xml/parse';
+import { compileProgram, createPlc } from '../../src/engine/plc';
+import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { ladder, plcOf, project as ladderProject, vars } from '../engine/ladder';
+import { expectVendorCallsKnown, foreignCalls, pinNames } from './vendorCalls';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
-/** MIT-licensed corpus files copied into the repository. */
-const FIXTURES = join(root, 'tests', 'fixtures', 'plcopen', 'corpus');
-/** The whole corpus, GPL files of OpenPLC Editor's examples included: ../shared next to the repository. */
-const CORPUS = process.env.RUNGSMITH_PLCOPEN_CORPUS ?? join(root, '..', 'shared', 'plcopen', 'examples');
+/** PLCopen files of the repository: hand-written ones, and MIT-licensed corpus files in corpus/. */
+const FIXTURES = [join(root, 'tests', 'fixtures', 'plcopen'), join(root, 'tests', 'fixtures', 'plcopen', 'corpus')];
 
-const corpusFile = (file: string): string => {
-  const path = [join(FIXTURES, file), join(CORPUS, file)].find((p) => existsSync(p));
-  if (!path) throw new Error(`${file} is missing: expected it in ${CORPUS} (../shared/plcopen/examples, or set RUNGSMITH_PLCOPEN_CORPUS)`);
+const fixtureFile = (file: string): string => {
+  const path = FIXTURES.map((dir) => join(dir, file)).find((p) => existsSync(p));
+  if (!path) throw new Error(`${file} is missing from ${FIXTURES.join(' and ')}`);
   return readFileSync(path, 'utf8');
 };
 
-interface Call {
-  readonly typeName: string;
-  /** A function block call names its instance. */
-  readonly instance?: string;
-  readonly pins: readonly ExternalBlockPin[];
-}
-
-/** Every `<block>` of a PLCopen file and the pins it wires (EN/ENO left out), with the POUs it defines. */
-function blockCalls(file: string): { calls: Call[]; pous: Set<string> } {
-  const doc = parseXml(corpusFile(file));
-  const calls: Call[] = [];
-  const pous = new Set<string>();
-  const dirs = [
-    ['inputVariables', 'in'],
-    ['outputVariables', 'out'],
-    ['inOutVariables', 'inOut'],
-  ] as const;
-  const walk = (el: XmlElement) => {
-    if (el.name === 'pou') pous.add(el.attrs['name']!.toUpperCase());
-    if (el.name === 'block') {
-      const pins = dirs.flatMap(([list, dir]) =>
-        childrenNamed(descend(el, list) ?? el, 'variable')
-          .map((v) => ({ name: v.attrs['formalParameter']!, dir }))
-          .filter((p) => !['EN', 'ENO'].includes(p.name.toUpperCase())),
-      );
-      calls.push({ typeName: el.attrs['typeName']!, instance: el.attrs['instanceName'], pins });
-    }
-    el.children.forEach(walk);
-  };
-  walk(doc);
-  return { calls, pous };
-}
-
-/** The calls of blocks that are neither standard nor defined in the file. */
-const foreignCalls = (file: string) => {
-  const { calls, pous } = blockCalls(file);
-  return calls.filter((c) => !blockSignature(c.typeName) && !pous.has(c.typeName.toUpperCase()));
-};
-
-const pinNames = (pins: readonly { name: string }[]) => pins.map((p) => p.name);
-
 describe('OpenPLC vendor blocks', () => {
-  test.each([
-    ['openplc-editor__MQTT_Send_Receive.xml', ['MQTT_CONNECT', 'MQTT_RECEIVE', 'MQTT_SEND', 'MQTT_SUBSCRIBE']],
-    ['openplc-editor__TCP_socket.xml', ['TCP_CONNECT', 'TCP_RECEIVE', 'TCP_SEND']],
-    ['openplc-editor__Blink_P1AM.xml', ['P1AM_INIT', 'P1_16CDR']],
-  ])('%s: every block it calls from an OpenPLC library is known, with every pin it wires', (file, expected) => {
-    const calls = foreignCalls(file);
-    expect([...new Set(calls.map((c) => c.typeName))].sort()).toEqual(expected);
-    const lib = blockLibrary(newProject('P'));
-    for (const call of calls) {
-      expect(lib.isExternal(call.typeName), call.typeName).toBe(true);
-      const sig = lib.signature(call.typeName)!;
-      expect(sig.category).toBe('external');
-      expect(sig.kind).toBe('fb');
-      for (const pin of call.pins) {
-        const side = pin.dir === 'in' ? sig.inputs : sig.outputs;
-        expect(pinNames(side), `${call.typeName}.${pin.name}`).toContain(pin.name);
-      }
-    }
+  test('vendor-calls.xml: every block it calls from an OpenPLC library (MQTT, Communication, P1AM) is known, with every pin it wires', () => {
+    expectVendorCallsKnown(fixtureFile('vendor-calls.xml'), [
+      ...['MQTT_CONNECT', 'MQTT_RECEIVE', 'MQTT_SEND', 'MQTT_SUBSCRIBE'],
+      ...['P1AM_INIT', 'P1_16CDR'],
+      ...['TCP_CONNECT', 'TCP_RECEIVE', 'TCP_SEND'],
+    ]);
+  });
+
+  test('vendor-calls.xml imports: each call is an instance of the vendor block, and the programs compile', () => {
+    const r = importPlcopen(fixtureFile('vendor-calls.xml'));
+    expect(r.ok).toBe(true);
+    if (!r.ok) return;
+    expect(r.project.pous.map((p) => p.name)).toEqual(['MqttLink', 'TcpLink', 'Board']);
+    const board = r.project.pous.find((p) => p.name === 'Board')!;
+    expect(board.variables.map((v) => `${v.name}: ${v.type}`)).toEqual(['Bus0: P1AM_INIT', 'Slot1: P1_16CDR']);
+    const { program, diagnostics } = compileProgram(r.project, { pou: 'TcpLink' });
+    expect(diagnostics.filter((d) => d.severity === 'error')).toEqual([]);
+    expect(createPlc(program!, { cycleMs: 20 }).scans(3).fault).toBeUndefined();
   });
 
   test('sakunamary i2c_test: blocks no shipped library defines become external blocks with the pins the file wires', () => {
     // I2C_AHT20 and I2C_OLED come from a fork's library; REAL_TO_STRING is a standard conversion.
-    const calls = foreignCalls('sakunamary__i2c_test.xml');
+    const calls = foreignCalls(fixtureFile('sakunamary__i2c_test.xml'));
     expect(calls.map((c) => c.typeName).sort()).toEqual(['I2C_AHT20', 'I2C_OLED']);
     expect(vendorBlock('I2C_AHT20')).toBeUndefined();
     const externalBlocks: ExternalBlock[] = calls.map((c) => ({

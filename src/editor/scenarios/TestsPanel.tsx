@@ -3,9 +3,10 @@
 // scenario from the simulation (the inputs toggled and the outputs seen), edit it as a table or CSV.
 import { useMemo, useState } from 'react';
 import type { Project, Scenario } from '../../model/project';
-import { parseScenario, runScenario, type ScenarioResult } from '../../sim/scenario';
+import { parseScenario, type ScenarioResult } from '../../sim/scenario';
 import { useDocument, useDocumentStore } from '../../store/documentStore';
 import { useSimStore } from '../sim/simContext';
+import { runScenariosOffPage } from './scenarioRunner';
 import '../history/history.css';
 
 const selectProject = (s: { project: Project }) => s.project;
@@ -19,10 +20,15 @@ export function TestsPanel() {
   const [editing, setEditing] = useState<number | undefined>();
   const [message, setMessage] = useState<string | undefined>();
   const save = (next: Scenario[]) => doc.getState().updateProject({ scenarios: next });
-  const runAll = () => {
-    const out: Record<string, ScenarioResult> = {};
-    for (const sc of scenarios) out[sc.name] = runScenario(project, sc).result;
-    setResults(out);
+  const [running, setRunning] = useState(false);
+  const runAll = async () => {
+    setRunning(true);
+    try {
+      const list = await runScenariosOffPage(project, scenarios);
+      setResults(Object.fromEntries(list.map((r) => [r.name, r])));
+    } finally {
+      setRunning(false);
+    }
   };
   const open = async (sc: Scenario) => {
     const r = await sim.getState().replayScenario(project, sc);
@@ -52,7 +58,9 @@ export function TestsPanel() {
   return (
     <div className="rs-sim-panel" data-testid="tests-panel">
       <div className="rs-sim-panel-bar">
-        <button type="button" className="rs-sim-btn" disabled={scenarios.length === 0} onClick={runAll} data-testid="tests-run-all">Run all</button>
+        <button type="button" className="rs-sim-btn" disabled={scenarios.length === 0 || running} onClick={() => void runAll()} data-testid="tests-run-all">
+          {running ? 'Running…' : 'Run all'}
+        </button>
         <button type="button" className="rs-sim-btn" onClick={() => void record()} data-testid="tests-record"
           title="A scenario from the recorded scans: the inputs where they changed and the outputs seen">
           Record from simulation

@@ -1,16 +1,14 @@
-// ST and IL POUs of real PLCopen files (Beremiz first_steps, gracesrm vc999v3) import and run with
-// the traces computed by hand from their source.
-import { readFileSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
+// npm run test:interop — ST and IL POUs of real PLCopen files (Beremiz first_steps, gracesrm vc999v3) import and run with
+// the traces computed by hand from their source. The same on a fixture of the repository:
+// tests/engine/stBodiesImport.test.ts.
 import { describe, expect, test } from 'vitest';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import type { Project } from '../../src/model/project';
-import { scanRead, stPlc, textPou, vars } from './stHelpers';
-
-const EXAMPLES = `${process.env.RUNGSMITH_PLCOPEN_CORPUS ?? fileURLToPath(new URL('../../../shared/plcopen/examples', import.meta.url))}/`;
+import { scanRead, stPlc, textPou, vars } from '../engine/stHelpers';
+import { corpusText } from './corpusDir';
 
 function imported(file: string): Project {
-  const r = importPlcopen(readFileSync(EXAMPLES + file, 'utf8'));
+  const r = importPlcopen(corpusText(file));
   if (!r.ok) throw new Error(`${file} does not import`);
   return r.project;
 }

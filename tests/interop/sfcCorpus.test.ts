@@ -1,14 +1,14 @@
-// The corpus files with SFC POUs import, compile and run; the traffic light's chart follows the
+// npm run test:interop — the corpus files with SFC POUs import, compile and run; the traffic light's chart follows the
 // trace MATIEC's generated code gives (computed by hand from the chart and generate_c_sfc.cc).
-import { readFileSync } from 'node:fs';
 import { describe, expect, test } from 'vitest';
 import { compileProgram, createPlc } from '../../src/engine/plc';
 import type { Plc } from '../../src/engine/api';
 import type { Project } from '../../src/model/project';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
+import { corpusText } from './corpusDir';
 
 const load = (file: string): Project => {
-  const r = importPlcopen(readFileSync(`/work/shared/plcopen/examples/${file}`, 'utf8'));
+  const r = importPlcopen(corpusText(file));
   if (!r.ok) throw new Error(`${file} does not import`);
   return r.project;
 };
