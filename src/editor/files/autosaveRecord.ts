@@ -16,15 +16,23 @@ export interface AutosaveRecord {
   readonly unsavedChanges: boolean;
   /** The project as its file text: the same validation applies on the way back in. */
   readonly projectText: string;
+  /** Names this snapshot for the journal that is based on it (autosaveJournal.ts). */
+  readonly id?: string;
 }
 
-export function makeAutosaveRecord(project: Project, unsavedChanges: boolean, now: number): AutosaveRecord {
+export function makeAutosaveRecord(
+  project: Project,
+  unsavedChanges: boolean,
+  now: number,
+  id?: string,
+): AutosaveRecord {
   return {
     format: AUTOSAVE_FORMAT,
     version: AUTOSAVE_VERSION,
     savedAt: now,
     unsavedChanges,
     projectText: projectJson(project),
+    ...(id !== undefined ? { id } : {}),
   };
 }
 

@@ -2,8 +2,10 @@
 // jump targets, block types), results listed with POU, network and element, next/previous;
 // replace with a preview, applied as one undo step. Logic in src/store/find.ts.
 import { useMemo, useState, type KeyboardEvent } from 'react';
-import { findInProject, planReplace, applyReplacements, type FindHit, type FindQuery, type Replacement } from '../../store/find';
+import { findInProject, type FindHit, type FindQuery, type Replacement } from '../../store/find';
 import { selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
+import { applyFindReplace, planFindReplace, renameInNames, type ReplacePlan } from '../../store/renameVariable';
+import { useSimStore } from '../sim/simContext';
 import { useUi, useUiStore } from '../../store/uiStore';
 import type { EditorContext } from '../commands/editorActions';
 import { placeName, revealPlace } from './reveal';
@@ -22,7 +24,9 @@ function FindPanel({ ctx }: { readonly ctx: EditorContext }) {
   const [caseSensitive, setCase] = useState(false);
   const [index, setIndex] = useState(-1);
   const [by, setBy] = useState('');
-  const [preview, setPreview] = useState<Replacement[] | undefined>(undefined);
+  const [preview, setPreview] = useState<ReplacePlan | undefined>(undefined);
+  const [refusal, setRefusal] = useState('');
+  const sim = useSimStore();
   const query = useMemo<FindQuery>(() => ({ text, mode, caseSensitive }), [text, mode, caseSensitive]);
   const result = useMemo(() => (text ? findInProject(project, query) : []), [project, query, text]);
   const hits = typeof result === 'string' ? [] : result;
@@ -49,18 +53,49 @@ function FindPanel({ ctx }: { readonly ctx: EditorContext }) {
     }
   };
   const showPreview = () => {
-    const plan = planReplace(project, query, by);
-    setPreview(typeof plan === 'string' ? [] : plan);
+    const plan = planFindReplace(project, query, by);
+    setRefusal(typeof plan === 'string' ? plan : '');
+    setPreview(typeof plan === 'string' ? undefined : plan);
   };
+  const places = (n: number) => `${n} place${n === 1 ? '' : 's'}`;
   const replaceAll = () => {
-    const plan = preview ?? [];
-    const changed = ctx.doc.getState().replaceNetworks('replace', applyReplacements(project, plan));
+    const plan = preview;
+    if (!plan) return;
+    const before = ctx.doc.getState().revision;
+    const done = applyFindReplace(ctx.doc, plan);
+    if (!done.ok) {
+      setRefusal(`Cannot rename: ${done.reason}.`);
+      return;
+    }
+    const changed = ctx.doc.getState().revision !== before;
+    if (plan.rename) {
+      // The watch list and the trend name variables too (they are not part of the document).
+      const { from, to } = plan.rename;
+      const s = sim.getState();
+      const watch = renameInNames(s.watch, from, to);
+      const trendNames = renameInNames(s.trendNames, from, to);
+      if (watch !== s.watch) sim.setState({ watch });
+      if (trendNames !== s.trendNames) {
+        sim.setState({ trendNames });
+        // Re-sends the trend's names to the simulator (and starts the lanes afresh).
+        s.setTrendCapacity(s.trendCapacity);
+      }
+    }
+    const n = plan.renamedUses.length + plan.replacements.length;
     ctx.ui
       .getState()
-      .setStatus(changed ? `Replaced in ${plan.length} place${plan.length === 1 ? '' : 's'} (one undo step).` : 'Nothing to replace.');
+      .setStatus(
+        !changed
+          ? 'Nothing to replace.'
+          : plan.rename
+            ? `Renamed ${plan.rename.from} to ${plan.rename.to}${plan.replacements.length ? ` and replaced text in ${places(plan.replacements.length)}` : ''} (one undo step).`
+            : `Replaced in ${places(n)} (one undo step).`,
+      );
     setPreview(undefined);
     setIndex(-1);
   };
+  const previewRows: Replacement[] = preview ? [...preview.renamedUses, ...preview.replacements] : [];
+  const previewCount = preview ? (preview.rename ? 1 : 0) + preview.replacements.length : 0;
 
   return (
     <div className="rs-floating rs-find" role="dialog" aria-label="Find and replace" data-testid="find-panel" data-keeps-focus onKeyDown={onKeyDown}>
@@ -118,14 +153,47 @@ function FindPanel({ ctx }: { readonly ctx: EditorContext }) {
           Preview replace
         </button>
         {preview && (
-          <button type="button" onClick={replaceAll} disabled={!preview.length} data-testid="replace-all">
-            Replace {preview.length}
+          <button type="button" onClick={replaceAll} disabled={!previewCount} data-testid="replace-all">
+            {preview.undeclared.length
+              ? 'Replace anyway'
+              : preview.rename
+                ? `Rename${preview.replacements.length ? ` and replace ${preview.replacements.length}` : ''}`
+                : `Replace ${preview.replacements.length}`}
+          </button>
+        )}
+        {preview && (
+          <button type="button" onClick={() => setPreview(undefined)} data-testid="replace-cancel">
+            Cancel
           </button>
         )}
       </div>
+      {refusal && (
+        <div className="rs-row rs-error-text" role="alert" data-testid="replace-refusal">
+          {refusal}
+        </div>
+      )}
+      {preview?.rename && (
+        <div className="rs-row" data-testid="replace-rename">
+          {`Renames the variable ${preview.rename.from} to ${preview.rename.to}: its declaration (${preview.rename.scopes
+            .map((sc) => (sc === 'globals' ? 'globals' : (project.pous.find((p) => p.id === sc)?.name ?? sc)))
+            .join(', ')}), ${preview.renamedUses.length} use${preview.renamedUses.length === 1 ? '' : 's'}, and the watch list, trend and test scenarios naming it.`}
+        </div>
+      )}
+      {preview && preview.undeclared.length > 0 && (
+        <div className="rs-row rs-error-text" role="alert" data-testid="replace-undeclared">
+          {`After this replace, ${preview.undeclared.length === 1 ? 'this name would not be declared' : 'these names would not be declared'}: ${[
+            ...new Map(preview.undeclared.map((u) => [u.name.toUpperCase(), u])).values(),
+          ]
+            .map(
+              (u) =>
+                `${u.name} (${placeName(u.replacement.place)}, ${u.replacement.place.elementKind ?? 'element'}: ${u.replacement.place.elementKind === 'box' ? 'LD-E02' : 'LD-R08'})`,
+            )
+            .join(', ')}. Declare ${preview.undeclared.length === 1 ? 'it' : 'them'} afterwards, replace anyway, or cancel.`}
+        </div>
+      )}
       {preview ? (
         <ol className="rs-find-results" aria-label="Replace preview" data-testid="replace-list">
-          {preview.slice(0, SHOWN).map((r, i) => (
+          {previewRows.slice(0, SHOWN).map((r, i) => (
             <li key={i}>
               <span className="rs-find-where">{`${placeName(r.place)} · ${r.place.elementKind ?? r.place.field}`}</span>{' '}
               <del className="rs-mono">{r.before}</del> → <ins className="rs-mono">{r.after}</ins>
