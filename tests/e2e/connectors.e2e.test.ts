@@ -78,13 +78,13 @@ test('draw [A] >C> and >C> (X), run: X follows A through the pair, lit; renaming
   await sim.button('run').click();
   await sim.waitForMode('Running');
   expect(await sim.value('X')).toBe(false);
-  await draw.clickCell(0, 0, 0);
+  await sim.switchCell(0, 0, 0);
   await sim.waitForValue('A', true);
   await sim.waitForValue('X', true);
   // The connector (its tag) and the continuation's wire are drawn energised.
   await expect.poll(() => sim.wireLit(0, 0, 1)).toBe(true);
   await expect.poll(() => sim.wireLit(0, 1, 0)).toBe(true);
-  await draw.clickCell(0, 0, 0);
+  await sim.switchCell(0, 0, 0);
   await sim.waitForValue('X', false);
   await expect.poll(() => sim.wireLit(0, 1, 0)).toBe(false);
 
@@ -97,7 +97,7 @@ test('draw [A] >C> and >C> (X), run: X follows A through the pair, lit; renaming
   await page.keyboard.press('Enter');
   expect(await pairs()).toEqual(['R0C1 >Permit>|', 'R1C0 |>Permit>']);
   // The renamed program is swapped in while running: X still follows A.
-  await draw.clickCell(0, 0, 0);
+  await sim.switchCell(0, 0, 0);
   await sim.waitForValue('X', true);
   await page.evaluate(() => window.rungsmith!.documentStore!.getState().undo());
   expect(await pairs()).toEqual(['R0C1 >C>|', 'R1C0 |>C>']);

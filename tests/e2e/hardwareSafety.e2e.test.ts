@@ -97,11 +97,11 @@ describe('Live I/O that can be trusted', () => {
     expect(errors).toEqual([]);
   });
 
-  it('case 8: a click on a contact of a field input explains and offers a confirmed force; it never writes the input', async () => {
+  it('case 8: a double-click on a contact of a field input explains and offers a confirmed force; it never writes the input', async () => {
     const { page, errors, sim } = await openOnHardware('Motor start/stop (seal-in)');
     await sim.button('run').click();
     await sim.waitForMode('Running');
-    await sim.draw.clickCell(0, 0, 0); // the Start contact
+    await sim.switchCell(0, 0, 0); // the Start contact
     const menu = page.getByTestId('sim-context-menu');
     await expect.poll(() => menu.getByTestId('sim-field-input').textContent()).toBe('%IX0.0 Start comes from the device; force it to override.');
     await scansPass(page, 10);
@@ -126,13 +126,13 @@ describe('Live I/O that can be trusted', () => {
     await sim.tab('Hardware');
 
     // Force, confirmed: the force marker, and the output on the device.
-    await sim.draw.clickCell(0, 0, 0);
+    await sim.switchCell(0, 0, 0);
     await menu.getByRole('menuitem', { name: 'Force TRUE' }).click();
     expect(await menu.getByTestId('sim-force-field-warning').textContent()).toMatch(/ignore the device's %IX0.0.*real\s+hardware/);
     await menu.getByTestId('sim-force-cancel').click();
     await scansPass(page, 5);
     expect(await sim.value('Start')).toBe(false); // cancelled: nothing forced
-    await sim.draw.clickCell(0, 0, 0);
+    await sim.switchCell(0, 0, 0);
     await menu.getByRole('menuitem', { name: 'Force TRUE' }).click();
     await menu.getByTestId('sim-force-confirm').click();
     await sim.waitForValue('Start', true);

@@ -16,12 +16,12 @@ beforeEach(async () => {
   sim = new SimPage(page);
 });
 
-/** One part past the sensor: a click on the PartSensor contact switches it on, another off. */
+/** One part past the sensor: a double-click on the PartSensor contact switches it on, another off. */
 async function part(count: number) {
-  await sim.draw.clickCell(0, 0, 0);
+  await sim.switchCell(0, 0, 0);
   await sim.waitForValue('PartSensor', true);
   await sim.waitForValue('PartCount', count);
-  await sim.draw.clickCell(0, 0, 0);
+  await sim.switchCell(0, 0, 0);
   await sim.waitForValue('PartSensor', false);
 }
 

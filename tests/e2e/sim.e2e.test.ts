@@ -43,12 +43,15 @@ test('motor start/stop: Start (held) energises Motor, which seals in, and Stop d
   expect(errors).toEqual([]);
 });
 
-test('a plain click on an input contact toggles it like a switch', async () => {
+test('a plain click on an input contact only selects it; a double-click switches it like a switch', async () => {
   await sim.runExample('Motor start/stop (seal-in)');
   await sim.draw.clickCell(0, 0, 0);
+  await expect.poll(() => page.getByTestId('sim-input-hint').textContent()).toContain('double-click to switch it');
+  expect(await sim.value('Start')).toBe(false);
+  await sim.switchCell(0, 0, 0);
   await sim.waitForValue('Start', true);
   await sim.waitForValue('Motor', true);
-  await sim.draw.clickCell(0, 0, 0);
+  await sim.switchCell(0, 0, 0);
   await sim.waitForValue('Start', false);
   await sim.tab('Inputs');
   await expect.poll(() => page.getByTestId('input-Start').getByTestId('input-switch').textContent()).toBe('OFF');

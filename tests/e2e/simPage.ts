@@ -120,6 +120,15 @@ export class SimPage {
     return this.page.evaluate(() => window.rungsmith!.uiStore!.getState().viewport.zoom);
   }
 
+  /**
+   * Switches the BOOL input a contact reads, as a user does while simulating: a double-click (a plain
+   * click only selects, as when editing).
+   */
+  async switchCell(network: number, row: number, col: number) {
+    const p = await this.draw.cellPoint(network, row, col);
+    await this.page.mouse.dblclick(p.x, p.y);
+  }
+
   /** Presses a contact like a push-button (Alt + press) and keeps it held until release() is called. */
   async holdCell(network: number, row: number, col: number): Promise<() => Promise<void>> {
     const p = await this.draw.cellPoint(network, row, col);

@@ -22,7 +22,7 @@ test('forcing Stop from the canvas menu holds the motor off until all forces are
   const menu = page.getByTestId('sim-context-menu');
   await menu.getByRole('menuitem', { name: 'Force TRUE' }).click();
   await sim.waitForValue('Stop', true);
-  await sim.draw.clickCell(0, 0, 0); // Start switched on
+  await sim.switchCell(0, 0, 0); // Start switched on
   await sim.waitForValue('Start', true);
   await page.waitForTimeout(200);
   expect(await sim.value('Motor')).toBe(false);
@@ -50,7 +50,7 @@ test('the watch table forces a number, marks it, and unforces it', async () => {
   await expect.poll(() => row.getByTestId('watch-value').textContent()).toBe('0');
   // Counting: each toggle of the sensor on is one part.
   for (let i = 0; i < 3; i++) {
-    await sim.draw.clickCell(0, 0, 0);
+    await sim.switchCell(0, 0, 0);
     await sim.waitForValue('PartSensor', i % 2 === 0);
   }
   await expect.poll(() => row.getByTestId('watch-value').textContent()).toBe('2');
@@ -104,9 +104,9 @@ test('the inputs panel: Hold is a push-button, the switch latches', async () => 
 
 test('editing while running is applied online: a new network joins, the motor keeps running', async () => {
   await sim.runExample('Motor start/stop (seal-in)');
-  await sim.draw.clickCell(0, 0, 0);
+  await sim.switchCell(0, 0, 0);
   await sim.waitForValue('Motor', true);
-  await sim.draw.clickCell(0, 0, 0);
+  await sim.switchCell(0, 0, 0);
   await sim.waitForValue('Start', false);
   await page.getByRole('button', { name: 'Insert network after network 1' }).click();
   await page.waitForFunction(() => {

@@ -23,13 +23,15 @@ import {
   useUi,
   useUiStore,
 } from '../../store/uiStore';
-import type { EditorContext } from '../commands/editorActions';
+import { cursorAnchor, type EditorContext } from '../commands/editorActions';
 import { useDiagnosticsByNetwork } from '../problems/useDiagnostics';
 import { readCanvasTheme, type CanvasTheme } from '../theme/canvasTheme';
 import { BlockPicker } from './BlockPicker';
 import { CanvasEmpty } from './CanvasEmpty';
 import { CELL_H, cellRect, columnsOf, headerHeight, layoutNetworks, RAIL_X, visibleRange } from './geometry';
 import { hoverText } from './hoverText';
+import { useSimStore } from '../sim/simContext';
+import { simInputHint } from '../sim/useCanvasSimInput';
 import { InlineEditor } from './InlineEditor';
 import type { CellMarker, NetworkPaint } from './drawNetwork';
 import type { DragState } from './dragTargets';
@@ -39,6 +41,9 @@ import { NetworkShape } from './NetworkShape';
 import { useCanvasPointer, type PointerView } from './useCanvasPointer';
 import { usePinchZoom, type ZoomAnchor } from './usePinchZoom';
 import './canvas.css';
+
+const withSimHint = (text: string | undefined, hint: string | undefined) =>
+  text && hint ? `${text}\n${hint}` : (text ?? hint);
 
 const EMPTY_SET: ReadonlySet<ElementId> = new Set();
 /** Screen pixels drawn beyond the viewport's edges; the stage moves in steps of these. Tall
@@ -54,6 +59,8 @@ const windowFor = (left: number, top: number) => ({
 export function LadderCanvas() {
   const doc = useDocumentStore();
   const ui = useUiStore();
+  // Read when the pointer rests on a cell: an input contact's tooltip says how to switch it.
+  const simStore = useSimStore();
   const ctx = useMemo<EditorContext>(() => ({ doc, ui }), [doc, ui]);
   const networks = useDocument(selectNetworks);
   const pou = useDocument(selectActivePou);
@@ -151,6 +158,15 @@ export function LadderCanvas() {
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [focusRequest]);
 
+  // The cursor never stays inside an element of several cells (a click on a box's right half, an undo
+  // that leaves it where a box now is): it stands on the element's own cell.
+  useLayoutEffect(() => {
+    const n = cursor && networks.find((m) => m.id === cursor.network);
+    if (!cursor || !n) return;
+    const at = cursorAnchor(n, cursor, library);
+    if (at.row !== cursor.row || at.col !== cursor.col) ui.getState().setCursor({ network: n.id, ...at });
+  }, [cursor, networks, library, ui]);
+
   // Keep the keyboard cursor on screen.
   useLayoutEffect(() => {
     const el = scrollRef.current;
@@ -197,6 +213,7 @@ export function LadderCanvas() {
       )
     : NO_MARKERS;
   const hoverNetwork = hover ? networks[hover.index] : undefined;
+  const hoverElement = hoverNetwork && hover ? elementAt(hoverNetwork, hover.cell, library) : undefined;
   const visible: number[] = [];
   for (let i = first; i <= last; i++) visible.push(i);
 
@@ -230,10 +247,9 @@ export function LadderCanvas() {
         <div
           className="rs-canvas-sticky"
           style={{ width: size.width, height: size.height }}
-          title={hoverText(
-            hoverNetwork && hover && elementAt(hoverNetwork, hover.cell, library),
-            hoverProblems,
-            hoverNetwork,
+          title={withSimHint(
+            hoverText(hoverElement, hoverProblems, hoverNetwork),
+            simInputHint(simStore.getState(), hoverElement),
           )}
           {...handlers}
         >

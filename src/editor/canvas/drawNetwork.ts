@@ -241,7 +241,10 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
       // An empty cell past a rail-aligned coil: after the end of the rung, a bar right of the rail.
       ctx.strokeRect(w + 4, row * CELL_H + 6, 5, CELL_H - 12);
     } else {
-      const r = cellRect(nc, paint.cursor);
+      // On a box (or any element of several cells) the cursor frames the whole element: it stands
+      // on the element, never on one of its halves.
+      const el = elementAt(n, paint.cursor, paint.library);
+      const r = el && el.kind !== 'link' ? elementRect(nc, el, paint.library) : cellRect(nc, paint.cursor);
       ctx.strokeRect(r.x + 1, r.y + 1, r.width - 2, r.height - 2);
     }
   }

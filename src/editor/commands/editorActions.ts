@@ -1,7 +1,7 @@
 // What the editor's commands do, over the document and UI stores. Shared by shortcuts, menus,
 // the palette and the canvas's pointer tools, so every path behaves the same.
 import { elementSize } from '../../model/factory';
-import { blockLibrary } from '../../model/library';
+import { blockLibrary, type BlockLibrary } from '../../model/library';
 import type { LdElement } from '../../model/elements';
 import type { Cell } from '../../model/grid';
 import type { ElementId, NetworkId } from '../../model/ids';
@@ -48,6 +48,22 @@ export function ensureCursor(ctx: EditorContext): CursorCell {
   return cursor;
 }
 
+/** Elements that end a rung's path: they go right of what they are placed on. */
+const OUTPUT_KINDS: ReadonlySet<LdElement['kind']> = new Set(['coil', 'jump', 'return', 'connector']);
+
+/**
+ * Where template `t` goes when placed at `cell`: on an element of several cells, its own cell (the
+ * cursor stands on a box, never on its half); a coil, jump, return or connector placed on anything
+ * but another one of those goes in series right after it (a coil before a CTU would break LD-R04),
+ * every other element in series before it.
+ */
+export function placementCell(n: Network, cell: Cell, t: ElementTemplate, lib: BlockLibrary): Cell {
+  const at = cursorAnchor(n, cell, lib);
+  const on = elementAt(n, at, lib);
+  if (!on || on.kind === 'link' || !OUTPUT_KINDS.has(t.kind) || OUTPUT_KINDS.has(on.kind)) return at;
+  return { row: on.row, col: on.col + elementSize(on, lib).cols };
+}
+
 /** Places a template at a cell (inserting in series on another element), selects it, and opens the name editor when it takes one. */
 export function placeAt(
   ctx: EditorContext,
@@ -55,7 +71,8 @@ export function placeAt(
   cell: Cell,
   t: ElementTemplate,
 ): ElementId | undefined {
-  const id = ctx.doc.getState().placeElement(network, cell, t);
+  const n = networkById(ctx, network);
+  const id = ctx.doc.getState().placeElement(network, n ? placementCell(n, cell, t, libraryOf(ctx)) : cell, t);
   const ui = ctx.ui.getState();
   if (!id) {
     ui.setStatus(
@@ -97,16 +114,31 @@ export function placeAtCursor(ctx: EditorContext, t: ElementTemplate): ElementId
 }
 
 /**
+ * The cell the cursor stands on for `cell`: a cell covered by an element of several cells (a box's
+ * other columns and rows) is the element's own cell, so the cursor is never inside a box.
+ */
+export function cursorAnchor(n: Network, cell: Cell, lib: BlockLibrary): Cell {
+  const el = elementAt(n, cell, lib);
+  return el && el.kind !== 'link' && (el.row !== cell.row || el.col !== cell.col) ? { row: el.row, col: el.col } : cell;
+}
+
+/**
  * Moves the cursor by cells; past the top/bottom row it continues in the previous/next open
- * network. The element under the cursor becomes the selection, or joins it with `extend` (Shift).
+ * network. A box is one stop: moving right or down from it goes past its last column or row, moving
+ * onto any of its cells lands on the box. The element under the cursor becomes the selection, or
+ * joins it with `extend` (Shift).
  */
 export function moveCursor(ctx: EditorContext, dRow: number, dCol: number, extend = false) {
+  const lib = libraryOf(ctx);
   const c = ensureCursor(ctx);
   const nets = networksOf(ctx);
   let index = nets.findIndex((n) => n.id === c.network);
-  let row = c.row + dRow;
-  let col = c.col + dCol;
   let n = nets[index]!;
+  const from = cursorAnchor(n, c, lib);
+  const on = elementAt(n, from, lib);
+  const size = on && on.kind !== 'link' ? elementSize(on, lib) : { rows: 1, cols: 1 };
+  let row = from.row + (dRow > 0 ? dRow + size.rows - 1 : dRow);
+  let col = from.col + (dCol > 0 ? dCol + size.cols - 1 : dCol);
   while (row < 0 || row >= n.rows) {
     const step = row < 0 ? -1 : 1;
     let next = index + step;
@@ -121,9 +153,10 @@ export function moveCursor(ctx: EditorContext, dRow: number, dCol: number, exten
     row = step < 0 ? n.rows - 1 : 0;
   }
   col = cursorCol(ctx, n, row, Math.max(0, Math.min(n.cols - 1, col)));
+  const at = cursorAnchor(n, { row, col }, lib);
   const ui = ctx.ui.getState();
-  ui.setCursor({ network: n.id, row, col });
-  const el = elementAt(n, { row, col }, libraryOf(ctx));
+  ui.setCursor({ network: n.id, row: at.row, col: at.col });
+  const el = elementAt(n, at, lib);
   const kept = extend && ui.selection.network === n.id ? ui.selection.elements : [];
   ui.select(n.id, [...new Set([...kept, ...(el ? [el.id] : [])])]);
 }

@@ -7,6 +7,7 @@ import type { EditorContext } from './editorActions';
 import { matches, parseKeys } from './keys';
 import { FILE_MENU_COMMANDS } from '../files/FileMenu';
 import { COMMANDS } from './registry';
+import { isModalOpen } from '../layout/useModal';
 
 interface Bound {
   readonly id: string;
@@ -32,7 +33,7 @@ export function useShortcuts(ctx: EditorContext) {
     let pendingPaste: ReturnType<typeof setTimeout> | undefined;
 
     const onKeyDown = (e: KeyboardEvent) => {
-      if (e.defaultPrevented || isTypingTarget(e.target)) return;
+      if (e.defaultPrevented || isTypingTarget(e.target) || isModalOpen()) return;
       const ui = ctx.ui.getState();
       if (ui.editing || ui.blockPicker || ui.pastePrompt) return;
       const binding = BINDINGS.find((b) => matches(b.spec, e));
@@ -52,7 +53,7 @@ export function useShortcuts(ctx: EditorContext) {
     };
 
     const onPaste = (e: ClipboardEvent) => {
-      if (isTypingTarget(e.target)) return;
+      if (isTypingTarget(e.target) || isModalOpen()) return;
       if (pendingPaste) clearTimeout(pendingPaste);
       pendingPaste = undefined;
       const text = e.clipboardData?.getData('text/plain');
@@ -62,7 +63,7 @@ export function useShortcuts(ctx: EditorContext) {
     };
 
     const onCopy = (e: ClipboardEvent) => {
-      if (isTypingTarget(e.target)) return;
+      if (isTypingTarget(e.target) || isModalOpen()) return;
       const text = copyText(ctx);
       if (text && e.clipboardData) {
         e.clipboardData.setData('text/plain', text);

@@ -1,6 +1,7 @@
 // The app's modal dialog: a dimmed backdrop, a titled box and a row of buttons. Keys pressed in it
-// stay in it (no editor shortcut acts behind it); Escape closes it.
-import type { KeyboardEvent, ReactNode } from 'react';
+// stay in it (no editor shortcut acts behind it), so does the focus; Escape closes it (useModal).
+import type { ReactNode } from 'react';
+import { useModal } from '../layout/useModal';
 import './modal.css';
 
 export interface ModalDialogProps {
@@ -20,13 +21,11 @@ export interface ModalDialogProps {
 }
 
 export function ModalDialog(props: ModalDialogProps) {
-  const onKeyDown = (e: KeyboardEvent) => {
-    e.stopPropagation();
-    if (e.key === 'Escape') props.onClose();
-  };
+  const modal = useModal(props.onClose);
   return (
-    <div className="rs-modal-backdrop" onKeyDown={onKeyDown}>
+    <div className="rs-modal-backdrop">
       <div
+        {...modal}
         className={props.className ? `rs-modal ${props.className}` : 'rs-modal'}
         role={props.role}
         aria-modal="true"

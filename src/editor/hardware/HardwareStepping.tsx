@@ -1,6 +1,6 @@
 // Stepping with hardware attached: the confirmation dialog (mounted once by HardwareSimLink) and
 // the toolbar badge that shows the lease and watchdog while stepping drives real outputs.
-import { useEffect, useId, useRef, type KeyboardEvent } from 'react';
+import { useId } from 'react';
 import type { StepRequest } from '../../bridge/steppingLease';
 import type { GatewayView } from '../../bridge/GatewayClient';
 import type { StatusMessage } from '../../protocol/messages';
@@ -10,6 +10,7 @@ import { useSim } from '../sim/simContext';
 import { armBlocker, disarmWords } from './armState';
 import { hardwareStepping, useSteppingView } from './useHardwareStepping';
 import { useGateway } from './useGateway';
+import { useModal } from '../layout/useModal';
 import './hardware.css';
 
 const WATCHDOG_STATE = { idle: 'idle', fed: 'fed', tripped: 'TRIPPED' } as const;
@@ -41,52 +42,25 @@ function ArmButton({ view, testId }: { view: GatewayView; testId: string }) {
 
 export function SteppingConfirmDialog() {
   const view = useSteppingView();
+  if (view.phase !== 'confirming' || !view.request) return null;
+  return <SteppingConfirmBox request={view.request} />;
+}
+
+function SteppingConfirmBox({ request }: { readonly request: StepRequest }) {
   const gateway = useGateway();
   const { status } = gateway;
   const titleId = useId();
   const textId = useId();
-  const cancelRef = useRef<HTMLButtonElement>(null);
-  const dialogRef = useRef<HTMLDivElement>(null);
-  const open = view.phase === 'confirming';
-
-  useEffect(() => {
-    if (!open) return undefined;
-    const before = document.activeElement instanceof HTMLElement ? document.activeElement : null;
-    cancelRef.current?.focus(); // the safe answer has the focus
-    return () => before?.focus();
-  }, [open]);
-
-  if (!open || !view.request) return null;
-
-  const onKeyDown = (e: KeyboardEvent) => {
-    if (e.key === 'Escape') {
-      e.stopPropagation();
-      hardwareStepping.decline();
-      return;
-    }
-    if (e.key !== 'Tab') return;
-    // Keep the focus inside the dialog while it is open.
-    const buttons = [...(dialogRef.current?.querySelectorAll<HTMLButtonElement>('button:not(:disabled)') ?? [])];
-    const first = buttons[0];
-    const last = buttons[buttons.length - 1];
-    if (!first || !last) return;
-    if (e.shiftKey && document.activeElement === first) {
-      e.preventDefault();
-      last.focus();
-    } else if (!e.shiftKey && document.activeElement === last) {
-      e.preventDefault();
-      first.focus();
-    }
-  };
+  const modal = useModal(() => hardwareStepping.decline());
 
   return (
     <div className="rs-hw-backdrop" onMouseDown={(e) => e.target === e.currentTarget && hardwareStepping.decline()}>
-      <div ref={dialogRef} className="rs-hw-dialog" role="alertdialog" aria-modal="true" aria-labelledby={titleId} aria-describedby={textId}
-        onKeyDown={onKeyDown} data-testid="hw-step-confirm">
+      <div {...modal} className="rs-hw-dialog" role="alertdialog" aria-modal="true" aria-labelledby={titleId} aria-describedby={textId}
+        data-testid="hw-step-confirm">
         <h2 id={titleId}>Step with real outputs?</h2>
         <div id={textId}>
           <p>
-            This page is the gateway&apos;s controller. Stepping {stepWords(view.request)} now <strong>drives the real outputs</strong>: each
+            This page is the gateway&apos;s controller. Stepping {stepWords(request)} now <strong>drives the real outputs</strong>: each
             step reads the gateway&apos;s current inputs, runs the scan and writes its outputs to the devices. The outputs of the last scan
             are written again at once.
           </p>
@@ -105,7 +79,8 @@ export function SteppingConfirmDialog() {
           )}
         </div>
         <div className="rs-hw-dialog-buttons">
-          <button ref={cancelRef} type="button" onClick={() => hardwareStepping.decline()} data-testid="hw-step-cancel">
+          {/* The safe answer has the focus. */}
+          <button type="button" autoFocus onClick={() => hardwareStepping.decline()} data-testid="hw-step-cancel">
             Cancel
           </button>
           <button type="button" className="rs-hw-danger" onClick={() => hardwareStepping.confirm()} data-testid="hw-step-ok">

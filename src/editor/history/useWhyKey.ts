@@ -4,6 +4,7 @@ import { useEffect } from 'react';
 import { useDocumentStore } from '../../store/documentStore';
 import { useUiStore } from '../../store/uiStore';
 import type { SimStore } from '../../store/simStore';
+import { isModalOpen } from '../layout/useModal';
 
 export function showWhyTab(): void {
   document.getElementById('rs-tab-why')?.click();
@@ -14,7 +15,7 @@ export function useWhyKey(sim: SimStore): void {
   const doc = useDocumentStore();
   useEffect(() => {
     const onKey = (e: KeyboardEvent) => {
-      if (e.key !== '?' || e.ctrlKey || e.metaKey || e.altKey) return;
+      if (e.key !== '?' || e.ctrlKey || e.metaKey || e.altKey || isModalOpen()) return;
       const t = e.target as HTMLElement | null;
       if (t && (t.tagName === 'INPUT' || t.tagName === 'TEXTAREA' || t.isContentEditable)) return;
       const sel = ui.getState().selection;

@@ -4,6 +4,7 @@ import { useMemo } from 'react';
 import { selectActivePou, selectNetworks, useDocument } from '../../store/documentStore';
 import { selectCursor, useUi, useUiStore } from '../../store/uiStore';
 import { useDiagnostics } from '../problems/useDiagnostics';
+import { SimInputHint } from '../sim/SimInputHint';
 import { SimPosition } from '../sim/SimPosition';
 
 export function StatusBar() {
@@ -43,6 +44,7 @@ export function StatusBar() {
         </span>
       )}
       <SimPosition />
+      <SimInputHint />
       <span className="rs-spacer" />
       {cursor && index >= 0 && (
         <span data-testid="cursor-position">

@@ -5,6 +5,7 @@ import type { EditorContext } from '../commands/editorActions';
 import { matches, parseKeys } from '../commands/keys';
 import { isTypingTarget } from '../commands/useShortcuts';
 import { SHELL_COMMANDS } from './shellCommands';
+import { isModalOpen } from './useModal';
 
 const BINDINGS = SHELL_COMMANDS.flatMap((command) =>
   (command.keys ?? []).map((k) => ({ spec: parseKeys(k), command })),
@@ -13,7 +14,7 @@ const BINDINGS = SHELL_COMMANDS.flatMap((command) =>
 export function useShellKeys(ctx: EditorContext) {
   useEffect(() => {
     const onKeyDown = (e: KeyboardEvent) => {
-      if (e.defaultPrevented) return;
+      if (e.defaultPrevented || isModalOpen()) return;
       const binding = BINDINGS.find((b) => matches(b.spec, e));
       // Ctrl+P works from a field too: the browser would print the editor's screen otherwise.
       if (!binding || (isTypingTarget(e.target) && binding.command.id !== 'file.print')) return;

@@ -1,32 +1,28 @@
 // Mounted once: the paste prompt (keep or renew the FB instances of pasted networks) and the
 // Ctrl+G "go to network" box.
-import { useMemo, useState, type KeyboardEvent } from 'react';
+import { useMemo, useState } from 'react';
 import { selectNetworks, useDocument, useDocumentStore } from '../../store/documentStore';
 import { useUi, useUiStore } from '../../store/uiStore';
 import type { EditorContext } from '../commands/editorActions';
 import { pasteNetworksText } from '../commands/networkActions';
+import { useModal } from '../layout/useModal';
 import { goToNetwork } from './goTo';
 import './outline.css';
 
 function PastePrompt({ ctx }: { readonly ctx: EditorContext }) {
   const prompt = useUi((s) => s.pastePrompt);
   if (!prompt) return null;
+  return <PasteQuestion ctx={ctx} instances={prompt.instances} text={prompt.text} />;
+}
+
+function PasteQuestion({ ctx, instances, text }: { readonly ctx: EditorContext; readonly instances: readonly string[]; readonly text: string }) {
   const cancel = () => ctx.ui.getState().setPastePrompt(undefined);
-  const onKeyDown = (e: KeyboardEvent) => {
-    e.stopPropagation();
-    if (e.key === 'Escape') cancel();
-  };
+  const modal = useModal(cancel);
   return (
-    <div
-      className="rs-floating"
-      role="dialog"
-      aria-label="Paste networks"
-      data-testid="paste-prompt"
-      onKeyDown={onKeyDown}
-    >
+    <div className="rs-floating" role="dialog" aria-modal="true" aria-label="Paste networks" data-testid="paste-prompt" {...modal}>
       <div>
         The pasted networks call FB instances this POU already has:{' '}
-        <strong className="rs-mono">{prompt.instances.join(', ')}</strong>
+        <strong className="rs-mono">{instances.join(', ')}</strong>
       </div>
       <div className="rs-row">
         <button
@@ -34,7 +30,7 @@ function PastePrompt({ ctx }: { readonly ctx: EditorContext }) {
           autoFocus
           data-testid="paste-new-instances"
           title="Each instance gets the next free name (Timer1 → Timer2), declared with the same type"
-          onClick={() => pasteNetworksText(ctx, prompt.text, 'new')}
+          onClick={() => pasteNetworksText(ctx, text, 'new')}
         >
           New instances
         </button>
@@ -42,7 +38,7 @@ function PastePrompt({ ctx }: { readonly ctx: EditorContext }) {
           type="button"
           data-testid="paste-keep-instances"
           title="Call the same instances again (legal IEC; the checks warn, LD-R10)"
-          onClick={() => pasteNetworksText(ctx, prompt.text, 'keep')}
+          onClick={() => pasteNetworksText(ctx, text, 'keep')}
         >
           Keep instances
         </button>

@@ -10,6 +10,7 @@ import { createPortal } from 'react-dom';
 import { blockLibrary } from '../../model/library';
 import type { Project } from '../../model/project';
 import { CELL_H } from '../canvas/geometry';
+import { useModal } from '../layout/useModal';
 import { readCanvasTheme } from '../theme/canvasTheme';
 import { networkSvg, type NetworkDrawing } from './networkSvg';
 import { paginate, type PagePiece, type PrintBlock, type PrintPage } from './paginate';
@@ -179,6 +180,7 @@ export function PrintView({
     document.body.classList.add('rs-printing');
     return () => document.body.classList.remove('rs-printing');
   }, []);
+  const modal = useModal(onClose);
   useLayoutEffect(() => {
     if (pages) printButton.current?.focus();
   }, [pages]);
@@ -193,11 +195,9 @@ export function PrintView({
       role="dialog"
       aria-label="Print preview"
       data-testid="print-view"
+      aria-modal="true"
       data-ready={pages ? 'true' : 'false'}
-      onKeyDown={(e) => {
-        e.stopPropagation();
-        if (e.key === 'Escape') onClose();
-      }}
+      {...modal}
     >
       <style>{`@page { size: A4 ${paper}; margin: 10mm; }`}</style>
       <div className="rs-print-toolbar">

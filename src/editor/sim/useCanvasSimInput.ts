@@ -1,9 +1,12 @@
 // Interacting with the canvas while simulating, without touching the canvas's own pointer tools:
 // listeners in the capture phase see the event first and take it only when it is for the simulator.
-// - click a contact bound to a BOOL input (%I): toggles it (a switch);
-// - Alt + press on it: TRUE while held (a push-button);
+// - a click only ever selects, as when editing: it never changes the process (running, paused, after
+//   a step or at a breakpoint alike);
+// - double-click a contact bound to a BOOL input (%I): switches it (as CODESYS's double-click on a
+//   BOOL in online mode); Alt + press on it: TRUE while held (a push-button). The tooltip and the
+//   status line (SimInputHint) say so;
 // - with hardware attached (controller), an input the gateway has as a point comes from the device:
-//   a click does not write it, it opens the menu that says so and offers a (confirmed) force;
+//   a double-click does not write it, it opens the menu that says so and offers a (confirmed) force;
 // - right-click a contact or coil: the force/watch/trend menu;
 // - right-click or double-click a call of a user FB: "Open instance", the FB's tab with that instance picked.
 // Inside an FB's body the operands are the monitored instance's (`Motor1.Start`), globals as they are.
@@ -21,6 +24,28 @@ import { useSimStore } from './simContext';
 import { openBody } from './useFollowExecution';
 
 const simulating = (s: SimState) => s.mode === 'running' || s.mode === 'paused';
+
+/** The readable variable an operand stands for in the monitored body (`Motor1.Start` inside Motor1). */
+function variableOf(s: SimState, operand: string) {
+  const name = canvasName(s, operand);
+  return name === undefined ? undefined : s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1];
+}
+
+/** While simulating, the BOOL input variable a contact reads, in the running program's own spelling. */
+export function simInputOf(s: SimState, el: LdElement | undefined): string | undefined {
+  if (!simulating(s) || el?.kind !== 'contact' || !el.variable) return undefined;
+  const v = variableOf(s, el.variable);
+  return v?.role === 'input' && v.type === 'BOOL' ? v.name : undefined;
+}
+
+/** How to change the input a contact reads, for its tooltip and the status line. */
+export function simInputHint(s: SimState, el: LdElement | undefined): string | undefined {
+  const name = simInputOf(s, el);
+  if (!name) return undefined;
+  if (fieldInputAddress(s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1]))
+    return `${name} comes from the device: double-click to force it`;
+  return `Input ${name}: double-click to switch it, Alt+press to hold it on (a click only selects)`;
+}
 
 export function useCanvasSimInput(): void {
   const documents = useDocumentStore();
@@ -47,19 +72,6 @@ export function useCanvasSimInput(): void {
       return network ? elementAt(network, hit.cell, selectLibrary(documents.getState())) : undefined;
     };
 
-    /** The readable variable an operand stands for in the monitored body (`Motor1.Start` inside Motor1). */
-    const variableOf = (s: SimState, operand: string) => {
-      const name = canvasName(s, operand);
-      return name === undefined ? undefined : s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1];
-    };
-
-    /** The BOOL input variable a contact reads, in the running program's own spelling. */
-    const inputOf = (s: SimState, el: LdElement | undefined): string | undefined => {
-      if (el?.kind !== 'contact' || !el.variable) return undefined;
-      const v = variableOf(s, el.variable);
-      return v?.role === 'input' && v.type === 'BOOL' ? v.name : undefined;
-    };
-
     /** A call of a user FB under the pointer: its POU and the instance's path in the running program. */
     const callOf = (s: SimState, el: LdElement | undefined): { pou: string; instance: string } | undefined => {
       if (el?.kind !== 'box' || !el.instance || !s.layout) return undefined;
@@ -73,33 +85,39 @@ export function useCanvasSimInput(): void {
 
     const onDoubleClick = (e: MouseEvent) => {
       const s = sim.getState();
-      if (!s.live || e.shiftKey || e.ctrlKey || e.metaKey) return;
-      const call = callOf(s, elementUnder(e));
+      if (e.shiftKey || e.ctrlKey || e.metaKey || e.altKey) return;
+      const el = elementUnder(e);
+      const name = simInputOf(s, el);
+      if (name) {
+        e.stopPropagation();
+        e.preventDefault();
+        if (fieldInputAddress(s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1])) {
+          // A field input: the device drives it; only an explicit force overrides it.
+          s.openContextMenu({ x: e.clientX, y: e.clientY, variable: name });
+          return;
+        }
+        s.toggleInput(name);
+        ui.getState().setStatus(`${name} switched ${s.values[s.variableIndex.get(name.toUpperCase()) ?? -1] === true ? 'OFF' : 'ON'} (double-click)`);
+        return;
+      }
+      if (!s.live) return;
+      const call = callOf(s, el);
       if (!call) return;
       e.stopPropagation();
       e.preventDefault();
       openBody(documents, sim, call.pou, call.instance);
     };
 
+    // Alt + press: a push-button, TRUE while held. A plain press goes to the editor (selection).
     const onPointerDown = (e: PointerEvent) => {
-      if (e.button !== 0 || e.shiftKey || e.ctrlKey || e.metaKey) return;
+      if (e.button !== 0 || !e.altKey || e.shiftKey || e.ctrlKey || e.metaKey) return;
       const s = sim.getState();
-      if (!simulating(s)) return;
-      const name = inputOf(s, elementUnder(e));
-      if (!name) return;
+      const name = simInputOf(s, elementUnder(e));
+      if (!name || fieldInputAddress(s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1])) return;
       e.stopPropagation();
       e.preventDefault();
-      if (fieldInputAddress(s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1])) {
-        // A field input: the device drives it; only an explicit force overrides it.
-        s.openContextMenu({ x: e.clientX, y: e.clientY, variable: name });
-        return;
-      }
-      if (e.altKey) {
-        held = name;
-        s.pressInput(name);
-      } else {
-        s.toggleInput(name);
-      }
+      held = name;
+      s.pressInput(name);
     };
 
     const release = () => {
