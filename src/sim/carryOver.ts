@@ -3,6 +3,7 @@
 import type { Plc, StateTransfer } from '../engine/api';
 import { planStateTransfer } from '../engine/plc';
 import { parseLocation, type Value } from '../model/iecTypes';
+import type { PackedPower } from './frames';
 import type { OnlineChangePlan, SimLayout, SimValueInput } from './protocol';
 import type { SimEngine } from './session';
 
@@ -93,4 +94,49 @@ export function valueFor(engine: SimEngine, layout: SimLayout | undefined, name:
   const parsed = engine.parseValue(type, input.text);
   if (!parsed.ok) throw new Error(`${name}: ${parsed.message}`);
   return parsed.value;
+}
+
+/** What the simulator shows: values in layout order and the packed power flow. */
+export interface ShownScan {
+  readonly values: readonly Value[];
+  readonly power: PackedPower;
+}
+
+/**
+ * The last scan's display mapped onto a new program's layout, for an online change applied while
+ * paused: the new program has not run yet, so its own snapshot would mark every network "not run"
+ * and read inputs as OFF. Values carry by name (same type), power by network id, element id and
+ * vertical link; what is new shows the new program's value and no power.
+ */
+export function carryDisplay(from: SimLayout, shown: ShownScan, to: SimLayout, toValues: readonly Value[]): ShownScan {
+  const oldVars = new Map(from.variables.map((v, i) => [v.name.toUpperCase(), i]));
+  // An input renamed keeps its address: the value read there last scan.
+  const oldInputs = new Map(from.variables.flatMap((v, i) => (v.location?.toUpperCase().startsWith('%I') ? [[v.location.toUpperCase(), i] as const] : [])));
+  const values = to.variables.map((v, i) => {
+    const k = oldVars.get(v.name.toUpperCase()) ?? (v.location ? oldInputs.get(v.location.toUpperCase()) : undefined);
+    return k !== undefined && from.variables[k]!.type === v.type ? shown.values[k]! : toValues[i]!;
+  });
+  const networkCount = to.networkIds.length;
+  const elements = new Uint8Array(to.elementOffsets[networkCount] ?? 0);
+  const vlinks = new Uint8Array(to.vlinkOffsets[networkCount] ?? 0);
+  const executed = new Uint8Array(networkCount);
+  const oldNetworks = new Map(from.networkIds.map((id, n) => [id, n]));
+  for (let n = 0; n < networkCount; n++) {
+    const m = oldNetworks.get(to.networkIds[n]!);
+    if (m === undefined) continue;
+    executed[n] = shown.power.executed[m] ?? 0;
+    const oldElements = new Map<string, number>();
+    for (let k = from.elementOffsets[m]!; k < from.elementOffsets[m + 1]!; k++) oldElements.set(from.elementIds[k]!, k);
+    for (let k = to.elementOffsets[n]!; k < to.elementOffsets[n + 1]!; k++) {
+      const j = oldElements.get(to.elementIds[k]!);
+      if (j !== undefined) elements[k] = shown.power.elements[j] ?? 0;
+    }
+    const oldVlinks = new Map<string, number>();
+    for (let k = from.vlinkOffsets[m]!; k < from.vlinkOffsets[m + 1]!; k++) oldVlinks.set(from.vlinkKeys[k]!, k);
+    for (let k = to.vlinkOffsets[n]!; k < to.vlinkOffsets[n + 1]!; k++) {
+      const j = oldVlinks.get(to.vlinkKeys[k]!);
+      if (j !== undefined) vlinks[k] = shown.power.vlinks[j] ?? 0;
+    }
+  }
+  return { values, power: { elements, vlinks, executed } };
 }

@@ -4,7 +4,7 @@
 import type { Diagnostic, Plc, PlcOptions } from '../engine/api';
 import { parseLocation, type Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
-import { carryForces, carryInstances, carryValues, planInstances, valueFor } from './carryOver';
+import { carryDisplay, carryForces, carryInstances, carryValues, planInstances, valueFor, type ShownScan } from './carryOver';
 import { outputsChanged, readValues } from './frames';
 import { HistoryRecorder } from './historyRecorder';
 import type { HistoryOptions } from './history';
@@ -96,6 +96,11 @@ export class SimSession {
   private view: SimView | undefined;
   /** Breakpoints as the UI sent them: program network indexes and document network ids. */
   private breakpointRequest: { networks: readonly number[]; ids: readonly string[] } = { networks: [], ids: [] };
+  /**
+   * After an online change at a scan boundary, what the last scan of the replaced program showed,
+   * mapped to the new program (carryDisplay): shown until the new program runs a network.
+   */
+  private carried: { plc: Plc; shown: ShownScan } | undefined;
 
   constructor(private readonly deps: SessionDeps) {
     this.runner = new ScanRunner(
@@ -305,6 +310,7 @@ export class SimSession {
   /** Stop and forget the program: no PLC, no forces, no gateway inputs, mode stopped. */
   private dropProgram(): void {
     this.runner.stop();
+    this.carried = undefined;
     this.runner.breakpointHit = undefined;
     this.pending = undefined;
     this.plc = undefined;
@@ -394,7 +400,13 @@ export class SimSession {
     if (!pending || pending.awaiting) return;
     this.pending = undefined;
     let plan = pending.plan;
+    // The display keeps the last scan until the new program runs (a second change in a row keeps
+    // what the first kept).
+    const before = this.plc && this.layout ? (this.carriedShown() ?? (this.plc.scanCount > 0 ? this.shownNow(this.plc, this.layout) : undefined)) : undefined;
+    this.carried = undefined;
     if (this.plc && this.layout) {
+      const next = pending.program;
+      if (before) this.carried = { plc: next.plc, shown: carryDisplay(this.layout, before, next.layout, readValues(next.plc, next.layout)) };
       carryValues(this.plc, this.layout, pending.program.plc, pending.program.layout);
       plan = carryInstances(this.plc, pending.program.plc);
       this.scanBase += this.plc.scanCount;
@@ -418,7 +430,10 @@ export class SimSession {
     this.programId = fingerprintId(next.fingerprint);
     this.lastOutputs = undefined;
     this.configureTrend();
-    if (!online) this.resetCounters();
+    if (!online) {
+      this.resetCounters();
+      this.carried = undefined;
+    }
     this.deps.post({ type: 'compiled', ok: true, online, diagnostics, layout: next.layout, program: this.programId });
     this.postFrame();
   }
@@ -482,6 +497,7 @@ export class SimSession {
   private coldRestart(): void {
     this.runner.stop();
     this.applyPending();
+    this.carried = undefined;
     this.runner.clock.set(0);
     if (this.plc) {
       this.plc.clearFault();
@@ -498,6 +514,7 @@ export class SimSession {
     this.runner.stop();
     plc.clearFault();
     plc.warmRestart();
+    this.carried = undefined;
     this.runner.breakpointHit = undefined;
     this.mode = wasRunning ? 'running' : 'stopped';
     if (wasRunning) this.runner.startRun();
@@ -527,9 +544,34 @@ export class SimSession {
     this.deps.post({ type: 'frame', frame }, [frame.elements.buffer, frame.vlinks.buffer, frame.executed.buffer]);
   }
 
+  /** What the replaced program's last scan showed, while the program an online change installed has not run. */
+  private carriedShown(): ShownScan | undefined {
+    const c = this.carried;
+    if (c && c.plc === this.plc && c.plc.scanCount === 0 && c.plc.nextNetwork === -1 && !c.plc.fault) return c.shown;
+    this.carried = undefined;
+    return undefined;
+  }
+
+  private shownNow(plc: Plc, layout: SimLayout): ShownScan {
+    return { values: readValues(plc, layout), power: packView(plc, layout, this.loaded?.program as CompiledProgram | undefined) };
+  }
+
   private frame(): SimFrame {
     const { plc, layout, runner } = this;
-    const power = plc && layout ? packView(plc, layout, this.loaded?.program as CompiledProgram | undefined) : undefined;
+    const carried = this.carriedShown();
+    // Fresh arrays: a frame's buffers are transferred to the page.
+    const power = carried
+      ? { elements: carried.power.elements.slice(), vlinks: carried.power.vlinks.slice(), executed: carried.power.executed.slice() }
+      : plc && layout
+        ? packView(plc, layout, this.loaded?.program as CompiledProgram | undefined)
+        : undefined;
+    const values = plc && layout ? readValues(plc, layout) : [];
+    // Inputs are read into the new program at its first scan: until then they show the last scan's
+    // (the other values were carried into the new program itself: carryValues).
+    if (carried && layout)
+      layout.variables.forEach((v, i) => {
+        if (v.location?.toUpperCase().startsWith('%I')) values[i] = carried.values[i]!;
+      });
     const trend = this.trend.take();
     const fault = plc?.fault;
     // At a scan boundary a configuration stands before its first program instance's network 1.
@@ -551,7 +593,7 @@ export class SimSession {
       elements: power?.elements ?? new Uint8Array(0),
       vlinks: power?.vlinks ?? new Uint8Array(0),
       executed: power?.executed ?? new Uint8Array(0),
-      values: plc && layout ? readValues(plc, layout) : [],
+      values,
       forced: plc ? [...plc.forced()] : [],
       ...(trend ? { trend } : {}),
       program: plc ? this.programId : null,

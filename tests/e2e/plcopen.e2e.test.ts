@@ -58,7 +58,7 @@ test('a file with several POUs shows the report and opens on the POU the user pi
   await importXml(editor, 'i2c_test.xml', text);
   const report = editor.page.getByTestId('plcopen-report');
   await report.waitFor();
-  expect(await report.textContent()).toMatch(/2 LD POUs/);
+  expect(await report.getByTestId('plcopen-pou-count').textContent()).toBe('2 POUs (LD)');
   expect(await report.getByTestId('plcopen-warnings').textContent()).toContain('I2C_AHT20');
   // A TC6 v2.01 file from OpenPLC runs as OpenPLC runs it; the report says so and where to change it.
   expect(await report.getByTestId('plcopen-profile').textContent()).toMatch(

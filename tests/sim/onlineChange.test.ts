@@ -134,3 +134,82 @@ describe('with hardware attached, an online change waits for the answer', () => 
     expect(h.value('Latch')).toBe(false);
   });
 });
+
+// Issue 22, section 2 item 10: an online change applied while paused (a global renamed) marked
+// every network "not run" and showed every input OFF until the next step: the new program had not
+// run yet. The display keeps the last scan, mapped to the new program.
+describe('an online change while paused keeps showing the last scan', () => {
+  const lamp = () => ladder(['[Start] (Lamp)']);
+  const other = () => ladder(['[Other] (Out2)']);
+  const before = () => vars('Start BOOL %IX0.0', 'Lamp BOOL %QX0.0', 'Other BOOL', 'Out2 BOOL');
+  const renamed = (net: Network): Network => ({ ...net, elements: net.elements.map((e) => (e.kind === 'contact' ? { ...e, variable: 'Spare' } : e)) });
+  const after = () => vars('Start BOOL %IX0.0', 'Lamp BOOL %QX0.0', 'Spare BOOL', 'Out2 BOOL');
+  /** Executed flags, and for each element its power byte, by element id (so layouts compare). */
+  const shown = (h: SimHarness) => {
+    const l = h.layout;
+    const f = h.frame;
+    return { executed: [...f.executed], power: Object.fromEntries(l.elementIds.map((id, k) => [id, f.elements[k]])) };
+  };
+  const paused = (networks: Network[]) => {
+    const h = new SimHarness().send({ type: 'run', project: project(before(), networks) }).advance(30);
+    h.send({ type: 'setInputs', values: { '%IX0.0': true } }).advance(30);
+    h.send({ type: 'pause' }).advance(10);
+    expect([h.value('Start'), h.value('Lamp')]).toEqual([true, true]);
+    return h;
+  };
+
+  test('renaming a variable while paused: networks still ran, the input still ON, power as it was', () => {
+    const [n1, n2] = [lamp(), other()];
+    const h = paused([n1, n2]);
+    const was = shown(h);
+    expect(was.executed).toEqual([1, 1]);
+    const scan = h.frame.scan;
+    h.send({ type: 'load', project: project(after(), [n1, renamed(n2)]) }).advance(10);
+    expect(h.of('onlineApplied')).toHaveLength(1);
+    expect(h.frame.mode).toBe('paused');
+    expect(h.frame.scan).toBe(scan);
+    expect([h.value('Start'), h.value('Lamp'), h.value('Spare'), h.value('Out2')]).toEqual([true, true, false, false]);
+    expect(shown(h)).toEqual(was); // same element ids: the same power, both networks ran
+    // A second change in a row keeps it too.
+    h.send({ type: 'load', project: project(before(), [n1, n2]) }).advance(10);
+    expect(h.of('onlineApplied')).toHaveLength(2);
+    expect(shown(h)).toEqual(was);
+    expect(h.value('Start')).toBe(true);
+    // The next step shows the new program's own scan.
+    h.send({ type: 'setInputs', values: { '%IX0.0': false } });
+    h.send({ type: 'step', scans: 1 }).advance(30);
+    expect(h.frame.scan).toBe(scan + 1);
+    expect([h.value('Start'), h.value('Lamp')]).toEqual([false, false]);
+    expect(h.frame.executed[0]).toBe(1);
+  });
+
+  test('a network added while paused shows as not run; the others keep their power', () => {
+    const [n1, n2] = [lamp(), other()];
+    const h = paused([n1, n2]);
+    const was = shown(h);
+    const added = ladder(['[Start] (Out2)']);
+    h.send({ type: 'load', project: project(before(), [n1, added, n2]) }).advance(10);
+    const now = shown(h);
+    expect(now.executed).toEqual([1, 0, 1]);
+    for (const [id, byte] of Object.entries(was.power)) expect(now.power[id]).toBe(byte);
+    for (const e of added.elements) expect(now.power[e.id]).toBe(0);
+  });
+
+  test('an input renamed while paused shows the value last read at its address', () => {
+    const [n1, n2] = [lamp(), other()];
+    const h = paused([n1, n2]);
+    const moved = (net: Network): Network => ({ ...net, elements: net.elements.map((e) => (e.kind === 'contact' ? { ...e, variable: 'Go' } : e)) });
+    h.send({ type: 'load', project: project(vars('Go BOOL %IX0.0', 'Lamp BOOL %QX0.0', 'Other BOOL', 'Out2 BOOL'), [moved(n1), n2]) }).advance(10);
+    expect([h.value('Go'), h.value('Lamp')]).toEqual([true, true]);
+    expect(h.value('Start')).toBeUndefined();
+  });
+
+  test('a cold restart after the change shows the restarted program, not the old scan', () => {
+    const [n1, n2] = [lamp(), other()];
+    const h = paused([n1, n2]);
+    h.send({ type: 'load', project: project(after(), [n1, renamed(n2)]) }).advance(10);
+    h.send({ type: 'reset' }).advance(10);
+    expect(h.frame.executed).toEqual(new Uint8Array([0, 0]));
+    expect(h.value('Lamp')).toBe(false);
+  });
+});

@@ -12,6 +12,7 @@ import { CancelOr } from './CancelOrButtons';
 import { ExportReviewDialog } from './ExportReviewDialog';
 import { openImported, readImportFile } from './plcopenActions';
 import { plcopenUi } from './plcopenUi';
+import { pouCountText, pouToOpen } from '../../plcopen/importSummary';
 import './plcopen.css';
 
 export function PlcopenHost() {
@@ -60,7 +61,8 @@ function ImportReportDialog() {
   const store = useDocumentStore();
   const pending = useStore(plcopenUi, (s) => s.pending);
   const [pou, setPou] = useState<string>('');
-  useEffect(() => setPou(pending?.project.pous[0]?.id ?? ''), [pending]);
+  // Open the program the configuration's resource runs, not the file's first POU (often a function).
+  useEffect(() => setPou((pending && pouToOpen(pending.project)) ?? ''), [pending]);
   if (!pending) return null;
   const { project, report, fileName } = pending;
   const close = () => plcopenUi.getState().setPending(undefined);
@@ -83,8 +85,9 @@ function ImportReportDialog() {
       }
     >
       <p>
-        PLCopen XML{report.producer ? ` written by ${report.producer}` : ''}: {project.pous.length} LD POU
-        {project.pous.length === 1 ? '' : 's'}, {networks} network{networks === 1 ? '' : 's'},{' '}
+        PLCopen XML{report.producer ? ` written by ${report.producer}` : ''}:{' '}
+        <span data-testid="plcopen-pou-count">{pouCountText(project)}</span>, {networks} LD network
+        {networks === 1 ? '' : 's'},{' '}
         {project.tasks.length} task
         {project.tasks.length === 1 ? '' : 's'}.
       </p>
@@ -97,8 +100,9 @@ function ImportReportDialog() {
           <select value={pou} onChange={(e) => setPou(e.target.value)} data-testid="plcopen-pou-choice">
             {project.pous.map((p) => (
               <option key={p.id} value={p.id}>
-                {p.name} ({p.kind.toLowerCase().replace('_', ' ')}, {p.networks.length} network
-                {p.networks.length === 1 ? '' : 's'})
+                {`${p.name} (${p.kind.toLowerCase().replace('_', ' ')}, ${
+                  p.language === 'LD' ? `${p.networks.length} network${p.networks.length === 1 ? '' : 's'}` : p.language
+                })`}
               </option>
             ))}
           </select>
@@ -106,7 +110,7 @@ function ImportReportDialog() {
         </label>
       ) : null}
       {project.pous.length === 0 ? (
-        <p className="rs-error-text">The file has no LD POU that Rungsmith can open.</p>
+        <p className="rs-error-text">The file has no POU that Rungsmith can open.</p>
       ) : null}
       {report.warnings.length ? (
         <>

@@ -1,5 +1,6 @@
 // File > Export PLCopen XML (a download, after a review of what Beremiz/OpenPLC run differently) and File > Import PLCopen XML… (read, report, then open).
 import type { PouId } from '../../model/ids';
+import { pouToOpen } from '../../plcopen/importSummary';
 import { exportBehaviour, type ExportFix } from '../../plcopen/exportBehaviour';
 import { exportPlcopen } from '../../plcopen/exportPlcopen';
 import { importPlcopen } from '../../plcopen/importPlcopen';
@@ -65,7 +66,8 @@ export function openImported(store: DocumentStore, pending: PendingImport, pouId
   plcopenUi.getState().setPending(undefined);
   replaceDocument(store, `Importing ${pending.fileName}`, 'Discard and import', () => {
     store.getState().loadProject(pending.project);
-    if (pouId) store.getState().setActivePou(pouId);
+    const open = pouId ?? pouToOpen(pending.project);
+    if (open) store.getState().setActivePou(open);
     const n = pending.report.warnings.length;
     filesUi
       .getState()

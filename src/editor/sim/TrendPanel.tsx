@@ -6,7 +6,7 @@ import 'uplot/dist/uPlot.min.css';
 import type { SimState } from '../../store/simStore';
 import { useSim, useSimStore } from './simContext';
 import { trendData, trendLayout, trendOptions, type TrendSignal, type TrendView } from './trendChart';
-import { useWatchCandidates } from './useWatchCandidates';
+import { useConfigurationInstances, useWatchCandidates } from './useWatchCandidates';
 import { VariablePicker } from './VariablePicker';
 import './sim.css';
 
@@ -19,6 +19,7 @@ export function TrendPanel() {
   const names = useSim(selectTrendNames);
   const capacity = useSim(selectCapacity);
   const candidates = useWatchCandidates();
+  const instances = useConfigurationInstances();
   const [capacityText, setCapacityText] = useState(String(capacity));
   useEffect(() => setCapacityText(String(capacity)), [capacity]);
   const add = (text: string) => {
@@ -34,7 +35,7 @@ export function TrendPanel() {
     <div className="rs-sim-panel rs-sim-trend" data-testid="trend-panel">
       <div className="rs-sim-panel-bar">
         <VariablePicker testId="trend" placeholder="Signal to trend" label="Signal to trend" buttonLabel="Add signal"
-          candidates={candidates} describe={(c) => c.type} onAdd={add} />
+          candidates={candidates} instances={instances} describe={(c) => c.type} onAdd={add} />
         <label className="rs-sim-group">
           <span className="rs-sim-unit">last</span>
           <input className="rs-sim-number" aria-label="Scans shown in the trend" value={capacityText} inputMode="numeric"

@@ -12,7 +12,7 @@ import { useGateway } from '../hardware/useGateway';
 import { forcedText, liveText } from './liveValues';
 import { useSim, useSimStore } from './simContext';
 import { ForcedBadge } from '../theme/ForcedBadge';
-import { useWatchCandidates } from './useWatchCandidates';
+import { useConfigurationInstances, useWatchCandidates } from './useWatchCandidates';
 import { VariablePicker } from './VariablePicker';
 import { aggregateCandidates, enumText, leafCount, modelLeaf, watchTree, type WatchNode } from './watchTree';
 import './sim.css';
@@ -25,6 +25,7 @@ export function WatchPanel() {
   const watch = useSim(selectWatch);
   const forcedCount = useSim(selectForcedCount);
   const readable = useWatchCandidates();
+  const instances = useConfigurationInstances();
   const project = useDocument(selectProject);
   // Readable names, then the struct/array variables (watched as trees of their members).
   const candidates = useMemo(() => [...readable, ...aggregateCandidates(project, readable)], [readable, project]);
@@ -38,7 +39,7 @@ export function WatchPanel() {
     <div className="rs-sim-panel" data-testid="watch-panel">
       <div className="rs-sim-panel-bar">
         <VariablePicker testId="watch" placeholder="Variable or Instance.PIN" label="Variable to watch" buttonLabel="Add to watch"
-          candidates={candidates} describe={(c) => `${c.type}${c.location ? ` ${c.location}` : ''}`} onAdd={add} />
+          candidates={candidates} instances={instances} describe={(c) => `${c.type}${c.location ? ` ${c.location}` : ''}`} onAdd={add} />
         <button type="button" className="rs-sim-btn" disabled={forcedCount === 0} onClick={() => sim.getState().unforceAll()}
           title="Remove every force" data-testid="unforce-all">
           Remove all forces{forcedCount > 0 ? ` (${forcedCount})` : ''}

@@ -34,3 +34,12 @@ export function useWatchCandidates(): readonly SimVariable[] {
     return pou ? readableNames(project, pou) : [];
   }, [layout, project]);
 }
+
+/** The program instances whose variables are named `Instance.Var` (a configuration runs); empty otherwise. */
+export function useConfigurationInstances(): readonly string[] {
+  const project = useDocument(selectProject);
+  return useMemo(
+    () => (runOptions(project).configuration ? programInstances(project).map((i) => i.instance) : []),
+    [project],
+  );
+}

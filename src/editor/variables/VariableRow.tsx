@@ -189,7 +189,9 @@ export function VariableRow({
           <CommitInput
             aria-label="Address"
             className="rs-cell-input rs-mono"
-            placeholder={library.isFbType(v.type) ? '' : v.type === 'BOOL' ? '%QX0.0' : '%MW0'}
+            // No address: an explicit hint, never a grey "%QX0.0" that looks like one every variable shares.
+            placeholder={library.isFbType(v.type) ? '' : 'no address'}
+            title={v.location ? undefined : 'No address: type one (%IX0.0 input, %QX0.0 output, %MW0 memory) to map it to I/O or memory'}
             spellCheck={false}
             value={v.location ?? ''}
             onCommit={(text) => onChange({ location: normaliseLocation(text) })}

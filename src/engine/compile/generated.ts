@@ -528,9 +528,10 @@ export function startGenerated(
       const netOf = (net: number) => (net >= 0 ? (latestNet.get(net) ?? -1) : -1);
       const elementNets = network.elements.map((el, i): Pair => {
         if (el.kind === 'link' || el.kind === 'connector' || el.kind === 'continuation') {
-          // A line from one contact to an OR shows that contact's own (latest) result.
+          // A line from one contact to an OR shows that contact's own (latest) result; a line from a
+          // block output shows that output (not the block's first BOOL output, its ENO).
           const own = g.linkSource[i]!;
-          const mine = own >= 0 ? (latest.get(own)?.[1] ?? -1) : -1;
+          const mine = own < 0 ? -1 : isBlock(g.nodes[own]!) ? (blockOut.get(own)?.get(g.linkSourcePin[i]!) ?? -1) : (latest.get(own)?.[1] ?? -1);
           const net = mine >= 0 ? mine : netOf(g.linkNet[i]!);
           return [net, net];
         }

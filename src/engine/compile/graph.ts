@@ -69,6 +69,8 @@ export interface NetworkGraph {
    * shows that output's own state, not the OR its net forms further right (section 1).
    */
   readonly linkSource: Int32Array;
+  /** The output pin of linkSource's node that drives the line (a block's Q, not its ENO); '' for other links. */
+  readonly linkSourcePin: readonly string[];
   /** Elements that could not be placed (outside the grid or overlapping): element index and reason. */
   readonly misplaced: readonly { index: number; reason: string }[];
   /** Vertical links outside the grid (vlink index). */
@@ -275,6 +277,7 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
 
   // Lines driven by one element output alone (no vertical link on them), for the power display.
   const linkSource = new Int32Array(network.elements.length).fill(-1);
+  const linkSourcePin: string[] = network.elements.map(() => '');
   const onBar = new Uint8Array(rows * width);
   network.vlinks.forEach((v, i) => {
     if (badVlinks.includes(i)) return;
@@ -282,10 +285,12 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
     onBar[point(v.row + 1, v.boundary)] = 1;
   });
   const outAt = new Int32Array(rows * width).fill(-1);
+  const pinAt = new Map<number, string>();
   nodes.forEach((n, ni) => {
     for (const t of n.outputs) {
       const p = point(t.row, t.boundary);
       outAt[p] = outAt[p] === -1 ? ni : -2;
+      pinAt.set(p, t.pin);
     }
   });
   const linkEndingAt = new Int32Array(rows * width).fill(-1);
@@ -301,8 +306,13 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
     const p = point(el.row, el.col);
     if (onBar[p] || el.col === 0) continue;
     const before = linkEndingAt[p]!;
-    if (outAt[p]! >= 0 && before < 0) linkSource[i] = outAt[p]!;
-    else if (outAt[p] === -1 && before >= 0) linkSource[i] = linkSource[before]!;
+    if (outAt[p]! >= 0 && before < 0) {
+      linkSource[i] = outAt[p]!;
+      linkSourcePin[i] = pinAt.get(p) ?? '';
+    } else if (outAt[p] === -1 && before >= 0) {
+      linkSource[i] = linkSource[before]!;
+      linkSourcePin[i] = linkSourcePin[before]!;
+    }
   }
 
   wired.bridges.forEach((b, i) => {
@@ -318,6 +328,7 @@ export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LI
     linkNet,
     vlinkNet,
     linkSource,
+    linkSourcePin,
     misplaced,
     badVlinks,
     bridges: wired.bridges,

@@ -1,0 +1,45 @@
+// A name typed into the watch table or the trend while a configuration runs: its variables are
+// named by program instance (`MainInstance.Filling`), so a short name (`Filling`) names nothing.
+// It resolves to the one instance path that ends in it, or offers the instance paths to pick from.
+
+export interface WatchNameChoice {
+  /** The name to add: the typed name when the program has it, or the one instance path it is short for. */
+  readonly name?: string;
+  /** The instance paths the text is (the start of) the short name of, for a completion list. */
+  readonly choices: readonly string[];
+}
+
+/**
+ * Resolves `text` against the readable `names`, given the configuration's program `instances`
+ * (none outside a configuration). `limit` caps the completion list.
+ */
+export function resolveWatchName(
+  text: string,
+  names: readonly string[],
+  instances: readonly string[],
+  limit = 8,
+): WatchNameChoice {
+  const t = text.trim().toUpperCase();
+  if (!t) return { choices: [] };
+  const exact = names.find((n) => n.toUpperCase() === t);
+  if (exact) return { name: exact, choices: [] };
+  if (!instances.length) return { choices: [] };
+  const prefixes = instances.map((i) => `${i.toUpperCase()}.`);
+  // The part of a name after its instance ("FILLING" of "MAININSTANCE.FILLING"), or undefined.
+  const shortOf = (n: string): string | undefined => {
+    const u = n.toUpperCase();
+    const p = prefixes.find((x) => u.startsWith(x));
+    return p ? u.slice(p.length) : undefined;
+  };
+  const whole: string[] = [];
+  const started: string[] = [];
+  for (const n of names) {
+    const s = shortOf(n);
+    if (s === undefined) continue;
+    if (s === t) whole.push(n);
+    else if (s.startsWith(t)) started.push(n);
+  }
+  const byName = (a: string, b: string) => a.localeCompare(b);
+  const choices = [...whole.sort(byName), ...started.sort(byName)].slice(0, limit);
+  return whole.length === 1 ? { name: whole[0]!, choices } : { choices };
+}
