@@ -13,7 +13,8 @@ import { canWiden, defaultValue, normalize, typeRange, type SizedType } from '..
 import type { PouContext } from './context';
 import type { GraphNode } from './graph';
 import type { ArgIR, Op, OutIR, Source } from './ir';
-import { accessWords, type NetMap } from './lower';
+import { accessWords } from './lower';
+import type { NetMap } from './netMap';
 import { describeElement, type Reporter } from './report';
 import { storeOf, type Access, type UfbSymbol } from './symbols';
 import { boxLayoutFor, type BoxLayout, type PlacedPin } from '../../model/boxLayout';

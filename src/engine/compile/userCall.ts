@@ -15,7 +15,7 @@ import { describeSource, initialText, lowerOutput, type InputInfo, type OutputIn
 import type { PouContext } from './context';
 import type { GraphNode } from './graph';
 import type { CallOp, OutIR, Source } from './ir';
-import type { NetMap } from './lower';
+import type { NetMap } from './netMap';
 import { accessWords } from './lower';
 import type { Reporter } from './report';
 import type { Access, AggSymbol, SymbolTable, UfbSymbol } from './symbols';
