@@ -13,7 +13,7 @@ import { canWiden, defaultValue, normalize, typeRange, type SizedType } from '..
 import type { PouContext } from './context';
 import type { GraphNode } from './graph';
 import type { ArgIR, Op, OutIR, Source } from './ir';
-import { accessWords } from './lower';
+import { accessWords } from './operands';
 import type { NetMap } from './netMap';
 import { describeElement, type Reporter } from './report';
 import { storeOf, type Access, type UfbSymbol } from './symbols';

@@ -16,7 +16,7 @@ import type { PouContext } from './context';
 import type { GraphNode } from './graph';
 import type { CallOp, OutIR, Source } from './ir';
 import type { NetMap } from './netMap';
-import { accessWords } from './lower';
+import { accessWords } from './operands';
 import type { Reporter } from './report';
 import type { Access, AggSymbol, SymbolTable, UfbSymbol } from './symbols';
 import { aggregatePinShape, aggregateRef, leafCopies, lowerAggregateOutput, type AggValue } from './aggregatePins';
