@@ -11,7 +11,7 @@ import { isElementaryType, type ElementaryType } from '../../model/iecTypes';
 import { isInOutPin } from '../../model/library';
 import type { Pou } from '../../model/project';
 import { canWiden } from '../values/types';
-import { describeSource, initialText, lowerOutput, type InputInfo, type OutputInfo } from './box';
+import { describeSource, initialText, lowerOutput, type InputInfo, type OutputInfo } from './boxPins';
 import type { PouContext } from './context';
 import type { GraphNode } from './graph';
 import type { CallOp, OutIR, Source } from './ir';
