@@ -19,7 +19,7 @@ import type { Project } from '../../model/project';
 import { dimsText, nodeLeaves, type AggNode, type AggSymbol } from './aggregates';
 import type { BoxElement } from '../../model/elements';
 import type { PlacedPin } from '../../model/boxLayout';
-import type { NetMap } from './lower';
+import type { NetMap } from './netMap';
 import { describeElement, type Reporter } from './report';
 import type { Access, SymbolTable } from './symbols';
 

@@ -1,5 +1,6 @@
 // Function and function block boxes: instance (LD-R10), pin wiring and operands (LD-R10), types
 // (LD-R11, with the implicit widenings of values/types.canWiden), and the operation to generate.
+// Pin descriptions and outputs shared with user POU calls: boxPins.ts; user POU calls: userCall.ts.
 import {
   GENERIC_MEMBERS,
   isElementaryType,
@@ -13,38 +14,17 @@ import { canWiden, defaultValue, normalize, typeRange, type SizedType } from '..
 import type { PouContext } from './context';
 import type { GraphNode } from './graph';
 import type { ArgIR, Op, OutIR, Source } from './ir';
-import { accessWords, type NetMap } from './lower';
+import type { NetMap } from './netMap';
 import { describeElement, type Reporter } from './report';
-import { storeOf, type Access, type UfbSymbol } from './symbols';
+import type { Access, UfbSymbol } from './symbols';
 import { boxLayoutFor, type BoxLayout, type PlacedPin } from '../../model/boxLayout';
 import { isInOutPin } from '../../model/library';
 import { lowerUserCall } from './userCall';
-import { aggregatePinShape, lowerAggregateInput, type AggValue } from './aggregatePins';
+import { describeSource, initialText, lowerOutput, type InputInfo } from './boxPins';
+import { aggregatePinShape, lowerAggregateInput } from './aggregatePins';
 
 const admitsType = (pinType: string, t: ElementaryType): boolean =>
   isElementaryType(pinType) ? pinType === t : (GENERIC_MEMBERS[pinType as GenericType] ?? []).includes(t);
-
-export interface InputInfo {
-  readonly pin: PlacedPin;
-  /** Wired source or operand; undefined when the pin is left open. */
-  src?: Source;
-  /** Known type of the source (undefined: an untyped literal or a data line not typed yet). */
-  type?: ElementaryType;
-  /** Operand text when the pin takes a literal that must be re-read at the resolved type. */
-  literal?: string;
-  /** A function input left unconnected: it takes its type's initial value (IEC; MATIEC's default). */
-  open?: boolean;
-  /** A struct/array pin of a user block: the whole value given to it (aggregatePins.ts). */
-  agg?: AggValue;
-}
-
-/** An output pin of a box: its net, whether a line is attached, the variable written beside it. */
-export interface OutputInfo {
-  readonly pin: PlacedPin;
-  readonly net: number;
-  readonly wired: boolean;
-  readonly operand: string;
-}
 
 export function lowerBox(
   ctx: PouContext,
@@ -373,113 +353,9 @@ export function lowerBox(
   };
 }
 
-export function lowerOutput(
-  ctx: PouContext,
-  nets: NetMap,
-  el: BoxElement,
-  name: string,
-  o: { pin: PlacedPin; net: number; wired: boolean; operand: string },
-  type: ElementaryType,
-  fbPin: Access | undefined,
-  r: Reporter,
-): OutIR | undefined {
-  let dst: Access | undefined;
-  if (o.operand) {
-    const res = ctx.symbols.resolve(o.operand, { literals: false, implicitLocations: true });
-    if (!res.ok) {
-      r.error(res.unknown ? 'LD-E02' : 'LD-R11', `output ${o.pin.name} of ${name}: ${res.message}`, el);
-      return undefined;
-    }
-    const a = res.access;
-    if (a.kind === 'pin' && a.dir === 'out')
-      return void r.error(
-        'LD-R11',
-        `output ${o.pin.name} of ${name} cannot write ${accessWords(a)}, an output of another block`,
-        el,
-      );
-    if ((a.kind === 'var' || a.kind === 'bit') && a.v.constant)
-      return void r.error(
-        'LD-R11',
-        `output ${o.pin.name} of ${name} cannot write "${a.v.name}", which is CONSTANT`,
-        el,
-      );
-    if (!canWiden(type, a.type))
-      return void r.error(
-        'LD-R11',
-        `output ${o.pin.name} of ${name} gives ${type} but ${accessWords(a)} is ${a.type}`,
-        el,
-      );
-    dst = a;
-  }
-  const g = nets.g.nets[o.net]!;
-  if (type === 'BOOL') {
-    nets.dataPending.delete(o.net);
-    return { pin: o.pin.name, type, net: nets.powerNet(o.net), ...(dst ? { dst } : {}) };
-  }
-  if (!o.wired) return { pin: o.pin.name, type, ...(dst ? { dst } : {}) };
-  // A data line: one source, read only by block inputs.
-  if (g.sources.length > 1 || g.leftRail || g.feeds.length || g.feedsOut.length) {
-    r.error(
-      'LD-R11',
-      `output ${o.pin.name} of ${name} carries ${type}; its line is joined to other outputs or to the rail`,
-      el,
-    );
-    return undefined;
-  }
-  for (const s of g.sinks) {
-    const sinkEl = nets.g.nodes[s.node]!.el;
-    if (sinkEl.kind !== 'box')
-      r.error(
-        'LD-R11',
-        `${describeElement(sinkEl)} is on the ${type} line from output ${o.pin.name} of ${name}; contacts and coils need BOOL power flow`,
-        sinkEl,
-      );
-  }
-  if (g.rightRail)
-    r.error(
-      'LD-R11',
-      `output ${o.pin.name} of ${name} carries ${type} to the right rail; only power flow may reach the rail`,
-      el,
-    );
-  let data: { store: ReturnType<typeof storeOf>; slot: number } | undefined;
-  let source: Source;
-  // openplc: a slot a block with an executionOrderId already reads (generated.ts): written here too.
-  const held = nets.heldData.get(o.net);
-  if (fbPin && !held) source = { from: 'access', access: fbPin };
-  else {
-    const store = storeOf(type);
-    data = held && held.store === store ? held : { store, slot: ctx.symbols.counts[store]++ };
-    if (data !== held) ctx.dataSlots.push({ ...data, type });
-    source = { from: 'data', ...data, type };
-  }
-  nets.data.set(o.net, source);
-  return { pin: o.pin.name, type, ...(data ? { data } : {}), ...(dst ? { dst } : {}) };
-}
-
-export function initialText(type: string): string {
-  if (type === 'STRING') return "''";
-  if (type === 'WSTRING') return '""';
-  if (type === 'DATE') return 'D#1970-01-01';
-  if (type === 'TOD') return 'TOD#00:00:00';
-  if (type === 'DT') return 'DT#1970-01-01-00:00:00';
-  return type === 'BOOL'
-    ? 'FALSE'
-    : type === 'TIME'
-      ? 'T#0s'
-      : type === 'REAL' || type === 'LREAL'
-        ? '0.0'
-        : '0';
-}
-
 function unconnectedFbInput(name: string, pin: PlacedPin): string {
   const initial = initialText(pin.type);
   return `input ${pin.name} of ${name} is not connected: it keeps the instance's value (${initial} at first); wire it or write a variable or a literal beside it`;
-}
-
-export function describeSource(src: Source): string {
-  if (src.from === 'power') return 'its line';
-  if (src.from === 'data') return 'the wired value';
-  return accessWords(src.access);
 }
 
 /**

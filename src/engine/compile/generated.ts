@@ -51,7 +51,8 @@ import { lowerBox } from './box';
 import type { PouContext } from './context';
 import { upstream, type GraphNode, type NetworkGraph } from './graph';
 import type { NetworkIR, Op, OutIR, Source } from './ir';
-import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget, NetMap, networkIR, type PendingNetwork } from './lower';
+import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget } from './operands';
+import { NetMap, networkIR, type PendingNetwork } from './netMap';
 import { describeElement, type Reporter } from './report';
 import { storeOf, type Access } from './symbols';
 

@@ -31,12 +31,12 @@ import { generateSegment, planSegments } from '../compile/segments';
 import { networkPower, type PowerTrace } from './snapshot';
 import { DEFAULT_TIERING, Tiering, type TieringOptions } from './tiering';
 import type { CompiledProgram } from '../compile/program';
-import type { TaskTrigger } from '../compile/taskTriggers';
 import { programOf } from '../compile/taskSchedule';
 import type { Access, VarSymbol } from '../compile/symbols';
 import { coerce, Memory } from './memory';
 import { exportMemory, importMemory, stateItemsOf } from './instanceState';
 import { imageBytes, restoreMemory, saveMemory, type MachineImage } from './machineImage';
+import { programRates, type ProgramRates } from './programRates';
 
 type Image = MachineImage<Value, readonly [VarSymbol, Value]>;
 
@@ -851,37 +851,4 @@ export class ScanPlc implements Plc {
     }
     return best;
   }
-}
-
-/** Which programs run in a scan when the tasks run at several rates or on events. */
-interface ProgramRates {
-  /** Per task (like schedule.tasks): ticks between runs (0: an event task) and its trigger. */
-  readonly every: Int32Array;
-  readonly triggers: readonly (TaskTrigger | undefined)[];
-  /** Per task: due in this scan. */
-  readonly taskDue: Uint8Array;
-  /** Per program: its task, and whether it runs in this scan. */
-  readonly taskOf: Int32Array;
-  readonly due: Uint8Array;
-  /** The program starting at each network (-1: none). */
-  readonly startOf: Int32Array;
-}
-
-/** Several rates or event tasks: what decides which programs run in a scan; else undefined. */
-function programRates(program: CompiledProgram): ProgramRates | undefined {
-  const { schedule, programTask } = program;
-  if (!schedule?.multiRate || !programTask) return undefined;
-  const startOf = new Int32Array(program.mainEnd).fill(-1);
-  for (let p = 0; p < program.programs; p++) {
-    const body = program.bodies[p]!;
-    if (body.end > body.first) startOf[body.first] = p;
-  }
-  return {
-    every: Int32Array.from(schedule.tasks, (t) => t.every),
-    triggers: schedule.tasks.map((_, k) => program.triggers?.[k]),
-    taskDue: new Uint8Array(schedule.tasks.length).fill(1),
-    taskOf: programTask,
-    due: new Uint8Array(program.programs).fill(1),
-    startOf,
-  };
 }
