@@ -338,3 +338,32 @@ export async function spawnGateway(configFile: string): Promise<GatewayProcess> 
   if (!m) throw new Error(`unexpected first line: ${line}`);
   return { proc, port: Number(m[1]), token: m[2] ?? '', stderr: () => log, exited };
 }
+
+/** When each coil changed on the device, replaying every client's writes in order from all OFF. */
+export function coilFlips(writes: readonly LoggedWrite[], count: number): number[][] {
+  const state = new Array<number>(count).fill(0);
+  const flips: number[][] = Array.from({ length: count }, () => []);
+  for (const w of writes) {
+    if (w.table !== 'co') continue;
+    w.values.forEach((v, i) => {
+      const coil = w.address + i;
+      if (coil >= count || state[coil] === v) return;
+      state[coil] = v;
+      flips[coil]!.push(w.at);
+    });
+  }
+  return flips;
+}
+
+/** The most flips of one coil within any window of `ms`. */
+export function mostFlipsWithin(flips: readonly number[][], ms: number): number {
+  let most = 0;
+  for (const times of flips) {
+    for (let i = 0; i < times.length; i++) {
+      let n = 0;
+      for (let j = i; j < times.length && times[j]! - times[i]! < ms; j++) n++;
+      most = Math.max(most, n);
+    }
+  }
+  return most;
+}

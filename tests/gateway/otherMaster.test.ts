@@ -11,41 +11,12 @@ import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
 import { freeLoopbackPort } from '../../src/gateway/modbusLib';
 import type { GatewayMessage } from '../../src/protocol/messages';
-import { eventually, mbpoll, PyModbusServer, readWriteLog, TestClient, type LoggedWrite } from './helpers';
+import { coilFlips, eventually, mbpoll, mostFlipsWithin, PyModbusServer, readWriteLog, TestClient } from './helpers';
 
 const POLL_MS = 20;
 const COILS = 4;
 type Status = Extract<GatewayMessage, { t: 'status' }>;
 const sleep = (ms: number) => new Promise((r) => setTimeout(r, ms));
-
-/** When each coil changed on the device, replaying every client's writes in order from all OFF. */
-export function coilFlips(writes: readonly LoggedWrite[], count: number): number[][] {
-  const state = new Array<number>(count).fill(0);
-  const flips: number[][] = Array.from({ length: count }, () => []);
-  for (const w of writes) {
-    if (w.table !== 'co') continue;
-    w.values.forEach((v, i) => {
-      const coil = w.address + i;
-      if (coil >= count || state[coil] === v) return;
-      state[coil] = v;
-      flips[coil]!.push(w.at);
-    });
-  }
-  return flips;
-}
-
-/** The most flips of one coil within any window of `ms`. */
-export function mostFlipsWithin(flips: readonly number[][], ms: number): number {
-  let most = 0;
-  for (const times of flips) {
-    for (let i = 0; i < times.length; i++) {
-      let n = 0;
-      for (let j = i; j < times.length && times[j]! - times[i]! < ms; j++) n++;
-      most = Math.max(most, n);
-    }
-  }
-  return most;
-}
 
 describe('two masters on one device (issue 21.2)', () => {
   const gateways: RunningGateway[] = [];
