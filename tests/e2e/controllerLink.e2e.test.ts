@@ -1,7 +1,8 @@
 // Issue 21, the controller link in a real Chromium against the gateway serving the built app:
 // a 1 ms program whose outputs change every scan is not thrown out as a flooder (4); the lease
 // heartbeat comes from the worker that runs the scan, so a blocked page does not trip it and a
-// terminated worker ends it (5); a refused page stops driving, says why and offers Reconnect (4).
+// terminated worker ends it (5); a refused page stops driving, says why and offers Reconnect (4);
+// paused, an input changed on the device is marked in the Watch (smaller item).
 // Device coils are read back over Modbus TCP with mbpoll.
 import type { Locator, Page } from 'playwright-core';
 import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
@@ -105,6 +106,42 @@ describe('controller link (issue 21)', () => {
     await observer.waitFor((m) => m.t === 'status' && !m.armed && m.disarm?.cause === 'controller-lost', 10_000, from);
     await eventually(async () => (await coil0()) === 0, 10_000, 'coil 0 OFF');
     await expect.poll(() => page.getByTestId('sim-notice').textContent(), { timeout: 15_000 }).toMatch(/simulator stopped|Hardware link lost/);
+  });
+
+  it('paused on hardware, an input that changes on the device shows its device value in the Watch next to the stale one', async () => {
+    const { page, errors } = await openApp(browser(), gw.url);
+    pages.push(page);
+    const sim = new SimPage(page);
+    const setInput = (n: number, on: boolean) => mbpoll(gw.simulated?.modbusServerPort ?? 0, ['-t', '0', '-r', String(800 + n), '127.0.0.1', on ? '1' : '0']);
+    await setInput(0, false);
+    await sim.openExample('Motor start/stop (seal-in)');
+    await page.getByTestId('tab-hardware').click();
+    const panel = page.getByTestId('hardware-panel');
+    await panel.getByTestId('hw-connect').click();
+    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
+    await sim.tab('Watch');
+    await page.getByTestId('watch-add-name').fill('Start');
+    await page.getByTestId('watch-add').click();
+    const row = page.getByTestId('watch-row-Start');
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await expect.poll(() => row.getByTestId('watch-value').textContent()).toBe('FALSE');
+    await sim.button('pause').click();
+    await sim.waitForMode('Paused');
+
+    // Start pressed on the device while paused: the program has not read it; the Watch says so.
+    await setInput(0, true);
+    await expect.poll(() => row.getByTestId('watch-value').textContent(), { timeout: 15_000 }).toBe('FALSE device: TRUE');
+    expect(await sim.value('Start')).toBe(false);
+    // Run again: the program reads it, the two agree, the mark goes.
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await expect.poll(() => row.getByTestId('watch-value').textContent(), { timeout: 15_000 }).toBe('TRUE');
+    await eventually(async () => (await coil0()) === 1, 10_000, 'Motor on the device');
+    await sim.button('pause').click();
+    await eventually(async () => (await coil0()) === 0, 10_000, 'safe state after Pause');
+    await setInput(0, false);
+    expect(errors).toEqual([]);
   });
 
   it('a page the gateway refuses stops driving, says why in plain words and offers Reconnect', async () => {
