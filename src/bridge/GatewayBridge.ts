@@ -8,9 +8,13 @@
  *       converted to its variable's type (a WORD 65535 read into an INT variable gives -1). The
  *       gateway's other points are not the program's I/O and are never passed.
  *   bridge.sendOutputs(values)     values: Record<address, Value>, the scan's output image.
- *       Call after every scan (or every scan that changed it: the bridge re-sends the last image
- *       every `heartbeatMs` so the gateway's lease stays fed while the simulation runs). Addresses
- *       the gateway does not have as outputs are left out; values wrap to the point's 16 bits.
+ *       Call after every scan (or every scan that changed it). Sent coalesced (OutputPump: at most
+ *       once per gateway poll, the last image never dropped) and re-sent every 100 ms so the
+ *       gateway's lease stays fed. Addresses the gateway does not have as outputs are left out;
+ *       values wrap to the point's 16 bits.
+ *   With a `driver` (the page: the simulation worker holds the link, src/bridge/workerRelay.ts),
+ *   attach and drive() hand the exchange to the worker instead: it applies the inputs and sends
+ *   the outputs and heartbeat itself, so a busy page cannot trip the lease.
  *   bridge.attach(sim, bindings)   on Run: wire the simulation store's setInputs/onOutputs (one at a time).
  *       When the operator pressed Run (`requestArm()` first), `arm` is sent before the first outputs.
  *   bridge.requestArm()            Run pressed as controller: the next attach arms the gateway. Nothing
@@ -32,20 +36,28 @@ import type { Value } from '../model/iecTypes';
 import { canonicalAddress, type WireValue } from '../protocol/points';
 import type { GatewayClient } from './GatewayClient';
 import type { Binding } from './mapping';
+import { OutputPump } from './outputPump';
 import { attachSimulation, type SimulationPorts } from './simulationLink';
 import { fromWire, toWire } from './wireValues';
+import type { ProgramDriver } from './workerSocket';
 
 export class GatewayBridge {
   private lastOutputs: Record<string, WireValue> | undefined;
-  private lastSentAt = 0;
-  private heartbeat: ReturnType<typeof setInterval> | undefined;
+  private readonly pump: OutputPump;
   private detachSimulation: (() => void) | undefined;
   private armOnAttach = false;
 
   constructor(
     private readonly client: GatewayClient,
-    private readonly heartbeatMs = 100,
-  ) {}
+    private readonly driver?: ProgramDriver,
+  ) {
+    this.pump = new OutputPump((image) => this.client.sendOutputs(image), { periodMs: () => this.client.snapshot.pollMs ?? 100 });
+  }
+
+  /** True when the worker drives the hardware (the page only commands). */
+  get drivenByWorker(): boolean {
+    return this.driver !== undefined;
+  }
 
   get canDrive(): boolean {
     return this.client.isController && this.client.snapshot.status?.armed !== false;
@@ -70,10 +82,15 @@ export class GatewayBridge {
       if (address && type) wire[address] = toWire(type, value);
     }
     this.lastOutputs = wire;
-    this.push();
-    this.heartbeat ??= setInterval(() => {
-      if (Date.now() - this.lastSentAt >= this.heartbeatMs * 0.9) this.push();
-    }, this.heartbeatMs);
+    this.pump.offer(wire);
+  }
+
+  /**
+   * With a driver: the worker exchanges images with the program (`run` while it runs, `step` for
+   * confirmed stepping, fed between steps). Returns the function that ends it; undefined without a driver.
+   */
+  drive(bindings: readonly Binding[], kind: 'run' | 'step'): (() => void) | undefined {
+    return this.driver?.drive(bindings, kind);
   }
 
   /**
@@ -86,7 +103,7 @@ export class GatewayBridge {
       this.armOnAttach = false;
       this.arm(); // the operator's Run: arm before the first outputs (the socket keeps the order)
     }
-    const detach = attachSimulation(sim, this, bindings);
+    const detach = this.driver?.drive(bindings, 'run') ?? attachSimulation(sim, this, bindings);
     const once = () => {
       if (this.detachSimulation !== once) return;
       this.detachSimulation = undefined;
@@ -110,8 +127,7 @@ export class GatewayBridge {
   stop(): void {
     this.armOnAttach = false;
     this.detachSimulation?.();
-    clearInterval(this.heartbeat);
-    this.heartbeat = undefined;
+    this.pump.stop();
     this.lastOutputs = undefined;
     this.client.stop();
   }
@@ -127,8 +143,4 @@ export class GatewayBridge {
     });
   }
 
-  private push(): void {
-    if (!this.lastOutputs) return;
-    if (this.client.sendOutputs(this.lastOutputs)) this.lastSentAt = Date.now();
-  }
 }

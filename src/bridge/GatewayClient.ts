@@ -21,6 +21,8 @@ export interface GatewayView {
   readonly session: string | null;
   readonly points: readonly PointInfo[];
   readonly devices: readonly DeviceInfo[];
+  /** The gateway's fastest device poll (welcome), when it says. */
+  readonly pollMs?: number;
   readonly status: StatusMessage | null;
   readonly values: Readonly<Record<string, WireValue>>;
   readonly quality: Readonly<Record<string, Quality>>;
@@ -166,7 +168,12 @@ export class GatewayClient {
       if (ev.code === 1008) {
         this.wanted = false;
         const why = this.view.lastError?.message ?? ev.reason;
-        this.update({ ...IDLE_VIEW, link: 'refused', lastError: this.view.lastError, problem: `refused by the gateway: ${why || 'policy violation'}` });
+        const wasController = this.view.role === 'controller';
+        const problem =
+          this.view.lastError?.code === 'flood'
+            ? `the gateway closed the link: this page sent ${why} (flood protection)${wasController ? '; the program no longer drives the outputs, the gateway holds them in the safe state' : ''}. Press Reconnect`
+            : `refused by the gateway: ${why || 'policy violation'}`;
+        this.update({ ...IDLE_VIEW, link: 'refused', lastError: this.view.lastError, problem });
         return;
       }
       this.lost(ev.code === 1006 ? `no gateway at ${this.opts.socketUrl}` : `connection closed (${ev.code}${ev.reason ? `: ${ev.reason}` : ''})`);
@@ -197,7 +204,7 @@ export class GatewayClient {
     switch (msg.t) {
       case 'welcome':
         this.retryMs = this.opts.retryFirstMs ?? 500;
-        this.update({ ...v, link: 'open', role: msg.role, session: msg.session, points: msg.points, devices: msg.devices, problem: null });
+        this.update({ ...v, link: 'open', role: msg.role, session: msg.session, points: msg.points, devices: msg.devices, pollMs: msg.pollMs, problem: null });
         break;
       case 'image':
         this.update({ ...v, values: msg.values, quality: msg.quality });

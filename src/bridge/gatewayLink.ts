@@ -4,6 +4,8 @@ import type { Role } from '../protocol/messages';
 import { gatewaySocketUrl } from './connection';
 import { GatewayBridge } from './GatewayBridge';
 import { GatewayClient, IDLE_VIEW, type GatewayView, type SocketFactory } from './GatewayClient';
+import type { SimTransport } from '../sim/host';
+import { workerDriver, workerSocketFactory, type ProgramDriver } from './workerSocket';
 
 export interface LinkTarget {
   /** The gateway's page URL (http://127.0.0.1:8080/) or host:port. */
@@ -17,7 +19,18 @@ export class GatewayLink {
   private readonly listeners = new Set<() => void>();
   private view: GatewayView = IDLE_VIEW;
 
-  constructor(private readonly socketFactory?: SocketFactory) {}
+  private driver: ProgramDriver | undefined;
+
+  constructor(private socketFactory?: SocketFactory) {}
+
+  /**
+   * The page: the link's socket lives in the simulation worker, which drives the hardware while the
+   * program runs (src/bridge/workerRelay.ts). Applies from the next connect.
+   */
+  useWorker(transport: SimTransport): void {
+    this.socketFactory = workerSocketFactory(transport);
+    this.driver = workerDriver(transport);
+  }
 
   /** Opens the link; returns an error in plain words when the URL or token cannot be used. */
   connect(target: LinkTarget): string | null {
@@ -27,7 +40,7 @@ export class GatewayLink {
     this.disconnect();
     const client = new GatewayClient({ socketUrl, token: target.token.trim(), role: target.role, socketFactory: this.socketFactory });
     const unsubscribe = client.subscribe((v) => this.set(v));
-    this.current = { client, bridge: new GatewayBridge(client), unsubscribe };
+    this.current = { client, bridge: new GatewayBridge(client, this.driver), unsubscribe };
     client.connect();
     return null;
   }

@@ -46,6 +46,8 @@ export interface LeaseBridge {
   sendOutputs(values: Readonly<Record<string, Value>>): void;
   arm(): void;
   stop(): void;
+  /** The simulation worker exchanges the images itself (GatewayBridge.drive); undefined: the page does. */
+  drive?(bindings: readonly Binding[], kind: 'run' | 'step'): (() => void) | undefined;
 }
 
 export interface StepContext {
@@ -112,7 +114,7 @@ export class SteppingLease {
     // reports goes to the gateway; the worker reports the current one at once, so the bridge's
     // heartbeat starts right away.
     bridge.arm();
-    const detach = ctx.sim.onOutputs((outputs) => bridge.sendOutputs(outputs));
+    const detach = bridge.drive?.(ctx.bindings(), 'step') ?? ctx.sim.onOutputs((outputs) => bridge.sendOutputs(outputs));
     this.feeding = { bridge, detach };
     this.set({ phase: 'stepping', request: undefined });
     this.exchange(bridge, request, ctx);

@@ -34,6 +34,8 @@ export const MAX_CLIENTS = 8;
  * one that waited longest is closed for a new one, so silent sockets can never lock a controller out.
  */
 export const MAX_WAITING_FOR_HELLO = 16;
+/** The simulated device writes at once; a controller need not send it outputs more often than this. */
+const SIMULATED_POLL_MS = 50;
 /** The cached image frame is rebuilt at least this often even when no change was reported. */
 const IMAGE_CACHE_MS = 1000;
 /** Frames between 64 KiB and this get an error reply; beyond it `ws` closes the connection (1009). */
@@ -71,6 +73,7 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
   const simulated = config.devices.length === 0 ? new SimulatedDevice(config.simulated.modbusPort) : undefined;
   const devices: Device[] = simulated ? [simulated] : config.devices.map((d) => new ModbusTcpDevice(d));
 
+  const pollMs = simulated ? SIMULATED_POLL_MS : Math.min(...config.devices.map((d) => d.pollMs));
   const sessions = new Set<Session>();
   let seq = 0;
   const broadcast = (body: GatewayMessageBody) => {
@@ -160,7 +163,7 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
     wss.handleUpgrade(req, socket, head, (ws) => {
       settle();
       const limiter = budgets.take(identity);
-      const session = new Session(randomUUID().slice(0, 8), ws, { hub, token, simulated, nextSeq: () => ++seq, log, limiter, mayObserve, stalls, imageFrame });
+      const session = new Session(randomUUID().slice(0, 8), ws, { hub, token, simulated, nextSeq: () => ++seq, log, limiter, mayObserve, stalls, imageFrame, pollMs });
       sessions.add(session);
       ws.on('close', () => {
         sessions.delete(session);

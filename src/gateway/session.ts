@@ -43,6 +43,8 @@ export interface SessionContext {
   readonly stalls?: StallMeter;
   /** The full image as one serialised frame, cached until the image changes (gateway.ts). */
   imageFrame?(seq: number): string;
+  /** The fastest device poll (ms), told to clients in the welcome. */
+  readonly pollMs?: number;
 }
 
 export class Session {
@@ -183,7 +185,7 @@ export class Session {
     }
     this.role = role;
     this.ctx.log(`session ${this.id}: ${this.role}${msg.role !== this.role ? ' (controller lease is taken)' : ''}`);
-    this.send({ t: 'welcome', session: this.id, role: this.role, points: hub.pointList(), devices: hub.devices.map((d) => d.info) });
+    this.send({ t: 'welcome', session: this.id, role: this.role, points: hub.pointList(), devices: hub.devices.map((d) => d.info), ...(this.ctx.pollMs ? { pollMs: this.ctx.pollMs } : {}) });
     this.sendImage();
     this.send({ t: 'status', ...hub.status() });
   }

@@ -96,6 +96,8 @@ export const welcomeSchema = z.object({
   role: roleSchema,
   points: z.array(pointSchema),
   devices: z.array(deviceInfoSchema),
+  /** The fastest device poll in ms: outputs sent more often than this are never written (a controller coalesces them). */
+  pollMs: z.number().int().positive().optional(),
 });
 export const imageSchema = z.object({ v, t: z.literal('image'), seq, values, quality });
 export const inputsSchema = z.object({ v, t: z.literal('inputs'), seq, values, quality });

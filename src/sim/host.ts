@@ -35,8 +35,12 @@ export function createWorkerTransport(): SimTransport {
       return () => listeners.delete(listener);
     },
     terminate() {
-      worker?.terminate();
+      if (!worker) return;
+      worker.terminate();
       worker = undefined;
+      // Whatever the worker held (the gateway link's socket) is gone with it.
+      const message: WorkerMessage = { type: 'error', message: 'the simulator stopped: the worker was terminated' };
+      for (const listener of listeners) listener(message);
     },
   };
 }

@@ -102,7 +102,41 @@ export type HostMessage =
    * Runs a test scenario in the simulator from a cold restart (recorded in the history), stopping
    * after the first divergent scan; answered with `scenarioReplayed`.
    */
-  | { readonly type: 'replayScenario'; readonly id: number; readonly project: Project; readonly scenario: Scenario; readonly epoch?: number };
+  | { readonly type: 'replayScenario'; readonly id: number; readonly project: Project; readonly scenario: Scenario; readonly epoch?: number }
+  | GatewayHostMessage;
+
+/**
+ * The gateway link runs in the worker (issue 21 item 5: the lease heartbeat comes from where the
+ * program runs). The page's GatewayClient speaks protocol v1 through a socket the worker holds
+ * (gwOpen/gwSend/gwClose, answered by gwEvent); while the page drives the hardware (gwDrive) the
+ * worker itself applies the gateway's inputs to the program, sends each scan's output image
+ * (coalesced, src/bridge/outputPump.ts) and the heartbeat, so a busy page cannot trip the lease and
+ * a stopped or crashed worker does. gwPrograms: the programs whose outputs may drive (the one shown).
+ */
+export type GatewayHostMessage =
+  | { readonly type: 'gwOpen'; readonly id: number; readonly url: string }
+  | { readonly type: 'gwSend'; readonly id: number; readonly data: string }
+  | { readonly type: 'gwClose'; readonly id: number; readonly code?: number; readonly reason?: string }
+  | { readonly type: 'gwDrive'; readonly drive: GatewayDrive | null }
+  | { readonly type: 'gwPrograms'; readonly ids: readonly string[] };
+
+/** A program variable bound to a gateway point (src/bridge/mapping.ts Binding, as data). */
+export interface DriveBinding {
+  readonly address: string;
+  readonly varType: string;
+  readonly dir: 'in' | 'out';
+}
+
+export interface GatewayDrive {
+  readonly bindings: readonly DriveBinding[];
+  /** run: driven while the program runs (a stop, pause or fault ends it); step: confirmed stepping, fed between steps too. */
+  readonly kind: 'run' | 'step';
+}
+
+export type GatewayWorkerMessage =
+  | { readonly type: 'gwEvent'; readonly id: number; readonly event: 'open' | 'message' | 'close'; readonly data?: string; readonly code?: number; readonly reason?: string }
+  /** The worker ended a drive by itself (the program stopped, or the link closed), with why. */
+  | { readonly type: 'gwDriveEnded'; readonly reason: string };
 
 /** A recorded scan as the UI draws it (same layout as a frame). */
 export interface HistoryView {
@@ -263,4 +297,5 @@ export type WorkerMessage =
   | { readonly type: 'historyNotFound'; readonly message: string }
   | { readonly type: 'explanation'; readonly id: number; readonly explanation: Explanation }
   | { readonly type: 'historyText'; readonly id: number; readonly format: 'trace' | 'scenario'; readonly text: string }
-  | { readonly type: 'scenarioReplayed'; readonly id: number; readonly result: ScenarioResult };
+  | { readonly type: 'scenarioReplayed'; readonly id: number; readonly result: ScenarioResult }
+  | GatewayWorkerMessage;

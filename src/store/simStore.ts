@@ -192,7 +192,15 @@ export function createSimStore(transport: SimTransport): SimStore {
   //   the gateway.
   let sentProject: SentDocument | undefined;
   let requested: SentDocument | undefined;
-  let expected = new Set<string>();
+  let expectedSet = new Set<string>();
+  /** The programs whose outputs may drive the hardware; the worker is told (gwPrograms: it drives the link). */
+  const expected = {
+    has: (id: string) => expectedSet.has(id),
+    set(ids: Set<string>) {
+      expectedSet = ids;
+      transport.send({ type: 'gwPrograms', ids: [...ids] });
+    },
+  };
   /** The program the worker last reported (current epoch), null when none. */
   let running: string | null = null;
   let epoch = 0;
@@ -215,7 +223,7 @@ export function createSimStore(transport: SimTransport): SimStore {
     const id = programId(project);
     // A Run/Step with a changed document on a live program is an online change: the running program
     // finishes its scan and is swapped at the boundary; otherwise only this document may run.
-    expected = new Set(store.getState().live && running !== null ? [id, running] : [id]);
+    expected.set(new Set(store.getState().live && running !== null ? [id, running] : [id]));
     if (sentProject?.id === id && running === id) return undefined;
     requested = { project, id, by: 'start' };
     return project;
@@ -332,7 +340,7 @@ export function createSimStore(transport: SimTransport): SimStore {
       unload: () => {
         sentProject = undefined;
         requested = undefined;
-        expected = new Set();
+        expected.set(new Set());
         running = null;
         set({
           notice: undefined,
@@ -363,7 +371,7 @@ export function createSimStore(transport: SimTransport): SimStore {
         if (id === requested?.id) return;
         requested = { project, id, by: 'load' };
         // Online change: the running program stays accepted until the swap (or while the edit has errors).
-        expected = new Set(running === null ? [id] : [id, running]);
+        expected.set(new Set(running === null ? [id] : [id, running]));
         send({ type: 'load', project, epoch: nextEpoch() });
       },
       toggleBreakpoint: (networkId) => {
@@ -461,7 +469,7 @@ export function createSimStore(transport: SimTransport): SimStore {
         })),
       replayScenario: (project, scenario) => {
         sentProject = undefined;
-        expected = new Set([programId(project)]);
+        expected.set(new Set([programId(project)]));
         requested = { project, id: programId(project), by: 'start' };
         liveStash = undefined;
         set({ historyScan: undefined, historyTimeMs: undefined, explanation: undefined, refusal: undefined, notice: undefined });
@@ -492,14 +500,14 @@ export function createSimStore(transport: SimTransport): SimStore {
           if (message.online || requested?.by === 'load') {
             store.setState({ refusal: { diagnostics: message.diagnostics, online: message.online } });
           } else {
-            expected = new Set();
+            expected.set(new Set());
             store.setState({ refusal: { diagnostics: message.diagnostics, online: false }, ...NO_PROGRAM });
           }
           return;
         }
         if (message.program !== undefined && message.program === requested?.id) {
           sentProject = requested;
-          expected = new Set([message.program]);
+          expected.set(new Set([message.program]));
         }
         if (message.layout) {
           store.setState({ refusal: undefined, ...indexLayout(message.layout) });
@@ -611,7 +619,7 @@ export function createSimStore(transport: SimTransport): SimStore {
   function refuseHiddenProgram(): void {
     sentProject = undefined;
     requested = undefined;
-    expected = new Set();
+    expected.set(new Set());
     running = null;
     transport.send({ type: 'unload', epoch: nextEpoch() });
     store.setState({

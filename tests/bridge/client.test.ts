@@ -41,7 +41,7 @@ describe('GatewayClient and GatewayBridge', () => {
     await eventually(() => c.snapshot.link === 'open' && c.snapshot.status !== null, 3000, 'open');
     expect(c.snapshot.role).toBe('controller');
     expect(c.snapshot.points).toHaveLength(40);
-    const bridge = new GatewayBridge(c, 50);
+    const bridge = new GatewayBridge(c);
     const seen: Record<string, unknown>[] = [];
     const off = bridge.onInputs((changed) => seen.push(changed));
     c.simulate({ '%IX0.4': true, '%IW1': 65535 });
@@ -82,7 +82,7 @@ describe('GatewayClient and GatewayBridge', () => {
     const c = client('controller');
     c.connect();
     await eventually(() => c.snapshot.link === 'open', 3000, 'open');
-    const bridge = new GatewayBridge(c, 50);
+    const bridge = new GatewayBridge(c);
     const received: Record<string, unknown>[] = [];
     let emit: ((o: Readonly<Record<string, Value>>, scan: number) => void) | undefined;
     const sim = {

@@ -67,4 +67,17 @@ describe('field I/O in the editor', () => {
     expect(deviceMarks(simState([false, false, true]), network, view({ values: { '%QX0.0': true } }))).toEqual([]);
     expect(deviceMarks(simState([false, false, true]), network, { ...view({ values: { '%QX0.0': false } }), link: 'idle' })).toEqual([]);
   });
+
+  test('an input that changed on the device while the program is paused shows the device value next to the stale one', () => {
+    const network: Network = motorNetwork();
+    const startElements = network.elements.filter((e) => e.kind === 'contact' && e.variable === 'Start').map((e) => e.id);
+    const paused = { ...simState([false, false, false]), mode: 'paused' } as SimState;
+    const device = view({ values: { '%IX0.0': true, '%QX0.0': false } });
+    expect(deviceMarks(paused, network, device)).toEqual(startElements.map((id) => [id, 'device: TRUE']));
+    // Running as controller the program reads it every scan: nothing stale to mark.
+    expect(deviceMarks({ ...paused, mode: 'running' } as SimState, network, device)).toEqual([]);
+    // Running as an observer the program does not read the device: the difference is shown.
+    expect(deviceMarks({ ...paused, mode: 'running' } as SimState, network, { ...device, role: 'observer' })).toEqual(startElements.map((id) => [id, 'device: TRUE']));
+    expect(deviceMarks({ ...simState([true, false, false]), mode: 'paused' } as SimState, network, device)).toEqual([]);
+  });
 });

@@ -3,6 +3,7 @@ import { useState } from 'react';
 import { tokenFromFragment } from '../../bridge/connection';
 import { gatewayLink } from '../../bridge/gatewayLink';
 import type { Role } from '../../protocol/messages';
+import { useSimStore } from '../sim/simContext';
 import { useGateway } from './useGateway';
 
 /** Opened from the gateway (token in the fragment): the gateway is this page's origin. */
@@ -15,6 +16,7 @@ const LINK_WORDS = { idle: 'Not connected', connecting: 'Connecting…', open: '
 
 export function ConnectForm() {
   const view = useGateway();
+  useSimStore(); // the link's socket lives in the simulation worker: make sure it exists
   const [initial] = useState(defaults);
   const [url, setUrl] = useState(initial.url);
   const [token, setToken] = useState(initial.token);
@@ -50,7 +52,7 @@ export function ConnectForm() {
       </label>
       <div className="rs-hw-row">
         <button type="submit" className="rs-hw-primary" data-testid="hw-connect">
-          {linked ? 'Disconnect' : 'Connect'}
+          {linked ? 'Disconnect' : view.link === 'refused' ? 'Reconnect' : 'Connect'}
         </button>
         <span className={`rs-hw-link rs-hw-link-${view.link}`} data-testid="hw-link" role="status">
           {LINK_WORDS[view.link]}

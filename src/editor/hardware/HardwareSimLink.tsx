@@ -38,6 +38,12 @@ export function HardwareSimLink() {
     if (wasRunning.current) {
       wasRunning.current = false;
       bridge?.stop(); // paused, stopped or faulted: safe state first
+      if (mode === 'running' && !controller) {
+        // The link went while the program runs: the simulation goes on, but it does not drive the
+        // outputs any more (the gateway holds them in the safe state). Never shown as if it did.
+        const why = gatewayLink.snapshot().problem ?? 'the link to the gateway is closed';
+        sim.setState({ notice: `Hardware link lost while running (${why}). The program no longer drives the outputs; the gateway holds them in the safe state. Reconnect in the Hardware panel, then press Run to drive them again.` });
+      }
     }
     return undefined;
   }, [mode, link, role, points, project, sim, stepping]);

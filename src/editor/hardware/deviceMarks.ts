@@ -1,20 +1,25 @@
 // "device: FALSE" next to a contact or coil whose output point holds another value on the device than
 // the program's (paused on hardware: the program says TRUE, the device holds the safe state), so the
 // canvas and the Watch panel never show only the program's side. Text, not only colour.
+// Inputs likewise: paused (or not fed by this page), an input that changed on the device since the
+// program last read it shows the device's value next to the program's stale one.
 import { useMemo } from 'react';
 import type { GatewayView } from '../../bridge/GatewayClient';
 import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
 import type { SimState } from '../../store/simStore';
 import { useSim } from '../sim/simContext';
-import { deviceOutputDiff, deviceText } from './fieldIo';
+import { deviceInputDiff, deviceOutputDiff, deviceText } from './fieldIo';
 import { useGateway } from './useGateway';
 
 /** The marker for a variable, or undefined when the device agrees (or there is no device value). */
 export function deviceMark(s: SimState, name: string, view: GatewayView): string | undefined {
   const i = s.variableIndex.get(name.toUpperCase());
   if (i === undefined || !s.live) return undefined;
-  const diff = deviceOutputDiff(s.layout?.variables[i], s.values[i], view);
+  const variable = s.layout?.variables[i];
+  // A running program that drives the hardware reads its inputs every scan: no stale input to mark.
+  const fed = s.mode === 'running' && view.role === 'controller';
+  const diff = deviceOutputDiff(variable, s.values[i], view) ?? deviceInputDiff(variable, s.values[i], view, fed);
   return diff === undefined ? undefined : `device: ${deviceText(diff)}`;
 }
 

@@ -35,4 +35,18 @@ export function deviceOutputDiff(variable: SimVariable | undefined, programValue
   return toWire(point.type, programValue) === device ? undefined : device;
 }
 
+/**
+ * The device's value of the input point a variable reads, when the link is open and it differs from
+ * the program's value; undefined otherwise. `fed`: the running program reads the device every scan
+ * (they differ only until the next scan, so nothing is marked).
+ */
+export function deviceInputDiff(variable: SimVariable | undefined, programValue: Value | undefined, view: GatewayView, fed: boolean): WireValue | undefined {
+  if (fed || !variable?.location || variable.role !== 'input' || programValue === undefined || view.link !== 'open') return undefined;
+  const address = canonicalAddress(variable.location);
+  const point = address ? view.points.find((p) => p.address === address && p.dir === 'in') : undefined;
+  const device = point ? view.values[point.address] : undefined;
+  if (!point || device === undefined) return undefined;
+  return toWire(point.type, programValue) === device ? undefined : device;
+}
+
 export const deviceText = (v: WireValue): string => (typeof v === 'boolean' ? (v ? 'TRUE' : 'FALSE') : String(v));

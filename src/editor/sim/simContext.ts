@@ -2,6 +2,7 @@
 // on first use; a test or an embedding can provide its own store with <SimStoreProvider>.
 import { createContext, createElement, useContext, type ReactNode } from 'react';
 import { useStore } from 'zustand';
+import { gatewayLink } from '../../bridge/gatewayLink';
 import { createWorkerTransport } from '../../sim/host';
 import { createSimStore, type SimState, type SimStore } from '../../store/simStore';
 
@@ -10,10 +11,14 @@ let appStore: SimStore | undefined;
 /** The app's simulation store (its worker starts with the first command). */
 export function getAppSimStore(): SimStore {
   if (!appStore) {
-    appStore = createSimStore(createWorkerTransport());
+    const transport = createWorkerTransport();
+    appStore = createSimStore(transport);
+    // The gateway link lives in the same worker as the scan: outputs and the lease heartbeat come
+    // from where the program runs (src/bridge/workerRelay.ts).
+    gatewayLink.useWorker(transport);
     // Scripting aid and test handle, next to the document and UI stores (docs/editor.md "Scripting aid").
     const w = window as unknown as { rungsmith?: Record<string, unknown> };
-    w.rungsmith = { ...(w.rungsmith ?? {}), simStore: appStore };
+    w.rungsmith = { ...(w.rungsmith ?? {}), simStore: appStore, terminateSimulation: () => transport.terminate() };
   }
   return appStore;
 }
