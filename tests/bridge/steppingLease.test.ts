@@ -15,7 +15,12 @@ import { newPou, newProject, variable } from '../../src/model/factory';
 import type { Value } from '../../src/model/iecTypes';
 import { eventually } from '../gateway/helpers';
 
-const WATCHDOG_MS = 300;
+/**
+ * The gateway's lease: ten of the bridge's 100 ms heartbeats, so that a busy machine (a heartbeat
+ * late by a few hundred ms) does not trip it; the waits below that prove "still fed" or "nothing
+ * re-feeds it" are multiples of it.
+ */
+const WATCHDOG_MS = 1000;
 const config = resolveConfig({ watchdogMs: WATCHDOG_MS, simulated: { modbusPort: null } });
 const factory = (url: string) => new WebSocket(url) as unknown as SocketLike;
 const sleep = (ms: number) => new Promise((r) => setTimeout(r, ms));
@@ -70,7 +75,7 @@ describe('SteppingLease with a real gateway', () => {
   const connect = async () => {
     client = new GatewayClient({ socketUrl: `ws://127.0.0.1:${gw.port}/io`, token: gw.token, role: 'controller', socketFactory: factory });
     client.connect();
-    await eventually(() => client.snapshot.link === 'open' && client.snapshot.status !== null, 3000, 'open');
+    await eventually(() => client.snapshot.link === 'open' && client.snapshot.status !== null, 10_000, 'open');
     bridge = new GatewayBridge(client);
     controller = true;
     lease = new SteppingLease(() => (controller && client.isController ? bridge : undefined));
@@ -84,16 +89,16 @@ describe('SteppingLease with a real gateway', () => {
     await connect();
     const sim = new OneRungSim();
     client.simulate({ '%IX0.0': true });
-    await eventually(() => client.snapshot.values['%IX0.0'] === true, 3000, 'input');
+    await eventually(() => client.snapshot.values['%IX0.0'] === true, 10_000, 'input');
     lease.step({ kind: 'scans', scans: 1 }, sim.context(bindings));
     lease.confirm();
-    await eventually(() => written() === true, 3000, 'output on');
+    await eventually(() => written() === true, 10_000, 'output on');
     return sim;
   };
   afterEach(async () => {
     lease.end('stop');
     client.simulate({ '%IX0.0': false });
-    await eventually(() => written() === false && client.snapshot.values['%IX0.0'] === false, 3000, 'clean device');
+    await eventually(() => written() === false && client.snapshot.values['%IX0.0'] === false, 10_000, 'clean device');
     client.disconnect();
   });
 
@@ -128,28 +133,28 @@ describe('SteppingLease with a real gateway', () => {
     await connect();
     const sim = new OneRungSim();
     client.simulate({ '%IX0.0': true });
-    await eventually(() => client.snapshot.values['%IX0.0'] === true, 3000, 'input set on the device');
+    await eventually(() => client.snapshot.values['%IX0.0'] === true, 10_000, 'input set on the device');
     expect(lease.step({ kind: 'scans', scans: 1 }, sim.context(bindings))).toBe('asked');
     expect(client.snapshot.status?.armed).toBe(false); // the gateway starts disarmed
     lease.confirm(); // the operator's confirmation arms it
     expect(lease.snapshot().phase).toBe('stepping');
     expect(sim.events).toEqual(['inputs', 'scan']);
     expect(sim.inputs['%IX0.0']).toBe(true);
-    await eventually(() => written() === true, 3000, 'output on the device');
-    expect(client.snapshot.status?.armed).toBe(true);
+    // The device has the output before the gateway's status (armed) reaches the client: wait for both.
+    await eventually(() => written() === true && client.snapshot.status?.armed === true, 10_000, 'output on the device, armed');
 
     // Paused in stepping mode for several watchdog periods: still armed, fed, output kept.
-    await sleep(WATCHDOG_MS * 4);
+    await sleep(WATCHDOG_MS * 2);
     expect(client.snapshot.status?.armed).toBe(true);
     expect(client.snapshot.status?.watchdog.state).toBe('fed');
     expect(written()).toBe(true);
 
     // The next step does not ask again and sees the input the device has now.
     client.simulate({ '%IX0.0': false });
-    await eventually(() => client.snapshot.values['%IX0.0'] === false, 3000, 'input cleared');
+    await eventually(() => client.snapshot.values['%IX0.0'] === false, 10_000, 'input cleared');
     expect(lease.step({ kind: 'scans', scans: 1 }, sim.context(bindings))).toBe('stepped-on-hardware');
     expect(sim.events).toEqual(['inputs', 'scan', 'inputs', 'scan']);
-    await eventually(() => written() === false, 3000, 'output off on the device');
+    await eventually(() => written() === false, 10_000, 'output off on the device');
     expect(client.snapshot.status?.watchdog.state).toBe('fed');
   });
 
@@ -157,8 +162,8 @@ describe('SteppingLease with a real gateway', () => {
     const sim = await steppingWithOutputOn();
     lease.end('stop');
     expect(sim.subscribed).toBe(false);
-    await eventually(() => written() === false && client.snapshot.status?.watchdog.state === 'idle', 3000, 'safe state');
-    await sleep(WATCHDOG_MS * 2);
+    await eventually(() => written() === false && client.snapshot.status?.watchdog.state === 'idle', 10_000, 'safe state');
+    await sleep(WATCHDOG_MS * 1.5);
     expect(client.snapshot.status?.watchdog.state).toBe('idle'); // nothing re-feeds it
     expect(written()).toBe(false);
     expect(lease.step({ kind: 'scans', scans: 1 }, sim.context(bindings))).toBe('asked');
@@ -169,10 +174,10 @@ describe('SteppingLease with a real gateway', () => {
   it('the Safe state (stop) while stepping latches: later steps do not re-arm, their outputs are refused', async () => {
     const sim = await steppingWithOutputOn();
     client.stop(); // the Hardware panel's Safe state, the lease still feeding
-    await eventually(() => written() === false && client.snapshot.status?.armed === false, 3000, 'safe state');
+    await eventually(() => written() === false && client.snapshot.status?.armed === false, 10_000, 'safe state');
     expect(lease.step({ kind: 'scans', scans: 1 }, sim.context(bindings))).toBe('stepped-on-hardware');
-    await eventually(() => client.snapshot.lastError?.code === 'disarmed', 3000, 'outputs refused');
-    await sleep(WATCHDOG_MS * 2);
+    await eventually(() => client.snapshot.lastError?.code === 'disarmed', 10_000, 'outputs refused');
+    await sleep(WATCHDOG_MS * 1.5);
     expect(written()).toBe(false);
     expect(client.snapshot.status?.disarm?.cause).toBe('stop');
   });
@@ -182,7 +187,7 @@ describe('SteppingLease with a real gateway', () => {
     lease.end('run');
     expect(lease.snapshot().phase).toBe('off');
     expect(sim.subscribed).toBe(false);
-    await sleep(WATCHDOG_MS * 2);
+    await sleep(WATCHDOG_MS * 1.5);
     expect(written()).toBe(true); // no stop was sent; the bridge keeps the image until the run attaches
     bridge.stop();
   });
