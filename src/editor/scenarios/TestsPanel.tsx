@@ -4,12 +4,12 @@
 import { useMemo, useState } from 'react';
 import type { Project, Scenario } from '../../model/project';
 import { parseScenario, runScenario, type ScenarioResult } from '../../sim/scenario';
-import { readCsv, csvRow } from '../../sim/csv';
-import { newScenarioCsv, newScenarioName } from '../../sim/scenarioTemplate';
-import { runScenarioApart, ScenarioRunView } from './ScenarioRun';
 import { useDocument, useDocumentStore } from '../../store/documentStore';
 import { useSimStore } from '../sim/simContext';
 import '../history/history.css';
+import { readCsv, csvRow } from '../../sim/csv';
+import { newScenarioCsv, newScenarioName } from '../../sim/scenarioTemplate';
+import { runScenarioApart, ScenarioRunView } from './ScenarioRun';
 
 const selectProject = (s: { project: Project }) => s.project;
 
