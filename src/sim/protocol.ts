@@ -296,6 +296,7 @@ export type WorkerMessage =
   /** A historyFind found nothing: said in words. */
   | { readonly type: 'historyNotFound'; readonly message: string }
   | { readonly type: 'explanation'; readonly id: number; readonly explanation: Explanation }
-  | { readonly type: 'historyText'; readonly id: number; readonly format: 'trace' | 'scenario'; readonly text: string }
+  /** `refused`: why the recorded scans make no scenario (text is empty then). */
+  | { readonly type: 'historyText'; readonly id: number; readonly format: 'trace' | 'scenario'; readonly text: string; readonly refused?: string }
   | { readonly type: 'scenarioReplayed'; readonly id: number; readonly result: ScenarioResult }
   | GatewayWorkerMessage;

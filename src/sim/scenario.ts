@@ -256,7 +256,7 @@ export function runScenario(project: Project, scenario: Scenario): ScenarioRun {
     return fail((e as Error).message);
   }
   // Without `# pou:`, what the simulator runs: the tasks' program instances (a configuration when
-  // there are several, each task at its own interval), as "Open failure in timeline" replays it.
+  // there are several, each task at its own interval), as the Tests panel's "Run" (in a simulation of its own) replays it.
   const { program, diagnostics } = compileProgram(project, parsed.pou ? { pou: parsed.pou } : runOptions(project));
   if (!program) {
     const first = diagnostics.find((d) => d.severity === 'error');

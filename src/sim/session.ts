@@ -92,6 +92,12 @@ export class SimSession {
   /** Records every scan of the installed program (issue 14); a new program starts a new history. */
   private recorder: HistoryRecorder | undefined;
   private historyOptions: HistoryOptions = {};
+  /**
+   * What happened since the last cold start (Reset, or a program installed afresh) that a scenario,
+   * which replays from a cold start, cannot reproduce: an online change or warm restart (at the
+   * scan given), and the variables forced.
+   */
+  private sinceColdStart: { interruptedAt?: { scan: number; what: string }; forced: Set<string> } = { forced: new Set() };
   /** The body the UI monitors (setView); absent: the program's. */
   private view: SimView | undefined;
   /** Breakpoints as the UI sent them: program network indexes and document network ids. */
@@ -201,6 +207,7 @@ export class SimSession {
         return;
       case 'force':
         this.requirePlc().force(m.name, valueFor(this.deps.engine, this.layout, m.name, m.input));
+        this.sinceColdStart.forced.add(m.name);
         this.postFrame();
         return;
       case 'unforce':
@@ -264,6 +271,11 @@ export class SimSession {
       }
       case 'historyExport': {
         const recorder = this.requireHistory();
+        const refused = m.format === 'scenario' ? this.scenarioRecordingProblem(recorder, m.from) : undefined;
+        if (refused) {
+          this.deps.post({ type: 'historyText', id: m.id, format: m.format, text: '', refused });
+          return;
+        }
         const text =
           m.format === 'trace'
             ? recorder.traceCsv(m.names ?? this.layout!.variables.map((v) => v.name), m.from, m.to)
@@ -412,6 +424,7 @@ export class SimSession {
       this.scanBase += this.plc.scanCount;
     }
     this.install(pending.program, true, pending.diagnostics);
+    this.sinceColdStart.interruptedAt ??= { scan: this.scanBase, what: 'an online change' };
     this.deps.post({ type: 'onlineApplied', id: pending.id, scan: this.scanBase, plan });
   }
 
@@ -515,6 +528,7 @@ export class SimSession {
     plc.clearFault();
     plc.warmRestart();
     this.carried = undefined;
+    this.sinceColdStart.interruptedAt ??= { scan: this.scanBase + plc.scanCount, what: 'a warm restart' };
     this.runner.breakpointHit = undefined;
     this.mode = wasRunning ? 'running' : 'stopped';
     if (wasRunning) this.runner.startRun();
@@ -522,6 +536,7 @@ export class SimSession {
   }
 
   private resetCounters(): void {
+    this.sinceColdStart = { forced: new Set(this.plc?.forced().keys() ?? []) };
     this.runner.resetCounters();
     this.scanBase = 0;
     this.trend.clear();
@@ -623,6 +638,24 @@ export class SimSession {
       throw new Error(`scan ${scan} is not in the history (scans ${h.first} to ${h.last} are recorded)`);
     }
     this.deps.post({ type: 'historyView', view }, [view.elements.buffer, view.vlinks.buffer, view.executed.buffer]);
+  }
+
+  /**
+   * Why the recorded scans cannot become a scenario that replays as it ran, or undefined. A scenario
+   * starts from a cold start and only sets inputs, so the recording must start at scan 1 after a cold
+   * start, with no online change or warm restart and no forces since.
+   */
+  private scenarioRecordingProblem(recorder: HistoryRecorder, from: number | undefined): string | undefined {
+    const again = 'Press Reset (cold restart), release the forces, run and switch the inputs, then record again.';
+    const { interruptedAt, forced } = this.sinceColdStart;
+    if (interruptedAt)
+      return `A scenario replays from a cold start, and ${interruptedAt.what} at scan ${interruptedAt.scan} changed the program or its state since the last one: the scenario would not replay as it ran. ${again}`;
+    if (forced.size)
+      return `Forces were active while recording (${[...forced].join(', ')}): a scenario sets inputs and cannot force, so it would not replay as it ran. ${again}`;
+    const first = Math.max(from ?? 1, recorder.history.first ?? 1);
+    if (first !== 1)
+      return `A scenario replays from a cold start, but the recording starts at scan ${first} (${from && from > 1 ? 'the range asked' : 'the oldest scans no longer fit in the history'}), not at scan 1. ${again}`;
+    return undefined;
   }
 
   /** A scenario run in the simulator from a cold restart, recorded, paused after the first divergent scan. */

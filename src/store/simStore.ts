@@ -569,6 +569,10 @@ export function createSimStore(transport: SimTransport): SimStore {
       case 'scenarioReplayed': {
         const p = pending.get(message.id);
         pending.delete(message.id);
+        if (message.type === 'historyText' && message.refused !== undefined) {
+          p?.reject(new Error(message.refused));
+          return;
+        }
         const value = message.type === 'explanation' ? message.explanation : message.type === 'historyText' ? message.text : message.result;
         p?.resolve(value as never);
         return;

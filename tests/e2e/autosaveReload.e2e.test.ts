@@ -3,6 +3,8 @@
 import { expect, test } from 'vitest';
 import { openApp, useChromium, waitForApp } from './appPage';
 import { DrawPage } from './drawPage';
+import { EditorPage } from './panelsPage';
+import { sealInProject } from './sealInProject';
 
 const browser = useChromium();
 
@@ -55,3 +57,38 @@ test('a reload right after a change or an undo keeps it, at any delay up to 1.5 
   expect(errors).toEqual([]);
   await page.close();
 });
+
+test('a 10,000-network project: a change and an undo survive a reload at once', async () => {
+  const editor = await EditorPage.open(browser());
+  const { page } = editor;
+  const big = sealInProject(10_000, 'Ten thousand');
+  await page.evaluate((p) => window.rungsmith!.documentStore!.getState().loadProject(p), big);
+  await editor.waitForAutosave();
+  const titles = () =>
+    page.evaluate(() => {
+      const n = window.rungsmith!.documentStore!.getState().project.pous[0]!.networks;
+      return [n.length, n[4321]!.title, n[9999]!.title];
+    });
+  const reload = async (expected: unknown[]) => {
+    await page.reload();
+    await waitForApp(page);
+    await expect.poll(titles, { timeout: 120_000 }).toEqual(expected);
+  };
+  // Changes made through the document's commands (the canvas would take long to scroll there).
+  const retitle = (index: number, title: string) =>
+    page.evaluate(
+      ([i, t]) => {
+        const s = window.rungsmith!.documentStore!.getState();
+        s.updateNetwork(s.project.pous[0]!.networks[i as number]!.id, { title: t as string });
+      },
+      [index, title] as const,
+    );
+  await retitle(4321, 'Changed');
+  await reload([10_000, 'Changed', 'Motor 9999']);
+  await retitle(9999, 'Undone');
+  await page.evaluate(() => window.rungsmith!.documentStore!.getState().undo());
+  await reload([10_000, 'Changed', 'Motor 9999']);
+  expect(editor.errors).toEqual([]);
+  await editor.close();
+  // A big project on a shared, busy machine: room for loading it three times.
+}, 300_000);

@@ -88,11 +88,11 @@ test('a scenario recorded from the simulation fails after an edit and passes aft
   await page.getByTestId('tests-run-all').click();
   await page.getByTestId('tests-summary').filter({ hasText: '0 passed, 2 failed' }).waitFor();
   expect(await page.getByTestId('tests-failure').first().textContent()).toMatch(/scan \d+: Motor expected 1, got 0/);
-  // Opened in the timeline: the first divergent scan, with Why? on Motor.
+  // Why it failed: the first divergent scan, with Why? on Motor, from a run in a simulation of its
+  // own; the live session runs on.
   await page.getByTestId('tests-open').first().click();
-  await page.getByTestId('history-marker').filter({ hasText: 'HISTORY' }).waitFor();
-  await sim.tab('Why?');
-  await page.getByTestId('why-explanation').filter({ hasText: '| | Stop is open: Stop is FALSE' }).waitFor();
+  await page.getByTestId('scenario-why').filter({ hasText: '| | Stop is open: Stop is FALSE' }).waitFor();
+  expect(await sim.mode()).toMatch(/Running/);
   // The fix (undo), and the scenarios pass again.
   await page.evaluate(() => window.rungsmith!.documentStore!.getState().undo());
   await sim.tab('Tests');

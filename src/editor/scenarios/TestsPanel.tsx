@@ -8,6 +8,9 @@ import { useDocument, useDocumentStore } from '../../store/documentStore';
 import { useSimStore } from '../sim/simContext';
 import { runScenariosOffPage } from './scenarioRunner';
 import '../history/history.css';
+import { readCsv, csvRow } from '../../sim/csv';
+import { newScenarioCsv, newScenarioName } from '../../sim/scenarioTemplate';
+import { runScenarioApart, ScenarioRunView } from './ScenarioRun';
 
 const selectProject = (s: { project: Project }) => s.project;
 
@@ -30,14 +33,12 @@ export function TestsPanel() {
       setRunning(false);
     }
   };
+  // A run in a simulation of its own: the live session is never reset or touched.
+  const [shown, setShown] = useState<{ name: string; result: ScenarioResult } | undefined>();
   const open = async (sc: Scenario) => {
-    const r = await sim.getState().replayScenario(project, sc);
+    const r = await runScenarioApart(project, sc);
     setResults((prev) => ({ ...prev, [sc.name]: r }));
-    const d = r.divergences[0];
-    if (d) {
-      sim.getState().seekHistory(d.scan);
-      sim.getState().explain({ kind: 'variable', name: d.name }, d.scan);
-    }
+    setShown({ name: sc.name, result: r });
   };
   const record = async () => {
     const layout = sim.getState().layout;
@@ -47,14 +48,31 @@ export function TestsPanel() {
     }
     const inputs = layout.variables.filter((v) => v.role === 'input').map((v) => v.name);
     const outputs = layout.variables.filter((v) => v.role === 'output').map((v) => v.name);
-    const csv = await sim.getState().exportHistory({ format: 'scenario', inputs, outputs });
+    let csv: string;
+    try {
+      csv = await sim.getState().exportHistory({ format: 'scenario', inputs, outputs });
+    } catch (e) {
+      // Recorded scans a scenario cannot replay (an online change, a force, not from a cold start).
+      setMessage((e as Error).message);
+      return;
+    }
     let n = scenarios.length + 1;
     while (scenarios.some((s) => s.name === `Recorded ${n}`)) n++;
     save([...scenarios, { name: `Recorded ${n}`, csv }]);
     setMessage(`Recorded ${n} added from the scan history (${inputs.length} inputs, ${outputs.length} outputs expected).`);
   };
-  const passed = Object.values(results).filter((r) => r.ok).length;
-  const failed = Object.values(results).filter((r) => !r.ok).length;
+  // Results of the scenarios as they are (an edited or deleted scenario's old result is dropped).
+  const current = scenarios.flatMap((sc) => (results[sc.name] ? [results[sc.name]!] : []));
+  const passed = current.filter((r) => r.ok).length;
+  const failed = current.filter((r) => !r.ok).length;
+  const forget = (...names: string[]) =>
+    setResults((prev) => Object.fromEntries(Object.entries(prev).filter(([n]) => !names.includes(n))));
+  const addScenario = () => {
+    const name = newScenarioName(scenarios);
+    save([...scenarios, { name, csv: newScenarioCsv(project) }]);
+    setEditing(scenarios.length);
+    setMessage(`${name} added: one column per input and an expect column per output; fill in the scans and Save.`);
+  };
   return (
     <div className="rs-sim-panel" data-testid="tests-panel">
       <div className="rs-sim-panel-bar">
@@ -62,10 +80,14 @@ export function TestsPanel() {
           {running ? 'Running…' : 'Run all'}
         </button>
         <button type="button" className="rs-sim-btn" onClick={() => void record()} data-testid="tests-record"
-          title="A scenario from the recorded scans: the inputs where they changed and the outputs seen">
+          title="A scenario from the scans since the last cold start (Reset): the inputs where they changed and the outputs seen. A scenario always replays from a cold start.">
           Record from simulation
         </button>
-        {Object.keys(results).length > 0 && (
+        <button type="button" className="rs-sim-btn" onClick={addScenario} data-testid="tests-new"
+          title="An empty scenario with the program's inputs and outputs as columns">
+          New scenario
+        </button>
+        {current.length > 0 && (
           <span data-testid="tests-summary">
             {passed} passed, {failed} failed
           </span>
@@ -73,7 +95,7 @@ export function TestsPanel() {
         {message && <span role="status">{message}</span>}
       </div>
       {scenarios.length === 0 ? (
-        <p className="rs-sim-empty">No test scenarios. Run the program, toggle inputs, then Record from simulation.</p>
+        <p className="rs-sim-empty">No test scenarios. Press Reset, run the program and switch its inputs, then Record from simulation (a scenario replays from a cold start); or start one with New scenario.</p>
       ) : (
         <table className="rs-tests-table">
           <tbody>
@@ -88,11 +110,11 @@ export function TestsPanel() {
                   </td>
                   <td>
                     <button type="button" className="rs-sim-btn" onClick={() => void open(sc)} data-testid="tests-open"
-                      title="Run it in the simulator; a failure opens at its first divergent scan with Why?">
-                      {r && !r.ok ? 'Open failure in timeline' : 'Run in simulator'}
+                      title="Runs it from a cold start in a simulation of its own (the live session is untouched); a failure shows its first divergent scan with Why?">
+                      {r && !r.ok ? 'Why it failed' : 'Run'}
                     </button>
                     <button type="button" className="rs-sim-btn" onClick={() => setEditing(editing === i ? undefined : i)}>Edit</button>
-                    <button type="button" className="rs-sim-btn" onClick={() => save(scenarios.filter((_, k) => k !== i))}>Delete</button>
+                    <button type="button" className="rs-sim-btn" onClick={() => { forget(sc.name); save(scenarios.filter((_, k) => k !== i)); }}>Delete</button>
                   </td>
                 </tr>
               );
@@ -100,8 +122,12 @@ export function TestsPanel() {
           </tbody>
         </table>
       )}
+      {shown && <ScenarioRunView key={`${shown.name}-${shown.result.scans}`} name={shown.name} result={shown.result} onClose={() => setShown(undefined)} />}
       {editing !== undefined && scenarios[editing] && (
-        <ScenarioEditor key={editing} scenario={scenarios[editing]} onSave={(next) => save(scenarios.map((s, k) => (k === editing ? next : s)))} />
+        <ScenarioEditor key={editing} scenario={scenarios[editing]} onSave={(next) => {
+          forget(scenarios[editing]!.name, next.name);
+          save(scenarios.map((s, k) => (k === editing ? next : s)));
+        }} />
       )}
     </div>
   );
@@ -122,10 +148,11 @@ function ScenarioEditor({ scenario, onSave }: { scenario: Scenario; onSave: (s: 
     if (!parsed.ok) return;
     const lines = csv.split('\n');
     const line = parsed.s.rows[row]!.line - 1;
-    const cells = lines[line]!.split(',');
+    const cells = readCsv(lines[line]!.replace(/\r$/, '')).rows[0]?.cells ?? [];
     while (cells.length <= col + 1) cells.push('');
+    if (cells[col + 1] === text) return;
     cells[col + 1] = text;
-    lines[line] = cells.join(',');
+    lines[line] = csvRow(cells);
     setCsv(lines.join('\n'));
   };
   return (
@@ -145,10 +172,11 @@ function ScenarioEditor({ scenario, onSave }: { scenario: Scenario; onSave: (s: 
           </thead>
           <tbody>
             {parsed.s.rows.map((r, ri) => (
-              <tr key={ri}>
+              <tr key={`${ri}-${r.scan}`}>
                 <td>{r.scan}</td>
                 {parsed.s.columns.map((_, ci) => (
-                  <td key={ci}>
+                  // Keyed by the cell's text: when the CSV changes (edited or replaced), the field shows it.
+                  <td key={`${ci}-${parsed.s.columns[ci]!.name}-${r.cells.get(ci) ?? ''}`}>
                     <input type="text" size={6} defaultValue={r.cells.get(ci) ?? ''} placeholder="*" aria-label={`scan ${r.scan} ${parsed.s.columns[ci]!.name}`}
                       onBlur={(e) => setCell(ri, ci, e.target.value)} />
                   </td>
