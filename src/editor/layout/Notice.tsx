@@ -23,14 +23,29 @@ interface Seen {
   readonly count: number;
 }
 
+/**
+ * What each notice slot (its test id) last showed, kept while it is not shown either: the same words
+ * raised again after the condition cleared (an edit refused, undone, redone) still count as a repeat,
+ * until the notice is dismissed or other words take the slot.
+ */
+const lastSeen = new Map<string, Seen>();
+
+function useRepeats(slot: string, text: string, token: unknown): number {
+  const before = lastSeen.get(slot);
+  let seen = before;
+  if (!before || before.token !== token) {
+    seen = { text, token, count: before && before.text === text ? before.count + 1 : 1 };
+    lastSeen.set(slot, seen);
+  }
+  return seen!.count;
+}
+
 export function Notice({ testId, tone, text, token, onDismiss, children }: NoticeProps) {
-  const [seen, setSeen] = useState<Seen>({ text, token, count: 1 });
+  const count = useRepeats(testId, text, token);
   const [hidden, setHidden] = useState<unknown>(undefined);
-  // Raised again: the same words count, other words start over (state adjusted while rendering).
-  if (seen.token !== token) setSeen({ text, token, count: seen.text === text ? seen.count + 1 : 1 });
   if (hidden !== undefined && hidden === token) return null;
   const dismiss = () => {
-    setSeen({ text, token, count: 0 });
+    lastSeen.delete(testId);
     if (onDismiss) onDismiss();
     else setHidden(token);
   };
@@ -39,13 +54,13 @@ export function Notice({ testId, tone, text, token, onDismiss, children }: Notic
       className={`rs-notice-item rs-notice-${tone}`}
       role={tone === 'error' ? 'alert' : 'status'}
       data-testid={testId}
-      data-count={seen.count}
+      data-count={count}
     >
       <div className="rs-notice-body">
         <span className="rs-notice-text">{text}</span>
-        {seen.count > 1 && (
-          <span className="rs-notice-count" title={`Raised ${seen.count} times`} data-testid="notice-count">
-            ×{seen.count}
+        {count > 1 && (
+          <span className="rs-notice-count" title={`Raised ${count} times`} data-testid="notice-count">
+            ×{count}
           </span>
         )}
         {children}
