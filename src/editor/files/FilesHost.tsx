@@ -6,6 +6,7 @@ import { useDocumentStore } from '../../store/documentStore';
 import { openChosenFile } from './fileActions';
 import { filesUi } from './filesUi';
 import { HiddenFilePicker } from './HiddenFilePicker';
+import { Notice } from '../layout/Notice';
 import { ModalDialog, OkButton } from './ModalDialog';
 import { useAutosave } from './useAutosave';
 import './files.css';
@@ -24,7 +25,6 @@ export function FilesHost() {
         register={filesUi.getState().setOpenPicker}
         onFile={open}
       />
-      <Notice />
       <ConfirmDialog />
       <OpenFailureDialog />
       <AutosaveStatus />
@@ -56,27 +56,12 @@ function useFileDrop(open: (file: File) => void) {
   }, [open]);
 }
 
-function Notice() {
+/** What a file command did ("Saved as …", "Opened …", an import), in the notice area (NoticeArea.tsx). */
+export function FileNotice() {
   const notice = useStore(filesUi, (s) => s.notice);
-  useEffect(() => {
-    if (!notice) return undefined;
-    const timer = setTimeout(() => filesUi.getState().setNotice(''), 8000);
-    return () => clearTimeout(timer);
-  }, [notice]);
+  const serial = useStore(filesUi, (s) => s.noticeSerial);
   if (!notice) return null;
-  return (
-    <div className="rs-notice" role="status" data-testid="file-notice">
-      <span>{notice}</span>
-      <button
-        type="button"
-        className="rs-icon-button"
-        aria-label="Dismiss"
-        onClick={() => filesUi.getState().setNotice('')}
-      >
-        ×
-      </button>
-    </div>
-  );
+  return <Notice testId="file-notice" tone="info" text={notice} token={serial} onDismiss={() => filesUi.getState().setNotice('')} />;
 }
 
 function ConfirmDialog() {

@@ -20,6 +20,8 @@ export interface FilesUiState {
   readonly openFailure: OpenFailure | undefined;
   /** A short message at the top ("Restored ... from autosave", "Saved Motor.json"). */
   readonly notice: string;
+  /** How many notices were raised: the same words raised again count as a repeat (×2). */
+  readonly noticeSerial: number;
   /** When the autosave last reached IndexedDB (ms since epoch), or an error text. */
   readonly autosavedAt: number | undefined;
   readonly autosaveError: string;
@@ -41,6 +43,7 @@ export const filesUi = createStore<FilesUiState>()((set) => ({
   confirmation: undefined,
   openFailure: undefined,
   notice: '',
+  noticeSerial: 0,
   autosavedAt: undefined,
   autosaveError: '',
   autosavePending: false,
@@ -48,7 +51,7 @@ export const filesUi = createStore<FilesUiState>()((set) => ({
   confirm: (confirmation) => set({ confirmation }),
   closeConfirmation: () => set({ confirmation: undefined }),
   showOpenFailure: (openFailure) => set({ openFailure }),
-  setNotice: (notice) => set({ notice }),
+  setNotice: (notice) => set((s) => ({ notice, noticeSerial: s.noticeSerial + 1 })),
   setAutosaved: (autosavedAt, autosaveError = '') => set({ autosavedAt, autosaveError }),
   setAutosavePending: (autosavePending) => set({ autosavePending }),
   setOpenPicker: (openPicker) => set({ openPicker }),

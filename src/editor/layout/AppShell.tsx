@@ -1,6 +1,6 @@
 // The app shell: a menu bar, a tool bar under it, palette and project tree on the left, the open
 // POUs' tabs and the canvas in the centre, tabbed side and bottom panels (slots in ./panels.ts),
-// status bar. The left, side and bottom panels are resizable (ResizeHandle) and collapsible; their
+// status bar. Notices go in the notice area under the tool bar (NoticeArea), never over a control. The left, side and bottom panels are resizable (ResizeHandle) and collapsible; their
 // sizes are remembered (panelSizes.ts). Each bar is one line: nothing wraps or moves when the
 // simulation starts.
 import { Fragment, useEffect, useLayoutEffect, useMemo, type CSSProperties } from 'react';
@@ -13,6 +13,7 @@ import { LeftPanel } from '../project/LeftPanel';
 import { PouView } from '../project/PouView';
 import { Timeline } from '../history/Timeline';
 import { MenuBar } from './MenuBar';
+import { NoticeArea } from './NoticeArea';
 import { loadPanels, savePanels, type PanelSide } from './panelSizes';
 import { BOTTOM_PANELS, CANVAS_OVERLAY, HOSTS, RIGHT_PANELS, TOP_BAR_ITEMS, VARIABLES_PANEL } from './panels';
 import { PanelToggles } from './PanelToggles';
@@ -107,6 +108,7 @@ export function AppShell() {
           <Item key={id} />
         ))}
       </div>
+      <NoticeArea />
       <div className="rs-workspace">
         <aside id="rs-left-panel" className="rs-left" hidden={panels.leftCollapsed}>
           <LeftPanel />

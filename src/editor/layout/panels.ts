@@ -2,7 +2,7 @@
 // a tab in the right side panel or the bottom panel, an item in the top bar, or a host component
 // mounted once (dialogs, background work such as autosave).
 import type { ComponentType } from 'react';
-import { FilesHost } from '../files/FilesHost';
+import { FilesHost, FileNotice } from '../files/FilesHost';
 import { HardwarePanel } from '../hardware/HardwarePanel';
 import { HardwareSimLink } from '../hardware/HardwareSimLink';
 import { PlcopenHost } from '../plcopen/PlcopenHost';
@@ -14,6 +14,7 @@ import { useSimNetworkOverlay } from '../sim/canvasOverlay';
 import { InputsPanel } from '../sim/InputsPanel';
 import { SimHostMount } from '../sim/SimHostMount';
 import { SimToolbar } from '../sim/SimToolbar';
+import { SimNotices } from '../sim/SimNotices';
 import { SimulationPanel } from '../sim/SimulationPanel';
 import { TrendPanel } from '../sim/TrendPanel';
 import { WatchPanel } from '../sim/WatchPanel';
@@ -61,6 +62,15 @@ export const BOTTOM_PANELS: readonly PanelSlot[] = [
 
 /** Items in the top bar, after the menus (e.g. simulation controls). */
 export const TOP_BAR_ITEMS: readonly BarSlot[] = [{ id: 'simulation', component: SimToolbar }];
+
+/**
+ * The notices, in the notice area under the tool bar (NoticeArea.tsx): in the layout flow, so a
+ * notice never covers a control.
+ */
+export const NOTICES: readonly BarSlot[] = [
+  { id: 'simulation', component: SimNotices },
+  { id: 'files', component: FileNotice },
+];
 
 /** Mounted once inside the stores' providers. */
 export const HOSTS: readonly BarSlot[] = [

@@ -2,6 +2,7 @@
 import type { Diagnostic, Fault } from '../../engine/api';
 import { describeOnlineChange, describeTransfer } from '../../sim/carryOver';
 import type { SimState } from '../../store/simStore';
+import { Notice } from '../layout/Notice';
 import { OnlineChangeDialog } from './OnlineChangeDialog';
 import { faultWords } from './position';
 import { useSim, useSimStore } from './simContext';
@@ -30,15 +31,21 @@ export function SimNotices() {
   const mode = useSim(selectMode);
   const online = useSim(selectOnlineChange);
   const errors = refusal?.diagnostics.filter((d) => d.severity === 'error') ?? [];
+  const dismissOnline = () => sim.getState().dismissOnlineChange();
   return (
     <>
       {refusal && (
-        <div className="rs-sim-notice rs-sim-error" role="alert" data-testid="sim-refusal">
-          <b>
-            {refusal.online
+        <Notice
+          testId="sim-refusal"
+          tone="error"
+          token={refusal}
+          onDismiss={() => sim.getState().dismissNotice()}
+          text={
+            refusal.online
               ? `Edit not applied: ${errors.length} error${errors.length === 1 ? '' : 's'}; the last good program keeps running.`
-              : `Run refused: the program has ${errors.length} error${errors.length === 1 ? '' : 's'}.`}
-          </b>
+              : `Run refused: the program has ${errors.length} error${errors.length === 1 ? '' : 's'}.`
+          }
+        >
           <ul>
             {errors.slice(0, MAX_LISTED).map((d, i) => (
               <li key={i}>
@@ -47,51 +54,52 @@ export function SimNotices() {
             ))}
             {errors.length > MAX_LISTED && <li>… and {errors.length - MAX_LISTED} more in the Problems list</li>}
           </ul>
-          <button type="button" className="rs-sim-btn" onClick={() => sim.getState().dismissNotice()}>
-            Dismiss
-          </button>
-        </div>
+        </Notice>
       )}
       {fault && mode === 'faulted' && (
-        <div className="rs-sim-notice rs-sim-error" role="alert" data-testid="sim-fault">
-          <b>{describeFault(fault)}</b> Press Reset or Warm restart to clear the fault.
-        </div>
+        <Notice
+          testId="sim-fault"
+          tone="error"
+          token={fault}
+          text={`${describeFault(fault)} Press Reset or Warm restart to clear the fault.`}
+        />
       )}
       {hit !== undefined && mode === 'paused' && (
-        <div className="rs-sim-notice" role="status" data-testid="sim-breakpoint-hit">
-          Paused at the breakpoint before network {hit.network + 1} of {hit.instance ? `${hit.instance} (${hit.pou})` : hit.pou}.
-        </div>
+        <Notice
+          testId="sim-breakpoint-hit"
+          tone="info"
+          token={hit}
+          text={`Paused at the breakpoint before network ${hit.network + 1} of ${hit.instance ? `${hit.instance} (${hit.pou})` : hit.pou}.`}
+        />
       )}
       {online?.kind === 'confirm' && <OnlineChangeDialog plan={online.plan} onAnswer={(apply) => sim.getState().answerOnlineChange(apply)} />}
       {online?.kind === 'pending' && (
-        <div className="rs-sim-notice" role="status" data-testid="sim-online-pending">
-          Applying the edit online at the next scan boundary: {describeTransfer(online.plan).replace(/^kept/, 'keeps')}.
-        </div>
+        <Notice
+          testId="sim-online-pending"
+          tone="info"
+          token={online}
+          text={`Applying the edit online at the next scan boundary: ${describeTransfer(online.plan).replace(/^kept/, 'keeps')}.`}
+        />
       )}
       {online?.kind === 'applied' && (
-        <div className="rs-sim-notice" role="status" data-testid="sim-online-applied">
-          {describeOnlineChange(online.scan, online.plan)}.{' '}
-          <button type="button" className="rs-sim-btn" onClick={() => sim.getState().dismissOnlineChange()}>
-            Dismiss
-          </button>
-        </div>
+        <Notice
+          testId="sim-online-applied"
+          tone="info"
+          token={online}
+          onDismiss={dismissOnline}
+          text={`${describeOnlineChange(online.scan, online.plan)}.`}
+        />
       )}
       {online?.kind === 'cancelled' && (
-        <div className="rs-sim-notice rs-sim-error" role="status" data-testid="sim-online-cancelled">
-          Edit not applied online: the running program is unchanged (the edit stays in the document; Reset and Run load it).{' '}
-          <button type="button" className="rs-sim-btn" onClick={() => sim.getState().dismissOnlineChange()}>
-            Dismiss
-          </button>
-        </div>
+        <Notice
+          testId="sim-online-cancelled"
+          tone="error"
+          token={online}
+          onDismiss={dismissOnline}
+          text="Edit not applied online: the running program is unchanged (the edit stays in the document; Reset and Run load it)."
+        />
       )}
-      {notice && (
-        <div className="rs-sim-notice rs-sim-error" role="alert" data-testid="sim-notice">
-          {notice}{' '}
-          <button type="button" className="rs-sim-btn" onClick={() => sim.getState().dismissNotice()}>
-            Dismiss
-          </button>
-        </div>
-      )}
+      {notice && <Notice testId="sim-notice" tone="error" token={notice} onDismiss={() => sim.getState().dismissNotice()} text={notice} />}
     </>
   );
 }

@@ -5,7 +5,6 @@ import { useDocument, type DocumentState } from '../../store/documentStore';
 import type { SimState } from '../../store/simStore';
 import { SteppingBadge } from '../hardware/HardwareStepping';
 import { useSimCommands } from '../hardware/useHardwareStepping';
-import { SimNotices } from './SimNotices';
 import { useStepKeys } from './useStepKeys';
 import { useSim, useSimStore } from './simContext';
 import './sim.css';
@@ -103,9 +102,6 @@ export function SimToolbar() {
       <CycleInput />
       <SimStatus />
       <SteppingBadge />
-      <div className="rs-sim-notices">
-        <SimNotices />
-      </div>
     </div>
   );
 }
