@@ -55,6 +55,7 @@ type Commands = Omit<
   | 'activePouId'
   | 'dirty'
   | 'revision'
+  | 'opened'
   | 'history'
   | 'canUndo'
   | 'canRedo'

@@ -119,6 +119,8 @@ export interface DocumentState {
   readonly openPouIds: readonly PouId[];
   readonly dirty: boolean;
   readonly revision: number;
+  /** Increments when another project is opened (loadProject, newProject), not on edits. */
+  readonly opened: number;
   readonly history: History;
   readonly canUndo: boolean;
   readonly canRedo: boolean;
@@ -250,6 +252,7 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
       openPouIds: project.pous[0] ? [project.pous[0].id] : [],
       dirty: false,
       revision: get().revision + 1,
+      opened: get().opened + 1,
       ...historyFlags(EMPTY_HISTORY),
     });
 
@@ -259,6 +262,7 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
       openPouIds: initial.pous[0] ? [initial.pous[0].id] : [],
       dirty: false,
       revision: 0,
+      opened: 0,
       ...historyFlags(EMPTY_HISTORY),
 
       loadProject: (p) => set(reset(p)),

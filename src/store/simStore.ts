@@ -431,7 +431,8 @@ export function createSimStore(transport: SimTransport): SimStore {
       goLive: () => {
         if (liveStash) set({ ...liveStash });
         liveStash = undefined;
-        set({ historyScan: undefined, historyTimeMs: undefined, historyMessage: undefined });
+        // An explanation is about the scan that was viewed: its tags and text go with it.
+        set({ historyScan: undefined, historyTimeMs: undefined, historyMessage: undefined, explanation: undefined });
       },
       findChange: (name, direction) => {
         const from = get().historyScan ?? get().history?.last;

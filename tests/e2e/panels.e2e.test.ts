@@ -103,7 +103,7 @@ test('a rule violation is listed with its rule id, jumps to the element, and dis
   await editor.tab('Problems');
   const problem = editor.problems.getByTestId('problem').filter({ hasText: 'LD-R08' });
   await problem.waitFor();
-  expect(await problem.textContent()).toMatch(/LD-R08.*network 1.*row 1, column 4.*Motor/);
+  expect(await problem.textContent()).toMatch(/LD-R08.*network 1.*row 1, at the right rail.*Motor/);
 
   // The checks run in a worker, off the page's thread.
   expect(editor.page.workers().some((w) => w.url().includes('check.worker'))).toBe(true);

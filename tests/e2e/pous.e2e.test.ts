@@ -290,8 +290,9 @@ test('a FUNCTION with a return type: its box has EN/ENO and the result pin OUT o
   expect(box).not.toHaveProperty('instance');
   await draw.clickCell(1, 0, 1);
   await editor.tab('Inspector');
-  await editor.inspector.getByText('OUT : INT').waitFor();
-  await editor.inspector.getByText('Raw : INT').waitFor();
+  // Each pin's field is named by the pin and its type (the type written under the pin's name).
+  await editor.inspector.getByLabel('OUT : INT').waitFor();
+  await editor.inspector.getByLabel('Raw : INT').waitFor();
   // A function's box is EN, Raw / ENO, OUT: two rows.
   await draw.clickCell(1, 1, 1);
   expect((await page.evaluate(() => window.rungsmith!.uiStore!.getState().selection.elements)).length).toBe(

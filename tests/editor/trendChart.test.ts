@@ -1,7 +1,7 @@
 // The trend's lanes: each BOOL apart in a thin lane, each number in a taller lane on its own
 // scale, and time written in ms or s.
 import { describe, expect, test } from 'vitest';
-import { formatTime, laneY, trendData, trendLayout } from '../../src/editor/sim/trendChart';
+import { elideStart, formatTime, laneY, scaleMarks, trendData, trendLayout, type TrendLane } from '../../src/editor/sim/trendChart';
 import type { TrendBuffer } from '../../src/sim/trendBuffer';
 
 const buffer: TrendBuffer = {
@@ -62,5 +62,33 @@ describe('time on the x axis', () => {
     expect(formatTime(5250, 8000)).toBe('5.25 s');
     expect(formatTime(65000, 60000)).toBe('65 s');
     expect(formatTime(300000, 600000)).toBe('300 s');
+  });
+});
+
+// Issue 22, section 2 item 16: lane names were cut at 90 px and the number scales' labels drawn
+// over each other in short lanes.
+describe('trend labels that fit', () => {
+  const lane = (name: string, type: string, bottom: number, top: number, min: number, max: number): TrendLane => ({
+    name, type, boolean: type === 'BOOL', bottom, top, min, max,
+  });
+
+  test('a long lane name keeps its end after …, a short one stays whole', () => {
+    const width = (t: string) => t.length * 7;
+    expect(elideStart('Lamp', 100, width)).toBe('Lamp');
+    const cut = elideStart('MainInstance.FillTimer.ET', 100, width);
+    expect(cut.startsWith('…')).toBe(true);
+    expect(cut.endsWith('FillTimer.ET')).toBe(true);
+    expect(width(cut)).toBeLessThanOrEqual(100);
+  });
+
+  test('scale labels closer than a label height give way; tall lanes keep both', () => {
+    const lanes = [lane('Level', 'INT', 3, 6, 0, 100), lane('Speed', 'INT', 0, 3, -5, 5)];
+    // Tall: 40 px per lane unit, every label fits.
+    expect(scaleMarks(lanes, 40).map((m) => m.text)).toEqual(['100', '0', '5', '-5']);
+    // Short: 6 px per unit (a lane 18 px high): the labels are at least 14 px apart.
+    const kept = scaleMarks(lanes, 6);
+    for (let i = 1; i < kept.length; i++) expect((kept[i - 1]!.y - kept[i]!.y) * 6).toBeGreaterThanOrEqual(14);
+    expect(kept[0]!.text).toBe('100');
+    expect(kept.length).toBeLessThan(4);
   });
 });

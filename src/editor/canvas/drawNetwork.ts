@@ -58,20 +58,28 @@ const elementRect = (nc: NetworkColumns, el: LdElement, lib?: BlockLibrary): Rec
   return cellRect(nc, el, s.cols, s.rows);
 };
 
-/** The device holds another value than the program: a boxed "device: FALSE" tag over the element's top edge. */
+/** Height of a device / "Why?" tag: it ends above the variable name drawn over the element. */
+export const MARK_TAG_H = 10;
+
+/**
+ * The device holds another value than the program, or "Why?" names the element: a small boxed tag
+ * ("device: FALSE", "why: blocks") in the element's top strip, right-aligned, clear of the
+ * variable name below it (names are drawn from about 12 px down).
+ */
 function drawDeviceMark(ctx: Ctx, t: CanvasTheme, r: Rect, text: string) {
-  ctx.font = 'bold 10px system-ui, sans-serif';
-  const w = Math.min(ctx.measureText(text).width + 8, r.width - 4);
+  ctx.font = 'bold 8.5px system-ui, sans-serif';
+  const w = Math.min(ctx.measureText(text).width + 6, r.width - 4);
   const left = r.x + r.width - 2 - w;
+  const top = r.y + 0.5;
   ctx.fillStyle = t.networkBg;
-  ctx.fillRect(left, r.y + 1, w, 13);
+  ctx.fillRect(left, top, w, MARK_TAG_H);
   ctx.strokeStyle = t.warning;
-  ctx.lineWidth = 1.5;
-  ctx.strokeRect(left, r.y + 1, w, 13);
+  ctx.lineWidth = 1;
+  ctx.strokeRect(left, top, w, MARK_TAG_H);
   ctx.fillStyle = t.text;
   ctx.textAlign = 'center';
   ctx.textBaseline = 'middle';
-  ctx.fillText(text, left + w / 2, r.y + 8, w - 4);
+  ctx.fillText(text, left + w / 2, top + MARK_TAG_H / 2 + 0.5, w - 4);
   ctx.textBaseline = 'alphabetic';
 }
 

@@ -280,7 +280,8 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint, 
     ctx.fillStyle = t.symbol;
     ctx.textAlign = 'right';
     ctx.fillText(pin.name, right - 4, y + 4);
-    const operand = el.outputs[pin.name] || (paint.openPins?.outputs.has(pin.name) ? '???' : '');
+    // While simulating, an output nothing reads is not a missing operand: no `???` beside it (TON's ET).
+    const operand = el.outputs[pin.name] || (paint.power === undefined && paint.openPins?.outputs.has(pin.name) ? '???' : '');
     if (operand) {
       ctx.fillStyle = el.outputs[pin.name] ? t.operand : t.muted;
       ctx.textAlign = 'left';

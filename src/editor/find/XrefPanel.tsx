@@ -55,6 +55,15 @@ export function XrefPanel() {
   const [name, setName] = useState('');
   const [scope, setScope] = useState<VariableScope | undefined>(undefined);
   const [view, setView] = useState<View>('uses');
+  // Another project opened (or a new one): the query was about the old one.
+  const opened = useDocument((s) => s.opened);
+  const [queryProject, setQueryProject] = useState(opened);
+  if (queryProject !== opened) {
+    setQueryProject(opened);
+    setName('');
+    setScope(undefined);
+    setView('uses');
+  }
   const resolved = scope ?? scopeOf(project, pouId, name);
   const uses = useMemo(
     () => (view === 'uses' && resolved && name.trim() ? crossReference(project, resolved, name.trim()) : []),

@@ -8,6 +8,11 @@ import './history.css';
 const selectExplanation = (s: SimState) => s.explanation;
 const selectMessage = (s: SimState) => s.historyMessage;
 
+/** A line of the explanation as a list item: the list draws the bullet (the text's own "• " is for plain text). */
+export function whyLineText(line: string): string {
+  return line.trim().replace(/^[•\-*]\s+/, '');
+}
+
 export function WhyPanel() {
   const sim = useSimStore();
   const e = useSim(selectExplanation);
@@ -30,7 +35,7 @@ export function WhyPanel() {
           <h3 className="rs-why-title">{e.title}</h3>
           <ul className="rs-why-lines">
             {e.lines.map((l, i) => (
-              <li key={i} className={l.startsWith('  ') ? 'rs-why-sub' : undefined}>{l.trim()}</li>
+              <li key={i} className={l.startsWith('  ') ? 'rs-why-sub' : undefined}>{whyLineText(l)}</li>
             ))}
           </ul>
           {e.links.length > 0 && (

@@ -9,6 +9,8 @@ import { VariableInput } from './VariableInput';
 
 interface Props {
   readonly label: string;
+  /** Shown under the label, on a line of its own (a pin's type: `ANY_MAGNITUDE` is wider than the label column). */
+  readonly detail?: string;
   readonly value: string;
   readonly role: BindingRole;
   readonly onCommit: (text: string) => void;
@@ -16,18 +18,21 @@ interface Props {
   readonly testId?: string;
 }
 
-export function BindingField({ label, value, role, onCommit, placeholder, testId }: Props) {
+export function BindingField({ label, detail, value, role, onCommit, placeholder, testId }: Props) {
   const id = useId();
   return (
     <div className="rs-field">
-      <label htmlFor={id}>{label}</label>
+      <label htmlFor={id} title={detail ? `${label} : ${detail}` : undefined}>
+        {label}
+        {detail ? <span className="rs-field-detail">{detail}</span> : null}
+      </label>
       <div>
         <VariableInput
           id={id}
           value={value}
           role={role}
           onCommit={onCommit}
-          aria-label={label}
+          aria-label={detail ? `${label} : ${detail}` : label}
           placeholder={placeholder}
           data-testid={testId}
         />

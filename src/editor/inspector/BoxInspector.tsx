@@ -103,7 +103,8 @@ export function BoxInspector({ box }: { box: BoxElement }) {
         .map((pin) => (
           <BindingField
             key={pin.name}
-            label={`${pin.name} : ${declaredPinType(pin)}`}
+            label={pin.name}
+            detail={declaredPinType(pin)}
             value={box.inputs[pin.name] ?? ''}
             role={pinRole(pin, 'input')}
             placeholder={pin.name === powerIn ? 'power flow from the left' : 'variable or literal'}
@@ -117,7 +118,8 @@ export function BoxInspector({ box }: { box: BoxElement }) {
         .map((pin) => (
           <BindingField
             key={pin.name}
-            label={`${pin.name} : ${declaredPinType(pin)}`}
+            label={pin.name}
+            detail={declaredPinType(pin)}
             value={box.outputs[pin.name] ?? ''}
             role={pinRole(pin, 'output')}
             placeholder={pin.name === powerOut ? 'power flow to the right' : 'assign to a variable'}

@@ -4,9 +4,10 @@
 // follows the project; "Export anyway" downloads the file as it is.
 import { useMemo } from 'react';
 import { useStore } from 'zustand';
-import { cellName } from '../../engine/compile/report';
 import { exportBehaviour, type ExportWarning } from '../../plcopen/exportBehaviour';
 import { useDocumentStore } from '../../store/documentStore';
+import type { Project } from '../../model/project';
+import { elementPlace } from '../problems/describe';
 import { useUiStore } from '../../store/uiStore';
 import { ModalDialog } from '../files/ModalDialog';
 import { CancelOr } from './CancelOrButtons';
@@ -35,6 +36,13 @@ function grouped(warnings: readonly ExportWarning[]): { pou: string; networks: N
     g.warnings.push(w);
   }
   return [...pous].map(([pou, nets]) => ({ pou, networks: [...nets.values()] }));
+}
+
+/** The element a warning is about, by id in its network. */
+function elementOf(project: Project, w: ExportWarning) {
+  if (!w.elementId) return undefined;
+  const pou = project.pous.find((p) => p.id === w.pouId);
+  return pou?.networks.find((n) => n.id === w.networkId)?.elements.find((e) => e.id === w.elementId);
 }
 
 export function ExportReviewDialog() {
@@ -101,7 +109,7 @@ function ReviewBody() {
                   {g.warnings.map((w, k) => (
                     <li key={k} data-testid="export-warning">
                       <code>{w.rule}</code>
-                      {w.cell ? <code> {cellName(w.cell.row, w.cell.col)}</code> : null} {w.message}
+                      {w.cell ? <span className="rs-export-place" data-testid="export-warning-place"> {elementPlace(w.cell, elementOf(project, w))}:</span> : null} {w.message}
                       {w.fix ? (
                         <div>
                           <button

@@ -5,10 +5,10 @@ import type { Diagnostic } from '../../engine/api';
 import type { Pou, Project } from '../../model/project';
 import { elementCells } from '../../model/factory';
 import { blockLibrary } from '../../model/library';
-import { useDocumentStore } from '../../store/documentStore';
+import { selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { useUiStore } from '../../store/uiStore';
 import { countBySeverity, diagnosticCell, diagnosticNetwork, sortDiagnostics } from './describe';
-import { useDiagnostics } from './useDiagnostics';
+import { useCheckedDiagnostics } from './useDiagnostics';
 import { focusVariable } from '../variables/variableFocus';
 import './problems.css';
 
@@ -36,14 +36,17 @@ function showVariable(project: Project, pou: Pou, message: string) {
 const MAX_ROWS = 500;
 
 export function ProblemsPanel() {
-  const diagnostics = useDiagnostics();
+  const { diagnostics, checked } = useCheckedDiagnostics();
+  const project = useDocument(selectProject);
+  const pouCount = project.pous.length;
   const documentStore = useDocumentStore();
   const uiStore = useUiStore();
   const [showWarnings, setShowWarnings] = useState(true);
   const sorted = useMemo(() => sortDiagnostics(diagnostics), [diagnostics]);
   const { errors, warnings } = countBySeverity(diagnostics);
   const shown = showWarnings ? sorted : sorted.filter((d) => d.severity === 'error');
-  const manyPous = new Set(diagnostics.map((d) => d.pou)).size > 1;
+  // A row names its POU whenever the project has several (a problem in another POU than the one shown).
+  const manyPous = pouCount > 1 || new Set(diagnostics.map((d) => d.pou)).size > 1;
 
   const jump = (d: Diagnostic) => {
     const doc = documentStore.getState();
@@ -61,7 +64,9 @@ export function ProblemsPanel() {
     <section className="rs-problems" aria-label="Problems" data-testid="problems-panel">
       <header className="rs-problems-head">
         <span data-testid="problems-summary" aria-live="polite">
-          {diagnostics.length === 0
+          {!checked
+            ? 'Checking…'
+            : diagnostics.length === 0
             ? 'No problems'
             : `${errors} error${errors === 1 ? '' : 's'}, ${warnings} warning${warnings === 1 ? '' : 's'}`}
         </span>
@@ -91,7 +96,7 @@ export function ProblemsPanel() {
                 <span className="rs-problem-where">
                   {manyPous ? `${d.pou} · ` : ''}
                   {diagnosticNetwork(d)}
-                  {d.cell ? ` · ${diagnosticCell(d)}` : ''}
+                  {d.cell ? ` · ${diagnosticCell(d, placeOf(project, d).element)}` : ''}
                 </span>
                 <span className="rs-problem-message">{d.message}</span>
               </button>

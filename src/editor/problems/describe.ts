@@ -1,5 +1,8 @@
 // How a diagnostic reads in the problems list: where it is, in a PLC programmer's words.
 import type { Diagnostic } from '../../engine/api';
+import { describeElement } from '../../engine/compile/report';
+import type { Cell } from '../../model/grid';
+import type { LdElement } from '../../model/elements';
 
 /** "network 3 (Start)", or "variables" for POU-level diagnostics. */
 export function diagnosticNetwork(d: Diagnostic): string {
@@ -7,9 +10,29 @@ export function diagnosticNetwork(d: Diagnostic): string {
   return `network ${d.network + 1}${d.networkLabel ? ` (${d.networkLabel})` : ''}`;
 }
 
-/** "row 1, column 3" (1-based as shown on the canvas), or empty without a cell. */
-export const diagnosticCell = (d: Diagnostic): string =>
-  d.cell ? `row ${d.cell.row + 1}, column ${d.cell.col + 1}` : '';
+/**
+ * "row 1, column 3" (1-based as shown on the canvas), or empty without a cell. A coil is drawn at
+ * the right rail whatever its column: "row 3, at the right rail" (its column would point elsewhere).
+ */
+export const diagnosticCell = (d: Diagnostic, element?: LdElement): string =>
+  d.cell ? cellWords(d.cell, element) : '';
+
+function cellWords(cell: Cell, element: LdElement | undefined): string {
+  return element?.kind === 'coil' ? `row ${cell.row + 1}, at the right rail` : `row ${cell.row + 1}, column ${cell.col + 1}`;
+}
+
+/**
+ * An element where the user finds it in its network: `coil "Y", row 3, at the right rail` (where
+ * it is drawn, not its grid column), `contact "Start", row 1, column 2`, "the line at row 2,
+ * column 4"; "row 2, column 4" without the element.
+ */
+export function elementPlace(cell: Cell, element: LdElement | undefined): string {
+  if (!element) return cellWords(cell, undefined);
+  if (element.kind === 'link') return `the line at ${cellWords(cell, element)}`;
+  // describeElement says where an unnamed element is by its cell: its name is enough here.
+  const what = describeElement(element).replace(/^the /, '').replace(/ at R\d+C\d+$/, '');
+  return `${what}, ${cellWords(cell, element)}`;
+}
 
 /** Errors first, then by POU, network, row, column: the order a programmer walks the program. */
 export function sortDiagnostics(list: readonly Diagnostic[]): Diagnostic[] {

@@ -32,6 +32,14 @@ const NONE: readonly Diagnostic[] = [];
 
 /** The diagnostics of the latest checked version of the open project (empty until the first check). */
 export function useDiagnostics(): readonly Diagnostic[] {
+  return useCheckedDiagnostics().diagnostics;
+}
+
+/**
+ * The diagnostics of the latest checked version and whether any version was checked yet (after a
+ * reload the first check takes a moment: "Checking…", not "No problems").
+ */
+export function useCheckedDiagnostics(): { readonly diagnostics: readonly Diagnostic[]; readonly checked: boolean } {
   const project = useDocument(selectProject);
   const [shown, setShown] = useState<{ project: Project | undefined; diagnostics: readonly Diagnostic[] }>({
     project: undefined,
@@ -58,7 +66,7 @@ export function useDiagnostics(): readonly Diagnostic[] {
       unsubscribe();
     };
   }, [project, shown.project]);
-  return shown.diagnostics;
+  return { diagnostics: shown.diagnostics, checked: shown.project !== undefined };
 }
 
 /** Diagnostics of one POU grouped by network index, for cell markers on the canvas. */

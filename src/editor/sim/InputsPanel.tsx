@@ -10,6 +10,7 @@ import { selectProject, useDocument } from '../../store/documentStore';
 import { fieldInputAddress, fieldInputWords } from '../hardware/fieldIo';
 import { useGateway } from '../hardware/useGateway';
 import { forcedText, liveText } from './liveValues';
+import { ForcedBadge } from '../theme/ForcedBadge';
 import { useSim, useSimStore } from './simContext';
 import './sim.css';
 
@@ -74,6 +75,8 @@ function BoolInput({ row }: { row: InputRow }) {
           className={`rs-sim-switch${on ? ' rs-sim-on' : ''}`} onClick={() => sim.getState().toggleInput(row.name)} data-testid="input-switch">
           {value === undefined ? '—' : on ? 'ON' : 'OFF'}
         </button>
+        {/* Forced: the badge the watch table and the canvas show (the switch shows the forced value). */}
+        {forced !== undefined && <ForcedBadge title={`forced to ${forced}`} />}
       </td>
       <td>
         <button type="button" className="rs-sim-btn" disabled={value === undefined || field !== undefined}
@@ -86,10 +89,11 @@ function BoolInput({ row }: { row: InputRow }) {
           Hold
         </button>
       </td>
-      <td>
-        {forced !== undefined && <span className="rs-sim-forced-tag" title={`forced to ${forced}`}>forced {forced}</span>}
-        {field && forced === undefined && <span className="rs-sim-unit" data-testid="input-from-device">from the device</span>}
-      </td>
+      {field && forced === undefined ? (
+        <td>
+          <span className="rs-sim-unit" data-testid="input-from-device">from the device</span>
+        </td>
+      ) : null}
     </tr>
   );
 }
@@ -104,14 +108,16 @@ function WordInput({ row }: { row: InputRow }) {
   return (
     <tr data-testid={`input-${row.name}`}>
       <Label row={row} />
-      <td>{value ?? '—'}</td>
+      <td>
+        {value ?? '—'}
+        {forced !== undefined && <ForcedBadge title={`forced to ${forced}`} />}
+      </td>
       <td>
         <input className="rs-sim-text rs-sim-narrow" aria-label={`New value for ${row.name}`} placeholder={row.type} value={text}
           onChange={(e) => setText(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && write()} />
         <button type="button" className="rs-sim-btn" disabled={value === undefined || field !== undefined}
           title={field ? fieldInputWords(field, row.name) : undefined} onClick={write}>Set</button>
       </td>
-      <td>{forced !== undefined && <span className="rs-sim-forced-tag" title={`forced to ${forced}`}>forced {forced}</span>}</td>
     </tr>
   );
 }

@@ -30,10 +30,13 @@ const selectMultiRate = (s: DocumentState): boolean => taskSchedule(s.project.ta
 
 const MODE_LABEL = { stopped: 'Stopped', running: 'Running', paused: 'Paused', faulted: 'Faulted' } as const;
 
-/** Last / average / maximum execution time in one unit, chosen by the maximum. */
+/**
+ * Last / average / maximum execution time, always in ms with microsecond digits: the unit and the
+ * number of decimals never change while the program runs (they used to follow the maximum, so the
+ * figure jumped between µs and ms).
+ */
 export function formatExec(last: number, avg: number, max: number): string {
-  if (max < 1) return `${[last, avg, max].map((v) => (v * 1000).toFixed(0)).join(' / ')} µs`;
-  return `${[last, avg, max].map((v) => v.toFixed(max < 10 ? 2 : 1)).join(' / ')} ms`;
+  return `${[last, avg, max].map((v) => (Number.isFinite(v) ? v : 0).toFixed(3)).join(' / ')} ms`;
 }
 export const formatPlcTime = (ms: number): string => (ms < 10_000 ? `${ms} ms` : `${(ms / 1000).toFixed(2)} s`);
 

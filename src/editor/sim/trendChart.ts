@@ -13,6 +13,51 @@ const BOOL_LANE = 1;
 const NUMBER_LANE = 3;
 /** Space between a trace and its lane's edges (lane units). */
 const PAD = 0.2;
+/** The axes' font (uPlot's default face), and the least room between two scale labels, px. */
+const AXIS_FONT = '12px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
+const LABEL_GAP_PX = 14;
+
+let measurer: CanvasRenderingContext2D | null | undefined;
+/** Width of `text` in the axis font, px (a rough estimate where no canvas can measure). */
+function textWidth(text: string): number {
+  if (measurer === undefined) measurer = typeof document === 'undefined' ? null : document.createElement('canvas').getContext('2d');
+  if (!measurer) return text.length * 7;
+  measurer.font = AXIS_FONT;
+  return measurer.measureText(text).width;
+}
+
+/** `text`, or its end after "…" when it is wider than `max` px (the end of a path names the signal). */
+export function elideStart(text: string, max: number, width: (t: string) => number = textWidth): string {
+  if (width(text) <= max) return text;
+  let k = 1;
+  while (k < text.length && width(`…${text.slice(k)}`) > max) k++;
+  return `…${text.slice(k)}`;
+}
+
+/** Height of the plotting area, CSS px. */
+function plotHeight(u: uPlot, fallback: number): number {
+  const ratio = typeof devicePixelRatio === 'number' && devicePixelRatio > 0 ? devicePixelRatio : 1;
+  return u.bbox?.height > 0 ? u.bbox.height / ratio : fallback;
+}
+
+/**
+ * The number lanes' scale labels (highest and lowest value in the window) from the top down, each
+ * kept only when it stands at least a label's height below the last one kept: in a short lane the
+ * lowest value gives way, and no two labels are drawn over each other.
+ */
+export function scaleMarks(lanes: readonly TrendLane[], pxPerUnit: number): { y: number; text: string }[] {
+  const marks = lanes.flatMap((l) =>
+    l.boolean || !(l.max >= l.min)
+      ? []
+      : l.max > l.min
+        ? [{ y: laneY(l, l.max), text: formatLive(l.type, l.max) }, { y: laneY(l, l.min), text: formatLive(l.type, l.min) }]
+        : [{ y: laneY(l, l.min), text: formatLive(l.type, l.min) }],
+  );
+  marks.sort((a, b) => b.y - a.y);
+  const kept: { y: number; text: string }[] = [];
+  for (const m of marks) if (!kept.length || (kept[kept.length - 1]!.y - m.y) * pxPerUnit >= LABEL_GAP_PX) kept.push(m);
+  return kept;
+}
 
 export interface TrendSignal {
   readonly name: string;
@@ -149,9 +194,15 @@ function tipPlugin(view: () => TrendView): uPlot.Plugin {
 
 /**
  * After each draw, what the chart shows is written on its host element for tests and tools:
- * data-lanes "Name:TYPE:top-bottom|..." and data-time-labels "0 ms|250 ms|...".
+ * data-lanes "Name:TYPE:top-bottom|...", data-time-labels "0 ms|250 ms|...", data-lane-names (as
+ * drawn) and data-scale-labels "text@y|..." (the number scales' labels drawn, y in lane units).
  */
-function describePlugin(view: () => TrendView, timeLabels: { current: string[] }): uPlot.Plugin {
+function describePlugin(
+  view: () => TrendView,
+  timeLabels: { current: string[] },
+  names: () => string[],
+  scale: { current: Map<number, string> },
+): uPlot.Plugin {
   return {
     hooks: {
       draw: [
@@ -162,6 +213,8 @@ function describePlugin(view: () => TrendView, timeLabels: { current: string[] }
             .layout.lanes.map((l) => `${l.name}:${l.type}:${l.top}-${l.bottom}`)
             .join('|');
           host.dataset.timeLabels = timeLabels.current.join('|');
+          host.dataset.laneNames = names().join('|');
+          host.dataset.scaleLabels = [...scale.current].map(([y, text]) => `${text}@${y}`).join('|');
         },
       ],
     },
@@ -175,16 +228,21 @@ export function trendOptions(
   view: () => TrendView,
   textColour: string,
 ): uPlot.Options {
-  const axisStyle = { stroke: textColour, grid: { stroke: '#8884', width: 1 }, ticks: { stroke: '#8884', width: 1 } };
+  const axisStyle = { font: AXIS_FONT, stroke: textColour, grid: { stroke: '#8884', width: 1 }, ticks: { stroke: '#8884', width: 1 } };
   const lanes = () => view().layout.lanes;
   const hasNumbers = signals.some((s) => s.type !== 'BOOL');
   const timeLabels = { current: [] as string[] };
+  // Lane names get the width the longest needs (up to a third of the chart; longer ones keep their end).
+  const nameWidth = Math.min(Math.max(60, ...signals.map((s) => textWidth(s.name) + 14)), Math.max(90, Math.round(width / 3)));
+  const names = () => lanes().map((l) => elideStart(l.name, nameWidth - 14));
+  // The number scales' labels actually drawn (none closer than a label's height to the one above).
+  const scale = { current: new Map<number, string>() };
   return {
     width,
     height,
     legend: { show: true, live: true },
     cursor: { drag: { x: false, y: false } },
-    plugins: [tipPlugin(view), describePlugin(view, timeLabels)],
+    plugins: [tipPlugin(view), describePlugin(view, timeLabels, names, scale)],
     scales: {
       x: { time: false },
       lanes: { range: () => [0, Math.max(1, view().layout.total)] },
@@ -200,9 +258,9 @@ export function trendOptions(
         // Lane names, at the middle of each lane; the grid lines are the lanes' edges.
         ...axisStyle,
         scale: 'lanes',
-        size: 90,
+        size: nameWidth,
         splits: () => lanes().map((l) => (l.top + l.bottom) / 2),
-        values: () => lanes().map((l) => l.name),
+        values: () => names(),
         grid: { show: false },
         ticks: { show: false },
       },
@@ -221,11 +279,12 @@ export function trendOptions(
         side: 1,
         show: hasNumbers,
         size: 70,
-        splits: () => lanes().flatMap((l) => (l.boolean || !(l.max >= l.min) ? [] : l.max > l.min ? [laneY(l, l.min), laneY(l, l.max)] : [laneY(l, l.min)])),
-        values: () =>
-          lanes().flatMap((l) =>
-            l.boolean || !(l.max >= l.min) ? [] : l.max > l.min ? [formatLive(l.type, l.min), formatLive(l.type, l.max)] : [formatLive(l.type, l.min)],
-          ),
+        splits: (u) => {
+          const kept = scaleMarks(lanes(), plotHeight(u, height) / Math.max(1, view().layout.total));
+          scale.current = new Map(kept.map((m) => [m.y, m.text]));
+          return kept.map((m) => m.y);
+        },
+        values: (_u, splits) => splits.map((y) => scale.current.get(y) ?? ''),
         grid: { show: false },
       },
     ],
