@@ -83,7 +83,7 @@ export interface DispatchPlan {
   /**
    * Body of `new Function(...DISPATCH_PARAMS, stepBody)` returning one generator function per
    * shape, `(i, now, scan) => next network`, whose calls of bodies are `yield* X.stepCall(...)`:
-   * the slow path used only to step into calls (runtime/scanner.ts).
+   * the slow path used only to step into calls (runtime/scanCycle.ts).
    */
   readonly stepBody: string;
 }
