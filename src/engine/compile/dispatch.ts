@@ -11,16 +11,15 @@ import type { Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
 import {
   CALL_TEXT,
-  bodyUnits,
   generateNetwork,
   generateUnit,
   LATE_TEXT,
   NETS_PER_WORD,
-  ProgramConstants,
   slotKey,
   STEP_CALL_TEXT,
   STEP_LATE_TEXT,
 } from './codegen';
+import { bodyUnits, ProgramConstants } from './programConstants';
 import type { NetworkIR } from './ir';
 
 /** What each generated dispatch factory receives, in this order. */
