@@ -15,11 +15,11 @@ import {
   generateUnit,
   LATE_TEXT,
   NETS_PER_WORD,
-  slotKey,
   STEP_CALL_TEXT,
   STEP_LATE_TEXT,
 } from './codegen';
 import { bodyUnits, ProgramConstants } from './programConstants';
+import { slotKey } from './emitter';
 import type { NetworkIR } from './ir';
 
 /** What each generated dispatch factory receives, in this order. */

@@ -7,7 +7,7 @@
 import type { Value } from '../../model/iecTypes';
 import type { Fault, PlcOptions, TaskSchedule, StepFrame, StepReport } from '../api';
 import type { FnContext } from '../library/fnTypes';
-import { slotKey } from '../compile/codegen';
+import { slotKey } from '../compile/emitter';
 import { isStraight } from '../compile/programConstants';
 import { DISPATCH_PARAMS, planDispatch, type DispatchFn, type DispatchPlan } from '../compile/dispatch';
 import type { SegmentFn } from '../compile/segments';

@@ -19,7 +19,7 @@ import type {
   StateTransfer,
 } from '../api';
 import type { BodyInfo } from '../compile/flatten';
-import { slotKey } from '../compile/codegen';
+import { slotKey } from '../compile/emitter';
 import { networkPower, type PowerTrace } from './snapshot';
 import { programOf } from '../compile/taskSchedule';
 import type { Access, VarSymbol } from '../compile/symbols';
