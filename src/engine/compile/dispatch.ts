@@ -11,16 +11,15 @@ import type { Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
 import {
   CALL_TEXT,
-  bodyUnits,
   generateNetwork,
   generateUnit,
   LATE_TEXT,
   NETS_PER_WORD,
-  ProgramConstants,
-  slotKey,
   STEP_CALL_TEXT,
   STEP_LATE_TEXT,
 } from './codegen';
+import { bodyUnits, ProgramConstants } from './programConstants';
+import { slotKey } from './emitter';
 import type { NetworkIR } from './ir';
 
 /** What each generated dispatch factory receives, in this order. */
@@ -83,7 +82,7 @@ export interface DispatchPlan {
   /**
    * Body of `new Function(...DISPATCH_PARAMS, stepBody)` returning one generator function per
    * shape, `(i, now, scan) => next network`, whose calls of bodies are `yield* X.stepCall(...)`:
-   * the slow path used only to step into calls (runtime/scanner.ts).
+   * the slow path used only to step into calls (runtime/scanCycle.ts).
    */
   readonly stepBody: string;
 }

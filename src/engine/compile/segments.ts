@@ -4,7 +4,9 @@
 // 100 ms of background compilation per segment first. The runtime therefore starts every program
 // on the dispatch loops and moves segments over a few at a time (runtime/tiering.ts).
 import type { ResolvedFunction } from '../library/fnTypes';
-import { generateNetwork, ProgramConstants, type CodeMode } from './codegen';
+import { generateNetwork } from './codegen';
+import type { CodeMode } from './emitter';
+import { ProgramConstants } from './programConstants';
 import type { NetworkIR } from './ir';
 import type { Value } from '../../model/iecTypes';
 

@@ -1,5 +1,5 @@
 // Tasks at several rates or on events: which programs run in a scan (ProgramRates), built once per
-// compiled program. The scan cycle sets its flags at each tick (ScanPlc.dueTasks) and skips
+// compiled program. The scan cycle sets its flags at each tick (scanCycle.ts dueTasks) and skips
 // the programs whose task is not due.
 import type { CompiledProgram } from '../compile/program';
 import type { TaskTrigger } from '../compile/taskTriggers';

@@ -16,7 +16,7 @@ import type { Access } from '../compile/symbols';
 import { emitSt, type StEmitter } from '../st/emit';
 import type { ChartIR, RangeIR } from './ir';
 
-/** What the chart's code needs from codegen's Emitter (its ST pieces are written by st/emit.ts). */
+/** What the chart's code needs from compile/emitter.ts's Emitter (its ST pieces are written by st/emit.ts). */
 export interface ChartEmitter extends StEmitter {
   readBit(a: Access): string;
   writeBit(a: Access, x: string): string;

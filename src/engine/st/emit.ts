@@ -10,7 +10,7 @@ import type { Source, StOp } from '../compile/ir';
 import type { Access } from '../compile/symbols';
 import type { TExpr, TStmt } from './lowered';
 
-/** What the ST code needs from the network emitter (compile/codegen.ts Emitter). */
+/** What the ST code needs from the network emitter (compile/emitter.ts Emitter). */
 export interface StEmitter {
   lines: string[];
   readonly depth: number;
