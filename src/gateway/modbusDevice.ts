@@ -231,6 +231,11 @@ export class ModbusTcpDevice implements Device {
     this.writeQueued = true;
     this.enqueue(async () => {
       this.writeQueued = false;
+      // A poll that ran meanwhile may have written the current image already: a second write of it
+      // would only overwrite what another master wrote in between (a flip of ours, unseen).
+      if (!this.writeDue) return;
+      // Read back first, as every poll does: never write over another master's change unseen.
+      if (this.readBackDue()) await this.readBack();
       await this.writeAll(false);
     }).catch((e: unknown) => this.noteError(e));
   }
@@ -301,7 +306,9 @@ export class ModbusTcpDevice implements Device {
     // A new connection may be a restarted device: write the desired image (safe unless driven) first thing.
     this.connected = true;
     this.writeDue = true;
-    this.baselineValid = false; // a new connection may be a restarted device: nothing to compare with yet
+    // A new connection may be a restarted device: nothing of ours to compare with until written again.
+    // Hands off (another master seen), nothing is written: keep comparing with what was read back last.
+    this.baselineValid = this.handsOff;
   }
 
   /**
