@@ -100,3 +100,37 @@ describe('a line from a block output shows that output', () => {
     expect(seen.qOff).toBeGreaterThanOrEqual(10);
   });
 });
+
+describe('a line from a block output into an OR shows the output, not the OR', () => {
+  // X := TON0.Q OR A; the line from Q to the bar shows Q while A lights the bar and X.
+  //   |--[Run]--[TON0]Q---+--( X )
+  //   |                   |
+  //   |--[A]--------------+
+  const net = () =>
+    ladder(['[Run] # # - + (X)', '. # # . + .', '[A] - - - + .'], {
+      boxes: [{ row: 0, col: 1, type: 'TON', instance: 'TON0', inputs: { PT: 'T#30ms' } }],
+    });
+  test.each<Profile>(['iec', 'openplc'])('%s', (profile) => {
+    const n = net();
+    const plc = plcOf(project(vars('Run BOOL', 'A BOOL', 'X BOOL', 'TON0 TON'), [n], profile), 10);
+    const k = (row: number, col: number) => n.elements.findIndex((e) => e.kind === 'link' && e.row === row && e.col === col);
+    const box = n.elements.findIndex((e) => e.kind === 'box');
+    const byte = (i: number) => plc.snapshot().networks[0]!.elements[i]!;
+    const seen = new Set<string>();
+    for (let scan = 1; scan <= 80; scan++) {
+      plc.write('Run', scan % 20 < 12);
+      plc.write('A', scan % 7 < 3);
+      plc.scan();
+      const q = plc.read('TON0.Q') === true;
+      const a = plc.read('A') === true;
+      seen.add(`${q}${a}`);
+      expect({ scan, q, a, x: plc.read('X') }).toEqual({ scan, q, a, x: q || a });
+      expect({ scan, line: byte(k(0, 3)) & 1, boxOut: (byte(box) >> 1) & 1 }).toEqual({ scan, line: Number(q), boxOut: Number(q) });
+      expect({ scan, line: byte(k(2, 3)) & 1 }).toEqual({ scan, line: Number(a) });
+      expect({ scan, bar: plc.snapshot().networks[0]!.vlinks[0] }).toEqual({ scan, bar: Number(q || a) });
+    }
+    // Q off while A lights the OR, and the other way round, were both seen.
+    expect(seen.has('falsetrue')).toBe(true);
+    expect(seen.has('truefalse')).toBe(true);
+  });
+});

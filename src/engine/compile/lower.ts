@@ -71,6 +71,8 @@ function lowerInOrder(
         ops.push({ op: 'pass', node: via, inNet: nets.powerNet(from), outNet: nets.powerNet(net) });
     }
   };
+  /** A block output's own local where its line is joined to others (`node:pin`), for the display. */
+  const boxOwn = new Map<string, number>();
   for (const ni of order) {
     const node = g.nodes[ni]!;
     const el = node.el;
@@ -121,8 +123,25 @@ function lowerInOrder(
         ops.push({ op: 'return', node: node.index, inNet });
         break;
       case 'box': {
+        // Where other outputs join a BOOL output's line (an OR further right), the block writes the
+        // output to a local of its own, OR-ed into the line after the call: the line from the
+        // output shows the output, not the OR (a horizontal link copies its left side, section 1).
+        const own: (readonly [net: number, id: number, pin: string])[] = [];
+        for (const t of node.outputs) {
+          const out = g.nets[t.net]!;
+          const type = node.layout?.outputs.find((p) => p.name === t.pin)?.type;
+          if (type !== 'BOOL' || nets.data.has(t.net) || nets.dataPending.has(t.net)) continue;
+          if (out.sources.length > 1 || out.leftRail || out.feeds.length > 0) own.push([t.net, nets.fresh(), t.pin]);
+        }
+        const saved = nets.overlay;
+        if (own.length) nets.overlay = new Map([...(saved ?? []), ...own.map(([net, id]) => [net, id] as const)]);
         const op = lowerBox(ctx, node, nets, index, r);
+        nets.overlay = saved;
         if (op) ops.push(op);
+        for (const [net, id, pin] of own) {
+          ops.push({ op: 'pass', node: node.index, inNet: id, outNet: nets.powerNet(net) });
+          boxOwn.set(`${ni}:${pin}`, id);
+        }
         break;
       }
     }
@@ -135,6 +154,8 @@ function lowerInOrder(
     if (el.kind === 'link' || el.kind === 'connector' || el.kind === 'continuation') {
       // A line from one contact to an OR shows the contact's own result (section 1).
       const own = g.linkSource[i]!;
+      const boxed = own >= 0 ? boxOwn.get(`${own}:${g.linkSourcePin[i]}`) : undefined;
+      if (boxed !== undefined) return [boxed, boxed];
       if (own >= 0 && nets.hasPower(-1 - own)) return [nets.powerNet(-1 - own), nets.powerNet(-1 - own)];
       const net = g.linkNet[i]!;
       return net >= 0 && nets.hasPower(net) ? [nets.powerNet(net), nets.powerNet(net)] : [-1, -1];
@@ -156,7 +177,8 @@ function lowerInOrder(
     if (el.kind !== 'box') return [pin(node.inputs, undefined), pin(node.outputs, undefined)];
     const pIn = node.layout?.inputs.find((p) => p.type === 'BOOL')?.name;
     const pOut = node.layout?.outputs.find((p) => p.type === 'BOOL')?.name;
-    return [pIn ? pin(node.inputs, pIn) : -1, pOut ? pin(node.outputs, pOut) : -1];
+    const outOwn = pOut ? boxOwn.get(`${g.nodes.indexOf(node)}:${pOut}`) : undefined;
+    return [pIn ? pin(node.inputs, pIn) : -1, outOwn ?? (pOut ? pin(node.outputs, pOut) : -1)];
   });
   const vlinkNets = network.vlinks.map((_, i) => {
     const net = g.vlinkNet[i]!;
