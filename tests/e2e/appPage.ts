@@ -1,20 +1,22 @@
 // Shared set-up of the browser tests: one Chromium per test file, and the app opened in a page that
 // records console errors.
-import type { Browser, Page } from 'playwright-core';
-import { afterAll, beforeAll, inject } from 'vitest';
-import { collectPageErrors, launchChromium } from './browser';
+import type { Browser, Locator, Page } from 'playwright-core';
+import { afterAll, beforeAll, expect, inject } from 'vitest';
+import { collectPageErrors, connectChromium } from './browser';
 
 /** The window size the canvas tests lay the ladder out in. */
 export const APP_VIEWPORT = { width: 1440, height: 900 } as const;
 
 /**
- * Launches Chromium before the tests of the calling file (or describe block) and closes it after
- * them, so after-hooks registered later still see it open. Returns the running browser.
+ * Connects to the run's Chromium (tests/e2e/global-setup.ts) before the tests of the calling file
+ * (or describe block) and disconnects after them, closing every page it opened, so after-hooks
+ * registered later still see it open. Each page is in a context of its own (no shared storage).
+ * Returns the connected browser.
  */
 export function useChromium(): () => Browser {
   let browser: Browser | undefined;
   beforeAll(async () => {
-    browser = await launchChromium();
+    browser = await connectChromium(inject('browserWsEndpoint'));
   });
   afterAll(async () => {
     await browser?.close();
@@ -52,4 +54,26 @@ export async function openApp(browser: Browser, url: string = inject('appUrl')):
   await page.goto(url);
   await waitForApp(page);
   return { page, errors };
+}
+
+/**
+ * The element's box once it has stopped moving (the same in two reads 100 ms apart), e.g. a chart
+ * resizing to its panel: a condition, where a fixed sleep would be too short on a busy machine.
+ */
+export async function settledBox(locator: Locator): Promise<{ x: number; y: number; width: number; height: number }> {
+  let last: string | undefined;
+  let box: { x: number; y: number; width: number; height: number } | null = null;
+  await expect
+    .poll(
+      async () => {
+        box = await locator.boundingBox();
+        const text = JSON.stringify(box);
+        const settled = box !== null && box.width > 0 && text === last;
+        last = text;
+        return settled;
+      },
+      { timeout: 30_000, interval: 100 },
+    )
+    .toBe(true);
+  return box!;
 }

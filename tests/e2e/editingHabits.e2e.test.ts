@@ -4,7 +4,7 @@
 import { beforeAll, expect, test } from 'vitest';
 import type { Page } from 'playwright-core';
 import type { BoxElement } from '../../src/model/elements';
-import { useChromium } from './appPage';
+import { settledBox, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 import { EditorPage, poll } from './panelsPage';
 import { SimPage } from './simPage';
@@ -177,8 +177,7 @@ test('the trend draws a BOOL and an INT in separate lanes against time, with a t
   expect(labels.length).toBeGreaterThan(1);
   for (const label of labels) expect(label).toMatch(/^\d+(\.\d+)? (ms|s)$/);
   const over = chart.locator('.u-over');
-  await page.waitForTimeout(300); // let the chart settle to the panel's size
-  const box = (await over.boundingBox())!;
+  const box = await settledBox(over); // the chart resized to the panel
   await page.mouse.move(box.x + box.width * 0.5, box.y + box.height / 2, { steps: 5 });
   const tip = page.getByTestId('trend-tip');
   await poll(() => tip.textContent()).toMatch(/^t = \d+(\.\d+)? (ms|s) · scan \d+Done = FALSEPartCount = 0$/);

@@ -1,12 +1,15 @@
 // Starts the server `npm start` starts (bin/rungsmith-gateway.mjs: the gateway's static server with
 // its CSP and headers, /io and the simulated device) on free loopback ports, serving the built app
 // (dist/), and checks for Chromium. Browser tests therefore run the app exactly as users get it.
+// It also starts the one Chromium the test files connect to (appPage.ts useChromium).
 import { spawn, type ChildProcess } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import type { TestProject } from 'vitest/node';
-import { CHROMIUM_PATH } from './browser';
+import type { BrowserServer } from 'playwright-core';
+import { CHROMIUM_PATH, launchChromiumServer } from './browser';
 
 let server: ChildProcess | undefined;
+let chromium: BrowserServer | undefined;
 
 /** Waits for the line the gateway prints when it is ready: "Rungsmith gateway: open http://127.0.0.1:PORT/#token=…". */
 function startServer(): Promise<{ child: ChildProcess; url: string }> {
@@ -49,9 +52,17 @@ export async function setup(project: TestProject) {
   const started = await startServer();
   server = started.child;
   project.provide('appUrl', started.url);
+  try {
+    chromium = await launchChromiumServer();
+  } catch (e) {
+    await teardown();
+    throw e;
+  }
+  project.provide('browserWsEndpoint', chromium.wsEndpoint());
 }
 
 export async function teardown() {
+  await chromium?.close();
   const child = server;
   if (!child || child.exitCode !== null) return;
   await new Promise<void>((resolve) => {
@@ -64,5 +75,7 @@ declare module 'vitest' {
   export interface ProvidedContext {
     /** The URL the app server printed: http://127.0.0.1:PORT/#token=… */
     appUrl: string;
+    /** Where the run's Chromium listens (playwright's browser server). */
+    browserWsEndpoint: string;
   }
 }

@@ -1,5 +1,4 @@
 // Page object for the editor's panels (variables, inspector, problems) and the File menu.
-import { readFile } from 'node:fs/promises';
 import type { Browser, Locator, Page } from 'playwright-core';
 import type { Project } from '../../src/model/project';
 import type { UiState } from '../../src/store/uiStore';
@@ -89,7 +88,10 @@ export class EditorPage {
     const download = this.page.waitForEvent('download');
     await start();
     const file = await download;
-    return { name: file.suggestedFilename(), text: await readFile((await file.path())!, 'utf8') };
+    // Read through playwright's connection: the browser is the run's shared one (no local path).
+    const chunks: Buffer[] = [];
+    for await (const chunk of await file.createReadStream()) chunks.push(chunk as Buffer);
+    return { name: file.suggestedFilename(), text: Buffer.concat(chunks).toString('utf8') };
   }
 
   /** File > Open… with a file the user picks in the browser's file chooser. */

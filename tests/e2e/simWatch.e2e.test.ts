@@ -1,7 +1,7 @@
 // Forcing from the canvas menu and the watch table, and reading the trend with its cursor.
 import { beforeEach, expect, test } from 'vitest';
 import type { Page } from 'playwright-core';
-import { openApp, useChromium } from './appPage';
+import { openApp, settledBox, useChromium } from './appPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -71,8 +71,7 @@ test('the trend draws chosen signals over the last scans and its cursor reads va
   const chart = page.getByTestId('trend-chart');
   const over = chart.locator('.u-over');
   await over.waitFor();
-  await page.waitForTimeout(300); // let the chart settle to the panel's size
-  const box = (await over.boundingBox())!;
+  const box = await settledBox(over); // the chart resized to the panel
   // The window holds the last 500 scans (201..700): red is on until 5 s (scan 501), then green.
   await page.mouse.move(box.x + box.width * 0.1, box.y + box.height / 2, { steps: 5 });
   const legend = chart.locator('.u-legend');
