@@ -1,6 +1,7 @@
-// Tests (issue 14): the project's test scenarios. Run them all (pass/fail per scenario); a failure
-// opens in the timeline at its first divergent scan with "Why?" on the differing output. Record a
-// scenario from the simulation (the inputs toggled and the outputs seen), edit it as a table or CSV.
+// Tests (issue 14): the project's test scenarios. Run them all (pass/fail per scenario); run one in a
+// simulation of its own (never the live one), a failure shown at its first divergent scan with "Why?"
+// on the differing output. Record a scenario from the scans since the last cold start (the inputs
+// toggled and the outputs seen), start a new one, edit it as a table or CSV.
 import { useMemo, useState } from 'react';
 import type { Project, Scenario } from '../../model/project';
 import { parseScenario, runScenario, type ScenarioResult } from '../../sim/scenario';
