@@ -107,7 +107,12 @@ export function TestsPanel() {
                       {r && !r.ok ? 'Why it failed' : 'Run'}
                     </button>
                     <button type="button" className="rs-sim-btn" onClick={() => setEditing(editing === i ? undefined : i)}>Edit</button>
-                    <button type="button" className="rs-sim-btn" onClick={() => { forget(sc.name); save(scenarios.filter((_, k) => k !== i)); }}>Delete</button>
+                    <button type="button" className="rs-sim-btn" onClick={() => {
+                      forget(sc.name);
+                      // The editor stays on the scenario it shows (or closes with it).
+                      if (editing !== undefined) setEditing(editing === i ? undefined : editing > i ? editing - 1 : editing);
+                      save(scenarios.filter((_, k) => k !== i));
+                    }}>Delete</button>
                   </td>
                 </tr>
               );
@@ -117,7 +122,7 @@ export function TestsPanel() {
       )}
       {shown && <ScenarioRunView key={`${shown.name}-${shown.result.scans}`} name={shown.name} result={shown.result} onClose={() => setShown(undefined)} />}
       {editing !== undefined && scenarios[editing] && (
-        <ScenarioEditor key={editing} scenario={scenarios[editing]} onSave={(next) => {
+        <ScenarioEditor key={`${editing}-${scenarios[editing].name}`} scenario={scenarios[editing]} onSave={(next) => {
           forget(scenarios[editing]!.name, next.name);
           save(scenarios.map((s, k) => (k === editing ? next : s)));
         }} />
