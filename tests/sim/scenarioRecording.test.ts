@@ -77,3 +77,9 @@ test('a recording whose first scans no longer fit in the history is refused', ()
   const h = new SimHarness().send({ type: 'setHistory', maxScans: 30, budgetBytes: 1 << 20 }, { type: 'run', project: motorProgram() }).advance(1000);
   expect(exported(h, 1).refused).toMatch(/the recording starts at scan \d+ \(the oldest scans no longer fit in the history\), not at scan 1/);
 });
+
+test('a warm restart while recording is refused too: retained state is not a cold start', () => {
+  const h = new SimHarness().send({ type: 'run', project: motorProgram() }).advance(100);
+  h.send({ type: 'warmRestart' }).advance(50);
+  expect(exported(h, 1).refused).toMatch(/^A scenario replays from a cold start, and a warm restart at scan \d+ changed the program or its state since the last one/);
+});

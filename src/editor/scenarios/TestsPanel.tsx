@@ -1,6 +1,7 @@
-// Tests (issue 14): the project's test scenarios. Run them all (pass/fail per scenario); a failure
-// opens in the timeline at its first divergent scan with "Why?" on the differing output. Record a
-// scenario from the simulation (the inputs toggled and the outputs seen), edit it as a table or CSV.
+// Tests (issue 14): the project's test scenarios. Run them all (pass/fail per scenario); run one in a
+// simulation of its own (never the live one), a failure shown at its first divergent scan with "Why?"
+// on the differing output. Record a scenario from the scans since the last cold start (the inputs
+// toggled and the outputs seen), start a new one, edit it as a table or CSV.
 import { useMemo, useState } from 'react';
 import type { Project, Scenario } from '../../model/project';
 import { parseScenario, type ScenarioResult } from '../../sim/scenario';
@@ -114,7 +115,12 @@ export function TestsPanel() {
                       {r && !r.ok ? 'Why it failed' : 'Run'}
                     </button>
                     <button type="button" className="rs-sim-btn" onClick={() => setEditing(editing === i ? undefined : i)}>Edit</button>
-                    <button type="button" className="rs-sim-btn" onClick={() => { forget(sc.name); save(scenarios.filter((_, k) => k !== i)); }}>Delete</button>
+                    <button type="button" className="rs-sim-btn" onClick={() => {
+                      forget(sc.name);
+                      // The editor stays on the scenario it shows (or closes with it).
+                      if (editing !== undefined) setEditing(editing === i ? undefined : editing > i ? editing - 1 : editing);
+                      save(scenarios.filter((_, k) => k !== i));
+                    }}>Delete</button>
                   </td>
                 </tr>
               );
@@ -124,7 +130,7 @@ export function TestsPanel() {
       )}
       {shown && <ScenarioRunView key={`${shown.name}-${shown.result.scans}`} name={shown.name} result={shown.result} onClose={() => setShown(undefined)} />}
       {editing !== undefined && scenarios[editing] && (
-        <ScenarioEditor key={editing} scenario={scenarios[editing]} onSave={(next) => {
+        <ScenarioEditor key={`${editing}-${scenarios[editing].name}`} scenario={scenarios[editing]} onSave={(next) => {
           forget(scenarios[editing]!.name, next.name);
           save(scenarios.map((s, k) => (k === editing ? next : s)));
         }} />
