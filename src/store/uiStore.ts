@@ -64,7 +64,7 @@ export interface PanelLayout {
 export const DEFAULT_PANELS: PanelLayout = {
   left: 230,
   right: 340,
-  bottom: 190,
+  bottom: 160,
   leftCollapsed: false,
   rightCollapsed: false,
   bottomCollapsed: false,

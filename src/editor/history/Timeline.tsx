@@ -40,13 +40,14 @@ export function Timeline() {
   };
   return (
     <div className={`rs-timeline${scan !== undefined ? ' rs-timeline-history' : ''}`} data-testid="timeline" onKeyDown={onKey} role="group" aria-label="Scan history">
-      <span className="rs-timeline-state" data-testid="history-marker">
+      <span className="rs-timeline-state" data-testid="history-marker"
+        title={scan !== undefined ? `History: scan ${scan}` : `Live; scans ${history.first}–${history.last} recorded`}>
         {scan !== undefined ? (
           <>
             <strong>HISTORY</strong> scan {scan.toLocaleString('en-US')} · {(timeMs! / 1000).toFixed(3)} s
           </>
         ) : (
-          <>Live · {history.first.toLocaleString('en-US')}–{history.last.toLocaleString('en-US')} recorded</>
+          <>Live · {history.first.toLocaleString('en-US')}–{history.last.toLocaleString('en-US')}</>
         )}
       </span>
       <button type="button" className="rs-sim-btn" aria-label="Previous scan" title="Previous scan (←)" onClick={() => stepTo(-1)} data-testid="history-prev">◀</button>
@@ -73,18 +74,18 @@ export function Timeline() {
       <span className="rs-timeline-group">
         <input type="text" className="rs-timeline-input" placeholder="Variable" aria-label="Variable to follow" value={variable}
           onChange={(e) => setVariable(e.target.value)} data-testid="history-variable" />
-        <button type="button" className="rs-sim-btn" title="Previous change (Shift+←)" onClick={() => change(-1)} data-testid="history-prev-change">⇤ change</button>
-        <button type="button" className="rs-sim-btn" title="Next change (Shift+→)" onClick={() => change(1)} data-testid="history-next-change">change ⇥</button>
+        <button type="button" className="rs-sim-btn" title="Previous change of the variable (Shift+←)" aria-label="Previous change" onClick={() => change(-1)} data-testid="history-prev-change">⇤</button>
+        <button type="button" className="rs-sim-btn" title="Next change of the variable (Shift+→)" aria-label="Next change" onClick={() => change(1)} data-testid="history-next-change">⇥</button>
       </span>
       <span className="rs-timeline-group">
-        <input type="text" className="rs-timeline-input rs-timeline-condition" placeholder="Condition, e.g. Motor AND NOT Start" aria-label="Condition"
+        <input type="text" className="rs-timeline-input rs-timeline-condition" placeholder="Condition, e.g. Motor AND NOT Start" title="Condition, e.g. Motor AND NOT Start" aria-label="Condition"
           value={condition} onChange={(e) => setCondition(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && find(e.shiftKey ? -1 : 1)}
           data-testid="history-condition" />
-        <button type="button" className="rs-sim-btn" onClick={() => find(1)} data-testid="history-find">Find next</button>
+        <button type="button" className="rs-sim-btn" onClick={() => find(1)} title="Next scan where the condition holds (Enter; Shift+Enter: previous)" data-testid="history-find">Find</button>
       </span>
       <button type="button" className="rs-sim-btn" title="Save the recorded scans as a trace CSV (rungsmith simulate format)"
         onClick={() => void s.exportHistory({ format: 'trace' }).then((text) => downloadText('trace.csv', text))} data-testid="history-export">
-        Export trace
+        Export
       </button>
       {message && <span className="rs-timeline-message" role="status" data-testid="history-message">{message}</span>}
     </div>

@@ -74,7 +74,7 @@ function BindingInfo({ value, role }: { value: string; role: BindingRole }) {
       );
     }
     case 'undeclared': {
-      const choices = declareChoices(project, resolution.name, role);
+      const choices = declareChoices(project, resolution.name, role, pou.kind);
       return (
         <div
           className="rs-declare-offer"

@@ -86,7 +86,7 @@ export function VariableInput(props: VariableInputProps) {
           : undefined;
     const declares =
       offered !== undefined
-        ? declareChoices(project, offered, role).map((choice) => ({ kind: 'declare' as const, choice }))
+        ? declareChoices(project, offered, role, pou?.kind).map((choice) => ({ kind: 'declare' as const, choice }))
         : [];
     // The offered fresh instance comes first: a second call needs a new instance, not Motor1 again.
     return offered !== undefined && offered !== text ? [...declares, ...ranked] : [...ranked, ...declares];

@@ -1,9 +1,12 @@
 // "Start is not declared — declare it?": the declarations offered for an undeclared name, with a
 // sensible type for where it was typed and, on request, the next free input/output/memory address.
+// Inside a function block or a function the choices are its interface instead (VAR_INPUT,
+// VAR_OUTPUT, VAR_IN_OUT, VAR): a block's variables have no addresses, its inputs and outputs are
+// what its callers wire.
 import { blockSignature } from '../../model/blocks';
 import { variable } from '../../model/factory';
 import type { PinType } from '../../model/iecTypes';
-import type { Project, Variable } from '../../model/project';
+import type { PouKind, Project, VarClass, Variable } from '../../model/project';
 import { nextFreeAddress, type AddressArea } from '../variables/addresses';
 import { identifierProblem } from '../variables/validation';
 import type { BindingRole } from './operands';
@@ -62,11 +65,38 @@ function areasFor(role: BindingRole): AddressArea[] {
   }
 }
 
-/** Declarations to offer for `name`; empty when the name cannot be a variable name. */
-export function declareChoices(project: Project, name: string, role: BindingRole): DeclareChoice[] {
+const CLASS_WORDS: Partial<Record<VarClass, string>> = {
+  input: 'input (VAR_INPUT)',
+  output: 'output (VAR_OUTPUT)',
+  inOut: 'in-out (VAR_IN_OUT)',
+  local: 'local (VAR)',
+};
+
+/**
+ * The interface sections a name typed in a block's body may go to, the likeliest first: a contact
+ * or an input pin reads (VAR_INPUT), a coil or an output pin writes (VAR_OUTPUT). A function has no
+ * VAR_IN_OUT here (its callers pass values); an FB instance is a local of the block.
+ */
+function classesFor(role: BindingRole, kind: 'FUNCTION_BLOCK' | 'FUNCTION'): VarClass[] {
+  if (role.kind === 'instance') return ['local'];
+  const writes = role.kind === 'coil' || (role.kind === 'pin' && role.direction !== 'input');
+  const order: VarClass[] = writes ? ['output', 'inOut', 'input', 'local'] : ['input', 'inOut', 'output', 'local'];
+  return kind === 'FUNCTION' ? order.filter((c) => c !== 'inOut') : order;
+}
+
+/**
+ * Declarations to offer for `name`, typed in a POU of kind `pouKind` (a program when not given);
+ * empty when the name cannot be a variable name.
+ */
+export function declareChoices(project: Project, name: string, role: BindingRole, pouKind?: PouKind): DeclareChoice[] {
   const trimmed = name.trim();
   if (identifierProblem(trimmed)) return [];
   const type = suggestedType(role);
+  if (pouKind === 'FUNCTION_BLOCK' || pouKind === 'FUNCTION')
+    return classesFor(role, pouKind).map((varClass) => ({
+      label: `${type} ${CLASS_WORDS[varClass]}`,
+      variable: variable(trimmed, type, { varClass }),
+    }));
   const choices: DeclareChoice[] = [{ label: type, variable: variable(trimmed, type) }];
   for (const area of areasFor(role)) {
     const location = nextFreeAddress(project, area, type);

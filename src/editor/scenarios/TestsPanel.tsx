@@ -2,10 +2,11 @@
 // simulation of its own (never the live one), a failure shown at its first divergent scan with "Why?"
 // on the differing output. Record a scenario from the scans since the last cold start (the inputs
 // toggled and the outputs seen), start a new one, edit it as a table or CSV.
-import { useMemo, useState } from 'react';
+import { useEffect, useMemo, useRef, useState, type RefObject } from 'react';
 import type { Project, Scenario } from '../../model/project';
 import { parseScenario, type ScenarioResult } from '../../sim/scenario';
 import { useDocument, useDocumentStore } from '../../store/documentStore';
+import { useUiStore } from '../../store/uiStore';
 import { useSimStore } from '../sim/simContext';
 import { runScenariosOffPage } from './scenarioRunner';
 import '../history/history.css';
@@ -139,10 +140,31 @@ export function TestsPanel() {
   );
 }
 
+/**
+ * An open scenario editor needs room for its rows (a 160 px bottom panel shows one, at 1280×720):
+ * the bottom panel grows to 45% of the window while it is open, back to its size after unless it
+ * was resized meanwhile, and the editor is scrolled into view.
+ */
+function useRoomToEdit(ref: RefObject<HTMLDivElement | null>): void {
+  const ui = useUiStore();
+  useEffect(() => {
+    const before = ui.getState().panels.bottom;
+    const want = Math.round(window.innerHeight * 0.45);
+    if (before < want) ui.getState().setPanels({ bottom: want, bottomCollapsed: false });
+    const frame = requestAnimationFrame(() => ref.current?.scrollIntoView({ block: 'start' }));
+    return () => {
+      cancelAnimationFrame(frame);
+      if (before < want && ui.getState().panels.bottom === want) ui.getState().setPanels({ bottom: before });
+    };
+  }, [ui, ref]);
+}
+
 /** The scenario as a table (cells editable) and as CSV. */
 function ScenarioEditor({ scenario, onSave }: { scenario: Scenario; onSave: (s: Scenario) => void }) {
   const [name, setName] = useState(scenario.name);
   const [csv, setCsv] = useState(scenario.csv);
+  const ref = useRef<HTMLDivElement>(null);
+  useRoomToEdit(ref);
   const parsed = useMemo(() => {
     try {
       return { ok: true as const, s: parseScenario(csv, name) };
@@ -162,7 +184,7 @@ function ScenarioEditor({ scenario, onSave }: { scenario: Scenario; onSave: (s: 
     setCsv(lines.join('\n'));
   };
   return (
-    <div className="rs-scenario-editor" data-testid="scenario-editor">
+    <div ref={ref} className="rs-scenario-editor" data-testid="scenario-editor">
       <label>
         Name <input type="text" value={name} onChange={(e) => setName(e.target.value)} />
       </label>
