@@ -10,7 +10,8 @@ import { lowerChart } from '../sfc/chart';
 import { startNetwork } from './lower';
 import { lowerTextBody, refuseBody } from '../st/body';
 import { Reporter } from './report';
-import { buildSymbols, type SymbolTable } from './symbols';
+import type { SymbolTable } from './symbols';
+import { buildSymbols } from './pouSymbols';
 
 export interface LoweredPou {
   readonly ctx: PouContext;
