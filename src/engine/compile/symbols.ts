@@ -1,5 +1,7 @@
 // The variables a program sees (its POU's variables, then the project's globals), where each one
 // lives at run time, and how operand text (`Start`, `T1.Q`, `Status.3`, `%IX0.0`, `T#5s`) resolves.
+// A POU's table is built by pouSymbols.ts; struct, array and enum variables are declared by
+// aggregates.ts; the syntax of a path is split by operandPath.ts.
 import { blockSignature } from '../../model/blocks';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import {
@@ -22,6 +24,7 @@ import { declareDataTyped, describeNode, elementAt, memberOf, type AggNode, type
 import { parseLiteral } from '../values/literals';
 import { defaultValue, isBigIntType, isStringType } from '../values/types';
 import type { Reporter } from './report';
+import { splitPath } from './operandPath';
 
 /**
  * b: BOOL bytes (Uint8Array); n: other numbers (Float64Array); g: values held as JavaScript objects
@@ -471,37 +474,6 @@ export class SymbolTable {
     if (!lit.ok) return { ok: false, message: lit.message };
     return { ok: true, access: { kind: 'const', type: lit.type, value: lit.value, text: t } };
   }
-}
-
-/**
- * `A.B[1, 2].C` -> ['A', 'B', [1, 2], 'C'] (names, and constant index lists); undefined when the
- * text is not such a path (an index that is not an integer literal, unbalanced brackets).
- */
-export function splitPath(text: string): (string | number[])[] | undefined {
-  const out: (string | number[])[] = [];
-  let i = 0;
-  const s = text.trim();
-  const ident = /^[A-Za-z_0-9]+/;
-  while (i < s.length) {
-    if (out.length > 0) {
-      if (s[i] === '.') i++;
-      else if (s[i] !== '[') return undefined;
-    }
-    if (s[i] === '[') {
-      const end = s.indexOf(']', i);
-      if (end < 0) return undefined;
-      const parts = s.slice(i + 1, end).split(',').map((x) => x.trim());
-      if (!parts.every((x) => /^[+-]?\d+$/.test(x))) return undefined;
-      out.push(parts.map(Number));
-      i = end + 1;
-      continue;
-    }
-    const m = ident.exec(s.slice(i));
-    if (!m) return undefined;
-    out.push(m[0]);
-    i += m[0].length;
-  }
-  return out;
 }
 
 /** Resolves the rest of a path under a struct/array node: every index constant. */
