@@ -24,11 +24,12 @@ import type { Pou } from '../../model/project';
 import type { NetworkIR, StOp } from '../compile/ir';
 import { translateIl } from '../il/translate';
 import { StSyntaxError, type Expr, type Pos, type Stmt } from './ast';
-import { StChecker, type StError, type StScope } from './check';
+import { StChecker } from './check';
+import type { StError, StScope } from './checkScope';
 import { stFacts, type TExpr, type TStmt } from './lowered';
 import { parseExpression, parseStatements } from './parser';
 
-export type { StScope, StError } from './check';
+export type { StScope, StError } from './checkScope';
 export type { TExpr, TStmt } from './lowered';
 
 /** The languages whose bodies this compiler runs. */
