@@ -8,7 +8,7 @@ import { BOX_MARGIN_X, BOX_MARGIN_Y, CELL_W, ROW_H, boundaryX, type Point } from
 import type { Source } from './gridGraph';
 import { boxLayout } from '../model/boxLayout';
 import type { BlockLibrary } from '../model/library';
-import type { Connect, IdAllocator, Placed } from './exportBody';
+import type { Connect, IdAllocator, Placed } from './exportPlaced';
 import type { XmlWriter } from './xml/write';
 
 const pt = (x: number, y: number): Point => ({ x, y });

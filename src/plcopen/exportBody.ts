@@ -18,22 +18,9 @@ import {
 } from './geometry';
 import { elementPins, gridGraph, type Source } from './gridGraph';
 import { boxPins, rel, writeBox } from './exportBlock';
+import type { Connect, IdAllocator, Placed } from './exportPlaced';
 import { RS_CONTACT, RS_COIL, RS_NETWORK, preserved, type PreservedNetwork } from './types';
 import { escapeAttr, type XmlWriter } from './xml/write';
-
-export interface IdAllocator {
-  next(): number;
-}
-
-export interface Placed {
-  readonly id: number;
-  /** Absolute pin positions by pin name (inputs; both pins of a 1-cell element). */
-  readonly pins: Map<string, Point>;
-  /** A box's output pins (an in-out pin has one of each name on either side). */
-  readonly outs?: Map<string, Point>;
-  /** Pin name written in formalParameter when this element is a connection's source (blocks only). */
-  readonly formal?: (pin: string) => string;
-}
 
 const pt = (x: number, y: number): Point => ({ x, y });
 
@@ -215,13 +202,6 @@ function placeElement(el: LdElement, top: number, ids: IdAllocator, library: Blo
     }
   }
 }
-
-export type Connect = (
-  consumer: Point,
-  origin: Point,
-  srcs: readonly Source[] | undefined,
-  barX: number | undefined,
-) => void;
 
 function writeElement(
   w: XmlWriter,

@@ -15,7 +15,8 @@ import {
 } from '../model/project';
 import { importLdBody, type BodyTuning } from './importBody';
 import { readInstances, readType, readVarLists } from './importInterface';
-import { LdGraphError, type Finding } from './ldGraph';
+import { LdGraphError } from './ldGraph';
+import type { Finding } from './ldNodes';
 import { pouFingerprint } from './otherPous';
 import { unknownBlocks } from './unknownBlocks';
 import { readSfcChart } from './sfcChart';

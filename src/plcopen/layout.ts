@@ -4,7 +4,7 @@
 // the branches — a series element continues its source's row, parallel branches and fan-out go to the
 // first row below where their cells, links and bars cross nothing of another net.
 import type { BlockLibrary } from '../model/library';
-import type { GNode } from './ldGraph';
+import type { GNode } from './ldNodes';
 import { placeRows } from './layoutRows';
 import { shapeOf, type LaidOut, type Net, type PinSpec, type Shape } from './layoutShapes';
 

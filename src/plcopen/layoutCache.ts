@@ -5,7 +5,7 @@
 // rows, columns, links and wiring check; only their element contents and ids differ.
 import type { LdElement, VLink } from '../model/elements';
 import { newId, type ElementId } from '../model/ids';
-import type { GNode } from './ldGraph';
+import type { GNode } from './ldNodes';
 import { elementFor } from './layoutRows';
 import type { LaidOut } from './layoutShapes';
 

@@ -6,7 +6,7 @@
 // (src/engine/compile/graph.ts, wires.ts), so the graph it compiles is the file's; evaluation
 // follows that graph, not where the pair sits (LD-SEMANTICS section 1). Cuts are made on a view
 // of the nodes: the file's nodes stay as read, for verification.
-import type { GNode, GSource } from './ldGraph';
+import type { GNode, GSource } from './ldNodes';
 import { srcKey } from './ldNormalize';
 import type { Mismatch } from './verifyLayout';
 

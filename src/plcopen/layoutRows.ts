@@ -3,7 +3,7 @@
 // vertical bars touch nothing of another net.
 import type { LdElement, VLink } from '../model/elements';
 import { newId, type ElementId } from '../model/ids';
-import type { GNode } from './ldGraph';
+import type { GNode } from './ldNodes';
 import { KEY, type LaidOut, type Net, type Shape } from './layoutShapes';
 
 type NetOf = (node: number, pin: string) => Net | undefined;

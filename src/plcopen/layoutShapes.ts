@@ -3,7 +3,7 @@ import { boxLayoutFor, type BoxLayout } from '../model/boxLayout';
 import type { BlockLibrary } from '../model/library';
 import type { LdElement, VLink } from '../model/elements';
 import type { ElementId } from '../model/ids';
-import type { GNode } from './ldGraph';
+import type { GNode } from './ldNodes';
 
 /** Point and cell keys: row * KEY + column (networks have at most 1,000 columns). */
 export const KEY = 4096;

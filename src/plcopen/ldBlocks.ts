@@ -6,7 +6,7 @@
 import type { BlockSignature } from '../model/blocks';
 import { boxLayoutFor } from '../model/boxLayout';
 import type { BlockLibrary } from '../model/library';
-import type { Finding, GNode, GSource } from './ldGraph';
+import type { Finding, GNode, GSource } from './ldNodes';
 import type { RawObject, RawPin } from './ldObjects';
 
 const RAIL: GSource = { kind: 'rail' };

@@ -7,54 +7,7 @@ import { buildBox, canonicalPin } from './ldBlocks';
 import type { RawConnection, RawObject, RawPin } from './ldObjects';
 import { RS_COIL, RS_CONTACT } from './types';
 import { child, childrenNamed, type XmlElement } from './xml/parse';
-
-export type GSource =
-  { readonly kind: 'rail' } | { readonly kind: 'node'; readonly node: number; readonly pin: string };
-
-export interface GNode {
-  readonly index: number;
-  readonly obj: RawObject;
-  /** 'connector' and 'continuation' are drawn by the layout only (layoutCut.ts), never read from a file. */
-  readonly kind: 'contact' | 'coil' | 'box' | 'jump' | 'return' | 'connector' | 'continuation';
-  /** Name of a drawn connector or continuation. */
-  name?: string;
-  /** Input pins the file wires through one of its own connector/continuation pairs: the pair's name. */
-  via?: Record<string, string>;
-  contact?: ContactType;
-  coil?: CoilType;
-  variable?: string;
-  target?: string;
-  blockType?: string;
-  instance?: string;
-  inputCount?: number;
-  /** An FB box with EN/ENO (PLCopen executionControl). */
-  executionControl?: boolean;
-  /**
-   * EN is not in the file and was wired to the left rail (a function always runs then). The layout
-   * may leave it open instead when the rail cannot reach it: an open EN runs the block too.
-   */
-  implicitEn?: boolean;
-  /** Wired input pins (model pin names: "in" for 1-cell elements) and their sources. */
-  readonly inputs: Map<string, GSource[]>;
-  readonly operandsIn: Record<string, string>;
-  readonly operandsOut: Record<string, string>;
-  /** Position hints from the file (0,0 in files without geometry). */
-  readonly x: number;
-  readonly y: number;
-  readonly order: number;
-  /** A block's PLCopen executionOrderId (> 0 only; kept on the box, see BoxElement.executionOrder). */
-  executionOrder?: number;
-  /** executionOrderId (> 0) of the outVariable written beside each output pin, by model pin name. */
-  outputOrders?: Record<string, number>;
-  feedsRightRail: boolean;
-  /** Raw `<data>` elements of the object's addData kept for the round trip. */
-  data?: string[];
-}
-
-export interface Finding {
-  readonly message: string;
-  readonly obj?: RawObject;
-}
+import type { Finding, GNode, GSource } from './ldNodes';
 
 export interface LdGraph {
   readonly nodes: GNode[];

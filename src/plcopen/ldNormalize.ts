@@ -3,7 +3,7 @@
 // the file. PLCopen graphs allow it. Rungsmith redraws such wiring by duplicating the shared
 // contacts (a contact only reads its variable, so a copy behaves the same) — as a PLC programmer
 // would draw it.
-import type { Finding, GNode, GSource } from './ldGraph';
+import type { Finding, GNode, GSource } from './ldNodes';
 
 /** A source as a string key (the rail, or node and pin). */
 export const srcKey = (s: GSource) => (s.kind === 'rail' ? 'R' : `${s.node}>${s.pin}`);

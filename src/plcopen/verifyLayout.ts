@@ -8,7 +8,7 @@ import { buildGraph, upstream, type NetworkGraph } from '../engine/compile/graph
 import type { BlockLibrary } from '../model/library';
 import type { Network } from '../model/project';
 import type { LaidOut } from './layoutShapes';
-import type { Finding, GNode, GSource } from './ldGraph';
+import type { Finding, GNode, GSource } from './ldNodes';
 
 /** A pin whose drawn sources differ from the file's. */
 export interface Mismatch {

@@ -5,6 +5,7 @@ import type { Project, Profile } from '../../model/project';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { ElementaryType } from '../../model/iecTypes';
 import type { Access, AggSymbol, FbSymbol, Store, SymbolTable, UfbSymbol, VarSymbol } from './symbols';
+import type { NetworkIR } from './ir';
 
 export type CoilFamily = 'assign' | 'negated' | 'pulse' | 'latch';
 
@@ -126,4 +127,20 @@ export function newPouContext(
     retentiveCoilVars: shared.retentiveCoilVars,
     dataSlots: shared.dataSlots,
   };
+}
+
+export interface LoweredPou {
+  readonly ctx: PouContext;
+  /** One entry per network; undefined where the network has errors. */
+  readonly networks: readonly (NetworkIR | undefined)[];
+  /** No error anywhere in the POU (its variables and networks). */
+  readonly ok: boolean;
+}
+
+/** Where a POU's networks go in a program, and what they share with it (absent: checked on its own). */
+export interface Placement {
+  readonly first: number;
+  readonly instance?: string;
+  readonly calls?: CallBuilder;
+  readonly shared?: SharedParts;
 }

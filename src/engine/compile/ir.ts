@@ -1,7 +1,7 @@
 // The checked, ordered form of a network that code generation turns into JavaScript.
 import type { CoilType, ContactType } from '../../model/elements';
 import type { ElementaryType, Value } from '../../model/iecTypes';
-import type { TStmt } from '../st/lowered';
+import type { StOp } from '../st/lowered';
 import type { SfcOp } from '../sfc/ir';
 import type { Access, Store } from './symbols';
 
@@ -82,25 +82,6 @@ export type Op =
   | CallOp
   | StOp
   | SfcOp;
-
-/**
- * The body of a POU written in ST or IL (st/index.ts): one operation, the whole checked statement
- * tree, alone in its network. `calls`: the body ranges its calls run; `weight`: its size in operations.
- */
-export interface StOp {
-  readonly op: 'st';
-  readonly node: number;
-  readonly language: 'ST' | 'IL';
-  readonly body: readonly TStmt[];
-  /** The network holding it (named by the watchdog when a loop runs too long). */
-  readonly network: number;
-  /** IL: current-result registers used. */
-  readonly crSlots: number;
-  /** IL: the body has labels (jumps run as a state machine). */
-  readonly labels: boolean;
-  readonly weight: number;
-  readonly calls: readonly { readonly first: number; readonly end: number }[];
-}
 
 /**
  * A call of a user FUNCTION_BLOCK instance or FUNCTION: inputs assigned to the callee's variables,

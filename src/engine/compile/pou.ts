@@ -4,21 +4,14 @@ import { IDENTIFIER_RE } from '../../model/iecTypes';
 import type { Pou, Profile, Project } from '../../model/project';
 import type { Diagnostic } from '../api';
 import { blockLibrary } from '../../model/library';
-import { newPouContext, type CallBuilder, type CoilFamily, type PouContext, type SharedParts } from './context';
+import { newPouContext, type CoilFamily, type LoweredPou, type Placement } from './context';
 import type { NetworkIR } from './ir';
 import { lowerChart } from '../sfc/chart';
 import { startNetwork } from './lower';
 import { lowerTextBody, refuseBody } from '../st/body';
 import { Reporter } from './report';
-import { buildSymbols, type SymbolTable } from './symbols';
-
-export interface LoweredPou {
-  readonly ctx: PouContext;
-  /** One entry per network; undefined where the network has errors. */
-  readonly networks: readonly (NetworkIR | undefined)[];
-  /** No error anywhere in the POU (its variables and networks). */
-  readonly ok: boolean;
-}
+import type { SymbolTable } from './symbols';
+import { buildSymbols } from './pouSymbols';
 
 const FAMILY_WORDS: Record<CoilFamily, string> = {
   assign: '( )',
@@ -26,14 +19,6 @@ const FAMILY_WORDS: Record<CoilFamily, string> = {
   pulse: '(P)/(N)',
   latch: '(S)/(R)',
 };
-
-/** Where a POU's networks go in a program, and what they share with it (absent: checked on its own). */
-export interface Placement {
-  readonly first: number;
-  readonly instance?: string;
-  readonly calls?: CallBuilder;
-  readonly shared?: SharedParts;
-}
 
 /** Checks and lowers one POU on its own. Diagnostics about the project's globals go to `globalsOut`. */
 export function lowerPou(

@@ -14,7 +14,8 @@ import { Flattener, type BodyInfo } from './flatten';
 import type { NetworkIR } from './ir';
 import { lowerPou } from './pou';
 import { Reporter } from './report';
-import { buildSymbols, declareGlobals, Storage, SymbolTable, type Store, type VarSymbol } from './symbols';
+import { Storage, SymbolTable, type Store, type VarSymbol } from './symbols';
+import { buildSymbols, declareGlobals } from './pouSymbols';
 import { taskSchedule } from './taskSchedule';
 import { taskTriggers, type TaskTrigger } from './taskTriggers';
 

@@ -1,5 +1,7 @@
 // The variables a program sees (its POU's variables, then the project's globals), where each one
 // lives at run time, and how operand text (`Start`, `T1.Q`, `Status.3`, `%IX0.0`, `T#5s`) resolves.
+// A POU's table is built by pouSymbols.ts; struct, array and enum variables are declared by
+// aggregates.ts; the syntax of a path is split by operandPath.ts.
 import { blockSignature } from '../../model/blocks';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import {
@@ -17,12 +19,12 @@ import {
   type Value,
 } from '../../model/iecTypes';
 import type { Pou, Project, Variable } from '../../model/project';
-import { globalsWithOutside, outsideGlobals } from '../../model/outsideGlobals';
 import { type Dim } from '../../model/dataTypes';
 import { declareDataTyped, describeNode, elementAt, memberOf, type AggNode, type AggSymbol, type IndexTerm } from './aggregates';
 import { parseLiteral } from '../values/literals';
 import { defaultValue, isBigIntType, isStringType } from '../values/types';
 import type { Reporter } from './report';
+import { splitPath } from './operandPath';
 
 /**
  * b: BOOL bytes (Uint8Array); n: other numbers (Float64Array); g: values held as JavaScript objects
@@ -474,37 +476,6 @@ export class SymbolTable {
   }
 }
 
-/**
- * `A.B[1, 2].C` -> ['A', 'B', [1, 2], 'C'] (names, and constant index lists); undefined when the
- * text is not such a path (an index that is not an integer literal, unbalanced brackets).
- */
-export function splitPath(text: string): (string | number[])[] | undefined {
-  const out: (string | number[])[] = [];
-  let i = 0;
-  const s = text.trim();
-  const ident = /^[A-Za-z_0-9]+/;
-  while (i < s.length) {
-    if (out.length > 0) {
-      if (s[i] === '.') i++;
-      else if (s[i] !== '[') return undefined;
-    }
-    if (s[i] === '[') {
-      const end = s.indexOf(']', i);
-      if (end < 0) return undefined;
-      const parts = s.slice(i + 1, end).split(',').map((x) => x.trim());
-      if (!parts.every((x) => /^[+-]?\d+$/.test(x))) return undefined;
-      out.push(parts.map(Number));
-      i = end + 1;
-      continue;
-    }
-    const m = ident.exec(s.slice(i));
-    if (!m) return undefined;
-    out.push(m[0]);
-    i += m[0].length;
-  }
-  return out;
-}
-
 /** Resolves the rest of a path under a struct/array node: every index constant. */
 function walkStatic(start: AggNode, path: string, segs: readonly (string | number[])[]): Resolved {
   let node = start;
@@ -601,61 +572,4 @@ function sizeWords(loc: ParsedLocation): string {
     D: 'a double word (DWORD, DINT, UDINT, REAL, TIME)',
     L: 'a long word (LWORD, LINT, ULINT, LREAL)',
   }[loc.size];
-}
-
-/**
- * Builds the symbol table of a POU: its variables first, then the project's globals. A VAR_EXTERNAL
- * declares no storage: it names a global (LD-E16 when there is none, or it has another type).
- */
-export function buildSymbols(
-  project: Project,
-  pou: Pou,
-  r: Reporter,
-  globalsReporter: Reporter,
-  library: BlockLibrary = STANDARD_LIBRARY,
-): SymbolTable {
-  const table = new SymbolTable(new Storage(project), '', library);
-  table.instantiating = new Set([pou.name.toUpperCase()]);
-  for (const v of pou.variables) if (v.varClass !== 'external') table.declare(v, false, r, v.varClass === 'temp');
-  if (pou.kind === 'FUNCTION' && !pou.variables.some((v) => v.name.toUpperCase() === pou.name.toUpperCase()))
-    table.declare({ name: pou.name, type: pou.returnType ?? 'BOOL', varClass: 'output', retain: false, comment: '' }, false, r);
-  for (const v of globalsWithOutside(project)) table.declare(v, true, globalsReporter);
-  for (const v of pou.variables) if (v.varClass === 'external') checkExternal(table, project, pou, v, r);
-  return table;
-}
-
-/** Declares the project's globals into a program's storage (once per program). */
-export function declareGlobals(table: SymbolTable, project: Project, r: Reporter): void {
-  for (const v of globalsWithOutside(project)) table.declare(v, true, r);
-}
-
-function checkExternal(table: SymbolTable, project: Project, pou: Pou, decl: Variable, r: Reporter): void {
-  const what = `the VAR_EXTERNAL "${decl.name}"`;
-  const key = decl.name.trim().toUpperCase();
-  if (pou.variables.some((v) => v.varClass !== 'external' && v.name.toUpperCase() === key)) {
-    r.error(
-      'LD-E10',
-      `${what} has the name of a variable of the POU; variable names must be unique (case does not count)`,
-    );
-    return;
-  }
-  const global = project.globals.find((g) => g.name.toUpperCase() === key);
-  if (!global) {
-    // LD-W16: declared outside the project (a board's sketch, another file); kept as a global (outsideGlobals).
-    const kept = outsideGlobals(project).find((g) => g.name.trim().toUpperCase() === key);
-    if (kept)
-      r.warning(
-        'LD-W16',
-        `${decl.name} is declared outside the project (VAR_EXTERNAL, no global of that name); the simulator keeps it as a global ${kept.type}${kept.initial ? ` starting at ${kept.initial}` : ''}, which you can write and force in the watch table`,
-      );
-    if (!kept || kept.type.trim().toUpperCase() === decl.type.trim().toUpperCase()) return;
-  }
-  const globalName = global?.name ?? decl.name;
-  const sym = table.lookup(key);
-  if (!sym || sym.kind === 'ref') return; // the global's own declaration is in error (reported with the globals)
-  const declared = declaredElementaryType(decl.type);
-  const type = declared && 'type' in declared ? declared.type : decl.type.trim().toUpperCase();
-  const globalType = sym.kind === 'var' && sym.dataType ? sym.dataType.name : sym.type;
-  if (type !== globalType.toUpperCase())
-    r.error('LD-E16', `${what} is declared ${type} but the global variable "${globalName}" is ${sym.type}`);
 }

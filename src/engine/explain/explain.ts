@@ -3,7 +3,7 @@
 // structure (which operation reads and drives which net, which writes which variable). There is no
 // second interpreter: every statement here is read off what the generated code computed.
 import type { LdElement } from '../../model/elements';
-import type { ElementaryType, Value } from '../../model/iecTypes';
+import type { ElementaryType } from '../../model/iecTypes';
 import type { Pou } from '../../model/project';
 import type { CompiledProgram } from '../compile/program';
 import type { Source } from '../compile/ir';
@@ -13,22 +13,7 @@ import { accessKey, networkGraph, pathsTo, writesOf, type Arc, type PowerPath } 
 import { fbReason } from './fbReasons';
 import { elementSymbol, plural } from './words';
 import { bodyAt } from './flatPou';
-
-/** What the engine computed in one scan, as the history recorded it. */
-export interface ScanView {
-  readonly scan: number;
-  readonly timeMs: number;
-  /** Value of a readable name (`Motor`, `T1.ET`) after the scan; undefined for an unknown name. */
-  value(name: string): Value | undefined;
-  /** Power of net `net` of network `network` as the scan left it. */
-  net(network: number, net: number): boolean;
-  /** Whether the network ran in the scan (a jump or RETURN can skip it). */
-  executed(network: number): boolean;
-  /** The last scan, at or before this one, at which the name's value changed (undefined: not in the recorded range). */
-  changedAt?(name: string): number | undefined;
-  /** Names forced now, upper case. */
-  readonly forced?: ReadonlySet<string>;
-}
+import type { ScanView } from './view';
 
 export type ExplainTarget =
   | { readonly kind: 'element'; readonly network: number; readonly element: number }

@@ -1,7 +1,7 @@
 // Why a standard timer's or counter's output is what it is, read from its pins after the scan
 // (the same pins the generated code wrote): `ET 1.2 s of PT 3 s; IN went TRUE at scan 4,210`.
 import type { Value } from '../../model/iecTypes';
-import type { ScanView } from './explain';
+import type { ScanView } from './view';
 import { seconds } from './words';
 
 export interface FbContext {

@@ -1,7 +1,7 @@
 // A ScanView of a PLC's last scan (no history): for the CLI's failure reports and for tests.
 import type { Plc } from '../api';
 import type { CompiledProgram } from '../compile/program';
-import type { ScanView } from './explain';
+import type { ScanView } from './view';
 import { netOn } from './view';
 
 export function liveScanView(plc: Plc, program: CompiledProgram): ScanView {

@@ -8,7 +8,7 @@
 import type { Network, Pou, Profile, SfcChart, SfcCode, Variable } from '../../model/project';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { CallBuilder } from '../compile/context';
-import type { StOp } from '../compile/ir';
+import type { StOp } from '../st/lowered';
 import { compileStExpression, compileStStatements, describeStError, stOp, type StError, type StScope } from '../st/index';
 import { parseLiteral } from '../values/literals';
 import type { Reporter } from '../compile/report';

@@ -11,7 +11,7 @@
 //   6. set stores an action, reset clears it; Q := Q OR stored;
 //   7. BOOL variables used as actions: reset -> FALSE, else set -> TRUE; then each action body
 //      whose Q is TRUE runs, in text order.
-import type { StOp } from '../compile/ir';
+import type { StOp } from '../st/lowered';
 import type { Access } from '../compile/symbols';
 import { emitSt, type StEmitter } from '../st/emit';
 import type { ChartIR, RangeIR } from './ir';

@@ -1,5 +1,5 @@
 // The checked form of a chart that code generation turns into one cycle of MATIEC's SFC code.
-import type { StOp } from '../compile/ir';
+import type { StOp } from '../st/lowered';
 import type { Access } from '../compile/symbols';
 
 /** A range of the program's networks (a body lowered from LD). */

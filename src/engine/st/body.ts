@@ -4,7 +4,7 @@
 import type { Pou, Profile, Project } from '../../model/project';
 import type { Diagnostic } from '../api';
 import { newPouContext } from '../compile/context';
-import type { LoweredPou, Placement } from '../compile/pou';
+import type { LoweredPou, Placement } from '../compile/context';
 import { Reporter } from '../compile/report';
 import type { SymbolTable } from '../compile/symbols';
 import { bodyChunks, compileTextBody, describeStError } from './index';

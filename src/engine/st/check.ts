@@ -3,50 +3,22 @@
 // functions (`a + b` is ADD, resolved like an ADD box: the common type of the operands by the IEC
 // implicit widenings, untyped literals take it), assignments accept a value that widens to the
 // variable's type, anything else needs an explicit conversion (INT_TO_REAL), as MATIEC requires.
+// Struct members, array elements and enum values: places.ts; the scope, errors and describe:
+// checkScope.ts.
 import { blockSignature } from '../../model/blocks';
 import { isElementaryType, type ElementaryType, type Value } from '../../model/iecTypes';
-import type { Pou, Profile } from '../../model/project';
+import type { Pou } from '../../model/project';
 import { resolveFunction, type ResolvedFunction } from '../library/functions';
 import { parseLiteral } from '../values/literals';
 import { canWiden, commonType, isIntegerType, isBitStringType, isRealType, defaultValue } from '../values/types';
-import type { CallBuilder } from '../compile/context';
 import { storeOf, type Access, type AggSymbol, type Sym, type SymbolTable } from '../compile/symbols';
 import { initialLeaves, type AggNode } from '../compile/aggregates';
 import { shapeKey } from '../compile/aggregatePins';
 import type { Arg, BinaryOp, Expr, Pos, Stmt } from './ast';
-import type { RuleId } from '../api';
 import { ENUM_STORAGE, resolveType } from '../../model/dataTypes';
 import { Places } from './places';
+import { describe, Fail, type StError, type StScope } from './checkScope';
 import type { CompareOp, TExpr, TStmt } from './lowered';
-
-/** What ST statements are checked against. */
-export interface StScope {
-  readonly symbols: SymbolTable;
-  readonly profile: Profile;
-  /** The program's function table (standard functions used are appended). */
-  readonly functions: ResolvedFunction[];
-  /** Builds the bodies of user FB and function calls; absent when a POU is only checked. */
-  readonly calls?: CallBuilder;
-  /** The POU whose body this is (a FUNCTION's result variable has its name). */
-  readonly pouName: string;
-}
-
-export interface StError {
-  readonly pos: Pos;
-  readonly message: string;
-  /** The rule broken, when it is not LD-E50 (a body that does not compile). */
-  readonly rule?: RuleId;
-}
-
-export class Fail extends Error {
-  constructor(
-    readonly pos: Pos,
-    message: string,
-    readonly rule?: RuleId,
-  ) {
-    super(message);
-  }
-}
 
 const CMP: Record<string, { fn: string; js: CompareOp }> = {
   '<': { fn: 'LT', js: '<' },
@@ -57,22 +29,6 @@ const CMP: Record<string, { fn: string; js: CompareOp }> = {
   '<>': { fn: 'NE', js: '!==' },
 };
 const ARITH: Record<string, string> = { '+': 'ADD', '-': 'SUB', '*': 'MUL', '/': 'DIV', MOD: 'MOD' };
-
-export const describe = (e: Expr): string => {
-  switch (e.k) {
-    case 'lit':
-      return e.text;
-    case 'name':
-    case 'path':
-      return `"${e.text}"`;
-    case 'call':
-      return `${e.name}(...)`;
-    case 'cr':
-      return 'the current result';
-    default:
-      return 'the expression';
-  }
-};
 
 export class StChecker {
   readonly errors: StError[] = [];

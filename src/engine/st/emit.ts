@@ -6,9 +6,9 @@
 // the POU and the line of the loop); IL's jumps run a `switch` over its labels inside a loop.
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
-import type { Source, StOp } from '../compile/ir';
+import type { Source } from '../compile/ir';
 import type { Access } from '../compile/symbols';
-import type { TExpr, TStmt } from './lowered';
+import type { StOp, TExpr, TStmt } from './lowered';
 
 /** What the ST code needs from the network emitter (compile/emitter.ts Emitter). */
 export interface StEmitter {

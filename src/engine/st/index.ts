@@ -21,14 +21,15 @@
 // LD-E51 (a body in a language the simulator does not run: SFC, FBD left as FBD).
 import type { ElementaryType } from '../../model/iecTypes';
 import type { Pou } from '../../model/project';
-import type { NetworkIR, StOp } from '../compile/ir';
+import type { NetworkIR } from '../compile/ir';
 import { translateIl } from '../il/translate';
 import { StSyntaxError, type Expr, type Pos, type Stmt } from './ast';
-import { StChecker, type StError, type StScope } from './check';
-import { stFacts, type TExpr, type TStmt } from './lowered';
+import { StChecker } from './check';
+import type { StError, StScope } from './checkScope';
+import { stFacts, type StOp, type TExpr, type TStmt } from './lowered';
 import { parseExpression, parseStatements } from './parser';
 
-export type { StScope, StError } from './check';
+export type { StScope, StError } from './checkScope';
 export type { TExpr, TStmt } from './lowered';
 
 /** The languages whose bodies this compiler runs. */

@@ -1,6 +1,7 @@
 // The checked form of an ST (or IL) body that code generation turns into JavaScript: every name
 // resolved to an Access, every operator to a typed operation (standard functions by their index
 // in the program's function table), every call of a user block to its flattened body range.
+// StOp, the operation holding such a body in a network (one of compile/ir.ts Op), is here too.
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { Access } from '../compile/symbols';
 
@@ -160,4 +161,23 @@ export function stFacts(body: readonly TStmt[]): { calls: { first: number; end: 
   };
   stmts(body);
   return { calls, weight, labels };
+}
+
+/**
+ * The body of a POU written in ST or IL (st/index.ts): one operation, the whole checked statement
+ * tree, alone in its network. `calls`: the body ranges its calls run; `weight`: its size in operations.
+ */
+export interface StOp {
+  readonly op: 'st';
+  readonly node: number;
+  readonly language: 'ST' | 'IL';
+  readonly body: readonly TStmt[];
+  /** The network holding it (named by the watchdog when a loop runs too long). */
+  readonly network: number;
+  /** IL: current-result registers used. */
+  readonly crSlots: number;
+  /** IL: the body has labels (jumps run as a state machine). */
+  readonly labels: boolean;
+  readonly weight: number;
+  readonly calls: readonly { readonly first: number; readonly end: number }[];
 }

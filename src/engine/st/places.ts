@@ -12,7 +12,7 @@ import { describeNode, dimsText, elementAt, memberOf, nodeLeaves, outside, sameS
 import type { Access, AggSymbol, SymbolTable } from '../compile/symbols';
 import { aggregateRef, nodeKey, shapeKey } from '../compile/aggregatePins';
 import type { Expr, Pos } from './ast';
-import { describe, Fail, type StChecker } from './check';
+import { describe, Fail, type ExprChecker } from './checkScope';
 import type { TExpr, TStmt } from './lowered';
 
 type Place = { readonly access: Access } | { readonly node: AggNode; readonly terms: readonly IndexTerm[]; readonly text: string };
@@ -23,7 +23,7 @@ export class Places {
   private enums: Map<string, number> | undefined;
 
   constructor(
-    private readonly ck: StChecker,
+    private readonly ck: ExprChecker,
     private readonly symbols: SymbolTable,
   ) {}
 
