@@ -165,6 +165,7 @@ describe('controller link (issue 21)', () => {
     expect(await panel.getByTestId('hw-connect').textContent()).toBe('Reconnect');
     // The simulation does not pose as the controller of the link it lost.
     await expect.poll(() => page.getByTestId('sim-notice').textContent()).toMatch(/Hardware link lost while running .*no longer drives the outputs/);
+    expect(await page.getByTestId('hw-run-link-lost').textContent()).toMatch(/^Outputs not driven — hardware link refused: the gateway closed the link/);
     await eventually(async () => (await coil0()) === 0, 10_000, 'coil 0 OFF (safe state)');
     expect(gw.hub.status()).toMatchObject({ armed: false, controller: false });
 
