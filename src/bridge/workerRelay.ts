@@ -49,6 +49,8 @@ export class GatewayRelay {
   private programs = new Set<string>();
   private mode: SimFrame['mode'] | undefined;
   private image: Record<string, WireValue> = {};
+  /** The program the image being sent came from. */
+  private imageOf: string | undefined;
   /** The relay's own outputs numbering, apart from the page's messages. */
   private seq = 1_000_000_000;
   private readonly pump: OutputPump;
@@ -90,6 +92,13 @@ export class GatewayRelay {
         return;
       case 'gwPrograms':
         this.programs = new Set(m.ids);
+        // The program whose image is being sent is no longer the one shown: its image is not re-sent
+        // as a heartbeat (the page stops the worker; meanwhile the watchdog guards).
+        if (this.imageOf !== undefined && !this.programs.has(this.imageOf)) {
+          this.pump.stop();
+          this.image = {};
+          this.imageOf = undefined;
+        }
         return;
     }
   }
@@ -115,6 +124,7 @@ export class GatewayRelay {
       if (address && type) next[address] = toWire(type, value);
     }
     this.image = next;
+    this.imageOf = program;
     this.pump.offer(next);
   }
 

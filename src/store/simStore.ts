@@ -554,6 +554,15 @@ export function createSimStore(transport: SimTransport): SimStore {
       case 'error':
         // The next Run sends the document again rather than trusting what the worker has.
         sentProject = undefined;
+        if (message.message.startsWith(WORKER_GONE)) {
+          // The worker itself is gone (crashed or terminated): nothing runs any more, and the
+          // simulation must not show Running (nor drive hardware) for a program that no longer exists.
+          requested = undefined;
+          running = null;
+          expected.set(new Set());
+          store.setState({ ...NO_PROGRAM, mode: 'stopped', notice: message.message });
+          return;
+        }
         store.setState({ notice: message.message });
         return;
       case 'historyView': {
@@ -635,6 +644,9 @@ export function createSimStore(transport: SimTransport): SimStore {
   }
   return store;
 }
+
+/** How host.ts reports a worker that died (script error, terminated). */
+const WORKER_GONE = 'the simulator stopped';
 
 /** The store's state when the worker has no program (refused Run, unload). */
 const NO_PROGRAM: Pick<SimState, 'live' | 'layout' | 'elementIndex' | 'vlinkIndex' | 'variableIndex'> = {

@@ -4,7 +4,7 @@ import WebSocket from 'ws';
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
 import { resolveConfig } from '../../src/gateway/config';
 import { MAX_CLIENTS, startGateway, type RunningGateway } from '../../src/gateway/gateway';
-import { HANDSHAKE_BURST, HandshakeLimiter, MessageBudgets } from '../../src/gateway/security';
+import { HANDSHAKE_BURST, HandshakeLimiter, MessageBudgets, RateLimiter } from '../../src/gateway/security';
 import { MESSAGES_PER_SECOND } from '../../src/gateway/session';
 import { eventually, TestClient } from './helpers';
 
@@ -196,6 +196,20 @@ describe('connection budget bookkeeping', () => {
     expect(limiter.allow('127.0.0.1', t0 + 100)).toBe(false);
     const later = Array.from({ length: 20 }, () => limiter.allow('127.0.0.1', t0 + 1000));
     expect(later.filter(Boolean)).toHaveLength(8);
+  });
+
+  it('lets the messages that queued during a stall of the gateway through, and still stops a client that really floods', () => {
+    const t0 = 7_000_000;
+    // 150 messages/s for 3 s while the gateway could not read: 450 arrive at once when it resumes.
+    const stalled = new RateLimiter(200, 200, t0);
+    const afterStall = t0 + 3000;
+    expect(Array.from({ length: 450 }, () => stalled.takeWithCredit(3000, afterStall)).every(Boolean)).toBe(true);
+    // Without the stall as credit the same backlog is cut at the burst.
+    const plain = new RateLimiter(200, 200, t0);
+    expect(Array.from({ length: 450 }, () => plain.take(afterStall)).filter(Boolean)).toHaveLength(200);
+    // The credit is the stall's length, not more: 1,000 at once after a 3 s stall is a flood.
+    const flooder = new RateLimiter(200, 200, t0);
+    expect(Array.from({ length: 1000 }, () => flooder.takeWithCredit(3000, afterStall)).filter(Boolean).length).toBeLessThan(1000);
   });
 
   it('resumes a reconnecting client from the budget its last connection left, until it has refilled', () => {

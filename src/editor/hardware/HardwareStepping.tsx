@@ -105,6 +105,14 @@ export function SteppingBadge() {
   const { status } = gateway;
   const running = useSim(selectRunning);
   if (view.phase !== 'stepping') {
+    if (running && (gateway.link === 'retrying' || gateway.link === 'refused')) {
+      // The simulation runs on, but never as if it still drove the hardware.
+      return (
+        <span className="rs-hw-running-disarmed" role="status" data-testid="hw-run-link-lost">
+          <strong>Outputs not driven</strong> — hardware link {gateway.link === 'refused' ? 'refused' : 'lost'}: {gateway.problem ?? 'no connection to the gateway'}
+        </span>
+      );
+    }
     if (!running || gateway.link !== 'open' || gateway.role !== 'controller' || status?.armed !== false) return null;
     return (
       <span className="rs-hw-running-disarmed" role="status" data-testid="hw-run-disarmed">
