@@ -1,5 +1,6 @@
 // State shared while one POU is checked and lowered: symbols, labels, the function table,
-// edge memories and the program-wide facts the warning rules need.
+// edge memories and the program-wide facts the warning rules need; where a POU's networks go in a
+// program (Placement) and what lowering it gives (LoweredPou).
 import type { LdElement } from '../../model/elements';
 import type { Project, Profile } from '../../model/project';
 import type { ResolvedFunction } from '../library/fnTypes';

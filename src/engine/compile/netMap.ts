@@ -1,6 +1,7 @@
 // A network while it is lowered: the map from graph nets to power-flow locals and data sources
 // (NetMap), the pending network of the openplc order (PendingNetwork), and the IR assembled from
-// them (networkIR). Shared by lower.ts, box.ts, userCall.ts, aggregatePins.ts and generated.ts.
+// them (networkIR). Shared by lower.ts, generated.ts, box.ts, boxPins.ts, userCall.ts and
+// aggregatePins.ts.
 import type { Network } from '../../model/project';
 import type { PouContext } from './context';
 import { upstream, type NetworkGraph } from './graph';

@@ -1,7 +1,7 @@
 // The operands of contacts, coils and jumps (LD-R07, LD-R08, LD-R13, LD-E22): the variable a contact
 // reads, the variable a coil writes, a jump's target network, edge memories, a contact's operation,
 // and an access described in words for messages (accessWords). Used by lower.ts (iec order) and
-// generated.ts (openplc order); accessWords also by box.ts, boxPins.ts and userCall.ts.
+// generated.ts (openplc order); accessWords also by boxPins.ts and userCall.ts.
 import type { CoilElement, ContactElement, JumpElement } from '../../model/elements';
 import type { CoilFamily, PouContext } from './context';
 import type { Op } from './ir';
