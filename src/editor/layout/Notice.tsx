@@ -65,7 +65,7 @@ export function Notice({ testId, tone, text, token, onDismiss, children }: Notic
         )}
         {children}
       </div>
-      <button type="button" className="rs-notice-dismiss" aria-label={`Dismiss: ${text}`} title="Dismiss" onClick={dismiss}>
+      <button type="button" className="rs-notice-dismiss" aria-label="Dismiss this notice" title="Dismiss this notice" onClick={dismiss}>
         ×
       </button>
     </div>
