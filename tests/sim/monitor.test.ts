@@ -54,7 +54,7 @@ describe('which program runs', () => {
 describe('monitoring one FB instance', () => {
   test("the canvas gets the power of the picked instance's body, aligned with the FB's networks", () => {
     const project = motorProject();
-    const h = new SimHarness().send({ type: 'load', project }, { type: 'write', name: 'Start1', input: { value: true } }, { type: 'step', scans: 2 });
+    const h = new SimHarness().send({ type: 'load', project }, { type: 'write', name: 'Start1', input: { value: true } }, { type: 'step', scans: 2 }).advance(0);
     expect(h.value('Motor1.Run')).toBe(true);
     h.send({ type: 'setView', view: { pou: 'Motor', instance: 'Motor1' } });
     let layout = currentLayout(h);

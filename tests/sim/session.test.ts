@@ -85,7 +85,7 @@ describe('stepping', () => {
     h.send({ type: 'step', scans: 1 });
     expect(h.frame).toMatchObject({ scan: 2, timeMs: 20 });
     expect(h.value('T1.ET')).toBe(20);
-    h.send({ type: 'step', scans: 3 });
+    h.send({ type: 'step', scans: 3 }).advance(0); // a batch the worker split (busy machine) finishes
     expect(h.frame.scan).toBe(5);
     expect(h.value('T1.ET')).toBe(80);
     expect(h.value('Lamp')).toBe(false);
@@ -128,7 +128,7 @@ describe('breakpoints', () => {
   test('a breakpoint on the first network stops before the input read', () => {
     const h = new SimHarness().send({ type: 'setBreakpoints', networks: [0] }, { type: 'step', scans: 5, project: motorProgram() });
     expect(h.frame).toMatchObject({ mode: 'paused', breakpointHit: 0, scan: 0, nextNetwork: -1 });
-    h.send({ type: 'setBreakpoints', networks: [] }, { type: 'step', scans: 5 });
+    h.send({ type: 'setBreakpoints', networks: [] }, { type: 'step', scans: 5 }).advance(0);
     expect(h.frame.scan).toBe(5);
   });
 });
@@ -209,7 +209,9 @@ describe('values and forcing', () => {
 describe('trend', () => {
   test('chosen signals are sampled after every scan and delivered with the frames', () => {
     const h = new SimHarness().send({ type: 'step', scans: 1, project: timerProgram() });
-    h.send({ type: 'setTrend', names: ['T1.ET', 'Lamp'], capacity: 100 }, { type: 'step', scans: 12 });
+    // A batch is cut into 12 ms slices of wall time: on a busy machine the 12 scans take more than
+    // one, and the rest run in the worker's next ticks.
+    h.send({ type: 'setTrend', names: ['T1.ET', 'Lamp'], capacity: 100 }, { type: 'step', scans: 12 }).advance(0);
     const samples = h.of('frame').flatMap((m) => (m.frame.trend ? [m.frame.trend] : []));
     const scans = samples.flatMap((s) => s.scans);
     expect(scans).toEqual([2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13]);
