@@ -13,8 +13,8 @@ test('renaming a variable while paused keeps the last scan on screen: inputs ON,
   const page = editor.page;
   const sim = new SimPage(page);
   await sim.runExample('Motor start/stop (seal-in)');
-  // Start pressed (a click on its contact while running), the motor seals in.
-  await sim.draw.clickCell(0, 0, 0);
+  // Start switched on (a double-click on its contact while running), the motor seals in.
+  await sim.switchCell(0, 0, 0);
   await sim.waitForValue('Start', true);
   await sim.waitForValue('Motor', true);
   await sim.button('pause').click();
