@@ -1,6 +1,7 @@
 // Page object for drawing on the ladder canvas in a real browser: cell positions on screen from
 // the editor's own geometry, and the document read through window.rungsmith.
 import type { Page } from 'playwright-core';
+import { expect } from 'vitest';
 import {
   CELL_H,
   cellCentre,
@@ -24,6 +25,26 @@ export interface ElementSummary {
 
 export class DrawPage {
   constructor(readonly page: Page) {}
+
+  /**
+   * Waits until the canvas has stopped scrolling (an autoscroll while dragging, the scroll to a
+   * breakpoint or a selection): a cell's point measured before then can land on another network.
+   */
+  async waitScrollStill(): Promise<void> {
+    const scrollTop = () => this.page.evaluate(() => document.querySelector<HTMLElement>('[data-testid="ladder-canvas"]')!.scrollTop);
+    let last = -1;
+    await expect
+      .poll(
+        async () => {
+          const now = await scrollTop();
+          const still = now === last;
+          last = now;
+          return still;
+        },
+        { timeout: 30_000, interval: 200 },
+      )
+      .toBe(true);
+  }
 
   canvas() {
     return this.page.getByTestId('ladder-canvas');

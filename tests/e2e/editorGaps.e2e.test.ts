@@ -88,16 +88,7 @@ test('holding a drag at the bottom edge scrolls the canvas to a network that was
   // Away from the edge (still dragging) the scrolling stops; wait until it has, so the drop point
   // measured below is where the pointer lands.
   await page.mouse.move(a.x + 10, box.y + box.height / 2, { steps: 2 });
-  const scrollTop = () => page.evaluate(() => document.querySelector<HTMLElement>('[data-testid="ladder-canvas"]')!.scrollTop);
-  let last = -1;
-  await expect
-    .poll(async () => {
-      const now = await scrollTop();
-      const still = now === last;
-      last = now;
-      return still;
-    }, { timeout: 30_000, interval: 200 })
-    .toBe(true);
+  await draw.waitScrollStill();
   // Drop on the first network whose grid is now in view, far below where the drag began.
   const target = await page.evaluate(() => {
     const el = document.querySelector<HTMLElement>('[data-testid="ladder-canvas"]')!;

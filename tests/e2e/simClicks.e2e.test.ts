@@ -91,22 +91,10 @@ test('at a breakpoint, a click on an input contact selects it and changes no inp
   const { networks } = await sim.draw.layout();
   // The canvas scrolls to the network paused at (and to a selection); a cell's point is measured
   // once the scrolling has stopped, or the click lands on another network on a busy machine.
-  const scrollTop = () => page.evaluate(() => document.querySelector<HTMLElement>('[data-testid="ladder-canvas"]')!.scrollTop);
-  const settled = async () => {
-    let last = -1;
-    await expect
-      .poll(async () => {
-        const now = await scrollTop();
-        const still = now === last;
-        last = now;
-        return still;
-      }, { timeout: 30_000, interval: 200 })
-      .toBe(true);
-  };
   // Click every contact of every network: each click selects; no input changes.
   for (let i = 0; i < networks.length; i++) {
     for (const el of networks[i]!.elements.filter((e) => e.kind === 'contact')) {
-      await settled();
+      await sim.draw.waitScrollStill();
       await sim.draw.clickCell(i, el.row, el.col);
       expect((await selected()).network).toBe(i);
     }
