@@ -12,7 +12,7 @@ let server: ChildProcess | undefined;
 let chromium: BrowserServer | undefined;
 
 /** Waits for the line the gateway prints when it is ready: "Rungsmith gateway: open http://127.0.0.1:PORT/#token=…". */
-function startServer(): Promise<{ child: ChildProcess; url: string }> {
+function startServer(): Promise<{ child: ChildProcess; url: string; simModbusPort: number }> {
   return new Promise((resolve, reject) => {
     const child = spawn(process.execPath, ['bin/rungsmith-gateway.mjs', '--port', '0', '--sim-port', '0'], {
       stdio: ['ignore', 'pipe', 'pipe'],
@@ -20,19 +20,34 @@ function startServer(): Promise<{ child: ChildProcess; url: string }> {
     });
     let out = '';
     let err = '';
+    let url: string | undefined;
+    let simModbusPort: number | undefined;
+    const ready = () => {
+      if (url === undefined || simModbusPort === undefined) return;
+      clearTimeout(timer);
+      resolve({ child, url, simModbusPort });
+    };
     const timer = setTimeout(() => {
       child.kill('SIGTERM');
-      reject(new Error(`the app server did not print its URL within 60 s\n${err}`));
+      reject(new Error(`the app server did not print its URL and its simulated device's Modbus port within 60 s\n${err}`));
     }, 60_000);
     child.stdout?.setEncoding('utf8');
     child.stderr?.setEncoding('utf8');
-    child.stderr?.on('data', (d: string) => (err += d));
+    // The simulated device's Modbus server: "[gateway] simulated I/O device (…), Modbus TCP on 127.0.0.1:PORT".
+    child.stderr?.on('data', (d: string) => {
+      err += d;
+      const m = /simulated I\/O device .*Modbus TCP on 127\.0\.0\.1:(\d+)/.exec(err);
+      if (m && simModbusPort === undefined) {
+        simModbusPort = Number(m[1]);
+        ready();
+      }
+    });
     child.stdout?.on('data', (d: string) => {
       out += d;
       const m = /open (http:\/\/127\.0\.0\.1:\d+\/#token=\S+)/.exec(out);
-      if (m) {
-        clearTimeout(timer);
-        resolve({ child, url: m[1]! });
+      if (m && url === undefined) {
+        url = m[1]!;
+        ready();
       }
     });
     child.once('exit', (code) => {
@@ -52,6 +67,7 @@ export async function setup(project: TestProject) {
   const started = await startServer();
   server = started.child;
   project.provide('appUrl', started.url);
+  project.provide('simModbusPort', started.simModbusPort);
   try {
     chromium = await launchChromiumServer();
   } catch (e) {
@@ -75,6 +91,8 @@ declare module 'vitest' {
   export interface ProvidedContext {
     /** The URL the app server printed: http://127.0.0.1:PORT/#token=… */
     appUrl: string;
+    /** The Modbus TCP port of the app server's simulated I/O device (127.0.0.1). */
+    simModbusPort: number;
     /** Where the run's Chromium listens (playwright's browser server). */
     browserWsEndpoint: string;
   }

@@ -10,12 +10,22 @@ export class SimHarness {
   readonly messages: WorkerMessage[] = [];
   readonly session: SimSession;
 
-  constructor(engine: SimEngine = realEngine) {
-    this.session = new SimSession({ engine, scheduler: this.scheduler, post: (m) => this.messages.push(m) });
+  /** `wallNow`: the clock Step N slices its work by (default performance.now, the real one). */
+  constructor(engine: SimEngine = realEngine, wallNow?: () => number) {
+    this.session = new SimSession({ engine, scheduler: this.scheduler, post: (m) => this.messages.push(m), ...(wallNow ? { wallNow } : {}) });
   }
 
   send(...messages: HostMessage[]): this {
     for (const m of messages) this.session.handle(m);
+    return this;
+  }
+
+  /**
+   * Lets the worker's event loop run what is due now: Step N runs in slices of real time (12 ms),
+   * so on a busy machine the rest of a step comes on the scheduler, as in the worker.
+   */
+  settle(): this {
+    this.scheduler.advance(0);
     return this;
   }
 

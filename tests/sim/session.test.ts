@@ -85,7 +85,7 @@ describe('stepping', () => {
     h.send({ type: 'step', scans: 1 });
     expect(h.frame).toMatchObject({ scan: 2, timeMs: 20 });
     expect(h.value('T1.ET')).toBe(20);
-    h.send({ type: 'step', scans: 3 }).advance(0); // a batch the worker split (busy machine) finishes
+    h.send({ type: 'step', scans: 3 }).settle();
     expect(h.frame.scan).toBe(5);
     expect(h.value('T1.ET')).toBe(80);
     expect(h.value('Lamp')).toBe(false);
@@ -126,9 +126,9 @@ describe('breakpoints', () => {
   });
 
   test('a breakpoint on the first network stops before the input read', () => {
-    const h = new SimHarness().send({ type: 'setBreakpoints', networks: [0] }, { type: 'step', scans: 5, project: motorProgram() });
+    const h = new SimHarness().send({ type: 'setBreakpoints', networks: [0] }, { type: 'step', scans: 5, project: motorProgram() }).settle();
     expect(h.frame).toMatchObject({ mode: 'paused', breakpointHit: 0, scan: 0, nextNetwork: -1 });
-    h.send({ type: 'setBreakpoints', networks: [] }, { type: 'step', scans: 5 }).advance(0);
+    h.send({ type: 'setBreakpoints', networks: [] }, { type: 'step', scans: 5 }).settle();
     expect(h.frame.scan).toBe(5);
   });
 });
@@ -198,8 +198,8 @@ describe('values and forcing', () => {
   });
 
   test('Reset (cold) restores initial values and scan 0; forces stay', () => {
-    const h = new SimHarness().send({ type: 'step', scans: 3, project: timerProgram() }, { type: 'force', name: 'Lamp', input: { value: true } });
-    h.send({ type: 'reset' });
+    const h = new SimHarness().send({ type: 'step', scans: 3, project: timerProgram() }).settle();
+    h.send({ type: 'force', name: 'Lamp', input: { value: true } }, { type: 'reset' });
     expect(h.frame).toMatchObject({ mode: 'stopped', scan: 0, timeMs: 0 });
     expect(h.value('T1.ET')).toBe(0);
     expect(h.frame.forced).toEqual([['Lamp', true]]);
@@ -208,10 +208,11 @@ describe('values and forcing', () => {
 
 describe('trend', () => {
   test('chosen signals are sampled after every scan and delivered with the frames', () => {
-    const h = new SimHarness().send({ type: 'step', scans: 1, project: timerProgram() });
-    // A batch is cut into 12 ms slices of wall time: on a busy machine the 12 scans take more than
-    // one, and the rest run in the worker's next ticks.
-    h.send({ type: 'setTrend', names: ['T1.ET', 'Lamp'], capacity: 100 }, { type: 'step', scans: 12 }).advance(0);
+    // A busy machine: every read of the real clock is 20 ms later, so each slice of Step N runs one
+    // scan and the rest comes on the scheduler (settle), as in the worker.
+    let wall = 0;
+    const h = new SimHarness(undefined, () => (wall += 20)).send({ type: 'step', scans: 1, project: timerProgram() });
+    h.send({ type: 'setTrend', names: ['T1.ET', 'Lamp'], capacity: 100 }, { type: 'step', scans: 12 }).settle();
     const samples = h.of('frame').flatMap((m) => (m.frame.trend ? [m.frame.trend] : []));
     const scans = samples.flatMap((s) => s.scans);
     expect(scans).toEqual([2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13]);
