@@ -1,7 +1,7 @@
 // The simulation worker's logic, as a plain class so it runs (and is tested) in Node without a Worker:
 // commands in (HostMessage), frames and events out (WorkerMessage) through an injected `post`.
 // The session owns the program and the mode; ScanRunner executes the scans.
-import type { Diagnostic, Plc, PlcOptions } from '../engine/api';
+import type { Diagnostic, Plc } from '../engine/api';
 import { parseLocation, type Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import { carryDisplay, carryForces, carryInstances, carryValues, planInstances, valueFor, type ShownScan } from './carryOver';
@@ -20,13 +20,7 @@ import type { Breakpoint } from '../engine/runtime/breakpoints';
 import { ScanRunner, type ScanOutcome } from './scanRunner';
 import type { Scheduler } from './scheduler';
 import { TrendRecorder } from './trendRecorder';
-
-/** The engine as the session uses it (src/sim/engineAdapter.ts binds the real one). */
-export interface SimEngine {
-  compile(project: Project): { readonly program?: unknown; readonly diagnostics: readonly Diagnostic[] };
-  createPlc(program: unknown, options: PlcOptions): Plc;
-  parseValue(type: string, text: string): { ok: true; value: Value } | { ok: false; message: string };
-}
+import type { SimEngine } from './simEngine';
 
 export interface SessionDeps {
   readonly engine: SimEngine;
