@@ -2,7 +2,7 @@
 // commands in (HostMessage), frames and events out (WorkerMessage) through an injected `post`.
 // The session owns the program and the mode; ScanRunner executes the scans.
 import type { Diagnostic, Plc } from '../engine/api';
-import { parseLocation, type Value } from '../model/iecTypes';
+import type { Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import { carryDisplay, carryForces, carryInstances, carryValues, planInstances, valueFor, type ShownScan } from './carryOver';
 import { outputsChanged, readValues } from './frames';
@@ -20,6 +20,7 @@ import type { Breakpoint } from '../engine/runtime/breakpoints';
 import { ScanRunner, type ScanOutcome } from './scanRunner';
 import type { Scheduler } from './scheduler';
 import { TrendRecorder } from './trendRecorder';
+import { inputKeysOf, locationKey } from './inputKeys';
 import type { SimEngine } from './simEngine';
 
 export interface SessionDeps {
@@ -706,15 +707,4 @@ function plcScanWithClock(plc: Plc, before: (scan: number) => void): Plc {
       return typeof v === 'function' ? (v as (...a: unknown[]) => unknown).bind(target) : v;
     },
   });
-}
-
-/** The locations of a program's input variables, by locationKey. */
-function inputKeysOf(layout: SimLayout): Set<string> {
-  return new Set(layout.variables.flatMap((v) => (v.role === 'input' && v.location ? [locationKey(v.location)] : [])));
-}
-
-/** `%ix0.0` and `%IX0.0` alike: the key a location is bound by. */
-function locationKey(text: string): string {
-  const loc = parseLocation(text);
-  return loc ? `%${loc.area}${loc.size}${loc.index}${loc.bit !== undefined ? `.${loc.bit}` : ''}` : text.trim().toUpperCase();
 }
