@@ -21,6 +21,7 @@ import { ScanRunner, type ScanOutcome } from './scanRunner';
 import type { Scheduler } from './scheduler';
 import { TrendRecorder } from './trendRecorder';
 import { inputKeysOf, locationKey } from './inputKeys';
+import { plcScanWithClock, programLayout, scenarioRecordingProblem, type SinceColdStart } from './scenarioRecording';
 import type { SimEngine } from './simEngine';
 
 export interface SessionDeps {
@@ -92,7 +93,7 @@ export class SimSession {
    * which replays from a cold start, cannot reproduce: an online change or warm restart (at the
    * scan given), and the variables forced.
    */
-  private sinceColdStart: { interruptedAt?: { scan: number; what: string }; forced: Set<string> } = { forced: new Set() };
+  private sinceColdStart: SinceColdStart = { forced: new Set() };
   /** The body the UI monitors (setView); absent: the program's. */
   private view: SimView | undefined;
   /** Breakpoints as the UI sent them: program network indexes and document network ids. */
@@ -266,7 +267,7 @@ export class SimSession {
       }
       case 'historyExport': {
         const recorder = this.requireHistory();
-        const refused = m.format === 'scenario' ? this.scenarioRecordingProblem(recorder, m.from) : undefined;
+        const refused = m.format === 'scenario' ? scenarioRecordingProblem(this.sinceColdStart, recorder, m.from) : undefined;
         if (refused) {
           this.deps.post({ type: 'historyText', id: m.id, format: m.format, text: '', refused });
           return;
@@ -635,24 +636,6 @@ export class SimSession {
     this.deps.post({ type: 'historyView', view }, [view.elements.buffer, view.vlinks.buffer, view.executed.buffer]);
   }
 
-  /**
-   * Why the recorded scans cannot become a scenario that replays as it ran, or undefined. A scenario
-   * starts from a cold start and only sets inputs, so the recording must start at scan 1 after a cold
-   * start, with no online change or warm restart and no forces since.
-   */
-  private scenarioRecordingProblem(recorder: HistoryRecorder, from: number | undefined): string | undefined {
-    const again = 'Press Reset (cold restart), release the forces, run and switch the inputs, then record again.';
-    const { interruptedAt, forced } = this.sinceColdStart;
-    if (interruptedAt)
-      return `A scenario replays from a cold start, and ${interruptedAt.what} at scan ${interruptedAt.scan} changed the program or its state since the last one: the scenario would not replay as it ran. ${again}`;
-    if (forced.size)
-      return `Forces were active while recording (${[...forced].join(', ')}): a scenario sets inputs and cannot force, so it would not replay as it ran. ${again}`;
-    const first = Math.max(from ?? 1, recorder.history.first ?? 1);
-    if (first !== 1)
-      return `A scenario replays from a cold start, but the recording starts at scan ${first} (${from && from > 1 ? 'the range asked' : 'the oldest scans no longer fit in the history'}), not at scan 1. ${again}`;
-    return undefined;
-  }
-
   /** A scenario run in the simulator from a cold restart, recorded, paused after the first divergent scan. */
   private replayScenario(id: number, project: Project, scenario: Scenario): void {
     const fail = (error: string) => this.deps.post({ type: 'scenarioReplayed', id, result: { name: scenario.name, ok: false, scans: 0, divergences: [], error } });
@@ -684,27 +667,4 @@ export class SimSession {
     this.postFrame();
     this.deps.post({ type: 'scenarioReplayed', id, result });
   }
-}
-
-/** The layout with its network fields on the program's own (first) body, as the history records it. */
-function programLayout(project: Project, layout: SimLayout): SimLayout {
-  if (isProgramView(layout)) return layout;
-  const first = layout.programs?.[0]?.instance;
-  return withView(project, layout, { pou: layout.pou, ...(first !== undefined ? { instance: first } : {}) });
-}
-
-/** The PLC with its clock set before each scan (scan k at (k - 1) x cycle), for runPrepared. */
-function plcScanWithClock(plc: Plc, before: (scan: number) => void): Plc {
-  let k = 0;
-  return new Proxy(plc, {
-    get(target, key) {
-      if (key === 'scan')
-        return () => {
-          before(++k);
-          return target.scan();
-        };
-      const v = Reflect.get(target, key, target) as unknown;
-      return typeof v === 'function' ? (v as (...a: unknown[]) => unknown).bind(target) : v;
-    },
-  });
 }
