@@ -21,6 +21,7 @@ import { ScanRunner, type ScanOutcome } from './scanRunner';
 import type { Scheduler } from './scheduler';
 import { TrendRecorder } from './trendRecorder';
 import { inputKeysOf, locationKey } from './inputKeys';
+import { buildFrame } from './sessionFrame';
 import { plcScanWithClock, programLayout, scenarioRecordingProblem, type SinceColdStart } from './scenarioRecording';
 import type { SimEngine } from './simEngine';
 
@@ -568,49 +569,19 @@ export class SimSession {
   }
 
   private frame(): SimFrame {
-    const { plc, layout, runner } = this;
-    const carried = this.carriedShown();
-    // Fresh arrays: a frame's buffers are transferred to the page.
-    const power = carried
-      ? { elements: carried.power.elements.slice(), vlinks: carried.power.vlinks.slice(), executed: carried.power.executed.slice() }
-      : plc && layout
-        ? packView(plc, layout, this.loaded?.program as CompiledProgram | undefined)
-        : undefined;
-    const values = plc && layout ? readValues(plc, layout) : [];
-    // Inputs are read into the new program at its first scan: until then they show the last scan's
-    // (the other values were carried into the new program itself: carryValues).
-    if (carried && layout)
-      layout.variables.forEach((v, i) => {
-        if (v.location?.toUpperCase().startsWith('%I')) values[i] = carried.values[i]!;
-      });
-    const trend = this.trend.take();
-    const fault = plc?.fault;
-    // At a scan boundary a configuration stands before its first program instance's network 1.
-    const first = layout?.programs?.[0]?.instance;
-    const hit = runner.breakpointHit && first !== undefined && runner.breakpointHit.instance === undefined && plc?.position().length === 0
-      ? { ...runner.breakpointHit, instance: first }
-      : runner.breakpointHit;
-    return {
+    return buildFrame({
       mode: this.mode,
-      scan: this.scanBase + (plc?.scanCount ?? 0),
-      timeMs: runner.timeMs(plc),
-      cycleMs: runner.cycleMs,
-      exec: runner.exec(),
-      ...(fault ? { fault } : {}),
-      nextNetwork: plc?.nextNetwork ?? -1,
-      ...(hit !== undefined ? { breakpointHit: hit.network, breakpointAt: hit } : {}),
-      position: plc ? plc.position() : [],
-      overruns: runner.overruns,
-      elements: power?.elements ?? new Uint8Array(0),
-      vlinks: power?.vlinks ?? new Uint8Array(0),
-      executed: power?.executed ?? new Uint8Array(0),
-      values,
-      forced: plc ? [...plc.forced()] : [],
-      ...(trend ? { trend } : {}),
-      program: plc ? this.programId : null,
+      plc: this.plc,
+      layout: this.layout,
+      runner: this.runner,
+      carried: this.carriedShown(),
+      program: this.loaded?.program as CompiledProgram | undefined,
+      trend: this.trend,
+      scanBase: this.scanBase,
+      programId: this.programId,
       epoch: this.epoch,
-      ...(this.historyRange() ? { history: this.historyRange()! } : {}),
-    };
+      history: this.historyRange(),
+    });
   }
 
   // ---- scan history, "Why?" and scenario replay (issue 14) ------------------------------------
