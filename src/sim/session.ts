@@ -8,7 +8,7 @@ import { carryDisplay, carryForces, carryInstances, carryValues, planInstances, 
 import { outputsChanged, readValues } from './frames';
 import { HistoryRecorder } from './historyRecorder';
 import type { HistoryOptions } from './history';
-import { buildLayout, findPou, isProgramView, programFingerprint, withView } from './layout';
+import { buildLayout, findPou, programFingerprint, withView } from './layout';
 import { parseScenario, prepareScenario, runPrepared, scenarioCycle, type ScenarioResult } from './scenario';
 import type { CompiledProgram } from '../engine/plc';
 import type { Pou, Scenario } from '../model/project';
@@ -22,7 +22,8 @@ import type { Scheduler } from './scheduler';
 import { TrendRecorder } from './trendRecorder';
 import { inputKeysOf, locationKey } from './inputKeys';
 import { buildFrame } from './sessionFrame';
-import { plcScanWithClock, programLayout, scenarioRecordingProblem, type SinceColdStart } from './scenarioRecording';
+import { answerHistory, historyRange } from './sessionHistory';
+import { plcScanWithClock, programLayout, type SinceColdStart } from './scenarioRecording';
 import type { SimEngine } from './simEngine';
 
 export interface SessionDeps {
@@ -240,46 +241,19 @@ export class SimSession {
         this.postFrame();
         return;
       case 'historySeek':
-        this.postHistoryView(m.scan);
+      case 'historyFind':
+      case 'explain':
+      case 'historyExport':
+        answerHistory(m, {
+          recorder: this.recorder,
+          plc: this.plc,
+          layout: this.layout,
+          project: this.loaded?.project,
+          sinceColdStart: this.sinceColdStart,
+          cycleMs: this.runner.cycleMs,
+          post: (message, transfer) => this.deps.post(message, transfer),
+        });
         return;
-      case 'historyFind': {
-        const recorder = this.requireHistory();
-        const found = m.change !== undefined ? recorder.findChange(m.change, m.from, m.direction) : recorder.findCondition(m.condition ?? '', m.from, m.direction);
-        if (found === undefined) {
-          const what = m.change !== undefined ? `no ${m.direction > 0 ? 'later' : 'earlier'} change of ${m.change}` : `${m.condition} does not hold in any ${m.direction > 0 ? 'later' : 'earlier'} recorded scan`;
-          this.deps.post({ type: 'historyNotFound', message: `${what} (scans ${recorder.history.first} to ${recorder.history.last} are recorded)` });
-          return;
-        }
-        this.postHistoryView(found);
-        return;
-      }
-      case 'explain': {
-        const forced = new Set([...(this.plc?.forced().keys() ?? [])].map((n) => n.toUpperCase()));
-        const shown = this.layout && !isProgramView(this.layout) ? this.layout.view : undefined;
-        const explanation = this.requireHistory().explain(
-          m.scan,
-          m.target,
-          forced,
-          this.loaded ? { project: this.loaded.project, ...(shown ? { shown } : {}) } : undefined,
-        );
-        if (!explanation) throw new Error(`scan ${m.scan} is not in the history`);
-        this.deps.post({ type: 'explanation', id: m.id, explanation });
-        return;
-      }
-      case 'historyExport': {
-        const recorder = this.requireHistory();
-        const refused = m.format === 'scenario' ? scenarioRecordingProblem(this.sinceColdStart, recorder, m.from) : undefined;
-        if (refused) {
-          this.deps.post({ type: 'historyText', id: m.id, format: m.format, text: '', refused });
-          return;
-        }
-        const text =
-          m.format === 'trace'
-            ? recorder.traceCsv(m.names ?? this.layout!.variables.map((v) => v.name), m.from, m.to)
-            : recorder.scenarioCsv(m.inputs ?? [], m.outputs ?? [], this.runner.cycleMs, m.from, m.to);
-        this.deps.post({ type: 'historyText', id: m.id, format: m.format, text });
-        return;
-      }
       case 'replayScenario':
         this.replayScenario(m.id, m.project, m.scenario);
         return;
@@ -580,32 +554,11 @@ export class SimSession {
       scanBase: this.scanBase,
       programId: this.programId,
       epoch: this.epoch,
-      history: this.historyRange(),
+      history: historyRange(this.recorder),
     });
   }
 
   // ---- scan history, "Why?" and scenario replay (issue 14) ------------------------------------
-
-  private historyRange(): SimFrame['history'] {
-    const h = this.recorder?.history;
-    return h && h.first !== undefined ? { first: h.first, last: h.last!, bytes: h.bytes } : undefined;
-  }
-
-  private requireHistory(): HistoryRecorder {
-    if (!this.recorder || this.recorder.history.first === undefined) throw new Error('no scan is recorded yet: run or step the program first');
-    return this.recorder;
-  }
-
-  private postHistoryView(scan: number): void {
-    // Another body monitored (an FB instance, a function) shows its call's power flow in that scan.
-    const shown = this.layout && !isProgramView(this.layout) ? this.layout : undefined;
-    const view = this.requireHistory().view(scan, shown);
-    if (!view) {
-      const h = this.recorder!.history;
-      throw new Error(`scan ${scan} is not in the history (scans ${h.first} to ${h.last} are recorded)`);
-    }
-    this.deps.post({ type: 'historyView', view }, [view.elements.buffer, view.vlinks.buffer, view.executed.buffer]);
-  }
 
   /** A scenario run in the simulator from a cold restart, recorded, paused after the first divergent scan. */
   private replayScenario(id: number, project: Project, scenario: Scenario): void {
