@@ -27,7 +27,7 @@
  * Nothing is sent unless the client holds the controller lease; an observer only reads.
  *
  * The page's bridge is `gatewayLink.bridge` (src/bridge/gatewayLink.ts; undefined while no link is
- * open; `gatewayLink.subscribe` notifies changes). `attachSimulation` (src/bridge/simulationLink.ts)
+ * open; `gatewayLink.subscribe` notifies changes). `attachSimulation` (below)
  * wires it to the simulation store's setInputs/onOutputs seams in one call, and
  * `checkBindings(project, gatewayLink.snapshot().points)` (src/bridge/mapping.ts) gives the
  * bindings and the mismatches to report before Run.
@@ -37,7 +37,7 @@ import { canonicalAddress, type WireValue } from '../protocol/points';
 import type { GatewayClient } from './GatewayClient';
 import type { Binding } from './mapping';
 import { OutputPump } from './outputPump';
-import { attachSimulation, type SimulationPorts } from './simulationLink';
+import type { SimulationPorts } from './simulationLink';
 import { fromWire, toWire } from './wireValues';
 import type { ProgramDriver } from './workerSocket';
 
@@ -94,7 +94,7 @@ export class GatewayBridge {
   }
 
   /**
-   * Exchanges images with a running simulation (see simulationLink.ts). One simulation at a time:
+   * Exchanges images with a running simulation (see attachSimulation). One simulation at a time:
    * attaching again replaces the previous link. Returns the function that detaches it.
    */
   attach(sim: SimulationPorts, bindings: readonly Binding[]): () => void {
@@ -143,4 +143,30 @@ export class GatewayBridge {
     });
   }
 
+}
+
+// Glue between a running simulation and the gateway, for the simulation's Run/Pause/Stop:
+//   const detach = attachSimulation(simStore.getState(), gatewayLink.bridge, report.bindings);  // on Run
+//   detach(); bridge.stop();                                                                   // on Pause/Stop
+// Inputs from the gateway go to the simulation's input image (converted to each bound variable's
+// type); every output image the simulation reports goes to the gateway.
+/** Starts exchanging images; returns the function that stops it (it does not send `stop`). */
+export function attachSimulation(sim: SimulationPorts, bridge: GatewayBridge, bindings: readonly Binding[]): () => void {
+  const bound = bindings.filter((b) => b.point.dir === 'in');
+  const typed = (changed: Record<string, Value>) => {
+    const image = bridge.inputImage(bound);
+    const out: Record<string, Value> = {};
+    for (const a of Object.keys(changed)) if (image[a] !== undefined) out[a] = image[a];
+    return out;
+  };
+  sim.setInputs(bridge.inputImage(bound));
+  const offInputs = bridge.onInputs((changed) => {
+    const values = typed(changed);
+    if (Object.keys(values).length) sim.setInputs(values);
+  });
+  const offOutputs = sim.onOutputs((outputs) => bridge.sendOutputs(outputs));
+  return () => {
+    offInputs();
+    offOutputs();
+  };
 }

@@ -5,7 +5,7 @@ import { planStateTransfer } from '../engine/plc';
 import { parseLocation, type Value } from '../model/iecTypes';
 import type { PackedPower } from './frames';
 import type { OnlineChangePlan, SimLayout, SimValueInput } from './protocol';
-import type { SimEngine } from './session';
+import type { SimEngine } from './simEngine';
 
 /**
  * Variables present in both programs with the same type keep their values (FB instances and edge

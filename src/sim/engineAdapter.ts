@@ -3,7 +3,7 @@ import { compileProgram, createPlc } from '../engine/plc';
 import { parseValueText } from '../engine/values/literals';
 import { isElementaryType } from '../model/iecTypes';
 import { runOptions } from './runTarget';
-import type { SimEngine } from './session';
+import type { SimEngine } from './simEngine';
 
 export const realEngine: SimEngine = {
   compile(project) {

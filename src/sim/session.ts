@@ -1,14 +1,14 @@
 // The simulation worker's logic, as a plain class so it runs (and is tested) in Node without a Worker:
 // commands in (HostMessage), frames and events out (WorkerMessage) through an injected `post`.
 // The session owns the program and the mode; ScanRunner executes the scans.
-import type { Diagnostic, Plc, PlcOptions } from '../engine/api';
-import { parseLocation, type Value } from '../model/iecTypes';
+import type { Diagnostic, Plc } from '../engine/api';
+import type { Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import { carryDisplay, carryForces, carryInstances, carryValues, planInstances, valueFor, type ShownScan } from './carryOver';
 import { outputsChanged, readValues } from './frames';
 import { HistoryRecorder } from './historyRecorder';
 import type { HistoryOptions } from './history';
-import { buildLayout, findPou, isProgramView, programFingerprint, withView } from './layout';
+import { buildLayout, findPou, programFingerprint, withView } from './layout';
 import { parseScenario, prepareScenario, runPrepared, scenarioCycle, type ScenarioResult } from './scenario';
 import type { CompiledProgram } from '../engine/plc';
 import type { Pou, Scenario } from '../model/project';
@@ -20,13 +20,11 @@ import type { Breakpoint } from '../engine/runtime/breakpoints';
 import { ScanRunner, type ScanOutcome } from './scanRunner';
 import type { Scheduler } from './scheduler';
 import { TrendRecorder } from './trendRecorder';
-
-/** The engine as the session uses it (src/sim/engineAdapter.ts binds the real one). */
-export interface SimEngine {
-  compile(project: Project): { readonly program?: unknown; readonly diagnostics: readonly Diagnostic[] };
-  createPlc(program: unknown, options: PlcOptions): Plc;
-  parseValue(type: string, text: string): { ok: true; value: Value } | { ok: false; message: string };
-}
+import { inputKeysOf, locationKey } from './inputKeys';
+import { buildFrame } from './sessionFrame';
+import { answerHistory, historyRange } from './sessionHistory';
+import { plcScanWithClock, programLayout, type SinceColdStart } from './scenarioRecording';
+import type { SimEngine } from './simEngine';
 
 export interface SessionDeps {
   readonly engine: SimEngine;
@@ -97,7 +95,7 @@ export class SimSession {
    * which replays from a cold start, cannot reproduce: an online change or warm restart (at the
    * scan given), and the variables forced.
    */
-  private sinceColdStart: { interruptedAt?: { scan: number; what: string }; forced: Set<string> } = { forced: new Set() };
+  private sinceColdStart: SinceColdStart = { forced: new Set() };
   /** The body the UI monitors (setView); absent: the program's. */
   private view: SimView | undefined;
   /** Breakpoints as the UI sent them: program network indexes and document network ids. */
@@ -243,46 +241,19 @@ export class SimSession {
         this.postFrame();
         return;
       case 'historySeek':
-        this.postHistoryView(m.scan);
+      case 'historyFind':
+      case 'explain':
+      case 'historyExport':
+        answerHistory(m, {
+          recorder: this.recorder,
+          plc: this.plc,
+          layout: this.layout,
+          project: this.loaded?.project,
+          sinceColdStart: this.sinceColdStart,
+          cycleMs: this.runner.cycleMs,
+          post: (message, transfer) => this.deps.post(message, transfer),
+        });
         return;
-      case 'historyFind': {
-        const recorder = this.requireHistory();
-        const found = m.change !== undefined ? recorder.findChange(m.change, m.from, m.direction) : recorder.findCondition(m.condition ?? '', m.from, m.direction);
-        if (found === undefined) {
-          const what = m.change !== undefined ? `no ${m.direction > 0 ? 'later' : 'earlier'} change of ${m.change}` : `${m.condition} does not hold in any ${m.direction > 0 ? 'later' : 'earlier'} recorded scan`;
-          this.deps.post({ type: 'historyNotFound', message: `${what} (scans ${recorder.history.first} to ${recorder.history.last} are recorded)` });
-          return;
-        }
-        this.postHistoryView(found);
-        return;
-      }
-      case 'explain': {
-        const forced = new Set([...(this.plc?.forced().keys() ?? [])].map((n) => n.toUpperCase()));
-        const shown = this.layout && !isProgramView(this.layout) ? this.layout.view : undefined;
-        const explanation = this.requireHistory().explain(
-          m.scan,
-          m.target,
-          forced,
-          this.loaded ? { project: this.loaded.project, ...(shown ? { shown } : {}) } : undefined,
-        );
-        if (!explanation) throw new Error(`scan ${m.scan} is not in the history`);
-        this.deps.post({ type: 'explanation', id: m.id, explanation });
-        return;
-      }
-      case 'historyExport': {
-        const recorder = this.requireHistory();
-        const refused = m.format === 'scenario' ? this.scenarioRecordingProblem(recorder, m.from) : undefined;
-        if (refused) {
-          this.deps.post({ type: 'historyText', id: m.id, format: m.format, text: '', refused });
-          return;
-        }
-        const text =
-          m.format === 'trace'
-            ? recorder.traceCsv(m.names ?? this.layout!.variables.map((v) => v.name), m.from, m.to)
-            : recorder.scenarioCsv(m.inputs ?? [], m.outputs ?? [], this.runner.cycleMs, m.from, m.to);
-        this.deps.post({ type: 'historyText', id: m.id, format: m.format, text });
-        return;
-      }
       case 'replayScenario':
         this.replayScenario(m.id, m.project, m.scenario);
         return;
@@ -572,91 +543,22 @@ export class SimSession {
   }
 
   private frame(): SimFrame {
-    const { plc, layout, runner } = this;
-    const carried = this.carriedShown();
-    // Fresh arrays: a frame's buffers are transferred to the page.
-    const power = carried
-      ? { elements: carried.power.elements.slice(), vlinks: carried.power.vlinks.slice(), executed: carried.power.executed.slice() }
-      : plc && layout
-        ? packView(plc, layout, this.loaded?.program as CompiledProgram | undefined)
-        : undefined;
-    const values = plc && layout ? readValues(plc, layout) : [];
-    // Inputs are read into the new program at its first scan: until then they show the last scan's
-    // (the other values were carried into the new program itself: carryValues).
-    if (carried && layout)
-      layout.variables.forEach((v, i) => {
-        if (v.location?.toUpperCase().startsWith('%I')) values[i] = carried.values[i]!;
-      });
-    const trend = this.trend.take();
-    const fault = plc?.fault;
-    // At a scan boundary a configuration stands before its first program instance's network 1.
-    const first = layout?.programs?.[0]?.instance;
-    const hit = runner.breakpointHit && first !== undefined && runner.breakpointHit.instance === undefined && plc?.position().length === 0
-      ? { ...runner.breakpointHit, instance: first }
-      : runner.breakpointHit;
-    return {
+    return buildFrame({
       mode: this.mode,
-      scan: this.scanBase + (plc?.scanCount ?? 0),
-      timeMs: runner.timeMs(plc),
-      cycleMs: runner.cycleMs,
-      exec: runner.exec(),
-      ...(fault ? { fault } : {}),
-      nextNetwork: plc?.nextNetwork ?? -1,
-      ...(hit !== undefined ? { breakpointHit: hit.network, breakpointAt: hit } : {}),
-      position: plc ? plc.position() : [],
-      overruns: runner.overruns,
-      elements: power?.elements ?? new Uint8Array(0),
-      vlinks: power?.vlinks ?? new Uint8Array(0),
-      executed: power?.executed ?? new Uint8Array(0),
-      values,
-      forced: plc ? [...plc.forced()] : [],
-      ...(trend ? { trend } : {}),
-      program: plc ? this.programId : null,
+      plc: this.plc,
+      layout: this.layout,
+      runner: this.runner,
+      carried: this.carriedShown(),
+      program: this.loaded?.program as CompiledProgram | undefined,
+      trend: this.trend,
+      scanBase: this.scanBase,
+      programId: this.programId,
       epoch: this.epoch,
-      ...(this.historyRange() ? { history: this.historyRange()! } : {}),
-    };
+      history: historyRange(this.recorder),
+    });
   }
 
   // ---- scan history, "Why?" and scenario replay (issue 14) ------------------------------------
-
-  private historyRange(): SimFrame['history'] {
-    const h = this.recorder?.history;
-    return h && h.first !== undefined ? { first: h.first, last: h.last!, bytes: h.bytes } : undefined;
-  }
-
-  private requireHistory(): HistoryRecorder {
-    if (!this.recorder || this.recorder.history.first === undefined) throw new Error('no scan is recorded yet: run or step the program first');
-    return this.recorder;
-  }
-
-  private postHistoryView(scan: number): void {
-    // Another body monitored (an FB instance, a function) shows its call's power flow in that scan.
-    const shown = this.layout && !isProgramView(this.layout) ? this.layout : undefined;
-    const view = this.requireHistory().view(scan, shown);
-    if (!view) {
-      const h = this.recorder!.history;
-      throw new Error(`scan ${scan} is not in the history (scans ${h.first} to ${h.last} are recorded)`);
-    }
-    this.deps.post({ type: 'historyView', view }, [view.elements.buffer, view.vlinks.buffer, view.executed.buffer]);
-  }
-
-  /**
-   * Why the recorded scans cannot become a scenario that replays as it ran, or undefined. A scenario
-   * starts from a cold start and only sets inputs, so the recording must start at scan 1 after a cold
-   * start, with no online change or warm restart and no forces since.
-   */
-  private scenarioRecordingProblem(recorder: HistoryRecorder, from: number | undefined): string | undefined {
-    const again = 'Press Reset (cold restart), release the forces, run and switch the inputs, then record again.';
-    const { interruptedAt, forced } = this.sinceColdStart;
-    if (interruptedAt)
-      return `A scenario replays from a cold start, and ${interruptedAt.what} at scan ${interruptedAt.scan} changed the program or its state since the last one: the scenario would not replay as it ran. ${again}`;
-    if (forced.size)
-      return `Forces were active while recording (${[...forced].join(', ')}): a scenario sets inputs and cannot force, so it would not replay as it ran. ${again}`;
-    const first = Math.max(from ?? 1, recorder.history.first ?? 1);
-    if (first !== 1)
-      return `A scenario replays from a cold start, but the recording starts at scan ${first} (${from && from > 1 ? 'the range asked' : 'the oldest scans no longer fit in the history'}), not at scan 1. ${again}`;
-    return undefined;
-  }
 
   /** A scenario run in the simulator from a cold restart, recorded, paused after the first divergent scan. */
   private replayScenario(id: number, project: Project, scenario: Scenario): void {
@@ -689,38 +591,4 @@ export class SimSession {
     this.postFrame();
     this.deps.post({ type: 'scenarioReplayed', id, result });
   }
-}
-
-/** The layout with its network fields on the program's own (first) body, as the history records it. */
-function programLayout(project: Project, layout: SimLayout): SimLayout {
-  if (isProgramView(layout)) return layout;
-  const first = layout.programs?.[0]?.instance;
-  return withView(project, layout, { pou: layout.pou, ...(first !== undefined ? { instance: first } : {}) });
-}
-
-/** The PLC with its clock set before each scan (scan k at (k - 1) x cycle), for runPrepared. */
-function plcScanWithClock(plc: Plc, before: (scan: number) => void): Plc {
-  let k = 0;
-  return new Proxy(plc, {
-    get(target, key) {
-      if (key === 'scan')
-        return () => {
-          before(++k);
-          return target.scan();
-        };
-      const v = Reflect.get(target, key, target) as unknown;
-      return typeof v === 'function' ? (v as (...a: unknown[]) => unknown).bind(target) : v;
-    },
-  });
-}
-
-/** The locations of a program's input variables, by locationKey. */
-function inputKeysOf(layout: SimLayout): Set<string> {
-  return new Set(layout.variables.flatMap((v) => (v.role === 'input' && v.location ? [locationKey(v.location)] : [])));
-}
-
-/** `%ix0.0` and `%IX0.0` alike: the key a location is bound by. */
-function locationKey(text: string): string {
-  const loc = parseLocation(text);
-  return loc ? `%${loc.area}${loc.size}${loc.index}${loc.bit !== undefined ? `.${loc.bit}` : ''}` : text.trim().toUpperCase();
 }

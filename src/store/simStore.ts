@@ -5,170 +5,20 @@
 // One store per editor, `createSimStore(transport)`; components read it with `useSim(selector)`
 // (src/editor/sim/simContext.ts) through narrow selectors. Commands that run the program take the
 // current document, which is compiled first when it changed since the last command.
-import { createStore, type StoreApi } from 'zustand';
-import type { Diagnostic, Fault, StepFrame } from '../engine/api';
+import { createStore } from 'zustand';
 import type { Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import type { SimTransport } from '../sim/host';
 import { programId } from '../sim/programId';
-import type { ExecStats, HistoryRange, HistoryView, HostMessage, OnlineChangePlan, SimFrame, SimLayout, SimMode, SimValueInput, TrendSamples, WorkerMessage } from '../sim/protocol';
-import type { ExplainTarget, Explanation } from '../engine/explain';
-import type { Scenario } from '../model/project';
+import type { HistoryView, HostMessage, SimFrame, SimLayout, TrendSamples, WorkerMessage } from '../sim/protocol';
+import type { Explanation } from '../engine/explain';
 import type { ScenarioResult } from '../sim/scenario';
-import { appendTrend, emptyTrend, type TrendBuffer } from '../sim/trendBuffer';
-import { scopeFor, viewKey, type CanvasScope, type ShownPou } from '../sim/scope';
+import { appendTrend, emptyTrend } from '../sim/trendBuffer';
+import { scopeFor, viewKey, type CanvasScope } from '../sim/scope';
+import type { SimState, SimStore } from './simState';
 
 export const DEFAULT_CYCLE_MS = 10;
 export const DEFAULT_TREND_SCANS = 500;
-
-export interface CompileRefusal {
-  readonly diagnostics: readonly Diagnostic[];
-  /** True when an edit made while running did not compile (the last good program keeps running). */
-  readonly online: boolean;
-}
-
-/** An edit made while the program runs (online change), as the worker reported it. */
-export type OnlineChangeState =
-  /** Compiled; goes in at the next scan boundary. */
-  | { readonly kind: 'pending'; readonly id: number; readonly plan: OnlineChangePlan }
-  /** Hardware attached: waits for the user's Apply or Cancel. */
-  | { readonly kind: 'confirm'; readonly id: number; readonly plan: OnlineChangePlan }
-  | { readonly kind: 'applied'; readonly id: number; readonly scan: number; readonly plan: OnlineChangePlan }
-  /** Not applied: the running program is unchanged. */
-  | { readonly kind: 'cancelled'; readonly id: number };
-
-export interface SimContextMenu {
-  readonly x: number;
-  readonly y: number;
-  /** The variable the menu acts on ('' for a call box's menu). */
-  readonly variable: string;
-  /** A call of a user FB: "Open instance" shows its body with this instance picked. */
-  readonly call?: { readonly pou: string; readonly instance: string };
-}
-
-export interface SimState {
-  readonly mode: SimMode;
-  readonly scan: number;
-  readonly timeMs: number;
-  readonly cycleMs: number;
-  readonly exec: ExecStats;
-  readonly fault: Fault | undefined;
-  readonly nextNetwork: number;
-  readonly breakpointHit: number | undefined;
-  /** The breakpoint execution stopped at: POU, instance, network. */
-  readonly breakpointAt: StepFrame | undefined;
-  /** Where execution stands while stepping: caller frames, then the network to run next (empty at a scan boundary). */
-  readonly position: readonly StepFrame[];
-  /**
-   * Counts the stops a debugger follows (a step, a breakpoint hit): the editor then shows the body
-   * where execution stands (`stop`), with the caller's instance picked.
-   */
-  readonly stopSeq: number;
-  readonly stop: StepFrame | undefined;
-  /** The POU on the canvas (the editor says which); undefined: the program's. */
-  readonly shownPou: ShownPou | undefined;
-  /** The instance picked for each FB (a configuration: each program), by upper-case POU name. */
-  readonly picked: ReadonlyMap<string, string>;
-  /** The body the canvas monitors and how its operand names are read; undefined when it is not running. */
-  readonly canvasScope: CanvasScope | undefined;
-  readonly overruns: number;
-  readonly layout: SimLayout | undefined;
-  /** True when power flow and live values should be drawn (a program is loaded and has run). */
-  readonly live: boolean;
-  readonly elementIndex: ReadonlyMap<string, number>;
-  readonly vlinkIndex: ReadonlyMap<string, number>;
-  readonly variableIndex: ReadonlyMap<string, number>;
-  readonly elements: Uint8Array;
-  readonly vlinks: Uint8Array;
-  readonly executed: Uint8Array;
-  readonly values: readonly Value[];
-  /** Forced values by upper-case name. */
-  readonly forced: ReadonlyMap<string, Value>;
-  readonly breakpoints: readonly string[];
-  readonly watch: readonly string[];
-  readonly trendNames: readonly string[];
-  readonly trendCapacity: number;
-  readonly trend: TrendBuffer;
-  readonly refusal: CompileRefusal | undefined;
-  readonly notice: string | undefined;
-  readonly contextMenu: SimContextMenu | undefined;
-  /** The last online change: what it keeps and resets, whether it waits for an answer, applied or not. */
-  readonly onlineChange: OnlineChangeState | undefined;
-  /** Online changes ask before they are applied (hardware attached as controller). */
-  readonly onlineConfirmRequired: boolean;
-  /** Scans the history holds (issue 14). */
-  readonly history: HistoryRange | undefined;
-  /** The recorded scan shown instead of the live one (canvas, watch, trend cursor); undefined: live. */
-  readonly historyScan: number | undefined;
-  readonly historyTimeMs: number | undefined;
-  /** The last history search that found nothing, or another history message. */
-  readonly historyMessage: string | undefined;
-  /** "Why?" of the viewed scan, and whether one is being worked out. */
-  readonly explanation: Explanation | undefined;
-
-  run(project: Project): void;
-  pause(): void;
-  step(project: Project, scans: number): void;
-  /** One network: over (the network runs whole, calls included) or into (stops in a call's body). */
-  stepNetwork(project: Project, into?: boolean): void;
-  /** The editor shows another POU (tab): the canvas monitors its body (the picked instance of an FB). */
-  showPou(pou: ShownPou | undefined): void;
-  /** Picks the instance of an FB (or a configuration's program instance) whose body the canvas shows. */
-  pickInstance(pou: string, instance: string): void;
-  reset(): void;
-  /** Another project was opened: stop, forget the program (the next Run compiles the new one). */
-  unload(): void;
-  warmRestart(): void;
-  setCycle(cycleMs: number): void;
-  /** The document changed: compiled and applied as an online change when a program is loaded. */
-  documentChanged(project: Project): void;
-  toggleBreakpoint(networkId: string): void;
-  clearBreakpoints(): void;
-  write(name: string, input: SimValueInput): void;
-  force(name: string, input: SimValueInput): void;
-  unforce(name: string): void;
-  unforceAll(): void;
-  /** Flips a BOOL input (a switch). */
-  toggleInput(name: string): void;
-  /** Push-button: TRUE while held. */
-  pressInput(name: string): void;
-  releaseInput(name: string): void;
-  addWatch(name: string): void;
-  removeWatch(name: string): void;
-  toggleTrend(name: string): void;
-  setTrendCapacity(scans: number): void;
-  openContextMenu(menu: SimContextMenu): void;
-  closeContextMenu(): void;
-  dismissNotice(): void;
-  /** Hardware attached as controller (or not): online changes ask first. */
-  setOnlineConfirmRequired(required: boolean): void;
-  /** The answer to an online change that asks: Apply (at the next scan boundary) or Cancel. */
-  answerOnlineChange(apply: boolean): void;
-  dismissOnlineChange(): void;
-  /** Gateway seam (issue 6): input image by IEC location, applied at the next input read. */
-  setInputs(values: Readonly<Record<string, Value>>): void;
-  /** Gateway seam: output image after every scan that changed it. Returns an unsubscribe function. */
-  onOutputs(listener: (outputs: Readonly<Record<string, Value>>, scan: number) => void): () => void;
-  // ---- scan history, "Why?", scenarios (issue 14) ----
-  /** Shows a recorded scan (the program runs on). */
-  seekHistory(scan: number): void;
-  /** Back to the live view. */
-  goLive(): void;
-  /** The next (1) or previous (-1) change of a variable from the viewed scan. */
-  findChange(name: string, direction: 1 | -1): void;
-  /** The next (1) or previous (-1) scan where a condition holds (`Motor AND NOT Start`). */
-  findCondition(expression: string, direction: 1 | -1): void;
-  /** "Why?" at the viewed scan (the last recorded one when live). */
-  explain(target: ExplainTarget, scan?: number): void;
-  closeExplanation(): void;
-  setHistoryDepth(maxScans: number, budgetBytes: number): void;
-  /** The recorded range as a trace CSV or a scenario. */
-  exportHistory(request: { format: 'trace' | 'scenario'; names?: string[]; inputs?: string[]; outputs?: string[] }): Promise<string>;
-  /** Runs a scenario in the simulator (recorded, paused at the first divergent scan). */
-  replayScenario(project: Project, scenario: Scenario): Promise<ScenarioResult>;
-}
-
-export type SimStore = StoreApi<SimState>;
 
 const sameName = (a: string, b: string) => a.toUpperCase() === b.toUpperCase();
 

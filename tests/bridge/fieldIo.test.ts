@@ -6,7 +6,7 @@ import { armBlocker } from '../../src/editor/hardware/armState';
 import { deviceMarks } from '../../src/editor/hardware/deviceMarks';
 import { fieldInputAddress } from '../../src/editor/hardware/fieldIo';
 import type { Network } from '../../src/model/project';
-import type { SimState } from '../../src/store/simStore';
+import type { SimState } from '../../src/store/simState';
 import { motorNetwork } from '../sim/programs';
 
 const status = (state: 'online' | 'offline', armed = false): GatewayView['status'] => ({

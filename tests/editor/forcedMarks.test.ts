@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { elementForced } from '../../src/editor/sim/useNetworkSim';
 import type { LdElement } from '../../src/model/elements';
 import type { ElementId } from '../../src/model/ids';
-import type { SimState } from '../../src/store/simStore';
+import type { SimState } from '../../src/store/simState';
 
 const at = { row: 0, col: 0 };
 const id = (s: string) => s as ElementId;

@@ -2,7 +2,8 @@
 import type { Value } from '../../src/model/iecTypes';
 import { realEngine } from '../../src/sim/engineAdapter';
 import type { HostMessage, SimFrame, SimLayout, WorkerMessage } from '../../src/sim/protocol';
-import { SimSession, type SimEngine } from '../../src/sim/session';
+import { SimSession } from '../../src/sim/session';
+import type { SimEngine } from '../../src/sim/simEngine';
 import { ManualScheduler } from './manualScheduler';
 
 export class SimHarness {

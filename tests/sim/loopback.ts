@@ -4,7 +4,8 @@
 import { realEngine } from '../../src/sim/engineAdapter';
 import type { SimTransport } from '../../src/sim/host';
 import type { WorkerMessage } from '../../src/sim/protocol';
-import { SimSession, type SimEngine } from '../../src/sim/session';
+import { SimSession } from '../../src/sim/session';
+import type { SimEngine } from '../../src/sim/simEngine';
 import { ManualScheduler } from './manualScheduler';
 
 export function loopback(engine: SimEngine = realEngine): { transport: SimTransport; scheduler: ManualScheduler } {

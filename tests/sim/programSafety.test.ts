@@ -7,7 +7,7 @@ import type { Project } from '../../src/model/project';
 import { realEngine } from '../../src/sim/engineAdapter';
 import { programId } from '../../src/sim/programId';
 import type { HostMessage } from '../../src/sim/protocol';
-import type { SimEngine } from '../../src/sim/session';
+import type { SimEngine } from '../../src/sim/simEngine';
 import { createSimStore } from '../../src/store/simStore';
 import { SimHarness } from './harness';
 import { loopback } from './loopback';

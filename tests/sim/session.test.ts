@@ -2,7 +2,7 @@ import { describe, expect, test } from 'vitest';
 import { POWER_OUT } from '../../src/editor/sim/useSimOverlay';
 import type { Plc } from '../../src/engine/api';
 import { realEngine } from '../../src/sim/engineAdapter';
-import type { SimEngine } from '../../src/sim/session';
+import type { SimEngine } from '../../src/sim/simEngine';
 import { SimHarness } from './harness';
 import { brokenProgram, motorProgram, runawayProgram, threeNetworks, timerProgram } from './programs';
 

@@ -8,7 +8,7 @@ import type { Network } from '../../model/project';
 import { isConnection, partnersOf, type ConnectionElement } from '../../store/connectors';
 import { elementAt } from '../../store/networkEdits';
 import type { CanvasTheme } from '../theme/canvasTheme';
-import { elide, type ElementPaint } from './drawSymbols';
+import { elide, type ElementPaint } from './elementPaint';
 import { networkColumns } from './columns';
 import { CELL_H, CELL_W, cellRect, WIRE_Y } from './geometry';
 

@@ -3,7 +3,6 @@
 // Pure drawing: no state, no React. Names are never cut: when a font draws wider than its
 // estimate the text is drawn narrower rather than shortened.
 import { boxLayout } from '../../model/boxLayout';
-import type { BlockLibrary } from '../../model/library';
 import type { BoxElement, CoilElement, ContactElement, LdElement } from '../../model/elements';
 import { powerFlowInput, powerFlowOutput } from '../../store/networkEdits';
 import type { CanvasTheme } from '../theme/canvasTheme';
@@ -17,39 +16,13 @@ import {
 } from '../theme/monitorStyle';
 import { BOX_MARGIN, boxMetrics, CELL_W, JUMP_RAIL_GAP, JUMP_TEXT_X, jumpText } from './columns';
 import { drawConnection } from './drawConnectors';
+import { elide, type ElementPaint } from './elementPaint';
 import { CELL_H, WIRE_Y } from './geometry';
-import type { OpenPins } from './pinOperands';
 import { FONT, FONT_BOLD, FONT_SMALL, FONT_SMALL_BOLD, MONO_SMALL_BOLD } from './textWidth';
 
 export { FONT, FONT_BOLD, FONT_SMALL } from './textWidth';
 
-/** Power flow byte of an element (NetworkPower): bit 0 input side energised, bit 1 output side. */
-export interface ElementPaint {
-  /** The project's blocks (user FBs and functions); standard blocks only when absent. */
-  readonly library?: BlockLibrary;
-  /** Present while simulating (0 when nothing is energised). */
-  readonly power?: number;
-  /** Live value shown under the element during simulation (e.g. "ET=1.2s"). */
-  readonly liveValue?: string;
-  /** Drawn width of the element's columns (CELL_W per column when absent). */
-  readonly width?: number;
-  /** Box pins that are unwired and have no operand: drawn with a `???` operand (pinOperands.ts). */
-  readonly openPins?: OpenPins;
-}
-
 type Ctx = CanvasRenderingContext2D;
-
-export function elide(ctx: Ctx, text: string, width: number): string {
-  if (ctx.measureText(text).width <= width) return text;
-  let lo = 0;
-  let hi = text.length;
-  while (lo < hi) {
-    const mid = (lo + hi + 1) >> 1;
-    if (ctx.measureText(`${text.slice(0, mid)}…`).width <= width) lo = mid;
-    else hi = mid - 1;
-  }
-  return `${text.slice(0, lo)}…`;
-}
 
 /** Draws a name whole: narrower than its font when it would not fit `width` (never shortened). */
 export function fillName(ctx: Ctx, text: string, x: number, y: number, width: number) {

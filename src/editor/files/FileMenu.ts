@@ -6,26 +6,9 @@
 // DocumentStoreProvider: it restores the autosave on start, keeps autosaving, and renders the
 // file picker, the "discard unsaved changes?" dialog, open errors and notices.
 import { EXAMPLES } from '../../model/examples';
-import type { DocumentStore } from '../../store/documentStore';
 import { PLCOPEN_COMMANDS } from '../plcopen/plcopenCommands';
 import { loadWithConsent, newProject, openProjectFile, saveProjectFile } from './fileActions';
-
-export interface FileCommandContext {
-  readonly doc: DocumentStore;
-}
-
-export interface FileMenuCommand {
-  readonly id: string;
-  readonly label: string;
-  /** 'File' for New/Open/Save, 'Examples' for the example projects (a submenu or a second menu). */
-  readonly group: 'File' | 'Examples';
-  /** Shortcut specs as in commands/keys.ts; the first is the one shown. */
-  readonly keys?: readonly string[];
-  readonly inMenu: true;
-  /** Tooltip / menu hint. */
-  readonly description: string;
-  run(ctx: FileCommandContext): void;
-}
+import type { FileMenuCommand } from './fileMenuCommand';
 
 export const FILE_COMMANDS: readonly FileMenuCommand[] = [
   {

@@ -4,7 +4,7 @@
 import { useEffect, useRef } from 'react';
 import { gatewayLink } from '../../bridge/gatewayLink';
 import { checkBindings } from '../../bridge/mapping';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { selectProject, useDocument } from '../../store/documentStore';
 import { useSim, useSimStore } from '../sim/simContext';
 import { SteppingConfirmDialog } from './HardwareStepping';

@@ -5,7 +5,7 @@ import type { StepRequest } from '../../bridge/steppingLease';
 import type { GatewayView } from '../../bridge/GatewayClient';
 import type { StatusMessage } from '../../protocol/messages';
 import { gatewayLink } from '../../bridge/gatewayLink';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { useSim } from '../sim/simContext';
 import { armBlocker, disarmWords } from './armState';
 import { hardwareStepping, useSteppingView } from './useHardwareStepping';

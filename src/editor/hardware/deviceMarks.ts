@@ -7,7 +7,7 @@ import { useMemo } from 'react';
 import type { GatewayView } from '../../bridge/GatewayClient';
 import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { useSim } from '../sim/simContext';
 import { deviceInputDiff, deviceOutputDiff, deviceText } from './fieldIo';
 import { useGateway } from './useGateway';

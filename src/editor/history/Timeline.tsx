@@ -3,7 +3,7 @@
 // Keys (on the timeline): ←/→ previous/next scan, Shift+←/→ previous/next change of the variable,
 // Enter in the condition: next scan where it holds (Shift+Enter: previous). Live goes back.
 import { useState } from 'react';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { useSim, useSimStore } from '../sim/simContext';
 import { downloadText } from './download';
 import { useWhyKey } from './useWhyKey';

@@ -1,7 +1,7 @@
 // "Why?": the explanation of a value at the viewed scan, in plain words, with "when did it change?"
 // links that move the timeline there and explain again (follow the chain back).
 import { useState } from 'react';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { useSim, useSimStore } from '../sim/simContext';
 import './history.css';
 

@@ -3,7 +3,7 @@
 import { useEffect } from 'react';
 import { useDocumentStore } from '../../store/documentStore';
 import { useUiStore } from '../../store/uiStore';
-import type { SimStore } from '../../store/simStore';
+import type { SimStore } from '../../store/simState';
 import { isModalOpen } from '../layout/useModal';
 
 export function showWhyTab(): void {

@@ -4,7 +4,7 @@ import { useMemo } from 'react';
 import type { MarkRole } from '../../engine/explain';
 import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { useSim } from '../sim/simContext';
 
 const WORDS: Record<MarkRole, string> = {

@@ -1,5 +1,5 @@
 // The PLCopen entries of the File menu (same shape as the other File commands).
-import type { FileMenuCommand } from '../files/FileMenu';
+import type { FileMenuCommand } from '../files/fileMenuCommand';
 import { chooseImportFile, exportPlcopenFile } from './plcopenActions';
 
 export const PLCOPEN_COMMANDS: readonly FileMenuCommand[] = [

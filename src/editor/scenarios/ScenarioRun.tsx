@@ -6,7 +6,8 @@ import { useStore } from 'zustand';
 import type { Project, Scenario } from '../../model/project';
 import type { ScenarioResult } from '../../sim/scenario';
 import { createWorkerTransport } from '../../sim/host';
-import { createSimStore, type SimState, type SimStore } from '../../store/simStore';
+import type { SimState, SimStore } from '../../store/simState';
+import { createSimStore } from '../../store/simStore';
 
 let scenarioSim: SimStore | undefined;
 /** The simulation scenario runs use: separate from the app's (never bound to the gateway). */

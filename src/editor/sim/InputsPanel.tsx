@@ -5,7 +5,7 @@
 // context menu or the Watch panel, overrides it).
 import { useMemo, useState } from 'react';
 import { parseLocation } from '../../model/iecTypes';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { selectProject, useDocument } from '../../store/documentStore';
 import { fieldInputAddress, fieldInputWords } from '../hardware/fieldIo';
 import { useGateway } from '../hardware/useGateway';

@@ -1,7 +1,7 @@
 // Pick the instance to monitor (as CODESYS does): shown beside the POU tabs while a program is
 // loaded and the shown POU is an FB (its instances, nested ones by path: `Line.Motor1`) or, in a
 // configuration, a program run by several program instances.
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { useSim, useSimStore } from './simContext';
 
 const selectScope = (s: SimState) => s.canvasScope;

@@ -4,7 +4,7 @@
 // device: the menu says so, and forcing it asks for a confirmation first, as stepping on hardware does.
 import { useEffect, useRef, useState, type RefObject } from 'react';
 import type { SimValueInput } from '../../sim/protocol';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { fieldInputAddress, fieldInputWords } from '../hardware/fieldIo';
 import { useGateway } from '../hardware/useGateway';
 import { showWhyTab } from '../history/useWhyKey';

@@ -1,7 +1,7 @@
 // The status line's word on the selected input contact while simulating: a click only selected it;
 // double-click switches the input, Alt+press holds it (useCanvasSimInput).
 import { useCallback } from 'react';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { selectNetworks, useDocument } from '../../store/documentStore';
 import { selectSelection, useUi } from '../../store/uiStore';
 import { useSim } from './simContext';

@@ -1,7 +1,7 @@
 // What went wrong, in the words of the rule ids and networks: a refused compile, a fault, a bad command.
 import type { Diagnostic, Fault } from '../../engine/api';
 import { describeOnlineChange, describeTransfer } from '../../sim/carryOver';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { Notice } from '../layout/Notice';
 import { OnlineChangeDialog } from './OnlineChangeDialog';
 import { faultWords } from './position';

@@ -1,6 +1,6 @@
 // The status line's debugger position: where execution stands while stepping or at a breakpoint,
 // `Main / network 4 → Motor1 (Motor) / network 2`.
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { positionWords } from './position';
 import { useSim } from './simContext';
 

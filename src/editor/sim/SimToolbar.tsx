@@ -2,7 +2,7 @@
 import { useEffect, useState } from 'react';
 import { taskSchedule } from '../../engine/compile/taskSchedule';
 import { useDocument, type DocumentState } from '../../store/documentStore';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { SteppingBadge } from '../hardware/HardwareStepping';
 import { useSimCommands } from '../hardware/useHardwareStepping';
 import { useStepKeys } from './useStepKeys';

@@ -1,7 +1,7 @@
 // Side panel for debugging: breakpoints on networks (execution pauses before them), the network
 // about to run, and every forced variable.
 import { selectActivePou, useDocument } from '../../store/documentStore';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { formatLive } from './liveValues';
 import { useSim, useSimStore } from './simContext';
 import { useHasBreakpoint, useIsCurrentNetwork } from './useSimOverlay';

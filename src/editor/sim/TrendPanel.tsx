@@ -3,7 +3,7 @@
 import { useEffect, useMemo, useRef, useState } from 'react';
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { useSim, useSimStore } from './simContext';
 import { trendData, trendLayout, trendOptions, type TrendSignal, type TrendView } from './trendChart';
 import { useConfigurationInstances, useWatchCandidates } from './useWatchCandidates';

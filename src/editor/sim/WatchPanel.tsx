@@ -5,7 +5,7 @@
 import { useMemo, useState } from 'react';
 import { selectProject, useDocument } from '../../store/documentStore';
 import type { SimVariable } from '../../sim/protocol';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { useDeviceMark } from '../hardware/deviceMarks';
 import { fieldInputAddress, fieldInputWords } from '../hardware/fieldIo';
 import { useGateway } from '../hardware/useGateway';

@@ -2,7 +2,7 @@
 import { formatValue } from '../../engine/values/literals';
 import { isElementaryType, type Value } from '../../model/iecTypes';
 import { scopedName } from '../../sim/scope';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 
 export function formatLive(type: string, value: Value): string {
   return isElementaryType(type) ? formatValue(type, value) : String(value);

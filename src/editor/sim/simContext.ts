@@ -4,7 +4,8 @@ import { createContext, createElement, useContext, type ReactNode } from 'react'
 import { useStore } from 'zustand';
 import { gatewayLink } from '../../bridge/gatewayLink';
 import { createWorkerTransport } from '../../sim/host';
-import { createSimStore, type SimState, type SimStore } from '../../store/simStore';
+import type { SimState, SimStore } from '../../store/simState';
+import { createSimStore } from '../../store/simStore';
 
 let appStore: SimStore | undefined;
 

@@ -15,7 +15,7 @@ import { useEffect } from 'react';
 import type { LdElement } from '../../model/elements';
 import { selectLibrary, selectNetworks, useDocumentStore } from '../../store/documentStore';
 import { elementAt } from '../../store/networkEdits';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { useUiStore } from '../../store/uiStore';
 import { hitTest, layoutNetworks } from '../canvas/geometry';
 import { fieldInputAddress } from '../hardware/fieldIo';

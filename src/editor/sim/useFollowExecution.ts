@@ -5,7 +5,7 @@
 // next is on screen (the view stays put when it already is).
 import { useEffect } from 'react';
 import { selectActivePou, useDocumentStore } from '../../store/documentStore';
-import type { SimStore } from '../../store/simStore';
+import type { SimStore } from '../../store/simState';
 import type { DocumentStore } from '../../store/documentStore';
 import { useUiStore } from '../../store/uiStore';
 import { scrollNetworkIntoView } from '../outline/goTo';

@@ -9,7 +9,7 @@ import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import { selectLibrary, useDocument } from '../../store/documentStore';
 import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { canvasName, isForced, liveText } from './liveValues';
 import { useSim } from './simContext';
 

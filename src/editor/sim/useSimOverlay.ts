@@ -1,7 +1,7 @@
 // Narrow hooks for the canvas: each element reads only its own power byte and live value, so a
 // frame re-renders only the elements whose state changed. All return undefined when not simulating.
 import type { StepFrame } from '../../engine/api';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { isForced, liveText } from './liveValues';
 import { useSim } from './simContext';
 

@@ -2,7 +2,7 @@
 // ran, those of what Run will run (the task's program, or a configuration's program instances).
 import { useMemo } from 'react';
 import { useDocument, selectProject } from '../../store/documentStore';
-import type { SimState } from '../../store/simStore';
+import type { SimState } from '../../store/simState';
 import { findPou, readableNames } from '../../sim/layout';
 import { globalsWithOutside } from '../../model/outsideGlobals';
 import { programInstances, runOptions } from '../../sim/runTarget';
