@@ -96,7 +96,7 @@ test('a breakpoint stops execution before its network, and stepping shows the ne
   await page.getByTestId('network-next-2').waitFor();
   // The breakpoints list shows it too, and clearing it lets the program run on.
   await sim.tab('Breakpoints & forces');
-  await page.getByLabel('Breakpoint before network 3').uncheck();
+  await page.getByLabel('Breakpoint before network 3', { exact: true }).uncheck();
   await sim.button('run').click();
   await sim.waitForMode('Running');
   expect(errors).toEqual([]);
