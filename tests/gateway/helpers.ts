@@ -340,7 +340,7 @@ export async function spawnGateway(configFile: string): Promise<GatewayProcess> 
 }
 
 /** When each coil changed on the device, replaying every client's writes in order from all OFF. */
-export function coilFlips(writes: readonly LoggedWrite[], count: number): number[][] {
+export function coilFlips(writes: readonly LoggedWrite[], count: number, counted: (w: LoggedWrite) => boolean = () => true): number[][] {
   const state = new Array<number>(count).fill(0);
   const flips: number[][] = Array.from({ length: count }, () => []);
   for (const w of writes) {
@@ -349,7 +349,7 @@ export function coilFlips(writes: readonly LoggedWrite[], count: number): number
       const coil = w.address + i;
       if (coil >= count || state[coil] === v) return;
       state[coil] = v;
-      flips[coil]!.push(w.at);
+      if (counted(w)) flips[coil]!.push(w.at);
     });
   }
   return flips;
