@@ -69,7 +69,13 @@ export class OutputPump {
   private tick(): void {
     this.timer = undefined;
     if (!this.latest) return;
-    if (this.dirty || this.now() - this.lastSentAt >= this.heartbeatMs * 0.9) this.flush();
+    const since = this.now() - this.lastSentAt;
+    // An offer may have sent the image since this tick was scheduled: never two sends within a period.
+    if (since < this.period()) {
+      this.timer = setTimeout(() => this.tick(), this.period() - since);
+      return;
+    }
+    if (this.dirty || since >= this.heartbeatMs * 0.9) this.flush();
     this.timer = setTimeout(() => this.tick(), this.period());
   }
 
