@@ -11,6 +11,15 @@ import { deleteSelectedNetworks, hasNetworkSelection, networkCopyText, pasteNetw
 import { parseNetworkClip } from '../../store/networkUnits';
 
 let inPage: string | undefined;
+/**
+ * Whether the system clipboard is known to hold the in-page copy. Until its asynchronous write
+ * lands (or when the browser refuses it) the system clipboard still holds what was there before,
+ * and a paste must take the user's latest copy, the in-page one.
+ */
+let inPageOnSystem = true;
+
+/** True while the latest copy has not reached the system clipboard: paste takes the in-page copy. */
+export const latestCopyInPageOnly = (): boolean => inPage !== undefined && !inPageOnSystem;
 
 /** The clip text of the selected networks, else of the current targets; undefined when nothing is selected. */
 export function copyText(ctx: EditorContext): string | undefined {
@@ -46,7 +55,14 @@ export function copy(ctx: EditorContext, systemClipboard = true): string | undef
     return undefined;
   }
   inPage = text;
-  if (systemClipboard) navigator.clipboard?.writeText(text).catch(() => undefined);
+  inPageOnSystem = false;
+  if (systemClipboard)
+    navigator.clipboard
+      ?.writeText(text)
+      .then(() => {
+        if (inPage === text) inPageOnSystem = true;
+      })
+      .catch(() => undefined);
   ctx.ui.getState().setStatus('Copied.');
   return text;
 }
@@ -97,5 +113,5 @@ export async function pasteFromSystem(ctx: EditorContext): Promise<void> {
   } catch {
     text = undefined;
   }
-  pasteText(ctx, text && (parseClip(text) || parseNetworkClip(text)) ? text : inPage);
+  pasteText(ctx, !latestCopyInPageOnly() && text && (parseClip(text) || parseNetworkClip(text)) ? text : inPage);
 }

@@ -2,7 +2,7 @@
 import { useEffect } from 'react';
 import { parseClip } from '../../store/clipboard';
 import { parseNetworkClip } from '../../store/networkUnits';
-import { copyText, pasteInPage, pasteText } from './clipboardActions';
+import { copyText, latestCopyInPageOnly, pasteInPage, pasteText } from './clipboardActions';
 import type { EditorContext } from './editorActions';
 import { matches, parseKeys } from './keys';
 import { FILE_MENU_COMMANDS } from '../files/FileMenu';
@@ -58,7 +58,7 @@ export function useShortcuts(ctx: EditorContext) {
       pendingPaste = undefined;
       const text = e.clipboardData?.getData('text/plain');
       e.preventDefault();
-      if (text && (parseClip(text) || parseNetworkClip(text))) pasteText(ctx, text);
+      if (!latestCopyInPageOnly() && text && (parseClip(text) || parseNetworkClip(text))) pasteText(ctx, text);
       else pasteInPage(ctx);
     };
 
