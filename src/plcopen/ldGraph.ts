@@ -155,17 +155,25 @@ export function buildLdGraph(
   });
 
   // Every reference, through continuations, to the objects producing it.
+  const dangling = new Set<RawConnection>();
   const resolve = (
     c: RawConnection,
     consumer: RawObject,
     seen?: Set<string>,
   ): { obj: RawObject | 'rail'; pin?: string }[] => {
     const src = byId.get(c.ref);
-    if (!src)
-      throw new LdGraphError(
-        `<${consumer.kind}> localId ${consumer.localId} is connected to localId ${c.ref}, which does not exist`,
-        consumer,
-      );
+    if (!src) {
+      // One dangling reference (an editor that deleted an object but not the wire into it) drops
+      // that wire only: the rest of the body imports, and the finding names where it was.
+      if (!dangling.has(c)) {
+        dangling.add(c);
+        warn({
+          message: `<${consumer.kind}> localId ${consumer.localId} is connected to localId ${c.ref}, which does not exist; that wire is dropped`,
+          obj: consumer,
+        });
+      }
+      return [];
+    }
     switch (src.kind) {
       case 'leftPowerRail':
         return [{ obj: 'rail' }];
