@@ -50,7 +50,7 @@ function checkExternal(table: SymbolTable, project: Project, pou: Pou, decl: Var
     if (kept)
       r.warning(
         'LD-W16',
-        `${decl.name} is declared outside the project (VAR_EXTERNAL, no global of that name); the simulator keeps it as a global ${kept.type}${kept.initial ? ` starting at ${kept.initial}` : ''}, which you can write and force in the watch table`,
+        `${decl.name} is declared outside the project (VAR_EXTERNAL, no global of that name: MATIEC on its own refuses that, "the external variable does not match with any global variable", unless the build declares it, as OpenPLC's board builds do); the simulator keeps it as a global ${kept.type}${kept.initial ? ` starting at ${kept.initial}` : ''}, which you can write and force in the watch table`,
       );
     if (!kept || kept.type.trim().toUpperCase() === decl.type.trim().toUpperCase()) return;
   }
