@@ -350,7 +350,8 @@ describe('the variable table', () => {
   test.each([
     ['LD-E10', 'a duplicate name', [...vars('A BOOL', 'X BOOL', 'a BOOL')]],
     ['LD-E11', 'an invalid name', [...vars('A BOOL', 'X BOOL', 'Bad__Name INT')]],
-    ['LD-E12', 'a malformed location', [...vars('A BOOL', 'X BOOL', 'Q BOOL %QX0.9')]],
+    ['LD-E12', 'a malformed location', [...vars('A BOOL', 'X BOOL', 'Q BOOL %QZ0.1')]],
+    ['LD-W04', 'a bit beyond 7, which no device drives', [...vars('A BOOL', 'X BOOL', 'Q BOOL %QX0.9')]],
     ['LD-E13', 'a location that does not hold the type', [...vars('A BOOL', 'X BOOL', 'Q INT %QX0.1')]],
     ['LD-E14', 'a bad initial value', [...vars('A BOOL', 'X BOOL', 'N INT := 70000')]],
     ['LD-E15', 'an unknown type', [...vars('A BOOL', 'X BOOL', 'N MYTYPE')]],

@@ -306,6 +306,11 @@ export class SymbolTable {
       r.error('LD-E13', `${what} is ${type} but its location ${decl.location} holds ${sizeWords(location)}`);
       return false;
     }
+    if (location.size === 'X' && (location.bit ?? 0) > 7 && !location.levels && location.area !== 'M')
+      r.warning(
+        'LD-W04',
+        `${what} is at bit ${location.bit} of byte ${location.index} (${decl.location}): IEC allows it and MATIEC compiles it, and the simulator keeps it apart from %${location.area}X${location.index + Math.floor(location.bit! / 8)}.${location.bit! % 8}; but OpenPLC's I/O map and the gateway have bits 0..7 only, so no device drives it`,
+      );
     return location;
   }
 
