@@ -359,6 +359,18 @@ describe('the variable table', () => {
   ] as const)('%s %s (network -1)', (rule, _what, specs) => {
     expect(table(...specs)).toContain(`${rule} -1`);
   });
+  test('two variables at one location: a warning under iec, an error under openplc (MATIEC refuses it)', () => {
+    const specs = vars('A BOOL %IX0.0', 'X BOOL', 'Alias BOOL %IX0.0');
+    const iec = checkProject(project(specs, [ladder(['[A] (X)'])], 'iec'));
+    expect(iec.find((d) => d.rule === 'LD-W02')?.severity).toBe('warning');
+    const openplc = checkProject(project(specs, [ladder(['[A] (X)'])], 'openplc'));
+    const e = openplc.find((d) => d.rule === 'LD-E17');
+    expect(e?.severity).toBe('error');
+    expect(e?.message).toBe(
+      'the variable "Alias" shares the location %IX0.0 with "A": MATIEC refuses two variables at one location ("invalid location in global location declaration"); give each its own address, or use one variable',
+    );
+    expect(openplc.some((d) => d.rule === 'LD-W02')).toBe(false);
+  });
   test('a clean table has no diagnostics', () => {
     expect(
       table(...vars('A BOOL %IX0.0', 'X BOOL %QX0.0', 'N INT %MW2 := -5 RETAIN', 'D TIME := T#2s')),

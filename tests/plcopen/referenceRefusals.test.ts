@@ -35,6 +35,15 @@ describe('files the reference refuses', () => {
     expect(r.out.trim().split('\n')).toEqual(['scan,time_ms,Run', '1,0,0', '2,10,0', '3,20,0']);
   });
 
+  it('two variables at one location: refused under openplc, as iec2c does ("invalid location in global location declaration")', () => {
+    const r = rungsmith(['simulate', 'f.xml', '--scans', '1', '--profile', 'openplc'], { 'f.xml': file('two-variables-one-location.xml') });
+    expect(r.code).toBe(1);
+    expect(r.err).toContain('error LD-E17 Fan/variables the variable "Run2" shares the location %QX3.0 with "Run"');
+    const iec = rungsmith(['simulate', 'f.xml', '--scans', '1', '--profile', 'iec'], { 'f.xml': file('two-variables-one-location.xml') });
+    expect(iec.code).toBe(0);
+    expect(iec.err).toContain('warning LD-W02');
+  });
+
   it('a VAR_EXTERNAL with no global (iec2c: "The external variable does not match with any global variable"): runs, warning LD-W16 names MATIEC\'s fault', () => {
     const r = simulate('external-undeclared.xml');
     expect(r.code).toBe(0);
