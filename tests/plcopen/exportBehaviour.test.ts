@@ -232,6 +232,18 @@ describe('LD-X06 a connector OR pasted without brackets', () => {
     expect(trace(plc, [{ I2: true }, { I3: true }, { I2: false, I1: true }], ['Q0'])).toEqual([[0], [1], [1]]);
   });
 
+  it('a file with that shape (an OR into a connector, a contact after the continuation) is named on import', () => {
+    const r = importPlcopen(exportPlcopen(project(v, [drawn], 'openplc')));
+    if (!r.ok) throw new Error('the export does not import');
+    const notes = r.report.warnings.map((w) => w.message).filter((m) => m.includes('paste that OR'));
+    expect(notes).toEqual([
+      expect.stringMatching(/^contact "I3" follows continuation "CX", whose connector gathers an OR: Beremiz and OpenPLC paste that OR without brackets after the contact \(they write I3 AND I1 OR I2\)/),
+    ]);
+    // The drawing without that shape imports without the note.
+    const plain = importPlcopen(exportPlcopen(project(v, [ladder(['+ [I1] + >CX>|', '+ [I2] +', '|>CX> - (Q0)'])], 'openplc')));
+    expect(plain.ok && plain.report.warnings.some((w) => w.message.includes('paste that OR'))).toBe(false);
+  });
+
   it('not reported where the pasted text stands alone: a continuation straight into a coil, or an OR that reaches the rail', () => {
     expect(exportBehaviour(project(v, [ladder(['+ [I1] + >CX>|', '+ [I2] +', '|>CX> - (Q0)'])]))).toEqual([]);
     expect(exportBehaviour(project(v, [ladder(['+ [I1] + >CX>|', '+ - +', '|>CX> [I3] (Q0)'])]))).toEqual([]);
