@@ -27,7 +27,14 @@ const TYPE_ALIASES: Record<string, string> = { string: 'STRING', wstring: 'WSTRI
 export function readType(typeEl: XmlElement | undefined, warn: Warn): string {
   const t = typeEl?.children[0];
   if (!t) return 'BOOL';
-  if (t.name === 'derived') return t.attrs.name ?? 'BOOL';
+  if (t.name === 'derived') {
+    const name = t.attrs.name ?? 'BOOL';
+    const indirect = INDIRECT.exec(name.trim());
+    if (!indirect) return name;
+    // CODESYS writes REFERENCE TO / POINTER TO as a derived type name.
+    warn(`a ${indirect[1]!.toUpperCase()} TO type is not supported by Rungsmith; the variable keeps the name of its base type ${indirect[2]!.trim()}`, t);
+    return indirect[2]!.trim();
+  }
   // <string length="20"/>: STRING[20] (the declared length; values hold up to 126 characters).
   if (TYPE_ALIASES[t.name]) return t.attrs.length ? `${TYPE_ALIASES[t.name]!}[${t.attrs.length}]` : TYPE_ALIASES[t.name]!;
   if (ANONYMOUS.has(t.name)) {
@@ -41,6 +48,9 @@ export function readType(typeEl: XmlElement | undefined, warn: Warn): string {
   }
   return t.name.toUpperCase();
 }
+
+/** `REFERENCE TO T`, `POINTER TO T` (CODESYS writes them as derived type names). */
+export const INDIRECT = /^(REFERENCE|POINTER)\s+TO\s+(.+)$/i;
 
 const ANONYMOUS = new Set(['array', 'struct', 'enum', 'subrangeSigned', 'subrangeUnsigned']);
 
@@ -106,7 +116,12 @@ export interface InstancesResult {
 }
 
 /** Tasks and global variables from `instances/configurations`. */
-export function readInstances(instances: XmlElement | undefined, warn: Warn): InstancesResult {
+export function readInstances(
+  instances: XmlElement | undefined,
+  warn: Warn,
+  /** The file's PROGRAMs (upper case): CODESYS names a task's program in `name`, `typeName` empty. */
+  programNames: ReadonlySet<string> = new Set(),
+): InstancesResult {
   const tasks: Task[] = [];
   const globals: Variable[] = [];
   let configuration: string | undefined;
@@ -134,7 +149,11 @@ export function readInstances(instances: XmlElement | undefined, warn: Warn): In
         } else if (!single) warn(`task ${t.attrs.name} has neither an interval nor a trigger (single); it runs every 10 ms`, t);
         if (single) triggers.push({ el: t, single });
         const programs = childrenNamed(t, 'pouInstance')
-          .map((pi) => ({ instance: pi.attrs.name ?? '', pou: pi.attrs.typeName || pi.attrs.type || '' }))
+          .map((pi) => {
+            const instance = pi.attrs.name ?? '';
+            const named = pi.attrs.typeName || pi.attrs.type || '';
+            return { instance, pou: named || (programNames.has(instance.toUpperCase()) ? instance : '') };
+          })
           .filter((p) => {
             if (!p.pou)
               warn(`task ${t.attrs.name}: program instance "${p.instance}" names no POU; dropped`, t);

@@ -1,0 +1,90 @@
+// What CODESYS V3 writes in its PLCopen exports (namespace tc6_0200) beyond the TC6 schema, in
+// `addData` of http://www.3s-software.com/plcopenxml/...:
+// - POUs and data types of the application (the ones under "Application" in the device tree) are
+//   not in `types` but in the resource's addData: `resource/addData/data[@name=.../pou]/pou`,
+//   `data[@name=.../datatype]/dataType`;
+// - a CFC body is `<body><ST><xhtml/></ST><addData><data name=".../cfc"><CFC>...</CFC>`: an empty
+//   ST body with the CFC graph beside it;
+// - a task's `pouInstance` names the program in `name` and leaves `typeName` empty;
+// - every object carries its object id (`.../objectid`, handleUnknown="discard").
+// Library blocks CODESYS projects call without declaring them are in model/codesysUtil.ts.
+import { blockSignature } from '../model/blocks';
+import { codesysUtilBlock, fitsPins } from '../model/codesysUtil';
+import type { Pou } from '../model/project';
+import { child, childrenNamed, type XmlElement } from './xml/parse';
+
+export const CODESYS_DATA = 'http://www.3s-software.com/plcopenxml/';
+export const CODESYS_POU = `${CODESYS_DATA}pou`;
+export const CODESYS_CFC = `${CODESYS_DATA}cfc`;
+export const CODESYS_DATATYPE = `${CODESYS_DATA}datatype`;
+export const CODESYS_OBJECT_ID = `${CODESYS_DATA}objectid`;
+
+const dataNamed = (holder: XmlElement | undefined, name: string): XmlElement[] => {
+  const add = holder ? child(holder, 'addData') : undefined;
+  return add ? childrenNamed(add, 'data').filter((d) => d.attrs.name === name) : [];
+};
+
+function inApplication(instances: XmlElement | undefined, data: string, element: string): XmlElement[] {
+  const out: XmlElement[] = [];
+  const configs = instances ? childrenNamed(child(instances, 'configurations') ?? instances, 'configuration') : [];
+  for (const conf of configs) {
+    for (const d of dataNamed(conf, data)) out.push(...childrenNamed(d, element));
+    for (const res of childrenNamed(conf, 'resource'))
+      for (const d of dataNamed(res, data)) out.push(...childrenNamed(d, element));
+  }
+  return out;
+}
+
+/** The POUs CODESYS writes in the addData of configurations and resources, in file order. */
+export const applicationPous = (instances: XmlElement | undefined): XmlElement[] => inApplication(instances, CODESYS_POU, 'pou');
+
+/** The data types (DUTs) CODESYS writes in the addData of configurations and resources. */
+export const applicationDataTypes = (instances: XmlElement | undefined): XmlElement[] =>
+  inApplication(instances, CODESYS_DATATYPE, 'dataType');
+
+/** The `<CFC>` graph of a CODESYS body, if it is one. */
+export function cfcOf(body: XmlElement | undefined): XmlElement | undefined {
+  for (const d of dataNamed(body, CODESYS_CFC)) {
+    const cfc = child(d, 'CFC');
+    if (cfc) return cfc;
+  }
+  return undefined;
+}
+
+function* blocksOf(el: XmlElement): Generator<XmlElement> {
+  for (const c of el.children) {
+    if (c.name === 'block') yield c;
+    else if (c.children.length) yield* blocksOf(c);
+  }
+}
+
+/**
+ * The Util blocks (model/codesysUtil.ts) that these POUs call or declare instances of without the
+ * file declaring a POU of that name, each wired only through its own pins: the library POUs to
+ * add to the project, in order of first use, with where that is.
+ */
+export function utilBlocksUsed(
+  pous: readonly { readonly el: XmlElement; readonly pou: Pou }[],
+): { pou: Pou; firstUse: { pou: string; el: XmlElement } }[] {
+  const declared = new Set(pous.map((p) => p.pou.name.toUpperCase()));
+  const used = new Map<string, { pou: Pou; fits: boolean; firstUse: { pou: string; el: XmlElement } }>();
+  const note = (name: string, pins: string[], where: { pou: string; el: XmlElement }) => {
+    const key = name.trim().toUpperCase();
+    if (declared.has(key) || blockSignature(key)) return;
+    const lib = codesysUtilBlock(key);
+    if (!lib) return;
+    const had = used.get(key);
+    used.set(key, { pou: lib, fits: (had?.fits ?? true) && fitsPins(lib, pins), firstUse: had?.firstUse ?? where });
+  };
+  for (const { el, pou } of pous) {
+    for (const b of blocksOf(el)) {
+      const pins = ['inputVariables', 'inOutVariables', 'outputVariables'].flatMap((list) =>
+        childrenNamed(child(b, list) ?? b, 'variable').map((x) => x.attrs.formalParameter ?? ''),
+      );
+      note(b.attrs.typeName ?? '', pins.filter(Boolean), { pou: pou.name, el: b });
+    }
+    // Instances declared (and called from ST, or not at all).
+    for (const v of pou.variables) note(v.type, [], { pou: pou.name, el });
+  }
+  return [...used.values()].filter((u) => u.fits).map(({ pou, firstUse }) => ({ pou, firstUse }));
+}
