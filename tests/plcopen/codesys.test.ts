@@ -1,0 +1,141 @@
+// CODESYS V3 exports (issue 23 class 8): the application's POUs and data types in the resource's
+// addData, a CFC PLC_PRG kept but not run, a task naming its programs in `name`, BIT members of a
+// structure, and blocks of CODESYS's Util library (BLINK and LIMITALARM run; RAMP_INT external).
+import { describe, expect, test } from 'vitest';
+import { checkProject } from '../../src/engine/check';
+import { compileProgram, createPlc } from '../../src/engine/plc';
+import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
+import { importPlcopen } from '../../src/plcopen/importPlcopen';
+import { fixture, imported } from './fixtures';
+
+const FILE = 'codesys-v3-application.xml';
+
+describe('a CODESYS V3 application export', () => {
+  test('imports its application POUs and data types, and says what each became', () => {
+    const { project, report } = imported(FILE);
+    expect(project.pous.map((p) => [p.name, p.kind, p.language])).toEqual([
+      ['PLC_PRG', 'PROGRAM', 'FBD'],
+      ['LampLogic', 'PROGRAM', 'LD'],
+      ['BLINK', 'FUNCTION_BLOCK', 'ST'],
+      ['LIMITALARM', 'FUNCTION_BLOCK', 'ST'],
+    ]);
+    expect(report.pous).toEqual([{ name: 'LampLogic', networks: expect.any(Number), from: 'POU body' }]);
+    expect(project.dataTypes?.map((d) => d.name)).toEqual(['ST_Status']);
+    // The task names its programs in `name` (typeName empty): both are kept.
+    expect(project.tasks).toEqual([
+      expect.objectContaining({
+        name: 'MainTask',
+        cycleMs: 10,
+        programs: [
+          { instance: 'PLC_PRG', pou: 'PLC_PRG' },
+          { instance: 'LampLogic', pou: 'LampLogic' },
+        ],
+      }),
+    ]);
+    const text = report.warnings.map((w) => `${w.pou ?? ''}|${w.message}`);
+    expect(text).toContainEqual(expect.stringMatching(/^PLC_PRG\|POU "PLC_PRG" is written in CFC \(CODESYS\).*kept unchanged for export.*does not run CFC.*a task that runs it runs its other programs without it/));
+    expect(text).toContainEqual(expect.stringMatching(/^LampLogic\|BLINK is a block of CODESYS's Util library .* added as a library POU/));
+    expect(text).toContainEqual(expect.stringMatching(/^LampLogic\|LIMITALARM is a block of CODESYS's Util library/));
+    expect(text).toContainEqual(expect.stringMatching(/^LampLogic\|block type RAMP_INT is a block of CODESYS's Util library that Rungsmith does not run: imported as an external block with the pins the file wires \(IN, ASCEND, DESCEND, TIMEBASE, OUT\)/));
+    // Located at the first call.
+    expect(report.warnings.find((w) => w.message.startsWith('BLINK is'))).toMatchObject({ element: 'block', localId: '10000000005' });
+    // Object ids: one note, not a warning per POU.
+    expect(report.warnings.some((w) => /objectid/.test(w.message))).toBe(false);
+    expect(report.notes).toContainEqual(expect.objectContaining({ message: expect.stringMatching(/^2 CODESYS object ids .* dropped/) }));
+    expect(project.externalBlocks?.map((b) => b.name)).toEqual(['RAMP_INT']);
+  });
+
+  test('BIT members of a structure are BOOLs: no type errors, only the CFC body is refused by check', () => {
+    const { project } = imported(FILE);
+    const errors = checkProject(project).filter((d) => d.severity === 'error');
+    expect(errors.map((d) => `${d.rule} ${d.pou}: ${d.message}`)).toEqual([
+      'LD-E51 PLC_PRG: the program PLC_PRG is written in CFC, which the simulator does not run; its calls cannot run (redraw it in LD, or write it in ST)',
+    ]);
+  });
+
+  test("the task's LD program runs without the CFC one; BLINK, LIMITALARM and the BIT members over scans", () => {
+    const { project } = imported(FILE);
+    const { program, diagnostics } = compileProgram(project, { configuration: true });
+    expect(diagnostics.filter((d) => d.severity === 'warning').map((d) => d.rule)).toContain('LD-W51');
+    expect(diagnostics.find((d) => d.rule === 'LD-W51')?.message).toBe(
+      'the program instance PLC_PRG runs PLC_PRG, written in CFC, which the simulator does not run: the configuration runs without it',
+    );
+    if (!program) throw new Error(diagnostics.map((d) => d.message).join('\n'));
+    const plc = createPlc(program, { cycleMs: 10 });
+    const lamp: boolean[] = [];
+    const scan = (enable: boolean, level: number) => {
+      plc.setInputs({ '%IX0.0': enable, '%IW0': level });
+      plc.scan();
+      lamp.push(plc.read('LampLogic.Lamp') as boolean);
+    };
+    // BLINK: TIMEHIGH = 30 ms, TIMELOW = 20 ms on a 10 ms scan: TRUE first, for 3 scans, then 2 FALSE.
+    for (let i = 0; i < 11; i++) scan(true, 50);
+    expect(lamp).toEqual([true, true, true, false, false, true, true, true, false, false, true]);
+    expect(plc.read('LampLogic.Status.Blinking')).toBe(true);
+    // LIMITALARM with LOW 20, HIGH 80: IN 50 is in range.
+    expect([plc.read('LampLogic.HighAlarm'), plc.read('LampLogic.LowAlarm'), plc.read('LampLogic.InRange')]).toEqual([false, false, true]);
+    // ENABLE FALSE: OUT keeps its value (CODESYS: "output OUT is not changed").
+    lamp.length = 0;
+    for (let i = 0; i < 4; i++) scan(false, 90);
+    expect(lamp).toEqual([true, true, true, true]);
+    expect([plc.read('LampLogic.HighAlarm'), plc.read('LampLogic.LowAlarm'), plc.read('LampLogic.InRange')]).toEqual([true, false, false]);
+    // The packed Alarm bit: (HighAlarm OR LowAlarm) AND Enable.
+    expect(plc.read('LampLogic.Status.Alarm')).toBe(false);
+    // ENABLE again: a new TIMEHIGH phase starts.
+    lamp.length = 0;
+    for (let i = 0; i < 6; i++) scan(true, 80);
+    expect(lamp).toEqual([true, true, true, false, false, true]);
+    // IN = HIGH is in range (limits included).
+    expect(plc.read('LampLogic.InRange')).toBe(true);
+    scan(true, 19);
+    expect([plc.read('LampLogic.LowAlarm'), plc.read('LampLogic.Status.Alarm')]).toEqual([true, true]);
+    // RAMP_INT is external: its output holds its initial value.
+    expect(plc.read('LampLogic.Ramped')).toBe(0);
+  });
+
+  test('export gives the CFC PLC_PRG back unchanged and leaves the Util blocks to CODESYS', () => {
+    const { project } = imported(FILE);
+    const xml = exportPlcopen(project);
+    expect(xml).toContain('<data name="http://www.3s-software.com/plcopenxml/cfc" handleUnknown="implementation"><CFC>');
+    expect(xml).not.toMatch(/<pou name="BLINK"/);
+    expect(xml).not.toMatch(/<pou name="LIMITALARM"/);
+    const again = importPlcopen(xml);
+    if (!again.ok) throw new Error(JSON.stringify(again.errors));
+    expect(again.project.pous.map((p) => [p.name, p.language])).toEqual([
+      ['PLC_PRG', 'FBD'],
+      ['LampLogic', 'LD'],
+      ['BLINK', 'ST'],
+      ['LIMITALARM', 'ST'],
+    ]);
+  });
+
+  test("a file's own BLINK, or a BLINK wired with other pins, is not Util's", () => {
+    const own = fixture(FILE).replace(
+      '<data name="http://www.3s-software.com/plcopenxml/pou" handleUnknown="implementation">\n              <pou name="PLC_PRG"',
+      '<data name="http://www.3s-software.com/plcopenxml/pou" handleUnknown="implementation"><pou name="BLINK" pouType="functionBlock"><interface><inputVars><variable name="ENABLE"><type><BOOL/></type></variable><variable name="TIMELOW"><type><TIME/></type></variable><variable name="TIMEHIGH"><type><TIME/></type></variable></inputVars><outputVars><variable name="OUT"><type><BOOL/></type></variable></outputVars></interface><body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">OUT := ENABLE;</xhtml></ST></body></pou></data>\n            <data name="http://www.3s-software.com/plcopenxml/pou" handleUnknown="implementation">\n              <pou name="PLC_PRG"',
+    );
+    const r = importPlcopen(own);
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    expect(r.project.pous.filter((p) => p.name === 'BLINK')).toHaveLength(1);
+    expect(r.project.pous.find((p) => p.name === 'BLINK')?.source).toBe('OUT := ENABLE;');
+    const otherPins = fixture(FILE).replace('formalParameter="TIMELOW"', 'formalParameter="PERIOD"');
+    const r2 = importPlcopen(otherPins);
+    if (!r2.ok) throw new Error(JSON.stringify(r2.errors));
+    expect(r2.project.pous.map((p) => p.name)).not.toContain('BLINK');
+    expect(r2.project.externalBlocks?.map((b) => b.name)).toContain('BLINK');
+  });
+
+  test('REFERENCE TO and POINTER TO variables keep their base type with a named warning', () => {
+    const xml = fixture(FILE).replace(
+      '<variable name="Ramped"><type><INT/></type></variable>',
+      '<variable name="Ramped"><type><INT/></type></variable><variable name="LevelRef"><type><derived name="REFERENCE TO INT"/></type></variable><variable name="LevelPtr"><type><pointer><baseType><INT/></baseType></pointer></type></variable>',
+    );
+    const r = importPlcopen(xml);
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    const lamp = r.project.pous.find((p) => p.name === 'LampLogic')!;
+    expect(lamp.variables.filter((v) => v.name === 'LevelRef' || v.name === 'LevelPtr').map((v) => v.type)).toEqual(['INT', 'INT']);
+    const msgs = r.report.warnings.map((w) => w.message);
+    expect(msgs).toContain('a REFERENCE TO type is not supported by Rungsmith; the variable keeps the name of its base type INT');
+    expect(msgs).toContain('a pointer type is not supported by Rungsmith; the variable keeps the name of its base type');
+  });
+});
