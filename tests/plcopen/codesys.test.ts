@@ -138,4 +138,54 @@ describe('a CODESYS V3 application export', () => {
     expect(msgs).toContain('a REFERENCE TO type is not supported by Rungsmith; the variable keeps the name of its base type INT');
     expect(msgs).toContain('a pointer type is not supported by Rungsmith; the variable keeps the name of its base type');
   });
+
+  test('an SFC transition wired from a variable holding an ST expression (as CODESYS writes every condition) runs it', () => {
+    const X = 'xmlns="http://www.w3.org/1999/xhtml"';
+    const xml = `<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+  <fileHeader companyName="" productName="CODESYS" productVersion="CODESYS V3.5 SP18" creationDateTime="2026-11-28T10:00:00"/>
+  <contentHeader name="seq.project"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="PLC_PRG" pouType="program">
+      <interface><localVars>
+        <variable name="Count"><type><INT/></type></variable>
+        <variable name="Limit"><type><INT/></type><initialValue><simpleValue value="3"/></initialValue></variable>
+        <variable name="Finished"><type><BOOL/></type></variable>
+      </localVars></interface>
+      <actions><action name="CountUp"><body><ST><xhtml ${X}>Count := Count + 1;</xhtml></ST></body></action></actions>
+      <body><SFC>
+        <step localId="0" initialStep="true" name="Init"><position x="0" y="0"/><connectionPointIn/><connectionPointOut formalParameter="sfc"/></step>
+        <actionBlock localId="1"><position x="0" y="0"/><connectionPointIn><connection refLocalId="0"/></connectionPointIn>
+          <action localId="2" qualifier="N"><relPosition x="0" y="0"/><reference name="CountUp"/><connectionPointOut/></action></actionBlock>
+        <inVariable localId="3"><position x="0" y="0"/><connectionPointOut/><expression>Count &gt;= Limit AND NOT Finished</expression></inVariable>
+        <transition localId="4"><position x="0" y="0"/><connectionPointIn><connection refLocalId="0" formalParameter="sfc"/></connectionPointIn>
+          <condition><connectionPointIn><connection refLocalId="3"/></connectionPointIn></condition></transition>
+        <step localId="5" initialStep="false" name="Done"><position x="0" y="0"/><connectionPointIn><connection refLocalId="4" formalParameter="sfc"/></connectionPointIn><connectionPointOut formalParameter="sfc"/></step>
+        <actionBlock localId="6"><position x="0" y="0"/><connectionPointIn><connection refLocalId="5"/></connectionPointIn>
+          <action localId="7" qualifier="N"><relPosition x="0" y="0"/><reference name="Finished"/><connectionPointOut/></action></actionBlock>
+      </SFC></body>
+    </pou>
+  </pous></types>
+  <instances><configurations/></instances>
+</project>`;
+    const r = importPlcopen(xml);
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    const { program, diagnostics } = compileProgram(r.project, { pou: 'PLC_PRG' });
+    if (!program) throw new Error(diagnostics.map((d) => d.message).join('\n'));
+    const plc = createPlc(program, { cycleMs: 10 });
+    const seen: [number, boolean][] = [];
+    for (let i = 0; i < 6; i++) {
+      plc.scan();
+      seen.push([plc.read('Count') as number, plc.read('Finished') as boolean]);
+    }
+    // CountUp runs while Init is active; Count >= 3 moves to Done, which sets Finished.
+    expect(seen).toEqual([
+      [1, false],
+      [2, false],
+      [3, false],
+      [3, true],
+      [3, true],
+      [3, true],
+    ]);
+  });
 });
