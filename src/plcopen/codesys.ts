@@ -9,7 +9,7 @@
 // - every object carries its object id (`.../objectid`, handleUnknown="discard").
 // Library blocks CODESYS projects call without declaring them are in model/codesysUtil.ts.
 import { blockSignature } from '../model/blocks';
-import { codesysUtilBlock, fitsPins } from '../model/codesysUtil';
+import { codesysUtilBlock, fitsPins, isCodesysUtilName } from '../model/codesysUtil';
 import type { Pou } from '../model/project';
 import { child, childrenNamed, type XmlElement } from './xml/parse';
 
@@ -87,4 +87,29 @@ export function utilBlocksUsed(
     for (const v of pou.variables) note(v.type, [], { pou: pou.name, el });
   }
   return [...used.values()].filter((u) => u.fits).map(({ pou, firstUse }) => ({ pou, firstUse }));
+}
+
+/**
+ * Calls of a block that Util and the standard library both name (HYSTERESIS, PID, INTEGRAL,
+ * DERIVATIVE: OpenPLC's annex F blocks, which always win) wired with pins the standard block does
+ * not have: a CODESYS program calling Util's block. The import names them (their wires to the
+ * unknown pins are dropped).
+ */
+export function utilNameClashes(
+  pous: readonly { readonly el: XmlElement; readonly pou: Pou }[],
+): { name: string; pins: string[]; pou: string; el: XmlElement }[] {
+  const out: { name: string; pins: string[]; pou: string; el: XmlElement }[] = [];
+  for (const { el, pou } of pous)
+    for (const b of blocksOf(el)) {
+      const name = (b.attrs.typeName ?? '').trim();
+      const sig = blockSignature(name);
+      if (!sig || !isCodesysUtilName(name)) continue;
+      const known = new Set([...sig.inputs, ...sig.outputs].map((p) => p.name.toUpperCase()));
+      const pins = ['inputVariables', 'inOutVariables', 'outputVariables']
+        .flatMap((list) => childrenNamed(child(b, list) ?? b, 'variable').map((x) => x.attrs.formalParameter ?? ''))
+        .filter((p) => p && !['EN', 'ENO'].includes(p.toUpperCase()));
+      const foreign = pins.filter((p) => !known.has(p.toUpperCase()));
+      if (foreign.length) out.push({ name: sig.name, pins: foreign, pou: pou.name, el: b });
+    }
+  return out;
 }

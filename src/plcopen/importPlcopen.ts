@@ -43,7 +43,8 @@ import {
   type XmlElement,
 } from './xml/parse';
 import { readDataTypes } from './dataTypes';
-import { applicationDataTypes, applicationPous, cfcOf, CODESYS_OBJECT_ID, utilBlocksUsed } from './codesys';
+import { applicationDataTypes, applicationPous, cfcOf, CODESYS_OBJECT_ID, utilBlocksUsed, utilNameClashes } from './codesys';
+import { blockSignature } from '../model/blocks';
 import { isCodesysUtilName } from '../model/codesysUtil';
 
 const KIND: Record<string, PouKind> = {
@@ -287,6 +288,13 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       firstUse.el,
     );
   }
+  for (const clash of utilNameClashes(heads)) {
+    currentPou = clash.pou;
+    warn(
+      `${clash.name} is called with pins of CODESYS Util's ${clash.name} (${clash.pins.join(', ')}); Rungsmith's ${clash.name} is the annex F block of OpenPLC's library (${describePins(clash.name)}), and Util's ${clash.name} is not supported: the wires of those pins are dropped and the call does not do what it does in CODESYS`,
+      clash.el,
+    );
+  }
   const withLibrary = [...heads.map((h) => h.pou), ...libraryPous];
   // Blocks of no known library become external blocks with the pins the file wires (issue 12 part 5).
   const external = unknownBlocks(heads, blockLibrary({ pous: withLibrary }));
@@ -472,4 +480,10 @@ function rawElement(text: string, el: XmlElement): string {
   const indent = /^[ \t]*$/.test(lead) ? lead.length : 0;
   const lines = text.slice(el.offset, el.end).replace(/\r\n?/g, '\n').split('\n');
   return lines.map((l, i) => (i === 0 ? l : l.replace(new RegExp(`^[ \\t]{0,${indent}}`), ''))).join('\n');
+}
+
+/** The pins of a standard block as `XIN1, XIN2, EPS -> Q`. */
+function describePins(name: string): string {
+  const sig = blockSignature(name);
+  return sig ? `${sig.inputs.map((p) => p.name).join(', ')} -> ${sig.outputs.map((p) => p.name).join(', ')}` : '';
 }

@@ -125,6 +125,23 @@ describe('a CODESYS V3 application export', () => {
     expect(r2.project.externalBlocks?.map((b) => b.name)).toContain('BLINK');
   });
 
+  test("Util's HYSTERESIS (IN, HIGH, LOW -> OUT) is named where it meets the annex F HYSTERESIS of the same name", () => {
+    const xml = fixture(FILE)
+      .replace('typeName="LIMITALARM"', 'typeName="HYSTERESIS"')
+      .replace('<derived name="LIMITALARM"/>', '<derived name="HYSTERESIS"/>')
+      .replace('<variable formalParameter="O"><connectionPointOut><expression/></connectionPointOut></variable><variable formalParameter="U"><connectionPointOut><expression/></connectionPointOut></variable><variable formalParameter="IL"><connectionPointOut><expression/></connectionPointOut></variable>', '<variable formalParameter="OUT"><connectionPointOut><expression/></connectionPointOut></variable>');
+    const r = importPlcopen(xml);
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    expect(r.report.warnings).toContainEqual(
+      expect.objectContaining({
+        pou: 'LampLogic',
+        localId: '20000000005',
+        message:
+          "HYSTERESIS is called with pins of CODESYS Util's HYSTERESIS (IN, HIGH, LOW, OUT); Rungsmith's HYSTERESIS is the annex F block of OpenPLC's library (XIN1, XIN2, EPS -> Q), and Util's HYSTERESIS is not supported: the wires of those pins are dropped and the call does not do what it does in CODESYS",
+      }),
+    );
+  });
+
   test('REFERENCE TO and POINTER TO variables keep their base type with a named warning', () => {
     const xml = fixture(FILE).replace(
       '<variable name="Ramped"><type><INT/></type></variable>',
