@@ -2,7 +2,8 @@
 // `addData` of http://www.3s-software.com/plcopenxml/...:
 // - POUs and data types of the application (the ones under "Application" in the device tree) are
 //   not in `types` but in the resource's addData: `resource/addData/data[@name=.../pou]/pou`,
-//   `data[@name=.../datatype]/dataType`;
+//   `data[@name=.../datatype]/dataType`; an application exported alone is a resource in the
+//   project's addData (`data[@name=.../application]/resource`), with its tasks;
 // - a CFC body is `<body><ST><xhtml/></ST><addData><data name=".../cfc"><CFC>...</CFC>`: an empty
 //   ST body with the CFC graph beside it;
 // - a task's `pouInstance` names the program in `name` and leaves `typeName` empty;
@@ -17,6 +18,7 @@ export const CODESYS_DATA = 'http://www.3s-software.com/plcopenxml/';
 export const CODESYS_POU = `${CODESYS_DATA}pou`;
 export const CODESYS_CFC = `${CODESYS_DATA}cfc`;
 export const CODESYS_DATATYPE = `${CODESYS_DATA}datatype`;
+export const CODESYS_APPLICATION = `${CODESYS_DATA}application`;
 export const CODESYS_OBJECT_ID = `${CODESYS_DATA}objectid`;
 
 const dataNamed = (holder: XmlElement | undefined, name: string): XmlElement[] => {
@@ -24,23 +26,32 @@ const dataNamed = (holder: XmlElement | undefined, name: string): XmlElement[] =
   return add ? childrenNamed(add, 'data').filter((d) => d.attrs.name === name) : [];
 };
 
-function inApplication(instances: XmlElement | undefined, data: string, element: string): XmlElement[] {
+/**
+ * The resources CODESYS writes outside `instances` when it exports an application alone:
+ * `project/addData/data[@name=.../application]/resource`.
+ */
+export function applicationResources(root: XmlElement): XmlElement[] {
+  return dataNamed(root, CODESYS_APPLICATION).flatMap((d) => childrenNamed(d, 'resource'));
+}
+
+function inApplication(root: XmlElement, data: string, element: string): XmlElement[] {
   const out: XmlElement[] = [];
+  const instances = child(root, 'instances');
   const configs = instances ? childrenNamed(child(instances, 'configurations') ?? instances, 'configuration') : [];
   for (const conf of configs) {
     for (const d of dataNamed(conf, data)) out.push(...childrenNamed(d, element));
     for (const res of childrenNamed(conf, 'resource'))
       for (const d of dataNamed(res, data)) out.push(...childrenNamed(d, element));
   }
+  for (const res of applicationResources(root)) for (const d of dataNamed(res, data)) out.push(...childrenNamed(d, element));
   return out;
 }
 
 /** The POUs CODESYS writes in the addData of configurations and resources, in file order. */
-export const applicationPous = (instances: XmlElement | undefined): XmlElement[] => inApplication(instances, CODESYS_POU, 'pou');
+export const applicationPous = (root: XmlElement): XmlElement[] => inApplication(root, CODESYS_POU, 'pou');
 
 /** The data types (DUTs) CODESYS writes in the addData of configurations and resources. */
-export const applicationDataTypes = (instances: XmlElement | undefined): XmlElement[] =>
-  inApplication(instances, CODESYS_DATATYPE, 'dataType');
+export const applicationDataTypes = (root: XmlElement): XmlElement[] => inApplication(root, CODESYS_DATATYPE, 'dataType');
 
 /** The `<CFC>` graph of a CODESYS body, if it is one. */
 export function cfcOf(body: XmlElement | undefined): XmlElement | undefined {

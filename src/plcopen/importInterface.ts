@@ -121,6 +121,8 @@ export function readInstances(
   warn: Warn,
   /** The file's PROGRAMs (upper case): CODESYS names a task's program in `name`, `typeName` empty. */
   programNames: ReadonlySet<string> = new Set(),
+  /** Resources outside `configurations` (CODESYS: `project/addData/data[.../application]/resource`). */
+  more: readonly XmlElement[] = [],
 ): InstancesResult {
   const tasks: Task[] = [];
   const globals: Variable[] = [];
@@ -130,49 +132,52 @@ export function readInstances(
   const configs = instances
     ? childrenNamed(child(instances, 'configurations') ?? instances, 'configuration')
     : [];
+  const readResource = (res: XmlElement) => {
+    resource ??= res.attrs.name;
+    for (const t of childrenNamed(res, 'task')) {
+      // An event task (single="StartPulse") runs on its trigger; its interval, if any, only
+      // counts in the common tick (MATIEC), so none given is 0.
+      const single = t.attrs.single?.trim() || undefined;
+      let cycleMs = single ? 0 : 10;
+      const interval = t.attrs.interval;
+      if (interval) {
+        const ms = parseInterval(interval);
+        if (ms === undefined || ms <= 0)
+          warn(`task ${t.attrs.name}: interval "${interval}" is not a duration; using ${single ? 'none' : '10 ms'}`, t);
+        else cycleMs = ms;
+      } else if (!single) warn(`task ${t.attrs.name} has neither an interval nor a trigger (single); it runs every 10 ms`, t);
+      if (single) triggers.push({ el: t, single });
+      const programs = childrenNamed(t, 'pouInstance')
+        .map((pi) => {
+          const instance = pi.attrs.name ?? '';
+          const named = pi.attrs.typeName || pi.attrs.type || '';
+          return { instance, pou: named || (programNames.has(instance.toUpperCase()) ? instance : '') };
+        })
+        .filter((p) => {
+          if (!p.pou)
+            warn(`task ${t.attrs.name}: program instance "${p.instance}" names no POU; dropped`, t);
+          return p.pou && p.instance;
+        });
+      const priority = Number.parseInt(t.attrs.priority ?? '0', 10);
+      tasks.push({
+        name: t.attrs.name ?? `task${tasks.length}`,
+        cycleMs,
+        ...(single ? { single } : {}),
+        priority: Number.isFinite(priority) ? priority : 0,
+        programs,
+      });
+    }
+    for (const pi of childrenNamed(res, 'pouInstance'))
+      warn(`program instance "${pi.attrs.name}" is not attached to a task; it is not run`, pi);
+    for (const v of readVarLists(res, warn, ['globalVars'])) globals.push({ ...v, scope: 'resource' });
+  };
   for (const conf of configs) {
     configuration ??= conf.attrs.name;
     globals.push(...readVarLists(conf, warn, ['globalVars']));
-    for (const res of childrenNamed(conf, 'resource')) {
-      resource ??= res.attrs.name;
-      for (const t of childrenNamed(res, 'task')) {
-        // An event task (single="StartPulse") runs on its trigger; its interval, if any, only
-        // counts in the common tick (MATIEC), so none given is 0.
-        const single = t.attrs.single?.trim() || undefined;
-        let cycleMs = single ? 0 : 10;
-        const interval = t.attrs.interval;
-        if (interval) {
-          const ms = parseInterval(interval);
-          if (ms === undefined || ms <= 0)
-            warn(`task ${t.attrs.name}: interval "${interval}" is not a duration; using ${single ? 'none' : '10 ms'}`, t);
-          else cycleMs = ms;
-        } else if (!single) warn(`task ${t.attrs.name} has neither an interval nor a trigger (single); it runs every 10 ms`, t);
-        if (single) triggers.push({ el: t, single });
-        const programs = childrenNamed(t, 'pouInstance')
-          .map((pi) => {
-            const instance = pi.attrs.name ?? '';
-            const named = pi.attrs.typeName || pi.attrs.type || '';
-            return { instance, pou: named || (programNames.has(instance.toUpperCase()) ? instance : '') };
-          })
-          .filter((p) => {
-            if (!p.pou)
-              warn(`task ${t.attrs.name}: program instance "${p.instance}" names no POU; dropped`, t);
-            return p.pou && p.instance;
-          });
-        const priority = Number.parseInt(t.attrs.priority ?? '0', 10);
-        tasks.push({
-          name: t.attrs.name ?? `task${tasks.length}`,
-          cycleMs,
-          ...(single ? { single } : {}),
-          priority: Number.isFinite(priority) ? priority : 0,
-          programs,
-        });
-      }
-      for (const pi of childrenNamed(res, 'pouInstance'))
-        warn(`program instance "${pi.attrs.name}" is not attached to a task; it is not run`, pi);
-      for (const v of readVarLists(res, warn, ['globalVars'])) globals.push({ ...v, scope: 'resource' });
-    }
+    for (const res of childrenNamed(conf, 'resource')) readResource(res);
   }
+  // CODESYS's export of an application alone: its resource in the project's addData.
+  for (const res of more) readResource(res);
   for (const { el, single } of triggers) {
     const g = globals.find((v) => v.name.toUpperCase() === single.toUpperCase());
     if (!g || g.type.trim().toUpperCase() !== 'BOOL')

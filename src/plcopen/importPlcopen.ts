@@ -43,7 +43,7 @@ import {
   type XmlElement,
 } from './xml/parse';
 import { readDataTypes } from './dataTypes';
-import { applicationDataTypes, applicationPous, cfcOf, CODESYS_OBJECT_ID, utilBlocksUsed, utilNameClashes } from './codesys';
+import { applicationDataTypes, applicationPous, applicationResources, cfcOf, CODESYS_APPLICATION, CODESYS_OBJECT_ID, utilBlocksUsed, utilNameClashes } from './codesys';
 import { blockSignature } from '../model/blocks';
 import { isCodesysUtilName } from '../model/codesysUtil';
 
@@ -166,12 +166,12 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
 
   const keepProject: { addData: string[]; dataTypes: string[] } = { addData: [], dataTypes: [] };
   // User data types (dataTypes.ts); the ones Rungsmith cannot read are kept raw for export.
-  const userTypes = readDataTypes(child(types, 'dataTypes'), warn, raw, applicationDataTypes(child(root, 'instances')));
+  const userTypes = readDataTypes(child(types, 'dataTypes'), warn, raw, applicationDataTypes(root));
   keepProject.dataTypes.push(...userTypes.raw);
   const pous: Pou[] = [];
   const reportPous: { name: string; networks: number; from: string }[] = [];
   // CODESYS writes the application's POUs in the resource's addData (codesys.ts).
-  const pouEls = [...childrenNamed(child(types, 'pous') ?? types, 'pou'), ...applicationPous(child(root, 'instances'))];
+  const pouEls = [...childrenNamed(child(types, 'pous') ?? types, 'pou'), ...applicationPous(root)];
   /** CODESYS object ids dropped (one note for all of them). */
   let objectIds = 0;
 
@@ -406,7 +406,8 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
   for (const holder of [root, contentHeader]) {
     const add = holder ? child(holder, 'addData') : undefined;
     for (const d of add ? childrenNamed(add, 'data') : []) {
-      if (d.attrs.name === PROFILE_DATA_NAME) continue;
+      // Read as the project (codesys.ts), not kept: export writes it as the project's own content.
+      if (d.attrs.name === PROFILE_DATA_NAME || (holder === root && d.attrs.name === CODESYS_APPLICATION)) continue;
       else if (d.attrs.handleUnknown === 'discard')
         warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
       else keepProject.addData.push(raw(d));
@@ -418,6 +419,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     child(root, 'instances'),
     warn,
     new Set(pous.filter((p) => p.kind === 'PROGRAM').map((p) => p.name.toUpperCase())),
+    applicationResources(root),
   );
   // A VAR_EXTERNAL names a global of the configuration or a resource (IEC 61131-3 2.4.1.2).
   const globalTypes = new Map(inst.globals.map((g) => [g.name.toUpperCase(), g]));

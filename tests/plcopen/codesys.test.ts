@@ -109,6 +109,21 @@ describe('a CODESYS V3 application export', () => {
     ]);
   });
 
+  test('an application exported alone (its resource in the project addData) imports and runs the same', () => {
+    const text = fixture(FILE);
+    const res = text.slice(text.indexOf('<resource name="Application">'), text.indexOf('</resource>') + '</resource>'.length);
+    const xml = text.replace(/<instances>[\s\S]*<\/instances>/, `<instances><configurations/></instances>\n  <addData><data name="http://www.3s-software.com/plcopenxml/application" handleUnknown="implementation">${res}</data></addData>`);
+    const r = importPlcopen(xml);
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    expect(r.project.pous.map((p) => p.name)).toEqual(['PLC_PRG', 'LampLogic', 'BLINK', 'LIMITALARM']);
+    expect(r.project.tasks.map((t) => [t.name, t.programs.map((p) => p.pou)])).toEqual([['MainTask', ['PLC_PRG', 'LampLogic']]]);
+    expect(r.project.globals.map((g) => g.name)).toEqual(['Enable', 'Level']);
+    // Read as the project, not kept as raw addData (export would write the POUs twice).
+    expect(exportPlcopen(r.project)).not.toContain('plcopenxml/application');
+    const { program } = compileProgram(r.project, { configuration: true });
+    expect(program).toBeDefined();
+  });
+
   test("a file's own BLINK, or a BLINK wired with other pins, is not Util's", () => {
     const own = fixture(FILE).replace(
       '<data name="http://www.3s-software.com/plcopenxml/pou" handleUnknown="implementation">\n              <pou name="PLC_PRG"',
