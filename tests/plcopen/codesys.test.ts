@@ -220,4 +220,33 @@ describe('a CODESYS V3 application export', () => {
       [3, true],
     ]);
   });
+
+  test('enum values qualified with a dot (E_STATE.BUSY, as CODESYS writes them) in initial values and ST', () => {
+    const X = 'xmlns="http://www.w3.org/1999/xhtml"';
+    const xml = `<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+  <fileHeader companyName="" productName="CODESYS" productVersion="CODESYS V3.5 SP19" creationDateTime="2026-11-28T10:00:00"/>
+  <contentHeader name="enum.project"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types>
+    <dataTypes><dataType name="E_STATE"><baseType><enum><values><value name="IDLE"/><value name="BUSY"/><value name="DONE"/></values></enum></baseType></dataType></dataTypes>
+    <pous><pou name="PLC_PRG" pouType="program">
+      <interface><localVars>
+        <variable name="State"><type><derived name="E_STATE"/></type><initialValue><simpleValue value="E_STATE.BUSY"/></initialValue></variable>
+        <variable name="Steps"><type><INT/></type></variable>
+      </localVars></interface>
+      <body><ST><xhtml ${X}>IF State = E_STATE.BUSY THEN Steps := Steps + 1; END_IF;
+IF Steps &gt;= 2 THEN State := E_STATE.DONE; END_IF;</xhtml></ST></body>
+    </pou></pous>
+  </types>
+  <instances><configurations/></instances>
+</project>`;
+    const r = importPlcopen(xml);
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    const { program, diagnostics } = compileProgram(r.project, { pou: 'PLC_PRG' });
+    if (!program) throw new Error(diagnostics.map((d) => d.message).join('\n'));
+    const plc = createPlc(program, { cycleMs: 10 });
+    expect(plc.read('State')).toBe(1);
+    plc.scans(4);
+    expect([plc.read('State'), plc.read('Steps')]).toEqual([2, 2]);
+  });
 });
