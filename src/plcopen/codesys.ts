@@ -62,6 +62,15 @@ export function cfcOf(body: XmlElement | undefined): XmlElement | undefined {
   return undefined;
 }
 
+/**
+ * A type named with the namespace of a CODESYS library whose blocks Rungsmith knows by their bare
+ * names: `Standard.TON` is TON, `Util.BLINK` is BLINK. Other namespaces (MQTT.*, SysCom.*) stay.
+ */
+export function unqualifiedType(name: string): string {
+  const m = /^\s*(?:Standard|Standard64|Util)\.([A-Za-z_]\w*)\s*$/i.exec(name);
+  return m ? m[1]! : name;
+}
+
 function* blocksOf(el: XmlElement): Generator<XmlElement> {
   for (const c of el.children) {
     if (c.name === 'block') yield c;

@@ -12,6 +12,7 @@
 import { anonymousText, anonymousType, elementaryOf, formatInitial, parseDims, parseInitial, type InitValue } from '../model/dataTypes';
 import type { DataType, DataTypeDef } from '../model/project';
 import { child, childrenNamed, deepText, type XmlElement } from './xml/parse';
+import { unqualifiedType } from './codesys';
 import type { XmlWriter } from './xml/write';
 
 export type Warn = (message: string, el?: XmlElement) => void;
@@ -30,7 +31,7 @@ class Unsupported extends Error {
 /** The type text of a type element (`<INT/>`, `<derived name=".."/>`, `<string length="20"/>`, `<array>`). */
 function typeTextOf(t: XmlElement): string {
   if (t.name === 'derived') {
-    const name = t.attrs.name ?? 'BOOL';
+    const name = unqualifiedType(t.attrs.name ?? 'BOOL');
     // CODESYS writes REFERENCE TO / POINTER TO as a derived type name.
     if (/^(REFERENCE|POINTER)\s+TO\s/i.test(name.trim())) throw new Unsupported(`a ${name.trim()} member is not supported`, t);
     return name;

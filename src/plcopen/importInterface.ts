@@ -3,6 +3,7 @@ import type { Task, VarClass, Variable } from '../model/project';
 import { parseInterval } from './durations';
 import { readTypeText, readValueText } from './dataTypes';
 import { RS_VARIABLE } from './types';
+import { unqualifiedType } from './codesys';
 import { child, childrenNamed, deepText, type XmlElement } from './xml/parse';
 
 export type Warn = (message: string, el?: XmlElement) => void;
@@ -28,7 +29,7 @@ export function readType(typeEl: XmlElement | undefined, warn: Warn): string {
   const t = typeEl?.children[0];
   if (!t) return 'BOOL';
   if (t.name === 'derived') {
-    const name = t.attrs.name ?? 'BOOL';
+    const name = unqualifiedType(t.attrs.name ?? 'BOOL');
     const indirect = INDIRECT.exec(name.trim());
     if (!indirect) return name;
     // CODESYS writes REFERENCE TO / POINTER TO as a derived type name.

@@ -124,6 +124,15 @@ describe('a CODESYS V3 application export', () => {
     expect(program).toBeDefined();
   });
 
+  test('types named with a CODESYS library namespace (Util.BLINK, Standard.RS) are those blocks', () => {
+    const xml = fixture(FILE).replace('<derived name="BLINK"/>', '<derived name="Util.BLINK"/>').replace('<derived name="RS"/>', '<derived name="Standard.RS"/>');
+    const r = importPlcopen(xml);
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    expect(r.project.pous.find((p) => p.name === 'LampLogic')!.variables.find((v) => v.name === 'Blinker')!.type).toBe('BLINK');
+    expect(r.project.pous.find((p) => p.name === 'PLC_PRG')!.variables.find((v) => v.name === 'Latch')!.type).toBe('RS');
+    expect(r.project.pous.map((p) => p.name)).toContain('BLINK');
+  });
+
   test("a file's own BLINK, or a BLINK wired with other pins, is not Util's", () => {
     const own = fixture(FILE).replace(
       '<data name="http://www.3s-software.com/plcopenxml/pou" handleUnknown="implementation">\n              <pou name="PLC_PRG"',
