@@ -7,6 +7,7 @@ import { compileProgram, createPlc } from '../../src/engine/plc';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { fixture, imported } from './fixtures';
+import { ldXml } from './ldXml';
 
 const FILE = 'codesys-v3-application.xml';
 
@@ -257,5 +258,68 @@ IF Steps &gt;= 2 THEN State := E_STATE.DONE; END_IF;</xhtml></ST></body>
     expect(plc.read('State')).toBe(1);
     plc.scans(4);
     expect([plc.read('State'), plc.read('Steps')]).toEqual([2, 2]);
+  });
+
+  test("CODESYS's input names of the standard counters and bistables (CTU.RESET, SR.SET1/RESET) are the IEC pins, in LD and ST", () => {
+    const xml = ldXml(
+      [
+        { name: 'Pulse', type: 'BOOL' },
+        { name: 'Clear', type: 'BOOL' },
+        { name: 'Full', type: 'BOOL' },
+        { name: 'Count', type: 'INT' },
+        { name: 'Parts', type: 'CTU' },
+        { name: 'Latch', type: 'SR' },
+        { name: 'Held', type: 'BOOL' },
+      ],
+      [
+        {
+          objects: [
+            { id: 1, kind: 'contact', v: 'Pulse', in: ['rail'] },
+            { id: 2, kind: 'contact', v: 'Clear', in: ['rail'] },
+            { id: 3, kind: 'block', type: 'CTU', instance: 'Parts', inputs: { CU: ['1'], RESET: ['2'], PV: ['=2'] }, outputs: ['Q', 'CV'], assign: { CV: 'Count' } },
+            { id: 4, kind: 'coil', v: 'Full', in: ['3.Q'] },
+          ],
+          toRail: [4],
+        },
+        {
+          objects: [
+            { id: 5, kind: 'block', type: 'SR', instance: 'Latch', inputs: { SET1: ['=Full'], RESET: ['=Clear'] }, outputs: ['Q1'], assign: { Q1: 'Held' } },
+          ],
+        },
+      ],
+    );
+    const r = importPlcopen(xml);
+    if (!r.ok) throw new Error(JSON.stringify(r.errors));
+    expect(r.report.warnings.filter((w) => /not a pin/.test(w.message))).toEqual([]);
+    const { program, diagnostics } = compileProgram(r.project, { pou: r.project.pous[0]!.name });
+    if (!program) throw new Error(diagnostics.map((d) => d.message).join('\n'));
+    const plc = createPlc(program, { cycleMs: 10 });
+    const step = (pulse: boolean, clear: boolean) => {
+      plc.write('Pulse', pulse);
+      plc.write('Clear', clear);
+      plc.scan();
+      return [plc.read('Count'), plc.read('Full'), plc.read('Held')];
+    };
+    expect(step(true, false)).toEqual([1, false, false]);
+    step(false, false);
+    expect(step(true, false)).toEqual([2, true, true]);
+    // RESET (IEC R) clears the count; SR's RESET (IEC R) drops the latch.
+    expect(step(false, true)).toEqual([0, false, false]);
+
+    // The same names in an ST call.
+    const st = fixture(FILE).replace('<ST><xhtml xmlns="http://www.w3.org/1999/xhtml" /></ST>', '<ST><xhtml xmlns="http://www.w3.org/1999/xhtml">Latch(SET := Start, RESET1 := Stop);\nRunning := Latch.Q1;</xhtml></ST>').replace(/<addData><data name="http:\/\/www.3s-software.com\/plcopenxml\/cfc"[\s\S]*?<\/CFC><\/data><\/addData>/, '');
+    const r2 = importPlcopen(st);
+    if (!r2.ok) throw new Error(JSON.stringify(r2.errors));
+    const prg = r2.project.pous.find((p) => p.name === 'PLC_PRG')!;
+    expect(prg.language).toBe('ST');
+    const c2 = compileProgram(r2.project, { pou: 'PLC_PRG' });
+    if (!c2.program) throw new Error(c2.diagnostics.map((d) => d.message).join('\n'));
+    const plc2 = createPlc(c2.program, { cycleMs: 10 });
+    plc2.setInputs({ '%IX0.1': true, '%IX0.2': false });
+    plc2.scan();
+    expect(plc2.read('Running')).toBe(true);
+    plc2.setInputs({ '%IX0.1': true, '%IX0.2': true });
+    plc2.scan();
+    expect(plc2.read('Running')).toBe(false);
   });
 });
