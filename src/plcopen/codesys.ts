@@ -12,6 +12,7 @@
 import { blockSignature } from '../model/blocks';
 import { codesysUtilBlock, fitsPins, isCodesysUtilName } from '../model/codesysUtil';
 import type { Pou } from '../model/project';
+import { iecInputName } from '../model/vendorPins';
 import { child, childrenNamed, type XmlElement } from './xml/parse';
 
 export const CODESYS_DATA = 'http://www.3s-software.com/plcopenxml/';
@@ -132,4 +133,19 @@ export function utilNameClashes(
       if (foreign.length) out.push({ name: sig.name, pins: foreign, pou: pou.name, el: b });
     }
   return out;
+}
+
+/** The CODESYS input names of standard blocks these POUs wire (`CTU.RESET -> R`), in order of first use. */
+export function standardPinAliases(pous: readonly { readonly el: XmlElement }[]): string[] {
+  const seen = new Set<string>();
+  for (const { el } of pous)
+    for (const b of blocksOf(el)) {
+      const type = (b.attrs.typeName ?? '').trim().toUpperCase();
+      for (const v of childrenNamed(child(b, 'inputVariables') ?? b, 'variable')) {
+        const pin = v.attrs.formalParameter ?? '';
+        const iec = iecInputName(type, pin);
+        if (iec) seen.add(`${type}.${pin.toUpperCase()} as ${iec}`);
+      }
+    }
+  return [...seen];
 }

@@ -43,7 +43,7 @@ import {
   type XmlElement,
 } from './xml/parse';
 import { readDataTypes } from './dataTypes';
-import { applicationDataTypes, applicationPous, applicationResources, cfcOf, CODESYS_APPLICATION, CODESYS_OBJECT_ID, utilBlocksUsed, utilNameClashes } from './codesys';
+import { applicationDataTypes, applicationPous, applicationResources, cfcOf, CODESYS_APPLICATION, CODESYS_OBJECT_ID, standardPinAliases, utilBlocksUsed, utilNameClashes } from './codesys';
 import { blockSignature } from '../model/blocks';
 import { isCodesysUtilName } from '../model/codesysUtil';
 
@@ -295,6 +295,9 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       clash.el,
     );
   }
+  const aliases = standardPinAliases(heads);
+  if (aliases.length)
+    notes.push({ message: `inputs named as in CODESYS's Standard library read as the IEC pins: ${aliases.join(', ')} (export writes the IEC names)` });
   const withLibrary = [...heads.map((h) => h.pou), ...libraryPous];
   // Blocks of no known library become external blocks with the pins the file wires (issue 12 part 5).
   const external = unknownBlocks(heads, blockLibrary({ pous: withLibrary }));

@@ -291,6 +291,9 @@ IF Steps &gt;= 2 THEN State := E_STATE.DONE; END_IF;</xhtml></ST></body>
     const r = importPlcopen(xml);
     if (!r.ok) throw new Error(JSON.stringify(r.errors));
     expect(r.report.warnings.filter((w) => /not a pin/.test(w.message))).toEqual([]);
+    expect(r.report.notes.map((n) => n.message)).toContain(
+      "inputs named as in CODESYS's Standard library read as the IEC pins: CTU.RESET as R, SR.SET1 as S1, SR.RESET as R (export writes the IEC names)",
+    );
     const { program, diagnostics } = compileProgram(r.project, { pou: r.project.pous[0]!.name });
     if (!program) throw new Error(diagnostics.map((d) => d.message).join('\n'));
     const plc = createPlc(program, { cycleMs: 10 });
