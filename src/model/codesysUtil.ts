@@ -141,3 +141,8 @@ export function fitsPins(pou: Pou, pins: Iterable<string>): boolean {
   }
   return true;
 }
+
+/** The language a POU's body is written in, as its author calls it: CFC for a CODESYS CFC body kept as FBD. */
+export function bodyLanguage(pou: Pou): string {
+  return pou.language === 'FBD' && pou.source?.trimStart().startsWith('<CFC') ? 'CFC' : pou.language;
+}

@@ -8,6 +8,7 @@ import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { fixture, imported } from './fixtures';
 import { ldXml } from './ldXml';
+import { pouCountText, pouToOpen } from '../../src/plcopen/importSummary';
 
 const FILE = 'codesys-v3-application.xml';
 
@@ -44,6 +45,12 @@ describe('a CODESYS V3 application export', () => {
     expect(report.warnings.some((w) => /objectid/.test(w.message))).toBe(false);
     expect(report.notes).toContainEqual(expect.objectContaining({ message: expect.stringMatching(/^2 CODESYS object ids .* dropped/) }));
     expect(project.externalBlocks?.map((b) => b.name)).toEqual(['RAMP_INT']);
+  });
+
+  test('the import report counts the CFC body as CFC and the Util blocks as library, and opens the LD program the task runs', () => {
+    const { project } = imported(FILE);
+    expect(pouCountText(project)).toBe('4 POUs (1 LD, 1 CFC, 2 library)');
+    expect(project.pous.find((p) => p.id === pouToOpen(project))?.name).toBe('LampLogic');
   });
 
   test('BIT members of a structure are BOOLs: no type errors, only the CFC body is refused by check', () => {
