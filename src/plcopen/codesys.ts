@@ -72,10 +72,13 @@ export function unqualifiedType(name: string): string {
   return m ? m[1]! : name;
 }
 
+/** Where blocks sit: bodies (a CFC one in addData), SFC actions and transitions; never inside a block. */
+const HOLDERS = new Set(['body', 'LD', 'FBD', 'SFC', 'CFC', 'addData', 'data', 'actions', 'action', 'transitions', 'transition', 'inline']);
+
 function* blocksOf(el: XmlElement): Generator<XmlElement> {
   for (const c of el.children) {
     if (c.name === 'block') yield c;
-    else if (c.children.length) yield* blocksOf(c);
+    else if (HOLDERS.has(c.name)) yield* blocksOf(c);
   }
 }
 
