@@ -41,16 +41,19 @@ function scanCycle(program: CompiledProgram, cycle: string | undefined, taskMs: 
   return s.tickMs;
 }
 
+/** False for a body the simulator does not run (FBD kept as FBD, CODESYS CFC): a task's other program runs. */
+const runs = (pou: Project['pous'][number]): boolean => pou.language !== 'FBD';
+
 function programName(project: Project, wanted: string | undefined): string {
   if (wanted) return wanted;
   for (const t of project.tasks)
     for (const p of t.programs) {
       const pou = project.pous.find(
-        (x) => x.name.toUpperCase() === p.pou.toUpperCase() && x.kind === 'PROGRAM',
+        (x) => x.name.toUpperCase() === p.pou.toUpperCase() && x.kind === 'PROGRAM' && runs(x),
       );
       if (pou) return pou.name;
     }
-  const first = project.pous.find((p) => p.kind === 'PROGRAM');
+  const first = project.pous.find((p) => p.kind === 'PROGRAM' && runs(p)) ?? project.pous.find((p) => p.kind === 'PROGRAM');
   if (!first) throw new UsageError('the project has no PROGRAM to simulate');
   return first.name;
 }

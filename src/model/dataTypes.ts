@@ -560,6 +560,9 @@ export function checkDataTypes(project: Pick<Project, 'dataTypes' | 'pous'>): { 
 /** The index of an enum value text (`GREEN` or `Color#GREEN`) in a leaf's values, 1-based (0: not one). */
 export function enumIndexOf(leaf: { readonly enumValues?: readonly string[]; readonly typeName: string }, text: string): number {
   const t = text.trim().toUpperCase();
+  // CODESYS qualifies an enum value with a dot: E_STATE.IDLE is E_STATE#IDLE.
+  const type = leaf.typeName.toUpperCase();
+  if (t.startsWith(`${type}.`)) return enumIndexOf(leaf, `${type}#${t.slice(type.length + 1)}`);
   const hash = t.indexOf('#');
   if (hash >= 0 && t.slice(0, hash) !== leaf.typeName.toUpperCase()) return 0;
   const name = hash >= 0 ? t.slice(hash + 1) : t;

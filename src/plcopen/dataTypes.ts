@@ -12,6 +12,7 @@
 import { anonymousText, anonymousType, elementaryOf, formatInitial, parseDims, parseInitial, type InitValue } from '../model/dataTypes';
 import type { DataType, DataTypeDef } from '../model/project';
 import { child, childrenNamed, deepText, type XmlElement } from './xml/parse';
+import { unqualifiedType } from './codesys';
 import type { XmlWriter } from './xml/write';
 
 export type Warn = (message: string, el?: XmlElement) => void;
@@ -29,7 +30,12 @@ class Unsupported extends Error {
 
 /** The type text of a type element (`<INT/>`, `<derived name=".."/>`, `<string length="20"/>`, `<array>`). */
 function typeTextOf(t: XmlElement): string {
-  if (t.name === 'derived') return t.attrs.name ?? 'BOOL';
+  if (t.name === 'derived') {
+    const name = unqualifiedType(t.attrs.name ?? 'BOOL');
+    // CODESYS writes REFERENCE TO / POINTER TO as a derived type name.
+    if (/^(REFERENCE|POINTER)\s+TO\s/i.test(name.trim())) throw new Unsupported(`a ${name.trim()} member is not supported`, t);
+    return name;
+  }
   if (STRING_TYPES[t.name]) return t.attrs.length ? `${STRING_TYPES[t.name]!}[${t.attrs.length}]` : STRING_TYPES[t.name]!;
   if (t.name === 'array') {
     const dims = childrenNamed(t, 'dimension').map((d) => `${d.attrs.lower ?? '0'}..${d.attrs.upper ?? '0'}`);
@@ -130,10 +136,16 @@ function defOf(base: XmlElement): DataTypeDef {
  * The data types of `<types><dataTypes>`. Those Rungsmith cannot read come back in `raw` (their
  * XML, written back unchanged on export) after a warning.
  */
-export function readDataTypes(dataTypes: XmlElement | undefined, warn: Warn, raw: (el: XmlElement) => string): { types: DataType[]; raw: string[] } {
+export function readDataTypes(
+  dataTypes: XmlElement | undefined,
+  warn: Warn,
+  raw: (el: XmlElement) => string,
+  /** `<dataType>` elements found elsewhere (CODESYS: the application's, in the resource's addData). */
+  more: readonly XmlElement[] = [],
+): { types: DataType[]; raw: string[] } {
   const types: DataType[] = [];
   const kept: string[] = [];
-  for (const dt of dataTypes ? childrenNamed(dataTypes, 'dataType') : []) {
+  for (const dt of [...(dataTypes ? childrenNamed(dataTypes, 'dataType') : []), ...more]) {
     const base = child(dt, 'baseType')?.children[0];
     try {
       if (!base) throw new Unsupported('it has no base type', dt);

@@ -3,6 +3,7 @@ import type { Task, VarClass, Variable } from '../model/project';
 import { parseInterval } from './durations';
 import { readTypeText, readValueText } from './dataTypes';
 import { RS_VARIABLE } from './types';
+import { unqualifiedType } from './codesys';
 import { child, childrenNamed, deepText, type XmlElement } from './xml/parse';
 
 export type Warn = (message: string, el?: XmlElement) => void;
@@ -27,7 +28,14 @@ const TYPE_ALIASES: Record<string, string> = { string: 'STRING', wstring: 'WSTRI
 export function readType(typeEl: XmlElement | undefined, warn: Warn): string {
   const t = typeEl?.children[0];
   if (!t) return 'BOOL';
-  if (t.name === 'derived') return t.attrs.name ?? 'BOOL';
+  if (t.name === 'derived') {
+    const name = unqualifiedType(t.attrs.name ?? 'BOOL');
+    const indirect = INDIRECT.exec(name.trim());
+    if (!indirect) return name;
+    // CODESYS writes REFERENCE TO / POINTER TO as a derived type name.
+    warn(`a ${indirect[1]!.toUpperCase()} TO type is not supported by Rungsmith; the variable keeps the name of its base type ${indirect[2]!.trim()}`, t);
+    return indirect[2]!.trim();
+  }
   // <string length="20"/>: STRING[20] (the declared length; values hold up to 126 characters).
   if (TYPE_ALIASES[t.name]) return t.attrs.length ? `${TYPE_ALIASES[t.name]!}[${t.attrs.length}]` : TYPE_ALIASES[t.name]!;
   if (ANONYMOUS.has(t.name)) {
@@ -41,6 +49,9 @@ export function readType(typeEl: XmlElement | undefined, warn: Warn): string {
   }
   return t.name.toUpperCase();
 }
+
+/** `REFERENCE TO T`, `POINTER TO T` (CODESYS writes them as derived type names). */
+export const INDIRECT = /^(REFERENCE|POINTER)\s+TO\s+(.+)$/i;
 
 const ANONYMOUS = new Set(['array', 'struct', 'enum', 'subrangeSigned', 'subrangeUnsigned']);
 
@@ -106,7 +117,14 @@ export interface InstancesResult {
 }
 
 /** Tasks and global variables from `instances/configurations`. */
-export function readInstances(instances: XmlElement | undefined, warn: Warn): InstancesResult {
+export function readInstances(
+  instances: XmlElement | undefined,
+  warn: Warn,
+  /** The file's PROGRAMs (upper case): CODESYS names a task's program in `name`, `typeName` empty. */
+  programNames: ReadonlySet<string> = new Set(),
+  /** Resources outside `configurations` (CODESYS: `project/addData/data[.../application]/resource`). */
+  more: readonly XmlElement[] = [],
+): InstancesResult {
   const tasks: Task[] = [];
   const globals: Variable[] = [];
   let configuration: string | undefined;
@@ -115,45 +133,52 @@ export function readInstances(instances: XmlElement | undefined, warn: Warn): In
   const configs = instances
     ? childrenNamed(child(instances, 'configurations') ?? instances, 'configuration')
     : [];
+  const readResource = (res: XmlElement) => {
+    resource ??= res.attrs.name;
+    for (const t of childrenNamed(res, 'task')) {
+      // An event task (single="StartPulse") runs on its trigger; its interval, if any, only
+      // counts in the common tick (MATIEC), so none given is 0.
+      const single = t.attrs.single?.trim() || undefined;
+      let cycleMs = single ? 0 : 10;
+      const interval = t.attrs.interval;
+      if (interval) {
+        const ms = parseInterval(interval);
+        if (ms === undefined || ms <= 0)
+          warn(`task ${t.attrs.name}: interval "${interval}" is not a duration; using ${single ? 'none' : '10 ms'}`, t);
+        else cycleMs = ms;
+      } else if (!single) warn(`task ${t.attrs.name} has neither an interval nor a trigger (single); it runs every 10 ms`, t);
+      if (single) triggers.push({ el: t, single });
+      const programs = childrenNamed(t, 'pouInstance')
+        .map((pi) => {
+          const instance = pi.attrs.name ?? '';
+          const named = pi.attrs.typeName || pi.attrs.type || '';
+          return { instance, pou: named || (programNames.has(instance.toUpperCase()) ? instance : '') };
+        })
+        .filter((p) => {
+          if (!p.pou)
+            warn(`task ${t.attrs.name}: program instance "${p.instance}" names no POU; dropped`, t);
+          return p.pou && p.instance;
+        });
+      const priority = Number.parseInt(t.attrs.priority ?? '0', 10);
+      tasks.push({
+        name: t.attrs.name ?? `task${tasks.length}`,
+        cycleMs,
+        ...(single ? { single } : {}),
+        priority: Number.isFinite(priority) ? priority : 0,
+        programs,
+      });
+    }
+    for (const pi of childrenNamed(res, 'pouInstance'))
+      warn(`program instance "${pi.attrs.name}" is not attached to a task; it is not run`, pi);
+    for (const v of readVarLists(res, warn, ['globalVars'])) globals.push({ ...v, scope: 'resource' });
+  };
   for (const conf of configs) {
     configuration ??= conf.attrs.name;
     globals.push(...readVarLists(conf, warn, ['globalVars']));
-    for (const res of childrenNamed(conf, 'resource')) {
-      resource ??= res.attrs.name;
-      for (const t of childrenNamed(res, 'task')) {
-        // An event task (single="StartPulse") runs on its trigger; its interval, if any, only
-        // counts in the common tick (MATIEC), so none given is 0.
-        const single = t.attrs.single?.trim() || undefined;
-        let cycleMs = single ? 0 : 10;
-        const interval = t.attrs.interval;
-        if (interval) {
-          const ms = parseInterval(interval);
-          if (ms === undefined || ms <= 0)
-            warn(`task ${t.attrs.name}: interval "${interval}" is not a duration; using ${single ? 'none' : '10 ms'}`, t);
-          else cycleMs = ms;
-        } else if (!single) warn(`task ${t.attrs.name} has neither an interval nor a trigger (single); it runs every 10 ms`, t);
-        if (single) triggers.push({ el: t, single });
-        const programs = childrenNamed(t, 'pouInstance')
-          .map((pi) => ({ instance: pi.attrs.name ?? '', pou: pi.attrs.typeName || pi.attrs.type || '' }))
-          .filter((p) => {
-            if (!p.pou)
-              warn(`task ${t.attrs.name}: program instance "${p.instance}" names no POU; dropped`, t);
-            return p.pou && p.instance;
-          });
-        const priority = Number.parseInt(t.attrs.priority ?? '0', 10);
-        tasks.push({
-          name: t.attrs.name ?? `task${tasks.length}`,
-          cycleMs,
-          ...(single ? { single } : {}),
-          priority: Number.isFinite(priority) ? priority : 0,
-          programs,
-        });
-      }
-      for (const pi of childrenNamed(res, 'pouInstance'))
-        warn(`program instance "${pi.attrs.name}" is not attached to a task; it is not run`, pi);
-      for (const v of readVarLists(res, warn, ['globalVars'])) globals.push({ ...v, scope: 'resource' });
-    }
+    for (const res of childrenNamed(conf, 'resource')) readResource(res);
   }
+  // CODESYS's export of an application alone: its resource in the project's addData.
+  for (const res of more) readResource(res);
   for (const { el, single } of triggers) {
     const g = globals.find((v) => v.name.toUpperCase() === single.toUpperCase());
     if (!g || g.type.trim().toUpperCase() !== 'BOOL')

@@ -43,6 +43,9 @@ import {
   type XmlElement,
 } from './xml/parse';
 import { readDataTypes } from './dataTypes';
+import { applicationDataTypes, applicationPous, applicationResources, cfcOf, CODESYS_APPLICATION, CODESYS_OBJECT_ID, standardPinAliases, utilBlocksUsed, utilNameClashes } from './codesys';
+import { blockSignature } from '../model/blocks';
+import { isCodesysUtilName } from '../model/codesysUtil';
 
 const KIND: Record<string, PouKind> = {
   program: 'PROGRAM',
@@ -163,11 +166,14 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
 
   const keepProject: { addData: string[]; dataTypes: string[] } = { addData: [], dataTypes: [] };
   // User data types (dataTypes.ts); the ones Rungsmith cannot read are kept raw for export.
-  const userTypes = readDataTypes(child(types, 'dataTypes'), warn, raw);
+  const userTypes = readDataTypes(child(types, 'dataTypes'), warn, raw, applicationDataTypes(root));
   keepProject.dataTypes.push(...userTypes.raw);
   const pous: Pou[] = [];
   const reportPous: { name: string; networks: number; from: string }[] = [];
-  const pouEls = childrenNamed(child(types, 'pous') ?? types, 'pou');
+  // CODESYS writes the application's POUs in the resource's addData (codesys.ts).
+  const pouEls = [...childrenNamed(child(types, 'pous') ?? types, 'pou'), ...applicationPous(root)];
+  /** CODESYS object ids dropped (one note for all of them). */
+  let objectIds = 0;
 
   /**
    * Imports an LD (or FBD) body. `quiet` collects the findings instead of reporting them (an FBD
@@ -243,7 +249,8 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
         });
     const returnType = kind === 'FUNCTION' ? readType(child(iface ?? pouEl, 'returnType'), warn) : undefined;
     const body = child(pouEl, 'body');
-    const lang = body?.children.find((c) => LANGUAGES.includes(c.name));
+    // A CODESYS CFC body: an empty ST body with the graph in its addData.
+    const lang = cfcOf(body) ?? body?.children.find((c) => LANGUAGES.includes(c.name));
     if (!lang)
       throw new ImportFailure({
         ...at(pouEl),
@@ -254,28 +261,54 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     const addData = child(pouEl, 'addData');
     const pouData = addData ? childrenNamed(addData, 'data') : [];
     for (const d of pouData)
-      if (d.attrs.handleUnknown === 'discard')
-        warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
+      if (d.attrs.handleUnknown === 'discard') {
+        if (d.attrs.name === CODESYS_OBJECT_ID) objectIds++;
+        else warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
+      }
     const pou: Pou = {
       id: newId<'PouId'>('p') as PouId,
       name,
       kind,
       ...(returnType ? { returnType } : {}),
-      language: lang.name as PouLanguage,
+      // A CFC body is kept like an FBD body that does not convert (its source says CFC).
+      language: (lang.name === 'CFC' ? 'FBD' : lang.name) as PouLanguage,
       comment: doc ? deepText(doc).trim() : '',
       variables,
       networks: [],
     };
     return { el: pouEl, lang, pou, addData: pouData.filter((d) => d.attrs.handleUnknown !== 'discard').map(raw) };
   });
+  // Blocks of CODESYS's Util library that the simulator runs (model/codesysUtil.ts): library POUs.
+  const utilUsed = utilBlocksUsed(heads);
+  const libraryPous = utilUsed.map((u) => u.pou);
+  for (const { pou: p, firstUse } of utilUsed) {
+    currentPou = firstUse.pou;
+    warn(
+      `${p.name} is a block of CODESYS's Util library that the file calls without declaring it: added as a library POU (ST, read-only, not exported) that runs CODESYS's documented behaviour`,
+      firstUse.el,
+    );
+  }
+  for (const clash of utilNameClashes(heads)) {
+    currentPou = clash.pou;
+    warn(
+      `${clash.name} is called with pins of CODESYS Util's ${clash.name} (${clash.pins.join(', ')}); Rungsmith's ${clash.name} is the annex F block of OpenPLC's library (${describePins(clash.name)}), and Util's ${clash.name} is not supported: the wires of those pins are dropped and the call does not do what it does in CODESYS`,
+      clash.el,
+    );
+  }
+  const aliases = standardPinAliases(heads);
+  if (aliases.length)
+    notes.push({ message: `inputs named as in CODESYS's Standard library read as the IEC pins: ${aliases.join(', ')} (export writes the IEC names)` });
+  const withLibrary = [...heads.map((h) => h.pou), ...libraryPous];
   // Blocks of no known library become external blocks with the pins the file wires (issue 12 part 5).
-  const external = unknownBlocks(heads, blockLibrary({ pous: heads.map((h) => h.pou) }));
+  const external = unknownBlocks(heads, blockLibrary({ pous: withLibrary }));
   const externalBlocks = external.blocks;
-  const library = blockLibrary({ pous: heads.map((h) => h.pou), externalBlocks });
+  const library = blockLibrary({ pous: withLibrary, externalBlocks });
   externalBlocks.forEach((b, i) => {
     currentPou = external.firstUse[i]!.pou;
     warn(
-      `block type ${b.name} is neither a standard block, nor a POU of this file, nor a block of a known vendor library: imported as an external block with the pins the file wires (${b.pins.map((p) => p.name).join(', ') || 'none'}); it is not simulated, its outputs hold their initial values`,
+      isCodesysUtilName(b.name)
+        ? `block type ${b.name} is a block of CODESYS's Util library that Rungsmith does not run: imported as an external block with the pins the file wires (${b.pins.map((p) => p.name).join(', ') || 'none'}); it is not simulated, its outputs hold their initial values`
+        : `block type ${b.name} is neither a standard block, nor a POU of this file, nor a block of a known vendor library: imported as an external block with the pins the file wires (${b.pins.map((p) => p.name).join(', ') || 'none'}); it is not simulated, its outputs hold their initial values`,
       external.firstUse[i]!.el,
     );
   });
@@ -354,7 +387,9 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       pous.push(withKeep(pou, keep));
       if (keep.pou)
         warn(
-          lang.name === 'FBD'
+          lang.name === 'CFC'
+            ? `POU "${name}" is written in CFC (CODESYS): its interface can be called from LD and it is kept unchanged for export, but Rungsmith does not run CFC: its calls cannot run${head.kind === 'PROGRAM' ? ', and a task that runs it runs its other programs without it' : ''}`
+            : lang.name === 'FBD'
             ? `POU "${name}" is written in FBD: its interface can be called from LD and it is kept unchanged for export, but Rungsmith cannot run it (read as LD, ${fbdKept ?? 'its body cannot be read as a graph'}): its calls cannot run`
             : upgraded
               ? `POU "${name}" is written in SFC in the legacy v1.0 format: read as v2.01 (the same chart), Rungsmith runs it and exports it in v2.01, but shows it read-only (the editor edits LD)`
@@ -370,16 +405,25 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     // The LD of SFC actions and transitions stays inside the chart (Pou.sfc), which runs it.
   }
   currentPou = undefined;
+  pous.push(...libraryPous);
   for (const holder of [root, contentHeader]) {
     const add = holder ? child(holder, 'addData') : undefined;
     for (const d of add ? childrenNamed(add, 'data') : []) {
-      if (d.attrs.name === PROFILE_DATA_NAME) continue;
+      // Read as the project (codesys.ts), not kept: export writes it as the project's own content.
+      if (d.attrs.name === PROFILE_DATA_NAME || (holder === root && d.attrs.name === CODESYS_APPLICATION)) continue;
       else if (d.attrs.handleUnknown === 'discard')
         warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
       else keepProject.addData.push(raw(d));
     }
   }
-  const inst = readInstances(child(root, 'instances'), warn);
+  if (objectIds)
+    notes.push({ message: `${objectIds} CODESYS object id${objectIds > 1 ? 's' : ''} (addData "${CODESYS_OBJECT_ID}", handleUnknown="discard") dropped: CODESYS gives the objects new ids when the file is imported again` });
+  const inst = readInstances(
+    child(root, 'instances'),
+    warn,
+    new Set(pous.filter((p) => p.kind === 'PROGRAM').map((p) => p.name.toUpperCase())),
+    applicationResources(root),
+  );
   // A VAR_EXTERNAL names a global of the configuration or a resource (IEC 61131-3 2.4.1.2).
   const globalTypes = new Map(inst.globals.map((g) => [g.name.toUpperCase(), g]));
   for (const x of externals) {
@@ -441,4 +485,10 @@ function rawElement(text: string, el: XmlElement): string {
   const indent = /^[ \t]*$/.test(lead) ? lead.length : 0;
   const lines = text.slice(el.offset, el.end).replace(/\r\n?/g, '\n').split('\n');
   return lines.map((l, i) => (i === 0 ? l : l.replace(new RegExp(`^[ \\t]{0,${indent}}`), ''))).join('\n');
+}
+
+/** The pins of a standard block as `XIN1, XIN2, EPS -> Q`. */
+function describePins(name: string): string {
+  const sig = blockSignature(name);
+  return sig ? `${sig.inputs.map((p) => p.name).join(', ')} -> ${sig.outputs.map((p) => p.name).join(', ')}` : '';
 }

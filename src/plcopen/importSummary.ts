@@ -2,6 +2,7 @@
 // configuration's resource runs, not the first POU of the file, which is often a function) and how
 // many POUs there are in each body language (an ST function is not an "LD POU").
 import type { PouId } from '../model/ids';
+import { bodyLanguage, libraryInfo } from '../model/codesysUtil';
 import { POU_LANGUAGES, type Project } from '../model/project';
 
 /**
@@ -11,11 +12,13 @@ import { POU_LANGUAGES, type Project } from '../model/project';
  */
 export function pouToOpen(project: Project): PouId | undefined {
   const byName = (name: string) => project.pous.find((p) => p.name.toUpperCase() === name.trim().toUpperCase());
-  for (const task of project.tasks)
-    for (const inst of task.programs) {
-      const pou = byName(inst.pou);
-      if (pou) return pou.id;
-    }
+  // A program whose body the simulator runs first (a CODESYS task runs a CFC PLC_PRG beside an LD program).
+  for (const runs of [true, false])
+    for (const task of project.tasks)
+      for (const inst of task.programs) {
+        const pou = byName(inst.pou);
+        if (pou && (!runs || pou.language !== 'FBD')) return pou.id;
+      }
   return (
     project.pous.find((p) => p.kind === 'PROGRAM')?.id ??
     project.pous.find((p) => p.language === 'LD')?.id ??
@@ -23,12 +26,17 @@ export function pouToOpen(project: Project): PouId | undefined {
   );
 }
 
-/** "1 POU (LD)", "7 POUs (3 LD, 2 ST, 1 SFC, 1 FBD)": POUs counted by their body language. */
+/**
+ * "1 POU (LD)", "7 POUs (3 LD, 2 ST, 1 SFC, 1 FBD)": POUs counted by their body language (a
+ * CODESYS CFC body as CFC); blocks of a vendor library the import added count as "library".
+ */
 export function pouCountText(project: Project): string {
   const n = project.pous.length;
-  const counts = POU_LANGUAGES.map((lang) => [lang, project.pous.filter((p) => p.language === lang).length] as const).filter(
-    ([, k]) => k > 0,
-  );
+  const own = project.pous.filter((p) => !libraryInfo(p));
+  const counts = [...POU_LANGUAGES, 'CFC']
+    .map((lang) => [lang, own.filter((p) => bodyLanguage(p) === lang).length] as const)
+    .concat([['library', n - own.length] as const])
+    .filter(([, k]) => k > 0);
   const head = `${n} POU${n === 1 ? '' : 's'}`;
   if (!counts.length) return head;
   if (counts.length === 1) return `${head} (${counts[0]![0]})`;

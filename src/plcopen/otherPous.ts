@@ -5,7 +5,9 @@
 // (interface from the variables, body from `source`, SFC actions and transitions as read).
 import type { Pou } from '../model/project';
 import { writeType, writeVarLists } from './exportInterface';
-import { preserved, type PreservedPou } from './types';
+import { preserved, XHTML_NS, type PreservedPou } from './types';
+import { libraryInfo } from '../model/codesysUtil';
+import { CODESYS_CFC } from './codesys';
 import type { XmlWriter } from './xml/write';
 
 const POU_TYPE = { PROGRAM: 'program', FUNCTION_BLOCK: 'functionBlock', FUNCTION: 'function' } as const;
@@ -25,6 +27,8 @@ export function writeInterface(w: XmlWriter, pou: Pou, retainedByCoil: ReadonlyS
 
 /** Writes a POU that is not in LD (see the file comment). */
 export function writeOtherPou(w: XmlWriter, pou: Pou): void {
+  // A block of a vendor library the import added (CODESYS Util): the vendor's tool brings its own.
+  if (libraryInfo(pou)) return;
   const keep = preserved<PreservedPou>(pou.extensions);
   if (keep?.pou && keep.fingerprint === pouFingerprint(pou)) {
     w.raw(keep.pou);
@@ -38,6 +42,11 @@ export function writeOtherPou(w: XmlWriter, pou: Pou): void {
       const source = pou.source ?? '';
       if (pou.language === 'ST' || pou.language === 'IL') w.formatted(pou.language, source);
       else if (!keep?.legacyBody && source.trim().startsWith(`<${pou.language}`)) w.raw(source);
+      else if (source.trim().startsWith('<CFC')) {
+        // CODESYS's shape: an empty ST body, the CFC graph in its addData (codesys.ts).
+        w.open('ST', undefined, () => w.empty('xhtml', { xmlns: XHTML_NS }));
+        w.open('addData', undefined, () => w.open('data', { name: CODESYS_CFC, handleUnknown: 'implementation' }, () => w.raw(source)));
+      }
       else w.empty(pou.language);
     });
     if (keep?.addData?.length) w.open('addData', undefined, () => keep.addData!.forEach((d) => w.raw(d)));

@@ -197,6 +197,12 @@ export function readSfcChart(pouEl: XmlElement, sfc: XmlElement, library: BlockL
       return code;
     }
     const wires = cond && child(cond, 'connectionPointIn');
+    // A condition wired straight from a variable (CODESYS writes every transition so): its
+    // expression is ST, `T1 > T#7S OR Step4.t > T2` as much as a name.
+    const only = wires ? childrenNamed(wires, 'connection') : [];
+    const source = only.length === 1 ? byId.get(num(only[0]!.attrs.refLocalId) ?? -1) : undefined;
+    const expression = source?.name === 'inVariable' ? child(source, 'expression')?.text.trim() : undefined;
+    if (expression) return { language: 'ST', text: expression };
     if (wires) {
       const result = `_SFC_C${id}`;
       return placed(graphicCondition(wires, byId, result, `the condition of transition ${id}`), result);

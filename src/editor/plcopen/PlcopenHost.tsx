@@ -13,6 +13,7 @@ import { ExportReviewDialog } from './ExportReviewDialog';
 import { openImported, readImportFile } from './plcopenActions';
 import { plcopenUi } from './plcopenUi';
 import { pouCountText, pouToOpen } from '../../plcopen/importSummary';
+import { bodyLanguage, libraryInfo } from '../../model/codesysUtil';
 import './plcopen.css';
 
 export function PlcopenHost() {
@@ -101,8 +102,8 @@ function ImportReportDialog() {
             {project.pous.map((p) => (
               <option key={p.id} value={p.id}>
                 {`${p.name} (${p.kind.toLowerCase().replace('_', ' ')}, ${
-                  p.language === 'LD' ? `${p.networks.length} network${p.networks.length === 1 ? '' : 's'}` : p.language
-                })`}
+                  p.language === 'LD' ? `${p.networks.length} network${p.networks.length === 1 ? '' : 's'}` : bodyLanguage(p)
+                }${libraryInfo(p) ? `, ${libraryInfo(p)!.vendor} ${libraryInfo(p)!.library} library` : ''})`}
               </option>
             ))}
           </select>

@@ -1,4 +1,5 @@
 // The open POU's properties: kind, a FUNCTION's return type, comment and language.
+import { bodyLanguage } from '../../model/codesysUtil';
 import { ELEMENTARY_TYPES } from '../../model/iecTypes';
 import type { Pou, PouKind } from '../../model/project';
 import { useDocumentStore } from '../../store/documentStore';
@@ -58,8 +59,8 @@ export function PouProperties({ pou }: { readonly pou: Pou }) {
         />
       </div>
       <p className="rs-tree-detail">
-        Language {pou.language}
-        {pou.language === 'LD' ? '' : pou.language === 'FBD' ? ' (read-only; FBD bodies are not run: LD-E51)' : ' (runs; read-only: the editor edits LD only)'}
+        Language {bodyLanguage(pou)}
+        {pou.language === 'LD' ? '' : pou.language === 'FBD' ? ` (read-only; ${bodyLanguage(pou)} bodies are not run: LD-E51)` : ' (runs; read-only: the editor edits LD only)'}
       </p>
     </div>
   );

@@ -132,6 +132,13 @@ export function declareDataTyped(
     r.error('LD-E15', `${what} has the type "${decl.type}", a function block the simulator cannot instantiate here`);
     return undefined;
   }
+  // An array of FB instances (ARRAY[1..8] OF TON, common in CODESYS projects): not instantiated.
+  const fbArray = (s: TypeShape): boolean =>
+    s.kind === 'array' ? s.of.kind === 'fb' || fbArray(s.of) : s.kind === 'struct' ? s.members.some((m) => m.type.kind !== 'fb' && fbArray(m.type)) : false;
+  if (fbArray(shape)) {
+    r.error('LD-E15', `${what} has the type "${decl.type}", an array of function block instances, which the simulator does not support`);
+    return undefined;
+  }
   const single = shape.kind === 'elementary' || shape.kind === 'enum' || shape.kind === 'subrange';
   const values: Value[] = [];
   let failed = false;

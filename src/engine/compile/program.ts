@@ -103,6 +103,15 @@ export function assembleProgram(
         );
         continue;
       }
+      if (pou.language === 'FBD') {
+        // A body the simulator does not run (FBD kept as FBD, CODESYS CFC): the task's other
+        // programs run without it, and the run says so.
+        r.warning(
+          'LD-W51',
+          `the program instance ${inst.instance} runs ${pou.name}, written in ${pou.source?.trimStart().startsWith('<CFC') ? 'CFC' : 'FBD'}, which the simulator does not run: the configuration runs without it`,
+        );
+        continue;
+      }
       if (seen.has(inst.instance.toUpperCase()) || root.lookup(inst.instance)) {
         r.error('LD-E20', `the program instance name ${inst.instance} is used twice (or is a global's name)`);
         continue;
@@ -111,6 +120,8 @@ export function assembleProgram(
       if (!roots.includes(pou)) roots.push(pou);
       bound.push({ name: inst.instance, pou, task: inst.task });
     }
+    if (!bound.length && !diagnostics.some((d) => d.severity === 'error'))
+      r.error('LD-E20', 'no task runs a program the simulator can run (LD, ST, IL or SFC)');
     const rates = taskSchedule(project.tasks);
     const triggers = taskTriggers(root, rates, r);
     if (diagnostics.some((d) => d.severity === 'error') || !triggers) return { diagnostics };

@@ -45,7 +45,7 @@ export function refuseBody(project: Project, pou: Pou, profile: Profile, symbols
   const ctx = newPouContext(project, pou, profile, symbols, new Map(), place);
   new Reporter(out, pou.name, -1).error(
     'LD-E51',
-    `the ${pou.kind === 'FUNCTION' ? 'function' : pou.kind === 'FUNCTION_BLOCK' ? 'function block' : 'program'} ${pou.name} is written in ${pou.language}, which the simulator does not run; its calls cannot run (redraw it in LD, or write it in ST)`,
+    `the ${pou.kind === 'FUNCTION' ? 'function' : pou.kind === 'FUNCTION_BLOCK' ? 'function block' : 'program'} ${pou.name} is written in ${pou.source?.trimStart().startsWith('<CFC') ? 'CFC' : pou.language}, which the simulator does not run; its calls cannot run (redraw it in LD, or write it in ST)`,
   );
   return { ctx, networks: [], ok: false };
 }

@@ -5,6 +5,7 @@
 // variable's type, anything else needs an explicit conversion (INT_TO_REAL), as MATIEC requires.
 // Struct members, array elements and enum values: places.ts; the scope, errors and describe:
 // checkScope.ts.
+import { iecInputName } from '../../model/vendorPins';
 import { blockSignature } from '../../model/blocks';
 import { isElementaryType, type ElementaryType, type Value } from '../../model/iecTypes';
 import type { Pou } from '../../model/project';
@@ -228,7 +229,8 @@ export class StChecker {
     const outs: { pin: string; type: ElementaryType; dst: Access; negated?: boolean }[] = [];
     for (const a of args) {
       if (!a.name) throw new Fail(a.pos, `the inputs of ${fb.type} "${fb.name}" are given by name, like ${sig.inputs[0]?.name ?? 'IN'} := value`);
-      const pinName = a.name.toUpperCase();
+      // CODESYS's names of the IEC inputs (SR.SET1 is S1, CTU.RESET is R: model/vendorPins.ts).
+      const pinName = (a.out ? undefined : iecInputName(fb.type, a.name)) ?? a.name.toUpperCase();
       if (a.out) {
         const pin = sig.outputs.find((p) => p.name === pinName);
         if (!pin) throw new Fail(a.pos, `${fb.type} has no output ${a.name} (outputs: ${sig.outputs.map((p) => p.name).join(', ')})`);

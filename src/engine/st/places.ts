@@ -96,6 +96,12 @@ export class Places {
 
   /** The index of an enum value written `Color#RED` or bare `RED` (when no variable has the name). */
   enumValue(e: Expr): number | undefined {
+    // CODESYS qualifies an enum value with a dot: E_STATE.IDLE, when E_STATE is no variable.
+    const dotted = e.k === 'name' ? /^([A-Za-z_]\w*)\.([A-Za-z_]\w*)$/.exec(e.text) : null;
+    if (dotted && !this.symbols.lookup(dotted[1]!)) {
+      const r = resolveType(this.symbols.storage.types, dotted[1]!);
+      if (r.ok && r.shape.kind === 'enum') return this.enumValue({ k: 'lit', text: `${dotted[1]!}#${dotted[2]!}`, pos: e.pos });
+    }
     if (e.k === 'lit') {
       const m = ENUM_LITERAL.exec(e.text);
       if (!m) return undefined;
