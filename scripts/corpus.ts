@@ -32,6 +32,7 @@ const { values: opt, positionals } = parseArgs({
   allowPositionals: true,
   options: {
     oracle: { type: 'string', default: '/tmp/oracle' },
+    'oracle-bin': { type: 'string' },
     out: { type: 'string' },
     json: { type: 'string' },
     cache: { type: 'string' },
@@ -46,6 +47,8 @@ if (!dir) {
   process.exit(2);
 }
 const oracle = resolve(opt.oracle!);
+// The scripts (run_oracle.py, compare.py); --oracle-bin runs a patched copy against the same build.
+const oracleBin = resolve(opt['oracle-bin'] ?? join(oracle, 'bin'));
 const cacheDir = resolve(opt.cache ?? join(dirname(resolve(dir)), 'cache'));
 mkdirSync(join(cacheDir, 'work'), { recursive: true });
 
@@ -146,6 +149,13 @@ function watchOf(pou: Pou, inputs: Set<string>, isWritten: (n: string) => boolea
     if (!isElementaryType(t) || t === 'STRING' || t === 'WSTRING' || v.constant) continue;
     if (!ld || isWritten(v.name) || /^%[QM]/i.test(v.location ?? '')) out.push(v.name);
   }
+  if (out.length) return out;
+  // Nothing written that the program declares (e.g. an FBD body read as LD): every other variable.
+  for (const v of pou.variables) {
+    const t = v.type.toUpperCase();
+    if (inputs.has(v.name.toUpperCase()) || !isElementaryType(t) || t === 'STRING' || t === 'WSTRING' || v.constant) continue;
+    out.push(v.name);
+  }
   return out;
 }
 
@@ -197,7 +207,7 @@ function runOracle(xmlPath: string, stim: string, watch: string[], scans: number
   const r = spawnSync(
     'python3',
     [
-      join(oracle, 'bin/run_oracle.py'),
+      join(oracleBin, 'run_oracle.py'),
       xmlPath,
       stimPath,
       watch.join(','),
@@ -206,7 +216,7 @@ function runOracle(xmlPath: string, stim: string, watch: string[], scans: number
       '--work',
       join(cacheDir, 'work', name),
     ],
-    { encoding: 'utf8', maxBuffer: 64 * 1024 * 1024, timeout: 600_000 },
+    { encoding: 'utf8', maxBuffer: 64 * 1024 * 1024, timeout: 600_000, env: { ...process.env, ORACLE: oracle } },
   );
   const rc = r.status ?? 99;
   const run: OracleRun = {
@@ -240,7 +250,7 @@ function runRungsmith(file: string, stimPath: string, watch: string[], scans: nu
 function compare(expected: string, actual: string, workBase: string): string {
   writeFileSync(`${workBase}.expected.csv`, expected);
   writeFileSync(`${workBase}.actual.csv`, actual);
-  const r = spawnSync('python3', [join(oracle, 'bin/compare.py'), `${workBase}.expected.csv`, `${workBase}.actual.csv`, '--name', basename(workBase)], {
+  const r = spawnSync('python3', [join(oracleBin, 'compare.py'), `${workBase}.expected.csv`, `${workBase}.actual.csv`, '--name', basename(workBase)], {
     encoding: 'utf8',
   });
   return r.status === 0 ? '' : (r.stdout || r.stderr).trim();
@@ -249,7 +259,7 @@ function compare(expected: string, actual: string, workBase: string): string {
 const lastLines = (s: string, n = 3) =>
   s
     .split('\n')
-    .filter((l) => l.trim() && !/: warning: /.test(l))
+    .filter((l) => l.trim() && !/: warning: |^warning /.test(l))
     .slice(0, n)
     .join(' / ');
 
@@ -310,7 +320,10 @@ function runFile(file: string): FileResult {
   let sim = runRungsmith(file, stimPath, r.watch, r.scans);
   if (sim.rc !== 0 && /unknown variable/.test(sim.err) && r.instance) {
     r.notes.push(`bare names refused (class 5): ${lastLines(sim.err, 1)}`);
-    sim = runRungsmith(file, stimPath, r.watch.map((w) => `${r.instance}.${w}`), r.scans);
+    const [stimHead, ...stimRows] = stim.split('\n');
+    const prefixed = `${workBase}.prefixed.stim.csv`;
+    writeFileSync(prefixed, [stimHead!.split(',').map((c, i) => (i ? `${r.instance}.${c}` : c)).join(','), ...stimRows].join('\n'));
+    sim = runRungsmith(file, prefixed, r.watch.map((w) => `${r.instance}.${w}`), r.scans);
     // Header back to bare names for the comparison.
     const [head, ...rest] = sim.out.split('\n');
     sim.out = [head!.split(',').map((c) => c.replace(new RegExp(`^${r.instance}\\.`), '')).join(','), ...rest].join('\n');

@@ -18,11 +18,13 @@ export type TimeParse = { ok: true; ms: number } | { ok: false; message: string 
 
 /** Parses the part after `T#` / `TIME#`: an optional sign then number-unit pairs, largest unit first. */
 export function parseTimeBody(body: string): TimeParse {
-  let text = body;
+  // `T#` and the sign are tokens of their own in MATIEC's lexer: blanks may follow them
+  // (`T# 30000ms`, written by hand in OpenPLC files); the interval itself has none.
+  let text = body.trimStart();
   let sign = 1;
   if (text.startsWith('-') || text.startsWith('+')) {
     sign = text.startsWith('-') ? -1 : 1;
-    text = text.slice(1);
+    text = text.slice(1).trimStart();
   }
   if (text === '') return { ok: false, message: 'a TIME needs at least one number with a unit, e.g. T#1s500ms' };
   let pos = 0;
