@@ -258,6 +258,7 @@ function compare(expected: string, actual: string, workBase: string): string {
 
 const lastLines = (s: string, n = 3) =>
   s
+    .replaceAll(`${join(cacheDir, 'work')}/`, '')
     .split('\n')
     .filter((l) => l.trim() && !/: warning: |^warning /.test(l))
     .slice(0, n)
