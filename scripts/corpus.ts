@@ -1,5 +1,5 @@
-// npm run corpus -- DIR [--oracle /tmp/oracle] [--out report.md] [--cache DIR] [--sources FILE.tsv]
-//                     [--classes FILE.tsv] [--only SUBSTRING] [--json FILE]
+// npm run corpus -- DIR [--oracle /tmp/oracle] [--oracle-bin DIR] [--out report.md] [--cache DIR]
+//                     [--sources FILE.tsv] [--classes FILE.tsv] [--only SUBSTRING] [--json FILE] [--seed N]
 //
 // Runs every PLCopen file of DIR through Rungsmith (import, check, `simulate --profile openplc`) and
 // through the MATIEC reference (Beremiz's generator + iec2c + a scan driver, ../shared/tools/oracle),
@@ -39,6 +39,7 @@ const { values: opt, positionals } = parseArgs({
     sources: { type: 'string' },
     classes: { type: 'string' },
     only: { type: 'string' },
+    seed: { type: 'string', default: '12' },
   },
 });
 const dir = positionals[0];
@@ -47,6 +48,7 @@ if (!dir) {
   process.exit(2);
 }
 const oracle = resolve(opt.oracle!);
+const seed = Number(opt.seed);
 // The scripts (run_oracle.py, compare.py); --oracle-bin runs a patched copy against the same build.
 const oracleBin = resolve(opt['oracle-bin'] ?? join(oracle, 'bin'));
 const cacheDir = resolve(opt.cache ?? join(dirname(resolve(dir)), 'cache'));
@@ -171,7 +173,7 @@ function bit(seed: number, j: number, k: number): boolean {
 }
 
 /** `scan,<inputs>` rows for every scan: BOOL inputs by the seeded pattern, numbers ramped. */
-function stimulusCsv(inputs: Variable[], scans: number, slow: boolean, seed = 12): string {
+function stimulusCsv(inputs: Variable[], scans: number, slow: boolean, seed: number): string {
   const base = slow ? 20 : 1;
   const lines = [['scan', ...inputs.map((v) => v.name)].join(',')];
   for (let k = 1; k <= scans; k++) {
@@ -232,7 +234,13 @@ function runOracle(xmlPath: string, stim: string, watch: string[], scans: number
   return run;
 }
 
-function runRungsmith(file: string, stimPath: string, watch: string[], scans: number): { rc: number; out: string; err: string } {
+function runRungsmith(
+  file: string,
+  stimPath: string,
+  watch: string[],
+  scans: number,
+  profile: 'openplc' | 'iec' = 'openplc',
+): { rc: number; out: string; err: string } {
   let out = '';
   let err = '';
   const io: CliIo = {
@@ -241,7 +249,7 @@ function runRungsmith(file: string, stimPath: string, watch: string[], scans: nu
     readFile: (p) => readFileSync(p, 'utf8'),
     writeFile: () => undefined,
   };
-  const args = ['simulate', file, '--inputs', stimPath, '--scans', String(scans), '--cycle', '10ms', '--profile', 'openplc'];
+  const args = ['simulate', file, '--inputs', stimPath, '--scans', String(scans), '--cycle', '10ms', '--profile', profile];
   if (watch.length) args.push('--watch', watch.join(','));
   const rc = cliMain(args, io);
   return { rc, out, err };
@@ -263,6 +271,14 @@ const lastLines = (s: string, n = 3) =>
     .filter((l) => l.trim() && !/: warning: |^warning /.test(l))
     .slice(0, n)
     .join(' / ');
+
+/** The CSV with `INSTANCE.` taken off the header's names. */
+function bareHeader(csv: string, instance: string | undefined): string {
+  if (!instance) return csv;
+  const [head, ...rest] = csv.split('\n');
+  const prefix = `${instance}.`;
+  return [head!.split(',').map((c) => (c.startsWith(prefix) ? c.slice(prefix.length) : c)).join(','), ...rest].join('\n');
+}
 
 function runFile(file: string): FileResult {
   const xml = readFileSync(file, 'utf8');
@@ -297,7 +313,7 @@ function runFile(file: string): FileResult {
     // Rungsmith refused the file: watch nothing but the reference's verdict matters.
     r.watch = [];
   }
-  const stim = stimulusCsv(inputs, r.scans, slow);
+  const stim = stimulusCsv(inputs, r.scans, slow, seed);
   const name = basename(file).replace(/\.xml$/i, '');
   const workBase = join(cacheDir, 'work', name);
   const stimPath = `${workBase}.stim.csv`;
@@ -318,16 +334,19 @@ function runFile(file: string): FileResult {
     if (!refRefuses && o.rc !== 0) r.notes.push(`reference rc ${o.rc}: ${lastLines(o.message, 2)}`);
     return r;
   }
-  let sim = runRungsmith(file, stimPath, r.watch, r.scans);
+  let simStim = stimPath;
+  let simWatch = r.watch;
+  let sim = runRungsmith(file, simStim, simWatch, r.scans);
   if (sim.rc !== 0 && /unknown variable/.test(sim.err) && r.instance) {
     r.notes.push(`bare names refused (class 5): ${lastLines(sim.err, 1)}`);
     const [stimHead, ...stimRows] = stim.split('\n');
     const prefixed = `${workBase}.prefixed.stim.csv`;
     writeFileSync(prefixed, [stimHead!.split(',').map((c, i) => (i ? `${r.instance}.${c}` : c)).join(','), ...stimRows].join('\n'));
-    sim = runRungsmith(file, prefixed, r.watch.map((w) => `${r.instance}.${w}`), r.scans);
+    simStim = prefixed;
+    simWatch = r.watch.map((w) => `${r.instance}.${w}`);
+    sim = runRungsmith(file, simStim, simWatch, r.scans);
     // Header back to bare names for the comparison.
-    const [head, ...rest] = sim.out.split('\n');
-    sim.out = [head!.split(',').map((c) => c.replace(new RegExp(`^${r.instance}\\.`), '')).join(','), ...rest].join('\n');
+    sim.out = bareHeader(sim.out, r.instance);
   }
   r.rungsmithRc = sim.rc;
   r.rungsmithMessage = sim.rc === 0 ? '' : lastLines(sim.err, 3);
@@ -349,6 +368,12 @@ function runFile(file: string): FileResult {
   const diff = compare(o.csv!, sim.out, workBase);
   r.result = diff ? 'differs' : 'match';
   r.detail = diff.replace(/^[^:]*: /, '');
+  if (diff) {
+    // The same run under --profile iec: tells an `openplc`-profile difference from the others.
+    const iec = runRungsmith(file, simStim, simWatch, r.scans, 'iec');
+    const iecDiff = iec.rc === 0 ? compare(o.csv!, bareHeader(iec.out, r.instance), `${workBase}.iec`) : `refused: ${lastLines(iec.err, 1)}`;
+    r.notes.push(iecDiff ? `under iec: ${iecDiff.replace(/^[^:]*: /, '')}` : 'matches under --profile iec');
+  }
   return r;
 }
 
