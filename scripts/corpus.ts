@@ -126,10 +126,12 @@ function writtenNames(project: Project): (name: string) => boolean {
 }
 
 /** Input-like variables (as tests/plcopen/trace.ts inputLike), elementary non-STRING, non-TIME only. */
-function inputsOf(pou: Pou, isWritten: (n: string) => boolean): Variable[] {
+function inputsOf(project: Project, pou: Pou, isWritten: (n: string) => boolean): Variable[] {
   const out: Variable[] = [];
-  for (const v of pou.variables) {
-    if (v.constant || v.varClass === 'external' || v.varClass === 'inOut') continue;
+  for (const own of pou.variables) {
+    // A VAR_EXTERNAL is the global of that name (its location, its constancy).
+    const v = own.varClass === 'external' ? project.globals.find((g) => g.name.toUpperCase() === own.name.toUpperCase()) : own;
+    if (!v || v.constant || own.constant || v.varClass === 'inOut') continue;
     const t = v.type.toUpperCase();
     if (!(t === 'BOOL' || INTEGER.test(t) || t === 'REAL' || t === 'LREAL')) continue;
     if (v.location?.startsWith('%I') || v.varClass === 'input') out.push(v);
@@ -166,10 +168,15 @@ function hasTimers(xml: string): boolean {
   return /typeName="(TON|TOF|TP|BLINK|TONR|RTO)"/i.test(xml) || /(?<!interval=")\bT(IME)?#/i.test(xml);
 }
 
+/** A seeded pseudo-random bit per (input, step): murmur3's finaliser over the three numbers. */
 function bit(seed: number, j: number, k: number): boolean {
-  let h = (seed * 374761393 + j * 668265263 + k * 2246822519) >>> 0;
-  h = Math.imul(h ^ (h >>> 13), 1274126177) >>> 0;
-  return ((h ^ (h >>> 16)) & 1) === 1;
+  let h = Math.imul(seed + 1, 0x9e3779b1) ^ Math.imul(j + 1, 0x85ebca77) ^ Math.imul(k + 1, 0xc2b2ae3d);
+  h ^= h >>> 16;
+  h = Math.imul(h, 0x85ebca6b);
+  h ^= h >>> 13;
+  h = Math.imul(h, 0xc2b2ae35);
+  h ^= h >>> 16;
+  return h >>> 31 === 1;
 }
 
 /** `scan,<inputs>` rows for every scan: BOOL inputs by the seeded pattern, numbers ramped. */
@@ -181,7 +188,12 @@ function stimulusCsv(inputs: Variable[], scans: number, slow: boolean, seed: num
     inputs.forEach((v, j) => {
       const period = base * (1 + (j % 5));
       if (v.type.toUpperCase() === 'BOOL') row.push(bit(seed, j, Math.floor(k / period)) ? '1' : '0');
-      else row.push(String((Math.floor(k / base) * (j + 1)) % 100));
+      else {
+        // Numbers jump around their range (0..99 for 8-bit types, 0..999 otherwise) so that
+        // comparisons with set points (GT(level, 100), ...) go both ways.
+        const range = /^(SINT|USINT|BYTE)$/i.test(v.type) ? 100 : 1000;
+        row.push(String((Math.floor(k / base) * 37 * (j + 1) + 13 * j) % range));
+      }
     });
     lines.push(row.join(','));
   }
@@ -272,6 +284,15 @@ const lastLines = (s: string, n = 3) =>
     .slice(0, n)
     .join(' / ');
 
+/** How many watched columns of a trace take more than one value (how much of the program the run exercised). */
+function changing(csv: string): number {
+  const rows = csv.trim().split('\n').map((l) => l.split(','));
+  const width = rows[0]!.length;
+  let n = 0;
+  for (let c = 2; c < width; c++) if (new Set(rows.slice(1).map((r) => r[c])).size > 1) n++;
+  return n;
+}
+
 /** The CSV with `INSTANCE.` taken off the header's names. */
 function bareHeader(csv: string, instance: string | undefined): string {
   if (!instance) return csv;
@@ -306,7 +327,7 @@ function runFile(file: string): FileResult {
   let inputs: Variable[] = [];
   if (project && pou) {
     const isWritten = writtenNames(project);
-    inputs = inputsOf(pou, isWritten);
+    inputs = inputsOf(project, pou, isWritten);
     r.inputs = inputs.map((v) => v.name);
     r.watch = watchOf(pou, new Set(r.inputs.map((n) => n.toUpperCase())), isWritten);
   } else if (first) {
@@ -368,6 +389,7 @@ function runFile(file: string): FileResult {
   const diff = compare(o.csv!, sim.out, workBase);
   r.result = diff ? 'differs' : 'match';
   r.detail = diff.replace(/^[^:]*: /, '');
+  if (!diff) r.detail = `${changing(o.csv!)} of ${r.watch.length} watched values change; ${inputs.length} inputs stimulated`;
   if (diff) {
     // The same run under --profile iec: tells an `openplc`-profile difference from the others.
     const iec = runRungsmith(file, simStim, simWatch, r.scans, 'iec');
