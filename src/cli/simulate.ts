@@ -87,6 +87,19 @@ function configurationOf(project: Project): { instance: string; pou: string }[] 
   return instances.length > 1 || hasEventTask(project.tasks) ? instances : undefined;
 }
 
+/**
+ * The variable a name given to --watch/--inputs means. In a configuration, a bare name that is not a
+ * global is the first program instance's (of the first task: what Beremiz/OpenPLC's debugger and the
+ * MATIEC reference trace); `Inst.Var` names any instance.
+ */
+function resolveName(program: CompiledProgram, name: string, firstInstance: string | undefined): string {
+  const opts = { literals: false, implicitLocations: false } as const;
+  const r = program.symbols.resolve(name, opts);
+  if (r.ok || !firstInstance) return name;
+  const inInstance = `${firstInstance}.${name}`;
+  return program.symbols.resolve(inInstance, opts).ok ? inInstance : name;
+}
+
 function typeOf(program: CompiledProgram, name: string): ElementaryType {
   const r = program.symbols.resolve(name, { literals: false, implicitLocations: false });
   if (!r.ok) throw new UsageError(`unknown variable "${name}": ${r.message}`);
@@ -124,14 +137,16 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
       : configuration
         ? configuration.flatMap((c) => defaultWatch(project, c.pou, names, `${c.instance}.`))
         : defaultWatch(project, pou, names);
-  const types = watch.map((w) => typeOf(program, w));
+  const firstInstance = configuration?.[0]?.instance;
+  const watched = watch.map((w) => resolveName(program, w, firstInstance));
+  const types = watched.map((w) => typeOf(program, w));
   const stim: Stimulus | undefined = opts.stimulus
     ? parseStimulus(opts.stimulus.text, opts.stimulus.file)
     : undefined;
   const stimTypes = new Map<string, ElementaryType>();
   for (const c of stim?.columns ?? []) {
     try {
-      stimTypes.set(c, typeOf(program, c));
+      stimTypes.set(c, typeOf(program, resolveName(program, c, firstInstance)));
     } catch (e) {
       throw new UsageError(`${opts.stimulus!.file}: column "${c}": ${(e as Error).message}`);
     }
@@ -148,7 +163,7 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
         if (!parsed.ok)
           throw new UsageError(`${opts.stimulus!.file} line ${row.line}, column ${name}: ${parsed.message}`);
         try {
-          plc.write(name, parsed.value);
+          plc.write(resolveName(program, name, firstInstance), parsed.value);
         } catch (e) {
           throw new UsageError(
             `${opts.stimulus!.file} line ${row.line}, column ${name}: ${(e as Error).message}`,
@@ -163,7 +178,7 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
       return 1;
     }
     const row = [String(k), String((k - 1) * cycleMs)];
-    watch.forEach((w, i) => row.push(csvValue(types[i]!, plc.read(w))));
+    watched.forEach((w, i) => row.push(csvValue(types[i]!, plc.read(w))));
     // RFC 4180: a cell with a comma, a quote or a line break is quoted (STRING values).
     lines.push(csvRow(row));
   }

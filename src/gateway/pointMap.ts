@@ -19,7 +19,7 @@ const isBit = (address: string) => /^%[IQ]X/.test(address);
 export function openPlcRegister(address: string): { table: ModbusTable; register: number } | undefined {
   const loc = parseLocation(address);
   if (!loc || loc.levels) return undefined; // hierarchical addresses (%IW0.0) have no OpenPLC register
-  if (loc.size === 'X' && loc.bit !== undefined && loc.index <= 99) {
+  if (loc.size === 'X' && loc.bit !== undefined && loc.bit <= 7 && loc.index <= 99) {
     return { table: loc.area === 'I' ? 'discreteInputs' : 'coils', register: loc.index * 8 + loc.bit };
   }
   if (loc.size === 'W' && loc.index <= 1023) return { table: loc.area === 'I' ? 'inputRegisters' : 'holdingRegisters', register: loc.index };

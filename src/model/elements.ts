@@ -60,6 +60,13 @@ export interface BoxElement extends Placed {
    * not executed and keeps its outputs. Functions always have EN/ENO.
    */
   readonly executionControl?: boolean;
+  /**
+   * The PLCopen file left EN unconnected (Rungsmith draws the box powered from the left rail). While
+   * EN is fed by the rail alone, the openplc profile runs the box as Beremiz generates a call
+   * without EN: a function's output variable is written even on an error, and an FB instance's
+   * call reads the EN the instance kept (LD-SEMANTICS.md); an export leaves EN unconnected again.
+   */
+  readonly enOpen?: boolean;
   /** Number of extensible inputs (ADD, AND, MUX, ...); defaults to the signature's minimum. */
   readonly inputCount?: number;
   readonly inputs: Readonly<Record<string, string>>;

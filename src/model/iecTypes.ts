@@ -135,7 +135,8 @@ export function parseLocation(text: string): ParsedLocation | undefined {
   const bit = size === 'X' ? rest.shift() : undefined;
   if (size === 'X') {
     if (m[2] === '' && bit === undefined) return undefined; // "%I3" is ambiguous; require %IX3.0 style
-    if (bit !== undefined && bit > 7 && !rest.length) return undefined;
+    // No upper bound on the bit (IEC 61131-3 2.4.1.1 gives none, and MATIEC compiles %IX0.12): a
+    // bit address is a location of its own; %IX0.12 is not %IX1.4.
   }
   return { area: m[1] as ParsedLocation['area'], size, index, ...(bit !== undefined ? { bit } : {}), ...(rest.length ? { levels: rest } : {}) };
 }

@@ -25,6 +25,7 @@ const element = z.discriminatedUnion('kind', [
       blockType: z.string().min(1),
       instance: z.string().optional(),
       executionControl: z.boolean().optional(),
+      enOpen: z.boolean().optional(),
       inputCount: int.min(1).max(64).optional(),
       inputs: z.record(z.string(), z.string()),
       outputs: z.record(z.string(), z.string()),

@@ -18,6 +18,13 @@
 //   engine evaluates each element once in a topological order (section 6). A contact on the path of
 //   a coil reads a variable another coil of the same network writes: when the write comes between
 //   the two reads in one order and not in the other, the two differ (LD-X05).
+// - GeneratePaths builds each path as nested lists (AND) and tuples (OR); ComputePaths writes a
+//   tuple in brackets except at the top of an expression. A continuation is replaced by the text
+//   of its connector's expression, computed as a top (so an OR there has no brackets) and pasted as
+//   is: a contact after it ANDs only its first term (LD-X06). A coil that is the source of another
+//   element contributes the list of its own input paths, which ComputePaths ANDs: after an OR join,
+//   the element after the coil sees the AND of the branches (LD-X07). Both are bugs of the
+//   generator: the simulator does not copy them (a connector pair is a wire), in either profile.
 // The simulator's openplc profile runs LD bodies in that order (engine/compile/generated.ts): for
 // a project under it the warnings stay (the export is the same) and say the simulation shows it.
 // Pure: no React, no DOM.
@@ -30,8 +37,9 @@ import type { Cell } from '../model/grid';
 import { newId, type ElementId, type NetworkId, type PouId } from '../model/ids';
 import { STANDARD_LIBRARY, blockLibrary, type BlockLibrary } from '../model/library';
 import type { Network, Pou, Project, Variable } from '../model/project';
+import { gridGraph, type GridGraph, type Source } from './gridGraph';
 
-export type ExportRuleId = 'LD-X01' | 'LD-X02' | 'LD-X03' | 'LD-X04' | 'LD-X05';
+export type ExportRuleId = 'LD-X01' | 'LD-X02' | 'LD-X03' | 'LD-X04' | 'LD-X05' | 'LD-X06' | 'LD-X07';
 
 /** An edit that makes the exported program behave the same: one network rewritten, variables added. */
 export interface ExportFix {
@@ -67,6 +75,8 @@ const SIMULATED_SO: Record<ExportRuleId, string> = {
   'LD-X03': 'This project runs under the openplc profile, so the simulator already calls it there: what you see in simulation is what the exported program does.',
   'LD-X04': 'This project runs under the openplc profile, so the simulator does not call it either (LD-W22).',
   'LD-X05': 'This project runs under the openplc profile, so the simulator already reads it again: what you see in simulation is what the exported program does.',
+  'LD-X06': 'The simulator does not copy this bug of their generator, under either profile: what you see in simulation is what the drawing means, not what the exported program does.',
+  'LD-X07': 'The simulator does not copy this bug of their generator, under either profile: what you see in simulation is what the drawing means, not what the exported program does.',
 };
 const up = (s: string) => s.trim().toUpperCase();
 
@@ -514,6 +524,177 @@ function sameForAllValues(v: NetView): boolean | undefined {
   return true;
 }
 
+// ---- LD-X06, LD-X07: how GeneratePaths / FactorizePaths / ComputePaths write a path ----
+
+/** A path as GeneratePaths builds it: null (the left rail), a text, a list (AND) or a tuple (OR). */
+type GenPath = null | string | GenPath[] | { readonly or: readonly GenPath[] };
+
+const pathKey = (p: GenPath): string => JSON.stringify(p);
+
+/** FactorizePaths: paths that end in the same element share it (`(A OR B) AND X`). */
+function factorize(paths: readonly GenPath[]): GenPath[] {
+  const same = new Map<string, { path: GenPath[]; num: number }[]>();
+  const left = new Set(paths.keys());
+  const out: GenPath[] = [];
+  paths.forEach((path, num) => {
+    if (Array.isArray(path)) {
+      if (path.length > 1) {
+        const key = pathKey(path.slice(-1));
+        same.set(key, [...(same.get(key) ?? []), { path: path.slice(0, -1), num }]);
+      }
+    } else {
+      out.push(path);
+      left.delete(num);
+    }
+  });
+  for (const [key, elements] of same) {
+    if (elements.length < 2) continue;
+    const tail = JSON.parse(key) as GenPath[];
+    const inner = factorize(elements.map((e) => e.path));
+    out.push(inner.length > 1 ? [{ or: inner }, ...tail] : [...inner, ...tail]);
+    for (const e of elements) left.delete(e.num);
+  }
+  for (const num of left) out.push(paths[num]!);
+  return out;
+}
+
+/** ComputePaths as text (`first`: the top of an expression, an OR without brackets). */
+function pathText(p: GenPath, first: boolean, text: (leaf: string) => string): string {
+  if (p === null) return 'TRUE';
+  if (typeof p === 'string') return text(p);
+  if (Array.isArray(p)) return p.map((x) => pathText(x, false, text)).join(' AND ');
+  if (p.or.includes(null)) return 'TRUE';
+  const joined = p.or.map((x) => pathText(x, false, text)).join(' OR ');
+  return first ? joined : `(${joined})`;
+}
+
+/** ComputeExpression: the paths of a pin's connections as one expression (a tuple when they stay several). */
+function expressionOf(paths: readonly GenPath[]): GenPath | undefined {
+  if (!paths.length) return undefined;
+  if (paths.length === 1) return paths[0]!;
+  const f = factorize(paths);
+  return f.length > 1 ? { or: f } : f[0]!;
+}
+
+interface SlipNetwork {
+  readonly v: NetView;
+  readonly gg: GridGraph;
+}
+
+/** LD-X06 connector ORs pasted without brackets, LD-X07 coils in series after an OR join. */
+function generatorSlips(pou: Pou, views: readonly NetView[], library: BlockLibrary, out: ExportWarning[]): void {
+  const nets: SlipNetwork[] = views.map((v) => ({ v, gg: gridGraph(v.net, library) }));
+  const srcs = (n: SlipNetwork, ei: number, pin = 'in'): readonly Source[] => n.gg.sources.get(ei)?.get(pin) ?? [];
+  // Connectors by name (the export writes one body per POU: a continuation finds its connector by name).
+  const connectors = new Map<string, { n: SlipNetwork; ei: number }>();
+  for (const n of nets)
+    n.v.net.elements.forEach((el, ei) => {
+      if (el.kind === 'connector' && el.name.trim() && !connectors.has(up(el.name))) connectors.set(up(el.name), { n, ei });
+    });
+  const leafText = new Map<string, string>();
+  const connectorExpr = new Map<string, GenPath | undefined>();
+  // GeneratePaths over the exported connections (depth-bounded: a feedback wire is another rule's).
+  const paths = (n: SlipNetwork, sources: readonly Source[], depth: number): GenPath[] => {
+    const result: GenPath[] = [];
+    if (depth > 64) return result;
+    for (const s of sources) {
+      if (s.kind === 'rail') {
+        result.push(null);
+        continue;
+      }
+      const el = n.v.net.elements[s.el]!;
+      if (el.kind === 'contact') {
+        const leaf = `${n.v.index}:${s.el}`;
+        const name = el.variable.trim();
+        leafText.set(leaf, el.contact === 'NC' ? `NOT(${name})` : el.contact === 'NOT' ? 'NOT' : name);
+        const before = paths(n, srcs(n, s.el), depth + 1);
+        if (before.length > 1) {
+          const f = factorize(before);
+          result.push(f.length > 1 ? [leaf, { or: f }] : [leaf, ...f]);
+        } else if (before.length === 0) result.push(leaf);
+        else if (Array.isArray(before[0])) result.push([leaf, ...before[0]]);
+        else if (before[0] !== null) result.push([leaf, before[0]!]);
+        else result.push(leaf);
+      } else if (el.kind === 'coil') result.push(paths(n, srcs(n, s.el), depth + 1));
+      else if (el.kind === 'continuation') {
+        const leaf = `k:${up(el.name)}`;
+        const c = connectors.get(up(el.name));
+        if (c && !connectorExpr.has(leaf)) {
+          connectorExpr.set(leaf, undefined);
+          connectorExpr.set(leaf, expressionOf(paths(c.n, srcs(c.n, c.ei), depth + 1)));
+        }
+        result.push(leaf);
+      } else if (el.kind === 'box') {
+        const leaf = `${n.v.index}:${s.el}:${s.pin}`;
+        leafText.set(leaf, `${el.instance?.trim() || el.blockType}.${s.pin}`);
+        result.push(leaf);
+      }
+    }
+    return result;
+  };
+  const text = (leaf: string): string => {
+    if (leaf.startsWith('k:')) {
+      const e = connectorExpr.get(leaf);
+      return e === undefined ? leaf.slice(2) : pathText(e, true, text);
+    }
+    return leafText.get(leaf) ?? leaf;
+  };
+  /** A continuation whose connector's expression is an OR at its top: pasted without brackets. */
+  const unbracketed = (p: GenPath): string | undefined => {
+    if (typeof p !== 'string' || !p.startsWith('k:')) return undefined;
+    const e = connectorExpr.get(p);
+    return e !== null && e !== undefined && typeof e === 'object' && !Array.isArray(e) && !e.or.includes(null) ? p : undefined;
+  };
+  /** The first continuation pasted into an AND of two or more terms, anywhere in the path. */
+  const pastedInAnd = (p: GenPath): string | undefined => {
+    if (p === null || typeof p === 'string') return undefined;
+    const kids = Array.isArray(p) ? p : p.or;
+    if (Array.isArray(p) && p.length > 1) for (const k of p) if (unbracketed(k)) return unbracketed(k);
+    for (const k of kids) {
+      const hit = pastedInAnd(k);
+      if (hit) return hit;
+    }
+    return undefined;
+  };
+
+  for (const n of nets) {
+    const { v } = n;
+    const reported = new Set<string>();
+    v.net.elements.forEach((el, ei) => {
+      if (el.kind !== 'coil') return;
+      const expr = expressionOf(paths(n, srcs(n, ei), 0));
+      if (expr === undefined) return;
+      // LD-X06: the coil's expression pastes a connector's OR into an AND.
+      const k = pastedInAnd(expr);
+      if (k && !reported.has(k)) {
+        reported.add(k);
+        const name = k.slice(2);
+        const conn = connectors.get(name)!;
+        const cont = v.net.elements.find((x) => x.kind === 'continuation' && up(x.name) === name);
+        out.push({
+          ...locate(pou, v, cont ?? el),
+          rule: 'LD-X06',
+          message: `${TOOLS} paste the OR that reaches ${describeElement(conn.n.v.net.elements[conn.ei]!)} into what follows ${cont ? describeElement(cont) : `its continuation`} without brackets: they write ${describeElement(el)} as ${el.variable.trim() || '?'} := ${pathText(expr, true, text)}, where AND binds before OR (their code generator does not bracket a connector's expression), while the drawing means the whole OR in series. Draw the OR on the continuation's side, or write it to a coil and read that variable with a contact.`,
+        });
+      }
+    });
+    // LD-X07: a coil after an OR join that feeds another element.
+    v.net.elements.forEach((el, ei) => {
+      if (el.kind !== 'coil' || srcs(n, ei).length < 2) return;
+      const next = v.net.elements.findIndex((_, xi) =>
+        [...(n.gg.sources.get(xi)?.values() ?? [])].some((list) => list.some((s) => s.kind === 'pin' && s.el === ei)),
+      );
+      if (next < 0) return;
+      const branches = paths(n, srcs(n, ei), 0).map((p) => pathText(p, false, text));
+      out.push({
+        ...locate(pou, v, el),
+        rule: 'LD-X07',
+        message: `${describeElement(el)} joins ${branches.length} branches (${branches.join(' OR ')}), and ${describeElement(v.net.elements[next]!)} follows it in series: ${TOOLS} give ${describeElement(v.net.elements[next]!)} the AND of those branches (${branches.join(' AND ')}), not their OR (their code generator passes on a coil's branches as one path). Join the branches after the coils instead (draw each coil on its own line from the join), or read the first coil's variable with a contact.`,
+      });
+    });
+  }
+}
+
 /** Per POU and network, what behaves differently once Beremiz or OpenPLC compile the export. */
 export function exportBehaviour(project: Project): ExportWarning[] {
   const library = blockLibrary(project);
@@ -523,6 +704,7 @@ export function exportBehaviour(project: Project): ExportWarning[] {
     const views = pou.networks.map((n, i) => viewOf(n, i, library));
     dropped(pou, views, out);
     ordering(project, pou, views, library, out);
+    generatorSlips(pou, views, library, out);
   }
   // Profile openplc: the simulator already runs the project as Beremiz and OpenPLC do (LD-SEMANTICS.md
   // section 6), so the warnings stay (the export is the same) but say the simulation shows it.

@@ -2,7 +2,8 @@
 // in/outVariables beside the pins. A user block's pins come from its POU's interface (the block
 // library); a VAR_IN_OUT pin is written in inputVariables and in outputVariables under one
 // formalParameter, as Beremiz writes it. EN/ENO pins (functions; FBs with executionControl) are
-// written as pins: TC6 v2.01 has no executionControl attribute on <block>.
+// written as pins: TC6 v2.01 has no executionControl attribute on <block>; an EN the imported file
+// left open (enOpen) and that the rail alone still feeds is left out again.
 import type { BoxElement } from '../model/elements';
 import { BOX_MARGIN_X, BOX_MARGIN_Y, CELL_W, ROW_H, boundaryX, type Point } from './geometry';
 import type { Source } from './gridGraph';
@@ -84,6 +85,9 @@ export function writeBox(
       w.empty('position', { x: origin.x, y: origin.y });
       w.open('inputVariables', undefined, () => {
         for (const i of bp.inputs) {
+          // An EN the imported file left open (BoxElement.enOpen), still fed by the rail alone:
+          // written without it again, so that Beremiz generates the call without EN.
+          if (i.name === 'EN' && el.enOpen && srcOf('EN')?.every((s) => s.kind === 'rail')) continue;
           const at = p.pins.get(i.name)!;
           w.line(() =>
             w.open('variable', { formalParameter: i.name }, () => {

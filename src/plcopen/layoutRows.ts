@@ -399,6 +399,7 @@ export function elementFor(n: GNode, id: ElementId, r: number, c: number): LdEle
         ...(n.instance ? { instance: n.instance } : {}),
         ...(n.inputCount !== undefined ? { inputCount: n.inputCount } : {}),
         ...(n.executionControl ? { executionControl: true } : {}),
+        ...(n.implicitEn && n.inputs.has('EN') ? { enOpen: true } : {}),
         inputs: { ...n.operandsIn },
         outputs: { ...n.operandsOut },
         ...(n.executionOrder ? { executionOrder: n.executionOrder } : {}),

@@ -155,17 +155,25 @@ export function buildLdGraph(
   });
 
   // Every reference, through continuations, to the objects producing it.
+  const dangling = new Set<RawConnection>();
   const resolve = (
     c: RawConnection,
     consumer: RawObject,
     seen?: Set<string>,
   ): { obj: RawObject | 'rail'; pin?: string }[] => {
     const src = byId.get(c.ref);
-    if (!src)
-      throw new LdGraphError(
-        `<${consumer.kind}> localId ${consumer.localId} is connected to localId ${c.ref}, which does not exist`,
-        consumer,
-      );
+    if (!src) {
+      // One dangling reference (an editor that deleted an object but not the wire into it) drops
+      // that wire only: the rest of the body imports, and the finding names where it was.
+      if (!dangling.has(c)) {
+        dangling.add(c);
+        warn({
+          message: `<${consumer.kind}> localId ${consumer.localId} is connected to localId ${c.ref}, which does not exist; that wire is dropped`,
+          obj: consumer,
+        });
+      }
+      return [];
+    }
     switch (src.kind) {
       case 'leftPowerRail':
         return [{ obj: 'rail' }];
@@ -321,6 +329,37 @@ export function buildLdGraph(
         if (src.length) n.inputs.set('in', src);
       }
     }
+  }
+
+  // A contact after a continuation whose connector gathers an OR: Beremiz's generator pastes the
+  // connector's expression without brackets (`I3 AND I1 OR I2`), so the PLC runs other logic than
+  // the drawing, which Rungsmith runs (a connector pair is a wire). Said at import; an export from
+  // Rungsmith writes the wire directly (or LD-X06 names a pair it keeps).
+  for (const o of objects) {
+    if (o.kind !== 'contact' || o.inputs[0]?.connections.length !== 1) continue;
+    const cont = byId.get(o.inputs[0].connections[0]!.ref);
+    const conn = cont?.kind === 'continuation' ? connectors.get(cont.text.toUpperCase()) : undefined;
+    const feeds = conn?.inputs[0]?.connections.map((c) => byId.get(c.ref)) ?? [];
+    if (feeds.length < 2 || feeds.some((f) => !f || f.kind === 'leftPowerRail')) continue;
+    // Paths that end in the same element are factorized into one AND (`(A OR B) AND X`): no OR on top.
+    const start = (f: RawObject): string => {
+      let at = f;
+      for (let k = 0; k < 64 && at.kind === 'contact' && at.inputs[0]?.connections.length === 1; k++) {
+        const next = byId.get(at.inputs[0].connections[0]!.ref);
+        if (!next || next.kind === 'leftPowerRail') return at.localId;
+        at = next;
+      }
+      return `${at.localId}*`;
+    };
+    const starts = new Set(feeds.map((f) => start(f!)));
+    if (starts.size === 1 && ![...starts][0]!.endsWith('*') && feeds.every((f) => start(f!) !== f!.localId)) continue;
+    const railFed = (f: RawObject) =>
+      f.kind === 'contact' && f.attr('negated') !== 'true' && !f.attr('edge') && f.inputs[0]?.connections.length === 1 && byId.get(f.inputs[0].connections[0]!.ref)?.kind === 'leftPowerRail';
+    const generated = feeds.every((f) => railFed(f!)) ? ` (they write ${o.text} AND ${feeds.map((f) => f!.text).join(' OR ')})` : '';
+    warn({
+      message: `contact "${o.text}" follows continuation "${cont!.text}", whose connector gathers an OR: Beremiz and OpenPLC paste that OR without brackets after the contact${generated}, so AND binds before OR there; Rungsmith runs the drawing (the whole OR in series with "${o.text}"); an export from Rungsmith gives them the drawing (its review names any connector pair it keeps, LD-X06)`,
+      obj: o,
+    });
   }
 
   // Pins the file wires through one of its own connector pairs: drawn with that name where cut.

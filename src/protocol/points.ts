@@ -43,7 +43,8 @@ export const zeroOf = (type: PointType): WireValue => (type === 'BOOL' ? false :
 export function canonicalAddress(text: string): string | undefined {
   const loc = parseLocation(text);
   if (!loc || loc.area === 'M' || loc.levels) return undefined;
-  if (loc.size === 'X' && loc.bit !== undefined) return `%${loc.area}X${loc.index}.${loc.bit}`;
+  // I/O bits are 0..7 of a byte (OpenPLC's map and the gateway's): %IX0.12 is no I/O point.
+  if (loc.size === 'X' && loc.bit !== undefined) return loc.bit <= 7 ? `%${loc.area}X${loc.index}.${loc.bit}` : undefined;
   if (loc.size === 'W') return `%${loc.area}W${loc.index}`;
   return undefined;
 }

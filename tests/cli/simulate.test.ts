@@ -1,6 +1,8 @@
 // `rungsmith simulate` traces of the classic programs, checked scan by scan against values worked
 // out by hand from the IEC definitions (timers time from the start of the scan on the virtual clock).
 import { describe, expect, it } from 'vitest';
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
 import { EXAMPLES } from '../../src/model/examples';
 import { saveProject } from '../../src/model/load';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
@@ -142,5 +144,33 @@ describe('rungsmith simulate', () => {
     expect(invalid.code).toBe(1);
     expect(invalid.err).toMatch(/^error LD-R\d+ Main\/network 1/m);
     expect(invalid.out).toBe('');
+  });
+});
+
+describe('rungsmith simulate on a configuration of several program instances', () => {
+  const xml = readFileSync(
+    fileURLToPath(new URL('../fixtures/reference/c05-two-instances-bare-names.xml', import.meta.url)),
+    'utf8',
+  );
+
+  it('a bare name is the first program instance of the first task; Inst.Var names any instance', () => {
+    const r = rungsmith(
+      ['simulate', 'p.xml', '--scans', '4', '--watch', 'Start,Run,PumpCtl.Run,FanCtl.Run', '--inputs', 's.csv'],
+      { 'p.xml': xml, 's.csv': 'scan,Start,FanCtl.Start\n1,0,0\n3,1,1\n' },
+    );
+    expect(r.code).toBe(0);
+    expect(csv(r.out)).toEqual([
+      ['scan', 'time_ms', 'Start', 'Run', 'PumpCtl.Run', 'FanCtl.Run'],
+      ['1', '0', '0', '0', '0', '1'],
+      ['2', '10', '0', '0', '0', '1'],
+      ['3', '20', '1', '1', '1', '0'],
+      ['4', '30', '1', '0', '0', '0'],
+    ]);
+  });
+
+  it('a name in no instance is still refused, naming it', () => {
+    const r = rungsmith(['simulate', 'p.xml', '--scans', '1', '--watch', 'Nowhere'], { 'p.xml': xml });
+    expect(r.code).toBe(2);
+    expect(r.err).toContain('unknown variable "Nowhere"');
   });
 });

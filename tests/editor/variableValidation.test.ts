@@ -47,7 +47,7 @@ describe('types', () => {
 
 describe('addresses', () => {
   test('refuses text that is not an IEC address', () => {
-    const [row] = fieldsOf([variable('a', 'BOOL', { location: '%IX0.9' })]);
+    const [row] = fieldsOf([variable('a', 'BOOL', { location: '%IZ0.1' })]);
     expect(row?.location).toMatch(/not an IEC address/);
   });
   test('refuses an address whose size does not fit the type', () => {

@@ -79,7 +79,9 @@ describe('conversions of DATE, TOD and DT', () => {
     expect(call('DATE_TO_STRING', 'DATE', [D(2024, 1, 31)], 'openplc')).toEqual(['D#2024-01-31', true]);
     expect(call('TOD_TO_STRING', 'TOD', [5500], 'openplc')).toEqual(['TOD#00:00:05.500000', true]);
     expect(call('TOD_TO_STRING', 'TOD', [5500])).toEqual(['TOD#00:00:05.5', true]);
-    expect(call('TOD_TO_STRING', 'TOD', [25 * H], 'openplc')).toEqual(['TOD#ERROR', false]);
+    // MATIEC gives the text with ENO ON (__iec_error() leaves ENO alone; the reference agrees).
+    expect(call('TOD_TO_STRING', 'TOD', [25 * H], 'openplc')).toEqual(['TOD#ERROR', true]);
+    expect(call('TOD_TO_STRING', 'TOD', [25 * H], 'iec')).toEqual(['TOD#ERROR', false]);
     expect(call('DT_TO_STRING', 'DT', [D(2024, 1, 31) + 12 * H + 30 * 60_000], 'openplc')).toEqual(['DT#2024-01-31-12:30:00', true]);
     expect(call('STRING_TO_DATE', 'STRING', ['D#2024-01-31'])).toEqual([D(2024, 1, 31), true]);
     expect(call('STRING_TO_TOD', 'STRING', ['60'], 'openplc')).toEqual([60_000, true]);

@@ -26,6 +26,9 @@ export interface BoxSpec {
   readonly inputs?: Record<string, string>;
   readonly outputs?: Record<string, string>;
   readonly inputCount?: number;
+  /** EN/ENO pins on an FB box; EN left open in the PLCopen file it came from (BoxElement). */
+  readonly executionControl?: boolean;
+  readonly enOpen?: boolean;
   /** PLCopen executionOrderId of the box, and of the variables beside its outputs (by pin). */
   readonly executionOrder?: number;
   readonly outputOrders?: Record<string, number>;
@@ -108,6 +111,8 @@ export function ladder(rows: readonly string[], opts: LadderOptions = {}): Netwo
       blockType: b.type,
       ...(b.instance ? { instance: b.instance } : {}),
       ...(b.inputCount ? { inputCount: b.inputCount } : {}),
+      ...(b.executionControl ? { executionControl: true } : {}),
+      ...(b.enOpen ? { enOpen: true } : {}),
       inputs: b.inputs ?? {},
       outputs: b.outputs ?? {},
       ...(b.executionOrder ? { executionOrder: b.executionOrder } : {}),

@@ -350,13 +350,26 @@ describe('the variable table', () => {
   test.each([
     ['LD-E10', 'a duplicate name', [...vars('A BOOL', 'X BOOL', 'a BOOL')]],
     ['LD-E11', 'an invalid name', [...vars('A BOOL', 'X BOOL', 'Bad__Name INT')]],
-    ['LD-E12', 'a malformed location', [...vars('A BOOL', 'X BOOL', 'Q BOOL %QX0.9')]],
+    ['LD-E12', 'a malformed location', [...vars('A BOOL', 'X BOOL', 'Q BOOL %QZ0.1')]],
+    ['LD-W04', 'a bit beyond 7, which no device drives', [...vars('A BOOL', 'X BOOL', 'Q BOOL %QX0.9')]],
     ['LD-E13', 'a location that does not hold the type', [...vars('A BOOL', 'X BOOL', 'Q INT %QX0.1')]],
     ['LD-E14', 'a bad initial value', [...vars('A BOOL', 'X BOOL', 'N INT := 70000')]],
     ['LD-E15', 'an unknown type', [...vars('A BOOL', 'X BOOL', 'N MYTYPE')]],
     ['LD-W02', 'two variables at one location', [...vars('A BOOL %IX0.0', 'X BOOL', 'Alias BOOL %IX0.0')]],
   ] as const)('%s %s (network -1)', (rule, _what, specs) => {
     expect(table(...specs)).toContain(`${rule} -1`);
+  });
+  test('two variables at one location: a warning under iec, an error under openplc (MATIEC refuses it)', () => {
+    const specs = vars('A BOOL %IX0.0', 'X BOOL', 'Alias BOOL %IX0.0');
+    const iec = checkProject(project(specs, [ladder(['[A] (X)'])], 'iec'));
+    expect(iec.find((d) => d.rule === 'LD-W02')?.severity).toBe('warning');
+    const openplc = checkProject(project(specs, [ladder(['[A] (X)'])], 'openplc'));
+    const e = openplc.find((d) => d.rule === 'LD-E17');
+    expect(e?.severity).toBe('error');
+    expect(e?.message).toBe(
+      'the variable "Alias" shares the location %IX0.0 with "A": MATIEC refuses two variables at one location ("invalid location in global location declaration"); give each its own address, or use one variable',
+    );
+    expect(openplc.some((d) => d.rule === 'LD-W02')).toBe(false);
   });
   test('a clean table has no diagnostics', () => {
     expect(

@@ -78,6 +78,15 @@ describe('ST statements', () => {
     expect(seen).toEqual(['some C code']);
   });
 
+  test('a C code block {{ ... }} with C braces inside is one pragma; the IEC statements around it run', () => {
+    const seen: string[] = [];
+    const body = parseStatements('{{\n  if (x) { y(); }\n}}\nIF a THEN\n{{ setup(&v); }}\n  b := TRUE;\nEND_IF;', {
+      onPragma: (t) => seen.push(t.trim()),
+    });
+    expect(body.map((s) => s.k)).toEqual(['if']);
+    expect(seen).toEqual(['if (x) { y(); }', 'setup(&v);']);
+  });
+
   test('syntax errors name the line and column', () => {
     const err = (text: string) => {
       try {

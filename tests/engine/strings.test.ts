@@ -129,17 +129,23 @@ describe('string functions (MATIEC semantics)', () => {
     expect(call('DELETE', [S, 'INT', 'INT'], ['abcdef', 258, 3], 'iec')).toEqual(['ab', true]);
   });
 
-  it("FIND: the standard's first occurrence (iec); MATIEC's scan with its misses (openplc)", () => {
+  it("FIND: the standard's first occurrence (iec); MATIEC's current __pfind with its partial-match miss (openplc)", () => {
     expect(call('FIND', S, ['hello', 'll'])).toEqual([3, true]);
     expect(call('FIND', S, ['hello', 'x'])).toEqual([0, true]);
     expect(call('FIND', S, ['aab', 'ab'])).toEqual([2, true]);
+    expect(call('FIND', S, ['abc', ''])).toEqual([0, true]);
     expect(call('FIND', S, ['hello', 'll'], 'openplc')).toEqual([3, true]);
     expect(call('FIND', S, ['hello', 'x'], 'openplc')).toEqual([0, true]);
-    // __pfind resumes after a partial match, and ends with count1 + 1 when IN2 is not found.
-    expect(matiecFind('aab', 'ab')).toBe(4);
-    expect(matiecFind('abc', 'xy')).toBe(4);
-    expect(matiecFind('abc', '')).toBe(1);
-    expect(call('FIND', S, ['abc', 'xy'], 'openplc')).toEqual([4, true]);
+    // MATIEC since 2020 (the reference): 0 when IN2 is empty, longer than IN1 or not found; the scan
+    // still resumes after a partial match, so 'ab' inside 'aab' is missed.
+    expect(matiecFind('aab', 'ab')).toBe(0);
+    expect(matiecFind('abc', 'xy')).toBe(0);
+    expect(matiecFind('abc', '')).toBe(0);
+    expect(matiecFind('', 'ab')).toBe(0);
+    expect(matiecFind('ab', 'abc')).toBe(0);
+    expect(matiecFind('abcabd', 'abd')).toBe(4);
+    expect(call('FIND', S, ['abc', 'xy'], 'openplc')).toEqual([0, true]);
+    expect(call('FIND', S, ['abc', 'c'], 'openplc')).toEqual([3, true]);
   });
 
   it('refuses mixing STRING and WSTRING, and numbers where strings are needed', () => {
@@ -162,11 +168,16 @@ describe('string comparisons', () => {
     expect(call('LIMIT', S, ['b', 'a', 'd'])).toEqual(['b', true]);
   });
 
-  it("openplc: MATIEC's __STR_CMP compares the shorter length only, so a prefix is equal", () => {
-    expect(call('EQ', S, ['abc', 'abcd'], 'openplc')).toEqual([true, true]);
-    expect(call('EQ', S, ['', 'hi'], 'openplc')).toEqual([true, true]);
+  it("openplc: the same order (MATIEC's __str_cmp since 2020: the common length, then the lengths)", () => {
+    expect(call('EQ', S, ['abc', 'abcd'], 'openplc')).toEqual([false, true]);
+    expect(call('EQ', S, ['', 'hi'], 'openplc')).toEqual([false, true]);
+    expect(call('EQ', S, ['', ''], 'openplc')).toEqual([true, true]);
     expect(call('NE', S, ['abc', 'abd'], 'openplc')).toEqual([true, true]);
-    expect(call('LT', S, ['ab', 'abc'], 'openplc')).toEqual([false, true]);
+    expect(call('LT', S, ['ab', 'abc'], 'openplc')).toEqual([true, true]);
+    expect(call('GT', S, ['abc', 'ab'], 'openplc')).toEqual([true, true]);
+    expect(call('LT', S, ['a', 'a\xff'], 'openplc')).toEqual([true, true]);
+    expect(call('MAX', S, ['ab', 'abc'], 'openplc')).toEqual(['abc', true]);
+    expect(call('MIN', S, ['', 'a'], 'openplc')).toEqual(['', true]);
   });
 });
 

@@ -10,7 +10,9 @@ describe('IEC addresses', () => {
   test('flat addresses read as before', () => {
     expect(parseLocation('%ix0.3')).toEqual({ area: 'I', size: 'X', index: 0, bit: 3 });
     expect(parseLocation('%QW7')).toEqual({ area: 'Q', size: 'W', index: 7 });
-    expect(parseLocation('%IX0.8')).toBeUndefined();
+    // No bound on the bit: %IX0.12 is a location of its own (MATIEC compiles it), with no OpenPLC register.
+    expect(parseLocation('%IX0.12')).toEqual({ area: 'I', size: 'X', index: 0, bit: 12 });
+    expect(openPlcRegister('%IX0.12')).toBeUndefined();
     expect(parseLocation('%I3')).toBeUndefined();
   });
 
@@ -31,5 +33,22 @@ describe('IEC addresses', () => {
     );
     expect(checkProject(p).filter((d) => d.severity === 'error')).toEqual([]);
     expect(trace(plcOf(p), [{ T1: 5, T2: 3 }, { T1: 1, T2: 3 }], ['Flag'])).toEqual([[1], [0]]);
+  });
+});
+
+describe('bits beyond 7', () => {
+  test('%IX0.12 and %IX1.4 are two inputs; LD-W04 says that no device drives %IX0.12', () => {
+    const p = project(
+      [{ ...vars('A BOOL')[0]!, location: '%IX0.12' }, { ...vars('B BOOL')[0]!, location: '%IX1.4' }, ...vars('Q BOOL')],
+      [ladder(['[A] - (Q)'])],
+    );
+    const d = checkProject(p);
+    expect(d.filter((x) => x.severity === 'error')).toEqual([]);
+    expect(d.find((x) => x.rule === 'LD-W04')?.message).toContain('"A" is at bit 12 of byte 0 (%IX0.12)');
+    const plc = plcOf(p);
+    plc.write('A', true);
+    plc.scan();
+    expect(plc.read('Q')).toBe(true);
+    expect(plc.read('B')).toBe(false);
   });
 });

@@ -36,15 +36,24 @@ describe('PLCopen import errors', () => {
     );
   });
 
-  it('a connection to a localId that does not exist names the element, its localId and line', () => {
+  it('a connection to a localId that does not exist drops that wire only, with a warning naming the element, its localId and line', () => {
     const text = fixture('connector-continuation.xml').replace(
       '<connection refLocalId="2">',
       '<connection refLocalId="99">',
     );
-    const e = errorOf(text);
-    expect(e).toMatchObject({ element: 'contact', localId: '3', pou: 'Main' });
-    expect(e.line).toBeGreaterThan(20);
-    expect(e.message).toContain('localId 99, which does not exist');
+    const whole = importPlcopen(fixture('connector-continuation.xml'));
+    const r = importPlcopen(text);
+    expect(r.ok).toBe(true);
+    if (!r.ok || !whole.ok) return;
+    const w = r.report.warnings.find((x) => x.message.includes('localId 99, which does not exist'));
+    expect(w).toMatchObject({ element: 'contact', localId: '3', pou: 'Main' });
+    expect(w!.line).toBeGreaterThan(20);
+    expect(w!.message).toContain('that wire is dropped');
+    // Everything else is there: the same POUs, networks and element count less nothing.
+    expect(r.project.pous.map((p) => p.name)).toEqual(whole.project.pous.map((p) => p.name));
+    expect(r.project.pous[0]!.networks.flatMap((n) => n.elements.filter((e) => e.kind !== 'link')).length).toBe(
+      whole.project.pous[0]!.networks.flatMap((n) => n.elements.filter((e) => e.kind !== 'link')).length,
+    );
   });
 
   it('two objects with one localId are refused', () => {

@@ -11,7 +11,7 @@ import {
 } from '../../src/plcopen/exportBehaviour';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
-import { ladder, project, vars } from '../engine/ladder';
+import { ladder, plcOf, project, trace, vars } from '../engine/ladder';
 import { firstDifference, traceProgram, without } from './trace';
 import { schemaErrors } from './xsd';
 
@@ -207,5 +207,68 @@ describe('LD-X05 contacts read again for each coil', () => {
     const net = ladder(['+ [Start] + [/Stop] + (Motor)', '+ [Motor] + . + (Lamp)']);
     expect(exportBehaviour(project(v, [net]))).toEqual([]);
     expect(exportBehaviour(example('motor-start-stop'))).toEqual([]);
+  });
+});
+
+// Bugs of Beremiz's generator (issue 23, class 14), checked against the MATIEC reference on the
+// exported XML (../shared/tools/oracle): the simulator reads the drawing, the export warns.
+describe('LD-X06 a connector OR pasted without brackets', () => {
+  const v = vars('I1 BOOL %IX0.1', 'I2 BOOL %IX0.2', 'I3 BOOL %IX0.3', 'Q0 BOOL %QX0.0');
+  const drawn = ladder(['+ [I1] + >CX>|', '+ [I2] +', '|>CX> [I3] (Q0)']);
+
+  it('an OR into a connector, a contact after its continuation: named with what they generate', () => {
+    for (const profile of ['iec', 'openplc'] as const) {
+      const ws = exportBehaviour(project(v, [drawn], profile));
+      expect(ws.map((w) => [w.rule, w.network, w.cell])).toEqual([['LD-X06', 0, { row: 2, col: 0 }]]);
+      expect(formatExportWarning(ws[0]!)).toMatch(
+        /^warning LD-X06 Main\/network 1:R3C1 Beremiz and OpenPLC paste the OR that reaches the connector ">CX>" into what follows the continuation ">CX>" at R3C1 without brackets: they write the coil "Q0" as Q0 := I3 AND I1 OR I2, where AND binds before OR/,
+      );
+      expect(ws[0]!.fix).toBeUndefined();
+    }
+  });
+
+  it('the simulator does not copy the bug: the whole OR is in series with I3', () => {
+    const plc = plcOf(project(v, [drawn], 'openplc'));
+    expect(trace(plc, [{ I2: true }, { I3: true }, { I2: false, I1: true }], ['Q0'])).toEqual([[0], [1], [1]]);
+  });
+
+  it('a file with that shape (an OR into a connector, a contact after the continuation) is named on import', () => {
+    const r = importPlcopen(exportPlcopen(project(v, [drawn], 'openplc')));
+    if (!r.ok) throw new Error('the export does not import');
+    const notes = r.report.warnings.map((w) => w.message).filter((m) => m.includes('paste that OR'));
+    expect(notes).toEqual([
+      expect.stringMatching(/^contact "I3" follows continuation "CX", whose connector gathers an OR: Beremiz and OpenPLC paste that OR without brackets after the contact \(they write I3 AND I1 OR I2\)/),
+    ]);
+    // The drawing without that shape imports without the note.
+    const plain = importPlcopen(exportPlcopen(project(v, [ladder(['+ [I1] + >CX>|', '+ [I2] +', '|>CX> - (Q0)'])], 'openplc')));
+    expect(plain.ok && plain.report.warnings.some((w) => w.message.includes('paste that OR'))).toBe(false);
+  });
+
+  it('not reported where the pasted text stands alone: a continuation straight into a coil, or an OR that reaches the rail', () => {
+    expect(exportBehaviour(project(v, [ladder(['+ [I1] + >CX>|', '+ [I2] +', '|>CX> - (Q0)'])]))).toEqual([]);
+    expect(exportBehaviour(project(v, [ladder(['+ [I1] + >CX>|', '+ - +', '|>CX> [I3] (Q0)'])]))).toEqual([]);
+    expect(exportBehaviour(project(v, [ladder(['[I1] [I2] >CX>|', '|>CX> [I3] (Q0)'])]))).toEqual([]);
+  });
+});
+
+describe('LD-X07 coils in series after an OR join', () => {
+  const v = vars('I1 BOOL %IX0.1', 'I2 BOOL %IX0.2', 'Q1 BOOL %QX0.1', 'Q2 BOOL %QX0.2');
+
+  it('the coil after the join passes the AND of the branches to the next coil there', () => {
+    const ws = exportBehaviour(project(v, [ladder(['+ [I1] + (Q1) (Q2)', '+ [I2] +'])]));
+    expect(ws.map((w) => [w.rule, w.network, w.cell])).toEqual([['LD-X07', 0, { row: 0, col: 1 }]]);
+    expect(ws[0]!.message).toMatch(
+      /^the coil "Q1" joins 2 branches \(I1 OR I2\), and the coil "Q2" follows it in series: Beremiz and OpenPLC give the coil "Q2" the AND of those branches \(I1 AND I2\), not their OR/,
+    );
+    const plc = plcOf(project(v, [ladder(['+ [I1] + (Q1) (Q2)', '+ [I2] +'])], 'openplc'));
+    expect(trace(plc, [{ I1: true }, { I1: false, I2: true }], ['Q1', 'Q2'])).toEqual([
+      [1, 1],
+      [1, 1],
+    ]);
+  });
+
+  it('not reported for a coil after the join that reaches only the rail, nor for a series coil after one branch', () => {
+    expect(exportBehaviour(project(v, [ladder(['+ [I1] + (Q1)', '+ [I2] +'])]))).toEqual([]);
+    expect(exportBehaviour(project(v, [ladder(['[I1] [I2] (Q1) (Q2)'])]))).toEqual([]);
   });
 });

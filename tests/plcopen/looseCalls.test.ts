@@ -162,7 +162,7 @@ describe('a VAR_EXTERNAL whose global is declared outside the file (OpenPLC Ardu
     ]);
     expect(report.warnings.filter((w) => /current_count/.test(w.message))).toEqual([]);
     expect(found(project)).toEqual([
-      'warning LD-W16 current_count is declared outside the project (VAR_EXTERNAL, no global of that name); the simulator keeps it as a global INT starting at 5, which you can write and force in the watch table',
+      'warning LD-W16 current_count is declared outside the project (VAR_EXTERNAL, no global of that name: MATIEC on its own refuses that, "the external variable does not match with any global variable", unless the build declares it, as OpenPLC\'s board builds do); the simulator keeps it as a global INT starting at 5, which you can write and force in the watch table',
     ]);
   });
 

@@ -144,7 +144,7 @@ describe('VAR_EXTERNAL without a matching global', () => {
         'warning',
         'Main',
         -1,
-        'Motor is declared outside the project (VAR_EXTERNAL, no global of that name); the simulator keeps it as a global BOOL, which you can write and force in the watch table',
+        'Motor is declared outside the project (VAR_EXTERNAL, no global of that name: MATIEC on its own refuses that, "the external variable does not match with any global variable", unless the build declares it, as OpenPLC\'s board builds do); the simulator keeps it as a global BOOL, which you can write and force in the watch table',
       ],
       [
         'LD-E16',

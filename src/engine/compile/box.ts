@@ -12,11 +12,11 @@ import { resolveFunction } from '../library/functions';
 import { isUntypedLiteral, parseLiteral } from '../values/literals';
 import { canWiden, defaultValue, normalize, typeRange, type SizedType } from '../values/types';
 import type { PouContext } from './context';
-import type { GraphNode } from './graph';
+import { upstream, type GraphNode } from './graph';
 import type { ArgIR, Op, OutIR, Source } from './ir';
 import type { NetMap } from './netMap';
 import { describeElement, type Reporter } from './report';
-import type { Access, UfbSymbol } from './symbols';
+import type { Access, FbSymbol, UfbSymbol } from './symbols';
 import { boxLayoutFor, type BoxLayout, type PlacedPin } from '../../model/boxLayout';
 import { isInOutPin } from '../../model/library';
 import { lowerUserCall } from './userCall';
@@ -217,6 +217,17 @@ export function lowerBox(
     info.open = true;
   }
 
+  // EN that the file left open (drawn from the rail): not connected, while the rail alone feeds it.
+  const enInfo = infos.find((i) => i.pin.name === 'EN');
+  if (el.enOpen && enInfo?.src?.from === 'power') {
+    const t = node.inputs.find((x) => x.pin === 'EN')!;
+    const up = upstream(nets.g, t.net);
+    if (up.leftRail && up.sources.length === 0) delete enInfo.src;
+  }
+  // An FB instance keeps EN like any input (IEC: VAR_INPUT EN : BOOL := TRUE; MATIEC alike).
+  const fbSym = userInstance ?? (fbIndex >= 0 ? ctx.symbols.fbs[fbIndex] : undefined);
+  const enMemory = fbSym && el.instance ? enMemoryOf(ctx, fbSym, el.instance) : undefined;
+
   // Outputs.
   const outputs = layout.outputs.map((pin) => {
     const t = node.outputs.find((x) => x.pin === pin.name)!;
@@ -224,7 +235,7 @@ export function lowerBox(
   });
 
   if (userPou)
-    return lowerUserCall(ctx, { el, name, node, nets, infos, outputs, pou: userPou, instance: userInstance, network, r, before });
+    return lowerUserCall(ctx, { el, name, node, nets, infos, outputs, pou: userPou, instance: userInstance, network, r, before, enMemory });
 
   if (isFb) {
     const args: ArgIR[] = [];
@@ -276,6 +287,7 @@ export function lowerBox(
       args,
       outs,
       ...(eno ? { eno } : {}),
+      ...(enMemory ? { enMemory } : {}),
     };
   }
 
@@ -333,7 +345,6 @@ export function lowerBox(
     }
     args.push({ pin: info.pin.name, type, src });
   });
-  const enInfo = infos.find((i) => i.pin.name === 'EN');
   const outType = fn.outType;
   const out = lowerOutput(ctx, nets, el, name, outPin, outType, undefined, r);
   const enoPin = outputs.find((o) => o.pin.name === 'ENO')!;
@@ -350,7 +361,43 @@ export function lowerBox(
     args,
     out,
     eno,
+    ...(ctx.profile === 'openplc' ? { matiecOutputs: true as const } : {}),
   };
+}
+
+const enCalls = new WeakMap<PouContext, ReadonlySet<string>>();
+
+/** Instances (upper case) that a box of the POU being lowered calls with an EN pin it does not leave open. */
+function instancesCalledWithEn(ctx: PouContext): ReadonlySet<string> {
+  let set = enCalls.get(ctx);
+  if (set) return set;
+  const names = new Set<string>();
+  const pou = ctx.project.pous.find((p) => p.name === ctx.pouName);
+  for (const network of pou?.networks ?? [])
+    for (const el of network.elements)
+      if (el.kind === 'box' && el.executionControl && !el.enOpen && el.instance) names.add(el.instance.trim().toUpperCase());
+  set = names;
+  enCalls.set(ctx, set);
+  return set;
+}
+
+/**
+ * The EN an FB instance kept from its last call, where a call with EN and one without meet (IEC
+ * declares EN as the instance's `VAR_INPUT EN : BOOL := TRUE`; MATIEC keeps it in the instance):
+ * a hidden BOOL, "EN was OFF at the last call given EN", FALSE at a cold restart. Only for instances
+ * the POU calls with an EN pin; an instance never given EN always runs.
+ */
+function enMemoryOf(ctx: PouContext, sym: FbSymbol | UfbSymbol, instance: string): Access | undefined {
+  if (!instancesCalledWithEn(ctx).has(instance.trim().toUpperCase())) return undefined;
+  let a = ctx.enMemories.get(sym);
+  if (!a) {
+    const slot = ctx.symbols.counts.b++;
+    ctx.dataSlots.push({ store: 'b', slot, type: 'BOOL' });
+    const v = { kind: 'var', name: `${instance.trim()}.EN`, type: 'BOOL', store: 'b', slot, initial: false, retain: false, constant: false, global: false, implicit: false, hidden: true } as const;
+    a = { kind: 'var', v, type: 'BOOL' };
+    ctx.enMemories.set(sym, a);
+  }
+  return a;
 }
 
 function unconnectedFbInput(name: string, pin: PlacedPin): string {

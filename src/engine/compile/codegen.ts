@@ -10,7 +10,9 @@
 // This file writes the statements of each element (emitOp); operands are read and written through
 // the Emitter (emitter.ts); what a program's code shares (constants, units, straight bodies) is in
 // programConstants.ts.
-import type { ArgIR, NetworkIR, Op, OutIR } from './ir';
+import type { ArgIR, NetworkIR, Op, OutIR, Source } from './ir';
+import type { Access } from './symbols';
+import { defaultValue } from '../values/types';
 import { emitChart } from '../sfc/codegen';
 import { emitSt } from '../st/emit';
 import { singleWriterNets, writtenNets } from './nets';
@@ -268,8 +270,10 @@ function runBody(em: Emitter, first: number, end: number): string[] {
 function emitCall(em: Emitter, op: Extract<Op, { op: 'call' }>): void {
   const L = em.lines;
   const body: string[] = [];
+  // An FB call assigns its inputs whatever EN is (they are the instance's, as EN is); the body tests EN.
+  const inputs = op.kind === 'fb' ? L : body;
+  for (const a of op.assigns) inputs.push(em.writeValue(a.dst, em.readValue(a.src, a.dst.type), a.dst.type));
   for (const i of op.inits) body.push(em.writeValue(i.dst, em.constant(i.value), i.dst.type));
-  for (const a of op.assigns) body.push(em.writeValue(a.dst, em.readValue(a.src, a.dst.type), a.dst.type));
   if (em.pc.inlines(op.first, op.end)) body.push(...inlineBody(em, op.first, op.end));
   else body.push(`${CALL_TEXT}${em.p(op.first)}, ${em.p(op.end)}, now, scan);`);
   const outs: string[] = [];
@@ -277,11 +281,22 @@ function emitCall(em: Emitter, op: Extract<Op, { op: 'call' }>): void {
     emitOutput(em, o.out, em.readValue({ from: 'access', access: o.src }, o.out.type), outs);
   // A function's outputs are assigned only when it ran; an FB's are read after the call either way.
   if (op.kind === 'function') body.push(...outs);
-  const en = op.en ? (op.en.from === 'power' ? em.net(op.en.net) : em.readValue(op.en, 'BOOL')) : undefined;
+  const en = enOf(em, op.en, op.enMemory, L);
   if (en === undefined) L.push(...body, op.eno ? 'eno = 1;' : '');
   else L.push(`if (${en}) {`, ...body, 'eno = 1; } else { eno = 0; }');
   if (op.kind === 'fb') L.push(...outs);
   if (op.eno) emitOutput(em, op.eno, 'eno', L);
+}
+
+/**
+ * The expression of an FB call's EN (undefined: it always runs). With the instance's kept EN
+ * (`memory`, "EN was OFF"): a call given EN stores it first, one without reads what was kept.
+ */
+function enOf(em: Emitter, en: Source | undefined, memory: Access | undefined, L: string[]): string | undefined {
+  const given = en ? (en.from === 'power' ? em.net(en.net) : em.readValue(en, 'BOOL')) : undefined;
+  if (!memory) return given;
+  if (given !== undefined) L.push(em.writeValue(memory, `!(${given})`, 'BOOL'));
+  return `!${em.readValue({ from: 'access', access: memory }, 'BOOL')}`;
 }
 
 function argExprs(em: Emitter, args: readonly ArgIR[]): string[] {
@@ -311,13 +326,21 @@ function emitFunction(em: Emitter, op: Extract<Op, { op: 'function' }>): void {
   }
   const en = op.en ? (op.en.from === 'power' ? em.net(op.en.net) : em.readValue(op.en, 'BOOL')) : undefined;
   const body: string[] = ['ctx.error = false;', `r = ${call};`, 'eno = ctx.error ? 0 : 1;'];
-  // MATIEC-compiled programs assign a function's output variable only when ENO is ON: an error
-  // (DIV by zero, MUX out of range) leaves the variable as it was.
+  // A function's output variable is assigned only when ENO is ON: an error (DIV by zero, MUX out of
+  // range) leaves the variable as it was. openplc: Beremiz writes that `IF ENO` only when EN is
+  // connected; without EN, MATIEC's error value (the type's initial value) is written.
   const { dst, ...wired } = op.out;
   emitOutput(em, wired, 'r', body);
-  if (dst) body.push(`if (eno) { ${em.writeValue(dst, 'r', op.out.type)} }`);
+  if (dst) {
+    const write = em.writeValue(dst, 'r', op.out.type);
+    body.push(op.matiecOutputs && en === undefined ? write : `if (eno) { ${write} }`);
+  }
+  // openplc, EN OFF: MATIEC's function returned its initial value, which a block wired to the
+  // output reads (a BOOL output's net is OFF already).
+  const off: string[] = ['eno = 0;'];
+  if (op.matiecOutputs && wired.data) emitOutput(em, { pin: wired.pin, type: wired.type, data: wired.data }, em.constant(defaultValue(op.out.type)), off);
   if (en === undefined) L.push(...body);
-  else L.push(`if (${en}) { ${body.filter((l) => l !== '').join(' ')} } else { eno = 0; }`);
+  else L.push(`if (${en}) { ${body.filter((l) => l !== '').join(' ')} } else { ${off.join(' ')} }`);
   emitOutput(em, op.eno, 'eno', L);
 }
 
@@ -325,10 +348,11 @@ function emitFb(em: Emitter, op: Extract<Op, { op: 'fb' }>): void {
   const L = em.lines;
   const f = em.fbRef(op.fb);
   const body: string[] = [];
-  for (const a of op.args) body.push(`${f}.${a.pin} = ${em.readValue(a.src, a.type)};`);
+  // The inputs are assigned whatever EN is (they are the instance's, as EN is); the body tests EN.
+  for (const a of op.args) L.push(`${f}.${a.pin} = ${em.readValue(a.src, a.type)};`);
   body.push(`${f}.execute(now);`);
   // EN OFF (execution control): not executed, outputs kept, ENO OFF.
-  const en = op.en ? (op.en.from === 'power' ? em.net(op.en.net) : em.readValue(op.en, 'BOOL')) : undefined;
+  const en = enOf(em, op.en, op.enMemory, L);
   if (en === undefined) L.push(...body, op.eno ? 'eno = 1;' : '');
   else L.push(`if (${en}) {`, ...body, 'eno = 1; } else { eno = 0; }');
   for (const out of op.outs) emitOutput(em, out, `${f}.${out.pin}`, L);

@@ -73,6 +73,8 @@ export interface PouContext {
   readonly retentiveCoilVars: Set<VarSymbol>;
   /** Persistent slots holding function outputs wired to other blocks (initialised on cold restart). */
   readonly dataSlots: { store: Store; slot: number; type: ElementaryType }[];
+  /** FB instance -> the hidden BOOL "EN was OFF at its last call" (box.ts enMemoryOf). */
+  readonly enMemories: Map<FbSymbol | UfbSymbol, Access>;
 }
 
 /** Flattening (compile/flatten.ts): the body networks of one call, placed in the program's network array. */
@@ -95,6 +97,7 @@ export interface SharedParts {
   readonly edges: EdgeTable;
   readonly retentiveCoilVars: Set<VarSymbol>;
   readonly dataSlots: { store: Store; slot: number; type: ElementaryType }[];
+  readonly enMemories: Map<FbSymbol | UfbSymbol, Access>;
 }
 
 export function newPouContext(
@@ -110,6 +113,7 @@ export function newPouContext(
     edges: new EdgeTable(),
     retentiveCoilVars: new Set(),
     dataSlots: [],
+    enMemories: new Map(),
   };
   return {
     project,
@@ -127,6 +131,7 @@ export function newPouContext(
     coilWrites: new Map(),
     retentiveCoilVars: shared.retentiveCoilVars,
     dataSlots: shared.dataSlots,
+    enMemories: shared.enMemories,
   };
 }
 

@@ -46,6 +46,7 @@ export class Flattener implements CallBuilder {
     edges: new EdgeTable(),
     retentiveCoilVars: new Set(),
     dataSlots: [],
+    enMemories: new Map(),
   };
   /** Errors found while lowering bodies (their POU's own check normally reports them first). */
   readonly errors: Diagnostic[] = [];

@@ -284,7 +284,9 @@ export function startGenerated(
     blockWrites.set(ni, writes);
     // EN connected: by a wire or by a variable beside it (an inVariable in PLCopen).
     const enOperand = el.kind === 'box' && Object.entries(el.inputs).some(([k, v]) => k.toUpperCase() === 'EN' && v.trim() !== '');
-    const guarded = enOperand || node.inputs.some((t) => t.pin === 'EN' && wiredIn(t.net));
+    // An EN the file left open and Rungsmith draws from the rail (BoxElement.enOpen) is not connected.
+    const railEn = el.kind === 'box' && el.enOpen === true && (op.op === 'function' || op.op === 'fb' || op.op === 'call') && op.en === undefined;
+    const guarded = !railEn && (enOperand || node.inputs.some((t) => t.pin === 'EN' && wiredIn(t.net)));
     const held = (o: OutIR) => hiddenVar(`${describeElement(el)}.${o.pin}`, o.type);
     // ENO first: the variable holding it guards the other writes.
     const eno0 = 'eno' in op ? op.eno : undefined;

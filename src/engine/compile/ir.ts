@@ -68,6 +68,13 @@ export type Op =
       readonly args: readonly ArgIR[];
       readonly out: OutIR;
       readonly eno: OutIR;
+      /**
+       * openplc (MATIEC as Beremiz generates it): with EN not connected the output variable is
+       * written even on an error (no `IF ENO` around it), with the error value MATIEC returns (the
+       * type's initial value); with EN connected and OFF, outputs wired to other blocks carry that
+       * initial value (the function returned it). Absent: iec, an error or EN OFF assigns nothing.
+       */
+      readonly matiecOutputs?: true;
     }
   | {
       readonly op: 'fb';
@@ -78,6 +85,8 @@ export type Op =
       readonly args: readonly ArgIR[];
       readonly outs: readonly OutIR[];
       readonly eno?: OutIR;
+      /** The instance's kept EN (enMemoryOf in box.ts): set by a call with EN, read by one without. */
+      readonly enMemory?: Access;
     }
   | CallOp
   | StOp
@@ -100,6 +109,8 @@ export interface CallOp {
   readonly end: number;
   readonly outs: readonly { readonly out: OutIR; readonly src: Access }[];
   readonly eno?: OutIR;
+  /** An FB instance's kept EN (enMemoryOf in box.ts): set by a call with EN, read by one without. */
+  readonly enMemory?: Access;
 }
 
 export interface NetworkIR {

@@ -37,6 +37,7 @@ export function lowerPou(
     varReporter,
     new Reporter(globalsOut, 'globals', -1),
     blockLibrary(project),
+    profile,
   );
   checkPouKind(pou, symbols, varReporter);
   const lowered =

@@ -1,7 +1,7 @@
 // The symbol table of one POU as the checks and the program build it (symbols.ts holds the table
 // itself): the POU's variables, a FUNCTION's result variable, then the project's globals (also
 // declared once per program by declareGlobals), and the VAR_EXTERNAL checks (LD-E10, LD-E16, LD-W16).
-import type { Pou, Project, Variable } from '../../model/project';
+import type { Pou, Profile, Project, Variable } from '../../model/project';
 import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import { globalsWithOutside, outsideGlobals } from '../../model/outsideGlobals';
 import type { Reporter } from './report';
@@ -17,8 +17,9 @@ export function buildSymbols(
   r: Reporter,
   globalsReporter: Reporter,
   library: BlockLibrary = STANDARD_LIBRARY,
+  profile: Profile = project.profile,
 ): SymbolTable {
-  const table = new SymbolTable(new Storage(project), '', library);
+  const table = new SymbolTable(storageFor(project, profile), '', library);
   table.instantiating = new Set([pou.name.toUpperCase()]);
   for (const v of pou.variables) if (v.varClass !== 'external') table.declare(v, false, r, v.varClass === 'temp');
   if (pou.kind === 'FUNCTION' && !pou.variables.some((v) => v.name.toUpperCase() === pou.name.toUpperCase()))
@@ -26,6 +27,13 @@ export function buildSymbols(
   for (const v of globalsWithOutside(project)) table.declare(v, true, globalsReporter);
   for (const v of pou.variables) if (v.varClass === 'external') checkExternal(table, project, pou, v, r);
   return table;
+}
+
+/** A program's storage; the profile decides whether two variables at one location are an error. */
+export function storageFor(project: Project, profile: Profile): Storage {
+  const storage = new Storage(project);
+  if (profile === 'openplc') storage.sharedLocation = 'error';
+  return storage;
 }
 
 /** Declares the project's globals into a program's storage (once per program). */
@@ -50,7 +58,7 @@ function checkExternal(table: SymbolTable, project: Project, pou: Pou, decl: Var
     if (kept)
       r.warning(
         'LD-W16',
-        `${decl.name} is declared outside the project (VAR_EXTERNAL, no global of that name); the simulator keeps it as a global ${kept.type}${kept.initial ? ` starting at ${kept.initial}` : ''}, which you can write and force in the watch table`,
+        `${decl.name} is declared outside the project (VAR_EXTERNAL, no global of that name: MATIEC on its own refuses that, "the external variable does not match with any global variable", unless the build declares it, as OpenPLC's board builds do); the simulator keeps it as a global ${kept.type}${kept.initial ? ` starting at ${kept.initial}` : ''}, which you can write and force in the watch table`,
       );
     if (!kept || kept.type.trim().toUpperCase() === decl.type.trim().toUpperCase()) return;
   }

@@ -14,8 +14,8 @@ import { Flattener, type BodyInfo } from './flatten';
 import type { NetworkIR } from './ir';
 import { lowerPou } from './pou';
 import { Reporter } from './report';
-import { Storage, SymbolTable, type Store, type VarSymbol } from './symbols';
-import { buildSymbols, declareGlobals } from './pouSymbols';
+import { SymbolTable, type Store, type VarSymbol } from './symbols';
+import { buildSymbols, declareGlobals, storageFor } from './pouSymbols';
 import { taskSchedule } from './taskSchedule';
 import { taskTriggers, type TaskTrigger } from './taskTriggers';
 
@@ -87,7 +87,7 @@ export function assembleProgram(
       r.error('LD-E20', 'no task runs a program; add a program instance to a task');
       return { diagnostics };
     }
-    root = new SymbolTable(new Storage(project), '', library);
+    root = new SymbolTable(storageFor(project, profile), '', library);
     declareGlobals(root, project, new Reporter(globals, 'globals', -1));
     roots = [];
     const seen = new Set<string>();
@@ -148,7 +148,7 @@ export function assembleProgram(
       lowerPou(project, pou, profile, diagnostics, globals);
       return { diagnostics: [...globals, ...diagnostics] };
     }
-    root = buildSymbols(project, pou, varReporter, new Reporter(globals, 'globals', -1), library);
+    root = buildSymbols(project, pou, varReporter, new Reporter(globals, 'globals', -1), library, profile);
     flat.setRoot(root);
     flat.body(pou, root, { kind: 'program' }, diagnostics);
   }

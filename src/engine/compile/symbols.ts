@@ -130,6 +130,11 @@ export class Storage {
   readonly globals = new Map<string, VarSymbol | FbSymbol | UfbSymbol | AggSymbol>();
   /** Struct and array variables of the program (all scopes), in declaration order. */
   readonly aggs: AggSymbol[] = [];
+  /**
+   * Two variables at one location: a warning (LD-W02, IEC and CODESYS allow it), or under profile
+   * openplc an error (LD-E17), as MATIEC refuses it ("invalid location in global location declaration").
+   */
+  sharedLocation: 'warning' | 'error' = 'warning';
   constructor(
     /** Where data type names resolve (Project.dataTypes; user FB types from its POUs). */
     readonly types: Pick<Project, 'dataTypes' | 'pous'> = { pous: [] },
@@ -306,13 +311,23 @@ export class SymbolTable {
       r.error('LD-E13', `${what} is ${type} but its location ${decl.location} holds ${sizeWords(location)}`);
       return false;
     }
+    if (location.size === 'X' && (location.bit ?? 0) > 7 && !location.levels && location.area !== 'M')
+      r.warning(
+        'LD-W04',
+        `${what} is at bit ${location.bit} of byte ${location.index} (${decl.location}): IEC allows it and MATIEC compiles it, and the simulator keeps it apart from %${location.area}X${location.index + Math.floor(location.bit! / 8)}.${location.bit! % 8}; but OpenPLC's I/O map and the gateway have bits 0..7 only, so no device drives it`,
+      );
     return location;
   }
 
   private noteLocation(v: VarSymbol, what: string, r: Reporter): void {
     if (!v.locationText) return;
     const other = this.storage.byLocation.get(v.locationText);
-    if (other)
+    if (other && this.storage.sharedLocation === 'error')
+      r.error(
+        'LD-E17',
+        `${what} shares the location ${v.locationText} with "${other.name}": MATIEC refuses two variables at one location ("invalid location in global location declaration"); give each its own address, or use one variable`,
+      );
+    else if (other)
       r.warning('LD-W02', `${what} shares the location ${v.locationText} with "${other.name}"; both name the same memory`);
     else this.storage.byLocation.set(v.locationText, v);
   }

@@ -36,6 +36,8 @@ export interface UserCallParts {
   readonly r: Reporter;
   /** Errors reported for this box before. */
   readonly before: number;
+  /** The instance's kept EN (box.ts enMemoryOf). */
+  readonly enMemory?: Access | undefined;
 }
 
 const memberAccess = (scope: SymbolTable, name: string): Access | undefined => {
@@ -197,5 +199,6 @@ export function lowerUserCall(ctx: PouContext, c: UserCallParts): CallOp | undef
     end: body.end,
     outs,
     ...(eno ? { eno } : {}),
+    ...(isFb && c.enMemory ? { enMemory: c.enMemory } : {}),
   };
 }

@@ -159,7 +159,7 @@ function implement(
   const one = (f: FnImpl1): Impls => ({ impl: fromImpl1(f), impl1: f });
   const two = (f: FnImpl2, extensible: boolean): Impls => ({ impl: extensible ? fold(f) : fromImpl2(f), impl2: f });
   if (isStringFunction(name)) return stringFunction(name, outType, profile);
-  if (isStringType(t) && isStringComparison(name)) return stringComparison(name, t, argTypes.length, profile);
+  if (isStringType(t) && isStringComparison(name)) return stringComparison(name, t, argTypes.length);
   const conv = conversionTypes(name);
   if (conv) return one(conversion(conv.from, conv.to, profile));
   if (isRealFunction(name)) return one(realFunction(name, t));

@@ -14,14 +14,16 @@
 // |                      | (the value is the same wrapped result)      |                                                    |
 // | limit-crossed        | LIMIT = MIN(MAX(IN, MN), MX): MX if MN > MX | IN > MN ? (IN < MX ? IN : MX) : MN: MN if MN >= IN |
 // | mux-negative         | MUX with K < 0: ENO OFF, output not assigned| ENO ON, OUT = 0 (MATIEC tests only K >= n)         |
-// | string-compare       | strings compare character by character,     | __STR_CMP: memcmp over the shorter length, so      |
-// |                      | a prefix before the longer string           | 'abc' = 'abcd' and '' equals every string          |
-// | string-find          | FIND: first occurrence, 0 when none         | __pfind: misses overlapping starts, LEN+1 when none|
+// | string-find          | FIND: first occurrence, 0 when none         | __pfind: resumes past a partial match, so it misses|
+// |                      |                                             | an occurrence starting inside one (FIND('aab','ab')|
+// |                      |                                             | = 0)                                               |
 // | time-to-string       | TIME_TO_STRING(T#1s500ms) = 'T#1s500ms'     | 'T#0d0h0m1s500ms' (__time_to_string)               |
 // | string-to-number     | STRING_TO_<num/TIME> reads an IEC literal,  | __pstring_to_sint/atof: skips what it cannot read, |
 // |                      | other text is an error (ENO OFF, 0)         | ENO ON; TIME in seconds                            |
 //
-// Same in both (checked): timers, edge detection, bistables; DIV by zero (ENO OFF, result 0);
+// Same in both (checked): string comparisons (MATIEC's __str_cmp since 2020: 'abc' < 'abcd', ''
+// equals only ''; OpenPLC v3's runtime still bundles the library from before, where a prefix and ''
+// compared equal and FIND gave LEN(IN1) + 1 when nothing was found); timers, edge detection, bistables; DIV by zero (ENO OFF, result 0);
 // REAL_TO_<int> rounds to nearest with ties to even (MATIEC __real_round); negative REAL to an
 // unsigned type gives 0; <num>_TO_BOOL is TRUE for any non-zero value; integer arithmetic wraps.
 // Not emulated (undefined behaviour in MATIEC's C, differs between x86 and ARM targets): shifts by
@@ -76,16 +78,10 @@ export const PROFILE_DIFFERENCES: readonly ProfileDifference[] = [
     openplc: 'ENO stays ON and OUT is 0 (the type\'s initial value): MATIEC checks only K >= the input count.',
   },
   {
-    id: 'string-compare',
-    summary: 'Comparing strings (EQ, GT, ..., MAX, MIN, LIMIT)',
-    iec: "Character by character; a string that is the start of a longer one is smaller: 'abc' < 'abcd'.",
-    openplc: "MATIEC compares the shorter length only (memcmp): 'abc' = 'abcd', and '' equals every string.",
-  },
-  {
     id: 'string-find',
-    summary: 'FIND when IN2 is not found, or starts inside a partial match',
+    summary: 'FIND when IN2 starts inside a partial match',
     iec: "The position of the first occurrence, 0 when there is none: FIND('aab', 'ab') = 2.",
-    openplc: "MATIEC's scan resumes after a partial match and gives LEN(IN1) + 1 when nothing is found: FIND('aab', 'ab') = 4, FIND('abc', 'xy') = 4.",
+    openplc: "MATIEC's scan resumes after a partial match, so it misses an occurrence that starts inside one: FIND('aab', 'ab') = 0. Both give 0 when IN2 is empty, longer than IN1 or absent.",
   },
   {
     id: 'time-to-string',

@@ -11,7 +11,8 @@
 //   REPLACE with P beyond the end append or keep, as the C does.
 // - X_TO_STRING writes MATIEC's formats: BOOL 'TRUE'/'FALSE', bit strings '16#ff' (printf %llx),
 //   integers in decimal, REAL/LREAL as printf("%.10g") ('0.1000000015' for REAL 0.1, '1e+20').
-// Profiles (profiles.ts): comparisons (string-compare), FIND (string-find), TIME_TO_STRING
+// Comparisons and FIND follow MATIEC's library since its 2020 fixes (the one Beremiz builds).
+// Profiles (profiles.ts): FIND after a partial match (string-find), TIME_TO_STRING
 // (time-to-string), STRING_TO_<number, TIME> (string-to-number); openplc also takes INSERT, DELETE
 // and REPLACE's L and P modulo 256 (MATIEC casts them to its 8-bit length type).
 import type { DateType, ElementaryType, Value } from '../../model/iecTypes';
@@ -131,15 +132,20 @@ function fail(ctx: FnContext): string {
   return '';
 }
 
-/** FIND in the standard's words: the position of the first occurrence of IN2 in IN1, 0 when there is none. */
-const iecFind = (s: string, sub: string): number => s.indexOf(sub) + 1;
+/**
+ * FIND in the standard's words: the position of the first occurrence of IN2 in IN1, 0 when there is
+ * none; an empty IN2 is not an occurrence (0), as in MATIEC's library since 2020.
+ */
+const iecFind = (s: string, sub: string): number => (sub.length === 0 ? 0 : s.indexOf(sub) + 1);
 
 /**
- * MATIEC's __pfind, step for step: after a mismatch it resumes past the partial match (so
- * FIND('aab', 'ab') misses), and when IN2 is not found it gives LEN(IN1) + 1 unless the scan
- * ended one character short of a match (then 0).
+ * MATIEC's __pfind (its library since 2020, which Beremiz builds; OpenPLC v3's runtime bundles the
+ * older one, see docs/simulation.md): 0 when IN2 is empty or longer than IN1 or not found; after a
+ * mismatch the scan resumes past the partial match, so an occurrence that starts inside one is
+ * missed: FIND('aab', 'ab') = 0 (iec: 2).
  */
 export function matiecFind(s: string, sub: string): number {
+  if (sub.length === 0 || s.length < sub.length) return 0;
   let count1 = 0;
   let count2 = 0;
   while (count1 + count2 < s.length && count2 < sub.length) {
@@ -148,26 +154,16 @@ export function matiecFind(s: string, sub: string): number {
       count2 = 0;
     } else count2++;
   }
-  return count2 === sub.length - 1 ? 0 : count1 + 1;
+  return count2 === sub.length ? count1 + 1 : 0;
 }
 
 /**
- * How two strings compare: below 0, 0 or above 0. `iec`: character by character, a prefix before
- * the longer string. `openplc`: MATIEC's __STR_CMP, a memcmp over the shorter length only, so
- * 'abc' = 'abcd' and '' equals every string.
+ * How two strings compare: below 0, 0 or above 0. Character by character (character codes, as
+ * MATIEC's memcmp of unsigned bytes), a string that is the start of a longer one before it:
+ * 'abc' < 'abcd'. Both profiles: MATIEC's __str_cmp since 2020 compares the common length and then
+ * the lengths (before, '' equalled every string; OpenPLC v3's runtime still bundles that library).
  */
-export function stringOrder(profile: Profile): (a: string, b: string) => number {
-  if (profile === 'openplc')
-    return (a, b) => {
-      const n = Math.min(a.length, b.length);
-      for (let i = 0; i < n; i++) {
-        const d = a.charCodeAt(i) - b.charCodeAt(i);
-        if (d !== 0) return d;
-      }
-      return 0;
-    };
-  return (a, b) => (a < b ? -1 : a > b ? 1 : 0);
-}
+export const compareStrings = (a: string, b: string): number => (a < b ? -1 : a > b ? 1 : 0);
 
 // ---- conversions ----
 
@@ -319,11 +315,12 @@ export function fromStringConversion(to: ElementaryType, profile: Profile): FnIm
 
 /** X_TO_STRING or STRING_TO_X. */
 export function stringConversion(from: ElementaryType, to: ElementaryType, profile: Profile): FnImpl1 {
-  // MATIEC's __tod_to_string: a TOD of a day or more is an error, 'TOD#ERROR'.
+  // MATIEC's __tod_to_string: a TOD of a day or more gives 'TOD#ERROR' with ENO ON (it calls
+  // __iec_error(), which does not touch ENO; checked against the reference); iec: an error (ENO OFF).
   if (from === 'TOD' && to === 'STRING')
     return (ctx, a) => {
       if (num(a) >= DAY_MS || num(a) < 0) {
-        ctx.error = true;
+        if (profile === 'iec') ctx.error = true;
         return 'TOD#ERROR';
       }
       return toStringText(from, a, profile);
@@ -350,16 +347,14 @@ const TESTS: Record<Exclude<StringComparison, 'MAX' | 'MIN' | 'LIMIT'>, (d: numb
 /**
  * GT..LT (chained like MATIEC's __compare_), MAX, MIN (MATIEC's __extrem_: a later input replaces
  * the best only when strictly better) and LIMIT (MATIEC: IN > MN ? (IN < MX ? IN : MX) : MN, in
- * both profiles) over strings, in the profile's order (stringOrder).
+ * both profiles) over strings (compareStrings).
  */
 export function stringComparison(
   name: StringComparison,
   _t: ElementaryType,
   argc: number,
-  profile: Profile,
 ): { impl: FnImpl; impl2?: FnImpl2 } {
-  const order = stringOrder(profile);
-  const cmp = (a: Value, b: Value) => order(str(a), str(b));
+  const cmp = (a: Value, b: Value) => compareStrings(str(a), str(b));
   if (name === 'LIMIT') return { impl: (_c, [mn, v, mx]) => (cmp(v!, mn!) > 0 ? (cmp(v!, mx!) < 0 ? v! : mx!) : mn!) };
   if (name === 'MAX' || name === 'MIN') {
     const better = name === 'MAX' ? (d: number) => d < 0 : (d: number) => d > 0;

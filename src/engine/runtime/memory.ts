@@ -42,6 +42,7 @@ export class Memory {
       const v = defaultValue(d.type);
       // g holds bigints and strings (symbols.ts Store).
       if (d.store === 'g') this.g[d.slot] = v as bigint | string;
+      else if (d.store === 'b') this.b[d.slot] = v === true ? 1 : 0;
       else this.n[d.slot] = v as number;
     }
   }

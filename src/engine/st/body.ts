@@ -31,8 +31,11 @@ export function lowerTextBody(
     { symbols, profile, functions: ctx.functions, ...(ctx.calls ? { calls: ctx.calls } : {}), pouName: pou.name },
     place.first,
   );
-  for (const p of result.pragmas)
-    r.warning('LD-W50', `the pragma {${p.text.trim()}} in the ${pou.language} body of ${pou.name} (line ${p.pos.line}) is C code for the MATIEC runtime; the simulator ignores it`);
+  for (const p of result.pragmas) {
+    const code = p.text.trim().replace(/\s+/g, ' ');
+    const shown = code.length > 60 ? `${code.slice(0, 57)}...` : code;
+    r.warning('LD-W50', `the pragma {${shown}} in the ${pou.language} body of ${pou.name} (line ${p.pos.line}) is C code for the MATIEC runtime; the simulator ignores it`);
+  }
   for (const e of result.errors) r.error(e.rule ?? 'LD-E50', `the ${pou.language} body of ${pou.name} does not compile: ${describeStError(e)}`);
   return { ctx, networks: result.networks ?? bodyChunks(pou).map(() => undefined), ok: !!result.networks };
 }

@@ -55,6 +55,14 @@ export function tokenize(text: string): Token[] {
       advanceTo(end < 0 ? text.length : end);
       continue;
     }
+    if (c === '{' && text[i + 1] === '{') {
+      // MATIEC's C code block `{{ ... }}` (braces of C inside): ends at the first "}}".
+      const end = text.indexOf('}}', i + 2);
+      if (end < 0) throw new StSyntaxError(at, 'this C code block "{{" is never closed with "}}"');
+      push('pragma', i + 2, end, at);
+      advanceTo(end + 2);
+      continue;
+    }
     if (c === '{') {
       const end = text.indexOf('}', i + 1);
       if (end < 0) throw new StSyntaxError(at, 'this pragma "{" is never closed with "}"');

@@ -18,9 +18,9 @@ export type TimeParse = { ok: true; ms: number } | { ok: false; message: string 
 
 /** Parses the part after `T#` / `TIME#`: an optional sign then number-unit pairs, largest unit first. */
 export function parseTimeBody(body: string): TimeParse {
-  // `T#` and the sign are tokens of their own in MATIEC's lexer: blanks may follow them
-  // (`T# 30000ms`, written by hand in OpenPLC files); the interval itself has none.
-  let text = body.trimStart();
+  // MATIEC's lexer skips blanks after the '#' (`T# 30000ms`, written by OpenPLC Editor users) and
+  // after the sign (`T#- 30ms` compiles), not between parts (`T#1m 30s` is refused there too).
+  let text = body.replace(/^[ \t]+/, '');
   let sign = 1;
   if (text.startsWith('-') || text.startsWith('+')) {
     sign = text.startsWith('-') ? -1 : 1;

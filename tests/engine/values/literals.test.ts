@@ -64,8 +64,9 @@ describe('TIME literals are held in milliseconds', () => {
     ['T#1500us', 2],
     ['T#2m', 120_000],
     ['TIME#+3s', 3000],
-    ['T# 30000ms', 30_000], // MATIEC: T# is a token of its own, blanks may follow it (real OpenPLC files)
-    ['T#- 2s', -2000],
+    ['T# 30000ms', 30_000], // blanks after '#': MATIEC reads them (OpenPLC users write them)
+    ['TIME#  -2s', -2000],
+    ['T#- 2s', -2000], // and after the sign
   ])('%s = %i ms', (text, ms) => {
     expect(ok(text)).toEqual([ms, 'TIME']);
     expect(ok(text, 'TIME')).toEqual([ms, 'TIME']);
@@ -77,7 +78,7 @@ describe('TIME literals are held in milliseconds', () => {
     ['T#1s1h', /largest to smallest/],
     ['T#1.5m30s', /only the last unit/],
     ['T#1x', /not a TIME part/],
-    ['T#1s 30ms', /not a TIME part/], // the interval itself has no blanks
+    ['T#1m 30s', /not a TIME part/], // blanks between parts: MATIEC refuses them too
   ])('refuses %s', (text, message) => {
     expect(refused(text)).toMatch(message);
   });
