@@ -18,13 +18,13 @@ export type TimeParse = { ok: true; ms: number } | { ok: false; message: string 
 
 /** Parses the part after `T#` / `TIME#`: an optional sign then number-unit pairs, largest unit first. */
 export function parseTimeBody(body: string): TimeParse {
-  // MATIEC's lexer skips blanks after the '#' (`T# 30000ms`, written by OpenPLC Editor users), not
-  // between parts (`T#1m 30s` is refused there too).
+  // MATIEC's lexer skips blanks after the '#' (`T# 30000ms`, written by OpenPLC Editor users) and
+  // after the sign (`T#- 30ms` compiles), not between parts (`T#1m 30s` is refused there too).
   let text = body.replace(/^[ \t]+/, '');
   let sign = 1;
   if (text.startsWith('-') || text.startsWith('+')) {
     sign = text.startsWith('-') ? -1 : 1;
-    text = text.slice(1);
+    text = text.slice(1).trimStart();
   }
   if (text === '') return { ok: false, message: 'a TIME needs at least one number with a unit, e.g. T#1s500ms' };
   let pos = 0;

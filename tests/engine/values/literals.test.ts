@@ -66,6 +66,7 @@ describe('TIME literals are held in milliseconds', () => {
     ['TIME#+3s', 3000],
     ['T# 30000ms', 30_000], // blanks after '#': MATIEC reads them (OpenPLC users write them)
     ['TIME#  -2s', -2000],
+    ['T#- 2s', -2000], // and after the sign
   ])('%s = %i ms', (text, ms) => {
     expect(ok(text)).toEqual([ms, 'TIME']);
     expect(ok(text, 'TIME')).toEqual([ms, 'TIME']);
