@@ -27,18 +27,28 @@ export function instanceOutput(ctx: PouContext, node: GraphNode, pin: string): A
 
 /**
  * The type of a block's output pin before the block is lowered: its declared type, BOOL for the
- * inverting contact; for a generic output (AND's ANY_BIT OUT), BOOL when its line is power flow (it
- * reaches a contact, a coil, the rail, a BOOL input, or joins other outputs), else the type of the
- * first elementary input it reaches. Undefined when nothing says.
+ * inverting contact. For a generic output (AND's ANY_BIT OUT, ADD's ANY_NUM OUT), what the drawing
+ * says, as Beremiz's generator types its `_TMP_ADD3_OUT`: BOOL when its line is power flow (it
+ * reaches a contact, a coil, the rail, a BOOL input, or joins other outputs); else the type of the
+ * variable written beside it, of a variable given to an input of the same generic type, or of the
+ * first elementary input its line reaches. Undefined when nothing says.
  */
-export function outputType(g: NetworkGraph, producer: GraphNode, pin: string): ElementaryType | undefined {
+export function outputType(ctx: PouContext, g: NetworkGraph, producer: GraphNode, pin: string): ElementaryType | undefined {
   if (producer.el.kind === 'contact') return 'BOOL';
-  const type = producer.layout?.outputs.find((p) => p.name === pin)?.type;
-  if (type !== undefined && isElementaryType(type)) return type;
+  const declared = producer.layout?.outputs.find((p) => p.name === pin)?.type;
+  if (declared !== undefined && isElementaryType(declared)) return declared;
   const out = producer.outputs.find((t) => t.pin === pin);
   if (!out) return undefined;
   const line = g.nets[out.net]!;
   if (line.rightRail || line.leftRail || line.sources.length > 1 || line.feeds.length || line.feedsOut.length) return 'BOOL';
+  const el = producer.el;
+  const variableType = (operand: string | undefined): ElementaryType | undefined => {
+    if (!operand?.trim()) return undefined;
+    const res = ctx.symbols.resolve(operand.trim(), { literals: false, implicitLocations: true });
+    return res.ok && isElementaryType(res.access.type) ? res.access.type : undefined;
+  };
+  const operandOf = (ops: Readonly<Record<string, string>>, name: string) =>
+    Object.entries(ops).find(([k]) => k.toUpperCase() === name.toUpperCase())?.[1];
   let found: ElementaryType | undefined;
   for (const s of line.sinks) {
     const reader = g.nodes[s.node]!;
@@ -46,6 +56,15 @@ export function outputType(g: NetworkGraph, producer: GraphNode, pin: string): E
     const t = reader.layout?.inputs.find((p) => p.name === s.pin)?.type;
     if (t === 'BOOL') return 'BOOL';
     if (!found && t !== undefined && isElementaryType(t)) found = t;
+  }
+  if (el.kind === 'box') {
+    const beside = variableType(operandOf(el.outputs, pin));
+    if (beside) return beside;
+    for (const p of producer.layout?.inputs ?? []) {
+      if (p.type !== declared) continue;
+      const given = variableType(operandOf(el.inputs, p.name));
+      if (given) return given;
+    }
   }
   return found;
 }
@@ -102,7 +121,7 @@ export function storedDataLine(ctx: PouContext, nets: NetMap, producer: GraphNod
     nets.data.set(net, { from: 'access', access });
     return true;
   }
-  const type = outputType(nets.g, producer, pin);
+  const type = outputType(ctx, nets.g, producer, pin);
   if (type && type !== 'BOOL') {
     const store = storeOf(type);
     const data = { store, slot: ctx.symbols.counts[store]++ };
@@ -117,4 +136,25 @@ export function storedDataLine(ctx: PouContext, nets: NetMap, producer: GraphNod
     reader.el,
   );
   return false;
+}
+
+/**
+ * A block reading its own output (a self-loop: its input and output on one line): the call reads
+ * its inputs on that line from `map` (line local -> the local holding the stored value), and still
+ * writes its output to the line.
+ */
+export function rebindInputs(op: Op, map: ReadonlyMap<number, number>): Op {
+  if (!map.size) return op;
+  const src = (s: Source): Source => (s.from === 'power' && map.has(s.net) ? { from: 'power', net: map.get(s.net)! } : s);
+  switch (op.op) {
+    case 'contact':
+      return map.has(op.inNet) ? { ...op, inNet: map.get(op.inNet)! } : op;
+    case 'function':
+    case 'fb':
+      return { ...op, args: op.args.map((a) => ({ ...a, src: src(a.src) })), ...(op.en ? { en: src(op.en) } : {}) };
+    case 'call':
+      return { ...op, assigns: op.assigns.map((a) => ({ ...a, src: src(a.src) })), ...(op.en ? { en: src(op.en) } : {}) };
+    default:
+      return op;
+  }
 }

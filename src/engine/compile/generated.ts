@@ -54,7 +54,7 @@ import type { NetworkIR, Op, OutIR, Source } from './ir';
 import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget } from './operands';
 import { NetMap, networkIR, type PendingNetwork } from './netMap';
 import { describeElement, type Reporter } from './report';
-import { outputType, reportFeedback, storedDataLine } from './feedback';
+import { outputType, rebindInputs, reportFeedback, storedDataLine } from './feedback';
 import { storeOf, type Access } from './symbols';
 
 type Pair = readonly [number, number];
@@ -358,12 +358,13 @@ export function startGenerated(
           if (!nets.data.has(t.net) && !nets.dataPending.has(t.net)) value(t.net);
         } else value(t.net);
       }
+      const selfRead = storedSelf(node);
       for (const t of node.outputs) {
         const type = layout?.outputs.find((p) => p.name === t.pin)?.type;
         if (type === undefined || type === 'BOOL' || !isElementaryType(type)) trace.set(t.net, outLocal(ni, t));
       }
       nets.overlay = trace;
-      const op = lowerBox(ctx, node, nets, index, r);
+      const op = selfRead(lowerBox(ctx, node, nets, index, r));
       // LD-W22: a function none of whose inputs is connected (wire or variable) is not called.
       const fn = layout?.signature.kind === 'function';
       const connected = node.inputs.some(
@@ -488,12 +489,29 @@ export function startGenerated(
     const loop = upstream(g, net).sources.filter((s) => running.has(s.node));
     if (!loop.length) return false;
     const s = loop[0]!;
-    if (outputType(g, g.nodes[s.node]!, s.pin) === 'BOOL') value(net);
+    if (outputType(ctx, g, g.nodes[s.node]!, s.pin) === 'BOOL') value(net);
     else {
       reportLoop(s);
       storedDataLine(ctx, nets, g.nodes[s.node]!, s.pin, net, reader(), r);
     }
     return true;
+  };
+
+  /** A block reading its own output (a self-loop): its call reads the stored value traced for that line, not its new output. */
+  const storedSelf = (node: GraphNode) => {
+    const stored = new Map<number, number>();
+    for (const t of node.inputs) {
+      const local = trace.get(t.net);
+      if (local !== undefined && node.outputs.some((o) => o.net === t.net)) stored.set(t.net, local);
+    }
+    return (op: Op | undefined): Op | undefined => {
+      const map = new Map<number, number>();
+      for (const [net, local] of stored) {
+        const now = trace.get(net);
+        if (now !== undefined && now !== local) map.set(now, local);
+      }
+      return op && rebindInputs(op, map);
+    };
   };
 
   const cancelled = (el: GraphNode['el'], type: string) =>

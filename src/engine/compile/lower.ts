@@ -9,7 +9,7 @@ import type { NetworkIR, Op } from './ir';
 import { NetMap, networkIR, type PendingNetwork } from './netMap';
 import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget } from './operands';
 import { evaluationOrder, planOrder, type Feedback } from './order';
-import { hiddenVariable, instanceOutput, moveOp, outputType, reportFeedback, storedDataLine } from './feedback';
+import { hiddenVariable, instanceOutput, moveOp, outputType, rebindInputs, reportFeedback, storedDataLine } from './feedback';
 import type { Access } from './symbols';
 import { describeElement, type Reporter } from './report';
 import { checkStructure } from './structure';
@@ -84,7 +84,8 @@ function lowerInOrder(
     // Inputs on a loop's feedback wire read the stored outputs (feedback.ts), OR-ed with the line's other sources.
     const outerOverlay = nets.overlay;
     const fedBack = readStored(ctx, ni, nets, stored, ops, r);
-    if (fedBack) nets.overlay = fedBack;
+    if (fedBack) nets.overlay = fedBack.overlay;
+    const mark = ops.length;
     const inNet = node.inputs[0] ? nets.powerNet(node.inputs[0].net) : -1;
     switch (el.kind) {
       case 'contact': {
@@ -154,6 +155,8 @@ function lowerInOrder(
       }
     }
     nets.overlay = outerOverlay;
+    // A block reading its own output: its call reads the stored value and writes the line.
+    if (fedBack?.self.size) for (let k = mark; k < ops.length; k++) if (ops[k]!.node === node.index) ops[k] = rebindInputs(ops[k]!, fedBack.self);
     // A block whose stored output a loop reads without the instance keeping it: its call writes it.
     for (const [pin, dst] of stored.held.get(ni) ?? []) {
       const t = node.outputs.find((o) => o.pin === pin);
@@ -225,7 +228,7 @@ function storedOutputs(ctx: PouContext, g: NetworkGraph, feedback: readonly Feed
       reported.add(`${key}:${f.reader}`);
       reportFeedback(r, ctx.profile, producer, f.pin, g.nodes[f.reader]!);
     }
-    if (outputType(g, producer, f.pin) !== 'BOOL' || bool.has(key)) continue;
+    if (outputType(ctx, g, producer, f.pin) !== 'BOOL' || bool.has(key)) continue;
     let access = instanceOutput(ctx, producer, f.pin);
     if (!access) {
       access = hiddenVariable(ctx, `${describeElement(producer.el)}.${f.pin}`, 'BOOL');
@@ -243,17 +246,25 @@ function storedOutputs(ctx: PouContext, g: NetworkGraph, feedback: readonly Feed
  * the line's other sources, which have run), as an overlay; a fed-back data line reads the FB
  * instance's output or a slot the function writes. Undefined when no input of `ni` is fed back.
  */
-function readStored(ctx: PouContext, ni: number, nets: NetMap, stored: Stored, ops: Op[], r: Reporter): Map<number, number> | undefined {
+function readStored(
+  ctx: PouContext,
+  ni: number,
+  nets: NetMap,
+  stored: Stored,
+  ops: Op[],
+  r: Reporter,
+): { overlay: Map<number, number>; self: Map<number, number> } | undefined {
   const cuts = stored.feedback.filter((f) => f.reader === ni);
   if (!cuts.length) return undefined;
   const g = nets.g;
   const overlay = new Map(nets.overlay ?? []);
+  const self = new Map<number, number>();
   const node = g.nodes[ni]!;
   for (const net of new Set(cuts.map((c) => c.net))) {
     const here = cuts.filter((c) => c.net === net);
     const first = here[0]!;
     const producer = g.nodes[first.producer]!;
-    const type = outputType(g, producer, first.pin);
+    const type = outputType(ctx, g, producer, first.pin);
     if (type !== 'BOOL') {
       storedDataLine(ctx, nets, producer, first.pin, net, node, r);
       continue;
@@ -273,7 +284,9 @@ function readStored(ctx: PouContext, ni: number, nets: NetMap, stored: Stored, o
       const op = read && moveOp(ctx, node.index, read, { pin: 'OUT', type: 'BOOL', net: local });
       if (op) ops.push(op);
     }
-    overlay.set(net, local);
+    // The element's own output on the line (a self-loop): it still writes the line itself.
+    if (g.nets[net]!.sources.some((src) => src.node === ni)) self.set(nets.powerNet(net), local);
+    else overlay.set(net, local);
   }
-  return overlay;
+  return { overlay, self };
 }

@@ -9,8 +9,8 @@
 // the block's stored output, its value from the block's previous call (the initial value before
 // the first): that output is the loop's feedback variable (rule 3 and 4 of 4.1.3), and the block
 // runs after it. The feedback variable chosen is the one the text names: the output of a block
-// used as the input of an element that precedes it, i.e. the wire that goes back furthest to the
-// left. A loop of contacts and coils alone has no stored value to read: it is not executable
+// used as the input of a block that precedes it, i.e. the wire that goes back furthest to the
+// left (a wire into a block rather than into a contact, which would pass the old value on). A loop of contacts and coils alone has no stored value to read: it is not executable
 // (LD-R01).
 import { upstream, type GraphNode, type NetworkGraph } from './graph';
 
@@ -116,25 +116,23 @@ function plan0(g: NetworkGraph): Plan | undefined {
 
 /**
  * Among the elements left waiting (all in or behind loops), the wire to cut: from a block to an
- * element of the same loop (strongly connected component), the one going back furthest to the left
- * (then the reader drawn first). Undefined when no loop passes through a block.
+ * element of the same loop (strongly connected component). A wire into a block first (a contact
+ * reading a stored output would pass the old value on to whatever else its line feeds), then the
+ * one going back furthest to the left, then the reader drawn first. Undefined when no loop passes
+ * through a block.
  */
 function feedbackWire(g: NetworkGraph, deps: readonly Set<number>[], done: Uint8Array): [number, number] | undefined {
   const comp = components(g.nodes.length, deps, done);
   let best: [number, number] | undefined;
-  let bestScore = 0;
+  let bestScore: number[] = [];
   for (let i = 0; i < g.nodes.length; i++) {
     if (done[i]) continue;
     for (const p of deps[i]!) {
       if (done[p] || comp[p] !== comp[i] || !holdsOutput(g.nodes[p]!)) continue;
       const pe = g.nodes[p]!.el;
       const ie = g.nodes[i]!.el;
-      const score = pe.col - ie.col;
-      if (
-        !best ||
-        score > bestScore ||
-        (score === bestScore && (ie.row < g.nodes[best[1]]!.el.row || (ie.row === g.nodes[best[1]]!.el.row && ie.col < g.nodes[best[1]]!.el.col)))
-      ) {
+      const score = [holdsOutput(g.nodes[i]!) ? 1 : 0, pe.col - ie.col, -ie.row, -ie.col];
+      if (!best || better(score, bestScore)) {
         best = [p, i];
         bestScore = score;
       }
@@ -142,6 +140,11 @@ function feedbackWire(g: NetworkGraph, deps: readonly Set<number>[], done: Uint8
   }
   return best;
 }
+
+const better = (a: readonly number[], b: readonly number[]): boolean => {
+  for (let k = 0; k < a.length; k++) if (a[k] !== b[k]) return a[k]! > b[k]!;
+  return false;
+};
 
 /** Strongly connected components (Tarjan, iterative) of the nodes not done, edges from each node to its dependencies. */
 function components(n: number, deps: readonly Set<number>[], done: Uint8Array): Int32Array {
