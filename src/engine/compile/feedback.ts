@@ -95,16 +95,14 @@ export function moveOp(ctx: PouContext, node: number, src: Access | number, out:
 /** LD-W30 on the block whose output is fed back: which element reads its stored value, and why. */
 export function reportFeedback(r: Reporter, profile: Profile, producer: GraphNode, pin: string, reader: GraphNode): void {
   const block = describeElement(producer.el);
-  const output = producer.el.kind === 'box' && producer.el.instance?.trim() ? `${producer.el.instance.trim()}.${pin}` : `its output ${pin}`;
-  const who = reader === producer ? `its own input` : describeElement(reader.el);
-  const kept = producer.el.kind === 'box' && producer.el.instance?.trim() ? 'the instance keeps' : 'its previous call left';
-  const how =
-    profile === 'openplc'
-      ? 'as Beremiz and OpenPLC run it'
-      : 'the feedback variable of IEC 61131-3 4.1.3 (which allows explicit loops in FBD only)';
+  const instance = producer.el.kind === 'box' ? producer.el.instance?.trim() : undefined;
+  const output = instance ? `${instance}.${pin}` : `its output ${pin}`;
+  const self = reader === producer;
+  const who = self ? 'the block' : describeElement(reader.el);
+  const how = profile === 'openplc' ? ', as Beremiz and OpenPLC run it' : '';
   r.warning(
     'LD-W30',
-    `${block} feeds back into ${who}: a loop, run ${how}: ${who === 'its own input' ? 'the block' : who} reads ${output} as ${kept} (its initial value at the first scan), then ${block} runs; to choose where the loop is cut, write ${output} to a variable and read the variable`,
+    `${block} feeds back into ${self ? 'its own input' : describeElement(reader.el)} (an explicit loop, which IEC 61131-3 allows in FBD only): ${who} reads ${output} as the block's previous call left it (its initial value at the first scan), then the block runs${how}; to choose where the loop is cut, write ${instance ? output : pin} to a variable and read that variable instead`,
     producer.el,
   );
 }
