@@ -56,10 +56,11 @@ export function planOrder(g: NetworkGraph): Plan | undefined {
 function plan0(g: NetworkGraph): Plan | undefined {
   const n = g.nodes.length;
   // Producers of each net: nodes with an output terminal on it or on a net bridged into it.
-  const producers: { node: number; pin: string }[][] = g.nets.map((net) => {
+  const producers: readonly { node: number; pin: string }[][] = g.nets.map((net) => {
     const up = net.feeds.length ? upstream(g, net.id).sources : net.sources;
-    const seen = new Set<string>();
-    return up.filter((s) => !seen.has(`${s.node}:${s.pin}`) && seen.add(`${s.node}:${s.pin}`)).map((s) => ({ node: s.node, pin: s.pin }));
+    const out: { node: number; pin: string }[] = [];
+    for (const s of up) if (!out.some((o) => o.node === s.node && o.pin === s.pin)) out.push(s);
+    return out;
   });
   const dependents: Set<number>[] = g.nodes.map(() => new Set());
   const deps: Set<number>[] = g.nodes.map(() => new Set());
