@@ -120,7 +120,10 @@ describe('explicit feedback loops through a block', () => {
     for (const profile of ['iec', 'openplc'] as Profile[]) {
       const net = ladder(['|>C> [A] (Q) >C>|']);
       const ds = checkProject(project(VARS, [net], profile));
-      expect(ds.filter((d) => d.severity === 'error').map((d) => d.rule)).toEqual(['LD-R01']);
+      const errors = ds.filter((d) => d.severity === 'error');
+      expect(errors.map((d) => d.rule)).toEqual(['LD-R01']);
+      // Located on the first element of the loop: the contact A.
+      expect(errors[0]).toMatchObject({ network: 0, cell: { row: 0, col: 1 }, elementId: net.elements[1]!.id });
       expect(ds.some((d) => d.rule === 'LD-W30')).toBe(false);
     }
   });

@@ -8,7 +8,7 @@ import { buildGraph, upstream, type NetworkGraph } from './graph';
 import type { NetworkIR, Op } from './ir';
 import { NetMap, networkIR, type PendingNetwork } from './netMap';
 import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget } from './operands';
-import { evaluationOrder, planOrder, type Feedback } from './order';
+import { evaluationOrder, loopElement, planOrder, type Feedback } from './order';
 import { hiddenVariable, instanceOutput, moveOp, outputType, rebindInputs, reportFeedback, storedDataLine } from './feedback';
 import type { Access } from './symbols';
 import { describeElement, type Reporter } from './report';
@@ -38,6 +38,7 @@ export function startNetwork(ctx: PouContext, network: Network, index: number, r
     r.error(
       'LD-R01',
       'an element feeds its own input through a wire going back to the left; power must flow left to right',
+      loopElement(g),
     );
   if (order && ctx.profile === 'openplc') return startGenerated(ctx, network, index, r, g);
   const ir = lowerInOrder(ctx, network, index, r, g, structureOk, order);

@@ -193,3 +193,25 @@ function components(n: number, deps: readonly Set<number>[], done: Uint8Array): 
   }
   return comp;
 }
+
+/**
+ * Where a network that cannot be ordered is reported (LD-R01): the element drawn first among those
+ * on a loop of contacts and coils (none of them keeps a value to read).
+ */
+export function loopElement(g: NetworkGraph): GraphNode['el'] | undefined {
+  const n = g.nodes.length;
+  const deps: Set<number>[] = g.nodes.map(() => new Set());
+  g.nodes.forEach((node, i) => {
+    for (const t of node.inputs) for (const s of upstream(g, t.net).sources) deps[i]!.add(s.node);
+  });
+  const comp = components(n, deps, new Uint8Array(n));
+  const size = new Map<number, number>();
+  for (let i = 0; i < n; i++) size.set(comp[i]!, (size.get(comp[i]!) ?? 0) + 1);
+  let best: GraphNode['el'] | undefined;
+  for (let i = 0; i < n; i++) {
+    const el = g.nodes[i]!.el;
+    const onLoop = size.get(comp[i]!)! > 1 || deps[i]!.has(i);
+    if (onLoop && !holdsOutput(g.nodes[i]!) && (!best || el.row < best.row || (el.row === best.row && el.col < best.col))) best = el;
+  }
+  return best;
+}
