@@ -3,9 +3,12 @@
 // previous call), with a located warning LD-W30 in both profiles; a loop of contacts and coils
 // alone has nothing to read and stays LD-R01. The PLCopen side (MATIEC's traces) is covered by
 // tests/fixtures/reference/c04-*.
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
 import { describe, expect, test } from 'vitest';
 import { checkProject } from '../../src/engine/check';
 import type { Profile } from '../../src/model/project';
+import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { ladder, plcOf, project, trace, vars } from './ladder';
 
 const VARS = vars('Go BOOL', 'A BOOL', 'Q BOOL', 'R BOOL', 'N INT', 'T1 TON', 'RS0 RS');
@@ -126,5 +129,29 @@ describe('explicit feedback loops through a block', () => {
       expect(errors[0]).toMatchObject({ network: 0, cell: { row: 0, col: 1 }, elementId: net.elements[1]!.id });
       expect(ds.some((d) => d.rule === 'LD-W30')).toBe(false);
     }
+  });
+});
+
+describe('where each profile cuts a loop with a contact on it (tests/fixtures/reference/c04-contact-in-loop.xml)', () => {
+  // RS R1 (S from Go) -> TON T1 (IN from R1.Q1) -> contact Go on T1.Q -> R1.R1, and the contact drives coil Q.
+  const xml = readFileSync(fileURLToPath(new URL('../fixtures/reference/c04-contact-in-loop.xml', import.meta.url)), 'utf8');
+  const imported = importPlcopen(xml);
+  if (!imported.ok) throw new Error('the fixture does not import');
+  const withProfile = (profile: Profile) => ({ ...imported.project, profile });
+  const warnings = (profile: Profile) =>
+    checkProject(withProfile(profile))
+      .filter((d) => d.rule === 'LD-W30')
+      .map((d) => d.message.replace(/ \(.*/, ''));
+
+  test('iec cuts the wire into a block (T1 reads R1.Q1 of the previous call), so the contact passes the new T1.Q on to Q', () => {
+    expect(warnings('iec')).toEqual(['the RS block "R1" feeds back into the TON block "T1"']);
+    const plc = plcOf(withProfile('iec'), 10);
+    const rows = trace(plc, steps(8, { Go: true }), ['Q', 'T1.Q']);
+    expect(rows.every(([q, t]) => q === t)).toBe(true);
+    expect(rows.some(([q]) => q === 1)).toBe(true);
+  });
+
+  test('openplc cuts where Beremiz does: R1 reads T1.Q of the previous call (the contact is traced again for Q)', () => {
+    expect(warnings('openplc')).toEqual(['the TON block "T1" feeds back into the RS block "R1"']);
   });
 });
