@@ -142,9 +142,12 @@ export function readSfcChart(pouEl: XmlElement, sfc: XmlElement, library: BlockL
       const instance = f.source.attrs.instanceName;
       const pin = f.wire.attrs.formalParameter;
       const wireName = `${f.source.attrs.instanceName ?? f.source.attrs.typeName ?? f.source.name}${pin ? `.${pin}` : ''} -> ${f.consumer.attrs.instanceName ?? f.consumer.attrs.typeName ?? f.consumer.name} (localId ${f.consumer.attrs.localId ?? '?'})`;
-      if (f.source.name !== 'block' || !instance || !pin)
+      // A loop through a function stays drawn: the engine cuts it there and reads the function's
+      // result of its previous call (order.ts, feedback.ts), as Beremiz's `_TMP_XOR20_OUT` holds it.
+      if (f.source.name === 'block' && !instance) continue;
+      if (f.source.name !== 'block' || !pin)
         return {
-          networks: `${from}: the wire ${wireName} closes a loop through ${f.source.name === 'block' ? `the function ${f.source.attrs.typeName}` : `a ${f.source.name}`}, whose value of the previous call is not kept; only a function block's output can feed back`,
+          networks: `${from}: the wire ${wireName} closes a loop through a ${f.source.name}, which keeps no value of a previous call; only a block's output can feed back`,
           blocks: true,
         };
       const id = nextId++;

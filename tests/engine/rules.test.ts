@@ -58,6 +58,18 @@ const CASES: Case[] = [
     good: [ladder(['[A] - - - (X)'])],
   },
   {
+    rule: 'LD-R01',
+    what: 'a loop of contacts and coils through a connector pair (no block keeps a value to read)',
+    bad: [ladder(['|>C> [A] (X) >C>|'])],
+    good: [ladder(['[A] - >C>| .', '|>C> [B] - (Y)'])],
+  },
+  {
+    rule: 'LD-W30',
+    what: 'an explicit loop through a block: TON T1 fed back its own Q through an inverting contact (runs; warned)',
+    bad: [ladder(['|>C> [NOT] # # (X) >C>|', '. . # # . .'], { boxes: [ton({ PT: 'T#1s' }, { col: 2 })] })],
+    good: [ladder(['[/X] - # # (X)', '. . # # .'], { boxes: [ton({ PT: 'T#1s' }, { col: 2 })] })],
+  },
+  {
     rule: 'LD-R02',
     what: 'a coil joined to the left rail by bare lines',
     bad: [ladder(['- - (X)'])],

@@ -1,7 +1,8 @@
 // Graphical transition conditions with a feedback loop (PLCopen FBD wired to a transition): MATIEC
 // orders the blocks depth first from the condition; a wire back to a block still being computed
 // reads the value of the previous call. Through an FB instance's output that value is kept (the
-// wire reads `Instance.Pin`); through a function it is not, and the chart is refused (LD-E44).
+// wire reads `Instance.Pin`); through a function, the loop stays drawn and the engine reads the
+// function's result of its previous call (Beremiz's `_TMP_AND20_OUT`), with LD-W30.
 import { describe, expect, it } from 'vitest';
 import { compileProgram, createPlc } from '../../src/engine/plc';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
@@ -77,7 +78,7 @@ describe('SFC graphical conditions with a feedback loop', () => {
     expect(row()).toEqual([0, 0, 0]);
   });
 
-  it('through a function: LD-E44 names the POU, the transition and the wire', () => {
+  it('through a function: the loop runs (LD-W30), the function reading its result of the previous call (FALSE at first)', () => {
     const xml = project(
       variable('A', 'BOOL'),
       [inVar(10, 'A'), block(20, 'AND', input('IN1', out(10)) + input('IN2', out(20, 'OUT')), output('OUT'))].join(''),
@@ -85,8 +86,13 @@ describe('SFC graphical conditions with a feedback loop', () => {
     );
     const r = importPlcopen(xml);
     if (!r.ok) throw new Error(JSON.stringify(r.errors));
-    const errors = compileProgram(r.project, {}).diagnostics.filter((d) => d.severity === 'error');
-    expect(errors.map((d) => [d.rule, d.pou])).toEqual([['LD-E44', 'Main']]);
-    expect(errors[0]!.message).toMatch(/transition 2 .*the wire AND\.OUT -> AND \(localId 20\) closes a loop through the function AND/);
+    const { program, diagnostics } = compileProgram(r.project, {});
+    expect(diagnostics.filter((d) => d.severity === 'error')).toEqual([]);
+    expect(diagnostics.filter((d) => d.rule === 'LD-W30').map((d) => d.message)).toEqual([expect.stringMatching(/^the AND block .* feeds back into its own input/)]);
+    const plc = createPlc(program!, { cycleMs: 100 });
+    plc.write('A', true);
+    // AND(A, its previous result): FALSE at first, so FALSE for ever: the chart stays on Init.
+    plc.scans(4);
+    expect(Number(plc.read('Init.X'))).toBe(1);
   });
 });

@@ -54,6 +54,7 @@ import type { NetworkIR, Op, OutIR, Source } from './ir';
 import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget } from './operands';
 import { NetMap, networkIR, type PendingNetwork } from './netMap';
 import { describeElement, type Reporter } from './report';
+import { outputType, rebindInputs, reportFeedback, storedDataLine } from './feedback';
 import { storeOf, type Access } from './symbols';
 
 type Pair = readonly [number, number];
@@ -240,6 +241,7 @@ export function startGenerated(
       return inNet;
     };
     if (isBlock(node)) {
+      if (running.has(s.node)) return pass(loopBool(s));
       if (ordered && !computed.has(s.node)) return pass(storedBool(s.node, s.pin));
       generateBlock(s.node);
       return pass(blockOut.get(s.node)?.get(s.pin) ?? nets.fresh());
@@ -322,6 +324,7 @@ export function startGenerated(
   const generateBlock = (ni: number): void => {
     if (computed.has(ni)) return;
     computed.add(ni);
+    running.add(ni);
     const node = g.nodes[ni]!;
     const outer = stmt;
     const savedTrace = trace;
@@ -346,18 +349,24 @@ export function startGenerated(
       const layout = node.layout;
       for (const t of node.inputs) {
         if (!wiredIn(t.net)) continue;
+        if (loopLine(t.net)) continue;
         // A value line: the block feeding it runs first. A power line: traced now.
         if (nets.data.has(t.net) || nets.dataPending.has(t.net)) {
           for (const s of upstream(g, t.net).sources)
             if (isBlock(g.nodes[s.node]!) && !(ordered && !computed.has(s.node) && storedData(s, t.net, node.el))) generateBlock(s.node);
+          // A generic output (AND's ANY_BIT OUT) that turned out BOOL once its block ran is power
+          // flow: this block reads the variable that call wrote (`OR(_TMP_AND5_OUT, C)`), traced
+          // like any other BOOL line (the block already ran: its stored result, not a new call).
+          if (!nets.data.has(t.net) && !nets.dataPending.has(t.net)) value(t.net);
         } else value(t.net);
       }
+      const selfRead = storedSelf(node);
       for (const t of node.outputs) {
         const type = layout?.outputs.find((p) => p.name === t.pin)?.type;
         if (type === undefined || type === 'BOOL' || !isElementaryType(type)) trace.set(t.net, outLocal(ni, t));
       }
       nets.overlay = trace;
-      const op = lowerBox(ctx, node, nets, index, r);
+      const op = selfRead(lowerBox(ctx, node, nets, index, r));
       // LD-W22: a function none of whose inputs is connected (wire or variable) is not called.
       const fn = layout?.signature.kind === 'function';
       const connected = node.inputs.some(
@@ -373,6 +382,7 @@ export function startGenerated(
         pOut !== undefined ? (blockOut.get(ni)?.get(pOut) ?? -1) : -1,
       ]);
     } finally {
+      running.delete(ni);
       const own = stmt;
       trace = savedTrace;
       nets.overlay = savedOverlay;
@@ -453,6 +463,57 @@ export function startGenerated(
       reader,
     );
     return false;
+  };
+
+  // Explicit feedback loops (order.ts, feedback.ts): a block whose inputs are being traced
+  // (`running`) is reached again through its own output. Beremiz marks a block computed before it
+  // traces its inputs (GenerateBlock), so that reading is the block's stored output, `T1.Q` or
+  // `_TMP_AND5_OUT` (its last call's value), and the call is written after the reading.
+  const running = new Set<number>();
+  /** The element whose inputs are being traced when a loop closes: the innermost running block. */
+  const reader = (): GraphNode => g.nodes[[...running].pop()!]!;
+  const loopsReported = new Set<string>();
+  const reportLoop = (s: { node: number; pin: string }) => {
+    const key = `${s.node}:${s.pin}`;
+    if (loopsReported.has(key)) return;
+    loopsReported.add(key);
+    reportFeedback(r, ctx.profile, g.nodes[s.node]!, s.pin, reader());
+  };
+  const loopBool = (s: { node: number; pin: string }): number => {
+    reportLoop(s);
+    // A generic output (AND's OUT) on a power line is BOOL: its line is read as power.
+    const t = g.nodes[s.node]!.outputs.find((o) => o.pin === s.pin);
+    if (t) nets.dataPending.delete(t.net);
+    return storedBool(s.node, s.pin);
+  };
+  /** An input line fed back from a running block: its stored output read (power: traced; data: the stored value). */
+  const loopLine = (net: number): boolean => {
+    const loop = upstream(g, net).sources.filter((s) => running.has(s.node));
+    if (!loop.length) return false;
+    const s = loop[0]!;
+    if (outputType(ctx, g, g.nodes[s.node]!, s.pin) === 'BOOL') value(net);
+    else {
+      reportLoop(s);
+      storedDataLine(ctx, nets, g.nodes[s.node]!, s.pin, net, reader(), r);
+    }
+    return true;
+  };
+
+  /** A block reading its own output (a self-loop): its call reads the stored value traced for that line, not its new output. */
+  const storedSelf = (node: GraphNode) => {
+    const stored = new Map<number, number>();
+    for (const t of node.inputs) {
+      const local = trace.get(t.net);
+      if (local !== undefined && node.outputs.some((o) => o.net === t.net)) stored.set(t.net, local);
+    }
+    return (op: Op | undefined): Op | undefined => {
+      const map = new Map<number, number>();
+      for (const [net, local] of stored) {
+        const now = trace.get(net);
+        if (now !== undefined && now !== local) map.set(now, local);
+      }
+      return op && rebindInputs(op, map);
+    };
   };
 
   const cancelled = (el: GraphNode['el'], type: string) =>

@@ -4,12 +4,14 @@
 // openplc profile's order: generated.ts.
 import type { Network } from '../../model/project';
 import type { PouContext } from './context';
-import { buildGraph, type NetworkGraph } from './graph';
+import { buildGraph, upstream, type NetworkGraph } from './graph';
 import type { NetworkIR, Op } from './ir';
 import { NetMap, networkIR, type PendingNetwork } from './netMap';
 import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget } from './operands';
-import { evaluationOrder } from './order';
-import type { Reporter } from './report';
+import { evaluationOrder, loopElement, planOrder, type Feedback } from './order';
+import { hiddenVariable, instanceOutput, moveOp, outputType, rebindInputs, reportFeedback, storedDataLine } from './feedback';
+import type { Access } from './symbols';
+import { describeElement, type Reporter } from './report';
 import { checkStructure } from './structure';
 import { lowerBox } from './box';
 import { startGenerated } from './generated';
@@ -36,6 +38,7 @@ export function startNetwork(ctx: PouContext, network: Network, index: number, r
     r.error(
       'LD-R01',
       'an element feeds its own input through a wire going back to the left; power must flow left to right',
+      loopElement(g),
     );
   if (order && ctx.profile === 'openplc') return startGenerated(ctx, network, index, r, g);
   const ir = lowerInOrder(ctx, network, index, r, g, structureOk, order);
@@ -73,10 +76,17 @@ function lowerInOrder(
   };
   /** A block output's own local where its line is joined to others (`node:pin`), for the display. */
   const boxOwn = new Map<string, number>();
+  // Explicit loops through blocks, cut where order.ts says (the same plan evaluationOrder gave).
+  const stored = storedOutputs(ctx, g, structureOk ? (planOrder(g)?.feedback ?? []) : [], r);
   for (const ni of order) {
     const node = g.nodes[ni]!;
     const el = node.el;
     for (const t of node.inputs) bridgeInto(t.net);
+    // Inputs on a loop's feedback wire read the stored outputs (feedback.ts), OR-ed with the line's other sources.
+    const outerOverlay = nets.overlay;
+    const fedBack = readStored(ctx, ni, nets, stored, ops, r);
+    if (fedBack) nets.overlay = fedBack.overlay;
+    const mark = ops.length;
     const inNet = node.inputs[0] ? nets.powerNet(node.inputs[0].net) : -1;
     switch (el.kind) {
       case 'contact': {
@@ -145,6 +155,17 @@ function lowerInOrder(
         break;
       }
     }
+    nets.overlay = outerOverlay;
+    // A block reading its own output: its call reads the stored value and writes the line.
+    if (fedBack?.self.size) for (let k = mark; k < ops.length; k++) if (ops[k]!.node === node.index) ops[k] = rebindInputs(ops[k]!, fedBack.self);
+    // A block whose stored output a loop reads without the instance keeping it: its call writes it.
+    for (const [pin, dst] of stored.held.get(ni) ?? []) {
+      const t = node.outputs.find((o) => o.pin === pin);
+      if (!t) continue;
+      const own = el.kind === 'contact' ? (nets.hasPower(-1 - ni) ? nets.powerNet(-1 - ni) : undefined) : boxOwn.get(`${ni}:${pin}`);
+      const write = moveOp(ctx, node.index, own ?? nets.powerNet(t.net), { pin: 'OUT', type: 'BOOL', dst });
+      if (write) ops.push(write);
+    }
   }
   // Nets read by no element (a line to the right rail) still show their state.
   for (const net of g.nets) bridgeInto(net.id);
@@ -185,4 +206,88 @@ function lowerInOrder(
     return net >= 0 && nets.hasPower(net) ? nets.powerNet(net) : -1;
   });
   return networkIR(ctx, network, index, nets, { ops, elementNets, vlinkNets });
+}
+
+/** The stored outputs a network's loops read (order.ts's feedback wires). */
+interface Stored {
+  readonly feedback: readonly Feedback[];
+  /** Producer node -> pin -> the variable its call writes (blocks that keep no outputs). */
+  readonly held: Map<number, Map<string, Access>>;
+  /** `producer:pin` -> what a BOOL reading reads. */
+  readonly bool: Map<string, Access>;
+}
+
+/** Reports each feedback wire (LD-W30) and makes the variables the loops read. */
+function storedOutputs(ctx: PouContext, g: NetworkGraph, feedback: readonly Feedback[], r: Reporter): Stored {
+  const held = new Map<number, Map<string, Access>>();
+  const bool = new Map<string, Access>();
+  const reported = new Set<string>();
+  for (const f of feedback) {
+    const producer = g.nodes[f.producer]!;
+    const key = `${f.producer}:${f.pin}`;
+    if (!reported.has(`${key}:${f.reader}`)) {
+      reported.add(`${key}:${f.reader}`);
+      reportFeedback(r, ctx.profile, producer, f.pin, g.nodes[f.reader]!);
+    }
+    if (outputType(ctx, g, producer, f.pin) !== 'BOOL' || bool.has(key)) continue;
+    let access = instanceOutput(ctx, producer, f.pin);
+    if (!access) {
+      access = hiddenVariable(ctx, `${describeElement(producer.el)}.${f.pin}`, 'BOOL');
+      let pins = held.get(f.producer);
+      if (!pins) held.set(f.producer, (pins = new Map()));
+      pins.set(f.pin, access);
+    }
+    bool.set(key, access);
+  }
+  return { feedback, held, bool };
+}
+
+/**
+ * Before element `ni` runs: the locals its fed-back BOOL inputs read (the stored outputs OR-ed with
+ * the line's other sources, which have run), as an overlay; a fed-back data line reads the FB
+ * instance's output or a slot the function writes. Undefined when no input of `ni` is fed back.
+ */
+function readStored(
+  ctx: PouContext,
+  ni: number,
+  nets: NetMap,
+  stored: Stored,
+  ops: Op[],
+  r: Reporter,
+): { overlay: Map<number, number>; self: Map<number, number> } | undefined {
+  const cuts = stored.feedback.filter((f) => f.reader === ni);
+  if (!cuts.length) return undefined;
+  const g = nets.g;
+  const overlay = new Map(nets.overlay ?? []);
+  const self = new Map<number, number>();
+  const node = g.nodes[ni]!;
+  for (const net of new Set(cuts.map((c) => c.net))) {
+    const here = cuts.filter((c) => c.net === net);
+    const first = here[0]!;
+    const producer = g.nodes[first.producer]!;
+    const type = outputType(ctx, g, producer, first.pin);
+    if (type !== 'BOOL') {
+      storedDataLine(ctx, nets, producer, first.pin, net, node, r);
+      continue;
+    }
+    // A generic output (AND's OUT) driving power flow is BOOL: its line is read as power from here on.
+    for (const c of here) {
+      const t = g.nodes[c.producer]!.outputs.find((o) => o.pin === c.pin);
+      if (t) nets.dataPending.delete(t.net);
+    }
+    const local = nets.fresh();
+    const cutFrom = new Set(here.map((c) => c.producer));
+    const up = upstream(g, net);
+    if (up.leftRail || up.sources.some((s) => !cutFrom.has(s.node)))
+      ops.push({ op: 'pass', node: node.index, inNet: nets.powerNet(net), outNet: local });
+    for (const c of here) {
+      const read = stored.bool.get(`${c.producer}:${c.pin}`);
+      const op = read && moveOp(ctx, node.index, read, { pin: 'OUT', type: 'BOOL', net: local });
+      if (op) ops.push(op);
+    }
+    // The element's own output on the line (a self-loop): it still writes the line itself.
+    if (g.nets[net]!.sources.some((src) => src.node === ni)) self.set(nets.powerNet(net), local);
+    else overlay.set(net, local);
+  }
+  return { overlay, self };
 }
