@@ -7,10 +7,10 @@ import type { BlockLibrary } from '../model/library';
 import { newNetwork } from '../model/factory';
 import type { Network } from '../model/project';
 import { LAYOUT_STRATEGIES, prepareLayout } from './layout';
-import { addCuts, allNodeWires, CUT_ROUNDS, cutView, type CutPin, type CutView } from './layoutCut';
+import { addCuts, allNodeWires, CUT_ROUNDS, cutView, type CutPin, type CutView, type StackRoom } from './layoutCut';
 import { instantiate, LayoutCache, shapeKey } from './layoutCache';
-import type { LaidOut } from './layoutShapes';
-import { buildLdGraph } from './ldGraph';
+import { shapeOf, type LaidOut } from './layoutShapes';
+import { buildLdGraph, LdGraphError } from './ldGraph';
 import type { Finding, GNode } from './ldNodes';
 import { splitSharedSources } from './ldNormalize';
 import { planBody, type BodyPlan } from './ldBatches';
@@ -37,6 +37,11 @@ export interface BodyTuning {
    * ids (the engine does too, BoxElement.executionOrder), coils by position, never networks.
    */
   readonly orderByIds?: boolean;
+  /**
+   * Whether wires the grid cannot route are drawn through connector pairs (default). Without,
+   * a network the grid cannot draw exactly refuses the body (tests of that refusal use it).
+   */
+  readonly cutWires?: boolean;
 }
 
 const MIN_COLS = 3;
@@ -78,7 +83,8 @@ function compareItems(a: Item, b: Item): number {
 }
 
 /**
- * Imports one LD body into networks. Throws LdGraphError for broken references.
+ * Imports one LD body into networks. Throws LdGraphError for broken references, and for a network
+ * the grid cannot draw exactly (never drawn with other wiring).
  *
  * Large bodies are read in batches of whole networks (see ldBatches.ts); networks are ordered
  * top to bottom (executionOrderId first unless `tuning.orderByIds` is false) once all are laid out.
@@ -99,7 +105,7 @@ export function importLdBody(
   const items: Item[] = [];
   let seq = 0;
   for (const positions of plan.batches)
-    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool, tuning.orderByIds !== false))
+    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool, tuning.orderByIds !== false, tuning.cutWires !== false))
       items.push({ ...it, seq: seq++ });
   items.sort(compareItems);
   // A network with nothing but a label or a comment: as narrow as a network gets.
@@ -129,7 +135,11 @@ export function importLdBody(
       pendingVendor.push(it.raw);
       continue;
     }
-    for (const f of it.findings) warn({ ...f, message: `network ${networks.length + 1}: ${f.message}` });
+    // A network that no layout draws exactly (verifyLayout.ts) is never drawn with other wiring:
+    // a grid that joins or drops a wire runs another program than the file's. The body is refused
+    // at the first pin that differs (the last layout, every wire cut, draws any graph exactly).
+    const undrawn = it.findings[0];
+    if (undrawn) throw new LdGraphError(`network ${networks.length + 1}: ${undrawn.message}`, undrawn.obj);
     const { laid } = it;
     const keep: PreservedNetwork = {
       ...(pendingVendor.length ? { objects: pendingVendor } : {}),
@@ -217,6 +227,7 @@ function readBatch(
   library: BlockLibrary,
   isBool?: (name: string) => boolean,
   orderByIds = true,
+  cutWires = true,
 ): BatchItem[] {
   const inBatch = new Set(positions);
   const keepRef = (ref: string) => {
@@ -266,6 +277,14 @@ function readBatch(
   const groups: Group[] = [];
   for (const list of comps.values()) groups.push({ nodes: list, key: keyOf(list.map((i) => nodes[i]!.obj)) });
 
+  const room: StackRoom = (n, pin) => {
+    const ins = shapeOf(n, library).inputs;
+    let off = -1;
+    for (const p of ins) if (p.pin === pin) off = p.off;
+    let free = Infinity;
+    for (const p of ins) if (p.off > off) free = Math.min(free, p.off - off);
+    return free;
+  };
   const laidOut: { group: Group; laid: LaidNetwork; findings: Finding[] }[] = [];
   const layOut = (g: Group, findings: Finding[]): LaidNetwork => {
     const key = cache.enabled ? shapeKey(nodes, g.nodes) : '';
@@ -313,13 +332,13 @@ function readBatch(
         }
       }
       // Wires the grid cannot route are drawn through connector/continuation pairs (layoutCut.ts).
-      if (best!.mismatches.length) {
+      if (best!.mismatches.length && cutWires) {
         const cuts: CutPin[] = [];
         for (let round = 0; round < CUT_ROUNDS && best!.mismatches.length; round++) {
           addCuts(base, g.nodes, best!.mismatches, cuts);
-          tryAll(cutView(base, g.nodes, cuts));
+          tryAll(cutView(base, g.nodes, cuts, room));
         }
-        if (best!.mismatches.length) tryAll(cutView(base, g.nodes, allNodeWires(base, g.nodes)));
+        if (best!.mismatches.length) tryAll(cutView(base, g.nodes, allNodeWires(base, g.nodes), room));
       }
       ({ laid, mismatches } = best!);
       cache.remember(key, best!.needCols, g.nodes, laid, mismatches);
