@@ -38,10 +38,11 @@ export interface BodyTuning {
    */
   readonly orderByIds?: boolean;
   /**
-   * Whether wires the grid cannot route are drawn through connector pairs (default). Without,
-   * a network the grid cannot draw exactly refuses the body (tests of that refusal use it).
+   * Which wires are drawn through connector pairs: those the grid cannot route ('needed', the
+   * default), none ('none': a network the grid cannot draw exactly refuses the body), or every
+   * wire between elements ('all': the last layout tried, which must draw any graph exactly).
    */
-  readonly cutWires?: boolean;
+  readonly cuts?: 'needed' | 'none' | 'all';
 }
 
 const MIN_COLS = 3;
@@ -105,7 +106,7 @@ export function importLdBody(
   const items: Item[] = [];
   let seq = 0;
   for (const positions of plan.batches)
-    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool, tuning.orderByIds !== false, tuning.cutWires !== false))
+    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool, tuning.orderByIds !== false, tuning.cuts ?? 'needed'))
       items.push({ ...it, seq: seq++ });
   items.sort(compareItems);
   // A network with nothing but a label or a comment: as narrow as a network gets.
@@ -227,7 +228,7 @@ function readBatch(
   library: BlockLibrary,
   isBool?: (name: string) => boolean,
   orderByIds = true,
-  cutWires = true,
+  cutWires: NonNullable<BodyTuning['cuts']> = 'needed',
 ): BatchItem[] {
   const inBatch = new Set(positions);
   const keepRef = (ref: string) => {
@@ -309,7 +310,9 @@ function readBatch(
           if (!m.length) return;
         }
       };
-      tryAll();
+      const first = () =>
+        cutWires === 'all' ? tryAll(cutView(base, g.nodes, allNodeWires(base, g.nodes), room)) : tryAll();
+      first();
       // A block whose EN the file leaves out runs unconditionally (MATIEC, and the engine, run a
       // block with an open EN): drawn with EN wired to the rail where the rail reaches it, open
       // where it cannot (a function fed by another block's output, FBD style). The file's nodes
@@ -325,14 +328,14 @@ function readBatch(
         }
         base = open;
         best = undefined;
-        tryAll();
+        first();
         if (best!.mismatches.length >= before.mismatches.length) {
           base = nodes;
           best = before;
         }
       }
       // Wires the grid cannot route are drawn through connector/continuation pairs (layoutCut.ts).
-      if (best!.mismatches.length && cutWires) {
+      if (best!.mismatches.length && cutWires === 'needed') {
         const cuts: CutPin[] = [];
         for (let round = 0; round < CUT_ROUNDS && best!.mismatches.length; round++) {
           addCuts(base, g.nodes, best!.mismatches, cuts);
