@@ -7,10 +7,10 @@ import type { BlockLibrary } from '../model/library';
 import { newNetwork } from '../model/factory';
 import type { Network } from '../model/project';
 import { LAYOUT_STRATEGIES, prepareLayout } from './layout';
-import { addCuts, allNodeWires, CUT_ROUNDS, cutView, type CutPin, type CutView } from './layoutCut';
+import { addCuts, allNodeWires, CUT_ROUNDS, cutView, type CutPin, type CutView, type StackRoom } from './layoutCut';
 import { instantiate, LayoutCache, shapeKey } from './layoutCache';
-import type { LaidOut } from './layoutShapes';
-import { buildLdGraph } from './ldGraph';
+import { shapeOf, type LaidOut } from './layoutShapes';
+import { buildLdGraph, LdGraphError } from './ldGraph';
 import type { Finding, GNode } from './ldNodes';
 import { splitSharedSources } from './ldNormalize';
 import { planBody, type BodyPlan } from './ldBatches';
@@ -37,6 +37,12 @@ export interface BodyTuning {
    * ids (the engine does too, BoxElement.executionOrder), coils by position, never networks.
    */
   readonly orderByIds?: boolean;
+  /**
+   * Which wires are drawn through connector pairs: those the grid cannot route ('needed', the
+   * default), none ('none': a network the grid cannot draw exactly refuses the body), or every
+   * wire between elements ('all': the last layout tried, which must draw any graph exactly).
+   */
+  readonly cuts?: 'needed' | 'none' | 'all';
 }
 
 const MIN_COLS = 3;
@@ -78,7 +84,8 @@ function compareItems(a: Item, b: Item): number {
 }
 
 /**
- * Imports one LD body into networks. Throws LdGraphError for broken references.
+ * Imports one LD body into networks. Throws LdGraphError for broken references, and for a network
+ * the grid cannot draw exactly (never drawn with other wiring).
  *
  * Large bodies are read in batches of whole networks (see ldBatches.ts); networks are ordered
  * top to bottom (executionOrderId first unless `tuning.orderByIds` is false) once all are laid out.
@@ -99,7 +106,7 @@ export function importLdBody(
   const items: Item[] = [];
   let seq = 0;
   for (const positions of plan.batches)
-    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool, tuning.orderByIds !== false))
+    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool, tuning.orderByIds !== false, tuning.cuts ?? 'needed'))
       items.push({ ...it, seq: seq++ });
   items.sort(compareItems);
   // A network with nothing but a label or a comment: as narrow as a network gets.
@@ -129,7 +136,11 @@ export function importLdBody(
       pendingVendor.push(it.raw);
       continue;
     }
-    for (const f of it.findings) warn({ ...f, message: `network ${networks.length + 1}: ${f.message}` });
+    // A network that no layout draws exactly (verifyLayout.ts) is never drawn with other wiring:
+    // a grid that joins or drops a wire runs another program than the file's. The body is refused
+    // at the first pin that differs (the last layout, every wire cut, draws any graph exactly).
+    const undrawn = it.findings[0];
+    if (undrawn) throw new LdGraphError(`network ${networks.length + 1}: ${undrawn.message}`, undrawn.obj);
     const { laid } = it;
     const keep: PreservedNetwork = {
       ...(pendingVendor.length ? { objects: pendingVendor } : {}),
@@ -217,6 +228,7 @@ function readBatch(
   library: BlockLibrary,
   isBool?: (name: string) => boolean,
   orderByIds = true,
+  cutWires: NonNullable<BodyTuning['cuts']> = 'needed',
 ): BatchItem[] {
   const inBatch = new Set(positions);
   const keepRef = (ref: string) => {
@@ -266,6 +278,14 @@ function readBatch(
   const groups: Group[] = [];
   for (const list of comps.values()) groups.push({ nodes: list, key: keyOf(list.map((i) => nodes[i]!.obj)) });
 
+  const room: StackRoom = (n, pin) => {
+    const ins = shapeOf(n, library).inputs;
+    let off = -1;
+    for (const p of ins) if (p.pin === pin) off = p.off;
+    let free = Infinity;
+    for (const p of ins) if (p.off > off) free = Math.min(free, p.off - off);
+    return free;
+  };
   const laidOut: { group: Group; laid: LaidNetwork; findings: Finding[] }[] = [];
   const layOut = (g: Group, findings: Finding[]): LaidNetwork => {
     const key = cache.enabled ? shapeKey(nodes, g.nodes) : '';
@@ -290,7 +310,9 @@ function readBatch(
           if (!m.length) return;
         }
       };
-      tryAll();
+      const first = () =>
+        cutWires === 'all' ? tryAll(cutView(base, g.nodes, allNodeWires(base, g.nodes), room)) : tryAll();
+      first();
       // A block whose EN the file leaves out runs unconditionally (MATIEC, and the engine, run a
       // block with an open EN): drawn with EN wired to the rail where the rail reaches it, open
       // where it cannot (a function fed by another block's output, FBD style). The file's nodes
@@ -306,20 +328,20 @@ function readBatch(
         }
         base = open;
         best = undefined;
-        tryAll();
+        first();
         if (best!.mismatches.length >= before.mismatches.length) {
           base = nodes;
           best = before;
         }
       }
       // Wires the grid cannot route are drawn through connector/continuation pairs (layoutCut.ts).
-      if (best!.mismatches.length) {
+      if (best!.mismatches.length && cutWires === 'needed') {
         const cuts: CutPin[] = [];
         for (let round = 0; round < CUT_ROUNDS && best!.mismatches.length; round++) {
           addCuts(base, g.nodes, best!.mismatches, cuts);
-          tryAll(cutView(base, g.nodes, cuts));
+          tryAll(cutView(base, g.nodes, cuts, room));
         }
-        if (best!.mismatches.length) tryAll(cutView(base, g.nodes, allNodeWires(base, g.nodes)));
+        if (best!.mismatches.length) tryAll(cutView(base, g.nodes, allNodeWires(base, g.nodes), room));
       }
       ({ laid, mismatches } = best!);
       cache.remember(key, best!.needCols, g.nodes, laid, mismatches);

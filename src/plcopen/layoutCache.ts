@@ -42,6 +42,8 @@ export function shapeKey(nodes: readonly GNode[], members: readonly number[]): s
     key += n.kind;
     if (n.kind === 'box') key += `:${n.blockType ?? ''}/${n.inputCount ?? ''}${n.executionControl ? '/en' : ''}`;
     if (n.feedsRightRail) key += '!';
+    // An EN the file leaves out may be drawn open (importBody.ts): not the shape of a wired EN.
+    if (n.implicitEn) key += '~';
     // The file's own connector names may name drawn pairs: networks with other names differ.
     if (n.via) key += JSON.stringify(n.via);
     key += '(';

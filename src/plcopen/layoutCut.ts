@@ -2,7 +2,9 @@
 // A cut input pin loses its wire on the grid: its sources feed a connector drawn right after them,
 // and a continuation of the same name, drawn in the cell left of the pin, feeds the pin (a pin whose
 // sources also feed other ORs gets one connector per source, and their continuations OR-ed at the
-// pin). The engine carries a connector's state to its continuations one way
+// pin; where those continuations, stacked below the pin, would reach another input pin of the
+// same block, they are OR-ed into a relay connector drawn on its own, and one continuation of
+// the relay feeds the pin). The engine carries a connector's state to its continuations one way
 // (src/engine/compile/graph.ts, wires.ts), so the graph it compiles is the file's; evaluation
 // follows that graph, not where the pair sits (LD-SEMANTICS section 1). Cuts are made on a view
 // of the nodes: the file's nodes stay as read, for verification.
@@ -28,11 +30,24 @@ export interface CutView {
 const IDENT = /^[A-Za-z_][A-Za-z0-9_]*$/;
 
 /**
+ * Rows free below an input pin for continuations stacked under it: the distance to the next input
+ * pin of the same element below it (Infinity when there is none; see layoutRows.ts, fits).
+ */
+export type StackRoom = (node: GNode, pin: string) => number;
+
+/**
  * The view with `cuts` drawn through connector pairs: one connector per distinct set of sources
  * (named after the file's own connector when the file wired the pin through one, else C1, C2, …,
- * unique in the network), one continuation per cut pin.
+ * unique in the network), one continuation per cut pin — or, for a pin fed by several connectors
+ * whose continuations have no room to be stacked under it (`room`), one continuation of a relay
+ * connector that ORs theirs.
  */
-export function cutView(nodes: readonly GNode[], members: readonly number[], cuts: readonly CutPin[]): CutView {
+export function cutView(
+  nodes: readonly GNode[],
+  members: readonly number[],
+  cuts: readonly CutPin[],
+  room: StackRoom = () => Infinity,
+): CutView {
   if (!cuts.length) return { nodes, members };
   const view = nodes.slice();
   const extra: number[] = [];
@@ -77,6 +92,9 @@ export function cutView(nodes: readonly GNode[], members: readonly number[], cut
     // one-way, so the continuations of a source shared by two ORs do not join those ORs).
     const key = srcs.map(srcKey).sort().join(' ');
     const groups = srcs.length > 1 && !onlyThisSet(key, srcs) ? srcs.map((x) => [x]) : [srcs];
+    // Continuations stacked under a pin OR at its bar: where the stack would reach the block's
+    // next input pin, that bar would join the two pins, so the stack feeds a relay instead.
+    const relay = groups.length > 1 && room(orig, pin) < groups.length;
     const fed: GSource[] = [];
     for (const group of groups) {
       const gkey = group.length === srcs.length ? key : srcKey(group[0]!);
@@ -84,7 +102,8 @@ export function cutView(nodes: readonly GNode[], members: readonly number[], cut
       if (!conn) {
         const first = group.find((x) => x.kind === 'node');
         const at = first && first.kind === 'node' ? nodes[first.node]! : orig;
-        conn = drawn(view.length, 'connector', nameFor(orig.via?.[pin]), at, 0.5, new Map([['in', [...group]]]));
+        const name = nameFor(relay ? undefined : orig.via?.[pin]);
+        conn = drawn(view.length, 'connector', name, at, 0.5, new Map([['in', [...group]]]));
         connectorOf.set(gkey, conn);
         add(conn);
       }
@@ -92,7 +111,14 @@ export function cutView(nodes: readonly GNode[], members: readonly number[], cut
       add(cont);
       fed.push({ kind: 'node', node: cont.index, pin: 'out' });
     }
-    clone.inputs.set(pin, fed);
+    if (relay) {
+      // Drawn on rows of its own (placed by position: just left of the pin it feeds).
+      const hub = drawn(view.length, 'connector', nameFor(orig.via?.[pin]), orig, -0.75, new Map([['in', fed]]));
+      add(hub);
+      const cont = drawn(view.length, 'continuation', hub.name!, orig, -0.5, new Map());
+      add(cont);
+      clone.inputs.set(pin, [{ kind: 'node', node: cont.index, pin: 'out' }]);
+    } else clone.inputs.set(pin, fed);
   }
   return { nodes: view, members: [...members, ...extra] };
 

@@ -256,8 +256,15 @@ class RowPlacer {
     for (let k = 0; k < pins.length; k++) nodes[k] = pins[k]!.node;
     for (const n of sortSmall(nodes, this.byPosition)) this.place(n);
   }
-  /** Consumers of a net, except those waiting for a source still being placed (that source places them). */
+  /**
+   * Consumers of a net, except those waiting for a source still being placed (that source places
+   * them). While another consumer of the net is being placed (this net is one of its sources), none
+   * is placed: that consumer's rows come first (a TON drawn below a counter whose reset it feeds,
+   * also driving a coil: the coil placed first would take the counter's rows).
+   */
   consumersOf(net: Net): void {
+    if (this.placing.size)
+      for (const c of net.consumers) if (this.placing.has(c.node)) return;
     for (const c of net.consumers) if (this.placing.size === 0 || !this.waiting(c.node)) this.place(c.node);
   }
   /** Whether a producer of one of the node's input nets is being placed. */

@@ -105,11 +105,12 @@ function splitOnce(nodes: GNode[], warn: (f: Finding) => void): boolean {
       }
       if (!copies.size) continue;
       changed = true;
-      for (const c of group)
-        c.node.inputs.set(
-          c.pin,
-          c.srcs.map((s) => copies.get(srcKey(s)) ?? s),
-        );
+      // The group reads the copies from now on: a later group that is the last to read a
+      // source keeps the original (copying it too would leave the original feeding nothing).
+      for (const c of group) {
+        c.srcs = c.srcs.map((s) => copies.get(srcKey(s)) ?? s);
+        c.node.inputs.set(c.pin, c.srcs);
+      }
     }
   }
   return changed;

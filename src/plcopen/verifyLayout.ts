@@ -186,13 +186,13 @@ export function mismatchFinding(nodes: readonly GNode[], m: Mismatch): Finding {
   const n = nodes[m.node]!;
   const what: string[] = [];
   if (m.extra.length)
-    what.push(`joins it to ${m.extra.map((s) => sourceName(nodes, s)).join(', ')}, which the file does not`);
+    what.push(`would join it to ${m.extra.map((s) => sourceName(nodes, s)).join(', ')}, which the file does not`);
   if (m.missing.length)
-    what.push(`leaves out its wire from ${m.missing.map((s) => sourceName(nodes, s)).join(', ')}`);
-  if (m.leftward) what.push('feeds it from its right');
-  const detail = what.length ? what.join('; ') : 'cannot place it';
+    what.push(`would leave out its wire from ${m.missing.map((s) => sourceName(nodes, s)).join(', ')}`);
+  if (m.leftward) what.push('would feed it from its right');
+  const detail = what.length ? what.join('; ') : 'could not place it';
   return {
-    message: `${describe(n)}${m.pin === 'in' ? '' : ` pin ${m.pin}`}: this wiring cannot be drawn exactly on the ladder grid without crossing other wires (the grid ${detail}); check its connections`,
+    message: `${describe(n)}${m.pin === 'in' ? '' : ` pin ${m.pin}`}: this wiring cannot be drawn exactly on the ladder grid (the grid ${detail}); not imported rather than run with other wiring than the file's`,
     obj: n.obj,
   };
 }

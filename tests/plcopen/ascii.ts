@@ -38,6 +38,12 @@ export function ascii(net: Network): string {
       case 'return':
         put(y, x, '<RET>');
         break;
+      case 'connector':
+        put(y, x, `>${el.name.slice(0, 3)}>`);
+        break;
+      case 'continuation':
+        put(y, x, `>${el.name.slice(0, 3)}>`);
+        break;
       case 'box': {
         const l = boxLayout(el);
         put(y, x, `[${el.blockType}`.slice(0, 11));

@@ -204,6 +204,100 @@ export const CASES: LayoutCase[] = [
       },
     ],
   },
+  {
+    name: 'or-reset-from-block-below',
+    connectors: true,
+    about:
+      'a CTU whose R is T1.Q OR a falling-edge contact, T1 drawn below and left of it and also driving a coil, PV from a variable (R and PV were joined: a false LD-R10)',
+    vars: [...bools('A', 'B', 'C', 'X', 'Y'), { name: 'T1', type: 'TON' }, { name: 'K1', type: 'CTU' }],
+    networks: [
+      {
+        objects: [
+          { id: 1, kind: 'contact', v: 'A', in: ['rail'] },
+          { id: 2, kind: 'contact', v: 'B', edge: 'falling', in: ['rail'] },
+          { id: 3, kind: 'contact', v: 'C', in: ['rail'] },
+          { id: 4, kind: 'block', type: 'TON', instance: 'T1', inputs: { IN: ['3'], PT: ['=T#50ms'] }, outputs: ['Q', 'ET'] },
+          { id: 5, kind: 'block', type: 'CTU', instance: 'K1', inputs: { CU: ['1'], R: ['4.Q', '2'], PV: ['=3'] }, outputs: ['Q', 'CV'] },
+          { id: 6, kind: 'coil', v: 'X', in: ['5.Q'] },
+          { id: 7, kind: 'coil', v: 'Y', in: ['4.Q'] },
+        ],
+        toRail: [6, 7],
+        pos: {
+          1: { x: 100, y: 40 },
+          2: { x: 100, y: 60 },
+          3: { x: 50, y: 180 },
+          4: { x: 80, y: 150 },
+          5: { x: 200, y: 20 },
+          6: { x: 400, y: 40 },
+          7: { x: 400, y: 180 },
+        },
+      },
+    ],
+  },
+  {
+    name: 'or-set-above-wired-reset',
+    connectors: true,
+    about:
+      'an SR whose S1 is F1.Q OR a contact (F1 drawn below-left, also in an OR with another contact into a coil) and whose R has a contact of its own (S1 and R were joined: R read S1\'s sources)',
+    vars: [...bools('A', 'B', 'C', 'D', 'X', 'Y'), { name: 'F1', type: 'TOF' }, { name: 'S1', type: 'SR' }],
+    networks: [
+      {
+        objects: [
+          { id: 1, kind: 'contact', v: 'A', in: ['rail'] },
+          { id: 2, kind: 'contact', v: 'B', in: ['rail'] },
+          { id: 3, kind: 'contact', v: 'C', in: ['rail'] },
+          { id: 4, kind: 'contact', v: 'D', in: ['rail'] },
+          { id: 5, kind: 'block', type: 'TOF', instance: 'F1', inputs: { IN: ['4'], PT: ['=T#30ms'] }, outputs: ['Q', 'ET'] },
+          { id: 6, kind: 'block', type: 'SR', instance: 'S1', inputs: { S1: ['5.Q', '2'], R: ['3'] }, outputs: ['Q1'] },
+          { id: 7, kind: 'coil', v: 'X', in: ['6.Q1'] },
+          { id: 8, kind: 'coil', v: 'Y', in: ['5.Q', '1'] },
+        ],
+        toRail: [7, 8],
+        pos: {
+          1: { x: 60, y: 40 },
+          2: { x: 200, y: 60 },
+          3: { x: 200, y: 80 },
+          4: { x: 40, y: 190 },
+          5: { x: 110, y: 160 },
+          6: { x: 300, y: 40 },
+          7: { x: 480, y: 60 },
+          8: { x: 480, y: 180 },
+        },
+      },
+    ],
+  },
+  {
+    name: 'shared-contact-last-or',
+    connectors: true,
+    about:
+      'a contact feeding a counter alone and, OR-ed with a timer drawn below, a coil; the timer also feeds the counter reset OR-ed with another contact (the contact was copied for both uses, its original left feeding nothing)',
+    vars: [...bools('A', 'B', 'C', 'X', 'Y', 'Z'), { name: 'T1', type: 'TON' }, { name: 'K1', type: 'CTU' }],
+    networks: [
+      {
+        objects: [
+          { id: 1, kind: 'contact', v: 'A', in: ['rail'] },
+          { id: 2, kind: 'contact', v: 'B', edge: 'falling', in: ['rail'] },
+          { id: 3, kind: 'contact', v: 'C', in: ['rail'] },
+          { id: 4, kind: 'block', type: 'TON', instance: 'T1', inputs: { IN: ['3'], PT: ['=T#50ms'] }, outputs: ['Q', 'ET'] },
+          { id: 5, kind: 'block', type: 'CTU', instance: 'K1', inputs: { CU: ['1'], R: ['4.Q', '2'], PV: ['=3'] }, outputs: ['Q', 'CV'] },
+          { id: 6, kind: 'coil', v: 'X', in: ['5.Q'] },
+          { id: 7, kind: 'coil', v: 'Y', in: ['4.Q'] },
+          { id: 8, kind: 'coil', v: 'Z', in: ['4.Q', '1'] },
+        ],
+        toRail: [6, 7, 8],
+        pos: {
+          1: { x: 100, y: 40 },
+          2: { x: 100, y: 60 },
+          3: { x: 50, y: 180 },
+          4: { x: 80, y: 150 },
+          5: { x: 200, y: 20 },
+          6: { x: 400, y: 40 },
+          7: { x: 400, y: 180 },
+          8: { x: 400, y: 220 },
+        },
+      },
+    ],
+  },
 ];
 
 if (process.argv[1] === fileURLToPath(import.meta.url))
