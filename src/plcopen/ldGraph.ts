@@ -299,10 +299,25 @@ export function buildLdGraph(
           });
           continue;
         }
-        out.push({ kind: 'node', node: n.index, pin: pinName(n, r.pin ?? 'out')! });
+        const pin = pinName(n, r.pin ?? 'out')!;
+        if (n.kind === 'box' && !hasPin(n, pin)) {
+          // A pin the block does not have (a vendor's block of the same name with other pins): its
+          // wire is dropped and said, rather than drawn from a pin that does not exist.
+          warn({
+            message: `the wire from output ${r.pin} of block ${n.obj.text} (localId ${n.obj.localId}) cannot be kept: ${n.obj.text} has no pin ${r.pin}`,
+            obj: consumer,
+          });
+          continue;
+        }
+        out.push({ kind: 'node', node: n.index, pin });
       }
     }
     return out;
+  };
+  const hasPin = (n: GNode, pin: string): boolean => {
+    const sig = library.signature(n.blockType ?? n.obj.text);
+    if (!sig || pin === 'ENO' || pin === 'EN') return true;
+    return sig.outputs.some((p) => p.name === pin) || sig.inputs.some((p) => p.name === pin);
   };
 
   for (const n of [...nodes]) {

@@ -172,6 +172,10 @@ describe('a CODESYS V3 application export', () => {
           "HYSTERESIS is called with pins of CODESYS Util's HYSTERESIS (IN, HIGH, LOW, OUT); Rungsmith's HYSTERESIS is the annex F block of OpenPLC's library (XIN1, XIN2, EPS -> Q), and Util's HYSTERESIS is not supported: the wires of those pins are dropped and the call does not do what it does in CODESYS",
       }),
     );
+    // The coil the file wires from output O (which the annex F block does not have) keeps no wire from it.
+    expect(r.report.warnings.map((w) => w.message)).toContainEqual(
+      expect.stringMatching(/^the wire from output O of block HYSTERESIS \(localId 20000000005\) cannot be kept: HYSTERESIS has no pin O$/),
+    );
   });
 
   test('REFERENCE TO and POINTER TO variables keep their base type with a named warning', () => {
