@@ -9,7 +9,8 @@ import type { Network } from '../model/project';
 import { LAYOUT_STRATEGIES, prepareLayout } from './layout';
 import { addCuts, allNodeWires, CUT_ROUNDS, cutView, type CutPin, type CutView } from './layoutCut';
 import { instantiate, LayoutCache, shapeKey } from './layoutCache';
-import type { LaidOut } from './layoutShapes';
+import { shapeOf, type LaidOut } from './layoutShapes';
+import type { ElementId } from '../model/ids';
 import { buildLdGraph } from './ldGraph';
 import type { Finding, GNode } from './ldNodes';
 import { splitSharedSources } from './ldNormalize';
@@ -37,6 +38,11 @@ export interface BodyTuning {
    * ids (the engine does too, BoxElement.executionOrder), coils by position, never networks.
    */
   readonly orderByIds?: boolean;
+  /**
+   * Profile openplc: record the generator's order of coils and output variables where it is not
+   * network by network, row by row (Network.turns; see generatorTurns).
+   */
+  readonly turns?: boolean;
 }
 
 const MIN_COLS = 3;
@@ -63,6 +69,22 @@ interface LaidNetwork {
   readonly elements: LdElement[];
   readonly vlinks: Network['vlinks'];
   readonly elementData?: PreservedNetwork['elementData'];
+  /** Profile openplc: the network's coils and output variables, where the file draws them (see generatorTurns). */
+  readonly anchors?: Anchor[];
+}
+
+/**
+ * A statement of Beremiz's generator: a coil, or a variable written beside a block output (an
+ * outVariable), where the file draws it; `key` is its Network.turns key, `row`/`col` its place on
+ * the grid (the engine's order without turns).
+ */
+interface Anchor {
+  readonly x: number;
+  readonly y: number;
+  readonly order: number;
+  readonly key: string;
+  readonly row: number;
+  readonly col: number;
 }
 
 const RANK = { network: 0, label: 1, comment: 2, vendor: 3 } as const;
@@ -99,19 +121,22 @@ export function importLdBody(
   const items: Item[] = [];
   let seq = 0;
   for (const positions of plan.batches)
-    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool, tuning.orderByIds !== false))
+    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool, tuning.orderByIds !== false, tuning.turns === true))
       items.push({ ...it, seq: seq++ });
   items.sort(compareItems);
   // A network with nothing but a label or a comment: as narrow as a network gets.
   const cols = MIN_COLS;
 
   const networks: Network[] = [];
+  /** Per network: its generator statements (profile openplc). */
+  const anchors: (readonly Anchor[])[] = [];
   let pendingLabel: string | undefined;
   let pendingComments: { text: string; title: string }[] = [];
   let pendingVendor: string[] = [];
   const flushEmpty = () => {
     if (pendingLabel === undefined) return;
     networks.push(newNetwork({ rows: 1, cols, label: pendingLabel, ...commentsOf(pendingComments) }));
+    anchors.push([]);
     pendingLabel = undefined;
     pendingComments = [];
   };
@@ -146,6 +171,7 @@ export function importLdBody(
         ...(keep.objects || keep.elementData ? { extensions: { plcopen: keep } } : {}),
       }),
     );
+    anchors.push(laid.anchors ?? []);
     pendingLabel = undefined;
     pendingComments = [];
     pendingVendor = [];
@@ -164,7 +190,7 @@ export function importLdBody(
           ? { extensions: { plcopen: { ...(last.extensions?.plcopen as object), objects: pendingVendor } } }
           : {}),
       });
-    } else
+    } else {
       networks.push(
         newNetwork({
           rows: 1,
@@ -173,10 +199,86 @@ export function importLdBody(
           ...(pendingVendor.length ? { extensions: { plcopen: keep } } : {}),
         }),
       );
+      anchors.push([]);
+    }
   }
   // The layout names its pairs C1, C2, … per network; PLCopen names are the body's.
   const named = [...uniqueConnectorNames(networks)];
-  return { networks: named, notes: pairNotes(named) };
+  const turned = tuning.turns ? generatorTurns(named, anchors) : { networks: named, notes: [] };
+  return { networks: turned.networks, notes: [...pairNotes(turned.networks), ...turned.notes] };
+}
+
+/**
+ * Beremiz's SortInstances (PLCGenerator.py, with the oracle's port fix): two instances whose tops
+ * are less than 10 apart by x, others by y. Positions are read as integers (Python's int()).
+ */
+export function sortInstances(a: { x: number; y: number }, b: { x: number; y: number }): number {
+  const ay = Math.trunc(a.y);
+  const by = Math.trunc(b.y);
+  return Math.abs(ay - by) < 10 ? Math.trunc(a.x) - Math.trunc(b.x) : ay - by;
+}
+
+/**
+ * Profile openplc: Beremiz's generator writes one statement per coil and per output variable of
+ * the whole body (ComputeProgram), sorted by SortInstances from file order, across networks. The
+ * engine runs a network's statements by row and column, network after network; where that differs,
+ * the networks get turns (Network.turns, each statement's rank in the generator's order):
+ * - networks whose statements interleave (one's runs between two of another's, as when networks
+ *   are drawn side by side) form a group: every network between the group's first and last gets
+ *   turns, and the group runs its statements together in turn order;
+ * - a network alone whose own rows do not follow the drawing gets turns too.
+ * Everything else keeps network order (no turns: nothing to store).
+ */
+export function generatorTurns(
+  networks: readonly Network[],
+  anchors: readonly (readonly Anchor[])[],
+): { networks: Network[]; notes: string[] } {
+  const all: { a: Anchor; net: number }[] = [];
+  anchors.forEach((list, net) => {
+    for (const a of list) all.push({ a, net });
+  });
+  if (all.length < 2) return { networks: [...networks], notes: [] };
+  // The generator sorts the instances as the file lists them (a stable sort, like Python's).
+  all.sort((p, q) => p.a.order - q.a.order);
+  all.sort((p, q) => sortInstances(p.a, q.a));
+  const rank = new Map<Anchor, number>();
+  all.forEach((p, k) => rank.set(p.a, k));
+  // Each network's ranks in the engine's order without turns (row, then column).
+  const ranks = anchors.map((list) =>
+    [...list].sort((p, q) => p.row - q.row || p.col - q.col).map((a) => rank.get(a)!),
+  );
+  const n = networks.length;
+  const suffixMin: number[] = new Array<number>(n + 1).fill(Infinity);
+  for (let i = n - 1; i >= 0; i--) suffixMin[i] = Math.min(suffixMin[i + 1]!, ...ranks[i]!);
+  const out = [...networks];
+  const notes: string[] = [];
+  const give = (i: number) => {
+    const turns: Record<string, number> = {};
+    for (const a of anchors[i]!) turns[a.key] = rank.get(a)!;
+    out[i] = { ...out[i]!, turns };
+  };
+  let start = 0;
+  let max = -Infinity;
+  for (let i = 0; i < n; i++) {
+    for (const r of ranks[i]!) max = Math.max(max, r);
+    // A cut after network i: everything up to it runs before everything after it.
+    if (max >= suffixMin[i + 1]! && i + 1 < n) continue;
+    const members: number[] = [];
+    for (let k = start; k <= i; k++) if (ranks[k]!.length) members.push(k);
+    if (members.length > 1) {
+      const first = members[0]!;
+      const last = members[members.length - 1]!;
+      for (let k = first; k <= last; k++) give(k);
+      notes.push(
+        `networks ${first + 1} to ${last + 1} are drawn so that Beremiz and OpenPLC run their coils and output variables interleaved, in the order of their drawn height across the networks (not network by network): the openplc profile runs them in that order`,
+      );
+    } else if (members.length === 1) {
+      const own = ranks[members[0]!]!;
+      if (own.some((r, k) => k > 0 && r < own[k - 1]!)) give(members[0]!);
+    }
+    start = i + 1;
+  }
+  return { networks: out, notes };
 }
 
 /**
@@ -217,6 +319,7 @@ function readBatch(
   library: BlockLibrary,
   isBool?: (name: string) => boolean,
   orderByIds = true,
+  turns = false,
 ): BatchItem[] {
   const inBatch = new Set(positions);
   const keepRef = (ref: string) => {
@@ -327,12 +430,14 @@ function readBatch(
     findings.length = 0;
     for (const m of mismatches) findings.push(mismatchFinding(nodes, m));
     const data = elementData(nodes, g.nodes, laid);
+    const anchors = turns ? anchorsOf(nodes, g.nodes, laid, library) : undefined;
     return {
       rows: laid.rows,
       cols: laid.cols,
       elements: laid.elements,
       vlinks: laid.vlinks,
       ...(data ? { elementData: data } : {}),
+      ...(anchors?.length ? { anchors } : {}),
     };
   };
   for (const g of groups) {
@@ -377,6 +482,35 @@ function commentOf(o: RawObject): { text: string; title: string } {
   const add = o.hasAddData ? child(o.xml, 'addData') : undefined;
   const mine = add ? childrenNamed(add, 'data').find((d) => d.attrs.name === RS_NETWORK) : undefined;
   return { text: o.text, title: mine?.children[0]?.attrs.title ?? '' };
+}
+
+/**
+ * The generator's statements of one network: its coils and the variables written beside its block
+ * outputs (outVariables; one drawn as a MOVE), without executionOrderId (those run first anyway).
+ */
+function anchorsOf(nodes: readonly GNode[], members: readonly number[], laid: LaidOut, library: BlockLibrary): Anchor[] {
+  const out: Anchor[] = [];
+  const at = new Map<ElementId, LdElement>();
+  for (const el of laid.elements) if (el.kind === 'coil' || el.kind === 'box') at.set(el.id, el);
+  for (const i of members) {
+    const n = nodes[i]!;
+    const id = laid.elementOf.get(i);
+    const el = id === undefined ? undefined : at.get(id);
+    if (!el || n.obj.executionOrderId > 0) continue;
+    const { obj } = n;
+    if (n.kind === 'coil') out.push({ x: obj.pos.x, y: obj.pos.y, order: obj.order, key: el.id, row: el.row, col: el.col });
+    if (n.kind !== 'box') continue;
+    const variable = obj.kind === 'outVariable' || obj.kind === 'inOutVariable';
+    if (!variable && !n.outputAt) continue;
+    const shape = shapeOf(n, library);
+    const pinAt = (pin: string, o: RawObject) => {
+      const off = shape.outputs.find((p) => p.pin === pin)?.off ?? 0;
+      out.push({ x: o.pos.x, y: o.pos.y, order: o.order, key: `${el.id}.${pin.toUpperCase()}`, row: el.row + off, col: el.col + shape.w });
+    };
+    if (variable) pinAt('OUT', obj);
+    for (const [pin, o] of Object.entries(n.outputAt ?? {})) pinAt(pin, o);
+  }
+  return out;
 }
 
 function elementData(

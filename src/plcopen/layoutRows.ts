@@ -256,9 +256,15 @@ class RowPlacer {
     for (let k = 0; k < pins.length; k++) nodes[k] = pins[k]!.node;
     for (const n of sortSmall(nodes, this.byPosition)) this.place(n);
   }
-  /** Consumers of a net, except those waiting for a source still being placed (that source places them). */
+  /**
+   * Consumers of a net, top to bottom as drawn (parallel coils in the order Beremiz runs them),
+   * except those waiting for a source still being placed (that source places them).
+   */
   consumersOf(net: Net): void {
-    for (const c of net.consumers) if (this.placing.size === 0 || !this.waiting(c.node)) this.place(c.node);
+    const nodes: number[] = new Array<number>(net.consumers.length);
+    for (let k = 0; k < nodes.length; k++) nodes[k] = net.consumers[k]!.node;
+    if (nodes.length > 1) sortSmall(nodes, this.byPosition);
+    for (const c of nodes) if (this.placing.size === 0 || !this.waiting(c)) this.place(c);
   }
   /** Whether a producer of one of the node's input nets is being placed. */
   waiting(i: number): boolean {
