@@ -10,6 +10,7 @@ import { LAYOUT_STRATEGIES, prepareLayout } from './layout';
 import { addCuts, allNodeWires, CUT_ROUNDS, cutView, type CutPin, type CutView } from './layoutCut';
 import { instantiate, LayoutCache, shapeKey } from './layoutCache';
 import { shapeOf, type LaidOut } from './layoutShapes';
+import { sortInstances } from './generatorOrder';
 import type { ElementId } from '../model/ids';
 import { buildLdGraph } from './ldGraph';
 import type { Finding, GNode } from './ldNodes';
@@ -206,16 +207,6 @@ export function importLdBody(
   const named = [...uniqueConnectorNames(networks)];
   const turned = tuning.turns ? generatorTurns(named, anchors) : { networks: named, notes: [] };
   return { networks: turned.networks, notes: [...pairNotes(turned.networks), ...turned.notes] };
-}
-
-/**
- * Beremiz's SortInstances (PLCGenerator.py, with the oracle's port fix): two instances whose tops
- * are less than 10 apart by x, others by y. Positions are read as integers (Python's int()).
- */
-export function sortInstances(a: { x: number; y: number }, b: { x: number; y: number }): number {
-  const ay = Math.trunc(a.y);
-  const by = Math.trunc(b.y);
-  return Math.abs(ay - by) < 10 ? Math.trunc(a.x) - Math.trunc(b.x) : ay - by;
 }
 
 /**
