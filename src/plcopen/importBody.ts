@@ -77,7 +77,7 @@ interface LaidNetwork {
 /**
  * A statement of Beremiz's generator: a coil, or a variable written beside a block output (an
  * outVariable), where the file draws it; `key` is its Network.turns key, `row`/`col` its place on
- * the grid (the engine's order without turns).
+ * the grid (the engine's order without turns). A network lists its anchors in that order.
  */
 interface Anchor {
   readonly x: number;
@@ -224,23 +224,37 @@ export function generatorTurns(
   networks: readonly Network[],
   anchors: readonly (readonly Anchor[])[],
 ): { networks: Network[]; notes: string[] } {
-  const all: { a: Anchor; net: number }[] = [];
-  anchors.forEach((list, net) => {
-    for (const a of list) all.push({ a, net });
-  });
-  if (all.length < 2) return { networks: [...networks], notes: [] };
+  // Usually the engine's order (network by network, each network's anchors by row and column, as
+  // anchorsOf lists them) is already sorted: nothing to record, and nothing more to compute.
+  let prev: Anchor | undefined;
+  let sorted = true;
+  const all: Anchor[] = [];
+  for (const list of anchors)
+    for (const a of list) {
+      all.push(a);
+      if (!sorted || !prev) {
+        prev = a;
+        continue;
+      }
+      const c = sortInstances(prev, a);
+      if (c > 0 || (c === 0 && prev.order > a.order)) sorted = false;
+      prev = a;
+    }
+  if (sorted) return { networks: [...networks], notes: [] };
   // The generator sorts the instances as the file lists them (a stable sort, like Python's).
-  all.sort((p, q) => p.a.order - q.a.order);
-  all.sort((p, q) => sortInstances(p.a, q.a));
+  all.sort((p, q) => p.order - q.order);
+  all.sort(sortInstances);
   const rank = new Map<Anchor, number>();
-  all.forEach((p, k) => rank.set(p.a, k));
+  all.forEach((a, k) => rank.set(a, k));
   // Each network's ranks in the engine's order without turns (row, then column).
-  const ranks = anchors.map((list) =>
-    [...list].sort((p, q) => p.row - q.row || p.col - q.col).map((a) => rank.get(a)!),
-  );
+  const ranks = anchors.map((list) => list.map((a) => rank.get(a)!));
   const n = networks.length;
   const suffixMin: number[] = new Array<number>(n + 1).fill(Infinity);
-  for (let i = n - 1; i >= 0; i--) suffixMin[i] = Math.min(suffixMin[i + 1]!, ...ranks[i]!);
+  for (let i = n - 1; i >= 0; i--) {
+    let m = suffixMin[i + 1]!;
+    for (const r of ranks[i]!) if (r < m) m = r;
+    suffixMin[i] = m;
+  }
   const out = [...networks];
   const notes: string[] = [];
   const give = (i: number) => {
@@ -481,13 +495,18 @@ function commentOf(o: RawObject): { text: string; title: string } {
  */
 function anchorsOf(nodes: readonly GNode[], members: readonly number[], laid: LaidOut, library: BlockLibrary): Anchor[] {
   const out: Anchor[] = [];
-  const at = new Map<ElementId, LdElement>();
-  for (const el of laid.elements) if (el.kind === 'coil' || el.kind === 'box') at.set(el.id, el);
+  // A network holds a few coils and boxes: found by a scan, no map per network (10,000 networks).
+  const placed: LdElement[] = [];
+  for (const el of laid.elements) if (el.kind === 'coil' || el.kind === 'box') placed.push(el);
+  const find = (id: ElementId | undefined) => {
+    if (id !== undefined) for (const el of placed) if (el.id === id) return el;
+    return undefined;
+  };
   for (const i of members) {
     const n = nodes[i]!;
-    const id = laid.elementOf.get(i);
-    const el = id === undefined ? undefined : at.get(id);
-    if (!el || n.obj.executionOrderId > 0) continue;
+    if ((n.kind !== 'coil' && n.kind !== 'box') || n.obj.executionOrderId > 0) continue;
+    const el = find(laid.elementOf.get(i));
+    if (!el) continue;
     const { obj } = n;
     if (n.kind === 'coil') out.push({ x: obj.pos.x, y: obj.pos.y, order: obj.order, key: el.id, row: el.row, col: el.col });
     if (n.kind !== 'box') continue;
@@ -501,7 +520,8 @@ function anchorsOf(nodes: readonly GNode[], members: readonly number[], laid: La
     if (variable) pinAt('OUT', obj);
     for (const [pin, o] of Object.entries(n.outputAt ?? {})) pinAt(pin, o);
   }
-  return out;
+  // In the engine's order without turns (generated.ts): row, then column.
+  return out.length > 1 ? out.sort((p, q) => p.row - q.row || p.col - q.col) : out;
 }
 
 function elementData(
