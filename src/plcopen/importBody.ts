@@ -1,6 +1,7 @@
 // An LD body → the networks of a POU: connected components ordered top to bottom (or, for a
 // profile other than openplc, by their smallest executionOrderId first), labels and comments
-// attached to the network below.
+// attached to the network below. Under openplc, networks whose coils Beremiz's generator runs in
+// another order than network by network (drawn side by side) record that order (generatorTurns).
 import { uniqueConnectorNames } from './connectorNames';
 import type { LdElement } from '../model/elements';
 import type { BlockLibrary } from '../model/library';

@@ -4,7 +4,13 @@
 // re-tracing the coil's path from the left rail (ComputeExpression), so:
 // - every coil and every variable written beside a block output (an outVariable) takes its turn by
 //   position: network, then row, then column; the outVariable's statement `X := T1.Q` (or
-//   `X := ADD3_OUT` for a function) is written at its own turn, not when the block runs;
+//   `X := ADD3_OUT` for a function) is written at its own turn, not when the block runs. An
+//   imported network may carry Beremiz's own order (Network.turns: SortInstances over the whole
+//   body, where networks drawn side by side interleave): its statements take those turns, and
+//   consecutive networks with turns run theirs together as early segments of the group's first
+//   network (pou.ts);
+// - a generic function's output that turns out BOOL (AND's ANY_BIT OUT) wired into another
+//   block's input is power flow read from what the call wrote (`OR(_TMP_AND5_OUT, C)`);
 // - a statement first calls what its path needs, in the generator's order (GeneratePaths: from the
 //   coil back to the rail, a join's branches top first, an edge contact's R_TRIG/F_TRIG before its
 //   own upstream part, a block's inputs in pin order), then evaluates its expression: the plain
