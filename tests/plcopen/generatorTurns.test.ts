@@ -8,6 +8,8 @@ import { describe, expect, test } from 'vitest';
 import type { CoilElement } from '../../src/model/elements';
 import { loadProject, saveProject } from '../../src/model/load';
 import type { Network, Profile, Project } from '../../src/model/project';
+import { exportBehaviour } from '../../src/plcopen/exportBehaviour';
+import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
 import { sortInstances } from '../../src/plcopen/generatorOrder';
 import { ladder, plcOf, project, trace, vars } from '../engine/ladder';
@@ -95,6 +97,20 @@ describe('networks drawn side by side (class 3)', () => {
     const above = imported(ldXml(VARS, body({ x: 500, y: 0 })));
     expect(networksOf(above.project).every((n) => n.turns === undefined)).toBe(true);
     expect(run(above.project, 'openplc')[0]).toEqual([0, 0]);
+  });
+
+  test('the export cannot draw the interleaved order: the review says so (LD-X08), and the exported file runs network by network', () => {
+    const { project: p } = imported(ldXml(VARS, body({ x: 500, y: 60 })));
+    const x08 = exportBehaviour(p).filter((w) => w.rule === 'LD-X08');
+    expect(x08.map((w) => w.network)).toEqual([0]);
+    expect(x08[0]!.message).toMatch(/networks 1 to 2 run their coils and output variables interleaved/);
+    expect(exportBehaviour({ ...p, profile: 'iec' }).some((w) => w.rule === 'LD-X08')).toBe(false);
+    const again = imported(exportPlcopen(p)).project;
+    expect(networksOf(again).every((n) => n.turns === undefined)).toBe(true);
+    expect(run(again, 'openplc')).toEqual([
+      [0, 0],
+      [0, 0],
+    ]);
   });
 
   test('turns survive saving and loading the project', () => {
