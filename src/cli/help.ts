@@ -42,9 +42,10 @@ Errors (unknown variable, bad value, invalid program) go to stderr with a non-ze
 
 Writes the project as one PLCopen TC6 XML v2.01 document (to stdout without -o).
 Prints on stderr, one line per POU network, what Beremiz and OpenPLC would run differently
-(warning LD-X01..LD-X07: dropped jumps and RETURNs, function blocks called at the end of the
+(warning LD-X01..LD-X08: dropped jumps and RETURNs, function blocks called at the end of the
 scan, contacts read again per coil, a connector's OR pasted without brackets, coils in series
-after an OR join) and the fix where one exists. The exit code stays 0.`,
+after an OR join; LD-X08: networks imported side by side, whose interleaved order the export
+cannot draw) and the fix where one exists. The exit code stays 0.`,
   import: `Usage: rungsmith import FILE.xml -o OUT.json
 
 Reads PLCopen TC6 XML (v2.01, v2.0 from CODESYS/TwinCAT, legacy v1.0) into a Rungsmith project

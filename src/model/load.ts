@@ -60,6 +60,7 @@ const networkSchema = z
     elements: z.array(element),
     vlinks: z.array(z.object({ row: nonNeg, boundary: nonNeg }).strict()),
     collapsed: z.boolean().optional(),
+    turns: z.record(z.string(), int.min(0)).optional(),
     extensions,
   })
   .strict();

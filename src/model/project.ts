@@ -39,6 +39,16 @@ export interface Network {
   readonly elements: readonly LdElement[];
   readonly vlinks: readonly VLink[];
   readonly collapsed?: boolean;
+  /**
+   * Profile `openplc` (LD-SEMANTICS.md section 6): the turn of each of this network's statements in
+   * its POU body's generator order, when a PLCopen file drew it so that Beremiz's order is not
+   * network by network, row by row (networks side by side, whose coils Beremiz interleaves by their
+   * drawn height). Keys: a coil's element id; a variable written beside a block output,
+   * `<box id>.<PIN>`. Consecutive networks with turns run their statements together, by turn (an
+   * element without one runs after the one before it in its network). Set by the PLCopen import;
+   * the iec profile ignores it.
+   */
+  readonly turns?: Readonly<Record<string, number>>;
   /** Vendor data kept for round trips (e.g. PLCopen addData); never interpreted. */
   readonly extensions?: Readonly<Record<string, unknown>>;
 }

@@ -39,7 +39,7 @@ import { STANDARD_LIBRARY, blockLibrary, type BlockLibrary } from '../model/libr
 import type { Network, Pou, Project, Variable } from '../model/project';
 import { gridGraph, type GridGraph, type Source } from './gridGraph';
 
-export type ExportRuleId = 'LD-X01' | 'LD-X02' | 'LD-X03' | 'LD-X04' | 'LD-X05' | 'LD-X06' | 'LD-X07';
+export type ExportRuleId = 'LD-X01' | 'LD-X02' | 'LD-X03' | 'LD-X04' | 'LD-X05' | 'LD-X06' | 'LD-X07' | 'LD-X08';
 
 /** An edit that makes the exported program behave the same: one network rewritten, variables added. */
 export interface ExportFix {
@@ -77,6 +77,7 @@ const SIMULATED_SO: Record<ExportRuleId, string> = {
   'LD-X05': 'This project runs under the openplc profile, so the simulator already reads it again: what you see in simulation is what the exported program does.',
   'LD-X06': 'The simulator does not copy this bug of their generator, under either profile: what you see in simulation is what the drawing means, not what the exported program does.',
   'LD-X07': 'The simulator does not copy this bug of their generator, under either profile: what you see in simulation is what the drawing means, not what the exported program does.',
+  'LD-X08': 'Import the exported file to simulate the order it gets.',
 };
 const up = (s: string) => s.trim().toUpperCase();
 
@@ -215,6 +216,33 @@ function dropped(pou: Pou, views: readonly NetView[], out: ExportWarning[]): voi
         });
       }
     }
+  }
+}
+
+/**
+ * LD-X08: networks imported with Beremiz's interleaved order (Network.turns, networks drawn side
+ * by side) run that way under openplc; the export draws every network under the one before, so
+ * ComputeProgram's SortInstances runs the exported file network by network, row by row.
+ */
+function interleaved(pou: Pou, views: readonly NetView[], out: ExportWarning[]): void {
+  const turned = (i: number) => views[i]?.net.turns !== undefined;
+  for (let i = 0; i < views.length; ) {
+    if (!turned(i)) {
+      i++;
+      continue;
+    }
+    let j = i;
+    while (turned(j + 1)) j++;
+    const what =
+      i === j
+        ? `the coils of ${rangeText(i, j)} run in the order they were drawn in the imported file, not row by row`
+        : `${rangeText(i, j)} run their coils and output variables interleaved, in the order the imported file drew them side by side`;
+    out.push({
+      ...locate(pou, views[i]!),
+      rule: 'LD-X08',
+      message: `Under the openplc profile ${what}. The export draws every network below the one before it, so ${TOOLS} run the exported program network by network, row by row: a variable written in one of these networks and read in another may change one scan later or sooner. Keep the program in Rungsmith, or check the exported program's order by simulating the exported file.`,
+    });
+    i = j + 1;
   }
 }
 
@@ -705,6 +733,7 @@ export function exportBehaviour(project: Project): ExportWarning[] {
     dropped(pou, views, out);
     ordering(project, pou, views, library, out);
     generatorSlips(pou, views, library, out);
+    if (project.profile === 'openplc') interleaved(pou, views, out);
   }
   // Profile openplc: the simulator already runs the project as Beremiz and OpenPLC do (LD-SEMANTICS.md
   // section 6), so the warnings stay (the export is the same) but say the simulation shows it.

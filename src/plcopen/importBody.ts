@@ -1,6 +1,7 @@
 // An LD body → the networks of a POU: connected components ordered top to bottom (or, for a
 // profile other than openplc, by their smallest executionOrderId first), labels and comments
-// attached to the network below.
+// attached to the network below. Under openplc, networks whose coils Beremiz's generator runs in
+// another order than network by network (drawn side by side) record that order (generatorTurns).
 import { uniqueConnectorNames } from './connectorNames';
 import type { LdElement } from '../model/elements';
 import type { BlockLibrary } from '../model/library';
@@ -10,6 +11,8 @@ import { LAYOUT_STRATEGIES, prepareLayout } from './layout';
 import { addCuts, allNodeWires, CUT_ROUNDS, cutView, type CutPin, type CutView, type StackRoom } from './layoutCut';
 import { instantiate, LayoutCache, shapeKey } from './layoutCache';
 import { shapeOf, type LaidOut } from './layoutShapes';
+import { sortInstances } from './generatorOrder';
+import type { ElementId } from '../model/ids';
 import { buildLdGraph, LdGraphError } from './ldGraph';
 import type { Finding, GNode } from './ldNodes';
 import { splitSharedSources } from './ldNormalize';
@@ -43,6 +46,11 @@ export interface BodyTuning {
    * wire between elements ('all': the last layout tried, which must draw any graph exactly).
    */
   readonly cuts?: 'needed' | 'none' | 'all';
+  /**
+   * Profile openplc: record the generator's order of coils and output variables where it is not
+   * network by network, row by row (Network.turns; see generatorTurns).
+   */
+  readonly turns?: boolean;
 }
 
 const MIN_COLS = 3;
@@ -69,6 +77,22 @@ interface LaidNetwork {
   readonly elements: LdElement[];
   readonly vlinks: Network['vlinks'];
   readonly elementData?: PreservedNetwork['elementData'];
+  /** Profile openplc: the network's coils and output variables, where the file draws them (see generatorTurns). */
+  readonly anchors?: Anchor[];
+}
+
+/**
+ * A statement of Beremiz's generator: a coil, or a variable written beside a block output (an
+ * outVariable), where the file draws it; `key` is its Network.turns key, `row`/`col` its place on
+ * the grid (the engine's order without turns). A network lists its anchors in that order.
+ */
+interface Anchor {
+  readonly x: number;
+  readonly y: number;
+  readonly order: number;
+  readonly key: string;
+  readonly row: number;
+  readonly col: number;
 }
 
 const RANK = { network: 0, label: 1, comment: 2, vendor: 3 } as const;
@@ -106,19 +130,22 @@ export function importLdBody(
   const items: Item[] = [];
   let seq = 0;
   for (const positions of plan.batches)
-    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool, tuning.orderByIds !== false, tuning.cuts ?? 'needed'))
+    for (const it of readBatch(body.doc, plan, positions, cache, raw, warn, library, isBool, tuning.orderByIds !== false, tuning.cuts ?? 'needed', tuning.turns === true))
       items.push({ ...it, seq: seq++ });
   items.sort(compareItems);
   // A network with nothing but a label or a comment: as narrow as a network gets.
   const cols = MIN_COLS;
 
   const networks: Network[] = [];
+  /** Per network: its generator statements (profile openplc). */
+  const anchors: (readonly Anchor[])[] = [];
   let pendingLabel: string | undefined;
   let pendingComments: { text: string; title: string }[] = [];
   let pendingVendor: string[] = [];
   const flushEmpty = () => {
     if (pendingLabel === undefined) return;
     networks.push(newNetwork({ rows: 1, cols, label: pendingLabel, ...commentsOf(pendingComments) }));
+    anchors.push([]);
     pendingLabel = undefined;
     pendingComments = [];
   };
@@ -157,6 +184,7 @@ export function importLdBody(
         ...(keep.objects || keep.elementData ? { extensions: { plcopen: keep } } : {}),
       }),
     );
+    anchors.push(laid.anchors ?? []);
     pendingLabel = undefined;
     pendingComments = [];
     pendingVendor = [];
@@ -175,7 +203,7 @@ export function importLdBody(
           ? { extensions: { plcopen: { ...(last.extensions?.plcopen as object), objects: pendingVendor } } }
           : {}),
       });
-    } else
+    } else {
       networks.push(
         newNetwork({
           rows: 1,
@@ -184,10 +212,90 @@ export function importLdBody(
           ...(pendingVendor.length ? { extensions: { plcopen: keep } } : {}),
         }),
       );
+      anchors.push([]);
+    }
   }
   // The layout names its pairs C1, C2, … per network; PLCopen names are the body's.
   const named = [...uniqueConnectorNames(networks)];
-  return { networks: named, notes: pairNotes(named) };
+  const turned = tuning.turns ? generatorTurns(named, anchors) : { networks: named, notes: [] };
+  return { networks: turned.networks, notes: [...pairNotes(turned.networks), ...turned.notes] };
+}
+
+/**
+ * Profile openplc: Beremiz's generator writes one statement per coil and per output variable of
+ * the whole body (ComputeProgram), sorted by SortInstances from file order, across networks. The
+ * engine runs a network's statements by row and column, network after network; where that differs,
+ * the networks get turns (Network.turns, each statement's rank in the generator's order):
+ * - networks whose statements interleave (one's runs between two of another's, as when networks
+ *   are drawn side by side) form a group: every network between the group's first and last gets
+ *   turns, and the group runs its statements together in turn order;
+ * - a network alone whose own rows do not follow the drawing gets turns too.
+ * Everything else keeps network order (no turns: nothing to store).
+ */
+export function generatorTurns(
+  networks: readonly Network[],
+  anchors: readonly (readonly Anchor[])[],
+): { networks: Network[]; notes: string[] } {
+  // Usually the engine's order (network by network, each network's anchors by row and column, as
+  // anchorsOf lists them) is already sorted: nothing to record, and nothing more to compute.
+  let prev: Anchor | undefined;
+  let sorted = true;
+  const all: Anchor[] = [];
+  for (const list of anchors)
+    for (const a of list) {
+      all.push(a);
+      if (!sorted || !prev) {
+        prev = a;
+        continue;
+      }
+      const c = sortInstances(prev, a);
+      if (c > 0 || (c === 0 && prev.order > a.order)) sorted = false;
+      prev = a;
+    }
+  if (sorted) return { networks: [...networks], notes: [] };
+  // The generator sorts the instances as the file lists them (a stable sort, like Python's).
+  all.sort((p, q) => p.order - q.order);
+  all.sort(sortInstances);
+  const rank = new Map<Anchor, number>();
+  all.forEach((a, k) => rank.set(a, k));
+  // Each network's ranks in the engine's order without turns (row, then column).
+  const ranks = anchors.map((list) => list.map((a) => rank.get(a)!));
+  const n = networks.length;
+  const suffixMin: number[] = new Array<number>(n + 1).fill(Infinity);
+  for (let i = n - 1; i >= 0; i--) {
+    let m = suffixMin[i + 1]!;
+    for (const r of ranks[i]!) if (r < m) m = r;
+    suffixMin[i] = m;
+  }
+  const out = [...networks];
+  const notes: string[] = [];
+  const give = (i: number) => {
+    const turns: Record<string, number> = {};
+    for (const a of anchors[i]!) turns[a.key] = rank.get(a)!;
+    out[i] = { ...out[i]!, turns };
+  };
+  let start = 0;
+  let max = -Infinity;
+  for (let i = 0; i < n; i++) {
+    for (const r of ranks[i]!) max = Math.max(max, r);
+    // A cut after network i: everything up to it runs before everything after it.
+    if (max >= suffixMin[i + 1]! && i + 1 < n) continue;
+    const members: number[] = [];
+    for (let k = start; k <= i; k++) if (ranks[k]!.length) members.push(k);
+    if (members.length > 1) {
+      const first = members[0]!;
+      const last = members[members.length - 1]!;
+      for (let k = first; k <= last; k++) give(k);
+      notes.push(
+        `networks ${first + 1} to ${last + 1} are drawn so that Beremiz and OpenPLC run their coils and output variables interleaved, in the order of their drawn height across the networks (not network by network): the openplc profile runs them in that order`,
+      );
+    } else if (members.length === 1) {
+      const own = ranks[members[0]!]!;
+      if (own.some((r, k) => k > 0 && r < own[k - 1]!)) give(members[0]!);
+    }
+    start = i + 1;
+  }
+  return { networks: out, notes };
 }
 
 /**
@@ -229,6 +337,7 @@ function readBatch(
   isBool?: (name: string) => boolean,
   orderByIds = true,
   cutWires: NonNullable<BodyTuning['cuts']> = 'needed',
+  turns = false,
 ): BatchItem[] {
   const inBatch = new Set(positions);
   const keepRef = (ref: string) => {
@@ -349,12 +458,14 @@ function readBatch(
     findings.length = 0;
     for (const m of mismatches) findings.push(mismatchFinding(nodes, m));
     const data = elementData(nodes, g.nodes, laid);
+    const anchors = turns ? anchorsOf(nodes, g.nodes, laid, library) : undefined;
     return {
       rows: laid.rows,
       cols: laid.cols,
       elements: laid.elements,
       vlinks: laid.vlinks,
       ...(data ? { elementData: data } : {}),
+      ...(anchors?.length ? { anchors } : {}),
     };
   };
   for (const g of groups) {
@@ -399,6 +510,41 @@ function commentOf(o: RawObject): { text: string; title: string } {
   const add = o.hasAddData ? child(o.xml, 'addData') : undefined;
   const mine = add ? childrenNamed(add, 'data').find((d) => d.attrs.name === RS_NETWORK) : undefined;
   return { text: o.text, title: mine?.children[0]?.attrs.title ?? '' };
+}
+
+/**
+ * The generator's statements of one network: its coils and the variables written beside its block
+ * outputs (outVariables; one drawn as a MOVE), without executionOrderId (those run first anyway).
+ */
+function anchorsOf(nodes: readonly GNode[], members: readonly number[], laid: LaidOut, library: BlockLibrary): Anchor[] {
+  const out: Anchor[] = [];
+  // A network holds a few coils and boxes: found by a scan, no map per network (10,000 networks).
+  const placed: LdElement[] = [];
+  for (const el of laid.elements) if (el.kind === 'coil' || el.kind === 'box') placed.push(el);
+  const find = (id: ElementId | undefined) => {
+    if (id !== undefined) for (const el of placed) if (el.id === id) return el;
+    return undefined;
+  };
+  for (const i of members) {
+    const n = nodes[i]!;
+    if ((n.kind !== 'coil' && n.kind !== 'box') || n.obj.executionOrderId > 0) continue;
+    const el = find(laid.elementOf.get(i));
+    if (!el) continue;
+    const { obj } = n;
+    if (n.kind === 'coil') out.push({ x: obj.pos.x, y: obj.pos.y, order: obj.order, key: el.id, row: el.row, col: el.col });
+    if (n.kind !== 'box') continue;
+    const variable = obj.kind === 'outVariable' || obj.kind === 'inOutVariable';
+    if (!variable && !n.outputAt) continue;
+    const shape = shapeOf(n, library);
+    const pinAt = (pin: string, o: RawObject) => {
+      const off = shape.outputs.find((p) => p.pin === pin)?.off ?? 0;
+      out.push({ x: o.pos.x, y: o.pos.y, order: o.order, key: `${el.id}.${pin.toUpperCase()}`, row: el.row + off, col: el.col + shape.w });
+    };
+    if (variable) pinAt('OUT', obj);
+    for (const [pin, o] of Object.entries(n.outputAt ?? {})) pinAt(pin, o);
+  }
+  // In the engine's order without turns (generated.ts): row, then column.
+  return out.length > 1 ? out.sort((p, q) => p.row - q.row || p.col - q.col) : out;
 }
 
 function elementData(

@@ -144,7 +144,8 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
   });
   // Under openplc the engine runs the ids itself (Beremiz orders instances, not networks, by them):
   // networks follow the drawing. Elsewhere a network's smallest id places it (importBody.ts).
-  const bodyTuning: BodyTuning = { ...tuning, orderByIds: profile.profile !== 'openplc' };
+  // Under openplc the networks also keep Beremiz's order of coils where it is not theirs (Network.turns).
+  const bodyTuning: BodyTuning = { ...tuning, orderByIds: profile.profile !== 'openplc', turns: profile.profile === 'openplc' };
   const types = child(root, 'types');
   if (!types)
     throw new ImportFailure({ ...at(root), message: 'the <project> has no <types> element (no POUs)' });

@@ -5,6 +5,7 @@ import type { LdElement, VLink } from '../model/elements';
 import { newId, type ElementId } from '../model/ids';
 import type { GNode } from './ldNodes';
 import { KEY, type LaidOut, type Net, type Shape } from './layoutShapes';
+import { sortInstances } from './generatorOrder';
 
 type NetOf = (node: number, pin: string) => Net | undefined;
 type ChainTarget = { box: number; off: number } | null;
@@ -44,6 +45,8 @@ class RowPlacer {
   readonly chainOf = new Map<number, ChainTarget>();
   readonly placing = new Set<number>();
   readonly byPosition: (a: number, b: number) => number;
+  /** Beremiz's order of coils (SortInstances: by x when the tops are less than 10 apart, else by y), then file order. */
+  readonly drawnOrder: (a: number, b: number) => number;
   /** Set once every other node is placed: continuations left over are placed on their own. */
   leftovers = false;
 
@@ -59,6 +62,7 @@ class RowPlacer {
   ) {
     this.byPosition = (a, b) =>
       all[a]!.y - all[b]!.y || all[a]!.x - all[b]!.x || all[a]!.order - all[b]!.order;
+    this.drawnOrder = (a, b) => sortInstances(all[a]!, all[b]!) || all[a]!.order - all[b]!.order;
   }
 
   nextId(): ElementId {
@@ -257,15 +261,19 @@ class RowPlacer {
     for (const n of sortSmall(nodes, this.byPosition)) this.place(n);
   }
   /**
-   * Consumers of a net, except those waiting for a source still being placed (that source places
-   * them). While another consumer of the net is being placed (this net is one of its sources), none
-   * is placed: that consumer's rows come first (a TON drawn below a counter whose reset it feeds,
-   * also driving a coil: the coil placed first would take the counter's rows).
+   * Consumers of a net, top to bottom as drawn (parallel coils in the order Beremiz runs them),
+   * except those waiting for a source still being placed (that source places them). While another
+   * consumer of the net is being placed (this net is one of its sources), none is placed: that
+   * consumer's rows come first (a TON drawn below a counter whose reset it feeds, also driving a
+   * coil: the coil placed first would take the counter's rows).
    */
   consumersOf(net: Net): void {
     if (this.placing.size)
       for (const c of net.consumers) if (this.placing.has(c.node)) return;
-    for (const c of net.consumers) if (this.placing.size === 0 || !this.waiting(c.node)) this.place(c.node);
+    const nodes: number[] = new Array<number>(net.consumers.length);
+    for (let k = 0; k < nodes.length; k++) nodes[k] = net.consumers[k]!.node;
+    if (nodes.length > 1) sortSmall(nodes, this.drawnOrder);
+    for (const c of nodes) if (this.placing.size === 0 || !this.waiting(c)) this.place(c);
   }
   /** Whether a producer of one of the node's input nets is being placed. */
   waiting(i: number): boolean {

@@ -404,6 +404,7 @@ export function buildLdGraph(
       if (n.operandsOut[p] === undefined) {
         n.operandsOut[p] = o.text;
         if (o.executionOrderId > 0) (n.outputOrders ??= {})[p] = o.executionOrderId;
+        else (n.outputAt ??= {})[p] = o;
         continue;
       }
       if (library.signature(single.obj.text)) {

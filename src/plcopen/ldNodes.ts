@@ -42,6 +42,8 @@ export interface GNode {
   executionOrder?: number;
   /** executionOrderId (> 0) of the outVariable written beside each output pin, by model pin name. */
   outputOrders?: Record<string, number>;
+  /** The outVariable (without executionOrderId) written beside each output pin, by model pin name: where the file draws it. */
+  outputAt?: Record<string, RawObject>;
   feedsRightRail: boolean;
   /** Raw `<data>` elements of the object's addData kept for the round trip. */
   data?: string[];

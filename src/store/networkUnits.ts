@@ -158,7 +158,8 @@ export function preparePaste(project: Project, pou: Pou, clip: NetworkClip, mode
       return out;
     });
     const label = n.label ? (labels.get(upper(n.label)) ?? n.label) : undefined;
-    const { id: _id, label: _label, ...rest } = n;
+    // Nor the imported generator turns (Network.turns): its elements have new ids.
+    const { id: _id, label: _label, turns: _turns, ...rest } = n;
     return newNetwork({ ...rest, ...(label ? { label } : {}), elements, vlinks: [...n.vlinks] });
   });
   return { networks, variables, instances, labels };

@@ -483,9 +483,13 @@ describe('openplc: dispatch loops and straight-line functions agree, late blocks
   const main = pou('Main', 'PROGRAM', vars('Go BOOL %IX0.0', 'Lamp BOOL %QX0.0', 'B1 Blinker'), [
     ladder(['[Go] # # (Lamp)', '. # # .'], { boxes: [{ row: 0, col: 1, type: 'Blinker', instance: 'B1' }] }),
   ]);
+  // Networks drawn side by side (Network.turns): their statements run as units of the group's first network.
+  const sideBySide = importPlcopen(readFileSync(join(__dirname, '../fixtures/reference/c03-networks-side-by-side.xml'), 'utf8'));
+  if (!sideBySide.ok) throw new Error('c03 does not import');
   const programs = [
     ...EXAMPLES.map((e) => [e.id, e.build()] as const),
     ['user FB with a late TON', multiProject([main, blinker])] as const,
+    ['networks side by side, interleaved (c03)', sideBySide.project] as const,
   ];
   test.each(programs)('%s, scan by scan (values, outputs, power)', (_id, p) => {
     const { program, diagnostics } = compileProgram({ ...p, profile: 'openplc' });

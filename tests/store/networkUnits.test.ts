@@ -161,3 +161,16 @@ test('duplicate, delete, move up/down and move to a place act on sets of network
   s().setCollapsed('all', false);
   expect(s().project.pous[0]!.networks.some((n) => n.collapsed)).toBe(false);
 });
+
+test("a pasted copy of an imported network drops Beremiz's turns (its elements are new; it must not join the original's group)", () => {
+  const p = machine();
+  const motor = p.pous[0]!.networks[2]!;
+  const turned = { ...motor, turns: { [motor.elements[1]!.id]: 4 } };
+  const store = createDocumentStore({ ...p, pous: [{ ...p.pous[0]!, networks: [...p.pous[0]!.networks.slice(0, 2), turned] }, p.pous[1]!] });
+  const p0 = store.getState().project;
+  store.getState().pasteNetworks(p0.pous[0]!.id, 3, copyNetworks(p0.pous[0]!, [turned.id])!, 'new');
+  const nets = store.getState().project.pous[0]!.networks;
+  expect(nets).toHaveLength(4);
+  expect(nets[2]!.turns).toEqual(turned.turns);
+  expect(nets[3]!.turns).toBeUndefined();
+});

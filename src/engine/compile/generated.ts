@@ -4,7 +4,13 @@
 // re-tracing the coil's path from the left rail (ComputeExpression), so:
 // - every coil and every variable written beside a block output (an outVariable) takes its turn by
 //   position: network, then row, then column; the outVariable's statement `X := T1.Q` (or
-//   `X := ADD3_OUT` for a function) is written at its own turn, not when the block runs;
+//   `X := ADD3_OUT` for a function) is written at its own turn, not when the block runs. An
+//   imported network may carry Beremiz's own order (Network.turns: SortInstances over the whole
+//   body, where networks drawn side by side interleave): its statements take those turns, and
+//   consecutive networks with turns run theirs together as early segments of the group's first
+//   network (pou.ts);
+// - a generic function's output that turns out BOOL (AND's ANY_BIT OUT) wired into another
+//   block's input is power flow read from what the call wrote (`OR(_TMP_AND5_OUT, C)`);
 // - a statement first calls what its path needs, in the generator's order (GeneratePaths: from the
 //   coil back to the rail, a join's branches top first, an edge contact's R_TRIG/F_TRIG before its
 //   own upstream part, a block's inputs in pin order), then evaluates its expression: the plain
@@ -88,6 +94,8 @@ export function startGenerated(
   index: number,
   r: Reporter,
   g: NetworkGraph,
+  /** The network's statements interleave with those of neighbouring networks (Network.turns, pou.ts). */
+  grouped = false,
 ): PendingNetwork {
   const nets = new NetMap(g);
   const errorsBefore = r.errors;
@@ -547,12 +555,14 @@ export function startGenerated(
 
   // Coils and block outputs written to variables (outVariables), by position; before them, the
   // blocks and outVariables with an executionOrderId, in id order (ComputeProgram's orderedInstances).
-  type Turn = { row: number; col: number; run: () => void };
+  // A network imported with turns (Network.turns) takes its statements in that order instead.
+  type Turn = { row: number; col: number; key?: number; run: () => void };
   const turns: Turn[] = [];
   const first: (Turn & { id: number })[] = [];
+  const fileTurns = network.turns;
   g.nodes.forEach((node, ni) => {
     const el = node.el;
-    if (el.kind === 'coil') turns.push({ row: el.row, col: el.col, run: () => generateCoil(ni) });
+    if (el.kind === 'coil') turns.push({ row: el.row, col: el.col, key: fileTurns?.[el.id], run: () => generateCoil(ni) });
     if (el.kind !== 'box') return;
     const id = orderOf(el);
     if (id > 0 && node.layout) first.push({ id, row: el.row, col: el.col, run: () => asStatement(() => generateBlock(ni)) });
@@ -560,7 +570,8 @@ export function startGenerated(
       for (const pin of node.layout.outputs) {
         const operand = Object.entries(el.outputs).find(([k]) => k.toUpperCase() === pin.name.toUpperCase())?.[1];
         if (!operand?.trim()) continue;
-        const turn = { row: el.row + pin.rowOffset, col: el.col + node.layout.cols, run: () => generateOutVariable(ni, pin.name) };
+        const key = fileTurns?.[`${el.id}.${pin.name.toUpperCase()}`];
+        const turn = { row: el.row + pin.rowOffset, col: el.col + node.layout.cols, key, run: () => generateOutVariable(ni, pin.name) };
         const order = orderOf(el, pin.name);
         if (order > 0) first.push({ ...turn, id: order });
         else turns.push(turn);
@@ -575,9 +586,28 @@ export function startGenerated(
     early.push(sink);
     earlyOrder.push(t.id);
   }
-  sink = ops;
   turns.sort(byPosition);
-  for (const t of turns) t.run();
+  // Imported turns: an element without one keeps its place after the one before it (row, column).
+  const keys: number[] = [];
+  if (fileTurns) {
+    let prev = -1;
+    for (const t of turns) keys.push(t.key !== undefined ? (prev = t.key) : prev + 0.5);
+    const at = new Map(turns.map((t, k) => [t, keys[k]!] as const));
+    turns.sort((a, b) => at.get(a)! - at.get(b)!);
+    keys.sort((a, b) => a - b);
+  }
+  // A network whose statements interleave with its neighbours' (`grouped`): each statement is a
+  // segment of its own, run in turn order by the group's first network (pou.ts).
+  const turnSegments: Op[][] = [];
+  const turnKeys: number[] = [];
+  turns.forEach((t, k) => {
+    sink = grouped ? [] : ops;
+    t.run();
+    if (!grouped || !sink.length) return;
+    turnSegments.push(sink);
+    turnKeys.push(keys[k]!);
+  });
+  sink = ops;
 
   return {
     finish(): NetworkIR | undefined {
@@ -607,8 +637,9 @@ export function startGenerated(
         elementNets,
         vlinkNets: network.vlinks.map((_, i) => netOf(g.vlinkNet[i]!)),
         late,
-        early,
+        early: [...early, ...turnSegments],
         earlyOrder,
+        ...(grouped ? { earlyTurns: turnKeys } : {}),
       });
     },
   };

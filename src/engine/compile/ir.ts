@@ -142,6 +142,13 @@ export interface NetworkIR {
    */
   readonly early?: readonly (readonly Op[])[];
   readonly earlyOrder?: readonly number[];
+  /**
+   * openplc profile, a network whose statements interleave with its neighbours' (Network.turns):
+   * the early segments after the `earlyOrder.length` ordered ones are its coils' and output
+   * variables' statements, one each, with their turns here; the group's first network runs them
+   * (with its neighbours') in turn order, after the ordered ones when it is the body's first network.
+   */
+  readonly earlyTurns?: readonly number[];
   /** openplc profile: early segments [network (program index), segment] run at the start of this network, in order. */
   readonly runEarly?: readonly (readonly [number, number])[];
 }

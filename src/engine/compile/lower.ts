@@ -30,7 +30,7 @@ export function lowerNetwork(
  * (generated.ts), whose blocks no coil needs are lowered by `finish`, after every network of the
  * body has lowered its coils; `iec`: completely, here.
  */
-export function startNetwork(ctx: PouContext, network: Network, index: number, r: Reporter): PendingNetwork {
+export function startNetwork(ctx: PouContext, network: Network, index: number, r: Reporter, grouped = false): PendingNetwork {
   const g = buildGraph(network, ctx.symbols.library);
   const structureOk = checkStructure(network, g, r);
   const order = structureOk ? evaluationOrder(g) : undefined;
@@ -40,7 +40,7 @@ export function startNetwork(ctx: PouContext, network: Network, index: number, r
       'an element feeds its own input through a wire going back to the left; power must flow left to right',
       loopElement(g),
     );
-  if (order && ctx.profile === 'openplc') return startGenerated(ctx, network, index, r, g);
+  if (order && ctx.profile === 'openplc') return startGenerated(ctx, network, index, r, g, grouped);
   const ir = lowerInOrder(ctx, network, index, r, g, structureOk, order);
   return { finish: () => ir };
 }

@@ -94,7 +94,7 @@ export function networkIR(
   network: Network,
   index: number,
   nets: NetMap,
-  parts: Pick<NetworkIR, 'ops' | 'elementNets' | 'vlinkNets' | 'late' | 'early' | 'earlyOrder'>,
+  parts: Pick<NetworkIR, 'ops' | 'elementNets' | 'vlinkNets' | 'late' | 'early' | 'earlyOrder' | 'earlyTurns'>,
 ): NetworkIR {
   return {
     index: ctx.first + index,
@@ -107,5 +107,6 @@ export function networkIR(
     constants: [],
     ...(parts.late?.length ? { late: parts.late } : {}),
     ...(parts.early?.length ? { early: parts.early, earlyOrder: parts.earlyOrder ?? [] } : {}),
+    ...(parts.earlyTurns?.length ? { earlyTurns: parts.earlyTurns } : {}),
   };
 }

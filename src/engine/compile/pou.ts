@@ -132,7 +132,9 @@ export function lowerPouBody(
       };
       return { finish: () => ir };
     }
-    return startNetwork(ctx, net, i, r);
+    // openplc: networks imported with turns next to another such network run their statements together.
+    const grouped = profile === 'openplc' && !!net.turns && (!!pou.networks[i - 1]?.turns || !!pou.networks[i + 1]?.turns);
+    return startNetwork(ctx, net, i, r, grouped);
   });
   // Profile openplc: each network's blocks no coil needed are lowered after every network's coils,
   // and run at the end of the body's last network (generated.ts).
@@ -143,11 +145,34 @@ export function lowerPouBody(
   // Profile openplc: the instances with an executionOrderId run first, in id order over the whole
   // body (ties in network order), by the body's first network (generated.ts).
   const earlyOf = networks
-    .flatMap((ir) => (ir?.early ?? []).map((_, s) => ({ id: ir!.earlyOrder![s]!, at: [ir!.index, s] as const })))
+    .flatMap((ir) => (ir?.earlyOrder ?? []).map((id, s) => ({ id, at: [ir!.index, s] as const })))
     .sort((a, b) => a.id - b.id)
     .map((e) => e.at);
-  const head = networks[0];
-  if (earlyOf.length && head) networks[0] = { ...head, runEarly: earlyOf };
+  // Profile openplc: consecutive networks with imported turns (Network.turns) run the statements of
+  // their coils and output variables together, in turn order, from the group's first network.
+  const runs = new Map<number, (readonly [number, number])[]>();
+  if (earlyOf.length) runs.set(0, earlyOf);
+  const turned = (i: number) => profile === 'openplc' && !!pou.networks[i]?.turns;
+  for (let i = 0; i < networks.length; ) {
+    if (!turned(i) || !(turned(i - 1) || turned(i + 1))) {
+      i++;
+      continue;
+    }
+    const group: { key: number; at: readonly [number, number] }[] = [];
+    const start = i;
+    for (; i < networks.length && turned(i); i++) {
+      const ir = networks[i];
+      if (!ir?.earlyTurns) continue;
+      const ordered = ir.earlyOrder?.length ?? 0;
+      ir.earlyTurns.forEach((key, k) => group.push({ key, at: [ir.index, ordered + k] }));
+    }
+    group.sort((a, b) => a.key - b.key);
+    runs.set(start, [...(runs.get(start) ?? []), ...group.map((e) => e.at)]);
+  }
+  for (const [i, list] of runs) {
+    const ir = networks[i];
+    if (ir && list.length) networks[i] = { ...ir, runEarly: list };
+  }
 
   // LD-R12: a variable written by coils of different kinds.
   for (const [v, families] of ctx.coilWrites) {
