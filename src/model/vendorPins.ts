@@ -13,6 +13,15 @@ const ALIASES: Readonly<Record<string, Readonly<Record<string, string>>>> = {
 };
 
 /** The IEC input a CODESYS input name stands for on a standard block, or undefined. */
+/** Whether a block type has inputs named otherwise in CODESYS (SR, RS, the counters). */
+export const hasInputAliases = (blockType: string): boolean => Object.hasOwn(ALIASES, blockType);
+
+/** The CODESYS names of a block type's inputs and their IEC names (undefined: none differ). */
+export function inputAliases(blockType: string): Readonly<Record<string, string>> | undefined {
+  const key = blockType.trim().toUpperCase();
+  return Object.hasOwn(ALIASES, key) ? ALIASES[key] : undefined;
+}
+
 export function iecInputName(blockType: string, pin: string): string | undefined {
   return ALIASES[blockType.trim().toUpperCase()]?.[pin.trim().toUpperCase()];
 }

@@ -12,7 +12,7 @@
 import { blockSignature } from '../model/blocks';
 import { codesysUtilBlock, fitsPins, isCodesysUtilName } from '../model/codesysUtil';
 import type { Pou } from '../model/project';
-import { iecInputName } from '../model/vendorPins';
+import { hasInputAliases, iecInputName } from '../model/vendorPins';
 import { child, childrenNamed, type XmlElement } from './xml/parse';
 
 export const CODESYS_DATA = 'http://www.3s-software.com/plcopenxml/';
@@ -75,12 +75,27 @@ export function unqualifiedType(name: string): string {
 /** Where blocks sit: bodies (a CFC one in addData), SFC actions and transitions; never inside a block. */
 const HOLDERS = new Set(['body', 'LD', 'FBD', 'SFC', 'CFC', 'addData', 'data', 'actions', 'action', 'transitions', 'transition', 'inline']);
 
-function* blocksOf(el: XmlElement): Generator<XmlElement> {
+/** The blocks of a POU element, found once per import (three passes below read them). */
+const blocksCache = new WeakMap<XmlElement, XmlElement[]>();
+function blocksOf(el: XmlElement): XmlElement[] {
+  let found = blocksCache.get(el);
+  if (!found) {
+    found = [];
+    collectBlocks(el, found);
+    blocksCache.set(el, found);
+  }
+  return found;
+}
+function collectBlocks(el: XmlElement, into: XmlElement[]): void {
   for (const c of el.children) {
-    if (c.name === 'block') yield c;
-    else if (HOLDERS.has(c.name)) yield* blocksOf(c);
+    if (c.name === 'block') into.push(c);
+    else if (HOLDERS.has(c.name)) collectBlocks(c, into);
   }
 }
+const pinsOf = (b: XmlElement): string[] =>
+  ['inputVariables', 'inOutVariables', 'outputVariables'].flatMap((list) =>
+    childrenNamed(child(b, list) ?? b, 'variable').map((x) => x.attrs.formalParameter ?? ''),
+  );
 
 /**
  * The Util blocks (model/codesysUtil.ts) that these POUs call or declare instances of without the
@@ -92,23 +107,17 @@ export function utilBlocksUsed(
 ): { pou: Pou; firstUse: { pou: string; el: XmlElement } }[] {
   const declared = new Set(pous.map((p) => p.pou.name.toUpperCase()));
   const used = new Map<string, { pou: Pou; fits: boolean; firstUse: { pou: string; el: XmlElement } }>();
-  const note = (name: string, pins: string[], where: { pou: string; el: XmlElement }) => {
+  const note = (name: string, pins: () => string[], where: { pou: string; el: XmlElement }) => {
     const key = name.trim().toUpperCase();
-    if (declared.has(key) || blockSignature(key)) return;
     const lib = codesysUtilBlock(key);
-    if (!lib) return;
+    if (!lib || declared.has(key) || blockSignature(key)) return;
     const had = used.get(key);
-    used.set(key, { pou: lib, fits: (had?.fits ?? true) && fitsPins(lib, pins), firstUse: had?.firstUse ?? where });
+    used.set(key, { pou: lib, fits: (had?.fits ?? true) && fitsPins(lib, pins()), firstUse: had?.firstUse ?? where });
   };
   for (const { el, pou } of pous) {
-    for (const b of blocksOf(el)) {
-      const pins = ['inputVariables', 'inOutVariables', 'outputVariables'].flatMap((list) =>
-        childrenNamed(child(b, list) ?? b, 'variable').map((x) => x.attrs.formalParameter ?? ''),
-      );
-      note(b.attrs.typeName ?? '', pins.filter(Boolean), { pou: pou.name, el: b });
-    }
+    for (const b of blocksOf(el)) note(b.attrs.typeName ?? '', () => pinsOf(b).filter(Boolean), { pou: pou.name, el: b });
     // Instances declared (and called from ST, or not at all).
-    for (const v of pou.variables) note(v.type, [], { pou: pou.name, el });
+    for (const v of pou.variables) note(v.type, () => [], { pou: pou.name, el });
   }
   return [...used.values()].filter((u) => u.fits).map(({ pou, firstUse }) => ({ pou, firstUse }));
 }
@@ -126,12 +135,11 @@ export function utilNameClashes(
   for (const { el, pou } of pous)
     for (const b of blocksOf(el)) {
       const name = (b.attrs.typeName ?? '').trim();
+      if (!isCodesysUtilName(name)) continue;
       const sig = blockSignature(name);
-      if (!sig || !isCodesysUtilName(name)) continue;
+      if (!sig) continue;
       const known = new Set([...sig.inputs, ...sig.outputs].map((p) => p.name.toUpperCase()));
-      const pins = ['inputVariables', 'inOutVariables', 'outputVariables']
-        .flatMap((list) => childrenNamed(child(b, list) ?? b, 'variable').map((x) => x.attrs.formalParameter ?? ''))
-        .filter((p) => p && !['EN', 'ENO'].includes(p.toUpperCase()));
+      const pins = pinsOf(b).filter((p) => p && !['EN', 'ENO'].includes(p.toUpperCase()));
       const foreign = pins.filter((p) => !known.has(p.toUpperCase()));
       if (foreign.length) out.push({ name: sig.name, pins: foreign, pou: pou.name, el: b });
     }
@@ -144,6 +152,7 @@ export function standardPinAliases(pous: readonly { readonly el: XmlElement }[])
   for (const { el } of pous)
     for (const b of blocksOf(el)) {
       const type = (b.attrs.typeName ?? '').trim().toUpperCase();
+      if (!hasInputAliases(type)) continue;
       for (const v of childrenNamed(child(b, 'inputVariables') ?? b, 'variable')) {
         const pin = v.attrs.formalParameter ?? '';
         const iec = iecInputName(type, pin);

@@ -256,7 +256,9 @@ export function buildLdGraph(
     if (s.kind === 'rail') return true;
     const src = nodes[s.node]!;
     if (src.kind !== 'box') return true;
-    return library.signature(src.blockType ?? src.obj.text)?.outputs.find((p) => p.name === s.pin)?.type === 'BOOL';
+    return (
+      library.signature(src.blockType ?? src.obj.text)?.outputs.find((p) => p.name === s.pin)?.type === 'BOOL'
+    );
   };
   /** The model's name of a pin of a block object (see canonicalPin). */
   const boxPin = (o: RawObject, pin: string): string => canonicalPin(library.signature(o.text), pin);
@@ -325,7 +327,10 @@ export function buildLdGraph(
     if (n.kind === 'box')
       buildBox(n, o, sourcesOf, warn, library, (what, boolPin) => {
         const variable = typeof what === 'string' ? what : undefined;
-        if (!boolPin && (variable !== undefined ? !isBool?.(variable) : !(what as GSource[]).every(boolSource)))
+        if (
+          !boolPin &&
+          (variable !== undefined ? !isBool?.(variable) : !(what as GSource[]).every(boolSource))
+        )
           return undefined;
         const c = newNode(o, 'contact', n.order);
         c.contact = variable !== undefined ? 'NC' : 'NOT';
@@ -350,32 +355,40 @@ export function buildLdGraph(
   // connector's expression without brackets (`I3 AND I1 OR I2`), so the PLC runs other logic than
   // the drawing, which Rungsmith runs (a connector pair is a wire). Said at import; an export from
   // Rungsmith writes the wire directly (or LD-X06 names a pair it keeps).
-  for (const o of objects) {
-    if (o.kind !== 'contact' || o.inputs[0]?.connections.length !== 1) continue;
-    const cont = byId.get(o.inputs[0].connections[0]!.ref);
-    const conn = cont?.kind === 'continuation' ? connectors.get(cont.text.toUpperCase()) : undefined;
-    const feeds = conn?.inputs[0]?.connections.map((c) => byId.get(c.ref)) ?? [];
-    if (feeds.length < 2 || feeds.some((f) => !f || f.kind === 'leftPowerRail')) continue;
-    // Paths that end in the same element are factorized into one AND (`(A OR B) AND X`): no OR on top.
-    const start = (f: RawObject): string => {
-      let at = f;
-      for (let k = 0; k < 64 && at.kind === 'contact' && at.inputs[0]?.connections.length === 1; k++) {
-        const next = byId.get(at.inputs[0].connections[0]!.ref);
-        if (!next || next.kind === 'leftPowerRail') return at.localId;
-        at = next;
-      }
-      return `${at.localId}*`;
-    };
-    const starts = new Set(feeds.map((f) => start(f!)));
-    if (starts.size === 1 && ![...starts][0]!.endsWith('*') && feeds.every((f) => start(f!) !== f!.localId)) continue;
-    const railFed = (f: RawObject) =>
-      f.kind === 'contact' && f.attr('negated') !== 'true' && !f.attr('edge') && f.inputs[0]?.connections.length === 1 && byId.get(f.inputs[0].connections[0]!.ref)?.kind === 'leftPowerRail';
-    const generated = feeds.every((f) => railFed(f!)) ? ` (they write ${o.text} AND ${feeds.map((f) => f!.text).join(' OR ')})` : '';
-    warn({
-      message: `contact "${o.text}" follows continuation "${cont!.text}", whose connector gathers an OR: Beremiz and OpenPLC paste that OR without brackets after the contact${generated}, so AND binds before OR there; Rungsmith runs the drawing (the whole OR in series with "${o.text}"); an export from Rungsmith gives them the drawing (its review names any connector pair it keeps, LD-X06)`,
-      obj: o,
-    });
-  }
+  if (connectors.size)
+    for (const o of objects) {
+      if (o.kind !== 'contact' || o.inputs[0]?.connections.length !== 1) continue;
+      const cont = byId.get(o.inputs[0].connections[0]!.ref);
+      const conn = cont?.kind === 'continuation' ? connectors.get(cont.text.toUpperCase()) : undefined;
+      const feeds = conn?.inputs[0]?.connections.map((c) => byId.get(c.ref)) ?? [];
+      if (feeds.length < 2 || feeds.some((f) => !f || f.kind === 'leftPowerRail')) continue;
+      // Paths that end in the same element are factorized into one AND (`(A OR B) AND X`): no OR on top.
+      const start = (f: RawObject): string => {
+        let at = f;
+        for (let k = 0; k < 64 && at.kind === 'contact' && at.inputs[0]?.connections.length === 1; k++) {
+          const next = byId.get(at.inputs[0].connections[0]!.ref);
+          if (!next || next.kind === 'leftPowerRail') return at.localId;
+          at = next;
+        }
+        return `${at.localId}*`;
+      };
+      const starts = new Set(feeds.map((f) => start(f!)));
+      if (starts.size === 1 && ![...starts][0]!.endsWith('*') && feeds.every((f) => start(f!) !== f!.localId))
+        continue;
+      const railFed = (f: RawObject) =>
+        f.kind === 'contact' &&
+        f.attr('negated') !== 'true' &&
+        !f.attr('edge') &&
+        f.inputs[0]?.connections.length === 1 &&
+        byId.get(f.inputs[0].connections[0]!.ref)?.kind === 'leftPowerRail';
+      const generated = feeds.every((f) => railFed(f!))
+        ? ` (they write ${o.text} AND ${feeds.map((f) => f!.text).join(' OR ')})`
+        : '';
+      warn({
+        message: `contact "${o.text}" follows continuation "${cont!.text}", whose connector gathers an OR: Beremiz and OpenPLC paste that OR without brackets after the contact${generated}, so AND binds before OR there; Rungsmith runs the drawing (the whole OR in series with "${o.text}"); an export from Rungsmith gives them the drawing (its review names any connector pair it keeps, LD-X06)`,
+        obj: o,
+      });
+    }
 
   // Pins the file wires through one of its own connector pairs: drawn with that name where cut.
   if (connectors.size)

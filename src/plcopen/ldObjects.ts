@@ -1,6 +1,6 @@
 // Reading the objects of a PLCopen LD body: positions, pins and the connections recorded on the
 // consumer side. No interpretation yet (see ldGraph.ts).
-import { iecInputName } from '../model/vendorPins';
+import { inputAliases } from '../model/vendorPins';
 import type { Point } from './geometry';
 import { deepText, type XmlDoc, type XmlElement } from './xml/parse';
 
@@ -221,10 +221,12 @@ class Reader {
         this.blockPins(d.childById(el, n.outputVariables), undefined, outputs);
         text = d.attr(el, n.typeName) ?? '';
         // CODESYS's names of the IEC inputs (SR.SET1 is S1, CTU.RESET is R: model/vendorPins.ts).
-        for (let i = 0; i < inputs.length; i++) {
-          const iec = iecInputName(text, inputs[i]!.pin);
-          if (iec) inputs[i] = { ...inputs[i]!, pin: iec };
-        }
+        const aliases = inputAliases(text);
+        if (aliases)
+          for (let i = 0; i < inputs.length; i++) {
+            const iec = aliases[inputs[i]!.pin.trim().toUpperCase()];
+            if (iec) inputs[i] = { ...inputs[i]!, pin: iec };
+          }
         break;
       }
       default:
