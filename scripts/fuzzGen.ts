@@ -190,6 +190,8 @@ class Body {
 
 const BOOL_IN = ['I0', 'I1', 'I2', 'I3', 'I4', 'I5'];
 const INT_IN = ['W0', 'W1', 'W2'];
+/** At least 1 (lengths and positions of STRING functions: MATIEC's DELETE with P < 0 crashes, its MID with P = 0 reads the length byte). */
+const COUNT_IN = 'W3';
 const NSCANS = 24;
 
 const STD_FBS: Record<string, { ins: [string, Ty][]; outs: [string, Ty][] }> = {
@@ -291,6 +293,7 @@ export function generate(seed: number, index: number): FuzzCase {
   };
   BOOL_IN.forEach((v, i) => declare({ name: v, type: 'BOOL', address: `%IX0.${i}` }));
   INT_IN.forEach((v, i) => declare({ name: v, type: 'INT', address: `%IW${i}` }));
+  declare({ name: COUNT_IN, type: 'INT', address: '%IW3' });
   declare({ name: 'D0', type: 'DINT' });
   declare({ name: 'R0', type: 'REAL' });
   declare({ name: 'R1', type: 'REAL', init: '2.5' });
@@ -302,6 +305,7 @@ export function generate(seed: number, index: number): FuzzCase {
   const stimulated: { name: string; type: Ty }[] = [
     ...BOOL_IN.map((v) => ({ name: v, type: 'BOOL' as Ty })),
     ...INT_IN.map((v) => ({ name: v, type: 'INT' as Ty })),
+    { name: COUNT_IN, type: 'INT' },
     { name: 'D0', type: 'DINT' },
     { name: 'R0', type: 'REAL' },
     { name: 'B0', type: 'WORD' },
@@ -464,12 +468,13 @@ export function generate(seed: number, index: number): FuzzCase {
       let type = pick(Object.keys(FNS));
       let spec = pick(FNS[type]!);
       if (prev) {
-        const fits = Object.entries(FNS).flatMap(([n, ss]) => ss.filter((s) => s.ins.some(([, t]) => t === prev!.t)).map((s) => [n, s] as const));
+        const fits = Object.entries(FNS).flatMap(([n, ss]) => ss.filter((s) => s.ins.some(([pin, t]) => t === prev!.t && !['N', 'L', 'P'].includes(pin))).map((s) => [n, s] as const));
         if (fits.length === 0) break;
         [type, spec] = pick(fits);
       }
       features.push(type);
-      const en = chance(0.5) ? 'wired' : chance(0.5) ? 'open' : 'none';
+      // NOT with EN: Beremiz writes NOT(EN := ..., IN := ...), which iec2c cannot parse (NOT is a keyword)
+      const en = chance(0.5) && type !== 'NOT' ? 'wired' : chance(0.5) && type !== 'NOT' ? 'open' : 'none';
       if (en !== 'none') features.push(`en-${en}`);
       const ins: [string, Pt[] | null][] = [];
       let py = y + 30;
@@ -483,7 +488,9 @@ export function generate(seed: number, index: number): FuzzCase {
       let chained = false;
       const varIn = spec.ins.findIndex(([, t]) => t !== 'BOOL');
       spec.ins.forEach(([pin, t], i) => {
-        if (prev && !chained && t === prev.t) {
+        // a shift count or a string position never comes from another block: negative shifts are
+        // undefined in MATIEC's C (not emulated, docs/fuzz.md), negative positions crash it
+        if (prev && !chained && t === prev.t && !['N', 'L', 'P'].includes(pin)) {
           ins.push([pin, [prev.p]]);
           chained = true;
         } else if (t !== 'BOOL' && i === varIn && !prev) {
@@ -491,7 +498,7 @@ export function generate(seed: number, index: number): FuzzCase {
           const v = sources[t]();
           ins.push([pin, [body.inVar(x - 120, py, /^[A-Z]/.test(v) ? v : t === 'STRING' ? 'S0' : t === 'INT' ? 'W0' : t === 'DINT' ? 'D0' : t === 'REAL' ? 'R0' : 'B0')]]);
         } else if (pin === 'N') ins.push([pin, [body.inVar(x - 120, py, String(int(0, 5)))]]);
-        else if (pin === 'P' || pin === 'L') ins.push([pin, [body.inVar(x - 120, py, chance(0.5) ? String(int(1, 4)) : pick(['W1', 'W2']))]]);
+        else if (pin === 'P' || pin === 'L') ins.push([pin, [body.inVar(x - 120, py, chance(0.5) ? String(int(pin === 'P' ? 1 : 0, 4)) : COUNT_IN)]]);
         else ins.push([pin, valueSrc(t, py, x - 120)]);
         py += 40;
       });
@@ -704,7 +711,7 @@ export function generate(seed: number, index: number): FuzzCase {
         return state[j]!;
       }
       const g = ramps[j]!;
-      const v = ((k * g.step) % g.mod) + g.off;
+      const v = ((k * g.step) % g.mod) + (c.name === COUNT_IN ? 1 : g.off);
       return c.type === 'WORD' ? (v * 4099) & 0xffff : c.type === 'DINT' ? v * 1234 : v;
     });
     lines.push(`${k},${row.join(',')}`);
