@@ -41,7 +41,20 @@ function ours(c: FuzzCase): { code: number; out: string; err: string } {
   let code: number;
   try {
     code = main(
-      ['simulate', 'case.xml', '--inputs', 'stim.csv', '--scans', String(c.scans), '--cycle', '10ms', '--watch', c.watch.join(','), '--profile', 'openplc'],
+      [
+        'simulate',
+        'case.xml',
+        '--inputs',
+        'stim.csv',
+        '--scans',
+        String(c.scans),
+        '--cycle',
+        '10ms',
+        '--watch',
+        c.watch.join(','),
+        '--profile',
+        'openplc',
+      ],
       {
         out: (t) => (out += t),
         err: (t) => (err += t),
@@ -65,7 +78,8 @@ function firstDifference(expected: string, actual: string): string | undefined {
   const e = rows(expected);
   const a = rows(actual);
   const header = e[0] ?? [];
-  if ((a[0] ?? []).join(',') !== header.join(',')) return `header: reference ${header.join(',')}, Rungsmith ${(a[0] ?? []).join(',')}`;
+  if ((a[0] ?? []).join(',') !== header.join(','))
+    return `header: reference ${header.join(',')}, Rungsmith ${(a[0] ?? []).join(',')}`;
   for (let k = 1; k < e.length; k++)
     for (let j = 2; j < header.length; j++) {
       const x = e[k]![j]!;
@@ -86,7 +100,13 @@ async function main2(): Promise<void> {
   }
   const jobs = cases
     .map((c) => {
-      const line = [join(dir, `${c.name}.xml`), join(dir, `${c.name}.stim.csv`), c.watch.join(','), String(c.scans), join(dir, `${c.name}.expected.csv`)];
+      const line = [
+        join(dir, `${c.name}.xml`),
+        join(dir, `${c.name}.stim.csv`),
+        c.watch.join(','),
+        String(c.scans),
+        join(dir, `${c.name}.expected.csv`),
+      ];
       if (values.keep) line.push('--work', join(dir, `${c.name}.work`), '--keep');
       return line.join('\t');
     })
@@ -97,7 +117,9 @@ async function main2(): Promise<void> {
   const rc = new Map<string, number>();
   const refErr = new Map<string, string>();
   const oracleDone = new Promise<void>((done) => {
-    const p = spawn('python3', [join(oracle, 'bin', 'run_oracle.py'), '--batch', join(dir, 'JOBS.tsv')], { stdio: ['ignore', 'pipe', 'pipe'] });
+    const p = spawn('python3', [join(oracle, 'bin', 'run_oracle.py'), '--batch', join(dir, 'JOBS.tsv')], {
+      stdio: ['ignore', 'pipe', 'pipe'],
+    });
     let buf = '';
     p.stdout.on('data', (d: Buffer) => {
       buf += d.toString();
@@ -144,14 +166,17 @@ async function main2(): Promise<void> {
     const ref = rc.get(c.name) ?? -1;
     const me = mine.get(c.name)!;
     const weRefuse = me.code !== 0 || /^(error|rungsmith:)/m.test(me.err);
-    const errLine = me.err.split('\n').find((l) => /^(error|rungsmith:|crash)/.test(l)) ?? me.err.split('\n')[0];
+    const errLine =
+      me.err.split('\n').find((l) => /^(error|rungsmith:|crash)/.test(l)) ?? me.err.split('\n')[0];
     for (const f of c.features) featureAll.set(f, (featureAll.get(f) ?? 0) + 1);
     if (ref !== 0 && weRefuse) {
       tally.bothRefuse++;
       report.push(`both refuse ${c.name}: reference rc=${ref}; Rungsmith: ${errLine}`);
     } else if (ref !== 0) {
       tally.refRefuses++;
-      report.push(`reference refuses ${c.name} (rc=${ref}${refErr.get(c.name) ? `: ${refErr.get(c.name)}` : ''})`);
+      report.push(
+        `reference refuses ${c.name} (rc=${ref}${refErr.get(c.name) ? `: ${refErr.get(c.name)}` : ''})`,
+      );
     } else if (weRefuse) {
       tally.weRefuse++;
       report.push(`we refuse ${c.name}: ${errLine}`);

@@ -38,10 +38,16 @@ interface Pt {
 
 type Expr = { k: 'c'; v: string; kind: 'NO' | 'NC' | 'P' | 'N' } | { k: 's' | 'p'; a: Expr; b: Expr };
 
-const xmlEsc = (s: string) => s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
+const xmlEsc = (s: string) =>
+  s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
 
 const typeXml = (t: string) =>
-  t === 'STRING' ? '<string />' : /^[A-Z]+$/.test(t) && !['TON', 'TOF', 'TP', 'CTU', 'CTD', 'CTUD', 'R_TRIG', 'F_TRIG', 'SR', 'RS'].includes(t) ? `<${t} />` : `<derived name="${t}" />`;
+  t === 'STRING'
+    ? '<string />'
+    : /^[A-Z]+$/.test(t) &&
+        !['TON', 'TOF', 'TP', 'CTU', 'CTD', 'CTUD', 'R_TRIG', 'F_TRIG', 'SR', 'RS'].includes(t)
+      ? `<${t} />`
+      : `<derived name="${t}" />`;
 
 interface Decl {
   readonly name: string;
@@ -88,7 +94,10 @@ class Body {
     const h = Math.max(20, ...srcs.map((s) => s.y - y + 20));
     this.parts.push(
       `<rightPowerRail localId="${id}" height="${h}" width="3"><position x="${x}" y="${y - 10}" />${srcs
-        .map((s) => `<connectionPointIn><relPosition x="0" y="${s.y - y + 10}" />${this.conn({ x, y: s.y }, [s])}</connectionPointIn>`)
+        .map(
+          (s) =>
+            `<connectionPointIn><relPosition x="0" y="${s.y - y + 10}" />${this.conn({ x, y: s.y }, [s])}</connectionPointIn>`,
+        )
         .join('')}</rightPowerRail>`,
     );
   }
@@ -149,7 +158,14 @@ class Body {
   }
 
   /** A block with its pins 40 apart; `inputs` in pin order (null: the pin is drawn but unwired). */
-  block(x: number, y: number, typeName: string, instance: string | undefined, inputs: ReadonlyArray<readonly [string, readonly Pt[] | null]>, outputs: readonly string[]): Record<string, Pt> {
+  block(
+    x: number,
+    y: number,
+    typeName: string,
+    instance: string | undefined,
+    inputs: ReadonlyArray<readonly [string, readonly Pt[] | null]>,
+    outputs: readonly string[],
+  ): Record<string, Pt> {
     const id = this.id();
     const n = Math.max(inputs.length, outputs.length);
     const ins = inputs
@@ -159,7 +175,10 @@ class Body {
       )
       .join('');
     const outs = outputs
-      .map((name, i) => `<variable formalParameter="${name}"><connectionPointOut><relPosition x="100" y="${30 + 40 * i}" /></connectionPointOut></variable>`)
+      .map(
+        (name, i) =>
+          `<variable formalParameter="${name}"><connectionPointOut><relPosition x="100" y="${30 + 40 * i}" /></connectionPointOut></variable>`,
+      )
       .join('');
     this.parts.push(
       `<block localId="${id}" width="100" height="${40 * n + 20}" typeName="${typeName}"${instance ? ` instanceName="${instance}"` : ''}><position x="${x}" y="${y}" /><inputVariables>${ins}</inputVariables><inOutVariables /><outputVariables>${outs}</outputVariables></block>`,
@@ -195,19 +214,88 @@ const COUNT_IN = 'W3';
 const NSCANS = 24;
 
 const STD_FBS: Record<string, { ins: [string, Ty][]; outs: [string, Ty][] }> = {
-  TON: { ins: [['IN', 'BOOL'], ['PT', 'TIME']], outs: [['Q', 'BOOL'], ['ET', 'TIME']] },
-  TOF: { ins: [['IN', 'BOOL'], ['PT', 'TIME']], outs: [['Q', 'BOOL'], ['ET', 'TIME']] },
-  TP: { ins: [['IN', 'BOOL'], ['PT', 'TIME']], outs: [['Q', 'BOOL'], ['ET', 'TIME']] },
-  CTU: { ins: [['CU', 'BOOL'], ['R', 'BOOL'], ['PV', 'INT']], outs: [['Q', 'BOOL'], ['CV', 'INT']] },
-  CTD: { ins: [['CD', 'BOOL'], ['LD', 'BOOL'], ['PV', 'INT']], outs: [['Q', 'BOOL'], ['CV', 'INT']] },
+  TON: {
+    ins: [
+      ['IN', 'BOOL'],
+      ['PT', 'TIME'],
+    ],
+    outs: [
+      ['Q', 'BOOL'],
+      ['ET', 'TIME'],
+    ],
+  },
+  TOF: {
+    ins: [
+      ['IN', 'BOOL'],
+      ['PT', 'TIME'],
+    ],
+    outs: [
+      ['Q', 'BOOL'],
+      ['ET', 'TIME'],
+    ],
+  },
+  TP: {
+    ins: [
+      ['IN', 'BOOL'],
+      ['PT', 'TIME'],
+    ],
+    outs: [
+      ['Q', 'BOOL'],
+      ['ET', 'TIME'],
+    ],
+  },
+  CTU: {
+    ins: [
+      ['CU', 'BOOL'],
+      ['R', 'BOOL'],
+      ['PV', 'INT'],
+    ],
+    outs: [
+      ['Q', 'BOOL'],
+      ['CV', 'INT'],
+    ],
+  },
+  CTD: {
+    ins: [
+      ['CD', 'BOOL'],
+      ['LD', 'BOOL'],
+      ['PV', 'INT'],
+    ],
+    outs: [
+      ['Q', 'BOOL'],
+      ['CV', 'INT'],
+    ],
+  },
   CTUD: {
-    ins: [['CU', 'BOOL'], ['CD', 'BOOL'], ['R', 'BOOL'], ['LD', 'BOOL'], ['PV', 'INT']],
-    outs: [['QU', 'BOOL'], ['QD', 'BOOL'], ['CV', 'INT']],
+    ins: [
+      ['CU', 'BOOL'],
+      ['CD', 'BOOL'],
+      ['R', 'BOOL'],
+      ['LD', 'BOOL'],
+      ['PV', 'INT'],
+    ],
+    outs: [
+      ['QU', 'BOOL'],
+      ['QD', 'BOOL'],
+      ['CV', 'INT'],
+    ],
   },
   R_TRIG: { ins: [['CLK', 'BOOL']], outs: [['Q', 'BOOL']] },
   F_TRIG: { ins: [['CLK', 'BOOL']], outs: [['Q', 'BOOL']] },
-  SR: { ins: [['S1', 'BOOL'], ['R', 'BOOL']], outs: [['Q1', 'BOOL']] },
-  RS: { ins: [['S', 'BOOL'], ['R1', 'BOOL']], outs: [['Q1', 'BOOL']] },
+  SR: {
+    ins: [
+      ['S1', 'BOOL'],
+      ['R', 'BOOL'],
+    ],
+    outs: [['Q1', 'BOOL']],
+  },
+  RS: {
+    ins: [
+      ['S', 'BOOL'],
+      ['R1', 'BOOL'],
+    ],
+    outs: [['Q1', 'BOOL']],
+  },
 };
 
 interface FnSpec {
@@ -217,26 +305,100 @@ interface FnSpec {
 
 /** Generic and string functions, instantiated at one type. */
 function fnSpecs(): Record<string, FnSpec[]> {
-  const num = (t: Ty): FnSpec => ({ ins: [['IN1', t], ['IN2', t]], out: t });
-  const cmp = (t: Ty): FnSpec => ({ ins: [['IN1', t], ['IN2', t]], out: 'BOOL' });
+  const num = (t: Ty): FnSpec => ({
+    ins: [
+      ['IN1', t],
+      ['IN2', t],
+    ],
+    out: t,
+  });
+  const cmp = (t: Ty): FnSpec => ({
+    ins: [
+      ['IN1', t],
+      ['IN2', t],
+    ],
+    out: 'BOOL',
+  });
   const s: Ty = 'STRING';
   return {
-    ADD: [num('INT'), num('DINT'), num('REAL'), { ins: [['IN1', 'INT'], ['IN2', 'INT'], ['IN3', 'INT']], out: 'INT' }],
+    ADD: [
+      num('INT'),
+      num('DINT'),
+      num('REAL'),
+      {
+        ins: [
+          ['IN1', 'INT'],
+          ['IN2', 'INT'],
+          ['IN3', 'INT'],
+        ],
+        out: 'INT',
+      },
+    ],
     SUB: [num('INT'), num('DINT'), num('REAL')],
-    MUL: [num('INT'), num('DINT'), num('REAL'), { ins: [['IN1', 'DINT'], ['IN2', 'DINT'], ['IN3', 'DINT']], out: 'DINT' }],
+    MUL: [
+      num('INT'),
+      num('DINT'),
+      num('REAL'),
+      {
+        ins: [
+          ['IN1', 'DINT'],
+          ['IN2', 'DINT'],
+          ['IN3', 'DINT'],
+        ],
+        out: 'DINT',
+      },
+    ],
     DIV: [num('INT'), num('DINT'), num('REAL')],
     MOD: [num('INT'), num('DINT')],
     MAX: [num('INT'), num('REAL')],
     MIN: [num('INT'), num('DINT')],
     LIMIT: [
-      { ins: [['MN', 'INT'], ['IN', 'INT'], ['MX', 'INT']], out: 'INT' },
-      { ins: [['MN', 'REAL'], ['IN', 'REAL'], ['MX', 'REAL']], out: 'REAL' },
+      {
+        ins: [
+          ['MN', 'INT'],
+          ['IN', 'INT'],
+          ['MX', 'INT'],
+        ],
+        out: 'INT',
+      },
+      {
+        ins: [
+          ['MN', 'REAL'],
+          ['IN', 'REAL'],
+          ['MX', 'REAL'],
+        ],
+        out: 'REAL',
+      },
     ],
     SEL: [
-      { ins: [['G', 'BOOL'], ['IN0', 'INT'], ['IN1', 'INT']], out: 'INT' },
-      { ins: [['G', 'BOOL'], ['IN0', s], ['IN1', s]], out: s },
+      {
+        ins: [
+          ['G', 'BOOL'],
+          ['IN0', 'INT'],
+          ['IN1', 'INT'],
+        ],
+        out: 'INT',
+      },
+      {
+        ins: [
+          ['G', 'BOOL'],
+          ['IN0', s],
+          ['IN1', s],
+        ],
+        out: s,
+      },
     ],
-    MUX: [{ ins: [['K', 'INT'], ['IN0', 'INT'], ['IN1', 'INT'], ['IN2', 'INT']], out: 'INT' }],
+    MUX: [
+      {
+        ins: [
+          ['K', 'INT'],
+          ['IN0', 'INT'],
+          ['IN1', 'INT'],
+          ['IN2', 'INT'],
+        ],
+        out: 'INT',
+      },
+    ],
     GT: [cmp('INT'), cmp('REAL'), cmp(s)],
     GE: [cmp('INT'), cmp('DINT'), cmp(s)],
     EQ: [cmp('INT'), cmp(s)],
@@ -246,11 +408,46 @@ function fnSpecs(): Record<string, FnSpec[]> {
     AND: [num('WORD'), num('BOOL')],
     OR: [num('WORD'), num('BOOL')],
     XOR: [num('WORD'), num('BOOL')],
-    NOT: [{ ins: [['IN', 'WORD']], out: 'WORD' }, { ins: [['IN', 'BOOL']], out: 'BOOL' }],
-    SHL: [{ ins: [['IN', 'WORD'], ['N', 'INT']], out: 'WORD' }],
-    SHR: [{ ins: [['IN', 'WORD'], ['N', 'INT']], out: 'WORD' }],
-    ROL: [{ ins: [['IN', 'WORD'], ['N', 'INT']], out: 'WORD' }],
-    ROR: [{ ins: [['IN', 'WORD'], ['N', 'INT']], out: 'WORD' }],
+    NOT: [
+      { ins: [['IN', 'WORD']], out: 'WORD' },
+      { ins: [['IN', 'BOOL']], out: 'BOOL' },
+    ],
+    SHL: [
+      {
+        ins: [
+          ['IN', 'WORD'],
+          ['N', 'INT'],
+        ],
+        out: 'WORD',
+      },
+    ],
+    SHR: [
+      {
+        ins: [
+          ['IN', 'WORD'],
+          ['N', 'INT'],
+        ],
+        out: 'WORD',
+      },
+    ],
+    ROL: [
+      {
+        ins: [
+          ['IN', 'WORD'],
+          ['N', 'INT'],
+        ],
+        out: 'WORD',
+      },
+    ],
+    ROR: [
+      {
+        ins: [
+          ['IN', 'WORD'],
+          ['N', 'INT'],
+        ],
+        out: 'WORD',
+      },
+    ],
     INT_TO_REAL: [{ ins: [['IN', 'INT']], out: 'REAL' }],
     REAL_TO_INT: [{ ins: [['IN', 'REAL']], out: 'INT' }],
     INT_TO_DINT: [{ ins: [['IN', 'INT']], out: 'DINT' }],
@@ -263,14 +460,83 @@ function fnSpecs(): Record<string, FnSpec[]> {
     STRING_TO_INT: [{ ins: [['IN', s]], out: 'INT' }],
     REAL_TO_STRING: [{ ins: [['IN', 'REAL']], out: s }],
     LEN: [{ ins: [['IN', s]], out: 'INT' }],
-    LEFT: [{ ins: [['IN', s], ['L', 'INT']], out: s }],
-    RIGHT: [{ ins: [['IN', s], ['L', 'INT']], out: s }],
-    MID: [{ ins: [['IN', s], ['L', 'INT'], ['P', 'INT']], out: s }],
-    CONCAT: [{ ins: [['IN1', s], ['IN2', s]], out: s }],
-    INSERT: [{ ins: [['IN1', s], ['IN2', s], ['P', 'INT']], out: s }],
-    DELETE: [{ ins: [['IN', s], ['L', 'INT'], ['P', 'INT']], out: s }],
-    REPLACE: [{ ins: [['IN1', s], ['IN2', s], ['L', 'INT'], ['P', 'INT']], out: s }],
-    FIND: [{ ins: [['IN1', s], ['IN2', s]], out: 'INT' }],
+    LEFT: [
+      {
+        ins: [
+          ['IN', s],
+          ['L', 'INT'],
+        ],
+        out: s,
+      },
+    ],
+    RIGHT: [
+      {
+        ins: [
+          ['IN', s],
+          ['L', 'INT'],
+        ],
+        out: s,
+      },
+    ],
+    MID: [
+      {
+        ins: [
+          ['IN', s],
+          ['L', 'INT'],
+          ['P', 'INT'],
+        ],
+        out: s,
+      },
+    ],
+    CONCAT: [
+      {
+        ins: [
+          ['IN1', s],
+          ['IN2', s],
+        ],
+        out: s,
+      },
+    ],
+    INSERT: [
+      {
+        ins: [
+          ['IN1', s],
+          ['IN2', s],
+          ['P', 'INT'],
+        ],
+        out: s,
+      },
+    ],
+    DELETE: [
+      {
+        ins: [
+          ['IN', s],
+          ['L', 'INT'],
+          ['P', 'INT'],
+        ],
+        out: s,
+      },
+    ],
+    REPLACE: [
+      {
+        ins: [
+          ['IN1', s],
+          ['IN2', s],
+          ['L', 'INT'],
+          ['P', 'INT'],
+        ],
+        out: s,
+      },
+    ],
+    FIND: [
+      {
+        ins: [
+          ['IN1', s],
+          ['IN2', s],
+        ],
+        out: 'INT',
+      },
+    ],
   };
 }
 const FNS = fnSpecs();
@@ -326,10 +592,12 @@ export function generate(seed: number, index: number): FuzzCase {
   const sources: Record<Ty, () => string> = {
     BOOL: () => pick(boolVars()),
     INT: () => (chance(0.25) ? pick(['0', '1', '2', '3', '-1', '5', '7']) : pick(INT_IN)),
-    DINT: () => (chance(0.3) ? pick(['0', '3', '-2', '100000']) : pick(['D0', 'D0', 'W0'].filter((v) => v !== 'W0'))),
+    DINT: () =>
+      chance(0.3) ? pick(['0', '3', '-2', '100000']) : pick(['D0', 'D0', 'W0'].filter((v) => v !== 'W0')),
     REAL: () => (chance(0.3) ? pick(['0.5', '-1.25', '3.0', '0.0']) : pick(['R0', 'R1'])),
     WORD: () => (chance(0.3) ? pick(['16#0F0F', '16#8001', '16#0000']) : pick(['B0', 'B1'])),
-    STRING: () => (chance(0.35) ? pick(["'ab'", "''", "'xyz'", "'b'", "'abcabc'", "'5'"]) : pick(['S0', 'S1'])),
+    STRING: () =>
+      chance(0.35) ? pick(["'ab'", "''", "'xyz'", "'b'", "'abcabc'", "'5'"]) : pick(['S0', 'S1']),
     TIME: () => pick(['T#30ms', 'T#50ms', 'T#100ms', 'T#0ms']),
   };
 
@@ -349,7 +617,12 @@ export function generate(seed: number, index: number): FuzzCase {
     return { k: chance(0.55) ? 's' : 'p', a: randExpr(depth - 1), b: randExpr(depth - 1) };
   };
   /** Lays out an expression from `srcs` at column col, row y; returns outputs, width (columns), height (px). */
-  const lay = (e: Expr, srcs: readonly Pt[], col: number, ry: number): { outs: Pt[]; w: number; h: number } => {
+  const lay = (
+    e: Expr,
+    srcs: readonly Pt[],
+    col: number,
+    ry: number,
+  ): { outs: Pt[]; w: number; h: number } => {
     if (e.k === 'c') return { outs: [body.contact(srcs, 60 + col * 50, ry, e.v, e.kind)], w: 1, h: 40 };
     const a = lay(e.a, srcs, col, ry);
     if (e.k === 's') {
@@ -430,7 +703,11 @@ export function generate(seed: number, index: number): FuzzCase {
       spec.ins.forEach(([pin, t], i) => {
         if (i === 0 && prevOut) ins.push([pin, [prevOut]]);
         else if (t === 'BOOL' && i > 0 && chance(0.3)) ins.push([pin, null]);
-        else if (t === 'TIME' || t === 'INT') ins.push([pin, [body.inVar(x - 120, py, t === 'INT' ? pick(['3', '2', '5', 'W1']) : sources.TIME())]]);
+        else if (t === 'TIME' || t === 'INT')
+          ins.push([
+            pin,
+            [body.inVar(x - 120, py, t === 'INT' ? pick(['3', '2', '5', 'W1']) : sources.TIME())],
+          ]);
         else ins.push([pin, valueSrc(t, py, x - 120)]);
         py += 40;
       });
@@ -468,7 +745,13 @@ export function generate(seed: number, index: number): FuzzCase {
       let type = pick(Object.keys(FNS));
       let spec = pick(FNS[type]!);
       if (prev) {
-        const fits = Object.entries(FNS).flatMap(([n, ss]) => ss.filter((s) => s.ins.some(([pin, t]) => t === prev!.t && !['N', 'L', 'P'].includes(pin))).map((s) => [n, s] as const));
+        const fits = Object.entries(FNS)
+          .filter(([n]) => n !== 'NOT') // Beremiz writes a chained NOT as NOT(IN := ...), which iec2c cannot parse
+          .flatMap(([n, ss]) =>
+            ss
+              .filter((s) => s.ins.some(([pin, t]) => t === prev!.t && !['N', 'L', 'P'].includes(pin)))
+              .map((s) => [n, s] as const),
+          );
         if (fits.length === 0) break;
         [type, spec] = pick(fits);
       }
@@ -496,9 +779,32 @@ export function generate(seed: number, index: number): FuzzCase {
         } else if (t !== 'BOOL' && i === varIn && !prev) {
           // at least one variable input, so that literals alone never decide the type
           const v = sources[t]();
-          ins.push([pin, [body.inVar(x - 120, py, /^[A-Z]/.test(v) ? v : t === 'STRING' ? 'S0' : t === 'INT' ? 'W0' : t === 'DINT' ? 'D0' : t === 'REAL' ? 'R0' : 'B0')]]);
+          ins.push([
+            pin,
+            [
+              body.inVar(
+                x - 120,
+                py,
+                /^[A-Z]/.test(v)
+                  ? v
+                  : t === 'STRING'
+                    ? 'S0'
+                    : t === 'INT'
+                      ? 'W0'
+                      : t === 'DINT'
+                        ? 'D0'
+                        : t === 'REAL'
+                          ? 'R0'
+                          : 'B0',
+              ),
+            ],
+          ]);
         } else if (pin === 'N') ins.push([pin, [body.inVar(x - 120, py, String(int(0, 5)))]]);
-        else if (pin === 'P' || pin === 'L') ins.push([pin, [body.inVar(x - 120, py, chance(0.5) ? String(int(pin === 'P' ? 1 : 0, 4)) : COUNT_IN)]]);
+        else if (pin === 'P' || pin === 'L')
+          ins.push([
+            pin,
+            [body.inVar(x - 120, py, chance(0.5) ? String(int(pin === 'P' ? 1 : 0, 4)) : COUNT_IN)],
+          ]);
         else ins.push([pin, valueSrc(t, py, x - 120)]);
         py += 40;
       });
@@ -530,7 +836,14 @@ export function generate(seed: number, index: number): FuzzCase {
   const stExpr = (vars: string[]) => {
     const a = pick(vars);
     const b = pick(vars);
-    return pick([`${a} + ${b}`, `${a} * 2 - ${b}`, `${a} / 3 + ${b} MOD 4`, `MAX(${a}, ${b})`, `ABS(${a} - ${b})`, `LIMIT(-5, ${a}, 20) + 1`]);
+    return pick([
+      `${a} + ${b}`,
+      `${a} * 2 - ${b}`,
+      `${a} / 3 + ${b} MOD 4`,
+      `MAX(${a}, ${b})`,
+      `ABS(${a} - ${b})`,
+      `LIMIT(-5, ${a}, 20) + 1`,
+    ]);
   };
 
   const userFnNet = () => {
@@ -563,10 +876,12 @@ export function generate(seed: number, index: number): FuzzCase {
         const coil = fb.coil(c2 ? [c2] : [c1, c3!], 200, 20, fname, '');
         fb.rightRail(260, 20, [coil]);
         userPous.push(
-          `<pou name="${fname}" pouType="function"><interface><returnType><BOOL /></returnType><inputVars>${declXml({ name: 'X', type: 'BOOL' })}${declXml({
-            name: 'Y',
-            type: 'BOOL',
-          })}</inputVars></interface><body><LD>${fb.parts.join('\n')}</LD></body></pou>`,
+          `<pou name="${fname}" pouType="function"><interface><returnType><BOOL /></returnType><inputVars>${declXml({ name: 'X', type: 'BOOL' })}${declXml(
+            {
+              name: 'Y',
+              type: 'BOOL',
+            },
+          )}</inputVars></interface><body><LD>${fb.parts.join('\n')}</LD></body></pou>`,
         );
         ins.push(['X', railExpr(py, 1).outs]);
         py += 40;
@@ -578,10 +893,12 @@ export function generate(seed: number, index: number): FuzzCase {
           ? `${fname} := ${stExpr(['A', 'B'])};`
           : `IF A > B THEN\n  ${fname} := A - B;\nELSE\n  ${fname} := ${stExpr(['A', 'B'])};\nEND_IF;`;
         userPous.push(
-          `<pou name="${fname}" pouType="function"><interface><returnType><INT /></returnType><inputVars>${declXml({ name: 'A', type: 'INT' })}${declXml({
-            name: 'B',
-            type: 'INT',
-          })}</inputVars></interface><body><ST><xhtml:p><![CDATA[${st}]]></xhtml:p></ST></body></pou>`,
+          `<pou name="${fname}" pouType="function"><interface><returnType><INT /></returnType><inputVars>${declXml({ name: 'A', type: 'INT' })}${declXml(
+            {
+              name: 'B',
+              type: 'INT',
+            },
+          )}</inputVars></interface><body><ST><xhtml:p><![CDATA[${st}]]></xhtml:p></ST></body></pou>`,
         );
         ins.push(['A', [body.inVar(x - 120, py, pick(INT_IN))]]);
         py += 40;
@@ -589,7 +906,10 @@ export function generate(seed: number, index: number): FuzzCase {
         py += 40;
         outs = [['OUT', 'INT']];
       }
-      pts = body.block(x, y, fname, undefined, ins, [...(en !== 'none' ? ['ENO'] : []), ...outs.map(([o]) => o)]);
+      pts = body.block(x, y, fname, undefined, ins, [
+        ...(en !== 'none' ? ['ENO'] : []),
+        ...outs.map(([o]) => o),
+      ]);
     } else {
       const fbname = `UFb${fbCount++}`;
       const inst = `U${instCount++}`;
@@ -606,7 +926,18 @@ export function generate(seed: number, index: number): FuzzCase {
         const coil2 = fb.coil([c2], 200, 80, 'Q', 'R');
         const rail3 = fb.rail(20, 140);
         const iv = fb.inVar(60, 180, 'V');
-        const add = fb.block(160, 140, 'ADD', undefined, [['EN', [rail3]], ['IN1', [iv]], ['IN2', [fb.inVar(60, 220, 'C')]]], ['ENO', 'OUT']);
+        const add = fb.block(
+          160,
+          140,
+          'ADD',
+          undefined,
+          [
+            ['EN', [rail3]],
+            ['IN1', [iv]],
+            ['IN2', [fb.inVar(60, 220, 'C')]],
+          ],
+          ['ENO', 'OUT'],
+        );
         fb.outVar(add.OUT!, 300, 200, 'C');
         fb.rightRail(260, 20, [coil, coil2]);
         bodyXml = `<LD>${fb.parts.join('\n')}</LD>`;
@@ -619,13 +950,17 @@ export function generate(seed: number, index: number): FuzzCase {
         bodyXml = `<ST><xhtml:p><![CDATA[${st}]]></xhtml:p></ST>`;
       }
       userPous.push(
-        `<pou name="${fbname}" pouType="functionBlock"><interface><inputVars>${declXml({ name: 'GO', type: 'BOOL' })}${declXml({ name: 'STOP', type: 'BOOL' })}${declXml({
-          name: 'V',
-          type: 'INT',
-        })}</inputVars><outputVars>${declXml({ name: 'Q', type: 'BOOL' })}${declXml({ name: 'C', type: 'INT' })}</outputVars><localVars>${declXml({
-          name: 'prev',
-          type: 'BOOL',
-        })}${declXml({ name: 'tim', type: 'TON' })}</localVars></interface><body>${bodyXml}</body></pou>`,
+        `<pou name="${fbname}" pouType="functionBlock"><interface><inputVars>${declXml({ name: 'GO', type: 'BOOL' })}${declXml({ name: 'STOP', type: 'BOOL' })}${declXml(
+          {
+            name: 'V',
+            type: 'INT',
+          },
+        )}</inputVars><outputVars>${declXml({ name: 'Q', type: 'BOOL' })}${declXml({ name: 'C', type: 'INT' })}</outputVars><localVars>${declXml(
+          {
+            name: 'prev',
+            type: 'BOOL',
+          },
+        )}${declXml({ name: 'tim', type: 'TON' })}</localVars></interface><body>${bodyXml}</body></pou>`,
       );
       ins.push(['GO', railExpr(py, 1).outs]);
       py += 40;
@@ -673,19 +1008,33 @@ export function generate(seed: number, index: number): FuzzCase {
       const a = body.inVar(40, y + 30, pick(INT_IN));
       const b = body.inVar(40, y + 70, sources.INT());
       const op = pick(['ADD', 'SUB', 'MAX', 'MUL']);
-      const pts = body.block(160, y, op, undefined, [
-        ['IN1', [a]],
-        ['IN2', [b]],
-      ], ['OUT']);
+      const pts = body.block(
+        160,
+        y,
+        op,
+        undefined,
+        [
+          ['IN1', [a]],
+          ['IN2', [b]],
+        ],
+        ['OUT'],
+      );
       body.connector(pts.OUT!, 300, y + 30, cname);
       const cy = y + 120;
       const cont = body.continuation(40, cy, cname);
       const c2 = body.inVar(40, cy + 40, sources.INT());
       const op2 = pick(['ADD', 'MIN', 'SUB']);
-      const p2 = body.block(160, cy - 30, op2, undefined, [
-        ['IN1', [cont]],
-        ['IN2', [c2]],
-      ], ['OUT']);
+      const p2 = body.block(
+        160,
+        cy - 30,
+        op2,
+        undefined,
+        [
+          ['IN1', [cont]],
+          ['IN2', [c2]],
+        ],
+        ['OUT'],
+      );
       const oy = outY(p2.OUT!.y);
       body.outVar(p2.OUT!, 320, oy, newOut('INT'));
       y = oy + 60;

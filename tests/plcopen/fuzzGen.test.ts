@@ -14,7 +14,22 @@ describe('fuzz program generator', () => {
 
   it('covers the kinds of network it promises over a few dozen programs', () => {
     const seen = new Set(Array.from({ length: 60 }, (_, i) => generate(1, i).features).flat());
-    for (const f of ['logic', 'TON', 'CTU', 'fb-chain', 'fn-chain', 'en-open', 'en-wired', 'user-fn-st', 'user-fn-ld', 'user-fb-st', 'user-fb-ld', 'connector-bool', 'connector-int', 'CONCAT'])
+    for (const f of [
+      'logic',
+      'TON',
+      'CTU',
+      'fb-chain',
+      'fn-chain',
+      'en-open',
+      'en-wired',
+      'user-fn-st',
+      'user-fn-ld',
+      'user-fb-st',
+      'user-fb-ld',
+      'connector-bool',
+      'connector-int',
+      'CONCAT',
+    ])
       expect(seen, f).toContain(f);
   });
 
@@ -23,10 +38,26 @@ describe('fuzz program generator', () => {
       const c = generate(3, i);
       const files = { 'case.xml': c.xml, 'stim.csv': c.stim };
       const check = rungsmith(['check', 'case.xml'], files);
-      expect(check.out.split('\n').filter((l) => /error/.test(l)), c.name).toEqual([]);
+      expect(
+        check.out.split('\n').filter((l) => /error/.test(l)),
+        c.name,
+      ).toEqual([]);
       expect(check.code, c.name).toBe(0);
       const sim = rungsmith(
-        ['simulate', 'case.xml', '--inputs', 'stim.csv', '--scans', String(c.scans), '--cycle', '10ms', '--watch', c.watch.join(','), '--profile', 'openplc'],
+        [
+          'simulate',
+          'case.xml',
+          '--inputs',
+          'stim.csv',
+          '--scans',
+          String(c.scans),
+          '--cycle',
+          '10ms',
+          '--watch',
+          c.watch.join(','),
+          '--profile',
+          'openplc',
+        ],
         files,
       );
       expect(sim.code, `${c.name}: ${sim.err}`).toBe(0);

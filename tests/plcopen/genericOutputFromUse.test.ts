@@ -30,7 +30,14 @@ describe('a generic output typed by the input it is wired to', () => {
     {
       objects: [
         { id: 1, kind: 'block', type: 'LEN', inputs: { IN: ['=Text'] }, outputs: ['OUT'] },
-        { id: 2, kind: 'block', type: 'INT_TO_DINT', inputs: { IN: ['1.OUT'] }, outputs: ['OUT'], assign: { OUT: 'Size' } },
+        {
+          id: 2,
+          kind: 'block',
+          type: 'INT_TO_DINT',
+          inputs: { IN: ['1.OUT'] },
+          outputs: ['OUT'],
+          assign: { OUT: 'Size' },
+        },
       ],
     },
   ]);
@@ -38,7 +45,14 @@ describe('a generic output typed by the input it is wired to', () => {
     {
       objects: [
         { id: 1, kind: 'block', type: 'FIND', inputs: { IN1: ['=Text'], IN2: ["='ve'"] }, outputs: ['OUT'] },
-        { id: 2, kind: 'block', type: 'SUB', inputs: { IN1: ['1.OUT'], IN2: ['=W'] }, outputs: ['OUT'], assign: { OUT: 'Offset' } },
+        {
+          id: 2,
+          kind: 'block',
+          type: 'SUB',
+          inputs: { IN1: ['1.OUT'], IN2: ['=W'] },
+          outputs: ['OUT'],
+          assign: { OUT: 'Offset' },
+        },
       ],
     },
   ]);
@@ -65,8 +79,21 @@ describe('a generic output typed by the input it is wired to', () => {
     const xml = ldXml(vars, [
       {
         objects: [
-          { id: 1, kind: 'block', type: 'FIND', inputs: { IN1: ['=Text'], IN2: ["='ve'"] }, outputs: ['OUT'] },
-          { id: 2, kind: 'block', type: 'SUB', inputs: { IN1: ['1.OUT'], IN2: ['=Big'] }, outputs: ['OUT'], assign: { OUT: 'Offset' } },
+          {
+            id: 1,
+            kind: 'block',
+            type: 'FIND',
+            inputs: { IN1: ['=Text'], IN2: ["='ve'"] },
+            outputs: ['OUT'],
+          },
+          {
+            id: 2,
+            kind: 'block',
+            type: 'SUB',
+            inputs: { IN1: ['1.OUT'], IN2: ['=Big'] },
+            outputs: ['OUT'],
+            assign: { OUT: 'Offset' },
+          },
         ],
       },
     ]);

@@ -35,7 +35,11 @@ export function iecText(s: string): string {
   return s
     .slice(1, -1)
     .replace(/\$([0-9A-Fa-f]{2}|.)/g, (_, d: string) =>
-      d.length === 2 ? String.fromCharCode(parseInt(d, 16)) : ({ $: '$', "'": "'", N: '\n', L: '\n', R: '\r', T: '\t', P: '\f' } as Record<string, string>)[d.toUpperCase()] ?? d,
+      d.length === 2
+        ? String.fromCharCode(parseInt(d, 16))
+        : (({ $: '$', "'": "'", N: '\n', L: '\n', R: '\r', T: '\t', P: '\f' } as Record<string, string>)[
+            d.toUpperCase()
+          ] ?? d),
     );
 }
 
