@@ -49,20 +49,20 @@ const typeXml = (t: string) =>
       ? `<${t} />`
       : `<derived name="${t}" />`;
 
-interface Decl {
+export interface Decl {
   readonly name: string;
   readonly type: string;
   readonly address?: string;
   readonly init?: string;
 }
 
-const declXml = (d: Decl) =>
+export const declXml = (d: Decl) =>
   `<variable name="${d.name}"${d.address ? ` address="${d.address}"` : ''}><type>${typeXml(d.type)}</type>${
     d.init !== undefined ? `<initialValue><simpleValue value="${xmlEsc(d.init)}" /></initialValue>` : ''
   }</variable>`;
 
 /** One LD (or FBD-in-LD) body being written. */
-class Body {
+export class Body {
   readonly parts: string[] = [];
   private next = 1;
   /** Lowest y the next output element may take (outputs strictly downwards, > 10 apart). */
@@ -540,6 +540,27 @@ function fnSpecs(): Record<string, FnSpec[]> {
   };
 }
 const FNS = fnSpecs();
+
+/** A project with one program `main` (LD body) run by one 10 ms task, and the POUs it calls. */
+export function projectXml(name: string, userPous: readonly string[], decls: readonly Decl[], body: Body): string {
+  return `<?xml version='1.0' encoding='utf-8'?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="Rungsmith" productName="${name}" productVersion="1" creationDateTime="2026-11-28T00:00:00" />
+  <contentHeader name="${name}" modificationDateTime="2026-11-28T00:00:00">
+    <coordinateInfo><fbd><scaling x="10" y="10" /></fbd><ld><scaling x="10" y="10" /></ld><sfc><scaling x="10" y="10" /></sfc></coordinateInfo>
+  </contentHeader>
+  <types><dataTypes /><pous>
+${userPous.join('\n')}
+<pou name="main" pouType="program"><interface><localVars>${decls.map(declXml).join('')}</localVars></interface><body><LD>
+${body.parts.join('\n')}
+</LD></body></pou>
+  </pous></types>
+  <instances><configurations><configuration name="Config0"><resource name="Res0">
+    <task name="task0" priority="0" interval="T#10ms"><pouInstance name="instance0" typeName="main" /></task>
+  </resource></configuration></configurations></instances>
+</project>
+`;
+}
 
 export function generate(seed: number, index: number): FuzzCase {
   const r = rng((seed * 1000003 + index * 7919 + 17) >>> 0);
@@ -1066,22 +1087,6 @@ export function generate(seed: number, index: number): FuzzCase {
     lines.push(`${k},${row.join(',')}`);
   }
 
-  const xml = `<?xml version='1.0' encoding='utf-8'?>
-<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
-  <fileHeader companyName="Rungsmith" productName="${name}" productVersion="1" creationDateTime="2026-11-28T00:00:00" />
-  <contentHeader name="${name}" modificationDateTime="2026-11-28T00:00:00">
-    <coordinateInfo><fbd><scaling x="10" y="10" /></fbd><ld><scaling x="10" y="10" /></ld><sfc><scaling x="10" y="10" /></sfc></coordinateInfo>
-  </contentHeader>
-  <types><dataTypes /><pous>
-${userPous.join('\n')}
-<pou name="main" pouType="program"><interface><localVars>${decls.map(declXml).join('')}</localVars></interface><body><LD>
-${body.parts.join('\n')}
-</LD></body></pou>
-  </pous></types>
-  <instances><configurations><configuration name="Config0"><resource name="Res0">
-    <task name="task0" priority="0" interval="T#10ms"><pouInstance name="instance0" typeName="main" /></task>
-  </resource></configuration></configurations></instances>
-</project>
-`;
+  const xml = projectXml(name, userPous, decls, body);
   return { name, xml, stim: `${lines.join('\n')}\n`, watch, scans: NSCANS, features: [...new Set(features)] };
 }
