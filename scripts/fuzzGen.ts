@@ -542,7 +542,12 @@ function fnSpecs(): Record<string, FnSpec[]> {
 const FNS = fnSpecs();
 
 /** A project with one program `main` (LD body) run by one 10 ms task, and the POUs it calls. */
-export function projectXml(name: string, userPous: readonly string[], decls: readonly Decl[], body: Body): string {
+export function projectXml(
+  name: string,
+  userPous: readonly string[],
+  decls: readonly Decl[],
+  body: Body,
+): string {
   return `<?xml version='1.0' encoding='utf-8'?>
 <project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
   <fileHeader companyName="Rungsmith" productName="${name}" productVersion="1" creationDateTime="2026-11-28T00:00:00" />
