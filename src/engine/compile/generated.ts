@@ -350,6 +350,9 @@ export function startGenerated(
         if (nets.data.has(t.net) || nets.dataPending.has(t.net)) {
           for (const s of upstream(g, t.net).sources)
             if (isBlock(g.nodes[s.node]!) && !(ordered && !computed.has(s.node) && storedData(s, t.net, node.el))) generateBlock(s.node);
+          // A generic output that turned out BOOL (AND, OR, SEL of BOOL ...): read as a power line, from
+          // the local the block's call wrote (issue 23 class 1: it read a net nothing wrote, FALSE).
+          if (!nets.data.has(t.net) && !nets.dataPending.has(t.net)) value(t.net);
         } else value(t.net);
       }
       for (const t of node.outputs) {
