@@ -298,7 +298,7 @@ export function lowerBox(
   if (outPin.operand) {
     const res = ctx.symbols.resolve(outPin.operand, { literals: false, implicitLocations: true });
     if (res.ok) hint = res.access.type;
-  }
+  } else if (outPin.wired) hint = sinkTypeHint(ctx, nets, outPin.net);
   if (r.errors > before) return undefined;
   const resolved = resolveFunction(
     sig.name,
@@ -464,6 +464,33 @@ function calledAs(ctx: PouContext, node: GraphNode, nets: NetMap, name: string, 
   // The box's own pins (where its lines attach), typed as the declared type's; pins the box does not
   // use are left out of the call (an FB input left out keeps the instance's value).
   return { ...layout, signature: declared!, inputs, outputs };
+}
+
+/**
+ * The type a block's generic output takes from where its line goes, as MATIEC types a call from its
+ * use: LEN or FIND into INT_TO_DINT's IN gives INT, into SUB beside an INT variable gives INT. The
+ * first block input on the line that says a type: an elementary pin, or a poly pin whose block has
+ * another poly input given a typed variable.
+ */
+function sinkTypeHint(ctx: PouContext, nets: NetMap, net: number): ElementaryType | undefined {
+  for (const s of nets.g.nets[net]?.sinks ?? []) {
+    const node = nets.g.nodes[s.node];
+    if (!node || node.el.kind !== 'box' || !node.layout) continue;
+    const box = node.el;
+    const pin = node.layout.inputs.find((p) => p.name.toUpperCase() === s.pin.toUpperCase());
+    if (!pin) continue;
+    if (isElementaryType(pin.type)) return pin.type;
+    if (!pin.poly) continue;
+    for (const other of node.layout.inputs) {
+      if (!other.poly || other === pin) continue;
+      const key = Object.keys(box.inputs).find((k) => k.toUpperCase() === other.name.toUpperCase());
+      const operand = key === undefined ? '' : (box.inputs[key] ?? '').trim();
+      if (!operand) continue;
+      const res = ctx.symbols.resolve(operand, { literals: false, implicitLocations: true });
+      if (res.ok && isElementaryType(res.access.type) && admitsType(pin.type, res.access.type)) return res.access.type;
+    }
+  }
+  return undefined;
 }
 
 /**
