@@ -20,10 +20,11 @@ export function readText(io: CliIo, path: string): string {
 }
 
 /** Loads FILE by its extension (.xml = PLCopen, otherwise a project JSON); import warnings go to stderr. */
-export function loadInput(io: CliIo, path: string, quiet = false): Loaded {
+export function loadInput(io: CliIo, path: string, quiet = false, profile?: 'iec' | 'openplc'): Loaded {
   const text = readText(io, path);
   if (/\.xml$/i.test(path) || text.trimStart().startsWith('<')) {
-    const r = importPlcopen(text);
+    // A profile asked for on the command line is imported for (network order, Beremiz's order).
+    const r = importPlcopen(text, profile ? { profile } : undefined);
     if (!r.ok) throw new UsageError(r.errors.map((e) => `${path}: ${formatIssue(e)}`).join('\n'));
     if (!quiet) for (const w of r.report.warnings) io.err(`${path}: warning: ${formatIssue(w)}\n`);
     return { project: r.project, report: r.report };

@@ -84,7 +84,7 @@ function run(io: CliIo, argv: readonly string[]): number {
       const profile = v.profile as string | undefined;
       if (profile !== undefined && profile !== 'iec' && profile !== 'openplc')
         throw new UsageError(`--profile must be iec or openplc, not "${profile}"`);
-      const { project } = loadInput(io, file);
+      const { project } = loadInput(io, file, false, profile);
       const inputs = v.inputs as string | undefined;
       return simulate(io, project, {
         ...(v.pou !== undefined ? { pou: v.pou as string } : {}),

@@ -51,6 +51,11 @@ export interface BodyTuning {
    * network by network, row by row (Network.turns; see generatorTurns).
    */
   readonly turns?: boolean;
+  /**
+   * The profile to import for, whatever the file says (`rungsmith simulate --profile`): the import
+   * orders networks and records Beremiz's order for the profile that will run them.
+   */
+  readonly profile?: 'iec' | 'openplc';
 }
 
 const MIN_COLS = 3;

@@ -137,11 +137,13 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     for (const d of add ? childrenNamed(add, 'data') : [])
       if (d.attrs.name === PROFILE_DATA_NAME) recordedProfile ??= child(d, 'profile')?.attrs.name ?? '';
   }
-  const profile = chooseProfile({
-    namespace: ns,
-    ...(fileHeader?.attrs.companyName ? { companyName: fileHeader.attrs.companyName } : {}),
-    ...(recordedProfile !== undefined ? { recorded: recordedProfile } : {}),
-  });
+  const profile = tuning?.profile
+    ? { profile: tuning.profile, reason: `semantics profile ${tuning.profile}, as asked for (--profile)` }
+    : chooseProfile({
+        namespace: ns,
+        ...(fileHeader?.attrs.companyName ? { companyName: fileHeader.attrs.companyName } : {}),
+        ...(recordedProfile !== undefined ? { recorded: recordedProfile } : {}),
+      });
   // Under openplc the engine runs the ids itself (Beremiz orders instances, not networks, by them):
   // networks follow the drawing. Elsewhere a network's smallest id places it (importBody.ts).
   // Under openplc the networks also keep Beremiz's order of coils where it is not theirs (Network.turns).
