@@ -27,6 +27,7 @@ import { formatIssue } from '../src/cli/report';
 import { isElementaryType } from '../src/model/iecTypes';
 import type { Pou, Project, Variable } from '../src/model/project';
 import { importPlcopen } from '../src/plcopen/importPlcopen';
+import { writtenNames } from '../tests/plcopen/trace';
 
 const { values: opt, positionals } = parseArgs({
   allowPositionals: true,
@@ -107,23 +108,6 @@ const STD_FB_OUTPUTS: Record<string, string[]> = {
 };
 
 const INTEGER = /^(SINT|INT|DINT|LINT|USINT|UINT|UDINT|ULINT|BYTE|WORD|DWORD|LWORD)$/;
-
-/** Names the project writes: coils and block output operands of LD networks, `X :=` / `ST X` in text bodies. */
-function writtenNames(project: Project): (name: string) => boolean {
-  const written = new Set<string>();
-  for (const pou of project.pous)
-    for (const net of pou.networks)
-      for (const el of net.elements) {
-        if (el.kind === 'coil') written.add(el.variable.toUpperCase());
-        if (el.kind === 'box') for (const v of Object.values(el.outputs)) if (v) written.add(v.toUpperCase());
-      }
-  const texts = project.pous.map((p) => p.source ?? '').join('\n');
-  return (name) => {
-    if (written.has(name.toUpperCase())) return true;
-    const n = name.replace(/[.*+?^${}()|[\]\\]/g, '\\$&');
-    return new RegExp(`\\b${n}\\s*:=|\\b(?:ST|S|R)\\s+${n}\\b|<expression>\\s*${n}\\s*</expression>`, 'i').test(texts);
-  };
-}
 
 /** Input-like variables (as tests/plcopen/trace.ts inputLike), elementary non-STRING, non-TIME only. */
 function inputsOf(project: Project, pou: Pou, isWritten: (n: string) => boolean): Variable[] {

@@ -4,8 +4,11 @@ import { compileProgram, createPlc } from '../../src/engine/plc';
 import type { Value } from '../../src/model/iecTypes';
 import type { Pou, Project } from '../../src/model/project';
 
-/** Variables a program writes: coils and block output operands of LD networks, `X :=` / `ST X` in text bodies. */
-function writtenNames(project: Project): (name: string) => boolean {
+/**
+ * Variables a program writes: coils and block output operands of LD networks, `X :=` / `ST X` in
+ * text bodies, output variables of kept FBD bodies (`<expression>X</expression>`).
+ */
+export function writtenNames(project: Project): (name: string) => boolean {
   const written = new Set<string>();
   for (const pou of project.pous)
     for (const net of pou.networks)
@@ -17,7 +20,7 @@ function writtenNames(project: Project): (name: string) => boolean {
   return (name) => {
     if (written.has(name.toUpperCase())) return true;
     const n = name.replace(/[.*+?^${}()|[\]\\]/g, '\\$&');
-    return new RegExp(`\\b${n}\\s*:=|\\b(?:ST|S|R)\\s+${n}\\b`, 'i').test(texts);
+    return new RegExp(`\\b${n}\\s*:=|\\b(?:ST|S|R)\\s+${n}\\b|<expression>\\s*${n}\\s*</expression>`, 'i').test(texts);
   };
 }
 

@@ -108,6 +108,18 @@ export function reportFeedback(r: Reporter, profile: Profile, producer: GraphNod
 }
 
 /**
+ * A data line read before the function feeding it runs: a slot the function's call writes when it
+ * runs (boxPins.ts writes a held slot), which the readers read first.
+ */
+export function holdData(ctx: PouContext, nets: NetMap, net: number, type: ElementaryType): void {
+  const store = storeOf(type);
+  const data = { store, slot: ctx.symbols.counts[store]++ };
+  ctx.dataSlots.push({ ...data, type });
+  nets.heldData.set(net, data);
+  nets.data.set(net, { from: 'data', ...data, type });
+}
+
+/**
  * A data line (INT, TIME, ...) read back through a loop before its block ran: the FB instance's
  * output, or a slot the function's call writes (boxPins.ts writes a held slot). False, with an
  * error, when the type of a generic output cannot be known before the function runs.
@@ -121,11 +133,7 @@ export function storedDataLine(ctx: PouContext, nets: NetMap, producer: GraphNod
   }
   const type = outputType(ctx, nets.g, producer, pin);
   if (type && type !== 'BOOL') {
-    const store = storeOf(type);
-    const data = { store, slot: ctx.symbols.counts[store]++ };
-    ctx.dataSlots.push({ ...data, type });
-    nets.heldData.set(net, data);
-    nets.data.set(net, { from: 'data', ...data, type });
+    holdData(ctx, nets, net, type);
     return true;
   }
   r.error(

@@ -60,7 +60,7 @@ import type { NetworkIR, Op, OutIR, Source } from './ir';
 import { coilOperand, contactOp, contactOperand, edgeOf, jumpTarget } from './operands';
 import { NetMap, networkIR, type PendingNetwork } from './netMap';
 import { describeElement, type Reporter } from './report';
-import { outputType, rebindInputs, reportFeedback, storedDataLine } from './feedback';
+import { holdData, outputType, rebindInputs, reportFeedback, storedDataLine } from './feedback';
 import { storeOf, type Access } from './symbols';
 
 type Pair = readonly [number, number];
@@ -458,11 +458,7 @@ export function startGenerated(
     }
     const type = node.layout?.outputs.find((p) => p.name === s.pin)?.type;
     if (type !== undefined && isElementaryType(type) && type !== 'BOOL') {
-      const store = storeOf(type);
-      const data = { store, slot: ctx.symbols.counts[store]++ };
-      ctx.dataSlots.push({ ...data, type });
-      nets.heldData.set(net, data);
-      nets.data.set(net, { from: 'data', ...data, type });
+      holdData(ctx, nets, net, type);
       return true;
     }
     r.warning(
