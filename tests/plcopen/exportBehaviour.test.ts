@@ -211,7 +211,7 @@ describe('LD-X05 contacts read again for each coil', () => {
 });
 
 // Bugs of Beremiz's generator (issue 23, class 14), checked against the MATIEC reference on the
-// exported XML (../shared/tools/oracle): the simulator reads the drawing, the export warns.
+// exported XML (the MATIEC oracle, docs/CORPUS.md): the simulator reads the drawing, the export warns.
 describe('LD-X06 a connector OR pasted without brackets', () => {
   const v = vars('I1 BOOL %IX0.1', 'I2 BOOL %IX0.2', 'I3 BOOL %IX0.3', 'Q0 BOOL %QX0.0');
   const drawn = ladder(['+ [I1] + >CX>|', '+ [I2] +', '|>CX> [I3] (Q0)']);

@@ -1,4 +1,4 @@
-// Files the MATIEC reference itself refuses (../shared/tools/oracle: Beremiz's generator or iec2c
+// Files the MATIEC reference itself refuses (the oracle of docs/CORPUS.md: Beremiz's generator or iec2c
 // stops): Rungsmith refuses them too with an error naming the same fault, or runs them with what it
 // cannot know kept external and named (issue 23 class 10). Each case below quotes what the reference
 // printed for the file in tests/fixtures/reference-refused/.

@@ -1,6 +1,6 @@
 // Reference traces: every case in tests/fixtures/reference is a small PLCopen file of our own
 // (CASE.xml), an optional stimulus (CASE.stim.csv, `scan,<inputs>`, sample and hold) and the trace
-// the MATIEC reference (../shared/tools/oracle: Beremiz's generator + iec2c + a scan driver, 10 ms
+// the MATIEC reference (the oracle of docs/CORPUS.md: Beremiz's generator + iec2c + a scan driver, 10 ms
 // cycle) gives for it (CASE.expected.csv, `scan,time_ms,<watched>`). Rungsmith runs each file as
 // `rungsmith simulate CASE.xml --profile openplc --cycle 10ms` does and must give the same values
 // scan by scan. A case whose first line of CASE.expected.csv is preceded by `# profile: iec`
