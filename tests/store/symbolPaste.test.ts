@@ -83,7 +83,7 @@ test('the preview: added, renamed on a clash, refused with every reason; nothing
       'Level\tFLOAT\t\t\t', // unknown type
       'Lamp\tBOOL\t%IX0.0\t\t', // address used by Start
       'Word1\tINT\t%QX0.5\t\t', // address cannot hold INT
-      'Limit\tINT\t\tabc\t', // bad initial value
+      'MaxFill\tINT\t\tabc\t', // bad initial value
       'Motor\tBOOL\t\t\ttwice', // pasted twice: renamed
       'Valve\tBOOL\t%Q0.0\t\t', // same address as the first row
     ].join('\n'),
@@ -96,7 +96,7 @@ test('the preview: added, renamed on a clash, refused with every reason; nothing
     ['Level', 'refuse', 'Level'],
     ['Lamp', 'refuse', 'Lamp'],
     ['Word1', 'refuse', 'Word1'],
-    ['Limit', 'refuse', 'Limit'],
+    ['MaxFill', 'refuse', 'MaxFill'],
     ['Motor', 'rename', 'Motor_2'],
     ['Valve', 'refuse', 'Valve'],
   ]);
