@@ -1,5 +1,5 @@
 // One row of the variable table: every field edits the document as one undoable step on commit.
-import { useState } from 'react';
+import { useRef, useState, type KeyboardEvent } from 'react';
 import { FB_SIGNATURES } from '../../model/blocks';
 import { ELEMENTARY_TYPES, parseLocation } from '../../model/iecTypes';
 import type { BlockLibrary } from '../../model/library';
@@ -7,6 +7,7 @@ import type { DataType, GlobalScope, Variable, VarClass } from '../../model/proj
 import { TypeChoices } from '../dataTypes/TypeField';
 import { CommitInput } from './CommitInput';
 import { canonicalLocation, type VariableField } from './validation';
+import { classForTyped } from './tableKeys';
 
 export const CLASS_LABELS: Record<VarClass, string> = {
   input: 'VAR_INPUT',
@@ -98,6 +99,26 @@ export function VariableRow({
   // "Other type...": the type is typed instead of picked: ARRAY[1..10] OF INT, STRING[20], or an
   // anonymous STRUCT X : INT; END_STRUCT, enumeration (Idle, Run) or subrange INT (0..100).
   const [typing, setTyping] = useState(false);
+  // The class is typed: letters pick the class they begin (`in` VAR_INPUT, `o` VAR_OUTPUT, `in_`
+  // VAR_IN_OUT, `t` VAR_TEMP), arrows step through the classes; a pause of a second starts anew.
+  const typed = useRef({ text: '', at: 0 });
+  const classKeys = (e: KeyboardEvent<HTMLSelectElement>) => {
+    if (e.ctrlKey || e.altKey || e.metaKey) return;
+    if (e.key === 'ArrowDown' || e.key === 'ArrowUp') {
+      e.preventDefault();
+      const i = CLASS_ORDER.indexOf(v.varClass) + (e.key === 'ArrowDown' ? 1 : -1);
+      const next = CLASS_ORDER[Math.max(0, Math.min(CLASS_ORDER.length - 1, i))];
+      if (next && next !== v.varClass) onChange({ varClass: next });
+      return;
+    }
+    if (e.key.length !== 1 || !/[A-Za-z_]/.test(e.key)) return;
+    e.preventDefault();
+    const now = e.timeStamp;
+    const text = (now - typed.current.at < 1000 ? typed.current.text : '') + e.key;
+    typed.current = { text, at: now };
+    const c = classForTyped(text);
+    if (c && c !== v.varClass) onChange({ varClass: c });
+  };
   const invalid = (field: VariableField) =>
     issues[field] ? { 'aria-invalid': true, title: issues[field] } : {};
   const messages = (Object.keys(issues) as VariableField[]).map((f) => `${FIELD_WORDS[f]}: ${issues[f]}`);
@@ -113,6 +134,8 @@ export function VariableRow({
               aria-label="Class"
               className="rs-cell-input"
               value={v.varClass}
+              title="Type the class: in (VAR_INPUT), o (VAR_OUTPUT), in_ (VAR_IN_OUT), v (VAR), e (VAR_EXTERNAL), t (VAR_TEMP); or use the arrows"
+              onKeyDown={classKeys}
               onChange={(e) => onChange({ varClass: e.target.value as VarClass })}
             >
               {CLASS_ORDER.map((c) => (

@@ -13,6 +13,9 @@ import { variable } from '../../model/factory';
 import { blockLibrary } from '../../model/library';
 import type { Variable } from '../../model/project';
 import { useRowWindow } from './rowWindow';
+import { SymbolPasteDialog } from './SymbolPasteDialog';
+import { isTablePaste, isTextField, lastRowEnter } from './tableKeys';
+import { scopeVariables } from '../../store/symbolPaste';
 import { CLASS_ORDER, VariableRow } from './VariableRow';
 import { variableFocus } from './variableFocus';
 import { undeclaredVariables } from './undeclared';
@@ -39,6 +42,8 @@ export function VariablesPanel() {
   const [filter, setFilter] = useState('');
   const [focusName, setFocusName] = useState<string | undefined>(undefined);
   const [refusal, setRefusal] = useState('');
+  /** The symbol table paste preview is open with this text. */
+  const [pasting, setPasting] = useState<string | undefined>(undefined);
 
   const scope: VariableScope | undefined = showGlobals ? 'globals' : pou?.id;
   const vars = useMemo(() => (showGlobals ? globals : (pou?.variables ?? [])), [showGlobals, globals, pou]);
@@ -133,7 +138,8 @@ export function VariablesPanel() {
     return <section className="rs-variables" aria-label="Variables" data-testid="variables-panel" />;
 
   const add = () => {
-    const name = freshName(vars);
+    // The list as it is now: Enter on the last row commits its field first, then adds.
+    const name = freshName(scopeVariables(store.getState().project, scope));
     if (store.getState().addVariable(variable(name, 'BOOL'), scope)) {
       setFocusName(name);
       setFilter('');
@@ -160,7 +166,25 @@ export function VariablesPanel() {
   };
 
   return (
-    <section ref={panel} className="rs-variables" aria-label="Variables" data-testid="variables-panel">
+    <section
+      ref={panel}
+      className="rs-variables"
+      aria-label="Variables"
+      data-testid="variables-panel"
+      onKeyDown={(e) => {
+        // Ctrl+V outside a text field is a table paste here, not a network paste on the canvas.
+        if (pasting !== undefined) return;
+        if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === 'v' && !isTextField(e.target)) e.stopPropagation();
+        if (lastRowEnter(e, shown[shown.length - 1]?.v.name)) add();
+      }}
+      onPaste={(e) => {
+        const text = e.clipboardData.getData('text/plain');
+        if (pasting !== undefined || !isTablePaste(e.target, text)) return;
+        e.preventDefault();
+        e.stopPropagation();
+        setPasting(text);
+      }}
+    >
       <div className="rs-var-toolbar">
         <div role="radiogroup" aria-label="Which variables" className="rs-segmented">
           <label>
@@ -192,6 +216,15 @@ export function VariablesPanel() {
         />
         <button type="button" className="rs-button" onClick={add} data-testid="add-variable">
           Add variable
+        </button>
+        <button
+          type="button"
+          className="rs-button"
+          title="Paste rows copied from a spreadsheet or CSV (name, type, address, initial value, comment), with a preview first; Ctrl+V in the table does the same"
+          onClick={() => setPasting('')}
+          data-testid="paste-symbols"
+        >
+          Paste table…
         </button>
         <button
           type="button"
@@ -291,6 +324,14 @@ export function VariablesPanel() {
           </p>
         )}
       </div>
+      {pasting !== undefined && (
+        <SymbolPasteDialog
+          text={pasting}
+          scope={scope}
+          target={showGlobals ? 'the global variables' : (pou?.name ?? 'the POU')}
+          onClose={() => setPasting(undefined)}
+        />
+      )}
       <p className="rs-var-summary" aria-live="polite">
         {vars.length} variable{vars.length === 1 ? '' : 's'}
         {rowsWithIssues > 0 ? ` · ${rowsWithIssues} with problems` : ''}
