@@ -56,7 +56,13 @@ async function pick(label: string) {
 test('inside a FUNCTION_BLOCK: a contact offers VAR_INPUT first, a coil VAR_OUTPUT first, with VAR_IN_OUT and VAR, and no address', async () => {
   await addPou('add-fb', 'Valve');
   const contact = await offersFor('c', 'OpenCmd');
-  expect(contact).toEqual(['BOOL input (VAR_INPUT)', 'BOOL in-out (VAR_IN_OUT)', 'BOOL output (VAR_OUTPUT)', 'BOOL local (VAR)']);
+  expect(contact).toEqual([
+    'BOOL input (VAR_INPUT)',
+    'BOOL in-out (VAR_IN_OUT)',
+    'BOOL output (VAR_OUTPUT)',
+    'BOOL local (VAR)',
+    'BOOL global (VAR_GLOBAL)',
+  ]);
   expect(contact.join(' ')).not.toMatch(/%[IQM]/);
   await pick('BOOL input (VAR_INPUT)');
 
@@ -90,7 +96,7 @@ test('inside a FUNCTION_BLOCK: a contact offers VAR_INPUT first, a coil VAR_OUTP
 test('inside a FUNCTION: VAR_INPUT, VAR_OUTPUT and VAR; in a PROGRAM the addresses are offered', async () => {
   await addPou('add-function', 'Permit');
   const contact = await offersFor('c', 'Ready');
-  expect(contact).toEqual(['BOOL input (VAR_INPUT)', 'BOOL output (VAR_OUTPUT)', 'BOOL local (VAR)']);
+  expect(contact).toEqual(['BOOL input (VAR_INPUT)', 'BOOL output (VAR_OUTPUT)', 'BOOL local (VAR)', 'BOOL global (VAR_GLOBAL)']);
   await pick('BOOL input (VAR_INPUT)');
   expect((await variables('Permit')).find((v) => v.name === 'Ready')).toMatchObject({ varClass: 'input', type: 'BOOL' });
 

@@ -81,7 +81,13 @@ describe('declare it?', () => {
   const { project } = withVars([['Start', 'BOOL', { location: '%IX0.0' }]]);
   test('a contact offers BOOL, an input at the next free bit, or memory', () => {
     const choices = declareChoices(project, 'Stop', { kind: 'contact' });
-    expect(choices.map((c) => c.label)).toEqual(['BOOL', 'BOOL input at %IX0.1', 'BOOL memory at %MX0.0']);
+    expect(choices.map((c) => c.label)).toEqual([
+      'BOOL',
+      'BOOL input at %IX0.1',
+      'BOOL memory at %MX0.0',
+      'BOOL global (VAR_GLOBAL)',
+      'BOOL global input at %IX0.1 (VAR_GLOBAL)',
+    ]);
     expect(choices[1]?.variable).toMatchObject({
       name: 'Stop',
       type: 'BOOL',

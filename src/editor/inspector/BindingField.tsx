@@ -3,7 +3,7 @@
 import { useId } from 'react';
 import { findVariable } from '../../model/factory';
 import { selectActivePou, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
-import { declareChoices } from './declareOffer';
+import { declareChoice, declareChoices } from './declareOffer';
 import { acceptedTypes, describeLiteral, resolveName, type BindingRole } from './operands';
 import { VariableInput } from './VariableInput';
 
@@ -74,7 +74,7 @@ function BindingInfo({ value, role }: { value: string; role: BindingRole }) {
       );
     }
     case 'undeclared': {
-      const choices = declareChoices(project, resolution.name, role, pou.kind);
+      const choices = declareChoices(project, resolution.name, role, pou);
       return (
         <div
           className="rs-declare-offer"
@@ -90,7 +90,7 @@ function BindingInfo({ value, role }: { value: string; role: BindingRole }) {
               key={choice.label}
               type="button"
               className="rs-button"
-              onClick={() => store.getState().addVariable(choice.variable)}
+              onClick={() => declareChoice(store.getState(), choice, pou.id)}
             >
               {choice.label}
             </button>

@@ -1,6 +1,7 @@
 // A name field with completion from the variable table (an ARIA combobox). Typing an undeclared
 // name offers to declare it right in the list ("Declare Motor : BOOL output at %QX0.0"); choosing
-// that declares the variable and binds it as one undo step. Enter takes the highlighted offer;
+// that declares the variable and binds it as one undo step. Global offers ("Declare Motor : BOOL
+// global") go to the project's globals (with a VAR_EXTERNAL in the POU where it needs one). Enter takes the highlighted offer;
 // Shift+Enter keeps the text exactly as typed; one Escape leaves the field unchanged.
 //
 // Used by the inspector and by the canvas's inline editor:
@@ -11,7 +12,7 @@ import { useId, useMemo, useRef, useState, type KeyboardEvent } from 'react';
 import { parseLiteral } from '../../engine/values/literals';
 import { selectActivePou, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { focusCanvas } from '../canvas/focusCanvas';
-import { declareChoices, type DeclareChoice } from './declareOffer';
+import { declareChoice, declareChoices, type DeclareChoice } from './declareOffer';
 import { blockLibrary } from '../../model/library';
 import { freshInstanceName } from '../../store/pouEdits';
 import { candidatesFor, rankCandidates, resolveName, type BindingRole, type Candidate } from './operands';
@@ -86,7 +87,7 @@ export function VariableInput(props: VariableInputProps) {
           : undefined;
     const declares =
       offered !== undefined
-        ? declareChoices(project, offered, role, pou?.kind).map((choice) => ({ kind: 'declare' as const, choice }))
+        ? declareChoices(project, offered, role, pou).map((choice) => ({ kind: 'declare' as const, choice }))
         : [];
     // The offered fresh instance comes first: a second call needs a new instance, not Motor1 again.
     return offered !== undefined && offered !== text ? [...declares, ...ranked] : [...ranked, ...declares];
@@ -107,8 +108,10 @@ export function VariableInput(props: VariableInputProps) {
     if (option.kind === 'candidate') return finish(option.candidate.text, how);
     const name = option.choice.variable.name;
     navigated.current = false;
+    const pouId = pou?.id;
+    if (!pouId) return;
     store.getState().batch('declareVariable', () => {
-      store.getState().addVariable(option.choice.variable);
+      declareChoice(store.getState(), option.choice, pouId);
       setDraft(undefined);
       setOpen(false);
       setActive(0);

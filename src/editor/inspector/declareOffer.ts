@@ -3,10 +3,15 @@
 // Inside a function block or a function the choices are its interface instead (VAR_INPUT,
 // VAR_OUTPUT, VAR_IN_OUT, VAR): a block's variables have no addresses, its inputs and outputs are
 // what its callers wire.
+// A name can also be declared global (VAR_GLOBAL, with an input/output address in a program, as
+// CODESYS's I/O lists are): where the POU names its globals with VAR_EXTERNAL (an OpenPLC project,
+// whose MATIEC build requires it, or a POU that already declares externals), the VAR_EXTERNAL is
+// added to the POU too, in the same undo step.
 import { blockSignature } from '../../model/blocks';
 import { variable } from '../../model/factory';
 import type { PinType } from '../../model/iecTypes';
-import type { PouKind, Project, VarClass, Variable } from '../../model/project';
+import type { Pou, PouKind, Project, VarClass, Variable } from '../../model/project';
+import type { VariableScope } from '../../store/changes';
 import { nextFreeAddress, type AddressArea } from '../variables/addresses';
 import { identifierProblem } from '../variables/validation';
 import type { BindingRole } from './operands';
@@ -15,6 +20,39 @@ export interface DeclareChoice {
   /** Short words for the list: "BOOL", "BOOL input at %IX0.2". */
   readonly label: string;
   readonly variable: Variable;
+  /** Declared in the project's globals instead of the POU. */
+  readonly global?: boolean;
+  /** With `global`: the POU gets a VAR_EXTERNAL of it too. */
+  readonly external?: boolean;
+}
+
+/**
+ * Whether a global used in `pou` is also declared VAR_EXTERNAL there: in a program or function block
+ * of an OpenPLC project (MATIEC refuses a global without it) or of a POU that already names its
+ * globals that way. Rungsmith itself lets every POU see the globals.
+ */
+export function needsExternal(project: Pick<Project, 'profile'>, pou: Pick<Pou, 'kind' | 'variables'>): boolean {
+  if (pou.kind === 'FUNCTION') return false;
+  return project.profile === 'openplc' || pou.variables.some((v) => v.varClass === 'external');
+}
+
+/** The store commands a declaration uses. */
+export interface DeclareTarget {
+  batch<T>(name: string, fn: () => T): T;
+  addVariable(v: Variable, scope?: VariableScope): boolean;
+}
+
+/** Declares a chosen offer as one undo step (in a caller's batch, with its own edit): false when the name is taken. */
+export function declareChoice(target: DeclareTarget, choice: DeclareChoice, pou: VariableScope): boolean {
+  return target.batch('declareVariable', () => {
+    if (!choice.global) return target.addVariable(choice.variable, pou);
+    if (!target.addVariable(choice.variable, 'globals')) return false;
+    if (choice.external) {
+      const { location: _l, initial: _i, retain: _r, constant: _c, ...rest } = choice.variable;
+      target.addVariable({ ...rest, varClass: 'external', retain: false }, pou);
+    }
+    return true;
+  });
 }
 
 /** The type a new variable gets when first typed in this role. */
@@ -85,20 +123,35 @@ function classesFor(role: BindingRole, kind: 'FUNCTION_BLOCK' | 'FUNCTION'): Var
 }
 
 /**
- * Declarations to offer for `name`, typed in a POU of kind `pouKind` (a program when not given);
- * empty when the name cannot be a variable name.
+ * Declarations to offer for `name`, typed in `pou` (or a POU of that kind; a program when not
+ * given): the POU's own first, then global; empty when the name cannot be a variable name.
  */
-export function declareChoices(project: Project, name: string, role: BindingRole, pouKind?: PouKind): DeclareChoice[] {
+export function declareChoices(
+  project: Project,
+  name: string,
+  role: BindingRole,
+  pouOrKind?: PouKind | Pick<Pou, 'kind' | 'name' | 'variables'>,
+): DeclareChoice[] {
+  const pou = typeof pouOrKind === 'string' ? { kind: pouOrKind, name: '', variables: [] } : pouOrKind;
   const trimmed = name.trim();
   if (identifierProblem(trimmed)) return [];
   const type = suggestedType(role);
-  if (pouKind === 'FUNCTION_BLOCK' || pouKind === 'FUNCTION')
-    return classesFor(role, pouKind).map((varClass) => ({
+  const kind = pou?.kind ?? 'PROGRAM';
+  const external = pou ? needsExternal(project, pou) : false;
+  const globalWords = external ? `global + VAR_EXTERNAL in ${pou?.name ?? ''}` : 'global (VAR_GLOBAL)';
+  if (kind === 'FUNCTION_BLOCK' || kind === 'FUNCTION') {
+    const choices: DeclareChoice[] = classesFor(role, kind).map((varClass) => ({
       label: `${type} ${CLASS_WORDS[varClass]}`,
       variable: variable(trimmed, type, { varClass }),
     }));
+    // A block's own variables come first; a global is for a flag the whole program shares.
+    if (role.kind !== 'instance')
+      choices.push({ label: `${type} ${globalWords}`, variable: variable(trimmed, type), global: true, external });
+    return choices;
+  }
   const choices: DeclareChoice[] = [{ label: type, variable: variable(trimmed, type) }];
-  for (const area of areasFor(role)) {
+  const areas = areasFor(role);
+  for (const area of areas) {
     const location = nextFreeAddress(project, area, type);
     if (location)
       choices.push({
@@ -106,5 +159,18 @@ export function declareChoices(project: Project, name: string, role: BindingRole
         variable: variable(trimmed, type, { location }),
       });
   }
+  // An FB instance belongs to the POU that calls it: no global offer for it.
+  if (role.kind === 'instance') return choices;
+  choices.push({ label: `${type} ${globalWords}`, variable: variable(trimmed, type), global: true, external });
+  // I/O is where globals matter most: the input or output address as a global too.
+  const io = areas.find((a) => a !== 'M');
+  const location = io ? nextFreeAddress(project, io, type) : undefined;
+  if (io && location)
+    choices.push({
+      label: `${type} ${globalWords.replace(/^global/, `global ${AREA_WORDS[io]} at ${location}`)}`,
+      variable: variable(trimmed, type, { location }),
+      global: true,
+      external,
+    });
   return choices;
 }
