@@ -12,6 +12,12 @@ import { focusCanvas } from '../canvas/focusCanvas';
 
 type Field = HTMLInputElement | HTMLTextAreaElement;
 
+/**
+ * Key events whose Enter committed a changed text: a container can tell "Enter confirmed an edit"
+ * from "Enter on a field with nothing to commit" (the variable table adds a row on the latter).
+ */
+export const committedByEnter = new WeakSet<Event>();
+
 export interface CommitOptions {
   /** Shift+Enter inserts a new line; Enter alone still commits. */
   readonly multiline?: boolean;
@@ -38,6 +44,7 @@ export function useCommitField<E extends Field>(
     onKeyDown: (e: KeyboardEvent<E>) => {
       if (e.key === 'Enter' && !(multiline && e.shiftKey)) {
         e.preventDefault();
+        if (draft !== undefined && draft !== value) committedByEnter.add(e.nativeEvent);
         commit();
         if (leaveOnEnter) focusCanvas(e.currentTarget);
       } else if (e.key === 'Escape') {

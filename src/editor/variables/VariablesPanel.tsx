@@ -14,6 +14,7 @@ import { blockLibrary } from '../../model/library';
 import type { Variable } from '../../model/project';
 import { useRowWindow } from './rowWindow';
 import { SymbolPasteDialog } from './SymbolPasteDialog';
+import { committedByEnter } from './CommitInput';
 import { isTablePaste, isTextField, lastRowEnter } from './tableKeys';
 import { scopeVariables } from '../../store/symbolPaste';
 import { CLASS_ORDER, VariableRow } from './VariableRow';
@@ -175,7 +176,8 @@ export function VariablesPanel() {
         // Ctrl+V outside a text field is a table paste here, not a network paste on the canvas.
         if (pasting !== undefined) return;
         if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === 'v' && !isTextField(e.target)) e.stopPropagation();
-        if (lastRowEnter(e, shown[shown.length - 1]?.v.name)) add();
+        // Enter that confirmed an edit stays on the row; Enter again (nothing to commit) adds one.
+        if (lastRowEnter(e, shown[shown.length - 1]?.v.name) && !committedByEnter.has(e.nativeEvent)) add();
       }}
       onPaste={(e) => {
         const text = e.clipboardData.getData('text/plain');
