@@ -16,7 +16,8 @@ import type { Project, VarClass, Variable } from '../model/project';
 import { identifierProblem, validateVariables, type VariableField } from '../editor/variables/validation';
 import type { VariableScope } from './changes';
 
-export type SymbolColumn = 'name' | 'type' | 'address' | 'initial' | 'comment' | 'class' | 'retain' | 'constant';
+export type SymbolColumn =
+  'name' | 'type' | 'address' | 'initial' | 'comment' | 'class' | 'retain' | 'constant';
 
 /** One data row of the pasted text, cells by column (trimmed; absent when the table has no such column). */
 export interface SymbolRow {
@@ -38,8 +39,12 @@ export interface SymbolTable {
 
 /** Header words (lower case, letters and digits only) and the column each names. */
 const HEADER_WORDS: Record<string, SymbolColumn> = {};
-const words = (column: SymbolColumn, list: string) => list.split(' ').forEach((w) => (HEADER_WORDS[w] = column));
-words('name', 'name names symbol symbolname symbols tag tagname variable variablename varname identifier bezeichner');
+const words = (column: SymbolColumn, list: string) =>
+  list.split(' ').forEach((w) => (HEADER_WORDS[w] = column));
+words(
+  'name',
+  'name names symbol symbolname symbols tag tagname variable variablename varname identifier bezeichner',
+);
 words('type', 'type datatype datentyp typ vartype variabletype');
 words('address', 'address logicaladdress location adresse operand at ioaddress absoluteaddress');
 words(
@@ -81,7 +86,13 @@ export function parseSymbolTable(text: string): SymbolTable {
       trim: true,
     }) as unknown as { record: string[]; info: { lines: number } }[];
   } catch (e) {
-    return { delimiter, header: false, columns: {}, rows: [], error: e instanceof Error ? e.message : String(e) };
+    return {
+      delimiter,
+      header: false,
+      columns: {},
+      rows: [],
+      error: e instanceof Error ? e.message : String(e),
+    };
   }
   // A row of blanks only (a spreadsheet's empty row copied with its tabs) is no row.
   const data = records.filter((r) => r.record.some((c) => c !== ''));
@@ -104,7 +115,8 @@ export function parseSymbolTable(text: string): SymbolTable {
   return { delimiter, header, columns, rows };
 }
 
-export type AddressResult = { readonly address: string; readonly note?: string } | { readonly refused: string };
+export type AddressResult =
+  { readonly address: string; readonly note?: string } | { readonly refused: string };
 
 /**
  * An address as a PLC programmer pastes it, in IEC spelling: `%IX0.0` as is; TIA/S7 `%I0.0`, `I0.0`,
@@ -137,11 +149,14 @@ export function importAddress(text: string): AddressResult {
   const index = Number(m[3]);
   const bit = m[4];
   if (size === 'X' && bit === undefined)
-    return { refused: `"${raw}" names no bit: write ${`%${area}X${index}.0`} for a bit or %${area}W${index} for a word` };
-  if (size === 'X' && Number(bit) > 7)
-    return { refused: `"${raw}": a byte has bits 0 to 7` };
+    return {
+      refused: `"${raw}" names no bit: write ${`%${area}X${index}.0`} for a bit or %${area}W${index} for a word`,
+    };
+  if (size === 'X' && Number(bit) > 7) return { refused: `"${raw}": a byte has bits 0 to 7` };
   if (size !== 'X' && bit !== undefined)
-    return { refused: `"${raw}": a ${size === 'B' ? 'byte' : 'word'} address has no bit: write %${area}${size}${index}` };
+    return {
+      refused: `"${raw}": a ${size === 'B' ? 'byte' : 'word'} address has no bit: write %${area}${size}${index}`,
+    };
   const address = `%${area}${size}${index}${size === 'X' ? `.${bit}` : ''}`;
   const written = raw.toUpperCase();
   return written === address ? { address } : { address, note: `address ${raw} read as ${address}` };
@@ -204,7 +219,10 @@ function importClass(
     else if (p === 'NON_RETAIN') out.retain = false;
     else {
       const c = CLASS_WORDS[p];
-      if (!c) return { refused: `class "${text.trim()}" is not one of VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_EXTERNAL, VAR_TEMP, VAR_GLOBAL` };
+      if (!c)
+        return {
+          refused: `class "${text.trim()}" is not one of VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_EXTERNAL, VAR_TEMP, VAR_GLOBAL`,
+        };
       if (globals && c !== 'global')
         return { refused: `class ${text.trim()} belongs in a POU, not in the global variables` };
       if (!globals && c === 'global')
@@ -386,7 +404,11 @@ export interface SymbolPasteTarget {
 }
 
 /** Writes the added, renamed and replaced rows of `plan` into `scope` as one undo step; returns how many. */
-export function applySymbolPaste(target: SymbolPasteTarget, scope: VariableScope, plan: readonly PastePlanRow[]): number {
+export function applySymbolPaste(
+  target: SymbolPasteTarget,
+  scope: VariableScope,
+  plan: readonly PastePlanRow[],
+): number {
   return target.batch('pasteSymbols', () => {
     let done = 0;
     for (const row of plan) {

@@ -16,18 +16,25 @@ let page: Page;
 let draw: DrawPage;
 
 const project = (): Promise<Project> =>
-  page.evaluate(() => JSON.parse(JSON.stringify(window.rungsmith!.documentStore!.getState().project)) as Project);
+  page.evaluate(
+    () => JSON.parse(JSON.stringify(window.rungsmith!.documentStore!.getState().project)) as Project,
+  );
 const globalNames = async () => (await project()).globals.map((g) => g.name);
 
 beforeAll(async () => {
   editor = await EditorPage.open(browser());
   page = editor.page;
-  await page.context().grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(inject('appUrl')).origin });
+  await page
+    .context()
+    .grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(inject('appUrl')).origin });
   draw = new DrawPage(page);
   await page.evaluate(() => {
     const doc = window.rungsmith!.documentStore!.getState();
     doc.newProject('Bottles');
-    doc.addVariable({ name: 'Level', type: 'INT', varClass: 'local', retain: false, comment: 'tank level' }, 'globals');
+    doc.addVariable(
+      { name: 'Level', type: 'INT', varClass: 'local', retain: false, comment: 'tank level' },
+      'globals',
+    );
   });
 });
 
@@ -67,7 +74,14 @@ test('a TSV pasted into the globals: the preview says added, renamed and refused
 
   await dialog.getByTestId('symbol-paste-confirm').click();
   await dialog.waitFor({ state: 'detached' });
-  await poll(globalNames).toEqual(['Level', 'StartButton', 'StopButton', 'FillValve', 'Level_2', 'BottleCount']);
+  await poll(globalNames).toEqual([
+    'Level',
+    'StartButton',
+    'StopButton',
+    'FillValve',
+    'Level_2',
+    'BottleCount',
+  ]);
   await editor.variableRow('FillValve').waitFor();
   expect(await editor.variableRow('FillValve').getByLabel('Address').inputValue()).toBe('%QX0.0');
   expect(await editor.variableRow('Level_2').getByLabel('Address').inputValue()).toBe('%IW64');
@@ -78,7 +92,14 @@ test('a TSV pasted into the globals: the preview says added, renamed and refused
   await page.keyboard.press('Control+Z');
   await poll(globalNames).toEqual(['Level']);
   await page.keyboard.press('Control+Y');
-  await poll(globalNames).toEqual(['Level', 'StartButton', 'StopButton', 'FillValve', 'Level_2', 'BottleCount']);
+  await poll(globalNames).toEqual([
+    'Level',
+    'StartButton',
+    'StopButton',
+    'FillValve',
+    'Level_2',
+    'BottleCount',
+  ]);
   expect(editor.errors).toEqual([]);
 });
 
@@ -130,7 +151,9 @@ test('declare as global from the canvas and from the completion list; one undo s
   const estop = (await project()).globals.find((g) => g.name === 'EStop');
   expect(estop).toMatchObject({ type: 'BOOL', location: '%IX0.2' });
   expect((await project()).pous[0]!.variables.map((v) => v.name)).not.toContain('EStop');
-  expect((await draw.networks())[0]!.elements.find((e) => e.kind === 'contact')).toMatchObject({ variable: 'EStop' });
+  expect((await draw.networks())[0]!.elements.find((e) => e.kind === 'contact')).toMatchObject({
+    variable: 'EStop',
+  });
 
   // A coil, named in the inspector's field: the completion list offers the global too.
   await page.keyboard.press('o');
@@ -144,7 +167,8 @@ test('declare as global from the canvas and from the completion list; one undo s
   const options = editor.inspector.getByRole('listbox', { name: 'Suggestions' }).getByRole('option');
   await poll(() => options.allTextContents()).toContain('Declare HornBOOL global (VAR_GLOBAL)');
   const texts = await options.allTextContents();
-  for (let i = 0; i < texts.indexOf('Declare HornBOOL global (VAR_GLOBAL)'); i++) await field.press('ArrowDown');
+  for (let i = 0; i < texts.indexOf('Declare HornBOOL global (VAR_GLOBAL)'); i++)
+    await field.press('ArrowDown');
   await field.press('Enter');
   await poll(globalNames).toContain('Horn');
   const coil = async () => (await draw.networks())[0]!.elements.find((e) => e.kind === 'coil');
@@ -166,10 +190,12 @@ test('a POU variable with the name of a global is warned in Problems (LD-W05), a
   await editor.tab('Problems');
   const problem = editor.problems.getByTestId('problem').filter({ hasText: 'LD-W05' });
   await poll(() => problem.count()).toBe(1);
-  expect(await problem.textContent()).toMatch(/the VAR variable "StartButton" of Main has the name of the global variable StartButton/);
-  await problem.click();
-  await poll(() => page.evaluate(() => document.activeElement?.closest('tr')?.getAttribute('data-testid'))).toBe(
-    'variable-row-StartButton',
+  expect(await problem.textContent()).toMatch(
+    /the VAR variable "StartButton" of Main has the name of the global variable StartButton/,
   );
+  await problem.click();
+  await poll(() =>
+    page.evaluate(() => document.activeElement?.closest('tr')?.getAttribute('data-testid')),
+  ).toBe('variable-row-StartButton');
   expect(editor.errors).toEqual([]);
 });

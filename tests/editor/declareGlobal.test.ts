@@ -11,7 +11,11 @@ import { createDocumentStore } from '../../src/store/documentStore';
 const plant = (extra: Partial<Project> = {}): Project =>
   newProject('Plant', {
     globals: [variable('Start', 'BOOL', { location: '%IX0.0' })],
-    pous: [newPou('Main'), newPou('Conveyor', { kind: 'FUNCTION_BLOCK' }), newPou('Permit', { kind: 'FUNCTION' })],
+    pous: [
+      newPou('Main'),
+      newPou('Conveyor', { kind: 'FUNCTION_BLOCK' }),
+      newPou('Permit', { kind: 'FUNCTION' }),
+    ],
     ...extra,
   });
 
@@ -62,13 +66,17 @@ test('declaring a global with its VAR_EXTERNAL is one undo step; a local one sta
   expect(declareChoice(doc.getState(), choice, fb.id)).toBe(true);
   const after = doc.getState().project;
   expect(after.globals.map((g) => g.name)).toEqual(['Start', 'Alarm']);
-  expect(after.pous[1]!.variables).toEqual([{ name: 'Alarm', type: 'BOOL', varClass: 'external', retain: false, comment: '' }]);
+  expect(after.pous[1]!.variables).toEqual([
+    { name: 'Alarm', type: 'BOOL', varClass: 'external', retain: false, comment: '' },
+  ]);
   doc.getState().undo();
   expect(doc.getState().project.globals.map((g) => g.name)).toEqual(['Start']);
   expect(doc.getState().project.pous[1]!.variables).toEqual([]);
   const local = declareChoices(project, 'Busy', { kind: 'coil' }, fb)[0]!;
   declareChoice(doc.getState(), local, fb.id);
-  expect(doc.getState().project.pous[1]!.variables.map((v) => [v.name, v.varClass])).toEqual([['Busy', 'output']]);
+  expect(doc.getState().project.pous[1]!.variables.map((v) => [v.name, v.varClass])).toEqual([
+    ['Busy', 'output'],
+  ]);
   expect(doc.getState().project.globals).toHaveLength(1);
 });
 

@@ -16,7 +16,10 @@ import {
 
 function plant(): Project {
   return newProject('Bottles', {
-    globals: [variable('Start', 'BOOL', { location: '%IX0.0', comment: 'start button' }), variable('Count', 'INT')],
+    globals: [
+      variable('Start', 'BOOL', { location: '%IX0.0', comment: 'start button' }),
+      variable('Count', 'INT'),
+    ],
     pous: [{ ...newPou('Main'), variables: [variable('Busy', 'BOOL', { varClass: 'output' })] }],
   });
 }
@@ -26,23 +29,45 @@ test('a TSV copied from a spreadsheet without header: name, type, address, initi
   expect(t.delimiter).toBe('\t');
   expect(t.header).toBe(false);
   expect(t.rows).toEqual([
-    { line: 1, cells: { name: 'Motor', type: 'BOOL', address: '%QX0.0', initial: 'FALSE', comment: 'conveyor motor' } },
+    {
+      line: 1,
+      cells: { name: 'Motor', type: 'BOOL', address: '%QX0.0', initial: 'FALSE', comment: 'conveyor motor' },
+    },
     { line: 2, cells: { name: 'Speed', type: 'INT', address: '%QW1', initial: '100', comment: '' } },
   ]);
 });
 
 test('header rows in CODESYS, TIA Portal and German spellings find their columns in any order; other columns are ignored', () => {
-  const codesys = parseSymbolTable('Scope\tName\tAddress\tData type\tInitialization\tComment\nVAR_GLOBAL\tLamp\t%QX0.1\tBOOL\tTRUE\tlamp\n');
+  const codesys = parseSymbolTable(
+    'Scope\tName\tAddress\tData type\tInitialization\tComment\nVAR_GLOBAL\tLamp\t%QX0.1\tBOOL\tTRUE\tlamp\n',
+  );
   expect(codesys.header).toBe(true);
-  expect(codesys.rows[0]!.cells).toEqual({ class: 'VAR_GLOBAL', name: 'Lamp', address: '%QX0.1', type: 'BOOL', initial: 'TRUE', comment: 'lamp' });
+  expect(codesys.rows[0]!.cells).toEqual({
+    class: 'VAR_GLOBAL',
+    name: 'Lamp',
+    address: '%QX0.1',
+    type: 'BOOL',
+    initial: 'TRUE',
+    comment: 'lamp',
+  });
   const tia = parseSymbolTable(
     'Name\tPath\tData Type\tLogical Address\tComment\tHmi Visible\nFill valve\tDefault tag table\tBool\t%Q0.3\tvalve\tTrue\n',
   );
   expect(tia.header).toBe(true);
-  expect(tia.rows[0]!.cells).toEqual({ name: 'Fill valve', type: 'Bool', address: '%Q0.3', comment: 'valve' });
+  expect(tia.rows[0]!.cells).toEqual({
+    name: 'Fill valve',
+    type: 'Bool',
+    address: '%Q0.3',
+    comment: 'valve',
+  });
   const german = parseSymbolTable('Symbol;Adresse;Datentyp;Kommentar\nPumpe;%A0.0;Bool;Hauptpumpe\n');
   expect(german.delimiter).toBe(';');
-  expect(german.rows[0]!.cells).toEqual({ name: 'Pumpe', address: '%A0.0', type: 'Bool', comment: 'Hauptpumpe' });
+  expect(german.rows[0]!.cells).toEqual({
+    name: 'Pumpe',
+    address: '%A0.0',
+    type: 'Bool',
+    comment: 'Hauptpumpe',
+  });
 });
 
 test('CSV with quoted fields: commas, doubled quotes and a line break inside a comment; blank rows skipped', () => {
@@ -121,7 +146,12 @@ test('replace keeps the existing variable (its place, class and references) with
   const choices = new Map<number, ClashChoice>([[0, 'replace']]);
   const plan = planSymbolPaste(project, main.id, table, choices);
   expect(plan.map((r) => r.action)).toEqual(['replace', 'add']);
-  expect(plan[0]!.variable).toMatchObject({ name: 'Busy', varClass: 'output', location: '%QX1.0', initial: 'TRUE' });
+  expect(plan[0]!.variable).toMatchObject({
+    name: 'Busy',
+    varClass: 'output',
+    location: '%QX1.0',
+    initial: 'TRUE',
+  });
   expect(planSymbolPaste(project, main.id, table, new Map([[0, 'skip' as const]]))[0]!.action).toBe('skip');
 });
 
@@ -131,7 +161,10 @@ test('a class column: VAR_INPUT in a POU, VAR_GLOBAL CONSTANT in the globals; th
   const table = parseSymbolTable('Class,Name,Type,Initial\nVAR_INPUT,Enable,BOOL,\nVAR_GLOBAL,Other,BOOL,\n');
   const inPou = planSymbolPaste(project, main.id, table);
   expect(inPou[0]).toMatchObject({ action: 'add', variable: { varClass: 'input' } });
-  expect(inPou[1]).toMatchObject({ action: 'refuse', reasons: [expect.stringContaining('global variables')] });
+  expect(inPou[1]).toMatchObject({
+    action: 'refuse',
+    reasons: [expect.stringContaining('global variables')],
+  });
   const consts = parseSymbolTable('Scope\tName\tType\tInitial\nVAR_GLOBAL CONSTANT\tMaxBottles\tINT\t24\n');
   expect(planSymbolPaste(project, 'globals', consts)[0]).toMatchObject({
     action: 'add',
@@ -141,7 +174,9 @@ test('a class column: VAR_INPUT in a POU, VAR_GLOBAL CONSTANT in the globals; th
 
 test('applying a plan is one undo step: undo removes every pasted row and restores the replaced one', () => {
   const doc = createDocumentStore(plant());
-  const table = parseSymbolTable('Name\tType\tAddress\nMotor\tBOOL\t%QX0.0\nStart\tBOOL\t%IX0.2\nCount\tDINT\t\nbad name\tBOOL\t\n');
+  const table = parseSymbolTable(
+    'Name\tType\tAddress\nMotor\tBOOL\t%QX0.0\nStart\tBOOL\t%IX0.2\nCount\tDINT\t\nbad name\tBOOL\t\n',
+  );
   const plan = planSymbolPaste(doc.getState().project, 'globals', table, new Map([[2, 'replace' as const]]));
   expect(plan.map((r) => r.action)).toEqual(['add', 'rename', 'replace', 'refuse']);
   expect(applySymbolPaste(doc.getState(), 'globals', plan)).toBe(3);
@@ -153,11 +188,16 @@ test('applying a plan is one undo step: undo removes every pasted row and restor
     'Start_2:BOOL:%IX0.2',
   ]);
   doc.getState().undo();
-  expect(doc.getState().project.globals.map((g) => `${g.name}:${g.type}`)).toEqual(['Start:BOOL', 'Count:INT']);
+  expect(doc.getState().project.globals.map((g) => `${g.name}:${g.type}`)).toEqual([
+    'Start:BOOL',
+    'Count:INT',
+  ]);
 });
 
 test('an unclosed quote gives a reason, not an exception', () => {
   const t = parseSymbolTable('Name,Type\n"Motor,BOOL\n');
   // csv-parse with relaxed quotes reads it or says why; either way no row is invented.
-  expect(t.error === undefined ? t.rows.every((r) => r.cells.name !== 'Motor') : t.error.length > 0).toBe(true);
+  expect(t.error === undefined ? t.rows.every((r) => r.cells.name !== 'Motor') : t.error.length > 0).toBe(
+    true,
+  );
 });

@@ -44,8 +44,7 @@ function Verdict({
   readonly choice: ClashChoice;
   readonly onChoose: (c: ClashChoice) => void;
 }) {
-  if (row.action === 'refuse')
-    return <span className="rs-paste-reason">{row.reasons.join('; ')}</span>;
+  if (row.action === 'refuse') return <span className="rs-paste-reason">{row.reasons.join('; ')}</span>;
   if (row.clash === undefined) return <span>{row.notes.length ? row.notes.join('; ') : ''}</span>;
   const renamed = row.action === 'rename' ? row.variable?.name : undefined;
   return (
@@ -71,12 +70,17 @@ export function SymbolPasteDialog({ text: initialText, scope, target, onClose, o
   const [text, setText] = useState(initialText);
   const [choices, setChoices] = useState<ReadonlyMap<number, ClashChoice>>(new Map());
   const table = useMemo(() => parseSymbolTable(text), [text]);
-  const plan = useMemo(() => planSymbolPaste(project, scope, table, choices), [project, scope, table, choices]);
+  const plan = useMemo(
+    () => planSymbolPaste(project, scope, table, choices),
+    [project, scope, table, choices],
+  );
   const counts = planCounts(plan);
   const writes = counts.add + counts.rename + counts.replace;
   const confirm = () => {
     const done = applySymbolPaste(store.getState(), scope, plan);
-    const names = plan.flatMap((r) => (r.variable && ['add', 'rename', 'replace'].includes(r.action) ? [r.variable.name] : []));
+    const names = plan.flatMap((r) =>
+      r.variable && ['add', 'rename', 'replace'].includes(r.action) ? [r.variable.name] : [],
+    );
     ui.getState().setStatus(
       `Pasted ${done} variable${done === 1 ? '' : 's'} into ${target}` +
         (counts.refuse ? `; ${counts.refuse} refused row${counts.refuse === 1 ? '' : 's'} left out` : '') +
@@ -123,9 +127,9 @@ export function SymbolPasteDialog({ text: initialText, scope, target, onClose, o
       }
     >
       <p id="rs-symbol-paste-text" className="rs-paste-help">
-        Rows from Excel, LibreOffice or Google Sheets (tab separated) or CSV (comma or semicolon): name,
-        type, address, initial value, comment, or any order under a header row (Name, Data Type, Address,
-        Initial, Comment, Class). TIA addresses such as %I0.0 and %IW64 are read as %IX0.0 and %IW64.
+        Rows from Excel, LibreOffice or Google Sheets (tab separated) or CSV (comma or semicolon): name, type,
+        address, initial value, comment, or any order under a header row (Name, Data Type, Address, Initial,
+        Comment, Class). TIA addresses such as %I0.0 and %IW64 are read as %IX0.0 and %IW64.
       </p>
       <textarea
         aria-label="Symbol table text"
@@ -165,7 +169,12 @@ export function SymbolPasteDialog({ text: initialText, scope, target, onClose, o
             </thead>
             <tbody>
               {plan.map((row, i) => (
-                <tr key={i} data-testid={`symbol-paste-row-${i}`} data-action={row.action} className={`rs-paste-${row.action}`}>
+                <tr
+                  key={i}
+                  data-testid={`symbol-paste-row-${i}`}
+                  data-action={row.action}
+                  className={`rs-paste-${row.action}`}
+                >
                   <td>{row.line}</td>
                   <td className="rs-mono">{row.variable?.name ?? row.given}</td>
                   <td className="rs-mono">{row.variable?.type ?? ''}</td>
@@ -176,7 +185,10 @@ export function SymbolPasteDialog({ text: initialText, scope, target, onClose, o
                   <td>
                     <Verdict
                       row={row}
-                      choice={choices.get(i) ?? (row.action === 'skip' ? 'skip' : row.action === 'replace' ? 'replace' : 'rename')}
+                      choice={
+                        choices.get(i) ??
+                        (row.action === 'skip' ? 'skip' : row.action === 'replace' ? 'replace' : 'rename')
+                      }
                       onChoose={(c) => setChoices(new Map(choices).set(i, c))}
                     />
                   </td>

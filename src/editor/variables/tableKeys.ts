@@ -27,9 +27,11 @@ export function isTablePaste(target: EventTarget | null, text: string): boolean 
 
 /** Enter (no modifier) in a field of the table's last row (`lastName`'s), except on its buttons. */
 export function lastRowEnter(e: KeyboardEvent, lastName: string | undefined): boolean {
-  if (e.key !== 'Enter' || e.shiftKey || e.ctrlKey || e.altKey || e.metaKey || lastName === undefined) return false;
+  if (e.key !== 'Enter' || e.shiftKey || e.ctrlKey || e.altKey || e.metaKey || lastName === undefined)
+    return false;
   const target = e.target;
-  if (!(target instanceof HTMLElement) || target.tagName === 'BUTTON' || target.tagName === 'TEXTAREA') return false;
+  if (!(target instanceof HTMLElement) || target.tagName === 'BUTTON' || target.tagName === 'TEXTAREA')
+    return false;
   const row = target.closest('tr.rs-var-row');
   return row?.getAttribute('data-testid') === `variable-row-${lastName}`;
 }
