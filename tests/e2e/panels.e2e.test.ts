@@ -156,7 +156,7 @@ test('typing the variable of a coil completes from the table and offers to decla
     'Declare StBOOL output at %QX0.0',
     'Declare StBOOL memory at %MX0.0',
     'Declare StBOOL global (VAR_GLOBAL)',
-    'Declare StBOOL global output at %QX0.0 (VAR_GLOBAL)',
+    'Declare StBOOL global at %QX0.0 (VAR_GLOBAL)',
   ]);
   await field.fill('Pump');
   await poll(() => options.allTextContents()).toEqual([
@@ -164,7 +164,7 @@ test('typing the variable of a coil completes from the table and offers to decla
     'Declare PumpBOOL output at %QX0.0',
     'Declare PumpBOOL memory at %MX0.0',
     'Declare PumpBOOL global (VAR_GLOBAL)',
-    'Declare PumpBOOL global output at %QX0.0 (VAR_GLOBAL)',
+    'Declare PumpBOOL global at %QX0.0 (VAR_GLOBAL)',
   ]);
   await field.press('ArrowDown');
   await field.press('Enter');

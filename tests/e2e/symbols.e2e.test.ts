@@ -143,7 +143,7 @@ test('declare as global from the canvas and from the completion list; one undo s
   const inline = page.getByTestId('inline-editor');
   await inline.waitFor();
   await inline.fill('EStop');
-  const offer = page.getByRole('option', { name: /Declare EStop.*global input at %IX0\.2/ });
+  const offer = page.getByRole('option', { name: /Declare EStop.*global at %IX0\.2/ });
   await offer.waitFor();
   await offer.click();
   await inline.waitFor({ state: 'detached' });

@@ -86,7 +86,7 @@ describe('declare it?', () => {
       'BOOL input at %IX0.1',
       'BOOL memory at %MX0.0',
       'BOOL global (VAR_GLOBAL)',
-      'BOOL global input at %IX0.1 (VAR_GLOBAL)',
+      'BOOL global at %IX0.1 (VAR_GLOBAL)',
     ]);
     expect(choices[1]?.variable).toMatchObject({
       name: 'Stop',

@@ -27,7 +27,7 @@ test('in a program a coil offers local and global declarations, the global one a
     'BOOL output at %QX0.0',
     'BOOL memory at %MX0.0',
     'BOOL global (VAR_GLOBAL)',
-    'BOOL global output at %QX0.0 (VAR_GLOBAL)',
+    'BOOL global at %QX0.0 (VAR_GLOBAL)',
   ]);
 });
 

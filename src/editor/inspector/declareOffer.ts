@@ -162,12 +162,13 @@ export function declareChoices(
   // An FB instance belongs to the POU that calls it: no global offer for it.
   if (role.kind === 'instance') return choices;
   choices.push({ label: `${type} ${globalWords}`, variable: variable(trimmed, type), global: true, external });
-  // I/O is where globals matter most: the input or output address as a global too.
+  // I/O is where globals matter most: the input or output address as a global too (worded apart
+  // from the local "input at %IX0.2" offer).
   const io = areas.find((a) => a !== 'M');
   const location = io ? nextFreeAddress(project, io, type) : undefined;
   if (io && location)
     choices.push({
-      label: `${type} ${globalWords.replace(/^global/, `global ${AREA_WORDS[io]} at ${location}`)}`,
+      label: `${type} ${globalWords.replace(/^global/, `global at ${location}`)}`,
       variable: variable(trimmed, type, { location }),
       global: true,
       external,
