@@ -3,7 +3,7 @@
 // to the project's globals, with a VAR_EXTERNAL in the POU where the project names its globals that
 // way (OpenPLC, whose MATIEC build requires it, or a POU that already has externals); one undo step.
 import { expect, test } from 'vitest';
-import { declareChoice, declareChoices, needsExternal } from '../../src/editor/inspector/declareOffer';
+import { declareChoice, declareChoices, needsExternal, typedDeclaration } from '../../src/editor/inspector/declareOffer';
 import { newPou, newProject, variable } from '../../src/model/factory';
 import type { Project } from '../../src/model/project';
 import { createDocumentStore } from '../../src/store/documentStore';
@@ -86,4 +86,21 @@ test('a global name already taken is refused and nothing is added', () => {
   const choice = { label: 'BOOL global', variable: variable('start', 'BOOL'), global: true, external: true };
   expect(declareChoice(doc.getState(), choice, project.pous[0]!.id)).toBe(false);
   expect(doc.getState().project.pous[0]!.variables).toEqual([]);
+});
+
+test('"Speed : INT" typed in a name field declares Speed with the type written; an unknown type offers nothing', () => {
+  const project = plant();
+  expect(typedDeclaration(project, 'Speed : int')).toEqual({ name: 'Speed', type: 'INT' });
+  expect(typedDeclaration(project, 'T1:ton;')).toEqual({ name: 'T1', type: 'TON' });
+  expect(typedDeclaration(project, 'Speed : FLOAT')).toBeUndefined();
+  expect(typedDeclaration(project, 'Speed')).toBeUndefined();
+  const pin = { kind: 'pin', direction: 'output', pinType: 'ANY_NUM' } as const;
+  const choices = declareChoices(project, 'Speed', pin, project.pous[0], 'DINT');
+  expect(choices.map((c) => c.label)).toEqual([
+    'DINT',
+    'DINT output at %QD0',
+    'DINT memory at %MD0',
+    'DINT global (VAR_GLOBAL)',
+    'DINT global at %QD0 (VAR_GLOBAL)',
+  ]);
 });

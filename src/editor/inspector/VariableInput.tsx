@@ -12,7 +12,7 @@ import { useId, useMemo, useRef, useState, type KeyboardEvent } from 'react';
 import { parseLiteral } from '../../engine/values/literals';
 import { selectActivePou, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { focusCanvas } from '../canvas/focusCanvas';
-import { declareChoice, declareChoices, type DeclareChoice } from './declareOffer';
+import { declareChoice, declareChoices, typedDeclaration, type DeclareChoice } from './declareOffer';
 import { blockLibrary } from '../../model/library';
 import { freshInstanceName } from '../../store/pouEdits';
 import { candidatesFor, rankCandidates, resolveName, type BindingRole, type Candidate } from './operands';
@@ -75,11 +75,13 @@ export function VariableInput(props: VariableInputProps) {
       kind: 'candidate' as const,
       candidate,
     }));
-    const resolution = resolveName(project, pou, text);
+    // `Speed : INT`: declare Speed with the type written after the colon.
+    const typed = role.kind === 'instance' ? undefined : typedDeclaration(project, text);
+    const resolution = resolveName(project, pou, typed?.name ?? text);
     // An empty instance of the project's own FB: offer its next free name (Motor1, Motor2...).
     const offered =
       resolution.status === 'undeclared'
-        ? text
+        ? (typed?.name ?? text)
         : resolution.status === 'empty' &&
             role.kind === 'instance' &&
             blockLibrary(project).userPou(role.blockType)
@@ -87,7 +89,7 @@ export function VariableInput(props: VariableInputProps) {
           : undefined;
     const declares =
       offered !== undefined
-        ? declareChoices(project, offered, role, pou).map((choice) => ({ kind: 'declare' as const, choice }))
+        ? declareChoices(project, offered, role, pou, typed?.type).map((choice) => ({ kind: 'declare' as const, choice }))
         : [];
     // The offered fresh instance comes first: a second call needs a new instance, not Motor1 again.
     return offered !== undefined && offered !== text ? [...declares, ...ranked] : [...ranked, ...declares];

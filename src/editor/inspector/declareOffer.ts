@@ -13,7 +13,10 @@ import type { PinType } from '../../model/iecTypes';
 import type { Pou, PouKind, Project, VarClass, Variable } from '../../model/project';
 import type { VariableScope } from '../../store/changes';
 import { nextFreeAddress, type AddressArea } from '../variables/addresses';
-import { identifierProblem } from '../variables/validation';
+import { identifierProblem, isKnownVariableType } from '../variables/validation';
+import { blockLibrary } from '../../model/library';
+import { resolveType } from '../../model/dataTypes';
+import { importType } from '../../store/symbolPaste';
 import type { BindingRole } from './operands';
 
 export interface DeclareChoice {
@@ -125,17 +128,19 @@ function classesFor(role: BindingRole, kind: 'FUNCTION_BLOCK' | 'FUNCTION'): Var
 /**
  * Declarations to offer for `name`, typed in `pou` (or a POU of that kind; a program when not
  * given): the POU's own first, then global; empty when the name cannot be a variable name.
+ * `typed`: the type the user wrote (`Speed : INT`, typedDeclaration) instead of the suggested one.
  */
 export function declareChoices(
   project: Project,
   name: string,
   role: BindingRole,
   pouOrKind?: PouKind | Pick<Pou, 'kind' | 'name' | 'variables'>,
+  typed?: string,
 ): DeclareChoice[] {
   const pou = typeof pouOrKind === 'string' ? { kind: pouOrKind, name: '', variables: [] } : pouOrKind;
   const trimmed = name.trim();
   if (identifierProblem(trimmed)) return [];
-  const type = suggestedType(role);
+  const type = typed ?? suggestedType(role);
   const kind = pou?.kind ?? 'PROGRAM';
   const external = pou ? needsExternal(project, pou) : false;
   const globalWords = external ? `global + VAR_EXTERNAL in ${pou?.name ?? ''}` : 'global (VAR_GLOBAL)';
@@ -174,4 +179,18 @@ export function declareChoices(
       external,
     });
   return choices;
+}
+
+/**
+ * `Speed : INT` typed in a name field: the name and the type (in the project's spelling) to declare
+ * it with, as in a declaration; undefined when the text is not of that form or the type is unknown.
+ */
+export function typedDeclaration(project: Project, text: string): { name: string; type: string } | undefined {
+  const m = /^\s*([A-Za-z_][A-Za-z0-9_]*)\s*:\s*(\S.*?)\s*;?\s*$/.exec(text);
+  if (!m) return undefined;
+  const type = importType(project, m[2]!);
+  const lib = blockLibrary(project);
+  const known =
+    isKnownVariableType(type, lib) || project.dataTypes?.some((d) => d.name === type) || resolveType(project, type).ok;
+  return known ? { name: m[1]!, type } : undefined;
 }
