@@ -199,3 +199,38 @@ test('a POU variable with the name of a global is warned in Problems (LD-W05), a
   ).toBe('variable-row-StartButton');
   expect(editor.errors).toEqual([]);
 });
+
+test('inside an FB of an OpenPLC project: the interface is offered first, and a global gets its VAR_EXTERNAL in the FB, one undo step', async () => {
+  await page.evaluate(() => {
+    const doc = window.rungsmith!.documentStore!.getState();
+    doc.setProjectProfile('openplc');
+    doc.addPou('FUNCTION_BLOCK', 'Conveyor');
+  });
+  await page.getByTestId('pou-tab-Conveyor').waitFor();
+  await poll(() => page.evaluate(() => window.rungsmith!.documentStore!.getState().activePouId)).toBe(
+    (await project()).pous.find((p) => p.name === 'Conveyor')!.id,
+  );
+  await draw.canvas().focus();
+  await page.keyboard.press('c');
+  const inline = page.getByTestId('inline-editor');
+  await inline.waitFor();
+  await inline.fill('Jam');
+  const offers = page.locator('[role="listbox"] [role="option"].rs-declare .rs-completion-type');
+  await poll(() => offers.allTextContents()).toEqual([
+    'BOOL input (VAR_INPUT)',
+    'BOOL in-out (VAR_IN_OUT)',
+    'BOOL output (VAR_OUTPUT)',
+    'BOOL local (VAR)',
+    'BOOL global + VAR_EXTERNAL in Conveyor',
+  ]);
+  await page.getByRole('option', { name: /global \+ VAR_EXTERNAL in Conveyor/ }).click();
+  await inline.waitFor({ state: 'detached' });
+  await poll(globalNames).toContain('Jam');
+  const conveyor = async () => (await project()).pous.find((p) => p.name === 'Conveyor')!.variables;
+  expect(await conveyor()).toEqual([{ name: 'Jam', type: 'BOOL', varClass: 'external', retain: false, comment: '' }]);
+  await draw.canvas().focus();
+  await page.keyboard.press('Control+Z');
+  await poll(globalNames).not.toContain('Jam');
+  expect(await conveyor()).toEqual([]);
+  expect(editor.errors).toEqual([]);
+});

@@ -332,6 +332,13 @@ export function VariablesPanel() {
           scope={scope}
           target={showGlobals ? 'the global variables' : (pou?.name ?? 'the POU')}
           onClose={() => setPasting(undefined)}
+          onPasted={(names) => {
+            // Show the first pasted row.
+            if (!names[0]) return;
+            setFilter('');
+            revealSeq.current += 1;
+            setReveal({ name: names[0], focus: false, seq: revealSeq.current });
+          }}
         />
       )}
       <p className="rs-var-summary" aria-live="polite">
