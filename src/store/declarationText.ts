@@ -7,7 +7,7 @@ import type { VariableScope } from './changes';
 import type { DocumentStore } from './documentStore';
 import { renameVariable } from './renameVariable';
 
-/** The history step's name (the Edit menu shows "Undo edit declarations"). */
+/** The history step's name (DocumentState.undoName). */
 export const EDIT_DECLARATIONS = 'editDeclarations';
 
 /** The declared variables of a scope now. */

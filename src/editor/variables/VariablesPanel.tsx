@@ -193,7 +193,7 @@ export function VariablesPanel() {
             Global
           </label>
         </div>
-        <div role="radiogroup" aria-label="Variables view" className="rs-segmented">
+        <div role="radiogroup" aria-label="Variables view" className="rs-segmented rs-var-view">
           <label title="The variables as a table">
             <input
               type="radio"
