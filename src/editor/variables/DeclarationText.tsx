@@ -7,7 +7,7 @@
 // Keys: Tab / Shift+Tab indent and unindent (Escape first lets Tab leave the editor), Ctrl+Enter
 // applies, Ctrl+Z / Ctrl+Y undo and redo in the text while it has changes not applied, else the
 // document's undo and redo (so Ctrl+Z right after applying takes the whole edit back).
-import { useEffect, useMemo, useRef, useState, type KeyboardEvent } from 'react';
+import { useDeferredValue, useEffect, useMemo, useRef, useState, type KeyboardEvent } from 'react';
 import { useStore } from 'zustand';
 import {
   DECLARATION_SYNTAX_RULE,
@@ -20,7 +20,7 @@ import type { VariableScope } from '../../store/changes';
 import { applyDeclarationText, scopeVariables } from '../../store/declarationText';
 import { selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import type { Variable } from '../../model/project';
-import { declarationView, setPending } from './declarationView';
+import { declarationView, draftOf, keepDraft, setPending } from './declarationView';
 import { validateVariables } from './validation';
 import './declarationText.css';
 
@@ -31,6 +31,9 @@ interface Props {
 }
 
 const NO_VARS: readonly Variable[] = [];
+/** Texts longer than this (about 200 declarations) are checked once typing pauses for PAUSE_MS. */
+const LONG_TEXT = 8000;
+const PAUSE_MS = 150;
 
 /** Offset of 1-based line/col in `text`. */
 function offsetOf(text: string, line: number, col: number): number {
@@ -68,7 +71,11 @@ export function DeclarationText({ scope, pouName }: Props) {
   const section: DeclarationSection = scope === 'globals' ? 'globals' : 'pou';
   const printed = useMemo(() => printDeclarations(vars, section), [vars, section]);
   const owner = pouName ?? 'Global variables';
-  const [draft, setDraft] = useState(() => declarationView.getState().pending.get(scope)?.text ?? printed);
+  const [draft, setDraftState] = useState(() => draftOf(scope) ?? printed);
+  const setDraft = (text: string) => {
+    setDraftState(text);
+    keepDraft(scope, text);
+  };
   /** The text the draft started from: while they are equal, model changes re-print the text. */
   const [basis, setBasis] = useState(printed);
   const [shownScope, setShownScope] = useState(scope);
@@ -80,19 +87,30 @@ export function DeclarationText({ scope, pouName }: Props) {
   // Another list, or the model changed while the text has no changes of its own: show it afresh.
   if (shownScope !== scope) {
     setShownScope(scope);
-    setDraft(declarationView.getState().pending.get(scope)?.text ?? printed);
+    setDraftState(draftOf(scope) ?? printed);
     setBasis(printed);
     setNote('');
   } else if (basis !== printed) {
     setBasis(printed);
-    if (draft === basis) setDraft(printed);
+    if (draft === basis) setDraftState(printed);
     else
       setNote(
         'The variables changed elsewhere (table, undo) while this text has changes: applying it makes them what the text says; Revert shows them.',
       );
   }
 
-  const parsed = useMemo(() => parseDeclarations(draft, section), [draft, section]);
+  // Parsed and checked behind the typing: at once for a POU's few lines (deferred, so the
+  // keystroke paints first); on long lists (hundreds of globals) once typing pauses.
+  const deferred = useDeferredValue(draft);
+  const long = draft.length > LONG_TEXT;
+  const [paused, setPaused] = useState(draft);
+  useEffect(() => {
+    if (!long) return undefined;
+    const timer = setTimeout(() => setPaused(draft), PAUSE_MS);
+    return () => clearTimeout(timer);
+  }, [draft, long]);
+  const checkedDraft = long ? paused : deferred;
+  const parsed = useMemo(() => parseDeclarations(checkedDraft, section), [checkedDraft, section]);
   const dirty = draft !== printed;
   const issues = useMemo(() => {
     if (!parsed.ok) return [];
@@ -104,12 +122,11 @@ export function DeclarationText({ scope, pouName }: Props) {
   }, [parsed, project, pouName]);
 
   // Unapplied text with problems stays listed (Problems list) until fixed or reverted.
+  const checkedDirty = checkedDraft !== printed;
   useEffect(() => {
-    if (dirty && parsed.problems.some((p) => p.severity === 'error'))
-      setPending(scope, { text: draft, owner, problems: parsed.problems });
-    else if (dirty) setPending(scope, { text: draft, owner, problems: [] });
-    else setPending(scope, undefined);
-  }, [scope, draft, dirty, parsed, owner]);
+    const errors = parsed.problems.filter((p) => p.severity === 'error');
+    setPending(scope, checkedDirty && errors.length > 0 ? { owner, problems: errors } : undefined);
+  }, [scope, checkedDirty, parsed, owner]);
 
   const reveal = useStore(declarationView, (s) => s.reveal);
   const revealed = useRef(0);
@@ -126,28 +143,31 @@ export function DeclarationText({ scope, pouName }: Props) {
 
   const apply = (): boolean => {
     if (!dirty) return true;
-    if (!parsed.ok) {
-      const n = parsed.problems.filter((p) => p.severity === 'error').length;
+    const now = draft === checkedDraft ? parsed : parseDeclarations(draft, section);
+    if (!now.ok) {
+      const n = now.problems.filter((p) => p.severity === 'error').length;
       setNote(
         `Not applied: ${n} syntax error${n === 1 ? '' : 's'} (see below). The variables are unchanged; fix the text or Revert.`,
       );
       return false;
     }
-    const result = applyDeclarationText(store, scope, parsed.variables);
+    const result = applyDeclarationText(store, scope, now.variables);
     if (!result.ok) {
       setNote(`Not applied: ${result.reason}`);
       return false;
     }
-    const now = printDeclarations(scopeVariables(store, scope), section);
-    setDraft(now);
-    setBasis(now);
+    const reprinted = printDeclarations(scopeVariables(store, scope), section);
+    setDraftState(reprinted);
+    keepDraft(scope, undefined);
+    setBasis(reprinted);
     setNote('');
     setPending(scope, undefined);
     return true;
   };
 
   const revert = () => {
-    setDraft(printed);
+    setDraftState(printed);
+    keepDraft(scope, undefined);
     setNote('');
     setPending(scope, undefined);
   };
@@ -209,7 +229,12 @@ export function DeclarationText({ scope, pouName }: Props) {
   };
 
   const errors = parsed.problems.filter((p) => p.severity === 'error');
-  const lineCount = draft.split('\n').length;
+  const lineCount = useMemo(() => {
+    let n = 1;
+    for (let i = draft.indexOf('\n'); i >= 0; i = draft.indexOf('\n', i + 1)) n++;
+    return n;
+  }, [draft]);
+  const numbers = useMemo(() => Array.from({ length: lineCount }, (_, i) => i + 1).join('\n'), [lineCount]);
   const marks = new Map<number, { severity: 'error' | 'warning'; messages: string[] }>();
   const mark = (line: number, severity: 'error' | 'warning', message: string) => {
     const m = marks.get(line) ?? { severity, messages: [] };
@@ -231,19 +256,18 @@ export function DeclarationText({ scope, pouName }: Props) {
     <div className="rs-decl-text" data-testid="declaration-text">
       <div className="rs-decl-editor">
         <div className="rs-decl-gutter" ref={gutter} aria-hidden="true">
-          {Array.from({ length: lineCount }, (_, i) => {
-            const m = marks.get(i + 1);
-            return (
-              <div
-                key={i}
-                className={m ? `rs-decl-line rs-decl-${m.severity}` : 'rs-decl-line'}
-                data-line={i + 1}
-                title={m?.messages.join('\n')}
-              >
-                {i + 1}
-              </div>
-            );
-          })}
+          <pre className="rs-decl-numbers">{numbers}</pre>
+          {[...marks].map(([line, m]) => (
+            <div
+              key={line}
+              className={`rs-decl-line rs-decl-${m.severity}`}
+              data-line={line}
+              style={{ top: 4 + (line - 1) * 18 }}
+              title={m.messages.join('\n')}
+            >
+              {line}
+            </div>
+          ))}
         </div>
         <textarea
           ref={area}

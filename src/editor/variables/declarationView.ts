@@ -17,9 +17,8 @@ function readView(): VariablesView {
   }
 }
 
-/** Text typed in the text view and not applied (it does not parse, or focus has not left yet). */
+/** Syntax errors of text typed in the text view and not applied (it does not parse). */
 export interface PendingText {
-  readonly text: string;
   /** Who it declares, for the Problems list: the POU's name, or "Global variables". */
   readonly owner: string;
   readonly problems: readonly DeclarationProblem[];
@@ -49,13 +48,25 @@ export function setVariablesView(view: VariablesView): void {
   }
 }
 
+const pendingKey = (p: PendingText | undefined) =>
+  p ? `${p.owner}\n${p.problems.map((e) => `${e.severity}:${e.line}:${e.col}:${e.message}`).join('\n')}` : '';
+
+/** Records (or clears) the syntax errors of a list's unapplied text; no change, no notification. */
 export function setPending(scope: VariableScope, pending: PendingText | undefined): void {
   const current = declarationView.getState().pending;
-  if (!pending && !current.has(scope)) return;
+  if (pendingKey(current.get(scope)) === pendingKey(pending)) return;
   const next = new Map(current);
   if (pending) next.set(scope, pending);
   else next.delete(scope);
   declarationView.setState({ pending: next });
+}
+
+/** Unapplied text per list, kept while the text view is closed (read when it opens again). */
+const drafts = new Map<VariableScope, string>();
+export const draftOf = (scope: VariableScope): string | undefined => drafts.get(scope);
+export function keepDraft(scope: VariableScope, text: string | undefined): void {
+  if (text === undefined) drafts.delete(scope);
+  else drafts.set(scope, text);
 }
 
 let seq = 0;

@@ -177,7 +177,7 @@ export function parseDeclarations(text: string, section: DeclarationSection): De
   };
   const all: Tok[] = raw.map((t) => {
     const start = starts[t.pos.line - 1]! + t.pos.col - 1;
-    return { ...t, start, end: start + t.text.length };
+    return { kind: t.kind, text: t.text, upper: t.upper, pos: t.pos, start, end: start + t.text.length };
   });
   const comments: Comment[] = [];
   let prevEnd = 0;
@@ -403,12 +403,17 @@ export function parseDeclarations(text: string, section: DeclarationSection): De
     if (!s) owner.set(d, (s = { lead: [], own: [] }));
     return s;
   };
+  // Comments and declarations both run in text order: one pass with two pointers.
+  const byFirst = new Map(decls.map((x) => [x.first, x]));
+  let k = 0; // first declaration whose ";" ends after the comment's start
+  let n = 0; // first token after the comment's start
   for (const c of comments) {
-    const inside = decls.find((x) => x.first <= c.start && c.start < x.semi.end);
-    let before: Decl | undefined;
-    for (const x of decls) if (x.semi.end <= c.start) before = x;
-    const next = toks.find((t) => t.start > c.start);
-    const below = next && decls.find((x) => x.first === next.start);
+    while (k < decls.length && decls[k]!.semi.end <= c.start) k++;
+    while (n < toks.length && toks[n]!.start <= c.start) n++;
+    const inside = decls[k] && decls[k]!.first <= c.start ? decls[k] : undefined;
+    const before = k > 0 ? decls[k - 1] : undefined;
+    const next = toks[n];
+    const below = next ? byFirst.get(next.start) : undefined;
     if (inside) slot(inside).own.push(c.text);
     else if (before && before.semi.pos.line === c.line) slot(before).own.push(c.text);
     else if (below && !headerLines.has(c.line)) slot(below).lead.push(c.text);
