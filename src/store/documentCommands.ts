@@ -338,6 +338,28 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
       const changes: Change[] = [{ type: 'variable.remove', scope: sc, index, variable }];
       commit('deleteVariable', [...changes, ...followInterface(get().project, sc, changes)]);
     },
+    reorderVariables: (names, scope) => {
+      const { scope: sc, vars } = scopeVars(scope);
+      const key = (n: string) => n.toUpperCase();
+      const rank = new Map(names.map((n, i) => [key(n), i]));
+      // Named variables in the given order; any not named keep their place after them.
+      const target = [...vars].sort(
+        (a, b) => (rank.get(key(a.name)) ?? names.length) - (rank.get(key(b.name)) ?? names.length),
+      );
+      const work = [...vars];
+      const changes: Change[] = [];
+      target.forEach((v, at) => {
+        const from = work.indexOf(v);
+        if (from === at) return;
+        work.splice(from, 1);
+        work.splice(at, 0, v);
+        changes.push({ type: 'variable.remove', scope: sc, index: from, variable: v });
+        changes.push({ type: 'variable.add', scope: sc, index: at, variable: v });
+      });
+      if (changes.length === 0) return false;
+      commit('reorderVariables', [...changes, ...followInterface(get().project, sc, changes)]);
+      return true;
+    },
     setProjectProfile: (profile) => {
       const before = get().project.profile;
       if (before !== profile)

@@ -68,6 +68,8 @@
 //                                     box instances and operands incl. `Name.Pin`) in the POU, or
 //                                     for a global in every POU that does not shadow it
 //   deleteVariable(name, scope?)      references stay (the checks report them)
+//   reorderVariables(names, scope?)   the variables in this order (by name; others after them);
+//                                     false when already so (the declaration text's order)
 //   setProjectProfile(profile), updateProject({name, description})
 //   undo(), redo()                    never touch selection (src/store/uiStore.ts)
 //   mark() / squash(mark, name)       merge the steps since mark into one (e.g. a typing burst)
@@ -181,6 +183,7 @@ export interface DocumentState {
   addVariable(v: Variable, scope?: VariableScope): boolean;
   updateVariable(name: string, patch: Partial<Variable>, scope?: VariableScope): boolean;
   deleteVariable(name: string, scope?: VariableScope): void;
+  reorderVariables(names: readonly string[], scope?: VariableScope): boolean;
   setProjectProfile(profile: Profile): void;
   updateProject(patch: Partial<Pick<Project, 'name' | 'description' | 'scenarios'>>): void;
 

@@ -10,6 +10,10 @@ import { useUiStore } from '../../store/uiStore';
 import { countBySeverity, diagnosticCell, diagnosticNetwork, sortDiagnostics } from './describe';
 import { useCheckedDiagnostics } from './useDiagnostics';
 import { focusVariable } from '../variables/variableFocus';
+import { declarationView, revealDeclarationText } from '../variables/declarationView';
+import { DECLARATION_SYNTAX_RULE } from '../../engine/st/declarations';
+import type { VariableScope } from '../../store/changes';
+import { useStore } from 'zustand';
 import './problems.css';
 
 /** The network and cell a diagnostic points at, resolved against the document. */
@@ -36,7 +40,31 @@ function showVariable(project: Project, pou: Pou, message: string) {
 const MAX_ROWS = 500;
 
 export function ProblemsPanel() {
-  const { diagnostics, checked } = useCheckedDiagnostics();
+  const checkedList = useCheckedDiagnostics();
+  const { checked } = checkedList;
+  // Declaration text not applied because it does not parse (variables panel, Text view): LD-E18.
+  const pending = useStore(declarationView, (s) => s.pending);
+  const textPlaces = useMemo(() => {
+    const places = new Map<Diagnostic, { scope: VariableScope; line: number; col: number }>();
+    for (const [scope, p] of pending)
+      for (const e of p.problems)
+        if (e.severity === 'error')
+          places.set(
+            {
+              severity: 'error',
+              rule: DECLARATION_SYNTAX_RULE,
+              pou: p.owner,
+              network: -1,
+              message: `declaration text, line ${e.line}, column ${e.col}: ${e.message} (not applied: the variables are unchanged)`,
+            },
+            { scope, line: e.line, col: e.col },
+          );
+    return places;
+  }, [pending]);
+  const diagnostics = useMemo(
+    () => (textPlaces.size ? [...textPlaces.keys(), ...checkedList.diagnostics] : checkedList.diagnostics),
+    [textPlaces, checkedList.diagnostics],
+  );
   const project = useDocument(selectProject);
   const pouCount = project.pous.length;
   const documentStore = useDocumentStore();
@@ -49,6 +77,8 @@ export function ProblemsPanel() {
   const manyPous = pouCount > 1 || new Set(diagnostics.map((d) => d.pou)).size > 1;
 
   const jump = (d: Diagnostic) => {
+    const text = textPlaces.get(d);
+    if (text) return revealDeclarationText(text.scope, text.line, text.col);
     const doc = documentStore.getState();
     const { pou, network, cell, element } = placeOf(doc.project, d);
     if (pou && pou.id !== doc.activePouId) doc.setActivePou(pou.id);
@@ -67,8 +97,8 @@ export function ProblemsPanel() {
           {!checked
             ? 'Checking…'
             : diagnostics.length === 0
-            ? 'No problems'
-            : `${errors} error${errors === 1 ? '' : 's'}, ${warnings} warning${warnings === 1 ? '' : 's'}`}
+              ? 'No problems'
+              : `${errors} error${errors === 1 ? '' : 's'}, ${warnings} warning${warnings === 1 ? '' : 's'}`}
         </span>
         <label className="rs-problems-toggle">
           <input type="checkbox" checked={showWarnings} onChange={(e) => setShowWarnings(e.target.checked)} />

@@ -19,6 +19,8 @@ import { isTablePaste, isTextField, lastRowEnter } from './tableKeys';
 import { scopeVariables } from '../../store/symbolPaste';
 import { CLASS_ORDER, VariableRow } from './VariableRow';
 import { variableFocus } from './variableFocus';
+import { DeclarationText } from './DeclarationText';
+import { declarationView, setVariablesView } from './declarationView';
 import { undeclaredVariables } from './undeclared';
 import { globalVariableUses, pouVariableUses, type VariableUse } from './usage';
 import { issuesByField, validateVariables } from './validation';
@@ -77,6 +79,15 @@ export function VariablesPanel() {
     revealSeq.current += 1;
     setReveal({ name: focusRequest.name, focus: true, seq: revealSeq.current });
   }, [focusRequest]);
+  // Table | Text (DeclarationText.tsx): the text view of the same list, the choice remembered.
+  const view = useStore(declarationView, (s) => s.view);
+  const textReveal = useStore(declarationView, (s) => s.reveal);
+  useEffect(() => {
+    if (!textReveal) return;
+    setShowGlobals(textReveal.scope === 'globals');
+    if (textReveal.scope !== 'globals' && textReveal.scope !== store.getState().activePouId)
+      store.getState().setActivePou(textReveal.scope);
+  }, [textReveal, store]);
   const query = filter.trim().toUpperCase();
   const shown = useMemo(() => {
     const rows = vars
@@ -208,7 +219,30 @@ export function VariablesPanel() {
             Global
           </label>
         </div>
+        <div role="radiogroup" aria-label="Variables view" className="rs-segmented rs-var-view">
+          <label title="The variables as a table">
+            <input
+              type="radio"
+              name="rs-var-view"
+              checked={view === 'table'}
+              onChange={() => setVariablesView('table')}
+              data-testid="variables-view-table"
+            />
+            Table
+          </label>
+          <label title="The declarations as IEC 61131-3 text (VAR_INPUT … END_VAR), edited like code">
+            <input
+              type="radio"
+              name="rs-var-view"
+              checked={view === 'text'}
+              onChange={() => setVariablesView('text')}
+              data-testid="variables-view-text"
+            />
+            Text
+          </label>
+        </div>
         <input
+          hidden={view === 'text'}
           type="search"
           aria-label="Filter variables"
           placeholder="Filter"
@@ -262,7 +296,10 @@ export function VariablesPanel() {
           {refusal}
         </p>
       )}
-      <div className="rs-var-scroll" ref={scroller}>
+      {view === 'text' && (
+        <DeclarationText key={scope} scope={scope} pouName={showGlobals ? undefined : pou?.name} />
+      )}
+      <div className="rs-var-scroll" ref={scroller} hidden={view === 'text'}>
         <table
           className="rs-var-table"
           aria-label={showGlobals ? 'Global variables' : `Variables of ${pou?.name ?? ''}`}

@@ -1,0 +1,78 @@
+// State of the variables panel's text view that outlives the component: which view the user
+// chose (Table | Text, kept in localStorage like the panel layout), the text not applied yet per
+// list (a POU's variables or the globals), so switching away never loses it, and its syntax
+// problems, which the Problems list shows with rule LD-E18 until they are fixed or reverted.
+import { createStore } from 'zustand/vanilla';
+import type { DeclarationProblem } from '../../engine/st/declarations';
+import type { VariableScope } from '../../store/changes';
+
+export const VARIABLES_VIEW_KEY = 'rungsmith.variablesView';
+export type VariablesView = 'table' | 'text';
+
+function readView(): VariablesView {
+  try {
+    return globalThis.localStorage?.getItem(VARIABLES_VIEW_KEY) === 'text' ? 'text' : 'table';
+  } catch {
+    return 'table';
+  }
+}
+
+/** Syntax errors of text typed in the text view and not applied (it does not parse). */
+export interface PendingText {
+  /** Who it declares, for the Problems list: the POU's name, or "Global variables". */
+  readonly owner: string;
+  readonly problems: readonly DeclarationProblem[];
+}
+
+export interface DeclarationViewState {
+  readonly view: VariablesView;
+  readonly pending: ReadonlyMap<VariableScope, PendingText>;
+  /** "Show line 3 of this text": the Problems list asks, the variables panel answers. */
+  readonly reveal:
+    | { readonly scope: VariableScope; readonly line: number; readonly col: number; readonly seq: number }
+    | undefined;
+}
+
+export const declarationView = createStore<DeclarationViewState>()(() => ({
+  view: readView(),
+  pending: new Map(),
+  reveal: undefined,
+}));
+
+export function setVariablesView(view: VariablesView): void {
+  declarationView.setState({ view });
+  try {
+    globalThis.localStorage?.setItem(VARIABLES_VIEW_KEY, view);
+  } catch {
+    // Private mode or storage full: the choice lasts for this page only.
+  }
+}
+
+const pendingKey = (p: PendingText | undefined) =>
+  p ? `${p.owner}\n${p.problems.map((e) => `${e.severity}:${e.line}:${e.col}:${e.message}`).join('\n')}` : '';
+
+/** Records (or clears) the syntax errors of a list's unapplied text; no change, no notification. */
+export function setPending(scope: VariableScope, pending: PendingText | undefined): void {
+  const current = declarationView.getState().pending;
+  if (pendingKey(current.get(scope)) === pendingKey(pending)) return;
+  const next = new Map(current);
+  if (pending) next.set(scope, pending);
+  else next.delete(scope);
+  declarationView.setState({ pending: next });
+}
+
+/** Unapplied text per list, kept while the text view is closed (read when it opens again). */
+const drafts = new Map<VariableScope, string>();
+export const draftOf = (scope: VariableScope): string | undefined => drafts.get(scope);
+export function keepDraft(scope: VariableScope, text: string | undefined): void {
+  if (text === undefined) drafts.delete(scope);
+  else drafts.set(scope, text);
+}
+
+let seq = 0;
+/** Opens the text view of `scope` with the caret at line/col (1-based). */
+export function revealDeclarationText(scope: VariableScope, line: number, col: number): void {
+  seq += 1;
+  declarationView.setState({ view: 'text', reveal: { scope, line, col, seq } });
+  document.getElementById('rs-tab-variables')?.click();
+}
