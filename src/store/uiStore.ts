@@ -98,6 +98,8 @@ export interface UiState {
   /** A short message for the status bar ("Nothing to paste"), cleared by the next action. */
   readonly status: string;
   readonly panels: PanelLayout;
+  /** View option: variables' comments under contacts, coils and box operands (remembered; off by default as in CODESYS). */
+  readonly symbolComments: boolean;
 
   select(network: NetworkId | undefined, elements: readonly ElementId[]): void;
   toggleSelected(network: NetworkId, element: ElementId): void;
@@ -117,6 +119,18 @@ export interface UiState {
   setPastePrompt(p: UiState['pastePrompt']): void;
   setFinder(f: UiState['finder']): void;
   setPanels(patch: Partial<PanelLayout>): void;
+  setSymbolComments(on: boolean): void;
+}
+
+/** localStorage key of the "Show symbol comments" view option. */
+export const SYMBOL_COMMENTS_KEY = 'rungsmith.symbolComments';
+
+function savedSymbolComments(): boolean {
+  try {
+    return typeof localStorage !== 'undefined' && localStorage.getItem(SYMBOL_COMMENTS_KEY) === 'on';
+  } catch {
+    return false;
+  }
 }
 
 export type UiStore = StoreApi<UiState>;
@@ -139,6 +153,7 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme' | 'panels'>
     pastePrompt: undefined,
     finder: undefined,
     panels: initial.panels ?? DEFAULT_PANELS,
+    symbolComments: savedSymbolComments(),
 
     select: (network, elements) =>
       set({
@@ -177,6 +192,14 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme' | 'panels'>
     setPastePrompt: (pastePrompt) => set({ pastePrompt }),
     setFinder: (finder) => set({ finder }),
     setPanels: (patch) => set({ panels: { ...get().panels, ...patch } }),
+    setSymbolComments: (symbolComments) => {
+      set({ symbolComments });
+      try {
+        if (typeof localStorage !== 'undefined') localStorage.setItem(SYMBOL_COMMENTS_KEY, symbolComments ? 'on' : 'off');
+      } catch {
+        // Private mode: the option is just not remembered.
+      }
+    },
   }));
 }
 

@@ -7,7 +7,8 @@ import type { LdElement } from '../../model/elements';
 import type { Network } from '../../model/project';
 import { isConnection, partnersOf } from '../../store/connectors';
 import { elementAt } from '../../store/networkEdits';
-import { CELL_H, headerHeight, layoutNetworks } from '../canvas/geometry';
+import { canvasLayoutFor } from '../canvas/canvasLayout';
+import { headerHeight, pitchOf } from '../canvas/geometry';
 import type { EditorContext } from '../commands/editorActions';
 import { libraryOf, networksOf } from '../commands/editorActions';
 
@@ -93,8 +94,9 @@ export function scrollNetworkIntoView(ctx: EditorContext, index: number): boolea
   const el = canvasElement();
   if (!network || !el) return false;
   const zoom = ctx.ui.getState().viewport.zoom;
-  const top = layoutNetworks(nets).tops[index]!;
-  const firstRow = headerHeight(network) + (network.collapsed ? 0 : CELL_H);
+  const layout = canvasLayoutFor(ctx.doc.getState(), ctx.ui.getState());
+  const top = layout.tops[index]!;
+  const firstRow = headerHeight(network) + (network.collapsed ? 0 : pitchOf(layout, index));
   const from = top * zoom;
   const to = (top + firstRow) * zoom;
   if (from >= el.scrollTop && to <= el.scrollTop + el.clientHeight) return false;
