@@ -34,7 +34,7 @@ const contact = (variable: string, col: number, comment?: string): LdElement => 
   col,
   ...(comment ? { comment } : {}),
 });
-const v = (name: string, comment = ''): Variable => ({ name, type: 'BOOL', class: 'VAR', comment }) as Variable;
+const v = (name: string, comment = ''): Variable => ({ name, type: 'BOOL', varClass: 'local', retain: false, comment });
 
 describe('collapsed networks', () => {
   it('a collapsed network is one header line, whatever its comment and rows', () => {

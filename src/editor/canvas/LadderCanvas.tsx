@@ -29,7 +29,16 @@ import { useDiagnosticsByNetwork } from '../problems/useDiagnostics';
 import { readCanvasTheme, type CanvasTheme } from '../theme/canvasTheme';
 import { BlockPicker } from './BlockPicker';
 import { CanvasEmpty } from './CanvasEmpty';
-import { cellRect, columnsOf, headerHeight, layoutNetworks, pitchOf, RAIL_X, visibleRange } from './geometry';
+import {
+  cellRect,
+  columnsOf,
+  headerHeight,
+  layoutNetworks,
+  networkIndexAt,
+  pitchOf,
+  RAIL_X,
+  visibleRange,
+} from './geometry';
 import { symbolCommentsFor } from './symbolComments';
 import { hoverText } from './hoverText';
 import { useSimStore } from '../sim/simContext';
@@ -52,6 +61,9 @@ const EMPTY_SET: ReadonlySet<ElementId> = new Set();
  * bands keep redraws rare while scrolling through networks; sideways scrolling is rarer. */
 const BAND_X = 160;
 const BAND_Y = 640;
+
+/** How far below the view's top edge (content pixels) the network "in view" is taken. */
+const VIEW_PROBE = 24;
 
 const windowFor = (left: number, top: number) => ({
   left: Math.max(0, Math.floor(left / BAND_X) * BAND_X - BAND_X),
@@ -201,6 +213,9 @@ export function LadderCanvas() {
     const world = worldRef.current;
     if (!el || !world) return;
     world.style.transform = `translate(${-el.scrollLeft}px, ${-el.scrollTop}px)`;
+    // The network at the top of the view (a little below the edge: a header just scrolling in counts).
+    const top = networks[networkIndexAt(layout, el.scrollTop / zoom + VIEW_PROBE)];
+    ui.getState().setViewNetwork(top?.id ?? networks[0]?.id);
     const w = windowFor(el.scrollLeft, el.scrollTop);
     if (w.left !== winRef.current.left || w.top !== winRef.current.top) {
       winRef.current = w;

@@ -291,6 +291,14 @@ export const COMMANDS: readonly EditorCommand[] = [
     run: (ctx) => ctx.ui.getState().setFinder('goto'),
   },
   {
+    id: 'nav.gotoExtend',
+    label: 'Extend selection to network…',
+    group: 'Network',
+    keys: ['mod+shift+g'],
+    inMenu: true,
+    run: (ctx) => ctx.ui.getState().setFinder('gotoExtend'),
+  },
+  {
     id: 'edit.find',
     label: 'Find / replace…',
     group: 'Edit',

@@ -19,8 +19,12 @@ export function revealNetwork(ctx: EditorContext, pou: PouId, network: NetworkId
   ctx.ui.getState().focusCell(network, cell);
 }
 
-/** Goes to network `text` (1-based number or label) of the shown POU; returns a problem to show, or ''. */
-export function goToNetwork(ctx: EditorContext, text: string): string {
+/**
+ * Goes to network `text` (1-based number or label) of the shown POU and selects it; returns a
+ * problem to show, or ''. With `extend` (Ctrl+Shift+G) the selection runs from its anchor (the last
+ * network selected, else the cursor's network) to the network entered, as a Shift+click does.
+ */
+export function goToNetwork(ctx: EditorContext, text: string, extend = false): string {
   const nets = networksOf(ctx);
   const t = text.trim();
   if (!t) return 'Type a network number or label.';
@@ -29,8 +33,20 @@ export function goToNetwork(ctx: EditorContext, text: string): string {
   const target = byLabel ?? (no >= 1 && no <= nets.length ? nets[no - 1] : undefined);
   if (!target) return `No network ${t}: this POU has networks 1 to ${nets.length}.`;
   const pou = ctx.doc.getState().activePouId;
+  const ui = ctx.ui.getState();
+  const ids = nets.map((n) => n.id);
+  const selected = ui.networkSelection.filter((id) => ids.includes(id));
+  const anchor = extend ? (selected[selected.length - 1] ?? ui.cursor?.network) : undefined;
   revealNetwork(ctx, pou, target.id);
-  ctx.ui.getState().selectNetworks([target.id]);
+  if (!anchor || !ids.includes(anchor)) {
+    ctx.ui.getState().selectNetworks([target.id]);
+    return '';
+  }
+  const a = ids.indexOf(anchor);
+  const b = ids.indexOf(target.id);
+  const range = ids.slice(Math.min(a, b), Math.max(a, b) + 1);
+  // The anchor stays last: the next extension starts from it again.
+  ctx.ui.getState().selectNetworks([...range.filter((id) => id !== anchor), anchor]);
   return '';
 }
 
