@@ -13,6 +13,11 @@ interface Placed {
   readonly id: ElementId;
   readonly row: number;
   readonly col: number;
+  /**
+   * The element's own comment (CODESYS "operand comment"), besides the network comment: shown
+   * under it on the canvas and in print, exported to PLCopen as a comment object beside it.
+   */
+  readonly comment?: string;
 }
 
 /** A horizontal link: copies the state on its left to its right. */

@@ -9,7 +9,7 @@ const int = z.number().int();
 const nonNeg = int.min(0);
 const extensions = z.record(z.string(), z.unknown()).optional();
 
-const placed = { id, row: nonNeg, col: nonNeg };
+const placed = { id, row: nonNeg, col: nonNeg, comment: z.string().optional() };
 const element = z.discriminatedUnion('kind', [
   z.object({ ...placed, kind: z.literal('link') }).strict(),
   z.object({ ...placed, kind: z.literal('contact'), contact: z.enum(CONTACT_TYPES), variable: z.string() }).strict(),

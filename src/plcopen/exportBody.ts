@@ -214,9 +214,12 @@ function writeElement(
   data: readonly string[] | undefined,
   library: BlockLibrary,
 ): void {
+  // The object's last children: its addData, then its own comment as `<documentation>` (TC6 puts
+  // documentation after addData in contact, coil, block, jump, return, connector and continuation).
   const addData = (extra?: string) => {
     const all = [...(extra ? [extra] : []), ...(data ?? [])];
     if (all.length) w.open('addData', undefined, () => all.forEach((d) => w.raw(d)));
+    if (el.comment) w.formatted('documentation', el.comment);
   };
   switch (el.kind) {
     case 'link':

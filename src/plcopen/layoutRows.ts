@@ -390,8 +390,19 @@ function pinOffset(list: readonly { pin: string; off: number }[], pin: string): 
   return 0;
 }
 
-/** The model element of a placed node. Literal objects, not spreads of a shared base: this runs for every element of the file. */
+/**
+ * The model element of a placed node, with the file's `<documentation>` of a contact, coil or block
+ * as the element's own comment.
+ */
 export function elementFor(n: GNode, id: ElementId, r: number, c: number): LdElement {
+  const el = bareElementFor(n, id, r, c);
+  if (el.kind !== 'contact' && el.kind !== 'coil' && el.kind !== 'box') return el;
+  const comment = n.obj.documentation();
+  return comment ? { ...el, comment } : el;
+}
+
+/** Literal objects, not spreads of a shared base: this runs for every element of the file. */
+function bareElementFor(n: GNode, id: ElementId, r: number, c: number): LdElement {
   switch (n.kind) {
     case 'contact':
       return { id, row: r, col: c, kind: 'contact', contact: n.contact ?? 'NO', variable: n.variable ?? '' };

@@ -37,6 +37,8 @@ export interface RawObject {
   readonly text: string;
   /** An attribute of the element (read from the document, without building the element). */
   attr(name: string): string | undefined;
+  /** The text of the element's `<documentation>` (an element's own comment), '' when none. Read on demand. */
+  documentation(): string;
   /** Position among the children of the body (file order). */
   readonly order: number;
 }
@@ -96,6 +98,11 @@ class LdObject implements RawObject {
   attr(name: string): string | undefined {
     const id = this.doc.id(name);
     return id === -1 ? undefined : this.doc.attr(this.index, id);
+  }
+  documentation(): string {
+    const id = this.doc.id('documentation');
+    const c = id === -1 ? -1 : this.doc.childById(this.index, id);
+    return c === -1 ? '' : deepText(this.doc.element(c)).trim();
   }
 }
 

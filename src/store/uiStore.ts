@@ -15,7 +15,8 @@
 //   networkSelection  whole networks selected by their headers (click, Shift/Ctrl-click,
 //                Shift+arrows); selecting elements clears it and the reverse
 //   pastePrompt  network clip text waiting for the choice keep / new FB instances
-//   finder       'find' | 'goto' | undefined — the find/replace panel or the go-to box is open
+//   finder       'find' | 'goto' | 'gotoExtend' | undefined — the find/replace panel or the go-to box is open
+//                (gotoExtend: Ctrl+Shift+G, the network entered extends the network selection)
 //   panels       sizes (CSS px) and collapsed flags of the shell's left, right and bottom panels, and
 //                where the variable table is docked; remembered by src/editor/layout/panelSizes.ts
 import { createElement, createContext, useContext, type ReactNode } from 'react';
@@ -94,10 +95,14 @@ export interface UiState {
   readonly blockPicker: { readonly network: NetworkId; readonly cell: Cell } | undefined;
   readonly networkSelection: readonly NetworkId[];
   readonly pastePrompt: { readonly text: string; readonly instances: readonly string[] } | undefined;
-  readonly finder: 'find' | 'goto' | undefined;
+  readonly finder: 'find' | 'goto' | 'gotoExtend' | undefined;
   /** A short message for the status bar ("Nothing to paste"), cleared by the next action. */
   readonly status: string;
   readonly panels: PanelLayout;
+  /** The network at the top of the canvas's view (the outline highlights it and keeps it visible). */
+  readonly viewNetwork: NetworkId | undefined;
+  /** View option: variables' comments under contacts, coils and box operands (remembered; off by default as in CODESYS). */
+  readonly symbolComments: boolean;
 
   select(network: NetworkId | undefined, elements: readonly ElementId[]): void;
   toggleSelected(network: NetworkId, element: ElementId): void;
@@ -117,6 +122,19 @@ export interface UiState {
   setPastePrompt(p: UiState['pastePrompt']): void;
   setFinder(f: UiState['finder']): void;
   setPanels(patch: Partial<PanelLayout>): void;
+  setSymbolComments(on: boolean): void;
+  setViewNetwork(id: NetworkId | undefined): void;
+}
+
+/** localStorage key of the "Show symbol comments" view option. */
+export const SYMBOL_COMMENTS_KEY = 'rungsmith.symbolComments';
+
+function savedSymbolComments(): boolean {
+  try {
+    return typeof localStorage !== 'undefined' && localStorage.getItem(SYMBOL_COMMENTS_KEY) === 'on';
+  } catch {
+    return false;
+  }
 }
 
 export type UiStore = StoreApi<UiState>;
@@ -139,6 +157,8 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme' | 'panels'>
     pastePrompt: undefined,
     finder: undefined,
     panels: initial.panels ?? DEFAULT_PANELS,
+    symbolComments: savedSymbolComments(),
+    viewNetwork: undefined,
 
     select: (network, elements) =>
       set({
@@ -177,6 +197,17 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme' | 'panels'>
     setPastePrompt: (pastePrompt) => set({ pastePrompt }),
     setFinder: (finder) => set({ finder }),
     setPanels: (patch) => set({ panels: { ...get().panels, ...patch } }),
+    setViewNetwork: (viewNetwork) => {
+      if (get().viewNetwork !== viewNetwork) set({ viewNetwork });
+    },
+    setSymbolComments: (symbolComments) => {
+      set({ symbolComments });
+      try {
+        if (typeof localStorage !== 'undefined') localStorage.setItem(SYMBOL_COMMENTS_KEY, symbolComments ? 'on' : 'off');
+      } catch {
+        // Private mode: the option is just not remembered.
+      }
+    },
   }));
 }
 

@@ -13,7 +13,7 @@ import { advancePast, tabToField, type EditorContext } from '../commands/editorA
 import { VariableInput, type EndKey } from '../inspector/VariableInput';
 import { PinOperandEditor } from './PinOperandEditor';
 import { INSTANCE_FIELD } from './pinOperands';
-import { CELL_H, cellRect, columnsOf, headerHeight, RAIL_X, type CanvasLayout } from './geometry';
+import { cellRect, columnsOf, headerHeight, pitchOf, RAIL_X, type CanvasLayout } from './geometry';
 
 export interface InlineEditorProps {
   readonly layout: CanvasLayout;
@@ -95,7 +95,7 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
 
   const cell = cellRect(columnsOf(layout, network), el);
   const x = (RAIL_X + cell.x) * zoom;
-  const y = (layout.tops[index]! + headerHeight(network) + el.row * CELL_H + 4) * zoom;
+  const y = (layout.tops[index]! + headerHeight(network) + el.row * pitchOf(layout, index) + 4) * zoom;
   const width = Math.max(140, cell.width * zoom + 40);
   const style = { left: x - 20, top: y, width };
   const what =
@@ -110,6 +110,7 @@ export function InlineEditor({ layout, zoom, onDone }: InlineEditorProps) {
   if (editing?.pin !== undefined && el.kind === 'box') {
     return (
       <PinOperandEditor
+        pitch={pitchOf(layout, index)}
         box={el}
         network={network}
         pin={editing.pin}

@@ -8,6 +8,7 @@ import { Layer, Stage } from 'react-konva';
 import type { ElementId, NetworkId } from '../../model/ids';
 import {
   selectActivePou,
+  selectGlobals,
   selectLibrary,
   selectNetworks,
   useDocument,
@@ -28,7 +29,17 @@ import { useDiagnosticsByNetwork } from '../problems/useDiagnostics';
 import { readCanvasTheme, type CanvasTheme } from '../theme/canvasTheme';
 import { BlockPicker } from './BlockPicker';
 import { CanvasEmpty } from './CanvasEmpty';
-import { CELL_H, cellRect, columnsOf, headerHeight, layoutNetworks, RAIL_X, visibleRange } from './geometry';
+import {
+  cellRect,
+  columnsOf,
+  headerHeight,
+  layoutNetworks,
+  networkIndexAt,
+  pitchOf,
+  RAIL_X,
+  visibleRange,
+} from './geometry';
+import { symbolCommentsFor } from './symbolComments';
 import { hoverText } from './hoverText';
 import { useSimStore } from '../sim/simContext';
 import { simInputHint } from '../sim/useCanvasSimInput';
@@ -51,6 +62,9 @@ const EMPTY_SET: ReadonlySet<ElementId> = new Set();
 const BAND_X = 160;
 const BAND_Y = 640;
 
+/** How far below the view's top edge (content pixels) the network "in view" is taken. */
+const VIEW_PROBE = 24;
+
 const windowFor = (left: number, top: number) => ({
   left: Math.max(0, Math.floor(left / BAND_X) * BAND_X - BAND_X),
   top: Math.max(0, Math.floor(top / BAND_Y) * BAND_Y - BAND_Y),
@@ -71,7 +85,11 @@ export function LadderCanvas() {
   const themeName = useUi(selectTheme);
   const tool = useUi((s) => s.tool);
   const focusRequest = useUi((s) => s.focusRequest);
-  const layout = useMemo(() => layoutNetworks(networks, library), [networks, library]);
+  const showSymbolComments = useUi((s) => s.symbolComments);
+  const globals = useDocument(selectGlobals);
+  // Looked up per operand only when drawn or laid out (and memoised per network there).
+  const symbols = symbolCommentsFor(showSymbolComments, pou?.variables, globals);
+  const layout = useMemo(() => layoutNetworks(networks, library, symbols), [networks, library, symbols]);
   const diagnostics = useDiagnosticsByNetwork(pou?.name);
   const markers = useMemo(() => markersByNetwork(networks, diagnostics), [networks, diagnostics]);
 
@@ -148,7 +166,7 @@ export function LadderCanvas() {
     const n = networks[i];
     if (!n) return;
     if (n.collapsed) doc.getState().updateNetwork(n.id, { collapsed: false });
-    const y = layout.tops[i]! + headerHeight(n) + focusRequest.cell.row * CELL_H;
+    const y = layout.tops[i]! + headerHeight(n) + focusRequest.cell.row * pitchOf(layout, i);
     const x = RAIL_X + cellRect(columnsOf(layout, n), focusRequest.cell).x;
     el.scrollTop = Math.max(0, (y - 80) * zoom - el.clientHeight / 3);
     el.scrollLeft = Math.max(0, x * zoom - el.clientWidth / 2);
@@ -174,14 +192,15 @@ export function LadderCanvas() {
     const i = networks.findIndex((n) => n.id === cursor.network);
     const n = networks[i];
     if (!n) return;
-    const top = (layout.tops[i]! + headerHeight(n) + cursor.row * CELL_H) * zoom;
-    const cell = cellRect(columnsOf(layout, n), cursor);
+    const pitch = pitchOf(layout, i);
+    const top = (layout.tops[i]! + headerHeight(n) + cursor.row * pitch) * zoom;
+    const cell = cellRect(columnsOf(layout, n), cursor, 1, 1, pitch);
     const left = (RAIL_X + cell.x) * zoom;
     const margin = 24;
     if (top < el.scrollTop + margin)
       el.scrollTop = top - (i > 0 && cursor.row === 0 ? headerHeight(n) * zoom : 0) - margin;
-    else if (top + CELL_H * zoom > el.scrollTop + el.clientHeight - margin)
-      el.scrollTop = top + CELL_H * zoom - el.clientHeight + margin;
+    else if (top + pitch * zoom > el.scrollTop + el.clientHeight - margin)
+      el.scrollTop = top + pitch * zoom - el.clientHeight + margin;
     if (left < el.scrollLeft) el.scrollLeft = left - margin;
     else if (left + cell.width * zoom > el.scrollLeft + el.clientWidth)
       el.scrollLeft = left + cell.width * zoom - el.clientWidth + margin;
@@ -194,6 +213,9 @@ export function LadderCanvas() {
     const world = worldRef.current;
     if (!el || !world) return;
     world.style.transform = `translate(${-el.scrollLeft}px, ${-el.scrollTop}px)`;
+    // The network at the top of the view (a little below the edge: a header just scrolling in counts).
+    const top = networks[networkIndexAt(layout, el.scrollTop / zoom + VIEW_PROBE)];
+    ui.getState().setViewNetwork(top?.id ?? networks[0]?.id);
     const w = windowFor(el.scrollLeft, el.scrollTop);
     if (w.left !== winRef.current.left || w.top !== winRef.current.top) {
       winRef.current = w;
@@ -274,6 +296,8 @@ export function LadderCanvas() {
                           drag={dragPaints.get(n.id)}
                           zoom={zoom}
                           library={library}
+                          pitch={pitchOf(layout, i)}
+                          symbols={symbols}
                         />
                       );
                     })}
@@ -295,6 +319,7 @@ export function LadderCanvas() {
                     width={Math.max(layout.totalWidth, headerViewWidth(size.width, zoom))}
                     errors={m?.errors ?? 0}
                     warnings={m?.warnings ?? 0}
+                    pitch={pitchOf(layout, i)}
                   />
                 );
               })}

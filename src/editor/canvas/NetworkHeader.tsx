@@ -72,6 +72,8 @@ export interface NetworkHeaderProps {
   readonly width: number;
   readonly errors: number;
   readonly warnings: number;
+  /** Height of the network's rows (geometry.rowPitch). */
+  readonly pitch?: number;
 }
 
 export const NetworkHeader = memo(function NetworkHeader({
@@ -82,6 +84,7 @@ export const NetworkHeader = memo(function NetworkHeader({
   width,
   errors,
   warnings,
+  pitch,
 }: NetworkHeaderProps) {
   const doc = useDocumentStore();
   const ui = useUiStore();
@@ -110,7 +113,14 @@ export const NetworkHeader = memo(function NetworkHeader({
     <div
       className={`rs-network-header${dropTarget ? ' rs-drop-target' : ''}${selected ? ' rs-network-selected' : ''}`}
       data-selected={selected || undefined}
-      style={{ top, left: HEADER_LEFT, width: Math.max(headerNeed(n), width - RAIL_X), height: headerHeight(n) - 4 }}
+      style={{
+        top,
+        left: HEADER_LEFT,
+        width: Math.max(headerNeed(n), width - RAIL_X),
+        height: headerHeight(n) - (n.collapsed ? 1 : 4),
+      }}
+      title={n.collapsed && n.comment ? n.comment : undefined}
+      data-collapsed={n.collapsed || undefined}
       role="group"
       aria-label={`Network ${no}${n.label ? ` (${n.label})` : ''}`}
       data-testid={`network-header-${index}`}
@@ -137,7 +147,7 @@ export const NetworkHeader = memo(function NetworkHeader({
         >
           ⠿
         </span>
-        <NetworkSimMarker network={n} index={index} />
+        <NetworkSimMarker network={n} index={index} {...(pitch ? { pitch } : {})} />
         <button
           type="button"
           className="rs-icon-button"
@@ -234,15 +244,18 @@ export const NetworkHeader = memo(function NetworkHeader({
           ✕
         </button>
       </div>
-      <CommitField
-        value={n.comment}
-        onCommit={(comment) => update({ comment })}
-        label={`Comment of network ${no}`}
-        testId={`network-comment-${n.id}`}
-        placeholder="Comment"
-        className="rs-network-comment"
-        multiline={commentLines(n)}
-      />
+      {/* A collapsed network is its title bar alone (its comment shows as the header's tooltip). */}
+      {!n.collapsed && (
+        <CommitField
+          value={n.comment}
+          onCommit={(comment) => update({ comment })}
+          label={`Comment of network ${no}`}
+          testId={`network-comment-${n.id}`}
+          placeholder="Comment"
+          className="rs-network-comment"
+          multiline={commentLines(n)}
+        />
+      )}
     </div>
   );
 });

@@ -9,7 +9,7 @@ import type { BlockLibrary } from '../../model/library';
 import type { Network } from '../../model/project';
 import type { CanvasTheme } from '../theme/canvasTheme';
 import { drawNetworkGrid, type CellMarker, type NetworkPaint } from './drawNetwork';
-import { CELL_H, GRID_PAD_BOTTOM, headerHeight, networkWidth, RAIL_X } from './geometry';
+import { CELL_H, GRID_PAD_BOTTOM, headerHeight, networkWidth, RAIL_X, type SymbolComments } from './geometry';
 import { useOverlayHook } from './overlay';
 
 export interface NetworkShapeProps {
@@ -27,13 +27,18 @@ export interface NetworkShapeProps {
   readonly zoom: number;
   /** The project's blocks: user FB and function boxes are drawn with their own pins. */
   readonly library: BlockLibrary;
+  /** Height of the network's rows (geometry.rowPitch). */
+  readonly pitch?: number;
+  /** Variables' comments drawn under operands (the view option on), else undefined. */
+  readonly symbols?: SymbolComments | undefined;
 }
 
 /** Room around the grid inside the cached bitmap (drag ghosts, marks at the edges). */
 const CACHE_MARGIN = 12;
 
 export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps) {
-  const { network, index, top, theme, selected, cursor, hover, markers, drag, zoom, library } = props;
+  const { network, index, top, theme, selected, cursor, hover, markers, drag, zoom, library, symbols } = props;
+  const pitch = props.pitch ?? CELL_H;
   const ref = useRef<Konva.Shape>(null);
   const overlay = useOverlayHook()(network, index);
   const paint = useMemo<NetworkPaint>(
@@ -43,16 +48,18 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
       cursor,
       hover,
       markers,
+      ...(pitch !== CELL_H ? { pitch } : {}),
+      ...(symbols ? { symbols } : {}),
       ...(drag ? { drag } : {}),
       ...(overlay.power ? { power: overlay.power } : {}),
       ...(overlay.liveValues ? { liveValues: overlay.liveValues } : {}),
       ...(overlay.forced ? { forced: overlay.forced } : {}),
       ...(overlay.device ? { device: overlay.device } : {}),
     }),
-    [library, selected, cursor, hover, markers, drag, overlay.power, overlay.liveValues, overlay.forced, overlay.device],
+    [library, selected, cursor, hover, markers, pitch, symbols, drag, overlay.power, overlay.liveValues, overlay.forced, overlay.device],
   );
   const width = networkWidth(network, library);
-  const height = network.rows * CELL_H + GRID_PAD_BOTTOM;
+  const height = network.rows * pitch + GRID_PAD_BOTTOM;
   // Each network is drawn once into a bitmap; scrolling then only copies bitmaps, which keeps
   // frames short with many symbols and texts on screen. Redrawn when anything it shows changes.
   useLayoutEffect(() => {

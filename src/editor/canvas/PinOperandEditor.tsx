@@ -27,12 +27,14 @@ export interface PinOperandEditorProps {
   readonly left: number;
   readonly width: number;
   readonly top: number;
+  /** Height of the network's rows (pins are this far apart). */
+  readonly pitch?: number;
   readonly zoom: number;
   /** Ends editing (moving the cursor past the box when `advance`). */
   readonly close: (advance: boolean) => void;
 }
 
-export function PinOperandEditor({ box, network, pin, left, width, top, zoom, close }: PinOperandEditorProps) {
+export function PinOperandEditor({ box, network, pin, left, width, top, zoom, close, pitch = CELL_H }: PinOperandEditorProps) {
   const doc = useDocumentStore();
   const ui = useUiStore();
   const library = useDocument(selectLibrary);
@@ -64,7 +66,7 @@ export function PinOperandEditor({ box, network, pin, left, width, top, zoom, cl
   const x = slot.side === 'input' ? left + PIN_LEAD * zoom - FIELD_W : left + width - PIN_LEAD * zoom;
   const style = {
     left: Math.max(0, x),
-    top: top + (slot.rowOffset * CELL_H + WIRE_Y - 4 - FIELD_H) * zoom,
+    top: top + (slot.rowOffset * pitch + WIRE_Y - 4 - FIELD_H) * zoom,
     width: FIELD_W,
   };
   const label = `${slot.side === 'input' ? 'Input' : 'Output'} ${pin} of ${box.instance || box.blockType}`;

@@ -73,7 +73,7 @@ export function drawConnection(ctx: Ctx, t: CanvasTheme, el: ConnectionElement, 
 }
 
 /** While the pointer rests on a connector or continuation: it and its partners outlined. */
-export function drawConnectionPartners(ctx: Ctx, t: CanvasTheme, n: Network, hover: Cell, lib?: BlockLibrary) {
+export function drawConnectionPartners(ctx: Ctx, t: CanvasTheme, n: Network, hover: Cell, lib?: BlockLibrary, pitch = CELL_H) {
   const el: LdElement | undefined = elementAt(n, hover, lib);
   if (!el || !isConnection(el)) return;
   const partners = partnersOf(n, el);
@@ -83,7 +83,7 @@ export function drawConnectionPartners(ctx: Ctx, t: CanvasTheme, n: Network, hov
   ctx.setLineDash([3, 3]);
   const nc = networkColumns(n, lib);
   for (const p of [el, ...partners]) {
-    const r = cellRect(nc, p);
+    const r = cellRect(nc, p, 1, 1, pitch);
     ctx.strokeRect(r.x + 4, r.y + 6, r.width - 8, CELL_H - 12);
   }
   ctx.setLineDash([]);

@@ -14,7 +14,7 @@ import { networkColumns, type NetworkColumns } from './columns';
 import { drawConnectionPartners } from './drawConnectors';
 import { openPins } from './pinOperands';
 import { BOX_TOP, drawElement, wire, wireStyle } from './drawSymbols';
-import { CELL_H, cellRect, GRID_PAD_BOTTOM, WIRE_Y } from './geometry';
+import { CELL_H, cellRect, elementCommentText, GRID_PAD_BOTTOM, WIRE_Y, type SymbolComments } from './geometry';
 
 export interface CellMarker {
   readonly cell: Cell;
@@ -30,6 +30,10 @@ export interface NetworkPaint {
   readonly cursor: Cell | undefined;
   readonly hover: Cell | undefined;
   readonly markers: readonly CellMarker[];
+  /** Height of the network's rows (CELL_H when absent; taller when comments are shown under operands). */
+  readonly pitch?: number;
+  /** Variables' comments, shown under their operands (the "symbol comments" view option). */
+  readonly symbols?: SymbolComments;
   /** Simulation power flow, aligned with network.elements / network.vlinks. */
   readonly power?: NetworkPower;
   readonly liveValues?: ReadonlyMap<ElementId, string>;
@@ -53,9 +57,9 @@ type Ctx = CanvasRenderingContext2D;
 type Rect = { x: number; y: number; width: number; height: number };
 
 /** An element's drawn rectangle (grid coordinates). */
-const elementRect = (nc: NetworkColumns, el: LdElement, lib?: BlockLibrary): Rect => {
+const elementRect = (nc: NetworkColumns, el: LdElement, lib?: BlockLibrary, pitch = CELL_H): Rect => {
   const s = elementSize(el, lib);
-  return cellRect(nc, el, s.cols, s.rows);
+  return cellRect(nc, el, s.cols, s.rows, pitch);
 };
 
 /** Height of a device / "Why?" tag: it ends above the variable name drawn over the element. */
@@ -110,7 +114,7 @@ export const MARKER_CORNER = 13;
  * A diagnostic marker: a dashed outline around the element's symbol (below its name or
  * instance name, so it never hides them) and a filled triangle in the cell's bottom-left corner.
  */
-function drawMarker(ctx: Ctx, t: CanvasTheme, m: CellMarker, r: Rect, box: boolean) {
+function drawMarker(ctx: Ctx, t: CanvasTheme, m: CellMarker, r: Rect, box: boolean, pitch: number) {
   const top = box ? BOX_MARKER_TOP : MARKER_TOP;
   ctx.strokeStyle = m.severity === 'error' ? t.error : t.warning;
   ctx.fillStyle = ctx.strokeStyle;
@@ -118,7 +122,7 @@ function drawMarker(ctx: Ctx, t: CanvasTheme, m: CellMarker, r: Rect, box: boole
   ctx.setLineDash([5, 3]);
   ctx.strokeRect(r.x + 3, r.y + top, r.width - 6, r.height - top - 3);
   ctx.setLineDash([]);
-  const bottom = m.cell.row * CELL_H + CELL_H - 3;
+  const bottom = m.cell.row * pitch + CELL_H - 3;
   ctx.beginPath();
   ctx.moveTo(r.x + 3, bottom - MARKER_CORNER);
   ctx.lineTo(r.x + 3, bottom);
@@ -128,30 +132,31 @@ function drawMarker(ctx: Ctx, t: CanvasTheme, m: CellMarker, r: Rect, box: boole
 }
 
 /** The wire drawn on from a coil's own cell to the coil at the right rail. */
-function drawCoilRuns(ctx: Ctx, t: CanvasTheme, n: Network, nc: NetworkColumns, paint: NetworkPaint) {
+function drawCoilRuns(ctx: Ctx, t: CanvasTheme, n: Network, nc: NetworkColumns, paint: NetworkPaint, pitch: number) {
   n.elements.forEach((el, i) => {
     if (el.kind !== 'coil' || nc.alignedAt[el.row] !== el.col) return;
     const power = paint.power ? (paint.power.elements[i] ?? 0) : undefined;
     ctx.save();
     if (paint.drag?.ids.has(el.id)) ctx.globalAlpha = 0.35;
     ctx.lineCap = 'round';
-    wire(ctx, t, nc.xs[el.col]!, nc.xs[n.cols - 1]!, el.row * CELL_H + WIRE_Y, power, 1);
+    wire(ctx, t, nc.xs[el.col]!, nc.xs[n.cols - 1]!, el.row * pitch + WIRE_Y, power, 1);
     ctx.restore();
   });
 }
 
 export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: NetworkPaint) {
   const nc = networkColumns(n, paint.library);
+  const pitch = paint.pitch ?? CELL_H;
   const w = nc.xs[n.cols]!;
-  const h = n.rows * CELL_H;
+  const h = n.rows * pitch;
   ctx.fillStyle = t.networkBg;
   ctx.fillRect(0, 0, w, h + GRID_PAD_BOTTOM);
   // Cell corners as small dots: enough to read the grid without clutter.
   ctx.fillStyle = t.grid;
   for (let r = 0; r <= n.rows; r++)
-    for (let c = 1; c < n.cols; c++) ctx.fillRect(nc.xs[c]! - 1, r * CELL_H - 1, 2, 2);
+    for (let c = 1; c < n.cols; c++) ctx.fillRect(nc.xs[c]! - 1, r * pitch - 1, 2, 2);
   if (paint.hover) {
-    const r = cellRect(nc, paint.hover);
+    const r = cellRect(nc, paint.hover, 1, 1, pitch);
     ctx.fillStyle = t.hover;
     ctx.fillRect(r.x, r.y, r.width, r.height);
   }
@@ -174,24 +179,28 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     const x = nc.xs[v.boundary] ?? w;
     wireStyle(ctx, t, simulating, on);
     ctx.beginPath();
-    ctx.moveTo(x, v.row * CELL_H + WIRE_Y);
-    ctx.lineTo(x, (v.row + 1) * CELL_H + WIRE_Y);
+    ctx.moveTo(x, v.row * pitch + WIRE_Y);
+    ctx.lineTo(x, (v.row + 1) * pitch + WIRE_Y);
     ctx.stroke();
     ctx.setLineDash([]);
     ctx.fillStyle = ctx.strokeStyle;
-    ctx.fillRect(x - 2, v.row * CELL_H + WIRE_Y - 2, 4, 4);
-    ctx.fillRect(x - 2, (v.row + 1) * CELL_H + WIRE_Y - 2, 4, 4);
+    ctx.fillRect(x - 2, v.row * pitch + WIRE_Y - 2, 4, 4);
+    ctx.fillRect(x - 2, (v.row + 1) * pitch + WIRE_Y - 2, 4, 4);
   });
-  drawCoilRuns(ctx, t, n, nc, paint);
+  drawCoilRuns(ctx, t, n, nc, paint, pitch);
   n.elements.forEach((el, i) => {
     const dragged = paint.drag?.ids.has(el.id);
-    const r = elementRect(nc, el, paint.library);
+    const r = elementRect(nc, el, paint.library, pitch);
     ctx.save();
     if (dragged) ctx.globalAlpha = 0.35;
     ctx.translate(r.x, r.y);
     const live = paint.liveValues?.get(el.id);
+    const comment = elementCommentText(el, paint.symbols);
     drawElement(ctx, t, el, {
       width: r.width,
+      ...(pitch !== CELL_H ? { pitch } : {}),
+      ...(comment ? { comment } : {}),
+      ...(paint.symbols && el.kind === 'box' ? { operandComments: paint.symbols } : {}),
       ...(el.kind === 'box' ? { openPins: openPins(n, el, paint.library) } : {}),
       ...(paint.library ? { library: paint.library } : {}),
       ...(paint.power ? { power: paint.power.elements[i] ?? 0 } : {}),
@@ -200,26 +209,26 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     ctx.restore();
   });
   if (paint.forced)
-    for (const el of n.elements) if (paint.forced.has(el.id)) drawForcedMark(ctx, t, elementRect(nc, el, paint.library));
+    for (const el of n.elements) if (paint.forced.has(el.id)) drawForcedMark(ctx, t, elementRect(nc, el, paint.library, pitch));
   if (paint.device)
     for (const el of n.elements) {
       const text = paint.device.get(el.id);
-      if (text) drawDeviceMark(ctx, t, elementRect(nc, el, paint.library), text);
+      if (text) drawDeviceMark(ctx, t, elementRect(nc, el, paint.library, pitch), text);
     }
   for (const el of n.elements) {
     if (!paint.selected.has(el.id)) continue;
-    const r = elementRect(nc, el, paint.library);
+    const r = elementRect(nc, el, paint.library, pitch);
     ctx.fillStyle = t.selectionFill;
     ctx.strokeStyle = t.selection;
     ctx.lineWidth = 2;
     ctx.fillRect(r.x + 2, r.y + 2, r.width - 4, r.height - 4);
     ctx.strokeRect(r.x + 2, r.y + 2, r.width - 4, r.height - 4);
   }
-  if (paint.hover) drawConnectionPartners(ctx, t, n, paint.hover, paint.library);
+  if (paint.hover) drawConnectionPartners(ctx, t, n, paint.hover, paint.library, pitch);
   for (const m of paint.markers) {
     const el = elementAt(n, m.cell, paint.library);
-    const r = el ? { ...elementRect(nc, el, paint.library), height: CELL_H, y: m.cell.row * CELL_H } : cellRect(nc, m.cell);
-    drawMarker(ctx, t, m, r, el?.kind === 'box' && el.row === m.cell.row);
+    const r = el ? { ...elementRect(nc, el, paint.library, pitch), height: CELL_H, y: m.cell.row * pitch } : { ...cellRect(nc, m.cell, 1, 1, pitch), height: CELL_H };
+    drawMarker(ctx, t, m, r, el?.kind === 'box' && el.row === m.cell.row, pitch);
   }
   if (paint.drag) {
     const { dRow, dCol, blocked, ids, ghost } = paint.drag;
@@ -227,11 +236,15 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     const offset = ghost ? { dRow: 0, dCol: 0 } : { dRow, dCol };
     for (const el of shown) {
       const moved = { ...el, row: el.row + offset.dRow, col: el.col + offset.dCol };
-      const r = elementRect(nc, moved, paint.library);
+      const r = elementRect(nc, moved, paint.library, pitch);
       ctx.save();
       ctx.translate(r.x, r.y);
       ctx.globalAlpha = 0.85;
-      drawElement(ctx, t, moved, { width: r.width, ...(paint.library ? { library: paint.library } : {}) });
+      drawElement(ctx, t, moved, {
+        width: r.width,
+        ...(pitch !== CELL_H ? { pitch } : {}),
+        ...(paint.library ? { library: paint.library } : {}),
+      });
       ctx.strokeStyle = blocked ? t.error : t.selection;
       ctx.setLineDash([4, 3]);
       ctx.lineWidth = 1.5;
@@ -247,12 +260,12 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     ctx.lineWidth = 2.5;
     if (k >= 0 && col > k && col < n.cols) {
       // An empty cell past a rail-aligned coil: after the end of the rung, a bar right of the rail.
-      ctx.strokeRect(w + 4, row * CELL_H + 6, 5, CELL_H - 12);
+      ctx.strokeRect(w + 4, row * pitch + 6, 5, pitch - 12);
     } else {
       // On a box (or any element of several cells) the cursor frames the whole element: it stands
       // on the element, never on one of its halves.
       const el = elementAt(n, paint.cursor, paint.library);
-      const r = el && el.kind !== 'link' ? elementRect(nc, el, paint.library) : cellRect(nc, paint.cursor);
+      const r = el && el.kind !== 'link' ? elementRect(nc, el, paint.library, pitch) : cellRect(nc, paint.cursor, 1, 1, pitch);
       ctx.strokeRect(r.x + 1, r.y + 1, r.width - 2, r.height - 2);
     }
   }

@@ -16,7 +16,7 @@ import {
 } from '../theme/monitorStyle';
 import { BOX_MARGIN, boxMetrics, CELL_W, JUMP_RAIL_GAP, JUMP_TEXT_X, jumpText } from './columns';
 import { drawConnection } from './drawConnectors';
-import { elide, type ElementPaint } from './elementPaint';
+import { elide, wrapLines, type ElementPaint } from './elementPaint';
 import { CELL_H, WIRE_Y } from './geometry';
 import { FONT, FONT_BOLD, FONT_SMALL, FONT_SMALL_BOLD, MONO_SMALL_BOLD } from './textWidth';
 
@@ -60,6 +60,33 @@ function leads(ctx: Ctx, t: CanvasTheme, a: number, b: number, w: number, power:
   wire(ctx, t, b, w, WIRE_Y, power, 2);
   ctx.lineWidth = 1.5;
   ctx.strokeStyle = t.symbol;
+}
+
+/** Comments under operands: small italic text, two lines at most, each LINE_COMMENT high. */
+export const FONT_COMMENT = 'italic 10px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
+const COMMENT_LINE = 11;
+const COMMENT_LINES = 2;
+/** Top of a contact's or coil's comment: the cell's own height (the comment band lies below it). */
+const COMMENT_TOP = CELL_H - 1;
+
+/**
+ * A comment under an operand, wrapped into at most two lines of `width` and cut with an ellipsis
+ * after that (never into a neighbour's cell). `align` as canvas textAlign at `x`.
+ */
+function commentAt(ctx: Ctx, t: CanvasTheme, text: string, x: number, top: number, width: number, align: CanvasTextAlign) {
+  if (width < 8) return;
+  ctx.font = FONT_COMMENT;
+  ctx.fillStyle = t.muted;
+  ctx.textAlign = align;
+  ctx.textBaseline = 'top';
+  wrapLines(ctx, text, width, COMMENT_LINES).forEach((l, k) => ctx.fillText(l, x, top + k * COMMENT_LINE));
+  ctx.textBaseline = 'alphabetic';
+}
+
+/** The element's comment under a contact or coil (drawn only when its rows have the comment band). */
+function commentBelow(ctx: Ctx, t: CanvasTheme, paint: ElementPaint, w: number) {
+  if (!paint.comment || (paint.pitch ?? CELL_H) <= CELL_H) return;
+  commentAt(ctx, t, paint.comment, w / 2, COMMENT_TOP, w - 6, 'center');
 }
 
 function nameAbove(ctx: Ctx, t: CanvasTheme, text: string, missing: string, w: number) {
@@ -154,6 +181,7 @@ function drawContact(ctx: Ctx, t: CanvasTheme, el: ContactElement, paint: Elemen
   ctx.textBaseline = 'alphabetic';
   if (el.contact !== 'NOT') nameAbove(ctx, t, el.variable, '???', w);
   liveBelow(ctx, t, paint.liveValue, cx, WIRE_Y + 16, w);
+  commentBelow(ctx, t, paint, w);
 }
 
 const COIL_LETTER: Record<CoilElement['coil'], string> = {
@@ -196,6 +224,7 @@ function drawCoil(ctx: Ctx, t: CanvasTheme, el: CoilElement, paint: ElementPaint
   }
   nameAbove(ctx, t, el.variable, '???', w);
   liveBelow(ctx, t, paint.liveValue, cx, WIRE_Y + 16, w);
+  commentBelow(ctx, t, paint, w);
 }
 
 /** Where the instance name of a box is drawn (relative to the box's top-left cell corner). */
@@ -206,11 +235,13 @@ export const BOX_TOP = WIRE_Y - 24;
 function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint, w: number) {
   const layout = boxLayout(el, paint.library);
   const rows = layout?.rows ?? 1;
+  const pitch = paint.pitch ?? CELL_H;
+  const banded = pitch > CELL_H;
   const m = layout ? boxMetrics(el, layout, paint.openPins) : undefined;
   const left = m?.left ?? BOX_MARGIN;
   const right = w - (m?.rightMargin ?? BOX_MARGIN);
   const top = BOX_TOP;
-  const bottom = (rows - 1) * CELL_H + WIRE_Y + 14;
+  const bottom = (rows - 1) * pitch + WIRE_Y + 14;
   ctx.fillStyle = t.boxFill;
   ctx.strokeStyle = layout ? t.symbol : t.error;
   ctx.lineWidth = 1.5;
@@ -233,7 +264,7 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint, 
   const flowIn = powerFlowInput(layout)?.name;
   const flowOut = powerFlowOutput(layout)?.name;
   for (const pin of layout.inputs) {
-    const y = pin.rowOffset * CELL_H + WIRE_Y;
+    const y = pin.rowOffset * pitch + WIRE_Y;
     wire(ctx, t, 0, left, y, pin.name === flowIn ? paint.power : undefined, 1);
     ctx.font = FONT_SMALL;
     ctx.fillStyle = t.symbol;
@@ -244,10 +275,12 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint, 
       ctx.fillStyle = el.inputs[pin.name] ? t.operand : t.muted;
       ctx.textAlign = 'right';
       fillName(ctx, operand, left - 3, y - 4, left - 6);
+      const note = banded && el.inputs[pin.name] ? paint.operandComments?.(el.inputs[pin.name]!) : undefined;
+      if (note) commentAt(ctx, t, note, left - 3, y + 4, left - 6, 'right');
     }
   }
   for (const pin of layout.outputs) {
-    const y = pin.rowOffset * CELL_H + WIRE_Y;
+    const y = pin.rowOffset * pitch + WIRE_Y;
     wire(ctx, t, right, w, y, pin.name === flowOut ? paint.power : undefined, 2);
     ctx.font = FONT_SMALL;
     ctx.fillStyle = t.symbol;
@@ -259,9 +292,12 @@ function drawBox(ctx: Ctx, t: CanvasTheme, el: BoxElement, paint: ElementPaint, 
       ctx.fillStyle = el.outputs[pin.name] ? t.operand : t.muted;
       ctx.textAlign = 'left';
       fillName(ctx, operand, right + 3, y - 4, w - right - 6);
+      const note = banded && el.outputs[pin.name] ? paint.operandComments?.(el.outputs[pin.name]!) : undefined;
+      if (note) commentAt(ctx, t, note, right + 3, y + 4, w - right - 6, 'left');
     }
   }
   liveBelow(ctx, t, paint.liveValue, mid, bottom + 9, Math.max(right - left, w - 8));
+  if (banded && paint.comment) commentAt(ctx, t, paint.comment, mid, (rows - 1) * pitch + COMMENT_TOP, right - left - 4, 'center');
 }
 
 function drawLink(ctx: Ctx, t: CanvasTheme, paint: ElementPaint, w: number) {

@@ -2,6 +2,7 @@
 // in unscaled content coordinates (zoom is applied by the stage and the header overlay).
 import type { Cell } from '../../model/grid';
 import type { BlockLibrary } from '../../model/library';
+import type { LdElement } from '../../model/elements';
 import type { Network } from '../../model/project';
 import {
   boundaryAtX,
@@ -80,13 +81,71 @@ export function headerNeed(n: Pick<Network, 'title' | 'comment'>): number {
   return Math.max(TITLEBAR_REST_W + titleFieldWidth(n), COMMENT_INSET + comment);
 }
 
-export const headerHeight = (n: Pick<Network, 'comment'>): number =>
-  HEADER_TITLE_H + commentLines(n) * COMMENT_LINE_H + 6;
+/** A collapsed network is its title bar alone: one header line, a small gap below. */
+export const COLLAPSED_HEADER_H = HEADER_TITLE_H;
+export const COLLAPSED_GAP = 4;
 
-export const gridHeight = (n: Pick<Network, 'rows' | 'collapsed'>): number =>
-  n.collapsed ? 0 : n.rows * CELL_H + GRID_PAD_BOTTOM;
+export const headerHeight = (n: Pick<Network, 'comment' | 'collapsed'>): number =>
+  n.collapsed ? COLLAPSED_HEADER_H : HEADER_TITLE_H + commentLines(n) * COMMENT_LINE_H + 6;
 
-export const networkHeight = (n: Network): number => headerHeight(n) + gridHeight(n) + NETWORK_GAP;
+/**
+ * Comments under operands (CODESYS "Show symbol comment" and the per-element "operand comment"):
+ * a row that shows them is taller by COMMENT_BAND, two lines of small text under the symbol.
+ */
+export const COMMENT_BAND = 26;
+export const COMMENT_PITCH = CELL_H + COMMENT_BAND;
+
+/** The symbol comment of a variable name (the view option on), or undefined (off / none). */
+export type SymbolComments = (name: string) => string | undefined;
+
+/** Names an element writes under itself: contact/coil variable, or a box's instance. */
+function operandNames(el: LdElement): readonly string[] {
+  switch (el.kind) {
+    case 'contact':
+    case 'coil':
+      return el.variable ? [el.variable] : [];
+    case 'box':
+      return [...Object.values(el.inputs), ...Object.values(el.outputs)].filter(Boolean);
+    default:
+      return [];
+  }
+}
+
+/**
+ * The comment shown under a contact or coil: its own (operand) comment first, else the symbol
+ * comment of its variable (when the option gives `symbols`).
+ */
+export function elementCommentText(el: LdElement, symbols?: SymbolComments): string | undefined {
+  if (el.comment) return el.comment;
+  if (!symbols || (el.kind !== 'contact' && el.kind !== 'coil') || !el.variable) return undefined;
+  return symbols(el.variable);
+}
+
+const pitchMemo = new WeakMap<Network, { symbols: SymbolComments | undefined; pitch: number }>();
+
+/**
+ * Height of a network's rows: CELL_H, or COMMENT_PITCH when one of its elements shows a comment
+ * (its own, or its variables' with `symbols`). Memoised per network object and lookup.
+ */
+export function rowPitch(n: Network, symbols?: SymbolComments): number {
+  const hit = pitchMemo.get(n);
+  if (hit && hit.symbols === symbols) return hit.pitch;
+  let pitch = CELL_H;
+  for (const el of n.elements) {
+    if (el.comment || (symbols && operandNames(el).some((name) => symbols(name)))) {
+      pitch = COMMENT_PITCH;
+      break;
+    }
+  }
+  pitchMemo.set(n, { symbols, pitch });
+  return pitch;
+}
+
+export const gridHeight = (n: Pick<Network, 'rows' | 'collapsed'>, pitch = CELL_H): number =>
+  n.collapsed ? 0 : n.rows * pitch + GRID_PAD_BOTTOM;
+
+export const networkHeight = (n: Network, symbols?: SymbolComments): number =>
+  headerHeight(n) + gridHeight(n, rowPitch(n, symbols)) + (n.collapsed ? COLLAPSED_GAP : NETWORK_GAP);
 
 /** Width of a network's drawing: the rails and its columns (each as wide as its longest name). */
 export const networkWidth = (n: Network, library?: BlockLibrary): number =>
@@ -98,23 +157,36 @@ export interface CanvasLayout {
   readonly heights: Float64Array;
   readonly totalHeight: number;
   readonly totalWidth: number;
+  /** Height of each network's rows (CELL_H, or taller where comments are shown under operands). */
+  readonly pitches: Float64Array;
+  /** The symbol comments the layout was made with (undefined: the view option is off). */
+  readonly symbols: SymbolComments | undefined;
   /** The project's blocks the columns were measured with (user FB boxes and their pins). */
   readonly library: BlockLibrary | undefined;
 }
 
-export function layoutNetworks(networks: readonly Network[], library?: BlockLibrary): CanvasLayout {
+export function layoutNetworks(
+  networks: readonly Network[],
+  library?: BlockLibrary,
+  symbols?: SymbolComments,
+): CanvasLayout {
   const tops = new Float64Array(networks.length);
   const heights = new Float64Array(networks.length);
+  const pitches = new Float64Array(networks.length);
   let y = 8;
   let width = 480;
   networks.forEach((n, i) => {
     tops[i] = y;
-    heights[i] = networkHeight(n);
+    pitches[i] = rowPitch(n, symbols);
+    heights[i] = networkHeight(n, symbols);
     y += heights[i]!;
     width = Math.max(width, networkWidth(n, library) + 16, HEADER_LEFT + headerNeed(n) + 8);
   });
-  return { tops, heights, totalHeight: y + 40, totalWidth: width, library };
+  return { tops, heights, pitches, symbols, totalHeight: y + 40, totalWidth: width, library };
 }
+
+/** Row height of network `index` in a layout. */
+export const pitchOf = (layout: CanvasLayout, index: number): number => layout.pitches[index] ?? CELL_H;
 
 /** The columns of network `n` as laid out (the layout's library). */
 export const columnsOf = (layout: CanvasLayout, n: Network): NetworkColumns => networkColumns(n, layout.library);
@@ -128,9 +200,10 @@ export function cellRect(
   cell: Cell,
   cols = 1,
   rows = 1,
+  pitch = CELL_H,
 ): { x: number; y: number; width: number; height: number } {
   const d = displayCol(nc, cell.row, cell.col);
-  return { x: colLeft(nc, d), y: cell.row * CELL_H, width: spanWidth(nc, d, cols), height: rows * CELL_H };
+  return { x: colLeft(nc, d), y: cell.row * pitch, width: spanWidth(nc, d, cols), height: rows * pitch };
 }
 
 /** Index of the network containing content y (the last one starting at or above y), -1 before the first. */
@@ -163,7 +236,7 @@ export function visibleRange(
 export const HEADER_LEFT = RAIL_X - 20;
 
 /** Top-left of a network's cell grid relative to the network's top. */
-export const gridOrigin = (n: Pick<Network, 'comment'>): PixelPoint => ({ x: RAIL_X, y: headerHeight(n) });
+export const gridOrigin = (n: Pick<Network, 'comment' | 'collapsed'>): PixelPoint => ({ x: RAIL_X, y: headerHeight(n) });
 
 export type Hit =
   | { readonly area: 'none' }
@@ -186,13 +259,14 @@ export function hitTest(layout: CanvasLayout, networks: readonly Network[], p: P
   const local = p.y - layout.tops[index]!;
   const origin = gridOrigin(n);
   if (local < origin.y) return { area: 'header', index };
-  if (n.collapsed || local > origin.y + n.rows * CELL_H + GRID_PAD_BOTTOM) return { area: 'none' };
+  const pitch = pitchOf(layout, index);
+  if (n.collapsed || local > origin.y + n.rows * pitch + GRID_PAD_BOTTOM) return { area: 'none' };
   const nc = columnsOf(layout, n);
   const gx = p.x - origin.x;
   const gy = local - origin.y;
-  const row = Math.min(n.rows - 1, Math.max(0, Math.floor(gy / CELL_H)));
+  const row = Math.min(n.rows - 1, Math.max(0, Math.floor(gy / pitch)));
   const col = modelCol(nc, row, colAtX(nc, gx));
-  const wireRow = Math.max(0, Math.min(n.rows - 1, Math.floor((gy - WIRE_Y) / CELL_H)));
+  const wireRow = Math.max(0, Math.min(n.rows - 1, Math.floor((gy - WIRE_Y) / pitch)));
   const boundary = modelBoundary(nc, wireRow, boundaryAtX(nc, gx));
   return { area: 'grid', index, cell: { row, col }, boundary, wireRow };
 }
@@ -200,6 +274,7 @@ export function hitTest(layout: CanvasLayout, networks: readonly Network[], p: P
 /** Content point of the middle of a model cell of network `index` (where a user clicks it). */
 export function cellCentre(layout: CanvasLayout, networks: readonly Network[], index: number, cell: Cell): PixelPoint {
   const n = networks[index]!;
-  const r = cellRect(columnsOf(layout, n), cell);
+  const pitch = pitchOf(layout, index);
+  const r = cellRect(columnsOf(layout, n), cell, 1, 1, pitch);
   return { x: RAIL_X + r.x + r.width / 2, y: layout.tops[index]! + headerHeight(n) + r.y + CELL_H / 2 };
 }

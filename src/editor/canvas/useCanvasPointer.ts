@@ -23,7 +23,16 @@ import { needsName, placeAt, type EditorContext } from '../commands/editorAction
 import { dropInto, moveWithin, type DragState } from './dragTargets';
 import { useEdgeScroll } from './useEdgeScroll';
 import { colAtX, modelCol } from './columns';
-import { CELL_H, cellRect, columnsOf, gridOrigin, hitTest, type CanvasLayout, type PixelPoint } from './geometry';
+import {
+  cellRect,
+  columnsOf,
+  gridOrigin,
+  hitTest,
+  networkIndexAt,
+  pitchOf,
+  type CanvasLayout,
+  type PixelPoint,
+} from './geometry';
 
 export type { DragState } from './dragTargets';
 
@@ -72,7 +81,7 @@ export interface PointerView {
  * drawn on to a rail-aligned coil counts as the coil's cell).
  */
 function cellDelta(layout: CanvasLayout, n: Network, startCell: Cell, a: PixelPoint, b: PixelPoint) {
-  const dRow = Math.round((b.y - a.y) / CELL_H);
+  const dRow = Math.round((b.y - a.y) / pitchOf(layout, networkIndexAt(layout, a.y)));
   const nc = columnsOf(layout, n);
   const row = Math.max(0, Math.min(n.rows - 1, startCell.row + dRow));
   const col = modelCol(nc, row, colAtX(nc, b.x - gridOrigin(n).x));
@@ -283,7 +292,7 @@ export function useCanvasPointer(
       const nc = columnsOf(layout, n);
       const inside = n.elements.filter((el) => {
         const s = elementSize(el, view.current.library);
-        const r = cellRect(nc, el, s.cols, s.rows);
+        const r = cellRect(nc, el, s.cols, s.rows, pitchOf(layout, m.index));
         const cx = r.x + r.width / 2;
         const cy = r.y + r.height / 2;
         return cx >= x1 && cx <= x2 && cy >= y1 && cy <= y2;

@@ -44,6 +44,8 @@ export interface EditorCommand {
   readonly inMenu?: boolean;
   run(ctx: EditorContext): void;
   enabled?(ctx: EditorContext): boolean;
+  /** A view option the command switches: whether it is on (the menu shows a check mark). */
+  checked?(ctx: EditorContext): boolean;
 }
 
 /** Focuses a field of a network header once it is on screen (after focusCell scrolled there). */
@@ -289,6 +291,14 @@ export const COMMANDS: readonly EditorCommand[] = [
     run: (ctx) => ctx.ui.getState().setFinder('goto'),
   },
   {
+    id: 'nav.gotoExtend',
+    label: 'Extend selection to network…',
+    group: 'Network',
+    keys: ['mod+shift+g'],
+    inMenu: true,
+    run: (ctx) => ctx.ui.getState().setFinder('gotoExtend'),
+  },
+  {
     id: 'edit.find',
     label: 'Find / replace…',
     group: 'Edit',
@@ -424,6 +434,14 @@ export const COMMANDS: readonly EditorCommand[] = [
     group: 'View',
     inMenu: true,
     run: (ctx) => ctx.ui.getState().setTheme(ctx.ui.getState().theme === 'dark' ? 'light' : 'dark'),
+  },
+  {
+    id: 'view.symbolComments',
+    label: 'Show symbol comments',
+    group: 'View',
+    inMenu: true,
+    checked: (ctx) => ctx.ui.getState().symbolComments,
+    run: (ctx) => ctx.ui.getState().setSymbolComments(!ctx.ui.getState().symbolComments),
   },
 ];
 

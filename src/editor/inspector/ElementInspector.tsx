@@ -8,7 +8,7 @@ import {
 } from '../../model/elements';
 import type { Network } from '../../model/project';
 import { useDocumentStore } from '../../store/documentStore';
-import { CommitInput } from '../variables/CommitInput';
+import { CommitInput, CommitTextArea } from '../variables/CommitInput';
 import { BindingField } from './BindingField';
 import { BoxInspector } from './BoxInspector';
 import { ConnectionInspector } from './ConnectionInspector';
@@ -116,6 +116,23 @@ export function ElementInspector({ element: el, network, networkIndex, labels }:
       {el.kind === 'box' && <BoxInspector box={el} />}
       {(el.kind === 'connector' || el.kind === 'continuation') && (
         <ConnectionInspector element={el} network={network} />
+      )}
+      {(el.kind === 'contact' || el.kind === 'coil' || el.kind === 'box') && (
+        <div className="rs-field">
+          <label htmlFor={`comment-${el.id}`}>Comment</label>
+          <CommitTextArea
+            id={`comment-${el.id}`}
+            className="rs-cell-input"
+            rows={2}
+            data-testid="inspector-element-comment"
+            placeholder={
+              el.kind === 'box' ? 'shown under the box' : "shown under the symbol, instead of the variable's comment"
+            }
+            title="This element's own comment (CODESYS operand comment): shown under it on the canvas and in print, kept in PLCopen exports"
+            value={el.comment ?? ''}
+            onCommit={(text) => update(el.id, { comment: text.trim() || undefined })}
+          />
+        </div>
       )}
     </div>
   );

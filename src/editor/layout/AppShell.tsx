@@ -3,6 +3,7 @@
 // status bar. Notices go in the notice area under the tool bar (NoticeArea), never over a control. The left, side and bottom panels are resizable (ResizeHandle) and collapsible; their
 // sizes are remembered (panelSizes.ts). Each bar is one line: nothing wraps or moves when the
 // simulation starts.
+import { SymbolCommentsToggle } from '../canvas/SymbolCommentsToggle';
 import { Fragment, useEffect, useLayoutEffect, useMemo, type CSSProperties } from 'react';
 import { selectDirty, useDocument, useDocumentStore } from '../../store/documentStore';
 import { selectPanels, selectTheme, useUi, useUiStore, type PanelLayout } from '../../store/uiStore';
@@ -92,6 +93,7 @@ export function AppShell() {
           {projectName}
           {dirty ? ' •' : ''}
         </span>
+        <SymbolCommentsToggle />
         <button
           type="button"
           className="rs-icon-button"

@@ -13,6 +13,8 @@ interface MenuItem {
   readonly shortcut?: string;
   readonly title?: string;
   readonly separatorBefore?: boolean;
+  /** A view option: shown with a check mark when on. */
+  checked?(): boolean;
   enabled(): boolean;
   run(): void;
 }
@@ -52,6 +54,7 @@ function buildMenus(ctx: EditorContext): Menu[] {
       label: c.label,
       ...(c.keys?.[0] ? { shortcut: keyLabel(c.keys[0]) } : {}),
       enabled: () => (c.enabled ? c.enabled(ctx) : true),
+      ...(c.checked ? { checked: () => c.checked!(ctx) } : {}),
       run: () => c.run(ctx),
     }));
   return [
@@ -126,12 +129,17 @@ export function MenuBar({ ctx }: { readonly ctx: EditorContext }) {
                   disabled={!item.enabled()}
                   title={item.title}
                   data-testid={`menuitem-${item.id}`}
+                  data-checked={item.checked ? String(item.checked()) : undefined}
                   onClick={() => {
                     setOpen(undefined);
                     item.run();
                   }}
                 >
-                  <span>{item.label}</span>
+                  <span>
+                    {item.checked && <span className="rs-menu-check" aria-hidden>{item.checked() ? '✓ ' : '\u2003'}</span>}
+                    {item.label}
+                    {item.checked && <span className="rs-visually-hidden">{item.checked() ? ' (on)' : ' (off)'}</span>}
+                  </span>
                   {item.shortcut && <kbd>{item.shortcut}</kbd>}
                 </button>
               ))}

@@ -51,7 +51,9 @@ function PasteQuestion({ ctx, instances, text }: { readonly ctx: EditorContext; 
 }
 
 function GoToBox({ ctx }: { readonly ctx: EditorContext }) {
-  const open = useUi((s) => s.finder === 'goto');
+  const mode = useUi((s) => s.finder);
+  const open = mode === 'goto' || mode === 'gotoExtend';
+  const extend = mode === 'gotoExtend';
   const count = useDocument(selectNetworks).length;
   const [text, setText] = useState('');
   const [error, setError] = useState('');
@@ -62,14 +64,20 @@ function GoToBox({ ctx }: { readonly ctx: EditorContext }) {
     ctx.ui.getState().setFinder(undefined);
   };
   const go = () => {
-    const problem = goToNetwork(ctx, text);
+    const problem = goToNetwork(ctx, text, extend);
     if (problem) setError(problem);
     else close();
   };
   return (
-    <div className="rs-floating" role="dialog" aria-label="Go to network" data-testid="goto-box">
+    <div
+      className="rs-floating"
+      role="dialog"
+      aria-label={extend ? 'Extend selection to network' : 'Go to network'}
+      data-testid="goto-box"
+      data-extend={extend || undefined}
+    >
       <label>
-        Go to network (1–{count}) or label
+        {extend ? 'Extend the selection to network' : 'Go to network'} (1–{count}) or label
         <input
           autoFocus
           data-testid="goto-input"

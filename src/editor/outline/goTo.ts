@@ -7,7 +7,8 @@ import type { LdElement } from '../../model/elements';
 import type { Network } from '../../model/project';
 import { isConnection, partnersOf } from '../../store/connectors';
 import { elementAt } from '../../store/networkEdits';
-import { CELL_H, headerHeight, layoutNetworks } from '../canvas/geometry';
+import { canvasLayoutFor } from '../canvas/canvasLayout';
+import { headerHeight, pitchOf } from '../canvas/geometry';
 import type { EditorContext } from '../commands/editorActions';
 import { libraryOf, networksOf } from '../commands/editorActions';
 
@@ -18,8 +19,12 @@ export function revealNetwork(ctx: EditorContext, pou: PouId, network: NetworkId
   ctx.ui.getState().focusCell(network, cell);
 }
 
-/** Goes to network `text` (1-based number or label) of the shown POU; returns a problem to show, or ''. */
-export function goToNetwork(ctx: EditorContext, text: string): string {
+/**
+ * Goes to network `text` (1-based number or label) of the shown POU and selects it; returns a
+ * problem to show, or ''. With `extend` (Ctrl+Shift+G) the selection runs from its anchor (the last
+ * network selected, else the cursor's network) to the network entered, as a Shift+click does.
+ */
+export function goToNetwork(ctx: EditorContext, text: string, extend = false): string {
   const nets = networksOf(ctx);
   const t = text.trim();
   if (!t) return 'Type a network number or label.';
@@ -28,8 +33,20 @@ export function goToNetwork(ctx: EditorContext, text: string): string {
   const target = byLabel ?? (no >= 1 && no <= nets.length ? nets[no - 1] : undefined);
   if (!target) return `No network ${t}: this POU has networks 1 to ${nets.length}.`;
   const pou = ctx.doc.getState().activePouId;
+  const ui = ctx.ui.getState();
+  const ids = nets.map((n) => n.id);
+  const selected = ui.networkSelection.filter((id) => ids.includes(id));
+  const anchor = extend ? (selected[selected.length - 1] ?? ui.cursor?.network) : undefined;
   revealNetwork(ctx, pou, target.id);
-  ctx.ui.getState().selectNetworks([target.id]);
+  if (!anchor || !ids.includes(anchor)) {
+    ctx.ui.getState().selectNetworks([target.id]);
+    return '';
+  }
+  const a = ids.indexOf(anchor);
+  const b = ids.indexOf(target.id);
+  const range = ids.slice(Math.min(a, b), Math.max(a, b) + 1);
+  // The anchor stays last: the next extension starts from it again.
+  ctx.ui.getState().selectNetworks([...range.filter((id) => id !== anchor), anchor]);
   return '';
 }
 
@@ -93,8 +110,9 @@ export function scrollNetworkIntoView(ctx: EditorContext, index: number): boolea
   const el = canvasElement();
   if (!network || !el) return false;
   const zoom = ctx.ui.getState().viewport.zoom;
-  const top = layoutNetworks(nets).tops[index]!;
-  const firstRow = headerHeight(network) + (network.collapsed ? 0 : CELL_H);
+  const layout = canvasLayoutFor(ctx.doc.getState(), ctx.ui.getState());
+  const top = layout.tops[index]!;
+  const firstRow = headerHeight(network) + (network.collapsed ? 0 : pitchOf(layout, index));
   const from = top * zoom;
   const to = (top + firstRow) * zoom;
   if (from >= el.scrollTop && to <= el.scrollTop + el.clientHeight) return false;

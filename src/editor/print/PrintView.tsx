@@ -8,8 +8,9 @@
 import { useLayoutEffect, useMemo, useRef, useState, type ReactNode } from 'react';
 import { createPortal } from 'react-dom';
 import { blockLibrary } from '../../model/library';
-import type { Project } from '../../model/project';
-import { CELL_H } from '../canvas/geometry';
+import type { Pou, Project } from '../../model/project';
+import type { SymbolComments } from '../canvas/geometry';
+import { symbolCommentLookup } from '../canvas/symbolComments';
 import { useModal } from '../layout/useModal';
 import { readCanvasTheme } from '../theme/canvasTheme';
 import { networkSvg, type NetworkDrawing } from './networkSvg';
@@ -47,7 +48,7 @@ function breaksOf(el: HTMLElement, item: PrintItem, drawing: NetworkDrawing | un
     const grid = el.querySelector('svg')?.getBoundingClientRect();
     if (!grid) return [];
     const scale = grid.height / drawing.height;
-    return Array.from({ length: item.network.rows - 1 }, (_, r) => grid.top - top + (r + 1) * CELL_H * scale);
+    return Array.from({ length: item.network.rows - 1 }, (_, r) => grid.top - top + (r + 1) * drawing.pitch * scale);
   }
   if (item.kind === 'source') {
     const pre = el.querySelector('pre') ?? el;
@@ -104,18 +105,30 @@ export function PrintView({
   project,
   options,
   onClose,
+  symbolComments = false,
 }: {
   readonly project: Project;
   readonly options: PrintOptions;
   readonly onClose: () => void;
+  /** The editor's "Show symbol comments" option: printed as shown. */
+  readonly symbolComments?: boolean;
 }) {
   const items = useMemo(() => printItems(project, options), [project, options]);
   const measure = useMemo(() => canvasMeasure(), []);
   const drawings = useMemo(() => {
     const theme = lightTheme();
     const library = blockLibrary(project);
-    return items.map((item) => (item.kind === 'network' ? networkSvg(item.network, theme, measure, library) : undefined));
-  }, [items, project, measure]);
+    const lookups = new Map<Pou, SymbolComments>();
+    const symbolsOf = (pou: Pou) => {
+      if (!symbolComments) return undefined;
+      let s = lookups.get(pou);
+      if (!s) lookups.set(pou, (s = symbolCommentLookup(pou.variables, project.globals)));
+      return s;
+    };
+    return items.map((item) =>
+      item.kind === 'network' ? networkSvg(item.network, theme, measure, library, symbolsOf(item.pou)) : undefined,
+    );
+  }, [items, project, measure, symbolComments]);
   /** Table rows to render and measure (a cell wraps); the others are one line high. */
   const [wrapping, setWrapping] = useState<ReadonlySet<number> | undefined>(undefined);
   const [pages, setPages] = useState<PrintPage[] | undefined>(undefined);

@@ -3,7 +3,7 @@
 import type { BlockLibrary } from '../../model/library';
 import type { Network } from '../../model/project';
 import { drawNetworkGrid, type NetworkPaint } from '../canvas/drawNetwork';
-import { CELL_H, GRID_PAD_BOTTOM, networkWidth, RAIL_X } from '../canvas/geometry';
+import { GRID_PAD_BOTTOM, networkWidth, RAIL_X, rowPitch, type SymbolComments } from '../canvas/geometry';
 import type { CanvasTheme } from '../theme/canvasTheme';
 import { SvgContext, svgFrame, type MeasureText } from './svgContext';
 
@@ -15,6 +15,8 @@ export interface NetworkDrawing {
   readonly frame: string;
   readonly width: number;
   readonly height: number;
+  /** Height of its rows (taller where comments are shown under operands). */
+  readonly pitch: number;
 }
 
 const ATTRS = 'class="rs-print-grid"';
@@ -24,11 +26,14 @@ export function networkSvg(
   theme: CanvasTheme,
   measure: MeasureText,
   library?: BlockLibrary,
+  symbols?: SymbolComments,
 ): NetworkDrawing {
   const ctx = new SvgContext(measure);
   const width = networkWidth(network, library);
-  const height = network.rows * CELL_H + GRID_PAD_BOTTOM;
+  const pitch = rowPitch(network, symbols);
+  const height = network.rows * pitch + GRID_PAD_BOTTOM;
   ctx.translate(RAIL_X, 0);
-  drawNetworkGrid(ctx as unknown as CanvasRenderingContext2D, theme, network, library ? { ...PAINT, library } : PAINT);
-  return { svg: ctx.toSvg(width, height, ATTRS), frame: svgFrame(width, height, ATTRS), width, height };
+  const paint: NetworkPaint = { ...PAINT, pitch, ...(library ? { library } : {}), ...(symbols ? { symbols } : {}) };
+  drawNetworkGrid(ctx as unknown as CanvasRenderingContext2D, theme, network, paint);
+  return { svg: ctx.toSvg(width, height, ATTRS), frame: svgFrame(width, height, ATTRS), width, height, pitch };
 }

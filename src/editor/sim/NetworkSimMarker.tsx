@@ -6,7 +6,7 @@ import { gridHeight, headerHeight } from '../canvas/geometry';
 import { useSimStore } from './simContext';
 import { useBodyRan, useHasBreakpoint, useIsCurrentNetwork, useNetworkExecuted } from './useSimOverlay';
 
-export function NetworkSimMarker({ network, index }: { network: Network; index: number }) {
+export function NetworkSimMarker({ network, index, pitch }: { network: Network; index: number; pitch?: number }) {
   const sim = useSimStore();
   const breakpoint = useHasBreakpoint(network.id);
   const current = useIsCurrentNetwork(network.id);
@@ -29,7 +29,7 @@ export function NetworkSimMarker({ network, index }: { network: Network; index: 
       {current && (
         <>
           <span className="rs-sim-next-badge" data-testid={`network-next-${index}`}>▶ runs next</span>
-          <div className="rs-sim-current-frame" style={{ height: headerHeight(network) + gridHeight(network) - 4 }} aria-hidden />
+          <div className="rs-sim-current-frame" style={{ height: headerHeight(network) + gridHeight(network, pitch) - 4 }} aria-hidden />
         </>
       )}
       {executed === false && (

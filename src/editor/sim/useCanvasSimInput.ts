@@ -14,10 +14,11 @@
 import { useEffect } from 'react';
 import type { LdElement } from '../../model/elements';
 import { selectLibrary, selectNetworks, useDocumentStore } from '../../store/documentStore';
+import { canvasLayoutFor } from '../canvas/canvasLayout';
 import { elementAt } from '../../store/networkEdits';
 import type { SimState } from '../../store/simState';
 import { useUiStore } from '../../store/uiStore';
-import { hitTest, layoutNetworks } from '../canvas/geometry';
+import { hitTest } from '../canvas/geometry';
 import { fieldInputAddress } from '../hardware/fieldIo';
 import { canvasName } from './liveValues';
 import { useSimStore } from './simContext';
@@ -65,7 +66,7 @@ export function useCanvasSimInput(): void {
       const zoom = ui.getState().viewport.zoom;
       const rect = scroller.getBoundingClientRect();
       const point = { x: (e.clientX - rect.left + scroller.scrollLeft) / zoom, y: (e.clientY - rect.top + scroller.scrollTop) / zoom };
-      const hit = hitTest(layoutNetworks(networks, selectLibrary(documents.getState())), networks, point);
+      const hit = hitTest(canvasLayoutFor(documents.getState(), ui.getState()), networks, point);
       if (hit.area !== 'grid') return undefined;
       const network = networks[hit.index];
       // With the project's blocks: a user FB's box covers all its cells.
