@@ -248,6 +248,26 @@ export interface PlcProbe {
    * input image: a recorded scan replayed exactly. Returns the fault when the scan faulted.
    */
   replay(timeMs: number, inputs?: readonly Value[]): Fault | undefined;
+  /** The data lines on box pins of the networks [first, end) (a body of the program), made once per range. */
+  pinLines(first: number, end: number): PinLines;
+}
+
+/** A box pin whose value is a data line (a wire between blocks), in a body's networks (compile/pinLines.ts). */
+export interface PinLineInfo {
+  /** Network index relative to the body's first network. */
+  readonly network: number;
+  /** The box's index in the network's elements. */
+  readonly element: number;
+  readonly pin: string;
+  readonly side: 'in' | 'out';
+  /** Elementary type of the value. */
+  readonly type: string;
+}
+
+/** The data lines of one body and a reader of their current values (aligned with `lines`). */
+export interface PinLines {
+  readonly lines: readonly PinLineInfo[];
+  read(out: Value[]): void;
 }
 
 /** A PLC's complete state (PlcProbe.save): opaque but for what it is of and its estimated size. */

@@ -199,6 +199,7 @@ export const projectSchema = z
     ),
     externalBlocks: z.array(externalBlockSchema).optional(),
     scenarios: z.array(z.object({ name: z.string().min(1), csv: z.string() }).strict()).optional(),
+    watch: z.array(z.string().min(1)).optional(),
     dataTypes: z.array(dataTypeSchema).optional(),
     extensions,
   })

@@ -250,6 +250,11 @@ export interface Project {
    */
   readonly scenarios?: readonly Scenario[];
   /**
+   * The simulator's watch list (docs/simulation.md): the names watched, in order, kept with the
+   * project and brought back when it is opened again. Not part of the program: no online change.
+   */
+  readonly watch?: readonly string[];
+  /**
    * Blocks the project calls whose interface only the project knows (e.g. an imported file's
    * vendor blocks that are not in the shipped OpenPLC libraries, with the pins the file wires).
    * Not POUs of the project: export writes only their calls.

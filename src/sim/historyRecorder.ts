@@ -17,6 +17,7 @@ import { ChangeIndex, sameValue } from './historyChanges';
 import type { HistoryView, SimLayout, SimView } from './protocol';
 import { Replayer, type HistoryState } from './replay';
 import { recordedBody } from './viewPower';
+import { readPinValues, viewBody } from './pinValues';
 
 /** Periodic keys wait until the scans since the last key took this many times what saving one takes ... */
 const SAVE_SHARE = 20;
@@ -130,7 +131,13 @@ export class HistoryRecorder {
    * monitors (an FB instance, a function: its call that ran in that scan).
    */
   view(scan: number, shown?: SimLayout): HistoryView | undefined {
-    const state = this.replayer.state(scan);
+    const layout = shown ?? this.layout;
+    const wordCount = this.probe.power.length;
+    // The data lines are read on the PLC that replayed the scan, before the live state is put back.
+    let pins: HistoryView['pins'] = [];
+    const state = this.replayer.state(scan, (probe, power) => {
+      pins = readPinValues(probe, layout, viewBody(this.program, layout, (n) => power[wordCount + n] === 1));
+    });
     if (!state) return undefined;
     const words = this.probe.power.length;
     const executed = Uint8Array.from(state.power.subarray(words));
@@ -138,7 +145,7 @@ export class HistoryRecorder {
     const packed = shown
       ? packNetworks(recordedBody(this.program, shown, networks), shown)
       : packNetworks(networks, this.layout);
-    return { scan, timeMs: state.timeMs, ...packed, values: state.values };
+    return { scan, timeMs: state.timeMs, ...packed, values: state.values, pins };
   }
 
   /** The recorded scan as "Why?" reads it. */

@@ -138,6 +138,20 @@ export type GatewayWorkerMessage =
   /** The worker ended a drive by itself (the program stopped, or the link closed), with why. */
   | { readonly type: 'gwDriveEnded'; readonly reason: string };
 
+/**
+ * The value on a box pin that no name reads: a data line between blocks (a function's result wired
+ * into another block's input), in the layout's view (src/sim/pinValues.ts).
+ */
+export interface SimPinValue {
+  /** Document id of the box. */
+  readonly element: string;
+  readonly pin: string;
+  readonly side: 'in' | 'out';
+  /** Elementary type (how the value is written: T#..., 2.5, TRUE). */
+  readonly type: string;
+  readonly value: Value;
+}
+
 /** A recorded scan as the UI draws it (same layout as a frame). */
 export interface HistoryView {
   readonly scan: number;
@@ -146,6 +160,8 @@ export interface HistoryView {
   readonly vlinks: Uint8Array;
   readonly executed: Uint8Array;
   readonly values: readonly Value[];
+  /** The data lines of the shown body in that scan. */
+  readonly pins: readonly SimPinValue[];
 }
 
 /** What the scan history holds. */
@@ -239,6 +255,8 @@ export interface SimFrame {
   readonly executed: Uint8Array;
   /** Aligned with SimLayout.variables. */
   readonly values: readonly Value[];
+  /** The data lines between the blocks of the shown body (values no name reads). */
+  readonly pins: readonly SimPinValue[];
   readonly forced: readonly (readonly [string, Value])[];
   /** New trend samples since the previous frame. */
   readonly trend?: TrendSamples;

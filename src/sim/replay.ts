@@ -168,8 +168,11 @@ export class Replayer {
     });
   }
 
-  /** The state after `scan`: every value and the power of every network; undefined when not recorded. */
-  state(scan: number): HistoryState | undefined {
+  /**
+   * The state after `scan`: every value and the power of every network; undefined when not recorded.
+   * `also` reads more of that state on the PLC that replayed it (before the live state is put back).
+   */
+  state(scan: number, also?: (probe: PlcProbe, power: Int32Array) => void): HistoryState | undefined {
     return this.using((r) => {
       if (!this.goto(r, scan)) return undefined;
       const probe = r.probe;
@@ -183,6 +186,7 @@ export class Replayer {
       const own = r.plc.scanCount;
       for (let n = 0; n < ranIn.length; n++) power[words + n] = ranIn[n] === own ? 1 : 0;
       const seg = this.seg!;
+      also?.(probe, power);
       return { scan, timeMs: seg.timeAt(scan - seg.firstScan), values, power };
     });
   }

@@ -8,6 +8,7 @@ import type { SimFrame, SimLayout, SimMode } from './protocol';
 import type { ScanRunner } from './scanRunner';
 import type { TrendRecorder } from './trendRecorder';
 import { packView } from './viewPower';
+import { readPinValues, viewBody } from './pinValues';
 
 /** What a frame is built from (SimSession.frame). */
 export interface FrameParts {
@@ -40,6 +41,12 @@ export function buildFrame(parts: FrameParts): SimFrame {
     layout.variables.forEach((v, i) => {
       if (v.location?.toUpperCase().startsWith('%I')) values[i] = carried.values[i]!;
     });
+  // The data lines of the shown body (the carried scan of a replaced program has none to show).
+  const probe = !carried && plc && layout && parts.program ? plc.probe?.() : undefined;
+  const pins =
+    probe && layout && parts.program
+      ? readPinValues(probe, layout, viewBody(parts.program, layout, lastRun(probe.ranIn)))
+      : [];
   const trend = parts.trend.take();
   const fault = plc?.fault;
   // At a scan boundary a configuration stands before its first program instance's network 1.
@@ -62,10 +69,18 @@ export function buildFrame(parts: FrameParts): SimFrame {
     vlinks: power?.vlinks ?? new Uint8Array(0),
     executed: power?.executed ?? new Uint8Array(0),
     values,
+    pins,
     forced: plc ? [...plc.forced()] : [],
     ...(trend ? { trend } : {}),
     program: plc ? parts.programId : null,
     epoch: parts.epoch,
     ...(parts.history ? { history: parts.history } : {}),
   };
+}
+
+/** A test for "this body's call ran last": the networks that ran in the latest scan any network ran in. */
+function lastRun(ranIn: Int32Array): (network: number) => boolean {
+  let latest = 0;
+  for (let i = 0; i < ranIn.length; i++) if (ranIn[i]! > latest) latest = ranIn[i]!;
+  return (n) => latest > 0 && ranIn[n] === latest;
 }

@@ -1,6 +1,8 @@
 // A name typed into the watch table or the trend while a configuration runs: its variables are
 // named by program instance (`MainInstance.Filling`), so a short name (`Filling`) names nothing.
 // It resolves to the one instance path that ends in it, or offers the instance paths to pick from.
+// Outside a configuration too, the add field completes names and instance paths as they are typed
+// (completeWatchName).
 
 export interface WatchNameChoice {
   /** The name to add: the typed name when the program has it, or the one instance path it is short for. */
@@ -42,4 +44,31 @@ export function resolveWatchName(
   const byName = (a: string, b: string) => a.localeCompare(b);
   const choices = [...whole.sort(byName), ...started.sort(byName)].slice(0, limit);
   return whole.length === 1 ? { name: whole[0]!, choices } : { choices };
+}
+
+/** Dots and brackets before the last segment: how deep a name is (`T1.ET` 1, `Conv1.T1.ET` 2, `A[2]` 1). */
+const depth = (name: string): number => (name.match(/[.[]/g) ?? []).length;
+
+/**
+ * Completions of `text` among the readable `names` as it is typed (the watch list's add field):
+ * first the names that start with it (an instance path `Conv1.` lists its members, the direct ones
+ * first, then nested ones and array elements), then those with a segment that starts with it
+ * (`Motor` finds `Conv1.Motor`), then those that contain it; case-insensitive, the typed name
+ * itself left out, at most `limit`.
+ */
+export function completeWatchName(text: string, names: readonly string[], limit = 12): string[] {
+  const t = text.trim().toUpperCase();
+  if (!t) return [];
+  const starts: string[] = [];
+  const segment: string[] = [];
+  const contains: string[] = [];
+  for (const n of names) {
+    const u = n.toUpperCase();
+    if (u === t) continue;
+    if (u.startsWith(t)) starts.push(n);
+    else if (u.split(/[.[]/).some((s, i) => i > 0 && s.startsWith(t))) segment.push(n);
+    else if (u.includes(t)) contains.push(n);
+  }
+  const byDepth = (a: string, b: string) => depth(a) - depth(b) || a.localeCompare(b, undefined, { numeric: true });
+  return [...starts.sort(byDepth), ...segment.sort(byDepth), ...contains.sort(byDepth)].slice(0, limit);
 }

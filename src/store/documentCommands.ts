@@ -62,6 +62,7 @@ type Commands = Omit<
   | 'undoName'
   | 'redoName'
   | 'loadProject'
+  | 'setWatchList'
   | 'newProject'
   | 'markSaved'
   | 'setActivePou'

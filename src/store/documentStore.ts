@@ -130,6 +130,8 @@ export interface DocumentState {
   readonly redoName: string | undefined;
 
   loadProject(p: Project): void;
+  /** The simulator's watch list kept with the project (not an undo step: no edit of the program). */
+  setWatchList(names: readonly string[]): void;
   newProject(name?: string): void;
   markSaved(): void;
   setActivePou(id: PouId): void;
@@ -269,6 +271,12 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
       ...historyFlags(EMPTY_HISTORY),
 
       loadProject: (p) => set(reset(p)),
+      setWatchList: (names) => {
+        const s = get();
+        const { watch: _old, ...rest } = s.project;
+        const project: Project = names.length > 0 ? { ...rest, watch: [...names] } : rest;
+        set({ project, dirty: true, revision: s.revision + 1 });
+      },
       newProject: (name) => set(reset(makeProject(name))),
       markSaved: () => set({ dirty: false }),
       setActivePou: open,

@@ -65,7 +65,7 @@ export function createSimStore(transport: SimTransport): SimStore {
       transport.send(make(id));
     });
   /** The live power and values while a recorded scan is shown, to put back on Live. */
-  let liveStash: Pick<SimState, 'elements' | 'vlinks' | 'executed' | 'values'> | undefined;
+  let liveStash: Pick<SimState, 'elements' | 'vlinks' | 'executed' | 'values' | 'pins'> | undefined;
   const send = (message: HostMessage) => transport.send(message);
 
   /** The document to send with Run/Step unless the worker confirmed it runs this very program. */
@@ -138,6 +138,7 @@ export function createSimStore(transport: SimTransport): SimStore {
       vlinks: new Uint8Array(0),
       executed: new Uint8Array(0),
       values: [],
+      pins: [],
       forced: new Map(),
       breakpoints: [],
       watch: [],
@@ -391,8 +392,8 @@ export function createSimStore(transport: SimTransport): SimStore {
         const restarted = message.frame.history === undefined;
         if (viewing && !restarted) {
           // A recorded scan is shown: the live state is kept for Live, the view stays frozen.
-          const { elements, vlinks, executed, values, ...rest } = patch;
-          liveStash = { elements: elements!, vlinks: vlinks!, executed: executed!, values: values! };
+          const { elements, vlinks, executed, values, pins, ...rest } = patch;
+          liveStash = { elements: elements!, vlinks: vlinks!, executed: executed!, values: values!, pins: pins! };
           patch = rest;
         } else if (viewing) {
           liveStash = undefined;
@@ -417,7 +418,7 @@ export function createSimStore(transport: SimTransport): SimStore {
         return;
       case 'historyView': {
         const state = store.getState();
-        if (state.historyScan === undefined) liveStash = { elements: state.elements, vlinks: state.vlinks, executed: state.executed, values: state.values };
+        if (state.historyScan === undefined) liveStash = { elements: state.elements, vlinks: state.vlinks, executed: state.executed, values: state.values, pins: state.pins };
         store.setState({ ...viewOf(message.view), historyMessage: undefined });
         return;
       }
@@ -513,7 +514,7 @@ function sameScope(a: CanvasScope | undefined, b: CanvasScope | undefined): bool
 }
 
 function viewOf(view: HistoryView): Partial<SimState> {
-  return { historyScan: view.scan, historyTimeMs: view.timeMs, elements: view.elements, vlinks: view.vlinks, executed: view.executed, values: view.values };
+  return { historyScan: view.scan, historyTimeMs: view.timeMs, elements: view.elements, vlinks: view.vlinks, executed: view.executed, values: view.values, pins: view.pins };
 }
 
 function indexLayout(layout: SimLayout): Pick<SimState, 'layout' | 'elementIndex' | 'vlinkIndex' | 'variableIndex'> {
@@ -548,6 +549,7 @@ function applyFrame(state: SimState, frame: SimFrame): Partial<SimState> {
     vlinks: frame.vlinks,
     executed: frame.executed,
     values: frame.values,
+    pins: frame.pins,
     forced,
     ...(frame.trend ? { trend: appendTrend(state.trend, frame.trend as TrendSamples, state.trendCapacity) } : {}),
     ...(frame.mode === 'stopped' && frame.scan === 0 ? { trend: emptyTrend(state.trendNames) } : {}),

@@ -4,6 +4,7 @@ import { describe, expect, test } from 'vitest';
 import { blockLibrary } from '../../src/model/library';
 import { canvasName } from '../../src/editor/sim/liveValues';
 import { elementLiveText } from '../../src/editor/sim/useNetworkSim';
+import { boxPinTexts } from '../../src/editor/sim/pinLiveValues';
 import { createSimStore } from '../../src/store/simStore';
 import { loopback } from './loopback';
 import { configurationProject, motorProject } from './monitorPrograms';
@@ -38,11 +39,13 @@ describe('monitoring the shown POU', () => {
     expect(s().layout?.view).toEqual({ pou: 'Motor', instance: 'Motor2' });
     expect(elementLiveText(s(), runCoil)).toBe('FALSE');
     expect(s().elements[s().elementIndex.get(runCoil.id)!]! & 2).toBe(0);
-    // A call box in Main shows the user FB's outputs with the project's library.
+    // A call box in Main shows the user FB's pins beside them (the instance's values), with the project's library.
     s().showPou({ name: 'Main', kind: 'PROGRAM' });
     scheduler.advance(30);
-    const call = project.pous[0]!.networks[0]!.elements.find((e) => e.kind === 'box')!;
-    expect(elementLiveText(s(), call, blockLibrary(project))).toBe('Run=TRUE');
+    const main = project.pous[0]!.networks[0]!;
+    const call = main.elements.find((e) => e.kind === 'box')!;
+    expect(elementLiveText(s(), call, blockLibrary(project))).toBeUndefined();
+    expect(boxPinTexts(s(), main, call, blockLibrary(project))?.inputs.Stop).toBe('FALSE');
     // A PROGRAM the task does not run is not monitored.
     s().showPou({ name: 'Elsewhere', kind: 'PROGRAM' });
     expect(s().canvasScope).toBeUndefined();

@@ -2,7 +2,7 @@
 // resolves to its instance path when one instance has it, and the instance paths are offered as
 // completions while typing.
 import { describe, expect, test } from 'vitest';
-import { resolveWatchName } from '../../src/sim/watchNames';
+import { completeWatchName, resolveWatchName } from '../../src/sim/watchNames';
 
 const NAMES = ['MainInstance.Filling', 'MainInstance.Fill_Time', 'MainInstance.Start', 'MainInstance.T1.Q', 'Rinse.Start', 'Rinse.Done', 'Lamp'];
 const INSTANCES = ['MainInstance', 'Rinse'];
@@ -32,5 +32,26 @@ describe('a short name in a configuration', () => {
     expect(resolveWatchName('Filling', ['Filling'], [])).toEqual({ name: 'Filling', choices: [] });
     expect(resolveWatchName('Fil', ['Filling'], [])).toEqual({ choices: [] });
     expect(resolveWatchName('', NAMES, INSTANCES)).toEqual({ choices: [] });
+  });
+});
+
+describe('completion as a name is typed (issue 24)', () => {
+  const READABLE = ['Start', 'Start2', 'Stop', 'Conv1.Motor', 'Conv1.Speed', 'Conv1.T1.ET', 'Conv1.T1.Q', 'Conv2.Motor', 'Buf[1]', 'Buf[2]', 'Buf[10]', 'T1.PT', 'T1.ET', 'MotorLamp'];
+
+  test('an instance path lists its members, the direct ones first, then the nested ones', () => {
+    expect(completeWatchName('conv1.', READABLE)).toEqual(['Conv1.Motor', 'Conv1.Speed', 'Conv1.T1.ET', 'Conv1.T1.Q']);
+    expect(completeWatchName('Conv1.T', READABLE)).toEqual(['Conv1.T1.ET', 'Conv1.T1.Q']);
+  });
+
+  test('names starting with the text first, then a member named so in any instance, then names containing it', () => {
+    expect(completeWatchName('Mot', READABLE)).toEqual(['MotorLamp', 'Conv1.Motor', 'Conv2.Motor']);
+    expect(completeWatchName('eed', READABLE)).toEqual(['Conv1.Speed']);
+  });
+
+  test('array elements in index order; the typed name itself is not offered; a limit', () => {
+    expect(completeWatchName('Buf', READABLE)).toEqual(['Buf[1]', 'Buf[2]', 'Buf[10]']);
+    expect(completeWatchName('Start', READABLE)).toEqual(['Start2']);
+    expect(completeWatchName('S', READABLE, 2)).toEqual(['Start', 'Start2']);
+    expect(completeWatchName('  ', READABLE)).toEqual([]);
   });
 });

@@ -53,10 +53,11 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
       ...(drag ? { drag } : {}),
       ...(overlay.power ? { power: overlay.power } : {}),
       ...(overlay.liveValues ? { liveValues: overlay.liveValues } : {}),
+      ...(overlay.pinValues ? { pinValues: overlay.pinValues } : {}),
       ...(overlay.forced ? { forced: overlay.forced } : {}),
       ...(overlay.device ? { device: overlay.device } : {}),
     }),
-    [library, selected, cursor, hover, markers, pitch, symbols, drag, overlay.power, overlay.liveValues, overlay.forced, overlay.device],
+    [library, selected, cursor, hover, markers, pitch, symbols, drag, overlay.power, overlay.liveValues, overlay.pinValues, overlay.forced, overlay.device],
   );
   const width = networkWidth(network, library);
   const height = network.rows * pitch + GRID_PAD_BOTTOM;

@@ -13,6 +13,7 @@ import { FORCED_BADGE } from '../theme/monitorStyle';
 import { networkColumns, type NetworkColumns } from './columns';
 import { drawConnectionPartners } from './drawConnectors';
 import { openPins } from './pinOperands';
+import { drawPinValues, type PinTexts } from './drawPinValues';
 import { BOX_TOP, drawElement, wire, wireStyle } from './drawSymbols';
 import { CELL_H, cellRect, elementCommentText, GRID_PAD_BOTTOM, WIRE_Y, type SymbolComments } from './geometry';
 
@@ -37,6 +38,8 @@ export interface NetworkPaint {
   /** Simulation power flow, aligned with network.elements / network.vlinks. */
   readonly power?: NetworkPower;
   readonly liveValues?: ReadonlyMap<ElementId, string>;
+  /** Values beside box pins (simulation). */
+  readonly pinValues?: ReadonlyMap<ElementId, PinTexts>;
   /** Elements with a forced variable (simulation). */
   readonly forced?: ReadonlySet<ElementId>;
   /** Elements whose device value differs from the program's, with the marker text (simulation with hardware). */
@@ -196,16 +199,19 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     ctx.translate(r.x, r.y);
     const live = paint.liveValues?.get(el.id);
     const comment = elementCommentText(el, paint.symbols);
+    const open = el.kind === 'box' ? openPins(n, el, paint.library) : undefined;
     drawElement(ctx, t, el, {
       width: r.width,
       ...(pitch !== CELL_H ? { pitch } : {}),
       ...(comment ? { comment } : {}),
       ...(paint.symbols && el.kind === 'box' ? { operandComments: paint.symbols } : {}),
-      ...(el.kind === 'box' ? { openPins: openPins(n, el, paint.library) } : {}),
+      ...(open ? { openPins: open } : {}),
       ...(paint.library ? { library: paint.library } : {}),
       ...(paint.power ? { power: paint.power.elements[i] ?? 0 } : {}),
       ...(live ? { liveValue: live } : {}),
     });
+    const pins = el.kind === 'box' ? paint.pinValues?.get(el.id) : undefined;
+    if (pins && el.kind === 'box') drawPinValues(ctx, t, el, pins, r.width, paint.library, open, pitch);
     ctx.restore();
   });
   if (paint.forced)

@@ -6,12 +6,15 @@ import { createContext, useContext } from 'react';
 import type { NetworkPower } from '../../engine/api';
 import type { ElementId } from '../../model/ids';
 import type { Network } from '../../model/project';
+import type { PinTexts } from './drawPinValues';
 
 export interface NetworkOverlay {
   /** Power flow aligned with network.elements / network.vlinks (api.ts NetworkPower). */
   readonly power?: NetworkPower;
   /** Text shown under an element, e.g. a timer's ET. */
   readonly liveValues?: ReadonlyMap<ElementId, string>;
+  /** Values beside box pins (operands, data lines between blocks), by box id. */
+  readonly pinValues?: ReadonlyMap<ElementId, PinTexts>;
   /** Elements whose variable (or an output) is forced: drawn marked in the theme's forced colour. */
   readonly forced?: ReadonlySet<ElementId>;
   /** Elements whose I/O point holds another value on the device than in the program: the marker text ("device: FALSE"). */

@@ -3,6 +3,7 @@
 import { layoutNetworks } from '../canvas/geometry';
 import { goToPartner } from '../outline/goTo';
 import { PALETTE_ITEMS } from '../palette/paletteItems';
+import { addToWatchAtCursor } from '../sim/watchFromCanvas';
 import { copy, cut, pasteFromSystem } from './clipboardActions';
 import {
   deleteCurrentNetwork,
@@ -329,6 +330,14 @@ export const COMMANDS: readonly EditorCommand[] = [
     keys: ['k'],
     inMenu: true,
     run: (ctx) => focusHeaderField(ctx, 'comment'),
+  },
+  {
+    id: 'view.watch',
+    label: 'Add to watch',
+    group: 'View',
+    keys: ['w'],
+    inMenu: true,
+    run: addToWatchAtCursor,
   },
   {
     id: 'nav.partner',

@@ -54,31 +54,17 @@ const operandText = (s: SimState, operand: string): string | undefined => {
 };
 
 /**
- * Text shown under an element while simulating: its variable's state, an FB's outputs (a user FB's
- * too, with the project's library), a function's assigned outputs. Names are read in the monitored body.
+ * Text shown under a contact or coil while simulating: its variable's state, read in the monitored
+ * body. A box shows its values beside its pins instead (pinLiveValues.ts).
  */
-export function elementLiveText(s: SimState, el: LdElement, library: BlockLibrary = STANDARD_LIBRARY): string | undefined {
+export function elementLiveText(s: SimState, el: LdElement, _library?: BlockLibrary): string | undefined {
   switch (el.kind) {
     case 'contact':
     case 'coil':
       return el.variable ? operandText(s, el.variable) : undefined;
-    case 'box': {
-      const signature = library.signature(el.blockType);
-      if (!signature) return undefined;
-      const parts: string[] = [];
-      if (signature.kind === 'fb' && el.instance) {
-        for (const pin of signature.outputs) {
-          const text = operandText(s, `${el.instance}.${pin.name}`);
-          if (text !== undefined) parts.push(`${pin.name}=${text}`);
-        }
-      } else {
-        for (const [pin, target] of Object.entries(el.outputs)) {
-          const text = target ? operandText(s, target) : undefined;
-          if (text !== undefined) parts.push(`${pin}=${text}`);
-        }
-      }
-      return parts.length > 0 ? parts.join(' ') : undefined;
-    }
+    case 'box':
+      // A box's values stand beside its pins (pinLiveValues.ts), not under it.
+      return undefined;
     case 'link':
     case 'jump':
     case 'return':

@@ -11,6 +11,7 @@ import type {
   NetworkPower,
   Plc,
   PlcProbe,
+  PinLines,
   PlcState,
   PowerSnapshot,
   ScanReport,
@@ -20,6 +21,7 @@ import type {
 } from '../api';
 import type { BodyInfo } from '../compile/flatten';
 import { slotKey } from '../compile/emitter';
+import { pinLines } from '../compile/pinLines';
 import { networkPower, type PowerTrace } from './snapshot';
 import { programOf } from '../compile/taskSchedule';
 import type { Access, VarSymbol } from '../compile/symbols';
@@ -204,6 +206,34 @@ export class ScanPlc extends ScanCycle implements Plc {
     return importMemory(this.program, this.mem, state, this.nextScanTime());
   }
 
+  /** Data lines per body range (PlcProbe.pinLines), made on first use. */
+  private readonly lineCache = new Map<string, PinLines>();
+
+  private pinLines(first: number, end: number): PinLines {
+    const key = `${first}:${end}`;
+    const hit = this.lineCache.get(key);
+    if (hit) return hit;
+    const mem = this.mem;
+    const found = pinLines(this.program, first, end);
+    const readers = found.map((l): (() => Value) => {
+      const src = l.src;
+      if (src.from === 'access') {
+        const a = src.access;
+        return () => mem.read(a);
+      }
+      const slot = { store: src.store, slot: src.slot } as VarSymbol;
+      return () => mem.load(slot);
+    });
+    const lines: PinLines = {
+      lines: found.map(({ network, element, pin, side, type }) => ({ network, element, pin, side, type })),
+      read: (out) => {
+        for (let i = 0; i < readers.length; i++) out[i] = readers[i]!();
+      },
+    };
+    this.lineCache.set(key, lines);
+    return lines;
+  }
+
   probe(): PlcProbe {
     const { program, mem, words } = this;
     return {
@@ -232,6 +262,7 @@ export class ScanPlc extends ScanCycle implements Plc {
       },
       meters: this.meters,
       inputImage: this.inputImage,
+      pinLines: (first, end) => this.pinLines(first, end),
       save: () => this.saveImage(),
       restore: (image) => this.restoreImage(image as Image),
       replay: (timeMs, inputs) => {
