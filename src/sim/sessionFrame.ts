@@ -41,6 +41,8 @@ export function buildFrame(parts: FrameParts): SimFrame {
       if (v.location?.toUpperCase().startsWith('%I')) values[i] = carried.values[i]!;
     });
   const trend = parts.trend.take();
+  const trendTrigger = parts.trend.triggerState;
+  const trendCapture = parts.trend.takeCapture();
   const fault = plc?.fault;
   // At a scan boundary a configuration stands before its first program instance's network 1.
   const first = layout?.programs?.[0]?.instance;
@@ -64,6 +66,8 @@ export function buildFrame(parts: FrameParts): SimFrame {
     values,
     forced: plc ? [...plc.forced()] : [],
     ...(trend ? { trend } : {}),
+    ...(trendTrigger ? { trendTrigger } : {}),
+    ...(trendCapture ? { trendCapture } : {}),
     program: plc ? parts.programId : null,
     epoch: parts.epoch,
     ...(parts.history ? { history: parts.history } : {}),
