@@ -44,6 +44,8 @@ export interface EditorCommand {
   readonly inMenu?: boolean;
   run(ctx: EditorContext): void;
   enabled?(ctx: EditorContext): boolean;
+  /** Why the command cannot run now (the command palette shows it beside a disabled command). */
+  disabledReason?(ctx: EditorContext): string | undefined;
 }
 
 /** Focuses a field of a network header once it is on screen (after focusCell scrolled there). */
