@@ -58,7 +58,7 @@ export type HostMessage =
   | { readonly type: 'unforce'; readonly name: string }
   | { readonly type: 'unforceAll' }
   /** Signals sampled after every scan for the trend; `capacity` scans are kept. */
-  | { readonly type: 'setTrend'; readonly names: readonly string[]; readonly capacity: number }
+  | { readonly type: 'setTrend'; readonly names: readonly string[]; readonly capacity: number; readonly trigger?: TrendTrigger }
   /** Gateway: input image by IEC location (%IX0.0 -> true), applied at the next input read. */
   | { readonly type: 'setInputs'; readonly values: Readonly<Record<string, Value>> }
   /** Gateway: start or stop `outputs` events. */
@@ -230,6 +230,35 @@ export interface TrendSamples {
   readonly series: readonly (readonly number[])[];
 }
 
+/**
+ * The trend's trigger, evaluated on every scan in the worker: `name` crossing `level` upwards
+ * ('rising') or downwards ('falling'); a BOOL (0/1) crosses 0.5, so rising is FALSE -> TRUE.
+ */
+export interface TrendTrigger {
+  readonly name: string;
+  readonly direction: 'rising' | 'falling';
+  readonly level: number;
+  /** Share of the window recorded before the trigger, percent (0-100). */
+  readonly prePercent: number;
+  /** single: one capture, then stop; normal: re-arm after each capture (the display shows the last). */
+  readonly mode: 'single' | 'normal';
+  /** Counts the UI's arming: frames name the arming their state and capture belong to. */
+  readonly arm: number;
+}
+
+/** armed: waiting for the condition; capturing: triggered, filling the window after it; done: single capture taken; unknown: no such variable. */
+export type TrendTriggerState = 'armed' | 'capturing' | 'done' | 'unknown';
+
+/** A window of samples around a trigger: `triggerIndex` is the sample of the scan where the condition held. */
+export interface TrendCapture {
+  readonly samples: TrendSamples;
+  readonly triggerIndex: number;
+  /** Captures since the trigger was armed (1 for the first). */
+  readonly count: number;
+  /** The trigger's `arm` it was taken under. */
+  readonly arm: number;
+}
+
 /** State of the simulation, posted at display rate while running and after every command. */
 export interface SimFrame {
   readonly mode: SimMode;
@@ -260,6 +289,10 @@ export interface SimFrame {
   readonly forced: readonly (readonly [string, Value])[];
   /** New trend samples since the previous frame. */
   readonly trend?: TrendSamples;
+  /** The trend trigger's state, when one is set. */
+  readonly trendTrigger?: { readonly state: TrendTriggerState; readonly arm: number };
+  /** A capture completed since the previous frame. */
+  readonly trendCapture?: TrendCapture;
   /** Id (programId) of the program the worker has installed, null when none: what runs. */
   readonly program: string | null;
   /** The last command epoch the worker handled (see WithProject.epoch). */

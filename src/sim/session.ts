@@ -13,7 +13,7 @@ import { parseScenario, prepareScenario, runPrepared, scenarioCycle, type Scenar
 import type { CompiledProgram } from '../engine/plc';
 import type { Pou, Scenario } from '../model/project';
 import { fingerprintId } from './programId';
-import type { HostMessage, OnlineChangePlan, SimFrame, SimLayout, SimMode, SimView, WorkerMessage } from './protocol';
+import type { HostMessage, OnlineChangePlan, SimFrame, SimLayout, SimMode, SimView, TrendTrigger, WorkerMessage } from './protocol';
 import { programInstances, runOptions } from './runTarget';
 import { packView } from './viewPower';
 import type { Breakpoint } from '../engine/runtime/breakpoints';
@@ -76,7 +76,7 @@ export class SimSession {
   private lastFrameAt = -Infinity;
   private readonly trend = new TrendRecorder();
   /** Signals the UI asked for; the trend samples those the loaded program has. */
-  private trendRequest: { names: string[]; capacity: number } = { names: [], capacity: 1 };
+  private trendRequest: { names: string[]; capacity: number; trigger?: TrendTrigger } = { names: [], capacity: 1 };
   private outputsSubscribed = false;
   private lastOutputs: Record<string, Value> | undefined;
   private gatewayInputs: Record<string, Value> = {};
@@ -217,8 +217,9 @@ export class SimSession {
         this.postFrame();
         return;
       case 'setTrend':
-        this.trendRequest = { names: [...m.names], capacity: m.capacity };
-        this.configureTrend();
+        this.trendRequest = { names: [...m.names], capacity: m.capacity, ...(m.trigger ? { trigger: m.trigger } : {}) };
+        this.configureTrend(true);
+        this.postFrame();
         return;
       case 'setInputs':
         this.gatewayInputs = { ...this.gatewayInputs, ...m.values };
@@ -452,10 +453,14 @@ export class SimSession {
     this.runner.breakpoints = list;
   }
 
-  private configureTrend(): void {
+  private configureTrend(rearm = false): void {
     const known = new Map((this.layout?.variables ?? []).map((v) => [v.name.toUpperCase(), v.name]));
     const names = this.trendRequest.names.flatMap((n) => known.get(n.toUpperCase()) ?? []);
-    this.trend.configure(names, this.trendRequest.capacity);
+    const request = this.trendRequest.trigger;
+    const triggerName = request && known.get(request.name.toUpperCase());
+    // Before a program is loaded the trigger waits armed; a name the program lacks is reported.
+    const trigger = request && { ...request, name: triggerName ?? request.name };
+    this.trend.configure(names, this.trendRequest.capacity, trigger, { known: !this.layout || triggerName !== undefined, rearm });
   }
 
   private requirePlc(): Plc {

@@ -48,6 +48,8 @@ export function buildFrame(parts: FrameParts): SimFrame {
       ? readPinValues(probe, layout, viewBody(parts.program, layout, lastRun(probe.ranIn)))
       : [];
   const trend = parts.trend.take();
+  const trendTrigger = parts.trend.triggerState;
+  const trendCapture = parts.trend.takeCapture();
   const fault = plc?.fault;
   // At a scan boundary a configuration stands before its first program instance's network 1.
   const first = layout?.programs?.[0]?.instance;
@@ -72,6 +74,8 @@ export function buildFrame(parts: FrameParts): SimFrame {
     pins,
     forced: plc ? [...plc.forced()] : [],
     ...(trend ? { trend } : {}),
+    ...(trendTrigger ? { trendTrigger } : {}),
+    ...(trendCapture ? { trendCapture } : {}),
     program: plc ? parts.programId : null,
     epoch: parts.epoch,
     ...(parts.history ? { history: parts.history } : {}),

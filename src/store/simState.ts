@@ -5,7 +5,7 @@ import type { Diagnostic, Fault, StepFrame } from '../engine/api';
 import type { ExplainTarget, Explanation } from '../engine/explain';
 import type { Value } from '../model/iecTypes';
 import type { Project, Scenario } from '../model/project';
-import type { ExecStats, HistoryRange, OnlineChangePlan, SimLayout, SimMode, SimPinValue, SimValueInput } from '../sim/protocol';
+import type { ExecStats, HistoryRange, OnlineChangePlan, SimLayout, SimMode, SimPinValue, SimValueInput, TrendCapture, TrendTrigger, TrendTriggerState } from '../sim/protocol';
 import type { ScenarioResult } from '../sim/scenario';
 import type { CanvasScope, ShownPou } from '../sim/scope';
 import type { TrendBuffer } from '../sim/trendBuffer';
@@ -80,6 +80,10 @@ export interface SimState {
   readonly trendNames: readonly string[];
   readonly trendCapacity: number;
   readonly trend: TrendBuffer;
+  /** The trend's trigger (evaluated on every scan in the worker), its state, and the last window it captured. */
+  readonly trendTrigger: TrendTrigger | undefined;
+  readonly trendTriggerState: TrendTriggerState | undefined;
+  readonly trendCapture: TrendCapture | undefined;
   readonly refusal: CompileRefusal | undefined;
   readonly notice: string | undefined;
   readonly contextMenu: SimContextMenu | undefined;
@@ -128,6 +132,10 @@ export interface SimState {
   removeWatch(name: string): void;
   toggleTrend(name: string): void;
   setTrendCapacity(scans: number): void;
+  /** Sets (or removes) the trend trigger and arms it; the last capture is dropped. */
+  setTrendTrigger(trigger: Omit<TrendTrigger, 'arm'> | undefined): void;
+  /** Arms the trigger again (after a single capture). */
+  armTrendTrigger(): void;
   openContextMenu(menu: SimContextMenu): void;
   closeContextMenu(): void;
   dismissNotice(): void;

@@ -14,11 +14,14 @@ import type { HistoryView, HostMessage, SimFrame, SimLayout, TrendSamples, Worke
 import type { Explanation } from '../engine/explain';
 import type { ScenarioResult } from '../sim/scenario';
 import { appendTrend, emptyTrend } from '../sim/trendBuffer';
+import { DEFAULT_HISTORY_SCANS } from '../sim/history';
 import { scopeFor, viewKey, type CanvasScope } from '../sim/scope';
 import type { SimState, SimStore } from './simState';
 
 export const DEFAULT_CYCLE_MS = 10;
 export const DEFAULT_TREND_SCANS = 500;
+/** The trend's longest window: the scan history's default length (src/sim/history.ts). */
+export const MAX_TREND_SCANS = DEFAULT_HISTORY_SCANS;
 
 const sameName = (a: string, b: string) => a.toUpperCase() === b.toUpperCase();
 
@@ -101,9 +104,11 @@ export function createSimStore(transport: SimTransport): SimStore {
     sentView = key;
     send({ type: 'setView', view: scope.view });
   };
+  /** Armings of the trend trigger so far (frames of an earlier one are told apart). */
+  let trendArms = 0;
   const sendTrend = () => {
-    const { trendNames, trendCapacity } = store.getState();
-    send({ type: 'setTrend', names: trendNames, capacity: trendCapacity });
+    const { trendNames, trendCapacity, trendTrigger } = store.getState();
+    send({ type: 'setTrend', names: trendNames, capacity: trendCapacity, ...(trendTrigger ? { trigger: trendTrigger } : {}) });
   };
 
   const store: SimStore = createStore<SimState>()((set, get) => {
@@ -145,6 +150,9 @@ export function createSimStore(transport: SimTransport): SimStore {
       trendNames: [],
       trendCapacity: DEFAULT_TREND_SCANS,
       trend: emptyTrend([]),
+      trendTrigger: undefined,
+      trendTriggerState: undefined,
+      trendCapture: undefined,
       refusal: undefined,
       notice: undefined,
       contextMenu: undefined,
@@ -249,12 +257,22 @@ export function createSimStore(transport: SimTransport): SimStore {
       toggleTrend: (name) => {
         const { trendNames } = get();
         const next = trendNames.some((n) => sameName(n, name)) ? trendNames.filter((n) => !sameName(n, name)) : [...trendNames, name];
-        set({ trendNames: next, trend: emptyTrend(next) });
+        set({ trendNames: next, trend: emptyTrend(next), trendCapture: undefined });
         sendTrend();
       },
       setTrendCapacity: (scans) => {
-        const capacity = Math.max(10, Math.min(100_000, Math.floor(scans)));
-        set({ trendCapacity: capacity, trend: emptyTrend(get().trendNames) });
+        const capacity = Math.max(10, Math.min(MAX_TREND_SCANS, Math.floor(scans)));
+        set({ trendCapacity: capacity, trend: emptyTrend(get().trendNames), trendCapture: undefined });
+        sendTrend();
+      },
+      setTrendTrigger: (trigger) => {
+        set({ trendTrigger: trigger && { ...trigger, arm: ++trendArms }, trendCapture: undefined, trendTriggerState: trigger ? 'armed' : undefined });
+        sendTrend();
+      },
+      armTrendTrigger: () => {
+        const trigger = get().trendTrigger;
+        if (!trigger) return;
+        set({ trendTrigger: { ...trigger, arm: ++trendArms }, trendCapture: undefined, trendTriggerState: 'armed' });
         sendTrend();
       },
       openContextMenu: (menu) => set({ contextMenu: menu }),
@@ -553,5 +571,8 @@ function applyFrame(state: SimState, frame: SimFrame): Partial<SimState> {
     forced,
     ...(frame.trend ? { trend: appendTrend(state.trend, frame.trend as TrendSamples, state.trendCapacity) } : {}),
     ...(frame.mode === 'stopped' && frame.scan === 0 ? { trend: emptyTrend(state.trendNames) } : {}),
+    // State and captures of an earlier arming (frames already under way) are left out.
+    ...(state.trendTrigger && frame.trendTrigger?.arm === state.trendTrigger.arm ? { trendTriggerState: frame.trendTrigger.state } : {}),
+    ...(frame.trendCapture && frame.trendCapture.arm === state.trendTrigger?.arm ? { trendCapture: frame.trendCapture } : {}),
   };
 }

@@ -1,7 +1,7 @@
 // The trend's lanes: each BOOL apart in a thin lane, each number in a taller lane on its own
 // scale, and time written in ms or s.
 import { describe, expect, test } from 'vitest';
-import { elideStart, formatTime, laneY, scaleMarks, trendData, trendLayout, type TrendLane } from '../../src/editor/sim/trendChart';
+import { wrapName, formatTime, laneY, scaleMarks, trendData, trendLayout, type TrendLane } from '../../src/editor/sim/trendChart';
 import type { TrendBuffer } from '../../src/sim/trendBuffer';
 
 const buffer: TrendBuffer = {
@@ -72,13 +72,17 @@ describe('trend labels that fit', () => {
     name, type, boolean: type === 'BOOL', bottom, top, min, max,
   });
 
-  test('a long lane name keeps its end after …, a short one stays whole', () => {
+  test('a long lane name wraps after the dots of its path, never cut; a short one stays on one line', () => {
     const width = (t: string) => t.length * 7;
-    expect(elideStart('Lamp', 100, width)).toBe('Lamp');
-    const cut = elideStart('MainInstance.FillTimer.ET', 100, width);
-    expect(cut.startsWith('…')).toBe(true);
-    expect(cut.endsWith('FillTimer.ET')).toBe(true);
-    expect(width(cut)).toBeLessThanOrEqual(100);
+    expect(wrapName('Lamp', 100, width)).toEqual(['Lamp']);
+    const lines = wrapName('MainInstance.FillTimer.ET', 100, width);
+    expect(lines.join('')).toBe('MainInstance.FillTimer.ET');
+    expect(lines).toEqual(['MainInstance.', 'FillTimer.ET']);
+    for (const line of lines) expect(width(line)).toBeLessThanOrEqual(100);
+    // A segment longer than a line breaks where it reaches the edge, still whole when joined.
+    const long = wrapName('AVeryLongVariableNameWithoutDots', 70, width);
+    expect(long.join('')).toBe('AVeryLongVariableNameWithoutDots');
+    for (const line of long) expect(width(line)).toBeLessThanOrEqual(70);
   });
 
   test('scale labels closer than a label height give way; tall lanes keep both', () => {

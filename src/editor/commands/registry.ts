@@ -47,6 +47,8 @@ export interface EditorCommand {
   enabled?(ctx: EditorContext): boolean;
   /** A view option the command switches: whether it is on (the menu shows a check mark). */
   checked?(ctx: EditorContext): boolean;
+  /** Why the command cannot run now (the command palette shows it beside a disabled command). */
+  disabledReason?(ctx: EditorContext): string | undefined;
 }
 
 /** Focuses a field of a network header once it is on screen (after focusCell scrolled there). */

@@ -1,6 +1,7 @@
 // Slots of the app shell. Other parts of the editor add themselves by adding an entry here:
 // a tab in the right side panel or the bottom panel, an item in the top bar, or a host component
 // mounted once (dialogs, background work such as autosave).
+import { CommandHost } from '../commands/CommandHost';
 import type { ComponentType } from 'react';
 import { FilesHost, FileNotice } from '../files/FilesHost';
 import { HardwarePanel } from '../hardware/HardwarePanel';
@@ -81,6 +82,7 @@ export const HOSTS: readonly BarSlot[] = [
   { id: 'network-units', component: NetworkUnitsHost },
   { id: 'find', component: FindHost },
   { id: 'print', component: PrintHost },
+  { id: 'commands', component: CommandHost },
 ];
 
 /** Power flow and live values on the canvas (see src/editor/canvas/overlay.ts); undefined: none. */

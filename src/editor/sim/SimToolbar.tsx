@@ -5,7 +5,6 @@ import { useDocument, type DocumentState } from '../../store/documentStore';
 import type { SimState } from '../../store/simState';
 import { SteppingBadge } from '../hardware/HardwareStepping';
 import { useSimCommands } from '../hardware/useHardwareStepping';
-import { useStepKeys } from './useStepKeys';
 import { useSim, useSimStore } from './simContext';
 import './sim.css';
 
@@ -59,7 +58,6 @@ export function SimToolbar() {
 
   const running = mode === 'running';
   const faulted = mode === 'faulted';
-  useStepKeys(commands, running || faulted);
   const n = Number.parseInt(stepCount, 10);
   const stepN = Number.isFinite(n) && n >= 1 ? Math.min(n, 1_000_000) : undefined;
 

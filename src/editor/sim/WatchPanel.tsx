@@ -3,6 +3,7 @@
 // first), each watchable, writable and forceable by its path (`P.X`, `A[2]`); an enumeration shows
 // and is written by value name.
 import { useMemo, useState } from 'react';
+import { useStore } from 'zustand';
 import { selectProject, useDocument } from '../../store/documentStore';
 import type { SimVariable } from '../../sim/protocol';
 import type { SimState } from '../../store/simState';
@@ -14,6 +15,7 @@ import { useSim, useSimStore } from './simContext';
 import { ForcedBadge } from '../theme/ForcedBadge';
 import { useConfigurationInstances, useWatchCandidates } from './useWatchCandidates';
 import { VariablePicker } from './VariablePicker';
+import { preparedValues } from './preparedValues';
 import { aggregateCandidates, enumText, leafCount, modelLeaf, watchTree, type WatchNode } from './watchTree';
 import './sim.css';
 
@@ -50,7 +52,7 @@ export function WatchPanel() {
       ) : (
         <table className="rs-sim-table" aria-label="Watch">
           <thead>
-            <tr><th>Variable</th><th>Type</th><th>Value</th><th>New value</th><th /></tr>
+            <tr><th>Variable</th><th>Type</th><th>Value</th><th title="A value typed here waits: Ctrl+F7 writes all prepared values once, F7 forces them">Prepared value</th><th /></tr>
           </thead>
           <tbody>
             {watch.map((name) => {
@@ -120,13 +122,16 @@ function WatchRow({ name, variable, depth = 0, label }: { name: string; variable
   // With hardware attached a field input comes from the device: no one-off write, only a confirmed force.
   const field = fieldInputAddress(variable, useGateway());
   const [confirmForce, setConfirmForce] = useState(false);
-  const [text, setText] = useState('');
-  const input = () => {
+  // The prepared value (preparedValues.ts): Ctrl+F7 / F7 write or force every prepared value.
+  const text = useStore(preparedValues, (s) => s.values.get(name.toUpperCase())?.text ?? '');
+  const inputOf = (typed: string) => {
     // An enumeration value is stored as its index.
-    const index = enumValues?.findIndex((v) => v.toUpperCase() === text.trim().toUpperCase()) ?? -1;
+    const index = enumValues?.findIndex((v) => v.toUpperCase() === typed.trim().toUpperCase()) ?? -1;
     if (index >= 0) return { value: index };
-    return { text: text.trim() || (type === 'BOOL' ? (value === 'TRUE' ? 'FALSE' : 'TRUE') : '') };
+    return { text: typed.trim() || (type === 'BOOL' ? (value === 'TRUE' ? 'FALSE' : 'TRUE') : '') };
   };
+  const input = () => inputOf(text);
+  const setText = (typed: string) => preparedValues.getState().prepare({ name, text: typed, input: inputOf(typed), field, pin });
   return (
     <tr data-testid={`watch-row-${name}`}>
       <td style={depth > 0 ? { paddingLeft: `${depth * 14 + 18}px` } : undefined} title={name}>{label ?? name}</td>

@@ -26,12 +26,33 @@ function textWidth(text: string): number {
   return measurer.measureText(text).width;
 }
 
-/** `text`, or its end after "…" when it is wider than `max` px (the end of a path names the signal). */
-export function elideStart(text: string, max: number, width: (t: string) => number = textWidth): string {
-  if (width(text) <= max) return text;
-  let k = 1;
-  while (k < text.length && width(`…${text.slice(k)}`) > max) k++;
-  return `…${text.slice(k)}`;
+/**
+ * `text` in lines no wider than `max` px, broken after a `.` of a path (or inside a segment longer
+ * than a line): a lane name is never cut, only wrapped.
+ */
+export function wrapName(text: string, max: number, width: (t: string) => number = textWidth): string[] {
+  if (width(text) <= max) return [text];
+  const pieces = text.split(/(?<=\.)/);
+  const lines: string[] = [];
+  let line = '';
+  for (const piece of pieces) {
+    if (width(line + piece) <= max) {
+      line += piece;
+      continue;
+    }
+    if (line) lines.push(line);
+    line = '';
+    // A segment wider than a line is broken where it reaches the edge.
+    for (const ch of piece) {
+      if (line && width(line + ch) > max) {
+        lines.push(line);
+        line = '';
+      }
+      line += ch;
+    }
+  }
+  if (line) lines.push(line);
+  return lines;
 }
 
 /** Height of the plotting area, CSS px. */
@@ -86,6 +107,51 @@ export interface TrendLayout {
 export interface TrendView {
   readonly buffer: TrendBuffer;
   readonly layout: TrendLayout;
+  /** Vertical marks at PLC times (ms): the measurement cursors A and B, and the trigger T. */
+  readonly marks?: TrendMarks;
+}
+
+export interface TrendMarks {
+  readonly a?: number | undefined;
+  readonly b?: number | undefined;
+  readonly trigger?: number | undefined;
+}
+
+const MARK_COLOURS = { a: '#0a7d36', b: '#b3127a', trigger: '#c05600' } as const;
+
+/** Draws the cursors and the trigger as vertical lines with their letter at the top (on the canvas, so a PNG has them). */
+function marksPlugin(view: () => TrendView): uPlot.Plugin {
+  return {
+    hooks: {
+      draw: [
+        (u) => {
+          const marks = view().marks;
+          if (!marks) return;
+          const ctx = u.ctx;
+          const ratio = typeof devicePixelRatio === 'number' && devicePixelRatio > 0 ? devicePixelRatio : 1;
+          const { top, height } = u.bbox;
+          const entries: [keyof TrendMarks, string][] = [['trigger', 'T'], ['a', 'A'], ['b', 'B']];
+          for (const [key, letter] of entries) {
+            const t = marks[key];
+            if (t === undefined) continue;
+            const x = Math.round(u.valToPos(t, 'x', true));
+            ctx.save();
+            ctx.strokeStyle = MARK_COLOURS[key];
+            ctx.fillStyle = MARK_COLOURS[key];
+            ctx.lineWidth = Math.max(1, ratio);
+            if (key === 'trigger') ctx.setLineDash([4 * ratio, 3 * ratio]);
+            ctx.beginPath();
+            ctx.moveTo(x, top);
+            ctx.lineTo(x, top + height);
+            ctx.stroke();
+            ctx.font = `bold ${11 * ratio}px system-ui, sans-serif`;
+            ctx.fillText(letter, x + 3 * ratio, top + 12 * ratio);
+            ctx.restore();
+          }
+        },
+      ],
+    },
+  };
 }
 
 const seriesOf = (buffer: TrendBuffer, name: string): readonly number[] => buffer.series[buffer.names.indexOf(name)] ?? [];
@@ -221,6 +287,9 @@ function describePlugin(
   };
 }
 
+/** A signal's colour in the chart (the legend and the PNG use the same). */
+export const signalColour = (i: number): string => COLOURS[i % COLOURS.length]!;
+
 export function trendOptions(
   signals: readonly TrendSignal[],
   width: number,
@@ -232,9 +301,9 @@ export function trendOptions(
   const lanes = () => view().layout.lanes;
   const hasNumbers = signals.some((s) => s.type !== 'BOOL');
   const timeLabels = { current: [] as string[] };
-  // Lane names get the width the longest needs (up to a third of the chart; longer ones keep their end).
+  // Lane names get the width the longest needs (up to a third of the chart; longer ones wrap).
   const nameWidth = Math.min(Math.max(60, ...signals.map((s) => textWidth(s.name) + 14)), Math.max(90, Math.round(width / 3)));
-  const names = () => lanes().map((l) => elideStart(l.name, nameWidth - 14));
+  const names = () => lanes().map((l) => wrapName(l.name, nameWidth - 14).join('\n'));
   // The number scales' labels actually drawn (none closer than a label's height to the one above).
   const scale = { current: new Map<number, string>() };
   return {
@@ -242,7 +311,7 @@ export function trendOptions(
     height,
     legend: { show: true, live: true },
     cursor: { drag: { x: false, y: false } },
-    plugins: [tipPlugin(view), describePlugin(view, timeLabels, names, scale)],
+    plugins: [tipPlugin(view), describePlugin(view, timeLabels, names, scale), marksPlugin(view)],
     scales: {
       x: { time: false },
       lanes: { range: () => [0, Math.max(1, view().layout.total)] },

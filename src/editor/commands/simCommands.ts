@@ -1,0 +1,153 @@
+// The simulator's commands with their keys, as CODESYS has them: F5 run, Shift+F5 stop, F9 toggles
+// a breakpoint on the network at the cursor, F10 / F11 step over / into, Ctrl+F7 writes and F7
+// forces the prepared values of the watch table. They run through the toolbar's commands (aware of
+// attached hardware), which SimKeysHost (useSimKeys) hands over while the app is mounted.
+import type { Project } from '../../model/project';
+import type { SimStore } from '../../store/simState';
+import type { SimCommands } from '../hardware/useHardwareStepping';
+import { forcePrepared, preparedMessage, preparedValues, writePrepared } from '../sim/preparedValues';
+import type { EditorContext } from './editorActions';
+
+/** The running app's simulator: its store, the toolbar's commands and the document's project. */
+export const simControls: { current?: { sim: SimStore; commands: SimCommands; project(): Project } } = {};
+
+export interface SimCommand {
+  readonly id: string;
+  readonly label: string;
+  readonly group: 'Simulation';
+  readonly keys?: readonly string[];
+  readonly description: string;
+  run(ctx: EditorContext): void;
+  enabled?(ctx: EditorContext): boolean;
+  /** Why the command cannot run now (undefined when it can). */
+  disabledReason?(ctx: EditorContext): string | undefined;
+}
+
+const mode = () => simControls.current?.sim.getState().mode;
+const notMounted = 'The simulator is not ready yet.';
+
+/** Why Run / Step cannot start now. */
+const cannotStart = (): string | undefined =>
+  !simControls.current ? notMounted : mode() === 'running' ? 'The program is already running.' : mode() === 'faulted' ? 'The program faulted: reset it first.' : undefined;
+
+/** The network a breakpoint goes on: the keyboard cursor's, else the selection's. */
+const cursorNetwork = (ctx: EditorContext) => {
+  const ui = ctx.ui.getState();
+  return ui.cursor?.network ?? ui.selection.network;
+};
+
+const withReason = (reason: (ctx: EditorContext) => string | undefined) => ({
+  enabled: (ctx: EditorContext) => reason(ctx) === undefined,
+  disabledReason: reason,
+});
+
+export const SIM_COMMANDS: readonly SimCommand[] = [
+  {
+    id: 'sim.run',
+    label: 'Run',
+    group: 'Simulation',
+    keys: ['f5'],
+    description: 'Compile the document and scan in real time',
+    run: () => simControls.current?.commands.run(),
+    ...withReason(cannotStart),
+  },
+  {
+    id: 'sim.stop',
+    label: 'Stop (pause after the current scan)',
+    group: 'Simulation',
+    keys: ['shift+f5'],
+    description: 'Stop scanning after the current scan; values are kept (Reset restarts them)',
+    run: () => simControls.current?.sim.getState().pause(),
+    ...withReason(() => (!simControls.current ? notMounted : mode() === 'running' ? undefined : 'The program is not running.')),
+  },
+  {
+    id: 'sim.toggleBreakpoint',
+    label: 'Toggle breakpoint on the network',
+    group: 'Simulation',
+    keys: ['f9'],
+    description: 'Set or clear a breakpoint on the network at the cursor: execution stops before it runs',
+    run: (ctx) => {
+      const network = cursorNetwork(ctx);
+      const controls = simControls.current;
+      if (!network || !controls) return;
+      controls.sim.getState().toggleBreakpoint(network);
+      const on = controls.sim.getState().breakpoints.includes(network);
+      ctx.ui.getState().setStatus(on ? 'Breakpoint set: execution stops before this network.' : 'Breakpoint cleared.');
+    },
+    ...withReason((ctx) => (!simControls.current ? notMounted : cursorNetwork(ctx) ? undefined : 'Place the cursor on a network first.')),
+  },
+  {
+    id: 'sim.stepOver',
+    label: 'Step over (network)',
+    group: 'Simulation',
+    keys: ['f10'],
+    description: 'The next network runs whole, calls included',
+    run: () => simControls.current?.commands.step({ kind: 'network' }),
+    ...withReason(cannotStart),
+  },
+  {
+    id: 'sim.stepInto',
+    label: 'Step into',
+    group: 'Simulation',
+    keys: ['f11'],
+    description: "A call of a function block or function stops before its body's first network",
+    run: () => simControls.current?.commands.step({ kind: 'network', into: true }),
+    ...withReason(cannotStart),
+  },
+  {
+    id: 'sim.stepScan',
+    label: 'Step one scan',
+    group: 'Simulation',
+    description: 'Run one scan (PLC time advances by one cycle)',
+    run: () => simControls.current?.commands.step({ kind: 'scans', scans: 1 }),
+    ...withReason(cannotStart),
+  },
+  {
+    id: 'sim.writeValues',
+    label: 'Write values',
+    group: 'Simulation',
+    keys: ['mod+f7'],
+    description: 'Write every prepared value of the watch table once',
+    run: (ctx) => {
+      const controls = simControls.current;
+      if (controls) ctx.ui.getState().setStatus(preparedMessage('Wrote', writePrepared(controls.sim)));
+    },
+    ...withReason(() => (!simControls.current ? notMounted : preparedValues.getState().values.size === 0 ? 'No prepared values: type one in the Watch table first.' : undefined)),
+  },
+  {
+    id: 'sim.forceValues',
+    label: 'Force values',
+    group: 'Simulation',
+    keys: ['f7'],
+    description: 'Force every prepared value of the watch table: it keeps that value whatever the program does',
+    run: (ctx) => {
+      const controls = simControls.current;
+      if (controls) ctx.ui.getState().setStatus(preparedMessage('Forced', forcePrepared(controls.sim)));
+    },
+    ...withReason(() => (!simControls.current ? notMounted : preparedValues.getState().values.size === 0 ? 'No prepared values: type one in the Watch table first.' : undefined)),
+  },
+  {
+    id: 'sim.unforceAll',
+    label: 'Remove all forces',
+    group: 'Simulation',
+    description: 'Every forced variable follows the program again',
+    run: () => simControls.current?.sim.getState().unforceAll(),
+    ...withReason(() => (!simControls.current ? notMounted : simControls.current.sim.getState().forced.size === 0 ? 'Nothing is forced.' : undefined)),
+  },
+  {
+    id: 'sim.reset',
+    label: 'Reset (cold restart)',
+    group: 'Simulation',
+    description: 'Every variable to its initial value',
+    run: () => simControls.current?.commands.reset(),
+    ...withReason(() => (!simControls.current ? notMounted : undefined)),
+  },
+  {
+    id: 'sim.clearBreakpoints',
+    label: 'Remove all breakpoints',
+    group: 'Simulation',
+    description: 'Execution no longer stops at any network',
+    run: () => simControls.current?.sim.getState().clearBreakpoints(),
+    ...withReason(() => (!simControls.current ? notMounted : simControls.current.sim.getState().breakpoints.length === 0 ? 'No breakpoints are set.' : undefined)),
+  },
+];

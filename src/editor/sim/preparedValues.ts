@@ -1,0 +1,97 @@
+// Prepared values of the watch table (as in CODESYS): a value typed in a row's "Prepared value"
+// field waits there until it is written once (Ctrl+F7, or the row's Write) or forced (F7, or the
+// row's Force). Writing or forcing all prepared values clears them. A field input of attached
+// hardware is never written, and is forced only through its row's confirmed "Force on hardware".
+import { createStore } from 'zustand/vanilla';
+import type { SimValueInput } from '../../sim/protocol';
+import type { SimStore } from '../../store/simState';
+
+export interface PreparedValue {
+  /** The watch row's name (`Start`, `Conv1.Count`). */
+  readonly name: string;
+  /** As typed. */
+  readonly text: string;
+  /** What is written or forced. */
+  readonly input: SimValueInput;
+  /** The device address when the variable is a field input of attached hardware. */
+  readonly field?: string | undefined;
+  /** A function block pin: written, never forced. */
+  readonly pin?: boolean;
+}
+
+interface PreparedState {
+  /** By upper-case name, in the order prepared. */
+  readonly values: ReadonlyMap<string, PreparedValue>;
+  prepare(value: PreparedValue): void;
+  discard(name: string): void;
+  clear(): void;
+}
+
+export const preparedValues = createStore<PreparedState>()((set, get) => ({
+  values: new Map(),
+  prepare: (value) => {
+    const values = new Map(get().values);
+    if (value.text.trim() === '') values.delete(value.name.toUpperCase());
+    else values.set(value.name.toUpperCase(), value);
+    set({ values });
+  },
+  discard: (name) => {
+    if (!get().values.has(name.toUpperCase())) return;
+    const values = new Map(get().values);
+    values.delete(name.toUpperCase());
+    set({ values });
+  },
+  clear: () => set({ values: new Map() }),
+}));
+
+/** What writing or forcing the prepared values did, as the status line says it. */
+export interface PreparedOutcome {
+  readonly done: readonly string[];
+  /** Names left prepared, with why. */
+  readonly kept: readonly { readonly name: string; readonly why: string }[];
+}
+
+/** Ctrl+F7: writes every prepared value once (an input: at the next input read) and clears them. */
+export function writePrepared(sim: SimStore): PreparedOutcome {
+  const done: string[] = [];
+  const kept: { name: string; why: string }[] = [];
+  for (const v of preparedValues.getState().values.values()) {
+    if (v.field) {
+      kept.push({ name: v.name, why: `a field input (${v.field}) comes from the device: force it with its row's Force on hardware` });
+      continue;
+    }
+    sim.getState().write(v.name, v.input);
+    preparedValues.getState().discard(v.name);
+    done.push(v.name);
+  }
+  return { done, kept };
+}
+
+/** F7: forces every prepared value (it keeps the value whatever the program does) and clears them. */
+export function forcePrepared(sim: SimStore): PreparedOutcome {
+  const done: string[] = [];
+  const kept: { name: string; why: string }[] = [];
+  for (const v of preparedValues.getState().values.values()) {
+    if (v.pin) {
+      kept.push({ name: v.name, why: 'function block pins cannot be forced' });
+      continue;
+    }
+    if (v.field) {
+      kept.push({ name: v.name, why: `forcing a field input (${v.field}) drives outputs on the hardware: confirm with its row's Force on hardware` });
+      continue;
+    }
+    sim.getState().force(v.name, v.input);
+    preparedValues.getState().discard(v.name);
+    done.push(v.name);
+  }
+  return { done, kept };
+}
+
+/** The status line after writing or forcing. */
+export function preparedMessage(verb: 'Wrote' | 'Forced', outcome: PreparedOutcome): string {
+  if (outcome.done.length === 0 && outcome.kept.length === 0)
+    return `No prepared values: type one in the Watch table's "Prepared value" column, then press ${verb === 'Wrote' ? 'Ctrl+F7' : 'F7'}.`;
+  const done = outcome.done.length ? `${verb} ${outcome.done.join(', ')}.` : '';
+  const kept = outcome.kept.map((k) => `${k.name} not ${verb.toLowerCase()}: ${k.why}.`).join(' ');
+  return [done, kept].filter(Boolean).join(' ');
+}
