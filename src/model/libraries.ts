@@ -7,6 +7,7 @@ import { blockSignature } from './blocks';
 import { pouSignature } from './library';
 import type { PouId } from './ids';
 import type { DataType, Pou, Project, ProjectLibrary } from './project';
+import { sha256Hex } from './sha256';
 import { VENDOR_BLOCKS } from './vendorBlocks';
 
 /** A place where the project uses a library's block or data type. */
@@ -310,9 +311,15 @@ export function withLibraries(project: Project): Project {
   return out;
 }
 
-/** `sha256:` and the hex SHA-256 of the text (UTF-8): a library's version. */
+/**
+ * `sha256:` and the hex SHA-256 of the text (UTF-8): a library's version. Web Crypto where the
+ * context has it (a secure one), else the same digest computed here (sha256.ts).
+ */
 export async function libraryHash(text: string): Promise<string> {
-  const digest = await globalThis.crypto.subtle.digest('SHA-256', new TextEncoder().encode(text));
+  const bytes = new TextEncoder().encode(text);
+  const subtle = globalThis.crypto?.subtle;
+  if (!subtle) return `sha256:${sha256Hex(bytes)}`;
+  const digest = await subtle.digest('SHA-256', bytes);
   return `sha256:${Array.from(new Uint8Array(digest), (b) => b.toString(16).padStart(2, '0')).join('')}`;
 }
 

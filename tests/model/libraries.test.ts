@@ -5,6 +5,7 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, test } from 'vitest';
 import { checkProject } from '../../src/engine/check';
 import { addLibrary, libraryUses, removeLibrary, updateLibrary, withLibraries } from '../../src/model/libraries';
+import { sha256Hex } from '../../src/model/sha256';
 import { blockLibrary } from '../../src/model/library';
 import { loadProject, saveProject } from '../../src/model/load';
 import type { Project, ProjectLibrary } from '../../src/model/project';
@@ -67,6 +68,14 @@ describe('reading a file as a library', () => {
     expect(bad.ok ? [] : bad.errors).toEqual(['notes.txt is neither a PLCopen XML file nor a Rungsmith project file']);
     const broken = await readLibraryFile('broken.xml', '<project xmlns="http://www.plcopen.org/xml/tc6_0201">\n<types>\n</project>', NOW);
     expect(broken.ok ? '' : broken.errors[0]).toMatch(/^broken\.xml, line \d+: not well-formed XML/);
+  });
+});
+
+describe('the version hash without Web Crypto (plain http on a plant network)', () => {
+  test('sha256Hex gives the digest node:crypto gives, across block boundaries and for UTF-8 text', async () => {
+    const { createHash } = await import('node:crypto');
+    const texts = ['', 'abc', 'a'.repeat(55), 'a'.repeat(56), 'a'.repeat(64), 'Förderband ⚙ 🏭\n'.repeat(37), fixture('conveyors.xml')];
+    for (const t of texts) expect(sha256Hex(new TextEncoder().encode(t))).toBe(createHash('sha256').update(t).digest('hex'));
   });
 });
 
