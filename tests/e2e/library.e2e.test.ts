@@ -15,6 +15,8 @@ import { SimPage } from './simPage';
 const browser = useChromium();
 const FIXTURE = readFileSync(new URL('../fixtures/libraries/conveyors.xml', import.meta.url), 'utf8');
 const HASH = createHash('sha256').update(FIXTURE).digest('hex');
+const FIXTURE_V2 = readFileSync(new URL('../fixtures/libraries/conveyors-v2.xml', import.meta.url), 'utf8');
+const HASH_V2 = createHash('sha256').update(FIXTURE_V2).digest('hex');
 
 let editor: EditorPage;
 let draw: DrawPage;
@@ -139,6 +141,40 @@ test('the library is saved with the project and is there after a reload', async 
   await page.getByTestId('tab-palette').click();
   await page.getByTestId('palette-library-Conveyors').getByTestId('palette-block-Conveyor').waitFor();
   expect((await project()).libraries?.[0]?.hash).toBe(`sha256:${HASH}`);
+});
+
+test('an update from a newer file shows what changes and which uses need attention; Undo takes it back', async () => {
+  const { page } = editor;
+  await editor.menu('File', 'Libraries…');
+  const chooser = page.waitForEvent('filechooser');
+  await manager().getByTestId('library-update-Conveyors').click();
+  await (await chooser).setFiles({ name: 'conveyors-v2.xml', mimeType: 'application/xml', buffer: Buffer.from(FIXTURE_V2) });
+  const pending = manager().getByTestId('library-pending');
+  await pending.waitFor();
+  expect(await pending.locator('h3').textContent()).toBe('Update Conveyors from conveyors-v2.xml');
+  expect(await pending.getByTestId('library-diff').locator('li').allTextContents()).toEqual([
+    'added: Scale2',
+    'removed: Scale',
+    'interface changed: FUNCTION_BLOCK Conveyor (Start : BOOL; Stop : BOOL -> Running : BOOL; Starts : INT) → FUNCTION_BLOCK Conveyor (Start : BOOL; Stop : BOOL; Jog : BOOL -> Running : BOOL; Starts : INT)',
+  ]);
+  expect(await pending.getByTestId('library-affected').locator('li').allTextContents()).toEqual([
+    'Main: variable Conveyor1 : Conveyor',
+    'Main, network 1: box Conveyor',
+  ]);
+  await pending.getByTestId('library-confirm').click();
+  await pending.waitFor({ state: 'detached' });
+  await poll(() => manager().getByTestId('library-hash-Conveyors').textContent()).toBe(HASH_V2.slice(0, 12));
+  expect((await project()).libraries?.[0]?.pous.map((p) => p.name)).toEqual(['Conveyor', 'Scale2']);
+  // The palette follows; the call keeps working with the new interface (Jog left open).
+  await manager().getByTestId('library-close').click();
+  await page.getByTestId('tab-palette').click();
+  await page.getByTestId('palette-library-Conveyors').getByTestId('palette-block-Scale2').waitFor();
+  await editor.tab('Problems');
+  await poll(() => draw.problemsSummary()).toBe('No problems');
+  // One undo step brings version 1 back.
+  await editor.menu('Edit', 'Undo');
+  await poll(async () => (await project()).libraries?.[0]?.hash).toBe(`sha256:${HASH}`);
+  await page.getByTestId('palette-library-Conveyors').getByTestId('palette-block-Scale').waitFor();
 });
 
 test('removing the library is refused while Main calls its block, with the uses listed', async () => {
