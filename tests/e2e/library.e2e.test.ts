@@ -6,7 +6,10 @@
 import { createHash } from 'node:crypto';
 import { readFileSync } from 'node:fs';
 import { afterAll, beforeAll, expect, test } from 'vitest';
+import { saveProject } from '../../src/model/load';
 import type { Project } from '../../src/model/project';
+import { io, multiProject, pou } from '../engine/userBlocksHelpers';
+import { ladder } from '../engine/ladder';
 import { useChromium, waitForApp } from './appPage';
 import { DrawPage } from './drawPage';
 import { EditorPage, poll } from './panelsPage';
@@ -184,6 +187,33 @@ test('removing the library is refused while Main calls its block, with the uses 
   const refused = manager().getByTestId('library-refused');
   await refused.waitFor();
   expect(await refused.locator('li').allTextContents()).toEqual(['Main: variable Conveyor1 : Conveyor', 'Main, network 1: box Conveyor']);
+  expect((await project()).libraries?.map((l) => l.name)).toEqual(['Conveyors']);
+  await manager().getByTestId('library-close').click();
+});
+
+test('a Rungsmith project file as a library: its LD block is drawn read-only; an unused library is removed at once', async () => {
+  const { page } = editor;
+  // Another project with an LD function block (and a program, which the library leaves out).
+  const latch = pou('Latch', 'FUNCTION_BLOCK', [...io('input', 'SetIn BOOL', 'ResetIn BOOL'), ...io('output', 'Q BOOL')], [
+    ladder(['+ [SetIn] + [/ResetIn] (Q)', '+ [Q] +']),
+  ]);
+  const other = { ...multiProject([pou('Main', 'PROGRAM', [], []), latch]), name: 'Latches' };
+  await editor.menu('File', 'Libraries…');
+  const chooser = page.waitForEvent('filechooser');
+  await manager().getByTestId('library-add').click();
+  await (await chooser).setFiles({ name: 'latches.json', mimeType: 'application/json', buffer: Buffer.from(saveProject(other)) });
+  const pending = manager().getByTestId('library-pending');
+  expect(await pending.getByTestId('library-name').inputValue()).toBe('Latches');
+  await pending.getByTestId('library-confirm').click();
+  const row = manager().getByTestId('library-row-Latches');
+  expect(await row.textContent()).toMatch(/latches\.json \(Rungsmith project\)/);
+  await row.getByTestId('library-view-Latch').click();
+  const view = manager().getByTestId('library-block-view');
+  expect(await view.getByRole('img', { name: 'Network 1 of Latch' }).locator('svg').count()).toBe(1);
+  expect(await view.getByTestId('library-block-interface').textContent()).toBe('FUNCTION_BLOCK Latch (SetIn : BOOL; ResetIn : BOOL -> Q : BOOL)');
+  expect(await manager().getByTestId('library-uses-Latches').textContent()).toBe('0');
+  await manager().getByTestId('library-remove-Latches').click();
+  await row.waitFor({ state: 'detached' });
   expect((await project()).libraries?.map((l) => l.name)).toEqual(['Conveyors']);
   await manager().getByTestId('library-close').click();
 });
