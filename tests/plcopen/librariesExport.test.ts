@@ -8,6 +8,7 @@ import { addLibrary } from '../../src/model/libraries';
 import type { Project } from '../../src/model/project';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
+import { extrasText } from '../../src/plcopen/importSummary';
 import { readLibraryFile } from '../../src/plcopen/libraryFile';
 import { ladder, plcOf, trace, vars, type BoxSpec } from '../engine/ladder';
 import { multiProject, pou } from '../engine/userBlocksHelpers';
@@ -63,6 +64,8 @@ describe('PLCopen export of libraries and scenarios', () => {
     expect(lib.pous.map((x) => x.variables)).toEqual(original.libraries![0]!.pous.map((x) => x.variables));
     expect(lib.dataTypes).toEqual(original.libraries![0]!.dataTypes);
     expect(p.scenarios).toEqual(SCENARIOS);
+    // The import report says so.
+    expect(extrasText(p)).toBe('Libraries: Conveyors (2 blocks). 2 test scenarios.');
     // No warning about the Rungsmith addData (it is read, not dropped).
     expect(imported.report.warnings.filter((w) => /addData/.test(w.message))).toEqual([]);
     // And it runs as before.
