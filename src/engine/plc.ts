@@ -1,4 +1,5 @@
 // The engine's entry points: compileProgram (check + lower a PROGRAM) and createPlc (run it).
+import { withLibraries } from '../model/libraries';
 import type { Project } from '../model/project';
 import type { CompileOptions, Diagnostic, Plc, PlcOptions } from './api';
 import { assembleProgram, type CompiledProgram } from './compile/program';
@@ -7,12 +8,15 @@ import { ScanPlc } from './runtime/scanner';
 export type { CompiledProgram } from './compile/program';
 export { planStateTransfer } from './runtime/instanceState';
 
-/** Checks and lowers one PROGRAM (default: the first). `program` is present only when there is no error. */
+/**
+ * Checks and lowers one PROGRAM (default: the first). `program` is present only when there is no
+ * error. The blocks of the project's libraries (project.libraries) are compiled with it.
+ */
 export function compileProgram(
   project: Project,
   opts: CompileOptions = {},
 ): { program?: CompiledProgram; diagnostics: Diagnostic[] } {
-  return assembleProgram(project, opts);
+  return assembleProgram(withLibraries(project), opts);
 }
 
 /** A PLC running a compiled program, cold-restarted (every variable at its initial value). */

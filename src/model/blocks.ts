@@ -36,6 +36,8 @@ export interface BlockSignature {
     | 'user'
     | 'external';
   readonly description: string;
+  /** A block of a library kept with the project (category 'user'): the library's name. */
+  readonly library?: string;
 }
 
 const p = (name: string, type: PinType, poly = false): PinSignature => (poly ? { name, type, poly } : { name, type });

@@ -28,7 +28,7 @@
 // Enum values are stored as their index (0 for the first value) in an INT.
 import { FB_SIGNATURES } from './blocks';
 import { DATE_TYPE_ALIASES, IDENTIFIER_RE, isElementaryType, parseSizedString, type ElementaryType } from './iecTypes';
-import type { DataType, DataTypeDef, Project } from './project';
+import type { DataType, DataTypeDef, Pou, Project, ProjectLibrary } from './project';
 import { vendorType } from './vendorTypes';
 
 export interface Dim {
@@ -65,12 +65,23 @@ export const ENUM_STORAGE: ElementaryType = 'INT';
 /** The project's data type of that name, else a vendor type. */
 export function findDataType(project: Pick<Project, 'dataTypes'>, name: string): DataType | undefined {
   const key = name.trim().toUpperCase();
-  return project.dataTypes?.find((d) => d.name.toUpperCase() === key) ?? vendorType(key);
+  const same = (d: DataType) => d.name.toUpperCase() === key;
+  return (
+    project.dataTypes?.find(same) ??
+    librariesOf(project)
+      .flatMap((l) => l.dataTypes ?? [])
+      .find(same) ??
+    vendorType(key)
+  );
 }
+
+/** The libraries kept with the project (libraries.ts), when the object given is a whole project. */
+const librariesOf = (project: object): readonly ProjectLibrary[] => (project as Pick<Project, 'libraries'>).libraries ?? [];
 
 export function isFbTypeName(project: Pick<Project, 'pous'>, name: string): boolean {
   const key = name.trim().toUpperCase();
-  return FB_SIGNATURES.some((s) => s.name === key) || project.pous.some((p) => p.kind === 'FUNCTION_BLOCK' && p.name.toUpperCase() === key);
+  const fb = (p: Pou) => p.kind === 'FUNCTION_BLOCK' && p.name.toUpperCase() === key;
+  return FB_SIGNATURES.some((s) => s.name === key) || project.pous.some(fb) || librariesOf(project).some((l) => l.pous.some(fb));
 }
 
 const ARRAY_RE = /^ARRAY\s*\[(.*?)\]\s*OF\s+(.+)$/is;

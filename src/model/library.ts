@@ -12,12 +12,14 @@
 //
 // External blocks (externalBlocks.ts) resolve like user blocks, through a synthesized POU with no
 // networks: the project's `externalBlocks`, then OpenPLC's vendor libraries (vendorBlocks.ts).
-// Precedence by name: standard block, then the project's own POU, then the project's external
-// block, then the vendor block.
+// Libraries kept with the project (project.libraries, libraries.ts) resolve like the project's own
+// POUs (category 'user', `library` set), after them.
+// Precedence by name: standard block, then the project's own POU, then a library's block, then the
+// project's external block, then the vendor block.
 import { blockSignature, FB_SIGNATURES, FUNCTION_SIGNATURES, type BlockSignature, type PinSignature } from './blocks';
 import { externalBlockPou, externalSignature } from './externalBlocks';
 import { isElementaryType, type PinType } from './iecTypes';
-import type { DataType, ExternalBlock, Pou, Project } from './project';
+import type { DataType, ExternalBlock, Pou, Project, ProjectLibrary } from './project';
 import { ENUM_STORAGE, resolveType } from './dataTypes';
 import { VENDOR_BLOCKS } from './vendorBlocks';
 
@@ -43,6 +45,8 @@ export interface BlockLibrary {
   isExternal(name: string): boolean;
   /** The project's own blocks, in project order. */
   readonly userBlocks: readonly BlockSignature[];
+  /** Blocks of the libraries kept with the project, library by library (`library` set). */
+  readonly libraryBlocks: readonly BlockSignature[];
   /** External blocks: the project's, then the vendor libraries', library by library (category 'external'). */
   readonly externalBlocks: readonly BlockSignature[];
   /** Standard blocks, user blocks, then external blocks. */
@@ -50,6 +54,7 @@ export interface BlockLibrary {
 }
 
 const NO_TYPES: readonly DataType[] = [];
+const NO_LIBRARIES: readonly ProjectLibrary[] = [];
 
 /** The name PLCopen and Beremiz give a function's result pin. */
 export const FUNCTION_RESULT_PIN = 'OUT';
@@ -123,20 +128,38 @@ function addEntries(into: Map<string, Entry>, entries: Iterable<Entry | undefine
 let vendorEntries: readonly Entry[] | undefined;
 const vendor = () => (vendorEntries ??= VENDOR_BLOCKS.map((b) => externalEntry(b, 'vendor')).filter((e) => e !== undefined));
 
-function makeLibrary(pous: readonly Pou[], externals: readonly ExternalBlock[], withVendor: boolean, dataTypes: readonly DataType[] = NO_TYPES): BlockLibrary {
+function makeLibrary(
+  pous: readonly Pou[],
+  externals: readonly ExternalBlock[],
+  withVendor: boolean,
+  dataTypes: readonly DataType[] = NO_TYPES,
+  libraries: readonly ProjectLibrary[] = NO_LIBRARIES,
+): BlockLibrary {
   const byName = new Map<string, Entry>();
+  const types = libraries.length ? [...dataTypes, ...libraries.flatMap((l) => l.dataTypes ?? [])] : dataTypes;
   const users = addEntries(
     byName,
     pous.map((pou) => {
-      const sig = pouSignature(pou, dataTypes);
+      const sig = pouSignature(pou, types);
       return sig && { pou, sig };
     }),
   );
+  const libs = addEntries(
+    byName,
+    libraries.flatMap((lib) =>
+      lib.pous.map((pou) => {
+        const sig = pouSignature(pou, types);
+        const what = `${pou.kind === 'FUNCTION' ? 'Function' : 'Function block'} ${pou.name} of the library ${lib.name}.`;
+        return sig && { pou, sig: { ...sig, library: lib.name, description: pou.comment.trim() ? `${pou.comment.trim()} (library ${lib.name})` : what } };
+      }),
+    ),
+  );
   const ext = [...addEntries(byName, externals.map((b) => externalEntry(b, 'project'))), ...(withVendor ? addEntries(byName, vendor()) : [])];
   const userBlocks = users.map((u) => u.sig);
+  const libraryBlocks = libs.map((u) => u.sig);
   const externalBlocks = ext.map((e) => e.sig);
   const externalKeys = new Set(ext.map((e) => e.pou.name.trim().toUpperCase()));
-  const all = [...STANDARD, ...userBlocks, ...externalBlocks];
+  const all = [...STANDARD, ...userBlocks, ...libraryBlocks, ...externalBlocks];
   const find = (name: string) => byName.get(name.trim().toUpperCase());
   return {
     signature: (name) => blockSignature(name) ?? find(name)?.sig,
@@ -144,6 +167,7 @@ function makeLibrary(pous: readonly Pou[], externals: readonly ExternalBlock[], 
     isFbType: (type) => (blockSignature(type) ?? find(type)?.sig)?.kind === 'fb',
     isExternal: (name) => !blockSignature(name) && externalKeys.has(name.trim().toUpperCase()),
     userBlocks,
+    libraryBlocks,
     externalBlocks,
     all: () => all,
   };
@@ -153,33 +177,37 @@ function makeLibrary(pous: readonly Pou[], externals: readonly ExternalBlock[], 
 export const STANDARD_LIBRARY: BlockLibrary = makeLibrary([], [], false);
 
 const NO_EXTERNALS: readonly ExternalBlock[] = [];
-const cache = new WeakMap<readonly Pou[], WeakMap<readonly ExternalBlock[], WeakMap<readonly DataType[], BlockLibrary>>>();
+const cache = new WeakMap<
+  readonly Pou[],
+  WeakMap<readonly ExternalBlock[], WeakMap<readonly DataType[], WeakMap<readonly ProjectLibrary[], BlockLibrary>>>
+>();
+
+/** The value of `key` in a WeakMap, made by `make` on first use. */
+function memo<K extends object, V>(map: WeakMap<K, V>, key: K, make: () => V): V {
+  let v = map.get(key);
+  if (v === undefined) {
+    v = make();
+    map.set(key, v);
+  }
+  return v;
+}
 
 /**
  * The blocks of a project: standard, its own POUs, its external blocks and the vendor blocks.
- * Memoised on the project's `pous` and `externalBlocks` arrays: projects are immutable, so an edit
+ * Memoised on the project's `pous`, `externalBlocks`, `dataTypes` and `libraries` arrays: projects are immutable, so an edit
  * that changes a POU or an external block gives a new array and a new library.
  */
-export function blockLibrary(project: Pick<Project, 'pous' | 'externalBlocks' | 'dataTypes'> | undefined): BlockLibrary {
+export function blockLibrary(
+  project: Pick<Project, 'pous' | 'externalBlocks' | 'dataTypes' | 'libraries'> | undefined,
+): BlockLibrary {
   if (!project) return STANDARD_LIBRARY;
   const externals = project.externalBlocks ?? NO_EXTERNALS;
   const types = project.dataTypes ?? NO_TYPES;
-  let byExternals = cache.get(project.pous);
-  if (!byExternals) {
-    byExternals = new WeakMap();
-    cache.set(project.pous, byExternals);
-  }
-  let byTypes = byExternals.get(externals);
-  if (!byTypes) {
-    byTypes = new WeakMap();
-    byExternals.set(externals, byTypes);
-  }
-  let lib = byTypes.get(types);
-  if (!lib) {
-    lib = makeLibrary(project.pous, externals, true, types);
-    byTypes.set(types, lib);
-  }
-  return lib;
+  const libraries = project.libraries ?? NO_LIBRARIES;
+  const byExternals = memo(cache, project.pous, () => new WeakMap());
+  const byTypes = memo(byExternals, externals, () => new WeakMap());
+  const byLibraries = memo(byTypes, types, () => new WeakMap());
+  return memo(byLibraries, libraries, () => makeLibrary(project.pous, externals, true, types, libraries));
 }
 
 /** True when the pin is a VAR_IN_OUT of a user block. */

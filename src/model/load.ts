@@ -172,6 +172,18 @@ const dataTypeSchema = z
   })
   .strict();
 
+const librarySchema = z
+  .object({
+    name: z.string().min(1),
+    hash: z.string().regex(/^sha256:[0-9a-f]{64}$/, 'a library hash is "sha256:" and 64 hex digits'),
+    sourceFile: z.string(),
+    addedAt: z.string(),
+    origin: z.enum(['plcopen', 'rungsmith']),
+    pous: z.array(pouSchema),
+    dataTypes: z.array(dataTypeSchema).optional(),
+  })
+  .strict();
+
 export const projectSchema = z
   .object({
     format: z.literal(PROJECT_FORMAT),
@@ -201,6 +213,7 @@ export const projectSchema = z
     scenarios: z.array(z.object({ name: z.string().min(1), csv: z.string() }).strict()).optional(),
     watch: z.array(z.string().min(1)).optional(),
     dataTypes: z.array(dataTypeSchema).optional(),
+    libraries: z.array(librarySchema).optional(),
     extensions,
   })
   .strict();
@@ -300,6 +313,7 @@ function structuralErrors(project: Project): LoadError[] {
     });
   });
   errors.push(...externalBlockErrors(project));
+  errors.push(...libraryErrors(project));
   return errors.slice(0, 50);
 }
 
@@ -317,6 +331,26 @@ function externalBlockErrors(project: Project): LoadError[] {
       const pinKey = pin.name.toUpperCase();
       if (pins.has(pinKey)) errors.push({ path: `${bp}.pins[${pi}].name`, message: `external block "${block.name}" has the pin "${pin.name}" twice` });
       pins.add(pinKey);
+    });
+  });
+  return errors;
+}
+
+/** Library names are unique, and each library's POUs are FUNCTION_BLOCKs or FUNCTIONs of unique names. */
+function libraryErrors(project: Project): LoadError[] {
+  const errors: LoadError[] = [];
+  const names = new Set<string>();
+  (project.libraries ?? []).forEach((lib, li) => {
+    const lp = `libraries[${li}]`;
+    const key = lib.name.toUpperCase();
+    if (names.has(key)) errors.push({ path: `${lp}.name`, message: `duplicate library "${lib.name}"` });
+    names.add(key);
+    const pous = new Set<string>();
+    lib.pous.forEach((pou, pi) => {
+      if (pou.kind === 'PROGRAM') errors.push({ path: `${lp}.pous[${pi}].kind`, message: `library "${lib.name}" holds the PROGRAM "${pou.name}"; a library holds function blocks and functions` });
+      const k = pou.name.toUpperCase();
+      if (pous.has(k)) errors.push({ path: `${lp}.pous[${pi}].name`, message: `library "${lib.name}" has the POU "${pou.name}" twice` });
+      pous.add(k);
     });
   });
   return errors;

@@ -233,6 +233,29 @@ export interface Scenario {
   readonly csv: string;
 }
 
+/**
+ * A library kept with the project (docs/libraries.md): the FUNCTION_BLOCK and FUNCTION POUs and the
+ * data types of a PLCopen XML file or of another Rungsmith project, read once and stored here.
+ * Its blocks are called like the project's own POUs and run in the simulator, but they are not
+ * POUs of the project: the editor shows them read-only, and an update replaces them as a whole.
+ * Versioned by the SHA-256 of the file they were read from. See src/model/libraries.ts.
+ */
+export interface ProjectLibrary {
+  /** The library's name: the palette's heading for its blocks; unique in the project. */
+  readonly name: string;
+  /** `sha256:` and the hex SHA-256 of the file's text (its version). */
+  readonly hash: string;
+  /** The file it was read from (name only, as the user picked it). */
+  readonly sourceFile: string;
+  /** When it was added or last updated (ISO 8601). */
+  readonly addedAt: string;
+  /** The kind of file: PLCopen XML or a Rungsmith project. */
+  readonly origin: 'plcopen' | 'rungsmith';
+  /** Its FUNCTION_BLOCK and FUNCTION POUs (no PROGRAM). */
+  readonly pous: readonly Pou[];
+  readonly dataTypes?: readonly DataType[];
+}
+
 export interface Project {
   readonly format: typeof PROJECT_FORMAT;
   readonly version: typeof PROJECT_VERSION;
@@ -262,5 +285,7 @@ export interface Project {
   readonly externalBlocks?: readonly ExternalBlock[];
   /** User data types (enumerations, structures, arrays, subranges, aliases). */
   readonly dataTypes?: readonly DataType[];
+  /** Libraries kept with the project (ProjectLibrary; docs/libraries.md). */
+  readonly libraries?: readonly ProjectLibrary[];
   readonly extensions?: Readonly<Record<string, unknown>>;
 }

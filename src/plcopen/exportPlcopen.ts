@@ -11,6 +11,7 @@ import { TC6_0201, XHTML_NS, preserved, type PreservedPou, type PreservedProject
 import { XmlWriter } from './xml/write';
 import { writeDataTypes } from './dataTypes';
 import { profileData } from './profileChoice';
+import { librariesData, libraryMark, scenariosData } from './rungsmithData';
 
 export interface ExportOptions {
   /** Timestamp written in fileHeader/contentHeader (default: now). */
@@ -44,9 +45,9 @@ function splitRetainedByCoil(pou: Pou, globals: Set<string>): Set<string> {
   return local;
 }
 
-function writePou(w: XmlWriter, pou: Pou, local: ReadonlySet<string>, library: BlockLibrary): void {
+function writePou(w: XmlWriter, pou: Pou, local: ReadonlySet<string>, library: BlockLibrary, marks: readonly string[] = []): void {
   if (pou.language !== 'LD') {
-    writeOtherPou(w, pou);
+    writeOtherPou(w, pou, marks);
     return;
   }
   w.open('pou', { name: pou.name, pouType: POU_TYPE[pou.kind] }, () => {
@@ -64,7 +65,8 @@ function writePou(w: XmlWriter, pou: Pou, local: ReadonlySet<string>, library: B
       });
     });
     const keep = preserved<PreservedPou>(pou.extensions);
-    if (keep?.addData?.length) w.open('addData', undefined, () => keep.addData!.forEach((d) => w.raw(d)));
+    const addData = [...(keep?.addData ?? []), ...marks];
+    if (addData.length) w.open('addData', undefined, () => addData.forEach((d) => w.raw(d)));
     if (pou.comment) w.formatted('documentation', pou.comment);
   });
 }
@@ -118,6 +120,7 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
   for (const [prefix, uri] of Object.entries(keep?.namespaces ?? {}))
     if (!(`xmlns:${prefix}` in ns)) ns[`xmlns:${prefix}`] = uri;
   const library = blockLibrary(project);
+  const libraries = project.libraries ?? [];
   const globalsByCoil = new Set<string>();
   const localByCoil = project.pous.map((pou) => splitRetainedByCoil(pou, globalsByCoil));
   // Globals go back where the file declared them: the resource's or the configuration's globalVars.
@@ -138,8 +141,15 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
       });
     });
     w.open('types', undefined, () => {
-      writeDataTypes(w, project.dataTypes ?? [], keep?.dataTypes ?? [], writeType);
+      // The libraries' data types and POUs are written as the project's own (other tools compile
+      // them), the POUs marked and the libraries listed in addData (rungsmithData.ts).
+      writeDataTypes(w, [...(project.dataTypes ?? []), ...libraries.flatMap((l) => l.dataTypes ?? [])], keep?.dataTypes ?? [], writeType);
       w.open('pous', undefined, () => {
+        const libraryPous = libraries.flatMap((l) => l.pous.map((pou) => ({ pou, mark: libraryMark(l.name) })));
+        for (const i of calleesFirst(libraryPous.map((l) => l.pou), library)) {
+          const { pou, mark } = libraryPous[i]!;
+          writePou(w, pou, splitRetainedByCoil(pou, globalsByCoil), library, [mark]);
+        }
         for (const i of calleesFirst(project.pous, library)) writePou(w, project.pous[i]!, localByCoil[i]!, library);
         const names = new Set(project.pous.map((p) => p.name.toUpperCase()));
         for (const raw of keep?.otherPous ?? [])
@@ -170,6 +180,8 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
     w.open('addData', undefined, () => {
       keep?.addData?.forEach((d) => w.raw(d));
       w.raw(profileData(project.profile));
+      if (libraries.length) w.raw(librariesData(libraries));
+      if (project.scenarios?.length) w.raw(scenariosData(project.scenarios));
     });
   });
   return `<?xml version="1.0" encoding="utf-8"?>\n${w.toString()}`;

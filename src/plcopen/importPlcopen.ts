@@ -10,9 +10,13 @@ import {
   type PouKind,
   type PouLanguage,
   type Project,
+  type DataType,
+  type ProjectLibrary,
+  type Scenario,
   type Task,
   type Variable,
 } from '../model/project';
+import { asLibraryPou, readLibrariesData, readLibraryMark, readScenariosData, RS_LIBRARIES, RS_LIBRARY, RS_SCENARIOS, type LibraryManifest } from './rungsmithData';
 import { importLdBody, type BodyTuning } from './importBody';
 import { readInstances, readType, readVarLists } from './importInterface';
 import { LdGraphError } from './ldGraph';
@@ -226,6 +230,8 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     }
   };
 
+  /** POUs marked as a library's block (rungsmithData.ts): POU name (upper case) -> library. */
+  const libraryMarks = new Map<string, { pou: string; library: string }>();
   /** VAR_EXTERNAL declarations, checked against the configuration's and resources' globals below. */
   const externals: { pou: string; name: string; type: string; el: XmlElement }[] = [];
   // First pass: every POU's interface, so a body can call a POU declared after it in the file.
@@ -263,11 +269,14 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     const doc = child(pouEl, 'documentation');
     const addData = child(pouEl, 'addData');
     const pouData = addData ? childrenNamed(addData, 'data') : [];
-    for (const d of pouData)
-      if (d.attrs.handleUnknown === 'discard') {
+    for (const d of pouData) {
+      const mark = readLibraryMark(d);
+      if (mark !== undefined) libraryMarks.set(name.toUpperCase(), { pou: name, library: mark });
+      else if (d.attrs.handleUnknown === 'discard') {
         if (d.attrs.name === CODESYS_OBJECT_ID) objectIds++;
         else warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
       }
+    }
     const pou: Pou = {
       id: newId<'PouId'>('p') as PouId,
       name,
@@ -279,7 +288,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       variables,
       networks: [],
     };
-    return { el: pouEl, lang, pou, addData: pouData.filter((d) => d.attrs.handleUnknown !== 'discard').map(raw) };
+    return { el: pouEl, lang, pou, addData: pouData.filter((d) => d.attrs.handleUnknown !== 'discard' && d.attrs.name !== RS_LIBRARY).map(raw) };
   });
   // Blocks of CODESYS's Util library that the simulator runs (model/codesysUtil.ts): library POUs.
   const utilUsed = utilBlocksUsed(heads);
@@ -409,11 +418,16 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
   }
   currentPou = undefined;
   pous.push(...libraryPous);
+  const manifests: LibraryManifest[] = [];
+  const scenarios: Scenario[] = [];
   for (const holder of [root, contentHeader]) {
     const add = holder ? child(holder, 'addData') : undefined;
     for (const d of add ? childrenNamed(add, 'data') : []) {
       // Read as the project (codesys.ts), not kept: export writes it as the project's own content.
       if (d.attrs.name === PROFILE_DATA_NAME || (holder === root && d.attrs.name === CODESYS_APPLICATION)) continue;
+      // Rungsmith's libraries and scenarios (rungsmithData.ts): read back into the project.
+      else if (d.attrs.name === RS_LIBRARIES) manifests.push(...readLibrariesData(d, warn));
+      else if (d.attrs.name === RS_SCENARIOS) scenarios.push(...readScenariosData(d));
       else if (d.attrs.handleUnknown === 'discard')
         warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
       else keepProject.addData.push(raw(d));
@@ -464,21 +478,61 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     ...(inst.configuration ? { configuration: inst.configuration } : {}),
     ...(inst.resource ? { resource: inst.resource } : {}),
   };
+  const split = splitLibraries(pous, userTypes.types, manifests, libraryMarks, (m) => warn(m));
   const project: Project = {
     format: PROJECT_FORMAT,
     version: PROJECT_VERSION,
     name: contentHeader?.attrs.name || fileHeader?.attrs.productName || 'Imported',
     description: contentHeader ? (child(contentHeader, 'Comment')?.text.trim() ?? '') : '',
     profile: profile.profile,
-    pous,
+    pous: split.pous,
     globals: inst.globals,
     tasks,
+    ...(scenarios.length ? { scenarios } : {}),
     ...(externalBlocks.length ? { externalBlocks } : {}),
-    ...(userTypes.types.length ? { dataTypes: userTypes.types } : {}),
+    ...(split.dataTypes.length ? { dataTypes: split.dataTypes } : {}),
+    ...(split.libraries.length ? { libraries: split.libraries } : {}),
     extensions: { plcopen: keep },
   };
   const report: ImportReport = { namespace: ns || '(none)', producer, pous: reportPous, warnings, notes, profileReason: profile.reason };
   return { ok: true, project, report };
+}
+
+/**
+ * The POUs and data types a Rungsmith export marked as a library's (rungsmithData.ts) go back into
+ * that library, with the version its manifest gives; marked POUs of no listed library stay POUs of
+ * the project (said in a warning).
+ */
+function splitLibraries(
+  pous: readonly Pou[],
+  types: readonly DataType[],
+  manifests: readonly LibraryManifest[],
+  marks: ReadonlyMap<string, { pou: string; library: string }>,
+  warn: (message: string) => void,
+): { pous: Pou[]; dataTypes: DataType[]; libraries: ProjectLibrary[] } {
+  const byName = new Map(manifests.map((m) => [m.name.toUpperCase(), m]));
+  const taken = new Set<Pou | DataType>();
+  const libraries: ProjectLibrary[] = [];
+  for (const m of manifests) {
+    const listed = new Set(m.pous.map((n) => n.toUpperCase()));
+    const own = pous.filter((p) => p.kind !== 'PROGRAM' && (marks.get(p.name.toUpperCase())?.library.toUpperCase() === m.name.toUpperCase() || listed.has(p.name.toUpperCase())));
+    const typeNames = new Set(m.dataTypes.map((n) => n.toUpperCase()));
+    const ownTypes = types.filter((t) => typeNames.has(t.name.toUpperCase()));
+    for (const x of [...own, ...ownTypes]) taken.add(x);
+    libraries.push({
+      name: m.name,
+      hash: m.hash,
+      sourceFile: m.sourceFile,
+      addedAt: m.addedAt,
+      origin: m.origin,
+      pous: own.map((p) => asLibraryPou(m.name, p)),
+      ...(ownTypes.length ? { dataTypes: ownTypes } : {}),
+    });
+  }
+  for (const { pou, library: lib } of marks.values())
+    if (!byName.has(lib.toUpperCase()))
+      warn(`POU ${pou} is marked as a block of the library ${lib}, which the file does not list: imported as a POU of the project`);
+  return { pous: pous.filter((p) => !taken.has(p)), dataTypes: types.filter((t) => !taken.has(t)), libraries };
 }
 
 /** The source text of an element, its continuation lines dedented by the element's own indentation. */

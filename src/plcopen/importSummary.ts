@@ -42,3 +42,18 @@ export function pouCountText(project: Project): string {
   if (counts.length === 1) return `${head} (${counts[0]![0]})`;
   return `${head} (${counts.map(([lang, k]) => `${k} ${lang}`).join(', ')})`;
 }
+
+/**
+ * "Libraries: Conveyors (2 blocks). 2 test scenarios." — what a Rungsmith export brought back
+ * besides POUs (rungsmithData.ts); empty when nothing.
+ */
+export function extrasText(project: Project): string {
+  const libs = project.libraries ?? [];
+  const n = project.scenarios?.length ?? 0;
+  return [
+    libs.length ? `Libraries: ${libs.map((l) => `${l.name} (${l.pous.length} block${l.pous.length === 1 ? '' : 's'})`).join(', ')}.` : '',
+    n ? `${n} test scenario${n === 1 ? '' : 's'}.` : '',
+  ]
+    .filter(Boolean)
+    .join(' ');
+}

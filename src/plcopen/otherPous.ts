@@ -25,12 +25,12 @@ export function writeInterface(w: XmlWriter, pou: Pou, retainedByCoil: ReadonlyS
   });
 }
 
-/** Writes a POU that is not in LD (see the file comment). */
-export function writeOtherPou(w: XmlWriter, pou: Pou): void {
+/** Writes a POU that is not in LD (see the file comment); `marks`: addData `data` to add (a library's mark). */
+export function writeOtherPou(w: XmlWriter, pou: Pou, marks: readonly string[] = []): void {
   // A block of a vendor library the import added (CODESYS Util): the vendor's tool brings its own.
   if (libraryInfo(pou)) return;
   const keep = preserved<PreservedPou>(pou.extensions);
-  if (keep?.pou && keep.fingerprint === pouFingerprint(pou)) {
+  if (keep?.pou && keep.fingerprint === pouFingerprint(pou) && !marks.length) {
     w.raw(keep.pou);
     return;
   }
@@ -49,7 +49,8 @@ export function writeOtherPou(w: XmlWriter, pou: Pou): void {
       }
       else w.empty(pou.language);
     });
-    if (keep?.addData?.length) w.open('addData', undefined, () => keep.addData!.forEach((d) => w.raw(d)));
+    const addData = [...(keep?.addData ?? []), ...marks];
+    if (addData.length) w.open('addData', undefined, () => addData.forEach((d) => w.raw(d)));
     if (pou.comment) w.formatted('documentation', pou.comment);
   });
 }

@@ -1,5 +1,6 @@
 // What the UI needs to know about a loaded program: its networks (to align power bytes with the
 // document) and every readable name with its type (to format and parse values).
+import { libraryOf } from '../model/libraries';
 import type { InstanceInfo } from '../engine/api';
 import { findVariable } from '../model/factory';
 import { elementaryOf, leafPaths } from '../model/dataTypes';
@@ -171,7 +172,8 @@ export function readableNames(project: Project, pou: Pou): SimVariable[] {
     for (const v of variables) {
       const name = `${prefix}${v.name}`;
       const user = library.userPou(v.type);
-      if (user && user.kind === 'FUNCTION_BLOCK' && project.pous.includes(user)) {
+      // A POU of the project or of one of its libraries (not an external block's synthesized POU).
+      if (user && user.kind === 'FUNCTION_BLOCK' && (project.pous.includes(user) || libraryOf(project, user.name)?.pous.includes(user))) {
         if (depth < MAX_NESTING) add(`${name}.`, user.variables.filter((x) => x.varClass !== 'external' && x.varClass !== 'temp'), depth + 1);
         continue;
       }

@@ -370,8 +370,9 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
     },
     updateProject: (patch) => {
       const p = get().project;
-      const before: { name?: string; description?: string; scenarios?: Project['scenarios'] } = {};
+      const before: { name?: string; description?: string; scenarios?: Project['scenarios']; libraries?: Project['libraries'] } = {};
       if (patch.scenarios !== undefined) before.scenarios = p.scenarios ?? [];
+      if (patch.libraries !== undefined) before.libraries = p.libraries ?? [];
       if (patch.name !== undefined) before.name = p.name;
       if (patch.description !== undefined) before.description = p.description;
       commit('updateProject', [{ type: 'project.update', before, after: patch }]);

@@ -7,6 +7,7 @@
 // file picker, the "discard unsaved changes?" dialog, open errors and notices.
 import { EXAMPLES } from '../../model/examples';
 import { PLCOPEN_COMMANDS } from '../plcopen/plcopenCommands';
+import { LIBRARY_COMMANDS } from '../library/libraryCommands';
 import { loadWithConsent, newProject, openProjectFile, saveProjectFile } from './fileActions';
 import type { FileMenuCommand } from './fileMenuCommand';
 
@@ -56,9 +57,10 @@ export const EXAMPLE_COMMANDS: readonly FileMenuCommand[] = EXAMPLES.map((exampl
     ),
 }));
 
-/** Everything for the File menu, New/Open/Save first, then PLCopen import/export, then the examples. */
+/** Everything for the File menu, New/Open/Save first, then PLCopen import/export, the library manager, then the examples. */
 export const FILE_MENU_COMMANDS: readonly FileMenuCommand[] = [
   ...FILE_COMMANDS,
   ...PLCOPEN_COMMANDS,
+  ...LIBRARY_COMMANDS,
   ...EXAMPLE_COMMANDS,
 ];

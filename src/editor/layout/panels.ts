@@ -7,6 +7,7 @@ import { FilesHost, FileNotice } from '../files/FilesHost';
 import { HardwarePanel } from '../hardware/HardwarePanel';
 import { HardwareSimLink } from '../hardware/HardwareSimLink';
 import { PlcopenHost } from '../plcopen/PlcopenHost';
+import { LibraryHost } from '../library/LibraryManager';
 import { InspectorPanel } from '../inspector/InspectorPanel';
 import { ProblemsPanel } from '../problems/ProblemsPanel';
 import { VariablesPanel } from '../variables/VariablesPanel';
@@ -77,6 +78,7 @@ export const NOTICES: readonly BarSlot[] = [
 export const HOSTS: readonly BarSlot[] = [
   { id: 'files', component: FilesHost },
   { id: 'plcopen', component: PlcopenHost },
+  { id: 'libraries', component: LibraryHost },
   { id: 'simulation', component: SimHostMount },
   { id: 'hardware-sim-link', component: HardwareSimLink },
   { id: 'network-units', component: NetworkUnitsHost },

@@ -111,27 +111,54 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
           }}
         />
         <ul className="rs-palette-block-list" aria-label="Blocks">
-          {blocks.map((sig) => (
-            <li key={sig.name}>
-              <button
-                type="button"
-                className="rs-palette-item rs-palette-block"
-                aria-pressed={isActive(tool, `block-${sig.name}`)}
-                data-testid={`palette-block-${sig.name}`}
-                title={`${sig.name} (${sig.category === 'user' ? 'this project’s ' : ''}${sig.kind === 'fb' ? 'function block' : 'function'}): ${sig.description}\nPins: ${pinSummary(sig)}\nB opens the picker at the cursor`}
-                onClick={() => armBlock(sig)}
-              >
-                <span className="rs-mono">{sig.name}</span>
-                <span className="rs-palette-kind">
-                  {sig.category === 'user' ? 'user ' : ''}
-                  {sig.kind === 'fb' ? 'FB' : 'fn'}
-                </span>
-              </button>
-            </li>
+          {blocks.filter((sig) => !sig.library).map((sig) => (
+            <BlockItem key={sig.name} sig={sig} pressed={isActive(tool, `block-${sig.name}`)} onClick={() => armBlock(sig)} />
           ))}
         </ul>
       </div>
+      {libraryGroups(blocks).map(([name, sigs]) => (
+        <div key={name} className="rs-palette-group rs-palette-blocks rs-palette-library" role="group" aria-label={`Library ${name}`} data-testid={`palette-library-${name}`}>
+          <h2 className="rs-palette-heading" title={`Blocks of the library ${name} (File > Libraries…)`}>
+            {name}
+          </h2>
+          <ul className="rs-palette-block-list" aria-label={`Blocks of ${name}`}>
+            {sigs.map((sig) => (
+              <BlockItem key={sig.name} sig={sig} pressed={isActive(tool, `block-${sig.name}`)} onClick={() => armBlock(sig)} />
+            ))}
+          </ul>
+        </div>
+      ))}
     </nav>
+  );
+}
+
+/** The blocks of each library kept with the project, by library, in the order found. */
+function libraryGroups(blocks: readonly BlockSignature[]): [string, BlockSignature[]][] {
+  const groups = new Map<string, BlockSignature[]>();
+  for (const sig of blocks) if (sig.library) groups.set(sig.library, [...(groups.get(sig.library) ?? []), sig]);
+  return [...groups];
+}
+
+/** A block of the list: arms the block tool. */
+function BlockItem({ sig, pressed, onClick }: { readonly sig: BlockSignature; readonly pressed: boolean; readonly onClick: () => void }) {
+  const owner = sig.library ? `library ${sig.library} ` : sig.category === 'user' ? 'this project’s ' : '';
+  return (
+    <li>
+      <button
+        type="button"
+        className="rs-palette-item rs-palette-block"
+        aria-pressed={pressed}
+        data-testid={`palette-block-${sig.name}`}
+        title={`${sig.name} (${owner}${sig.kind === 'fb' ? 'function block' : 'function'}): ${sig.description}\nPins: ${pinSummary(sig)}\nB opens the picker at the cursor`}
+        onClick={onClick}
+      >
+        <span className="rs-mono">{sig.name}</span>
+        <span className="rs-palette-kind">
+          {sig.category === 'user' && !sig.library ? 'user ' : ''}
+          {sig.kind === 'fb' ? 'FB' : 'fn'}
+        </span>
+      </button>
+    </li>
   );
 }
 

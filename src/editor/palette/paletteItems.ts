@@ -184,8 +184,8 @@ export function pinSummary(sig: BlockSignature): string {
 }
 
 /**
- * Blocks whose name, category or description matches the query: the project's own blocks, then
- * FBs and common blocks. Inside a POU (`editing`), the POU itself is left out (no recursion), and a
+ * Blocks whose name, category or description matches the query: the project's own blocks, the
+ * blocks of its libraries (`library` set), then FBs and common blocks. Inside a POU (`editing`), the POU itself is left out (no recursion), and a
  * FUNCTION is offered no function blocks (it cannot hold their instances).
  */
 export function searchBlocks(
@@ -205,8 +205,10 @@ export function searchBlocks(
   };
   const skip = editing?.name.toUpperCase();
   const users = library.userBlocks.filter((s) => s.name.toUpperCase() !== skip);
+  // The blocks of the libraries kept with the project (the palette lists them under each library's name).
+  const libraries = library.libraryBlocks;
   const inFunction = editing?.kind === 'FUNCTION';
-  return [...users, ...ALL_BLOCKS]
+  return [...users, ...libraries, ...ALL_BLOCKS]
     .filter((s) => !inFunction || s.kind !== 'fb')
     .map((s) => ({ s, r: rank(s) }))
     .filter((x) => x.r >= 0)

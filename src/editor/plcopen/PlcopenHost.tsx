@@ -12,7 +12,7 @@ import { CancelOr } from './CancelOrButtons';
 import { ExportReviewDialog } from './ExportReviewDialog';
 import { openImported, readImportFile } from './plcopenActions';
 import { plcopenUi } from './plcopenUi';
-import { pouCountText, pouToOpen } from '../../plcopen/importSummary';
+import { extrasText, pouCountText, pouToOpen } from '../../plcopen/importSummary';
 import { bodyLanguage, libraryInfo } from '../../model/codesysUtil';
 import './plcopen.css';
 
@@ -92,6 +92,7 @@ function ImportReportDialog() {
         {project.tasks.length} task
         {project.tasks.length === 1 ? '' : 's'}.
       </p>
+      {extrasText(project) && <p data-testid="plcopen-extras">{extrasText(project)}</p>}
       <p data-testid="plcopen-profile">
         Runs under the {report.profileReason}. Change it in the project inspector (Semantics).
       </p>

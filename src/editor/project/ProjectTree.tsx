@@ -7,6 +7,7 @@ import type { Pou, PouKind } from '../../model/project';
 import { selectActivePouId, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { pouNameProblem, pouUsages } from '../../store/pouEdits';
 import { DataTypesSection } from '../dataTypes/DataTypesSection';
+import { LibrariesSection } from '../library/LibrariesSection';
 import { dataTypeTabs } from '../dataTypes/dataTypeTabs';
 import { focusVariable } from '../variables/variableFocus';
 import { DeletePouDialog } from './DeletePouDialog';
@@ -103,6 +104,7 @@ export function ProjectTree() {
           );
         })}
         <DataTypesSection />
+        <LibrariesSection />
         <li className="rs-tree-section">
           <button
             type="button"

@@ -19,7 +19,14 @@ export function checkPouNames(project: Project, out: Diagnostic[]): void {
     const key = name.toUpperCase();
     const first = seen.get(key);
     if (first !== undefined) {
-      r.error('LD-E25', `the POU name ${name} is already used by ${first}; POU names must be unique (case does not count)`);
+      // A library's POU (src/model/libraries.ts, id `library:<library>:<pou>`) after the project's own.
+      const library = /^library:(.*):[^:]*$/.exec(pou.id)?.[1];
+      r.error(
+        'LD-E25',
+        library !== undefined
+          ? `the POU name ${first} of the project is also a block of the library ${library}; calls run the project's POU: rename the POU (or remove the library)`
+          : `the POU name ${name} is already used by ${first}; POU names must be unique (case does not count)`,
+      );
       continue;
     }
     seen.set(key, name);
