@@ -203,6 +203,8 @@ export interface ExecStats {
   readonly lastMs: number;
   readonly avgMs: number;
   readonly maxMs: number;
+  /** Scans since Run that started a cycle or more after their time (missed cycles, caught up or dropped as overruns). */
+  readonly late?: number;
 }
 
 export interface TrendSamples {

@@ -25,6 +25,7 @@ import { buildFrame } from './sessionFrame';
 import { answerHistory, historyRange } from './sessionHistory';
 import { plcScanWithClock, programLayout, type SinceColdStart } from './scenarioRecording';
 import type { SimEngine } from './simEngine';
+import { withYieldPoints } from '../engine/yieldPoint';
 
 export interface SessionDeps {
   readonly engine: SimEngine;
@@ -41,6 +42,8 @@ interface LoadedProgram {
   readonly plc: Plc;
   readonly layout: SimLayout;
   readonly fingerprint: string;
+  /** fingerprintId(fingerprint), worked out before the swap. */
+  readonly id: string;
   /** The compiled program and its document POU, for the scan history and "Why?". */
   readonly program: unknown;
   readonly pou: Pou | undefined;
@@ -325,7 +328,10 @@ export class SimSession {
   private load(project: Project, starting = false): boolean {
     const fingerprint = programFingerprint(project);
     if (this.plc && fingerprint === (this.pending?.program.fingerprint ?? this.fingerprint)) return true;
-    const { program, diagnostics } = this.deps.engine.compile(project);
+    // While Run paces scans, the scans that fall due during the compile run at its yield points
+    // (between networks): compiling an online change never delays a scan of the running program.
+    const poll = () => this.runner.poll();
+    const { program, diagnostics } = withYieldPoints(poll, () => this.deps.engine.compile(project));
     const online = this.plc !== undefined && (this.mode !== 'stopped' || this.plc.scanCount > 0);
     if (!program || diagnostics.some((d) => d.severity === 'error')) {
       this.deps.post({ type: 'compiled', ok: false, online: online && !starting, diagnostics });
@@ -333,15 +339,18 @@ export class SimSession {
     }
     const clock = this.runner.clock;
     if (!online) clock.set(0);
-    const plc = this.deps.engine.createPlc(program, { cycleMs: this.runner.cycleMs, clock });
+    const plc = withYieldPoints(poll, () => this.deps.engine.createPlc(program, { cycleMs: this.runner.cycleMs, clock }));
+    poll();
     const layout = buildLayout(project, plc.pou, plc.variableNames(), this.cycleFor(plc), {
       instances: plc.instances(),
       ...(runOptions(project).configuration ? { programs: programInstances(project) } : {}),
     });
+    poll();
     const next: LoadedProgram = {
       plc,
       layout: this.view && findPou(project, this.view.pou) ? withView(project, layout, this.view) : layout,
       fingerprint,
+      id: fingerprintId(fingerprint),
       program,
       pou: findPou(project, plc.pou),
       project,
@@ -385,7 +394,9 @@ export class SimSession {
     let plan = pending.plan;
     // The display keeps the last scan until the new program runs (a second change in a row keeps
     // what the first kept).
-    const before = this.plc && this.layout ? (this.carriedShown() ?? (this.plc.scanCount > 0 ? this.shownNow(this.plc, this.layout) : undefined)) : undefined;
+    // While Run paces scans the new program scans right after the swap: nothing to carry (and no time to spend at the boundary).
+    const live = this.runner.runningLive;
+    const before = this.plc && this.layout && !live ? (this.carriedShown() ?? (this.plc.scanCount > 0 ? this.shownNow(this.plc, this.layout) : undefined)) : undefined;
     this.carried = undefined;
     if (this.plc && this.layout) {
       const next = pending.program;
@@ -411,7 +422,7 @@ export class SimSession {
     // The history records the program's own networks whatever body is monitored.
     this.recorder = HistoryRecorder.for(next.plc, programLayout(next.project, next.layout), next.program, next.pou, this.historyOptions);
     this.fingerprint = next.fingerprint;
-    this.programId = fingerprintId(next.fingerprint);
+    this.programId = next.id;
     this.lastOutputs = undefined;
     this.configureTrend();
     if (!online) {
