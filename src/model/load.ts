@@ -200,6 +200,7 @@ export const projectSchema = z
     externalBlocks: z.array(externalBlockSchema).optional(),
     scenarios: z.array(z.object({ name: z.string().min(1), csv: z.string() }).strict()).optional(),
     dataTypes: z.array(dataTypeSchema).optional(),
+    onlineChange: z.enum(['edit', 'request']).optional(),
     extensions,
   })
   .strict();

@@ -149,11 +149,11 @@ export function isProgramView(layout: SimLayout, view: SimView | undefined = lay
 
 /**
  * The document with everything that does not change what the program does (titles, comments,
- * collapsed state, descriptions, test scenarios) left out: equal fingerprints mean no online change is needed.
+ * collapsed state, descriptions, test scenarios, the online change mode) left out: equal fingerprints mean no online change is needed.
  */
 export function programFingerprint(project: Project): string {
   return JSON.stringify(project, (key, value: unknown) =>
-    key === 'title' || key === 'comment' || key === 'collapsed' || key === 'description' || key === 'scenarios' ? undefined : value,
+    key === 'title' || key === 'comment' || key === 'collapsed' || key === 'description' || key === 'scenarios' || key === 'onlineChange' ? undefined : value,
   );
 }
 

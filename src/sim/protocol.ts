@@ -31,7 +31,13 @@ interface WithProject {
 
 export type HostMessage =
   /** Compile the document. When a program is loaded already this is an online change, applied at the next scan boundary. */
-  | { readonly type: 'load'; readonly project: Project; readonly epoch?: number }
+  | {
+      readonly type: 'load';
+      readonly project: Project;
+      readonly epoch?: number;
+      /** Apply on request: the change waits for confirmOnline (its plan is posted first), hardware attached or not. */
+      readonly confirm?: boolean;
+    }
   | ({ readonly type: 'run' } & WithProject)
   | { readonly type: 'pause' }
   | ({ readonly type: 'step'; readonly scans: number } & WithProject)

@@ -147,7 +147,7 @@ export class SimSession {
     if ('epoch' in m && m.epoch !== undefined) this.epoch = m.epoch;
     switch (m.type) {
       case 'load':
-        this.load(m.project);
+        this.load(m.project, false, m.confirm === true);
         return;
       case 'run':
         if (!this.loadToStart(m.project) || this.refuseIfFaulted()) return;
@@ -325,7 +325,7 @@ export class SimSession {
   }
 
   /** Compiles the document. Returns false (and reports why) when it has errors. */
-  private load(project: Project, starting = false): boolean {
+  private load(project: Project, starting = false, confirm = false): boolean {
     const fingerprint = programFingerprint(project);
     if (this.plc && fingerprint === (this.pending?.program.fingerprint ?? this.fingerprint)) return true;
     // While Run paces scans, the scans that fall due during the compile run at its yield points
@@ -360,10 +360,10 @@ export class SimSession {
       return true;
     }
     // Swapped in at the next scan boundary: right now when the PLC is between scans. With hardware
-    // attached, an edit (not a Run/Step) first waits for the user's answer to its plan.
+    // attached, or applied on request, an edit (not a Run/Step) first waits for the user's answer to its plan.
     const id = ++this.onlineIds;
     const plan = planInstances(this.plc!, plc);
-    const awaiting = this.confirmOnline && !starting;
+    const awaiting = (this.confirmOnline || confirm) && !starting;
     this.pending = { program: next, diagnostics, id, plan, awaiting };
     this.deps.post({ type: 'onlinePlan', id, plan, confirm: awaiting });
     this.applyIfBetweenScans();

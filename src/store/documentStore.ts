@@ -182,7 +182,7 @@ export interface DocumentState {
   updateVariable(name: string, patch: Partial<Variable>, scope?: VariableScope): boolean;
   deleteVariable(name: string, scope?: VariableScope): void;
   setProjectProfile(profile: Profile): void;
-  updateProject(patch: Partial<Pick<Project, 'name' | 'description' | 'scenarios'>>): void;
+  updateProject(patch: Partial<Pick<Project, 'name' | 'description' | 'scenarios' | 'onlineChange'>>): void;
 
   undo(): void;
   redo(): void;
