@@ -214,6 +214,7 @@ export const projectSchema = z
     watch: z.array(z.string().min(1)).optional(),
     dataTypes: z.array(dataTypeSchema).optional(),
     libraries: z.array(librarySchema).optional(),
+    onlineChange: z.enum(['edit', 'request']).optional(),
     extensions,
   })
   .strict();

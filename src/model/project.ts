@@ -287,5 +287,13 @@ export interface Project {
   readonly dataTypes?: readonly DataType[];
   /** Libraries kept with the project (ProjectLibrary; docs/libraries.md). */
   readonly libraries?: readonly ProjectLibrary[];
+  /**
+   * How edits reach the running simulation (docs/simulation.md "Editing while running"): 'edit'
+   * (default) compiles each edit and swaps it in at a scan boundary; 'request' keeps the running
+   * program until Apply, which lists the changes first. Not part of the program.
+   */
+  readonly onlineChange?: OnlineChangeMode;
   readonly extensions?: Readonly<Record<string, unknown>>;
 }
+
+export type OnlineChangeMode = 'edit' | 'request';

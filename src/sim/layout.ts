@@ -150,11 +150,13 @@ export function isProgramView(layout: SimLayout, view: SimView | undefined = lay
 
 /**
  * The document with everything that does not change what the program does (titles, comments,
- * collapsed state, descriptions, test scenarios, the watch list) left out: equal fingerprints mean no online change is needed.
+ * collapsed state, descriptions, test scenarios, the watch list, the online change mode) left out: equal fingerprints mean no online change is needed.
  */
 export function programFingerprint(project: Project): string {
   return JSON.stringify(project, (key, value: unknown) =>
-    key === 'title' || key === 'comment' || key === 'collapsed' || key === 'description' || key === 'scenarios' || key === 'watch' ? undefined : value,
+    key === 'title' || key === 'comment' || key === 'collapsed' || key === 'description' || key === 'scenarios' || key === 'watch' || key === 'onlineChange'
+      ? undefined
+      : value,
   );
 }
 

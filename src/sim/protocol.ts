@@ -31,7 +31,13 @@ interface WithProject {
 
 export type HostMessage =
   /** Compile the document. When a program is loaded already this is an online change, applied at the next scan boundary. */
-  | { readonly type: 'load'; readonly project: Project; readonly epoch?: number }
+  | {
+      readonly type: 'load';
+      readonly project: Project;
+      readonly epoch?: number;
+      /** Apply on request: the change waits for confirmOnline (its plan is posted first), hardware attached or not. */
+      readonly confirm?: boolean;
+    }
   | ({ readonly type: 'run' } & WithProject)
   | { readonly type: 'pause' }
   | ({ readonly type: 'step'; readonly scans: number } & WithProject)
@@ -219,6 +225,8 @@ export interface ExecStats {
   readonly lastMs: number;
   readonly avgMs: number;
   readonly maxMs: number;
+  /** Scans since Run that started a cycle or more after their time (missed cycles, caught up or dropped as overruns). */
+  readonly late?: number;
 }
 
 export interface TrendSamples {

@@ -45,6 +45,8 @@ export class ScanRunner {
   /** Where execution stopped at a breakpoint: the POU, the instance and the network. */
   breakpointHit: StepFrame | undefined;
   overruns = 0;
+  /** Scans that started a cycle or more after their time (the worker was busy): missed cycles, caught up or dropped. */
+  late = 0;
   /** A breakpoint being resumed from (its position): the next check there lets it run. */
   private resumeAt: string | undefined;
   private nextScanTime = 0;
@@ -55,6 +57,8 @@ export class ScanRunner {
   private timeline: RunTimeline | undefined;
   private batchRemaining = 0;
   private cancelTimer: (() => void) | undefined;
+  /** A poll is running the due scans (never re-entered). */
+  private polling = false;
 
   constructor(
     private readonly host: RunnerHost,
@@ -74,7 +78,7 @@ export class ScanRunner {
 
   exec(): ExecStats {
     const s = this.stats;
-    return { lastMs: s.last, avgMs: s.count ? s.sum / s.count : 0, maxMs: s.max };
+    return { lastMs: s.last, avgMs: s.count ? s.sum / s.count : 0, maxMs: s.max, late: this.late };
   }
 
   resetCounters(): void {
@@ -83,6 +87,7 @@ export class ScanRunner {
     this.lastScanTime = 0;
     this.stats = { last: 0, sum: 0, count: 0, max: 0 };
     this.overruns = 0;
+    this.late = 0;
     this.breakpointHit = undefined;
     this.resumeAt = undefined;
   }
@@ -112,6 +117,24 @@ export class ScanRunner {
     this.resume();
     this.timeline = { startWall: this.scheduler.now(), baseTime: this.nextScanTime, k: 0 };
     this.schedule(() => this.runTick(), 0);
+  }
+
+  /**
+   * Called from long work on the scanning thread (an online change's compile, at its yield points):
+   * while Run paces scans, the scans that are due run now instead of waiting for that work to end.
+   */
+  poll(): void {
+    const tl = this.timeline;
+    if (!tl || this.polling || this.cycleMs === 0) return;
+    if (this.scheduler.now() < tl.startWall + tl.k * this.cycleMs) return;
+    this.polling = true;
+    try {
+      this.cancelTimer?.();
+      this.cancelTimer = undefined;
+      this.guarded(() => this.runTick());
+    } finally {
+      this.polling = false;
+    }
   }
 
   /** Step N scans: as fast as possible on the virtual clock (one cycle per scan), in slices. */
@@ -232,6 +255,7 @@ export class ScanRunner {
       } while (outcome === 'done' && this.wallNow() < sliceEnd);
     } else {
       const dueK = Math.floor((this.scheduler.now() - tl.startWall) / this.cycleMs) + 1;
+      if (dueK - tl.k > 1) this.late += dueK - tl.k - 1;
       if (dueK - tl.k > MAX_BEHIND_SCANS) {
         this.overruns += dueK - tl.k - 1;
         tl.k = dueK - 1;

@@ -25,6 +25,7 @@ import { buildFrame } from './sessionFrame';
 import { answerHistory, historyRange } from './sessionHistory';
 import { plcScanWithClock, programLayout, type SinceColdStart } from './scenarioRecording';
 import type { SimEngine } from './simEngine';
+import { withYieldPoints } from '../engine/yieldPoint';
 
 export interface SessionDeps {
   readonly engine: SimEngine;
@@ -41,6 +42,8 @@ interface LoadedProgram {
   readonly plc: Plc;
   readonly layout: SimLayout;
   readonly fingerprint: string;
+  /** fingerprintId(fingerprint), worked out before the swap. */
+  readonly id: string;
   /** The compiled program and its document POU, for the scan history and "Why?". */
   readonly program: unknown;
   readonly pou: Pou | undefined;
@@ -144,7 +147,7 @@ export class SimSession {
     if ('epoch' in m && m.epoch !== undefined) this.epoch = m.epoch;
     switch (m.type) {
       case 'load':
-        this.load(m.project);
+        this.load(m.project, false, m.confirm === true);
         return;
       case 'run':
         if (!this.loadToStart(m.project) || this.refuseIfFaulted()) return;
@@ -323,10 +326,13 @@ export class SimSession {
   }
 
   /** Compiles the document. Returns false (and reports why) when it has errors. */
-  private load(project: Project, starting = false): boolean {
+  private load(project: Project, starting = false, confirm = false): boolean {
     const fingerprint = programFingerprint(project);
     if (this.plc && fingerprint === (this.pending?.program.fingerprint ?? this.fingerprint)) return true;
-    const { program, diagnostics } = this.deps.engine.compile(project);
+    // While Run paces scans, the scans that fall due during the compile run at its yield points
+    // (between networks): compiling an online change never delays a scan of the running program.
+    const poll = () => this.runner.poll();
+    const { program, diagnostics } = withYieldPoints(poll, () => this.deps.engine.compile(project));
     const online = this.plc !== undefined && (this.mode !== 'stopped' || this.plc.scanCount > 0);
     if (!program || diagnostics.some((d) => d.severity === 'error')) {
       this.deps.post({ type: 'compiled', ok: false, online: online && !starting, diagnostics });
@@ -334,15 +340,18 @@ export class SimSession {
     }
     const clock = this.runner.clock;
     if (!online) clock.set(0);
-    const plc = this.deps.engine.createPlc(program, { cycleMs: this.runner.cycleMs, clock });
+    const plc = withYieldPoints(poll, () => this.deps.engine.createPlc(program, { cycleMs: this.runner.cycleMs, clock }));
+    poll();
     const layout = buildLayout(project, plc.pou, plc.variableNames(), this.cycleFor(plc), {
       instances: plc.instances(),
       ...(runOptions(project).configuration ? { programs: programInstances(project) } : {}),
     });
+    poll();
     const next: LoadedProgram = {
       plc,
       layout: this.view && findPou(project, this.view.pou) ? withView(project, layout, this.view) : layout,
       fingerprint,
+      id: fingerprintId(fingerprint),
       program,
       pou: findPou(project, plc.pou),
       project,
@@ -352,10 +361,10 @@ export class SimSession {
       return true;
     }
     // Swapped in at the next scan boundary: right now when the PLC is between scans. With hardware
-    // attached, an edit (not a Run/Step) first waits for the user's answer to its plan.
+    // attached, or applied on request, an edit (not a Run/Step) first waits for the user's answer to its plan.
     const id = ++this.onlineIds;
     const plan = planInstances(this.plc!, plc);
-    const awaiting = this.confirmOnline && !starting;
+    const awaiting = (this.confirmOnline || confirm) && !starting;
     this.pending = { program: next, diagnostics, id, plan, awaiting };
     this.deps.post({ type: 'onlinePlan', id, plan, confirm: awaiting });
     this.applyIfBetweenScans();
@@ -386,7 +395,9 @@ export class SimSession {
     let plan = pending.plan;
     // The display keeps the last scan until the new program runs (a second change in a row keeps
     // what the first kept).
-    const before = this.plc && this.layout ? (this.carriedShown() ?? (this.plc.scanCount > 0 ? this.shownNow(this.plc, this.layout) : undefined)) : undefined;
+    // While Run paces scans the new program scans right after the swap: nothing to carry (and no time to spend at the boundary).
+    const live = this.runner.runningLive;
+    const before = this.plc && this.layout && !live ? (this.carriedShown() ?? (this.plc.scanCount > 0 ? this.shownNow(this.plc, this.layout) : undefined)) : undefined;
     this.carried = undefined;
     if (this.plc && this.layout) {
       const next = pending.program;
@@ -412,7 +423,7 @@ export class SimSession {
     // The history records the program's own networks whatever body is monitored.
     this.recorder = HistoryRecorder.for(next.plc, programLayout(next.project, next.layout), next.program, next.pou, this.historyOptions);
     this.fingerprint = next.fingerprint;
-    this.programId = fingerprintId(next.fingerprint);
+    this.programId = next.id;
     this.lastOutputs = undefined;
     this.configureTrend();
     if (!online) {

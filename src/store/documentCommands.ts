@@ -370,9 +370,13 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
     },
     updateProject: (patch) => {
       const p = get().project;
-      const before: { name?: string; description?: string; scenarios?: Project['scenarios']; libraries?: Project['libraries'] } = {};
+      const before: { name?: string; description?: string; scenarios?: Project['scenarios']; libraries?: Project['libraries']; onlineChange?: Project['onlineChange'] } = {};
       if (patch.scenarios !== undefined) before.scenarios = p.scenarios ?? [];
       if (patch.libraries !== undefined) before.libraries = p.libraries ?? [];
+      if (patch.onlineChange !== undefined) {
+        if ((p.onlineChange ?? 'edit') === patch.onlineChange && Object.keys(patch).length === 1) return;
+        before.onlineChange = p.onlineChange ?? 'edit';
+      }
       if (patch.name !== undefined) before.name = p.name;
       if (patch.description !== undefined) before.description = p.description;
       commit('updateProject', [{ type: 'project.update', before, after: patch }]);

@@ -187,7 +187,7 @@ export interface DocumentState {
   deleteVariable(name: string, scope?: VariableScope): void;
   reorderVariables(names: readonly string[], scope?: VariableScope): boolean;
   setProjectProfile(profile: Profile): void;
-  updateProject(patch: Partial<Pick<Project, 'name' | 'description' | 'scenarios' | 'libraries'>>): void;
+  updateProject(patch: Partial<Pick<Project, 'name' | 'description' | 'scenarios' | 'libraries' | 'onlineChange'>>): void;
 
   undo(): void;
   redo(): void;

@@ -7,6 +7,8 @@ import type { Value } from '../model/iecTypes';
 import type { Project, Scenario } from '../model/project';
 import type { ExecStats, HistoryRange, OnlineChangePlan, SimLayout, SimMode, SimPinValue, SimValueInput, TrendCapture, TrendTrigger, TrendTriggerState } from '../sim/protocol';
 import type { ScenarioResult } from '../sim/scenario';
+import type { ChangeList } from '../sim/changeList';
+import type { OnlineChangeMode } from '../model/project';
 import type { CanvasScope, ShownPou } from '../sim/scope';
 import type { TrendBuffer } from '../sim/trendBuffer';
 
@@ -20,8 +22,8 @@ export interface CompileRefusal {
 export type OnlineChangeState =
   /** Compiled; goes in at the next scan boundary. */
   | { readonly kind: 'pending'; readonly id: number; readonly plan: OnlineChangePlan }
-  /** Hardware attached: waits for the user's Apply or Cancel. */
-  | { readonly kind: 'confirm'; readonly id: number; readonly plan: OnlineChangePlan }
+  /** Hardware attached, or applied on request: waits for the user's Apply or Cancel. `changes`: running document against the one sent. */
+  | { readonly kind: 'confirm'; readonly id: number; readonly plan: OnlineChangePlan; readonly changes?: ChangeList }
   | { readonly kind: 'applied'; readonly id: number; readonly scan: number; readonly plan: OnlineChangePlan }
   /** Not applied: the running program is unchanged. */
   | { readonly kind: 'cancelled'; readonly id: number };
@@ -91,6 +93,17 @@ export interface SimState {
   readonly onlineChange: OnlineChangeState | undefined;
   /** Online changes ask before they are applied (hardware attached as controller). */
   readonly onlineConfirmRequired: boolean;
+  /** The project's online change mode: edits applied as made, or kept until Apply (issue 24). */
+  readonly onlineMode: OnlineChangeMode;
+  /** The document of the program the worker runs (current epoch), when the store sent it; undefined when none or unknown. */
+  readonly runningProject: Project | undefined;
+  /** The programId of what the worker runs (current epoch); null when nothing runs. */
+  readonly runningProgram: string | null;
+  /**
+   * Apply on request: the shown document differs from the running program. Edits not applied yet,
+   * and the networks to mark (worked out by useOnlineChange).
+   */
+  readonly unapplied: { readonly changes: ChangeList | undefined; readonly count: number; readonly networks: ReadonlySet<string> } | undefined;
   /** Scans the history holds (issue 14). */
   readonly history: HistoryRange | undefined;
   /** The recorded scan shown instead of the live one (canvas, watch, trend cursor); undefined: live. */
@@ -143,6 +156,11 @@ export interface SimState {
   setOnlineConfirmRequired(required: boolean): void;
   /** The answer to an online change that asks: Apply (at the next scan boundary) or Cancel. */
   answerOnlineChange(apply: boolean): void;
+  /** The project's online change mode (from the document). */
+  setOnlineMode(mode: OnlineChangeMode): void;
+  setUnapplied(unapplied: SimState['unapplied']): void;
+  /** Apply on request: compile the shown document and ask (the change list first), then apply at a scan boundary. */
+  applyChanges(project: Project): void;
   dismissOnlineChange(): void;
   /** Gateway seam (issue 6): input image by IEC location, applied at the next input read. */
   setInputs(values: Readonly<Record<string, Value>>): void;

@@ -10,6 +10,7 @@ import type { Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import type { SimTransport } from '../sim/host';
 import { programId } from '../sim/programId';
+import { changeList } from '../sim/changeList';
 import type { HistoryView, HostMessage, SimFrame, SimLayout, TrendSamples, WorkerMessage } from '../sim/protocol';
 import type { Explanation } from '../engine/explain';
 import type { ScenarioResult } from '../sim/scenario';
@@ -44,7 +45,25 @@ export function createSimStore(transport: SimTransport): SimStore {
   //   is never shown as running: the store stops the worker and says why. Its outputs never reach
   //   the gateway.
   let sentProject: SentDocument | undefined;
-  let requested: SentDocument | undefined;
+  let requestedDoc: SentDocument | undefined;
+  /** The last documents sent, by programId: what a frame's program is, for runningProject. */
+  const sentDocs = new Map<string, Project>();
+  const remember = (doc: SentDocument | undefined) => {
+    if (!doc) return;
+    sentDocs.delete(doc.id);
+    sentDocs.set(doc.id, doc.project);
+    while (sentDocs.size > 6) sentDocs.delete(sentDocs.keys().next().value!);
+  };
+  // Every document sent is remembered (a setter would hide the assignments below).
+  const track = {
+    get requested() {
+      return requestedDoc;
+    },
+    set requested(doc: SentDocument | undefined) {
+      requestedDoc = doc;
+      remember(doc);
+    },
+  };
   let expectedSet = new Set<string>();
   /** The programs whose outputs may drive the hardware; the worker is told (gwPrograms: it drives the link). */
   const expected = {
@@ -74,11 +93,13 @@ export function createSimStore(transport: SimTransport): SimStore {
   /** The document to send with Run/Step unless the worker confirmed it runs this very program. */
   const fresh = (project: Project): Project | undefined => {
     const id = programId(project);
+    // Apply on request: Run and Step go on with the running program; only Apply puts the edits in.
+    if (store.getState().onlineMode === 'request' && store.getState().live && running !== null && running !== id && sentDocs.has(running)) return undefined;
     // A Run/Step with a changed document on a live program is an online change: the running program
     // finishes its scan and is swapped at the boundary; otherwise only this document may run.
     expected.set(new Set(store.getState().live && running !== null ? [id, running] : [id]));
     if (sentProject?.id === id && running === id) return undefined;
-    requested = { project, id, by: 'start' };
+    track.requested = { project, id, by: 'start' };
     return project;
   };
   const nextEpoch = () => ++epoch;
@@ -158,6 +179,10 @@ export function createSimStore(transport: SimTransport): SimStore {
       contextMenu: undefined,
       onlineChange: undefined,
       onlineConfirmRequired: false,
+      onlineMode: 'edit',
+      runningProject: undefined,
+      runningProgram: null,
+      unapplied: undefined,
       history: undefined,
       historyScan: undefined,
       historyTimeMs: undefined,
@@ -198,7 +223,7 @@ export function createSimStore(transport: SimTransport): SimStore {
       },
       unload: () => {
         sentProject = undefined;
-        requested = undefined;
+        track.requested = undefined;
         expected.set(new Set());
         running = null;
         set({
@@ -211,7 +236,11 @@ export function createSimStore(transport: SimTransport): SimStore {
           variableIndex: new Map(),
           breakpoints: [],
           trend: emptyTrend(get().trendNames),
+          runningProject: undefined,
+          runningProgram: null,
+          unapplied: undefined,
         });
+        sentDocs.clear();
         send({ type: 'setBreakpoints', networks: [] });
         // The worker drops the program (and its forces): nothing of the previous project runs on.
         send({ type: 'unload', epoch: nextEpoch() });
@@ -227,8 +256,8 @@ export function createSimStore(transport: SimTransport): SimStore {
       documentChanged: (project) => {
         if (!get().layout) return;
         const id = programId(project);
-        if (id === requested?.id) return;
-        requested = { project, id, by: 'load' };
+        if (id === track.requested?.id) return;
+        track.requested = { project, id, by: 'load' };
         // Online change: the running program stays accepted until the swap (or while the edit has errors).
         expected.set(new Set(running === null ? [id] : [id, running]));
         send({ type: 'load', project, epoch: nextEpoch() });
@@ -287,9 +316,23 @@ export function createSimStore(transport: SimTransport): SimStore {
         const change = get().onlineChange;
         if (change?.kind !== 'confirm') return;
         send({ type: 'confirmOnline', id: change.id, apply });
+        // Cancelled: the worker was asked for nothing that runs; the document is sent again when it is applied.
+        if (!apply) track.requested = undefined;
         set({ onlineChange: apply ? { kind: 'pending', id: change.id, plan: change.plan } : { kind: 'cancelled', id: change.id } });
       },
       dismissOnlineChange: () => set({ onlineChange: undefined }),
+      setOnlineMode: (mode) => {
+        if (mode !== get().onlineMode) set({ onlineMode: mode });
+      },
+      setUnapplied: (unapplied) => set({ unapplied }),
+      applyChanges: (project) => {
+        if (!get().layout) return;
+        const id = programId(project);
+        track.requested = { project, id, by: 'load' };
+        // As an edit applied as made: the running program stays accepted until the swap (or a Cancel).
+        expected.set(new Set(running === null ? [id] : [id, running]));
+        send({ type: 'load', project, epoch: nextEpoch(), confirm: true });
+      },
       setInputs: (values) => send({ type: 'setInputs', values }),
       seekHistory: (scan) => {
         const h = get().history;
@@ -340,7 +383,7 @@ export function createSimStore(transport: SimTransport): SimStore {
       replayScenario: (project, scenario) => {
         sentProject = undefined;
         expected.set(new Set([programId(project)]));
-        requested = { project, id: programId(project), by: 'start' };
+        track.requested = { project, id: programId(project), by: 'start' };
         liveStash = undefined;
         set({ historyScan: undefined, historyTimeMs: undefined, explanation: undefined, refusal: undefined, notice: undefined });
         return request<ScenarioResult>((id) => ({ type: 'replayScenario', id, project, scenario, epoch: nextEpoch() }));
@@ -367,7 +410,7 @@ export function createSimStore(transport: SimTransport): SimStore {
           // Compile this document again next time. An online edit with errors leaves the last good
           // program running; a refused Run/Step dropped the previous program (the worker is stopped).
           sentProject = undefined;
-          if (message.online || requested?.by === 'load') {
+          if (message.online || track.requested?.by === 'load') {
             store.setState({ refusal: { diagnostics: message.diagnostics, online: message.online } });
           } else {
             expected.set(new Set());
@@ -375,8 +418,8 @@ export function createSimStore(transport: SimTransport): SimStore {
           }
           return;
         }
-        if (message.program !== undefined && message.program === requested?.id) {
-          sentProject = requested;
+        if (message.program !== undefined && message.program === track.requested?.id) {
+          sentProject = track.requested;
           expected.set(new Set([message.program]));
         }
         if (message.layout) {
@@ -396,8 +439,11 @@ export function createSimStore(transport: SimTransport): SimStore {
         const { program } = message.frame;
         if (message.frame.epoch === epoch) {
           running = program;
+          const runningProject = program === null ? undefined : sentDocs.get(program);
+          if (store.getState().runningProgram !== program || store.getState().runningProject !== runningProject)
+            store.setState({ runningProgram: program, runningProject });
           if (program === null) sentProject = undefined;
-          else if (program === requested?.id && expected.has(program)) sentProject = requested;
+          else if (program === track.requested?.id && expected.has(program)) sentProject = track.requested;
           if (program !== null && !expected.has(program)) {
             refuseHiddenProgram();
             return;
@@ -426,7 +472,7 @@ export function createSimStore(transport: SimTransport): SimStore {
         if (message.message.startsWith(WORKER_GONE)) {
           // The worker itself is gone (crashed or terminated): nothing runs any more, and the
           // simulation must not show Running (nor drive hardware) for a program that no longer exists.
-          requested = undefined;
+          track.requested = undefined;
           running = null;
           expected.set(new Set());
           store.setState({ ...NO_PROGRAM, mode: 'stopped', notice: message.message });
@@ -463,9 +509,18 @@ export function createSimStore(transport: SimTransport): SimStore {
         return;
       case 'ready':
         return;
-      case 'onlinePlan':
-        store.setState({ onlineChange: { kind: message.confirm ? 'confirm' : 'pending', id: message.id, plan: message.plan } });
+      case 'onlinePlan': {
+        if (!message.confirm) {
+          store.setState({ onlineChange: { kind: 'pending', id: message.id, plan: message.plan } });
+          return;
+        }
+        // What the answer decides: the running document against the one sent, change by change.
+        const before = store.getState().runningProject;
+        const after = track.requested?.project;
+        const changes = before && after ? changeList(before, after) : undefined;
+        store.setState({ onlineChange: { kind: 'confirm', id: message.id, plan: message.plan, ...(changes ? { changes } : {}) } });
         return;
+      }
       case 'onlineApplied':
         store.setState({ onlineChange: { kind: 'applied', id: message.id, scan: message.scan, plan: message.plan } });
         return;
@@ -501,7 +556,7 @@ export function createSimStore(transport: SimTransport): SimStore {
   /** The worker runs a program that is not the one shown: stop it, forget it and say so. */
   function refuseHiddenProgram(): void {
     sentProject = undefined;
-    requested = undefined;
+    track.requested = undefined;
     expected.set(new Set());
     running = null;
     transport.send({ type: 'unload', epoch: nextEpoch() });
@@ -518,8 +573,10 @@ export function createSimStore(transport: SimTransport): SimStore {
 const WORKER_GONE = 'the simulator stopped';
 
 /** The store's state when the worker has no program (refused Run, unload). */
-const NO_PROGRAM: Pick<SimState, 'live' | 'layout' | 'elementIndex' | 'vlinkIndex' | 'variableIndex'> = {
+const NO_PROGRAM: Pick<SimState, 'live' | 'layout' | 'elementIndex' | 'vlinkIndex' | 'variableIndex' | 'runningProject' | 'runningProgram'> = {
   live: false,
+  runningProject: undefined,
+  runningProgram: null,
   layout: undefined,
   elementIndex: new Map(),
   vlinkIndex: new Map(),

@@ -7,12 +7,13 @@ import type { SimEngine } from '../../src/sim/simEngine';
 import { ManualScheduler } from './manualScheduler';
 
 export class SimHarness {
-  readonly scheduler = new ManualScheduler();
+  readonly scheduler: ManualScheduler;
   readonly messages: WorkerMessage[] = [];
   readonly session: SimSession;
 
   /** `wallNow`: the clock Step N slices its work by (default performance.now, the real one). */
-  constructor(engine: SimEngine = realEngine, wallNow?: () => number) {
+  constructor(engine: SimEngine = realEngine, wallNow?: () => number, scheduler = new ManualScheduler()) {
+    this.scheduler = scheduler;
     this.session = new SimSession({ engine, scheduler: this.scheduler, post: (m) => this.messages.push(m), ...(wallNow ? { wallNow } : {}) });
   }
 

@@ -1,9 +1,10 @@
 // Debugger marks in a network's header: the breakpoint toggle, "next" when execution is paused
 // before this network (with a frame around the whole network), "skipped" when a jump skipped it,
-// "not run" when no network of the body ran (its task was not due in this tick, or it was not called).
+// "not run" when no network of the body ran (its task was not due in this tick, or it was not called);
+// with online changes applied on request, "changed · not applied" on a network the running program does not have.
 import type { Network } from '../../model/project';
 import { gridHeight, headerHeight } from '../canvas/geometry';
-import { useSimStore } from './simContext';
+import { useSim, useSimStore } from './simContext';
 import { useBodyRan, useHasBreakpoint, useIsCurrentNetwork, useNetworkExecuted } from './useSimOverlay';
 
 export function NetworkSimMarker({ network, index, pitch }: { network: Network; index: number; pitch?: number }) {
@@ -12,6 +13,7 @@ export function NetworkSimMarker({ network, index, pitch }: { network: Network; 
   const current = useIsCurrentNetwork(network.id);
   const executed = useNetworkExecuted(network.id);
   const bodyRan = useBodyRan();
+  const unapplied = useSim((s) => s.unapplied?.networks.has(network.id) === true);
   const no = index + 1;
   return (
     <>
@@ -26,6 +28,12 @@ export function NetworkSimMarker({ network, index, pitch }: { network: Network; 
       >
         ●
       </button>
+      {unapplied && (
+        <span className="rs-sim-changed-badge" data-testid={`network-unapplied-${index}`}
+          title="Changed since the running program was loaded: not applied yet (Apply in the simulation toolbar)">
+          changed · not applied
+        </span>
+      )}
       {current && (
         <>
           <span className="rs-sim-next-badge" data-testid={`network-next-${index}`}>▶ runs next</span>

@@ -1,17 +1,30 @@
-// Online change with hardware attached as controller: before the edit goes into the running
-// program, say what it resets (instances and edge elements that start fresh) and ask.
+// Online change that asks first (hardware attached as controller, or applied on request): what
+// changes (networks changed, added, removed per POU, new variables), what it keeps and what starts
+// from its initial state (with the reason), then Apply or Cancel.
 import { ModalDialog } from '../files/ModalDialog';
 import type { OnlineChangePlan } from '../../sim/protocol';
+import { describeChanges, type ChangeList } from '../../sim/changeList';
 
 const MAX_LISTED = 12;
 
-export function OnlineChangeDialog({ plan, onAnswer }: { readonly plan: OnlineChangePlan; readonly onAnswer: (apply: boolean) => void }) {
+export function OnlineChangeDialog({
+  plan,
+  changes,
+  hardware,
+  onAnswer,
+}: {
+  readonly plan: OnlineChangePlan;
+  readonly changes?: ChangeList | undefined;
+  readonly hardware: boolean;
+  readonly onAnswer: (apply: boolean) => void;
+}) {
   const cancel = () => onAnswer(false);
+  const lines = changes ? describeChanges(changes) : [];
   return (
     <ModalDialog
       role="alertdialog"
       titleId="rs-online-change-title"
-      title="Apply the edit to the running program?"
+      title={changes ? 'Apply the changes to the running program?' : 'Apply the edit to the running program?'}
       describedBy="rs-online-change-summary"
       testId="online-change-dialog"
       onClose={cancel}
@@ -27,10 +40,24 @@ export function OnlineChangeDialog({ plan, onAnswer }: { readonly plan: OnlineCh
       }
     >
       <p id="rs-online-change-summary">
-        Hardware is attached: the edit goes in at the next scan boundary and drives real outputs. It keeps the state
+        {hardware
+          ? 'Hardware is attached: the edit goes in at the next scan boundary and drives real outputs.'
+          : 'The changes go in at the next scan boundary; the program runs on meanwhile.'}{' '}
+        It keeps the state
         of {plan.kept} instance{plan.kept === 1 ? '' : 's'} (function blocks and edge contacts and coils)
         {plan.reset.length === 0 ? ' and resets none' : ''}.
       </p>
+      {lines.length > 0 && (
+        <>
+          <p>Changes:</p>
+          <ul className="rs-load-errors" data-testid="online-change-list">
+            {lines.slice(0, MAX_LISTED).map((line, i) => (
+              <li key={i}>{line}</li>
+            ))}
+            {lines.length > MAX_LISTED && <li>… and {lines.length - MAX_LISTED} more</li>}
+          </ul>
+        </>
+      )}
       {plan.reset.length > 0 && (
         <>
           <p>

@@ -13,6 +13,7 @@ const selectNotice = (s: SimState) => s.notice;
 const selectBreakpointAt = (s: SimState) => s.breakpointAt;
 const selectMode = (s: SimState) => s.mode;
 const selectOnlineChange = (s: SimState) => s.onlineChange;
+const selectConfirmRequired = (s: SimState) => s.onlineConfirmRequired;
 
 const where = (d: Pick<Diagnostic, 'network' | 'networkLabel'>) =>
   d.network < 0 ? 'variables' : `network ${d.network + 1}${d.networkLabel ? ` (${d.networkLabel})` : ''}`;
@@ -30,6 +31,7 @@ export function SimNotices() {
   const hit = useSim(selectBreakpointAt);
   const mode = useSim(selectMode);
   const online = useSim(selectOnlineChange);
+  const confirmRequired = useSim(selectConfirmRequired);
   const errors = refusal?.diagnostics.filter((d) => d.severity === 'error') ?? [];
   const dismissOnline = () => sim.getState().dismissOnlineChange();
   return (
@@ -72,7 +74,9 @@ export function SimNotices() {
           text={`Paused at the breakpoint before network ${hit.network + 1} of ${hit.instance ? `${hit.instance} (${hit.pou})` : hit.pou}.`}
         />
       )}
-      {online?.kind === 'confirm' && <OnlineChangeDialog plan={online.plan} onAnswer={(apply) => sim.getState().answerOnlineChange(apply)} />}
+      {online?.kind === 'confirm' && (
+        <OnlineChangeDialog plan={online.plan} changes={online.changes} hardware={confirmRequired} onAnswer={(apply) => sim.getState().answerOnlineChange(apply)} />
+      )}
       {online?.kind === 'pending' && (
         <Notice
           testId="sim-online-pending"

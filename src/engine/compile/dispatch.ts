@@ -21,6 +21,7 @@ import {
 import { bodyUnits, ProgramConstants } from './programConstants';
 import { slotKey } from './emitter';
 import type { NetworkIR } from './ir';
+import { yieldPoint } from '../yieldPoint';
 
 /** What each generated dispatch factory receives, in this order. */
 export const DISPATCH_PARAMS = [
@@ -111,7 +112,11 @@ export function planDispatch(
   const pc = new ProgramConstants(functions, fbTypes, { networks, words }, inlineCalls);
   const { units } = bodyUnits(networks);
   const codes = [
-    ...networks.map((ir, i) => generateNetwork(ir, pc, words[i]!)),
+    ...networks.map((ir, i) => {
+      const code = generateNetwork(ir, pc, words[i]!);
+      yieldPoint();
+      return code;
+    }),
     // The end marker's entry (no code), then the units of openplc bodies (early and late).
     { text: '', ints: [], reals: [], writes: [], arrays: [] },
     ...units.map((u) => generateUnit(networks[u.owner]!, u.ops, u.early, pc, words[u.owner]!)),

@@ -12,6 +12,7 @@ import { lowerTextBody, refuseBody } from '../st/body';
 import { Reporter } from './report';
 import type { SymbolTable } from './symbols';
 import { buildSymbols } from './pouSymbols';
+import { yieldPoint } from '../yieldPoint';
 
 const FAMILY_WORDS: Record<CoilFamily, string> = {
   assign: '( )',
@@ -134,11 +135,17 @@ export function lowerPouBody(
     }
     // openplc: networks imported with turns next to another such network run their statements together.
     const grouped = profile === 'openplc' && !!net.turns && (!!pou.networks[i - 1]?.turns || !!pou.networks[i + 1]?.turns);
-    return startNetwork(ctx, net, i, r, grouped);
+    const begun = startNetwork(ctx, net, i, r, grouped);
+    yieldPoint();
+    return begun;
   });
   // Profile openplc: each network's blocks no coil needed are lowered after every network's coils,
   // and run at the end of the body's last network (generated.ts).
-  const lowered = started.map((p) => p.finish());
+  const lowered = started.map((p) => {
+    const ir = p.finish();
+    yieldPoint();
+    return ir;
+  });
   const lateOf = lowered.flatMap((ir) => (ir?.late ? [ir.index] : []));
   const last = lowered[lowered.length - 1];
   const networks = lateOf.length && last ? [...lowered.slice(0, -1), { ...last, runLate: lateOf }] : lowered;
