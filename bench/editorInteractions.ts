@@ -30,7 +30,7 @@ interface Probe {
 declare const window: Window & Probe;
 
 /** ms from the next `type` event on the page to the painted frame where `until` holds. */
-async function timed(page: Page, type: string, act: () => Promise<unknown>, until: Until = {}): Promise<number> {
+export async function timed(page: Page, type: string, act: () => Promise<unknown>, until: Until = {}): Promise<number> {
   // tsx names the functions declared inside the callbacks through a helper the page lacks.
   await page.evaluate('window.__name ??= (f) => f');
   await page.evaluate(
@@ -79,7 +79,7 @@ async function shownProject(page: Page): Promise<{ project: Project; networks: N
 }
 
 /** Screen point of a cell of network `index`, the canvas scrolled (like a user) to show it. */
-async function cellOnScreen(page: Page, index: number, row: number, col: number): Promise<{ x: number; y: number }> {
+export async function cellOnScreen(page: Page, index: number, row: number, col: number): Promise<{ x: number; y: number }> {
   const { project, networks } = await shownProject(page);
   const layout = layoutNetworks(networks, blockLibrary(project));
   const c = cellCentre(layout, networks, index, { row, col });

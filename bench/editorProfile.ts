@@ -9,6 +9,7 @@ import { CHROMIUM_ARGS, CHROMIUM_PATH } from '../tests/e2e/browser';
 import { sealInProject } from '../tests/e2e/sealInProject';
 import type { Project } from '../src/model/project';
 import { bottleFillerProject } from './bottleFiller';
+import { cellOnScreen, interactionFigures, runningFrameP95, timed } from './editorInteractions';
 
 interface ProfileNode {
   id: number;
@@ -61,7 +62,28 @@ function summarize(p: Profile, top = Number(process.env.TOP ?? 35)): string {
   return `SELF\n${fmt(self)}\nTOTAL\n${fmt(total)}`;
 }
 
+interface TraceEvent { name: string; ph: string; dur?: number; tid: number; pid: number; args?: { name?: string } }
+
+/** With TRACE=1: Chromium's timeline instead of the JS profiler, ms per event name on the renderer's main thread. */
+async function traced(cdp: CDPSession, name: string, fn: () => Promise<unknown>) {
+  const events: TraceEvent[] = [];
+  cdp.on('Tracing.dataCollected', (e: { value: TraceEvent[] }) => events.push(...e.value));
+  const done = new Promise<void>((r) => cdp.once('Tracing.tracingComplete', () => r()));
+  await cdp.send('Tracing.start', { traceConfig: { includedCategories: ['devtools.timeline', 'disabled-by-default-devtools.timeline'] } } as never);
+  const r = await fn();
+  await cdp.send('Tracing.end');
+  await done;
+  const main = events.find((e) => e.name === 'thread_name' && e.args?.name === 'CrRendererMain');
+  const sums = new Map<string, number>();
+  for (const e of events)
+    if (main && e.tid === main.tid && e.pid === main.pid && e.ph === 'X' && e.dur)
+      sums.set(e.name, (sums.get(e.name) ?? 0) + e.dur / 1000);
+  console.log(`==== ${name} (trace): ${JSON.stringify(r)}`);
+  for (const [k, v] of [...sums].sort((a, b) => b[1] - a[1]).slice(0, 30)) console.log(`${v.toFixed(1).padStart(8)} ms  ${k}`);
+}
+
 async function profiled(cdp: CDPSession, name: string, fn: () => Promise<unknown>) {
+  if (process.env.TRACE) return traced(cdp, name, fn);
   await cdp.send('Profiler.enable');
   await cdp.send('Profiler.setSamplingInterval', { interval: 200 });
   await cdp.send('Profiler.start');
@@ -81,7 +103,8 @@ async function main() {
   if (!address || typeof address === 'string') throw new Error('no port');
   const browser = await chromium.launch({ executablePath: CHROMIUM_PATH, args: [...CHROMIUM_ARGS, '--disable-gpu-vsync', '--disable-frame-rate-limit'], headless: true });
   try {
-    const page = await browser.newPage({ viewport: { width: 1440, height: 900 } });
+    const context = await browser.newContext({ viewport: { width: 1440, height: 900 }, permissions: ['clipboard-read', 'clipboard-write'] });
+    const page = await context.newPage();
     const cdp = await page.context().newCDPSession(page);
     await page.goto(`http://127.0.0.1:${address.port}/`);
     await page.getByTestId('ladder-canvas').waitFor();
@@ -114,6 +137,39 @@ async function main() {
           return times.map(Math.round);
         }),
       );
+    if (what === 'select' || what === 'commit') {
+      const count = project.pous[0]!.networks.length;
+      const points = [];
+      for (let k = 0; k < 6; k++) points.push(await cellOnScreen(page, Math.floor(((k + 0.5) * count) / 6), 0, 0));
+      const p = points[3]!;
+      if (what === 'select')
+        await profiled(cdp, 'select', async () => {
+          const out: number[] = [];
+          // The same network in view: select its contact, then another cell, alternately.
+          for (let k = 0; k < 8; k++) out.push(await timed(page, 'pointerdown', () => page.mouse.click(p.x + (k % 2) * 60, p.y)));
+          return out.map(Math.round);
+        });
+      else {
+        await page.mouse.click(p.x, p.y);
+        await profiled(cdp, 'commit', async () => {
+          const out: number[] = [];
+          for (let k = 0; k < 4; k++) {
+            await timed(page, 'keydown', () => page.keyboard.press('Enter'), { editorOpen: true });
+            await page.keyboard.press('Control+a');
+            await page.keyboard.type(`Prof${k}`);
+            await page.waitForTimeout(100);
+            out.push(await timed(page, 'keydown', () => page.keyboard.press('Enter'), { declared: `Prof${k}` }));
+            await page.waitForTimeout(100);
+            out.push(await timed(page, 'keydown', () => page.keyboard.press('Control+z'), { notDeclared: `Prof${k}` }));
+            await page.waitForTimeout(100);
+            await page.mouse.click(p.x, p.y);
+          }
+          return out.map(Math.round);
+        });
+      }
+    }
+    if (what === 'interact') await profiled(cdp, 'interact', () => interactionFigures(page, 3));
+    if (what === 'running') await profiled(cdp, 'running', () => runningFrameP95(page));
   } finally {
     await browser.close();
     await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
