@@ -1,7 +1,12 @@
 // Editor benchmark: a generated 1,000-network project (~10,000 elements) loaded into the built
 // app in Chromium. Prints time to first render, frame times while scrolling (rAF deltas with the
 // frame-rate cap off, so a delta is the real cost of a frame), and the time from one edit
-// command to the next painted frame. Run with `npm run bench:editor` (builds first). To measure a
+// command to the next painted frame; then, on this project and on the 650-network bottle filler
+// (bench/bottleFiller.ts), what a user waits for from the input event to the painted frame (select,
+// keystroke, commit of a name with its declaration, undo, paste of 200 networks;
+// bench/editorInteractions.ts), Run's first scan and the cycles an online change misses
+// (bench/onlineChangeFigures.ts, when present), and the p95 frame while the program runs.
+// Run with `npm run bench:editor` (builds first). To measure a
 // build in another directory (so parallel test runs keep their dist/), build there and point
 // RUNGSMITH_DIST at it: `npx vite build --outDir /tmp/x && RUNGSMITH_DIST=/tmp/x npx tsx bench/editor.bench.ts`.
 import { existsSync } from 'node:fs';
@@ -14,6 +19,9 @@ import type { Project } from '../src/model/project';
 import { findInProject } from '../src/store/find';
 import { copyNetworks } from '../src/store/networkUnits';
 import { crossReference } from '../src/store/xref';
+import type { Page } from 'playwright-core';
+import { bottleFillerProject } from './bottleFiller';
+import { interactionFigures, runningFrameP95, type InteractionFigures } from './editorInteractions';
 import { median } from './median';
 
 const NETWORKS = 1000;
@@ -50,6 +58,50 @@ const percentile = (sorted: number[], p: number) =>
   sorted[Math.min(sorted.length - 1, Math.floor((sorted.length - 1) * p))]!;
 const round = (n: number) => Math.round(n * 10) / 10;
 
+type OnlineFigures = { runFirstScanMs: number; onlineChangeOverruns: number };
+type MeasureOnline = (page: Page, project: Project) => Promise<OnlineFigures>;
+
+/** measureRunAndOnlineChange of bench/onlineChangeFigures.ts (the online-change work), when this tree has it. */
+async function onlineMeasure(): Promise<MeasureOnline | undefined> {
+  const path = './onlineChangeFigures.ts';
+  try {
+    const m = (await import(/* @vite-ignore */ path)) as { measureRunAndOnlineChange?: MeasureOnline };
+    return m.measureRunAndOnlineChange;
+  } catch {
+    return undefined;
+  }
+}
+
+/** Loads `project` as the document and waits until it is painted and its live checks have run. */
+async function loadAndSettle(page: Page, project: Project): Promise<number> {
+  const ms = await page.evaluate((p: Project) => {
+    const store = window.rungsmith!.documentStore!.getState();
+    const t0 = performance.now();
+    store.loadProject(p);
+    return new Promise<number>((resolve) =>
+      requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - t0), 0)),
+    );
+  }, project);
+  await page.evaluate(() => new Promise((r) => setTimeout(r, 1500)));
+  return ms;
+}
+
+interface ProjectFigures extends InteractionFigures {
+  readonly firstRenderMs: number;
+  readonly runningP95: number;
+  readonly online?: OnlineFigures;
+}
+
+/** The interaction, running and online-change figures of one project (loaded fresh). */
+async function projectFigures(page: Page, project: Project, online: MeasureOnline | undefined): Promise<ProjectFigures> {
+  const firstRenderMs = await loadAndSettle(page, project);
+  const interactions = await interactionFigures(page);
+  await loadAndSettle(page, project);
+  const runningP95 = await runningFrameP95(page);
+  const figures = online ? await online(page, project) : undefined;
+  return { firstRenderMs, ...interactions, runningP95, ...(figures ? { online: figures } : {}) };
+}
+
 async function main() {
   const dist = process.env.RUNGSMITH_DIST ?? 'dist';
   if (!existsSync(`${dist}/index.html`))
@@ -69,7 +121,11 @@ async function main() {
     headless: true,
   });
   try {
-    const page = await browser.newPage({ viewport: { width: 1440, height: 900 } });
+    const context = await browser.newContext({
+      viewport: { width: 1440, height: 900 },
+      permissions: ['clipboard-read', 'clipboard-write'],
+    });
+    const page = await context.newPage();
     await page.goto(`http://127.0.0.1:${address.port}/`);
     await page.getByTestId('ladder-canvas').waitFor();
     await page.evaluate(() => new Promise((r) => setTimeout(r, 300)));
@@ -155,6 +211,11 @@ async function main() {
     });
     await page.getByTestId('print-close').click();
 
+    const online = await onlineMeasure();
+    const bottle = bottleFillerProject(50);
+    const bottleFigures = await projectFigures(page, bottle, online);
+    const sealFigures = await projectFigures(page, project, online);
+
     const sorted = [...frames.deltas].sort((a, b) => a - b);
     const median = percentile(sorted, 0.5);
     const p95 = percentile(sorted, 0.95);
@@ -174,8 +235,17 @@ async function main() {
     console.log(
       `print layout of ${NETWORKS} networks with variables and cross-reference (command to pages painted): ${Math.round(print.ms)} ms for ${print.pages} A4 pages (budget 3000 ms)`,
     );
+    const both = (f: (x: ProjectFigures) => number | undefined) =>
+      [bottleFigures, sealFigures].map((x) => { const v = f(x); return v === undefined ? 'n/a' : String(round(v)); }).join('/');
+    const bottleNets = bottle.pous[0]!.networks.length;
+    for (const [name, f] of [[`bottle filler (${bottleNets} networks)`, bottleFigures], [`${NETWORKS}-network project`, sealFigures]] as const)
+      console.log(
+        `${name}: first render ${round(f.firstRenderMs)} ms; from the input event to the painted frame: select ${round(f.selectMs)} ms, keystroke ${round(f.keystrokeMs)} ms, commit with declaration ${round(f.commitMs)} ms, undo ${round(f.undoMs)} ms, paste of 200 networks ${round(f.paste200Ms)} ms; running: p95 frame ${round(f.runningP95)} ms` +
+          (f.online ? `, Run to first scan ${round(f.online.runFirstScanMs)} ms, online change missed ${f.online.onlineChangeOverruns} cycles` : ', Run/online change not measured (no bench/onlineChangeFigures.ts)'),
+      );
     console.log(
-      `bench:editor first-render-ms=${Math.round(firstRender)} p95-frame-ms=${round(p95)} edit-ms=${round(edit)} paste100-ms=${round(paste)} find1000-ms=${round(logic.find)} xref1000-ms=${round(logic.xref)} print1000-ms=${Math.round(print.ms)}`,
+      `bench:editor first-render-ms=${Math.round(firstRender)} p95-frame-ms=${round(p95)} edit-ms=${round(edit)} paste100-ms=${round(paste)} find1000-ms=${round(logic.find)} xref1000-ms=${round(logic.xref)} print1000-ms=${Math.round(print.ms)}` +
+        ` | bottle${bottleNets}/seal${NETWORKS}: select-ms=${both((f) => f.selectMs)} keystroke-ms=${both((f) => f.keystrokeMs)} commit-ms=${both((f) => f.commitMs)} undo-ms=${both((f) => f.undoMs)} paste200-ms=${both((f) => f.paste200Ms)} run-first-scan-ms=${both((f) => f.online?.runFirstScanMs)} online-change-overruns=${both((f) => f.online?.onlineChangeOverruns)} running-p95-frame-ms=${both((f) => f.runningP95)}`,
     );
   } finally {
     await browser.close();

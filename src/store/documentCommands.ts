@@ -2,7 +2,7 @@
 // over the store's commit/editNetwork primitives (see the list at the top of documentStore.ts).
 import type { LdElement } from '../model/elements';
 import { elementSize, newNetwork } from '../model/factory';
-import { blockLibrary } from '../model/library';
+import { stableLibrary } from './stableLibrary';
 import { newId, type ElementId, type NetworkId, type PouId } from '../model/ids';
 import type { Network, Pou, Project, Variable } from '../model/project';
 import { diffNetwork, type Change, type VariableScope } from './changes';
@@ -86,7 +86,7 @@ type Commands = Omit<
 
 export function documentCommands({ get, commit, editNetwork }: CommandOps): Commands {
   /** The project's blocks (standard and its own FBs/functions): box sizes and pins come from it. */
-  const lib = () => blockLibrary(get().project);
+  const lib = () => stableLibrary(get().project);
   const scopeVars = (
     scope: VariableScope | undefined,
   ): { scope: VariableScope; vars: readonly Variable[] } => {

@@ -81,7 +81,7 @@ import { createElement, createContext, useContext, type ReactNode } from 'react'
 import { createStore, useStore, type StoreApi } from 'zustand';
 import type { LdElement, VLink } from '../model/elements';
 import { newProject as makeProject } from '../model/factory';
-import { blockLibrary } from '../model/library';
+import { stableLibrary } from './stableLibrary';
 import type { Cell } from '../model/grid';
 import type { ElementId, NetworkId, PouId } from '../model/ids';
 import type { Network, Pou, Profile, Project, Variable } from '../model/project';
@@ -374,8 +374,11 @@ export const selectVariables = (s: DocumentState): readonly Variable[] =>
 export const selectGlobals = (s: DocumentState) => s.project.globals;
 export const selectOpenPouIds = (s: DocumentState) => s.openPouIds;
 export const selectActivePouId = (s: DocumentState) => s.activePouId;
-/** The project's block library (standard blocks and its own FBs and functions), memoised on its POUs. */
-export const selectLibrary = (s: DocumentState) => blockLibrary(s.project);
+/**
+ * The project's block library (standard blocks and its own FBs and functions): the same object
+ * while no block interface changes (stableLibrary.ts), so an edit redraws only what it changed.
+ */
+export const selectLibrary = (s: DocumentState) => stableLibrary(s.project);
 export const selectDirty = (s: DocumentState) => s.dirty;
 export const selectRevision = (s: DocumentState) => s.revision;
 export const selectCanUndo = (s: DocumentState) => s.canUndo;

@@ -49,6 +49,25 @@ describe('autosave journal', () => {
     expect(applyPatch(JSON.parse(JSON.stringify(base)), patch)).toEqual(JSON.parse(JSON.stringify(current)));
   });
 
+  test('a network edit in a POU of 4,000 variables does not write the variables again; a variable edit does', () => {
+    const variables = Array.from({ length: 4000 }, (_, i) => variable(`V${i}`, 'BOOL', { comment: `Variable ${i}` }));
+    const store = createDocumentStore(
+      newProject('Vars', { pous: [newPou('Main', { variables, networks: [newNetwork(), newNetwork()] })] }),
+    );
+    const base = store.getState().project;
+    const baseData = JSON.parse(JSON.stringify(base));
+    store.getState().updateNetwork(base.pous[0]!.networks[1]!.id, { title: 'Changed' });
+    const edited = store.getState().project;
+    const { patch } = projectPatch(base, edited);
+    expect(JSON.stringify(patch).length).toBeLessThan(2_000);
+    expect(applyPatch(baseData, patch)).toEqual(JSON.parse(JSON.stringify(edited)));
+    store.getState().addVariable(variable('Added', 'INT'), base.pous[0]!.id);
+    const declared = store.getState().project;
+    const second = projectPatch(base, declared).patch;
+    expect(applyPatch(baseData, second)).toEqual(JSON.parse(JSON.stringify(declared)));
+    expect((applyPatch(baseData, second) as Project).pous[0]!.variables).toHaveLength(4001);
+  });
+
   test('added, deleted and moved networks, a renamed project and a new global come back as they are', () => {
     const store = createDocumentStore(bigProject(50));
     const base = store.getState().project;

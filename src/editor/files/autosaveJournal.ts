@@ -15,7 +15,8 @@ import type { Network, Pou, Project } from '../../model/project';
 import { AUTOSAVE_FORMAT, AUTOSAVE_VERSION, decideRecovery, type RecoveryDecision } from './autosaveRecord';
 
 export const JOURNAL_FORMAT = 'rungsmith-autosave-journal';
-export const JOURNAL_VERSION = 1;
+/** 2: a POU patch may take its variables from the base (`baseVariables`); version 1 journals still read. */
+export const JOURNAL_VERSION = 2;
 /** localStorage key of the journal. */
 export const JOURNAL_KEY = 'rungsmith.autosave.journal';
 /** The two IndexedDB keys the snapshots alternate between ('a' is the key older versions used). */
@@ -34,8 +35,13 @@ export const JOURNAL_MAX_NETWORKS = 300;
 type NetworkRun = readonly [number, number];
 
 export interface PouPatch {
-  /** Every field of the POU but its networks, as in the project file. */
+  /** Every field of the POU but its networks (and its variables with `baseVariables`), as in the project file. */
   readonly fields: Readonly<Record<string, unknown>>;
+  /**
+   * The variables are the base POU's, unchanged: a network edit of a POU with thousands of
+   * variables does not write them all again (localStorage.setItem of them cost ~10 ms a change).
+   */
+  readonly baseVariables?: true;
   /** Index of the POU in the base the runs refer to (absent: no base, every network inline). */
   readonly base?: number;
   readonly networks: readonly (NetworkRun | Network)[];
@@ -52,7 +58,7 @@ export interface ProjectPatch {
 
 export interface JournalRecord {
   readonly format: typeof JOURNAL_FORMAT;
-  readonly version: typeof JOURNAL_VERSION;
+  readonly version: 1 | typeof JOURNAL_VERSION;
   /** The snapshot the patch applies to; absent: the patch holds the whole project. */
   readonly base?: { readonly slot: Slot; readonly id: string };
   /** When the project reached this state (a stamp: later states have larger ones). */
@@ -118,7 +124,15 @@ export function projectPatch(
         networks.push(run);
       }
     }
-    return { fields: pouFields(pou), ...(bi !== undefined ? { base: bi } : {}), networks };
+    const fields = pouFields(pou);
+    const baseVariables = basePou !== undefined && basePou.variables === pou.variables;
+    if (baseVariables) delete fields.variables;
+    return {
+      fields,
+      ...(baseVariables ? { baseVariables: true as const } : {}),
+      ...(bi !== undefined ? { base: bi } : {}),
+      networks,
+    };
   });
   return { patch: { set, unset, pous }, inlineNetworks };
 }
@@ -149,7 +163,8 @@ export function applyPatch(baseData: unknown, patch: ProjectPatch): unknown {
         networks.push(...fromNetworks.slice(start, start + count));
       } else networks.push(n);
     }
-    pous.push({ ...entry.fields, networks });
+    if (entry.baseVariables && !Array.isArray(from?.variables)) return undefined;
+    pous.push({ ...(entry.baseVariables ? { variables: from!.variables } : {}), ...entry.fields, networks });
   }
   out.pous = pous;
   return out;
@@ -178,7 +193,7 @@ function parseJournal(text: string | null | undefined): JournalRecord | undefine
   if (!text) return undefined;
   try {
     const j = recordOf(JSON.parse(text));
-    if (!j || j.format !== JOURNAL_FORMAT || j.version !== JOURNAL_VERSION) return undefined;
+    if (!j || j.format !== JOURNAL_FORMAT || (j.version !== JOURNAL_VERSION && j.version !== 1)) return undefined;
     if (typeof j.savedAt !== 'number' || !recordOf(j.patch)) return undefined;
     return j as unknown as JournalRecord;
   } catch {

@@ -69,9 +69,17 @@ export function VariableInput(props: VariableInputProps) {
   const navigated = useRef(false);
   const text = draft ?? value;
 
+  // The names the field can offer depend on the declarations, not on what is typed: built once per
+  // document version and role, then only ranked per keystroke (a POU of thousands of variables).
+  const roleKey = JSON.stringify(role);
+  const candidates = useMemo(
+    () => (pou ? candidatesFor(project, pou, role) : []),
+    // eslint-disable-next-line react-hooks/exhaustive-deps -- `role` is compared by value (callers build it per render)
+    [project, pou, roleKey],
+  );
   const options = useMemo<Option[]>(() => {
     if (!pou || isLiteralFor(role, text)) return [];
-    const ranked = rankCandidates(text, candidatesFor(project, pou, role)).map((candidate) => ({
+    const ranked = rankCandidates(text, candidates).map((candidate) => ({
       kind: 'candidate' as const,
       candidate,
     }));
@@ -93,7 +101,8 @@ export function VariableInput(props: VariableInputProps) {
         : [];
     // The offered fresh instance comes first: a second call needs a new instance, not Motor1 again.
     return offered !== undefined && offered !== text ? [...declares, ...ranked] : [...ranked, ...declares];
-  }, [project, pou, role, text]);
+    // eslint-disable-next-line react-hooks/exhaustive-deps -- `role` is compared by value (callers build it per render)
+  }, [project, pou, roleKey, candidates, text]);
   const shown = open && options.length > 0;
   const activeIndex = Math.min(active, options.length - 1);
 

@@ -72,12 +72,8 @@ const describe = (v: Variable): string =>
 /** Declared variables, FB instance pins (`T1.Q`) and struct/array members (`P.X`) whose type fits the role. */
 export function candidatesFor(project: Project, pou: Pou, role: BindingRole): Candidate[] {
   const accepted = new Set(acceptedTypes(role));
-  const all = [
-    ...pou.variables,
-    ...project.globals.filter(
-      (g) => !pou.variables.some((v) => v.name.toUpperCase() === g.name.toUpperCase()),
-    ),
-  ];
+  const local = new Set(pou.variables.map((v) => v.name.toUpperCase()));
+  const all = [...pou.variables, ...project.globals.filter((g) => !local.has(g.name.toUpperCase()))];
   const out: Candidate[] = [];
   const lib = blockLibrary(project);
   for (const v of all) {
