@@ -84,6 +84,24 @@ test('Text shows the declarations as IEC text; a declaration typed with the keyb
   expect(await row.getByLabel('Comment').inputValue()).toBe('stop button, NC');
 });
 
+test('keyboard only: Shift+Tab unindents, Escape then Tab leaves the editor', async () => {
+  await panel().getByText('Text', { exact: true }).click();
+  await area().focus();
+  await page.keyboard.press('Control+Home');
+  await page.keyboard.press('ArrowDown');
+  await page.keyboard.press('Shift+Tab');
+  await poll(() => area().inputValue()).toContain('\nStart AT %IX0.0');
+  await page.keyboard.press('Tab');
+  await page.keyboard.press('Tab');
+  await poll(() => area().inputValue()).toContain('\n\t\tStart AT %IX0.0');
+  await page.keyboard.press('Shift+Tab');
+  await poll(() => area().inputValue()).toContain('\n\tStart AT %IX0.0');
+  await page.keyboard.press('Escape');
+  await page.keyboard.press('Tab');
+  await poll(() => page.evaluate(() => document.activeElement?.tagName)).not.toBe('TEXTAREA');
+  await panel().getByText('Table', { exact: true }).click();
+});
+
 test('an edit in the table shows in the text', async () => {
   const comment = panel().getByTestId('variable-row-Motor').getByLabel('Comment');
   await comment.click();

@@ -74,7 +74,8 @@ export function DeclarationText({ scope, pouName }: Props) {
   const [draft, setDraftState] = useState(() => draftOf(scope) ?? printed);
   const setDraft = (text: string) => {
     setDraftState(text);
-    keepDraft(scope, text);
+    // Kept only while it says something the variables do not (typed back to them: nothing kept).
+    keepDraft(scope, text === printed ? undefined : text);
   };
   /** The text the draft started from: while they are equal, model changes re-print the text. */
   const [basis, setBasis] = useState(printed);
@@ -92,8 +93,10 @@ export function DeclarationText({ scope, pouName }: Props) {
     setNote('');
   } else if (basis !== printed) {
     setBasis(printed);
-    if (draft === basis) setDraftState(printed);
-    else
+    if (draft === basis) {
+      setDraftState(printed);
+      keepDraft(scope, undefined);
+    } else
       setNote(
         'The variables changed elsewhere (table, undo) while this text has changes: applying it makes them what the text says; Revert shows them.',
       );
@@ -196,13 +199,20 @@ export function DeclarationText({ scope, pouName }: Props) {
       const { selectionStart: s, selectionEnd: t, value } = el;
       const lineStart = value.lastIndexOf('\n', s - 1) + 1;
       if (!e.shiftKey && s === t) return insertText(el, '\t');
-      // Several lines selected (or Shift+Tab): indent or unindent each line.
-      const lineEnd = t > s && value[t - 1] === '\n' ? t - 1 : t;
+      // Several lines selected (or Shift+Tab): indent or unindent each whole line.
+      const last = t > s && value[t - 1] === '\n' ? t - 1 : t;
+      const eol = value.indexOf('\n', last);
+      const lineEnd = eol < 0 ? value.length : eol;
       const block = value.slice(lineStart, lineEnd);
       const next = e.shiftKey ? block.replace(/^(\t| {1,4})/gm, '') : block.replace(/^/gm, '\t');
+      if (next === block) return;
       el.setSelectionRange(lineStart, lineEnd);
       insertText(el, next);
-      el.setSelectionRange(lineStart, lineStart + next.length);
+      if (s === t) {
+        // Shift+Tab on one line: the caret stays where it was in the text.
+        const at = Math.max(lineStart, s - (block.length - next.length));
+        el.setSelectionRange(at, at);
+      } else el.setSelectionRange(lineStart, lineStart + next.length);
       return;
     }
     escaped.current = false;
