@@ -175,3 +175,24 @@ test('one Ctrl+Z undoes a whole text edit; a rename in the text renames the uses
   expect(await coilName()).toBe('Motor');
   await poll(() => area().inputValue()).toBe(text);
 });
+
+test("a variable's problem (not a syntax error) applies, is marked at its line, and the Problems list leads to it", async () => {
+  await area().waitFor();
+  const text = await area().inputValue();
+  const line = text.split('\n').findIndex((l) => l.includes('Count :')) + 1;
+  await area().fill(text.replace('Count : INT := 0;', 'Count : INT := abc;'));
+  await area().press('Control+Enter');
+  await poll(async () => (await variables()).find((v) => v.name === 'Count')?.initial).toBe('abc');
+  await poll(() => panel().locator(`.rs-decl-gutter [data-line="${line}"]`).getAttribute('class')).toContain('rs-decl-warning');
+  // Away from the line, then from the Problems list back to it.
+  await area().press('Control+Home');
+  await page.getByRole('tab', { name: 'Problems', exact: true }).click();
+  const problem = page.getByTestId('problems-panel').locator('[data-rule="LD-E14"]');
+  await poll(() => problem.count()).toBe(1);
+  await problem.click();
+  await poll(() =>
+    area().evaluate((el: HTMLTextAreaElement) => (document.activeElement === el ? el.value.slice(0, el.selectionStart).split('\n').length : 0)),
+  ).toBe(line);
+  await area().press('Control+z');
+  await poll(async () => (await variables()).find((v) => v.name === 'Count')?.initial).toBe('0');
+});

@@ -20,8 +20,9 @@ import type { VariableScope } from '../../store/changes';
 import { applyDeclarationText, scopeVariables } from '../../store/declarationText';
 import { selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import type { Variable } from '../../model/project';
-import { declarationView, draftOf, keepDraft, setPending } from './declarationView';
+import { declarationView, draftOf, handled, keepDraft, setPending } from './declarationView';
 import { validateVariables } from './validation';
+import { variableFocus } from './variableFocus';
 import './declarationText.css';
 
 interface Props {
@@ -131,18 +132,32 @@ export function DeclarationText({ scope, pouName }: Props) {
     setPending(scope, checkedDirty && errors.length > 0 ? { owner, problems: errors } : undefined);
   }, [scope, checkedDirty, parsed, owner]);
 
-  const reveal = useStore(declarationView, (s) => s.reveal);
-  const revealed = useRef(0);
-  useEffect(() => {
+  const caretTo = (line: number, col: number, focus = true) => {
     const el = area.current;
-    if (!reveal || reveal.scope !== scope || revealed.current === reveal.seq || !el) return;
-    revealed.current = reveal.seq;
-    const at = offsetOf(el.value, reveal.line, reveal.col);
-    el.focus();
+    if (!el) return;
+    const at = offsetOf(el.value, line, col);
+    if (focus) el.focus();
     el.setSelectionRange(at, at);
     const lineHeight = parseFloat(getComputedStyle(el).lineHeight) || 18;
-    el.scrollTop = Math.max(0, (reveal.line - 3) * lineHeight);
+    el.scrollTop = Math.max(0, (line - 3) * lineHeight);
+  };
+  // "Show line 3 of this text" (a syntax error in the Problems list).
+  const reveal = useStore(declarationView, (s) => s.reveal);
+  useEffect(() => {
+    if (!reveal || reveal.scope !== scope || handled.reveal === reveal.seq) return;
+    handled.reveal = reveal.seq;
+    caretTo(reveal.line, reveal.col);
   }, [reveal, scope]);
+  // "Show this variable" (a variable's problem in the Problems list): its declaration's line.
+  const focusRequest = useStore(variableFocus, (s) => s.request);
+  useEffect(() => {
+    if (!focusRequest || handled.focus === focusRequest.seq) return;
+    if (focusRequest.globals !== (scope === 'globals')) return;
+    handled.focus = focusRequest.seq;
+    const key = focusRequest.name.toUpperCase();
+    const decl = parsed.declarations.find((d) => d.variable.name.toUpperCase() === key);
+    if (decl) caretTo(decl.line, decl.col);
+  }, [focusRequest, scope, parsed]);
 
   const apply = (): boolean => {
     if (!dirty) return true;
@@ -173,14 +188,6 @@ export function DeclarationText({ scope, pouName }: Props) {
     keepDraft(scope, undefined);
     setNote('');
     setPending(scope, undefined);
-  };
-
-  const moveCaret = (line: number, col: number) => {
-    const el = area.current;
-    if (!el) return;
-    const at = offsetOf(el.value, line, col);
-    el.focus();
-    el.setSelectionRange(at, at);
   };
 
   const onKeyDown = (e: KeyboardEvent<HTMLTextAreaElement>) => {
@@ -329,7 +336,7 @@ export function DeclarationText({ scope, pouName }: Props) {
                 className={`rs-decl-problem rs-${p.severity}`}
                 data-testid="declaration-problem"
                 data-line={p.line}
-                onClick={() => moveCaret(p.line, p.col)}
+                onClick={() => caretTo(p.line, p.col)}
               >
                 {p.rule ? `${p.rule} ` : ''}line {p.line}, column {p.col}: {p.message}
               </button>
