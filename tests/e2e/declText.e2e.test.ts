@@ -196,3 +196,20 @@ test("a variable's problem (not a syntax error) applies, is marked at its line, 
   await area().press('Control+z');
   await poll(async () => (await variables()).find((v) => v.name === 'Count')?.initial).toBe('0');
 });
+
+test('the globals as VAR_GLOBAL text: a global typed there is declared, its // comment kept', async () => {
+  await panel().getByText('Global', { exact: true }).click();
+  await area().waitFor();
+  expect(await area().inputValue()).toBe('VAR_GLOBAL\nEND_VAR\n');
+  await area().focus();
+  await page.keyboard.press('Control+Home');
+  await page.keyboard.press('End');
+  await page.keyboard.press('Enter');
+  await page.keyboard.press('Tab');
+  await page.keyboard.type('MaxLevel : INT := 900; // litres');
+  await page.keyboard.press('Control+Enter');
+  await poll(() => page.evaluate(() => window.rungsmith!.documentStore!.getState().project.globals)).toEqual([
+    { name: 'MaxLevel', type: 'INT', varClass: 'local', initial: '900', retain: false, comment: 'litres' },
+  ]);
+  expect(await area().inputValue()).toBe('VAR_GLOBAL\n\tMaxLevel : INT := 900; (* litres *)\nEND_VAR\n');
+});
