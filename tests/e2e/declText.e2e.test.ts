@@ -84,6 +84,24 @@ test('Text shows the declarations as IEC text; a declaration typed with the keyb
   expect(await row.getByLabel('Comment').inputValue()).toBe('stop button, NC');
 });
 
+test('keyboard only: Shift+Tab unindents, Escape then Tab leaves the editor', async () => {
+  await panel().getByText('Text', { exact: true }).click();
+  await area().focus();
+  await page.keyboard.press('Control+Home');
+  await page.keyboard.press('ArrowDown');
+  await page.keyboard.press('Shift+Tab');
+  await poll(() => area().inputValue()).toContain('\nStart AT %IX0.0');
+  await page.keyboard.press('Tab');
+  await page.keyboard.press('Tab');
+  await poll(() => area().inputValue()).toContain('\n\t\tStart AT %IX0.0');
+  await page.keyboard.press('Shift+Tab');
+  await poll(() => area().inputValue()).toContain('\n\tStart AT %IX0.0');
+  await page.keyboard.press('Escape');
+  await page.keyboard.press('Tab');
+  await poll(() => page.evaluate(() => document.activeElement?.tagName)).not.toBe('TEXTAREA');
+  await panel().getByText('Table', { exact: true }).click();
+});
+
 test('an edit in the table shows in the text', async () => {
   const comment = panel().getByTestId('variable-row-Motor').getByLabel('Comment');
   await comment.click();
@@ -156,4 +174,42 @@ test('one Ctrl+Z undoes a whole text edit; a rename in the text renames the uses
   await poll(() => variables()).toEqual(before);
   expect(await coilName()).toBe('Motor');
   await poll(() => area().inputValue()).toBe(text);
+});
+
+test("a variable's problem (not a syntax error) applies, is marked at its line, and the Problems list leads to it", async () => {
+  await area().waitFor();
+  const text = await area().inputValue();
+  const line = text.split('\n').findIndex((l) => l.includes('Count :')) + 1;
+  await area().fill(text.replace('Count : INT := 0;', 'Count : INT := abc;'));
+  await area().press('Control+Enter');
+  await poll(async () => (await variables()).find((v) => v.name === 'Count')?.initial).toBe('abc');
+  await poll(() => panel().locator(`.rs-decl-gutter [data-line="${line}"]`).getAttribute('class')).toContain('rs-decl-warning');
+  // Away from the line, then from the Problems list back to it.
+  await area().press('Control+Home');
+  await page.getByRole('tab', { name: 'Problems', exact: true }).click();
+  const problem = page.getByTestId('problems-panel').locator('[data-rule="LD-E14"]');
+  await poll(() => problem.count()).toBe(1);
+  await problem.click();
+  await poll(() =>
+    area().evaluate((el: HTMLTextAreaElement) => (document.activeElement === el ? el.value.slice(0, el.selectionStart).split('\n').length : 0)),
+  ).toBe(line);
+  await area().press('Control+z');
+  await poll(async () => (await variables()).find((v) => v.name === 'Count')?.initial).toBe('0');
+});
+
+test('the globals as VAR_GLOBAL text: a global typed there is declared, its // comment kept', async () => {
+  await panel().getByText('Global', { exact: true }).click();
+  await area().waitFor();
+  expect(await area().inputValue()).toBe('VAR_GLOBAL\nEND_VAR\n');
+  await area().focus();
+  await page.keyboard.press('Control+Home');
+  await page.keyboard.press('End');
+  await page.keyboard.press('Enter');
+  await page.keyboard.press('Tab');
+  await page.keyboard.type('MaxLevel : INT := 900; // litres');
+  await page.keyboard.press('Control+Enter');
+  await poll(() => page.evaluate(() => window.rungsmith!.documentStore!.getState().project.globals)).toEqual([
+    { name: 'MaxLevel', type: 'INT', varClass: 'local', initial: '900', retain: false, comment: 'litres' },
+  ]);
+  expect(await area().inputValue()).toBe('VAR_GLOBAL\n\tMaxLevel : INT := 900; (* litres *)\nEND_VAR\n');
 });

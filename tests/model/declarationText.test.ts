@@ -108,6 +108,43 @@ END_VAR`;
   });
 });
 
+describe('what the ST lexer reads in declarations', () => {
+  it('keeps strings, typed and based literals, times and qualifiers as written', () => {
+    const text = `VAR_OUTPUT RETAIN
+	Msg : STRING[30] := 'a; (* not a comment *) b';
+	W : WORD := 16#FF_FF;
+	Dt : TIME := T#1s500ms;
+	N : SINT := SINT#-5;
+END_VAR
+VAR NON_RETAIN
+	Ws : WSTRING := "wide";
+END_VAR
+VAR_GLOBAL PERSISTENT
+END_VAR`;
+    const result = parseDeclarations(text, 'pou');
+    expect(result.variables.map((v) => [v.name, v.type, v.initial, v.varClass, v.retain])).toEqual([
+      ['Msg', 'STRING[30]', "'a; (* not a comment *) b'", 'output', true],
+      ['W', 'WORD', '16#FF_FF', 'output', true],
+      ['Dt', 'TIME', 'T#1s500ms', 'output', true],
+      ['N', 'SINT', 'SINT#-5', 'output', true],
+      ['Ws', 'WSTRING', '"wide"', 'local', false],
+    ]);
+    expect(result.variables.every((v) => v.comment === '')).toBe(true);
+    // VAR_GLOBAL in a POU's text is an error located at it; PERSISTENT is a warning.
+    expect(result.problems.map((p) => [p.severity, p.line])).toEqual([
+      ['error', 10],
+      ['warning', 10],
+    ]);
+  });
+
+  it('reads a pragma as a warning and leaves the declaration as it is', () => {
+    const result = parseDeclarations("VAR\n\t{attribute 'hide'}\n\tA : INT;\nEND_VAR", 'pou');
+    expect(result.ok).toBe(true);
+    expect(result.variables).toEqual([variable('A', 'INT')]);
+    expect(result.problems).toEqual([expect.objectContaining({ severity: 'warning', line: 2, col: 2 })]);
+  });
+});
+
 describe('syntax errors are located', () => {
   const errorsOf = (text: string, section: 'pou' | 'globals' = 'pou') =>
     parseDeclarations(text, section).problems.filter((p) => p.severity === 'error');

@@ -108,3 +108,13 @@ test("an FB's new input in the text gives its calls the pin (the interface follo
   doc.getState().undo();
   expect(doc.getState().project).toEqual(project);
 });
+
+test("the text's order becomes the list's order (one step with the other changes)", () => {
+  const doc = createDocumentStore(plant());
+  const pou = main(doc.getState().project);
+  applyDeclarationText(doc, pou.id, parse('VAR\n\tCount : INT := 5;\nEND_VAR\nVAR_OUTPUT\n\tMotor : BOOL;\nEND_VAR\nVAR_INPUT\n\tStart AT %IX0.0 : BOOL;\n\tReset : BOOL;\nEND_VAR\n'));
+  expect(main(doc.getState().project).variables.map((v) => v.name)).toEqual(['Count', 'Motor', 'Start', 'Reset']);
+  expect(doc.getState().history.undo).toHaveLength(1);
+  doc.getState().undo();
+  expect(main(doc.getState().project).variables.map((v) => v.name)).toEqual(['Start', 'Motor', 'Count']);
+});

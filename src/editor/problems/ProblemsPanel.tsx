@@ -97,8 +97,8 @@ export function ProblemsPanel() {
           {!checked
             ? 'Checking…'
             : diagnostics.length === 0
-              ? 'No problems'
-              : `${errors} error${errors === 1 ? '' : 's'}, ${warnings} warning${warnings === 1 ? '' : 's'}`}
+            ? 'No problems'
+            : `${errors} error${errors === 1 ? '' : 's'}, ${warnings} warning${warnings === 1 ? '' : 's'}`}
         </span>
         <label className="rs-problems-toggle">
           <input type="checkbox" checked={showWarnings} onChange={(e) => setShowWarnings(e.target.checked)} />

@@ -20,8 +20,9 @@ import type { VariableScope } from '../../store/changes';
 import { applyDeclarationText, scopeVariables } from '../../store/declarationText';
 import { selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import type { Variable } from '../../model/project';
-import { declarationView, draftOf, keepDraft, setPending } from './declarationView';
+import { declarationView, draftOf, handled, keepDraft, setPending } from './declarationView';
 import { validateVariables } from './validation';
+import { variableFocus } from './variableFocus';
 import './declarationText.css';
 
 interface Props {
@@ -74,7 +75,8 @@ export function DeclarationText({ scope, pouName }: Props) {
   const [draft, setDraftState] = useState(() => draftOf(scope) ?? printed);
   const setDraft = (text: string) => {
     setDraftState(text);
-    keepDraft(scope, text);
+    // Kept only while it says something the variables do not (typed back to them: nothing kept).
+    keepDraft(scope, text === printed ? undefined : text);
   };
   /** The text the draft started from: while they are equal, model changes re-print the text. */
   const [basis, setBasis] = useState(printed);
@@ -92,8 +94,10 @@ export function DeclarationText({ scope, pouName }: Props) {
     setNote('');
   } else if (basis !== printed) {
     setBasis(printed);
-    if (draft === basis) setDraftState(printed);
-    else
+    if (draft === basis) {
+      setDraftState(printed);
+      keepDraft(scope, undefined);
+    } else
       setNote(
         'The variables changed elsewhere (table, undo) while this text has changes: applying it makes them what the text says; Revert shows them.',
       );
@@ -128,18 +132,32 @@ export function DeclarationText({ scope, pouName }: Props) {
     setPending(scope, checkedDirty && errors.length > 0 ? { owner, problems: errors } : undefined);
   }, [scope, checkedDirty, parsed, owner]);
 
-  const reveal = useStore(declarationView, (s) => s.reveal);
-  const revealed = useRef(0);
-  useEffect(() => {
+  const caretTo = (line: number, col: number, focus = true) => {
     const el = area.current;
-    if (!reveal || reveal.scope !== scope || revealed.current === reveal.seq || !el) return;
-    revealed.current = reveal.seq;
-    const at = offsetOf(el.value, reveal.line, reveal.col);
-    el.focus();
+    if (!el) return;
+    const at = offsetOf(el.value, line, col);
+    if (focus) el.focus();
     el.setSelectionRange(at, at);
     const lineHeight = parseFloat(getComputedStyle(el).lineHeight) || 18;
-    el.scrollTop = Math.max(0, (reveal.line - 3) * lineHeight);
+    el.scrollTop = Math.max(0, (line - 3) * lineHeight);
+  };
+  // "Show line 3 of this text" (a syntax error in the Problems list).
+  const reveal = useStore(declarationView, (s) => s.reveal);
+  useEffect(() => {
+    if (!reveal || reveal.scope !== scope || handled.reveal === reveal.seq) return;
+    handled.reveal = reveal.seq;
+    caretTo(reveal.line, reveal.col);
   }, [reveal, scope]);
+  // "Show this variable" (a variable's problem in the Problems list): its declaration's line.
+  const focusRequest = useStore(variableFocus, (s) => s.request);
+  useEffect(() => {
+    if (!focusRequest || handled.focus === focusRequest.seq) return;
+    if (focusRequest.globals !== (scope === 'globals')) return;
+    handled.focus = focusRequest.seq;
+    const key = focusRequest.name.toUpperCase();
+    const decl = parsed.declarations.find((d) => d.variable.name.toUpperCase() === key);
+    if (decl) caretTo(decl.line, decl.col);
+  }, [focusRequest, scope, parsed]);
 
   const apply = (): boolean => {
     if (!dirty) return true;
@@ -172,14 +190,6 @@ export function DeclarationText({ scope, pouName }: Props) {
     setPending(scope, undefined);
   };
 
-  const moveCaret = (line: number, col: number) => {
-    const el = area.current;
-    if (!el) return;
-    const at = offsetOf(el.value, line, col);
-    el.focus();
-    el.setSelectionRange(at, at);
-  };
-
   const onKeyDown = (e: KeyboardEvent<HTMLTextAreaElement>) => {
     const el = e.currentTarget;
     const mod = e.ctrlKey || e.metaKey;
@@ -196,13 +206,20 @@ export function DeclarationText({ scope, pouName }: Props) {
       const { selectionStart: s, selectionEnd: t, value } = el;
       const lineStart = value.lastIndexOf('\n', s - 1) + 1;
       if (!e.shiftKey && s === t) return insertText(el, '\t');
-      // Several lines selected (or Shift+Tab): indent or unindent each line.
-      const lineEnd = t > s && value[t - 1] === '\n' ? t - 1 : t;
+      // Several lines selected (or Shift+Tab): indent or unindent each whole line.
+      const last = t > s && value[t - 1] === '\n' ? t - 1 : t;
+      const eol = value.indexOf('\n', last);
+      const lineEnd = eol < 0 ? value.length : eol;
       const block = value.slice(lineStart, lineEnd);
       const next = e.shiftKey ? block.replace(/^(\t| {1,4})/gm, '') : block.replace(/^/gm, '\t');
+      if (next === block) return;
       el.setSelectionRange(lineStart, lineEnd);
       insertText(el, next);
-      el.setSelectionRange(lineStart, lineStart + next.length);
+      if (s === t) {
+        // Shift+Tab on one line: the caret stays where it was in the text.
+        const at = Math.max(lineStart, s - (block.length - next.length));
+        el.setSelectionRange(at, at);
+      } else el.setSelectionRange(lineStart, lineStart + next.length);
       return;
     }
     escaped.current = false;
@@ -319,7 +336,7 @@ export function DeclarationText({ scope, pouName }: Props) {
                 className={`rs-decl-problem rs-${p.severity}`}
                 data-testid="declaration-problem"
                 data-line={p.line}
-                onClick={() => moveCaret(p.line, p.col)}
+                onClick={() => caretTo(p.line, p.col)}
               >
                 {p.rule ? `${p.rule} ` : ''}line {p.line}, column {p.col}: {p.message}
               </button>

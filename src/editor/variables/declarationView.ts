@@ -5,6 +5,7 @@
 import { createStore } from 'zustand/vanilla';
 import type { DeclarationProblem } from '../../engine/st/declarations';
 import type { VariableScope } from '../../store/changes';
+import { variableFocus } from './variableFocus';
 
 export const VARIABLES_VIEW_KEY = 'rungsmith.variablesView';
 export type VariablesView = 'table' | 'text';
@@ -39,7 +40,16 @@ export const declarationView = createStore<DeclarationViewState>()(() => ({
   reveal: undefined,
 }));
 
+/**
+ * The newest "show line" and "show variable" requests already answered, whichever text view
+ * answered them (it remounts per list). Switching views by hand answers them all: a text view
+ * opened later does not jump to an old request.
+ */
+export const handled = { reveal: 0, focus: 0 };
+
 export function setVariablesView(view: VariablesView): void {
+  handled.reveal = declarationView.getState().reveal?.seq ?? 0;
+  handled.focus = variableFocus.getState().request?.seq ?? 0;
   declarationView.setState({ view });
   try {
     globalThis.localStorage?.setItem(VARIABLES_VIEW_KEY, view);
