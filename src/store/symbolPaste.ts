@@ -10,7 +10,7 @@
 // refuse, with the reason) before anything changes; applySymbolPaste makes it one undo step.
 import { parse } from 'csv-parse/browser/esm/sync';
 import { variable } from '../model/factory';
-import { ELEMENTARY_TYPES, parseSizedString } from '../model/iecTypes';
+import { ELEMENTARY_TYPES, locationText, parseLocation, parseSizedString } from '../model/iecTypes';
 import { blockLibrary } from '../model/library';
 import type { Project, VarClass, Variable } from '../model/project';
 import { identifierProblem, validateVariables, type VariableField } from '../editor/variables/validation';
@@ -298,8 +298,12 @@ export function planSymbolPaste(
   const globals = scope === 'globals';
   const pou = globals ? undefined : project.pous.find((p) => p.id === scope);
   const existing = scopeVariables(project, scope);
-  /** The list as it will be after the rows accepted so far. */
-  let list: Variable[] = [...existing];
+  /** Addresses of the list as it will be after the rows accepted so far (canonical spelling), by holder. */
+  const addresses = new Map<string, string>();
+  for (const w of existing) {
+    const loc = w.location ? parseLocation(w.location) : undefined;
+    if (loc && !addresses.has(locationText(loc))) addresses.set(locationText(loc), w.name);
+  }
   const taken = new Set(existing.map((v) => v.name.toUpperCase()));
   // Free names avoid every pasted name too, so a rename never takes the name a later row brings.
   for (const row of table.rows) if (row.cells.name) taken.add(row.cells.name.trim().toUpperCase());
@@ -369,22 +373,25 @@ export function planSymbolPaste(
       }
     }
 
-    // Every other check of the table (unknown type, address fit and use, initial value...), with
-    // the rows accepted so far in the list, so two rows at one address are caught too.
-    const at = action === 'replace' ? list.findIndex((w) => w.name.toUpperCase() === key) : list.length;
-    const trial = action === 'replace' ? list.map((w, i) => (i === at ? written : w)) : [...list, written];
-    const issues = validateVariables(trial, { project, ...(pou ? { pou: pou.name } : {}) }).filter(
-      (i) => i.index === at,
+    // Every other check of the table (unknown type, address fit, an address of another list,
+    // initial value...), then the address against this list as the rows accepted so far leave it.
+    const reasonsFound = validateVariables([written], { project, ...(pou ? { pou: pou.name } : {}) }).map(
+      (i) => `${FIELD_WORDS[i.field]}: ${i.message}`,
     );
-    if (issues.length)
-      return {
-        ...base,
-        action: 'refuse',
-        variable: written,
-        reasons: issues.map((i) => `${FIELD_WORDS[i.field]}: ${i.message}`),
-      };
-    list = trial;
-    if (action === 'replace') replaced.add(key);
+    const loc = written.location ? parseLocation(written.location) : undefined;
+    const where = loc ? locationText(loc) : undefined;
+    const holder = where ? addresses.get(where) : undefined;
+    if (where && holder && holder.toUpperCase() !== key)
+      reasonsFound.push(`address: ${where} is already used by "${holder}"`);
+    if (reasonsFound.length) return { ...base, action: 'refuse', variable: written, reasons: reasonsFound };
+    if (action === 'replace') {
+      replaced.add(key);
+      const old = existing.find((w) => w.name.toUpperCase() === key)?.location;
+      const oldLoc = old ? parseLocation(old) : undefined;
+      if (oldLoc && addresses.get(locationText(oldLoc))?.toUpperCase() === key)
+        addresses.delete(locationText(oldLoc));
+    }
+    if (where) addresses.set(where, written.name);
     return { ...base, action, variable: written, canReplace, ...(clash !== undefined ? { clash } : {}) };
   });
 }

@@ -134,6 +134,16 @@ test('Enter on the last row adds a row with its name focused; the class is typed
     ['Filling', 'local'],
     ['Done', 'output'],
   ]);
+  // `c` switches CONSTANT (VAR_OUTPUT CONSTANT is refused by the row's check: it names why).
+  await page.keyboard.press('c');
+  await poll(async () => (await project()).pous[0]!.variables.find((v) => v.name === 'Done')?.constant).toBe(
+    true,
+  );
+  await draw.canvas().focus();
+  await page.keyboard.press('Control+Z');
+  await poll(
+    async () => (await project()).pous[0]!.variables.find((v) => v.name === 'Done')?.constant,
+  ).toBeUndefined();
   expect(editor.errors).toEqual([]);
 });
 
@@ -227,10 +237,39 @@ test('inside an FB of an OpenPLC project: the interface is offered first, and a 
   await inline.waitFor({ state: 'detached' });
   await poll(globalNames).toContain('Jam');
   const conveyor = async () => (await project()).pous.find((p) => p.name === 'Conveyor')!.variables;
-  expect(await conveyor()).toEqual([{ name: 'Jam', type: 'BOOL', varClass: 'external', retain: false, comment: '' }]);
+  expect(await conveyor()).toEqual([
+    { name: 'Jam', type: 'BOOL', varClass: 'external', retain: false, comment: '' },
+  ]);
   await draw.canvas().focus();
   await page.keyboard.press('Control+Z');
   await poll(globalNames).not.toContain('Jam');
   expect(await conveyor()).toEqual([]);
+  expect(editor.errors).toEqual([]);
+});
+
+test('a box pin offers its own type; "Bottles : DINT" typed on the pin declares it with the type written (and its VAR_EXTERNAL: still OpenPLC)', async () => {
+  await page.getByTestId('pou-tab-Main').click();
+  await page.keyboard.press('n');
+  await draw.canvas().focus();
+  await page.keyboard.press('b');
+  await page.getByRole('combobox', { name: 'Search blocks' }).fill('CTU');
+  await page.keyboard.press('Enter');
+  await draw.typeName('Counter');
+  await editor.tab('Inspector');
+  const cv = editor.inspector.getByTestId('pin-CV');
+  await cv.click();
+  await cv.fill('Bottles');
+  const options = editor.inspector.getByRole('listbox', { name: 'Suggestions' }).getByRole('option');
+  await poll(() => options.allTextContents()).toContain('Declare BottlesINT global + VAR_EXTERNAL in Main');
+  await cv.fill('Bottles : DINT');
+  await poll(() => options.allTextContents()).toContain('Declare BottlesDINT global + VAR_EXTERNAL in Main');
+  await options.filter({ hasText: 'BottlesDINT global + VAR_EXTERNAL in Main' }).click();
+  await poll(async () => (await project()).globals.find((g) => g.name === 'Bottles')?.type).toBe('DINT');
+  const box = (await project()).pous[0]!.networks.flatMap((n) => n.elements).find((e) => e.kind === 'box');
+  expect(box).toMatchObject({ outputs: { CV: 'Bottles' } });
+  expect((await project()).pous[0]!.variables.find((v) => v.name === 'Bottles')).toMatchObject({
+    varClass: 'external',
+    type: 'DINT',
+  });
   expect(editor.errors).toEqual([]);
 });

@@ -201,3 +201,11 @@ test('an unclosed quote gives a reason, not an exception', () => {
     true,
   );
 });
+
+test('replacing a variable frees its old address for a later row; a row at an address the list holds is refused', () => {
+  const project = plant();
+  const table = parseSymbolTable('Start\tBOOL\t%IX0.5\nSpare\tBOOL\t%IX0.0\nOther\tBOOL\t%IX0.5\n');
+  const plan = planSymbolPaste(project, 'globals', table, new Map([[0, 'replace' as const]]));
+  expect(plan.map((r) => r.action)).toEqual(['replace', 'add', 'refuse']);
+  expect(plan[2]!.reasons).toEqual(['address: %IX0.5 is already used by "Start"']);
+});

@@ -106,6 +106,7 @@ export function VariableRow({
     if (e.ctrlKey || e.altKey || e.metaKey) return;
     if (e.key === 'ArrowDown' || e.key === 'ArrowUp') {
       e.preventDefault();
+      typed.current = { text: '', at: 0 };
       const i = CLASS_ORDER.indexOf(v.varClass) + (e.key === 'ArrowDown' ? 1 : -1);
       const next = CLASS_ORDER[Math.max(0, Math.min(CLASS_ORDER.length - 1, i))];
       if (next && next !== v.varClass) onChange({ varClass: next });
@@ -118,6 +119,9 @@ export function VariableRow({
     typed.current = { text, at: now };
     const c = classForTyped(text);
     if (c && c !== v.varClass) onChange({ varClass: c });
+    // `c` and `r` (no class begins so) switch CONSTANT and RETAIN, as VAR CONSTANT / VAR RETAIN.
+    else if (!c && text.length === 1 && /c/i.test(text)) onChange({ constant: !v.constant || undefined });
+    else if (!c && text.length === 1 && /r/i.test(text)) onChange({ retain: !v.retain });
   };
   const invalid = (field: VariableField) =>
     issues[field] ? { 'aria-invalid': true, title: issues[field] } : {};
@@ -134,7 +138,7 @@ export function VariableRow({
               aria-label="Class"
               className="rs-cell-input"
               value={v.varClass}
-              title="Type the class: in (VAR_INPUT), o (VAR_OUTPUT), in_ (VAR_IN_OUT), v (VAR), e (VAR_EXTERNAL), t (VAR_TEMP); or use the arrows"
+              title="Type the class: in (VAR_INPUT), o (VAR_OUTPUT), in_ (VAR_IN_OUT), v (VAR), e (VAR_EXTERNAL), t (VAR_TEMP), or use the arrows; c switches CONSTANT, r RETAIN"
               onKeyDown={classKeys}
               onChange={(e) => onChange({ varClass: e.target.value as VarClass })}
             >

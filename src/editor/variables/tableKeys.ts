@@ -20,6 +20,7 @@ export function isTextField(target: EventTarget | null): boolean {
  * the field's.
  */
 export function isTablePaste(target: EventTarget | null, text: string): boolean {
+  if (text.trim() === '') return false;
   if (!isTextField(target)) return true;
   const t = text.replace(/[\r\n]+$/, '');
   return t.includes('\t') || t.includes('\n');
