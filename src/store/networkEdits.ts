@@ -479,3 +479,16 @@ export function deleteRow(n: Network, at: number, lib: BlockLibrary = STANDARD_L
   }
   return { ...n, rows: n.rows - 1, elements, vlinks };
 }
+
+/**
+ * The network without the empty rows below its rung (CODESYS/FPWIN "optimize network height"): as
+ * many rows as its elements and vertical links reach, so a one-row rung takes one row. An empty
+ * network is left as it is (its rows are where a rung gets drawn). The same object when nothing goes.
+ */
+export function fitRows(n: Network, lib: BlockLibrary = STANDARD_LIBRARY): Network {
+  if (n.elements.length === 0 && n.vlinks.length === 0) return n;
+  let rows = 1;
+  for (const el of n.elements) rows = Math.max(rows, el.row + elementSize(el, lib).rows);
+  for (const v of n.vlinks) rows = Math.max(rows, v.row + 2);
+  return rows < n.rows ? { ...n, rows } : n;
+}

@@ -22,6 +22,7 @@ import { loadProject, saveProject } from '../../src/model/load';
 import type { Network, Project, Variable } from '../../src/model/project';
 import { exportPlcopen } from '../../src/plcopen/exportPlcopen';
 import { importPlcopen } from '../../src/plcopen/importPlcopen';
+import { fitRows } from '../../src/store/networkEdits';
 import { blocks } from '../plcopen/samples';
 import { schemaErrors } from '../plcopen/xsd';
 
@@ -47,6 +48,30 @@ describe('collapsed networks', () => {
     expect(l.heights[0]).toBeLessThan(72);
     expect(l.tops[1]! - l.tops[0]!).toBe(l.heights[0]);
     expect(l.heights[1]).toBeGreaterThan(3 * CELL_H);
+  });
+});
+
+describe('fit rows to rungs', () => {
+  it('a one-row rung in a three-row network becomes one row: one row high in the layout', () => {
+    const n: Network = newNetwork({ rows: 3, elements: [contact('Start', 0)] });
+    const fitted = fitRows(n);
+    expect(fitted.rows).toBe(1);
+    expect(fitted.elements).toBe(n.elements);
+    const l = layoutNetworks([fitted]);
+    expect(l.heights[0]! - layoutNetworks([n]).heights[0]!).toBe(-2 * CELL_H);
+  });
+  it('keeps the rows a branch or a box reaches, and leaves an empty network and a fitted one as they are', () => {
+    const branch: Network = newNetwork({ rows: 4, elements: [contact('A', 0), { ...contact('B', 1), row: 1 }], vlinks: [{ row: 0, boundary: 1 }] });
+    expect(fitRows(branch).rows).toBe(2);
+    const ton: Network = newNetwork({
+      rows: 5,
+      elements: [{ id: 'x' as ElementId, kind: 'box', blockType: 'TON', instance: 'T1', row: 0, col: 1, inputs: {}, outputs: {} }],
+    });
+    expect(fitRows(ton).rows).toBe(2);
+    const empty = newNetwork({ rows: 3 });
+    expect(fitRows(empty)).toBe(empty);
+    const one = fitRows(newNetwork({ rows: 3, elements: [contact('A', 0)] }));
+    expect(fitRows(one)).toBe(one);
   });
 });
 
