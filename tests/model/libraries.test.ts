@@ -10,6 +10,7 @@ import { blockLibrary } from '../../src/model/library';
 import { loadProject, saveProject } from '../../src/model/load';
 import type { Project, ProjectLibrary } from '../../src/model/project';
 import { readLibraryFile } from '../../src/plcopen/libraryFile';
+import { pouNameProblem } from '../../src/store/pouEdits';
 import { ladder, plcOf, trace, vars, type BoxSpec } from '../engine/ladder';
 import { multiProject, pou } from '../engine/userBlocksHelpers';
 
@@ -115,10 +116,12 @@ describe('a library in the project', () => {
     expect(standard.ok ? [] : standard.errors[0]).toMatch(/TON has the name of the standard function block TON/);
   });
 
-  test('a POU named like a library block later is LD-E25, naming the library', async () => {
+  test('a POU named like a library block (a file opened as it was) is LD-E25, naming the library; the editor refuses such a name', async () => {
     const project = await projectWithLibrary();
     const renamed = { ...project, pous: [...project.pous, pou('Scale', 'FUNCTION', [], [], 'INT')] };
     expect(checkProject(renamed).find((d) => d.rule === 'LD-E25')?.message).toMatch(/Scale of the project is also a block of the library Conveyors/);
+    // The editor refuses the name when a POU is added or renamed.
+    expect(pouNameProblem(project, 'scale')).toBe('"scale" is a block or data type of the library Conveyors.');
   });
 
   test('removing is refused while POUs use its blocks, with every use; allowed once unused', async () => {
