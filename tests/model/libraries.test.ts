@@ -168,7 +168,7 @@ describe('a library in the project', () => {
     expect(errors).toHaveLength(1);
     // At the Scale box of the second network (0-based network 1).
     expect(errors[0]).toMatchObject({ rule: 'LD-E01', pou: 'Main', network: 1, elementId: update.project.pous[0]!.networks[1]!.elements.find((e) => e.kind === 'box')!.id });
-    expect(errors[0]!.message).toMatch(/"Scale"/);
+    expect(errors[0]!.message).toMatch(/uses "Scale", which is not a standard function or function block nor a FUNCTION or FUNCTION_BLOCK of the project nor a block of its libraries \(Conveyors\)$/);
     // The same file again: nothing changes.
     const same = updateLibrary(project, 'Conveyors', await conveyors());
     expect(same.ok && [same.same, same.diff.added, same.diff.removed, same.diff.changed]).toEqual([true, [], [], []]);
@@ -188,6 +188,7 @@ describe('a library in the project', () => {
     if (!loaded.ok) return;
     expect(loaded.project.libraries).toEqual(project.libraries);
     expect(withLibraries(loaded.project).pous.map((p) => p.name)).toEqual(['Main', 'Conveyor', 'Scale']);
+    expect(blockLibrary(withLibraries(loaded.project)).all().filter((b) => b.name === 'Conveyor')).toHaveLength(1);
     const twice = JSON.parse(saveProject(project)) as { libraries: unknown[] };
     twice.libraries.push(twice.libraries[0]);
     const dup = loadProject(JSON.stringify(twice));
