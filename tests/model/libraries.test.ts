@@ -99,6 +99,17 @@ describe('a library in the project', () => {
     ]);
   });
 
+  test('an ST program calls them too', async () => {
+    const st = { ...pou('Main', 'PROGRAM', vars('Go BOOL', 'Out INT', 'Belt Conveyor'), []), language: 'ST' as const, source: 'Belt(Start := Go, Stop := FALSE);\nOut := Scale(Value := 2, Factor := 5);\n' };
+    const added = addLibrary(multiProject([st]), await conveyors());
+    if (!added.ok) throw new Error(added.errors.join('\n'));
+    expect(checkProject(added.project).filter((d) => d.severity === 'error')).toEqual([]);
+    expect(trace(plcOf(added.project), [{ Go: false }, { Go: true }], ['Belt.Running', 'Belt.Starts', 'Out'])).toEqual([
+      [0, 0, 10],
+      [1, 1, 10],
+    ]);
+  });
+
   test('adding refuses name clashes with the project’s POUs, other libraries and standard blocks, with the reason', async () => {
     const lib = await conveyors();
     const clash = addLibrary(multiProject([main(), pou('Scale', 'FUNCTION', [], [], 'INT')]), lib);
