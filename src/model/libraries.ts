@@ -303,9 +303,9 @@ export function withLibraries(project: Project): Project {
   if (!libs?.length) return project;
   let out = expanded.get(project);
   if (!out) {
-    const { libraries: _libs, ...rest } = project;
+    // `libraries` stays for the messages that name them; its blocks resolve as the POUs here first.
     const types = [...(project.dataTypes ?? []), ...libs.flatMap((l) => l.dataTypes ?? [])];
-    out = { ...rest, pous: [...project.pous, ...libs.flatMap((l) => l.pous)], ...(types.length ? { dataTypes: types } : {}) };
+    out = { ...project, pous: [...project.pous, ...libs.flatMap((l) => l.pous)], ...(types.length ? { dataTypes: types } : {}) };
     expanded.set(project, out);
   }
   return out;

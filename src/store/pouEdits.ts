@@ -1,6 +1,7 @@
 // Pure helpers behind the POU commands (src/store/pouCommands.ts): names, where a POU is used,
 // the changes that make references follow a rename, copies with fresh ids, and calls that follow
 // a change of the callee's interface (pins renamed, boxes grown).
+import { libraryOf } from '../model/libraries';
 import { elementCells, elementSize } from '../model/factory';
 import { blockSignature } from '../model/blocks';
 import type { BoxElement, LdElement } from '../model/elements';
@@ -33,6 +34,8 @@ export function pouNameProblem(project: Project, name: string, except?: PouId): 
   if (other) return `The project already has a ${POU_KIND_WORDS[other.kind]} named ${other.name}.`;
   const type = project.dataTypes?.find((t) => same(t.name, n));
   if (type) return `The project already has a data type named ${type.name}.`;
+  const library = libraryOf(project, n);
+  if (library) return `"${n}" is a block or data type of the library ${library.name}.`;
   return undefined;
 }
 

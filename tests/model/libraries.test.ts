@@ -10,6 +10,7 @@ import { blockLibrary } from '../../src/model/library';
 import { loadProject, saveProject } from '../../src/model/load';
 import type { Project, ProjectLibrary } from '../../src/model/project';
 import { readLibraryFile } from '../../src/plcopen/libraryFile';
+import { pouNameProblem } from '../../src/store/pouEdits';
 import { ladder, plcOf, trace, vars, type BoxSpec } from '../engine/ladder';
 import { multiProject, pou } from '../engine/userBlocksHelpers';
 
@@ -98,6 +99,17 @@ describe('a library in the project', () => {
     ]);
   });
 
+  test('an ST program calls them too', async () => {
+    const st = { ...pou('Main', 'PROGRAM', vars('Go BOOL', 'Out INT', 'Belt Conveyor'), []), language: 'ST' as const, source: 'Belt(Start := Go, Stop := FALSE);\nOut := Scale(Value := 2, Factor := 5);\n' };
+    const added = addLibrary(multiProject([st]), await conveyors());
+    if (!added.ok) throw new Error(added.errors.join('\n'));
+    expect(checkProject(added.project).filter((d) => d.severity === 'error')).toEqual([]);
+    expect(trace(plcOf(added.project), [{ Go: false }, { Go: true }], ['Belt.Running', 'Belt.Starts', 'Out'])).toEqual([
+      [0, 0, 10],
+      [1, 1, 10],
+    ]);
+  });
+
   test('adding refuses name clashes with the project’s POUs, other libraries and standard blocks, with the reason', async () => {
     const lib = await conveyors();
     const clash = addLibrary(multiProject([main(), pou('Scale', 'FUNCTION', [], [], 'INT')]), lib);
@@ -115,10 +127,12 @@ describe('a library in the project', () => {
     expect(standard.ok ? [] : standard.errors[0]).toMatch(/TON has the name of the standard function block TON/);
   });
 
-  test('a POU named like a library block later is LD-E25, naming the library', async () => {
+  test('a POU named like a library block (a file opened as it was) is LD-E25, naming the library; the editor refuses such a name', async () => {
     const project = await projectWithLibrary();
     const renamed = { ...project, pous: [...project.pous, pou('Scale', 'FUNCTION', [], [], 'INT')] };
     expect(checkProject(renamed).find((d) => d.rule === 'LD-E25')?.message).toMatch(/Scale of the project is also a block of the library Conveyors/);
+    // The editor refuses the name when a POU is added or renamed.
+    expect(pouNameProblem(project, 'scale')).toBe('"scale" is a block or data type of the library Conveyors.');
   });
 
   test('removing is refused while POUs use its blocks, with every use; allowed once unused', async () => {
@@ -165,7 +179,7 @@ describe('a library in the project', () => {
     expect(errors).toHaveLength(1);
     // At the Scale box of the second network (0-based network 1).
     expect(errors[0]).toMatchObject({ rule: 'LD-E01', pou: 'Main', network: 1, elementId: update.project.pous[0]!.networks[1]!.elements.find((e) => e.kind === 'box')!.id });
-    expect(errors[0]!.message).toMatch(/"Scale"/);
+    expect(errors[0]!.message).toMatch(/uses "Scale", which is not a standard function or function block nor a FUNCTION or FUNCTION_BLOCK of the project nor a block of its libraries \(Conveyors\)$/);
     // The same file again: nothing changes.
     const same = updateLibrary(project, 'Conveyors', await conveyors());
     expect(same.ok && [same.same, same.diff.added, same.diff.removed, same.diff.changed]).toEqual([true, [], [], []]);
@@ -185,6 +199,7 @@ describe('a library in the project', () => {
     if (!loaded.ok) return;
     expect(loaded.project.libraries).toEqual(project.libraries);
     expect(withLibraries(loaded.project).pous.map((p) => p.name)).toEqual(['Main', 'Conveyor', 'Scale']);
+    expect(blockLibrary(withLibraries(loaded.project)).all().filter((b) => b.name === 'Conveyor')).toHaveLength(1);
     const twice = JSON.parse(saveProject(project)) as { libraries: unknown[] };
     twice.libraries.push(twice.libraries[0]);
     const dup = loadProject(JSON.stringify(twice));

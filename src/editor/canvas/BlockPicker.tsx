@@ -82,7 +82,7 @@ export function BlockPicker({ onDone }: { readonly onDone: () => void }) {
           >
             <span className="rs-mono rs-block-name">{sig.name}</span>
             <span className="rs-block-kind">
-              {sig.category === 'user' ? 'user ' : ''}
+              {sig.library ? `${sig.library} ` : sig.category === 'user' ? 'user ' : ''}
               {sig.kind === 'fb' ? 'FB' : 'function'}
             </span>
             <span className="rs-block-desc" title={pinSummary(sig)}>

@@ -49,7 +49,7 @@ export function lowerBox(
     else
       r.error(
         'LD-E01',
-        `${name} uses "${el.blockType}", which is not a standard function or function block${ctx.symbols.library.userBlocks.length ? ' nor a FUNCTION or FUNCTION_BLOCK of the project' : ''}`,
+        `${name} uses "${el.blockType}", which is not a standard function or function block${ctx.symbols.library.userBlocks.length ? ' nor a FUNCTION or FUNCTION_BLOCK of the project' : ''}${ctx.project.libraries?.length ? ` nor a block of its libraries (${ctx.project.libraries.map((l) => l.name).join(', ')})` : ''}`,
         el,
       );
     return undefined;
