@@ -7,7 +7,8 @@ import { blockSignature } from './blocks';
 import { pouSignature } from './library';
 import type { PouId } from './ids';
 import type { DataType, Pou, Project, ProjectLibrary } from './project';
-import { sha256Hex } from './sha256';
+import { sha256 } from '@noble/hashes/sha2.js';
+import { bytesToHex } from '@noble/hashes/utils.js';
 import { VENDOR_BLOCKS } from './vendorBlocks';
 
 /** A place where the project uses a library's block or data type. */
@@ -312,15 +313,12 @@ export function withLibraries(project: Project): Project {
 }
 
 /**
- * `sha256:` and the hex SHA-256 of the text (UTF-8): a library's version. Web Crypto where the
- * context has it (a secure one), else the same digest computed here (sha256.ts).
+ * `sha256:` and the hex SHA-256 of the text (UTF-8): a library's version. Computed with
+ * @noble/hashes rather than Web Crypto, which exists only in a secure context (https, localhost),
+ * while the gateway may be reached over plain http on a plant network.
  */
 export async function libraryHash(text: string): Promise<string> {
-  const bytes = new TextEncoder().encode(text);
-  const subtle = globalThis.crypto?.subtle;
-  if (!subtle) return `sha256:${sha256Hex(bytes)}`;
-  const digest = await subtle.digest('SHA-256', bytes);
-  return `sha256:${Array.from(new Uint8Array(digest), (b) => b.toString(16).padStart(2, '0')).join('')}`;
+  return Promise.resolve(`sha256:${bytesToHex(sha256(new TextEncoder().encode(text)))}`);
 }
 
 /** The short form of a hash shown in lists: its first 12 hex digits. */

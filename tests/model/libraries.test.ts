@@ -4,8 +4,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, test } from 'vitest';
 import { checkProject } from '../../src/engine/check';
-import { addLibrary, libraryUses, removeLibrary, updateLibrary, withLibraries } from '../../src/model/libraries';
-import { sha256Hex } from '../../src/model/sha256';
+import { addLibrary, libraryHash, libraryUses, removeLibrary, updateLibrary, withLibraries } from '../../src/model/libraries';
 import { blockLibrary } from '../../src/model/library';
 import { loadProject, saveProject } from '../../src/model/load';
 import type { Project, ProjectLibrary } from '../../src/model/project';
@@ -73,10 +72,10 @@ describe('reading a file as a library', () => {
 });
 
 describe('the version hash without Web Crypto (plain http on a plant network)', () => {
-  test('sha256Hex gives the digest node:crypto gives, across block boundaries and for UTF-8 text', async () => {
+  test('libraryHash gives the digest node:crypto gives, across block boundaries and for UTF-8 text', async () => {
     const { createHash } = await import('node:crypto');
     const texts = ['', 'abc', 'a'.repeat(55), 'a'.repeat(56), 'a'.repeat(64), 'Förderband ⚙ 🏭\n'.repeat(37), fixture('conveyors.xml')];
-    for (const t of texts) expect(sha256Hex(new TextEncoder().encode(t))).toBe(createHash('sha256').update(t).digest('hex'));
+    for (const t of texts) expect(await libraryHash(t)).toBe(`sha256:${createHash('sha256').update(t).digest('hex')}`);
   });
 });
 
