@@ -237,7 +237,7 @@ export class SimSession {
       case 'setHistory':
         this.historyOptions = { maxScans: m.maxScans, budgetBytes: m.budgetBytes };
         if (this.plc && this.layout && this.recorder && this.loaded)
-          this.recorder = HistoryRecorder.for(this.plc, programLayout(this.loaded.project, this.layout), this.loaded.program, this.loaded.pou, this.historyOptions);
+          this.recorder = HistoryRecorder.for(this.plc, programLayout(this.loaded.project, this.layout), this.loaded.program, this.loaded.pou, this.historyOptions, this.loaded.project);
         this.postFrame();
         return;
       case 'historySeek':
@@ -409,7 +409,7 @@ export class SimSession {
     this.applyCycle(next.plc);
     this.resolveBreakpoints();
     // The history records the program's own networks whatever body is monitored.
-    this.recorder = HistoryRecorder.for(next.plc, programLayout(next.project, next.layout), next.program, next.pou, this.historyOptions);
+    this.recorder = HistoryRecorder.for(next.plc, programLayout(next.project, next.layout), next.program, next.pou, this.historyOptions, next.project);
     this.fingerprint = next.fingerprint;
     this.programId = fingerprintId(next.fingerprint);
     this.lastOutputs = undefined;
@@ -555,6 +555,7 @@ export class SimSession {
       programId: this.programId,
       epoch: this.epoch,
       history: historyRange(this.recorder),
+      ...(this.loaded ? { project: this.loaded.project } : {}),
     });
   }
 
