@@ -132,8 +132,9 @@ export class HistoryRecorder {
    * The recorded scan as a frame of the program's networks, or of the body another `shown` layout
    * monitors (an FB instance, a function: its call that ran in that scan).
    */
-  view(scan: number, shown?: SimLayout): HistoryView | undefined {
-    const layout = shown ?? this.layout;
+  view(scan: number, shown?: SimLayout, current?: SimLayout): HistoryView | undefined {
+    // The data lines are sent aligned with the page's layout (the session's current one).
+    const layout = current ?? shown ?? this.layout;
     const wordCount = this.probe.power.length;
     // The data lines are read on the PLC that replayed the scan, before the live state is put back.
     let pins: HistoryView['pins'] = [];

@@ -7,6 +7,7 @@ import type { Project } from '../model/project';
 import { carryDisplay, carryForces, carryInstances, carryValues, planInstances, valueFor, type ShownScan } from './carryOver';
 import { outputsChanged, readValues } from './frames';
 import { HistoryRecorder } from './historyRecorder';
+import { withPinLines } from './pinValues';
 import type { HistoryOptions } from './history';
 import { buildLayout, findPou, programFingerprint, withView } from './layout';
 import { parseScenario, prepareScenario, runPrepared, scenarioCycle, type ScenarioResult } from './scenario';
@@ -194,7 +195,7 @@ export class SimSession {
       case 'setView':
         this.view = m.view;
         if (this.loaded && this.layout) {
-          this.layout = withView(this.loaded.project, this.layout, m.view);
+          this.layout = withPinLines(withView(this.loaded.project, this.layout, m.view), this.loaded.plc, this.loaded.program as CompiledProgram, this.loaded.project);
           this.deps.post({ type: 'layout', layout: this.layout });
           this.postFrame();
         }
@@ -340,7 +341,7 @@ export class SimSession {
     });
     const next: LoadedProgram = {
       plc,
-      layout: this.view && findPou(project, this.view.pou) ? withView(project, layout, this.view) : layout,
+      layout: withPinLines(this.view && findPou(project, this.view.pou) ? withView(project, layout, this.view) : layout, plc, program as CompiledProgram, project),
       fingerprint,
       program,
       pou: findPou(project, plc.pou),
