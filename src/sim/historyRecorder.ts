@@ -17,7 +17,7 @@ import { ChangeIndex, sameValue } from './historyChanges';
 import type { HistoryView, SimLayout, SimView } from './protocol';
 import { Replayer, type HistoryState } from './replay';
 import { recordedBody } from './viewPower';
-import { readPinValues, viewBody } from './pinValues';
+import { readPinValues, viewBody, viewPou } from './pinValues';
 
 /** Periodic keys wait until the scans since the last key took this many times what saving one takes ... */
 const SAVE_SHARE = 20;
@@ -46,6 +46,8 @@ export class HistoryRecorder {
     private readonly program: CompiledProgram,
     private readonly pou: Pou,
     opts: HistoryOptions,
+    /** The document the program was compiled from (pins with an operand are read by name). */
+    private readonly project?: Project,
   ) {
     this.probe = plc.probe!();
     this.names = layout.variables.map((v) => v.name);
@@ -56,8 +58,8 @@ export class HistoryRecorder {
   }
 
   /** A recorder when the PLC offers a probe (the real engine does). */
-  static for(plc: Plc, layout: SimLayout, program: unknown, pou: Pou | undefined, opts: HistoryOptions): HistoryRecorder | undefined {
-    return plc.probe && pou ? new HistoryRecorder(plc, layout, program as CompiledProgram, pou, opts) : undefined;
+  static for(plc: Plc, layout: SimLayout, program: unknown, pou: Pou | undefined, opts: HistoryOptions, project?: Project): HistoryRecorder | undefined {
+    return plc.probe && pou ? new HistoryRecorder(plc, layout, program as CompiledProgram, pou, opts, project) : undefined;
   }
 
   /** After a completed scan: `scan` is the session's scan number, `timeMs` the time it started at. */
@@ -130,13 +132,14 @@ export class HistoryRecorder {
    * The recorded scan as a frame of the program's networks, or of the body another `shown` layout
    * monitors (an FB instance, a function: its call that ran in that scan).
    */
-  view(scan: number, shown?: SimLayout): HistoryView | undefined {
-    const layout = shown ?? this.layout;
+  view(scan: number, shown?: SimLayout, current?: SimLayout): HistoryView | undefined {
+    // The data lines are sent aligned with the page's layout (the session's current one).
+    const layout = current ?? shown ?? this.layout;
     const wordCount = this.probe.power.length;
     // The data lines are read on the PLC that replayed the scan, before the live state is put back.
     let pins: HistoryView['pins'] = [];
     const state = this.replayer.state(scan, (probe, power) => {
-      pins = readPinValues(probe, layout, viewBody(this.program, layout, (n) => power[wordCount + n] === 1));
+      pins = readPinValues(probe, layout, viewBody(this.program, layout, (n) => power[wordCount + n] === 1), this.project && viewPou(this.project, layout));
     });
     if (!state) return undefined;
     const words = this.probe.power.length;

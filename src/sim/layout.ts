@@ -138,7 +138,9 @@ export function buildLayout(project: Project, pouName: string, names: readonly s
 /** The layout with its network fields describing another body (the view): an FB instance's, a function's, another program instance's. */
 export function withView(project: Project, layout: SimLayout, view: SimView): SimLayout {
   const pou = findPou(project, view.pou);
-  return { ...layout, view: { pou: pou?.name ?? view.pou, ...(view.instance ? { instance: view.instance } : {}) }, ...networkFields(pou) };
+  // The data lines are the view's (pinValues.ts withPinLines): those of the body left are dropped.
+  const { pins: _pins, ...rest } = layout;
+  return { ...rest, view: { pou: pou?.name ?? view.pou, ...(view.instance ? { instance: view.instance } : {}) }, ...networkFields(pou) };
 }
 
 /** True when a view is the program's own (first) body: the one the scan history and "Why?" describe. */

@@ -145,17 +145,16 @@ export type GatewayWorkerMessage =
   | { readonly type: 'gwDriveEnded'; readonly reason: string };
 
 /**
- * The value on a box pin that no name reads: a data line between blocks (a function's result wired
- * into another block's input), in the layout's view (src/sim/pinValues.ts).
+ * A box input that no name reads: it is fed by a data line from another block's output (a
+ * function's result, an FB's output), in the layout's view (src/sim/pinValues.ts). Frames carry the
+ * values, aligned with SimLayout.pins.
  */
-export interface SimPinValue {
+export interface SimPinLine {
   /** Document id of the box. */
   readonly element: string;
   readonly pin: string;
-  readonly side: 'in' | 'out';
   /** Elementary type (how the value is written: T#..., 2.5, TRUE). */
   readonly type: string;
-  readonly value: Value;
 }
 
 /** A recorded scan as the UI draws it (same layout as a frame). */
@@ -166,8 +165,8 @@ export interface HistoryView {
   readonly vlinks: Uint8Array;
   readonly executed: Uint8Array;
   readonly values: readonly Value[];
-  /** The data lines of the shown body in that scan. */
-  readonly pins: readonly SimPinValue[];
+  /** The values on the data lines of the shown body in that scan, aligned with SimLayout.pins. */
+  readonly pins: readonly Value[];
 }
 
 /** What the scan history holds. */
@@ -218,6 +217,8 @@ export interface SimLayout {
   readonly vlinkKeys: readonly string[];
   /** Every readable name, aligned with a frame's `values`. */
   readonly variables: readonly SimVariable[];
+  /** The view's box inputs on data lines (values no name reads), aligned with a frame's `pins`. */
+  readonly pins?: readonly SimPinLine[];
   readonly cycleMs: number;
 }
 
@@ -292,8 +293,8 @@ export interface SimFrame {
   readonly executed: Uint8Array;
   /** Aligned with SimLayout.variables. */
   readonly values: readonly Value[];
-  /** The data lines between the blocks of the shown body (values no name reads). */
-  readonly pins: readonly SimPinValue[];
+  /** The values on the data lines between the shown body's blocks, aligned with SimLayout.pins. */
+  readonly pins: readonly Value[];
   readonly forced: readonly (readonly [string, Value])[];
   /** New trend samples since the previous frame. */
   readonly trend?: TrendSamples;

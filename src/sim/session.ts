@@ -7,6 +7,7 @@ import type { Project } from '../model/project';
 import { carryDisplay, carryForces, carryInstances, carryValues, planInstances, valueFor, type ShownScan } from './carryOver';
 import { outputsChanged, readValues } from './frames';
 import { HistoryRecorder } from './historyRecorder';
+import { withPinLines } from './pinValues';
 import type { HistoryOptions } from './history';
 import { buildLayout, findPou, programFingerprint, withView } from './layout';
 import { parseScenario, prepareScenario, runPrepared, scenarioCycle, type ScenarioResult } from './scenario';
@@ -197,7 +198,7 @@ export class SimSession {
       case 'setView':
         this.view = m.view;
         if (this.loaded && this.layout) {
-          this.layout = withView(this.loaded.project, this.layout, m.view);
+          this.layout = withPinLines(withView(this.loaded.project, this.layout, m.view), this.loaded.plc, this.loaded.program as CompiledProgram, this.loaded.project);
           this.deps.post({ type: 'layout', layout: this.layout });
           this.postFrame();
         }
@@ -241,7 +242,7 @@ export class SimSession {
       case 'setHistory':
         this.historyOptions = { maxScans: m.maxScans, budgetBytes: m.budgetBytes };
         if (this.plc && this.layout && this.recorder && this.loaded)
-          this.recorder = HistoryRecorder.for(this.plc, programLayout(this.loaded.project, this.layout), this.loaded.program, this.loaded.pou, this.historyOptions);
+          this.recorder = HistoryRecorder.for(this.plc, programLayout(this.loaded.project, this.layout), this.loaded.program, this.loaded.pou, this.historyOptions, this.loaded.project);
         this.postFrame();
         return;
       case 'historySeek':
@@ -349,7 +350,7 @@ export class SimSession {
     poll();
     const next: LoadedProgram = {
       plc,
-      layout: this.view && findPou(project, this.view.pou) ? withView(project, layout, this.view) : layout,
+      layout: withPinLines(this.view && findPou(project, this.view.pou) ? withView(project, layout, this.view) : layout, plc, program as CompiledProgram, project),
       fingerprint,
       id: fingerprintId(fingerprint),
       program,
@@ -421,7 +422,7 @@ export class SimSession {
     this.applyCycle(next.plc);
     this.resolveBreakpoints();
     // The history records the program's own networks whatever body is monitored.
-    this.recorder = HistoryRecorder.for(next.plc, programLayout(next.project, next.layout), next.program, next.pou, this.historyOptions);
+    this.recorder = HistoryRecorder.for(next.plc, programLayout(next.project, next.layout), next.program, next.pou, this.historyOptions, next.project);
     this.fingerprint = next.fingerprint;
     this.programId = next.id;
     this.lastOutputs = undefined;
@@ -571,6 +572,7 @@ export class SimSession {
       programId: this.programId,
       epoch: this.epoch,
       history: historyRange(this.recorder),
+      ...(this.loaded ? { project: this.loaded.project } : {}),
     });
   }
 

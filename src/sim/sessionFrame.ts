@@ -8,7 +8,8 @@ import type { SimFrame, SimLayout, SimMode } from './protocol';
 import type { ScanRunner } from './scanRunner';
 import type { TrendRecorder } from './trendRecorder';
 import { packView } from './viewPower';
-import { readPinValues, viewBody } from './pinValues';
+import { readPinValues, viewBody, viewPou } from './pinValues';
+import type { Project } from '../model/project';
 
 /** What a frame is built from (SimSession.frame). */
 export interface FrameParts {
@@ -24,6 +25,8 @@ export interface FrameParts {
   readonly programId: string | null;
   readonly epoch: number;
   readonly history: SimFrame['history'];
+  /** The document the program was compiled from: pins with an operand are read by name, not sent as lines. */
+  readonly project?: Project;
 }
 
 export function buildFrame(parts: FrameParts): SimFrame {
@@ -45,7 +48,7 @@ export function buildFrame(parts: FrameParts): SimFrame {
   const probe = !carried && plc && layout && parts.program ? plc.probe?.() : undefined;
   const pins =
     probe && layout && parts.program
-      ? readPinValues(probe, layout, viewBody(parts.program, layout, lastRun(probe.ranIn)))
+      ? readPinValues(probe, layout, viewBody(parts.program, layout, lastRun(probe.ranIn)), viewPou(parts.project, layout))
       : [];
   const trend = parts.trend.take();
   const trendTrigger = parts.trend.triggerState;

@@ -36,7 +36,7 @@ function requireHistory(recorder: HistoryRecorder | undefined): HistoryRecorder 
 function postHistoryView(ctx: HistoryContext, scan: number): void {
   // Another body monitored (an FB instance, a function) shows its call's power flow in that scan.
   const shown = ctx.layout && !isProgramView(ctx.layout) ? ctx.layout : undefined;
-  const view = requireHistory(ctx.recorder).view(scan, shown);
+  const view = requireHistory(ctx.recorder).view(scan, shown, ctx.layout);
   if (!view) {
     const h = ctx.recorder!.history;
     throw new Error(`scan ${scan} is not in the history (scans ${h.first} to ${h.last} are recorded)`);

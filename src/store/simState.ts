@@ -5,7 +5,7 @@ import type { Diagnostic, Fault, StepFrame } from '../engine/api';
 import type { ExplainTarget, Explanation } from '../engine/explain';
 import type { Value } from '../model/iecTypes';
 import type { Project, Scenario } from '../model/project';
-import type { ExecStats, HistoryRange, OnlineChangePlan, SimLayout, SimMode, SimPinValue, SimValueInput, TrendCapture, TrendTrigger, TrendTriggerState } from '../sim/protocol';
+import type { ExecStats, HistoryRange, OnlineChangePlan, SimLayout, SimMode, SimValueInput, TrendCapture, TrendTrigger, TrendTriggerState } from '../sim/protocol';
 import type { ScenarioResult } from '../sim/scenario';
 import type { ChangeList } from '../sim/changeList';
 import type { OnlineChangeMode } from '../model/project';
@@ -73,8 +73,8 @@ export interface SimState {
   readonly vlinks: Uint8Array;
   readonly executed: Uint8Array;
   readonly values: readonly Value[];
-  /** Values on the data lines between the shown body's blocks (pins no name reads), by box id. */
-  readonly pins: readonly SimPinValue[];
+  /** Values on the data lines into the shown body's box inputs (pins no name reads), aligned with layout.pins. */
+  readonly pins: readonly Value[];
   /** Forced values by upper-case name. */
   readonly forced: ReadonlyMap<string, Value>;
   readonly breakpoints: readonly string[];

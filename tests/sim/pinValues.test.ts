@@ -56,16 +56,21 @@ describe('data lines on box pins', () => {
 
   test("frames carry the shown body's lines by box id; a recorded scan's view carries that scan's", () => {
     const p = lineProject();
-    const move = boxes(p)[1]!;
+    const [add, move] = boxes(p);
     const h = new SimHarness().send({ type: 'run', project: p }).advance(200);
-    const line = () => h.frame.pins.find((x) => x.element === move.id && x.pin === 'IN');
-    expect(line()).toMatchObject({ side: 'in', type: 'INT', value: 5 });
+    // The layout lists the inputs on data lines once; frames carry their values, aligned with it.
+    const at = h.layout.pins!.findIndex((x) => x.element === move!.id && x.pin === 'IN');
+    expect(h.layout.pins![at]).toEqual({ element: move!.id, pin: 'IN', type: 'INT' });
+    expect(h.frame.pins[at]).toBe(5);
+    // Pins given a variable are read by its name: no line is listed for them (ADD.IN1 = A, T1.PT = Preset).
+    expect(h.layout.pins!.some((x) => x.element === add!.id)).toBe(false);
+    expect(h.layout.pins!.some((x) => x.pin === 'PT')).toBe(false);
     const before = h.frame.scan;
     h.send({ type: 'write', name: 'A', input: { value: 40 } }).advance(100);
-    expect(line()?.value).toBe(43);
+    expect(h.frame.pins[at]).toBe(43);
     h.send({ type: 'historySeek', scan: before });
     const view = lastOf(h.of('historyView')).view;
-    expect(view.pins.find((x) => x.element === move.id && x.pin === 'IN')?.value).toBe(5);
+    expect(view.pins[at]).toBe(5);
   });
 
   test('the canvas texts: operands, the FB instance pins, the literal, the line into MOVE (formatted by type)', () => {

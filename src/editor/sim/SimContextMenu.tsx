@@ -58,6 +58,13 @@ function CallMenu({ x, y, call }: { x: number; y: number; call: { pou: string; i
         }}>
         Open instance {call.instance}
       </button>
+      <button type="button" role="menuitem" data-testid="sim-watch-instance"
+        onClick={() => {
+          sim.getState().closeContextMenu();
+          sim.getState().addWatch(call.instance);
+        }}>
+        Add {call.instance} to watch
+      </button>
     </div>
   );
 }

@@ -11,11 +11,11 @@ import { useMemo } from 'react';
 import { boxLayout, type PlacedPin } from '../../model/boxLayout';
 import type { ElementId } from '../../model/ids';
 import type { BoxElement, LdElement } from '../../model/elements';
-import { isElementaryType, type ElementaryType } from '../../model/iecTypes';
+import { isElementaryType, type ElementaryType, type Value } from '../../model/iecTypes';
 import type { BlockLibrary } from '../../model/library';
 import type { Network } from '../../model/project';
 import { parseLiteral } from '../../engine/values/literals';
-import type { SimPinValue } from '../../sim/protocol';
+import type { SimPinLine } from '../../sim/protocol';
 import type { SimState } from '../../store/simState';
 import { selectLibrary, useDocument } from '../../store/documentStore';
 import { useSim } from './simContext';
@@ -28,21 +28,30 @@ export interface BoxPinTexts {
   readonly outputs: Readonly<Record<string, string>>;
 }
 
-const byElement = new WeakMap<readonly SimPinValue[], Map<string, SimPinValue[]>>();
+/** A data line into a box input, with its value in the shown scan. */
+interface LineValue {
+  readonly pin: string;
+  readonly type: string;
+  readonly value: Value;
+}
 
-/** The frame's data lines grouped by box id (once per frame). */
-function linesOf(pins: readonly SimPinValue[], element: string): readonly SimPinValue[] {
-  let map = byElement.get(pins);
+const byLayout = new WeakMap<readonly SimPinLine[], Map<string, number[]>>();
+
+/** The data lines into the inputs of box `element` (layout.pins grouped by box once per layout), with the frame's values. */
+function linesOf(s: SimState, element: string): readonly LineValue[] {
+  const lines = s.layout?.pins;
+  if (!lines || s.pins.length !== lines.length) return [];
+  let map = byLayout.get(lines);
   if (!map) {
     map = new Map();
-    for (const p of pins) {
-      const list = map.get(p.element);
-      if (list) list.push(p);
-      else map.set(p.element, [p]);
-    }
-    byElement.set(pins, map);
+    lines.forEach((p, i) => {
+      const list = map!.get(p.element);
+      if (list) list.push(i);
+      else map!.set(p.element, [i]);
+    });
+    byLayout.set(lines, map);
   }
-  return map.get(element) ?? [];
+  return (map.get(element) ?? []).map((i) => ({ pin: lines[i]!.pin, type: lines[i]!.type, value: s.pins[i]! }));
 }
 
 const same = (a: string, b: string) => a.toUpperCase() === b.toUpperCase();
@@ -63,7 +72,7 @@ export function boxPinTexts(s: SimState, n: Network, el: BoxElement, library: Bl
   const layout = boxLayout(el, library);
   if (!layout) return undefined;
   const fb = layout.signature.kind === 'fb' && el.instance?.trim() ? el.instance.trim() : undefined;
-  const lines = linesOf(s.pins, el.id);
+  const lines = linesOf(s, el.id);
   const inputs: Record<string, string> = {};
   const outputs: Record<string, string> = {};
   const pins = new Map<string, PlacedPin>();
@@ -79,7 +88,7 @@ export function boxPinTexts(s: SimState, n: Network, el: BoxElement, library: Bl
       text = ofInstance ?? operandValue(s, slot.operand, pin);
     } else if (slot.side === 'input') {
       if (!slot.wired) continue;
-      const line = lines.find((l) => l.side === 'in' && same(l.pin, slot.pin));
+      const line = lines.find((l) => same(l.pin, slot.pin));
       text = line ? formatLive(line.type, line.value) : undefined;
     } else if (!slot.wired && fb) {
       text = liveText(s, instanceText(slot.pin));
