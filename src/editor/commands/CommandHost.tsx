@@ -65,8 +65,16 @@ export function CommandHost() {
       }
       command.run(ctx);
     };
+    // Under a dialog the keys do nothing, and neither does the browser (no reload by F5 from a dialog).
+    const guard = (e: KeyboardEvent) => {
+      if (isModalOpen() && BINDINGS.some((b) => /^f\d+$/.test(b.spec.key) && matches(b.spec, e))) e.preventDefault();
+    };
     window.addEventListener('keydown', onKeyDown);
-    return () => window.removeEventListener('keydown', onKeyDown);
+    window.addEventListener('keydown', guard, true);
+    return () => {
+      window.removeEventListener('keydown', onKeyDown);
+      window.removeEventListener('keydown', guard, true);
+    };
   }, [ctx, ui]);
 
   const close = () => commandUi.getState().show(undefined);
