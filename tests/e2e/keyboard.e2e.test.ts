@@ -92,6 +92,13 @@ test('? lists every shortcut, grouped and searchable', async () => {
   expect(await sim.mode()).toBe('Paused');
   await page.keyboard.press('Escape');
   await list.waitFor({ state: 'detached' });
+  // The View menu has both, with their keys.
+  await page.getByTestId('menu-view').click();
+  expect(await page.getByTestId('menuitem-help.palette').textContent()).toBe('Command palette…Ctrl+Shift+P');
+  await page.getByTestId('menuitem-help.shortcuts').click();
+  await list.waitFor();
+  await page.keyboard.press('Escape');
+  await list.waitFor({ state: 'detached' });
   expect(errors).toEqual([]);
 });
 
