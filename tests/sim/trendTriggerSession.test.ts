@@ -12,7 +12,9 @@ describe('trend trigger in the session', () => {
     const h = new SimHarness().send({ type: 'step', scans: 1, project: motorProgram() });
     h.send({ type: 'setTrend', names: ['Start', 'Motor'], capacity: 10, trigger }).settle();
     expect(h.frame.trendTrigger).toEqual({ state: 'armed', arm: 7 });
-    h.send({ type: 'step', scans: 8 }, { type: 'write', name: 'Start', input: { value: true } }, { type: 'step', scans: 1 });
+    // Each Step N may finish on the scheduler (its slices follow the wall clock): settle before the next command.
+    h.send({ type: 'step', scans: 8 }).settle();
+    h.send({ type: 'write', name: 'Start', input: { value: true } }, { type: 'step', scans: 1 }).settle();
     h.send({ type: 'write', name: 'Start', input: { value: false } }, { type: 'step', scans: 3 }).settle();
     expect(h.frame.trendTrigger).toEqual({ state: 'capturing', arm: 7 });
     h.send({ type: 'step', scans: 5 }).settle();
