@@ -1,7 +1,7 @@
 // The trend's lanes: each BOOL apart in a thin lane, each number in a taller lane on its own
 // scale, and time written in ms or s.
 import { describe, expect, test } from 'vitest';
-import { wrapName, formatTime, laneY, scaleMarks, trendData, trendLayout, type TrendLane } from '../../src/editor/sim/trendChart';
+import { fitLines, wrapName, formatTime, laneY, scaleMarks, trendData, trendLayout, type TrendLane } from '../../src/editor/sim/trendChart';
 import type { TrendBuffer } from '../../src/sim/trendBuffer';
 
 const buffer: TrendBuffer = {
@@ -83,6 +83,12 @@ describe('trend labels that fit', () => {
     const long = wrapName('AVeryLongVariableNameWithoutDots', 70, width);
     expect(long.join('')).toBe('AVeryLongVariableNameWithoutDots');
     for (const line of long) expect(width(line)).toBeLessThanOrEqual(70);
+  });
+
+  test('a lane too low for every line keeps the end of the name after …', () => {
+    expect(fitLines(['A.', 'B.', 'C'], 3)).toEqual(['A.', 'B.', 'C']);
+    expect(fitLines(['A.', 'B.', 'C'], 2)).toEqual(['…B.', 'C']);
+    expect(fitLines(['A.', 'B.', 'C'], 1)).toEqual(['…C']);
   });
 
   test('scale labels closer than a label height give way; tall lanes keep both', () => {

@@ -65,8 +65,16 @@ export function CommandHost() {
       }
       command.run(ctx);
     };
+    // Under a dialog the keys do nothing, and neither does the browser (no reload by F5 from a dialog).
+    const guard = (e: KeyboardEvent) => {
+      if (isModalOpen() && BINDINGS.some((b) => /^f\d+$/.test(b.spec.key) && matches(b.spec, e))) e.preventDefault();
+    };
     window.addEventListener('keydown', onKeyDown);
-    return () => window.removeEventListener('keydown', onKeyDown);
+    window.addEventListener('keydown', guard, true);
+    return () => {
+      window.removeEventListener('keydown', onKeyDown);
+      window.removeEventListener('keydown', guard, true);
+    };
   }, [ctx, ui]);
 
   const close = () => commandUi.getState().show(undefined);
@@ -115,15 +123,15 @@ function CommandPalette({ ctx, onClose }: { ctx: EditorContext; onClose: () => v
     }
   };
   return (
-    <div className="rs-modal-backdrop rs-palette-backdrop" onMouseDown={(e) => e.target === e.currentTarget && onClose()}>
-      <div {...modal} className="rs-modal rs-palette" role="dialog" aria-modal="true" aria-label="Command palette" data-testid="command-palette">
+    <div className="rs-modal-backdrop rs-cmdp-backdrop" onMouseDown={(e) => e.target === e.currentTarget && onClose()}>
+      <div {...modal} className="rs-modal rs-cmdp" role="dialog" aria-modal="true" aria-label="Command palette" data-testid="command-palette">
         <input
-          className="rs-palette-input"
+          className="rs-cmdp-input"
           autoFocus
           role="combobox"
           aria-expanded="true"
-          aria-controls="rs-palette-list"
-          aria-activedescendant={found[current] ? `rs-palette-${current}` : undefined}
+          aria-controls="rs-cmdp-list"
+          aria-activedescendant={found[current] ? `rs-cmdp-${current}` : undefined}
           aria-label="Command"
           placeholder="Type a command (fuzzy: “brk” finds Toggle breakpoint)"
           value={query}
@@ -135,34 +143,34 @@ function CommandPalette({ ctx, onClose }: { ctx: EditorContext; onClose: () => v
           onKeyDown={onKey}
           data-testid="palette-input"
         />
-        {note && <p className="rs-palette-note" role="alert" data-testid="palette-note">{note}</p>}
-        <ul id="rs-palette-list" ref={list} className="rs-palette-list" role="listbox" aria-label="Commands">
+        {note && <p className="rs-cmdp-note" role="alert" data-testid="palette-note">{note}</p>}
+        <ul id="rs-cmdp-list" ref={list} className="rs-cmdp-list" role="listbox" aria-label="Commands">
           {found.map((c, i) => {
             const a = availability(c, ctx);
             return (
               <li
                 key={c.id}
-                id={`rs-palette-${i}`}
+                id={`rs-cmdp-${i}`}
                 data-index={i}
                 role="option"
                 aria-selected={i === current}
                 aria-disabled={!a.enabled}
-                className={`rs-palette-item${i === current ? ' rs-palette-active' : ''}${a.enabled ? '' : ' rs-palette-disabled'}`}
+                className={`rs-cmdp-item${i === current ? ' rs-cmdp-active' : ''}${a.enabled ? '' : ' rs-cmdp-disabled'}`}
                 title={a.enabled ? c.description : a.reason}
                 data-testid={`palette-item-${c.id}`}
                 onMouseMove={() => i !== current && setActive(i)}
                 onClick={() => run(c)}
               >
-                <span className="rs-palette-label">
-                  <span className="rs-palette-group">{c.group}: </span>
+                <span className="rs-cmdp-label">
+                  <span className="rs-cmdp-group">{c.group}: </span>
                   {c.label}
-                  {!a.enabled && <span className="rs-palette-reason"> — {a.reason}</span>}
+                  {!a.enabled && <span className="rs-cmdp-reason"> — {a.reason}</span>}
                 </span>
-                {c.keys.length > 0 && <kbd className="rs-palette-keys">{keysText(c)}</kbd>}
+                {c.keys.length > 0 && <kbd className="rs-cmdp-keys">{keysText(c)}</kbd>}
               </li>
             );
           })}
-          {found.length === 0 && <li className="rs-palette-empty">No command matches “{query}”.</li>}
+          {found.length === 0 && <li className="rs-cmdp-empty">No command matches “{query}”.</li>}
         </ul>
       </div>
     </div>
@@ -177,7 +185,7 @@ function ShortcutList({ onClose }: { onClose: () => void }) {
     <div className="rs-modal-backdrop" onMouseDown={(e) => e.target === e.currentTarget && onClose()}>
       <div {...modal} className="rs-modal rs-shortcuts" role="dialog" aria-modal="true" aria-labelledby="rs-shortcuts-title" data-testid="shortcut-list">
         <h2 id="rs-shortcuts-title">Keyboard shortcuts</h2>
-        <input className="rs-palette-input" autoFocus aria-label="Search shortcuts" placeholder="Search by command or key"
+        <input className="rs-cmdp-input" autoFocus aria-label="Search shortcuts" placeholder="Search by command or key"
           value={query} onChange={(e) => setQuery(e.target.value)} data-testid="shortcut-search" />
         <div className="rs-shortcut-groups">
           {groups.map((g) => (

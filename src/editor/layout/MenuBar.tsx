@@ -6,6 +6,7 @@ import { keyLabel } from '../commands/keys';
 import { COMMANDS, type CommandGroup } from '../commands/registry';
 import { FILE_MENU_COMMANDS } from '../files/FileMenu';
 import { SHELL_COMMANDS } from './shellCommands';
+import { HELP_COMMANDS } from '../commands/allCommands';
 
 interface MenuItem {
   readonly id: string;
@@ -57,12 +58,22 @@ function buildMenus(ctx: EditorContext): Menu[] {
       ...(c.checked ? { checked: () => c.checked!(ctx) } : {}),
       run: () => c.run(ctx),
     }));
+  // The command palette and the list of shortcuts, at the end of the View menu.
+  const help: MenuItem[] = HELP_COMMANDS.map((c, i) => ({
+    id: c.id,
+    label: c.label,
+    ...(c.keys[0] ? { shortcut: keyLabel(c.keys[0]) } : {}),
+    ...(c.description ? { title: c.description } : {}),
+    separatorBefore: i === 0,
+    enabled: () => true,
+    run: () => c.run(ctx),
+  }));
   return [
     { name: 'File', items: [...fileItems.slice(0, FILE_PRINT_AFTER), ...shell('File'), ...fileItems.slice(FILE_PRINT_AFTER)] },
     { name: 'Edit', items: group('Edit') },
     { name: 'Insert', items: group('Insert') },
     { name: 'Network', items: group('Network') },
-    { name: 'View', items: [...group('View'), ...shell('View')] },
+    { name: 'View', items: [...group('View'), ...shell('View'), ...help] },
   ];
 }
 

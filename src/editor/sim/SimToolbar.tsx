@@ -65,11 +65,11 @@ export function SimToolbar() {
 
   return (
     <div className="rs-sim-toolbar" role="toolbar" aria-label="Simulation" data-testid="sim-toolbar">
-      <button type="button" className="rs-sim-btn rs-sim-run" title="Run: compile the document and scan in real time"
-        disabled={running || faulted} onClick={commands.run} data-testid="sim-run">
+      <button type="button" className="rs-sim-btn rs-sim-run" title="Run (F5): compile the document and scan in real time"
+        aria-keyshortcuts="F5" disabled={running || faulted} onClick={commands.run} data-testid="sim-run">
         ▶ Run
       </button>
-      <button type="button" className="rs-sim-btn" title="Pause after the current scan" disabled={!running}
+      <button type="button" className="rs-sim-btn" title="Stop (Shift+F5): pause after the current scan" aria-keyshortcuts="Shift+F5" disabled={!running}
         onClick={() => sim.getState().pause()} data-testid="sim-pause">
         ❚❚ Pause
       </button>

@@ -16,6 +16,8 @@ const PAD = 0.2;
 /** The axes' font (uPlot's default face), and the least room between two scale labels, px. */
 const AXIS_FONT = '12px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
 const LABEL_GAP_PX = 14;
+/** A line of a wrapped lane name: the axis font's 12 px times uPlot's line gap (1.5). */
+const NAME_LINE_PX = 18;
 
 let measurer: CanvasRenderingContext2D | null | undefined;
 /** Width of `text` in the axis font, px (a rough estimate where no canvas can measure). */
@@ -53,6 +55,14 @@ export function wrapName(text: string, max: number, width: (t: string) => number
   }
   if (line) lines.push(line);
   return lines;
+}
+
+/** The last `max` of a name's lines, the first of them after "…" when lines were left out. */
+export function fitLines(lines: readonly string[], max: number): string[] {
+  if (lines.length <= max) return [...lines];
+  const kept = lines.slice(lines.length - max);
+  kept[0] = `…${kept[0]}`;
+  return kept;
 }
 
 /** Height of the plotting area, CSS px. */
@@ -266,7 +276,7 @@ function tipPlugin(view: () => TrendView): uPlot.Plugin {
 function describePlugin(
   view: () => TrendView,
   timeLabels: { current: string[] },
-  names: () => string[],
+  names: (u: uPlot) => string[],
   scale: { current: Map<number, string> },
 ): uPlot.Plugin {
   return {
@@ -279,7 +289,7 @@ function describePlugin(
             .layout.lanes.map((l) => `${l.name}:${l.type}:${l.top}-${l.bottom}`)
             .join('|');
           host.dataset.timeLabels = timeLabels.current.join('|');
-          host.dataset.laneNames = names().join('|');
+          host.dataset.laneNames = names(u).join('|');
           host.dataset.scaleLabels = [...scale.current].map(([y, text]) => `${text}@${y}`).join('|');
         },
       ],
@@ -303,7 +313,17 @@ export function trendOptions(
   const timeLabels = { current: [] as string[] };
   // Lane names get the width the longest needs (up to a third of the chart; longer ones wrap).
   const nameWidth = Math.min(Math.max(60, ...signals.map((s) => textWidth(s.name) + 14)), Math.max(90, Math.round(width / 3)));
-  const names = () => lanes().map((l) => wrapName(l.name, nameWidth - 14).join('\n'));
+  // Wrapped in as many lines as the lane has room for; a name longer still keeps its end after "…"
+  // (the legend under the chart and the chips above it name it whole).
+  const names = (u: uPlot) => {
+    const pxPerUnit = plotHeight(u, height) / Math.max(1, view().layout.total);
+    return lanes().map((l) => {
+      const room = Math.max(1, Math.floor(((l.top - l.bottom) * pxPerUnit) / NAME_LINE_PX));
+      const lines = wrapName(l.name, nameWidth - 14);
+      // Cut lines make room for the "…" in front.
+      return (lines.length > room ? fitLines(wrapName(l.name, nameWidth - 14 - textWidth('…')), room) : lines).join('\n');
+    });
+  };
   // The number scales' labels actually drawn (none closer than a label's height to the one above).
   const scale = { current: new Map<number, string>() };
   return {
@@ -328,8 +348,13 @@ export function trendOptions(
         ...axisStyle,
         scale: 'lanes',
         size: nameWidth,
-        splits: () => lanes().map((l) => (l.top + l.bottom) / 2),
-        values: () => names(),
+        // A wrapped name's lines go down from its split (uPlot): raise it by half the extra lines.
+        splits: (u) => {
+          const pxPerUnit = plotHeight(u, height) / Math.max(1, view().layout.total);
+          const labels = names(u);
+          return lanes().map((l, i) => (l.top + l.bottom) / 2 + (((labels[i] ?? '').split('\n').length - 1) * NAME_LINE_PX) / 2 / pxPerUnit);
+        },
+        values: (u) => names(u),
         grid: { show: false },
         ticks: { show: false },
       },
