@@ -106,8 +106,8 @@ export function SimToolbar() {
       </button>
       <CycleInput />
       <OnlineModeSelect />
-      <SimStatus />
       <UnappliedChanges />
+      <SimStatus />
       <SteppingBadge />
     </div>
   );
