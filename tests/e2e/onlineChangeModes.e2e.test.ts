@@ -45,6 +45,8 @@ test('apply on request: the edit changes nothing until Apply; the banner and the
   await page.getByTestId('sim-online-mode').selectOption('request');
   await sim.button('run').click();
   await sim.waitForMode('Running');
+  await sim.switchCell(0, 0, 0);
+  await sim.waitForValue('PartSensor', true);
   await drawResetHorn();
 
   // The running program is not the one shown: said in the toolbar and on the network, for as long as it is true.
@@ -53,8 +55,6 @@ test('apply on request: the edit changes nothing until Apply; the banner and the
   await page.getByTestId('network-unapplied-1').waitFor();
   expect(await page.getByTestId('network-unapplied-0').count()).toBe(0);
   // The program running is still the one-network counter: Horn does not exist in it.
-  await sim.switchCell(0, 0, 0);
-  await sim.waitForValue('PartSensor', true);
   expect((await simState()).networks).toBe(1);
   expect(await sim.value('Horn')).toBeUndefined();
   expect(await sim.mode()).toBe('Running');
@@ -102,6 +102,9 @@ test('switching back to apply as you edit applies the edits made meanwhile, as b
   await expect.poll(() => banner.textContent(), { timeout: 30_000 }).toMatch(/^Program changed — not applied/);
   expect((await simState()).networks).toBe(2);
 
+  // The mode is a project setting, in the Project inspector (nothing selected).
+  await page.keyboard.press('Escape');
+  await page.keyboard.press('Escape');
   await page.getByTestId('sim-online-mode').selectOption('edit');
   await expect.poll(async () => (await simState()).networks, { timeout: 30_000 }).toBe(3);
   await banner.waitFor({ state: 'detached' });
