@@ -2,9 +2,9 @@
 // shown): networks changed, added and removed per POU, POUs added and removed, variables new,
 // removed or retyped. Shown before "apply on request" applies an edit and counted in the banner
 // that says the running program is not the one on screen. Titles, comments and collapsed state are
-// not changes (they change nothing the PLC does: programFingerprint leaves them out too).
+// not changes (they change nothing the PLC does: programFingerprint leaves them out too, see behaviourPrint).
 import type { Network, Pou, Project, Variable } from '../model/project';
-import { programFingerprint } from './layout';
+import { behaviourPrint } from './layout';
 
 export interface PouChanges {
   readonly pou: string;
@@ -46,7 +46,7 @@ const prints = new WeakMap<object, string>();
 function print(x: object): string {
   let p = prints.get(x);
   if (p === undefined) {
-    p = programFingerprint(x as Project);
+    p = behaviourPrint(x);
     prints.set(x, p);
   }
   return p;

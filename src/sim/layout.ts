@@ -150,16 +150,33 @@ export function isProgramView(layout: SimLayout, view: SimView | undefined = lay
   return sameName(view.pou, layout.pou) && sameName(view.instance ?? '', first ?? '');
 }
 
+/** Keys that change nothing the program does (left out of fingerprints). */
+const NOT_BEHAVIOUR = new Set(['title', 'comment', 'collapsed', 'description', 'scenarios', 'watch', 'onlineChange']);
+const behaviourOnly = (key: string, value: unknown) => (NOT_BEHAVIOUR.has(key) ? undefined : value);
+
+/** A part of a document (a network, a variable) as JSON without what changes nothing the program does. */
+export function behaviourPrint(part: unknown): string {
+  return JSON.stringify(part, behaviourOnly) ?? '';
+}
+
+/** Networks' prints, kept per network object: documents are immutable, so an edit prints only the networks it replaced. */
+const networkPrints = new WeakMap<object, string>();
+function networkPrint(network: object): string {
+  let p = networkPrints.get(network);
+  if (p === undefined) {
+    p = behaviourPrint(network);
+    networkPrints.set(network, p);
+  }
+  return p;
+}
+
 /**
  * The document with everything that does not change what the program does (titles, comments,
  * collapsed state, descriptions, test scenarios, the watch list, the online change mode) left out: equal fingerprints mean no online change is needed.
  */
 export function programFingerprint(project: Project): string {
-  return JSON.stringify(project, (key, value: unknown) =>
-    key === 'title' || key === 'comment' || key === 'collapsed' || key === 'description' || key === 'scenarios' || key === 'watch' || key === 'onlineChange'
-      ? undefined
-      : value,
-  );
+  const pous = project.pous.map((p) => `${behaviourPrint({ ...p, networks: undefined })}[${p.networks.map(networkPrint).join(',')}]`);
+  return `${behaviourPrint({ ...project, pous: undefined })}{${pous.join(',')}}`;
 }
 
 /** Deepest nesting of user FB instances listed by readableNames (recursion is refused by the compiler anyway). */

@@ -7,6 +7,7 @@
 // with `outputs` events after every scan that changed it, once it sent `subscribeOutputs`.
 import type { Diagnostic, Fault, InstanceInfo, StepFrame } from '../engine/api';
 import type { Value } from '../model/iecTypes';
+import type { ProjectDelta } from './projectDelta';
 import type { Project, Scenario } from '../model/project';
 import type { ExplainTarget, Explanation } from '../engine/explain';
 import type { ProgramInstance } from './runTarget';
@@ -22,6 +23,10 @@ export type SimValueInput = { readonly value: Value } | { readonly text: string 
 /** Commands that run the program may carry the document to compile first; a compile error refuses the command. */
 interface WithProject {
   readonly project?: Project;
+  /** The document as a difference from the one sent before it (projectDelta.ts), instead of `project`. */
+  readonly delta?: ProjectDelta;
+  /** Sequence number of the document carried (project or delta): the base of the next delta. */
+  readonly docSeq?: number;
   /**
    * The store's command counter: the worker echoes the last one it handled in its frames, so the
    * store knows which frames already reflect this command (older ones are in flight).
@@ -31,13 +36,11 @@ interface WithProject {
 
 export type HostMessage =
   /** Compile the document. When a program is loaded already this is an online change, applied at the next scan boundary. */
-  | {
+  | ({
       readonly type: 'load';
-      readonly project: Project;
-      readonly epoch?: number;
       /** Apply on request: the change waits for confirmOnline (its plan is posted first), hardware attached or not. */
       readonly confirm?: boolean;
-    }
+    } & WithProject)
   | ({ readonly type: 'run' } & WithProject)
   | { readonly type: 'pause' }
   | ({ readonly type: 'step'; readonly scans: number } & WithProject)
@@ -108,7 +111,7 @@ export type HostMessage =
    * Runs a test scenario in the simulator from a cold restart (recorded in the history), stopping
    * after the first divergent scan; answered with `scenarioReplayed`.
    */
-  | { readonly type: 'replayScenario'; readonly id: number; readonly project: Project; readonly scenario: Scenario; readonly epoch?: number }
+  | { readonly type: 'replayScenario'; readonly id: number; readonly project: Project; readonly scenario: Scenario; readonly epoch?: number; readonly docSeq?: number }
   | GatewayHostMessage;
 
 /**

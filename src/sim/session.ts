@@ -27,6 +27,7 @@ import { answerHistory, historyRange } from './sessionHistory';
 import { plcScanWithClock, programLayout, type SinceColdStart } from './scenarioRecording';
 import type { SimEngine } from './simEngine';
 import { withYieldPoints } from '../engine/yieldPoint';
+import { applyDelta } from './projectDelta';
 
 export interface SessionDeps {
   readonly engine: SimEngine;
@@ -73,6 +74,8 @@ export class SimSession {
   /** Hardware is attached as controller: online changes wait for confirmOnline. */
   private confirmOnline = false;
   private onlineIds = 0;
+  /** The last document the store sent: what its next difference (projectDelta.ts) is made against. */
+  private documentBase: { readonly seq: number; readonly project: Project } | undefined;
   private mode: SimMode = 'stopped';
   /** The cycle the UI set; a program whose tasks run at different intervals scans at their common tick instead. */
   private requestedCycle: number | undefined;
@@ -137,17 +140,36 @@ export class SimSession {
 
   handle(message: HostMessage): void {
     try {
-      this.dispatch(message);
+      this.dispatch(this.withDocument(message));
     } catch (error) {
       this.deps.post({ type: 'error', message: error instanceof Error ? error.message : String(error) });
       this.postFrame();
     }
   }
 
+  /**
+   * A command carrying the document as a difference from the one sent before (projectDelta.ts)
+   * gets the whole document back; the document carried becomes the base of the next difference.
+   */
+  private withDocument(m: HostMessage): HostMessage {
+    if (!('docSeq' in m) || m.docSeq === undefined) return m;
+    let project = m.project;
+    if ('delta' in m && m.delta) {
+      if (this.documentBase?.seq !== m.delta.base) {
+        this.documentBase = undefined;
+        throw new Error("the simulator lost its copy of the project (internal); press Run again");
+      }
+      project = applyDelta(this.documentBase.project, m.delta);
+    }
+    if (project) this.documentBase = { seq: m.docSeq, project };
+    return project ? ({ ...m, project } as HostMessage) : m;
+  }
+
   private dispatch(m: HostMessage): void {
     if ('epoch' in m && m.epoch !== undefined) this.epoch = m.epoch;
     switch (m.type) {
       case 'load':
+        if (!m.project) throw new Error('no document to load');
         this.load(m.project, false, m.confirm === true);
         return;
       case 'run':

@@ -11,6 +11,7 @@ import type { Project } from '../model/project';
 import type { SimTransport } from '../sim/host';
 import { programId } from '../sim/programId';
 import { changeList } from '../sim/changeList';
+import { diffProject, type ProjectDelta } from '../sim/projectDelta';
 import type { HistoryView, HostMessage, SimFrame, SimLayout, TrendSamples, WorkerMessage } from '../sim/protocol';
 import type { Explanation } from '../engine/explain';
 import type { ScenarioResult } from '../sim/scenario';
@@ -89,6 +90,18 @@ export function createSimStore(transport: SimTransport): SimStore {
   /** The live power and values while a recorded scan is shown, to put back on Live. */
   let liveStash: Pick<SimState, 'elements' | 'vlinks' | 'executed' | 'values' | 'pins'> | undefined;
   const send = (message: HostMessage) => transport.send(message);
+  /**
+   * The last document sent to the worker: the next one goes as a difference from it (only what an
+   * edit replaced travels). Forgotten when the worker may have lost it (an error, a new worker).
+   */
+  let documentSeq = 0;
+  let workerDocument: { readonly seq: number; readonly project: Project } | undefined;
+  const packDocument = (project: Project): { project: Project; docSeq: number } | { delta: ProjectDelta; docSeq: number } => {
+    const docSeq = ++documentSeq;
+    const base = workerDocument;
+    workerDocument = { seq: docSeq, project };
+    return base ? { delta: diffProject(base.project, base.seq, project), docSeq } : { project, docSeq };
+  };
 
   /** The document to send with Run/Step unless the worker confirmed it runs this very program. */
   const fresh = (project: Project): Project | undefined => {
@@ -260,7 +273,7 @@ export function createSimStore(transport: SimTransport): SimStore {
         track.requested = { project, id, by: 'load' };
         // Online change: the running program stays accepted until the swap (or while the edit has errors).
         expected.set(new Set(running === null ? [id] : [id, running]));
-        send({ type: 'load', project, epoch: nextEpoch() });
+        send({ type: 'load', ...packDocument(project), epoch: nextEpoch() });
       },
       toggleBreakpoint: (networkId) => {
         const { breakpoints } = get();
@@ -331,7 +344,7 @@ export function createSimStore(transport: SimTransport): SimStore {
         track.requested = { project, id, by: 'load' };
         // As an edit applied as made: the running program stays accepted until the swap (or a Cancel).
         expected.set(new Set(running === null ? [id] : [id, running]));
-        send({ type: 'load', project, epoch: nextEpoch(), confirm: true });
+        send({ type: 'load', ...packDocument(project), epoch: nextEpoch(), confirm: true });
       },
       setInputs: (values) => send({ type: 'setInputs', values }),
       seekHistory: (scan) => {
@@ -386,7 +399,9 @@ export function createSimStore(transport: SimTransport): SimStore {
         track.requested = { project, id: programId(project), by: 'start' };
         liveStash = undefined;
         set({ historyScan: undefined, historyTimeMs: undefined, explanation: undefined, refusal: undefined, notice: undefined });
-        return request<ScenarioResult>((id) => ({ type: 'replayScenario', id, project, scenario, epoch: nextEpoch() }));
+        const docSeq = ++documentSeq;
+        workerDocument = { seq: docSeq, project };
+        return request<ScenarioResult>((id) => ({ type: 'replayScenario', id, project, scenario, epoch: nextEpoch(), docSeq }));
       },
       onOutputs: (listener) => {
         outputListeners.add(listener);
@@ -398,8 +413,8 @@ export function createSimStore(transport: SimTransport): SimStore {
       },
     };
 
-    function withProject(project: Project | undefined): { project?: Project } {
-      return project ? { project } : {};
+    function withProject(project: Project | undefined): { project?: Project } | { delta: ProjectDelta; docSeq: number } {
+      return project ? packDocument(project) : {};
     }
   });
 
@@ -467,8 +482,9 @@ export function createSimStore(transport: SimTransport): SimStore {
         return;
       }
       case 'error':
-        // The next Run sends the document again rather than trusting what the worker has.
+        // The next Run sends the document again (whole) rather than trusting what the worker has.
         sentProject = undefined;
+        workerDocument = undefined;
         if (message.message.startsWith(WORKER_GONE)) {
           // The worker itself is gone (crashed or terminated): nothing runs any more, and the
           // simulation must not show Running (nor drive hardware) for a program that no longer exists.

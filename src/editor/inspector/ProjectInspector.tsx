@@ -1,5 +1,5 @@
-// Nothing selected: the project itself (name, description, semantics profile).
-import type { Profile } from '../../model/project';
+// Nothing selected: the project itself (name, description, semantics profile, online change mode).
+import type { OnlineChangeMode, Profile } from '../../model/project';
 import { selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { CommitInput, CommitTextArea } from '../variables/CommitInput';
 
@@ -31,6 +31,20 @@ export function ProjectInspector() {
         >
           <option value="iec">IEC 61131-3 (standard)</option>
           <option value="openplc">OpenPLC / MATIEC</option>
+        </select>
+        <label htmlFor="project-online-change" title="How edits made while the simulation runs reach the running program">
+          Online change
+        </label>
+        <select
+          id="project-online-change"
+          className="rs-cell-input"
+          value={project.onlineChange ?? 'edit'}
+          title="Apply as you edit: each edit goes in at the next scan boundary. Apply on request: edits wait for Apply (Alt+F8), which lists them first."
+          onChange={(e) => store.getState().updateProject({ onlineChange: e.target.value as OnlineChangeMode })}
+          data-testid="sim-online-mode"
+        >
+          <option value="edit">Apply as you edit</option>
+          <option value="request">Apply on request</option>
         </select>
       </div>
       <div className="rs-field">

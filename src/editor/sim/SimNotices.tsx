@@ -4,6 +4,7 @@ import { describeOnlineChange, describeTransfer } from '../../sim/carryOver';
 import type { SimState } from '../../store/simState';
 import { Notice } from '../layout/Notice';
 import { OnlineChangeDialog } from './OnlineChangeDialog';
+import { UnappliedChanges } from './UnappliedChanges';
 import { faultWords } from './position';
 import { useSim, useSimStore } from './simContext';
 
@@ -36,6 +37,7 @@ export function SimNotices() {
   const dismissOnline = () => sim.getState().dismissOnlineChange();
   return (
     <>
+      <UnappliedChanges />
       {refusal && (
         <Notice
           testId="sim-refusal"

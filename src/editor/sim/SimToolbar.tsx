@@ -1,9 +1,7 @@
 // Run/Pause/Step/Reset controls and the status line (mode, scan, PLC time, execution time).
 import { useEffect, useState } from 'react';
 import { taskSchedule } from '../../engine/compile/taskSchedule';
-import { useDocument, useDocumentStore, type DocumentState } from '../../store/documentStore';
-import type { OnlineChangeMode } from '../../model/project';
-import { isModalOpen } from '../layout/useModal';
+import { useDocument, type DocumentState } from '../../store/documentStore';
 import type { SimState } from '../../store/simState';
 import { SteppingBadge } from '../hardware/HardwareStepping';
 import { useSimCommands } from '../hardware/useHardwareStepping';
@@ -103,66 +101,9 @@ export function SimToolbar() {
         Warm restart
       </button>
       <CycleInput />
-      <OnlineModeSelect />
       <SimStatus />
-      <UnappliedChanges />
       <SteppingBadge />
     </div>
-  );
-}
-
-const selectOnlineMode = (s: DocumentState): OnlineChangeMode => s.project.onlineChange ?? 'edit';
-
-/** The project's online change mode (saved with the project; an undoable edit). */
-function OnlineModeSelect() {
-  const documents = useDocumentStore();
-  const mode = useDocument(selectOnlineMode);
-  return (
-    <label className="rs-sim-group" title="How edits made while the program runs reach it (saved with the project)">
-      <span className="rs-sim-unit">Online change</span>
-      <select className="rs-sim-select" aria-label="Online change mode" value={mode} data-testid="sim-online-mode"
-        onChange={(e) => documents.getState().updateProject({ onlineChange: e.target.value as OnlineChangeMode })}>
-        <option value="edit">Apply as you edit</option>
-        <option value="request">Apply on request</option>
-      </select>
-    </label>
-  );
-}
-
-const selectUnapplied = (s: SimState) => s.unapplied;
-const selectConfirming = (s: SimState) => s.onlineChange?.kind === 'confirm';
-
-/**
- * Apply on request: the running program is not the one shown. Says so as long as it is true, with
- * the number of edits, and offers Apply (Alt+F8, CODESYS's key for login with online change).
- */
-function UnappliedChanges() {
-  const sim = useSimStore();
-  const documents = useDocumentStore();
-  const unapplied = useSim(selectUnapplied);
-  const confirming = useSim(selectConfirming);
-  const apply = () => sim.getState().applyChanges(documents.getState().project);
-  useEffect(() => {
-    if (!unapplied) return;
-    const onKey = (e: KeyboardEvent) => {
-      if (e.key !== 'F8' || !e.altKey || e.ctrlKey || e.metaKey || e.shiftKey || isModalOpen()) return;
-      e.preventDefault();
-      if (sim.getState().onlineChange?.kind !== 'confirm') sim.getState().applyChanges(documents.getState().project);
-    };
-    window.addEventListener('keydown', onKey);
-    return () => window.removeEventListener('keydown', onKey);
-  }, [unapplied, sim, documents]);
-  if (!unapplied) return null;
-  const n = unapplied.count;
-  return (
-    <span className="rs-sim-unapplied" role="status" data-testid="sim-unapplied"
-      title="The program running is not the one shown: the edits go in when you apply them">
-      <span data-testid="sim-unapplied-text">Program changed — not applied ({n} edit{n === 1 ? '' : 's'})</span>
-      <button type="button" className="rs-sim-btn rs-primary" aria-keyshortcuts="Alt+F8" disabled={confirming}
-        title="Apply the changes to the running program (Alt+F8): lists them first" onClick={apply} data-testid="sim-apply">
-        Apply…
-      </button>
-    </span>
   );
 }
 

@@ -40,8 +40,9 @@ export function useOnlineChange(): void {
     sim.getState().setOnlineMode(documents.getState().project.onlineChange ?? 'edit');
     const unsubscribe = documents.subscribe((state, previous) => {
       if (state.project === previous.project) return;
+      const mode = state.project.onlineChange ?? 'edit';
+      sim.getState().setOnlineMode(mode);
       const s = sim.getState();
-      s.setOnlineMode(state.project.onlineChange ?? 'edit');
       if (!s.layout) return;
       const samePous = state.project.pous.some((p) => previous.project.pous.some((q) => q.id === p.id));
       if (!samePous) {
@@ -51,7 +52,7 @@ export function useOnlineChange(): void {
       }
       if (s.mode === 'stopped' && s.scan === 0) return;
       clearTimeout(timer);
-      if (s.onlineMode === 'request') {
+      if (mode === 'request') {
         updateUnapplied();
         return;
       }
