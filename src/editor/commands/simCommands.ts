@@ -1,6 +1,6 @@
 // The simulator's commands with their keys, as CODESYS has them: F5 run, Shift+F5 stop, F9 toggles
 // a breakpoint on the network at the cursor, F10 / F11 step over / into, Ctrl+F7 writes and F7
-// forces the prepared values of the watch table. They run through the toolbar's commands (aware of
+// forces the prepared values of the watch table, Alt+F8 applies the edits kept back (apply on request). They run through the toolbar's commands (aware of
 // attached hardware), which SimKeysHost (useSimKeys) hands over while the app is mounted.
 import type { Project } from '../../model/project';
 import type { SimStore } from '../../store/simState';
@@ -101,6 +101,26 @@ export const SIM_COMMANDS: readonly SimCommand[] = [
     description: 'Run one scan (PLC time advances by one cycle)',
     run: () => simControls.current?.commands.step({ kind: 'scans', scans: 1 }),
     ...withReason(cannotStart),
+  },
+  {
+    id: 'sim.applyChanges',
+    label: 'Apply changes…',
+    group: 'Simulation',
+    keys: ['alt+f8'],
+    description: 'Apply on request: list the edits not yet in the running program, then apply them at a scan boundary',
+    run: () => {
+      const controls = simControls.current;
+      if (controls && controls.sim.getState().onlineChange?.kind !== 'confirm') controls.sim.getState().applyChanges(controls.project());
+    },
+    ...withReason(() =>
+      !simControls.current
+        ? notMounted
+        : !simControls.current.sim.getState().unapplied
+          ? 'The running program is the one shown: nothing to apply.'
+          : simControls.current.sim.getState().onlineChange?.kind === 'confirm'
+            ? 'The change list is open: confirm or cancel it.'
+            : undefined,
+    ),
   },
   {
     id: 'sim.writeValues',

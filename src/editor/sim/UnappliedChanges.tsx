@@ -1,10 +1,9 @@
 // Apply on request (issue 24): while the program running is not the one shown, a banner under the
 // tool bar says so, with the number of edits, and offers Apply… (Alt+F8, CODESYS's key for login
-// with online change), which lists the changes before anything is applied.
-import { useEffect } from 'react';
+// with online change; the key is the command sim.applyChanges in commands/simCommands.ts), which
+// lists the changes before anything is applied.
 import { useDocumentStore } from '../../store/documentStore';
 import type { SimState } from '../../store/simState';
-import { isModalOpen } from '../layout/useModal';
 import { useSim, useSimStore } from './simContext';
 
 const selectUnapplied = (s: SimState) => s.unapplied;
@@ -20,16 +19,6 @@ export function UnappliedChanges() {
   const unapplied = useSim(selectUnapplied);
   const confirming = useSim(selectConfirming);
   const apply = () => sim.getState().applyChanges(documents.getState().project);
-  useEffect(() => {
-    if (!unapplied) return;
-    const onKey = (e: KeyboardEvent) => {
-      if (e.key !== 'F8' || !e.altKey || e.ctrlKey || e.metaKey || e.shiftKey || isModalOpen()) return;
-      e.preventDefault();
-      if (sim.getState().onlineChange?.kind !== 'confirm') sim.getState().applyChanges(documents.getState().project);
-    };
-    window.addEventListener('keydown', onKey);
-    return () => window.removeEventListener('keydown', onKey);
-  }, [unapplied, sim, documents]);
   if (!unapplied) return null;
   const n = unapplied.count;
   return (
