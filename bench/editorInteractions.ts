@@ -47,6 +47,8 @@ export async function timed(page: Page, type: string, act: () => Promise<unknown
       };
       window.__frame = new Promise<number>((resolve) => {
         const on = (e: Event) => {
+          // Ctrl+Z arrives as Control's keydown, then Z's: the input is the Z.
+          if (e instanceof KeyboardEvent && ['Control', 'Shift', 'Alt', 'Meta'].includes(e.key)) return;
           window.removeEventListener(type, on, true);
           const t0 = e.timeStamp;
           const frame = () =>

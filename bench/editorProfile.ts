@@ -67,7 +67,9 @@ interface TraceEvent { name: string; ph: string; dur?: number; tid: number; pid:
 /** With TRACE=1: Chromium's timeline instead of the JS profiler, ms per event name on the renderer's main thread. */
 async function traced(cdp: CDPSession, name: string, fn: () => Promise<unknown>) {
   const events: TraceEvent[] = [];
-  cdp.on('Tracing.dataCollected', (e: { value: TraceEvent[] }) => events.push(...e.value));
+  cdp.on('Tracing.dataCollected', (e) => {
+    events.push(...(e.value as unknown as TraceEvent[]));
+  });
   const done = new Promise<void>((r) => cdp.once('Tracing.tracingComplete', () => r()));
   await cdp.send('Tracing.start', { traceConfig: { includedCategories: ['devtools.timeline', 'disabled-by-default-devtools.timeline'] } } as never);
   const r = await fn();

@@ -145,7 +145,11 @@ const insertAt = <T>(list: readonly T[], index: number, item: T): T[] => {
   out.splice(Math.min(index, out.length), 0, item);
   return out;
 };
-const removeAt = <T>(list: readonly T[], index: number): T[] => list.filter((_, i) => i !== index);
+const removeAt = <T>(list: readonly T[], index: number): T[] => {
+  const out = list.slice();
+  if (index >= 0 && index < out.length) out.splice(index, 1);
+  return out;
+};
 
 function updateNetwork(
   project: Project,

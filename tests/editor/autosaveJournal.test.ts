@@ -49,7 +49,7 @@ describe('autosave journal', () => {
     expect(applyPatch(JSON.parse(JSON.stringify(base)), patch)).toEqual(JSON.parse(JSON.stringify(current)));
   });
 
-  test('a network edit in a POU of 4,000 variables does not write the variables again; a variable edit does', () => {
+  test('a network edit or a new declaration in a POU of 4,000 variables journals the change, not the 4,000 variables', () => {
     const variables = Array.from({ length: 4000 }, (_, i) => variable(`V${i}`, 'BOOL', { comment: `Variable ${i}` }));
     const store = createDocumentStore(
       newProject('Vars', { pous: [newPou('Main', { variables, networks: [newNetwork(), newNetwork()] })] }),
@@ -64,6 +64,7 @@ describe('autosave journal', () => {
     store.getState().addVariable(variable('Added', 'INT'), base.pous[0]!.id);
     const declared = store.getState().project;
     const second = projectPatch(base, declared).patch;
+    expect(JSON.stringify(second).length).toBeLessThan(2_000);
     expect(applyPatch(baseData, second)).toEqual(JSON.parse(JSON.stringify(declared)));
     expect((applyPatch(baseData, second) as Project).pous[0]!.variables).toHaveLength(4001);
   });

@@ -61,21 +61,38 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
   );
   const width = networkWidth(network, library);
   const height = network.rows * pitch + GRID_PAD_BOTTOM;
-  // Each network is drawn once into a bitmap; scrolling then only copies bitmaps, which keeps
-  // frames short with many symbols and texts on screen. Redrawn when anything it shows changes.
+  // Each network is drawn once into its own bitmap; scrolling then only copies bitmaps, which keeps
+  // frames short with many symbols and texts on screen. Redrawn when anything it shows changes,
+  // into the same canvas (Konva's node.cache() made three new canvases on every redraw).
+  const bitmap = useRef<HTMLCanvasElement | null>(null);
   useLayoutEffect(() => {
     const node = ref.current;
     if (!node) return;
-    node.clearCache();
-    node.cache({
-      x: -CACHE_MARGIN,
-      y: -CACHE_MARGIN,
-      width: width + 2 * CACHE_MARGIN,
-      height: height + 2 * CACHE_MARGIN,
-      pixelRatio: zoom * (window.devicePixelRatio || 1),
-      imageSmoothingEnabled: true,
-    });
+    const canvas = (bitmap.current ??= document.createElement('canvas'));
+    const ratio = zoom * (window.devicePixelRatio || 1);
+    const w = Math.max(1, Math.ceil((width + 2 * CACHE_MARGIN) * ratio));
+    const h = Math.max(1, Math.ceil((height + 2 * CACHE_MARGIN) * ratio));
+    if (canvas.width !== w || canvas.height !== h) {
+      canvas.width = w;
+      canvas.height = h;
+    }
+    const ctx = canvas.getContext('2d');
+    if (!ctx) return;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.clearRect(0, 0, w, h);
+    ctx.setTransform(ratio, 0, 0, ratio, CACHE_MARGIN * ratio, CACHE_MARGIN * ratio);
+    ctx.imageSmoothingEnabled = true;
+    drawNetworkGrid(ctx, theme, network, paint);
+    node.getLayer()?.batchDraw();
   }, [network, theme, paint, zoom, width, height]);
+  // The bitmap's canvas goes with the shape (a scrolled-away network gives its memory back).
+  useLayoutEffect(
+    () => () => {
+      if (bitmap.current) bitmap.current.width = bitmap.current.height = 0;
+      bitmap.current = null;
+    },
+    [],
+  );
   if (network.collapsed) return null;
   return (
     <Shape
@@ -86,7 +103,11 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
       height={height}
       listening={false}
       perfectDrawEnabled={false}
-      sceneFunc={(ctx) => drawNetworkGrid(ctx._context, theme, network, paint)}
+      sceneFunc={(ctx) => {
+        const b = bitmap.current;
+        if (b && b.width > 1)
+          ctx._context.drawImage(b, -CACHE_MARGIN, -CACHE_MARGIN, width + 2 * CACHE_MARGIN, height + 2 * CACHE_MARGIN);
+      }}
     />
   );
 });

@@ -11,11 +11,11 @@
 // the journal is based on, so the journal's base is always still there to apply it to.
 //
 // Pure (no storage here): useAutosave.ts does the I/O.
-import type { Network, Pou, Project } from '../../model/project';
+import type { Network, Pou, Project, Variable } from '../../model/project';
 import { AUTOSAVE_FORMAT, AUTOSAVE_VERSION, decideRecovery, type RecoveryDecision } from './autosaveRecord';
 
 export const JOURNAL_FORMAT = 'rungsmith-autosave-journal';
-/** 2: a POU patch may take its variables from the base (`baseVariables`); version 1 journals still read. */
+/** 2: a POU patch may give its variables as runs of the base POU's (`variables`); version 1 journals still read. */
 export const JOURNAL_VERSION = 2;
 /** localStorage key of the journal. */
 export const JOURNAL_KEY = 'rungsmith.autosave.journal';
@@ -35,13 +35,14 @@ export const JOURNAL_MAX_NETWORKS = 300;
 type NetworkRun = readonly [number, number];
 
 export interface PouPatch {
-  /** Every field of the POU but its networks (and its variables with `baseVariables`), as in the project file. */
+  /** Every field of the POU but its networks (and its variables when `variables` is there), as in the project file. */
   readonly fields: Readonly<Record<string, unknown>>;
   /**
-   * The variables are the base POU's, unchanged: a network edit of a POU with thousands of
-   * variables does not write them all again (localStorage.setItem of them cost ~10 ms a change).
+   * The variables as runs of the base POU's and the new or changed ones, like `networks`: an edit
+   * of a POU with thousands of variables does not write them all again (localStorage.setItem of
+   * them cost ~10 ms a keystroke). Absent: the variables are in `fields`.
    */
-  readonly baseVariables?: true;
+  readonly variables?: readonly (NetworkRun | Variable)[];
   /** Index of the POU in the base the runs refer to (absent: no base, every network inline). */
   readonly base?: number;
   readonly networks: readonly (NetworkRun | Network)[];
@@ -77,6 +78,49 @@ function indexOfNetworks(pou: Pou): Map<Network, number> {
   return m;
 }
 
+const variableIndex = new WeakMap<Pou, Map<Variable, number>>();
+function indexOfVariables(pou: Pou): Map<Variable, number> {
+  let m = variableIndex.get(pou);
+  if (!m) {
+    m = new Map(pou.variables.map((v, i) => [v, i]));
+    variableIndex.set(pou, m);
+  }
+  return m;
+}
+
+/** `items` as runs of the base's items ([first index, count]) and the items not in the base, and how many of those. */
+function runsOf<T>(items: readonly T[], index: Map<T, number> | undefined): { list: (NetworkRun | T)[]; inline: number } {
+  const list: (NetworkRun | T)[] = [];
+  let inline = 0;
+  let run: [number, number] | undefined;
+  for (const item of items) {
+    const at = index?.get(item);
+    if (at === undefined) {
+      run = undefined;
+      list.push(item);
+      inline += 1;
+    } else if (run && run[0] + run[1] === at) run[1] += 1;
+    else {
+      run = [at, 1];
+      list.push(run);
+    }
+  }
+  return { list, inline };
+}
+
+/** The items of `runs` over the base's `from` (undefined when a run does not fit). */
+function fromRuns(runs: readonly unknown[], from: readonly unknown[]): unknown[] | undefined {
+  const out: unknown[] = [];
+  for (const n of runs) {
+    if (Array.isArray(n)) {
+      const [start, count] = n as unknown as NetworkRun;
+      if (start + count > from.length) return undefined;
+      out.push(...from.slice(start, start + count));
+    } else out.push(n);
+  }
+  return out;
+}
+
 const pouIndex = new WeakMap<Project, Map<string, number>>();
 function indexOfPous(project: Project): Map<string, number> {
   let m = pouIndex.get(project);
@@ -109,30 +153,12 @@ export function projectPatch(
     const bi = byId?.get(pou.id);
     const basePou = bi === undefined ? undefined : base!.pous[bi];
     if (basePou === pou) return bi!;
-    const networks: (NetworkRun | Network)[] = [];
-    const index = basePou ? indexOfNetworks(basePou) : undefined;
-    let run: [number, number] | undefined;
-    for (const n of pou.networks) {
-      const at = index?.get(n);
-      if (at === undefined) {
-        run = undefined;
-        networks.push(n);
-        inlineNetworks += 1;
-      } else if (run && run[0] + run[1] === at) run[1] += 1;
-      else {
-        run = [at, 1];
-        networks.push(run);
-      }
-    }
+    const nets = runsOf(pou.networks, basePou ? indexOfNetworks(basePou) : undefined);
+    inlineNetworks += nets.inline;
     const fields = pouFields(pou);
-    const baseVariables = basePou !== undefined && basePou.variables === pou.variables;
-    if (baseVariables) delete fields.variables;
-    return {
-      fields,
-      ...(baseVariables ? { baseVariables: true as const } : {}),
-      ...(bi !== undefined ? { base: bi } : {}),
-      networks,
-    };
+    if (!basePou) return { fields, networks: nets.list };
+    delete fields.variables;
+    return { fields, variables: runsOf(pou.variables, indexOfVariables(basePou)).list, base: bi!, networks: nets.list };
   });
   return { patch: { set, unset, pous }, inlineNetworks };
 }
@@ -155,16 +181,13 @@ export function applyPatch(baseData: unknown, patch: ProjectPatch): unknown {
     }
     const from = entry.base === undefined ? undefined : basePous[entry.base];
     const fromNetworks = Array.isArray(from?.networks) ? (from.networks as unknown[]) : [];
-    const networks: unknown[] = [];
-    for (const n of entry.networks) {
-      if (Array.isArray(n)) {
-        const [start, count] = n as NetworkRun;
-        if (start + count > fromNetworks.length) return undefined;
-        networks.push(...fromNetworks.slice(start, start + count));
-      } else networks.push(n);
-    }
-    if (entry.baseVariables && !Array.isArray(from?.variables)) return undefined;
-    pous.push({ ...(entry.baseVariables ? { variables: from!.variables } : {}), ...entry.fields, networks });
+    const networks = fromRuns(entry.networks, fromNetworks);
+    if (!networks) return undefined;
+    if (entry.variables) {
+      const variables = fromRuns(entry.variables, Array.isArray(from?.variables) ? (from.variables as unknown[]) : []);
+      if (!variables) return undefined;
+      pous.push({ ...entry.fields, variables, networks });
+    } else pous.push({ ...entry.fields, networks });
   }
   out.pous = pous;
   return out;

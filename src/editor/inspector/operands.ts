@@ -79,6 +79,8 @@ export function candidatesFor(project: Project, pou: Pou, role: BindingRole): Ca
   for (const v of all) {
     const type = v.type.toUpperCase();
     if (accepted.has(type)) out.push({ text: v.name, type, detail: describe(v) });
+    // An elementary variable (most of them) has no members and is no FB instance.
+    if (isElementaryType(type)) continue;
     if (role.kind !== 'instance' && isAggregateVariable(project, v))
       out.push(...memberCandidates(project, [v], accepted));
     if (role.kind === 'instance' || !lib.isFbType(type)) continue;
