@@ -3,14 +3,14 @@
 // network (or of a program's variables) gave a new library: every network's column widths were
 // measured again and every network on screen was redrawn on each keystroke. The signatures of the
 // project's own blocks depend only on each block POU's name, kind, return type, variables and
-// comment, and on the external blocks and data types (a PROGRAM is no block: its name and kind
+// comment, and on the external blocks, data types and libraries (a PROGRAM is no block: its name and kind
 // count, its variables do not): while those are the same objects, the library is the same object.
 // `userPou` (the body of a block) always answers from the newest project this was asked for.
 import { blockLibrary, type BlockLibrary } from '../model/library';
 import type { Project } from '../model/project';
 
 const interfaceKey = (p: Project): unknown[] => {
-  const key: unknown[] = [p.externalBlocks, p.dataTypes];
+  const key: unknown[] = [p.externalBlocks, p.dataTypes, p.libraries];
   // A PROGRAM is no block: its variables (a name declared from the canvas) change no signature.
   for (const pou of p.pous)
     if (pou.kind === 'PROGRAM') key.push(pou.name, pou.kind);

@@ -30,4 +30,18 @@ describe('stable block library', () => {
     store.getState().undo();
     expect(selectLibrary(store.getState()).signature('Conveyor')!.inputs.map((p) => p.name)).toEqual(['Enable', 'Jam']);
   });
+
+  it('gives a new library when a library is added to the project, with its blocks', () => {
+    const store = createDocumentStore(bottleFiller());
+    const conveyor = store.getState().project.pous.find((p) => p.name === 'Conveyor')!;
+    const before = selectLibrary(store.getState());
+    expect(before.signature('Belt')).toBeUndefined();
+    const belt = { ...conveyor, id: 'library:Belts:Belt' as typeof conveyor.id, name: 'Belt' };
+    store.getState().updateProject({
+      libraries: [{ name: 'Belts', hash: `sha256:${'0'.repeat(64)}`, sourceFile: 'belts.xml', addedAt: '2026-11-28T12:00:00.000Z', origin: 'plcopen', pous: [belt] }],
+    });
+    const after = selectLibrary(store.getState());
+    expect(after).not.toBe(before);
+    expect(after.signature('Belt')!.inputs.map((p) => p.name)).toEqual(['Enable', 'Jam']);
+  });
 });
