@@ -45,7 +45,8 @@ export function buildFrame(parts: FrameParts): SimFrame {
       if (v.location?.toUpperCase().startsWith('%I')) values[i] = carried.values[i]!;
     });
   // The data lines of the shown body (the carried scan of a replaced program has none to show).
-  const probe = !carried && plc && layout && parts.program ? plc.probe?.() : undefined;
+  // Nothing to read when the view has no box input on a line (no probe, no body search).
+  const probe = !carried && plc && layout?.pins?.length && parts.program ? plc.probe?.() : undefined;
   const pins =
     probe && layout && parts.program
       ? readPinValues(probe, layout, viewBody(parts.program, layout, lastRun(probe.ranIn)), viewPou(parts.project, layout))
