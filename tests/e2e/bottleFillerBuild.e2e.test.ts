@@ -98,7 +98,6 @@ async function block(blockType: string, instance: string) {
   await poll(() => page.getByRole('option', { name: new RegExp(`^${blockType}`) }).count()).toBeGreaterThan(0);
   await key('Enter');
   await inline().waitFor();
-  await key('Control+a');
   await type(instance);
   await poll(() => page.locator('[role="listbox"] [role="option"]').count()).toBeGreaterThan(0);
   await key('Enter');
@@ -161,7 +160,6 @@ async function addPou(button: 'add-fb' | 'add-program', name: string) {
   await clickOn(button);
   const field = page.getByTestId('pou-rename');
   await field.waitFor();
-  await key('Control+a');
   await type(name);
   await key('Enter');
   await page.getByTestId(`pou-tab-${name}`).waitFor();
