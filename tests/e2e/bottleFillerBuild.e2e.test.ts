@@ -21,6 +21,8 @@ let sim: SimPage;
 
 /** What the user did: actions (keys, clicks, fields typed, copies) and keystrokes (every key). */
 const count = { actions: 0, keystrokes: 0, arrowsToDeclare: 0 };
+/** The new names whose offer to declare was listed under names that contain them. */
+const detours: string[] = [];
 const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 30_000, interval: 50 });
 
 /** One key or chord. */
@@ -75,6 +77,7 @@ async function takeOffer(name: string, end: 'Enter' | 'Tab') {
     expect(at, `an offer to declare ${name}`).toBeGreaterThanOrEqual(0);
     for (let i = 0; i < at; i++) await key('ArrowDown');
     count.arrowsToDeclare += at;
+    if (at > 0) detours.push(`${name} (${list.slice(0, at).map((o) => o.text).join(', ')})`);
   }
   await key(end);
 }
@@ -211,6 +214,7 @@ afterEach((ctx) => {
 
 afterAll(() => {
   console.log(phases.join('\n'));
+  console.log(`declare offers under other names: ${detours.join('; ')}`);
   console.log(
     `bottle-filler-build actions=${count.actions} keystrokes=${count.keystrokes} (of which ↓ to reach a declare offer: ${count.arrowsToDeclare})`,
   );
