@@ -100,7 +100,14 @@ export function VariableInput(props: VariableInputProps) {
         ? declareChoices(project, offered, role, pou, typed?.type).map((choice) => ({ kind: 'declare' as const, choice }))
         : [];
     // The offered fresh instance comes first: a second call needs a new instance, not Motor1 again.
-    return offered !== undefined && offered !== text ? [...declares, ...ranked] : [...ranked, ...declares];
+    if (offered !== undefined && offered !== text) return [...declares, ...ranked];
+    // A new name typed whole: names that only contain it (`Jam` in `ConveyorJam`) come after the offer
+    // to declare it, so Enter never binds another variable than the one typed; names that start
+    // with it stay first (the user may be completing one).
+    const q = text.trim().toUpperCase();
+    const starts = ranked.filter((o) => o.candidate.text.toUpperCase().startsWith(q));
+    const contains = ranked.filter((o) => !o.candidate.text.toUpperCase().startsWith(q));
+    return [...starts, ...declares, ...contains];
     // eslint-disable-next-line react-hooks/exhaustive-deps -- `role` is compared by value (callers build it per render)
   }, [project, pou, roleKey, candidates, text]);
   const shown = open && options.length > 0;
