@@ -219,6 +219,9 @@ afterAll(() => {
     `bottle-filler-build actions=${count.actions} keystrokes=${count.keystrokes} (of which ↓ to reach a declare offer: ${count.arrowsToDeclare})`,
   );
   expect(errors).toEqual([]);
+  // A new name typed whole is offered for declaration before names that only contain it: Enter
+  // never binds another variable (Jam is not ConveyorJam).
+  expect(detours).toEqual([]);
 });
 
 test('a new project; the 15 globals pasted from the I/O list as a symbol table', async () => {
