@@ -4,49 +4,16 @@
 // `bottleFillerProject(copies)` pastes the 13 networks `copies - 1` more times into Main the way
 // the editor's paste does (preparePaste, mode `new`): every copy gets its own instances
 // (`InfeedConv2`, `FillTimer2`, ...) and labels (`MAINT2`, `DONE2`); the globals are shared.
-import type { BoxElement, CoilType, ContactType, LdElement, VLink } from '../src/model/elements';
+import type { BoxElement, LdElement, VLink } from '../src/model/elements';
+import { box as exampleBox, coil, contact, jump, line, rung } from '../src/model/examples';
 import { newNetwork, newPou, newProject, variable } from '../src/model/factory';
-import { newId, type ElementId } from '../src/model/ids';
 import type { Network, Pou, Project, Variable } from '../src/model/project';
 import { copyNetworks, preparePaste } from '../src/store/networkUnits';
 
 const COLS = 10;
-const eid = (): ElementId => newId<'ElementId'>('e');
-
-const contact = (row: number, col: number, name: string, type: ContactType = 'NO'): LdElement => ({
-  id: eid(),
-  kind: 'contact',
-  contact: type,
-  variable: name,
-  row,
-  col,
-});
-const coil = (row: number, name: string, type: CoilType = 'COIL'): LdElement => ({
-  id: eid(),
-  kind: 'coil',
-  coil: type,
-  variable: name,
-  row,
-  col: COLS - 1,
-});
-const jump = (row: number, target: string): LdElement => ({ id: eid(), kind: 'jump', target, row, col: COLS - 1 });
-/** Horizontal links on `row` over columns from..to (inclusive). */
-const line = (row: number, from: number, to: number): LdElement[] =>
-  Array.from({ length: Math.max(0, to - from + 1) }, (_, i) => ({ id: eid(), kind: 'link', row, col: from + i }));
-const box = (
-  col: number,
-  blockType: string,
-  instance: string,
-  inputs: Record<string, string>,
-  outputs: Record<string, string> = {},
-): BoxElement => ({ id: eid(), kind: 'box', blockType, instance, row: 0, col, inputs, outputs });
-
-/** Contacts in series on row 0 from the left rail, wired across to `end` in the last column. */
-const rung = (contacts: LdElement[], end: LdElement): LdElement[] => [
-  ...contacts,
-  ...line(0, contacts.length, COLS - 2),
-  end,
-];
+/** A box on row 0 (the examples' box). */
+const box = (col: number, blockType: string, instance: string, inputs: Record<string, string>, outputs: Record<string, string> = {}): BoxElement =>
+  exampleBox(0, col, blockType, instance, inputs, outputs);
 
 function network(
   title: string,

@@ -15,7 +15,8 @@ export interface Example {
 const COLS = 10;
 const eid = (): ElementId => newId<'ElementId'>('e');
 
-const contact = (row: number, col: number, name: string, type: ContactType = 'NO'): LdElement => ({
+/** The ladder parts the examples are drawn with (also the benches' generated programs). */
+export const contact = (row: number, col: number, name: string, type: ContactType = 'NO'): LdElement => ({
   id: eid(),
   kind: 'contact',
   contact: type,
@@ -24,7 +25,7 @@ const contact = (row: number, col: number, name: string, type: ContactType = 'NO
   col,
 });
 /** A coil in the last column, touching the right rail. */
-const coil = (row: number, name: string, type: CoilType = 'COIL'): LdElement => ({
+export const coil = (row: number, name: string, type: CoilType = 'COIL'): LdElement => ({
   id: eid(),
   kind: 'coil',
   coil: type,
@@ -33,7 +34,7 @@ const coil = (row: number, name: string, type: CoilType = 'COIL'): LdElement => 
   col: COLS - 1,
 });
 /** A jump in the last column, touching the right rail. */
-const jump = (row: number, target: string): LdElement => ({
+export const jump = (row: number, target: string): LdElement => ({
   id: eid(),
   kind: 'jump',
   target,
@@ -41,7 +42,7 @@ const jump = (row: number, target: string): LdElement => ({
   col: COLS - 1,
 });
 /** Horizontal lines on `row` over columns from..to (inclusive). */
-const line = (row: number, from: number, to: number): LdElement[] =>
+export const line = (row: number, from: number, to: number): LdElement[] =>
   Array.from({ length: Math.max(0, to - from + 1) }, (_, i) => ({
     id: eid(),
     kind: 'link',
@@ -49,12 +50,12 @@ const line = (row: number, from: number, to: number): LdElement[] =>
     col: from + i,
   }));
 /** Contacts in series on row 0 from the left rail (columns 0, 1, ...), wired across to `end` in the last column. */
-const rung = (contacts: LdElement[], end: LdElement): LdElement[] => [
+export const rung = (contacts: LdElement[], end: LdElement): LdElement[] => [
   ...contacts,
   ...line(0, contacts.length, COLS - 2),
   end,
 ];
-const box = (
+export const box = (
   row: number,
   col: number,
   blockType: string,
