@@ -12,8 +12,13 @@ import { copyNetworks, preparePaste } from '../src/store/networkUnits';
 
 const COLS = 10;
 /** A box on row 0 (the examples' box). */
-const box = (col: number, blockType: string, instance: string, inputs: Record<string, string>, outputs: Record<string, string> = {}): BoxElement =>
-  exampleBox(0, col, blockType, instance, inputs, outputs);
+const box = (
+  col: number,
+  blockType: string,
+  instance: string,
+  inputs: Record<string, string>,
+  outputs: Record<string, string> = {},
+): BoxElement => exampleBox(0, col, blockType, instance, inputs, outputs);
 
 function network(
   title: string,
@@ -112,7 +117,11 @@ export function bottleFillerNetworks(): Network[] {
       ],
       { rows: 2, vlinks: [{ row: 0, boundary: 1 }] },
     ),
-    network('Maintenance', 'The maintenance key skips production.', rung([contact(0, 0, 'MaintKey')], jump(0, 'MAINT'))),
+    network(
+      'Maintenance',
+      'The maintenance key skips production.',
+      rung([contact(0, 0, 'MaintKey')], jump(0, 'MAINT')),
+    ),
     network(
       'Infeed conveyor',
       'Brings bottles in until one is under the nozzle.',
@@ -128,12 +137,20 @@ export function bottleFillerNetworks(): Network[] {
     network(
       'Filling',
       'A bottle under the nozzle is filled until the fill time is over.',
-      rung([contact(0, 0, 'Running'), contact(0, 1, 'BottleAtFill'), contact(0, 2, 'FillDone', 'NC')], coil(0, 'Filling')),
+      rung(
+        [contact(0, 0, 'Running'), contact(0, 1, 'BottleAtFill'), contact(0, 2, 'FillDone', 'NC')],
+        coil(0, 'Filling'),
+      ),
     ),
     network(
       'Fill time',
       'The fill time.',
-      [contact(0, 0, 'Filling'), box(1, 'TON', 'FillTimer', { PT: 'T#2s' }), ...line(0, 3, COLS - 2), coil(0, 'FillDone')],
+      [
+        contact(0, 0, 'Filling'),
+        box(1, 'TON', 'FillTimer', { PT: 'T#2s' }),
+        ...line(0, 3, COLS - 2),
+        coil(0, 'FillDone'),
+      ],
       { rows: 2 },
     ),
     network(
@@ -202,7 +219,12 @@ function signalsProgram(): Pou {
       network(
         'Blinker',
         'A pulse every half second.',
-        [contact(0, 0, 'Blink', 'NC'), box(1, 'TON', 'BlinkTimer', { PT: 'T#500ms' }), ...line(0, 3, COLS - 2), coil(0, 'Blink')],
+        [
+          contact(0, 0, 'Blink', 'NC'),
+          box(1, 'TON', 'BlinkTimer', { PT: 'T#500ms' }),
+          ...line(0, 3, COLS - 2),
+          coil(0, 'Blink'),
+        ],
         { rows: 2 },
       ),
     ],
@@ -222,7 +244,12 @@ export function bottleFiller(): Project {
     globals: bottleFillerGlobals(),
     tasks: [
       { name: 'MainTask', cycleMs: 10, priority: 1, programs: [{ instance: 'MainInstance', pou: 'Main' }] },
-      { name: 'SlowTask', cycleMs: 100, priority: 2, programs: [{ instance: 'SignalsInstance', pou: 'Signals' }] },
+      {
+        name: 'SlowTask',
+        cycleMs: 100,
+        priority: 2,
+        programs: [{ instance: 'SignalsInstance', pou: 'Signals' }],
+      },
     ],
   });
 }
@@ -234,11 +261,18 @@ export function bottleFiller(): Project {
 export function bottleFillerProject(copies = 50): Project {
   let project = bottleFiller();
   const first = project.pous[0]!;
-  const clip = copyNetworks(first, first.networks.map((n) => n.id))!;
+  const clip = copyNetworks(
+    first,
+    first.networks.map((n) => n.id),
+  )!;
   for (let k = 1; k < copies; k++) {
     const main = project.pous[0]!;
     const p = preparePaste(project, main, clip, 'new');
-    const next: Pou = { ...main, variables: [...main.variables, ...p.variables], networks: [...main.networks, ...p.networks] };
+    const next: Pou = {
+      ...main,
+      variables: [...main.variables, ...p.variables],
+      networks: [...main.networks, ...p.networks],
+    };
     project = { ...project, pous: [next, ...project.pous.slice(1)] };
   }
   return project;
