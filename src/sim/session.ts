@@ -379,6 +379,7 @@ export class SimSession {
       pou: findPou(project, plc.pou),
       project,
     };
+    poll();
     if (!online) {
       this.install(next, false, diagnostics);
       return true;
@@ -387,6 +388,7 @@ export class SimSession {
     // attached, or applied on request, an edit (not a Run/Step) first waits for the user's answer to its plan.
     const id = ++this.onlineIds;
     const plan = planInstances(this.plc!, plc);
+    poll();
     const awaiting = (this.confirmOnline || confirm) && !starting;
     this.pending = { program: next, diagnostics, id, plan, awaiting };
     this.deps.post({ type: 'onlinePlan', id, plan, confirm: awaiting });
