@@ -5,8 +5,16 @@
 // the editor's paste does (preparePaste, mode `new`): every copy gets its own instances
 // (`InfeedConv2`, `FillTimer2`, ...) and labels (`MAINT2`, `DONE2`); the globals are shared.
 import type { BoxElement, LdElement, VLink } from '../src/model/elements';
-import { box as exampleBox, coil, contact, jump, line, rung } from '../src/model/examples';
-import { newNetwork, newPou, newProject, variable } from '../src/model/factory';
+import {
+  box as exampleBox,
+  coil,
+  contact,
+  jump,
+  line,
+  network as exampleNetwork,
+  rung,
+} from '../src/model/examples';
+import { newPou, newProject, variable } from '../src/model/factory';
 import type { Network, Pou, Project, Variable } from '../src/model/project';
 import { copyNetworks, preparePaste } from '../src/store/networkUnits';
 
@@ -20,22 +28,13 @@ const box = (
   outputs: Record<string, string> = {},
 ): BoxElement => exampleBox(0, col, blockType, instance, inputs, outputs);
 
-function network(
+/** A network of the examples' shape, one row unless said otherwise. */
+const network = (
   title: string,
   comment: string,
   elements: LdElement[],
   extra: { rows?: number; vlinks?: VLink[]; label?: string } = {},
-): Network {
-  return newNetwork({
-    title,
-    comment,
-    rows: extra.rows ?? 1,
-    cols: COLS,
-    elements,
-    vlinks: extra.vlinks ?? [],
-    ...(extra.label ? { label: extra.label } : {}),
-  });
-}
+): Network => exampleNetwork(title, comment, elements, { rows: 1, ...extra });
 
 const g = (name: string, type: string, location: string, comment: string, initial?: string): Variable =>
   variable(name, type, { location, comment, ...(initial ? { initial } : {}) });

@@ -73,7 +73,7 @@ export const box = (
   outputs,
 });
 
-function network(
+export function network(
   title: string,
   comment: string,
   elements: LdElement[],
