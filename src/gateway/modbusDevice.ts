@@ -12,6 +12,8 @@ import { fromRegister, planBlocks, toRegister, type RequestBlock } from './modbu
 
 export const FAILED_POLLS_OFFLINE = 3;
 export const BACKOFF_FIRST_MS = 1000;
+/** How often a request in flight checks that its connection is still open (see `request`). */
+const CONNECTION_CHECK_MS = 25;
 export const BACKOFF_MAX_MS = 30_000;
 /** After another master last changed a device's outputs, `arm` waits this long (it is probably still running). */
 export const OTHER_MASTER_QUIET_MS = 3000;
@@ -171,7 +173,15 @@ export class ModbusTcpDevice implements Device {
     clearTimeout(this.timer);
     this.enterSafe();
     // The request on the wire may carry the driven image: let it finish so the safe write is the last.
-    await withTimeout(this.queue, Math.max(1, end - Date.now()), 'pending requests').catch(() => undefined);
+    // Not for the whole deadline: a request the device lost (it restarted under it) never finishes, and
+    // the safe write needs time left to go out again on a fresh connection.
+    const drained = await withTimeout(this.queue, Math.max(1, Math.floor(deadlineMs / 2)), 'pending requests').then(
+      () => true,
+      () => false,
+    );
+    // Only a safe write waits that long (every other request gives up after timeoutMs), so dropping its
+    // connection can never let a driven image land after the safe one.
+    if (!drained) this.dropClient();
     while (!this.closed) {
       const left = end - Date.now();
       if (left <= 0) break;
@@ -325,11 +335,18 @@ export class ModbusTcpDevice implements Device {
       abort = () => reject(new Error('the connection closed'));
     });
     this.aborters.add(abort);
+    // modbus-serial marks its port closed on a socket error (a reset connection, ECONNRESET) and then
+    // does not relay the 'close' event: without this check a request on a reset connection waited
+    // out its whole timeout (10 s for a safe write, past the shutdown's deadline).
+    const watch = setInterval(() => {
+      if (!client.isOpen) abort();
+    }, CONNECTION_CHECK_MS);
     // A long wait (the safe write on a slow device) still counts as failed polls every timeoutMs, so
     // the device goes offline with stale inputs as promptly as a device that does not answer at all.
     const slow = timeoutMs > this.requestTimeoutMs ? setInterval(() => this.noteSlow(timeoutMs), Math.max(this.requestTimeoutMs, this.cfg.pollMs)) : undefined;
     return withTimeout(Promise.race([job(), closed]), timeoutMs + 100, 'Modbus request').finally(() => {
       clearInterval(slow);
+      clearInterval(watch);
       this.aborters.delete(abort);
     });
   }
