@@ -23,7 +23,12 @@ const isTimeout = (e: unknown) => /timed out/i.test(message(e));
 /** A Modbus exception response (the device answered, refusing the request). */
 const isModbusException = (e: unknown) => typeof e === 'object' && e !== null && 'modbusCode' in e;
 
-const message = (e: unknown) => (e instanceof Error ? e.message : typeof e === 'object' && e && 'message' in e ? String(e.message) : String(e));
+const message = (e: unknown) =>
+  e instanceof Error
+    ? e.message
+    : typeof e === 'object' && e && 'message' in e
+      ? String(e.message)
+      : String(e);
 
 function withTimeout<T>(promise: Promise<T>, ms: number, what: string): Promise<T> {
   let timer: NodeJS.Timeout | undefined;
@@ -90,10 +95,20 @@ export class ModbusTcpDevice implements Device {
   constructor(private readonly cfg: ResolvedDevice) {
     this.requestTimeoutMs = cfg.timeoutMs;
     this.readBackOn = cfg.readBackOutputs;
-    this.info = { id: cfg.id, kind: 'modbus-tcp' as const, target: `${cfg.host}:${cfg.port} unit ${cfg.unitId}` };
+    this.info = {
+      id: cfg.id,
+      kind: 'modbus-tcp' as const,
+      target: `${cfg.host}:${cfg.port} unit ${cfg.unitId}`,
+    };
     this.points = cfg.resolvedPoints;
-    this.readBlocks = planBlocks(this.points.filter((p) => p.dir === 'in'), false);
-    this.writeBlocks = planBlocks(this.points.filter((p) => p.dir === 'out'), true);
+    this.readBlocks = planBlocks(
+      this.points.filter((p) => p.dir === 'in'),
+      false,
+    );
+    this.writeBlocks = planBlocks(
+      this.points.filter((p) => p.dir === 'out'),
+      true,
+    );
     for (const p of this.points) {
       if (p.dir === 'in') {
         this.inputs.set(p.address, zeroOf(p.type));
@@ -123,7 +138,9 @@ export class ModbusTcpDevice implements Device {
     return `${this.conflictText ?? `another Modbus master is writing device "${this.info.id}"'s outputs`}; they changed ${(ago / 1000).toFixed(1)} s ago: stop the other master, then arm`;
   }
   safePendingMs(): number | null {
-    return this.mode === 'safe' && !this.safeAcked && this.safeSince !== null ? Date.now() - this.safeSince : null;
+    return this.mode === 'safe' && !this.safeAcked && this.safeSince !== null
+      ? Date.now() - this.safeSince
+      : null;
   }
   queueDepth(): number {
     return Math.max(0, this.depth - 1); // waiting behind the request on the wire
@@ -175,7 +192,11 @@ export class ModbusTcpDevice implements Device {
     // The request on the wire may carry the driven image: let it finish so the safe write is the last.
     // Not for the whole deadline: a request the device lost (it restarted under it) never finishes, and
     // the safe write needs time left to go out again on a fresh connection.
-    const drained = await withTimeout(this.queue, Math.max(1, Math.floor(deadlineMs / 2)), 'pending requests').then(
+    const drained = await withTimeout(
+      this.queue,
+      Math.max(1, Math.floor(deadlineMs / 2)),
+      'pending requests',
+    ).then(
       () => true,
       () => false,
     );
@@ -283,7 +304,9 @@ export class ModbusTcpDevice implements Device {
         if (this.readBackRefused !== null && wrote) {
           // The device takes writes but refuses reads of the same outputs: detection is not possible.
           this.readBackOn = false;
-          this.listener?.log?.(`device "${this.info.id}" refuses reads of its outputs (${this.readBackRefused}): another Modbus master writing them cannot be detected`);
+          this.listener?.log?.(
+            `device "${this.info.id}" refuses reads of its outputs (${this.readBackRefused}): another Modbus master writing them cannot be detected`,
+          );
         }
         await this.readAll();
       });
@@ -306,7 +329,11 @@ export class ModbusTcpDevice implements Device {
     client.setID(this.cfg.unitId);
     this.client = client;
     try {
-      await withTimeout(client.connectTCP(this.cfg.host, { port: this.cfg.port }), timeoutMs, `connect to ${this.info.target}`);
+      await withTimeout(
+        client.connectTCP(this.cfg.host, { port: this.cfg.port }),
+        timeoutMs,
+        `connect to ${this.info.target}`,
+      );
     } catch (e) {
       this.dropClient();
       this.nextConnectAt = Date.now() + this.backoffMs;
@@ -343,7 +370,10 @@ export class ModbusTcpDevice implements Device {
     }, CONNECTION_CHECK_MS);
     // A long wait (the safe write on a slow device) still counts as failed polls every timeoutMs, so
     // the device goes offline with stale inputs as promptly as a device that does not answer at all.
-    const slow = timeoutMs > this.requestTimeoutMs ? setInterval(() => this.noteSlow(timeoutMs), Math.max(this.requestTimeoutMs, this.cfg.pollMs)) : undefined;
+    const slow =
+      timeoutMs > this.requestTimeoutMs
+        ? setInterval(() => this.noteSlow(timeoutMs), Math.max(this.requestTimeoutMs, this.cfg.pollMs))
+        : undefined;
     return withTimeout(Promise.race([job(), closed]), timeoutMs + 100, 'Modbus request').finally(() => {
       clearInterval(slow);
       clearInterval(watch);
@@ -354,7 +384,11 @@ export class ModbusTcpDevice implements Device {
   /** The safe write has waited another `timeoutMs` without an answer: one more failed poll, the connection kept. */
   private noteSlow(waitMs: number): void {
     this.failedPolls++;
-    this.noteError(new Error(`request timed out after ${this.cfg.timeoutMs} ms; the safe write keeps waiting up to ${waitMs} ms for the answer`));
+    this.noteError(
+      new Error(
+        `request timed out after ${this.cfg.timeoutMs} ms; the safe write keeps waiting up to ${waitMs} ms for the answer`,
+      ),
+    );
     this.offlineIfDue(this.error ?? 'no answer');
   }
 
@@ -384,14 +418,17 @@ export class ModbusTcpDevice implements Device {
     for (const b of this.readBlocks) {
       const n = b.points.length;
       let raw: readonly (boolean | number)[];
-      if (b.table === 'discreteInputs') raw = (await this.request(() => client.readDiscreteInputs(b.start, n))).data;
+      if (b.table === 'discreteInputs')
+        raw = (await this.request(() => client.readDiscreteInputs(b.start, n))).data;
       else if (b.table === 'coils') raw = (await this.request(() => client.readCoils(b.start, n))).data;
-      else if (b.table === 'inputRegisters') raw = (await this.request(() => client.readInputRegisters(b.start, n))).data;
+      else if (b.table === 'inputRegisters')
+        raw = (await this.request(() => client.readInputRegisters(b.start, n))).data;
       else raw = (await this.request(() => client.readHoldingRegisters(b.start, n))).data;
       b.points.forEach((p, i) => {
         const r = raw[i];
         const value = typeof r === 'boolean' ? r : fromRegister(p.type, r ?? 0);
-        if (this.inputs.get(p.address) !== value || this.quality.get(p.address) !== 'good') changed.set(p.address, value);
+        if (this.inputs.get(p.address) !== value || this.quality.get(p.address) !== 'good')
+          changed.set(p.address, value);
         this.inputs.set(p.address, value);
       });
     }
@@ -412,13 +449,26 @@ export class ModbusTcpDevice implements Device {
     if (!this.final && this.handsOff && this.mode === 'safe' && this.safeAcked) return false;
     const version = this.desiredVersion;
     const mode = this.mode;
-    const timeoutMs = mode === 'safe' && !this.final ? Math.max(this.requestTimeoutMs, this.cfg.safeWriteTimeoutMs) : this.requestTimeoutMs;
-    const image = this.writeBlocks.map((b) => b.points.map((p) => this.desired.get(p.address) ?? zeroOf(p.type)));
+    const timeoutMs =
+      mode === 'safe' && !this.final
+        ? Math.max(this.requestTimeoutMs, this.cfg.safeWriteTimeoutMs)
+        : this.requestTimeoutMs;
+    const image = this.writeBlocks.map((b) =>
+      b.points.map((p) => this.desired.get(p.address) ?? zeroOf(p.type)),
+    );
     const changed = new Map<string, WireValue>();
     try {
       for (const [i, b] of this.writeBlocks.entries()) {
         const vals = image[i] ?? [];
-        if (b.table === 'coils') await this.request(() => client.writeCoils(b.start, vals.map((v) => v === true)), timeoutMs);
+        if (b.table === 'coils')
+          await this.request(
+            () =>
+              client.writeCoils(
+                b.start,
+                vals.map((v) => v === true),
+              ),
+            timeoutMs,
+          );
         else await this.request(() => client.writeRegisters(b.start, vals.map(toRegister)), timeoutMs);
         b.points.forEach((p, k) => {
           const v = vals[k] ?? zeroOf(p.type);
@@ -486,7 +536,8 @@ export class ModbusTcpDevice implements Device {
     this.foreignChangeAt = Date.now();
     if (this.handsOff) return; // already reported; writing stays stopped
     const [a, v, wrote] = diffs[0]!;
-    const more = diffs.length > 1 ? `, and ${diffs.length - 1} more output${diffs.length > 2 ? 's' : ''}` : '';
+    const more =
+      diffs.length > 1 ? `, and ${diffs.length - 1} more output${diffs.length > 2 ? 's' : ''}` : '';
     this.conflictText = `another Modbus master is writing device "${this.info.id}"'s outputs (${a} read back ${onOff(v)}, we wrote ${onOff(wrote)}${more})`;
     this.handsOff = true;
     const wasDriven = this.mode === 'drive';
@@ -501,7 +552,8 @@ export class ModbusTcpDevice implements Device {
       for (const b of this.writeBlocks) {
         for (const p of b.points) {
           const safe = zero.get(p.address) ?? zeroOf(p.type);
-          if (seen.get(p.address) !== this.written.get(p.address) || this.written.get(p.address) === safe) continue;
+          if (seen.get(p.address) !== this.written.get(p.address) || this.written.get(p.address) === safe)
+            continue;
           if (b.table === 'coils') await this.request(() => client.writeCoil(p.register, safe === true));
           else await this.request(() => client.writeRegister(p.register, toRegister(safe)));
           this.written.set(p.address, safe);
@@ -524,7 +576,9 @@ export class ModbusTcpDevice implements Device {
     this.safeAcked = acked;
     if (!pending) {
       if (this.pendingLogged && this.safeSince !== null && acked) {
-        this.listener?.log?.(`device "${this.info.id}": safe state acknowledged after ${((Date.now() - this.safeSince) / 1000).toFixed(1)} s`);
+        this.listener?.log?.(
+          `device "${this.info.id}": safe state acknowledged after ${((Date.now() - this.safeSince) / 1000).toFixed(1)} s`,
+        );
       }
       this.safeSince = null;
       this.pendingLogged = false;

@@ -24,7 +24,9 @@ class Proxy {
 
   static async start(targetPort: number): Promise<Proxy> {
     const server = createServer();
-    const port = await new Promise<number>((r) => server.listen(0, '127.0.0.1', () => r((server.address() as { port: number }).port)));
+    const port = await new Promise<number>((r) =>
+      server.listen(0, '127.0.0.1', () => r((server.address() as { port: number }).port)),
+    );
     const proxy = new Proxy(server, port);
     server.on('connection', (client) => {
       const upstream = connect(targetPort, '127.0.0.1');
@@ -79,7 +81,16 @@ describe('a connection reset while the safe write is on the wire', () => {
     proxy = await Proxy.start(plant.port);
     const lines: string[] = [];
     const config = resolveConfig({
-      devices: [{ id: 'plant', host: '127.0.0.1', port: proxy.port, pollMs: 20, timeoutMs: 200, points: [{ address: '%IX0.0' }, { address: '%QX0.0', count: 4 }] }],
+      devices: [
+        {
+          id: 'plant',
+          host: '127.0.0.1',
+          port: proxy.port,
+          pollMs: 20,
+          timeoutMs: 200,
+          points: [{ address: '%IX0.0' }, { address: '%QX0.0', count: 4 }],
+        },
+      ],
     });
     const running = await startGateway({ port: 0, config, distDir: null, log: (l) => lines.push(l) });
     gw = running;
@@ -109,7 +120,16 @@ describe('a connection reset while the safe write is on the wire', () => {
     plant = await PyModbusServer.start(await freeLoopbackPort());
     proxy = await Proxy.start(plant.port);
     const config = resolveConfig({
-      devices: [{ id: 'plant', host: '127.0.0.1', port: proxy.port, pollMs: 20, timeoutMs: 200, points: [{ address: '%IX0.0' }, { address: '%QX0.0', count: 4 }] }],
+      devices: [
+        {
+          id: 'plant',
+          host: '127.0.0.1',
+          port: proxy.port,
+          pollMs: 20,
+          timeoutMs: 200,
+          points: [{ address: '%IX0.0' }, { address: '%QX0.0', count: 4 }],
+        },
+      ],
     });
     const running = await startGateway({ port: 0, config, distDir: null, log: () => undefined });
     gw = running;
