@@ -17,8 +17,12 @@ export interface PouCommandOps {
 /** Editable POU properties: `returnType` only for a FUNCTION (`undefined` removes it). */
 export type PouPatch = Partial<Pick<PouProps, 'comment' | 'returnType' | 'kind'>>;
 
+/** The languages a new POU can be written in (its body: LD networks or ST text). */
+export type NewPouLanguage = 'LD' | 'ST';
+
 export interface PouCommands {
-  addPou(kind: PouKind, name?: string): PouId | undefined;
+  /** A new POU (LD by default: one empty network; ST: an empty body text), opened. */
+  addPou(kind: PouKind, name?: string, language?: NewPouLanguage): PouId | undefined;
   renamePou(id: PouId, name: string): boolean;
   duplicatePou(id: PouId): PouId | undefined;
   deletePou(id: PouId): boolean;
@@ -40,13 +44,13 @@ export function pouCommands({ project, commit, open }: PouCommandOps): PouComman
   const find = (id: PouId) => project().pous.find((p) => p.id === id);
 
   return {
-    addPou: (kind, name) => {
+    addPou: (kind, name, language = 'LD') => {
       const p = project();
       const chosen = name?.trim() || freshPouName(p, DEFAULT_NAMES[kind]);
       if (pouNameProblem(p, chosen)) return undefined;
       const pou = newPou(chosen, {
         kind,
-        networks: [newNetwork()],
+        ...(language === 'ST' ? { language: 'ST' as const, networks: [], source: '' } : { networks: [newNetwork()] }),
         ...(kind === 'FUNCTION' ? { returnType: 'BOOL' } : {}),
       });
       const changes: Change[] = [{ type: 'pou.add', index: p.pous.length, pou }];

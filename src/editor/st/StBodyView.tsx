@@ -13,8 +13,8 @@ export function StBodyView({ pou }: { readonly pou: Pou }) {
     <section className="rs-st-body" aria-label={`ST body of ${pou.name}`} data-testid="st-body-view">
       <p className="rs-st-note" id={`st-note-${pou.id}`}>
         <strong>{pou.name}</strong> ({KIND_TITLES[pou.kind].toLowerCase()}
-        {pou.kind === 'FUNCTION' && pou.returnType ? ` : ${pou.returnType}` : ''}, ST). Tab indents; Esc then Tab
-        leaves the editor; Ctrl+F finds; Ctrl+Z undoes in the project&apos;s history.
+        {pou.kind === 'FUNCTION' && pou.returnType ? ` : ${pou.returnType}` : ''}, ST). Tab indents; Esc then
+        Tab leaves the editor; Ctrl+F finds; Ctrl+Z undoes in the project&apos;s history.
       </p>
       <StEditor ctx={ctx} />
     </section>

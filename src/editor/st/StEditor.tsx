@@ -22,7 +22,9 @@ export interface StEditorProps {
 const NONE: readonly Extension[] = [];
 
 const readOnlyExtension = (readOnly: boolean): Extension =>
-  readOnly ? [EditorState.readOnly.of(true), EditorView.contentAttributes.of({ 'aria-readonly': 'true' })] : [];
+  readOnly
+    ? [EditorState.readOnly.of(true), EditorView.contentAttributes.of({ 'aria-readonly': 'true' })]
+    : [];
 
 const labelExtension = (name: string, readOnly: boolean): Extension =>
   EditorView.contentAttributes.of({
@@ -34,7 +36,11 @@ export function StEditor({ ctx, extensions = NONE, readOnly = false }: StEditorP
   const store = useDocumentStore();
   const host = useRef<HTMLDivElement>(null);
   const view = useRef<EditorView | undefined>(undefined);
-  const compartments = useRef({ extra: new Compartment(), readOnly: new Compartment(), label: new Compartment() });
+  const compartments = useRef({
+    extra: new Compartment(),
+    readOnly: new Compartment(),
+    label: new Compartment(),
+  });
   // The first values, for the view created once (later changes reconfigure it below).
   const initial = useRef({ ctx, extensions, readOnly });
   const pouName = useDocument((s) => s.project.pous.find((p) => p.id === ctx.pouId)?.name ?? '');

@@ -12,30 +12,125 @@ import { RangeSetBuilder, StateField, type EditorState, type Extension, type Tex
 import { Decoration, EditorView, type DecorationSet } from '@codemirror/view';
 import { foldService, StreamLanguage, syntaxHighlighting, type StreamParser } from '@codemirror/language';
 import { Tag, tagHighlighter, tags } from '@lezer/highlight';
-import { identEnd, locationEnd, numberEnd, stringEnd, symbolAt, typedLiteralEnd } from '../../engine/st/lexer';
+import {
+  identEnd,
+  locationEnd,
+  numberEnd,
+  stringEnd,
+  symbolAt,
+  typedLiteralEnd,
+} from '../../engine/st/lexer';
 import { ELEMENTARY_TYPES } from '../../model/iecTypes';
 import { blockAt, CLOSING_WORDS, OPENING_WORDS, stStructure, type StStructure } from './stBlocks';
 
 const CONTROL = new Set([
-  'IF', 'THEN', 'ELSIF', 'ELSE', 'END_IF', 'CASE', 'OF', 'END_CASE', 'FOR', 'TO', 'BY', 'DO', 'END_FOR',
-  'WHILE', 'END_WHILE', 'REPEAT', 'UNTIL', 'END_REPEAT', 'EXIT', 'RETURN', 'CONTINUE', 'JMP',
+  'IF',
+  'THEN',
+  'ELSIF',
+  'ELSE',
+  'END_IF',
+  'CASE',
+  'OF',
+  'END_CASE',
+  'FOR',
+  'TO',
+  'BY',
+  'DO',
+  'END_FOR',
+  'WHILE',
+  'END_WHILE',
+  'REPEAT',
+  'UNTIL',
+  'END_REPEAT',
+  'EXIT',
+  'RETURN',
+  'CONTINUE',
+  'JMP',
 ]);
 const DEFINITION = new Set([
-  'PROGRAM', 'END_PROGRAM', 'FUNCTION', 'END_FUNCTION', 'FUNCTION_BLOCK', 'END_FUNCTION_BLOCK',
-  'VAR', 'VAR_INPUT', 'VAR_OUTPUT', 'VAR_IN_OUT', 'VAR_GLOBAL', 'VAR_EXTERNAL', 'VAR_TEMP', 'VAR_ACCESS',
-  'VAR_CONFIG', 'VAR_STAT', 'VAR_INST', 'END_VAR', 'TYPE', 'END_TYPE', 'STRUCT', 'END_STRUCT', 'ARRAY', 'AT',
-  'CONSTANT', 'RETAIN', 'NON_RETAIN', 'PERSISTENT', 'R_EDGE', 'F_EDGE', 'REF_TO', 'POINTER', 'REFERENCE',
-  'ACTION', 'END_ACTION', 'METHOD', 'END_METHOD', 'EXTENDS', 'IMPLEMENTS', 'THIS', 'SUPER',
+  'PROGRAM',
+  'END_PROGRAM',
+  'FUNCTION',
+  'END_FUNCTION',
+  'FUNCTION_BLOCK',
+  'END_FUNCTION_BLOCK',
+  'VAR',
+  'VAR_INPUT',
+  'VAR_OUTPUT',
+  'VAR_IN_OUT',
+  'VAR_GLOBAL',
+  'VAR_EXTERNAL',
+  'VAR_TEMP',
+  'VAR_ACCESS',
+  'VAR_CONFIG',
+  'VAR_STAT',
+  'VAR_INST',
+  'END_VAR',
+  'TYPE',
+  'END_TYPE',
+  'STRUCT',
+  'END_STRUCT',
+  'ARRAY',
+  'AT',
+  'CONSTANT',
+  'RETAIN',
+  'NON_RETAIN',
+  'PERSISTENT',
+  'R_EDGE',
+  'F_EDGE',
+  'REF_TO',
+  'POINTER',
+  'REFERENCE',
+  'ACTION',
+  'END_ACTION',
+  'METHOD',
+  'END_METHOD',
+  'EXTENDS',
+  'IMPLEMENTS',
+  'THIS',
+  'SUPER',
 ]);
 const OPERATOR_WORDS = new Set(['AND', 'OR', 'XOR', 'NOT', 'MOD', 'AND_THEN', 'OR_ELSE', 'REF']);
 const TYPES = new Set<string>([
   ...ELEMENTARY_TYPES,
-  'TIME_OF_DAY', 'DATE_AND_TIME', 'LTIME', 'LDATE', 'LTOD', 'LDT', 'LTIME_OF_DAY', 'LDATE_AND_TIME', 'CHAR', 'WCHAR',
-  'ANY', 'ANY_DERIVED', 'ANY_ELEMENTARY', 'ANY_MAGNITUDE', 'ANY_NUM', 'ANY_REAL', 'ANY_INT', 'ANY_BIT',
-  'ANY_STRING', 'ANY_DATE',
+  'TIME_OF_DAY',
+  'DATE_AND_TIME',
+  'LTIME',
+  'LDATE',
+  'LTOD',
+  'LDT',
+  'LTIME_OF_DAY',
+  'LDATE_AND_TIME',
+  'CHAR',
+  'WCHAR',
+  'ANY',
+  'ANY_DERIVED',
+  'ANY_ELEMENTARY',
+  'ANY_MAGNITUDE',
+  'ANY_NUM',
+  'ANY_REAL',
+  'ANY_INT',
+  'ANY_BIT',
+  'ANY_STRING',
+  'ANY_DATE',
 ]);
 /** Type prefixes of duration and date literals: T#5s, TIME#1h2m, TOD#12:00:00, D#2024-01-01. */
-const TIME_PREFIXES = new Set(['T', 'TIME', 'LT', 'LTIME', 'TOD', 'TIME_OF_DAY', 'LTOD', 'D', 'DATE', 'LD', 'LDATE', 'DT', 'DATE_AND_TIME', 'LDT']);
+const TIME_PREFIXES = new Set([
+  'T',
+  'TIME',
+  'LT',
+  'LTIME',
+  'TOD',
+  'TIME_OF_DAY',
+  'LTOD',
+  'D',
+  'DATE',
+  'LD',
+  'LDATE',
+  'DT',
+  'DATE_AND_TIME',
+  'LDT',
+]);
 
 /** Duration and date literals (a kind of number). */
 export const timeLiteralTag = Tag.define(tags.number);
@@ -44,7 +139,8 @@ export const addressTag = Tag.define(tags.variableName);
 
 /** Words after which the next line is indented, besides the block openers (ELSE, THEN, DO, OF...). */
 const DEDENT = /^\s*([A-Za-z_][A-Za-z0-9_]*)/;
-const dedents = (w: string): boolean => CLOSING_WORDS.has(w) || w === 'ELSE' || w === 'ELSIF' || w === 'UNTIL';
+const dedents = (w: string): boolean =>
+  CLOSING_WORDS.has(w) || w === 'ELSE' || w === 'ELSIF' || w === 'UNTIL';
 
 interface StState {
   /** Inside a comment or pragma that spans lines: what closes it. */
@@ -53,7 +149,11 @@ interface StState {
   depth: number;
 }
 
-function skipTo(stream: { string: string; pos: number; skipToEnd(): void }, state: StState, close: string): void {
+function skipTo(
+  stream: { string: string; pos: number; skipToEnd(): void },
+  state: StState,
+  close: string,
+): void {
   const end = stream.string.indexOf(close, stream.pos);
   if (end < 0) stream.skipToEnd();
   else {
@@ -197,7 +297,8 @@ function keywordMatches(state: EditorState): DecorationSet {
   if (hit) {
     const { block } = hit;
     const mark = block.close ? matchMark : noMatchMark;
-    for (const w of [block.open, ...block.middles, ...(block.close ? [block.close] : [])]) builder.add(w.from, w.to, mark);
+    for (const w of [block.open, ...block.middles, ...(block.close ? [block.close] : [])])
+      builder.add(w.from, w.to, mark);
     return builder.finish();
   }
   const stray = s.stray.find((w) => head.head >= w.from && head.head <= w.to);

@@ -27,7 +27,10 @@ export function textDiff(a: string, b: string): ChangeSet {
   while (start < max && a.charCodeAt(start) === b.charCodeAt(start)) start++;
   let end = 0;
   while (end < max - start && a.charCodeAt(a.length - 1 - end) === b.charCodeAt(b.length - 1 - end)) end++;
-  return ChangeSet.of(a === b ? [] : [{ from: start, to: a.length - end, insert: b.slice(start, b.length - end) }], a.length);
+  return ChangeSet.of(
+    a === b ? [] : [{ from: start, to: a.length - end, insert: b.slice(start, b.length - end) }],
+    a.length,
+  );
 }
 
 class ModelSync {
@@ -94,7 +97,8 @@ class ModelSync {
     const pou = this.store.getState().project.pous.find((p) => p.id === this.pouId);
     this.base = text;
     this.local = ChangeSet.empty(text.length);
-    if (pou && pou.source !== text) this.store.getState().setPouSource(this.pouId, text, stEditStepName(pou.name));
+    if (pou && pou.source !== text)
+      this.store.getState().setPouSource(this.pouId, text, stEditStepName(pou.name));
   }
 
   /** The model's text changed elsewhere: merge that change with the burst not yet committed. */
@@ -122,7 +126,10 @@ class ModelSync {
 }
 
 /** The document and POU an editor is linked to. */
-const modelLink = Facet.define<{ store: DocumentStore; pouId: PouId }, { store: DocumentStore; pouId: PouId } | undefined>({
+const modelLink = Facet.define<
+  { store: DocumentStore; pouId: PouId },
+  { store: DocumentStore; pouId: PouId } | undefined
+>({
   combine: (v) => v[0],
 });
 
