@@ -3,7 +3,7 @@
 // the END_* that closes it, and where the multi-line comments are. Read tolerantly (an unclosed
 // comment or string runs to the end, a stray END_* is kept as unmatched) so it works on text being
 // typed. Used by keyword matching and folding (stLanguage.ts). Pure: no DOM, no CodeMirror.
-import { identEnd, locationEnd, numberEnd, stringEnd, typedLiteralEnd } from '../../engine/st/lexer';
+import { identEnd, isIdentStartCode, locationEnd, numberEnd, stringEnd, typedLiteralEnd } from '../../engine/st/lexer';
 
 export interface Word {
   readonly from: number;
@@ -85,6 +85,12 @@ export function stStructure(text: string): StStructure {
   let i = 0;
   const n = text.length;
   while (i < n) {
+    const code = text.charCodeAt(i);
+    // Spaces, operators and punctuation: nothing to read (the common case, by character code).
+    if (code <= 32 || code === 59 || code === 58 || code === 61 || code === 44 || code === 41 || code === 43 || code === 45 || code === 62 || code === 60) {
+      i++;
+      continue;
+    }
     const c = text[i]!;
     if (c === '(' && text[i + 1] === '*') {
       const end = text.indexOf('*)', i + 2);
@@ -123,7 +129,7 @@ export function stStructure(text: string): StStructure {
       i = Math.max(i + 1, numberEnd(text, i));
       continue;
     }
-    if (/[A-Za-z_]/.test(c)) {
+    if (isIdentStartCode(code)) {
       const end = identEnd(text, i);
       if (text[end] === '#') {
         i = typedLiteralEnd(text, end);

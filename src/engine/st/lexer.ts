@@ -16,8 +16,11 @@ export interface Token {
 /** The operator and punctuation symbols, longest first where one starts another. */
 export const SYMBOLS: readonly string[] = ['**', ':=', '=>', '<=', '>=', '<>', '..', '+', '-', '*', '/', '=', '<', '>', '(', ')', ',', ';', ':', '.', '&', '[', ']', '^', '#'];
 
-const isIdentStart = (c: string): boolean => /[A-Za-z_]/.test(c);
-const isIdentChar = (c: string): boolean => /[A-Za-z0-9_]/.test(c);
+/** A letter or `_` (by character code: the lexer runs on every keystroke in the ST editor). */
+export const isIdentStartCode = (k: number): boolean => (k >= 65 && k <= 90) || (k >= 97 && k <= 122) || k === 95;
+const isIdentCode = (k: number): boolean => isIdentStartCode(k) || (k >= 48 && k <= 57);
+const isIdentStart = (c: string): boolean => isIdentStartCode(c.charCodeAt(0));
+const isIdentChar = (c: string): boolean => isIdentCode(c.charCodeAt(0));
 const isDigit = (c: string): boolean => c >= '0' && c <= '9';
 
 // The scanners below give the end (exclusive) of one token starting at `i`; the lexer and the
@@ -26,7 +29,7 @@ const isDigit = (c: string): boolean => c >= '0' && c <= '9';
 /** End of the identifier at `i` (its first character is a letter or `_`). */
 export function identEnd(text: string, i: number): number {
   let end = i;
-  while (end < text.length && isIdentChar(text[end]!)) end++;
+  while (end < text.length && isIdentCode(text.charCodeAt(end))) end++;
   return end;
 }
 
