@@ -118,14 +118,10 @@ test('an ST POU opens editable, highlighted, with block matching, folding and in
 
 test('typing is one named undo step per burst; Ctrl+Z and Ctrl+Y in the editor are the project undo and redo', async () => {
   await page.evaluate(({ p }) => window.rungsmith!.documentStore!.getState().loadProject(p), {
-    p: newProject('Undo', {
-      pous: [
-        newPou('Main'),
-        newPou('Calc', { kind: 'FUNCTION_BLOCK', language: 'ST', networks: [], source: '' }),
-      ],
-    }),
+    // Main, the program the task runs, written in ST.
+    p: newProject('Undo', { pous: [newPou('Main', { language: 'ST', networks: [], source: '' })] }),
   });
-  await openPou('Calc');
+  await openPou('Main');
   await content().click();
   // Smart indentation: after THEN the next line is indented; END_IF dedents as it is typed.
   await page.keyboard.type('IF Start THEN');
@@ -135,18 +131,18 @@ test('typing is one named undo step per burst; Ctrl+Z and Ctrl+Y in the editor a
   await page.keyboard.type('END_IF;');
   const typed = 'IF Start THEN\n    Run := TRUE;\nEND_IF;';
   expect(await shownText()).toBe(typed);
-  await poll(() => source('Calc')).toBe(typed);
-  expect(await undoName()).toBe('Edit ST body of Calc');
+  await poll(() => source('Main')).toBe(typed);
+  expect(await undoName()).toBe('Edit ST body of Main');
 
   // A second burst, ended by the pause.
   await page.keyboard.press('Enter');
   await page.keyboard.type('Count := Count + 1;');
   const second = `${typed}\nCount := Count + 1;`;
-  await poll(() => source('Calc')).toBe(second);
+  await poll(() => source('Main')).toBe(second);
 
   await page.keyboard.press('Control+z');
   await poll(shownText).toBe(typed);
-  expect(await source('Calc')).toBe(typed);
+  expect(await source('Main')).toBe(typed);
   await page.keyboard.press('Control+z');
   await poll(shownText).toBe('');
   await page.keyboard.press('Control+y');
@@ -155,12 +151,36 @@ test('typing is one named undo step per burst; Ctrl+Z and Ctrl+Y in the editor a
   await poll(shownText).toBe(second);
   // The cursor is where the redo happened: typing goes on at the end.
   await page.keyboard.type(' // more');
-  await poll(() => source('Calc')).toBe(`${second} // more`);
+  await poll(() => source('Main')).toBe(`${second} // more`);
   // An edit not committed yet goes to the model before Undo undoes it.
   await page.keyboard.type('!');
   await page.keyboard.press('Control+z');
   await poll(shownText).toBe(`${second} // more`);
-  expect(await source('Calc')).toBe(`${second} // more`);
+  expect(await source('Main')).toBe(`${second} // more`);
+
+  // A syntax error, then F5 in the editor: the burst goes in first, and Run is refused with the
+  // rule id, the POU and the line and column.
+  await content().press('Control+End');
+  await page.keyboard.press('Enter');
+  await page.keyboard.type('Count := ;');
+  await page.keyboard.press('F5');
+  const refusal = () =>
+    page.evaluate(() =>
+      (
+        window.rungsmith as unknown as {
+          simStore: { getState(): { refusal?: { diagnostics: { rule: string; message: string }[] } } };
+        }
+      ).simStore
+        .getState()
+        .refusal?.diagnostics.map((d) => `${d.rule} ${d.message}`),
+    );
+  await poll(refusal).toEqual(
+    expect.arrayContaining([
+      expect.stringMatching(/^LD-E50 the ST body of Main does not compile: line 5 col 10/),
+    ]),
+  );
+  expect(await page.getByTestId('sim-mode').textContent()).not.toMatch(/Running/);
+  expect(await source('Main')).toBe(`${second} // more\nCount := ;`);
   expect(errors).toEqual([]);
 });
 

@@ -158,6 +158,13 @@ export function modelSync(store: DocumentStore, pouId: PouId): Extension {
   return [
     modelLink.of({ store, pouId }),
     syncPlugin,
+    // A command key (Ctrl+S, F5...) may act on the model: the burst typed so far goes in first.
+    EditorView.domEventHandlers({
+      keydown: (e, view) => {
+        if (e.ctrlKey || e.metaKey || /^F\d+$/.test(e.key)) commitStEdit(view);
+        return false;
+      },
+    }),
     Prec.high(
       keymap.of([
         { key: 'Mod-z', run: undoRedo('undo'), preventDefault: true },
