@@ -25,6 +25,7 @@ import { pouFingerprint } from './otherPous';
 import { unknownBlocks } from './unknownBlocks';
 import { readSfcChart } from './sfcChart';
 import { upgradeLegacySfc, upgradeLegacyText } from './legacySfc';
+import { textLineStarts } from './xml/write';
 import { PROFILE_DATA_NAME, chooseProfile } from './profileChoice';
 import {
   TC6_0200,
@@ -535,13 +536,21 @@ function splitLibraries(
   return { pous: pous.filter((p) => !taken.has(p)), dataTypes: types.filter((t) => !taken.has(t)), libraries };
 }
 
-/** The source text of an element, its continuation lines dedented by the element's own indentation. */
+/**
+ * The source text of an element, its continuation lines dedented by the element's own indentation
+ * (not the lines inside text, e.g. an ST body's CDATA: they are kept as written).
+ */
 function rawElement(text: string, el: XmlElement): string {
   const lineStart = text.lastIndexOf('\n', el.offset - 1) + 1;
   const lead = text.slice(lineStart, el.offset);
   const indent = /^[ \t]*$/.test(lead) ? lead.length : 0;
-  const lines = text.slice(el.offset, el.end).replace(/\r\n?/g, '\n').split('\n');
-  return lines.map((l, i) => (i === 0 ? l : l.replace(new RegExp(`^[ \\t]{0,${indent}}`), ''))).join('\n');
+  const source = text.slice(el.offset, el.end).replace(/\r\n?/g, '\n');
+  const inText = textLineStarts(source);
+  const dedent = new RegExp(`^[ \\t]{0,${indent}}`);
+  return source
+    .split('\n')
+    .map((l, i) => (i === 0 || inText[i - 1] ? l : l.replace(dedent, '')))
+    .join('\n');
 }
 
 /** The pins of a standard block as `XIN1, XIN2, EPS -> Q`. */

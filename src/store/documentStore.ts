@@ -21,8 +21,9 @@
 //   setActivePou(id)                  shows the POU on the canvas and opens its tab
 //   closePou(id)                      closes its tab (the last open tab stays)
 //   openPouIds                        the POUs open as tabs above the canvas (not part of history)
-//   addPou(kind, name?)               a new PROGRAM / FUNCTION_BLOCK / FUNCTION with one network,
-//                                     opened; a new PROGRAM gets an instance in the first task
+//   addPou(kind, name?, language?)    a new PROGRAM / FUNCTION_BLOCK / FUNCTION with one network
+//                                     (or, language 'ST', an empty ST body), opened; a new PROGRAM
+//                                     gets an instance in the first task
 //   renamePou(id, name)               references follow: calls' blockType, instance variable types
 //                                     (POUs and globals), task program entries; false if the name
 //                                     is taken or not an identifier (pouNameProblem)
@@ -30,6 +31,7 @@
 //   deletePou(id)                     also drops its task entries; calls stay (checks report them);
 //                                     never the last POU (see pouUsages() for what uses it)
 //   updatePou(id, {comment, kind, returnType})   a FUNCTION always has a return type
+//   setPouSource(id, text, name)      the body text of an ST/IL POU, one step named `name`
 //   addDataType(kind, name?) / renameDataType(name, to) / duplicateDataType(name) /
 //   deleteDataType(name) / updateDataType(name, {def, initial, comment})   user data types
 //                                     (src/store/dataTypeCommands.ts); a rename retypes every
@@ -141,6 +143,7 @@ export interface DocumentState {
   duplicatePou: PouCommands['duplicatePou'];
   deletePou: PouCommands['deletePou'];
   updatePou: PouCommands['updatePou'];
+  setPouSource: PouCommands['setPouSource'];
   addDataType: DataTypeCommands['addDataType'];
   renameDataType: DataTypeCommands['renameDataType'];
   duplicateDataType: DataTypeCommands['duplicateDataType'];

@@ -17,12 +17,21 @@ export interface PouCommandOps {
 /** Editable POU properties: `returnType` only for a FUNCTION (`undefined` removes it). */
 export type PouPatch = Partial<Pick<PouProps, 'comment' | 'returnType' | 'kind'>>;
 
+/** The languages a new POU can be written in (its body: LD networks or ST text). */
+export type NewPouLanguage = 'LD' | 'ST';
+
 export interface PouCommands {
-  addPou(kind: PouKind, name?: string): PouId | undefined;
+  /** A new POU (LD by default: one empty network; ST: an empty body text), opened. */
+  addPou(kind: PouKind, name?: string, language?: NewPouLanguage): PouId | undefined;
   renamePou(id: PouId, name: string): boolean;
   duplicatePou(id: PouId): PouId | undefined;
   deletePou(id: PouId): boolean;
   updatePou(id: PouId, patch: PouPatch): boolean;
+  /**
+   * The body text of an ST (or IL) POU, one undo step named `name` (the ST editor commits a typing
+   * burst as "Edit ST body of Scale"). False when the POU has no text body or nothing changed.
+   */
+  setPouSource(id: PouId, text: string, name: string): boolean;
 }
 
 const DEFAULT_NAMES: Record<PouKind, string> = {
@@ -35,13 +44,13 @@ export function pouCommands({ project, commit, open }: PouCommandOps): PouComman
   const find = (id: PouId) => project().pous.find((p) => p.id === id);
 
   return {
-    addPou: (kind, name) => {
+    addPou: (kind, name, language = 'LD') => {
       const p = project();
       const chosen = name?.trim() || freshPouName(p, DEFAULT_NAMES[kind]);
       if (pouNameProblem(p, chosen)) return undefined;
       const pou = newPou(chosen, {
         kind,
-        networks: [newNetwork()],
+        ...(language === 'ST' ? { language: 'ST' as const, networks: [], source: '' } : { networks: [newNetwork()] }),
         ...(kind === 'FUNCTION' ? { returnType: 'BOOL' } : {}),
       });
       const changes: Change[] = [{ type: 'pou.add', index: p.pous.length, pou }];
@@ -94,6 +103,12 @@ export function pouCommands({ project, commit, open }: PouCommandOps): PouComman
         changes.push({ type: 'tasks.update', before: p.tasks, after: tasks });
       }
       commit('deletePou', changes);
+      return true;
+    },
+    setPouSource: (id, text, name) => {
+      const pou = find(id);
+      if (!pou || (pou.language !== 'ST' && pou.language !== 'IL') || pou.source === text) return false;
+      commit(name, [{ type: 'pou.update', pou: id, before: { source: pou.source }, after: { source: text } }]);
       return true;
     },
     updatePou: (id, patch) => {

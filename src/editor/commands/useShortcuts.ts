@@ -26,6 +26,15 @@ export function isTypingTarget(target: EventTarget | null): boolean {
   return tag === 'INPUT' || tag === 'TEXTAREA' || tag === 'SELECT' || target.isContentEditable;
 }
 
+/**
+ * Commands whose keys also work in a code editor (the ST editor, a CodeMirror view): saving,
+ * opening, Run and Stop. Its own keys (undo, find, indent...) are handled before they get here.
+ */
+const CODE_EDITOR_COMMANDS: ReadonlySet<string> = new Set(['file.save', 'file.open', 'sim.run', 'sim.stop']);
+
+const inCodeEditor = (target: EventTarget | null): boolean =>
+  target instanceof HTMLElement && target.closest('.cm-editor') !== null;
+
 export function useShortcuts(ctx: EditorContext) {
   useEffect(() => {
     // Ctrl+V: the browser follows the key with a paste event carrying the system clipboard;
@@ -33,11 +42,14 @@ export function useShortcuts(ctx: EditorContext) {
     let pendingPaste: ReturnType<typeof setTimeout> | undefined;
 
     const onKeyDown = (e: KeyboardEvent) => {
-      if (e.defaultPrevented || isTypingTarget(e.target) || isModalOpen()) return;
+      if (e.defaultPrevented || isModalOpen()) return;
+      const codeEditor = inCodeEditor(e.target);
+      if (isTypingTarget(e.target) && !codeEditor) return;
       const ui = ctx.ui.getState();
       if (ui.editing || ui.blockPicker || ui.pastePrompt) return;
       const binding = BINDINGS.find((b) => matches(b.spec, e));
       if (!binding) return;
+      if (codeEditor && !CODE_EDITOR_COMMANDS.has(binding.command.id)) return;
       if (binding.command.id === 'edit.paste') {
         if (pendingPaste) clearTimeout(pendingPaste);
         pendingPaste = setTimeout(() => {

@@ -1,11 +1,17 @@
 // The centre of the editor: the open POUs' tabs, then the ladder canvas of the shown POU (or the
-// read-only source of a POU in another language), or the editor of an open data type.
+// ST editor of an ST POU, or the read-only source of a POU in another language or of a library
+// block), or the editor of an open data type.
+import { lazy, Suspense } from 'react';
+import { libraryInfo } from '../../model/codesysUtil';
 import { selectActivePou, useDocument } from '../../store/documentStore';
 import { LadderCanvas } from '../canvas/LadderCanvas';
 import { DataTypeEditor } from '../dataTypes/DataTypeEditor';
 import { useShownDataType } from '../dataTypes/dataTypeTabs';
 import { PouTabs } from './PouTabs';
 import { SourceView } from './SourceView';
+
+// The ST editor (CodeMirror) loads with the first ST POU opened, not with the app.
+const StBodyView = lazy(() => import('../st/StBodyView').then((m) => ({ default: m.StBodyView })));
 
 export function PouView() {
   const pou = useDocument(selectActivePou);
@@ -16,6 +22,10 @@ export function PouView() {
       <div className="rs-pou-body">
         {dataType ? (
           <DataTypeEditor name={dataType} />
+        ) : pou && pou.language === 'ST' && !libraryInfo(pou) ? (
+          <Suspense fallback={<p className="rs-st-note">Loading the ST editor…</p>}>
+            <StBodyView key={pou.id} pou={pou} />
+          </Suspense>
         ) : pou && pou.language !== 'LD' ? (
           <SourceView pou={pou} />
         ) : (

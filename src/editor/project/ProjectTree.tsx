@@ -2,8 +2,10 @@
 // the global variables and the tasks. Click a POU to open it in a tab; add, rename, duplicate and delete
 // POUs (renames follow into calls, instance types and tasks; deleting a used POU asks first).
 import { useState } from 'react';
+import { libraryInfo } from '../../model/codesysUtil';
 import type { PouId } from '../../model/ids';
 import type { Pou, PouKind } from '../../model/project';
+import type { NewPouLanguage } from '../../store/pouCommands';
 import { selectActivePouId, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { pouNameProblem, pouUsages } from '../../store/pouEdits';
 import { DataTypesSection } from '../dataTypes/DataTypesSection';
@@ -31,9 +33,10 @@ export function ProjectTree() {
   const [deleting, setDeleting] = useState<Pou | undefined>(undefined);
   const [message, setMessage] = useState('');
   const [tasksOpen, setTasksOpen] = useState(false);
+  const [language, setLanguage] = useState<NewPouLanguage>('LD');
 
   const add = (kind: PouKind) => {
-    const id = store.getState().addPou(kind);
+    const id = store.getState().addPou(kind, undefined, language);
     if (id) setRenaming(id);
   };
   const remove = (pou: Pou) => {
@@ -48,6 +51,17 @@ export function ProjectTree() {
   return (
     <section className="rs-project-tree" aria-label="Project" data-testid="project-tree">
       <div className="rs-tree-toolbar" role="group" aria-label="Add a POU">
+        <select
+          className="rs-tree-language"
+          data-testid="add-pou-language"
+          aria-label="Language of a new POU"
+          title="The language the next POU added is written in: Ladder (LD) or Structured Text (ST)"
+          value={language}
+          onChange={(e) => setLanguage(e.target.value as NewPouLanguage)}
+        >
+          <option value="LD">LD</option>
+          <option value="ST">ST</option>
+        </select>
         <button type="button" className="rs-button" data-testid="add-program" onClick={() => add('PROGRAM')}>
           + Program
         </button>
@@ -198,7 +212,7 @@ function PouRow({
           type="button"
           className="rs-tree-node"
           aria-current={active ? 'page' : undefined}
-          title={`${KIND_TITLES[pou.kind]} ${pou.name}${pou.language === 'LD' ? '' : ` (${pou.language}, read-only)`}: click to open, double-click to rename`}
+          title={`${KIND_TITLES[pou.kind]} ${pou.name}${pou.language === 'LD' ? '' : ` (${pou.language}${pou.language === 'ST' && !libraryInfo(pou) ? '' : ', read-only'})`}: click to open, double-click to rename`}
           onClick={onOpen}
           onDoubleClick={onStartRename}
           onKeyDown={(e) => {

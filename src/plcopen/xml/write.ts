@@ -40,6 +40,48 @@ function attrText(attrs: Attrs | undefined): string {
   return out;
 }
 
+/**
+ * For each line of `xml` after the first: whether it starts inside text that is part of the
+ * document (a CDATA section, a comment, or element text holding more than whitespace, e.g. the
+ * lines of an ST body in `<xhtml:p>`), where indentation must be kept as written; the other lines
+ * start in the whitespace between tags, which may be re-indented.
+ */
+export function textLineStarts(xml: string): boolean[] {
+  const out: boolean[] = [];
+  let i = 0;
+  const n = xml.length;
+  const newlines = (from: number, to: number, inText: boolean) => {
+    for (let k = xml.indexOf('\n', from); k >= 0 && k < to; k = xml.indexOf('\n', k + 1)) out.push(inText);
+  };
+  while (i < n) {
+    if (xml.startsWith('<![CDATA[', i)) {
+      const e = xml.indexOf(']]>', i);
+      const end = e < 0 ? n : e + 3;
+      newlines(i, end, true);
+      i = end;
+    } else if (xml.startsWith('<!--', i)) {
+      const e = xml.indexOf('-->', i);
+      const end = e < 0 ? n : e + 3;
+      newlines(i, end, true);
+      i = end;
+    } else if (xml[i] === '<') {
+      const e = xml.indexOf('>', i);
+      const end = e < 0 ? n : e + 1;
+      newlines(i, end, false);
+      i = end;
+    } else {
+      let end = xml.indexOf('<', i);
+      if (end < 0) end = n;
+      // Element text: significant when it holds more than whitespace, or when it runs into a CDATA
+      // section (the text of `<xhtml:p>  <![CDATA[`... stays as it is).
+      const own = !/^\s*$/.test(xml.slice(i, end));
+      newlines(i, end, own);
+      i = end;
+    }
+  }
+  return out;
+}
+
 const PADS = Array.from({ length: 32 }, (_, i) => '  '.repeat(i));
 
 /** Lines per flattened chunk: a big export would otherwise hold every line as a tree of string pieces. */
@@ -118,7 +160,10 @@ export class XmlWriter {
       return this;
     }
     const pad = this.pad();
-    for (const line of xml.split('\n')) this.add(pad + line);
+    // Lines inside text (an ST body's CDATA) are written as they are: re-indenting them would
+    // change the text.
+    const inText = xml.includes('\n') ? textLineStarts(xml) : [];
+    xml.split('\n').forEach((line, i) => this.add(i > 0 && inText[i - 1] ? line : pad + line));
     return this;
   }
 
