@@ -180,6 +180,14 @@ describe('ST completion', () => {
     expect(stCompletions(p, pouId(p, 'Main'), fn, fn.length)!.options.filter((o) => o.kind === 'parameter').map((o) => o.apply)).toEqual(['In := ', 'Lo := ', 'Hi := ']);
   });
 
+  it('reads the statement around the cursor: comments and strings before it (with ";" inside) do not confuse it', () => {
+    const p = makeProject();
+    const text = `${MAIN}(* a; b *) s := 'x;(*'; // c;\nIF Start THEN x := Motor1.`;
+    expect(labels(stCompletions(p, pouId(p, 'Main'), text, text.length))).toEqual(['Q', 'ET', 'IN', 'PT']);
+    const call = `${MAIN}H1(X := Level,\n   Limit := 80.0);\n`;
+    expect(stHover(p, pouId(p, 'Main'), call, at(call, 'Lim|it := 80'))!.title).toBe('Limit : REAL');
+  });
+
   it('offers nothing inside a comment or a string, or in a number', () => {
     const p = makeProject();
     for (const text of [`${MAIN}(* Mot`, `${MAIN}// Mot`, `${MAIN}s := 'Mot`, `${MAIN}x := 12`])

@@ -16,7 +16,7 @@ import {
   signatureWords,
   type ServiceScope,
 } from './scope';
-import { inCommentOrString, readBody, tokenBefore, type BodyText, type TextToken } from './text';
+import { inCommentOrString, readAround, tokenBefore, type BodyText, type TextToken } from './text';
 import { resolveType } from '../../../model/dataTypes';
 
 export type CompletionKind = 'variable' | 'member' | 'enum' | 'function' | 'fb' | 'keyword' | 'snippet' | 'parameter' | 'type';
@@ -137,8 +137,25 @@ function parameterCompletions(s: ServiceScope, callName: string, named: Set<stri
   return out;
 }
 
+/** The standard functions and FBs, the same for every body (made once). */
+let standard: readonly StCompletion[] | undefined;
+const standardCompletions = (): readonly StCompletion[] =>
+  (standard ??= [...FUNCTION_SIGNATURES.map((sig) => blockCompletion(sig)), ...FB_SIGNATURES.map((sig) => blockCompletion(sig, -1))]);
+
+/** The names of a scope, kept per POU object and project (both immutable): typing in a body reuses them. */
+const scopeCache = new WeakMap<object, { project: Project; statement: StCompletion[]; value: StCompletion[] }>();
+
 /** The names usable where a value or a statement starts. */
 function scopeCompletions(s: ServiceScope, statementStart: boolean): StCompletion[] {
+  const hit = scopeCache.get(s.pou);
+  if (hit && hit.project === s.project) return statementStart ? hit.statement : hit.value;
+  const value = makeScopeCompletions(s, false);
+  const statement = makeScopeCompletions(s, true);
+  scopeCache.set(s.pou, { project: s.project, statement, value });
+  return statementStart ? statement : value;
+}
+
+function makeScopeCompletions(s: ServiceScope, statementStart: boolean): StCompletion[] {
   const out: StCompletion[] = [];
   const seen = new Set<string>();
   const add = (c: StCompletion) => {
@@ -164,8 +181,7 @@ function scopeCompletions(s: ServiceScope, statementStart: boolean): StCompletio
     // A user FB is called through an instance; its type name is still offered (with its pins).
     add(blockCompletion(sig, 1));
   }
-  for (const sig of FUNCTION_SIGNATURES) add(blockCompletion(sig));
-  for (const sig of FB_SIGNATURES) add(blockCompletion(sig, -1));
+  for (const c of standardCompletions()) add(c);
   for (const sig of s.library.externalBlocks) add(blockCompletion(sig, -2));
   if (statementStart) for (const sn of SNIPPETS) add({ label: sn.label, kind: 'snippet', detail: sn.detail, apply: sn.apply, boost: 2 });
   for (const k of KEYWORDS) add({ label: k, kind: 'keyword', detail: 'keyword', boost: -1 });
@@ -182,7 +198,7 @@ function startsStatement(prev: TextToken | undefined): boolean {
 export function stCompletions(project: Project, pouId: string, text: string, offset: number, explicit = false): StCompletionResult | undefined {
   const pou = project.pous.find((p) => p.id === pouId);
   if (!pou) return undefined;
-  const b = readBody(text);
+  const b = readAround(text, offset);
   if (inCommentOrString(b, offset)) return undefined;
   let from = offset;
   while (from > 0 && isWordChar(text[from - 1])) from--;
@@ -220,7 +236,7 @@ export function stCompletions(project: Project, pouId: string, text: string, off
     return { from: offset - hash[2]!.length, options: r.shape.values.map((v) => ({ label: v, kind: 'enum', detail: r.shape.name })), explicit: true };
   }
   const call = prev && (prev.text === '(' || prev.text === ',') ? enclosingCall(b, k) : undefined;
-  const options: StCompletion[] = call ? parameterCompletions(s, call.name, call.named) : [];
-  options.push(...scopeCompletions(s, startsStatement(prev)));
+  const names = scopeCompletions(s, startsStatement(prev));
+  const options = call ? [...parameterCompletions(s, call.name, call.named), ...names] : names;
   return { from, options, explicit: explicit || !!call };
 }

@@ -6,7 +6,7 @@ import { lowerPou } from '../../compile/pou';
 import { withLibraries } from '../../../model/libraries';
 import type { Pou, Project } from '../../../model/project';
 import { textBodyPrefix } from '../body';
-import { offsetOf, positionOf, readBody, tokenAt } from './text';
+import { lineStartsOf, offsetOf, positionOf, readAround, readBody, tokenAt, type BodyText } from './text';
 
 export interface StDiagnostic {
   readonly severity: 'error' | 'warning';
@@ -45,7 +45,11 @@ export function stDiagnostics(
   const { project, pou } = text === undefined ? { project: given, pou: found } : withBody(given, found, text);
   const out: Diagnostic[] = [];
   lowerPou(withLibraries(project), pou, project.profile, out, []);
-  const body = readBody(pou.source ?? '');
+  const source = pou.source ?? '';
+  const lines = { text: source, lineStarts: lineStartsOf(source) };
+  // The token at each finding: read around it (a few findings), or the whole text once (many).
+  const many = out.filter((d) => d.line !== undefined).length > 16;
+  const around = (at: number): BodyText => (many ? readBody(source) : readAround(source, at));
   const prefix = textBodyPrefix(pou);
   const located: StDiagnostic[] = [];
   const others: Diagnostic[] = [];
@@ -55,7 +59,8 @@ export function stDiagnostics(
       continue;
     }
     const col = d.col ?? 1;
-    const at = offsetOf(body, d.line, col);
+    const at = offsetOf(lines, d.line, col);
+    const body = around(at);
     const k = tokenAt(body, at);
     const t = k >= 0 ? body.tokens[k] : undefined;
     const lineEnd = body.lineStarts[d.line] !== undefined ? body.lineStarts[d.line]! - 1 : body.text.length;

@@ -18,7 +18,7 @@ import {
   type ScopeVariable,
   type ServiceScope,
 } from './scope';
-import { inCommentOrString, readBody, sameName, tokenAt, type BodyText } from './text';
+import { inCommentOrString, readAround, sameName, tokenAt, type BodyText } from './text';
 
 export type StSymbol =
   | { readonly k: 'variable'; readonly v: ScopeVariable }
@@ -92,7 +92,7 @@ const declOf = (s: ServiceScope, blockName: string, name: string): { pou: Pou; v
 
 /** The name at `offset` of the body `text` of `pou`, and what it is. */
 export function symbolAt(s: ServiceScope, text: string, offset: number): Located<StSymbol> | undefined {
-  const b = readBody(text);
+  const b = readAround(text, offset);
   if (inCommentOrString(b, offset)) return undefined;
   const k = tokenAt(b, offset);
   const t = k >= 0 ? b.tokens[k] : undefined;

@@ -45,14 +45,14 @@ export function positionOf(b: Pick<BodyText, 'lineStarts'>, offset: number): { l
   return { line: lo + 1, col: offset - b.lineStarts[lo]! + 1 };
 }
 
-function withOffsets(text: string, tokens: readonly Token[], starts: readonly number[]): TextToken[] {
+function withOffsets(text: string, tokens: readonly Token[], starts: readonly number[], base = 0): TextToken[] {
   const out: TextToken[] = [];
   for (const t of tokens) {
     if (t.kind === 'eof') break;
-    const from = starts[t.pos.line - 1]! + t.pos.col - 1;
+    const from = base + starts[t.pos.line - 1]! + t.pos.col - 1;
     // A pragma's text is what is inside its braces; `{{ }}` blocks have two braces each side.
     const to = t.kind === 'pragma' ? from + t.text.length + (text[from + 1] === '{' ? 4 : 2) : from + t.text.length;
-    out.push({ ...t, from, to });
+    out.push({ kind: t.kind, text: t.text, upper: t.upper, pos: t.pos, from, to });
   }
   return out;
 }
@@ -78,6 +78,75 @@ export function readBody(text: string): BodyText {
   }
   last = { text, lineStarts, tokens, ...(open !== undefined ? { open } : {}) };
   return last;
+}
+
+/**
+ * The statement around `offset` (from the `;` before it to the one after it, comments and strings
+ * skipped), read like readBody but in a fraction of the time on a long body: what completion,
+ * hover and go to definition need. Token offsets are the whole text's; `open` is set when `offset`
+ * is in a comment, string or pragma.
+ */
+export function readAround(text: string, offset: number): BodyText {
+  let start = 0;
+  let open: number | undefined;
+  let i = 0;
+  while (i < offset) {
+    const c = text.charCodeAt(i);
+    // Only ( / { ' " can start a comment, a pragma or a string.
+    if (c === 40 || c === 47 || c === 123 || c === 39 || c === 34) {
+      const e = skipAt(text, i);
+      if (e >= 0) {
+        if (e > offset) {
+          open = i;
+          break;
+        }
+        i = e;
+        continue;
+      }
+    } else if (c === 59) start = i + 1;
+    i++;
+  }
+  let end = offset;
+  if (open === undefined)
+    while (end < text.length) {
+      const c = text.charCodeAt(end);
+      if (c === 40 || c === 47 || c === 123 || c === 39 || c === 34) {
+        const e = skipAt(text, end);
+        if (e >= 0) {
+          end = Math.min(e, text.length);
+          continue;
+        }
+      }
+      end++;
+      if (c === 59) break;
+    }
+  const slice = text.slice(start, open ?? end);
+  let tokens: TextToken[] = [];
+  try {
+    tokens = withOffsets(text, tokenize(slice), lineStartsOf(slice), start);
+  } catch {
+    tokens = [];
+  }
+  return { text, lineStarts: lineStartsOf(text), tokens, ...(open !== undefined ? { open } : {}) };
+}
+
+/**
+ * The end of the comment, string or pragma starting at `at` (past the text's end when it is not
+ * closed; a line comment counts its line break), or -1 when none starts there.
+ */
+function skipAt(text: string, at: number): number {
+  const c = text[at];
+  const d = text[at + 1];
+  const after = (e: number, len: number) => (e < 0 ? text.length + 1 : e + len);
+  if (c === '(' && d === '*') return after(text.indexOf('*)', at + 2), 2);
+  if (c === '/' && d === '/') return after(text.indexOf('\n', at), 1);
+  if (c === '{') return d === '{' ? after(text.indexOf('}}', at + 2), 2) : after(text.indexOf('}', at + 1), 1);
+  if (c === "'" || c === '"') {
+    let e = at + 1;
+    while (e < text.length && text[e] !== c) e += text[e] === '$' ? 2 : 1;
+    return e < text.length ? e + 1 : text.length + 1;
+  }
+  return -1;
 }
 
 /** Index of the last token starting before `offset` (-1 when none). */
