@@ -76,6 +76,7 @@ type Commands = Omit<
   | keyof DataTypeCommands
   | keyof TaskCommands
   | 'updatePou'
+  | 'setPouSource'
   | 'undo'
   | 'redo'
   | 'mark'
