@@ -69,6 +69,11 @@ function completionSource(context: CompletionContext): CompletionResult | null {
   if (!r) return null;
   // Nothing typed and no `.`/`#`/`(` before the cursor: no list unless asked (Ctrl+Space).
   if (!r.explicit && r.from === context.pos) return null;
+  // A word typed out whole (THEN, END_IF, a variable's name) closes the list, so Enter after it
+  // starts a new line instead of accepting what is already written.
+  const labels = new Set(r.options.map((o) => o.label.toUpperCase()));
+  const whole = (text: string) => !context.explicit && text !== '' && labels.has(text.toUpperCase());
+  if (whole(context.state.sliceDoc(r.from, context.pos))) return null;
   const options = r.options.map((o): Completion => {
     const base: Completion = {
       label: o.label,
@@ -80,7 +85,7 @@ function completionSource(context: CompletionContext): CompletionResult | null {
     if (o.apply?.includes('${')) return snippetCompletion(o.apply.replace('${}', '${1}'), base);
     return o.apply ? { ...base, apply: o.apply } : base;
   });
-  return { from: r.from, options, validFor: /^\w*$/ };
+  return { from: r.from, options, validFor: (text) => /^\w*$/.test(text) && !whole(text) };
 }
 
 const hover = hoverTooltip((view, pos) => {

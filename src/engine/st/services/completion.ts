@@ -214,12 +214,13 @@ export function stCompletions(project: Project, pouId: string, text: string, off
     const chain = chainBefore(b, k - 1);
     if (!chain) return { from, options: [], explicit: true };
     const info = chainType(s, chain.segments, chain.indexed);
-    const members = membersOf(s, info).map<StCompletion>((m) => ({
+    // In declaration order (outputs first for an FB): the boost keeps it in the list.
+    const members = membersOf(s, info).map<StCompletion>((m, i) => ({
       label: m.name,
       kind: 'member',
       detail: `${m.type} — ${m.kind === 'member' ? `member of ${m.of}` : `${m.kind === 'inOut' ? 'in-out' : m.kind} of ${m.of}`}`,
       ...(m.comment ? { info: m.comment } : {}),
-      boost: m.kind === 'output' ? 1 : 0,
+      boost: Math.max(-99, 50 - i),
     }));
     // `E_State.` on an enum type's name (CODESYS writes enum values so).
     if (members.length === 0 && chain.segments.length === 1) {
