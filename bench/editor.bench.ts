@@ -5,7 +5,8 @@
 // (bench/bottleFiller.ts), what a user waits for from the input event to the painted frame (select,
 // keystroke, commit of a name with its declaration, undo, paste of 200 networks;
 // bench/editorInteractions.ts), Run's first scan and the cycles an online change misses
-// (bench/onlineChangeFigures.ts, when present), and the p95 frame while the program runs.
+// (bench/onlineChangeFigures.ts, when present), and the p95 frame while the program runs; then the
+// ST editor on a 2,000-line body: a keystroke, and the check after it (bench/stEditorFigures.ts).
 // Run with `npm run bench:editor` (builds first). To measure a
 // build in another directory (so parallel test runs keep their dist/), build there and point
 // RUNGSMITH_DIST at it: `npx vite build --outDir /tmp/x && RUNGSMITH_DIST=/tmp/x npx tsx bench/editor.bench.ts`.
@@ -22,6 +23,7 @@ import { crossReference } from '../src/store/xref';
 import type { Page } from 'playwright-core';
 import { bottleFillerProject } from './bottleFiller';
 import { interactionFigures, runningFrameP95, type InteractionFigures } from './editorInteractions';
+import { stEditorFigures } from './stEditorFigures';
 import { median } from './median';
 
 const NETWORKS = 1000;
@@ -215,6 +217,8 @@ async function main() {
     const bottle = bottleFillerProject(50);
     const bottleFigures = await projectFigures(page, bottle, online);
     const sealFigures = await projectFigures(page, project, online);
+    // The ST editor on a 2,000-line body (bench/stEditorFigures.ts).
+    const st = await stEditorFigures(page);
 
     const sorted = [...frames.deltas].sort((a, b) => a - b);
     const median = percentile(sorted, 0.5);
@@ -235,6 +239,9 @@ async function main() {
     console.log(
       `print layout of ${NETWORKS} networks with variables and cross-reference (command to pages painted): ${Math.round(print.ms)} ms for ${print.pages} A4 pages (budget 3000 ms)`,
     );
+    console.log(
+      `ST editor, ${st.lines}-line body: keystroke to painted frame ${round(st.keystrokeMs)} ms (target < 30 ms); keystroke to the compiler's finding shown ${round(st.checkMs)} ms (target < 200 ms)`,
+    );
     const both = (f: (x: ProjectFigures) => number | undefined) =>
       [bottleFigures, sealFigures].map((x) => { const v = f(x); return v === undefined ? 'n/a' : String(round(v)); }).join('/');
     const bottleNets = bottle.pous[0]!.networks.length;
@@ -245,6 +252,7 @@ async function main() {
       );
     console.log(
       `bench:editor first-render-ms=${Math.round(firstRender)} p95-frame-ms=${round(p95)} edit-ms=${round(edit)} paste100-ms=${round(paste)} find1000-ms=${round(logic.find)} xref1000-ms=${round(logic.xref)} print1000-ms=${Math.round(print.ms)}` +
+        ` st-keystroke-ms=${round(st.keystrokeMs)} st-check-ms=${round(st.checkMs)}` +
         ` | bottle${bottleNets}/seal${NETWORKS}: select-ms=${both((f) => f.selectMs)} keystroke-ms=${both((f) => f.keystrokeMs)} commit-ms=${both((f) => f.commitMs)} undo-ms=${both((f) => f.undoMs)} paste200-ms=${both((f) => f.paste200Ms)} run-first-scan-ms=${both((f) => f.online?.runFirstScanMs)} online-change-overruns=${both((f) => f.online?.onlineChangeOverruns)} running-p95-frame-ms=${both((f) => f.runningP95)}`,
     );
   } finally {

@@ -7,6 +7,7 @@ import { forceLinting, linter, lintGutter, type Diagnostic as CmDiagnostic } fro
 import { EditorSelection, type Extension } from '@codemirror/state';
 import { EditorView, hoverTooltip, keymap, ViewPlugin, type ViewUpdate } from '@codemirror/view';
 import { stCompletions, stDiagnostics, stHover, type CompletionKind } from '../../../engine/st/services';
+import type { Project } from '../../../model/project';
 import type { StEditorContext } from '../context';
 import { stModelLink } from '../stModelSync';
 import { takeReveal, stReveal } from './reveal';
@@ -33,12 +34,26 @@ function lintSource(view: EditorView): CmDiagnostic[] {
   });
 }
 
+/** True when the only change is this editor's own text committed (already checked as typed). */
+function onlyThisText(a: Project, b: Project, pouId: string, text: string): boolean {
+  if (a.globals !== b.globals || a.dataTypes !== b.dataTypes || a.libraries !== b.libraries || a.externalBlocks !== b.externalBlocks || a.profile !== b.profile) return false;
+  if (a.pous.length !== b.pous.length) return false;
+  return a.pous.every((p, i) => {
+    const q = b.pous[i]!;
+    if (p === q) return true;
+    if (p.id !== pouId || q.id !== pouId || q.source !== text) return false;
+    const { source: _a, ...restA } = p;
+    const { source: _b, ...restB } = q;
+    return (Object.keys(restA) as (keyof typeof restA)[]).every((k) => restA[k] === restB[k]) && Object.keys(restA).length === Object.keys(restB).length;
+  });
+}
+
 /** Checks again when the project changes elsewhere (a variable declared, a block's pins renamed). */
 const recheckOnProject = ViewPlugin.define((view) => {
   const link = stModelLink(view.state);
   let timer: ReturnType<typeof setTimeout> | undefined;
   const unsubscribe = link?.store.subscribe((s, prev) => {
-    if (s.project === prev.project) return;
+    if (s.project === prev.project || onlyThisText(prev.project, s.project, link.pouId, view.state.doc.toString())) return;
     if (timer) clearTimeout(timer);
     timer = setTimeout(() => forceLinting(view), ST_CHECK_DELAY_MS);
   });
