@@ -30,7 +30,7 @@ async function timedKey(page: Page, key: string, until: string): Promise<number>
           const t0 = e.timeStamp;
           const frame = () =>
             requestAnimationFrame(() =>
-              setTimeout(() => (holds() ? resolve(performance.now() - t0) : performance.now() - t0 > 20_000 ? reject(new Error(`not shown after 20 s: ${until}`)) : frame()), 0),
+              setTimeout(() => (holds() ? resolve(performance.now() - t0) : performance.now() - t0 > 20_000 ? reject(new Error(`not shown after 20 s: ${until}; shown: ${document.querySelector('[data-testid="st-editor"]')?.textContent?.slice(-200)} / ${[...document.querySelectorAll('.cm-lintRange-error, .cm-lintPoint-error')].map((e) => e.outerHTML).join(' ')}`)) : frame()), 0),
             );
           frame();
         };
@@ -82,7 +82,8 @@ export async function stEditorFigures(page: Page, repeats = 5, lines = 2000): Pr
     // The body is now wrong twice over (no ";" yet): wait until that is shown, then complete the statement.
     await page.waitForFunction(`document.querySelector('[data-testid="st-editor"] .cm-lint-marker-error')`, undefined, { timeout: 30_000 });
     checks.push(await timedKey(page, ';', `(${UNDERLINED}) === 'Zz'`));
-    await pause(page, 300);
+    // The typing burst is committed after its pause: let it be, so the next round starts afresh.
+    await pause(page, 1500);
   }
   return { lines, keystrokeMs: medianOf(keys), checkMs: medianOf(checks) };
 }
