@@ -151,6 +151,9 @@ test('completion of "Motor1." lists the TON pins with their types; hover shows t
   const list = page.locator('.cm-tooltip-autocomplete');
   await poll(() => list.locator('.cm-completionLabel').allTextContents()).toEqual(['Q', 'ET', 'IN', 'PT']);
   expect(await list.locator('li', { hasText: 'ET' }).locator('.cm-completionDetail').textContent()).toBe('TIME — output of TON');
+  // The list stays open while the typing burst is committed to the project (after its pause).
+  await poll(async () => (await project()).pous[0]!.source).toContain('Start := Motor1.');
+  await poll(() => list.locator('[aria-selected="true"] .cm-completionLabel').textContent()).toBe('Q');
   await page.keyboard.press('Enter');
   await page.keyboard.type(';');
   await poll(shownText).toContain('Start := Motor1.Q;');
