@@ -30,7 +30,19 @@ async function timedKey(page: Page, key: string, until: string): Promise<number>
           const t0 = e.timeStamp;
           const frame = () =>
             requestAnimationFrame(() =>
-              setTimeout(() => (holds() ? resolve(performance.now() - t0) : performance.now() - t0 > 20_000 ? reject(new Error(`not shown after 20 s: ${until}; shown: ${document.querySelector('[data-testid="st-editor"]')?.textContent?.slice(-200)} / ${[...document.querySelectorAll('.cm-lintRange-error, .cm-lintPoint-error')].map((e) => e.outerHTML).join(' ')}`)) : frame()), 0),
+              setTimeout(
+                () =>
+                  holds()
+                    ? resolve(performance.now() - t0)
+                    : performance.now() - t0 > 20_000
+                      ? reject(
+                          new Error(
+                            `not shown after 20 s: ${until}; shown: ${document.querySelector('[data-testid="st-editor"]')?.textContent?.slice(-200)} / ${[...document.querySelectorAll('.cm-lintRange-error, .cm-lintPoint-error')].map((e) => e.outerHTML).join(' ')}`,
+                          ),
+                        )
+                      : frame(),
+                0,
+              ),
             );
           frame();
         };
@@ -76,11 +88,21 @@ export async function stEditorFigures(page: Page, repeats = 5, lines = 2000): Pr
     let typed = '';
     for (const ch of 'Zz := 1') {
       typed += ch;
-      keys.push(await timedKey(page, ch === ' ' ? 'Space' : ch, `(${LAST_LINE}).trim() === ${JSON.stringify(typed.trim())}`));
+      keys.push(
+        await timedKey(
+          page,
+          ch === ' ' ? 'Space' : ch,
+          `(${LAST_LINE}).trim() === ${JSON.stringify(typed.trim())}`,
+        ),
+      );
       await pause(page, 40);
     }
     // The body is now wrong twice over (no ";" yet): wait until that is shown, then complete the statement.
-    await page.waitForFunction(`document.querySelector('[data-testid="st-editor"] .cm-lint-marker-error')`, undefined, { timeout: 30_000 });
+    await page.waitForFunction(
+      `document.querySelector('[data-testid="st-editor"] .cm-lint-marker-error')`,
+      undefined,
+      { timeout: 30_000 },
+    );
     checks.push(await timedKey(page, ';', `(${UNDERLINED}) === 'Zz'`));
     // The typing burst is committed after its pause: let it be, so the next round starts afresh.
     await pause(page, 1500);
@@ -91,16 +113,26 @@ export async function stEditorFigures(page: Page, repeats = 5, lines = 2000): Pr
 async function main() {
   const dist = process.env.RUNGSMITH_DIST ?? 'dist';
   if (!existsSync(`${dist}/index.html`)) throw new Error(`${dist}/ is missing: build first (npx vite build)`);
-  const server = await preview({ build: { outDir: dist }, preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'warn' });
+  const server = await preview({
+    build: { outDir: dist },
+    preview: { port: 0, host: '127.0.0.1', strictPort: false },
+    logLevel: 'warn',
+  });
   const address = server.httpServer.address();
   if (!address || typeof address === 'string') throw new Error('preview server has no port');
-  const browser = await chromium.launch({ executablePath: CHROMIUM_PATH, args: [...CHROMIUM_ARGS, '--disable-gpu-vsync', '--disable-frame-rate-limit'], headless: true });
+  const browser = await chromium.launch({
+    executablePath: CHROMIUM_PATH,
+    args: [...CHROMIUM_ARGS, '--disable-gpu-vsync', '--disable-frame-rate-limit'],
+    headless: true,
+  });
   try {
     const page = await (await browser.newContext({ viewport: { width: 1440, height: 900 } })).newPage();
     await page.goto(`http://127.0.0.1:${address.port}/`);
     await page.getByTestId('ladder-canvas').waitFor();
     const f = await stEditorFigures(page);
-    console.log(`ST editor, ${f.lines}-line body: keystroke to painted frame ${f.keystrokeMs.toFixed(1)} ms; keystroke to the finding shown ${f.checkMs.toFixed(1)} ms`);
+    console.log(
+      `ST editor, ${f.lines}-line body: keystroke to painted frame ${f.keystrokeMs.toFixed(1)} ms; keystroke to the finding shown ${f.checkMs.toFixed(1)} ms`,
+    );
     console.log(`st-keystroke-ms=${f.keystrokeMs.toFixed(1)} st-check-ms=${f.checkMs.toFixed(1)}`);
   } finally {
     await browser.close();

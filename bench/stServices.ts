@@ -3,10 +3,24 @@
 // hover, go to definition and a rename. Run: npx tsx bench/stServices.ts [lines]
 import { newPou, newProject } from '../src/model/factory';
 import type { Project, Variable } from '../src/model/project';
-import { planStRename, stCompletions, stDefinition, stDiagnostics, stHover, stRenameEdits } from '../src/engine/st/services';
+import {
+  planStRename,
+  stCompletions,
+  stDefinition,
+  stDiagnostics,
+  stHover,
+  stRenameEdits,
+} from '../src/engine/st/services';
 import { median } from './median';
 
-const v = (name: string, type: string, more: Partial<Variable> = {}): Variable => ({ name, type, varClass: 'local', retain: false, comment: '', ...more });
+const v = (name: string, type: string, more: Partial<Variable> = {}): Variable => ({
+  name,
+  type,
+  varClass: 'local',
+  retain: false,
+  comment: '',
+  ...more,
+});
 
 /** Ten lines of ST using the variables of motor `k` (timers, comparisons, a function, an IF). */
 function block(k: number): string[] {
@@ -36,8 +50,13 @@ export function stBenchProject(lines = 2000): Project {
     v('Fault', 'BOOL', { varClass: 'input' }),
   ];
   for (let k = 0; k < motors; k++) variables.push(v(`T${k}`, 'TON'), v(`Run${k}`, 'BOOL'));
-  const body = Array.from({ length: motors }, (_, k) => block(k)).flat().slice(0, lines).join('\n');
-  return newProject('StBench', { pous: [newPou('Main', { variables, networks: [], language: 'ST', source: `${body}\n` })] });
+  const body = Array.from({ length: motors }, (_, k) => block(k))
+    .flat()
+    .slice(0, lines)
+    .join('\n');
+  return newProject('StBench', {
+    pous: [newPou('Main', { variables, networks: [], language: 'ST', source: `${body}\n` })],
+  });
 }
 
 function run(): void {
@@ -66,8 +85,12 @@ function run(): void {
   const plan = median(9, () => planStRename(p, main.id, fresh(text), levelAt + 1, 'TankLevel'));
   const edits = median(9, () => stRenameEdits(p, main.id, main.variables[0]!, 'TankLevel'));
   const fmt = (ms: number) => `${ms.toFixed(1)} ms`;
-  console.log(`ST language services on a ${text.split('\n').length - 1}-line body (${(text.length / 1024).toFixed(0)} KiB), medians:`);
-  console.log(`  st-check-ms (compiler findings of the body as typed): ${fmt(check)} (${found.length} finding${found.length === 1 ? '' : 's'}: ${found[0]?.rule ?? '-'} line ${found[0]?.line ?? '-'})`);
+  console.log(
+    `ST language services on a ${text.split('\n').length - 1}-line body (${(text.length / 1024).toFixed(0)} KiB), medians:`,
+  );
+  console.log(
+    `  st-check-ms (compiler findings of the body as typed): ${fmt(check)} (${found.length} finding${found.length === 1 ? '' : 's'}: ${found[0]?.rule ?? '-'} line ${found[0]?.line ?? '-'})`,
+  );
   console.log(`  completion after "T3.": ${fmt(complete)}; of a word mid-body: ${fmt(completeWord)}`);
   console.log(`  hover: ${fmt(hover)}; go to definition: ${fmt(definition)}`);
   console.log(`  rename Level: plan ${fmt(plan)}, body edits ${fmt(edits)}`);

@@ -24,49 +24,85 @@ beforeAll(async () => {
   await sim.load(plant());
 });
 
-const v = (name: string, type: string, more: Partial<Variable> = {}): Variable => ({ name, type, varClass: 'local', retain: false, comment: '', ...more });
+const v = (name: string, type: string, more: Partial<Variable> = {}): Variable => ({
+  name,
+  type,
+  varClass: 'local',
+  retain: false,
+  comment: '',
+  ...more,
+});
 const HYST = 'IF X > Limit THEN\n    Q := TRUE;\nELSIF X < Limit - 1.0 THEN\n    Q := FALSE;\nEND_IF;';
 const MAIN = 'Motor1(IN := Start, PT := T#5s);\nH1(X := Level, Limit := 80.0);';
 
 function plant(): Project {
   const ladder: LdElement[] = [
     { kind: 'contact', contact: 'NO', variable: 'H2.Q', id: 'c1' as ElementId, row: 0, col: 0 },
-    { kind: 'box', blockType: 'Hyst', instance: 'H2', executionControl: true, id: 'b1' as ElementId, row: 0, col: 1, inputs: { X: 'Level2', Limit: '50.0' }, outputs: {} },
+    {
+      kind: 'box',
+      blockType: 'Hyst',
+      instance: 'H2',
+      executionControl: true,
+      id: 'b1' as ElementId,
+      row: 0,
+      col: 1,
+      inputs: { X: 'Level2', Limit: '50.0' },
+      outputs: {},
+    },
     { kind: 'coil', coil: 'COIL', variable: 'Lamp', id: 'l1' as ElementId, row: 0, col: 6 },
   ];
   return newProject('StServices', {
     pous: [
       newPou('Main', {
-        variables: [v('Motor1', 'TON', { comment: 'pump start delay' }), v('Start', 'BOOL'), v('Level', 'REAL', { comment: 'tank level in %' }), v('H1', 'Hyst')],
+        variables: [
+          v('Motor1', 'TON', { comment: 'pump start delay' }),
+          v('Start', 'BOOL'),
+          v('Level', 'REAL', { comment: 'tank level in %' }),
+          v('H1', 'Hyst'),
+        ],
         networks: [],
         language: 'ST',
         source: MAIN,
       }),
       newPou('Hyst', {
         kind: 'FUNCTION_BLOCK',
-        variables: [v('X', 'REAL', { varClass: 'input' }), v('Limit', 'REAL', { varClass: 'input', comment: 'switch-on level' }), v('Q', 'BOOL', { varClass: 'output' })],
+        variables: [
+          v('X', 'REAL', { varClass: 'input' }),
+          v('Limit', 'REAL', { varClass: 'input', comment: 'switch-on level' }),
+          v('Q', 'BOOL', { varClass: 'output' }),
+        ],
         networks: [],
         language: 'ST',
         source: HYST,
       }),
-      newPou('Ladder', { variables: [v('H2', 'Hyst'), v('Level2', 'REAL'), v('Lamp', 'BOOL')], networks: [newNetwork({ elements: ladder })] }),
+      newPou('Ladder', {
+        variables: [v('H2', 'Hyst'), v('Level2', 'REAL'), v('Lamp', 'BOOL')],
+        networks: [newNetwork({ elements: ladder })],
+      }),
     ],
   });
 }
 
 const project = (): Promise<Project> =>
-  page.evaluate(() => JSON.parse(JSON.stringify(window.rungsmith!.documentStore!.getState().project)) as Project);
+  page.evaluate(
+    () => JSON.parse(JSON.stringify(window.rungsmith!.documentStore!.getState().project)) as Project,
+  );
 const pou = async (name: string) => (await project()).pous.find((p) => p.name === name)!;
 
 async function openPou(name: string): Promise<void> {
   await page.getByTestId('tab-project').click();
-  await page.getByTestId(`tree-pou-${name}`).getByRole('button', { name: new RegExp(name) }).first().click();
+  await page
+    .getByTestId(`tree-pou-${name}`)
+    .getByRole('button', { name: new RegExp(name) })
+    .first()
+    .click();
   await content().waitFor();
   await poll(() => page.getByTestId('st-editor').getAttribute('data-pou')).toBe(name);
 }
 
 const content = (): Locator => page.getByTestId('st-editor').locator('.cm-content');
-const shownText = () => content().evaluate((e) => [...e.querySelectorAll('.cm-line')].map((l) => l.textContent).join('\n'));
+const shownText = () =>
+  content().evaluate((e) => [...e.querySelectorAll('.cm-line')].map((l) => l.textContent).join('\n'));
 
 /** The centre of the `nth` occurrence of `word` in the editor's text, on screen. */
 async function wordPoint(word: string, nth = 0): Promise<{ x: number; y: number }> {
@@ -150,7 +186,9 @@ test('completion of "Motor1." lists the TON pins with their types; hover shows t
   await page.keyboard.type('Start := Motor1.');
   const list = page.locator('.cm-tooltip-autocomplete');
   await poll(() => list.locator('.cm-completionLabel').allTextContents()).toEqual(['Q', 'ET', 'IN', 'PT']);
-  expect(await list.locator('li', { hasText: 'ET' }).locator('.cm-completionDetail').textContent()).toBe('TIME — output of TON');
+  expect(await list.locator('li', { hasText: 'ET' }).locator('.cm-completionDetail').textContent()).toBe(
+    'TIME — output of TON',
+  );
   // The list stays open while the typing burst is committed to the project (after its pause).
   await poll(async () => (await project()).pous[0]!.source).toContain('Start := Motor1.');
   await poll(() => list.locator('[aria-selected="true"] .cm-completionLabel').textContent()).toBe('Q');
@@ -183,7 +221,9 @@ test('F2 renames an FB input in its body, an ST caller and an LD caller as one u
   expect(await input.inputValue()).toBe('Level');
   await input.fill('Start');
   await input.press('Enter');
-  await poll(() => page.getByTestId('st-rename-error').textContent()).toBe('"Start" is already declared in Main');
+  await poll(() => page.getByTestId('st-rename-error').textContent()).toBe(
+    '"Start" is already declared in Main',
+  );
   await input.press('Escape');
   await page.getByTestId('st-rename').waitFor({ state: 'detached' });
 
@@ -200,7 +240,9 @@ test('F2 renames an FB input in its body, an ST caller and an LD caller as one u
   expect(hyst.source).toBe(HYST.replaceAll('Limit', 'OnLevel'));
   const box = (await pou('Ladder')).networks[0]!.elements.find((e) => e.kind === 'box');
   expect(box?.kind === 'box' && box.inputs).toEqual({ X: 'Level2', OnLevel: '50.0' });
-  expect(await page.evaluate(() => window.rungsmith!.documentStore!.getState().undoName)).toBe('Rename Limit → OnLevel');
+  expect(await page.evaluate(() => window.rungsmith!.documentStore!.getState().undoName)).toBe(
+    'Rename Limit → OnLevel',
+  );
 
   // One Ctrl+Z in the editor undoes all of it.
   await content().click();

@@ -17,9 +17,29 @@ import {
 import { createDocumentStore } from '../../src/store/documentStore';
 import { renameVariable } from '../../src/store/renameVariable';
 
-const v = (name: string, type: string, more: Partial<Variable> = {}): Variable => ({ name, type, varClass: 'local', retain: false, comment: '', ...more });
-const st = (name: string, kind: Pou['kind'], variables: Variable[], source: string, returnType?: string): Pou =>
-  newPou(name, { kind, variables, networks: [], language: 'ST', source, ...(returnType ? { returnType } : {}) });
+const v = (name: string, type: string, more: Partial<Variable> = {}): Variable => ({
+  name,
+  type,
+  varClass: 'local',
+  retain: false,
+  comment: '',
+  ...more,
+});
+const st = (
+  name: string,
+  kind: Pou['kind'],
+  variables: Variable[],
+  source: string,
+  returnType?: string,
+): Pou =>
+  newPou(name, {
+    kind,
+    variables,
+    networks: [],
+    language: 'ST',
+    source,
+    ...(returnType ? { returnType } : {}),
+  });
 
 const SCALE = 'Scale := Lo + In * (Hi - Lo);\n';
 const HYST = 'IF X > Limit THEN\n  Q := TRUE;\nELSIF X < Limit - 1.0 THEN\n  Q := FALSE;\nEND_IF;\n';
@@ -38,12 +58,32 @@ function makeProject(main = MAIN): Project {
   const id = () => `e${k++}` as ElementId;
   const ladder: LdElement[] = [
     { kind: 'contact', contact: 'NO', variable: 'H2.Q', id: id(), row: 0, col: 0 },
-    { kind: 'box', blockType: 'Hyst', instance: 'H2', executionControl: true, id: id(), row: 0, col: 1, inputs: { X: 'Level2', Limit: '50.0' }, outputs: {} },
+    {
+      kind: 'box',
+      blockType: 'Hyst',
+      instance: 'H2',
+      executionControl: true,
+      id: id(),
+      row: 0,
+      col: 1,
+      inputs: { X: 'Level2', Limit: '50.0' },
+      outputs: {},
+    },
     { kind: 'coil', coil: 'COIL', variable: 'Lamp', id: id(), row: 0, col: 6 },
   ];
   return newProject('Plant', {
     dataTypes: [
-      { name: 'Point', def: { kind: 'struct', members: [{ name: 'X', type: 'INT' }, { name: 'Y', type: 'INT' }] }, comment: '' },
+      {
+        name: 'Point',
+        def: {
+          kind: 'struct',
+          members: [
+            { name: 'X', type: 'INT' },
+            { name: 'Y', type: 'INT' },
+          ],
+        },
+        comment: '',
+      },
       { name: 'Color', def: { kind: 'enum', values: ['RED', 'GREEN', 'BLUE'] }, comment: '' },
     ],
     globals: [v('Alarm', 'BOOL', { comment: 'horn on the panel' })],
@@ -62,9 +102,31 @@ function makeProject(main = MAIN): Project {
         ],
         main,
       ),
-      st('Scale', 'FUNCTION', [v('In', 'REAL', { varClass: 'input', comment: 'raw value' }), v('Lo', 'REAL', { varClass: 'input' }), v('Hi', 'REAL', { varClass: 'input' })], SCALE, 'REAL'),
-      st('Hyst', 'FUNCTION_BLOCK', [v('X', 'REAL', { varClass: 'input' }), v('Limit', 'REAL', { varClass: 'input', comment: 'switch-on level' }), v('Q', 'BOOL', { varClass: 'output' })], HYST),
-      newPou('Ladder', { variables: [v('H2', 'Hyst'), v('Level2', 'REAL'), v('Lamp', 'BOOL')], networks: [newNetwork({ elements: ladder })] }),
+      st(
+        'Scale',
+        'FUNCTION',
+        [
+          v('In', 'REAL', { varClass: 'input', comment: 'raw value' }),
+          v('Lo', 'REAL', { varClass: 'input' }),
+          v('Hi', 'REAL', { varClass: 'input' }),
+        ],
+        SCALE,
+        'REAL',
+      ),
+      st(
+        'Hyst',
+        'FUNCTION_BLOCK',
+        [
+          v('X', 'REAL', { varClass: 'input' }),
+          v('Limit', 'REAL', { varClass: 'input', comment: 'switch-on level' }),
+          v('Q', 'BOOL', { varClass: 'output' }),
+        ],
+        HYST,
+      ),
+      newPou('Ladder', {
+        variables: [v('H2', 'Hyst'), v('Level2', 'REAL'), v('Lamp', 'BOOL')],
+        networks: [newNetwork({ elements: ladder })],
+      }),
     ],
   });
 }
@@ -100,7 +162,9 @@ describe('ST diagnostics', () => {
     // The project check (Problems list, Run, `rungsmith check`) has the same findings, located.
     const committed = { ...p, pous: p.pous.map((x) => (x.name === 'Main' ? { ...x, source: text } : x)) };
     const project = checkProject(committed).filter((d) => d.pou === 'Main' && d.severity === 'error');
-    expect(project.map((d) => [d.rule, d.line, d.col, d.message])).toEqual(located.map((d) => [d.rule, d.line, d.col, d.message]));
+    expect(project.map((d) => [d.rule, d.line, d.col, d.message])).toEqual(
+      located.map((d) => [d.rule, d.line, d.col, d.message]),
+    );
   });
 
   it('a syntax error is located where the parser stopped, and a pragma is a located warning', () => {
@@ -116,7 +180,10 @@ describe('ST diagnostics', () => {
   it('an array index out of bounds keeps its own rule id', () => {
     const p = makeProject();
     const main = p.pous[0]!;
-    const q = { ...p, pous: [{ ...main, variables: [...main.variables, v('A', 'ARRAY[1..3] OF INT')] }, ...p.pous.slice(1)] };
+    const q = {
+      ...p,
+      pous: [{ ...main, variables: [...main.variables, v('A', 'ARRAY[1..3] OF INT')] }, ...p.pous.slice(1)],
+    };
     const d = stDiagnostics(q, main.id, 'A[4] := 1;\n').located;
     expect(d.map((x) => [x.rule, x.line])).toEqual([['LD-E62', 1]]);
   });
@@ -159,7 +226,10 @@ describe('ST completion', () => {
     expect(by('Level')).toMatchObject({ kind: 'variable', detail: 'REAL' });
     expect(by('Level')!.info).toContain('tank level in %');
     expect(by('Alarm')).toMatchObject({ kind: 'variable', detail: 'BOOL' });
-    expect(by('Scale')).toMatchObject({ kind: 'function', detail: 'Scale(In : REAL, Lo : REAL, Hi : REAL) : REAL' });
+    expect(by('Scale')).toMatchObject({
+      kind: 'function',
+      detail: 'Scale(In : REAL, Lo : REAL, Hi : REAL) : REAL',
+    });
     expect(by('Hyst')!.detail).toBe('Hyst(X : REAL, Limit : REAL) => (Q : BOOL)');
     expect(by('TON')!.detail).toBe('TON(IN : BOOL, PT : TIME) => (Q : BOOL, ET : TIME)');
     expect(by('LIMIT')!.kind).toBe('function');
@@ -167,7 +237,9 @@ describe('ST completion', () => {
     expect(by('IF')!.kind).toBe('snippet');
     // Inside an expression, no statement snippets.
     const expr = `${MAIN}Level := `;
-    expect(stCompletions(p, pouId(p, 'Main'), expr, expr.length)!.options.some((o) => o.kind === 'snippet')).toBe(false);
+    expect(
+      stCompletions(p, pouId(p, 'Main'), expr, expr.length)!.options.some((o) => o.kind === 'snippet'),
+    ).toBe(false);
   });
 
   it('inside a call, offers its parameters by name (those not given yet)', () => {
@@ -177,7 +249,11 @@ describe('ST completion', () => {
     const params = r.options.filter((o) => o.kind === 'parameter').map((o) => o.label);
     expect(params).toEqual(['Limit :=', 'Q =>']);
     const fn = `${MAIN}Level := Scale(`;
-    expect(stCompletions(p, pouId(p, 'Main'), fn, fn.length)!.options.filter((o) => o.kind === 'parameter').map((o) => o.apply)).toEqual(['In := ', 'Lo := ', 'Hi := ']);
+    expect(
+      stCompletions(p, pouId(p, 'Main'), fn, fn.length)!
+        .options.filter((o) => o.kind === 'parameter')
+        .map((o) => o.apply),
+    ).toEqual(['In := ', 'Lo := ', 'Hi := ']);
   });
 
   it('reads the statement around the cursor: comments and strings before it (with ";" inside) do not confuse it', () => {
@@ -208,7 +284,11 @@ describe('ST hover and go to definition', () => {
     const g = stHover(p, pouId(p, 'Main'), MAIN, at(MAIN, 'Ala|rm'))!;
     expect(g.lines).toEqual(['VAR_GLOBAL — global variable', 'horn on the panel']);
     const inst = stHover(p, pouId(p, 'Main'), MAIN, at(MAIN, 'Mot|or1('))!;
-    expect(inst.lines).toEqual(['VAR — variable of Main', 'instance of TON(IN : BOOL, PT : TIME) => (Q : BOOL, ET : TIME)', 'start delay of the pump']);
+    expect(inst.lines).toEqual([
+      'VAR — variable of Main',
+      'instance of TON(IN : BOOL, PT : TIME) => (Q : BOOL, ET : TIME)',
+      'start delay of the pump',
+    ]);
   });
 
   it('hover on a pin, a parameter and a function shows its type and signature', () => {
@@ -228,11 +308,30 @@ describe('ST hover and go to definition', () => {
   it('go to definition: a variable (own or global), a user FB pin, a user function', () => {
     const p = makeProject();
     const main = pouId(p, 'Main');
-    expect(stDefinition(p, main, MAIN, at(MAIN, 'Lev|el :='))).toEqual({ kind: 'variable', scope: main, name: 'Level' });
-    expect(stDefinition(p, main, MAIN, at(MAIN, 'Ala|rm'))).toEqual({ kind: 'variable', scope: 'globals', name: 'Alarm' });
-    expect(stDefinition(p, main, MAIN, at(MAIN, 'H1.|Q'))).toEqual({ kind: 'variable', scope: pouId(p, 'Hyst'), name: 'Q' });
-    expect(stDefinition(p, main, MAIN, at(MAIN, 'Limit| :='))).toEqual({ kind: 'variable', scope: pouId(p, 'Hyst'), name: 'Limit' });
-    expect(stDefinition(p, main, MAIN, at(MAIN, 'Sca|le('))).toEqual({ kind: 'pou', pouId: pouId(p, 'Scale') });
+    expect(stDefinition(p, main, MAIN, at(MAIN, 'Lev|el :='))).toEqual({
+      kind: 'variable',
+      scope: main,
+      name: 'Level',
+    });
+    expect(stDefinition(p, main, MAIN, at(MAIN, 'Ala|rm'))).toEqual({
+      kind: 'variable',
+      scope: 'globals',
+      name: 'Alarm',
+    });
+    expect(stDefinition(p, main, MAIN, at(MAIN, 'H1.|Q'))).toEqual({
+      kind: 'variable',
+      scope: pouId(p, 'Hyst'),
+      name: 'Q',
+    });
+    expect(stDefinition(p, main, MAIN, at(MAIN, 'Limit| :='))).toEqual({
+      kind: 'variable',
+      scope: pouId(p, 'Hyst'),
+      name: 'Limit',
+    });
+    expect(stDefinition(p, main, MAIN, at(MAIN, 'Sca|le('))).toEqual({
+      kind: 'pou',
+      pouId: pouId(p, 'Scale'),
+    });
     expect(stDefinition(p, main, MAIN, at(MAIN, 'Pt.|X'))).toEqual({ kind: 'dataType', name: 'Point' });
     expect(stDefinition(p, main, MAIN, at(MAIN, 'Motor1.|Q'))).toBeUndefined();
   });
@@ -242,13 +341,21 @@ describe('ST rename', () => {
   it('plans a rename from the body and refuses names that clash, with the reason', () => {
     const p = makeProject();
     const main = pouId(p, 'Main');
-    expect(planStRename(p, main, MAIN, at(MAIN, 'Lev|el :='), 'TankLevel')).toEqual({ ok: true, scope: main, from: 'Level', to: 'TankLevel', bodies: 1 });
+    expect(planStRename(p, main, MAIN, at(MAIN, 'Lev|el :='), 'TankLevel')).toEqual({
+      ok: true,
+      scope: main,
+      from: 'Level',
+      to: 'TankLevel',
+      bodies: 1,
+    });
     const refuse = (marker: string, to: string) => {
       const r = planStRename(p, main, MAIN, at(MAIN, marker), to);
       return r.ok ? 'ok' : r.reason;
     };
     expect(refuse('Lev|el :=', 'Raw')).toBe('"Raw" is already declared in Main');
-    expect(refuse('Lev|el :=', 'Alarm')).toBe('"Alarm" would hide the global variable Alarm in Main (LD-W05)');
+    expect(refuse('Lev|el :=', 'Alarm')).toBe(
+      '"Alarm" would hide the global variable Alarm in Main (LD-W05)',
+    );
     expect(refuse('Lev|el :=', 'END_IF')).toBe('"END_IF" is a keyword of IEC 61131-3');
     expect(refuse('Lev|el :=', '2x')).toMatch(/not a valid name/);
     expect(refuse('Lev|el :=', 'Scale')).toBe('"Scale" is the name of the function Scale');
@@ -261,9 +368,14 @@ describe('ST rename', () => {
   it('renames the uses of a variable in its body only: not members, not parameter names, not comments', () => {
     const p = makeProject('In := 1.0; (* In *) x := Scale(In := In, Lo := 0.0, Hi := 1.0); y := H1.In;\n');
     const main = p.pous[0]!;
-    const q = { ...p, pous: [{ ...main, variables: [...main.variables, v('In', 'REAL')] }, ...p.pous.slice(1)] };
+    const q = {
+      ...p,
+      pous: [{ ...main, variables: [...main.variables, v('In', 'REAL')] }, ...p.pous.slice(1)],
+    };
     const edits = stRenameEdits(q, main.id, v('In', 'REAL'), 'Inp');
-    expect(edits.map((e) => e.after)).toEqual(['Inp := 1.0; (* In *) x := Scale(In := Inp, Lo := 0.0, Hi := 1.0); y := H1.In;\n']);
+    expect(edits.map((e) => e.after)).toEqual([
+      'Inp := 1.0; (* In *) x := Scale(In := Inp, Lo := 0.0, Hi := 1.0); y := H1.In;\n',
+    ]);
   });
 
   it('renaming an input of a FUNCTION_BLOCK renames its body, `Inst.Pin` and named arguments in callers', () => {

@@ -2,8 +2,20 @@
 // services of engine/st/services: the compiler's findings as you type (underlines, gutter marks,
 // re-checked when the project changes elsewhere), completion with signatures, hover, go to
 // definition (F12, Ctrl/Cmd+click), rename (F2), and the Problems list's "show this line".
-import { autocompletion, snippetCompletion, type Completion, type CompletionContext, type CompletionResult } from '@codemirror/autocomplete';
-import { forceLinting, linter, lintGutter, type Diagnostic as CmDiagnostic } from '@codemirror/lint';
+import {
+  autocompletion,
+  snippetCompletion,
+  type Completion,
+  type CompletionContext,
+  type CompletionResult,
+} from '@codemirror/autocomplete';
+import {
+  forceLinting,
+  linter,
+  lintGutter,
+  lintKeymap,
+  type Diagnostic as CmDiagnostic,
+} from '@codemirror/lint';
 import { EditorSelection, type Extension } from '@codemirror/state';
 import { EditorView, hoverTooltip, keymap, ViewPlugin, type ViewUpdate } from '@codemirror/view';
 import { stCompletions, stDiagnostics, stHover, type CompletionKind } from '../../../engine/st/services';
@@ -30,13 +42,27 @@ function lintSource(view: EditorView): CmDiagnostic[] {
   return located.map((d) => {
     const from = offset(d.line, d.col);
     const to = Math.max(from, offset(d.endLine, d.endCol));
-    return { from, to, severity: d.severity, source: d.rule, message: `${d.detail}`, markClass: `rs-st-${d.severity}` };
+    return {
+      from,
+      to,
+      severity: d.severity,
+      source: d.rule,
+      message: `${d.detail}`,
+      markClass: `rs-st-${d.severity}`,
+    };
   });
 }
 
 /** True when the only change is this editor's own text committed (already checked as typed). */
 function onlyThisText(a: Project, b: Project, pouId: string, text: string): boolean {
-  if (a.globals !== b.globals || a.dataTypes !== b.dataTypes || a.libraries !== b.libraries || a.externalBlocks !== b.externalBlocks || a.profile !== b.profile) return false;
+  if (
+    a.globals !== b.globals ||
+    a.dataTypes !== b.dataTypes ||
+    a.libraries !== b.libraries ||
+    a.externalBlocks !== b.externalBlocks ||
+    a.profile !== b.profile
+  )
+    return false;
   if (a.pous.length !== b.pous.length) return false;
   return a.pous.every((p, i) => {
     const q = b.pous[i]!;
@@ -44,7 +70,10 @@ function onlyThisText(a: Project, b: Project, pouId: string, text: string): bool
     if (p.id !== pouId || q.id !== pouId || q.source !== text) return false;
     const { source: _a, ...restA } = p;
     const { source: _b, ...restB } = q;
-    return (Object.keys(restA) as (keyof typeof restA)[]).every((k) => restA[k] === restB[k]) && Object.keys(restA).length === Object.keys(restB).length;
+    return (
+      (Object.keys(restA) as (keyof typeof restA)[]).every((k) => restA[k] === restB[k]) &&
+      Object.keys(restA).length === Object.keys(restB).length
+    );
   });
 }
 
@@ -53,7 +82,11 @@ const recheckOnProject = ViewPlugin.define((view) => {
   const link = stModelLink(view.state);
   let timer: ReturnType<typeof setTimeout> | undefined;
   const unsubscribe = link?.store.subscribe((s, prev) => {
-    if (s.project === prev.project || onlyThisText(prev.project, s.project, link.pouId, view.state.doc.toString())) return;
+    if (
+      s.project === prev.project ||
+      onlyThisText(prev.project, s.project, link.pouId, view.state.doc.toString())
+    )
+      return;
     if (timer) clearTimeout(timer);
     timer = setTimeout(() => forceLinting(view), ST_CHECK_DELAY_MS);
   });
@@ -80,7 +113,13 @@ const CM_TYPES: Record<CompletionKind, string> = {
 function completionSource(context: CompletionContext): CompletionResult | null {
   const link = stModelLink(context.state);
   if (!link) return null;
-  const r = stCompletions(link.store.getState().project, link.pouId, context.state.doc.toString(), context.pos, context.explicit);
+  const r = stCompletions(
+    link.store.getState().project,
+    link.pouId,
+    context.state.doc.toString(),
+    context.pos,
+    context.explicit,
+  );
   if (!r) return null;
   // Nothing typed and no `.`/`#`/`(` before the cursor: no list unless asked (Ctrl+Space).
   if (!r.explicit && r.from === context.pos) return null;
@@ -141,7 +180,10 @@ const revealPlugin = ViewPlugin.fromClass(
       const doc = this.view.state.doc;
       const line = doc.line(Math.max(1, Math.min(r.line, doc.lines)));
       const at = Math.min(line.to, line.from + Math.max(0, r.col - 1));
-      this.view.dispatch({ selection: EditorSelection.cursor(at), effects: EditorView.scrollIntoView(at, { y: 'center' }) });
+      this.view.dispatch({
+        selection: EditorSelection.cursor(at),
+        effects: EditorView.scrollIntoView(at, { y: 'center' }),
+      });
       this.view.focus();
     }
     update(_u: ViewUpdate) {}
@@ -162,7 +204,7 @@ export function stLanguageServices(ctx: StEditorContext): Extension[] {
     hover,
     revealPlugin,
     stRename(),
-    keymap.of([{ key: 'F12', run: goToDefinition, preventDefault: true }]),
+    keymap.of([...lintKeymap, { key: 'F12', run: goToDefinition, preventDefault: true }]),
     EditorView.domEventHandlers({
       mousedown(e, view) {
         if (!(e.ctrlKey || e.metaKey) || e.button !== 0) return false;

@@ -25,7 +25,10 @@ const promptField = StateField.define<Prompt | undefined>({
     if (value && tr.docChanged) return { ...value, pos: tr.changes.mapPos(value.pos) };
     return value;
   },
-  provide: (f) => showTooltip.from(f, (p): Tooltip | null => (p ? { pos: p.pos, above: false, create: (view) => promptDom(view, p) } : null)),
+  provide: (f) =>
+    showTooltip.from(f, (p): Tooltip | null =>
+      p ? { pos: p.pos, above: false, create: (view) => promptDom(view, p) } : null,
+    ),
 });
 
 function promptDom(view: EditorView, p: Prompt): { dom: HTMLElement; mount?: () => void } {
@@ -100,10 +103,14 @@ export function startRename(view: EditorView): boolean {
   const pos = view.state.selection.main.head;
   const word = view.state.wordAt(pos);
   if (!word) {
-    view.dispatch({ effects: setPrompt.of({ kind: 'note', pos, text: 'Put the cursor on a variable to rename it.' }) });
+    view.dispatch({
+      effects: setPrompt.of({ kind: 'note', pos, text: 'Put the cursor on a variable to rename it.' }),
+    });
     return true;
   }
-  view.dispatch({ effects: setPrompt.of({ kind: 'rename', pos: word.from, name: view.state.sliceDoc(word.from, word.to) }) });
+  view.dispatch({
+    effects: setPrompt.of({ kind: 'rename', pos: word.from, name: view.state.sliceDoc(word.from, word.to) }),
+  });
   return true;
 }
 
@@ -118,7 +125,13 @@ export function goToDefinition(view: EditorView): boolean {
     const word = view.state.wordAt(pos);
     const name = word ? view.state.sliceDoc(word.from, word.to) : '';
     view.dispatch({
-      effects: setPrompt.of({ kind: 'note', pos, text: name ? `${name}: no declaration in this project to go to (a standard block, or not declared).` : 'Put the cursor on a name to go to its declaration.' }),
+      effects: setPrompt.of({
+        kind: 'note',
+        pos,
+        text: name
+          ? `${name}: no declaration in this project to go to (a standard block, or not declared).`
+          : 'Put the cursor on a name to go to its declaration.',
+      }),
     });
     return true;
   }

@@ -11,7 +11,9 @@ export interface StRevealRequest {
   readonly seq: number;
 }
 
-export const stReveal = createStore<{ request: StRevealRequest | undefined }>()(() => ({ request: undefined }));
+export const stReveal = createStore<{ request: StRevealRequest | undefined }>()(() => ({
+  request: undefined,
+}));
 
 let seq = 0;
 export function revealStLine(pouId: PouId, line: number, col = 1): void {

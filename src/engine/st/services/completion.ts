@@ -19,7 +19,8 @@ import {
 import { inCommentOrString, readAround, tokenBefore, type BodyText, type TextToken } from './text';
 import { resolveType } from '../../../model/dataTypes';
 
-export type CompletionKind = 'variable' | 'member' | 'enum' | 'function' | 'fb' | 'keyword' | 'snippet' | 'parameter' | 'type';
+export type CompletionKind =
+  'variable' | 'member' | 'enum' | 'function' | 'fb' | 'keyword' | 'snippet' | 'parameter' | 'type';
 
 export interface StCompletion {
   /** What the list shows and filters on. */
@@ -44,9 +45,34 @@ export interface StCompletionResult {
 }
 
 const KEYWORDS = [
-  'IF', 'THEN', 'ELSIF', 'ELSE', 'END_IF', 'CASE', 'OF', 'END_CASE', 'FOR', 'TO', 'BY', 'DO', 'END_FOR',
-  'WHILE', 'END_WHILE', 'REPEAT', 'UNTIL', 'END_REPEAT', 'EXIT', 'CONTINUE', 'RETURN',
-  'AND', 'OR', 'XOR', 'NOT', 'MOD', 'TRUE', 'FALSE',
+  'IF',
+  'THEN',
+  'ELSIF',
+  'ELSE',
+  'END_IF',
+  'CASE',
+  'OF',
+  'END_CASE',
+  'FOR',
+  'TO',
+  'BY',
+  'DO',
+  'END_FOR',
+  'WHILE',
+  'END_WHILE',
+  'REPEAT',
+  'UNTIL',
+  'END_REPEAT',
+  'EXIT',
+  'CONTINUE',
+  'RETURN',
+  'AND',
+  'OR',
+  'XOR',
+  'NOT',
+  'MOD',
+  'TRUE',
+  'FALSE',
 ];
 
 /** Statement templates; `${}` is where the cursor goes. */
@@ -103,7 +129,12 @@ function enclosingCall(b: BodyText, k: number): { name: string; named: Set<strin
       }
       const callee = b.tokens[i - 1];
       return callee?.kind === 'ident' ? { name: callee.text, named } : undefined;
-    } else if (depth === 0 && t.kind === 'ident' && (b.tokens[i + 1]?.text === ':=' || b.tokens[i + 1]?.text === '=>')) named.add(t.upper);
+    } else if (
+      depth === 0 &&
+      t.kind === 'ident' &&
+      (b.tokens[i + 1]?.text === ':=' || b.tokens[i + 1]?.text === '=>')
+    )
+      named.add(t.upper);
   }
   return undefined;
 }
@@ -125,14 +156,27 @@ function parameterCompletions(s: ServiceScope, callName: string, named: Set<stri
   const out: StCompletion[] = [];
   const sig = called.sig;
   for (const p of sig.inputs) {
-    if (named.has(p.name.toUpperCase()) || (sig.extensible && p === sig.inputs[sig.inputs.length - 1])) continue;
-    out.push({ label: `${p.name} :=`, kind: 'parameter', detail: `input ${p.type}`, apply: `${p.name} := `, boost: 2 });
+    if (named.has(p.name.toUpperCase()) || (sig.extensible && p === sig.inputs[sig.inputs.length - 1]))
+      continue;
+    out.push({
+      label: `${p.name} :=`,
+      kind: 'parameter',
+      detail: `input ${p.type}`,
+      apply: `${p.name} := `,
+      boost: 2,
+    });
   }
   // Outputs are read by name into a variable: only an FB call (and a function's extra outputs) has them.
   for (const p of sig.outputs) {
     if (named.has(p.name.toUpperCase()) || (sig.kind === 'function' && p.name === 'OUT')) continue;
     if (sig.inputs.some((i) => i.name === p.name)) continue;
-    out.push({ label: `${p.name} =>`, kind: 'parameter', detail: `output ${p.type}`, apply: `${p.name} => `, boost: 1 });
+    out.push({
+      label: `${p.name} =>`,
+      kind: 'parameter',
+      detail: `output ${p.type}`,
+      apply: `${p.name} => `,
+      boost: 1,
+    });
   }
   return out;
 }
@@ -140,10 +184,16 @@ function parameterCompletions(s: ServiceScope, callName: string, named: Set<stri
 /** The standard functions and FBs, the same for every body (made once). */
 let standard: readonly StCompletion[] | undefined;
 const standardCompletions = (): readonly StCompletion[] =>
-  (standard ??= [...FUNCTION_SIGNATURES.map((sig) => blockCompletion(sig)), ...FB_SIGNATURES.map((sig) => blockCompletion(sig, -1))]);
+  (standard ??= [
+    ...FUNCTION_SIGNATURES.map((sig) => blockCompletion(sig)),
+    ...FB_SIGNATURES.map((sig) => blockCompletion(sig, -1)),
+  ]);
 
 /** The names of a scope, kept per POU object and project (both immutable): typing in a body reuses them. */
-const scopeCache = new WeakMap<object, { project: Project; statement: StCompletion[]; value: StCompletion[] }>();
+const scopeCache = new WeakMap<
+  object,
+  { project: Project; statement: StCompletion[]; value: StCompletion[] }
+>();
 
 /** The names usable where a value or a statement starts. */
 function scopeCompletions(s: ServiceScope, statementStart: boolean): StCompletion[] {
@@ -174,7 +224,13 @@ function makeScopeCompletions(s: ServiceScope, statementStart: boolean): StCompl
       boost: v.owner === 'globals' ? 3 : 4,
     });
   }
-  if (s.pou.kind === 'FUNCTION') add({ label: s.pou.name, kind: 'variable', detail: `${s.pou.returnType ?? 'BOOL'} — the function's result`, boost: 3 });
+  if (s.pou.kind === 'FUNCTION')
+    add({
+      label: s.pou.name,
+      kind: 'variable',
+      detail: `${s.pou.returnType ?? 'BOOL'} — the function's result`,
+      boost: 3,
+    });
   for (const e of enumValuesInScope(s)) add({ label: e.value, kind: 'enum', detail: e.type, boost: 1 });
   for (const sig of [...s.library.userBlocks, ...s.library.libraryBlocks]) {
     if (sig.name.toUpperCase() === s.pou.name.toUpperCase()) continue;
@@ -183,7 +239,9 @@ function makeScopeCompletions(s: ServiceScope, statementStart: boolean): StCompl
   }
   for (const c of standardCompletions()) add(c);
   for (const sig of s.library.externalBlocks) add(blockCompletion(sig, -2));
-  if (statementStart) for (const sn of SNIPPETS) add({ label: sn.label, kind: 'snippet', detail: sn.detail, apply: sn.apply, boost: 2 });
+  if (statementStart)
+    for (const sn of SNIPPETS)
+      add({ label: sn.label, kind: 'snippet', detail: sn.detail, apply: sn.apply, boost: 2 });
   for (const k of KEYWORDS) add({ label: k, kind: 'keyword', detail: 'keyword', boost: -1 });
   return out;
 }
@@ -191,11 +249,21 @@ function makeScopeCompletions(s: ServiceScope, statementStart: boolean): StCompl
 /** Is the token before the word the end of a statement (so a statement starts here)? */
 function startsStatement(prev: TextToken | undefined): boolean {
   if (!prev) return true;
-  return prev.text === ';' || ['THEN', 'ELSE', 'DO', 'REPEAT', 'OF'].includes(prev.upper) || (prev.text === ':' && prev.kind === 'symbol');
+  return (
+    prev.text === ';' ||
+    ['THEN', 'ELSE', 'DO', 'REPEAT', 'OF'].includes(prev.upper) ||
+    (prev.text === ':' && prev.kind === 'symbol')
+  );
 }
 
 /** Completion at `offset` of the body `text` of POU `pouId`; undefined where none makes sense (a comment, a string). */
-export function stCompletions(project: Project, pouId: string, text: string, offset: number, explicit = false): StCompletionResult | undefined {
+export function stCompletions(
+  project: Project,
+  pouId: string,
+  text: string,
+  offset: number,
+  explicit = false,
+): StCompletionResult | undefined {
   const pou = project.pous.find((p) => p.id === pouId);
   if (!pou) return undefined;
   const b = readAround(text, offset);
@@ -225,7 +293,12 @@ export function stCompletions(project: Project, pouId: string, text: string, off
     // `E_State.` on an enum type's name (CODESYS writes enum values so).
     if (members.length === 0 && chain.segments.length === 1) {
       const r = resolveType(s.project, chain.segments[0]!);
-      if (r.ok && r.shape.kind === 'enum') return { from, options: r.shape.values.map((v) => ({ label: v, kind: 'enum', detail: r.shape.name })), explicit: true };
+      if (r.ok && r.shape.kind === 'enum')
+        return {
+          from,
+          options: r.shape.values.map((v) => ({ label: v, kind: 'enum', detail: r.shape.name })),
+          explicit: true,
+        };
     }
     return { from, options: members, explicit: true };
   }
@@ -234,7 +307,11 @@ export function stCompletions(project: Project, pouId: string, text: string, off
   if (hash) {
     const r = resolveType(s.project, hash[1]!);
     if (!r.ok || r.shape.kind !== 'enum') return undefined;
-    return { from: offset - hash[2]!.length, options: r.shape.values.map((v) => ({ label: v, kind: 'enum', detail: r.shape.name })), explicit: true };
+    return {
+      from: offset - hash[2]!.length,
+      options: r.shape.values.map((v) => ({ label: v, kind: 'enum', detail: r.shape.name })),
+      explicit: true,
+    };
   }
   const call = prev && (prev.text === '(' || prev.text === ',') ? enclosingCall(b, k) : undefined;
   const names = scopeCompletions(s, startsStatement(prev));

@@ -66,8 +66,20 @@ export function stDiagnostics(
     const lineEnd = body.lineStarts[d.line] !== undefined ? body.lineStarts[d.line]! - 1 : body.text.length;
     const endOffset = t && t.from === at ? t.to : Math.max(at + 1, lineEnd);
     const end = positionOf(body, Math.min(endOffset, body.text.length));
-    const detail = d.message.startsWith(prefix) ? d.message.slice(prefix.length).replace(/^line \d+ col \d+: /, '') : d.message;
-    located.push({ severity: d.severity, rule: d.rule, pou: pou.name, line: d.line, col, endLine: end.line, endCol: end.col, message: d.message, detail });
+    const detail = d.message.startsWith(prefix)
+      ? d.message.slice(prefix.length).replace(/^line \d+ col \d+: /, '')
+      : d.message;
+    located.push({
+      severity: d.severity,
+      rule: d.rule,
+      pou: pou.name,
+      line: d.line,
+      col,
+      endLine: end.line,
+      endCol: end.col,
+      message: d.message,
+      detail,
+    });
   }
   located.sort((a, b) => a.line - b.line || a.col - b.col);
   return { located, others };

@@ -10,5 +10,12 @@
 export { stDiagnostics, withBody, type StDiagnostic } from './diagnostics';
 export { stCompletions, type StCompletion, type StCompletionResult, type CompletionKind } from './completion';
 export { stHover, stDefinition, symbolAt, type StHover, type StDefinition } from './navigate';
-export { planStRename, checkRename, stRenameEdits, renameInText, variableNameProblem, type RenamePlan } from './rename';
+export {
+  planStRename,
+  checkRename,
+  stRenameEdits,
+  renameInText,
+  variableNameProblem,
+  type RenamePlan,
+} from './rename';
 export { readBody, offsetOf, positionOf } from './text';

@@ -23,9 +23,18 @@ import { inCommentOrString, readAround, sameName, tokenAt, type BodyText } from 
 export type StSymbol =
   | { readonly k: 'variable'; readonly v: ScopeVariable }
   /** `Inst.Pin`, `S.Member`: the member, and the POU declaring it when it is a user FB's variable. */
-  | { readonly k: 'member'; readonly m: Member; readonly decl?: { readonly pou: Pou; readonly variable: Variable } }
+  | {
+      readonly k: 'member';
+      readonly m: Member;
+      readonly decl?: { readonly pou: Pou; readonly variable: Variable };
+    }
   /** `F(In := …)`: an input or output of the called block, named in the call. */
-  | { readonly k: 'parameter'; readonly name: string; readonly sig: BlockSignature; readonly decl?: { readonly pou: Pou; readonly variable: Variable } }
+  | {
+      readonly k: 'parameter';
+      readonly name: string;
+      readonly sig: BlockSignature;
+      readonly decl?: { readonly pou: Pou; readonly variable: Variable };
+    }
   | { readonly k: 'block'; readonly sig: BlockSignature; readonly pou?: Pou }
   | { readonly k: 'enum'; readonly value: string; readonly type: string }
   | { readonly k: 'result'; readonly pou: Pou };
@@ -69,7 +78,8 @@ function parameterCall(b: BodyText, k: number): string | undefined {
   const next = b.tokens[k + 1]?.text;
   const prev = b.tokens[k - 1];
   if (next !== ':=' && next !== '=>') return undefined;
-  if (!prev || !(prev.text === '(' || prev.text === ',' || (prev.upper === 'NOT' && next === '=>'))) return undefined;
+  if (!prev || !(prev.text === '(' || prev.text === ',' || (prev.upper === 'NOT' && next === '=>')))
+    return undefined;
   let depth = 0;
   for (let i = k - 1; i >= 0; i--) {
     const t = b.tokens[i]!.text;
@@ -84,7 +94,11 @@ function parameterCall(b: BodyText, k: number): string | undefined {
   return undefined;
 }
 
-const declOf = (s: ServiceScope, blockName: string, name: string): { pou: Pou; variable: Variable } | undefined => {
+const declOf = (
+  s: ServiceScope,
+  blockName: string,
+  name: string,
+): { pou: Pou; variable: Variable } | undefined => {
   const pou = s.library.userPou(blockName);
   const variable = pou?.variables.find((v) => sameName(v.name, name));
   return pou && variable && s.project.pous.includes(pou) ? { pou, variable } : undefined;
@@ -101,7 +115,8 @@ export function symbolAt(s: ServiceScope, text: string, offset: number): Located
   if (t.kind === 'literal') {
     const m = /^([A-Za-z_]\w*)#([A-Za-z_]\w*)$/.exec(t.text);
     const r = m && resolveType(s.project, m[1]!);
-    if (r?.ok && r.shape.kind === 'enum') return { ...at, symbol: { k: 'enum', value: m![2]!, type: r.shape.name } };
+    if (r?.ok && r.shape.kind === 'enum')
+      return { ...at, symbol: { k: 'enum', value: m![2]!, type: r.shape.name } };
     return undefined;
   }
   if (t.kind !== 'ident') return undefined;
@@ -120,14 +135,19 @@ export function symbolAt(s: ServiceScope, text: string, offset: number): Located
       return { ...at, symbol: { k: 'member', m, ...(decl ? { decl } : {}) } };
     }
     // CODESYS's `E_State.IDLE`.
-    const r = chain.segments.length === 2 && !lookupVariable(s, chain.segments[0]!) ? resolveType(s.project, chain.segments[0]!) : undefined;
-    if (r?.ok && r.shape.kind === 'enum') return { ...at, symbol: { k: 'enum', value: t.text, type: r.shape.name } };
+    const r =
+      chain.segments.length === 2 && !lookupVariable(s, chain.segments[0]!)
+        ? resolveType(s.project, chain.segments[0]!)
+        : undefined;
+    if (r?.ok && r.shape.kind === 'enum')
+      return { ...at, symbol: { k: 'enum', value: t.text, type: r.shape.name } };
     return undefined;
   }
   const v = lookupVariable(s, t.text);
   // `T1(…)` calls the instance; `F(…)` the function F.
   if (v) return { ...at, symbol: { k: 'variable', v } };
-  if (s.pou.kind === 'FUNCTION' && sameName(t.text, s.pou.name)) return { ...at, symbol: { k: 'result', pou: s.pou } };
+  if (s.pou.kind === 'FUNCTION' && sameName(t.text, s.pou.name))
+    return { ...at, symbol: { k: 'result', pou: s.pou } };
   const sig = s.library.signature(t.text);
   if (sig) {
     const pou = s.library.userPou(t.text);
@@ -167,7 +187,9 @@ export function stHover(project: Project, pouId: string, text: string, offset: n
     }
     case 'member': {
       const m = sym.m;
-      const lines = [m.kind === 'member' ? `member of ${m.of}` : `${m.kind === 'inOut' ? 'in-out' : m.kind} of ${m.of}`];
+      const lines = [
+        m.kind === 'member' ? `member of ${m.of}` : `${m.kind === 'inOut' ? 'in-out' : m.kind} of ${m.of}`,
+      ];
       const comment = sym.decl?.variable.comment.trim() || m.comment?.trim();
       if (comment) lines.push(comment);
       return { from, to, title: `${m.name} : ${m.type}${m.initial ? ` := ${m.initial}` : ''}`, lines };
@@ -178,7 +200,12 @@ export function stHover(project: Project, pouId: string, text: string, offset: n
       const lines = [`${dir} of ${signatureWords(sym.sig)}`];
       const comment = sym.decl?.variable.comment.trim();
       if (comment) lines.push(comment);
-      return { from, to, title: `${pin?.name ?? sym.name} : ${sym.decl?.variable.type ?? pin?.type ?? '?'}`, lines };
+      return {
+        from,
+        to,
+        title: `${pin?.name ?? sym.name} : ${sym.decl?.variable.type ?? pin?.type ?? '?'}`,
+        lines,
+      };
     }
     case 'block':
       return {
@@ -193,7 +220,12 @@ export function stHover(project: Project, pouId: string, text: string, offset: n
     case 'enum':
       return { from, to, title: `${sym.type}#${sym.value}`, lines: [`value of the enumeration ${sym.type}`] };
     case 'result':
-      return { from, to, title: `${sym.pou.name} : ${sym.pou.returnType ?? 'BOOL'}`, lines: [`the result of the function ${sym.pou.name}`] };
+      return {
+        from,
+        to,
+        title: `${sym.pou.name} : ${sym.pou.returnType ?? 'BOOL'}`,
+        lines: [`the result of the function ${sym.pou.name}`],
+      };
   }
 }
 
@@ -204,7 +236,12 @@ export type StDefinition =
   | { readonly kind: 'dataType'; readonly name: string };
 
 /** The definition of the name at `offset`; undefined for a standard block or an unknown name. */
-export function stDefinition(project: Project, pouId: string, text: string, offset: number): StDefinition | undefined {
+export function stDefinition(
+  project: Project,
+  pouId: string,
+  text: string,
+  offset: number,
+): StDefinition | undefined {
   const pou = project.pous.find((p) => p.id === pouId);
   if (!pou) return undefined;
   const s = serviceScope(project, pou);
@@ -212,11 +249,18 @@ export function stDefinition(project: Project, pouId: string, text: string, offs
   if (!found) return undefined;
   switch (found.k) {
     case 'variable':
-      return { kind: 'variable', scope: found.v.owner === 'globals' ? 'globals' : found.v.owner.id, name: found.v.variable.name };
+      return {
+        kind: 'variable',
+        scope: found.v.owner === 'globals' ? 'globals' : found.v.owner.id,
+        name: found.v.variable.name,
+      };
     case 'member':
     case 'parameter':
       if (found.decl) return { kind: 'variable', scope: found.decl.pou.id, name: found.decl.variable.name };
-      if (found.k === 'member' && found.m.kind === 'member') return (project.dataTypes ?? []).some((d) => sameName(d.name, found.m.of)) ? { kind: 'dataType', name: found.m.of } : undefined;
+      if (found.k === 'member' && found.m.kind === 'member')
+        return (project.dataTypes ?? []).some((d) => sameName(d.name, found.m.of))
+          ? { kind: 'dataType', name: found.m.of }
+          : undefined;
       return undefined;
     case 'block':
       return found.pou && project.pous.includes(found.pou) ? { kind: 'pou', pouId: found.pou.id } : undefined;

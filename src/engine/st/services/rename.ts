@@ -18,7 +18,11 @@ export interface TextRename {
   /** A variable whose uses are renamed (absent: none in this text). */
   readonly variable?: string;
   /** The pin `from` of the instances `instances` and of calls of `callees` (upper-cased names). */
-  readonly pins?: { readonly from: string; readonly instances: ReadonlySet<string>; readonly callees: ReadonlySet<string> };
+  readonly pins?: {
+    readonly from: string;
+    readonly instances: ReadonlySet<string>;
+    readonly callees: ReadonlySet<string>;
+  };
 }
 
 /** Is token k a call's parameter name (`(x :=`, `, x =>`, `NOT x =>`)? Returns the callee's name. */
@@ -50,14 +54,22 @@ export function renameInText(text: string, r: TextRename): string | undefined {
     if (t.kind !== 'ident') return;
     const param = parameterOf(b, k, calls);
     if (param !== undefined) {
-      if (pin && t.upper === pin && (r.pins!.instances.has(param) || r.pins!.callees.has(param))) edits.push(t);
+      if (pin && t.upper === pin && (r.pins!.instances.has(param) || r.pins!.callees.has(param)))
+        edits.push(t);
       return;
     }
     const prev = b.tokens[k - 1];
     if (prev?.text === '.' && prev.kind === 'symbol') {
       const owner = b.tokens[k - 2];
       // `Inst.Pin` where Inst is itself a name (not a member of something else).
-      if (pin && t.upper === pin && owner?.kind === 'ident' && r.pins!.instances.has(owner.upper) && b.tokens[k - 3]?.text !== '.') edits.push(t);
+      if (
+        pin &&
+        t.upper === pin &&
+        owner?.kind === 'ident' &&
+        r.pins!.instances.has(owner.upper) &&
+        b.tokens[k - 3]?.text !== '.'
+      )
+        edits.push(t);
       return;
     }
     if (variable && t.upper === variable) edits.push(t);
@@ -87,33 +99,98 @@ export function stRenameEdits(
   const interfacePin = owner && owner.kind !== 'PROGRAM' && PIN_CLASSES.has(from.varClass);
   for (const pou of project.pous) {
     if (!isTextBody(pou) || !pou.source) continue;
-    const usesVariable = scope === 'globals' ? !pou.variables.some((v) => v.varClass !== 'external' && sameName(v.name, from.name)) : pou === owner;
+    const usesVariable =
+      scope === 'globals'
+        ? !pou.variables.some((v) => v.varClass !== 'external' && sameName(v.name, from.name))
+        : pou === owner;
     let pins: TextRename['pins'];
     if (interfacePin) {
-      const locals = new Set(pou.variables.filter((v) => v.varClass !== 'external').map((v) => v.name.toUpperCase()));
+      const locals = new Set(
+        pou.variables.filter((v) => v.varClass !== 'external').map((v) => v.name.toUpperCase()),
+      );
       const instances = new Set<string>();
-      for (const v of pou.variables) if (sameName(v.type.trim(), owner.name)) instances.add(v.name.toUpperCase());
-      for (const g of project.globals) if (sameName(g.type.trim(), owner.name) && !locals.has(g.name.toUpperCase())) instances.add(g.name.toUpperCase());
+      for (const v of pou.variables)
+        if (sameName(v.type.trim(), owner.name)) instances.add(v.name.toUpperCase());
+      for (const g of project.globals)
+        if (sameName(g.type.trim(), owner.name) && !locals.has(g.name.toUpperCase()))
+          instances.add(g.name.toUpperCase());
       const callees = new Set(owner.kind === 'FUNCTION' ? [owner.name.toUpperCase()] : []);
       if (instances.size || callees.size) pins = { from: from.name, instances, callees };
     }
     if (!usesVariable && !pins) continue;
-    const after = renameInText(pou.source, { to, ...(usesVariable ? { variable: from.name } : {}), ...(pins ? { pins } : {}) });
+    const after = renameInText(pou.source, {
+      to,
+      ...(usesVariable ? { variable: from.name } : {}),
+      ...(pins ? { pins } : {}),
+    });
     if (after !== undefined && after !== pou.source) out.push({ pou: pou.id, before: pou.source, after });
   }
   return out;
 }
 
 const ST_WORDS = new Set([
-  'IF', 'THEN', 'ELSIF', 'ELSE', 'END_IF', 'CASE', 'OF', 'END_CASE', 'FOR', 'TO', 'BY', 'DO', 'END_FOR', 'WHILE', 'END_WHILE',
-  'REPEAT', 'UNTIL', 'END_REPEAT', 'EXIT', 'CONTINUE', 'RETURN', 'AND', 'OR', 'XOR', 'NOT', 'MOD', 'TRUE', 'FALSE',
-  'VAR', 'VAR_INPUT', 'VAR_OUTPUT', 'VAR_IN_OUT', 'VAR_TEMP', 'VAR_EXTERNAL', 'VAR_GLOBAL', 'END_VAR', 'CONSTANT', 'RETAIN', 'AT',
-  'FUNCTION', 'FUNCTION_BLOCK', 'PROGRAM', 'END_FUNCTION', 'END_FUNCTION_BLOCK', 'END_PROGRAM', 'TYPE', 'END_TYPE', 'STRUCT',
-  'END_STRUCT', 'ARRAY', 'STRING', 'WSTRING',
+  'IF',
+  'THEN',
+  'ELSIF',
+  'ELSE',
+  'END_IF',
+  'CASE',
+  'OF',
+  'END_CASE',
+  'FOR',
+  'TO',
+  'BY',
+  'DO',
+  'END_FOR',
+  'WHILE',
+  'END_WHILE',
+  'REPEAT',
+  'UNTIL',
+  'END_REPEAT',
+  'EXIT',
+  'CONTINUE',
+  'RETURN',
+  'AND',
+  'OR',
+  'XOR',
+  'NOT',
+  'MOD',
+  'TRUE',
+  'FALSE',
+  'VAR',
+  'VAR_INPUT',
+  'VAR_OUTPUT',
+  'VAR_IN_OUT',
+  'VAR_TEMP',
+  'VAR_EXTERNAL',
+  'VAR_GLOBAL',
+  'END_VAR',
+  'CONSTANT',
+  'RETAIN',
+  'AT',
+  'FUNCTION',
+  'FUNCTION_BLOCK',
+  'PROGRAM',
+  'END_FUNCTION',
+  'END_FUNCTION_BLOCK',
+  'END_PROGRAM',
+  'TYPE',
+  'END_TYPE',
+  'STRUCT',
+  'END_STRUCT',
+  'ARRAY',
+  'STRING',
+  'WSTRING',
 ]);
 
 export type RenamePlan =
-  | { readonly ok: true; readonly scope: PouId | 'globals'; readonly from: string; readonly to: string; readonly bodies: number }
+  | {
+      readonly ok: true;
+      readonly scope: PouId | 'globals';
+      readonly from: string;
+      readonly to: string;
+      readonly bodies: number;
+    }
   | { readonly ok: false; readonly reason: string };
 
 /** Why `to` cannot name a variable at all; undefined when it can. */
@@ -123,10 +200,15 @@ export function variableNameProblem(project: Project, to: string): string | unde
   if (ST_WORDS.has(upper)) return `"${to}" is a keyword of IEC 61131-3`;
   const sig = blockSignature(to);
   if (sig) return `"${to}" is the standard ${sig.kind === 'fb' ? 'function block' : 'function'} ${sig.name}`;
-  if (/^(BOOL|BYTE|WORD|DWORD|LWORD|SINT|INT|DINT|LINT|USINT|UINT|UDINT|ULINT|REAL|LREAL|TIME|DATE|TOD|DT|TIME_OF_DAY|DATE_AND_TIME)$/.test(upper))
+  if (
+    /^(BOOL|BYTE|WORD|DWORD|LWORD|SINT|INT|DINT|LINT|USINT|UINT|UDINT|ULINT|REAL|LREAL|TIME|DATE|TOD|DT|TIME_OF_DAY|DATE_AND_TIME)$/.test(
+      upper,
+    )
+  )
     return `"${to}" is an elementary type`;
   const pou = project.pous.find((p) => sameName(p.name, to));
-  if (pou) return `"${to}" is the name of the ${pou.kind === 'FUNCTION' ? 'function' : pou.kind === 'FUNCTION_BLOCK' ? 'function block' : 'program'} ${pou.name}`;
+  if (pou)
+    return `"${to}" is the name of the ${pou.kind === 'FUNCTION' ? 'function' : pou.kind === 'FUNCTION_BLOCK' ? 'function block' : 'program'} ${pou.name}`;
   if (findDataType(project, to)) return `"${to}" is the name of a data type`;
   return undefined;
 }
@@ -135,7 +217,13 @@ export function variableNameProblem(project: Project, to: string): string | unde
  * The rename of the variable at `offset` of the body `text` of POU `pouId` to `to`: which
  * declaration, or why not (not a variable of the project, the name taken or hiding another).
  */
-export function planStRename(project: Project, pouId: string, text: string, offset: number, to: string): RenamePlan {
+export function planStRename(
+  project: Project,
+  pouId: string,
+  text: string,
+  offset: number,
+  to: string,
+): RenamePlan {
   const pou = project.pous.find((p) => p.id === pouId);
   if (!pou) return { ok: false, reason: 'the POU is gone' };
   const s = serviceScope(project, pou);
@@ -154,15 +242,24 @@ export function planStRename(project: Project, pouId: string, text: string, offs
     case 'parameter':
       if (!found.decl) {
         const of = found.k === 'member' ? found.m.of : found.sig.name;
-        return { ok: false, reason: `${found.k === 'member' ? found.m.name : found.name} belongs to ${of}, which is not a POU of this project: it cannot be renamed here` };
+        return {
+          ok: false,
+          reason: `${found.k === 'member' ? found.m.name : found.name} belongs to ${of}, which is not a POU of this project: it cannot be renamed here`,
+        };
       }
       scope = found.decl.pou.id;
       variable = found.decl.variable;
       break;
     case 'result':
-      return { ok: false, reason: `${found.pou.name} is the function's result: rename the function in the project tree` };
+      return {
+        ok: false,
+        reason: `${found.pou.name} is the function's result: rename the function in the project tree`,
+      };
     case 'block':
-      return { ok: false, reason: `${found.sig.name} is a ${found.sig.kind === 'fb' ? 'function block' : 'function'}, not a variable${found.pou ? ': rename it in the project tree' : ''}` };
+      return {
+        ok: false,
+        reason: `${found.sig.name} is a ${found.sig.kind === 'fb' ? 'function block' : 'function'}, not a variable${found.pou ? ': rename it in the project tree' : ''}`,
+      };
     case 'enum':
       return { ok: false, reason: `${found.value} is a value of ${found.type}: rename it in the data type` };
   }
@@ -170,7 +267,12 @@ export function planStRename(project: Project, pouId: string, text: string, offs
 }
 
 /** Checks renaming the variable `variable` of `scope` to `to`. */
-export function checkRename(project: Project, scope: PouId | 'globals', variable: Variable, to: string): RenamePlan {
+export function checkRename(
+  project: Project,
+  scope: PouId | 'globals',
+  variable: Variable,
+  to: string,
+): RenamePlan {
   const from = variable.name;
   if (to === from) return { ok: false, reason: `the variable is already named ${from}` };
   const problem = variableNameProblem(project, to);
@@ -178,16 +280,30 @@ export function checkRename(project: Project, scope: PouId | 'globals', variable
   const owner = scope === 'globals' ? undefined : project.pous.find((p) => p.id === scope);
   const same = (v: Variable) => sameName(v.name, to) && !sameName(v.name, from);
   if (owner) {
-    if (owner.variables.some(same)) return { ok: false, reason: `"${to}" is already declared in ${owner.name}` };
-    if (owner.kind === 'FUNCTION' && sameName(owner.name, to)) return { ok: false, reason: `"${to}" is the result of the function ${owner.name}` };
+    if (owner.variables.some(same))
+      return { ok: false, reason: `"${to}" is already declared in ${owner.name}` };
+    if (owner.kind === 'FUNCTION' && sameName(owner.name, to))
+      return { ok: false, reason: `"${to}" is the result of the function ${owner.name}` };
     const g = project.globals.find(same);
-    if (g) return { ok: false, reason: `"${to}" would hide the global variable ${g.name} in ${owner.name} (LD-W05)` };
+    if (g)
+      return {
+        ok: false,
+        reason: `"${to}" would hide the global variable ${g.name} in ${owner.name} (LD-W05)`,
+      };
     const e = enumValuesInScope(serviceScope(project, owner)).find((x) => sameName(x.value, to));
     if (e) return { ok: false, reason: `"${to}" is a value of the enumeration ${e.type}` };
   } else {
     if (project.globals.some(same)) return { ok: false, reason: `"${to}" is already a global variable` };
-    const hiding = project.pous.find((p) => p.variables.some((v) => v.varClass !== 'external' && same(v)) && !p.variables.some((v) => v.varClass !== 'external' && sameName(v.name, from)));
-    if (hiding) return { ok: false, reason: `${hiding.name} declares its own "${to}": its uses of the global ${from} would then mean that variable` };
+    const hiding = project.pous.find(
+      (p) =>
+        p.variables.some((v) => v.varClass !== 'external' && same(v)) &&
+        !p.variables.some((v) => v.varClass !== 'external' && sameName(v.name, from)),
+    );
+    if (hiding)
+      return {
+        ok: false,
+        reason: `${hiding.name} declares its own "${to}": its uses of the global ${from} would then mean that variable`,
+      };
   }
   // Every ST body the rename may touch must read to its end (an unclosed comment or string hides its uses).
   const pinOfBlock = !!owner && owner.kind !== 'PROGRAM' && PIN_CLASSES.has(variable.varClass);
@@ -196,7 +312,10 @@ export function checkRename(project: Project, scope: PouId | 'globals', variable
     const b = readBody(p.source);
     if (b.open === undefined) continue;
     const at = positionOf(b, b.open);
-    return { ok: false, reason: `the ST body of ${p.name} has a comment or string left open at line ${at.line} col ${at.col}: close it first` };
+    return {
+      ok: false,
+      reason: `the ST body of ${p.name} has a comment or string left open at line ${at.line} col ${at.col}: close it first`,
+    };
   }
   return { ok: true, scope, from, to, bodies: stRenameEdits(project, scope, variable, to).length };
 }

@@ -37,7 +37,8 @@ export function scopeVariables(s: ServiceScope): ScopeVariable[] {
     out.push({ variable: v, owner: s.pou });
     own.add(v.name.toUpperCase());
   }
-  for (const g of s.project.globals) if (!own.has(g.name.toUpperCase())) out.push({ variable: g, owner: 'globals' });
+  for (const g of s.project.globals)
+    if (!own.has(g.name.toUpperCase())) out.push({ variable: g, owner: 'globals' });
   return out;
 }
 
@@ -66,7 +67,8 @@ export interface Member {
 }
 
 /** What a type is, for members: an FB (its signature) or a resolved data type shape. */
-export type TypeInfo = { readonly fb: BlockSignature; readonly pou?: Pou } | { readonly shape: TypeShape } | undefined;
+export type TypeInfo =
+  { readonly fb: BlockSignature; readonly pou?: Pou } | { readonly shape: TypeShape } | undefined;
 
 export function typeInfo(s: ServiceScope, type: string): TypeInfo {
   const t = type.trim();
@@ -84,7 +86,8 @@ function shapeInfo(s: ServiceScope, shape: TypeShape): TypeInfo {
   return { shape };
 }
 
-const pinKind = (pin: PinSignature, dir: 'in' | 'out'): Member['kind'] => (isInOutPin(pin) ? 'inOut' : dir === 'in' ? 'input' : 'output');
+const pinKind = (pin: PinSignature, dir: 'in' | 'out'): Member['kind'] =>
+  isInOutPin(pin) ? 'inOut' : dir === 'in' ? 'input' : 'output';
 
 /** The members `Value.` offers: an FB's inputs and outputs (in-outs once), a struct's members. */
 export function membersOf(_s: ServiceScope, info: TypeInfo): Member[] {
@@ -128,7 +131,11 @@ export function membersOf(_s: ServiceScope, info: TypeInfo): Member[] {
  * The type of a chain of names `A.B[i].C` (segments without their indexes; `indexed[k]` when
  * segment k is followed by an index list): undefined when a link does not resolve.
  */
-export function chainType(s: ServiceScope, segments: readonly string[], indexed: readonly boolean[]): TypeInfo {
+export function chainType(
+  s: ServiceScope,
+  segments: readonly string[],
+  indexed: readonly boolean[],
+): TypeInfo {
   const head = lookupVariable(s, segments[0] ?? '');
   if (!head) return undefined;
   let info = typeInfo(s, head.variable.type);
@@ -147,7 +154,11 @@ export function chainType(s: ServiceScope, segments: readonly string[], indexed:
 }
 
 /** A member named in a chain (`Motor1.Q`): the member and the type it belongs to. */
-export function chainMember(s: ServiceScope, segments: readonly string[], indexed: readonly boolean[]): Member | undefined {
+export function chainMember(
+  s: ServiceScope,
+  segments: readonly string[],
+  indexed: readonly boolean[],
+): Member | undefined {
   if (segments.length < 2) return undefined;
   const owner = chainType(s, segments.slice(0, -1), indexed.slice(0, -1));
   return membersOf(s, owner).find((m) => sameName(m.name, segments[segments.length - 1]!));
@@ -156,10 +167,13 @@ export function chainMember(s: ServiceScope, segments: readonly string[], indexe
 /** Enum values visible in a POU: of the project's enum types and the anonymous enums of its declarations. */
 export function enumValuesInScope(s: ServiceScope): { value: string; type: string }[] {
   const out: { value: string; type: string }[] = [];
-  for (const dt of s.project.dataTypes ?? []) if (dt.def.kind === 'enum') for (const v of dt.def.values) out.push({ value: v, type: dt.name });
+  for (const dt of s.project.dataTypes ?? [])
+    if (dt.def.kind === 'enum') for (const v of dt.def.values) out.push({ value: v, type: dt.name });
   for (const { variable } of scopeVariables(s)) {
     const m = /^\s*\(([^)]*)\)\s*$/.exec(variable.type);
-    if (m) for (const v of m[1]!.split(',')) if (v.trim()) out.push({ value: v.trim(), type: variable.type.trim() });
+    if (m)
+      for (const v of m[1]!.split(','))
+        if (v.trim()) out.push({ value: v.trim(), type: variable.type.trim() });
   }
   return out;
 }
@@ -188,7 +202,11 @@ export function declarationWords(v: Variable): string {
 export function signatureWords(sig: BlockSignature): string {
   const pin = (p: PinSignature) => `${p.name} : ${declaredPinType(p)}`;
   const inputs = sig.inputs.map((p, i) =>
-    sig.extensible && i === sig.inputs.length - 1 ? `${pin(p)}, …` : isInOutPin(p) ? `VAR_IN_OUT ${pin(p)}` : pin(p),
+    sig.extensible && i === sig.inputs.length - 1
+      ? `${pin(p)}, …`
+      : isInOutPin(p)
+        ? `VAR_IN_OUT ${pin(p)}`
+        : pin(p),
   );
   if (sig.kind === 'function') {
     const result = sig.outputs.find((p) => p.name === 'OUT') ?? sig.outputs[0];
@@ -200,7 +218,10 @@ export function signatureWords(sig: BlockSignature): string {
 }
 
 /** The block a call names: a function (standard or user) or an instance's FB type. */
-export function calledBlock(s: ServiceScope, name: string): { sig: BlockSignature; instance?: ScopeVariable } | undefined {
+export function calledBlock(
+  s: ServiceScope,
+  name: string,
+): { sig: BlockSignature; instance?: ScopeVariable } | undefined {
   const v = lookupVariable(s, name);
   if (v) {
     const sig = s.library.signature(v.variable.type.trim());

@@ -45,13 +45,19 @@ export function positionOf(b: Pick<BodyText, 'lineStarts'>, offset: number): { l
   return { line: lo + 1, col: offset - b.lineStarts[lo]! + 1 };
 }
 
-function withOffsets(text: string, tokens: readonly Token[], starts: readonly number[], base = 0): TextToken[] {
+function withOffsets(
+  text: string,
+  tokens: readonly Token[],
+  starts: readonly number[],
+  base = 0,
+): TextToken[] {
   const out: TextToken[] = [];
   for (const t of tokens) {
     if (t.kind === 'eof') break;
     const from = base + starts[t.pos.line - 1]! + t.pos.col - 1;
     // A pragma's text is what is inside its braces; `{{ }}` blocks have two braces each side.
-    const to = t.kind === 'pragma' ? from + t.text.length + (text[from + 1] === '{' ? 4 : 2) : from + t.text.length;
+    const to =
+      t.kind === 'pragma' ? from + t.text.length + (text[from + 1] === '{' ? 4 : 2) : from + t.text.length;
     out.push({ kind: t.kind, text: t.text, upper: t.upper, pos: t.pos, from, to });
   }
   return out;
@@ -140,7 +146,8 @@ function skipAt(text: string, at: number): number {
   const after = (e: number, len: number) => (e < 0 ? text.length + 1 : e + len);
   if (c === '(' && d === '*') return after(text.indexOf('*)', at + 2), 2);
   if (c === '/' && d === '/') return after(text.indexOf('\n', at), 1);
-  if (c === '{') return d === '{' ? after(text.indexOf('}}', at + 2), 2) : after(text.indexOf('}', at + 1), 1);
+  if (c === '{')
+    return d === '{' ? after(text.indexOf('}}', at + 2), 2) : after(text.indexOf('}', at + 1), 1);
   if (c === "'" || c === '"') {
     let e = at + 1;
     while (e < text.length && text[e] !== c) e += text[e] === '$' ? 2 : 1;
@@ -171,7 +178,14 @@ export function tokenAt(b: BodyText, offset: number): number {
   const t = b.tokens[i]!;
   if (offset >= t.from && offset < t.to) {
     // The cursor just after an identifier and before a symbol: the identifier.
-    if (offset === t.from && t.kind !== 'ident' && i > 0 && b.tokens[i - 1]!.to === offset && b.tokens[i - 1]!.kind === 'ident') return i - 1;
+    if (
+      offset === t.from &&
+      t.kind !== 'ident' &&
+      i > 0 &&
+      b.tokens[i - 1]!.to === offset &&
+      b.tokens[i - 1]!.kind === 'ident'
+    )
+      return i - 1;
     return i;
   }
   if (offset === t.to) return i;
