@@ -1,134 +1,167 @@
-// ST editor figures for `npm run bench:editor` (issue 25): a FUNCTION_BLOCK whose ST body has
-// 2,000 lines (IF / CASE / FOR blocks, comments, literals of every kind) opened in the ST editor;
-//   st-keystroke-ms  a character typed in the middle of the body: from the keydown to the painted
-//                    frame that shows it (highlighting, keyword matching, folding markers updated)
-//   st-commit-ms     the typing burst committed to the document (one undo step with the 2,000-line
-//                    text): from the commit to the next painted frame
-// Medians over the repeats.
-import type { Page } from 'playwright-core';
-import { newPou, newProject, variable } from '../src/model/factory';
+// The ST editor on a 2,000-line body (bench/stServices.ts stBenchProject), in the built app in
+// Chromium, from the user's input event (its timeStamp) to the painted frame showing the result:
+//   st-keystroke-ms  a character typed at the end of the body (shown in the editor)
+//   st-check-ms      the keystroke that makes the body wrong (`;` after `Zz := 1`, Zz undeclared) to
+//                    the frame where the compiler's finding is underlined at its place
+//   st-commit-ms     a typing burst committed to the document (the 2,000-line text as one undo step)
+//                    to the next painted frame
+// Used by bench/editor.bench.ts; on its own: `npx vite build && npx tsx bench/stEditorFigures.ts`.
+import { existsSync } from 'node:fs';
+import { chromium, type Page } from 'playwright-core';
+import { preview } from 'vite';
+import { CHROMIUM_ARGS, CHROMIUM_PATH } from '../tests/e2e/browser';
 import type { Project } from '../src/model/project';
+import { stBenchProject } from './stServices';
 
-declare const window: Window & { __stFrame?: Promise<number> };
-
-/** About `lines` lines of varied ST (each block of 20 lines is different by its index). */
-export function longStBody(lines = 2000): string {
-  const out: string[] = [];
-  for (let k = 0; out.length < lines; k++)
-    out.push(
-      `(* block ${k}: scale, limit and count *)`,
-      `IF In > High + ${k}.5 THEN`,
-      `    Q := TRUE; // above the band`,
-      `    Count := Count + 1;`,
-      `ELSIF In < Low - 1.5E-2 THEN`,
-      `    Q := FALSE;`,
-      `ELSE`,
-      `    Mask := Mask OR 16#${(k % 255).toString(16).toUpperCase()};`,
-      `END_IF;`,
-      `CASE Mode OF`,
-      `    0: Delay := T#${(k % 50) + 1}s;`,
-      `    1, 2: Delay := TIME#1h2m;`,
-      `ELSE`,
-      `    Delay := T#0s;`,
-      `END_CASE;`,
-      `FOR i := 0 TO 3 DO`,
-      `    Sum := Sum + INT_TO_REAL(i) * 0.25;`,
-      `END_FOR;`,
-      `Msg := 'block ${k} done';`,
-      ``,
-    );
-  return out.slice(0, lines).join('\n');
+interface Probe {
+  __frame?: Promise<number>;
 }
+declare const window: Window & Probe;
 
-export function longStProject(lines = 2000): Project {
-  const vars = [
-    variable('In', 'REAL', { varClass: 'input' }),
-    variable('Low', 'REAL', { varClass: 'input' }),
-    variable('High', 'REAL', { varClass: 'input' }),
-    variable('Mode', 'INT', { varClass: 'input' }),
-    variable('Q', 'BOOL', { varClass: 'output' }),
-    variable('Count', 'DINT'),
-    variable('Mask', 'WORD'),
-    variable('Delay', 'TIME'),
-    variable('Sum', 'REAL'),
-    variable('i', 'INT'),
-    variable('Msg', 'STRING'),
-  ];
-  return newProject('StBench', {
-    pous: [
-      newPou('Main', { variables: [variable('B1', 'LongSt')] }),
-      newPou('LongSt', {
-        kind: 'FUNCTION_BLOCK',
-        language: 'ST',
-        networks: [],
-        source: longStBody(lines),
-        variables: vars,
-      }),
-    ],
-  });
-}
-
-const medianOf = (xs: readonly number[]) => {
-  const s = [...xs].sort((a, b) => a - b);
-  return s.length === 0 ? NaN : s[Math.floor((s.length - 1) / 2)]!;
-};
-
-export interface StEditorFigures {
-  readonly stKeystrokeMs: number;
-  readonly stCommitMs: number;
-  readonly lines: number;
-}
-
-export async function stEditorFigures(page: Page, lines = 2000, repeats = 15): Promise<StEditorFigures> {
-  const project = longStProject(lines);
-  await page.evaluate((p: Project) => {
-    const doc = window.rungsmith!.documentStore!;
-    doc.getState().loadProject(p);
-    doc.getState().setActivePou(doc.getState().project.pous[1]!.id);
-  }, project);
-  const content = page.getByTestId('st-editor').locator('.cm-content');
-  await content.waitFor({ timeout: 60_000 });
-  // The middle of the body: find the line, put the cursor at its end.
-  await content.click();
-  await page.keyboard.press('Control+Home');
-  for (let k = 0; k < 10; k++) await page.keyboard.press('PageDown');
-  await page.keyboard.press('End');
+/** ms from the next `keydown` to the painted frame where the page expression `until` is true. */
+async function timedKey(page: Page, key: string, until: string): Promise<number> {
+  // tsx names the functions declared inside the callbacks through a helper the page lacks.
   await page.evaluate('window.__name ??= (f) => f');
-  const keys: number[] = [];
-  for (let k = 0; k < repeats; k++) {
-    const ch = String.fromCharCode(97 + (k % 26));
-    await page.evaluate((typed) => {
-      window.__stFrame = new Promise<number>((resolve) => {
+  await page.evaluate(
+    ({ until }) => {
+      const holds = new Function(`return (${until});`) as () => boolean;
+      window.__frame = new Promise<number>((resolve, reject) => {
         const on = (e: KeyboardEvent) => {
+          if (['Control', 'Shift', 'Alt', 'Meta'].includes(e.key)) return;
           window.removeEventListener('keydown', on, true);
           const t0 = e.timeStamp;
-          const shown = () => document.querySelector('.cm-activeLine')?.textContent?.endsWith(typed) ?? false;
           const frame = () =>
             requestAnimationFrame(() =>
-              setTimeout(() => (shown() ? resolve(performance.now() - t0) : frame()), 0),
+              setTimeout(
+                () =>
+                  holds()
+                    ? resolve(performance.now() - t0)
+                    : performance.now() - t0 > 20_000
+                      ? reject(
+                          new Error(
+                            `not shown after 20 s: ${until}; shown: ${document.querySelector('[data-testid="st-editor"]')?.textContent?.slice(-200)} / ${[...document.querySelectorAll('.cm-lintRange-error, .cm-lintPoint-error')].map((e) => e.outerHTML).join(' ')}`,
+                          ),
+                        )
+                      : frame(),
+                0,
+              ),
             );
           frame();
         };
         window.addEventListener('keydown', on, true);
       });
-    }, ch);
-    await page.keyboard.press(ch);
-    keys.push(await page.evaluate(() => window.__stFrame!));
+    },
+    { until },
+  );
+  await page.keyboard.press(key);
+  return page.evaluate(() => window.__frame!);
+}
+
+const LAST_LINE = `[...document.querySelectorAll('[data-testid="st-editor"] .cm-line')].at(-1)?.textContent ?? ''`;
+const UNDERLINED = `[...document.querySelectorAll('[data-testid="st-editor"] .cm-lintRange-error')].map((e) => e.textContent).join('|')`;
+
+const medianOf = (xs: readonly number[]) => [...xs].sort((a, b) => a - b)[Math.floor((xs.length - 1) / 2)]!;
+const pause = (page: Page, ms: number) => page.evaluate((t) => new Promise((r) => setTimeout(r, t)), ms);
+
+export interface StEditorFigures {
+  readonly lines: number;
+  readonly keystrokeMs: number;
+  readonly checkMs: number;
+  readonly commitMs: number;
+}
+
+/** Loads the 2,000-line ST body, then measures typing and the check after it (`repeats` times). */
+export async function stEditorFigures(page: Page, repeats = 5, lines = 2000): Promise<StEditorFigures> {
+  const project: Project = stBenchProject(lines);
+  const keys: number[] = [];
+  const checks: number[] = [];
+  for (let k = 0; k < repeats; k++) {
+    await page.evaluate((p: Project) => {
+      const s = window.rungsmith!.documentStore!.getState();
+      s.loadProject(p);
+      s.setActivePou(s.project.pous[0]!.id);
+    }, project);
+    const content = page.getByTestId('st-editor').locator('.cm-content');
+    await content.waitFor();
+    await pause(page, 1500);
+    await content.click();
+    await page.keyboard.press('Control+End');
+    await page.keyboard.press('Enter');
+    await pause(page, 300);
+    let typed = '';
+    for (const ch of 'Zz := 1') {
+      typed += ch;
+      keys.push(
+        await timedKey(
+          page,
+          ch === ' ' ? 'Space' : ch,
+          `(${LAST_LINE}).trim() === ${JSON.stringify(typed.trim())}`,
+        ),
+      );
+      await pause(page, 40);
+    }
+    // The body is now wrong twice over (no ";" yet): wait until that is shown, then complete the statement.
+    await page.waitForFunction(
+      `document.querySelector('[data-testid="st-editor"] .cm-lint-marker-error')`,
+      undefined,
+      { timeout: 30_000 },
+    );
+    checks.push(await timedKey(page, ';', `(${UNDERLINED}) === 'Zz'`));
+    // The typing burst is committed after its pause: let it be, so the next round starts afresh.
+    await pause(page, 1500);
   }
-  // Commit of the burst to the document: the 2,000-line text as one undo step, to the painted frame.
+  // A burst committed to the document, as the editor commits it after a pause (one undo step).
   const commits: number[] = [];
-  for (let k = 0; k < 5; k++) {
+  for (let k = 0; k < repeats; k++) {
     commits.push(
       await page.evaluate(async (n) => {
         const s = window.rungsmith!.documentStore!.getState();
-        const pou = s.project.pous[1]!;
+        const pou = s.project.pous.find((p) => p.language === 'ST')!;
         const t0 = performance.now();
-        s.setPouSource(pou.id, `${pou.source}\n// commit ${n}`, `Edit ST body of ${pou.name}`);
+        s.setPouSource(pou.id, `${pou.source ?? ''}\n// commit ${n}`, `Edit ST body of ${pou.name}`);
         await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
         return performance.now() - t0;
       }, k),
     );
-    await page.evaluate(() => new Promise((r) => setTimeout(r, 200)));
+    await pause(page, 200);
   }
-  return { stKeystrokeMs: medianOf(keys), stCommitMs: medianOf(commits), lines };
+  return { lines, keystrokeMs: medianOf(keys), checkMs: medianOf(checks), commitMs: medianOf(commits) };
 }
+
+async function main() {
+  const dist = process.env.RUNGSMITH_DIST ?? 'dist';
+  if (!existsSync(`${dist}/index.html`)) throw new Error(`${dist}/ is missing: build first (npx vite build)`);
+  const server = await preview({
+    build: { outDir: dist },
+    preview: { port: 0, host: '127.0.0.1', strictPort: false },
+    logLevel: 'warn',
+  });
+  const address = server.httpServer.address();
+  if (!address || typeof address === 'string') throw new Error('preview server has no port');
+  const browser = await chromium.launch({
+    executablePath: CHROMIUM_PATH,
+    args: [...CHROMIUM_ARGS, '--disable-gpu-vsync', '--disable-frame-rate-limit'],
+    headless: true,
+  });
+  try {
+    const page = await (await browser.newContext({ viewport: { width: 1440, height: 900 } })).newPage();
+    await page.goto(`http://127.0.0.1:${address.port}/`);
+    await page.getByTestId('ladder-canvas').waitFor();
+    const f = await stEditorFigures(page);
+    console.log(
+      `ST editor, ${f.lines}-line body: keystroke to painted frame ${f.keystrokeMs.toFixed(1)} ms; keystroke to the finding shown ${f.checkMs.toFixed(1)} ms; commit of a burst ${f.commitMs.toFixed(1)} ms`,
+    );
+    console.log(
+      `st-keystroke-ms=${f.keystrokeMs.toFixed(1)} st-check-ms=${f.checkMs.toFixed(1)} st-commit-ms=${f.commitMs.toFixed(1)}`,
+    );
+  } finally {
+    await browser.close();
+    await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
+  }
+}
+
+if (process.argv[1]?.endsWith('stEditorFigures.ts'))
+  main().catch((e: unknown) => {
+    console.error(e);
+    process.exit(1);
+  });

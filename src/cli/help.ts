@@ -15,6 +15,7 @@ Exit codes: 0 ok, 1 the program has errors, 2 bad usage or unreadable input.`,
 
 Checks every POU of FILE (a .json project or a PLCopen .xml file) and prints one line per
 diagnostic:  SEVERITY RULE-ID pou/network:cell message
+(in an ST or IL body:  SEVERITY RULE-ID pou/line L col C message)
 Exits with 1 if there is any error, 0 otherwise (warnings alone exit 0).`,
   simulate: `Usage: rungsmith simulate FILE [--pou NAME] [--inputs STIM.csv] [--scans N] [--cycle 10ms]
                           [--watch a,b,T1.Q] [--profile iec|openplc]

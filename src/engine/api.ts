@@ -19,6 +19,9 @@ export interface Diagnostic {
   readonly networkLabel?: string;
   readonly cell?: Cell;
   readonly elementId?: ElementId;
+  /** A text body (ST, IL): where in its text, 1-based line and column (network is then its first). */
+  readonly line?: number;
+  readonly col?: number;
   /** Plain words for a PLC programmer, naming the element/variable. */
   readonly message: string;
 }

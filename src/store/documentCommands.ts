@@ -14,6 +14,7 @@ import { transferElements } from './networkTransfer';
 import * as units from './networkUnits';
 import { followInterface } from './pouEdits';
 import { declaresLocally, renameInElement } from './variableEdits';
+import { stRenameEdits } from '../engine/st/services/rename';
 
 export const newElementId = () => newId<'ElementId'>('e') as ElementId;
 
@@ -325,6 +326,9 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
             changes.push(...diffNetwork(pou.id, net, { ...net, elements }));
           }
         }
+        // ST bodies: the uses, and a block's pin in its callers (`Inst.Pin`, `F(Pin := …)`).
+        for (const e of stRenameEdits(get().project, sc, before, after.name))
+          changes.push({ type: 'pou.update', pou: e.pou, before: { source: e.before }, after: { source: e.after } });
       }
       commit('updateVariable', [
         ...changes,

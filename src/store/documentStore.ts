@@ -67,8 +67,8 @@
 //                                     src/store/find.ts) as one undo step
 //   addVariable(v, scope?)            false when the name is taken (case-insensitive) in that scope
 //   updateVariable(name, patch, scope?)  renaming RENAMES EVERY REFERENCE too (contacts, coils,
-//                                     box instances and operands incl. `Name.Pin`) in the POU, or
-//                                     for a global in every POU that does not shadow it
+//                                     box instances and operands incl. `Name.Pin`, ST bodies) in the
+//                                     POU, or for a global in every POU that does not shadow it
 //   deleteVariable(name, scope?)      references stay (the checks report them)
 //   reorderVariables(names, scope?)   the variables in this order (by name; others after them);
 //                                     false when already so (the declaration text's order)

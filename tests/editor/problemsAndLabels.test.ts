@@ -24,6 +24,8 @@ describe('problems list wording', () => {
     expect(diagnosticNetwork(d({ network: 2, networkLabel: 'Start' }))).toBe('network 3 (Start)');
     expect(diagnosticNetwork(d({ network: 0 }))).toBe('network 1');
     expect(diagnosticNetwork(d({ network: -1 }))).toBe('variables');
+    // A finding in an ST body is where it is in the text.
+    expect(diagnosticNetwork(d({ network: 0, line: 12, col: 5 }))).toBe('line 12, column 5');
     expect(diagnosticCell(d({ cell: { row: 0, col: 4 } }))).toBe('row 1, column 5');
     expect(diagnosticCell(d({}))).toBe('');
   });

@@ -177,9 +177,9 @@ describe('struct and array arguments of user blocks called from ST', () => {
   test('a structure of another type is refused, at its line', () => {
     const main = textPou('Main', 'PROGRAM', [v('C', 'ScaleCfg'), v('R', 'Pair'), ...vars('S1 Swap')], 'C := MakePair(1);\nS1(P := C);\nS1(P := R, Old => C);');
     expect(stErrors({ ...stProject([main, makePair, swap]), dataTypes: TYPES })).toEqual([
-      'error LD-E50 Main/network 1 the ST body of Main does not compile: line 1 col 6: "C" is the structure ScaleCfg; MakePair(...) returns Pair',
-      'error LD-E50 Main/network 1 the ST body of Main does not compile: line 2 col 9: the in-out P of Swap is Pair; "C" is the structure ScaleCfg',
-      'error LD-E50 Main/network 1 the ST body of Main does not compile: line 3 col 19: the output Old of Swap is the structure Pair; "C" is the structure ScaleCfg',
+      'error LD-E50 Main/line 1 col 6 the ST body of Main does not compile: line 1 col 6: "C" is the structure ScaleCfg; MakePair(...) returns Pair',
+      'error LD-E50 Main/line 2 col 9 the ST body of Main does not compile: line 2 col 9: the in-out P of Swap is Pair; "C" is the structure ScaleCfg',
+      'error LD-E50 Main/line 3 col 19 the ST body of Main does not compile: line 3 col 19: the output Old of Swap is the structure Pair; "C" is the structure ScaleCfg',
     ]);
   });
 });

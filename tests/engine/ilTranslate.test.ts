@@ -104,7 +104,7 @@ describe('IL semantics', () => {
 
   test('type errors name the line; the current result must agree at a label', () => {
     const errs = (src: string) => stErrors(ilProgram(src, vars('b BOOL', 'i INT')));
-    expect(errs('LD i\nST b')[0]).toMatch(/LD-E50 Main\/network 1 the IL body of Main does not compile: line 2 col 1: cannot assign to b: BOOL is needed and the value is INT/);
+    expect(errs('LD i\nST b')[0]).toMatch(/LD-E50 Main\/line 2 col 1 the IL body of Main does not compile: line 2 col 1: cannot assign to b: BOOL is needed and the value is INT/);
     expect(errs('LD b\nJMPC L\nLD i\nL: ST i')[0]).toMatch(/line 4 col 1: the current result is INT here but BOOL where jumps to L come from/);
     expect(errs('LD b\nJMPC L\nLD i\nL: LD 1\nST i')).toEqual([]);
     expect(errs('JMP nowhere')[0]).toMatch(/line 1 col 1: there is no label nowhere/);

@@ -199,7 +199,7 @@ describe('ST errors are located and name the POU', () => {
 
   test('a type mismatch needs a conversion', () => {
     expect(errorsOf('i := 1;\ni := r;')).toEqual([
-      'error LD-E50 Main/network 1 the ST body of Main does not compile: line 2 col 6: cannot assign to i: INT is needed and the value is REAL; convert it with REAL_TO_INT',
+      'error LD-E50 Main/line 2 col 6 the ST body of Main does not compile: line 2 col 6: cannot assign to i: INT is needed and the value is REAL; convert it with REAL_TO_INT',
     ]);
   });
 

@@ -14,6 +14,7 @@ import { declarationView, revealDeclarationText } from '../variables/declaration
 import { DECLARATION_SYNTAX_RULE } from '../../engine/st/declarations';
 import type { VariableScope } from '../../store/changes';
 import { useStore } from 'zustand';
+import { revealStLine } from '../st/services/reveal';
 import './problems.css';
 
 /** The network and cell a diagnostic points at, resolved against the document. */
@@ -82,6 +83,8 @@ export function ProblemsPanel() {
     const doc = documentStore.getState();
     const { pou, network, cell, element } = placeOf(doc.project, d);
     if (pou && pou.id !== doc.activePouId) doc.setActivePou(pou.id);
+    // A finding in an ST/IL body: its editor puts the cursor on the line.
+    if (pou && d.line !== undefined) return revealStLine(pou.id, d.line, d.col);
     if (d.network < 0 && pou) return showVariable(doc.project, pou, d.message);
     if (!pou || !network) return;
     const ui = uiStore.getState();
@@ -116,7 +119,7 @@ export function ProblemsPanel() {
                 className={`rs-problem rs-${d.severity}`}
                 data-testid="problem"
                 data-rule={d.rule}
-                title="Show this place on the canvas"
+                title={d.line !== undefined ? 'Show this line in the editor' : 'Show this place on the canvas'}
                 onClick={() => jump(d)}
               >
                 <span className="rs-problem-severity" aria-label={d.severity}>

@@ -4,8 +4,9 @@ import { describeElement } from '../../engine/compile/report';
 import type { Cell } from '../../model/grid';
 import type { LdElement } from '../../model/elements';
 
-/** "network 3 (Start)", or "variables" for POU-level diagnostics. */
+/** "network 3 (Start)", "line 12, column 5" in a text body (ST, IL), or "variables" for POU-level diagnostics. */
 export function diagnosticNetwork(d: Diagnostic): string {
+  if (d.line !== undefined) return `line ${d.line}, column ${d.col ?? 1}`;
   if (d.network < 0) return 'variables';
   return `network ${d.network + 1}${d.networkLabel ? ` (${d.networkLabel})` : ''}`;
 }
@@ -42,6 +43,8 @@ export function sortDiagnostics(list: readonly Diagnostic[]): Diagnostic[] {
       rank(a) - rank(b) ||
       a.pou.localeCompare(b.pou) ||
       a.network - b.network ||
+      (a.line ?? 0) - (b.line ?? 0) ||
+      (a.col ?? 0) - (b.col ?? 0) ||
       (a.cell?.row ?? -1) - (b.cell?.row ?? -1) ||
       (a.cell?.col ?? -1) - (b.cell?.col ?? -1) ||
       a.rule.localeCompare(b.rule),

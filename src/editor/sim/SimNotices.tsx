@@ -16,8 +16,12 @@ const selectMode = (s: SimState) => s.mode;
 const selectOnlineChange = (s: SimState) => s.onlineChange;
 const selectConfirmRequired = (s: SimState) => s.onlineConfirmRequired;
 
-const where = (d: Pick<Diagnostic, 'network' | 'networkLabel'>) =>
-  d.network < 0 ? 'variables' : `network ${d.network + 1}${d.networkLabel ? ` (${d.networkLabel})` : ''}`;
+const where = (d: Pick<Diagnostic, 'network' | 'networkLabel' | 'line' | 'col'>) =>
+  d.line !== undefined
+    ? `line ${d.line}, column ${d.col ?? 1}`
+    : d.network < 0
+    ? 'variables'
+    : `network ${d.network + 1}${d.networkLabel ? ` (${d.networkLabel})` : ''}`;
 
 /** A fault in words, naming the instance and POU inside a body (position.ts). */
 export const describeFault = (f: Fault) => faultWords(f);

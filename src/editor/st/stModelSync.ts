@@ -6,7 +6,7 @@
 // or is placed with the pointer, when the editor loses the focus, before the project's undo/redo,
 // and when the editor closes. CodeMirror's own history is not used: Ctrl+Z / Ctrl+Y /
 // Ctrl+Shift+Z in the editor are the project's undo and redo, so they behave as everywhere else.
-import { Annotation, ChangeSet, EditorSelection, Facet, Prec, type Extension } from '@codemirror/state';
+import { Annotation, ChangeSet, EditorSelection, Facet, Prec, type EditorState, type Extension } from '@codemirror/state';
 import { EditorView, keymap, ViewPlugin, type ViewUpdate } from '@codemirror/view';
 import type { PouId } from '../../model/ids';
 import type { DocumentStore } from '../../store/documentStore';
@@ -174,3 +174,6 @@ export function modelSync(store: DocumentStore, pouId: PouId): Extension {
     ),
   ];
 }
+
+/** The document and POU an editor shows (for extensions that read the project, e.g. language services). */
+export const stModelLink = (state: EditorState): { store: DocumentStore; pouId: PouId } | undefined => state.facet(modelLink);

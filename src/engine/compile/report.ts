@@ -82,7 +82,13 @@ export class Reporter {
     this.add('warning', rule, message, at);
   }
 
-  private add(severity: Diagnostic['severity'], rule: RuleId, message: string, at?: Located): void {
+  /** A finding in a text body (ST, IL) at a 1-based line and column of its text. */
+  inText(severity: Diagnostic['severity'], rule: RuleId, message: string, pos: { line: number; col: number }): void {
+    if (severity === 'error') this.errors++;
+    this.add(severity, rule, message, undefined, pos);
+  }
+
+  private add(severity: Diagnostic['severity'], rule: RuleId, message: string, at?: Located, text?: { line: number; col: number }): void {
     const cell: Cell | undefined = at ? { row: at.row, col: at.col } : undefined;
     this.out.push({
       severity,
@@ -94,15 +100,21 @@ export class Reporter {
         : {}),
       ...(cell ? { cell } : {}),
       ...(at?.id !== undefined ? { elementId: at.id } : {}),
+      ...(text ? { line: text.line, col: text.col } : {}),
       message,
     });
   }
 }
 
-/** One line for terminals and logs: `error LD-R03 Main/network 2:R1C4 the contact ...`. */
+/**
+ * One line for terminals and logs: `error LD-R03 Main/network 2:R1C4 the contact ...`; in a text
+ * body, `error LD-E50 Scale/line 3 col 7 the ST body of Scale does not compile: ...`.
+ */
 export function formatDiagnostic(d: Diagnostic): string {
   const where =
-    d.network < 0
+    d.line !== undefined
+      ? `${d.pou}/line ${d.line} col ${d.col ?? 1}`
+      : d.network < 0
       ? `${d.pou}/variables`
       : `${d.pou}/network ${d.network + 1}${d.networkLabel ? ` (${d.networkLabel})` : ''}${d.cell ? `:${cellName(d.cell.row, d.cell.col)}` : ''}`;
   return `${d.severity} ${d.rule} ${where} ${d.message}`;

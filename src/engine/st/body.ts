@@ -16,6 +16,9 @@ export function bodyShapes(pou: Pou): { elements: number; vlinks: number }[] {
     : pou.networks.map((n) => ({ elements: n.elements.length, vlinks: n.vlinks.length }));
 }
 
+/** How the message of an error in a text body starts, before `line L col C: ...`. */
+export const textBodyPrefix = (pou: Pick<Pou, 'language' | 'name'>): string => `the ${pou.language} body of ${pou.name} does not compile: `;
+
 export function lowerTextBody(
   project: Project,
   pou: Pou & { language: 'ST' | 'IL' },
@@ -34,9 +37,9 @@ export function lowerTextBody(
   for (const p of result.pragmas) {
     const code = p.text.trim().replace(/\s+/g, ' ');
     const shown = code.length > 60 ? `${code.slice(0, 57)}...` : code;
-    r.warning('LD-W50', `the pragma {${shown}} in the ${pou.language} body of ${pou.name} (line ${p.pos.line}) is C code for the MATIEC runtime; the simulator ignores it`);
+    r.inText('warning', 'LD-W50', `the pragma {${shown}} in the ${pou.language} body of ${pou.name} (line ${p.pos.line}) is C code for the MATIEC runtime; the simulator ignores it`, p.pos);
   }
-  for (const e of result.errors) r.error(e.rule ?? 'LD-E50', `the ${pou.language} body of ${pou.name} does not compile: ${describeStError(e)}`);
+  for (const e of result.errors) r.inText('error', e.rule ?? 'LD-E50', `${textBodyPrefix(pou)}${describeStError(e)}`, e.pos);
   return { ctx, networks: result.networks ?? bodyChunks(pou).map(() => undefined), ok: !!result.networks };
 }
 

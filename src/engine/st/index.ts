@@ -203,8 +203,16 @@ const nodeCount = (x: unknown): number => {
 const hasReturn = (x: unknown): boolean =>
   Array.isArray(x) ? x.some(hasReturn) : !!x && typeof x === 'object' && ((x as { k?: string }).k === 'return' || Object.values(x).some(hasReturn));
 
-/** Where the networks of an ST/IL body start: indexes of its top-level statements (one network: [0]). */
+const chunksCache = new WeakMap<Pou, number[]>();
+
+/** Where the networks of an ST/IL body start: indexes of its top-level statements (one network: [0]). Cached per POU object. */
 export function bodyChunks(pou: Pou): number[] {
+  let hit = chunksCache.get(pou);
+  if (!hit) chunksCache.set(pou, (hit = findChunks(pou)));
+  return hit;
+}
+
+function findChunks(pou: Pou): number[] {
   const stmts = pou.language === 'ST' ? parseBody(pou).stmts : undefined;
   if (!stmts || stmts.length < 2 || hasReturn(stmts)) return [0];
   const starts = [0];
