@@ -37,7 +37,8 @@ export type TStmt =
   | { readonly k: 'eval'; readonly value: TExpr }
   | {
       readonly k: 'if';
-      readonly branches: readonly { readonly cond: TExpr; readonly body: readonly TStmt[] }[];
+      /** `line`: where an ELSIF's condition is (the instrumented code stops there). */
+      readonly branches: readonly { readonly cond: TExpr; readonly body: readonly TStmt[]; readonly line?: number }[];
       readonly otherwise?: readonly TStmt[];
     }
   | { readonly k: 'case'; readonly selector: TExpr; readonly arms: readonly CaseArm[]; readonly otherwise?: readonly TStmt[] }
@@ -77,7 +78,12 @@ export type TStmt =
   | { readonly k: 'now'; readonly dst: Access }
   | { readonly k: 'setcr'; readonly slot: number; readonly value: TExpr }
   | { readonly k: 'label'; readonly id: number }
-  | { readonly k: 'goto'; readonly id: number; readonly back: boolean; readonly line: number };
+  | { readonly k: 'goto'; readonly id: number; readonly back: boolean; readonly line: number }
+  /**
+   * Where the next statement starts in the body's text (1-based line). No code on the fast path;
+   * the instrumented step code (emit.ts, `instrument`) records the line and may pause there.
+   */
+  | { readonly k: 'line'; readonly line: number };
 
 /** Every body range the statements call (nested loops included), and their size in operations. */
 export function stFacts(body: readonly TStmt[]): { calls: { first: number; end: number }[]; weight: number; labels: boolean } {
@@ -111,6 +117,7 @@ export function stFacts(body: readonly TStmt[]): { calls: { first: number; end: 
   };
   const stmts = (list: readonly TStmt[]): void => {
     for (const s of list) {
+      if (s.k === 'line') continue;
       weight++;
       switch (s.k) {
         case 'assign':
