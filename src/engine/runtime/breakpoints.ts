@@ -52,7 +52,8 @@ export type StepKind = 'over' | 'into' | 'out';
  */
 export function step(plc: Plc, kind: StepKind): StepReport {
   const depth = plc.position().length;
-  if (kind === 'into' || depth === 0) return plc.stepNetwork(kind === 'into' ? { into: true } : undefined);
+  // Into, or over at program level (a network runs whole; an ST/IL program's statement: the PLC's own step over).
+  if (kind === 'into' || depth === 0 || (kind === 'over' && depth === 1)) return plc.stepNetwork(kind === 'into' ? { into: true } : undefined);
   const goal = kind === 'out' ? depth - 1 : depth;
   let report = plc.stepNetwork({ into: true });
   while (!report.fault && !report.scanDone && plc.position().length > goal) report = plc.stepNetwork({ into: true });

@@ -30,6 +30,13 @@ class WatchdogTrip {
 const perf = (globalThis as { performance?: { now(): number } }).performance;
 const now: () => number = perf ? () => perf.now() : () => Date.now();
 
+/** What an observed ST/IL body did in scan `scan` (api.ts TextTrace), as it is recorded. */
+export interface TextRecord {
+  readonly scan: number;
+  readonly lines: Set<number>;
+  readonly values: Map<string, { line: number; value: Value }>;
+}
+
 export abstract class ScanCycle {
   readonly pou: string;
   readonly profile: CompiledProgram['profile'];
@@ -122,7 +129,7 @@ export abstract class ScanCycle {
   /** Networks of the observed ST/IL bodies (1), and what each observed body did, by body index. */
   private readonly observed: Uint8Array;
   private observing = false;
-  private readonly traces = new Map<number, { scan: number; lines: Set<number>; values: Map<string, { line: number; value: Value }> }>();
+  protected readonly traces = new Map<number, TextRecord>();
   /** Wall time at which a step left the scan paused (the watchdog does not count the pause). */
   private pausedAt = -1;
   /** Line of the ST/IL loop that tripped the watchdog (0: none). */
@@ -590,7 +597,7 @@ export abstract class ScanCycle {
     this.observing = this.observed.includes(1);
   }
 
-  private traceOf(network: number) {
+  private traceOf(network: number): TextRecord {
     const b = this.program.bodyOf[network]!;
     let t = this.traces.get(b);
     if (!t || t.scan !== this.count) {
