@@ -9,7 +9,7 @@ import type { Network, Pou, Project, Task, Variable } from '../model/project';
 export type NetworkProps = Omit<Network, 'id' | 'elements' | 'vlinks'>;
 export type ProjectProps = Pick<Project, 'name' | 'description' | 'profile' | 'scenarios' | 'dataTypes' | 'libraries' | 'onlineChange'>;
 /** POU fields a command may change in place (an `undefined` value removes an optional field). */
-export type PouProps = Pick<Pou, 'name' | 'comment' | 'kind' | 'returnType'>;
+export type PouProps = Pick<Pou, 'name' | 'comment' | 'kind' | 'returnType' | 'source'>;
 /** 'globals' addresses the project's global variables instead of a POU's. */
 export type VariableScope = PouId | 'globals';
 

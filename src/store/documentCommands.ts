@@ -75,6 +75,7 @@ type Commands = Omit<
   | keyof DataTypeCommands
   | keyof TaskCommands
   | 'updatePou'
+  | 'setPouSource'
   | 'undo'
   | 'redo'
   | 'mark'

@@ -30,6 +30,7 @@
 //   deletePou(id)                     also drops its task entries; calls stay (checks report them);
 //                                     never the last POU (see pouUsages() for what uses it)
 //   updatePou(id, {comment, kind, returnType})   a FUNCTION always has a return type
+//   setPouSource(id, text, name)      the body text of an ST/IL POU, one step named `name`
 //   addDataType(kind, name?) / renameDataType(name, to) / duplicateDataType(name) /
 //   deleteDataType(name) / updateDataType(name, {def, initial, comment})   user data types
 //                                     (src/store/dataTypeCommands.ts); a rename retypes every
@@ -141,6 +142,7 @@ export interface DocumentState {
   duplicatePou: PouCommands['duplicatePou'];
   deletePou: PouCommands['deletePou'];
   updatePou: PouCommands['updatePou'];
+  setPouSource: PouCommands['setPouSource'];
   addDataType: DataTypeCommands['addDataType'];
   renameDataType: DataTypeCommands['renameDataType'];
   duplicateDataType: DataTypeCommands['duplicateDataType'];

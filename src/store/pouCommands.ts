@@ -23,6 +23,11 @@ export interface PouCommands {
   duplicatePou(id: PouId): PouId | undefined;
   deletePou(id: PouId): boolean;
   updatePou(id: PouId, patch: PouPatch): boolean;
+  /**
+   * The body text of an ST (or IL) POU, one undo step named `name` (the ST editor commits a typing
+   * burst as "Edit ST body of Scale"). False when the POU has no text body or nothing changed.
+   */
+  setPouSource(id: PouId, text: string, name: string): boolean;
 }
 
 const DEFAULT_NAMES: Record<PouKind, string> = {
@@ -94,6 +99,12 @@ export function pouCommands({ project, commit, open }: PouCommandOps): PouComman
         changes.push({ type: 'tasks.update', before: p.tasks, after: tasks });
       }
       commit('deletePou', changes);
+      return true;
+    },
+    setPouSource: (id, text, name) => {
+      const pou = find(id);
+      if (!pou || (pou.language !== 'ST' && pou.language !== 'IL') || pou.source === text) return false;
+      commit(name, [{ type: 'pou.update', pou: id, before: { source: pou.source }, after: { source: text } }]);
       return true;
     },
     updatePou: (id, patch) => {

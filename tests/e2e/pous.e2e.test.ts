@@ -1,7 +1,7 @@
 // A PLC programmer builds a project from several POUs: an FB Motor with its own seal-in rung,
 // used twice from the program (block search and palette), renamed (calls and instance types
 // follow), deleted (the editor says where it is used) and brought back with Undo; a FUNCTION with
-// a return type; the variable table fully visible at 1280×720; an ST POU shown read-only.
+// a return type; the variable table fully visible at 1280×720; an ST POU opens in the ST editor.
 // Run: the values inside one instance picked on the Motor tab, then the other; step into the call
 // and over the body's network back out to Main.
 import type { Page } from 'playwright-core';
@@ -350,7 +350,7 @@ test('the variable table shows every column inside the side panel at 1280×720',
   }
 });
 
-test('a POU written in ST is listed and opens read-only with its source', async () => {
+test('a POU written in ST is listed and opens in the ST editor with its source', async () => {
   await page.evaluate(({ p }) => window.rungsmith!.documentStore!.getState().loadProject(p), {
     p: newProject('Mixed', {
       pous: [
@@ -365,9 +365,10 @@ test('a POU written in ST is listed and opens read-only with its source', async 
     .getByRole('button', { name: /Filter/ })
     .first()
     .click();
-  const view = page.getByTestId('source-view');
+  const view = page.getByTestId('st-body-view');
   await view.waitFor();
-  expect(await view.textContent()).toContain('the editor edits LD only');
-  expect(await view.locator('pre').textContent()).toBe('OUT := IN * 2;');
+  const content = view.getByRole('textbox', { name: 'ST body of Filter' });
+  expect(await content.getAttribute('contenteditable')).toBe('true');
+  expect(await content.textContent()).toBe('OUT := IN * 2;');
   expect(errors).toEqual([]);
 });

@@ -1,9 +1,12 @@
 // The centre of the editor: the open POUs' tabs, then the ladder canvas of the shown POU (or the
-// read-only source of a POU in another language), or the editor of an open data type.
+// ST editor of an ST POU, or the read-only source of a POU in another language or of a library
+// block), or the editor of an open data type.
+import { libraryInfo } from '../../model/codesysUtil';
 import { selectActivePou, useDocument } from '../../store/documentStore';
 import { LadderCanvas } from '../canvas/LadderCanvas';
 import { DataTypeEditor } from '../dataTypes/DataTypeEditor';
 import { useShownDataType } from '../dataTypes/dataTypeTabs';
+import { StBodyView } from '../st/StBodyView';
 import { PouTabs } from './PouTabs';
 import { SourceView } from './SourceView';
 
@@ -16,6 +19,8 @@ export function PouView() {
       <div className="rs-pou-body">
         {dataType ? (
           <DataTypeEditor name={dataType} />
+        ) : pou && pou.language === 'ST' && !libraryInfo(pou) ? (
+          <StBodyView key={pou.id} pou={pou} />
         ) : pou && pou.language !== 'LD' ? (
           <SourceView pou={pou} />
         ) : (

@@ -13,11 +13,81 @@ export interface Token {
   readonly pos: Pos;
 }
 
-const SYMBOLS = ['**', ':=', '=>', '<=', '>=', '<>', '..', '+', '-', '*', '/', '=', '<', '>', '(', ')', ',', ';', ':', '.', '&', '[', ']', '^', '#'];
+/** The operator and punctuation symbols, longest first where one starts another. */
+export const SYMBOLS: readonly string[] = ['**', ':=', '=>', '<=', '>=', '<>', '..', '+', '-', '*', '/', '=', '<', '>', '(', ')', ',', ';', ':', '.', '&', '[', ']', '^', '#'];
 
 const isIdentStart = (c: string): boolean => /[A-Za-z_]/.test(c);
 const isIdentChar = (c: string): boolean => /[A-Za-z0-9_]/.test(c);
 const isDigit = (c: string): boolean => c >= '0' && c <= '9';
+
+// The scanners below give the end (exclusive) of one token starting at `i`; the lexer and the
+// editor's highlighter (src/editor/st/stLanguage.ts) share them, so both read literals alike.
+
+/** End of the identifier at `i` (its first character is a letter or `_`). */
+export function identEnd(text: string, i: number): number {
+  let end = i;
+  while (end < text.length && isIdentChar(text[end]!)) end++;
+  return end;
+}
+
+/** End of the number at `i` (a digit): 42, 1_000, 16#FF, 2#1010, 1.5, 1.5E3, 2E-3. */
+export function numberEnd(text: string, i: number): number {
+  let end = i;
+  while (end < text.length && (isDigit(text[end]!) || text[end] === '_')) end++;
+  if (text[end] === '#') {
+    // based integer 16#FF
+    end++;
+    while (end < text.length && /[0-9A-Fa-f_]/.test(text[end]!)) end++;
+    return end;
+  }
+  if (text[end] === '.' && isDigit(text[end + 1] ?? '')) {
+    end++;
+    while (end < text.length && (isDigit(text[end]!) || text[end] === '_')) end++;
+  }
+  if (/[eE]/.test(text[end] ?? '') && (isDigit(text[end + 1] ?? '') || (/[+-]/.test(text[end + 1] ?? '') && isDigit(text[end + 2] ?? '')))) {
+    end += 2;
+    while (end < text.length && isDigit(text[end]!)) end++;
+  }
+  return end;
+}
+
+/**
+ * End of the typed literal whose type name ends at `hash` (`text[hash] === '#'`): INT#5, INT#-5,
+ * INT#16#FF, T#1h2m, TIME#-2s, REAL#1.5E-3, BOOL#TRUE.
+ */
+export function typedLiteralEnd(text: string, hash: number): number {
+  let end = hash + 1;
+  if (text[end] === '+' || text[end] === '-') end++;
+  while (end < text.length) {
+    const d = text[end]!;
+    if (isIdentChar(d) || d === '#') end++;
+    else if (d === '.' && isDigit(text[end + 1] ?? '')) end++;
+    else if ((d === '+' || d === '-') && /[eE]/.test(text[end - 1]!) && isDigit(text[end - 2] ?? '') && isDigit(text[end + 1] ?? '')) end++;
+    else break;
+  }
+  return end;
+}
+
+/** End of the direct address at `i` (`%`): %IX0.0, %QW3, %MD10. */
+export function locationEnd(text: string, i: number): number {
+  let end = i + 1;
+  while (end < text.length && /[A-Za-z0-9_.*]/.test(text[end]!)) end++;
+  return end;
+}
+
+/**
+ * End (after the closing quote) of the string at `i` (`'` or `"`), or -1 when it is never
+ * closed. `$` escapes the next character (`$'`, `$$`, `$L`, `$0A`).
+ */
+export function stringEnd(text: string, i: number): number {
+  const q = text[i];
+  let end = i + 1;
+  while (end < text.length && text[end] !== q) end += text[end] === '$' ? 2 : 1;
+  return end >= text.length ? -1 : end + 1;
+}
+
+/** The symbol at `i`, or undefined. */
+export const symbolAt = (text: string, i: number): string | undefined => SYMBOLS.find((s) => text.startsWith(s, i));
 
 export function tokenize(text: string): Token[] {
   const out: Token[] = [];
@@ -71,58 +141,30 @@ export function tokenize(text: string): Token[] {
       continue;
     }
     if (c === "'" || c === '"') {
-      // `$` escapes the next character (`$'`, `$$`, `$L`, `$0A`): the string ends at the first
-      // unescaped quote of its kind; the literal's value is read by parseStringLiteral.
-      let end = i + 1;
-      while (end < text.length && text[end] !== c) end += text[end] === '$' ? 2 : 1;
-      if (end >= text.length) throw new StSyntaxError(at, 'this string is never closed');
-      push('string', i, end + 1, at);
-      advanceTo(end + 1);
+      // The string ends at the first unescaped quote of its kind; the literal's value is read by
+      // parseStringLiteral.
+      const end = stringEnd(text, i);
+      if (end < 0) throw new StSyntaxError(at, 'this string is never closed');
+      push('string', i, end, at);
+      advanceTo(end);
       continue;
     }
     if (c === '%') {
-      let end = i + 1;
-      while (end < text.length && /[A-Za-z0-9_.*]/.test(text[end]!)) end++;
+      const end = locationEnd(text, i);
       push('location', i, end, at);
       advanceTo(end);
       continue;
     }
     if (isDigit(c)) {
-      let end = i;
-      while (end < text.length && (isDigit(text[end]!) || text[end] === '_')) end++;
-      if (text[end] === '#') {
-        // based integer 16#FF
-        end++;
-        while (end < text.length && /[0-9A-Fa-f_]/.test(text[end]!)) end++;
-      } else {
-        if (text[end] === '.' && isDigit(text[end + 1] ?? '')) {
-          end++;
-          while (end < text.length && (isDigit(text[end]!) || text[end] === '_')) end++;
-        }
-        if (/[eE]/.test(text[end] ?? '') && (isDigit(text[end + 1] ?? '') || (/[+-]/.test(text[end + 1] ?? '') && isDigit(text[end + 2] ?? '')))) {
-          end += 2;
-          while (end < text.length && isDigit(text[end]!)) end++;
-        }
-      }
+      const end = numberEnd(text, i);
       push('literal', i, end, at);
       advanceTo(end);
       continue;
     }
     if (isIdentStart(c)) {
-      let end = i;
-      while (end < text.length && isIdentChar(text[end]!)) end++;
+      let end = identEnd(text, i);
       if (text[end] === '#') {
-        // typed literal: INT#5, INT#-5, INT#16#FF, T#1h2m, REAL#1.5E-3, BOOL#TRUE
-        end++;
-        if (text[end] === '+' || text[end] === '-') end++;
-        while (end < text.length) {
-          const d = text[end]!;
-          if (isIdentChar(d) || d === '#') end++;
-          else if (d === '.' && isDigit(text[end + 1] ?? '')) end++;
-          else if ((d === '+' || d === '-') && /[eE]/.test(text[end - 1]!) && isDigit(text[end - 2] ?? '') && isDigit(text[end + 1] ?? ''))
-            end++;
-          else break;
-        }
+        end = typedLiteralEnd(text, end);
         push('literal', i, end, at);
         advanceTo(end);
         continue;
@@ -131,7 +173,7 @@ export function tokenize(text: string): Token[] {
       advanceTo(end);
       continue;
     }
-    const sym = SYMBOLS.find((s) => text.startsWith(s, i));
+    const sym = symbolAt(text, i);
     if (!sym) throw new StSyntaxError(at, `unexpected character "${c}"`);
     push('symbol', i, i + sym.length, at);
     advanceTo(i + sym.length);
