@@ -2,7 +2,7 @@
 // and PLCopen round-trip tests. Implementations live beside this file; these are the types.
 import type { Cell } from '../model/grid';
 import type { ElementId } from '../model/ids';
-import type { Value } from '../model/iecTypes';
+import type { ElementaryType, Value } from '../model/iecTypes';
 import type { Profile } from '../model/project';
 
 /** LD-R01..LD-R13 from LD-SEMANTICS.md section 9, plus LD-E.. for errors outside those rules
@@ -111,8 +111,10 @@ export interface TextTrace {
   readonly scan: number;
   /** Lines of the statements that ran, ascending. */
   readonly lines: readonly number[];
+  /** Lines of every statement of the body (ELSIF conditions included), ascending: the others hold none. */
+  readonly stops: readonly number[];
   /** By the names the body's text uses (`Out`, `A[i]`, `T1.Q`), in the order first written. */
-  readonly values: readonly { readonly name: string; readonly line: number; readonly value: Value }[];
+  readonly values: readonly { readonly name: string; readonly line: number; readonly type: ElementaryType; readonly value: Value }[];
 }
 export interface InstanceInfo {
   /** `Motor1`, `Line.Motor1` (a configuration: `Prog1.Motor1`). */

@@ -22,6 +22,8 @@ describe('observing an ST body', () => {
     expect(t).toMatchObject({ pou: 'Hyst', instance: 'H1', scan: 1 });
     // Line 3 (ELSIF) and 4 did not run: X > Hi.
     expect(t.lines).toEqual([1, 2, 6, 7, 8, 9]);
+    // Every statement's line (END_IF holds none).
+    expect(t.stops).toEqual([1, 2, 3, 4, 6, 7, 8, 9]);
     const byName = Object.fromEntries(t.values.map((v) => [v.name, [v.line, v.value]]));
     // Count: 2 after line 7 (written twice in the scan: the last write wins).
     expect(byName).toEqual({ Q: [2, true], Count: [7, 2], Twice: [8, 2], Shown: [9, true] });
@@ -65,13 +67,13 @@ describe('observing an ST body', () => {
     const image = probe.save();
     plc.write('Level', 20);
     plc.scan();
-    expect(plc.textTrace({ pou: 'Hyst', instance: 'H1' })!.values.find((v) => v.name === 'Q')).toEqual({ name: 'Q', line: 2, value: true });
+    expect(plc.textTrace({ pou: 'Hyst', instance: 'H1' })!.values.find((v) => v.name === 'Q')).toEqual({ name: 'Q', line: 2, type: 'BOOL', value: true });
     probe.restore(image);
     probe.replay(plc.timeMs + 10);
     const replayed = plc.textTrace({ pou: 'Hyst', instance: 'H1' })!;
     expect(replayed.scan).toBe(2);
-    expect(replayed.values.find((v) => v.name === 'Q')).toEqual({ name: 'Q', line: 4, value: false });
-    expect(replayed.values.find((v) => v.name === 'Count')).toEqual({ name: 'Count', line: 7, value: 6 });
+    expect(replayed.values.find((v) => v.name === 'Q')).toEqual({ name: 'Q', line: 4, type: 'BOOL', value: false });
+    expect(replayed.values.find((v) => v.name === 'Count')).toEqual({ name: 'Count', line: 7, type: 'INT', value: 6 });
   });
 });
 
@@ -115,8 +117,8 @@ describe('breakpoints on lines', () => {
     const t = plc.textTrace({ pou: 'Hyst', instance: 'H1' })!;
     expect(t.lines).toEqual([1, 3, 4, 6, 7]);
     expect(t.values).toEqual([
-      { name: 'Q', line: 4, value: false },
-      { name: 'Count', line: 6, value: 1 },
+      { name: 'Q', line: 4, type: 'BOOL', value: false },
+      { name: 'Count', line: 6, type: 'INT', value: 1 },
     ]);
   });
 });

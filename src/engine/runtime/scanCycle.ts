@@ -4,7 +4,7 @@
 // the watchdog and runtime faults, stepping one network at a time (and into calls), and cold/warm
 // restart. What the rest of the app calls (variables, forcing, online change, probe, snapshots) is
 // in scanner.ts.
-import type { Value } from '../../model/iecTypes';
+import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { Fault, PlcOptions, TaskSchedule, StepFrame, StepReport, TextTarget, TextTrace } from '../api';
 import type { FnContext } from '../library/fnTypes';
 import { slotKey } from '../compile/emitter';
@@ -15,6 +15,7 @@ import { generateSegment, planSegments } from '../compile/segments';
 import { DEFAULT_TIERING, Tiering, type TieringOptions } from './tiering';
 import type { CompiledProgram } from '../compile/program';
 import type { VarSymbol } from '../compile/symbols';
+import { stLines } from '../st/lowered';
 import { Memory } from './memory';
 import { programRates, type ProgramRates } from './programRates';
 
@@ -34,7 +35,7 @@ const now: () => number = perf ? () => perf.now() : () => Date.now();
 export interface TextRecord {
   readonly scan: number;
   readonly lines: Set<number>;
-  readonly values: Map<string, { line: number; value: Value }>;
+  readonly values: Map<string, { line: number; type: ElementaryType; value: Value }>;
 }
 
 export abstract class ScanCycle {
@@ -117,11 +118,11 @@ export abstract class ScanCycle {
       if (this.observed[network] === 1) this.traceOf(network).lines.add(line);
     },
     /** Instrumented ST/IL: the statement at `line` wrote `value` to `name`. */
-    w: (network: number, line: number, name: string, value: Value): void => {
+    w: (network: number, line: number, name: string, type: ElementaryType, value: Value): void => {
       if (this.observed[network] !== 1) return;
       const t = this.traceOf(network);
       t.values.delete(name);
-      t.values.set(name, { line, value });
+      t.values.set(name, { line, type, value });
     },
   };
   /** ST/IL networks (the step code stops before their statements, not before the network). */
@@ -607,6 +608,24 @@ export abstract class ScanCycle {
     return t;
   }
 
+  private readonly stopLines = new Map<number, readonly number[]>();
+
+  /** Lines of every statement of a body's ST/IL networks. */
+  private stopsOf(b: number): readonly number[] {
+    let hit = this.stopLines.get(b);
+    if (!hit) {
+      const body = this.program.bodies[b]!;
+      const lines = new Set<number>();
+      for (let i = body.first; i < body.end; i++) {
+        const op = this.program.networks[i]!.ops[0];
+        if (this.textNet[i] === 1 && op?.op === 'st') stLines(op.body, lines);
+      }
+      hit = [...lines].sort((x, y) => x - y);
+      this.stopLines.set(b, hit);
+    }
+    return hit;
+  }
+
   textTrace(target: TextTarget): TextTrace | undefined {
     let best: number | undefined;
     for (const [b, t] of this.traces)
@@ -622,7 +641,8 @@ export abstract class ScanCycle {
       ...(body.instance ? { instance: body.instance } : {}),
       scan: t.scan,
       lines: [...t.lines].sort((a, b) => a - b),
-      values: [...t.values].map(([name, v]) => ({ name: local(name), line: v.line, value: v.value })),
+      stops: this.stopsOf(best),
+      values: [...t.values].map(([name, v]) => ({ name: local(name), line: v.line, type: v.type, value: v.value })),
     };
   }
 

@@ -45,7 +45,7 @@ class StGen {
   /**
    * Statement-level observation and stops (the step plan only, a generator): before each
    * statement `X.st(i, line); yield;` (the scanner records the line, and a step may pause there),
-   * after each write `X.w(i, line, name, value)` (the value it left). `i` is the generator's network.
+   * after each write `X.w(i, line, name, type, value)` (the value it left). `i` is the generator's network.
    */
   private readonly instrument: boolean;
   private line = 0;
@@ -74,7 +74,7 @@ class StGen {
     const name = this.instrument ? accessName(dst) : undefined;
     if (name === undefined) return w;
     const back = this.em.readValue({ from: 'access', access: dst }, dst.type);
-    return `${w} X.w(i, ${this.line}, ${JSON.stringify(name)}, ${back});`;
+    return `${w} X.w(i, ${this.line}, ${JSON.stringify(name)}, ${JSON.stringify(dst.type)}, ${back});`;
   }
 
   run(): string[] {

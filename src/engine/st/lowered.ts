@@ -170,6 +170,36 @@ export function stFacts(body: readonly TStmt[]): { calls: { first: number; end: 
   return { calls, weight, labels };
 }
 
+/** The lines of every statement (and ELSIF condition) of a checked body, where the instrumented code stops. */
+export function stLines(body: readonly TStmt[], out: Set<number> = new Set()): Set<number> {
+  for (const s of body) {
+    switch (s.k) {
+      case 'line':
+        out.add(s.line);
+        break;
+      case 'if':
+        for (const b of s.branches) {
+          if (b.line !== undefined) out.add(b.line);
+          stLines(b.body, out);
+        }
+        if (s.otherwise) stLines(s.otherwise, out);
+        break;
+      case 'case':
+        for (const a of s.arms) stLines(a.body, out);
+        if (s.otherwise) stLines(s.otherwise, out);
+        break;
+      case 'for':
+      case 'while':
+      case 'repeat':
+        stLines(s.body, out);
+        break;
+      default:
+        break;
+    }
+  }
+  return out;
+}
+
 /**
  * The body of a POU written in ST or IL (st/index.ts): one operation, the whole checked statement
  * tree, alone in its network. `calls`: the body ranges its calls run; `weight`: its size in operations.
