@@ -20,6 +20,7 @@ import {
 } from '@codemirror/view';
 import type { StEditorContext } from './context';
 import { stLanguage } from './stLanguage';
+import { stDebugExtensions } from './debug/stDebug';
 import './st.css';
 
 /** Colours and fonts from the app's theme variables (light and dark follow data-theme). */
@@ -75,6 +76,5 @@ function stEditing(): Extension {
 
 /** Every extension of the ST editor of one POU (see the file comment). */
 export function stExtensions(ctx: StEditorContext): Extension[] {
-  void ctx;
-  return [stLanguage(), stEditing()];
+  return [stLanguage(), stEditing(), ...stDebugExtensions(ctx)];
 }
