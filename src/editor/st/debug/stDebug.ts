@@ -103,18 +103,22 @@ const debugDecorations = EditorView.decorations.compute(['doc', debugField], (st
 );
 
 class BreakpointMarker extends GutterMarker {
-  constructor(readonly instance: string | undefined) {
+  constructor(
+    readonly instance: string | undefined,
+    /** The gutter's (invisible) width spacer. */
+    readonly spacer = false,
+  ) {
     super();
   }
   override eq(other: BreakpointMarker): boolean {
-    return other.instance === this.instance;
+    return other.instance === this.instance && other.spacer === this.spacer;
   }
   override toDOM(): Node {
     const dot = document.createElement('span');
     dot.className = this.instance ? 'cm-st-breakpoint cm-st-breakpoint-instance' : 'cm-st-breakpoint';
     dot.textContent = '●';
     dot.title = this.instance ? `Breakpoint in ${this.instance} only` : 'Breakpoint (every instance)';
-    dot.setAttribute('data-testid', 'st-breakpoint');
+    if (!this.spacer) dot.setAttribute('data-testid', 'st-breakpoint');
     return dot;
   }
 }
@@ -143,7 +147,7 @@ const breakpointGutter = gutter({
     }
     return b.finish();
   },
-  initialSpacer: () => new BreakpointMarker(undefined),
+  initialSpacer: () => new BreakpointMarker(undefined, true),
   domEventHandlers: {
     mousedown: (view, block, event) => {
       const line = view.state.doc.lineAt(block.from).number;
