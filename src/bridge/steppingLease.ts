@@ -28,8 +28,11 @@ import type { SimulationPorts } from './simulationLink';
 
 export type StepRequest =
   | { readonly kind: 'scans'; readonly scans: number }
-  /** One network; `into`: a call stops before its body's first network (step into). */
-  | { readonly kind: 'network'; readonly into?: boolean };
+  /**
+   * One network (an ST/IL statement); `into`: a call stops before its body's first network or
+   * statement (step into); `out`: the rest of the body runs, to the caller's next stop (step out).
+   */
+  | { readonly kind: 'network'; readonly into?: boolean; readonly out?: boolean };
 
 /** off: stepping does not touch the hardware (not asked yet, or no hardware); confirming: the question is open; stepping: confirmed. */
 export type SteppingPhase = 'off' | 'confirming' | 'stepping';

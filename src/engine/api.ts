@@ -2,7 +2,7 @@
 // and PLCopen round-trip tests. Implementations live beside this file; these are the types.
 import type { Cell } from '../model/grid';
 import type { ElementId } from '../model/ids';
-import type { Value } from '../model/iecTypes';
+import type { ElementaryType, Value } from '../model/iecTypes';
 import type { Profile } from '../model/project';
 
 /** LD-R01..LD-R13 from LD-SEMANTICS.md section 9, plus LD-E.. for errors outside those rules
@@ -48,6 +48,8 @@ export interface Fault {
   /** 0-based network index in `pou`. */
   readonly network: number;
   readonly networkLabel?: string;
+  /** ST/IL: the line of the body's text (the loop that ran too long, the statement that faulted). */
+  readonly line?: number;
   readonly message: string;
 }
 
@@ -89,9 +91,34 @@ export interface StepFrame {
   readonly instance?: string;
   /** 0-based network index in `pou`. */
   readonly network: number;
+  /** ST/IL bodies: the line of the statement to run next (1-based, in the POU's text). */
+  readonly line?: number;
 }
 
-/** A user FB instance of the program, for "pick an instance". */
+/** An ST/IL body to observe statement by statement: a POU, in one instance or (no `instance`) in all. */
+export interface TextTarget {
+  readonly pou: string;
+  readonly instance?: string;
+}
+
+/**
+ * What an observed ST/IL body did in the last scan that ran it (the scan so far while paused in it):
+ * the lines whose statements ran, and each variable written with the value it had after the
+ * statement that last wrote it, and that statement's line. Plain data (posted by the simulator, kept
+ * in recorded scans).
+ */
+export interface TextTrace {
+  readonly pou: string;
+  readonly instance?: string;
+  /** The scan it describes (earlier than the PLC's scan count: the body did not run since). */
+  readonly scan: number;
+  /** Lines of the statements that ran, ascending. */
+  readonly lines: readonly number[];
+  /** Lines of every statement of the body (ELSIF conditions included), ascending: the others hold none. */
+  readonly stops: readonly number[];
+  /** By the names the body's text uses (`Out`, `A[i]`, `T1.Q`), in the order first written. */
+  readonly values: readonly { readonly name: string; readonly line: number; readonly type: ElementaryType; readonly value: Value }[];
+}
 export interface InstanceInfo {
   /** `Motor1`, `Line.Motor1` (a configuration: `Prog1.Motor1`). */
   readonly path: string;
@@ -302,6 +329,13 @@ export interface Plc {
    * finishes the program's network).
    */
   stepNetwork(opts?: { readonly into?: boolean }): StepReport;
+  /**
+   * Observes ST/IL bodies statement by statement (textTrace): while any is observed, scans run on
+   * the instrumented step code (a slower tier, runtime/scanCycle.ts); an empty list: the fast path.
+   */
+  observeText(targets: readonly TextTarget[]): void;
+  /** What an observed body did (an instance, or without one the body of the POU that ran last). */
+  textTrace(target: TextTarget): TextTrace | undefined;
   /** Where execution stands (as StepReport.frames): empty at a scan boundary. */
   position(): readonly StepFrame[];
   /** User FB instances of the program, nested ones by path. */

@@ -3,7 +3,7 @@
 // replay (src/sim/replay.ts) as a frame for the UI, a ScanView for "Why?", a trace CSV or a scenario.
 // Recording costs a few counters and two stored times per scan; keys are spaced so that saving them
 // stays a small share of scan time while a seek replays at most a few thousand scans.
-import type { Plc, PlcImage, PlcProbe } from '../engine/api';
+import type { Plc, PlcImage, PlcProbe, TextTarget, TextTrace } from '../engine/api';
 import { explain, flatNetwork, flattenedPou, netOn, type Explanation, type ExplainTarget, type ScanView } from '../engine/explain';
 import type { CompiledProgram } from '../engine/plc';
 import { csvValue } from '../engine/values/literals';
@@ -132,15 +132,23 @@ export class HistoryRecorder {
    * The recorded scan as a frame of the program's networks, or of the body another `shown` layout
    * monitors (an FB instance, a function: its call that ran in that scan).
    */
-  view(scan: number, shown?: SimLayout, current?: SimLayout): HistoryView | undefined {
+  view(scan: number, shown?: SimLayout, current?: SimLayout, text?: TextTarget): HistoryView | undefined {
     // The data lines are sent aligned with the page's layout (the session's current one).
     const layout = current ?? shown ?? this.layout;
     const wordCount = this.probe.power.length;
     // The data lines are read on the PLC that replayed the scan, before the live state is put back.
     let pins: HistoryView['pins'] = [];
-    const state = this.replayer.state(scan, (probe, power) => {
-      pins = readPinValues(probe, layout, viewBody(this.program, layout, (n) => power[wordCount + n] === 1), this.project && viewPou(this.project, layout));
-    });
+    let trace: TextTrace | undefined;
+    let replayed = 0;
+    const state = this.replayer.state(
+      scan,
+      (probe, power, plc) => {
+        pins = readPinValues(probe, layout, viewBody(this.program, layout, (n) => power[wordCount + n] === 1), this.project && viewPou(this.project, layout));
+        trace = text && plc.textTrace(text);
+        replayed = plc.scanCount;
+      },
+      text,
+    );
     if (!state) return undefined;
     const words = this.probe.power.length;
     const executed = Uint8Array.from(state.power.subarray(words));
@@ -148,7 +156,9 @@ export class HistoryRecorder {
     const packed = shown
       ? packNetworks(recordedBody(this.program, shown, networks), shown)
       : packNetworks(networks, this.layout);
-    return { scan, timeMs: state.timeMs, ...packed, values: state.values, pins };
+    // The replaying PLC counts its scans from its own start: the trace is numbered like the view.
+    const shownText = trace && { ...trace, scan: scan - (replayed - trace.scan), stale: trace.scan !== replayed };
+    return { scan, timeMs: state.timeMs, ...packed, values: state.values, pins, ...(shownText ? { text: shownText } : {}) };
   }
 
   /** The recorded scan as "Why?" reads it. */

@@ -5,7 +5,7 @@
 // Gateway seam (issue 6): a bridge feeds each scan's input image with `setInputs` (IEC locations,
 // applied at the next input read, exactly like a PLC's input card) and receives the output image
 // with `outputs` events after every scan that changed it, once it sent `subscribeOutputs`.
-import type { Diagnostic, Fault, InstanceInfo, StepFrame } from '../engine/api';
+import type { Diagnostic, Fault, InstanceInfo, StepFrame, TextTrace } from '../engine/api';
 import type { Value } from '../model/iecTypes';
 import type { ProjectDelta } from './projectDelta';
 import type { Project, Scenario } from '../model/project';
@@ -45,10 +45,11 @@ export type HostMessage =
   | { readonly type: 'pause' }
   | ({ readonly type: 'step'; readonly scans: number } & WithProject)
   /**
-   * One network. Step over (default): the next network runs whole, calls included (inside a body:
-   * the body's network). Step into (`into`): a call's body stops before each of its networks.
+   * One network (in an ST/IL body: one statement). Step over (default): the next network or
+   * statement runs whole, calls included. Step into (`into`): a call's body stops before each of
+   * its networks or statements. Step out (`out`): the rest of the body runs, to the caller's next stop.
    */
-  | ({ readonly type: 'stepNetwork'; readonly into?: boolean } & WithProject)
+  | ({ readonly type: 'stepNetwork'; readonly into?: boolean; readonly out?: boolean } & WithProject)
   /** Cold restart: every variable to its initial value, scan count 0, mode stopped. Forces stay. */
   | { readonly type: 'reset' }
   /** Warm restart: RETAIN and M/SM/RM variables keep their values; a running PLC keeps running. */
@@ -59,7 +60,13 @@ export type HostMessage =
    * Execution pauses before any of these networks: `networks` are 0-based indexes in the program,
    * `ids` document network ids of any POU (in an FB's or function's body: in every call of it).
    */
-  | { readonly type: 'setBreakpoints'; readonly networks?: readonly number[]; readonly ids?: readonly string[] }
+  | {
+      readonly type: 'setBreakpoints';
+      readonly networks?: readonly number[];
+      readonly ids?: readonly string[];
+      /** ST/IL statements: a line of a POU's text, in one instance or (no `instance`) in every call. */
+      readonly lines?: readonly LineBreakpoint[];
+    }
   /** The body whose power frames carry (layout network fields follow): a program, an FB instance, a function. */
   | { readonly type: 'setView'; readonly view: SimView }
   | { readonly type: 'write'; readonly name: string; readonly input: SimValueInput }
@@ -170,6 +177,24 @@ export interface HistoryView {
   readonly values: readonly Value[];
   /** The values on the data lines of the shown body in that scan, aligned with SimLayout.pins. */
   readonly pins: readonly Value[];
+  /** The shown body is ST/IL: what it did in that scan. */
+  readonly text?: SimTextTrace;
+}
+
+/** A breakpoint on a statement of an ST/IL POU. */
+export interface LineBreakpoint {
+  readonly pou: string;
+  readonly line: number;
+  readonly instance?: string;
+}
+
+/**
+ * The monitored ST/IL body in a scan (engine TextTrace): the lines that ran, each variable's value
+ * after the statement that last wrote it. `stale`: the body did not run in that scan (every line
+ * dim; the values are those of the scan it last ran in).
+ */
+export interface SimTextTrace extends TextTrace {
+  readonly stale: boolean;
 }
 
 /** What the scan history holds. */
@@ -311,6 +336,8 @@ export interface SimFrame {
   readonly epoch: number;
   /** Scans the history can show; absent when nothing is recorded. */
   readonly history?: HistoryRange;
+  /** The shown body is ST/IL: what it did in the last (or current) scan. */
+  readonly text?: SimTextTrace;
 }
 
 /** What an online change keeps and resets (FB instances by name, edge elements by element id). */

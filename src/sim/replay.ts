@@ -10,7 +10,7 @@
 // on exactly as if nothing had happened. In the middle of a scan (stepping, a breakpoint) or after a
 // fault, a second PLC of the same program replays instead; it remembers where it stands, so moving
 // forward replays only the scans in between.
-import type { Plc, PlcImage, PlcProbe } from '../engine/api';
+import type { Plc, PlcImage, PlcProbe, TextTarget } from '../engine/api';
 import { createPlc, type CompiledProgram } from '../engine/plc';
 import type { Value } from '../model/iecTypes';
 import type { ScanHistory, Segment } from './history';
@@ -172,8 +172,10 @@ export class Replayer {
    * The state after `scan`: every value and the power of every network; undefined when not recorded.
    * `also` reads more of that state on the PLC that replayed it (before the live state is put back).
    */
-  state(scan: number, also?: (probe: PlcProbe, power: Int32Array) => void): HistoryState | undefined {
+  state(scan: number, also?: (probe: PlcProbe, power: Int32Array, plc: Plc) => void, text?: TextTarget): HistoryState | undefined {
     return this.using((r) => {
+      // An ST/IL body shown: observed on the replaying PLC too (from the scans it replays now on).
+      if (text) r.plc.observeText([text]);
       if (!this.goto(r, scan)) return undefined;
       const probe = r.probe;
       r.sampleAll ??= probe.sampler(this.names);
@@ -186,7 +188,7 @@ export class Replayer {
       const own = r.plc.scanCount;
       for (let n = 0; n < ranIn.length; n++) power[words + n] = ranIn[n] === own ? 1 : 0;
       const seg = this.seg!;
-      also?.(probe, power);
+      also?.(probe, power, r.plc);
       return { scan, timeMs: seg.timeAt(scan - seg.firstScan), values, power };
     });
   }

@@ -2,7 +2,7 @@
 // single-network steps, breakpoints and execution-time statistics. The session owns the mode and
 // the program; the runner reports back through RunnerHost.
 import type { Fault, Plc, StepFrame } from '../engine/api';
-import { breakpointAt, needsStepInto, nextStop, type Breakpoint } from '../engine/runtime/breakpoints';
+import { breakpointAt, needsStepInto, nextStop, step, type Breakpoint, type StepKind } from '../engine/runtime/breakpoints';
 import type { ExecStats } from './protocol';
 import type { Scheduler } from './scheduler';
 import { SimClock } from './simClock';
@@ -146,11 +146,12 @@ export class ScanRunner {
   }
 
   /**
-   * Executes one network (starting a scan if needed), ignoring breakpoints. Step over: the network
-   * where execution stands runs whole, calls included (inside a body, the body's network: then the
-   * step may come back out to the caller). Step into: a call stops before its body's first network.
+   * Executes one network or ST/IL statement (starting a scan if needed), ignoring breakpoints
+   * (engine/runtime/breakpoints.ts step). Over: it runs whole, calls included (after a body's last
+   * one the step comes back out to the caller). Into: a call stops before its body's first network
+   * or statement. Out: the rest of the body runs, to the caller's next stop.
    */
-  stepNetwork(into = false): Fault | undefined {
+  stepNetwork(kind: StepKind = 'over'): Fault | undefined {
     this.stop();
     if (this.host.current().nextNetwork === -1) this.host.atBoundary();
     const plc = this.host.current();
@@ -158,10 +159,8 @@ export class ScanRunner {
     this.breakpointHit = undefined;
     this.resumeAt = undefined;
     const t0 = this.wallNow();
-    const depth = plc.position().length;
-    let report = plc.stepNetwork(into || depth > 1 ? { into: true } : undefined);
-    // Over inside a body: on until execution stands at this depth again (next network) or above.
-    if (!into && depth > 1) while (!report.fault && !report.scanDone && plc.position().length > depth) report = plc.stepNetwork({ into: true });
+    // Over inside a body: on until execution stands at this depth again (next network or statement) or above.
+    const report = step(plc, kind);
     this.stepExecMs += this.wallNow() - t0;
     if (report.fault) this.endScan(plc, this.stepExecMs, report.fault);
     else if (report.scanDone) this.endScan(plc, this.stepExecMs, undefined);
@@ -299,6 +298,6 @@ export class ScanRunner {
 function positionKey(plc: Plc): string {
   return plc
     .position()
-    .map((f) => `${f.pou}/${f.instance ?? ''}/${f.network}`)
+    .map((f) => `${f.pou}/${f.instance ?? ''}/${f.network}/${f.line ?? ''}`)
     .join('>');
 }

@@ -1,7 +1,7 @@
 // The simulation worker's logic, as a plain class so it runs (and is tested) in Node without a Worker:
 // commands in (HostMessage), frames and events out (WorkerMessage) through an injected `post`.
 // The session owns the program and the mode; ScanRunner executes the scans.
-import type { Diagnostic, Plc } from '../engine/api';
+import type { Diagnostic, Plc, TextTarget } from '../engine/api';
 import type { Value } from '../model/iecTypes';
 import type { Project } from '../model/project';
 import { carryDisplay, carryForces, carryInstances, carryValues, planInstances, valueFor, type ShownScan } from './carryOver';
@@ -14,7 +14,7 @@ import { parseScenario, prepareScenario, runPrepared, scenarioCycle, type Scenar
 import type { CompiledProgram } from '../engine/plc';
 import type { Pou, Scenario } from '../model/project';
 import { fingerprintId } from './programId';
-import type { HostMessage, OnlineChangePlan, SimFrame, SimLayout, SimMode, SimView, TrendTrigger, WorkerMessage } from './protocol';
+import type { HostMessage, LineBreakpoint, OnlineChangePlan, SimFrame, SimLayout, SimMode, SimView, TrendTrigger, WorkerMessage } from './protocol';
 import { programInstances, runOptions } from './runTarget';
 import { packView } from './viewPower';
 import type { Breakpoint } from '../engine/runtime/breakpoints';
@@ -106,7 +106,7 @@ export class SimSession {
   /** The body the UI monitors (setView); absent: the program's. */
   private view: SimView | undefined;
   /** Breakpoints as the UI sent them: program network indexes and document network ids. */
-  private breakpointRequest: { networks: readonly number[]; ids: readonly string[] } = { networks: [], ids: [] };
+  private breakpointRequest: { networks: readonly number[]; ids: readonly string[]; lines: readonly LineBreakpoint[] } = { networks: [], ids: [], lines: [] };
   /**
    * After an online change at a scan boundary, what the last scan of the replaced program showed,
    * mapped to the new program (carryDisplay): shown until the new program runs a network.
@@ -194,7 +194,7 @@ export class SimSession {
       case 'stepNetwork': {
         if (!this.loadToStart(m.project) || this.refuseIfFaulted()) return;
         this.requirePlc();
-        this.mode = this.runner.stepNetwork(m.into === true) ? 'faulted' : 'paused';
+        this.mode = this.runner.stepNetwork(m.out === true ? 'out' : m.into === true ? 'into' : 'over') ? 'faulted' : 'paused';
         this.postFrame();
         return;
       }
@@ -213,12 +213,13 @@ export class SimSession {
         this.postFrame();
         return;
       case 'setBreakpoints':
-        this.breakpointRequest = { networks: m.networks ?? [], ids: m.ids ?? [] };
+        this.breakpointRequest = { networks: m.networks ?? [], ids: m.ids ?? [], lines: m.lines ?? [] };
         this.resolveBreakpoints();
         this.postFrame();
         return;
       case 'setView':
         this.view = m.view;
+        this.observeView();
         if (this.loaded && this.layout) {
           this.layout = withPinLines(withView(this.loaded.project, this.layout, m.view), this.loaded.plc, this.loaded.program as CompiledProgram, this.loaded.project);
           this.deps.post({ type: 'layout', layout: this.layout });
@@ -278,6 +279,7 @@ export class SimSession {
           project: this.loaded?.project,
           sinceColdStart: this.sinceColdStart,
           cycleMs: this.runner.cycleMs,
+          text: this.textTarget(),
           post: (message, transfer) => this.deps.post(message, transfer),
         });
         return;
@@ -445,6 +447,7 @@ export class SimSession {
     this.loaded = next;
     this.applyCycle(next.plc);
     this.resolveBreakpoints();
+    this.observeView();
     // The history records the program's own networks whatever body is monitored.
     this.recorder = HistoryRecorder.for(next.plc, programLayout(next.project, next.layout), next.program, next.pou, this.historyOptions, next.project);
     this.fingerprint = next.fingerprint;
@@ -475,9 +478,24 @@ export class SimSession {
   }
 
   /** The runner's breakpoints in the installed program: network ids found in every POU of its document. */
+  /** The monitored body when it is written in ST or IL (observed statement by statement: the instrumented tier). */
+  private textTarget(): TextTarget | undefined {
+    const loaded = this.loaded;
+    if (!loaded) return undefined;
+    const view = this.view ?? { pou: loaded.plc.pou };
+    const pou = findPou(loaded.project, view.pou);
+    return pou && (pou.language === 'ST' || pou.language === 'IL') ? view : undefined;
+  }
+
+  /** Only a shown ST/IL body is observed: the others run on the fast path. */
+  private observeView(): void {
+    const target = this.textTarget();
+    this.loaded?.plc.observeText(target ? [target] : []);
+  }
+
   private resolveBreakpoints(): void {
-    const { networks, ids } = this.breakpointRequest;
-    const list: Breakpoint[] = [];
+    const { networks, ids, lines } = this.breakpointRequest;
+    const list: Breakpoint[] = lines.map((b) => ({ pou: b.pou, network: -1, line: b.line, ...(b.instance ? { instance: b.instance } : {}) }));
     if (this.plc) for (const network of networks) list.push({ pou: this.plc.pou, network });
     if (this.loaded && ids.length > 0) {
       const wanted = new Set(ids);
@@ -597,6 +615,7 @@ export class SimSession {
       epoch: this.epoch,
       history: historyRange(this.recorder),
       ...(this.loaded ? { project: this.loaded.project } : {}),
+      text: this.textTarget(),
     });
   }
 

@@ -1,10 +1,10 @@
 // The frame a simulation session posts to the page: mode, scan, timing, power flow, values,
 // forces, trend samples and the recorded history range, built from the session's current state.
-import type { Plc } from '../engine/api';
+import type { Plc, TextTarget } from '../engine/api';
 import type { CompiledProgram } from '../engine/plc';
 import type { ShownScan } from './carryOver';
 import { readValues } from './frames';
-import type { SimFrame, SimLayout, SimMode } from './protocol';
+import type { SimFrame, SimLayout, SimMode, SimTextTrace } from './protocol';
 import type { ScanRunner } from './scanRunner';
 import type { TrendRecorder } from './trendRecorder';
 import { packView } from './viewPower';
@@ -27,6 +27,8 @@ export interface FrameParts {
   readonly history: SimFrame['history'];
   /** The document the program was compiled from: pins with an operand are read by name, not sent as lines. */
   readonly project?: Project;
+  /** The shown body when it is ST/IL (its trace goes in the frame). */
+  readonly text?: TextTarget | undefined;
 }
 
 export function buildFrame(parts: FrameParts): SimFrame {
@@ -83,7 +85,14 @@ export function buildFrame(parts: FrameParts): SimFrame {
     program: plc ? parts.programId : null,
     epoch: parts.epoch,
     ...(parts.history ? { history: parts.history } : {}),
+    ...textOf(plc, parts.text, parts.scanBase),
   };
+}
+
+/** The shown ST/IL body's trace, numbered like the frame's scans; stale when it did not run in the last (or current) scan. */
+export function textOf(plc: Plc | undefined, target: TextTarget | undefined, scanBase: number): { text?: SimTextTrace } {
+  const t = target && plc?.textTrace(target);
+  return t ? { text: { ...t, scan: scanBase + t.scan, stale: t.scan !== plc!.scanCount } } : {};
 }
 
 /** A test for "this body's call ran last": the networks that ran in the latest scan any network ran in. */

@@ -1,6 +1,6 @@
 // The session's scan history as the page asks for it: the recorded range, a recorded scan's view,
 // finding a change or a condition, "Why?" explanations, and trace or scenario exports (issue 14).
-import type { Plc } from '../engine/api';
+import type { Plc, TextTarget } from '../engine/api';
 import type { Project } from '../model/project';
 import type { HistoryRecorder } from './historyRecorder';
 import { isProgramView } from './layout';
@@ -19,6 +19,8 @@ export interface HistoryContext {
   readonly project: Project | undefined;
   readonly sinceColdStart: SinceColdStart;
   readonly cycleMs: number;
+  /** The shown body when it is ST/IL: a recorded scan's view carries what it did. */
+  readonly text?: TextTarget | undefined;
   post(message: WorkerMessage, transfer?: Transferable[]): void;
 }
 
@@ -36,7 +38,7 @@ function requireHistory(recorder: HistoryRecorder | undefined): HistoryRecorder 
 function postHistoryView(ctx: HistoryContext, scan: number): void {
   // Another body monitored (an FB instance, a function) shows its call's power flow in that scan.
   const shown = ctx.layout && !isProgramView(ctx.layout) ? ctx.layout : undefined;
-  const view = requireHistory(ctx.recorder).view(scan, shown, ctx.layout);
+  const view = requireHistory(ctx.recorder).view(scan, shown, ctx.layout, ctx.text);
   if (!view) {
     const h = ctx.recorder!.history;
     throw new Error(`scan ${scan} is not in the history (scans ${h.first} to ${h.last} are recorded)`);

@@ -5,7 +5,7 @@ import type { Diagnostic, Fault, StepFrame } from '../engine/api';
 import type { ExplainTarget, Explanation } from '../engine/explain';
 import type { Value } from '../model/iecTypes';
 import type { Project, Scenario } from '../model/project';
-import type { ExecStats, HistoryRange, OnlineChangePlan, SimLayout, SimMode, SimValueInput, TrendCapture, TrendTrigger, TrendTriggerState } from '../sim/protocol';
+import type { ExecStats, HistoryRange, LineBreakpoint, OnlineChangePlan, SimLayout, SimMode, SimTextTrace, SimValueInput, TrendCapture, TrendTrigger, TrendTriggerState } from '../sim/protocol';
 import type { ScenarioResult } from '../sim/scenario';
 import type { ChangeList } from '../sim/changeList';
 import type { OnlineChangeMode } from '../model/project';
@@ -78,6 +78,10 @@ export interface SimState {
   /** Forced values by upper-case name. */
   readonly forced: ReadonlyMap<string, Value>;
   readonly breakpoints: readonly string[];
+  /** Breakpoints on ST/IL statements: a POU's line, in every instance or in one. */
+  readonly lineBreakpoints: readonly LineBreakpoint[];
+  /** The shown ST/IL body in the scan shown (live or recorded): lines that ran, values after the writing statement. */
+  readonly text: SimTextTrace | undefined;
   readonly watch: readonly string[];
   readonly trendNames: readonly string[];
   readonly trendCapacity: number;
@@ -117,8 +121,11 @@ export interface SimState {
   run(project: Project): void;
   pause(): void;
   step(project: Project, scans: number): void;
-  /** One network: over (the network runs whole, calls included) or into (stops in a call's body). */
-  stepNetwork(project: Project, into?: boolean): void;
+  /**
+   * One network or ST/IL statement: over (it runs whole, calls included), into (stops in a call's
+   * body) or out (`out`: the rest of the body runs, to the caller's next stop).
+   */
+  stepNetwork(project: Project, into?: boolean, out?: boolean): void;
   /** The editor shows another POU (tab): the canvas monitors its body (the picked instance of an FB). */
   showPou(pou: ShownPou | undefined): void;
   /** Picks the instance of an FB (or a configuration's program instance) whose body the canvas shows. */
@@ -131,6 +138,8 @@ export interface SimState {
   /** The document changed: compiled and applied as an online change when a program is loaded. */
   documentChanged(project: Project): void;
   toggleBreakpoint(networkId: string): void;
+  /** Sets or clears a breakpoint on a line of an ST/IL POU (`instance`: only in that instance). */
+  toggleLineBreakpoint(pou: string, line: number, instance?: string): void;
   clearBreakpoints(): void;
   write(name: string, input: SimValueInput): void;
   force(name: string, input: SimValueInput): void;

@@ -12,7 +12,7 @@ import type { SimTransport } from '../sim/host';
 import { programId } from '../sim/programId';
 import { changeList } from '../sim/changeList';
 import { diffProject, type ProjectDelta } from '../sim/projectDelta';
-import type { HistoryView, HostMessage, SimFrame, SimLayout, TrendSamples, WorkerMessage } from '../sim/protocol';
+import type { HistoryView, HostMessage, LineBreakpoint, SimFrame, SimLayout, TrendSamples, WorkerMessage } from '../sim/protocol';
 import type { Explanation } from '../engine/explain';
 import type { ScenarioResult } from '../sim/scenario';
 import { appendTrend, emptyTrend } from '../sim/trendBuffer';
@@ -88,7 +88,7 @@ export function createSimStore(transport: SimTransport): SimStore {
       transport.send(make(id));
     });
   /** The live power and values while a recorded scan is shown, to put back on Live. */
-  let liveStash: Pick<SimState, 'elements' | 'vlinks' | 'executed' | 'values' | 'pins'> | undefined;
+  let liveStash: Pick<SimState, 'elements' | 'vlinks' | 'executed' | 'values' | 'pins' | 'text'> | undefined;
   const send = (message: HostMessage) => transport.send(message);
   /**
    * The last document sent to the worker: the next one goes as a difference from it (only what an
@@ -118,9 +118,9 @@ export function createSimStore(transport: SimTransport): SimStore {
   const nextEpoch = () => ++epoch;
   // Breakpoints go by network id: the worker finds them in every POU of the program it runs.
   const sendBreakpoints = () => {
-    const { layout, breakpoints } = store.getState();
+    const { layout, breakpoints, lineBreakpoints } = store.getState();
     if (!layout) return;
-    send({ type: 'setBreakpoints', ids: breakpoints });
+    send({ type: 'setBreakpoints', ids: breakpoints, lines: lineBreakpoints });
   };
   /** A step or Run was asked: the next stop (a step's end, a breakpoint) is followed by the editor. */
   let followNext = false;
@@ -180,6 +180,8 @@ export function createSimStore(transport: SimTransport): SimStore {
       pins: [],
       forced: new Map(),
       breakpoints: [],
+      lineBreakpoints: [],
+      text: undefined,
       watch: [],
       trendNames: [],
       trendCapacity: DEFAULT_TREND_SCANS,
@@ -213,10 +215,10 @@ export function createSimStore(transport: SimTransport): SimStore {
         set({ refusal: undefined, notice: undefined });
         send({ type: 'step', scans, ...withProject(fresh(project)), epoch: nextEpoch() });
       },
-      stepNetwork: (project, into) => {
+      stepNetwork: (project, into, out) => {
         followNext = true;
         set({ refusal: undefined, notice: undefined });
-        send({ type: 'stepNetwork', ...(into ? { into: true } : {}), ...withProject(fresh(project)), epoch: nextEpoch() });
+        send({ type: 'stepNetwork', ...(into ? { into: true } : {}), ...(out ? { out: true } : {}), ...withProject(fresh(project)), epoch: nextEpoch() });
       },
       showPou: (pou) => {
         const shown = get().shownPou;
@@ -248,6 +250,8 @@ export function createSimStore(transport: SimTransport): SimStore {
           vlinkIndex: new Map(),
           variableIndex: new Map(),
           breakpoints: [],
+          lineBreakpoints: [],
+          text: undefined,
           trend: emptyTrend(get().trendNames),
           runningProject: undefined,
           runningProgram: null,
@@ -280,8 +284,16 @@ export function createSimStore(transport: SimTransport): SimStore {
         set({ breakpoints: breakpoints.includes(networkId) ? breakpoints.filter((b) => b !== networkId) : [...breakpoints, networkId] });
         sendBreakpoints();
       },
+      toggleLineBreakpoint: (pou, line, instance) => {
+        const key = (b: LineBreakpoint) => `${b.pou.toUpperCase()}|${b.line}|${(b.instance ?? '').toUpperCase()}`;
+        const bp: LineBreakpoint = { pou, line, ...(instance ? { instance } : {}) };
+        const list = get().lineBreakpoints;
+        const on = list.some((b) => key(b) === key(bp));
+        set({ lineBreakpoints: on ? list.filter((b) => key(b) !== key(bp)) : [...list, bp] });
+        sendBreakpoints();
+      },
       clearBreakpoints: () => {
-        set({ breakpoints: [] });
+        set({ breakpoints: [], lineBreakpoints: [] });
         sendBreakpoints();
       },
       write: (name, input) => send({ type: 'write', name, input }),
@@ -471,8 +483,8 @@ export function createSimStore(transport: SimTransport): SimStore {
         const restarted = message.frame.history === undefined;
         if (viewing && !restarted) {
           // A recorded scan is shown: the live state is kept for Live, the view stays frozen.
-          const { elements, vlinks, executed, values, pins, ...rest } = patch;
-          liveStash = { elements: elements!, vlinks: vlinks!, executed: executed!, values: values!, pins: pins! };
+          const { elements, vlinks, executed, values, pins, text, ...rest } = patch;
+          liveStash = { elements: elements!, vlinks: vlinks!, executed: executed!, values: values!, pins: pins!, text };
           patch = rest;
         } else if (viewing) {
           liveStash = undefined;
@@ -498,7 +510,7 @@ export function createSimStore(transport: SimTransport): SimStore {
         return;
       case 'historyView': {
         const state = store.getState();
-        if (state.historyScan === undefined) liveStash = { elements: state.elements, vlinks: state.vlinks, executed: state.executed, values: state.values, pins: state.pins };
+        if (state.historyScan === undefined) liveStash = { elements: state.elements, vlinks: state.vlinks, executed: state.executed, values: state.values, pins: state.pins, text: state.text };
         store.setState({ ...viewOf(message.view), historyMessage: undefined });
         return;
       }
@@ -561,7 +573,7 @@ export function createSimStore(transport: SimTransport): SimStore {
    */
   function followStop(frame: SimFrame, current: boolean): Partial<SimState> {
     const at = frame.breakpointAt ?? frame.position?.at(-1);
-    const key = at ? `${at.pou}|${at.instance ?? ''}|${at.network}` : '';
+    const key = at ? `${at.pou}|${at.instance ?? ''}|${at.network}|${at.line ?? ''}` : '';
     if (!current || frame.mode === 'running' || frame.mode === 'stopped') return {};
     const follow = at !== undefined && (followNext || (frame.breakpointAt !== undefined && key !== lastStopKey));
     followNext = false;
@@ -605,7 +617,7 @@ function sameScope(a: CanvasScope | undefined, b: CanvasScope | undefined): bool
 }
 
 function viewOf(view: HistoryView): Partial<SimState> {
-  return { historyScan: view.scan, historyTimeMs: view.timeMs, elements: view.elements, vlinks: view.vlinks, executed: view.executed, values: view.values, pins: view.pins };
+  return { historyScan: view.scan, historyTimeMs: view.timeMs, elements: view.elements, vlinks: view.vlinks, executed: view.executed, values: view.values, pins: view.pins, text: view.text };
 }
 
 function indexLayout(layout: SimLayout): Pick<SimState, 'layout' | 'elementIndex' | 'vlinkIndex' | 'variableIndex'> {
@@ -641,6 +653,7 @@ function applyFrame(state: SimState, frame: SimFrame): Partial<SimState> {
     executed: frame.executed,
     values: frame.values,
     pins: frame.pins,
+    text: frame.text,
     forced,
     ...(frame.trend ? { trend: appendTrend(state.trend, frame.trend as TrendSamples, state.trendCapacity) } : {}),
     ...(frame.mode === 'stopped' && frame.scan === 0 ? { trend: emptyTrend(state.trendNames) } : {}),

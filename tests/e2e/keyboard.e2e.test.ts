@@ -84,7 +84,7 @@ test('? lists every shortcut, grouped and searchable', async () => {
   await expect.poll(() => list.getByRole('heading', { level: 3 }).allTextContents()).toEqual(expect.arrayContaining(['Edit', 'Simulation', 'File', 'Help']));
   expect(await list.getByTestId('shortcut-sim.run').textContent()).toBe('RunF5');
   await list.getByTestId('shortcut-search').fill('breakpoint');
-  await expect.poll(() => list.locator('tr').allTextContents()).toEqual(['Toggle breakpoint on the networkF9']);
+  await expect.poll(() => list.locator('tr').allTextContents()).toEqual(['Toggle breakpoint on the network or ST lineF9']);
   // F5 in a dialog neither runs nor reloads the page.
   await page.keyboard.press('F5');
   expect(await list.isVisible()).toBe(true);

@@ -1,5 +1,6 @@
 // The simulator's commands with their keys, as CODESYS has them: F5 run, Shift+F5 stop, F9 toggles
-// a breakpoint on the network at the cursor, F10 / F11 step over / into, Ctrl+F7 writes and F7
+// a breakpoint on the network at the cursor (in the ST editor: on the cursor line), F10 / F11 /
+// Shift+F11 step over / into / out, Ctrl+F7 writes and F7
 // forces the prepared values of the watch table, Alt+F8 applies the edits kept back (apply on request). They run through the toolbar's commands (aware of
 // attached hardware), which SimKeysHost (useSimKeys) hands over while the app is mounted.
 import type { Project } from '../../model/project';
@@ -7,6 +8,7 @@ import type { SimStore } from '../../store/simState';
 import type { SimCommands } from '../hardware/useHardwareStepping';
 import { forcePrepared, preparedMessage, preparedValues, writePrepared } from '../sim/preparedValues';
 import type { EditorContext } from './editorActions';
+import { focusedStLine, toggleLineBreakpoint } from '../st/debug/stDebug';
 
 /** The running app's simulator: its store, the toolbar's commands and the document's project. */
 export const simControls: { current?: { sim: SimStore; commands: SimCommands; project(): Project } } = {};
@@ -62,11 +64,18 @@ export const SIM_COMMANDS: readonly SimCommand[] = [
   },
   {
     id: 'sim.toggleBreakpoint',
-    label: 'Toggle breakpoint on the network',
+    label: 'Toggle breakpoint on the network or ST line',
     group: 'Simulation',
     keys: ['f9'],
-    description: 'Set or clear a breakpoint on the network at the cursor: execution stops before it runs',
+    description: 'Set or clear a breakpoint on the network at the cursor, or in the ST editor on the cursor line: execution stops before it runs',
     run: (ctx) => {
+      // In the ST editor: the statement on the cursor line.
+      const st = focusedStLine();
+      if (st) {
+        const on = toggleLineBreakpoint(st.view, st.line);
+        if (on) ctx.ui.getState().setStatus(`Breakpoint toggled on line ${st.line}: execution stops before its statement, in every instance.`);
+        return;
+      }
       const network = cursorNetwork(ctx);
       const controls = simControls.current;
       if (!network || !controls) return;
@@ -74,11 +83,11 @@ export const SIM_COMMANDS: readonly SimCommand[] = [
       const on = controls.sim.getState().breakpoints.includes(network);
       ctx.ui.getState().setStatus(on ? 'Breakpoint set: execution stops before this network.' : 'Breakpoint cleared.');
     },
-    ...withReason((ctx) => (!simControls.current ? notMounted : cursorNetwork(ctx) ? undefined : 'Place the cursor on a network first.')),
+    ...withReason((ctx) => (!simControls.current ? notMounted : focusedStLine() || cursorNetwork(ctx) ? undefined : 'Place the cursor on a network or an ST line first.')),
   },
   {
     id: 'sim.stepOver',
-    label: 'Step over (network)',
+    label: 'Step over (network or ST statement)',
     group: 'Simulation',
     keys: ['f10'],
     description: 'The next network runs whole, calls included',
@@ -90,9 +99,18 @@ export const SIM_COMMANDS: readonly SimCommand[] = [
     label: 'Step into',
     group: 'Simulation',
     keys: ['f11'],
-    description: "A call of a function block or function stops before its body's first network",
+    description: "A call of a function block or function stops before its body's first network or statement",
     run: () => simControls.current?.commands.step({ kind: 'network', into: true }),
     ...withReason(cannotStart),
+  },
+  {
+    id: 'sim.stepOut',
+    label: 'Step out',
+    group: 'Simulation',
+    keys: ['shift+f11'],
+    description: "The rest of the function block's or function's body runs; execution stops at the caller's next network or statement",
+    run: () => simControls.current?.commands.step({ kind: 'network', out: true }),
+    ...withReason(() => (cannotStart() ?? (simControls.current!.sim.getState().position.length < 2 ? 'Execution is not inside a called body.' : undefined))),
   },
   {
     id: 'sim.stepScan',
@@ -168,6 +186,12 @@ export const SIM_COMMANDS: readonly SimCommand[] = [
     group: 'Simulation',
     description: 'Execution no longer stops at any network',
     run: () => simControls.current?.sim.getState().clearBreakpoints(),
-    ...withReason(() => (!simControls.current ? notMounted : simControls.current.sim.getState().breakpoints.length === 0 ? 'No breakpoints are set.' : undefined)),
+    ...withReason(() =>
+      !simControls.current
+        ? notMounted
+        : simControls.current.sim.getState().breakpoints.length === 0 && simControls.current.sim.getState().lineBreakpoints.length === 0
+          ? 'No breakpoints are set.'
+          : undefined,
+    ),
   },
 ];

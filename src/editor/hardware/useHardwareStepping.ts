@@ -44,7 +44,7 @@ export function useSimCommands(): SimCommands {
         hardwareStepping.step(request, {
           sim: { setInputs: (v) => sim.getState().setInputs(v), onOutputs: (l) => sim.getState().onOutputs(l) },
           bindings: () => checkBindings(project(), gatewayLink.snapshot().points).bindings,
-          perform: (r) => (r.kind === 'network' ? sim.getState().stepNetwork(project(), r.into) : sim.getState().step(project(), r.scans)),
+          perform: (r) => (r.kind === 'network' ? sim.getState().stepNetwork(project(), r.into, r.out) : sim.getState().step(project(), r.scans)),
         });
       },
       reset: () => {

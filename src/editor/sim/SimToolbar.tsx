@@ -92,6 +92,10 @@ export function SimToolbar() {
         aria-keyshortcuts="F11" disabled={running || faulted} onClick={() => commands.step({ kind: 'network', into: true })} data-testid="sim-step-into">
         Step into
       </button>
+      <button type="button" className="rs-sim-btn" title="Step out (Shift+F11): the rest of the function block's or function's body runs; execution stops at the caller's next network or statement"
+        aria-keyshortcuts="Shift+F11" disabled={running || faulted} onClick={() => commands.step({ kind: 'network', out: true })} data-testid="sim-step-out">
+        Step out
+      </button>
       <button type="button" className="rs-sim-btn" title="Reset (cold restart): every variable to its initial value"
         onClick={commands.reset} data-testid="sim-reset">
         ■ Reset

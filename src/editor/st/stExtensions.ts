@@ -28,6 +28,7 @@ import {
 import type { StEditorContext } from './context';
 import { stLanguage } from './stLanguage';
 import { stLanguageServices } from './services';
+import { stDebugExtensions } from './debug/stDebug';
 import './st.css';
 
 /** Colours and fonts from the app's theme variables (light and dark follow data-theme). */
@@ -110,5 +111,5 @@ function stEditing(): Extension {
 
 /** Every extension of the ST editor of one POU (see the file comment). */
 export function stExtensions(ctx: StEditorContext): Extension[] {
-  return [stLanguage(), stEditing(), ...stLanguageServices(ctx)];
+  return [stLanguage(), stEditing(), ...stLanguageServices(ctx), ...stDebugExtensions(ctx)];
 }

@@ -251,7 +251,7 @@ function emitOp(em: Emitter, op: Op): void {
         const ops = em.pc.inlinedOps(first, end);
         if (ops !== undefined && (budget -= ops) >= 0) return inlineBody(em, first, end);
         return [`${CALL_TEXT}${em.p(first)}, ${em.p(end)}, now, scan);`];
-      });
+      }, !em.pc.inlineCalls);
     }
     case 'sfc':
       return emitChart(em, op.chart, (b) => runBody(em, b.first, b.end), L);

@@ -70,4 +70,6 @@ export interface MachineImage<V, F> extends PlcImage {
   readonly inputs: readonly V[];
   readonly outputs: readonly V[];
   readonly forces: readonly F[];
+  /** What the observed ST/IL bodies did (ScanCycle traces): a replay puts back the live ones. */
+  readonly traces?: ReadonlyMap<number, unknown>;
 }

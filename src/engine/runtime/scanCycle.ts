@@ -4,8 +4,8 @@
 // the watchdog and runtime faults, stepping one network at a time (and into calls), and cold/warm
 // restart. What the rest of the app calls (variables, forcing, online change, probe, snapshots) is
 // in scanner.ts.
-import type { Value } from '../../model/iecTypes';
-import type { Fault, PlcOptions, TaskSchedule, StepFrame, StepReport } from '../api';
+import type { ElementaryType, Value } from '../../model/iecTypes';
+import type { Fault, PlcOptions, TaskSchedule, StepFrame, StepReport, TextTarget, TextTrace } from '../api';
 import type { FnContext } from '../library/fnTypes';
 import { slotKey } from '../compile/emitter';
 import { isStraight } from '../compile/programConstants';
@@ -15,6 +15,7 @@ import { generateSegment, planSegments } from '../compile/segments';
 import { DEFAULT_TIERING, Tiering, type TieringOptions } from './tiering';
 import type { CompiledProgram } from '../compile/program';
 import type { VarSymbol } from '../compile/symbols';
+import { stLines } from '../st/lowered';
 import { Memory } from './memory';
 import { programRates, type ProgramRates } from './programRates';
 
@@ -29,6 +30,13 @@ class WatchdogTrip {
 // Wall clock for the watchdog and execMs (the engine core has no DOM or Node typings).
 const perf = (globalThis as { performance?: { now(): number } }).performance;
 const now: () => number = perf ? () => perf.now() : () => Date.now();
+
+/** What an observed ST/IL body did in scan `scan` (api.ts TextTrace), as it is recorded. */
+export interface TextRecord {
+  readonly scan: number;
+  readonly lines: Set<number>;
+  readonly values: Map<string, { line: number; type: ElementaryType; value: Value }>;
+}
 
 export abstract class ScanCycle {
   readonly pou: string;
@@ -90,6 +98,7 @@ export abstract class ScanCycle {
     ix: (network: number, line: number, value: number | bigint, lower: number, upper: number, what: string): number => {
       const i = Number(value);
       if (i >= lower && i <= upper) return i - lower;
+      this.loopLine = line;
       this.runtimeFault = `LD-E62 line ${line}: the index ${i} of ${what} is outside ${lower}..${upper}; the scan stops here (MATIEC does not check array bounds: its compiled C would read or write memory outside the array, or crash)`;
       throw new WatchdogTrip(network);
     },
@@ -102,7 +111,28 @@ export abstract class ScanCycle {
       this.loopLine = line;
       throw new WatchdogTrip(network);
     },
+    /** Instrumented ST/IL (step code only): the statement at `line` of network `network` starts. */
+    st: (network: number, line: number): void => {
+      const frame = this.frames[this.frames.length - 1];
+      if (frame) frame.line = line;
+      if (this.observed[network] === 1) this.traceOf(network).lines.add(line);
+    },
+    /** Instrumented ST/IL: the statement at `line` wrote `value` to `name`. */
+    w: (network: number, line: number, name: string, type: ElementaryType, value: Value): void => {
+      if (this.observed[network] !== 1) return;
+      const t = this.traceOf(network);
+      t.values.delete(name);
+      t.values.set(name, { line, type, value });
+    },
   };
+  /** ST/IL networks (the step code stops before their statements, not before the network). */
+  private readonly textNet: Uint8Array;
+  /** Networks of the observed ST/IL bodies (1), and what each observed body did, by body index. */
+  private readonly observed: Uint8Array;
+  private observing = false;
+  protected readonly traces = new Map<number, TextRecord>();
+  /** Wall time at which a step left the scan paused (the watchdog does not count the pause). */
+  private pausedAt = -1;
   /** Line of the ST/IL loop that tripped the watchdog (0: none). */
   private loopLine = 0;
   /** Message of a runtime fault (an array index out of bounds) being thrown out of the scan. */
@@ -135,6 +165,8 @@ export abstract class ScanCycle {
     this.words = plan.words;
     this.power = new Int32Array(Math.max(1, plan.wordCount));
     this.ranIn = new Int32Array(program.networks.length).fill(-1);
+    this.textNet = Uint8Array.from(program.networks, (n) => (n.ops.length === 1 && n.ops[0]!.op === 'st' ? 1 : 0));
+    this.observed = new Uint8Array(program.networks.length);
     this.groupOf = plan.groupOf;
     const vars = program.symbols.vars;
     this.inputs = vars.filter((v) => v.location?.area === 'I');
@@ -337,8 +369,9 @@ export abstract class ScanCycle {
   private trip(at: number): void {
     if (this.runtimeFault !== undefined) {
       const w = this.where(at);
-      this.stopWith('runtime', w, `${this.runtimeFault} in ${w.instance ? `${w.instance} (${w.pou})` : w.pou}`);
+      this.stopWith('runtime', w, `${this.runtimeFault} in ${w.instance ? `${w.instance} (${w.pou})` : w.pou}`, this.loopLine);
       this.runtimeFault = undefined;
+      this.loopLine = 0;
       return;
     }
     const network = this.backJump >= 0 ? this.backJump : at;
@@ -347,22 +380,24 @@ export abstract class ScanCycle {
     const place = this.loopLine > 0 ? `the loop at line ${this.loopLine}` : `network ${w.network + 1}${w.label ? ` (label ${w.label})` : ''}`;
     const owner = inBody || this.loopLine > 0 ? ` of ${w.instance ? `${w.instance} (${w.pou})` : w.pou}` : '';
     const where = `${place}${owner}`;
+    const line = this.loopLine;
     this.loopLine = 0;
     const limit =
       this.evals >= this.maxEvals
         ? `${this.maxEvals.toLocaleString('en-US')} network evaluations`
         : `${this.maxScanMs} ms`;
-    this.stopWith('watchdog', w, `watchdog: scan exceeded ${limit}; ${this.backJump >= 0 ? `looping in ${where}` : `stopped at ${where}`}`);
+    this.stopWith('watchdog', w, `watchdog: scan exceeded ${limit}; ${this.backJump >= 0 ? `looping in ${where}` : `stopped at ${where}`}`, line);
   }
 
   /** Ends the scan with a fault at `w`. */
-  private stopWith(kind: Fault['kind'], w: ReturnType<ScanCycle['where']>, message: string): void {
+  private stopWith(kind: Fault['kind'], w: ReturnType<ScanCycle['where']>, message: string, line = 0): void {
     this.currentFault = {
       kind,
       pou: w.pou,
       ...(w.instance ? { instance: w.instance } : {}),
       network: w.network,
       ...(w.label ? { networkLabel: w.label } : {}),
+      ...(line > 0 ? { line } : {}),
       message,
     };
     this.cursor = -1;
@@ -370,7 +405,17 @@ export abstract class ScanCycle {
   }
 
   protected runScans(n: number): void {
+    this.unpause();
     for (let k = 0; k < n && !this.currentFault; k++) {
+      if (this.observing && !this.stepper) {
+        // Observed ST/IL bodies: the scan runs on the instrumented step code.
+        if (this.cursor === -1) this.startScan();
+        if (this.cursor === -2) {
+          this.endScan();
+          continue;
+        }
+        this.stepper = this.stepScan(this.cursor, this.time, this.count);
+      }
       if (this.stepper) {
         // A step into a call left the scan inside a body: finish it on the stepping path.
         this.advance(() => false);
@@ -385,9 +430,24 @@ export abstract class ScanCycle {
   }
 
   stepNetwork(opts: { readonly into?: boolean } = {}): StepReport {
+    const report = this.stepOnce(opts);
+    if (!report.scanDone && !report.fault) this.pausedAt = now();
+    return report;
+  }
+
+  /** A scan left paused by a step goes on: the pause does not count towards the watchdog. */
+  private unpause(): void {
+    if (this.pausedAt >= 0 && this.cursor !== -1) this.scanStart += now() - this.pausedAt;
+    this.pausedAt = -1;
+  }
+
+  private stepOnce(opts: { readonly into?: boolean }): StepReport {
     if (this.currentFault) return { executed: -1, next: -1, scanDone: false, fault: this.currentFault };
+    this.unpause();
     if (this.cursor === -1) this.startScan();
-    if (!opts.into && !this.stepper) {
+    // An ST/IL network steps statement by statement: on the step code, even for a step over.
+    const text = this.cursor >= 0 && this.textNet[this.cursor] === 1;
+    if (!opts.into && !this.stepper && !text) {
       const executed = this.cursor >= 0 ? this.run(true) : -1;
       if (this.currentFault) return { executed, next: -1, scanDone: false, fault: this.currentFault };
       if (this.cursor === -2) {
@@ -402,7 +462,14 @@ export abstract class ScanCycle {
     }
     if (!this.stepper) {
       this.stepper = this.stepScan(this.cursor, this.time, this.count);
-      this.stepper.next(); // to the stop before the cursor's network
+      // To the stop before the cursor's network (an ST/IL network: before its first statement,
+      // where this step ends: the network has not started yet).
+      if (this.advance(() => true)) {
+        this.endScan();
+        return { executed: -1, next: -1, scanDone: true, frames: [] };
+      }
+      if (this.currentFault) return { executed: -1, next: -1, scanDone: false, fault: this.currentFault };
+      if (text) return { executed: -1, next: this.cursor, scanDone: false, frames: this.position() };
     }
     const executed = this.frames[0]!.network;
     // Into: to the next stop at any depth; over (a step left inside a body): back to the program.
@@ -420,7 +487,7 @@ export abstract class ScanCycle {
 
   protected stepper: Generator<void, void> | undefined;
   /** Body and (global) network of each level the stepper stands in, the program first. */
-  protected frames: { body: number; network: number }[] = [];
+  protected frames: { body: number; network: number; line: number }[] = [];
   private stepGens: ((i: number, t: number, scan: number) => Generator<void, number>)[] | undefined;
   protected stepPlan: DispatchPlan | undefined;
 
@@ -457,11 +524,13 @@ export abstract class ScanCycle {
   private *stepRange(first: number, end: number, t: number, scan: number): Generator<void, void> {
     const plan = this.stepPlan ?? this.buildStepPlan();
     const gens = this.stepGens!;
-    const frame = { body: this.program.bodyOf[first] ?? -1, network: first };
+    const frame = { body: this.program.bodyOf[first] ?? -1, network: first, line: 0 };
     this.frames.push(frame);
     for (let i = first; i >= 0 && i < end; ) {
       frame.network = i;
-      yield;
+      frame.line = 0;
+      // ST/IL: the stops are before its statements (the instrumented code yields there).
+      if (this.textNet[i] !== 1) yield;
       const next: number = yield* gens[plan.shape[i]!]!(i, t, scan);
       this.ranIn[i] = scan;
       this.evals++;
@@ -497,17 +566,92 @@ export abstract class ScanCycle {
   }
 
   position(): readonly StepFrame[] {
-    const frames = this.stepper ? this.frames : this.cursor >= 0 ? [{ body: this.program.bodyOf[this.cursor]!, network: this.cursor }] : [];
+    const frames = this.stepper ? this.frames : this.cursor >= 0 ? [{ body: this.program.bodyOf[this.cursor]!, network: this.cursor, line: 0 }] : [];
     return frames.map((f) => {
       const body = this.program.bodies[f.body]!;
-      return { pou: body.pou, ...(body.instance ? { instance: body.instance } : {}), network: f.network - body.first };
+      return {
+        pou: body.pou,
+        ...(body.instance ? { instance: body.instance } : {}),
+        network: f.network - body.first,
+        ...(f.line > 0 ? { line: f.line } : {}),
+      };
     });
+  }
+
+  // ---- observing ST/IL bodies (the instrumented tier) ----
+
+  private matches(target: TextTarget, b: number): boolean {
+    const body = this.program.bodies[b]!;
+    if (body.pou.toUpperCase() !== target.pou.toUpperCase()) return false;
+    return target.instance === undefined || (body.instance ?? '').toUpperCase() === target.instance.toUpperCase();
+  }
+
+  observeText(targets: readonly TextTarget[]): void {
+    this.observed.fill(0);
+    const keep = new Set<number>();
+    this.program.bodies.forEach((body, b) => {
+      if (!targets.some((t) => this.matches(t, b))) return;
+      keep.add(b);
+      for (let i = body.first; i < body.end; i++) if (this.textNet[i] === 1) this.observed[i] = 1;
+    });
+    for (const b of [...this.traces.keys()]) if (!keep.has(b)) this.traces.delete(b);
+    this.observing = this.observed.includes(1);
+  }
+
+  private traceOf(network: number): TextRecord {
+    const b = this.program.bodyOf[network]!;
+    let t = this.traces.get(b);
+    if (!t || t.scan !== this.count) {
+      t = { scan: this.count, lines: new Set(), values: new Map() };
+      this.traces.set(b, t);
+    }
+    return t;
+  }
+
+  private readonly stopLines = new Map<number, readonly number[]>();
+
+  /** Lines of every statement of a body's ST/IL networks. */
+  private stopsOf(b: number): readonly number[] {
+    let hit = this.stopLines.get(b);
+    if (!hit) {
+      const body = this.program.bodies[b]!;
+      const lines = new Set<number>();
+      for (let i = body.first; i < body.end; i++) {
+        const op = this.program.networks[i]!.ops[0];
+        if (this.textNet[i] === 1 && op?.op === 'st') stLines(op.body, lines);
+      }
+      hit = [...lines].sort((x, y) => x - y);
+      this.stopLines.set(b, hit);
+    }
+    return hit;
+  }
+
+  textTrace(target: TextTarget): TextTrace | undefined {
+    let best: number | undefined;
+    for (const [b, t] of this.traces)
+      if (this.matches(target, b) && (best === undefined || t.scan > this.traces.get(best)!.scan)) best = b;
+    if (best === undefined) return undefined;
+    const t = this.traces.get(best)!;
+    const body = this.program.bodies[best]!;
+    // Instance members are named as the body's text names them (`Out`, not `PID1.Out`).
+    const own = body.instance ? `${body.instance.toUpperCase()}.` : '';
+    const local = (name: string) => (own && name.toUpperCase().startsWith(own) ? name.slice(own.length) : name);
+    return {
+      pou: body.pou,
+      ...(body.instance ? { instance: body.instance } : {}),
+      scan: t.scan,
+      lines: [...t.lines].sort((a, b) => a - b),
+      stops: this.stopsOf(best),
+      values: [...t.values].map(([name, v]) => ({ name: local(name), line: v.line, type: v.type, value: v.value })),
+    };
   }
 
   // ---- restarts ----
 
   private resetCommon(): void {
     this.meters[1]!++;
+    this.traces.clear();
+    this.pausedAt = -1;
     this.cursor = -1;
     this.stepper = undefined;
     this.frames = [];

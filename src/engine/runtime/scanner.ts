@@ -28,7 +28,7 @@ import type { Access, VarSymbol } from '../compile/symbols';
 import { coerce } from './memory';
 import { exportMemory, importMemory, stateItemsOf } from './instanceState';
 import { imageBytes, restoreMemory, saveMemory, type MachineImage } from './machineImage';
-import { ScanCycle } from './scanCycle';
+import { ScanCycle, type TextRecord } from './scanCycle';
 
 type Image = MachineImage<Value, readonly [VarSymbol, Value]>;
 
@@ -292,6 +292,7 @@ export class ScanPlc extends ScanCycle implements Plc {
       inputs: this.inputImage.slice(),
       outputs: this.outputImage.slice(),
       forces: [...this.forces],
+      traces: new Map(this.traces),
     };
   }
 
@@ -315,6 +316,10 @@ export class ScanPlc extends ScanCycle implements Plc {
     }
     this.count = image.scan;
     this.time = image.timeMs;
+    if (image.traces) {
+      this.traces.clear();
+      for (const [b, t] of image.traces) this.traces.set(b, t as TextRecord);
+    }
   }
 
   snapshot(opts: SnapshotOptions = {}): PowerSnapshot {

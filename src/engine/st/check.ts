@@ -62,6 +62,7 @@ export class StChecker {
     for (const s of list) {
       try {
         const t = this.statement(s);
+        if (t && s.k !== 'label') out.push({ k: 'line', line: s.pos.line });
         if (t) out.push(...t);
       } catch (e) {
         if (!(e instanceof Fail)) throw e;
@@ -93,7 +94,7 @@ export class StChecker {
       case 'call':
         return [this.callStatement(s.name, s.args, s.pos)];
       case 'if': {
-        const branches = s.branches.map((b) => ({ cond: this.condition(b.cond, 'IF'), body: this.nested(b.body) }));
+        const branches = s.branches.map((b) => ({ cond: this.condition(b.cond, 'IF'), body: this.nested(b.body), line: b.cond.pos.line }));
         return [{ k: 'if', branches, ...(s.otherwise ? { otherwise: this.nested(s.otherwise) } : {}) }];
       }
       case 'case':

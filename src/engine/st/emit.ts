@@ -42,15 +42,39 @@ class StGen {
   private readonly loops: { brk: string; cont: string }[] = [];
   private readonly block: string;
   private readonly machine: string;
+  /**
+   * Statement-level observation and stops (the step plan only, a generator): before each
+   * statement `X.st(i, line); yield;` (the scanner records the line, and a step may pause there),
+   * after each write `X.w(i, line, name, type, value)` (the value it left). `i` is the generator's network.
+   */
+  private readonly instrument: boolean;
+  private line = 0;
 
   constructor(
     private readonly em: StEmitter,
     private readonly op: StOp,
     private readonly body: BodyWriter,
+    instrument: boolean,
   ) {
     this.d = em.depth;
     this.block = `S${this.d}`;
     this.machine = `M${this.d}`;
+    this.instrument = instrument;
+  }
+
+  /** Instrumented: the statement at `line` starts (recorded; a step may pause here). */
+  private stop(line: number): string {
+    this.line = line;
+    return `X.st(i, ${line}); yield;`;
+  }
+
+  /** A write to `dst`, reported to the scanner after it in instrumented code. */
+  private write(dst: Access, x: string, from: ElementaryType): string {
+    const w = this.em.writeValue(dst, x, from);
+    const name = this.instrument ? accessName(dst) : undefined;
+    if (name === undefined) return w;
+    const back = this.em.readValue({ from: 'access', access: dst }, dst.type);
+    return `${w} X.w(i, ${this.line}, ${JSON.stringify(name)}, ${JSON.stringify(dst.type)}, ${back});`;
   }
 
   run(): string[] {
@@ -107,7 +131,7 @@ class StGen {
     switch (s.k) {
       case 'assign': {
         const v = this.expr(s.value);
-        return [...v.pre, em.writeValue(s.dst, v.code, s.value.type)];
+        return [...v.pre, this.write(s.dst, v.code, s.value.type)];
       }
       case 'eval': {
         const v = this.expr(s.value);
@@ -117,10 +141,12 @@ class StGen {
         const out: string[] = [];
         let close = 0;
         s.branches.forEach((b, i) => {
+          // Instrumented: an ELSIF's condition is a stop of its own.
+          const hook = i > 0 && this.instrument && b.line !== undefined ? [this.stop(b.line)] : [];
           const c = this.expr(b.cond);
           if (i === 0) out.push(...c.pre, `if (${c.code}) {`);
-          else if (c.pre.length) {
-            out.push('} else {', ...c.pre, `if (${c.code}) {`);
+          else if (c.pre.length || hook.length) {
+            out.push('} else {', ...hook, ...c.pre, `if (${c.code}) {`);
             close++;
           } else out.push(`} else if (${c.code}) {`);
           out.push(...this.stmts(b.body));
@@ -148,7 +174,7 @@ class StGen {
         const k = this.loopCount++;
         const ctl: Source = { from: 'access', access: s.control };
         const from = this.expr(s.from);
-        const out = [...from.pre, em.writeValue(s.control, from.code, s.from.type)];
+        const out = [...from.pre, this.write(s.control, from.code, s.from.type)];
         const { brk, cont, w } = this.openLoop(k);
         const by = this.expr(s.by);
         const to = this.expr(s.to);
@@ -163,7 +189,7 @@ class StGen {
         } else out.push(`const ${b} = ${by.code};`, `if (!(${b} > 0 ? ${i} <= ${to.code} : ${i} >= ${to.code})) break;`);
         out.push(this.watchdog(w, s.line), `${cont}: {`, ...this.stmts(s.body), '}');
         em.pc.functionsUsed.add(s.add);
-        out.push(em.writeValue(s.control, `Cfn${s.add}.impl2(ctx, ${em.readValue(ctl, s.control.type)}, ${b})`, s.control.type), '}');
+        out.push(this.write(s.control, `Cfn${s.add}.impl2(ctx, ${em.readValue(ctl, s.control.type)}, ${b})`, s.control.type), '}');
         this.loops.pop();
         return out;
       }
@@ -197,13 +223,13 @@ class StGen {
           out.push(...v.pre, `${f}.${i.pin} = ${v.code};`);
         }
         out.push(`${f}.execute(now);`);
-        for (const o of s.outs) out.push(em.writeValue(o.dst, o.negated ? `!${f}.${o.pin}` : `${f}.${o.pin}`, o.type));
+        for (const o of s.outs) out.push(this.write(o.dst, o.negated ? `!${f}.${o.pin}` : `${f}.${o.pin}`, o.type));
         return out;
       }
       case 'call':
         return this.call(s);
       case 'now':
-        return [em.writeValue(s.dst, 'now', 'TIME')];
+        return [this.write(s.dst, 'now', 'TIME')];
       case 'setcr': {
         const v = this.expr(s.value);
         return [...v.pre, `c${this.d}_${s.slot} = ${v.code};`];
@@ -212,6 +238,8 @@ class StGen {
         return [`case ${s.id + 1}:`];
       case 'goto':
         return [`{ q${this.d} = ${s.id + 1}; ${s.back ? this.watchdog(`w${this.d}`, s.line) : ''} continue ${this.machine}; }`];
+      case 'line':
+        return this.instrument ? [this.stop(s.line)] : [];
     }
   }
 
@@ -232,7 +260,7 @@ class StGen {
     out.push(...this.body(s.first, s.end));
     for (const o of s.outs) {
       const v = em.readValue({ from: 'access', access: o.src }, o.dst.type);
-      out.push(em.writeValue(o.dst, o.negated ? `!${v}` : v, o.dst.type));
+      out.push(this.write(o.dst, o.negated ? `!${v}` : v, o.dst.type));
     }
     return out;
   }
@@ -293,7 +321,26 @@ class StGen {
   }
 }
 
-/** The statements of an ST/IL body, into `em.lines`. */
-export function emitSt(em: StEmitter, op: StOp, body: BodyWriter): void {
-  em.lines.push(...new StGen(em, op, body).run());
+/** The name a write is shown under (the instance's own names: `Out`, `A[i]`, `T1.Q`); none for a constant. */
+function accessName(a: Access): string | undefined {
+  switch (a.kind) {
+    case 'var':
+      return a.v.name;
+    case 'bit':
+      return `${a.v.name}.${a.bit}`;
+    case 'pin':
+      return `${a.fb.name}.${a.pin}`;
+    case 'elem':
+      return a.text;
+    case 'const':
+      return undefined;
+  }
+}
+
+/**
+ * The statements of an ST/IL body, into `em.lines`; `instrument`: with the statement hooks (only
+ * in the generators of the step plan, compile/dispatch.ts stepBody).
+ */
+export function emitSt(em: StEmitter, op: StOp, body: BodyWriter, instrument = false): void {
+  em.lines.push(...new StGen(em, op, body, instrument).run());
 }

@@ -37,7 +37,8 @@ export type TStmt =
   | { readonly k: 'eval'; readonly value: TExpr }
   | {
       readonly k: 'if';
-      readonly branches: readonly { readonly cond: TExpr; readonly body: readonly TStmt[] }[];
+      /** `line`: where an ELSIF's condition is (the instrumented code stops there). */
+      readonly branches: readonly { readonly cond: TExpr; readonly body: readonly TStmt[]; readonly line?: number }[];
       readonly otherwise?: readonly TStmt[];
     }
   | { readonly k: 'case'; readonly selector: TExpr; readonly arms: readonly CaseArm[]; readonly otherwise?: readonly TStmt[] }
@@ -77,7 +78,12 @@ export type TStmt =
   | { readonly k: 'now'; readonly dst: Access }
   | { readonly k: 'setcr'; readonly slot: number; readonly value: TExpr }
   | { readonly k: 'label'; readonly id: number }
-  | { readonly k: 'goto'; readonly id: number; readonly back: boolean; readonly line: number };
+  | { readonly k: 'goto'; readonly id: number; readonly back: boolean; readonly line: number }
+  /**
+   * Where the next statement starts in the body's text (1-based line). No code on the fast path;
+   * the instrumented step code (emit.ts, `instrument`) records the line and may pause there.
+   */
+  | { readonly k: 'line'; readonly line: number };
 
 /** Every body range the statements call (nested loops included), and their size in operations. */
 export function stFacts(body: readonly TStmt[]): { calls: { first: number; end: number }[]; weight: number; labels: boolean } {
@@ -111,6 +117,7 @@ export function stFacts(body: readonly TStmt[]): { calls: { first: number; end: 
   };
   const stmts = (list: readonly TStmt[]): void => {
     for (const s of list) {
+      if (s.k === 'line') continue;
       weight++;
       switch (s.k) {
         case 'assign':
@@ -161,6 +168,36 @@ export function stFacts(body: readonly TStmt[]): { calls: { first: number; end: 
   };
   stmts(body);
   return { calls, weight, labels };
+}
+
+/** The lines of every statement (and ELSIF condition) of a checked body, where the instrumented code stops. */
+export function stLines(body: readonly TStmt[], out: Set<number> = new Set()): Set<number> {
+  for (const s of body) {
+    switch (s.k) {
+      case 'line':
+        out.add(s.line);
+        break;
+      case 'if':
+        for (const b of s.branches) {
+          if (b.line !== undefined) out.add(b.line);
+          stLines(b.body, out);
+        }
+        if (s.otherwise) stLines(s.otherwise, out);
+        break;
+      case 'case':
+        for (const a of s.arms) stLines(a.body, out);
+        if (s.otherwise) stLines(s.otherwise, out);
+        break;
+      case 'for':
+      case 'while':
+      case 'repeat':
+        stLines(s.body, out);
+        break;
+      default:
+        break;
+    }
+  }
+  return out;
 }
 
 /**
