@@ -87,7 +87,7 @@ async function traced(cdp: CDPSession, name: string, fn: () => Promise<unknown>)
 async function profiled(cdp: CDPSession, name: string, fn: () => Promise<unknown>) {
   if (process.env.TRACE) return traced(cdp, name, fn);
   await cdp.send('Profiler.enable');
-  await cdp.send('Profiler.setSamplingInterval', { interval: 200 });
+  await cdp.send('Profiler.setSamplingInterval', { interval: Number(process.env.INTERVAL ?? 200) });
   await cdp.send('Profiler.start');
   const r = await fn();
   const { profile } = (await cdp.send('Profiler.stop')) as unknown as { profile: Profile };
@@ -139,7 +139,7 @@ async function main() {
           return times.map(Math.round);
         }),
       );
-    if (what === 'select' || what === 'commit') {
+    if (what === 'select' || what === 'commit' || what === 'undo') {
       const count = project.pous[0]!.networks.length;
       const points = [];
       for (let k = 0; k < 6; k++) points.push(await cellOnScreen(page, Math.floor(((k + 0.5) * count) / 6), 0, 0));
@@ -151,7 +151,28 @@ async function main() {
           for (let k = 0; k < 8; k++) out.push(await timed(page, 'pointerdown', () => page.mouse.click(p.x + (k % 2) * 60, p.y)));
           return out.map(Math.round);
         });
-      else {
+      else if (what === 'undo') {
+        const out: number[] = [];
+        await cdp.send('Profiler.enable');
+        await cdp.send('Profiler.setSamplingInterval', { interval: Number(process.env.INTERVAL ?? 200) });
+        const profiles: Profile[] = [];
+        for (let k = 0; k < 6; k++) {
+          await page.mouse.click(points[k]!.x, points[k]!.y);
+          await page.waitForTimeout(100);
+          await timed(page, 'keydown', () => page.keyboard.press('Enter'), { editorOpen: true });
+          await page.keyboard.press('Control+a');
+          await page.keyboard.type(`Prof${k}`);
+          await page.waitForTimeout(100);
+          await timed(page, 'keydown', () => page.keyboard.press('Enter'), { declared: `Prof${k}` });
+          await page.waitForTimeout(200);
+          await cdp.send('Profiler.start');
+          out.push(await timed(page, 'keydown', () => page.keyboard.press('Control+z'), { notDeclared: `Prof${k}` }));
+          profiles.push(((await cdp.send('Profiler.stop')) as unknown as { profile: Profile }).profile);
+          await page.waitForTimeout(100);
+        }
+        profiles.forEach((pr, i) => writeFileSync(`/tmp/prof/undo${i}.cpuprofile`, JSON.stringify(pr)));
+        console.log(`==== undo: ${JSON.stringify(out.map(Math.round))}\n${summarize(profiles[profiles.length - 1]!)}`);
+      } else {
         await page.mouse.click(p.x, p.y);
         await profiled(cdp, 'commit', async () => {
           const out: number[] = [];

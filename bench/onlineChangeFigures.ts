@@ -111,8 +111,11 @@ export async function measureRunAndOnlineChange(page: Page, project: Project, op
         const off = sim.subscribe((state) => {
           if (state.onlineChange?.kind !== 'applied') return;
           off();
+          performance.mark('oc-applied');
           resolve({ appliedMs: performance.now() - t0, before });
         });
+        // A mark for a trace of the change (bench/editorProfile.ts and the like).
+        performance.mark('oc-edit');
         doc.updateElement(first.id, { variable: other.variable });
       }),
   );

@@ -10,6 +10,7 @@ import type { Pou, Project, Variable } from '../model/project';
 import { globalsWithOutside } from '../model/outsideGlobals';
 import type { SimLayout, SimVariable, SimView, VariableRole } from './protocol';
 import { programInstances, type ProgramInstance } from './runTarget';
+import { yieldPoint } from '../engine/yieldPoint';
 
 const roleOfLocation = (location: string | undefined): VariableRole => {
   const area = location ? parseLocation(location)?.area : undefined;
@@ -96,6 +97,7 @@ function networkFields(pou: Pou | undefined): Pick<SimLayout, 'networkIds' | 'el
   const vlinkKeys: string[] = [];
   const networks = pou?.networks ?? [];
   for (const network of networks) {
+    yieldPoint();
     for (const el of network.elements) elementIds.push(el.id);
     for (const v of network.vlinks) vlinkKeys.push(`${v.row}|${v.boundary}`);
     elementOffsets.push(elementOffsets[elementOffsets.length - 1]! + network.elements.length);
@@ -117,7 +119,9 @@ export function buildLayout(project: Project, pouName: string, names: readonly s
   const pou = findPou(project, pouName);
   if (!pou) throw new Error(`the program "${pouName}" is not in the project`);
   const variables: SimVariable[] = [];
-  for (const name of names) {
+  for (let i = 0; i < names.length; i++) {
+    const name = names[i]!;
+    if ((i & 63) === 63) yieldPoint();
     const described = describeName(project, pou, name);
     // Names the engine can read but whose type the document cannot tell are not shown (none expected).
     if (described && described.type !== 'ANY') variables.push(described);

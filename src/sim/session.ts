@@ -367,14 +367,18 @@ export class SimSession {
     if (!online) clock.set(0);
     const plc = withYieldPoints(poll, () => this.deps.engine.createPlc(program, { cycleMs: this.runner.cycleMs, clock }));
     poll();
-    const layout = buildLayout(project, plc.pou, plc.variableNames(), this.cycleFor(plc), {
-      instances: plc.instances(),
-      ...(runOptions(project).configuration ? { programs: programInstances(project) } : {}),
-    });
+    // The layout and the pins' data lines are built between yield points too (a name, a network at a time).
+    const layout = withYieldPoints(poll, () =>
+      buildLayout(project, plc.pou, plc.variableNames(), this.cycleFor(plc), {
+        instances: plc.instances(),
+        ...(runOptions(project).configuration ? { programs: programInstances(project) } : {}),
+      }),
+    );
     poll();
+    const shownLayout = this.view && findPou(project, this.view.pou) ? withView(project, layout, this.view) : layout;
     const next: LoadedProgram = {
       plc,
-      layout: withPinLines(this.view && findPou(project, this.view.pou) ? withView(project, layout, this.view) : layout, plc, program as CompiledProgram, project),
+      layout: withYieldPoints(poll, () => withPinLines(shownLayout, plc, program as CompiledProgram, project)),
       fingerprint,
       id: fingerprintId(fingerprint),
       program,
@@ -459,7 +463,11 @@ export class SimSession {
       this.carried = undefined;
     }
     this.deps.post({ type: 'compiled', ok: true, online, diagnostics, layout: next.layout, program: this.programId });
-    this.postFrame();
+    // An online change while Run paces scans is installed at a scan boundary, right before the new
+    // program's first scan: the frame after that scan (the burst's, posted at once) shows it; none
+    // is built here, where every millisecond delays the scan.
+    if (online && this.runner.runningLive) this.lastFrameAt = Number.NEGATIVE_INFINITY;
+    else this.postFrame();
   }
 
   /**
@@ -508,9 +516,14 @@ export class SimSession {
   }
 
   private configureTrend(rearm = false): void {
-    const known = new Map((this.layout?.variables ?? []).map((v) => [v.name.toUpperCase(), v.name]));
-    const names = this.trendRequest.names.flatMap((n) => known.get(n.toUpperCase()) ?? []);
     const request = this.trendRequest.trigger;
+    // The layout's names looked up only when the trend asks for some (an online change installs a
+    // program at a scan boundary: no index of thousands of names made there for nothing).
+    const known =
+      this.trendRequest.names.length > 0 || request
+        ? new Map((this.layout?.variables ?? []).map((v) => [v.name.toUpperCase(), v.name]))
+        : new Map<string, string>();
+    const names = this.trendRequest.names.flatMap((n) => known.get(n.toUpperCase()) ?? []);
     const triggerName = request && known.get(request.name.toUpperCase());
     // Before a program is loaded the trigger waits armed; a name the program lacks is reported.
     const trigger = request && { ...request, name: triggerName ?? request.name };

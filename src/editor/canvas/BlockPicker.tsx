@@ -14,10 +14,19 @@ export function BlockPicker({ onDone }: { readonly onDone: () => void }) {
   const [query, setQuery] = useState('');
   const [active, setActive] = useState(0);
   const library = useDocument(selectLibrary);
-  const editing = useDocument(selectActivePou);
+  // The edited POU's name and kind only (what searchBlocks reads); nothing searched while closed.
+  const editingName = useDocument((s) => selectActivePou(s)?.name);
+  const editingKind = useDocument((s) => selectActivePou(s)?.kind);
   const results = useMemo(
-    () => searchBlocks(query, library, editing).slice(0, 200),
-    [query, library, editing],
+    () =>
+      picker
+        ? searchBlocks(
+            query,
+            library,
+            editingName !== undefined && editingKind ? { name: editingName, kind: editingKind } : undefined,
+          ).slice(0, 200)
+        : [],
+    [picker, query, library, editingName, editingKind],
   );
   if (!picker) return null;
   const index = Math.min(active, results.length - 1);

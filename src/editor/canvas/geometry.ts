@@ -176,13 +176,42 @@ export function layoutNetworks(
   let y = 8;
   let width = 480;
   networks.forEach((n, i) => {
+    const m = networkMeasures(n, library, symbols);
     tops[i] = y;
-    pitches[i] = rowPitch(n, symbols);
-    heights[i] = networkHeight(n, symbols);
-    y += heights[i]!;
-    width = Math.max(width, networkWidth(n, library) + 16, HEADER_LEFT + headerNeed(n) + 8);
+    pitches[i] = m.pitch;
+    heights[i] = m.height;
+    y += m.height;
+    width = Math.max(width, m.width);
   });
   return { tops, heights, pitches, symbols, totalHeight: y + 40, totalWidth: width, library };
+}
+
+interface NetworkMeasures {
+  readonly library: BlockLibrary | undefined;
+  readonly symbols: SymbolComments | undefined;
+  readonly pitch: number;
+  readonly height: number;
+  /** The layout width the network needs: its grid or its header, whichever is wider. */
+  readonly width: number;
+}
+const measuresMemo = new WeakMap<Network, NetworkMeasures>();
+
+/**
+ * A network's row pitch, height and needed width, memoised per network object, library and symbol
+ * lookup: an edit lays out again only the networks it replaced (the others keep their objects).
+ */
+export function networkMeasures(n: Network, library?: BlockLibrary, symbols?: SymbolComments): NetworkMeasures {
+  const hit = measuresMemo.get(n);
+  if (hit && hit.library === library && hit.symbols === symbols) return hit;
+  const m: NetworkMeasures = {
+    library,
+    symbols,
+    pitch: rowPitch(n, symbols),
+    height: networkHeight(n, symbols),
+    width: Math.max(networkWidth(n, library) + 16, HEADER_LEFT + headerNeed(n) + 8),
+  };
+  measuresMemo.set(n, m);
+  return m;
 }
 
 /** Row height of network `index` in a layout. */

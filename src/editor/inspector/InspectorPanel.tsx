@@ -1,4 +1,5 @@
 // The inspector: the selected element, else the selected network, else the project.
+import { useMemo } from 'react';
 import { selectActivePou, useDocument } from '../../store/documentStore';
 import { selectSelection, useUi } from '../../store/uiStore';
 import { ElementInspector } from './ElementInspector';
@@ -12,7 +13,9 @@ export function InspectorPanel() {
   const selection = useUi(selectSelection);
   const index = pou && selection.network ? pou.networks.findIndex((n) => n.id === selection.network) : -1;
   const network = pou?.networks[index];
-  const labels = (pou?.networks ?? []).flatMap((n) => (n.label ? [n.label] : []));
+  // The POU's labels, gathered again only when its networks change (not on every selection).
+  const networks = pou?.networks;
+  const labels = useMemo(() => (networks ?? []).flatMap((n) => (n.label ? [n.label] : [])), [networks]);
   const elements = network ? network.elements.filter((e) => selection.elements.includes(e.id)) : [];
 
   let body;

@@ -51,6 +51,9 @@ type Option =
   | { readonly kind: 'declare'; readonly choice: DeclareChoice };
 
 /** Input pins accept literals (`T#5s`, `10`), which need no completion and no declaration. */
+const NO_CANDIDATES: readonly Candidate[] = [];
+const NO_OPTIONS: Option[] = [];
+
 const isLiteralFor = (role: BindingRole, text: string) =>
   role.kind === 'pin' && role.direction === 'input' && parseLiteral(text.trim()).ok;
 
@@ -71,14 +74,16 @@ export function VariableInput(props: VariableInputProps) {
 
   // The names the field can offer depend on the declarations, not on what is typed: built once per
   // document version and role, then only ranked per keystroke (a POU of thousands of variables).
+  // Only an open list needs them: a closed field (the inspector's, on every selection and edit)
+  // builds nothing, and nothing reads them while it is closed (`shown` needs `open`).
   const roleKey = JSON.stringify(role);
   const candidates = useMemo(
-    () => (pou ? candidatesFor(project, pou, role) : []),
+    () => (pou && open ? candidatesFor(project, pou, role) : NO_CANDIDATES),
     // eslint-disable-next-line react-hooks/exhaustive-deps -- `role` is compared by value (callers build it per render)
-    [project, pou, roleKey],
+    [project, pou, roleKey, open],
   );
   const options = useMemo<Option[]>(() => {
-    if (!pou || isLiteralFor(role, text)) return [];
+    if (!open || !pou || isLiteralFor(role, text)) return NO_OPTIONS;
     const ranked = rankCandidates(text, candidates).map((candidate) => ({
       kind: 'candidate' as const,
       candidate,
@@ -109,7 +114,7 @@ export function VariableInput(props: VariableInputProps) {
     const contains = ranked.filter((o) => !o.candidate.text.toUpperCase().startsWith(q));
     return [...starts, ...declares, ...contains];
     // eslint-disable-next-line react-hooks/exhaustive-deps -- `role` is compared by value (callers build it per render)
-  }, [project, pou, roleKey, candidates, text]);
+  }, [project, pou, roleKey, candidates, text, open]);
   const shown = open && options.length > 0;
   const activeIndex = Math.min(active, options.length - 1);
 

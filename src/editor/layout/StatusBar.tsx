@@ -3,7 +3,7 @@
 import { useMemo } from 'react';
 import { selectActivePou, selectNetworks, useDocument } from '../../store/documentStore';
 import { selectCursor, useUi, useUiStore } from '../../store/uiStore';
-import { useDiagnostics } from '../problems/useDiagnostics';
+import { useDiagnosticsByNetwork } from '../problems/useDiagnostics';
 import { SimInputHint } from '../sim/SimInputHint';
 import { SimPosition } from '../sim/SimPosition';
 
@@ -15,18 +15,18 @@ export function StatusBar() {
   const tool = useUi((s) => s.tool);
   const networks = useDocument(selectNetworks);
   const pou = useDocument(selectActivePou);
-  const diagnostics = useDiagnostics();
+  // The active POU's diagnostics by network: a cursor move looks at its network's only.
+  const byNetwork = useDiagnosticsByNetwork(pou?.name);
   const index = cursor ? networks.findIndex((n) => n.id === cursor.network) : -1;
   const here = useMemo(() => {
     if (!cursor || index < 0 || !pou) return undefined;
     const n = networks[index]!;
-    return diagnostics.find((d) => {
-      if (d.pou !== pou.name || d.network !== index) return false;
+    return byNetwork.get(index)?.find((d) => {
       if (d.cell) return d.cell.row === cursor.row && d.cell.col === cursor.col;
       const el = d.elementId ? n.elements.find((e) => e.id === d.elementId) : undefined;
       return el ? el.row === cursor.row && el.col === cursor.col : false;
     });
-  }, [cursor, index, pou, networks, diagnostics]);
+  }, [cursor, index, pou, networks, byNetwork]);
 
   return (
     <footer className="rs-statusbar" data-testid="status-bar">

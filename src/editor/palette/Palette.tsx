@@ -25,8 +25,14 @@ export function Palette({ ctx }: { readonly ctx: EditorContext }) {
   const tool = useUi((s) => s.tool);
   const [query, setQuery] = useState('');
   const library = useDocument(selectLibrary);
-  const editing = useDocument(selectActivePou);
-  const blocks = useMemo(() => searchBlocks(query, library, editing), [query, library, editing]);
+  // The edited POU's name and kind only (what searchBlocks reads): an edit inside it neither
+  // re-renders the palette nor searches the blocks again.
+  const editingName = useDocument((s) => selectActivePou(s)?.name);
+  const editingKind = useDocument((s) => selectActivePou(s)?.kind);
+  const blocks = useMemo(
+    () => searchBlocks(query, library, editingName !== undefined && editingKind ? { name: editingName, kind: editingKind } : undefined),
+    [query, library, editingName, editingKind],
+  );
 
   const arm = (name: string, t: Tool) => {
     const current = ui.getState().tool;

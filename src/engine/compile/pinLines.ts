@@ -6,6 +6,7 @@
 import type { ElementaryType } from '../../model/iecTypes';
 import type { Op, Source } from './ir';
 import type { CompiledProgram } from './program';
+import { yieldPoint } from '../yieldPoint';
 
 export interface PinLine {
   /** Network index relative to the body's first network. */
@@ -83,6 +84,7 @@ export function pinLines(program: CompiledProgram, first: number, end: number): 
     visit(ir.ops);
     for (const seg of ir.early ?? []) visit(seg);
     visit(ir.late ?? []);
+    yieldPoint();
   }
   return out;
 }

@@ -12,7 +12,22 @@ import type { UfbSymbol, VarSymbol } from '../compile/symbols';
  * by path, `MOTOR1.T1`), then user FB instances (their variables), then edge elements (inside an
  * FB body: one per instance, keyed `MOTOR1/element id`).
  */
-export function stateItemsOf(program: CompiledProgram): StateItem[] {
+const itemsMemo = new WeakMap<CompiledProgram, readonly StateItem[]>();
+
+/**
+ * The state items of a compiled program (made once per program: planning an online change and
+ * carrying the state at the scan boundary both ask, and a compiled program never changes).
+ */
+export function stateItemsOf(program: CompiledProgram): readonly StateItem[] {
+  let items = itemsMemo.get(program);
+  if (!items) {
+    items = makeStateItems(program);
+    itemsMemo.set(program, items);
+  }
+  return items;
+}
+
+function makeStateItems(program: CompiledProgram): StateItem[] {
   const items: StateItem[] = program.symbols.fbs.map((f) => ({
     kind: 'fb',
     key: f.name.toUpperCase(),

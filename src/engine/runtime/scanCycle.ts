@@ -18,6 +18,7 @@ import type { VarSymbol } from '../compile/symbols';
 import { stLines } from '../st/lowered';
 import { Memory } from './memory';
 import { programRates, type ProgramRates } from './programRates';
+import { yieldPoint } from '../yieldPoint';
 
 /** Networks run per call of a dispatch function before the scan time is checked (watchdog). */
 const CHUNK = 1024;
@@ -205,8 +206,17 @@ export abstract class ScanCycle {
         this.exec,
       );
     const liveShape = plan.shape.slice();
-    this.groups = plan.bodies.map((body) => link(body, plan.constants, liveShape) as DispatchFn);
-    this.stepGroups = plan.bodies.map((body) => link(body, plan.constants, plan.shape) as DispatchFn);
+    yieldPoint();
+    this.groups = plan.bodies.map((body) => {
+      const fn = link(body, plan.constants, liveShape) as DispatchFn;
+      yieldPoint();
+      return fn;
+    });
+    this.stepGroups = plan.bodies.map((body) => {
+      const fn = link(body, plan.constants, plan.shape) as DispatchFn;
+      yieldPoint();
+      return fn;
+    });
     const fbTypes = program.symbols.fbs.map((f) => f.type);
     const build = (first: number, end: number): SegmentFn => {
       const forced = new Set([...this.forces.keys()].map((v) => slotKey(v.store, v.slot)));
@@ -221,6 +231,7 @@ export abstract class ScanCycle {
       if (k < program.programs || !isStraight(program.networks, b.first, b.end)) dispatched.fill(1, b.first, b.end);
     });
     this.tiering = new Tiering(starts, liveShape, plan.shape, plan.shapeCount, build, now, tiering, (first) => dispatched[first] === 1);
+    yieldPoint();
     this.coldRestart();
   }
 
