@@ -123,7 +123,8 @@ test('the symbol comment under a contact appears and disappears with the view op
   await toggle.click();
   expect(await toggle.getAttribute('aria-pressed')).toBe('true');
   // The rows of the network grow by the comment band: the network below moves down, nothing overlaps.
-  await poll(() => headerTop(1)).toBe(before + 2 * (COMMENT_PITCH - CELL_H));
+  // (The rung uses one of its two model rows; the canvas shows that one.)
+  await poll(() => headerTop(1)).toBe(before + (COMMENT_PITCH - CELL_H));
   await poll(() => inkUnder(0, true)).toBeGreaterThan(20);
   // Stop has no comment: nothing under it.
   expect(await inkUnder(1, true)).toBe(0);
