@@ -37,6 +37,8 @@ function machine(): Project {
               { kind: 'contact', contact: 'NO', variable: 'Start', id: e('a'), row: 0, col: 0 },
               { kind: 'contact', contact: 'NC', variable: 'Stop', id: e('b'), row: 0, col: 1 },
               { kind: 'coil', coil: 'COIL', variable: 'Motor', id: e('c'), row: 0, col: 9 },
+              // Row 1 is used (far right), so the network shows two rows: under row 0 is an empty row.
+              { kind: 'contact', contact: 'NO', variable: 'Stop', id: e('d'), row: 1, col: 8 },
             ],
           }),
           newNetwork({ title: 'Below' }),
@@ -123,8 +125,7 @@ test('the symbol comment under a contact appears and disappears with the view op
   await toggle.click();
   expect(await toggle.getAttribute('aria-pressed')).toBe('true');
   // The rows of the network grow by the comment band: the network below moves down, nothing overlaps.
-  // (The rung uses one of its two model rows; the canvas shows that one.)
-  await poll(() => headerTop(1)).toBe(before + (COMMENT_PITCH - CELL_H));
+  await poll(() => headerTop(1)).toBe(before + 2 * (COMMENT_PITCH - CELL_H));
   await poll(() => inkUnder(0, true)).toBeGreaterThan(20);
   // Stop has no comment: nothing under it.
   expect(await inkUnder(1, true)).toBe(0);
@@ -197,6 +198,6 @@ test('an element comment edited in the inspector shows on the canvas and in prin
   await poll(async () => (await project()).pous[0]!.networks[0]!.elements.some((x) => x.comment)).toBe(true);
   const back = await project();
   const contacts = back.pous[0]!.networks.flatMap((n) => n.elements).filter((x) => x.kind === 'contact');
-  expect(contacts.map((x) => x.comment ?? '')).toEqual(['', 'Jog only from the panel']);
+  expect(contacts.map((x) => x.comment ?? '')).toEqual(['', 'Jog only from the panel', '']);
   expect(editor.errors).toEqual([]);
 });

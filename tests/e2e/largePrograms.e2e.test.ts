@@ -70,7 +70,7 @@ afterAll(async () => {
 test('a collapsed network is one header line: its title bar, no comment field, the next network right below', async () => {
   const header = page.getByTestId('network-header-0');
   const expanded = (await header.boundingBox())!;
-  await page.getByRole('button', { name: 'Collapse network 1' }).click();
+  await page.getByRole('button', { name: 'Collapse network 1', exact: true }).click();
   await poll(async () => (await header.boundingBox())!.height).toBeLessThanOrEqual(COLLAPSED_HEADER_H);
   const collapsed = (await header.boundingBox())!;
   expect(collapsed.height).toBeLessThan(expanded.height);
@@ -81,7 +81,7 @@ test('a collapsed network is one header line: its title bar, no comment field, t
   // Title bar and a small gap: 72 px before.
   expect(next.y - collapsed.y).toBeLessThanOrEqual(COLLAPSED_HEADER_H + 4);
   expect(next.y - collapsed.y).toBeLessThan(72);
-  await page.getByRole('button', { name: 'Expand network 1' }).click();
+  await page.getByRole('button', { name: 'Expand network 1', exact: true }).click();
   await poll(async () => (await header.boundingBox())!.height).toBe(expanded.height);
   expect(errors).toEqual([]);
 });

@@ -131,3 +131,107 @@ test('dragging a coil onto the empty row under another rung drops it there; the 
   await page.keyboard.press('Control+z');
   expect((await draw.elements(0)).map((e) => e.name)).toContain('Motor');
 });
+
+const focused = (p: Page = page) =>
+  p.evaluate(() => {
+    const a = document.activeElement as HTMLElement | null;
+    return a?.dataset.testid ?? a?.getAttribute('aria-label') ?? a?.tagName ?? '';
+  });
+
+test('the tasks dialog keeps the keyboard in the field or row just edited (Enter, Tab, moving an instance)', async () => {
+  await page.evaluate(() => {
+    const doc = window.rungsmith!.documentStore!.getState();
+    doc.newProject('Tasks');
+  });
+  await page.getByTestId('tab-project').click();
+  await page.getByTestId('tree-tasks-edit').click();
+  await page.getByTestId('tasks-dialog').waitFor();
+  const tasks = () =>
+    page.evaluate(() => JSON.parse(JSON.stringify(window.rungsmith!.documentStore!.getState().project.tasks)) as {
+      name: string;
+      cycleMs: number;
+      priority: number;
+      programs: { instance: string }[];
+    }[]);
+  const name = page.getByTestId('task-name-0');
+  await name.fill('Fast');
+  await name.press('Enter');
+  await poll(async () => (await tasks())[0]!.name).toBe('Fast');
+  // Still in the name field, ready for the next key.
+  expect(await focused()).toBe('task-name-0');
+  await page.keyboard.press('Tab');
+  expect(await focused()).toBe('task-cycle-0');
+  await page.keyboard.press('Control+a');
+  await page.keyboard.type('20');
+  await page.keyboard.press('Tab');
+  await poll(async () => (await tasks())[0]!.cycleMs).toBe(20);
+  // Tab committed the interval and the focus went on to the next control, not to the page.
+  expect(await focused()).toBe('task-single-0');
+  await page.keyboard.press('Tab');
+  expect(await focused()).toBe('task-priority-0');
+  await page.keyboard.type('5');
+  await page.keyboard.press('Enter');
+  await poll(async () => (await tasks())[0]!.priority).toBe(5);
+  expect(await focused()).toBe('task-priority-0');
+
+  // A second instance; renaming it with Enter keeps its field; ↓ on the first moves it and the keyboard follows.
+  await page.getByTestId('task-add-program-0').focus();
+  await page.getByTestId('task-add-program-0').selectOption('Main');
+  await poll(async () => (await tasks())[0]!.programs.length).toBe(2);
+  expect(await focused()).toBe('task-add-program-0');
+  const second = page.getByTestId('task-0-program-1').getByRole('textbox');
+  await second.fill('Second');
+  await second.press('Enter');
+  await poll(async () => (await tasks())[0]!.programs[1]!.instance).toBe('Second');
+  expect(await page.evaluate(() => document.activeElement?.closest('[data-testid]')?.getAttribute('data-testid'))).toBe(
+    'task-0-program-1',
+  );
+  const first = (await tasks())[0]!.programs[0]!.instance;
+  await page.getByTestId('task-0-program-0').getByTitle('Run later').focus();
+  await page.keyboard.press('Enter');
+  await poll(async () => (await tasks())[0]!.programs.map((p) => p.instance)).toEqual(['Second', first]);
+  // The moved instance is last now: the keyboard is on its "Run earlier" button.
+  expect(
+    await page.evaluate(() => {
+      const a = document.activeElement!;
+      return `${a.closest('tr')?.dataset.testid} ${a.getAttribute('title')}`;
+    }),
+  ).toBe('task-0-program-1 Run earlier');
+  // Undo shows in the open dialog's fields.
+  await page.evaluate(() => window.rungsmith!.documentStore!.getState().undo());
+  await poll(() => page.getByTestId('task-0-program-0').getByRole('textbox').inputValue()).toBe(first);
+  await page.getByTestId('tasks-close').click();
+});
+
+test('the canvas has the keyboard when the app opens and after New project; an open dialog keeps it', async () => {
+  const fresh = await openApp(browser());
+  const p = fresh.page;
+  await poll(() => focused(p)).toBe('ladder-canvas');
+  // Arrows and letters work at once.
+  await p.keyboard.press('ArrowRight');
+  await poll(() => p.evaluate(() => window.rungsmith!.uiStore!.getState().cursor !== undefined)).toBe(true);
+  await p.keyboard.press('c');
+  await p.getByTestId('inline-editor').waitFor();
+  await p.keyboard.press('Escape');
+  await p.getByTestId('inline-editor').waitFor({ state: 'detached' });
+
+  // File > New project (after the question about the unsaved change): the new project's canvas has it.
+  await p.getByTestId('tab-project').click();
+  await p.getByTestId('menu-file').click();
+  await p.getByRole('menuitem', { name: 'New project' }).click();
+  const discard = p.getByRole('button', { name: /Discard/ });
+  if (await discard.isVisible()) await discard.click();
+  await poll(() => p.evaluate(() => window.rungsmith!.documentStore!.getState().project.pous[0]!.networks[0]!.elements.length)).toBe(0);
+  await poll(() => focused(p)).toBe('ladder-canvas');
+
+  // A project opened while a dialog is open leaves the keyboard in the dialog.
+  await p.getByTestId('tree-tasks-edit').click();
+  await p.getByTestId('tasks-dialog').waitFor();
+  await p.getByTestId('task-name-0').focus();
+  await p.evaluate(() => window.rungsmith!.documentStore!.getState().newProject('Other'));
+  await p.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  expect(await focused(p)).toBe('task-name-0');
+  await p.getByTestId('tasks-close').click();
+  expect(fresh.errors).toEqual([]);
+  await p.close();
+});

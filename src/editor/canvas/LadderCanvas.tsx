@@ -57,6 +57,9 @@ import { useCanvasPointer, type PointerView } from './useCanvasPointer';
 import { usePinchZoom, type ZoomAnchor } from './usePinchZoom';
 import './canvas.css';
 
+/** Where the focus is the user's own: a field being typed in, or a dialog. */
+const FIELD_OR_DIALOG = 'input, textarea, select, [contenteditable="true"], [role="dialog"], [role="alertdialog"]';
+
 const withSimHint = (text: string | undefined, hint: string | undefined) =>
   text && hint ? `${text}\n${hint}` : (text ?? hint);
 
@@ -239,6 +242,20 @@ export function LadderCanvas() {
     if (shift) el.scrollTop += shift;
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [layout]);
+
+  // When the app opens and whenever another project is opened or created, the keyboard goes to the
+  // canvas (arrows and letters work at once), unless a dialog is open or a field has the focus.
+  const opened = useDocument((s) => s.opened);
+  useEffect(() => {
+    const frame = requestAnimationFrame(() => {
+      const el = scrollRef.current;
+      if (!el || document.querySelector('[aria-modal="true"]')) return;
+      const active = document.activeElement;
+      if (active && active !== document.body && active.closest(FIELD_OR_DIALOG)) return;
+      el.focus({ preventScroll: true });
+    });
+    return () => cancelAnimationFrame(frame);
+  }, [opened]);
 
   // Follow the scroll position: move the world layer every frame, re-render only per band.
   const followScroll = () => {
