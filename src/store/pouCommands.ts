@@ -17,8 +17,20 @@ export interface PouCommandOps {
 /** Editable POU properties: `returnType` only for a FUNCTION (`undefined` removes it). */
 export type PouPatch = Partial<Pick<PouProps, 'comment' | 'returnType' | 'kind'>>;
 
+/**
+ * Where a new PROGRAM runs: in a task of its own (`T_<name>`, cyclic `cycleMs`, 10 ms unless said),
+ * in the existing task at `task` (its index), or in none. Without it: the first task, if any.
+ */
+export type RunIn =
+  | { readonly kind: 'own'; readonly cycleMs?: number }
+  | { readonly kind: 'task'; readonly task: number }
+  | { readonly kind: 'none' };
+
+/** The cyclic interval of a task made for a new program (ms). */
+export const OWN_TASK_MS = 10;
+
 export interface PouCommands {
-  addPou(kind: PouKind, name?: string): PouId | undefined;
+  addPou(kind: PouKind, name?: string, run?: RunIn): PouId | undefined;
   renamePou(id: PouId, name: string): boolean;
   duplicatePou(id: PouId): PouId | undefined;
   deletePou(id: PouId): boolean;
@@ -35,7 +47,7 @@ export function pouCommands({ project, commit, open }: PouCommandOps): PouComman
   const find = (id: PouId) => project().pous.find((p) => p.id === id);
 
   return {
-    addPou: (kind, name) => {
+    addPou: (kind, name, run) => {
       const p = project();
       const chosen = name?.trim() || freshPouName(p, DEFAULT_NAMES[kind]);
       if (pouNameProblem(p, chosen)) return undefined;
@@ -45,16 +57,26 @@ export function pouCommands({ project, commit, open }: PouCommandOps): PouComman
         ...(kind === 'FUNCTION' ? { returnType: 'BOOL' } : {}),
       });
       const changes: Change[] = [{ type: 'pou.add', index: p.pous.length, pou }];
-      // A new program runs: the first task gets an instance of it.
-      const task = p.tasks[0];
-      if (kind === 'PROGRAM' && task) {
-        const taken = new Set(p.tasks.flatMap((t) => t.programs.map((x) => x.instance.toUpperCase())));
+      // A new program runs: in a task of its own, a task chosen, or (by default) the first task.
+      const where: RunIn = run ?? (p.tasks.length ? { kind: 'task', task: 0 } : { kind: 'none' });
+      if (kind === 'PROGRAM' && where.kind !== 'none') {
+        const taken = new Set(
+          [...p.tasks.flatMap((t) => t.programs.map((x) => x.instance)), ...p.globals.map((g) => g.name)].map((n) =>
+            n.toUpperCase(),
+          ),
+        );
         let instance = `${chosen}Instance`;
         for (let i = 2; taken.has(instance.toUpperCase()); i++) instance = `${chosen}Instance${i}`;
-        const tasks: Task[] = p.tasks.map((t, i) =>
-          i === 0 ? { ...t, programs: [...t.programs, { instance, pou: chosen }] } : t,
-        );
-        changes.push({ type: 'tasks.update', before: p.tasks, after: tasks });
+        const entry = { instance, pou: chosen };
+        let tasks: Task[] | undefined;
+        if (where.kind === 'own') {
+          const names = new Set(p.tasks.map((t) => t.name.toUpperCase()));
+          let taskName = `T_${chosen}`;
+          for (let i = 2; names.has(taskName.toUpperCase()); i++) taskName = `T_${chosen}${i}`;
+          tasks = [...p.tasks, { name: taskName, cycleMs: where.cycleMs ?? OWN_TASK_MS, priority: 1, programs: [entry] }];
+        } else if (p.tasks[where.task])
+          tasks = p.tasks.map((t, i) => (i === where.task ? { ...t, programs: [...t.programs, entry] } : t));
+        if (tasks) changes.push({ type: 'tasks.update', before: p.tasks, after: tasks });
       }
       commit('addPou', changes);
       open(pou.id);

@@ -235,3 +235,40 @@ test('the canvas has the keyboard when the app opens and after New project; an o
   expect(fresh.errors).toEqual([]);
   await p.close();
 });
+
+test('+ Program runs the new program in a task of its own in one step (named with it), or in a task chosen', async () => {
+  await page.evaluate(() => window.rungsmith!.documentStore!.getState().newProject('Plant'));
+  const tasks = () =>
+    page.evaluate(() =>
+      window.rungsmith!.documentStore!
+        .getState()
+        .project.tasks.map((t) => `${t.name} ${t.cycleMs} ms: ${t.programs.map((p) => p.pou).join(', ')}`),
+    );
+  await page.getByTestId('tab-project').click();
+  const [main] = await tasks();
+  expect(main).toMatch(/^MainTask \d+ ms: Main$/);
+  const runsIn = page.getByTestId('new-program-runs-in');
+  expect(await runsIn.inputValue()).toBe('own');
+  const steps = await page.evaluate(() => window.rungsmith!.documentStore!.getState().history.undo.length);
+  await page.getByTestId('add-program').click();
+  const field = page.getByTestId('pou-rename');
+  await field.fill('Filler');
+  await field.press('Enter');
+  await page.getByTestId('pou-tab-Filler').waitFor();
+  expect(await tasks()).toEqual([main, 'T_Filler 10 ms: Filler']);
+  // The tree lists it; adding it was one undo step (the name another).
+  await poll(() => page.getByTestId('tree-task-T_Filler').textContent()).toMatch(/every 10 ms/);
+  expect(await page.evaluate(() => window.rungsmith!.documentStore!.getState().history.undo.length)).toBe(steps + 2);
+  await page.evaluate(() => window.rungsmith!.documentStore!.getState().undo());
+  expect(await tasks()).toEqual([main, 'T_Program 10 ms: Program']);
+  await page.evaluate(() => window.rungsmith!.documentStore!.getState().undo());
+  expect(await tasks()).toEqual([main]);
+
+  // Or in an existing task, chosen in the same place.
+  await runsIn.selectOption({ label: 'task MainTask' });
+  await page.getByTestId('add-program').click();
+  await page.getByTestId('pou-rename').fill('Signals');
+  await page.getByTestId('pou-rename').press('Enter');
+  await page.getByTestId('pou-tab-Signals').waitFor();
+  expect(await tasks()).toEqual([`${main}, Signals`]);
+});
