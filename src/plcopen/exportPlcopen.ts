@@ -12,6 +12,7 @@ import { XmlWriter } from './xml/write';
 import { writeDataTypes } from './dataTypes';
 import { profileData } from './profileChoice';
 import { librariesData, libraryMark, scenariosData } from './rungsmithData';
+import { externalsMark, missingExternals, needsExternals } from './addedExternals';
 
 export interface ExportOptions {
   /** Timestamp written in fileHeader/contentHeader (default: now). */
@@ -125,6 +126,14 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
   const localByCoil = project.pous.map((pou) => splitRetainedByCoil(pou, globalsByCoil));
   // Globals go back where the file declared them: the resource's or the configuration's globalVars.
   const resourceGlobals = project.globals.filter((v) => v.scope === 'resource');
+  // Under openplc, each POU declares the globals it uses as VAR_EXTERNAL (MATIEC needs them), and
+  // records which it added so the import drops them again (addedExternals.ts).
+  const withExternals = (pou: Pou, marks: readonly string[]): { pou: Pou; marks: readonly string[] } => {
+    const added = needsExternals(project.profile) ? missingExternals(pou, project.globals) : [];
+    return added.length
+      ? { pou: { ...pou, variables: [...pou.variables, ...added] }, marks: [...marks, externalsMark(added)] }
+      : { pou, marks };
+  };
   const configurationGlobals = project.globals.filter((v) => v.scope !== 'resource');
   w.open('project', ns, () => {
     w.empty('fileHeader', {
@@ -148,9 +157,14 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
         const libraryPous = libraries.flatMap((l) => l.pous.map((pou) => ({ pou, mark: libraryMark(l.name) })));
         for (const i of calleesFirst(libraryPous.map((l) => l.pou), library)) {
           const { pou, mark } = libraryPous[i]!;
-          writePou(w, pou, splitRetainedByCoil(pou, globalsByCoil), library, [mark]);
+          const local = splitRetainedByCoil(pou, globalsByCoil);
+          const out = withExternals(pou, [mark]);
+          writePou(w, out.pou, local, library, out.marks);
         }
-        for (const i of calleesFirst(project.pous, library)) writePou(w, project.pous[i]!, localByCoil[i]!, library);
+        for (const i of calleesFirst(project.pous, library)) {
+          const out = withExternals(project.pous[i]!, []);
+          writePou(w, out.pou, localByCoil[i]!, library, out.marks);
+        }
         const names = new Set(project.pous.map((p) => p.name.toUpperCase()));
         for (const raw of keep?.otherPous ?? [])
           if (!names.has((/<pou\s[^>]*name="([^"]*)"/.exec(raw)?.[1] ?? '').toUpperCase())) w.raw(raw);

@@ -16,6 +16,7 @@ import {
   type Task,
   type Variable,
 } from '../model/project';
+import { readExternalsMark } from './addedExternals';
 import { asLibraryPou, readLibrariesData, readLibraryMark, readScenariosData, RS_LIBRARIES, RS_LIBRARY, RS_SCENARIOS, type LibraryManifest } from './rungsmithData';
 import { importLdBody, type BodyTuning } from './importBody';
 import { readInstances, readType, readVarLists } from './importInterface';
@@ -248,7 +249,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
         message: `POU "${name}" has an unknown pouType "${pouEl.attrs.pouType ?? ''}"`,
       });
     const iface = child(pouEl, 'interface');
-    const variables: Variable[] = iface ? readVarLists(iface, warn) : [];
+    let variables: Variable[] = iface ? readVarLists(iface, warn) : [];
     for (const list of iface ? childrenNamed(iface, 'externalVars') : [])
       for (const v of childrenNamed(list, 'variable'))
         externals.push({
@@ -272,7 +273,10 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     const pouData = addData ? childrenNamed(addData, 'data') : [];
     for (const d of pouData) {
       const mark = readLibraryMark(d);
-      if (mark !== undefined) libraryMarks.set(name.toUpperCase(), { pou: name, library: mark });
+      // VAR_EXTERNALs Rungsmith's export added for MATIEC: the project did not declare them.
+      const added = readExternalsMark(d);
+      if (added) variables = variables.filter((v) => !(v.varClass === 'external' && added.has(v.name.toUpperCase())));
+      else if (mark !== undefined) libraryMarks.set(name.toUpperCase(), { pou: name, library: mark });
       else if (d.attrs.handleUnknown === 'discard') {
         if (d.attrs.name === CODESYS_OBJECT_ID) objectIds++;
         else warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);

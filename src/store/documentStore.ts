@@ -21,9 +21,9 @@
 //   setActivePou(id)                  shows the POU on the canvas and opens its tab
 //   closePou(id)                      closes its tab (the last open tab stays)
 //   openPouIds                        the POUs open as tabs above the canvas (not part of history)
-//   addPou(kind, name?, language?)    a new PROGRAM / FUNCTION_BLOCK / FUNCTION with one network
-//                                     (or, language 'ST', an empty ST body), opened; a new PROGRAM
-//                                     gets an instance in the first task
+//   addPou(kind, name?, language?, run?)  a new PROGRAM / FUNCTION_BLOCK / FUNCTION with one network
+//                                     (or, language 'ST', an empty ST body), opened; a new PROGRAM runs
+//                                     in a task of its own, a chosen one or none (RunIn; default: the first task)
 //   renamePou(id, name)               references follow: calls' blockType, instance variable types
 //                                     (POUs and globals), task program entries; false if the name
 //                                     is taken or not an identifier (pouNameProblem)

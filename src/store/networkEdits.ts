@@ -487,8 +487,23 @@ export function deleteRow(n: Network, at: number, lib: BlockLibrary = STANDARD_L
  */
 export function fitRows(n: Network, lib: BlockLibrary = STANDARD_LIBRARY): Network {
   if (n.elements.length === 0 && n.vlinks.length === 0) return n;
+  const rows = usedRows(n, lib);
+  return rows < n.rows ? { ...n, rows } : n;
+}
+
+const usedMemo = new WeakMap<Network, { lib: BlockLibrary; rows: number }>();
+
+/**
+ * The rows a network's elements and vertical links reach (at least one): how tall the editor and
+ * print draw it. Rows of the model below these are empty and not shown (they stay in the model,
+ * so positions and the export do not change). Memoised per network object and library.
+ */
+export function usedRows(n: Network, lib: BlockLibrary = STANDARD_LIBRARY): number {
+  const hit = usedMemo.get(n);
+  if (hit && hit.lib === lib) return hit.rows;
   let rows = 1;
   for (const el of n.elements) rows = Math.max(rows, el.row + elementSize(el, lib).rows);
   for (const v of n.vlinks) rows = Math.max(rows, v.row + 2);
-  return rows < n.rows ? { ...n, rows } : n;
+  usedMemo.set(n, { lib, rows });
+  return rows;
 }

@@ -20,9 +20,21 @@ export type PouPatch = Partial<Pick<PouProps, 'comment' | 'returnType' | 'kind'>
 /** The languages a new POU can be written in (its body: LD networks or ST text). */
 export type NewPouLanguage = 'LD' | 'ST';
 
+/**
+ * Where a new PROGRAM runs: in a task of its own (`T_<name>`, cyclic `cycleMs`, 10 ms unless said),
+ * in the existing task at `task` (its index), or in none. Without it: the first task, if any.
+ */
+export type RunIn =
+  | { readonly kind: 'own'; readonly cycleMs?: number }
+  | { readonly kind: 'task'; readonly task: number }
+  | { readonly kind: 'none' };
+
+/** The cyclic interval of a task made for a new program (ms). */
+export const OWN_TASK_MS = 10;
+
 export interface PouCommands {
-  /** A new POU (LD by default: one empty network; ST: an empty body text), opened. */
-  addPou(kind: PouKind, name?: string, language?: NewPouLanguage): PouId | undefined;
+  /** A new POU (LD by default: one empty network; ST: an empty body text), opened; a PROGRAM runs where `run` says. */
+  addPou(kind: PouKind, name?: string, language?: NewPouLanguage, run?: RunIn): PouId | undefined;
   renamePou(id: PouId, name: string): boolean;
   duplicatePou(id: PouId): PouId | undefined;
   deletePou(id: PouId): boolean;
@@ -44,7 +56,7 @@ export function pouCommands({ project, commit, open }: PouCommandOps): PouComman
   const find = (id: PouId) => project().pous.find((p) => p.id === id);
 
   return {
-    addPou: (kind, name, language = 'LD') => {
+    addPou: (kind, name, language = 'LD', run) => {
       const p = project();
       const chosen = name?.trim() || freshPouName(p, DEFAULT_NAMES[kind]);
       if (pouNameProblem(p, chosen)) return undefined;
@@ -54,16 +66,26 @@ export function pouCommands({ project, commit, open }: PouCommandOps): PouComman
         ...(kind === 'FUNCTION' ? { returnType: 'BOOL' } : {}),
       });
       const changes: Change[] = [{ type: 'pou.add', index: p.pous.length, pou }];
-      // A new program runs: the first task gets an instance of it.
-      const task = p.tasks[0];
-      if (kind === 'PROGRAM' && task) {
-        const taken = new Set(p.tasks.flatMap((t) => t.programs.map((x) => x.instance.toUpperCase())));
+      // A new program runs: in a task of its own, a task chosen, or (by default) the first task.
+      const where: RunIn = run ?? (p.tasks.length ? { kind: 'task', task: 0 } : { kind: 'none' });
+      if (kind === 'PROGRAM' && where.kind !== 'none') {
+        const taken = new Set(
+          [...p.tasks.flatMap((t) => t.programs.map((x) => x.instance)), ...p.globals.map((g) => g.name)].map((n) =>
+            n.toUpperCase(),
+          ),
+        );
         let instance = `${chosen}Instance`;
         for (let i = 2; taken.has(instance.toUpperCase()); i++) instance = `${chosen}Instance${i}`;
-        const tasks: Task[] = p.tasks.map((t, i) =>
-          i === 0 ? { ...t, programs: [...t.programs, { instance, pou: chosen }] } : t,
-        );
-        changes.push({ type: 'tasks.update', before: p.tasks, after: tasks });
+        const entry = { instance, pou: chosen };
+        let tasks: Task[] | undefined;
+        if (where.kind === 'own') {
+          const names = new Set(p.tasks.map((t) => t.name.toUpperCase()));
+          let taskName = `T_${chosen}`;
+          for (let i = 2; names.has(taskName.toUpperCase()); i++) taskName = `T_${chosen}${i}`;
+          tasks = [...p.tasks, { name: taskName, cycleMs: where.cycleMs ?? OWN_TASK_MS, priority: 1, programs: [entry] }];
+        } else if (p.tasks[where.task])
+          tasks = p.tasks.map((t, i) => (i === where.task ? { ...t, programs: [...t.programs, entry] } : t));
+        if (tasks) changes.push({ type: 'tasks.update', before: p.tasks, after: tasks });
       }
       commit('addPou', changes);
       open(pou.id);

@@ -156,9 +156,19 @@ export function renamePouChanges(project: Project, pou: Pou, to: string): Change
     ),
   );
   changes.push(...retypeVariables(project, from, to));
+  // A task made for the program (`T_<name>`, running only it) is renamed along.
+  const ownTask = (t: Task) =>
+    same(t.name, `T_${from}`) &&
+    t.programs.length > 0 &&
+    t.programs.every((p) => same(p.pou, from)) &&
+    !project.tasks.some((o) => same(o.name, `T_${to}`));
   const tasks: Task[] = project.tasks.map((t) =>
     t.programs.some((p) => same(p.pou, from))
-      ? { ...t, programs: t.programs.map((p) => (same(p.pou, from) ? { ...p, pou: to } : p)) }
+      ? {
+          ...t,
+          ...(ownTask(t) ? { name: `T_${to}` } : {}),
+          programs: t.programs.map((p) => (same(p.pou, from) ? { ...p, pou: to } : p)),
+        }
       : t,
   );
   if (tasks.some((t, i) => t !== project.tasks[i]))

@@ -103,6 +103,8 @@ export interface UiState {
   readonly viewNetwork: NetworkId | undefined;
   /** View option: variables' comments under contacts, coils and box operands (remembered; off by default as in CODESYS). */
   readonly symbolComments: boolean;
+  /** Elements are being dragged on the canvas (every network shows an empty row to drop on). */
+  readonly dragging: boolean;
 
   select(network: NetworkId | undefined, elements: readonly ElementId[]): void;
   toggleSelected(network: NetworkId, element: ElementId): void;
@@ -124,6 +126,7 @@ export interface UiState {
   setPanels(patch: Partial<PanelLayout>): void;
   setSymbolComments(on: boolean): void;
   setViewNetwork(id: NetworkId | undefined): void;
+  setDragging(on: boolean): void;
 }
 
 /** localStorage key of the "Show symbol comments" view option. */
@@ -159,6 +162,7 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme' | 'panels'>
     panels: initial.panels ?? DEFAULT_PANELS,
     symbolComments: savedSymbolComments(),
     viewNetwork: undefined,
+    dragging: false,
 
     select: (network, elements) =>
       set({
@@ -180,6 +184,9 @@ export function createUiStore(initial: Partial<Pick<UiState, 'theme' | 'panels'>
     clearSelection: () => set({ selection: { network: undefined, elements: [] }, networkSelection: [] }),
     setCursor: (cursor) => set({ cursor }),
     setTool: (tool) => set({ tool }),
+    setDragging: (dragging) => {
+      if (get().dragging !== dragging) set({ dragging });
+    },
     setViewport: (patch) => set({ viewport: { ...get().viewport, ...patch } }),
     setZoom: (zoom) => set({ viewport: { ...get().viewport, zoom: clampZoom(zoom) } }),
     setTheme: (theme) => set({ theme }),

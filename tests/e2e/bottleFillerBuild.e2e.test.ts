@@ -371,18 +371,12 @@ test('program Signals (a blinker) in a second task of 100 ms', async () => {
   await clickOn('tab-project');
   await clickOn('tree-tasks-edit');
   await page.getByTestId('tasks-dialog').waitFor();
-  // A new PROGRAM joins the first task: take it out there (✕ on its row) and give it a task of its own.
-  expect((await project()).tasks[0]!.programs.map((p) => p.pou)).toEqual(['Main', 'Signals']);
-  await clickOn('task-0-remove-1');
-  await poll(async () => (await project()).tasks[0]!.programs.map((p) => p.pou)).toEqual(['Main']);
-  await clickOn('task-add');
-  await page.getByTestId('task-1').waitFor();
-  // The new task runs Signals: the priority field, Tab to "Run a program…", S picks Signals.
-  await clickOn('task-priority-1');
-  await key('Tab');
-  await poll(() => page.evaluate(() => document.activeElement?.getAttribute('data-testid'))).toBe('task-add-program-1');
-  await key('s');
-  await poll(async () => (await project()).tasks[1]?.programs.map((p) => p.pou)).toEqual(['Signals']);
+  // A new PROGRAM gets a task of its own (+ Program's default "runs in: its own task"), named
+  // after it: only its interval is left to set.
+  expect((await project()).tasks.map((t) => [t.name, t.programs.map((p) => p.pou)])).toEqual([
+    ['MainTask', ['Main']],
+    ['T_Signals', ['Signals']],
+  ]);
   await clickOn('task-cycle-1');
   await key('Control+a');
   await type('100');

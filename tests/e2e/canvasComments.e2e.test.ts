@@ -37,6 +37,8 @@ function machine(): Project {
               { kind: 'contact', contact: 'NO', variable: 'Start', id: e('a'), row: 0, col: 0 },
               { kind: 'contact', contact: 'NC', variable: 'Stop', id: e('b'), row: 0, col: 1 },
               { kind: 'coil', coil: 'COIL', variable: 'Motor', id: e('c'), row: 0, col: 9 },
+              // Row 1 is used (far right), so the network shows two rows: under row 0 is an empty row.
+              { kind: 'contact', contact: 'NO', variable: 'Stop', id: e('d'), row: 1, col: 8 },
             ],
           }),
           newNetwork({ title: 'Below' }),
@@ -196,6 +198,6 @@ test('an element comment edited in the inspector shows on the canvas and in prin
   await poll(async () => (await project()).pous[0]!.networks[0]!.elements.some((x) => x.comment)).toBe(true);
   const back = await project();
   const contacts = back.pous[0]!.networks.flatMap((n) => n.elements).filter((x) => x.kind === 'contact');
-  expect(contacts.map((x) => x.comment ?? '')).toEqual(['', 'Jog only from the panel']);
+  expect(contacts.map((x) => x.comment ?? '')).toEqual(['', 'Jog only from the panel', '']);
   expect(editor.errors).toEqual([]);
 });

@@ -84,11 +84,14 @@ test('C, CTU, coil, Ctrl+Z, ←: the cursor is on the CTU, not its right half, a
   await draw.clickCell(0, 1, 1 + width - 1);
   await expect.poll(cursor).toEqual({ row: 0, col: 1 });
   await expect.poll(position).toBe('Network 1, row 1, column 2');
-  // ↓ from the box goes below the whole box (its CU, R and PV rows) into the next network; ↑ comes back onto it.
+  // ↓ from the box goes below the whole box (its CU, R and PV rows): onto the empty row the network
+  // shows under its rung (room for a branch), then into the next network; ↑ comes back onto it.
   await page.evaluate(() => window.rungsmith!.documentStore!.getState().addNetwork());
   await draw.canvas().focus();
   await page.keyboard.press('ArrowDown');
   const networks = await draw.networks();
+  expect(await page.evaluate(() => window.rungsmith!.uiStore!.getState().cursor)).toMatchObject({ network: networks[0]!.id, row: 3 });
+  await page.keyboard.press('ArrowDown');
   expect(await page.evaluate(() => window.rungsmith!.uiStore!.getState().cursor)).toMatchObject({ network: networks[1]!.id, row: 0 });
   await page.keyboard.press('ArrowLeft');
   await page.keyboard.press('ArrowUp');

@@ -74,7 +74,8 @@ test('dragging elements moves them by whole cells as one undo step', async () =>
   await draw.typeName('A');
   await page.keyboard.press('c');
   await draw.typeName('B');
-  // Rubber band around both contacts, starting on an empty cell.
+  // Rubber band around both contacts, starting on an empty cell of the row under the rung (↓ shows it).
+  await page.keyboard.press('ArrowDown');
   const from = await draw.cellPoint(0, 1, 3);
   const to = await draw.cellPoint(0, 0, 0);
   await page.mouse.move(from.x, from.y);

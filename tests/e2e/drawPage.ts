@@ -11,6 +11,7 @@ import {
   WIRE_Y,
   type CanvasLayout,
 } from '../../src/editor/canvas/geometry';
+import { roomFor } from '../../src/editor/canvas/canvasLayout';
 import { blockLibrary } from '../../src/model/library';
 import type { Network, Project } from '../../src/model/project';
 import { chooseMenuItem } from './appPage';
@@ -63,10 +64,19 @@ export class DrawPage {
   async layout(): Promise<{ networks: Network[]; layout: CanvasLayout }> {
     const project = await this.page.evaluate(() => {
       const s = window.rungsmith!.documentStore!.getState();
-      return JSON.parse(JSON.stringify({ project: s.project, active: s.activePouId })) as { project: Project; active: string };
+      const ui = window.rungsmith!.uiStore!.getState();
+      return JSON.parse(
+        JSON.stringify({
+          project: s.project,
+          active: s.activePouId,
+          ui: { tool: ui.tool, cursor: ui.cursor, dragging: ui.dragging },
+        }),
+      ) as { project: Project; active: string; ui: Parameters<typeof roomFor>[0] };
     });
     const networks = project.project.pous.find((p) => p.id === project.active)!.networks as Network[];
-    return { networks, layout: layoutNetworks(networks, blockLibrary(project.project)) };
+    const library = blockLibrary(project.project);
+    // As the canvas lays them out: used rows, and the room shown while placing (canvasLayout.ts).
+    return { networks, layout: layoutNetworks(networks, library, undefined, roomFor(project.ui, networks, library)) };
   }
 
   /** Elements of network `index` as (kind, row, col, name, type), sorted by position. */

@@ -29,12 +29,17 @@ afterAll(() => {
   expect(errors).toEqual([]);
 });
 
-/** Drags with the mouse from one cell to another in small steps, like a hand would. */
+/**
+ * Drags with the mouse from one cell to another in small steps, like a hand would. Once a drag has
+ * begun every network shows an empty row to drop on, so the target is aimed at as it is then shown.
+ */
 async function dragCell(from: [number, number, number], to: [number, number, number]) {
   const a = await draw.cellPoint(...from);
-  const b = await draw.cellPoint(...to);
   await page.mouse.move(a.x, a.y);
   await page.mouse.down();
+  await page.mouse.move(a.x + 12, a.y + 12, { steps: 3 });
+  await page.waitForFunction(() => window.rungsmith!.uiStore!.getState().dragging);
+  const b = await draw.cellPoint(...to);
   await page.mouse.move(a.x + (b.x - a.x) / 3, a.y + (b.y - a.y) / 3, { steps: 4 });
   await page.mouse.move(b.x, b.y, { steps: 6 });
   await page.mouse.up();

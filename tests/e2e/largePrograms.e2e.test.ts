@@ -1,14 +1,13 @@
 // Large programs: a collapsed network is one header line; the Outline follows the canvas's scroll,
 // selects ranges of networks (Shift+click, Ctrl+click) and moves them by dragging (one undo step);
-// Ctrl+Shift+G extends the network selection to the network entered; Network > Fit rows to rungs
-// makes one-row rungs one row high.
+// Ctrl+Shift+G extends the network selection to the network entered.
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, expect, test } from 'vitest';
-import { CELL_H, COLLAPSED_HEADER_H } from '../../src/editor/canvas/geometry';
+import { COLLAPSED_HEADER_H } from '../../src/editor/canvas/geometry';
 import { newNetwork, newPou, newProject } from '../../src/model/factory';
 import type { ElementId } from '../../src/model/ids';
 import type { Project, Variable } from '../../src/model/project';
-import { chooseMenuItem, openApp, useChromium } from './appPage';
+import { openApp, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 import { poll } from './panelsPage';
 
@@ -71,7 +70,7 @@ afterAll(async () => {
 test('a collapsed network is one header line: its title bar, no comment field, the next network right below', async () => {
   const header = page.getByTestId('network-header-0');
   const expanded = (await header.boundingBox())!;
-  await page.getByRole('button', { name: 'Collapse network 1' }).click();
+  await page.getByRole('button', { name: 'Collapse network 1', exact: true }).click();
   await poll(async () => (await header.boundingBox())!.height).toBeLessThanOrEqual(COLLAPSED_HEADER_H);
   const collapsed = (await header.boundingBox())!;
   expect(collapsed.height).toBeLessThan(expanded.height);
@@ -82,7 +81,7 @@ test('a collapsed network is one header line: its title bar, no comment field, t
   // Title bar and a small gap: 72 px before.
   expect(next.y - collapsed.y).toBeLessThanOrEqual(COLLAPSED_HEADER_H + 4);
   expect(next.y - collapsed.y).toBeLessThan(72);
-  await page.getByRole('button', { name: 'Expand network 1' }).click();
+  await page.getByRole('button', { name: 'Expand network 1', exact: true }).click();
   await poll(async () => (await header.boundingBox())!.height).toBe(expanded.height);
   expect(errors).toEqual([]);
 });
@@ -159,37 +158,5 @@ test('Ctrl+Shift+G extends the selection of networks to the network entered', as
   await page.getByTestId('goto-input').fill('2');
   await page.keyboard.press('Enter');
   expect(await selectedNos()).toEqual([2, 3, 4, 5]);
-  expect(errors).toEqual([]);
-});
-
-test('Network > Fit rows to rungs makes each one-row rung one row high, in one undo step', async () => {
-  const rows = () =>
-    page.evaluate(() => {
-      const s = window.rungsmith!.documentStore!.getState();
-      return s.project.pous.find((p) => p.id === s.activePouId)!.networks.map((n) => n.rows);
-    });
-  const gap = async () => {
-    const tops = await page.evaluate(() =>
-      [0, 1].map((i) => document.querySelector<HTMLElement>(`[data-testid="network-header-${i}"]`)!.offsetTop),
-    );
-    return tops[1]! - tops[0]!;
-  };
-  await page.evaluate(() => document.querySelector<HTMLElement>('[data-testid="ladder-canvas"]')!.scrollTo(0, 0));
-  await page.getByTestId('network-header-1').waitFor();
-  expect(new Set(await rows())).toEqual(new Set([3]));
-  // No network selected: the command fits all of them.
-  await page.getByTestId('ladder-canvas').focus();
-  await page.keyboard.press('Escape');
-  await poll(selectedNos).toEqual([]);
-  const before = await gap();
-  await chooseMenuItem(page, 'Network', 'Fit rows to rungs');
-  await poll(async () => new Set(await rows())).toEqual(new Set([1]));
-  // The network below moved up by the two empty rows the first one no longer shows.
-  await poll(gap).toBe(before - 2 * CELL_H);
-  await poll(() => page.getByTestId('status-bar').textContent()).toContain(`${COUNT} networks fitted`);
-  await page.getByTestId('ladder-canvas').focus();
-  await page.keyboard.press('Control+z');
-  await poll(async () => new Set(await rows())).toEqual(new Set([3]));
-  await poll(gap).toBe(before);
   expect(errors).toEqual([]);
 });

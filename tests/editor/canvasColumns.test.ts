@@ -118,7 +118,7 @@ describe('hit testing', () => {
 
   it('every cell is found under its own drawn middle (cell -> pixel -> cell)', () => {
     networks.forEach((n, index) => {
-      for (let row = 0; row < n.rows; row++)
+      for (let row = 0; row < layout.rows[index]!; row++)
         for (let col = 0; col < n.cols; col++) {
           // Empty cells right of a rail-aligned coil lie under the coil's drawn wire (next test).
           const k = columnsOf(layout, n).alignedAt[row]!;

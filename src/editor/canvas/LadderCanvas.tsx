@@ -37,8 +37,12 @@ import {
   networkIndexAt,
   pitchOf,
   RAIL_X,
+  rowsOf,
   visibleRange,
+  type CanvasLayout,
+  type Room,
 } from './geometry';
+import { roomFor } from './canvasLayout';
 import { symbolCommentsFor } from './symbolComments';
 import { hoverText } from './hoverText';
 import { useSimStore } from '../sim/simContext';
@@ -52,6 +56,9 @@ import { NetworkShape } from './NetworkShape';
 import { useCanvasPointer, type PointerView } from './useCanvasPointer';
 import { usePinchZoom, type ZoomAnchor } from './usePinchZoom';
 import './canvas.css';
+
+/** Where the focus is the user's own: a field being typed in, or a dialog. */
+const FIELD_OR_DIALOG = 'input, textarea, select, [contenteditable="true"], [role="dialog"], [role="alertdialog"]';
 
 const withSimHint = (text: string | undefined, hint: string | undefined) =>
   text && hint ? `${text}\n${hint}` : (text ?? hint);
@@ -89,7 +96,16 @@ export function LadderCanvas() {
   const globals = useDocument(selectGlobals);
   // Looked up per operand only when drawn or laid out (and memoised per network there).
   const symbols = symbolCommentsFor(showSymbolComments, pou?.variables, globals);
-  const layout = useMemo(() => layoutNetworks(networks, library, symbols), [networks, library, symbols]);
+  // Networks are as tall as the rows they use; room to place into shows while placing (canvasLayout.ts).
+  const dragging = useUi((s) => s.dragging);
+  const room = roomFor({ tool, cursor, dragging }, networks, library);
+  const roomKey = room ? (room.all ? 'all' : `${room.network}:${room.rows}`) : '';
+  // eslint-disable-next-line react-hooks/exhaustive-deps
+  const stableRoom = useMemo<Room | undefined>(() => room, [roomKey]);
+  const layout = useMemo(
+    () => layoutNetworks(networks, library, symbols, stableRoom),
+    [networks, library, symbols, stableRoom],
+  );
   const diagnostics = useDiagnosticsByNetwork(pou?.name);
   const markers = useMemo(() => markersByNetwork(networks, diagnostics), [networks, diagnostics]);
 
@@ -207,6 +223,40 @@ export function LadderCanvas() {
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [cursor]);
 
+  // When every network gains (or loses) its empty row to drop on, the network being worked on stays
+  // where it is on screen (the cursor's, else the one at the view's top): no jump under the pointer.
+  const prevLayout = useRef<CanvasLayout>(layout);
+  useLayoutEffect(() => {
+    const old = prevLayout.current;
+    prevLayout.current = layout;
+    const el = scrollRef.current;
+    if (!el || old === layout || Boolean(old.room?.all) === Boolean(layout.room?.all)) return;
+    if (old.tops.length !== layout.tops.length) return;
+    const viewTop = el.scrollTop / zoom;
+    const viewBottom = viewTop + el.clientHeight / zoom;
+    let a = cursor ? networks.findIndex((n) => n.id === cursor.network) : -1;
+    if (a < 0 || old.tops[a]! + old.heights[a]! < viewTop || old.tops[a]! > viewBottom)
+      a = networkIndexAt(old, viewTop + VIEW_PROBE);
+    if (a < 0) return;
+    const shift = (layout.tops[a]! - old.tops[a]!) * zoom;
+    if (shift) el.scrollTop += shift;
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [layout]);
+
+  // When the app opens and whenever another project is opened or created, the keyboard goes to the
+  // canvas (arrows and letters work at once), unless a dialog is open or a field has the focus.
+  const opened = useDocument((s) => s.opened);
+  useEffect(() => {
+    const frame = requestAnimationFrame(() => {
+      const el = scrollRef.current;
+      if (!el || document.querySelector('[aria-modal="true"]')) return;
+      const active = document.activeElement;
+      if (active && active !== document.body && active.closest(FIELD_OR_DIALOG)) return;
+      el.focus({ preventScroll: true });
+    });
+    return () => cancelAnimationFrame(frame);
+  }, [opened]);
+
   // Follow the scroll position: move the world layer every frame, re-render only per band.
   const followScroll = () => {
     const el = scrollRef.current;
@@ -297,6 +347,7 @@ export function LadderCanvas() {
                           zoom={zoom}
                           library={library}
                           pitch={pitchOf(layout, i)}
+                          rows={rowsOf(layout, i)}
                           symbols={symbols}
                         />
                       );
@@ -320,6 +371,7 @@ export function LadderCanvas() {
                     errors={m?.errors ?? 0}
                     warnings={m?.warnings ?? 0}
                     pitch={pitchOf(layout, i)}
+                    rows={rowsOf(layout, i)}
                   />
                 );
               })}

@@ -74,6 +74,8 @@ export interface NetworkHeaderProps {
   readonly warnings: number;
   /** Height of the network's rows (geometry.rowPitch). */
   readonly pitch?: number;
+  /** Rows the network shows (geometry.shownRows). */
+  readonly rows?: number;
 }
 
 export const NetworkHeader = memo(function NetworkHeader({
@@ -85,6 +87,7 @@ export const NetworkHeader = memo(function NetworkHeader({
   errors,
   warnings,
   pitch,
+  rows,
 }: NetworkHeaderProps) {
   const doc = useDocumentStore();
   const ui = useUiStore();
@@ -147,7 +150,7 @@ export const NetworkHeader = memo(function NetworkHeader({
         >
           ⠿
         </span>
-        <NetworkSimMarker network={n} index={index} {...(pitch ? { pitch } : {})} />
+        <NetworkSimMarker network={n} index={index} {...(pitch ? { pitch } : {})} {...(rows ? { rows } : {})} />
         <button
           type="button"
           className="rs-icon-button"

@@ -29,6 +29,8 @@ export interface NetworkShapeProps {
   readonly library: BlockLibrary;
   /** Height of the network's rows (geometry.rowPitch). */
   readonly pitch?: number;
+  /** Rows shown (geometry.shownRows: the used rows and any room to place into). */
+  readonly rows?: number;
   /** Variables' comments drawn under operands (the view option on), else undefined. */
   readonly symbols?: SymbolComments | undefined;
 }
@@ -39,6 +41,7 @@ const CACHE_MARGIN = 12;
 export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps) {
   const { network, index, top, theme, selected, cursor, hover, markers, drag, zoom, library, symbols } = props;
   const pitch = props.pitch ?? CELL_H;
+  const rows = props.rows ?? network.rows;
   const ref = useRef<Konva.Shape>(null);
   const overlay = useOverlayHook()(network, index);
   const paint = useMemo<NetworkPaint>(
@@ -49,6 +52,7 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
       hover,
       markers,
       ...(pitch !== CELL_H ? { pitch } : {}),
+      rows,
       ...(symbols ? { symbols } : {}),
       ...(drag ? { drag } : {}),
       ...(overlay.power ? { power: overlay.power } : {}),
@@ -57,10 +61,10 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
       ...(overlay.forced ? { forced: overlay.forced } : {}),
       ...(overlay.device ? { device: overlay.device } : {}),
     }),
-    [library, selected, cursor, hover, markers, pitch, symbols, drag, overlay.power, overlay.liveValues, overlay.pinValues, overlay.forced, overlay.device],
+    [library, selected, cursor, hover, markers, pitch, rows, symbols, drag, overlay.power, overlay.liveValues, overlay.pinValues, overlay.forced, overlay.device],
   );
   const width = networkWidth(network, library);
-  const height = network.rows * pitch + GRID_PAD_BOTTOM;
+  const height = rows * pitch + GRID_PAD_BOTTOM;
   // Each network is drawn once into its own bitmap; scrolling then only copies bitmaps, which keeps
   // frames short with many symbols and texts on screen. Redrawn when anything it shows changes,
   // into the same canvas (Konva's node.cache() made three new canvases on every redraw).

@@ -33,6 +33,8 @@ export interface NetworkPaint {
   readonly markers: readonly CellMarker[];
   /** Height of the network's rows (CELL_H when absent; taller when comments are shown under operands). */
   readonly pitch?: number;
+  /** Rows drawn (the used rows and any room to place into); the model's rows when absent. */
+  readonly rows?: number;
   /** Variables' comments, shown under their operands (the "symbol comments" view option). */
   readonly symbols?: SymbolComments;
   /** Simulation power flow, aligned with network.elements / network.vlinks. */
@@ -151,12 +153,13 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
   const nc = networkColumns(n, paint.library);
   const pitch = paint.pitch ?? CELL_H;
   const w = nc.xs[n.cols]!;
-  const h = n.rows * pitch;
+  const rows = paint.rows ?? n.rows;
+  const h = rows * pitch;
   ctx.fillStyle = t.networkBg;
   ctx.fillRect(0, 0, w, h + GRID_PAD_BOTTOM);
   // Cell corners as small dots: enough to read the grid without clutter.
   ctx.fillStyle = t.grid;
-  for (let r = 0; r <= n.rows; r++)
+  for (let r = 0; r <= rows; r++)
     for (let c = 1; c < n.cols; c++) ctx.fillRect(nc.xs[c]! - 1, r * pitch - 1, 2, 2);
   if (paint.hover) {
     const r = cellRect(nc, paint.hover, 1, 1, pitch);

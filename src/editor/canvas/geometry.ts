@@ -3,7 +3,9 @@
 import type { Cell } from '../../model/grid';
 import type { BlockLibrary } from '../../model/library';
 import type { LdElement } from '../../model/elements';
+import type { NetworkId } from '../../model/ids';
 import type { Network } from '../../model/project';
+import { usedRows } from '../../store/networkEdits';
 import {
   boundaryAtX,
   colAtX,
@@ -141,11 +143,35 @@ export function rowPitch(n: Network, symbols?: SymbolComments): number {
   return pitch;
 }
 
-export const gridHeight = (n: Pick<Network, 'rows' | 'collapsed'>, pitch = CELL_H): number =>
-  n.collapsed ? 0 : n.rows * pitch + GRID_PAD_BOTTOM;
+/** Height of a network's grid of `rows` shown rows (none when collapsed). */
+export const gridHeight = (n: Pick<Network, 'collapsed'>, pitch = CELL_H, rows = 1): number =>
+  n.collapsed ? 0 : rows * pitch + GRID_PAD_BOTTOM;
 
-export const networkHeight = (n: Network, symbols?: SymbolComments): number =>
-  headerHeight(n) + gridHeight(n, rowPitch(n, symbols)) + (n.collapsed ? COLLAPSED_GAP : NETWORK_GAP);
+/**
+ * Room to place into, beyond the rows a network uses (CODESYS/TIA: a network is as tall as its
+ * rung; room appears while placing). `all`: every network shows one empty row under its last used
+ * row (a palette tool is armed or elements are being dragged: a drop target). `network`/`rows`:
+ * that network shows at least `rows` rows (the keyboard cursor went below its last used row).
+ */
+export interface Room {
+  readonly all?: boolean;
+  readonly network?: NetworkId;
+  readonly rows?: number;
+}
+
+/** Rows network `n` shows: the rows its elements use (at least one), and the room asked for. */
+export function shownRows(n: Network, library?: BlockLibrary, room?: Room): number {
+  return withRoom(n, usedRows(n, library), room);
+}
+
+/** Rows a network that uses `used` rows shows with the room asked for. */
+function withRoom(n: Network, used: number, room: Room | undefined): number {
+  if (room?.all) return used + 1;
+  return room?.network === n.id && room.rows ? Math.max(used, room.rows) : used;
+}
+
+export const networkHeight = (n: Network, symbols?: SymbolComments, rows = 1): number =>
+  headerHeight(n) + gridHeight(n, rowPitch(n, symbols), rows) + (n.collapsed ? COLLAPSED_GAP : NETWORK_GAP);
 
 /** Width of a network's drawing: the rails and its columns (each as wide as its longest name). */
 export const networkWidth = (n: Network, library?: BlockLibrary): number =>
@@ -163,41 +189,51 @@ export interface CanvasLayout {
   readonly symbols: SymbolComments | undefined;
   /** The project's blocks the columns were measured with (user FB boxes and their pins). */
   readonly library: BlockLibrary | undefined;
+  /** Rows each network shows (shownRows: its used rows and the room asked for). */
+  readonly rows: Int32Array;
+  /** The room the layout was made with. */
+  readonly room: Room | undefined;
 }
 
 export function layoutNetworks(
   networks: readonly Network[],
   library?: BlockLibrary,
   symbols?: SymbolComments,
+  room?: Room,
 ): CanvasLayout {
   const tops = new Float64Array(networks.length);
   const heights = new Float64Array(networks.length);
   const pitches = new Float64Array(networks.length);
+  const rows = new Int32Array(networks.length);
   let y = 8;
   let width = 480;
   networks.forEach((n, i) => {
     const m = networkMeasures(n, library, symbols);
     tops[i] = y;
     pitches[i] = m.pitch;
-    heights[i] = m.height;
-    y += m.height;
+    const shown = withRoom(n, m.used, room);
+    rows[i] = shown;
+    const height = headerHeight(n) + gridHeight(n, m.pitch, shown) + (n.collapsed ? COLLAPSED_GAP : NETWORK_GAP);
+    heights[i] = height;
+    y += height;
     width = Math.max(width, m.width);
   });
-  return { tops, heights, pitches, symbols, totalHeight: y + 40, totalWidth: width, library };
+  return { tops, heights, pitches, rows, room, symbols, totalHeight: y + 40, totalWidth: width, library };
 }
 
 interface NetworkMeasures {
   readonly library: BlockLibrary | undefined;
   readonly symbols: SymbolComments | undefined;
   readonly pitch: number;
-  readonly height: number;
+  /** The rows its elements use (at least one): shownRows without room. */
+  readonly used: number;
   /** The layout width the network needs: its grid or its header, whichever is wider. */
   readonly width: number;
 }
 const measuresMemo = new WeakMap<Network, NetworkMeasures>();
 
 /**
- * A network's row pitch, height and needed width, memoised per network object, library and symbol
+ * A network's row pitch, used rows and needed width, memoised per network object, library and symbol
  * lookup: an edit lays out again only the networks it replaced (the others keep their objects).
  */
 export function networkMeasures(n: Network, library?: BlockLibrary, symbols?: SymbolComments): NetworkMeasures {
@@ -207,12 +243,15 @@ export function networkMeasures(n: Network, library?: BlockLibrary, symbols?: Sy
     library,
     symbols,
     pitch: rowPitch(n, symbols),
-    height: networkHeight(n, symbols),
+    used: usedRows(n, library),
     width: Math.max(networkWidth(n, library) + 16, HEADER_LEFT + headerNeed(n) + 8),
   };
   measuresMemo.set(n, m);
   return m;
 }
+
+/** Rows network `index` shows in a layout. */
+export const rowsOf = (layout: CanvasLayout, index: number): number => layout.rows[index] ?? 1;
 
 /** Row height of network `index` in a layout. */
 export const pitchOf = (layout: CanvasLayout, index: number): number => layout.pitches[index] ?? CELL_H;
@@ -289,13 +328,14 @@ export function hitTest(layout: CanvasLayout, networks: readonly Network[], p: P
   const origin = gridOrigin(n);
   if (local < origin.y) return { area: 'header', index };
   const pitch = pitchOf(layout, index);
-  if (n.collapsed || local > origin.y + n.rows * pitch + GRID_PAD_BOTTOM) return { area: 'none' };
+  const rows = rowsOf(layout, index);
+  if (n.collapsed || local > origin.y + rows * pitch + GRID_PAD_BOTTOM) return { area: 'none' };
   const nc = columnsOf(layout, n);
   const gx = p.x - origin.x;
   const gy = local - origin.y;
-  const row = Math.min(n.rows - 1, Math.max(0, Math.floor(gy / pitch)));
+  const row = Math.min(rows - 1, Math.max(0, Math.floor(gy / pitch)));
   const col = modelCol(nc, row, colAtX(nc, gx));
-  const wireRow = Math.max(0, Math.min(n.rows - 1, Math.floor((gy - WIRE_Y) / pitch)));
+  const wireRow = Math.max(0, Math.min(rows - 1, Math.floor((gy - WIRE_Y) / pitch)));
   const boundary = modelBoundary(nc, wireRow, boundaryAtX(nc, gx));
   return { area: 'grid', index, cell: { row, col }, boundary, wireRow };
 }

@@ -30,6 +30,7 @@ import {
   hitTest,
   networkIndexAt,
   pitchOf,
+  rowsOf,
   type CanvasLayout,
   type PixelPoint,
 } from './geometry';
@@ -47,6 +48,7 @@ type Machine =
   | {
       readonly kind: 'pressing';
       readonly index: number;
+      /** Where the press began; its y counts from the top of network `index` (rows shown above may change). */
       readonly start: PixelPoint;
       readonly startCell: Cell;
       readonly ids: ElementId[];
@@ -81,9 +83,10 @@ export interface PointerView {
  * drawn on to a rail-aligned coil counts as the coil's cell).
  */
 function cellDelta(layout: CanvasLayout, n: Network, startCell: Cell, a: PixelPoint, b: PixelPoint) {
-  const dRow = Math.round((b.y - a.y) / pitchOf(layout, networkIndexAt(layout, a.y)));
+  const index = networkIndexAt(layout, a.y);
+  const dRow = Math.round((b.y - a.y) / pitchOf(layout, index));
   const nc = columnsOf(layout, n);
-  const row = Math.max(0, Math.min(n.rows - 1, startCell.row + dRow));
+  const row = Math.max(0, Math.min(rowsOf(layout, index) - 1, startCell.row + dRow));
   const col = modelCol(nc, row, colAtX(nc, b.x - gridOrigin(n).x));
   return { dRow, dCol: col - startCell.col };
 }
@@ -122,12 +125,14 @@ export function useCanvasPointer(
   /** The drag shown for pointer point p: within the network, into another one, or undefined off any grid. */
   const dragAt = (
     n: Network,
+    index: number,
     ids: readonly ElementId[],
-    start: PixelPoint,
+    local: PixelPoint,
     startCell: Cell,
     p: PixelPoint,
   ): DragState | undefined => {
     const { layout, networks } = view.current;
+    const start = { x: local.x, y: local.y + (layout.tops[index] ?? 0) };
     const hit = hitTest(layout, networks, p);
     if (hit.area !== 'grid') return undefined;
     const target = networks[hit.index]!;
@@ -145,9 +150,10 @@ export function useCanvasPointer(
   const cancel = useCallback(() => {
     edgeStop();
     machine.current = { kind: 'idle' };
+    ctx.ui.getState().setDragging(false);
     setDrag(undefined);
     setBand(undefined);
-  }, [edgeStop]);
+  }, [edgeStop, ctx.ui]);
 
   const onPointerDown = (e: ReactPointerEvent<HTMLDivElement>) => {
     if (!(e.target instanceof HTMLCanvasElement)) return;
@@ -199,7 +205,8 @@ export function useCanvasPointer(
         ids = sel.network === n.id && sel.elements.includes(target.id) ? [...sel.elements] : [target.id];
         ui.select(n.id, ids);
       }
-      machine.current = { kind: 'pressing', index: hit.index, start: p, startCell: hit.cell, ids };
+      const local = { x: p.x, y: p.y - layout.tops[hit.index]! };
+      machine.current = { kind: 'pressing', index: hit.index, start: local, startCell: hit.cell, ids };
     } else {
       if (!e.shiftKey) ui.select(n.id, []);
       machine.current = { kind: 'banding', index: hit.index, start: p };
@@ -218,13 +225,16 @@ export function useCanvasPointer(
     const p = contentPoint(e);
     const { layout, networks } = view.current;
     if (m.kind === 'pressing' || m.kind === 'dragging') {
-      if (m.kind === 'pressing' && Math.hypot(p.x - m.start.x, p.y - m.start.y) < 4) return;
+      const startY = m.start.y + (layout.tops[m.index] ?? 0);
+      if (m.kind === 'pressing' && Math.hypot(p.x - m.start.x, p.y - startY) < 4) return;
       const n = networks[m.index];
       if (!n) return;
       const dragging = { ...m, kind: 'dragging' as const };
       machine.current = dragging;
+      // Every network shows an empty row under its rung to drop on while the drag lasts.
+      ctx.ui.getState().setDragging(true);
       const show = (at: PixelPoint) => {
-        const next = dragAt(n, dragging.ids, dragging.start, dragging.startCell, at);
+        const next = dragAt(n, dragging.index, dragging.ids, dragging.start, dragging.startCell, at);
         setDrag((prev) => (sameDrag(prev, next) ? prev : next));
       };
       show(p);
@@ -261,8 +271,9 @@ export function useCanvasPointer(
     if (m.kind === 'dragging') {
       const n = networks[m.index];
       setDrag(undefined);
-      const d = n && dragAt(n, m.ids, m.start, m.startCell, contentPoint(e));
+      const d = n && dragAt(n, m.index, m.ids, m.start, m.startCell, contentPoint(e));
       const ui = ctx.ui.getState();
+      ui.setDragging(false);
       if (!n || !d) {
         ui.setStatus('Drop elements on a network grid.');
       } else if (d.into) {

@@ -7,7 +7,7 @@ import type { Cell } from '../../model/grid';
 import type { ElementId, NetworkId } from '../../model/ids';
 import type { Network } from '../../model/project';
 import { selectNetworks, type DocumentStore } from '../../store/documentStore';
-import { elementAt, moveShift, type ElementTemplate } from '../../store/networkEdits';
+import { elementAt, moveShift, usedRows, type ElementTemplate } from '../../store/networkEdits';
 import type { CursorCell, UiStore } from '../../store/uiStore';
 import { modelCol, networkColumns } from '../canvas/columns';
 import { firstField, INSTANCE_FIELD, nextField } from '../canvas/pinOperands';
@@ -139,18 +139,21 @@ export function moveCursor(ctx: EditorContext, dRow: number, dCol: number, exten
   const size = on && on.kind !== 'link' ? elementSize(on, lib) : { rows: 1, cols: 1 };
   let row = from.row + (dRow > 0 ? dRow + size.rows - 1 : dRow);
   let col = from.col + (dCol > 0 ? dCol + size.cols - 1 : dCol);
-  while (row < 0 || row >= n.rows) {
+  // A network shows the rows its rung uses; the cursor may go one row below them (the canvas shows
+  // that empty row: room for a branch), and from there on to the next network.
+  const roomRows = (m: Network) => usedRows(m, lib) + 1;
+  while (row < 0 || row >= roomRows(n)) {
     const step = row < 0 ? -1 : 1;
     let next = index + step;
     while (nets[next]?.collapsed) next += step;
     const target = nets[next];
     if (!target) {
-      row = Math.max(0, Math.min(n.rows - 1, row));
+      row = Math.max(0, Math.min(roomRows(n) - 1, row));
       break;
     }
     index = next;
     n = target;
-    row = step < 0 ? n.rows - 1 : 0;
+    row = step < 0 ? usedRows(n, lib) - 1 : 0;
   }
   col = cursorCol(ctx, n, row, Math.max(0, Math.min(n.cols - 1, col)));
   const at = cursorAnchor(n, { row, col }, lib);

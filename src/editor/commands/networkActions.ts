@@ -12,8 +12,7 @@ import {
   type InstanceMode,
 } from '../../store/networkUnits';
 import { findVariable } from '../../model/factory';
-import { fitRows } from '../../store/networkEdits';
-import { libraryOf, networksOf, type EditorContext } from './editorActions';
+import { networksOf, type EditorContext } from './editorActions';
 
 /** The selected networks, in the POU's order. */
 export function selectedNetworks(ctx: EditorContext): NetworkId[] {
@@ -142,27 +141,3 @@ export function selectAllNetworks(ctx: EditorContext) {
   ctx.ui.getState().selectNetworks(networksOf(ctx).map((n) => n.id));
 }
 
-/**
- * Network > Fit rows to rungs: the selected networks (all of the POU's when none is selected) lose
- * the empty rows below their rungs, so a one-row rung is one row high; one undo step.
- */
-export function fitNetworkRows(ctx: EditorContext): number {
-  const doc = ctx.doc.getState();
-  const pou = selectActivePou(doc);
-  if (!pou) return 0;
-  const chosen = new Set(selectedNetworks(ctx));
-  const lib = libraryOf(ctx);
-  const changed = pou.networks
-    .filter((n) => chosen.size === 0 || chosen.has(n.id))
-    .map((before) => ({ pou: pou.id, before, after: fitRows(before, lib) }))
-    .filter((x) => x.after !== x.before);
-  if (changed.length) doc.replaceNetworks('fitRows', changed);
-  ctx.ui
-    .getState()
-    .setStatus(
-      changed.length
-        ? `${changed.length} network${changed.length === 1 ? '' : 's'} fitted to their rungs`
-        : 'No empty rows below the rungs',
-    );
-  return changed.length;
-}

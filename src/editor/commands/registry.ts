@@ -28,7 +28,6 @@ import {
   deleteSelectedNetworks,
   duplicateSelectedNetworks,
   extendNetworkSelection,
-  fitNetworkRows,
   hasNetworkSelection,
   moveSelectedNetworks,
   selectAllNetworks,
@@ -277,15 +276,6 @@ export const COMMANDS: readonly EditorCommand[] = [
     keys: ['mod+shift+arrowup'],
     inMenu: true,
     run: (ctx) => ctx.doc.getState().setCollapsed('all', true),
-  },
-  {
-    id: 'network.fitRows',
-    label: 'Fit rows to rungs',
-    group: 'Network',
-    inMenu: true,
-    run: (ctx) => {
-      fitNetworkRows(ctx);
-    },
   },
   {
     id: 'network.expandAll',

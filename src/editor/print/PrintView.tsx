@@ -48,7 +48,7 @@ function breaksOf(el: HTMLElement, item: PrintItem, drawing: NetworkDrawing | un
     const grid = el.querySelector('svg')?.getBoundingClientRect();
     if (!grid) return [];
     const scale = grid.height / drawing.height;
-    return Array.from({ length: item.network.rows - 1 }, (_, r) => grid.top - top + (r + 1) * drawing.pitch * scale);
+    return Array.from({ length: drawing.rows - 1 }, (_, r) => grid.top - top + (r + 1) * drawing.pitch * scale);
   }
   if (item.kind === 'source') {
     const pre = el.querySelector('pre') ?? el;

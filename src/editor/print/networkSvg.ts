@@ -5,6 +5,7 @@ import type { Network } from '../../model/project';
 import { drawNetworkGrid, type NetworkPaint } from '../canvas/drawNetwork';
 import { GRID_PAD_BOTTOM, networkWidth, RAIL_X, rowPitch, type SymbolComments } from '../canvas/geometry';
 import type { CanvasTheme } from '../theme/canvasTheme';
+import { usedRows } from '../../store/networkEdits';
 import { SvgContext, svgFrame, type MeasureText } from './svgContext';
 
 const PAINT: NetworkPaint = { selected: new Set(), cursor: undefined, hover: undefined, markers: [] };
@@ -17,6 +18,8 @@ export interface NetworkDrawing {
   readonly height: number;
   /** Height of its rows (taller where comments are shown under operands). */
   readonly pitch: number;
+  /** Rows drawn: those the rung uses (store/networkEdits.usedRows). */
+  readonly rows: number;
 }
 
 const ATTRS = 'class="rs-print-grid"';
@@ -31,9 +34,11 @@ export function networkSvg(
   const ctx = new SvgContext(measure);
   const width = networkWidth(network, library);
   const pitch = rowPitch(network, symbols);
-  const height = network.rows * pitch + GRID_PAD_BOTTOM;
+  // Printed as the canvas shows it: as tall as the rows the rung uses.
+  const rows = usedRows(network, library);
+  const height = rows * pitch + GRID_PAD_BOTTOM;
   ctx.translate(RAIL_X, 0);
-  const paint: NetworkPaint = { ...PAINT, pitch, ...(library ? { library } : {}), ...(symbols ? { symbols } : {}) };
+  const paint: NetworkPaint = { ...PAINT, pitch, rows, ...(library ? { library } : {}), ...(symbols ? { symbols } : {}) };
   drawNetworkGrid(ctx as unknown as CanvasRenderingContext2D, theme, network, paint);
-  return { svg: ctx.toSvg(width, height, ATTRS), frame: svgFrame(width, height, ATTRS), width, height, pitch };
+  return { svg: ctx.toSvg(width, height, ATTRS), frame: svgFrame(width, height, ATTRS), width, height, pitch, rows };
 }

@@ -5,9 +5,9 @@ import { useState } from 'react';
 import { libraryInfo } from '../../model/codesysUtil';
 import type { PouId } from '../../model/ids';
 import type { Pou, PouKind } from '../../model/project';
-import type { NewPouLanguage } from '../../store/pouCommands';
 import { selectActivePouId, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { pouNameProblem, pouUsages } from '../../store/pouEdits';
+import { OWN_TASK_MS, type NewPouLanguage, type RunIn } from '../../store/pouCommands';
 import { DataTypesSection } from '../dataTypes/DataTypesSection';
 import { LibrariesSection } from '../library/LibrariesSection';
 import { dataTypeTabs } from '../dataTypes/dataTypeTabs';
@@ -34,9 +34,19 @@ export function ProjectTree() {
   const [message, setMessage] = useState('');
   const [tasksOpen, setTasksOpen] = useState(false);
   const [language, setLanguage] = useState<NewPouLanguage>('LD');
+  // Where + Program's new program runs: 'own' (a task of its own), a task's index, or 'none'.
+  const [runIn, setRunIn] = useState<string>('own');
 
   const add = (kind: PouKind) => {
-    const id = store.getState().addPou(kind, undefined, language);
+    const run: RunIn | undefined =
+      kind !== 'PROGRAM'
+        ? undefined
+        : runIn === 'own'
+          ? { kind: 'own' }
+          : runIn === 'none' || !project.tasks[Number(runIn)]
+            ? { kind: 'none' }
+            : { kind: 'task', task: Number(runIn) };
+    const id = store.getState().addPou(kind, undefined, language, run);
     if (id) setRenaming(id);
   };
   const remove = (pou: Pou) => {
@@ -65,6 +75,25 @@ export function ProjectTree() {
         <button type="button" className="rs-button" data-testid="add-program" onClick={() => add('PROGRAM')}>
           + Program
         </button>
+        <label className="rs-tree-runin">
+          <span>runs in</span>
+          <select
+            className="rs-cell-input"
+            data-testid="new-program-runs-in"
+            aria-label="A new program runs in"
+            title="Where + Program's new program runs: a cyclic task of its own (T_<name>, renamed with the program), an existing task, or none"
+            value={runIn === 'own' || runIn === 'none' || project.tasks[Number(runIn)] ? runIn : 'own'}
+            onChange={(e) => setRunIn(e.target.value)}
+          >
+            <option value="own">its own task ({OWN_TASK_MS} ms)</option>
+            {project.tasks.map((t, i) => (
+              <option key={`${i}:${t.name}`} value={String(i)}>
+                task {t.name}
+              </option>
+            ))}
+            <option value="none">no task</option>
+          </select>
+        </label>
         <button
           type="button"
           className="rs-button"

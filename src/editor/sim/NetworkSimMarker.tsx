@@ -7,7 +7,17 @@ import { gridHeight, headerHeight } from '../canvas/geometry';
 import { useSim, useSimStore } from './simContext';
 import { useBodyRan, useHasBreakpoint, useIsCurrentNetwork, useNetworkExecuted } from './useSimOverlay';
 
-export function NetworkSimMarker({ network, index, pitch }: { network: Network; index: number; pitch?: number }) {
+export function NetworkSimMarker({
+  network,
+  index,
+  pitch,
+  rows,
+}: {
+  network: Network;
+  index: number;
+  pitch?: number;
+  rows?: number;
+}) {
   const sim = useSimStore();
   const breakpoint = useHasBreakpoint(network.id);
   const current = useIsCurrentNetwork(network.id);
@@ -37,7 +47,7 @@ export function NetworkSimMarker({ network, index, pitch }: { network: Network; 
       {current && (
         <>
           <span className="rs-sim-next-badge" data-testid={`network-next-${index}`}>▶ runs next</span>
-          <div className="rs-sim-current-frame" style={{ height: headerHeight(network) + gridHeight(network, pitch) - 4 }} aria-hidden />
+          <div className="rs-sim-current-frame" style={{ height: headerHeight(network) + gridHeight(network, pitch, rows ?? network.rows) - 4 }} aria-hidden />
         </>
       )}
       {executed === false && (
