@@ -27,14 +27,15 @@ export const TANK_SCENARIO: Scenario = {
   csv: `# plant: tank
 # cycle: 100ms
 # Start is pressed for 0.2 s; the level is checked every minute (between 190 L and 830 L).
-scan,tank.Start,expect Running,expect tank.level ~ 320,expect tank.overflows,expect tank.dry_runs,expect tank.deadheads
-1,1,,,,,
-3,0,1,*,0,0,0
-600,,1,510,0,0,0
-1200,,1,510,0,0,0
-1800,,1,510,0,0,0
-2400,,1,510,0,0,0
-3000,,1,510,0,0,0
+# An overflow or a dry run fails the scenario at the scan it happens.
+scan,tank.Start,expect Running,expect tank.level ~ 320,expect tank.deadheads
+1,1,,,
+3,0,1,*,0
+600,,1,510,0
+1200,,1,510,0
+1800,,1,510,0
+2400,,1,510,0
+3000,,1,510,0
 `,
 };
 

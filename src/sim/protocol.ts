@@ -12,6 +12,8 @@ import type { Project, Scenario } from '../model/project';
 import type { ExplainTarget, Explanation } from '../engine/explain';
 import type { ProgramInstance } from './runTarget';
 import type { ScenarioResult } from './scenario';
+import type { PlantFrame } from './sessionPlant';
+import type { PlantSnapshot } from '../plant/loop';
 
 export const SIM_PROTOCOL_VERSION = 1;
 
@@ -112,6 +114,13 @@ export type HostMessage =
    * after the first divergent scan; answered with `scenarioReplayed`.
    */
   | { readonly type: 'replayScenario'; readonly id: number; readonly project: Project; readonly scenario: Scenario; readonly epoch?: number; readonly docSeq?: number }
+  // ---- the machine in closed loop (issue 26) ----
+  /** Attach a machine (its id and the addresses the user changed), or none. */
+  | { readonly type: 'setPlant'; readonly plant: { readonly id: string; readonly map?: Readonly<Record<string, string>> } | null }
+  /** An operator control on the machine (a button held, a switch turned): read by the next scan. */
+  | { readonly type: 'plantOperator'; readonly name: string; readonly value: boolean }
+  /** A fault on the machine, on or off from the next step. */
+  | { readonly type: 'plantFault'; readonly id: string; readonly active: boolean }
   | GatewayHostMessage;
 
 /**
@@ -170,6 +179,8 @@ export interface HistoryView {
   readonly values: readonly Value[];
   /** The values on the data lines of the shown body in that scan, aligned with SimLayout.pins. */
   readonly pins: readonly Value[];
+  /** The machine as it was after that scan, when one is attached and the scan is still kept. */
+  readonly plant?: PlantSnapshot;
 }
 
 /** What the scan history holds. */
@@ -311,6 +322,8 @@ export interface SimFrame {
   readonly epoch: number;
   /** Scans the history can show; absent when nothing is recorded. */
   readonly history?: HistoryRange;
+  /** The machine in closed loop with the program, when one is attached. */
+  readonly plant?: PlantFrame;
 }
 
 /** What an online change keeps and resets (FB instances by name, edge elements by element id). */

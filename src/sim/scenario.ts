@@ -264,8 +264,8 @@ export function runPrepared(
       afterScan?.(scan);
       return { ok: false, scans: scan, divergences: [], error: `scan ${scan}: ${report.fault.message}` };
     }
-    const events = loop?.afterScan(scan, (scan - 1) * plant!.cycleMs, plant!.cycleMs);
     afterScan?.(scan);
+    const events = loop?.afterScan(scan, (scan - 1) * plant!.cycleMs, plant!.cycleMs);
     const harm = events?.find((e) => e.severity === 'error' && !(e.counter && checked.has(`${loop!.model.id}.${e.counter}`.toLowerCase())));
     if (harm) return { ok: false, scans: scan, divergences: [], error: harm.text };
     if (at < 0) continue;
