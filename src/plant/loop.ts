@@ -13,6 +13,15 @@ import type { PlantConsequence, PlantModel, PlantPoint } from './types';
 export interface PlcIo {
   outputs(): Record<string, Value>;
   setInputs(values: Readonly<Record<string, Value>>): void;
+  /** A point resolved once (the engine's Plc.ioPoint): read and written every scan without a lookup. */
+  ioPoint?(location: string): { read(): Value; write(value: Value): void } | undefined;
+}
+
+/** A machine point wired to the PLC: how to read (actuators) or write (sensors, operator controls) it. */
+interface Wire {
+  readonly point: PlantPoint;
+  read(): Value;
+  write(value: Value): void;
 }
 
 /** A consequence where it happened: the scan after which the machine was seen to suffer it. */
@@ -48,6 +57,7 @@ export function addressProblem(point: PlantPoint, address: string): string | und
   return undefined;
 }
 
+const NONE: PlantEvent[] = [];
 const formatTime = (ms: number): string => `${(ms / 1000).toFixed(2)} s`;
 
 export interface PlantSnapshot {
@@ -67,15 +77,22 @@ export class PlantLoop {
   private scan = 0;
   private readonly faults = new Set<string>();
   private readonly operator: Record<string, boolean> = {};
+  /** Sorted faults and a copy of the operator controls, made anew only when they change (shared by snapshots). */
+  private faultList: readonly string[] = [];
+  private operatorShown: Readonly<Record<string, boolean>> = {};
   private readonly events: PlantEvent[] = [];
   /** The machine after each recorded scan, oldest first, at most `keep`. */
   private readonly history: PlantSnapshot[] = [];
   private readonly actuators: PlantPoint[];
   private readonly inputs: PlantPoint[];
-  /** Address key -> key in the PLC's output record; input points the program declares. */
-  private outputKeys = new Map<string, string>();
-  private declared: PlantPoint[] = [];
+  /** The points the program declares: actuators to read, sensors and operator controls to write. */
+  private outputs: Wire[] = [];
+  /** Actuators the program does not drive: always off. */
+  private unwired: PlantPoint[] = [];
+  private declared: Wire[] = [];
   private bound: PlcIo | undefined;
+  /** The drive record handed to step(), refilled every scan. */
+  private readonly driveRecord: Record<string, Value> = {};
 
   constructor(model: PlantModel, map: PlantMap = {}, private readonly keep = 100_000) {
     this.model = model;
@@ -85,8 +102,10 @@ export class PlantLoop {
       if (problem) throw new Error(`${model.id}: ${problem}`);
     }
     this.actuators = this.points.filter((p) => p.kind === 'actuator');
+    this.unwired = this.actuators;
     this.inputs = this.points.filter((p) => p.kind !== 'actuator');
     for (const p of this.points) if (p.kind === 'operator') this.operator[p.name] = false;
+    this.operatorShown = { ...this.operator };
     this.state = model.initial();
   }
 
@@ -105,28 +124,40 @@ export class PlantLoop {
    */
   bind(plc: PlcIo): void {
     this.bound = plc;
-    this.outputKeys = new Map(Object.keys(plc.outputs()).map((k) => [addressKey(k), k]));
-    this.declared = this.inputs.filter((p) => {
+    this.outputs = this.actuators.flatMap((p) => {
+      const io = plc.ioPoint?.(p.address);
+      if (io) return [{ point: p, read: () => io.read(), write: () => {} }];
+      if (plc.ioPoint) return [];
+      // A PLC without resolved points: through its output record.
+      const key = Object.keys(plc.outputs()).find((k) => addressKey(k) === addressKey(p.address));
+      return key === undefined ? [] : [{ point: p, read: () => plc.outputs()[key]!, write: () => {} }];
+    });
+    this.unwired = this.actuators.filter((p) => !this.outputs.some((w) => w.point === p));
+    this.declared = this.inputs.flatMap((p) => {
+      const io = plc.ioPoint?.(p.address);
+      if (io) return [{ point: p, read: () => io.read(), write: (v: Value) => io.write(v) }];
+      if (plc.ioPoint) return [];
       try {
         plc.setInputs({ [p.address]: p.type === 'BOOL' ? false : 0 });
-        return true;
       } catch {
-        return false;
+        return [];
       }
+      return [{ point: p, read: () => false, write: (v: Value) => plc.setInputs({ [p.address]: v }) }];
     });
     this.present();
   }
 
   /** The program's scan `scan` ended; `scanTimeMs` is when it started, `cycleMs` the scan cycle. */
-  afterScan(scan: number, scanTimeMs: number, cycleMs: number): PlantEvent[] {
+  afterScan(scan: number, scanTimeMs: number, cycleMs: number): readonly PlantEvent[] {
     const target = scanTimeMs + cycleMs;
     const dt = Math.max(0, target - this.timeMs);
     const before = this.state;
     this.state = this.model.step(before, this.drive(), dt, this.faults);
     this.timeMs = target;
     this.scan = scan;
-    const found = this.model.check(before, this.state).map((c) => this.locate(c, scan, scanTimeMs));
-    this.events.push(...found);
+    const consequences = this.model.check(before, this.state);
+    const found = consequences.length === 0 ? NONE : consequences.map((c) => this.locate(c, scan, scanTimeMs));
+    for (const e of found) this.events.push(e);
     this.record();
     this.present();
     return found;
@@ -137,38 +168,43 @@ export class PlantLoop {
   }
 
   private drive(): Record<string, Value> {
-    const out = this.bound?.outputs() ?? {};
-    const d: Record<string, Value> = { ...this.operator };
-    for (const p of this.actuators) {
-      const k = this.outputKeys.get(addressKey(p.address));
-      d[p.name] = k !== undefined ? out[k]! : p.type === 'BOOL' ? false : 0;
-    }
+    const d = this.driveRecord;
+    for (const p of this.inputs) if (p.kind === 'operator') d[p.name] = this.operator[p.name] === true;
+    for (const p of this.unwired) d[p.name] = p.type === 'BOOL' ? false : 0;
+    for (const w of this.outputs) d[w.point.name] = w.read();
     return d;
   }
 
-  /** The machine's sensors and operator controls into the PLC's input image (for its next scan). */
+  /**
+   * The machine's sensors and operator controls into the PLC's input image (for its next scan),
+   * every scan: the machine drives those inputs as wires would (a forced input keeps its force).
+   */
   present(): void {
     if (!this.bound || this.declared.length === 0) return;
     const sensed = this.model.sense(this.state, this.faults);
-    const values: Record<string, Value> = {};
-    for (const p of this.declared) values[p.address] = p.kind === 'operator' ? this.operator[p.name] === true : sensed[p.name]!;
-    this.bound.setInputs(values);
+    for (const w of this.declared) {
+      const v = w.point.kind === 'operator' ? this.operator[w.point.name] === true : sensed[w.point.name]!;
+      // The image already holding the value is the common case: no write, no conversion.
+      if (w.read() !== v) w.write(v);
+    }
   }
 
   private record(): void {
-    if (this.history.length >= this.keep) this.history.shift();
+    if (this.keep <= 0) return;
+    // Dropped in chunks: shifting a 100,000-entry array every scan would cost more than the machine.
+    if (this.history.length >= this.keep + 1024) this.history.splice(0, this.history.length - this.keep);
     this.history.push(this.snapshot());
   }
 
   snapshot(): PlantSnapshot {
-    return { scan: this.scan, timeMs: this.timeMs, state: this.state, faults: [...this.faults].sort(), operator: { ...this.operator } };
+    return { scan: this.scan, timeMs: this.timeMs, state: this.state, faults: this.faultList, operator: this.operatorShown };
   }
 
   /** The machine as it was after scan `scan` (the initial state for 0), if still kept. */
   at(scan: number): PlantSnapshot | undefined {
     if (scan === 0) return { scan: 0, timeMs: 0, state: this.model.initial(), faults: [], operator: {} };
     const first = this.history[0];
-    if (!first || scan < first.scan) return undefined;
+    if (!first || scan < first.scan || this.history.length > this.keep && scan < this.history[this.history.length - this.keep]!.scan) return undefined;
     // Scans are recorded in order, one each, unless a reset restarted the count.
     const guess = this.history[scan - first.scan];
     return guess?.scan === scan ? guess : this.history.find((h) => h.scan === scan);
@@ -178,6 +214,7 @@ export class PlantLoop {
     const p = this.points.find((q) => q.kind === 'operator' && q.name.toUpperCase() === name.toUpperCase());
     if (!p) throw new Error(`${this.model.id} has no operator control "${name}"; it has ${this.points.filter((q) => q.kind === 'operator').map((q) => q.name).join(', ')}`);
     this.operator[p.name] = value;
+    this.operatorShown = { ...this.operator };
     this.present();
   }
 
@@ -186,6 +223,7 @@ export class PlantLoop {
     if (!f) throw new Error(`${this.model.id} has no fault "${id}"; it has ${this.model.faults.map((q) => q.id).join(', ')}`);
     if (active) this.faults.add(f.id);
     else this.faults.delete(f.id);
+    this.faultList = [...this.faults].sort();
     this.present();
   }
 
@@ -209,7 +247,7 @@ export class PlantLoop {
     const p = this.points.find((x) => x.name.toLowerCase() === bare.toLowerCase());
     if (p?.kind === 'operator') return this.operator[p.name] === true;
     if (p?.kind === 'sensor') return this.model.sense(this.state, this.faults)[p.name]!;
-    if (p) return this.drive()[p.name]!;
+    if (p) return { ...this.drive() }[p.name]!;
     throw new Error(`${this.model.id} has no quantity or point "${bare}"; it has ${[...this.model.quantities.map((x) => x.name), ...this.points.map((x) => x.name)].join(', ')}`);
   }
 

@@ -112,3 +112,36 @@ test('a wrong program overflows the tank: a located consequence that opens the r
   await expect.poll(() => page.getByTestId('plant-q-overflowing').textContent()).toContain('yes');
   expect(errors).toEqual([]);
 });
+
+interface DocHandle {
+  getState(): { project: { plant?: { id: string; map?: Record<string, string> }; pous: { variables: { name: string; location?: string }[] }[] }; undoName?: string; undo(): void };
+}
+const doc = () => page.evaluate(() => {
+  const s = (window.rungsmith as unknown as { documentStore: DocHandle }).documentStore.getState();
+  return { plant: s.project.plant, variables: s.project.pous[0]!.variables.map((v) => `${v.name}@${v.location ?? ''}`), undoName: s.undoName };
+});
+
+test("choosing the tank for a new project, editing an address, and Declare the machine's I/O as one undo step", async () => {
+  await page.evaluate(() => (window.rungsmith as unknown as { documentStore: { getState(): { newProject(n: string): void } } }).documentStore.getState().newProject('Tank from scratch'));
+  await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('');
+  await page.getByTestId('plant-choose').selectOption('tank');
+  await expect.poll(async () => (await doc()).plant).toEqual({ id: 'tank' });
+  // A sensor cannot be an output: refused, named, and nothing changes.
+  const pump = page.getByTestId('plant-address-Pump');
+  await pump.fill('%IX3.0');
+  await pump.press('Enter');
+  await expect.poll(() => page.getByTestId('plant-io-problem').textContent()).toBe('Pump: an actuator is a %Q output, not %IX3.0');
+  await pump.fill('%QX1.0');
+  await pump.press('Enter');
+  await expect.poll(async () => (await doc()).plant).toEqual({ id: 'tank', map: { Pump: '%QX1.0' } });
+  await page.getByTestId('plant-declare').click();
+  await expect.poll(() => page.getByTestId('plant-declared').textContent()).toBe('Declared 9 variables in Main: Start, Stop, LowLevel, HighLevel, Level, Pump, InletValve, DrainValve, RunLamp.');
+  const after = await doc();
+  expect(after.variables).toContain('Pump@%QX1.0');
+  expect(after.variables).toContain('Level@%IW0');
+  expect(after.undoName).toBe("Declare the machine's I/O");
+  await page.getByTestId('menu-edit').click();
+  await page.getByRole('menuitem', { name: /^Undo/ }).click();
+  await expect.poll(async () => (await doc()).variables).toEqual([]);
+  expect(errors).toEqual([]);
+});
