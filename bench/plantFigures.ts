@@ -24,7 +24,13 @@ const CYCLE_MS = 10;
 function wiredProgram(): Project {
   const p = generateSimProgram(100);
   const [main, ...rest] = p.pous;
-  return { ...p, pous: [{ ...main!, variables: [...main!.variables, variable('Level', 'INT', { location: '%IW0' })] }, ...rest] };
+  return {
+    ...p,
+    pous: [
+      { ...main!, variables: [...main!.variables, variable('Level', 'INT', { location: '%IW0' })] },
+      ...rest,
+    ],
+  };
 }
 
 function newPlc(project: Project, recorded: boolean): { plc: Plc; recorder?: HistoryRecorder } {
@@ -33,7 +39,12 @@ function newPlc(project: Project, recorded: boolean): { plc: Plc; recorder?: His
   const plc = createPlc(program, { cycleMs: CYCLE_MS });
   if (!recorded) return { plc };
   const layout = buildLayout(project, plc.pou, plc.variableNames(), CYCLE_MS);
-  return { plc, recorder: new HistoryRecorder(plc, layout, program as CompiledProgram, findPou(project, plc.pou)!, { maxScans: 100_000 }) };
+  return {
+    plc,
+    recorder: new HistoryRecorder(plc, layout, program as CompiledProgram, findPou(project, plc.pou)!, {
+      maxScans: 100_000,
+    }),
+  };
 }
 
 const INPUTS = ['%IX0.0', '%IX0.1', '%IX0.2', '%IX0.3', '%IW0'];
@@ -44,14 +55,20 @@ const INPUTS = ['%IX0.0', '%IX0.1', '%IX0.2', '%IX0.3', '%IW0'];
  * the tape (as an input card would give them), so the program and the recorder do the same work
  * and the difference is the machine's own cost.
  */
-function block({ plc, recorder }: { plc: Plc; recorder?: HistoryRecorder }, loop: PlantLoop | undefined, tape: unknown[][], round: number): number {
+function block(
+  { plc, recorder }: { plc: Plc; recorder?: HistoryRecorder },
+  loop: PlantLoop | undefined,
+  tape: unknown[][],
+  round: number,
+): number {
   const points = INPUTS.map((a) => plc.ioPoint!(a)!);
   const t0 = performance.now();
   for (let i = 0; i < BLOCK; i++) {
     const k = plc.scanCount + 1;
     if (!loop) {
       const row = tape[round * BLOCK + i]!;
-      for (let p = 0; p < points.length; p++) if (points[p]!.read() !== row[p]) points[p]!.write(row[p] as never);
+      for (let p = 0; p < points.length; p++)
+        if (points[p]!.read() !== row[p]) points[p]!.write(row[p] as never);
     }
     plc.scan();
     recorder?.record(k, (k - 1) * CYCLE_MS);

@@ -12,12 +12,16 @@ import type { PlantModel } from './types';
 
 /** The variables of a machine's points at their addresses (the machine's names, types and comments). */
 export function plantVariables(model: PlantModel, map: PlantMap = {}): Variable[] {
-  return mappedPoints(model, map).map((p) => variable(p.name, p.type, { comment: p.comment, location: p.address }));
+  return mappedPoints(model, map).map((p) =>
+    variable(p.name, p.type, { comment: p.comment, location: p.address }),
+  );
 }
 
 /** The task as the project's description: the text, then the I/O table. */
 export function taskText(model: PlantModel, map: PlantMap = {}): string {
-  const rows = mappedPoints(model, map).map((p) => `${p.address.padEnd(7)} ${p.name.padEnd(11)} ${p.type.padEnd(4)} ${p.kind.padEnd(8)} ${p.comment}`);
+  const rows = mappedPoints(model, map).map(
+    (p) => `${p.address.padEnd(7)} ${p.name.padEnd(11)} ${p.type.padEnd(4)} ${p.kind.padEnd(8)} ${p.comment}`,
+  );
   return `${model.task}\n\nI/O:\n${rows.join('\n')}`;
 }
 
@@ -43,10 +47,18 @@ const fillAndDrain = (stopFilling: Network): Network[] => [
   network(
     'System running',
     'Start OR Running (seal-in), AND NOT Stop: the system runs until Stop is pressed.',
-    [...rung([contact(0, 0, 'Start'), contact(0, 1, 'Stop', 'NC')], coil(0, 'Running')), contact(1, 0, 'Running')],
+    [
+      ...rung([contact(0, 0, 'Start'), contact(0, 1, 'Stop', 'NC')], coil(0, 'Running')),
+      contact(1, 0, 'Running'),
+    ],
     { vlinks: [{ row: 0, boundary: 1 }] },
   ),
-  network('Run lamp', 'The pilot lamp shows the system is running.', rung([contact(0, 0, 'Running')], coil(0, 'RunLamp')), { rows: 1 }),
+  network(
+    'Run lamp',
+    'The pilot lamp shows the system is running.',
+    rung([contact(0, 0, 'Running')], coil(0, 'RunLamp')),
+    { rows: 1 },
+  ),
   network(
     'Start filling',
     'Running with the water below the low switch: fill.',
@@ -54,8 +66,18 @@ const fillAndDrain = (stopFilling: Network): Network[] => [
     { rows: 1 },
   ),
   stopFilling,
-  network('Pump', 'The pump runs while filling (the inlet valve opens with it).', rung([contact(0, 0, 'Filling')], coil(0, 'Pump')), { rows: 1 }),
-  network('Inlet valve', 'The inlet valve is open while filling.', rung([contact(0, 0, 'Filling')], coil(0, 'InletValve')), { rows: 1 }),
+  network(
+    'Pump',
+    'The pump runs while filling (the inlet valve opens with it).',
+    rung([contact(0, 0, 'Filling')], coil(0, 'Pump')),
+    { rows: 1 },
+  ),
+  network(
+    'Inlet valve',
+    'The inlet valve is open while filling.',
+    rung([contact(0, 0, 'Filling')], coil(0, 'InletValve')),
+    { rows: 1 },
+  ),
   network(
     'Drain to the process',
     'The process draws water while running, only from a tank at or above the low switch.',
@@ -79,7 +101,14 @@ function tankProject(name: string, description: string, networks: Network[]): Pr
     scenarios: [TANK_SCENARIO],
     plant: { id: tank.id },
     pous: [main],
-    tasks: [{ name: 'MainTask', cycleMs: 100, priority: 1, programs: [{ instance: 'MainInstance', pou: main.name }] }],
+    tasks: [
+      {
+        name: 'MainTask',
+        cycleMs: 100,
+        priority: 1,
+        programs: [{ instance: 'MainInstance', pou: main.name }],
+      },
+    ],
   });
 }
 
@@ -105,11 +134,12 @@ export function tankWrong(): Project {
     'Tank level control (wrong: ignores the high switch)',
     taskText(tank),
     fillAndDrain(
-      network('Stop filling', 'Only stopping the system ends filling (the high switch is forgotten).', [
-        contact(0, 0, 'Running', 'NC'),
-        ...line(0, 1, 8),
-        coil(0, 'Filling', 'RESET'),
-      ], { rows: 1 }),
+      network(
+        'Stop filling',
+        'Only stopping the system ends filling (the high switch is forgotten).',
+        [contact(0, 0, 'Running', 'NC'), ...line(0, 1, 8), coil(0, 'Filling', 'RESET')],
+        { rows: 1 },
+      ),
     ),
   );
 }
@@ -118,7 +148,8 @@ export const PLANT_EXAMPLES: readonly Example[] = [
   {
     id: 'tank-level',
     title: 'Tank level control (machine: tank)',
-    description: 'Exercise: hold the tank between its level switches; the reference solution, with the tank in the Plant panel.',
+    description:
+      'Exercise: hold the tank between its level switches; the reference solution, with the tank in the Plant panel.',
     build: tankReference,
   },
 ];

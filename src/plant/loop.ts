@@ -38,7 +38,9 @@ export type PlantMap = Readonly<Record<string, string>>;
 /** `%ix0.0` and `%IX0.0` alike. */
 export function addressKey(text: string): string {
   const loc = parseLocation(text.trim());
-  return loc ? `%${loc.area}${loc.size}${loc.index}${loc.bit !== undefined ? `.${loc.bit}` : ''}` : text.trim().toUpperCase();
+  return loc
+    ? `%${loc.area}${loc.size}${loc.index}${loc.bit !== undefined ? `.${loc.bit}` : ''}`
+    : text.trim().toUpperCase();
 }
 
 /** The machine's points at their addresses (the defaults, with the user's changes). */
@@ -51,9 +53,11 @@ export function addressProblem(point: PlantPoint, address: string): string | und
   const loc = parseLocation(address.trim());
   if (!loc) return `${point.name}: "${address}" is not an IEC address (%IX0.0, %IW2, %QX1.3)`;
   const wantArea = point.kind === 'actuator' ? 'Q' : 'I';
-  if (loc.area !== wantArea) return `${point.name}: ${point.kind === 'actuator' ? 'an actuator is a %Q output' : 'a sensor or operator control is a %I input'}, not ${address}`;
+  if (loc.area !== wantArea)
+    return `${point.name}: ${point.kind === 'actuator' ? 'an actuator is a %Q output' : 'a sensor or operator control is a %I input'}, not ${address}`;
   const wantSize = point.type === 'BOOL' ? 'X' : 'W';
-  if ((loc.size || 'X') !== wantSize) return `${point.name}: a ${point.type} point needs a %${wantArea}${wantSize} address, not ${address}`;
+  if ((loc.size || 'X') !== wantSize)
+    return `${point.name}: a ${point.type} point needs a %${wantArea}${wantSize} address, not ${address}`;
   return undefined;
 }
 
@@ -94,7 +98,11 @@ export class PlantLoop {
   /** The drive record handed to step(), refilled every scan. */
   private readonly driveRecord: Record<string, Value> = {};
 
-  constructor(model: PlantModel, map: PlantMap = {}, private readonly keep = 100_000) {
+  constructor(
+    model: PlantModel,
+    map: PlantMap = {},
+    private readonly keep = 100_000,
+  ) {
     this.model = model;
     this.points = mappedPoints(model, map);
     for (const p of this.points) {
@@ -156,7 +164,8 @@ export class PlantLoop {
     this.timeMs = target;
     this.scan = scan;
     const consequences = this.model.check(before, this.state);
-    const found = consequences.length === 0 ? NONE : consequences.map((c) => this.locate(c, scan, scanTimeMs));
+    const found =
+      consequences.length === 0 ? NONE : consequences.map((c) => this.locate(c, scan, scanTimeMs));
     for (const e of found) this.events.push(e);
     this.record();
     this.present();
@@ -164,7 +173,12 @@ export class PlantLoop {
   }
 
   private locate(c: PlantConsequence, scan: number, timeMs: number): PlantEvent {
-    return { ...c, scan, timeMs, text: `${c.message} at scan ${scan.toLocaleString('en-US')} (${formatTime(timeMs)})` };
+    return {
+      ...c,
+      scan,
+      timeMs,
+      text: `${c.message} at scan ${scan.toLocaleString('en-US')} (${formatTime(timeMs)})`,
+    };
   }
 
   private drive(): Record<string, Value> {
@@ -197,14 +211,25 @@ export class PlantLoop {
   }
 
   snapshot(): PlantSnapshot {
-    return { scan: this.scan, timeMs: this.timeMs, state: this.state, faults: this.faultList, operator: this.operatorShown };
+    return {
+      scan: this.scan,
+      timeMs: this.timeMs,
+      state: this.state,
+      faults: this.faultList,
+      operator: this.operatorShown,
+    };
   }
 
   /** The machine as it was after scan `scan` (the initial state for 0), if still kept. */
   at(scan: number): PlantSnapshot | undefined {
     if (scan === 0) return { scan: 0, timeMs: 0, state: this.model.initial(), faults: [], operator: {} };
     const first = this.history[0];
-    if (!first || scan < first.scan || this.history.length > this.keep && scan < this.history[this.history.length - this.keep]!.scan) return undefined;
+    if (
+      !first ||
+      scan < first.scan ||
+      (this.history.length > this.keep && scan < this.history[this.history.length - this.keep]!.scan)
+    )
+      return undefined;
     // Scans are recorded in order, one each, unless a reset restarted the count.
     const guess = this.history[scan - first.scan];
     return guess?.scan === scan ? guess : this.history.find((h) => h.scan === scan);
@@ -212,7 +237,13 @@ export class PlantLoop {
 
   setOperator(name: string, value: boolean): void {
     const p = this.points.find((q) => q.kind === 'operator' && q.name.toUpperCase() === name.toUpperCase());
-    if (!p) throw new Error(`${this.model.id} has no operator control "${name}"; it has ${this.points.filter((q) => q.kind === 'operator').map((q) => q.name).join(', ')}`);
+    if (!p)
+      throw new Error(
+        `${this.model.id} has no operator control "${name}"; it has ${this.points
+          .filter((q) => q.kind === 'operator')
+          .map((q) => q.name)
+          .join(', ')}`,
+      );
     this.operator[p.name] = value;
     this.operatorShown = { ...this.operator };
     this.present();
@@ -220,7 +251,10 @@ export class PlantLoop {
 
   setFault(id: string, active: boolean): void {
     const f = this.model.faults.find((q) => q.id === id.toLowerCase());
-    if (!f) throw new Error(`${this.model.id} has no fault "${id}"; it has ${this.model.faults.map((q) => q.id).join(', ')}`);
+    if (!f)
+      throw new Error(
+        `${this.model.id} has no fault "${id}"; it has ${this.model.faults.map((q) => q.id).join(', ')}`,
+      );
     if (active) this.faults.add(f.id);
     else this.faults.delete(f.id);
     this.faultList = [...this.faults].sort();
@@ -241,16 +275,19 @@ export class PlantLoop {
 
   /** `level` or `tank.level`: a quantity, or a point (a sensor as sensed, an actuator as driven, an operator control as held). */
   read(name: string): Value {
-    const bare = name.toLowerCase().startsWith(`${this.model.id}.`) ? name.slice(this.model.id.length + 1) : name;
+    const bare = name.toLowerCase().startsWith(`${this.model.id}.`)
+      ? name.slice(this.model.id.length + 1)
+      : name;
     const q = this.model.quantities.find((x) => x.name.toLowerCase() === bare.toLowerCase());
     if (q) return this.model.quantity(this.state, q.name);
     const p = this.points.find((x) => x.name.toLowerCase() === bare.toLowerCase());
     if (p?.kind === 'operator') return this.operator[p.name] === true;
     if (p?.kind === 'sensor') return this.model.sense(this.state, this.faults)[p.name]!;
     if (p) return { ...this.drive() }[p.name]!;
-    throw new Error(`${this.model.id} has no quantity or point "${bare}"; it has ${[...this.model.quantities.map((x) => x.name), ...this.points.map((x) => x.name)].join(', ')}`);
+    throw new Error(
+      `${this.model.id} has no quantity or point "${bare}"; it has ${[...this.model.quantities.map((x) => x.name), ...this.points.map((x) => x.name)].join(', ')}`,
+    );
   }
-
 }
 
 /** The type `tank.level` (or `level`) reads as: a quantity's, or a point's; undefined when the machine has no such name. */

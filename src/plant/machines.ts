@@ -12,6 +12,7 @@ export function plantById(id: string): PlantModel | undefined {
 /** `tank` -> the model, or an error naming the machines there are. */
 export function requirePlant(id: string): PlantModel {
   const p = plantById(id);
-  if (!p) throw new Error(`there is no machine "${id}"; the machines are ${PLANTS.map((m) => m.id).join(', ')}`);
+  if (!p)
+    throw new Error(`there is no machine "${id}"; the machines are ${PLANTS.map((m) => m.id).join(', ')}`);
   return p;
 }

@@ -62,14 +62,58 @@ export const tank: PlantModel<TankState> = {
     'Level (%IW0) is the water in litres, 0 to 1000; the switches sit at 200 L and 800 L.',
   ].join('\n'),
   points: [
-    { name: 'Start', address: '%IX0.0', type: 'BOOL', kind: 'operator', control: 'button', comment: 'Start push button (NO)' },
-    { name: 'Stop', address: '%IX0.1', type: 'BOOL', kind: 'operator', control: 'button', comment: 'Stop push button (NO)' },
-    { name: 'LowLevel', address: '%IX0.2', type: 'BOOL', kind: 'sensor', comment: 'Low level float switch, ON at 200 L and above' },
-    { name: 'HighLevel', address: '%IX0.3', type: 'BOOL', kind: 'sensor', comment: 'High level float switch, ON at 800 L and above' },
-    { name: 'Level', address: '%IW0', type: 'INT', kind: 'sensor', comment: 'Level transmitter, litres (0 to 1000)' },
+    {
+      name: 'Start',
+      address: '%IX0.0',
+      type: 'BOOL',
+      kind: 'operator',
+      control: 'button',
+      comment: 'Start push button (NO)',
+    },
+    {
+      name: 'Stop',
+      address: '%IX0.1',
+      type: 'BOOL',
+      kind: 'operator',
+      control: 'button',
+      comment: 'Stop push button (NO)',
+    },
+    {
+      name: 'LowLevel',
+      address: '%IX0.2',
+      type: 'BOOL',
+      kind: 'sensor',
+      comment: 'Low level float switch, ON at 200 L and above',
+    },
+    {
+      name: 'HighLevel',
+      address: '%IX0.3',
+      type: 'BOOL',
+      kind: 'sensor',
+      comment: 'High level float switch, ON at 800 L and above',
+    },
+    {
+      name: 'Level',
+      address: '%IW0',
+      type: 'INT',
+      kind: 'sensor',
+      comment: 'Level transmitter, litres (0 to 1000)',
+    },
     { name: 'Pump', address: '%QX0.0', type: 'BOOL', kind: 'actuator', comment: 'Feed pump contactor' },
-    { name: 'InletValve', address: '%QX0.1', type: 'BOOL', kind: 'actuator', comment: 'Inlet valve solenoid (open when ON)' },
-    { name: 'DrainValve', address: '%QX0.2', type: 'BOOL', kind: 'actuator', comment: 'Drain valve to the process (open when ON)' },
+    {
+      name: 'InletValve',
+      address: '%QX0.1',
+      type: 'BOOL',
+      kind: 'actuator',
+      comment: 'Inlet valve solenoid (open when ON)',
+    },
+    {
+      name: 'DrainValve',
+      address: '%QX0.2',
+      type: 'BOOL',
+      kind: 'actuator',
+      comment: 'Drain valve to the process (open when ON)',
+    },
     { name: 'RunLamp', address: '%QX0.3', type: 'BOOL', kind: 'actuator', comment: 'Running pilot lamp' },
   ],
   faults: [
@@ -116,8 +160,18 @@ export const tank: PlantModel<TankState> = {
 
   step(s: TankState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>): TankState {
     const pump = towards(s.pump, on(drive.Pump) && !faults.has('pump_dead') ? 1 : 0, dtMs, PUMP_RAMP_MS);
-    const inlet = towards(s.inlet, on(drive.InletValve) ? 1 : 0, dtMs, faults.has('inlet_slow') ? SLOW_VALVE_TRAVEL_MS : VALVE_TRAVEL_MS);
-    const drain = towards(s.drain, on(drive.DrainValve) && !faults.has('drain_stuck') ? 1 : 0, dtMs, VALVE_TRAVEL_MS);
+    const inlet = towards(
+      s.inlet,
+      on(drive.InletValve) ? 1 : 0,
+      dtMs,
+      faults.has('inlet_slow') ? SLOW_VALVE_TRAVEL_MS : VALVE_TRAVEL_MS,
+    );
+    const drain = towards(
+      s.drain,
+      on(drive.DrainValve) && !faults.has('drain_stuck') ? 1 : 0,
+      dtMs,
+      VALVE_TRAVEL_MS,
+    );
     const dt = dtMs / 1000;
     const inflow = INFLOW_L_S * pump * inlet;
     const wanted = OUTFLOW_L_S * drain;
@@ -153,7 +207,8 @@ export const tank: PlantModel<TankState> = {
   },
 
   sense(s: TankState, faults: ReadonlySet<string>): Record<string, Value> {
-    const sw = (id: string, real: boolean) => (faults.has(`${id}_stuck_on`) ? true : faults.has(`${id}_stuck_off`) ? false : real);
+    const sw = (id: string, real: boolean) =>
+      faults.has(`${id}_stuck_on`) ? true : faults.has(`${id}_stuck_off`) ? false : real;
     return {
       LowLevel: sw('low', s.level >= LOW_SWITCH_L),
       HighLevel: sw('high', s.level >= HIGH_SWITCH_L),
@@ -163,28 +218,53 @@ export const tank: PlantModel<TankState> = {
 
   check(before: TankState, after: TankState): readonly PlantConsequence[] {
     const out: PlantConsequence[] = [];
-    if (after.overflows > before.overflows) out.push({ id: 'overflow', severity: 'error', message: 'the tank overflowed', counter: 'overflows' });
-    if (after.dryRuns > before.dryRuns) out.push({ id: 'dry', severity: 'error', message: 'the tank ran dry (the drain was open on an empty tank)', counter: 'dry_runs' });
+    if (after.overflows > before.overflows)
+      out.push({ id: 'overflow', severity: 'error', message: 'the tank overflowed', counter: 'overflows' });
+    if (after.dryRuns > before.dryRuns)
+      out.push({
+        id: 'dry',
+        severity: 'error',
+        message: 'the tank ran dry (the drain was open on an empty tank)',
+        counter: 'dry_runs',
+      });
     if (after.deadheads > before.deadheads)
-      out.push({ id: 'deadhead', severity: 'warning', message: `the pump ran ${DEADHEAD_MS / 1000} s against the closed inlet valve`, counter: 'deadheads' });
+      out.push({
+        id: 'deadhead',
+        severity: 'warning',
+        message: `the pump ran ${DEADHEAD_MS / 1000} s against the closed inlet valve`,
+        counter: 'deadheads',
+      });
     return out;
   },
 
   quantity(s: TankState, name: string): number | boolean {
     switch (name) {
-      case 'level': return s.level;
-      case 'percent': return (s.level / TANK_CAPACITY_L) * 100;
-      case 'pump': return s.pump * 100;
-      case 'inlet': return s.inlet * 100;
-      case 'drain': return s.drain * 100;
-      case 'inflow': return s.inflow;
-      case 'outflow': return s.outflow;
-      case 'overflowing': return s.overflowing;
-      case 'dry': return s.dry;
-      case 'overflows': return s.overflows;
-      case 'dry_runs': return s.dryRuns;
-      case 'deadheads': return s.deadheads;
-      case 'spilled': return s.spilled;
+      case 'level':
+        return s.level;
+      case 'percent':
+        return (s.level / TANK_CAPACITY_L) * 100;
+      case 'pump':
+        return s.pump * 100;
+      case 'inlet':
+        return s.inlet * 100;
+      case 'drain':
+        return s.drain * 100;
+      case 'inflow':
+        return s.inflow;
+      case 'outflow':
+        return s.outflow;
+      case 'overflowing':
+        return s.overflowing;
+      case 'dry':
+        return s.dry;
+      case 'overflows':
+        return s.overflows;
+      case 'dry_runs':
+        return s.dryRuns;
+      case 'deadheads':
+        return s.deadheads;
+      case 'spilled':
+        return s.spilled;
     }
     throw new Error(`tank has no quantity "${name}"`);
   },

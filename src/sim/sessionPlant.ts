@@ -34,7 +34,12 @@ export class SessionPlant {
     }
     const loop = new PlantLoop(requirePlant(config.id), config.map ?? {});
     // The same machine with the same wiring keeps its state, faults and operator controls.
-    if (this.loop && this.loop.model.id === loop.model.id && JSON.stringify(this.loop.points) === JSON.stringify(loop.points)) return;
+    if (
+      this.loop &&
+      this.loop.model.id === loop.model.id &&
+      JSON.stringify(this.loop.points) === JSON.stringify(loop.points)
+    )
+      return;
     this.loop = loop;
     if (plc) loop.bind(plc);
   }
@@ -79,7 +84,13 @@ export class SessionPlant {
     const loop = this.loop;
     if (!loop) return undefined;
     const all = loop.consequences();
-    return { id: loop.model.id, points: loop.points, now: loop.snapshot(), events: all.slice(-FRAME_EVENTS), eventCount: all.length };
+    return {
+      id: loop.model.id,
+      points: loop.points,
+      now: loop.snapshot(),
+      events: all.slice(-FRAME_EVENTS),
+      eventCount: all.length,
+    };
   }
 
   private require(): PlantLoop {

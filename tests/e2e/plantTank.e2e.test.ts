@@ -19,14 +19,32 @@ interface PlantHandle {
     scan: number;
     timeMs: number;
     mode: string;
-    plant?: { id: string; now: { scan: number; state: Record<string, number | boolean>; faults: string[]; operator: Record<string, boolean> }; events: { text: string }[]; eventCount: number };
+    plant?: {
+      id: string;
+      now: {
+        scan: number;
+        state: Record<string, number | boolean>;
+        faults: string[];
+        operator: Record<string, boolean>;
+      };
+      events: { text: string }[];
+      eventCount: number;
+    };
     exportHistory(r: { format: 'trace'; names: string[] }): Promise<string>;
   };
 }
-const plant = () => page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().plant);
-const simTime = () => page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().timeMs);
+const plant = () =>
+  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().plant);
+const simTime = () =>
+  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().timeMs);
 const trace = (names: string[]) =>
-  page.evaluate((n) => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().exportHistory({ format: 'trace', names: n }), names);
+  page.evaluate(
+    (n) =>
+      (window.rungsmith as unknown as { simStore: PlantHandle }).simStore
+        .getState()
+        .exportHistory({ format: 'trace', names: n }),
+    names,
+  );
 
 /** Runs, presses Start on the drawing until the program runs, releases it, pauses; then Step N of `scans` scans (fast-forward). */
 async function startAndFastForward(scans: number) {
@@ -69,7 +87,11 @@ test('the reference solution holds the tank between the switches for 5 minutes o
   expect(p.eventCount).toBe(0);
   await expect.poll(() => page.getByTestId('plant-events').textContent()).toContain('None so far.');
   // Every scan after the first fill: the level (the program's %IW0) between the switches, give or take the valves' travel.
-  const rows = (await trace(['Level', 'LowLevel', 'HighLevel', 'Pump'])).trim().split('\n').slice(1).map((r) => r.split(',').map(Number));
+  const rows = (await trace(['Level', 'LowLevel', 'HighLevel', 'Pump']))
+    .trim()
+    .split('\n')
+    .slice(1)
+    .map((r) => r.split(',').map(Number));
   expect(rows.length).toBeGreaterThanOrEqual(3000);
   const filled = rows.findIndex((r) => r[4] === 1);
   expect(filled).toBeGreaterThan(0);
@@ -88,11 +110,17 @@ test('a fault set from the panel shows in the trace: the high switch stuck OFF s
   await page.getByTestId('plant-fault-high_stuck_off').check();
   await expect.poll(async () => (await plant())?.now.faults).toEqual(['high_stuck_off']);
   await startAndFastForward(900);
-  const rows = (await trace(['Level', 'HighLevel'])).trim().split('\n').slice(1).map((r) => r.split(',').map(Number));
+  const rows = (await trace(['Level', 'HighLevel']))
+    .trim()
+    .split('\n')
+    .slice(1)
+    .map((r) => r.split(',').map(Number));
   const high = rows.filter((r) => r[2]! >= 800);
   expect(high.length).toBeGreaterThan(0);
   expect(high.every((r) => r[3] === 0)).toBe(true);
-  await expect.poll(() => page.getByTestId('plant-events').textContent()).toMatch(/the tank overflowed at scan \d+ \(\d+\.\d\d s\)/);
+  await expect
+    .poll(() => page.getByTestId('plant-events').textContent())
+    .toMatch(/the tank overflowed at scan \d+ \(\d+\.\d\d s\)/);
   await page.getByTestId('plant-fault-high_stuck_off').uncheck();
   await expect.poll(async () => (await plant())?.now.faults).toEqual([]);
 });
@@ -107,22 +135,42 @@ test('a wrong program overflows the tank: a located consequence that opens the r
   const text = (await event.textContent())!;
   const scan = Number(/at scan ([\d,]+)/.exec(text)![1]!.replace(/,/g, ''));
   await event.click();
-  await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(new RegExp(`^Recorded scan ${scan.toLocaleString('en-US')} \\(`));
+  await expect
+    .poll(() => page.getByTestId('plant-status').textContent())
+    .toMatch(new RegExp(`^Recorded scan ${scan.toLocaleString('en-US')} \\(`));
   // The drawing's readout shows that scan's machine: full to the rim.
   await expect.poll(() => page.getByTestId('plant-q-overflowing').textContent()).toContain('yes');
   expect(errors).toEqual([]);
 });
 
 interface DocHandle {
-  getState(): { project: { plant?: { id: string; map?: Record<string, string> }; pous: { variables: { name: string; location?: string }[] }[] }; undoName?: string; undo(): void };
+  getState(): {
+    project: {
+      plant?: { id: string; map?: Record<string, string> };
+      pous: { variables: { name: string; location?: string }[] }[];
+    };
+    undoName?: string;
+    undo(): void;
+  };
 }
-const doc = () => page.evaluate(() => {
-  const s = (window.rungsmith as unknown as { documentStore: DocHandle }).documentStore.getState();
-  return { plant: s.project.plant, variables: s.project.pous[0]!.variables.map((v) => `${v.name}@${v.location ?? ''}`), undoName: s.undoName };
-});
+const doc = () =>
+  page.evaluate(() => {
+    const s = (window.rungsmith as unknown as { documentStore: DocHandle }).documentStore.getState();
+    return {
+      plant: s.project.plant,
+      variables: s.project.pous[0]!.variables.map((v) => `${v.name}@${v.location ?? ''}`),
+      undoName: s.undoName,
+    };
+  });
 
 test("choosing the tank for a new project, editing an address, and Declare the machine's I/O as one undo step", async () => {
-  await page.evaluate(() => (window.rungsmith as unknown as { documentStore: { getState(): { newProject(n: string): void } } }).documentStore.getState().newProject('Tank from scratch'));
+  await page.evaluate(() =>
+    (
+      window.rungsmith as unknown as { documentStore: { getState(): { newProject(n: string): void } } }
+    ).documentStore
+      .getState()
+      .newProject('Tank from scratch'),
+  );
   await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('');
   await page.getByTestId('plant-choose').selectOption('tank');
   await expect.poll(async () => (await doc()).plant).toEqual({ id: 'tank' });
@@ -130,12 +178,18 @@ test("choosing the tank for a new project, editing an address, and Declare the m
   const pump = page.getByTestId('plant-address-Pump');
   await pump.fill('%IX3.0');
   await pump.press('Enter');
-  await expect.poll(() => page.getByTestId('plant-io-problem').textContent()).toBe('Pump: an actuator is a %Q output, not %IX3.0');
+  await expect
+    .poll(() => page.getByTestId('plant-io-problem').textContent())
+    .toBe('Pump: an actuator is a %Q output, not %IX3.0');
   await pump.fill('%QX1.0');
   await pump.press('Enter');
   await expect.poll(async () => (await doc()).plant).toEqual({ id: 'tank', map: { Pump: '%QX1.0' } });
   await page.getByTestId('plant-declare').click();
-  await expect.poll(() => page.getByTestId('plant-declared').textContent()).toBe('Declared 9 variables in Main: Start, Stop, LowLevel, HighLevel, Level, Pump, InletValve, DrainValve, RunLamp.');
+  await expect
+    .poll(() => page.getByTestId('plant-declared').textContent())
+    .toBe(
+      'Declared 9 variables in Main: Start, Stop, LowLevel, HighLevel, Level, Pump, InletValve, DrainValve, RunLamp.',
+    );
   const after = await doc();
   expect(after.variables).toContain('Pump@%QX1.0');
   expect(after.variables).toContain('Level@%IW0');

@@ -8,13 +8,27 @@ import { SimHarness } from '../sim/harness';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import type { TankState } from '../../src/plant/tank';
 
-const WATCH = ['Start', 'Running', 'LowLevel', 'HighLevel', 'Level', 'Pump', 'InletValve', 'DrainValve', 'Filling'];
-const lastOf = <T,>(xs: T[]): T => xs[xs.length - 1]!;
+const WATCH = [
+  'Start',
+  'Running',
+  'LowLevel',
+  'HighLevel',
+  'Level',
+  'Pump',
+  'InletValve',
+  'DrainValve',
+  'Filling',
+];
+const lastOf = <T>(xs: T[]): T => xs[xs.length - 1]!;
 const level = (h: SimHarness) => ((h.frame.plant as PlantFrame).now.state as TankState).level;
 
 /** Start pressed before scan 1, released before scan 3, as an operator at the panel would. */
 function sessionRun(project = tankReference(), scans = 2000): SimHarness {
-  const h = new SimHarness().send({ type: 'setCycle', cycleMs: 100 }, { type: 'setPlant', plant: { id: 'tank' } }, { type: 'load', project });
+  const h = new SimHarness().send(
+    { type: 'setCycle', cycleMs: 100 },
+    { type: 'setPlant', plant: { id: 'tank' } },
+    { type: 'load', project },
+  );
   h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'step', scans: 2 }).settle();
   h.send({ type: 'plantOperator', name: 'Start', value: false }, { type: 'step', scans: scans - 2 });
   while (h.frame.scan < scans) h.settle();
@@ -27,10 +41,26 @@ describe('the tank in the simulation session', () => {
     expect(h.frame.scan).toBe(2000);
     h.send({ type: 'historyExport', id: 1, format: 'trace', names: WATCH });
     const worker = lastOf(h.of('historyText')).text.trim().split('\n');
-    const cli = rungsmith(['simulate', 'tank.json', '--plant', 'tank', '--inputs', 'stim.csv', '--scans', '2000', '--cycle', '100ms', '--watch', [...WATCH, 'tank.level'].join(',')], {
-      'tank.json': JSON.stringify(tankReference()),
-      'stim.csv': 'scan,tank.Start\n1,1\n3,0\n',
-    });
+    const cli = rungsmith(
+      [
+        'simulate',
+        'tank.json',
+        '--plant',
+        'tank',
+        '--inputs',
+        'stim.csv',
+        '--scans',
+        '2000',
+        '--cycle',
+        '100ms',
+        '--watch',
+        [...WATCH, 'tank.level'].join(','),
+      ],
+      {
+        'tank.json': JSON.stringify(tankReference()),
+        'stim.csv': 'scan,tank.Start\n1,1\n3,0\n',
+      },
+    );
     expect(cli.code).toBe(0);
     const rows = cli.out.trim().split('\n');
     expect(rows).toHaveLength(2001);
@@ -44,7 +74,11 @@ describe('the tank in the simulation session', () => {
       expect(String((view.plant!.state as TankState).level)).toBe(rows[scan]!.split(',').at(-1));
     }
     // It filled and drained: the level is back between the switches and pump cycles happened.
-    expect(worker.slice(1).filter((r, i, all) => i > 0 && r.split(',')[7] === '1' && all[i - 1]!.split(',')[7] === '0').length).toBeGreaterThanOrEqual(1);
+    expect(
+      worker
+        .slice(1)
+        .filter((r, i, all) => i > 0 && r.split(',')[7] === '1' && all[i - 1]!.split(',')[7] === '0').length,
+    ).toBeGreaterThanOrEqual(1);
   });
 
   test('a wrong program: the frame carries the overflow, located', () => {
@@ -72,4 +106,3 @@ describe('the tank in the simulation session', () => {
     expect(lastOf(h.of('error')).message).toMatch(/tank has no fault "boiler_burst"; it has low_stuck_off/);
   });
 });
-

@@ -8,7 +8,13 @@ import { formatDiagnostic } from '../../src/engine/compile/report';
 import { validateProject } from '../../src/model/load';
 
 const none = new Set<string>();
-const run = (s: TankState, drive: Record<string, boolean>, ms: number, faults = none, dt = 100): TankState => {
+const run = (
+  s: TankState,
+  drive: Record<string, boolean>,
+  ms: number,
+  faults = none,
+  dt = 100,
+): TankState => {
   for (let t = 0; t < ms; t += dt) s = tank.step(s, drive, dt, faults);
   return s;
 };
@@ -48,7 +54,9 @@ describe('the tank model', () => {
     const full = run(tank.initial(), { Pump: true, InletValve: true }, 40_000);
     expect(tank.sense(full, new Set(['high_stuck_off'])).HighLevel).toBe(false);
     expect(tank.sense(tank.initial(), new Set(['low_stuck_on'])).LowLevel).toBe(true);
-    expect(run(tank.initial(), { Pump: true, InletValve: true }, 5000, new Set(['pump_dead'])).level).toBe(100);
+    expect(run(tank.initial(), { Pump: true, InletValve: true }, 5000, new Set(['pump_dead'])).level).toBe(
+      100,
+    );
     const slow = run(tank.initial(), { Pump: true, InletValve: true }, 3000, new Set(['inlet_slow']));
     expect(slow.inlet).toBeCloseTo(0.2, 5);
   });
@@ -69,7 +77,8 @@ describe('the tank in closed loop', () => {
     const io = {
       outputs: () => ({ '%QX0.0': true, '%qx0.1': true }),
       setInputs: (v: Record<string, unknown>) => {
-        for (const k of Object.keys(v)) if (!['%IX0.2', '%IW0'].includes(k)) throw new Error(`${k}: no input variable`);
+        for (const k of Object.keys(v))
+          if (!['%IX0.2', '%IW0'].includes(k)) throw new Error(`${k}: no input variable`);
         Object.assign(image, v);
       },
     };
@@ -83,7 +92,9 @@ describe('the tank in closed loop', () => {
   });
 
   test('an address that does not fit a point is refused, named', () => {
-    expect(() => new PlantLoop(tank, { Pump: '%IX0.0' })).toThrow(/Pump: an actuator is a %Q output, not %IX0.0/);
+    expect(() => new PlantLoop(tank, { Pump: '%IX0.0' })).toThrow(
+      /Pump: an actuator is a %Q output, not %IX0.0/,
+    );
     expect(() => new PlantLoop(tank, { Level: '%IX1.0' })).toThrow(/Level: a INT point needs a %IW address/);
   });
 });
@@ -102,21 +113,32 @@ describe('the tank exercise', () => {
   });
 
   test('the wrong solution fails where the tank overflows', () => {
-    const scenario = { name: 'no overflow', csv: '# plant: tank\n# cycle: 100ms\nscan,tank.Start,expect Running\n1,1,\n3,0,1\n3000,,1\n' };
+    const scenario = {
+      name: 'no overflow',
+      csv: '# plant: tank\n# cycle: 100ms\nscan,tank.Start,expect Running\n1,1,\n3,0,1\n3000,,1\n',
+    };
     const { result } = runScenario(tankWrong(), scenario);
     expect(result.ok).toBe(false);
     expect(result.error).toMatch(/^the tank overflowed at scan \d{3}(,\d{3})? \(\d+\.\d\d s\)$/);
   });
 
   test('a fault from the scenario: the high switch stuck off overflows the reference too; expecting the count checks it', () => {
-    const csv = '# plant: tank\n# cycle: 100ms\nscan,tank.Start,fault high_stuck_off,expect tank.overflows\n1,1,1,\n3,0,,0\n1200,,,1\n';
+    const csv =
+      '# plant: tank\n# cycle: 100ms\nscan,tank.Start,fault high_stuck_off,expect tank.overflows\n1,1,1,\n3,0,,0\n1200,,,1\n';
     const { result } = runScenario(tankReference(), { name: 'stuck', csv });
     expect(result).toMatchObject({ ok: true, scans: 1200 });
   });
 
   test('a machine or name the scenario does not know is a located error', () => {
-    expect(runScenario(tankReference(), { name: 'x', csv: '# plant: boiler\nscan,Start\n1,1\n' }).result.error).toMatch(/line 1: there is no machine "boiler"; the machines are tank/);
-    expect(runScenario(tankReference(), { name: 'x', csv: '# plant: tank\nscan,expect tank.volume\n1,1\n' }).result.error).toMatch(/line 2: tank has no quantity or point "volume"/);
-    expect(runScenario(tankReference(), { name: 'x', csv: '# plant: tank\nscan,tank.Level\n1,1\n' }).result.error).toMatch(/only the machine's operator controls can be set/);
+    expect(
+      runScenario(tankReference(), { name: 'x', csv: '# plant: boiler\nscan,Start\n1,1\n' }).result.error,
+    ).toMatch(/line 1: there is no machine "boiler"; the machines are tank/);
+    expect(
+      runScenario(tankReference(), { name: 'x', csv: '# plant: tank\nscan,expect tank.volume\n1,1\n' }).result
+        .error,
+    ).toMatch(/line 2: tank has no quantity or point "volume"/);
+    expect(
+      runScenario(tankReference(), { name: 'x', csv: '# plant: tank\nscan,tank.Level\n1,1\n' }).result.error,
+    ).toMatch(/only the machine's operator controls can be set/);
   });
 });

@@ -41,7 +41,11 @@ export function PlantPanel() {
           ))}
         </select>
       </label>
-      {config && !model && <p className="rs-plant-error">The project names the machine "{config.id}", which this version does not have.</p>}
+      {config && !model && (
+        <p className="rs-plant-error">
+          The project names the machine "{config.id}", which this version does not have.
+        </p>
+      )}
       {model && <Machine model={model} map={config?.map ?? {}} />}
     </div>
   );
@@ -91,7 +95,13 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
 }
 
 /** Operator controls on the drawing: real buttons (keyboard, screen readers), placed over it. */
-function OperatorControls({ points, held }: { points: readonly PlantPoint[]; held: Readonly<Record<string, boolean>> }) {
+function OperatorControls({
+  points,
+  held,
+}: {
+  points: readonly PlantPoint[];
+  held: Readonly<Record<string, boolean>>;
+}) {
   const sim = useSimStore();
   const operators = points.filter((p) => p.kind === 'operator');
   const set = (name: string, value: boolean) => sim.getState().plantOperator(name, value);
@@ -99,12 +109,24 @@ function OperatorControls({ points, held }: { points: readonly PlantPoint[]; hel
     <div className="rs-plant-operator">
       {operators.map((p) =>
         p.control === 'switch' ? (
-          <button key={p.name} type="button" data-testid={`plant-op-${p.name}`} aria-pressed={held[p.name] === true} title={p.comment}
-            className={held[p.name] ? 'rs-plant-op on' : 'rs-plant-op'} onClick={() => set(p.name, !held[p.name])}>
+          <button
+            key={p.name}
+            type="button"
+            data-testid={`plant-op-${p.name}`}
+            aria-pressed={held[p.name] === true}
+            title={p.comment}
+            className={held[p.name] ? 'rs-plant-op on' : 'rs-plant-op'}
+            onClick={() => set(p.name, !held[p.name])}
+          >
             {p.name}
           </button>
         ) : (
-          <button key={p.name} type="button" data-testid={`plant-op-${p.name}`} aria-pressed={held[p.name] === true} title={`${p.comment}: held while pressed`}
+          <button
+            key={p.name}
+            type="button"
+            data-testid={`plant-op-${p.name}`}
+            aria-pressed={held[p.name] === true}
+            title={`${p.comment}: held while pressed`}
             className={held[p.name] ? 'rs-plant-op on' : 'rs-plant-op'}
             onPointerDown={(e) => {
               e.currentTarget.setPointerCapture?.(e.pointerId);
@@ -117,7 +139,8 @@ function OperatorControls({ points, held }: { points: readonly PlantPoint[]; hel
             }}
             onKeyUp={(e) => {
               if (e.key === ' ' || e.key === 'Enter') set(p.name, false);
-            }}>
+            }}
+          >
             {p.name}
           </button>
         ),
@@ -132,7 +155,8 @@ function Readouts({ model, state }: { model: PlantModel; state: unknown }) {
       <tbody>
         {model.quantities.map((q) => {
           const v = model.quantity(state, q.name);
-          const text = typeof v === 'boolean' ? (v ? 'yes' : 'no') : q.type === 'INT' ? String(v) : v.toFixed(1);
+          const text =
+            typeof v === 'boolean' ? (v ? 'yes' : 'no') : q.type === 'INT' ? String(v) : v.toFixed(1);
           return (
             <tr key={q.name} title={q.comment} data-testid={`plant-q-${q.name}`}>
               <th>{`${model.id}.${q.name}`}</th>
@@ -154,14 +178,25 @@ function Consequences() {
   const events = frame?.events ?? [];
   return (
     <div className="rs-plant-events" data-testid="plant-events">
-      <h4>Consequences{frame && frame.eventCount > events.length ? ` (newest ${events.length} of ${frame.eventCount})` : ''}</h4>
+      <h4>
+        Consequences
+        {frame && frame.eventCount > events.length ? ` (newest ${events.length} of ${frame.eventCount})` : ''}
+      </h4>
       {events.length === 0 ? (
         <p className="rs-plant-empty">None so far.</p>
       ) : (
         <ul>
           {events.map((e, i) => (
-            <li key={`${e.scan}-${e.id}-${i}`} className={e.severity === 'error' ? 'rs-plant-error' : 'rs-plant-warning'}>
-              <button type="button" className="rs-plant-link" title="Show this scan in the history" onClick={() => sim.getState().seekHistory(e.scan)}>
+            <li
+              key={`${e.scan}-${e.id}-${i}`}
+              className={e.severity === 'error' ? 'rs-plant-error' : 'rs-plant-warning'}
+            >
+              <button
+                type="button"
+                className="rs-plant-link"
+                title="Show this scan in the history"
+                onClick={() => sim.getState().seekHistory(e.scan)}
+              >
                 {e.text}
               </button>
             </li>
@@ -175,7 +210,9 @@ function Consequences() {
 function Faults({ model, active }: { model: PlantModel; active: readonly string[] }) {
   const sim = useSimStore();
   // A box shows what was asked until the worker's next frame says what is set.
-  const [asked, setAsked] = useState<{ readonly id: string; readonly on: boolean; readonly against: string } | undefined>();
+  const [asked, setAsked] = useState<
+    { readonly id: string; readonly on: boolean; readonly against: string } | undefined
+  >();
   const key = active.join(',');
   const pending = asked && asked.against === key ? asked : undefined;
   return (
@@ -183,11 +220,15 @@ function Faults({ model, active }: { model: PlantModel; active: readonly string[
       <legend>Faults</legend>
       {model.faults.map((f) => (
         <label key={f.id}>
-          <input type="checkbox" data-testid={`plant-fault-${f.id}`} checked={pending?.id === f.id ? pending.on : active.includes(f.id)}
+          <input
+            type="checkbox"
+            data-testid={`plant-fault-${f.id}`}
+            checked={pending?.id === f.id ? pending.on : active.includes(f.id)}
             onChange={(e) => {
               setAsked({ id: f.id, on: e.target.checked, against: key });
               sim.getState().plantFault(f.id, e.target.checked);
-            }} />{' '}
+            }}
+          />{' '}
           {f.title}
         </label>
       ))}
@@ -195,7 +236,15 @@ function Faults({ model, active }: { model: PlantModel; active: readonly string[
   );
 }
 
-function IoMap({ model, map, points }: { model: PlantModel; map: Readonly<Record<string, string>>; points: readonly PlantPoint[] }) {
+function IoMap({
+  model,
+  map,
+  points,
+}: {
+  model: PlantModel;
+  map: Readonly<Record<string, string>>;
+  points: readonly PlantPoint[];
+}) {
   const doc = useDocumentStore();
   const [problem, setProblem] = useState<string | undefined>();
   const [declared, setDeclared] = useState<string | undefined>();
@@ -203,7 +252,9 @@ function IoMap({ model, map, points }: { model: PlantModel; map: Readonly<Record
     const address = text.trim();
     if (address === point.address) return;
     const p = addressProblem(point, address);
-    const clash = points.find((q) => q.name !== point.name && q.address.toUpperCase() === address.toUpperCase());
+    const clash = points.find(
+      (q) => q.name !== point.name && q.address.toUpperCase() === address.toUpperCase(),
+    );
     if (p || clash) {
       setProblem(p ?? `${point.name}: ${address} is already ${clash!.name}'s address`);
       return;
@@ -219,13 +270,19 @@ function IoMap({ model, map, points }: { model: PlantModel; map: Readonly<Record
     const s = doc.getState();
     const project = s.project;
     const runs = project.tasks.flatMap((t) => t.programs.map((p) => p.pou.toUpperCase()));
-    const pou = project.pous.find((p) => p.kind === 'PROGRAM' && runs.includes(p.name.toUpperCase())) ?? project.pous.find((p) => p.kind === 'PROGRAM');
+    const pou =
+      project.pous.find((p) => p.kind === 'PROGRAM' && runs.includes(p.name.toUpperCase())) ??
+      project.pous.find((p) => p.kind === 'PROGRAM');
     if (!pou) {
       setDeclared('The project has no PROGRAM to declare the I/O in.');
       return;
     }
     const added = s.addVariables(plantVariables(model, map), "Declare the machine's I/O", pou.id);
-    setDeclared(added.length ? `Declared ${added.length} variable${added.length === 1 ? '' : 's'} in ${pou.name}: ${added.join(', ')}.` : `Every point is declared in ${pou.name} already.`);
+    setDeclared(
+      added.length
+        ? `Declared ${added.length} variable${added.length === 1 ? '' : 's'} in ${pou.name}: ${added.join(', ')}.`
+        : `Every point is declared in ${pou.name} already.`,
+    );
   };
   return (
     <div className="rs-plant-io">
@@ -236,20 +293,37 @@ function IoMap({ model, map, points }: { model: PlantModel; map: Readonly<Record
         </button>
       </h4>
       {declared && <p data-testid="plant-declared">{declared}</p>}
-      {problem && <p className="rs-plant-error" role="alert" data-testid="plant-io-problem">{problem}</p>}
+      {problem && (
+        <p className="rs-plant-error" role="alert" data-testid="plant-io-problem">
+          {problem}
+        </p>
+      )}
       <table data-testid="plant-io">
         <thead>
-          <tr><th>Address</th><th>Name</th><th>Type</th><th>Kind</th><th>Comment</th></tr>
+          <tr>
+            <th>Address</th>
+            <th>Name</th>
+            <th>Type</th>
+            <th>Kind</th>
+            <th>Comment</th>
+          </tr>
         </thead>
         <tbody>
           {points.map((p) => (
             <tr key={p.name}>
               <td>
-                <input key={p.address} type="text" size={7} defaultValue={p.address} aria-label={`Address of ${p.name}`} data-testid={`plant-address-${p.name}`}
+                <input
+                  key={p.address}
+                  type="text"
+                  size={7}
+                  defaultValue={p.address}
+                  aria-label={`Address of ${p.name}`}
+                  data-testid={`plant-address-${p.name}`}
                   onBlur={(e) => change(p, e.target.value)}
                   onKeyDown={(e) => {
                     if (e.key === 'Enter') change(p, e.currentTarget.value);
-                  }} />
+                  }}
+                />
               </td>
               <td>{p.name}</td>
               <td>{p.type}</td>
