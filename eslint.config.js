@@ -21,6 +21,8 @@ const above = {
   engine: ['plcopen', 'cli', 'sim', 'store', 'editor', 'bridge', 'gateway', 'protocol'],
   plcopen: ['cli', 'sim', 'store', 'editor', 'bridge', 'gateway', 'protocol'],
   protocol: ['engine', 'plcopen', 'cli', 'sim', 'store', 'editor', 'bridge', 'gateway'],
+  // Machines to control (issue 26) know the PLC only as an I/O image: below the engine's users.
+  plant: ['engine', 'plcopen', 'cli', 'sim', 'store', 'editor', 'bridge', 'gateway', 'protocol'],
 };
 
 export default tseslint.config(
@@ -38,5 +40,6 @@ export default tseslint.config(
   { files: ['src/model/**/*.ts'], rules: layer(above.model) },
   { files: ['src/engine/**/*.ts'], rules: layer(above.engine) },
   { files: ['src/plcopen/**/*.ts'], rules: layer(above.plcopen) },
+  { files: ['src/plant/**/*.ts'], rules: layer(above.plant) },
   { files: ['src/protocol/**/*.ts'], rules: layer(above.protocol, ['react', 'react-dom', 'konva', 'react-konva', 'zustand', 'ws', 'modbus-serial']) },
 );

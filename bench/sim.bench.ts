@@ -3,7 +3,8 @@
 // 2. how well it keeps a 10 ms cycle on that program;
 // 3. frame times (requestAnimationFrame deltas, median and p95) while it runs with the canvas visible,
 //    for the 1,000-network program and a 200-network one.
-// Last line: `bench:sim scans-per-s=<n> p95-frame-ms=<n> history-overhead-pct=<n> seek-ms=<n> search-ms=<n>`
+// 4. the cost of a machine in closed loop (the tank, issue 26) per scan of a 100-network program (plantFigures.ts).
+// Last line: `bench:sim scans-per-s=<n> p95-frame-ms=<n> history-overhead-pct=<n> seek-ms=<n> search-ms=<n> plant-us=<n> plant-pct=<n>`
 // (p95 of the 1,000-network run; scan history on a 100-network program in Node, see historyFigures.ts:
 // seek-ms the slowest of 300 seeks, search-ms the slowest search replaying all 100,000 scans).
 import { existsSync } from 'node:fs';
@@ -14,6 +15,7 @@ import type { Project } from '../src/model/project';
 import { launchChromium } from '../tests/e2e/browser';
 import { describeHistoryFigures, historyFigures } from './historyFigures';
 import { generateSimProgram } from './simProgram';
+import { describePlantFigures, plantFigures } from './plantFigures';
 
 const MEASURE_MS = 4000;
 
@@ -126,8 +128,10 @@ async function main() {
 
     const history = historyFigures();
     console.log(describeHistoryFigures(history));
+    const plant = plantFigures();
+    console.log(describePlantFigures(plant));
     console.log(
-      `bench:sim scans-per-s=${Math.round(fast.scansPerS)} p95-frame-ms=${bigFrames.p95.toFixed(1)} history-overhead-pct=${history.overheadPct.toFixed(0)} seek-ms=${history.seekMaxMs.toFixed(2)} search-ms=${Math.max(history.changeSearchMs, history.conditionSearchMs, history.conditionBackMs).toFixed(0)}`,
+      `bench:sim scans-per-s=${Math.round(fast.scansPerS)} p95-frame-ms=${bigFrames.p95.toFixed(1)} history-overhead-pct=${history.overheadPct.toFixed(0)} seek-ms=${history.seekMaxMs.toFixed(2)} search-ms=${Math.max(history.changeSearchMs, history.conditionSearchMs, history.conditionBackMs).toFixed(0)} plant-us=${plant.plantUs.toFixed(2)} plant-pct=${plant.overheadPct.toFixed(1)}`,
     );
   } finally {
     await browser.close();

@@ -8,6 +8,7 @@ Commands:
   export FILE.json -o OUT.xml    write a project as PLCopen TC6 XML v2.01
   import FILE.xml -o OUT.json    read PLCopen XML into a Rungsmith project
   test FILE [--junit OUT.xml]    run the project's test scenarios; exit 1 on any failure
+  plants [NAME]              list the machines to control, their I/O maps, faults and quantities
 
 Run "rungsmith <command> --help" for the options of a command.
 Exit codes: 0 ok, 1 the program has errors, 2 bad usage or unreadable input.`,
@@ -18,7 +19,7 @@ diagnostic:  SEVERITY RULE-ID pou/network:cell message
 (in an ST or IL body:  SEVERITY RULE-ID pou/line L col C message)
 Exits with 1 if there is any error, 0 otherwise (warnings alone exit 0).`,
   simulate: `Usage: rungsmith simulate FILE [--pou NAME] [--inputs STIM.csv] [--scans N] [--cycle 10ms]
-                          [--watch a,b,T1.Q] [--profile iec|openplc]
+                          [--watch a,b,T1.Q] [--profile iec|openplc] [--plant NAME]
 
 Runs N scans of a PROGRAM on the virtual clock and writes CSV to stdout:
   scan,time_ms,<watched...>   one row per scan after it ran; scan k starts at (k-1) x cycle.
@@ -38,6 +39,11 @@ Options:
                     default: every variable of the POU in declaration order, FB instances as
                     INSTANCE.PIN (a user FB's VAR_INPUTs and VAR_OUTPUTs)
   --profile NAME    semantics profile: iec (default: the project's) or openplc
+  --plant NAME      run the program in closed loop with a machine (rungsmith plants lists them):
+                    it advances after every scan by the scan's time; --watch and --inputs take its
+                    quantities and operator controls as NAME.x (tank.level, tank.Start) and its
+                    faults as "fault ID" columns (1 on, 0 off); consequences (the tank
+                    overflowed at scan N) are printed on stderr
 Errors (unknown variable, bad value, invalid program) go to stderr with a non-zero exit.`,
   export: `Usage: rungsmith export FILE.json -o OUT.xml
 
@@ -62,4 +68,9 @@ Options:
   --junit FILE      also write the results as JUnit XML (for CI systems)
   --scenario NAME   run only this scenario
 Exits with 1 if any scenario fails (or the project has none), 0 when all pass.`,
+  plants: `Usage: rungsmith plants [NAME]
+
+Lists the machines a program can control (docs/PLANTS.md): for each, its I/O map (default
+address, name, type, kind: sensor, actuator or operator control), its faults and the quantities
+scenarios and --watch read as NAME.quantity. With NAME, that machine alone, with its task.`,
 } as const;

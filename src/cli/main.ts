@@ -10,8 +10,9 @@ import { loadInput } from './input';
 import { UsageError, type CliIo } from './io';
 import { simulate } from './simulate';
 import { testProject } from './test';
+import { listPlants } from './plants';
 
-const COMMANDS = ['check', 'simulate', 'export', 'import', 'test'] as const;
+const COMMANDS = ['check', 'simulate', 'export', 'import', 'test', 'plants'] as const;
 type Command = (typeof COMMANDS)[number];
 
 function parse(command: Command, args: string[]) {
@@ -31,6 +32,7 @@ function parse(command: Command, args: string[]) {
               cycle: { type: 'string' },
               watch: { type: 'string' },
               profile: { type: 'string' },
+              plant: { type: 'string' },
             }
           : {}),
         ...(command === 'test' ? { junit: { type: 'string' }, scenario: { type: 'string' } } : {}),
@@ -67,6 +69,11 @@ function run(io: CliIo, argv: readonly string[]): number {
     io.out(`${HELP[command]}\n`);
     return 0;
   }
+  if (command === 'plants') {
+    if (positionals.length > 1) throw new UsageError(`plants takes at most one machine\n\n${HELP.plants}`);
+    io.out(listPlants(positionals[0]));
+    return 0;
+  }
   const file = oneFile(command, positionals);
   switch (command) {
     case 'check': {
@@ -93,6 +100,7 @@ function run(io: CliIo, argv: readonly string[]): number {
         ...(v.cycle !== undefined ? { cycle: v.cycle as string } : {}),
         ...(v.watch !== undefined ? { watch: v.watch as string } : {}),
         ...(profile ? { profile } : {}),
+        ...(v.plant !== undefined ? { plant: v.plant as string } : {}),
       });
     }
     case 'test': {

@@ -10,6 +10,8 @@ import { parseInterval } from '../plcopen/durations';
 import { UsageError, type CliIo } from './io';
 import { parseStimulus, type Stimulus } from './stimulus';
 import { csvRow } from '../sim/csv';
+import { requirePlant } from '../plant/machines';
+import { PlantLoop, plantValueType } from '../plant/loop';
 
 export interface SimulateOptions {
   readonly pou?: string;
@@ -18,6 +20,8 @@ export interface SimulateOptions {
   readonly cycle?: string;
   readonly watch?: string;
   readonly profile?: Profile;
+  /** A machine in closed loop with the program (`tank`): stepped after every scan. */
+  readonly plant?: string;
 }
 
 /** 10ms, 10, T#10ms, 0.5s → milliseconds. */
@@ -130,6 +134,19 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
   const cycleMs = scanCycle(program, opts.cycle, task?.cycleMs ?? 10);
   if (program.schedule?.multiRate) io.err(`one scan = one tick of ${cycleMs} ms: ${describeSchedule(program.schedule)}\n`);
   const plc = createPlc(program, { cycleMs });
+  let loop: PlantLoop | undefined;
+  if (opts.plant !== undefined) {
+    try {
+      const model = requirePlant(opts.plant);
+      loop = new PlantLoop(model, project.plant?.id === model.id ? project.plant.map : undefined, 0);
+    } catch (e) {
+      throw new UsageError(`--plant: ${(e as Error).message}`);
+    }
+    loop.bind(plc);
+  }
+  /** `tank.level`, `tank.Start`: the machine's; `fault high_stuck_off`: its fault. */
+  const onPlant = (name: string) => loop !== undefined && name.toLowerCase().startsWith(`${loop.model.id}.`);
+  const faultOf = (name: string) => (loop ? /^fault\s+(\S+)$/i.exec(name.trim())?.[1] : undefined);
   const names = plc.variableNames();
   const watch =
     opts.watch !== undefined
@@ -141,14 +158,24 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
         ? configuration.flatMap((c) => defaultWatch(project, c.pou, names, `${c.instance}.`))
         : defaultWatch(project, pou, names);
   const firstInstance = configuration?.[0]?.instance;
-  const watched = watch.map((w) => resolveName(program, w, firstInstance));
-  const types = watched.map((w) => typeOf(program, w));
+  const watched = watch.map((w) => (onPlant(w) ? w : resolveName(program, w, firstInstance)));
+  const types = watched.map((w): ElementaryType => {
+    if (!onPlant(w)) return typeOf(program, w);
+    const t = plantValueType(loop!.model, w);
+    if (!t) throw new UsageError(`--watch: ${loop!.model.id} has no quantity or point "${w.slice(loop!.model.id.length + 1)}" (rungsmith plants ${loop!.model.id} lists them)`);
+    return t;
+  });
+  const read = (w: string) => (onPlant(w) ? loop!.read(w) : plc.read(w));
   const stim: Stimulus | undefined = opts.stimulus
     ? parseStimulus(opts.stimulus.text, opts.stimulus.file)
     : undefined;
   const stimTypes = new Map<string, ElementaryType>();
   for (const c of stim?.columns ?? []) {
     try {
+      if (faultOf(c) !== undefined || onPlant(c)) {
+        stimTypes.set(c, 'BOOL');
+        continue;
+      }
       stimTypes.set(c, typeOf(program, resolveName(program, c, firstInstance)));
     } catch (e) {
       throw new UsageError(`${opts.stimulus!.file}: column "${c}": ${(e as Error).message}`);
@@ -166,7 +193,10 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
         if (!parsed.ok)
           throw new UsageError(`${opts.stimulus!.file} line ${row.line}, column ${name}: ${parsed.message}`);
         try {
-          plc.write(resolveName(program, name, firstInstance), parsed.value);
+          const fault = faultOf(name);
+          if (fault !== undefined) loop!.setFault(fault, parsed.value === true);
+          else if (onPlant(name)) loop!.setOperator(name.slice(loop!.model.id.length + 1), parsed.value === true);
+          else plc.write(resolveName(program, name, firstInstance), parsed.value);
         } catch (e) {
           throw new UsageError(
             `${opts.stimulus!.file} line ${row.line}, column ${name}: ${(e as Error).message}`,
@@ -180,8 +210,9 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
       io.err(`fault in scan ${k}: ${report.fault.message}\n`);
       return 1;
     }
+    for (const e of loop?.afterScan(k, (k - 1) * cycleMs, cycleMs) ?? []) io.err(`${e.severity} ${loop!.model.id}: ${e.text}\n`);
     const row = [String(k), String((k - 1) * cycleMs)];
-    watched.forEach((w, i) => row.push(csvValue(types[i]!, plc.read(w))));
+    watched.forEach((w, i) => row.push(csvValue(types[i]!, read(w))));
     // RFC 4180: a cell with a comma, a quote or a line break is quoted (STRING values).
     lines.push(csvRow(row));
   }

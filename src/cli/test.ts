@@ -5,6 +5,7 @@ import { explain, liveScanView } from '../engine/explain';
 import type { Project } from '../model/project';
 import { runScenario, type ScenarioResult } from '../sim/scenario';
 import { UsageError, type CliIo } from './io';
+import { plantById } from '../plant/machines';
 
 export interface TestOptions {
   readonly junit?: string;
@@ -63,7 +64,9 @@ export function testProject(io: CliIo, project: Project, opts: TestOptions): num
     const ms = performance.now() - t0;
     const r = run.result;
     let why: string[] = [];
-    if (!r.ok && run.plc && run.program && r.divergences[0]) {
+    // "Why?" explains a program variable; a machine's quantity (tank.level) has no network to explain.
+    const onMachine = r.divergences[0] !== undefined && plantById(r.divergences[0].name.split('.')[0]!) !== undefined;
+    if (!r.ok && run.plc && run.program && r.divergences[0] && !onMachine) {
       const pou = project.pous.find((p) => p.name.toUpperCase() === run.program!.pou.toUpperCase());
       if (pou) {
         const e = explain(run.program, pou, liveScanView(run.plc, run.program), { kind: 'variable', name: r.divergences[0].name });

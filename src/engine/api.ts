@@ -374,4 +374,16 @@ export interface Plc {
   importState(state: PlcState): StateTransfer;
   /** Raw access for recording every scan (scan history); optional for other implementations. */
   probe?(): PlcProbe;
+  /**
+   * One point of the I/O image by location, resolved once (a machine in closed loop reads and
+   * writes its points every scan, issue 26): an input's image (write: applied at the next input
+   * read, as setInputs), an output's image (read only). Undefined when no variable is declared there.
+   */
+  ioPoint?(location: string): IoPoint | undefined;
+}
+
+export interface IoPoint {
+  read(): Value;
+  /** Inputs only; throws for an output, or a value not of the variable's type. */
+  write(value: Value): void;
 }

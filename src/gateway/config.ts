@@ -80,6 +80,8 @@ export const configSchema = z.strictObject({
     .strictObject({
       /** Loopback port of the simulated device's Modbus TCP server; 0 picks a free port, null turns it off. */
       modbusPort: z.number().int().min(0).max(65535).nullable().default(5020),
+      /** A machine (docs/PLANTS.md) the device is: its sensors are the inputs, a Modbus master writes its actuators (virtual commissioning). */
+      plant: z.string().min(1).optional(),
     })
     .default({ modbusPort: 5020 }),
   devices: z.array(modbusDeviceSchema).default([]),

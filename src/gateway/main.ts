@@ -13,10 +13,12 @@ const SAFE_STATE_UNCONFIRMED = 3;
 
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
 
-const USAGE = `usage: rungsmith-gateway [--port N] [--config FILE] [--sim-port N] [--build-if-needed] [--no-app]
+const USAGE = `usage: rungsmith-gateway [--port N] [--config FILE] [--sim-port N] [--plant NAME] [--build-if-needed] [--no-app]
   --port N            HTTP + WebSocket port on 127.0.0.1 (default: PORT or 8080; 0 picks a free port)
   --config FILE       JSON config naming Modbus TCP devices (docs/GATEWAY-CONFIG.md)
   --sim-port N        Modbus TCP port of the simulated device on 127.0.0.1 (default 5020, 0: free port)
+  --plant NAME        the simulated device is that machine (docs/PLANTS.md), advancing in real time:
+                      a Modbus master (a real PLC) writes its actuators (coils) and reads its sensors
   --build-if-needed   run "vite build" when dist/ is missing or older than the sources
   --no-app            serve only the WebSocket endpoint /io
 env: RUNGSMITH_TOKEN fixes the token (else config "token", else a random 256-bit one)`;
@@ -25,6 +27,7 @@ interface Args {
   port?: number;
   config?: string;
   simPort?: number;
+  plant?: string;
   build: boolean;
   app: boolean;
 }
@@ -40,6 +43,11 @@ function parseArgs(argv: readonly string[]): Args {
     const a = argv[i];
     if (a === '--port') args.port = int('--port', argv[++i]);
     else if (a === '--sim-port') args.simPort = int('--sim-port', argv[++i]);
+    else if (a === '--plant') {
+      const name = argv[++i];
+      if (!name) throw new ConfigError('--plant', 'needs a machine name (rungsmith plants lists them)');
+      args.plant = name;
+    }
     else if (a === '--config') {
       const file = argv[++i];
       if (!file) throw new ConfigError('--config', 'needs a file name');
@@ -77,7 +85,8 @@ const isBrokenPipe = (e: unknown) => typeof e === 'object' && e !== null && 'cod
 async function main(): Promise<void> {
   const args = parseArgs(process.argv.slice(2));
   const base: ResolvedConfig = args.config ? loadConfigFile(args.config) : resolveConfig({});
-  const config: ResolvedConfig = args.simPort !== undefined ? { ...base, simulated: { modbusPort: args.simPort } } : base;
+  const withPort: ResolvedConfig = args.simPort !== undefined ? { ...base, simulated: { ...base.simulated, modbusPort: args.simPort } } : base;
+  const config: ResolvedConfig = args.plant !== undefined ? { ...withPort, simulated: { ...withPort.simulated, plant: args.plant } } : withPort;
   if (args.build && args.app) buildIfNeeded();
   const envPort = process.env.PORT !== undefined && process.env.PORT !== '' ? Number(process.env.PORT) : undefined;
   if (envPort !== undefined && (!Number.isInteger(envPort) || envPort < 0 || envPort > 65535)) throw new ConfigError('PORT', `is not a port number: ${process.env.PORT}`);
@@ -141,7 +150,7 @@ async function main(): Promise<void> {
   const gw = await startGateway({ port, config, distDir, token, log });
   running.gw = gw;
   const sim = gw.simulated?.modbusServerPort;
-  log(gw.simulated ? `simulated I/O device (16 DI, 16 DO, 4 AI, 4 AO)${sim ? `, Modbus TCP on 127.0.0.1:${sim}` : ''}` : `${config.devices.length} Modbus TCP device(s)`);
+  log(gw.simulated ? `simulated I/O device (16 DI, 16 DO, 4 AI, 4 AO)${sim ? `, Modbus TCP on 127.0.0.1:${sim}` : ''}${config.simulated.plant ? `; it is the machine "${config.simulated.plant}" (its actuators are the coils a Modbus master writes, docs/PLANTS.md)` : ''}` : `${config.devices.length} Modbus TCP device(s)`);
   try {
     process.stdout.write(`Rungsmith gateway: open ${gw.url}\n`);
   } catch {

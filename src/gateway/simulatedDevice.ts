@@ -6,6 +6,12 @@ import type { Quality, WireValue } from '../protocol/points';
 import { safeImage, type Device, type DeviceListener, type Values } from './device';
 import { freeLoopbackPort, ModbusServer } from './modbusLib';
 import { expandPoints, type DevicePoint } from './pointMap';
+import { requirePlant } from '../plant/machines';
+import { addressKey, PlantLoop } from '../plant/loop';
+import type { Value } from '../model/iecTypes';
+
+/** A machine's step in real time (virtual commissioning): every this many ms of wall time. */
+const PLANT_STEP_MS = 20;
 
 export const SIMULATED_DEVICE_ID = 'sim';
 /** Writable windows for driving the simulated inputs over Modbus (OpenPLC leaves these free). */
@@ -37,9 +43,22 @@ export class SimulatedDevice implements Device {
   private final = false;
   private server: ModbusServer | undefined;
   private port: number | undefined;
+  /** `--plant`: the machine whose I/O this device is, and its real-time stepping. */
+  private readonly plant: PlantLoop | undefined;
+  private plantTimer: ReturnType<typeof setInterval> | undefined;
 
-  /** @param modbusPort loopback port of the Modbus server (0: any free port; null: no server). */
-  constructor(private readonly modbusPort: number | null) {}
+  /**
+   * @param modbusPort loopback port of the Modbus server (0: any free port; null: no server).
+   * @param plant a machine (`tank`): its sensors drive the inputs, its actuators are the coils a Modbus master writes.
+   */
+  constructor(private readonly modbusPort: number | null, plant?: string) {
+    this.plant = plant === undefined ? undefined : new PlantLoop(requirePlant(plant), {}, 0);
+  }
+
+  /** `--plant`: the machine's quantity (`level`), for tests and logs. */
+  plantRead(name: string): Value | undefined {
+    return this.plant?.read(name);
+  }
 
   /** The loopback port the Modbus server listens on, once started. */
   get modbusServerPort(): number | undefined {
@@ -61,6 +80,7 @@ export class SimulatedDevice implements Device {
 
   async start(listener: DeviceListener): Promise<void> {
     this.listener = listener;
+    if (this.plant) this.startPlant(this.plant);
     if (this.modbusPort === null) return;
     await this.startModbusServer(this.modbusPort === 0 ? await freeLoopbackPort() : this.modbusPort);
   }
@@ -114,7 +134,34 @@ export class SimulatedDevice implements Device {
     if (changed.size) this.listener?.written(changed);
   }
 
+  /** The machine in real time: its actuators are the %Q values (written by a Modbus master), its sensors set the %I values. */
+  private startPlant(loop: PlantLoop): void {
+    const io = {
+      outputs: () => Object.fromEntries([...this.values].filter(([a]) => a.startsWith('%Q'))) as Record<string, Value>,
+      setInputs: (values: Readonly<Record<string, Value>>) => {
+        const map = new Map<string, WireValue>();
+        for (const [address, value] of Object.entries(values)) {
+          const key = [...this.values.keys()].find((a) => addressKey(a) === addressKey(address) && a.startsWith('%I'));
+          if (key === undefined) throw new Error(`${address}: the simulated device has no such input`);
+          map.set(key, typeof value === 'bigint' ? Number(value) : (value as WireValue));
+        }
+        this.setInputs(map);
+      },
+    };
+    loop.bind(io);
+    const t0 = Date.now();
+    let k = 0;
+    let last = 0;
+    this.plantTimer = setInterval(() => {
+      const now = Date.now() - t0;
+      loop.afterScan(++k, last, now - last);
+      last = now;
+    }, PLANT_STEP_MS);
+  }
+
   async close(): Promise<void> {
+    if (this.plantTimer) clearInterval(this.plantTimer);
+    this.plantTimer = undefined;
     const server = this.server;
     this.server = undefined;
     if (!server) return;
@@ -146,6 +193,12 @@ export class SimulatedDevice implements Device {
       getInputRegister: (addr: number) => word(this.read('inputRegisters', addr)),
       getHoldingRegister: (addr: number) => word(this.read('holdingRegisters', addr)),
       setCoil: (addr: number, value: boolean) => {
+        // Virtual commissioning: the Modbus master is the PLC and drives the machine's actuators.
+        const actuator = this.plant && addr < SIM_INPUT_COIL_BASE ? this.byTable.get(`coils:${addr}`) : undefined;
+        if (actuator) {
+          this.writeOutputs(new Map([[actuator.address, value]]));
+          return;
+        }
         if (addr < SIM_INPUT_COIL_BASE) throw this.byTable.has(`coils:${addr}`) ? ILLEGAL_FUNCTION : ILLEGAL_ADDRESS;
         this.driveInput('discreteInputs', addr - SIM_INPUT_COIL_BASE, value);
       },

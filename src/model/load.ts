@@ -215,6 +215,7 @@ export const projectSchema = z
     dataTypes: z.array(dataTypeSchema).optional(),
     libraries: z.array(librarySchema).optional(),
     onlineChange: z.enum(['edit', 'request']).optional(),
+    plant: z.object({ id: z.string().min(1), map: z.record(z.string(), z.string().min(1)).optional() }).strict().optional(),
     extensions,
   })
   .strict();

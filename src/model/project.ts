@@ -293,7 +293,18 @@ export interface Project {
    * program until Apply, which lists the changes first. Not part of the program.
    */
   readonly onlineChange?: OnlineChangeMode;
+  /**
+   * The machine the program controls in the simulator (issue 26, docs/PLANTS.md) and the addresses
+   * of its points the user changed (point name -> address). Not part of the program.
+   */
+  readonly plant?: ProjectPlant;
   readonly extensions?: Readonly<Record<string, unknown>>;
 }
 
 export type OnlineChangeMode = 'edit' | 'request';
+
+export interface ProjectPlant {
+  /** The machine's id (`tank`). */
+  readonly id: string;
+  readonly map?: Readonly<Record<string, string>>;
+}

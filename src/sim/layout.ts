@@ -155,7 +155,7 @@ export function isProgramView(layout: SimLayout, view: SimView | undefined = lay
 }
 
 /** Keys that change nothing the program does (left out of fingerprints). */
-const NOT_BEHAVIOUR = new Set(['title', 'comment', 'collapsed', 'description', 'scenarios', 'watch', 'onlineChange']);
+const NOT_BEHAVIOUR = new Set(['title', 'comment', 'collapsed', 'description', 'scenarios', 'watch', 'onlineChange', 'plant']);
 const behaviourOnly = (key: string, value: unknown) => (NOT_BEHAVIOUR.has(key) ? undefined : value);
 
 /** A part of a document (a network, a variable) as JSON without what changes nothing the program does. */

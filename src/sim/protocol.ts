@@ -12,6 +12,8 @@ import type { Project, Scenario } from '../model/project';
 import type { ExplainTarget, Explanation } from '../engine/explain';
 import type { ProgramInstance } from './runTarget';
 import type { ScenarioResult } from './scenario';
+import type { PlantFrame } from './sessionPlant';
+import type { PlantSnapshot } from '../plant/loop';
 
 export const SIM_PROTOCOL_VERSION = 1;
 
@@ -119,6 +121,13 @@ export type HostMessage =
    * after the first divergent scan; answered with `scenarioReplayed`.
    */
   | { readonly type: 'replayScenario'; readonly id: number; readonly project: Project; readonly scenario: Scenario; readonly epoch?: number; readonly docSeq?: number }
+  // ---- the machine in closed loop (issue 26) ----
+  /** Attach a machine (its id and the addresses the user changed), or none. */
+  | { readonly type: 'setPlant'; readonly plant: { readonly id: string; readonly map?: Readonly<Record<string, string>> } | null }
+  /** An operator control on the machine (a button held, a switch turned): read by the next scan. */
+  | { readonly type: 'plantOperator'; readonly name: string; readonly value: boolean }
+  /** A fault on the machine, on or off from the next step. */
+  | { readonly type: 'plantFault'; readonly id: string; readonly active: boolean }
   | GatewayHostMessage;
 
 /**
@@ -179,6 +188,8 @@ export interface HistoryView {
   readonly pins: readonly Value[];
   /** The shown body is ST/IL: what it did in that scan. */
   readonly text?: SimTextTrace;
+  /** The machine as it was after that scan, when one is attached and the scan is still kept. */
+  readonly plant?: PlantSnapshot;
 }
 
 /** A breakpoint on a statement of an ST/IL POU. */
@@ -338,6 +349,8 @@ export interface SimFrame {
   readonly history?: HistoryRange;
   /** The shown body is ST/IL: what it did in the last (or current) scan. */
   readonly text?: SimTextTrace;
+  /** The machine in closed loop with the program, when one is attached. */
+  readonly plant?: PlantFrame;
 }
 
 /** What an online change keeps and resets (FB instances by name, edge elements by element id). */

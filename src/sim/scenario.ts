@@ -11,6 +11,11 @@
 // within TOL (TIME in ms or with a unit: `50ms`, `T#0.1s`). Comment lines `# cycle: 100ms` and
 // `# pou: Main` set the cycle and the PROGRAM. Used by the Tests panel, the worker (replay into the
 // timeline) and `rungsmith test`.
+//
+// `# plant: tank` runs the program in closed loop with that machine (issue 26, src/plant): columns
+// `tank.Start` operate its controls, `fault high_stuck_off` columns (1/0) set its faults,
+// `expect tank.level` checks its state, and a consequence (the tank overflowed) fails the scenario
+// at the scan it happened.
 import type { Plc, TaskSchedule } from '../engine/api';
 import { tickConflict } from '../engine/compile/taskSchedule';
 import type { CompiledProgram } from '../engine/plc';
@@ -20,10 +25,14 @@ import type { ElementaryType, Value } from '../model/iecTypes';
 import type { Project, Scenario } from '../model/project';
 import { readCsv } from './csv';
 import { runOptions } from './runTarget';
+import { requirePlant } from '../plant/machines';
+import { PlantLoop, plantValueType } from '../plant/loop';
+import type { PlantModel } from '../plant/types';
 
 export interface ScenarioColumn {
   readonly name: string;
-  readonly kind: 'input' | 'expect';
+  /** fault: a machine's fault (`fault high_stuck_off`), on while the cell is 1. */
+  readonly kind: 'input' | 'expect' | 'fault';
   /** Accepted difference (TIME in ms). */
   readonly tolerance?: number;
 }
@@ -39,6 +48,8 @@ export interface ParsedScenario {
   readonly name: string;
   readonly cycleMs?: number;
   readonly pou?: string;
+  /** The machine the program runs against (`# plant: tank`). */
+  readonly plant?: string;
   readonly columns: readonly ScenarioColumn[];
   readonly rows: readonly ScenarioRow[];
   /** Scans to run: the last row's scan. */
@@ -57,6 +68,7 @@ export class ScenarioError extends Error {
   }
 }
 
+const FAULT_RE = /^fault[:\s]\s*(\S+)\s*$/i;
 const EXPECT_RE = /^expect[:\s]\s*(.+?)\s*(?:~\s*(.+))?$/i;
 
 function toleranceOf(text: string, line: number): number {
@@ -76,10 +88,18 @@ export function parseScenario(text: string, name = 'scenario'): ParsedScenario {
   }
   let cycleMs: number | undefined;
   let pou: string | undefined;
+  let plant: string | undefined;
   for (const c of read.comments) {
-    const m = /^(cycle|pou)\s*:\s*(.+)$/i.exec(c.cells[0]!);
+    const m = /^(cycle|pou|plant)\s*:\s*(.+)$/i.exec(c.cells[0]!);
     if (!m) continue;
     if (m[1]!.toLowerCase() === 'pou') pou = m[2]!.trim();
+    else if (m[1]!.toLowerCase() === 'plant') {
+      try {
+        plant = requirePlant(m[2]!).id;
+      } catch (e) {
+        throw new ScenarioError(c.line, (e as Error).message);
+      }
+    }
     else {
       const ms = toleranceOf(m[2]!, c.line);
       if (!(ms > 0)) throw new ScenarioError(c.line, `cycle "${m[2]}" must be a positive duration`);
@@ -91,6 +111,11 @@ export function parseScenario(text: string, name = 'scenario'): ParsedScenario {
     throw new ScenarioError(head?.line ?? 1, 'the first line must be the header scan,<input>,...,expect <variable>,...');
   const columns: ScenarioColumn[] = head.cells.slice(1).map((cell, i) => {
     if (cell === '') throw new ScenarioError(head.line, `column ${i + 2} has no variable name`);
+    const f = FAULT_RE.exec(cell);
+    if (f) {
+      if (!plant) throw new ScenarioError(head.line, `column "${cell}": a fault needs a machine (# plant: tank) before the header`);
+      return { name: f[1]!, kind: 'fault' };
+    }
     const m = EXPECT_RE.exec(cell);
     if (!m) return { name: cell, kind: 'input' };
     return { name: m[1]!, kind: 'expect', ...(m[2] ? { tolerance: toleranceOf(m[2], head.line) } : {}) };
@@ -112,7 +137,7 @@ export function parseScenario(text: string, name = 'scenario'): ParsedScenario {
     rows.push({ scan, line: r.line, cells });
   }
   if (rows.length === 0) throw new ScenarioError(head.line, 'the scenario has no rows');
-  return { name, columns, rows, scans: last, headerLine: head.line, ...(cycleMs !== undefined ? { cycleMs } : {}), ...(pou ? { pou } : {}) };
+  return { name, columns, rows, scans: last, headerLine: head.line, ...(cycleMs !== undefined ? { cycleMs } : {}), ...(pou ? { pou } : {}), ...(plant ? { plant } : {}) };
 }
 
 /** Where a run first differed from the scenario. */
@@ -142,7 +167,12 @@ interface Check {
   readonly tolerance: number;
 }
 
-function typeOf(program: CompiledProgram, name: string, line: number): ElementaryType {
+function typeOf(program: CompiledProgram, name: string, line: number, plant: PlantModel | undefined): ElementaryType {
+  if (plant && name.toLowerCase().startsWith(`${plant.id}.`)) {
+    const t = plantValueType(plant, name);
+    if (!t) throw new ScenarioError(line, `${plant.id} has no quantity or point "${name.slice(plant.id.length + 1)}" (rungsmith plants lists them)`);
+    return t;
+  }
   const r = program.symbols.resolve(name, { literals: false, implicitLocations: false });
   if (!r.ok) throw new ScenarioError(line, `unknown variable "${name}": ${r.message}`);
   if (r.access.kind === 'const') throw new ScenarioError(line, `"${name}" is a constant, not a variable`);
@@ -162,19 +192,33 @@ function matches(check: Check, actual: Value): boolean {
 /** A scenario prepared for one compiled program: values parsed at the variables' types. */
 export interface PreparedScenario {
   readonly parsed: ParsedScenario;
-  readonly inputs: readonly (readonly { readonly name: string; readonly value: Value }[])[];
+  /** What each row sets before its scan: a program variable, a machine's control (`tank.Start`) or fault. */
+  readonly inputs: readonly (readonly { readonly name: string; readonly value: Value; readonly target?: 'plant' | 'fault' }[])[];
   readonly checks: readonly (readonly Check[])[];
   readonly types: readonly ElementaryType[];
 }
 
 export function prepareScenario(parsed: ParsedScenario, program: CompiledProgram): PreparedScenario {
-  const types = parsed.columns.map((c) => typeOf(program, c.name, parsed.headerLine));
+  const plant = parsed.plant ? requirePlant(parsed.plant) : undefined;
+  const types = parsed.columns.map((c): ElementaryType => {
+    if (c.kind !== 'fault') return typeOf(program, c.name, parsed.headerLine, plant);
+    if (!plant!.faults.some((f) => f.id === c.name.toLowerCase()))
+      throw new ScenarioError(parsed.headerLine, `${plant!.id} has no fault "${c.name}"; it has ${plant!.faults.map((f) => f.id).join(', ')}`);
+    return 'BOOL';
+  });
+  const onPlant = (name: string) => plant !== undefined && name.toLowerCase().startsWith(`${plant.id}.`);
   const inputs = parsed.rows.map((row) =>
     [...row.cells].flatMap(([i, text]) => {
       const col = parsed.columns[i]!;
-      if (col.kind !== 'input') return [];
+      if (col.kind === 'expect') return [];
       const r = parseValueText(types[i]!, text);
-      if (!r.ok) throw new ScenarioError(row.line, `column ${col.name}: ${r.message}`);
+      if (!r.ok) throw new ScenarioError(row.line, `column ${col.kind === 'fault' ? 'fault ' : ''}${col.name}: ${r.message}`);
+      if (col.kind === 'fault') return [{ name: col.name, value: r.value, target: 'fault' as const }];
+      if (onPlant(col.name)) {
+        const point = plant!.points.find((p) => `${plant!.id}.${p.name}`.toLowerCase() === col.name.toLowerCase());
+        if (point?.kind !== 'operator') throw new ScenarioError(parsed.headerLine, `column ${col.name}: only the machine's operator controls can be set (${plant!.points.filter((p) => p.kind === 'operator').map((p) => `${plant!.id}.${p.name}`).join(', ')}); check its state with expect ${col.name}`);
+        return [{ name: point.name, value: r.value, target: 'plant' as const }];
+      }
       return [{ name: col.name, value: r.value }];
     }),
   );
@@ -195,21 +239,41 @@ export function prepareScenario(parsed: ParsedScenario, program: CompiledProgram
  * Runs a prepared scenario on a PLC (cold restarted by the caller): inputs written before each
  * row's scan, checks after it. Stops after the first scan that diverges. `afterScan` sees every scan.
  */
-export function runPrepared(plc: Plc, prep: PreparedScenario, afterScan?: (scan: number) => void): Omit<ScenarioResult, 'name'> {
+export function runPrepared(
+  plc: Plc,
+  prep: PreparedScenario,
+  afterScan?: (scan: number) => void,
+  plant?: { readonly loop: PlantLoop; readonly cycleMs: number },
+): Omit<ScenarioResult, 'name'> {
   const { parsed } = prep;
+  if (parsed.plant && !plant) throw new ScenarioError(0, `the scenario runs against the machine ${parsed.plant}, which was not attached (internal)`);
+  const loop = plant?.loop;
+  loop?.bind(plc);
+  const checked = new Set(parsed.columns.filter((c) => c.kind === 'expect').map((c) => c.name.toLowerCase()));
   let row = 0;
   for (let scan = 1; scan <= parsed.scans; scan++) {
     const at = parsed.rows[row]?.scan === scan ? row : -1;
-    if (at >= 0) for (const { name, value } of prep.inputs[at]!) plc.write(name, value);
+    if (at >= 0)
+      for (const { name, value, target } of prep.inputs[at]!) {
+        if (target === 'plant') loop!.setOperator(name, value === true);
+        else if (target === 'fault') loop!.setFault(name, value === true);
+        else plc.write(name, value);
+      }
     const report = plc.scan();
+    if (report.fault) {
+      afterScan?.(scan);
+      return { ok: false, scans: scan, divergences: [], error: `scan ${scan}: ${report.fault.message}` };
+    }
     afterScan?.(scan);
-    if (report.fault) return { ok: false, scans: scan, divergences: [], error: `scan ${scan}: ${report.fault.message}` };
+    const events = loop?.afterScan(scan, (scan - 1) * plant!.cycleMs, plant!.cycleMs);
+    const harm = events?.find((e) => e.severity === 'error' && !(e.counter && checked.has(`${loop!.model.id}.${e.counter}`.toLowerCase())));
+    if (harm) return { ok: false, scans: scan, divergences: [], error: harm.text };
     if (at < 0) continue;
     row++;
     const divergences: Divergence[] = [];
     for (const check of prep.checks[at]!) {
       const col = parsed.columns[check.column]!;
-      const actual = plc.read(col.name);
+      const actual = loop && col.name.toLowerCase().startsWith(`${loop.model.id}.`) ? loop.read(col.name) : plc.read(col.name);
       if (!matches(check, actual))
         divergences.push({
           scan,
@@ -275,6 +339,12 @@ export function runScenario(project: Project, scenario: Scenario): ScenarioRun {
     return fail((e as Error).message);
   }
   const plc = createPlc(program, { cycleMs });
-  const r = runPrepared(plc, prep);
+  let r: Omit<ScenarioResult, 'name'>;
+  try {
+    const plant = parsed.plant ? { loop: new PlantLoop(requirePlant(parsed.plant), project.plant?.id === parsed.plant ? project.plant.map : undefined), cycleMs } : undefined;
+    r = runPrepared(plc, prep, undefined, plant);
+  } catch (e) {
+    return fail((e as Error).message);
+  }
   return { result: { name: scenario.name, ...r }, ...(r.ok ? {} : { plc, program }) };
 }

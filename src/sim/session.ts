@@ -28,6 +28,7 @@ import { plcScanWithClock, programLayout, type SinceColdStart } from './scenario
 import type { SimEngine } from './simEngine';
 import { withYieldPoints } from '../engine/yieldPoint';
 import { applyDelta } from './projectDelta';
+import { SessionPlant } from './sessionPlant';
 
 export interface SessionDeps {
   readonly engine: SimEngine;
@@ -112,6 +113,8 @@ export class SimSession {
    * mapped to the new program (carryDisplay): shown until the new program runs a network.
    */
   private carried: { plc: Plc; shown: ShownScan } | undefined;
+  /** The machine in closed loop with the program (issue 26). */
+  private readonly plant = new SessionPlant();
 
   constructor(private readonly deps: SessionDeps) {
     this.runner = new ScanRunner(
@@ -121,6 +124,9 @@ export class SimSession {
         scanCompleted: (plc, startTime) => {
           if (this.trend.active) this.trend.record(this.scanBase + plc.scanCount, startTime, (n) => plc.read(n));
           this.recorder?.record(this.scanBase + plc.scanCount, startTime);
+          // The machine after the scan is recorded as it ran (the recorder takes its input image):
+          // outputs are written, the next scan's inputs not yet read.
+          if (this.plant.active) this.plant.afterScan(this.scanBase + plc.scanCount, startTime, this.runner.cycleMs);
           if (this.outputsSubscribed) this.postOutputs();
         },
         stopped: (outcome) => this.stoppedAt(outcome),
@@ -280,11 +286,27 @@ export class SimSession {
           sinceColdStart: this.sinceColdStart,
           cycleMs: this.runner.cycleMs,
           text: this.textTarget(),
-          post: (message, transfer) => this.deps.post(message, transfer),
+          post: (message, transfer) => {
+            // A recorded scan shows the machine as it was then.
+            const plant = message.type === 'historyView' ? this.plant.at(message.view.scan) : undefined;
+            this.deps.post(plant && message.type === 'historyView' ? { ...message, view: { ...message.view, plant } } : message, transfer);
+          },
         });
         return;
       case 'replayScenario':
         this.replayScenario(m.id, m.project, m.scenario);
+        return;
+      case 'setPlant':
+        this.plant.configure(m.plant, this.plc);
+        this.postFrame();
+        return;
+      case 'plantOperator':
+        this.plant.setOperator(m.name, m.value);
+        this.postFrame();
+        return;
+      case 'plantFault':
+        this.plant.setFault(m.id, m.active);
+        this.postFrame();
         return;
       case 'subscribeOutputs':
         this.outputsSubscribed = m.enabled;
@@ -446,6 +468,7 @@ export class SimSession {
     if (this.plc) carryForces(this.plc, next.plc);
     this.inputKeys = inputKeysOf(next.layout);
     this.bindInputs(next.plc, this.inputKeys, this.gatewayInputs);
+    this.plant.install(next.plc, !online);
     this.plc = next.plc;
     this.layout = next.layout;
     this.loaded = next;
@@ -559,6 +582,7 @@ export class SimSession {
       this.plc.clearFault();
       this.plc.coldRestart();
     }
+    this.plant.coldRestart(this.plc);
     this.resetCounters();
     this.mode = 'stopped';
     this.postFrame();
@@ -615,7 +639,8 @@ export class SimSession {
   }
 
   private frame(): SimFrame {
-    return buildFrame({
+    const plant = this.plant.frame();
+    const frame = buildFrame({
       mode: this.mode,
       plc: this.plc,
       layout: this.layout,
@@ -630,6 +655,7 @@ export class SimSession {
       ...(this.loaded ? { project: this.loaded.project } : {}),
       text: this.textTarget(),
     });
+    return plant ? { ...frame, plant } : frame;
   }
 
   // ---- scan history, "Why?" and scenario replay (issue 14) ------------------------------------
@@ -644,6 +670,7 @@ export class SimSession {
     try {
       const parsed = parseScenario(scenario.csv, scenario.name);
       const prep = prepareScenario(parsed, this.loaded!.program as CompiledProgram);
+      const plantLoop = parsed.plant ? this.plant.forScenario(parsed.plant) : undefined;
       const cycle = scenarioCycle(project, parsed, plc.pou, plc.schedule);
       this.runner.setCycle(cycle);
       if (this.layout) this.layout = { ...this.layout, cycleMs: cycle };
@@ -653,6 +680,7 @@ export class SimSession {
         plcScanWithClock(plc, (scan) => clock.set((last = (scan - 1) * cycle))),
         prep,
         (scan) => this.recorder?.record(scan, (scan - 1) * cycle),
+        plantLoop && { loop: plantLoop, cycleMs: cycle },
       );
       this.runner.continueAfter(last);
       result = { name: scenario.name, ...run };

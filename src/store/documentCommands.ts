@@ -64,6 +64,7 @@ type Commands = Omit<
   | 'redoName'
   | 'loadProject'
   | 'setWatchList'
+  | 'setPlant'
   | 'newProject'
   | 'markSaved'
   | 'setActivePou'
@@ -307,6 +308,18 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
       const changes: Change[] = [{ type: 'variable.add', scope: sc, index: vars.length, variable: v }];
       commit('addVariable', [...changes, ...followInterface(get().project, sc, changes)]);
       return true;
+    },
+    addVariables: (vs, stepName, scope) => {
+      const { scope: sc, vars } = scopeVars(scope);
+      const taken = new Set(vars.map((w) => w.name.toUpperCase()));
+      const changes: Change[] = [];
+      for (const v of vs) {
+        if (taken.has(v.name.toUpperCase())) continue;
+        taken.add(v.name.toUpperCase());
+        changes.push({ type: 'variable.add', scope: sc, index: vars.length + changes.length, variable: v });
+      }
+      if (changes.length > 0) commit(stepName, [...changes, ...followInterface(get().project, sc, changes)]);
+      return changes.map((c) => (c.type === 'variable.add' ? c.variable.name : ''));
     },
     updateVariable: (name, patch, scope) => {
       const { scope: sc, vars } = scopeVars(scope);

@@ -86,7 +86,7 @@ import { newProject as makeProject } from '../model/factory';
 import { stableLibrary } from './stableLibrary';
 import type { Cell } from '../model/grid';
 import type { ElementId, NetworkId, PouId } from '../model/ids';
-import type { Network, Pou, Profile, Project, Variable } from '../model/project';
+import type { Network, Pou, Profile, Project, ProjectPlant, Variable } from '../model/project';
 import {
   applyChanges,
   diffNetwork,
@@ -134,6 +134,8 @@ export interface DocumentState {
   loadProject(p: Project): void;
   /** The simulator's watch list kept with the project (not an undo step: no edit of the program). */
   setWatchList(names: readonly string[]): void;
+  /** The machine the simulator runs against and its changed addresses, kept with the project (not an undo step: no edit of the program). */
+  setPlant(plant: ProjectPlant | undefined): void;
   newProject(name?: string): void;
   markSaved(): void;
   setActivePou(id: PouId): void;
@@ -186,6 +188,11 @@ export interface DocumentState {
   ): boolean;
 
   addVariable(v: Variable, scope?: VariableScope): boolean;
+  /**
+   * Adds several variables as one undo step named `stepName` (Declare the machine's I/O). Those
+   * whose name is taken in the scope are left out; returns the names added.
+   */
+  addVariables(vs: readonly Variable[], stepName: string, scope?: VariableScope): string[];
   updateVariable(name: string, patch: Partial<Variable>, scope?: VariableScope): boolean;
   deleteVariable(name: string, scope?: VariableScope): void;
   reorderVariables(names: readonly string[], scope?: VariableScope): boolean;
@@ -278,6 +285,12 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
         const s = get();
         const { watch: _old, ...rest } = s.project;
         const project: Project = names.length > 0 ? { ...rest, watch: [...names] } : rest;
+        set({ project, dirty: true, revision: s.revision + 1 });
+      },
+      setPlant: (plant) => {
+        const s = get();
+        const { plant: _old, ...rest } = s.project;
+        const project: Project = plant ? { ...rest, plant } : rest;
         set({ project, dirty: true, revision: s.revision + 1 });
       },
       newProject: (name) => set(reset(makeProject(name))),

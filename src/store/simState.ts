@@ -11,6 +11,8 @@ import type { ChangeList } from '../sim/changeList';
 import type { OnlineChangeMode } from '../model/project';
 import type { CanvasScope, ShownPou } from '../sim/scope';
 import type { TrendBuffer } from '../sim/trendBuffer';
+import type { PlantFrame } from '../sim/sessionPlant';
+import type { PlantSnapshot } from '../plant/loop';
 
 export interface CompileRefusal {
   readonly diagnostics: readonly Diagnostic[];
@@ -117,6 +119,10 @@ export interface SimState {
   readonly historyMessage: string | undefined;
   /** "Why?" of the viewed scan, and whether one is being worked out. */
   readonly explanation: Explanation | undefined;
+  /** The machine in closed loop with the program (issue 26), as the worker last showed it. */
+  readonly plant: PlantFrame | undefined;
+  /** The machine at the recorded scan viewed (historyScan), when the history still has it. */
+  readonly plantAtScan: PlantSnapshot | undefined;
 
   run(project: Project): void;
   pause(): void;
@@ -192,6 +198,12 @@ export interface SimState {
   exportHistory(request: { format: 'trace' | 'scenario'; names?: string[]; inputs?: string[]; outputs?: string[] }): Promise<string>;
   /** Runs a scenario in the simulator (recorded, paused at the first divergent scan). */
   replayScenario(project: Project, scenario: Scenario): Promise<ScenarioResult>;
+  // ---- the machine in closed loop (issue 26) ----
+  /** Attaches a machine with the addresses the user changed, or none. */
+  setPlant(plant: { readonly id: string; readonly map?: Readonly<Record<string, string>> } | null): void;
+  /** An operator control on the machine: a button held (true) or released, a switch turned. */
+  plantOperator(name: string, value: boolean): void;
+  plantFault(id: string, active: boolean): void;
 }
 
 export type SimStore = StoreApi<SimState>;

@@ -203,6 +203,8 @@ export function createSimStore(transport: SimTransport): SimStore {
       historyTimeMs: undefined,
       historyMessage: undefined,
       explanation: undefined,
+      plant: undefined,
+      plantAtScan: undefined,
 
       run: (project) => {
         followNext = true;
@@ -359,6 +361,9 @@ export function createSimStore(transport: SimTransport): SimStore {
         send({ type: 'load', ...packDocument(project), epoch: nextEpoch(), confirm: true });
       },
       setInputs: (values) => send({ type: 'setInputs', values }),
+      setPlant: (plant) => send({ type: 'setPlant', plant }),
+      plantOperator: (name, value) => send({ type: 'plantOperator', name, value }),
+      plantFault: (id, active) => send({ type: 'plantFault', id, active }),
       seekHistory: (scan) => {
         const h = get().history;
         if (!h) return;
@@ -369,7 +374,7 @@ export function createSimStore(transport: SimTransport): SimStore {
         if (liveStash) set({ ...liveStash });
         liveStash = undefined;
         // An explanation is about the scan that was viewed: its tags and text go with it.
-        set({ historyScan: undefined, historyTimeMs: undefined, historyMessage: undefined, explanation: undefined });
+        set({ historyScan: undefined, historyTimeMs: undefined, historyMessage: undefined, explanation: undefined, plantAtScan: undefined });
       },
       findChange: (name, direction) => {
         const from = get().historyScan ?? get().history?.last;
@@ -617,7 +622,7 @@ function sameScope(a: CanvasScope | undefined, b: CanvasScope | undefined): bool
 }
 
 function viewOf(view: HistoryView): Partial<SimState> {
-  return { historyScan: view.scan, historyTimeMs: view.timeMs, elements: view.elements, vlinks: view.vlinks, executed: view.executed, values: view.values, pins: view.pins, text: view.text };
+  return { historyScan: view.scan, historyTimeMs: view.timeMs, elements: view.elements, vlinks: view.vlinks, executed: view.executed, values: view.values, pins: view.pins, text: view.text, plantAtScan: view.plant };
 }
 
 function indexLayout(layout: SimLayout): Pick<SimState, 'layout' | 'elementIndex' | 'vlinkIndex' | 'variableIndex'> {
@@ -655,6 +660,7 @@ function applyFrame(state: SimState, frame: SimFrame): Partial<SimState> {
     pins: frame.pins,
     text: frame.text,
     forced,
+    plant: frame.plant,
     ...(frame.trend ? { trend: appendTrend(state.trend, frame.trend as TrendSamples, state.trendCapacity) } : {}),
     ...(frame.mode === 'stopped' && frame.scan === 0 ? { trend: emptyTrend(state.trendNames) } : {}),
     // State and captures of an earlier arming (frames already under way) are left out.

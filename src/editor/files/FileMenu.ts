@@ -6,6 +6,7 @@
 // DocumentStoreProvider: it restores the autosave on start, keeps autosaving, and renders the
 // file picker, the "discard unsaved changes?" dialog, open errors and notices.
 import { EXAMPLES } from '../../model/examples';
+import { PLANT_EXAMPLES } from '../../plant/exercises';
 import { PLCOPEN_COMMANDS } from '../plcopen/plcopenCommands';
 import { LIBRARY_COMMANDS } from '../library/libraryCommands';
 import { loadWithConsent, newProject, openProjectFile, saveProjectFile } from './fileActions';
@@ -42,7 +43,7 @@ export const FILE_COMMANDS: readonly FileMenuCommand[] = [
 ];
 
 /** One command per built-in example; each builds a fresh copy (new ids) when chosen. */
-export const EXAMPLE_COMMANDS: readonly FileMenuCommand[] = EXAMPLES.map((example) => ({
+export const EXAMPLE_COMMANDS: readonly FileMenuCommand[] = [...EXAMPLES, ...PLANT_EXAMPLES].map((example) => ({
   id: `example.${example.id}`,
   label: example.title,
   group: 'Examples',

@@ -27,6 +27,8 @@ import { OutlinePanel } from '../outline/OutlinePanel';
 import { FindHost } from '../find/FindHost';
 import { XrefPanel } from '../find/XrefPanel';
 import { PrintHost } from '../print/PrintHost';
+import { PlantPanel } from '../plant/PlantPanel';
+import { PlantHost } from '../plant/PlantHost';
 
 export interface PanelSlot {
   readonly id: string;
@@ -49,6 +51,7 @@ export const RIGHT_PANELS: readonly PanelSlot[] = [
   { id: 'hardware', title: 'Hardware', component: HardwarePanel },
   { id: 'inputs', title: 'Inputs', component: InputsPanel },
   { id: 'outline', title: 'Outline', component: OutlinePanel },
+  { id: 'plant', title: 'Plant', component: PlantPanel },
 ];
 
 /** Tabs of the bottom panel; the first is open at start. */
@@ -85,6 +88,7 @@ export const HOSTS: readonly BarSlot[] = [
   { id: 'find', component: FindHost },
   { id: 'print', component: PrintHost },
   { id: 'commands', component: CommandHost },
+  { id: 'plant', component: PlantHost },
 ];
 
 /** Power flow and live values on the canvas (see src/editor/canvas/overlay.ts); undefined: none. */

@@ -15,6 +15,7 @@ import type {
   PlcState,
   PowerSnapshot,
   ScanReport,
+  IoPoint,
   SnapshotOptions,
   StateItem,
   StateTransfer,
@@ -165,6 +166,32 @@ export class ScanPlc extends ScanCycle implements Plc {
       if (!v || index < 0) throw new Error(`${loc}: no input variable is declared at this location`);
       this.inputImage[index] = coerce(v.type, value, loc);
     }
+  }
+
+  ioPoint(location: string): IoPoint | undefined {
+    const v = this.program.symbols.atLocation(location, false);
+    if (!v) return undefined;
+    const input = this.inputs.indexOf(v);
+    if (input >= 0) {
+      const image = this.inputImage;
+      const meters = this.meters;
+      return {
+        read: () => image[input]!,
+        write: (value) => {
+          meters[this.cursor === -1 ? 0 : 1]!++;
+          image[input] = typeof value === 'boolean' && v.type === 'BOOL' ? value : coerce(v.type, value, location);
+        },
+      };
+    }
+    const output = this.outputsVars.indexOf(v);
+    if (output < 0) return undefined;
+    const image = this.outputImage;
+    return {
+      read: () => image[output]!,
+      write: () => {
+        throw new Error(`${location} is an output: the program writes it`);
+      },
+    };
   }
 
   outputs(): Record<string, Value> {

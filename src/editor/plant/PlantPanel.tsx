@@ -1,0 +1,338 @@
+// The Plant panel (issue 26): the machine the program controls, drawn and animated (Konva), with
+// its operator controls on the drawing (buttons held while pressed, switches that toggle), its
+// consequences located by scan, faults to set on purpose, the I/O map (addresses editable) and
+// "Declare the machine's I/O". At a recorded scan (history) it shows the machine as it was then.
+import { useState } from 'react';
+import { Layer, Stage } from 'react-konva';
+import { plantVariables, taskText } from '../../plant/exercises';
+import { addressProblem, mappedPoints } from '../../plant/loop';
+import { PLANTS, plantById } from '../../plant/machines';
+import type { PlantModel, PlantPoint } from '../../plant/types';
+import type { DocumentState } from '../../store/documentStore';
+import { useDocument, useDocumentStore } from '../../store/documentStore';
+import type { SimState } from '../../store/simState';
+import { useSim, useSimStore } from '../sim/simContext';
+import { PLANT_DRAWINGS } from './drawings';
+import './plant.css';
+
+const selectPlantConfig = (s: DocumentState) => s.project.plant;
+const selectFrame = (s: SimState) => s.plant;
+const selectAtScan = (s: SimState) => s.plantAtScan;
+const selectHistoryScan = (s: SimState) => s.historyScan;
+
+export function PlantPanel() {
+  const config = useDocument(selectPlantConfig);
+  const doc = useDocumentStore();
+  const model = config ? plantById(config.id) : undefined;
+  return (
+    <div className="rs-plant-panel" data-testid="plant-panel">
+      <label className="rs-plant-choose">
+        Machine{' '}
+        <select
+          data-testid="plant-choose"
+          value={model?.id ?? ''}
+          onChange={(e) => doc.getState().setPlant(e.target.value ? { id: e.target.value } : undefined)}
+        >
+          <option value="">None</option>
+          {PLANTS.map((p) => (
+            <option key={p.id} value={p.id}>
+              {p.title}
+            </option>
+          ))}
+        </select>
+      </label>
+      {config && !model && (
+        <p className="rs-plant-error">
+          The project names the machine "{config.id}", which this version does not have.
+        </p>
+      )}
+      {model && <Machine model={model} map={config?.map ?? {}} />}
+    </div>
+  );
+}
+
+function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<string, string>> }) {
+  const frame = useSim(selectFrame);
+  const atScan = useSim(selectAtScan);
+  const historyScan = useSim(selectHistoryScan);
+  const points = mappedPoints(model, map);
+  const live = frame?.id === model.id ? frame : undefined;
+  const shown = historyScan !== undefined && atScan ? atScan : live?.now;
+  const state = shown?.state ?? model.initial();
+  const drawing = PLANT_DRAWINGS[model.id];
+  const Drawing = drawing?.component;
+  return (
+    <>
+      <p className="rs-plant-status" data-testid="plant-status">
+        {historyScan !== undefined
+          ? atScan
+            ? `Recorded scan ${atScan.scan.toLocaleString('en-US')} (${(atScan.timeMs / 1000).toFixed(2)} s)`
+            : `Scan ${historyScan.toLocaleString('en-US')} is no longer kept for the machine`
+          : shown
+            ? `After scan ${shown.scan.toLocaleString('en-US')} (${(shown.timeMs / 1000).toFixed(2)} s)`
+            : 'Initial state: run or step the program'}
+      </p>
+      {Drawing && drawing && (
+        <div className="rs-plant-drawing" style={{ width: drawing.width, height: drawing.height }}>
+          <Stage width={drawing.width} height={drawing.height} data-testid="plant-stage">
+            <Layer listening={false}>
+              <Drawing state={state} />
+            </Layer>
+          </Stage>
+          <OperatorControls points={points} held={shown?.operator ?? {}} />
+        </div>
+      )}
+      <Readouts model={model} state={state} />
+      <Consequences />
+      <Faults model={model} active={live?.now.faults ?? []} />
+      <IoMap model={model} map={map} points={points} />
+      <details className="rs-plant-task">
+        <summary>Task</summary>
+        <pre data-testid="plant-task">{taskText(model, map)}</pre>
+      </details>
+    </>
+  );
+}
+
+/** Operator controls on the drawing: real buttons (keyboard, screen readers), placed over it. */
+function OperatorControls({
+  points,
+  held,
+}: {
+  points: readonly PlantPoint[];
+  held: Readonly<Record<string, boolean>>;
+}) {
+  const sim = useSimStore();
+  const operators = points.filter((p) => p.kind === 'operator');
+  const set = (name: string, value: boolean) => sim.getState().plantOperator(name, value);
+  return (
+    <div className="rs-plant-operator">
+      {operators.map((p) =>
+        p.control === 'switch' ? (
+          <button
+            key={p.name}
+            type="button"
+            data-testid={`plant-op-${p.name}`}
+            aria-pressed={held[p.name] === true}
+            title={p.comment}
+            className={held[p.name] ? 'rs-plant-op on' : 'rs-plant-op'}
+            onClick={() => set(p.name, !held[p.name])}
+          >
+            {p.name}
+          </button>
+        ) : (
+          <button
+            key={p.name}
+            type="button"
+            data-testid={`plant-op-${p.name}`}
+            aria-pressed={held[p.name] === true}
+            title={`${p.comment}: held while pressed`}
+            className={held[p.name] ? 'rs-plant-op on' : 'rs-plant-op'}
+            onPointerDown={(e) => {
+              e.currentTarget.setPointerCapture?.(e.pointerId);
+              set(p.name, true);
+            }}
+            onPointerUp={() => set(p.name, false)}
+            onPointerCancel={() => set(p.name, false)}
+            onKeyDown={(e) => {
+              if ((e.key === ' ' || e.key === 'Enter') && !e.repeat) set(p.name, true);
+            }}
+            onKeyUp={(e) => {
+              if (e.key === ' ' || e.key === 'Enter') set(p.name, false);
+            }}
+          >
+            {p.name}
+          </button>
+        ),
+      )}
+    </div>
+  );
+}
+
+function Readouts({ model, state }: { model: PlantModel; state: unknown }) {
+  return (
+    <table className="rs-plant-readouts" data-testid="plant-readouts">
+      <tbody>
+        {model.quantities.map((q) => {
+          const v = model.quantity(state, q.name);
+          const text =
+            typeof v === 'boolean' ? (v ? 'yes' : 'no') : q.type === 'INT' ? String(v) : v.toFixed(1);
+          return (
+            <tr key={q.name} title={q.comment} data-testid={`plant-q-${q.name}`}>
+              <th>{`${model.id}.${q.name}`}</th>
+              <td>
+                {text}
+                {q.unit ? ` ${q.unit}` : ''}
+              </td>
+            </tr>
+          );
+        })}
+      </tbody>
+    </table>
+  );
+}
+
+function Consequences() {
+  const frame = useSim(selectFrame);
+  const sim = useSimStore();
+  const events = frame?.events ?? [];
+  return (
+    <div className="rs-plant-events" data-testid="plant-events">
+      <h4>
+        Consequences
+        {frame && frame.eventCount > events.length ? ` (newest ${events.length} of ${frame.eventCount})` : ''}
+      </h4>
+      {events.length === 0 ? (
+        <p className="rs-plant-empty">None so far.</p>
+      ) : (
+        <ul>
+          {events.map((e, i) => (
+            <li
+              key={`${e.scan}-${e.id}-${i}`}
+              className={e.severity === 'error' ? 'rs-plant-error' : 'rs-plant-warning'}
+            >
+              <button
+                type="button"
+                className="rs-plant-link"
+                title="Show this scan in the history"
+                onClick={() => sim.getState().seekHistory(e.scan)}
+              >
+                {e.text}
+              </button>
+            </li>
+          ))}
+        </ul>
+      )}
+    </div>
+  );
+}
+
+function Faults({ model, active }: { model: PlantModel; active: readonly string[] }) {
+  const sim = useSimStore();
+  // A box shows what was asked until the worker's next frame says what is set.
+  const [asked, setAsked] = useState<
+    { readonly id: string; readonly on: boolean; readonly against: string } | undefined
+  >();
+  const key = active.join(',');
+  const pending = asked && asked.against === key ? asked : undefined;
+  return (
+    <fieldset className="rs-plant-faults" data-testid="plant-faults">
+      <legend>Faults</legend>
+      {model.faults.map((f) => (
+        <label key={f.id}>
+          <input
+            type="checkbox"
+            data-testid={`plant-fault-${f.id}`}
+            checked={pending?.id === f.id ? pending.on : active.includes(f.id)}
+            onChange={(e) => {
+              setAsked({ id: f.id, on: e.target.checked, against: key });
+              sim.getState().plantFault(f.id, e.target.checked);
+            }}
+          />{' '}
+          {f.title}
+        </label>
+      ))}
+    </fieldset>
+  );
+}
+
+function IoMap({
+  model,
+  map,
+  points,
+}: {
+  model: PlantModel;
+  map: Readonly<Record<string, string>>;
+  points: readonly PlantPoint[];
+}) {
+  const doc = useDocumentStore();
+  const [problem, setProblem] = useState<string | undefined>();
+  const [declared, setDeclared] = useState<string | undefined>();
+  const change = (point: PlantPoint, text: string) => {
+    const address = text.trim();
+    if (address === point.address) return;
+    const p = addressProblem(point, address);
+    const clash = points.find(
+      (q) => q.name !== point.name && q.address.toUpperCase() === address.toUpperCase(),
+    );
+    if (p || clash) {
+      setProblem(p ?? `${point.name}: ${address} is already ${clash!.name}'s address`);
+      return;
+    }
+    setProblem(undefined);
+    const original = model.points.find((q) => q.name === point.name)!;
+    const next: Record<string, string> = { ...map };
+    if (address.toUpperCase() === original.address.toUpperCase()) delete next[point.name];
+    else next[point.name] = address;
+    doc.getState().setPlant({ id: model.id, ...(Object.keys(next).length ? { map: next } : {}) });
+  };
+  const declare = () => {
+    const s = doc.getState();
+    const project = s.project;
+    const runs = project.tasks.flatMap((t) => t.programs.map((p) => p.pou.toUpperCase()));
+    const pou =
+      project.pous.find((p) => p.kind === 'PROGRAM' && runs.includes(p.name.toUpperCase())) ??
+      project.pous.find((p) => p.kind === 'PROGRAM');
+    if (!pou) {
+      setDeclared('The project has no PROGRAM to declare the I/O in.');
+      return;
+    }
+    const added = s.addVariables(plantVariables(model, map), "Declare the machine's I/O", pou.id);
+    setDeclared(
+      added.length
+        ? `Declared ${added.length} variable${added.length === 1 ? '' : 's'} in ${pou.name}: ${added.join(', ')}.`
+        : `Every point is declared in ${pou.name} already.`,
+    );
+  };
+  return (
+    <div className="rs-plant-io">
+      <h4>
+        I/O map{' '}
+        <button type="button" data-testid="plant-declare" onClick={declare}>
+          Declare the machine's I/O
+        </button>
+      </h4>
+      {declared && <p data-testid="plant-declared">{declared}</p>}
+      {problem && (
+        <p className="rs-plant-error" role="alert" data-testid="plant-io-problem">
+          {problem}
+        </p>
+      )}
+      <table data-testid="plant-io">
+        <thead>
+          <tr>
+            <th>Address</th>
+            <th>Name</th>
+            <th>Type</th>
+            <th>Kind</th>
+            <th>Comment</th>
+          </tr>
+        </thead>
+        <tbody>
+          {points.map((p) => (
+            <tr key={p.name}>
+              <td>
+                <input
+                  key={p.address}
+                  type="text"
+                  size={7}
+                  defaultValue={p.address}
+                  aria-label={`Address of ${p.name}`}
+                  data-testid={`plant-address-${p.name}`}
+                  onBlur={(e) => change(p, e.target.value)}
+                  onKeyDown={(e) => {
+                    if (e.key === 'Enter') change(p, e.currentTarget.value);
+                  }}
+                />
+              </td>
+              <td>{p.name}</td>
+              <td>{p.type}</td>
+              <td>{p.kind}</td>
+              <td>{p.comment}</td>
+            </tr>
+          ))}
+        </tbody>
+      </table>
+    </div>
+  );
+}

@@ -1,0 +1,18 @@
+// How each machine is drawn (issue 26): one Konva component per machine id, given the machine's
+// state (a frame's, or a recorded scan's). The model itself (src/plant) knows nothing of drawing.
+import type { ComponentType } from 'react';
+import { TankDrawing, TANK_SIZE } from './TankDrawing';
+
+export interface PlantDrawingProps {
+  readonly state: unknown;
+}
+
+export interface PlantDrawing {
+  readonly component: ComponentType<PlantDrawingProps>;
+  readonly width: number;
+  readonly height: number;
+}
+
+export const PLANT_DRAWINGS: Readonly<Record<string, PlantDrawing>> = {
+  tank: { component: TankDrawing, ...TANK_SIZE },
+};

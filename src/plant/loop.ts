@@ -1,0 +1,299 @@
+// A machine in closed loop with a program (issue 26): after every scan the machine reads the
+// program's output image, advances by the PLC time since its last step, and presents its sensors
+// and operator controls as the input image the next scan reads. The loop also keeps each scan's
+// machine state (the scan history shows the machine as it was) and the consequences, located.
+//
+// It knows the PLC only as an I/O image by address (the `PlcIo` below), so the simulator, the
+// scenarios, the CLI and the gateway's simulated device drive it alike.
+import type { Value } from '../model/iecTypes';
+import { parseLocation } from '../model/iecTypes';
+import type { PlantConsequence, PlantModel, PlantPoint } from './types';
+
+/** What the loop needs of a PLC: its output image and its input image, by address. */
+export interface PlcIo {
+  outputs(): Record<string, Value>;
+  setInputs(values: Readonly<Record<string, Value>>): void;
+  /** A point resolved once (the engine's Plc.ioPoint): read and written every scan without a lookup. */
+  ioPoint?(location: string): { read(): Value; write(value: Value): void } | undefined;
+}
+
+/** A machine point wired to the PLC: how to read (actuators) or write (sensors, operator controls) it. */
+interface Wire {
+  readonly point: PlantPoint;
+  read(): Value;
+  write(value: Value): void;
+}
+
+/** A consequence where it happened: the scan after which the machine was seen to suffer it. */
+export interface PlantEvent extends PlantConsequence {
+  readonly scan: number;
+  readonly timeMs: number;
+  /** "the tank overflowed at scan 1,204 (12.04 s)". */
+  readonly text: string;
+}
+
+/** Point name -> address, for the points whose address the user changed. */
+export type PlantMap = Readonly<Record<string, string>>;
+
+/** `%ix0.0` and `%IX0.0` alike. */
+export function addressKey(text: string): string {
+  const loc = parseLocation(text.trim());
+  return loc
+    ? `%${loc.area}${loc.size}${loc.index}${loc.bit !== undefined ? `.${loc.bit}` : ''}`
+    : text.trim().toUpperCase();
+}
+
+/** The machine's points at their addresses (the defaults, with the user's changes). */
+export function mappedPoints(model: PlantModel, map: PlantMap = {}): PlantPoint[] {
+  return model.points.map((p) => (map[p.name] ? { ...p, address: map[p.name]! } : p));
+}
+
+/** Why an address cannot carry a point (its area or size does not fit), or undefined. */
+export function addressProblem(point: PlantPoint, address: string): string | undefined {
+  const loc = parseLocation(address.trim());
+  if (!loc) return `${point.name}: "${address}" is not an IEC address (%IX0.0, %IW2, %QX1.3)`;
+  const wantArea = point.kind === 'actuator' ? 'Q' : 'I';
+  if (loc.area !== wantArea)
+    return `${point.name}: ${point.kind === 'actuator' ? 'an actuator is a %Q output' : 'a sensor or operator control is a %I input'}, not ${address}`;
+  const wantSize = point.type === 'BOOL' ? 'X' : 'W';
+  if ((loc.size || 'X') !== wantSize)
+    return `${point.name}: a ${point.type} point needs a %${wantArea}${wantSize} address, not ${address}`;
+  return undefined;
+}
+
+const NONE: PlantEvent[] = [];
+const formatTime = (ms: number): string => `${(ms / 1000).toFixed(2)} s`;
+
+export interface PlantSnapshot {
+  readonly scan: number;
+  readonly timeMs: number;
+  readonly state: unknown;
+  readonly faults: readonly string[];
+  readonly operator: Readonly<Record<string, boolean>>;
+}
+
+export class PlantLoop {
+  readonly model: PlantModel;
+  readonly points: readonly PlantPoint[];
+  private state: unknown;
+  /** PLC time the machine has reached. */
+  private timeMs = 0;
+  private scan = 0;
+  private readonly faults = new Set<string>();
+  private readonly operator: Record<string, boolean> = {};
+  /** Sorted faults and a copy of the operator controls, made anew only when they change (shared by snapshots). */
+  private faultList: readonly string[] = [];
+  private operatorShown: Readonly<Record<string, boolean>> = {};
+  private readonly events: PlantEvent[] = [];
+  /** The machine after each recorded scan, oldest first, at most `keep`. */
+  private readonly history: PlantSnapshot[] = [];
+  private readonly actuators: PlantPoint[];
+  private readonly inputs: PlantPoint[];
+  /** The points the program declares: actuators to read, sensors and operator controls to write. */
+  private outputs: Wire[] = [];
+  /** Actuators the program does not drive: always off. */
+  private unwired: PlantPoint[] = [];
+  private declared: Wire[] = [];
+  private bound: PlcIo | undefined;
+  /** The drive record handed to step(), refilled every scan. */
+  private readonly driveRecord: Record<string, Value> = {};
+
+  constructor(
+    model: PlantModel,
+    map: PlantMap = {},
+    private readonly keep = 100_000,
+  ) {
+    this.model = model;
+    this.points = mappedPoints(model, map);
+    for (const p of this.points) {
+      const problem = addressProblem(p, p.address);
+      if (problem) throw new Error(`${model.id}: ${problem}`);
+    }
+    this.actuators = this.points.filter((p) => p.kind === 'actuator');
+    this.unwired = this.actuators;
+    this.inputs = this.points.filter((p) => p.kind !== 'actuator');
+    for (const p of this.points) if (p.kind === 'operator') this.operator[p.name] = false;
+    this.operatorShown = { ...this.operator };
+    this.state = model.initial();
+  }
+
+  /** Back to the machine's initial state at PLC time 0 (a cold restart); faults and operator controls stay. */
+  reset(): void {
+    this.state = this.model.initial();
+    this.timeMs = 0;
+    this.scan = 0;
+    this.events.length = 0;
+    this.history.length = 0;
+  }
+
+  /**
+   * Attaches a (new) PLC: which of the machine's points its program declares. Points it does not
+   * declare are simply not wired. The PLC gets the machine's inputs now, for its next scan.
+   */
+  bind(plc: PlcIo): void {
+    this.bound = plc;
+    this.outputs = this.actuators.flatMap((p) => {
+      const io = plc.ioPoint?.(p.address);
+      if (io) return [{ point: p, read: () => io.read(), write: () => {} }];
+      if (plc.ioPoint) return [];
+      // A PLC without resolved points: through its output record.
+      const key = Object.keys(plc.outputs()).find((k) => addressKey(k) === addressKey(p.address));
+      return key === undefined ? [] : [{ point: p, read: () => plc.outputs()[key]!, write: () => {} }];
+    });
+    this.unwired = this.actuators.filter((p) => !this.outputs.some((w) => w.point === p));
+    this.declared = this.inputs.flatMap((p) => {
+      const io = plc.ioPoint?.(p.address);
+      if (io) return [{ point: p, read: () => io.read(), write: (v: Value) => io.write(v) }];
+      if (plc.ioPoint) return [];
+      try {
+        plc.setInputs({ [p.address]: p.type === 'BOOL' ? false : 0 });
+      } catch {
+        return [];
+      }
+      return [{ point: p, read: () => false, write: (v: Value) => plc.setInputs({ [p.address]: v }) }];
+    });
+    this.present();
+  }
+
+  /** The program's scan `scan` ended; `scanTimeMs` is when it started, `cycleMs` the scan cycle. */
+  afterScan(scan: number, scanTimeMs: number, cycleMs: number): readonly PlantEvent[] {
+    const target = scanTimeMs + cycleMs;
+    const dt = Math.max(0, target - this.timeMs);
+    const before = this.state;
+    this.state = this.model.step(before, this.drive(), dt, this.faults);
+    this.timeMs = target;
+    this.scan = scan;
+    const consequences = this.model.check(before, this.state);
+    const found =
+      consequences.length === 0 ? NONE : consequences.map((c) => this.locate(c, scan, scanTimeMs));
+    for (const e of found) this.events.push(e);
+    this.record();
+    this.present();
+    return found;
+  }
+
+  private locate(c: PlantConsequence, scan: number, timeMs: number): PlantEvent {
+    return {
+      ...c,
+      scan,
+      timeMs,
+      text: `${c.message} at scan ${scan.toLocaleString('en-US')} (${formatTime(timeMs)})`,
+    };
+  }
+
+  private drive(): Record<string, Value> {
+    const d = this.driveRecord;
+    for (const p of this.inputs) if (p.kind === 'operator') d[p.name] = this.operator[p.name] === true;
+    for (const p of this.unwired) d[p.name] = p.type === 'BOOL' ? false : 0;
+    for (const w of this.outputs) d[w.point.name] = w.read();
+    return d;
+  }
+
+  /**
+   * The machine's sensors and operator controls into the PLC's input image (for its next scan),
+   * every scan: the machine drives those inputs as wires would (a forced input keeps its force).
+   */
+  present(): void {
+    if (!this.bound || this.declared.length === 0) return;
+    const sensed = this.model.sense(this.state, this.faults);
+    for (const w of this.declared) {
+      const v = w.point.kind === 'operator' ? this.operator[w.point.name] === true : sensed[w.point.name]!;
+      // The image already holding the value is the common case: no write, no conversion.
+      if (w.read() !== v) w.write(v);
+    }
+  }
+
+  private record(): void {
+    if (this.keep <= 0) return;
+    // Dropped in chunks: shifting a 100,000-entry array every scan would cost more than the machine.
+    if (this.history.length >= this.keep + 1024) this.history.splice(0, this.history.length - this.keep);
+    this.history.push(this.snapshot());
+  }
+
+  snapshot(): PlantSnapshot {
+    return {
+      scan: this.scan,
+      timeMs: this.timeMs,
+      state: this.state,
+      faults: this.faultList,
+      operator: this.operatorShown,
+    };
+  }
+
+  /** The machine as it was after scan `scan` (the initial state for 0), if still kept. */
+  at(scan: number): PlantSnapshot | undefined {
+    if (scan === 0) return { scan: 0, timeMs: 0, state: this.model.initial(), faults: [], operator: {} };
+    const first = this.history[0];
+    if (
+      !first ||
+      scan < first.scan ||
+      (this.history.length > this.keep && scan < this.history[this.history.length - this.keep]!.scan)
+    )
+      return undefined;
+    // Scans are recorded in order, one each, unless a reset restarted the count.
+    const guess = this.history[scan - first.scan];
+    return guess?.scan === scan ? guess : this.history.find((h) => h.scan === scan);
+  }
+
+  setOperator(name: string, value: boolean): void {
+    const p = this.points.find((q) => q.kind === 'operator' && q.name.toUpperCase() === name.toUpperCase());
+    if (!p)
+      throw new Error(
+        `${this.model.id} has no operator control "${name}"; it has ${this.points
+          .filter((q) => q.kind === 'operator')
+          .map((q) => q.name)
+          .join(', ')}`,
+      );
+    this.operator[p.name] = value;
+    this.operatorShown = { ...this.operator };
+    this.present();
+  }
+
+  setFault(id: string, active: boolean): void {
+    const f = this.model.faults.find((q) => q.id === id.toLowerCase());
+    if (!f)
+      throw new Error(
+        `${this.model.id} has no fault "${id}"; it has ${this.model.faults.map((q) => q.id).join(', ')}`,
+      );
+    if (active) this.faults.add(f.id);
+    else this.faults.delete(f.id);
+    this.faultList = [...this.faults].sort();
+    this.present();
+  }
+
+  activeFaults(): string[] {
+    return [...this.faults].sort();
+  }
+
+  consequences(): readonly PlantEvent[] {
+    return this.events;
+  }
+
+  currentState(): unknown {
+    return this.state;
+  }
+
+  /** `level` or `tank.level`: a quantity, or a point (a sensor as sensed, an actuator as driven, an operator control as held). */
+  read(name: string): Value {
+    const bare = name.toLowerCase().startsWith(`${this.model.id}.`)
+      ? name.slice(this.model.id.length + 1)
+      : name;
+    const q = this.model.quantities.find((x) => x.name.toLowerCase() === bare.toLowerCase());
+    if (q) return this.model.quantity(this.state, q.name);
+    const p = this.points.find((x) => x.name.toLowerCase() === bare.toLowerCase());
+    if (p?.kind === 'operator') return this.operator[p.name] === true;
+    if (p?.kind === 'sensor') return this.model.sense(this.state, this.faults)[p.name]!;
+    if (p) return { ...this.drive() }[p.name]!;
+    throw new Error(
+      `${this.model.id} has no quantity or point "${bare}"; it has ${[...this.model.quantities.map((x) => x.name), ...this.points.map((x) => x.name)].join(', ')}`,
+    );
+  }
+}
+
+/** The type `tank.level` (or `level`) reads as: a quantity's, or a point's; undefined when the machine has no such name. */
+export function plantValueType(model: PlantModel, name: string): 'BOOL' | 'INT' | 'REAL' | undefined {
+  const bare = name.toLowerCase().startsWith(`${model.id}.`) ? name.slice(model.id.length + 1) : name;
+  const q = model.quantities.find((x) => x.name.toLowerCase() === bare.toLowerCase());
+  if (q) return q.type;
+  return model.points.find((x) => x.name.toLowerCase() === bare.toLowerCase())?.type;
+}

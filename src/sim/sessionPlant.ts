@@ -1,0 +1,100 @@
+// The machine the simulation runs against (issue 26): one PlantLoop in the worker, beside the
+// program. It is stepped after every completed scan (the runner's scanCompleted: outputs written,
+// next inputs not yet read) by the scan's PLC time, reset with a cold restart, re-bound to each
+// program installed (an online change keeps the machine as it is), and shown in frames.
+import type { Plc } from '../engine/api';
+import { requirePlant } from '../plant/machines';
+import { PlantLoop, type PlantEvent, type PlantMap, type PlantSnapshot } from '../plant/loop';
+import type { PlantPoint } from '../plant/types';
+
+/** Consequences a frame carries (the newest); the panel lists them. */
+const FRAME_EVENTS = 50;
+
+export interface PlantFrame {
+  readonly id: string;
+  readonly points: readonly PlantPoint[];
+  readonly now: PlantSnapshot;
+  /** The newest consequences, oldest first, and how many there were since the cold start. */
+  readonly events: readonly PlantEvent[];
+  readonly eventCount: number;
+}
+
+export class SessionPlant {
+  private loop: PlantLoop | undefined;
+
+  get active(): boolean {
+    return this.loop !== undefined;
+  }
+
+  /** Attaches the machine (`null`: none). A new machine or map starts from its initial state. */
+  configure(config: { readonly id: string; readonly map?: PlantMap } | null, plc: Plc | undefined): void {
+    if (!config) {
+      this.loop = undefined;
+      return;
+    }
+    const loop = new PlantLoop(requirePlant(config.id), config.map ?? {});
+    // The same machine with the same wiring keeps its state, faults and operator controls.
+    if (
+      this.loop &&
+      this.loop.model.id === loop.model.id &&
+      JSON.stringify(this.loop.points) === JSON.stringify(loop.points)
+    )
+      return;
+    this.loop = loop;
+    if (plc) loop.bind(plc);
+  }
+
+  /** A program was installed: afresh (the machine starts over) or by an online change (it goes on). */
+  install(plc: Plc, fresh: boolean): void {
+    if (!this.loop) return;
+    if (fresh) this.loop.reset();
+    this.loop.bind(plc);
+  }
+
+  coldRestart(plc: Plc | undefined): void {
+    if (!this.loop) return;
+    this.loop.reset();
+    if (plc) this.loop.bind(plc);
+  }
+
+  afterScan(scan: number, startTimeMs: number, cycleMs: number): void {
+    this.loop?.afterScan(scan, startTimeMs, cycleMs);
+  }
+
+  setOperator(name: string, value: boolean): void {
+    this.require().setOperator(name, value);
+  }
+
+  setFault(id: string, active: boolean): void {
+    this.require().setFault(id, active);
+  }
+
+  at(scan: number): PlantSnapshot | undefined {
+    return this.loop?.at(scan);
+  }
+
+  /** For scenario replays in the simulator: the machine's loop, started over. */
+  forScenario(id: string): PlantLoop {
+    if (this.loop?.model.id !== id) this.configure({ id }, undefined);
+    this.loop!.reset();
+    return this.loop!;
+  }
+
+  frame(): PlantFrame | undefined {
+    const loop = this.loop;
+    if (!loop) return undefined;
+    const all = loop.consequences();
+    return {
+      id: loop.model.id,
+      points: loop.points,
+      now: loop.snapshot(),
+      events: all.slice(-FRAME_EVENTS),
+      eventCount: all.length,
+    };
+  }
+
+  private require(): PlantLoop {
+    if (!this.loop) throw new Error('no machine is attached: choose one in the Plant panel');
+    return this.loop;
+  }
+}

@@ -1,0 +1,108 @@
+// The machine in the simulation worker's session (issue 26): stepped after every scan by the
+// scan's PLC time, so the worker's trace equals the CLI's scan by scan; the history shows the
+// machine as it was; operator controls and faults act from the next scan.
+import { describe, expect, test } from 'vitest';
+import { tankReference, tankWrong } from '../../src/plant/exercises';
+import { rungsmith } from '../cli/memoryIo';
+import { SimHarness } from '../sim/harness';
+import type { PlantFrame } from '../../src/sim/sessionPlant';
+import type { TankState } from '../../src/plant/tank';
+
+const WATCH = [
+  'Start',
+  'Running',
+  'LowLevel',
+  'HighLevel',
+  'Level',
+  'Pump',
+  'InletValve',
+  'DrainValve',
+  'Filling',
+];
+const lastOf = <T>(xs: T[]): T => xs[xs.length - 1]!;
+const level = (h: SimHarness) => ((h.frame.plant as PlantFrame).now.state as TankState).level;
+
+/** Start pressed before scan 1, released before scan 3, as an operator at the panel would. */
+function sessionRun(project = tankReference(), scans = 2000): SimHarness {
+  const h = new SimHarness().send(
+    { type: 'setCycle', cycleMs: 100 },
+    { type: 'setPlant', plant: { id: 'tank' } },
+    { type: 'load', project },
+  );
+  h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'step', scans: 2 }).settle();
+  h.send({ type: 'plantOperator', name: 'Start', value: false }, { type: 'step', scans: scans - 2 });
+  while (h.frame.scan < scans) h.settle();
+  return h;
+}
+
+describe('the tank in the simulation session', () => {
+  test('the worker trace of 2,000 scans equals the CLI trace scan by scan, machine included', () => {
+    const h = sessionRun();
+    expect(h.frame.scan).toBe(2000);
+    h.send({ type: 'historyExport', id: 1, format: 'trace', names: WATCH });
+    const worker = lastOf(h.of('historyText')).text.trim().split('\n');
+    const cli = rungsmith(
+      [
+        'simulate',
+        'tank.json',
+        '--plant',
+        'tank',
+        '--inputs',
+        'stim.csv',
+        '--scans',
+        '2000',
+        '--cycle',
+        '100ms',
+        '--watch',
+        [...WATCH, 'tank.level'].join(','),
+      ],
+      {
+        'tank.json': JSON.stringify(tankReference()),
+        'stim.csv': 'scan,tank.Start\n1,1\n3,0\n',
+      },
+    );
+    expect(cli.code).toBe(0);
+    const rows = cli.out.trim().split('\n');
+    expect(rows).toHaveLength(2001);
+    // Same columns: the CLI's last one is the machine's level.
+    expect(rows.map((r) => r.split(',').slice(0, -1).join(','))).toEqual(worker);
+    // The machine itself: the level after each of some scans, as the history shows it.
+    for (const scan of [1, 2, 3, 500, 1234, 2000]) {
+      h.send({ type: 'historySeek', scan });
+      const view = lastOf(h.of('historyView')).view;
+      expect(view.plant?.scan).toBe(scan);
+      expect(String((view.plant!.state as TankState).level)).toBe(rows[scan]!.split(',').at(-1));
+    }
+    // It filled and drained: the level is back between the switches and pump cycles happened.
+    expect(
+      worker
+        .slice(1)
+        .filter((r, i, all) => i > 0 && r.split(',')[7] === '1' && all[i - 1]!.split(',')[7] === '0').length,
+    ).toBeGreaterThanOrEqual(1);
+  });
+
+  test('a wrong program: the frame carries the overflow, located', () => {
+    const h = sessionRun(tankWrong(), 700);
+    const plant = h.frame.plant!;
+    expect(plant.events.map((e) => e.text)).toEqual(['the tank overflowed at scan 576 (57.50 s)']);
+    expect(level(h)).toBe(1000);
+  });
+
+  test('a fault set at the panel acts from the next step; Reset starts the machine over, the fault stays', () => {
+    const h = sessionRun(tankReference(), 20);
+    const before = level(h);
+    h.send({ type: 'plantFault', id: 'pump_dead', active: true }, { type: 'step', scans: 50 });
+    while (h.frame.scan < 70) h.settle();
+    expect(h.frame.plant!.now.faults).toEqual(['pump_dead']);
+    // The pump coasts down in 0.5 s, then no water comes in (the level is below the low switch: no drain).
+    const frame = h.frame.plant!.now.state as TankState;
+    expect(frame.pump).toBe(0);
+    expect(frame.inflow).toBe(0);
+    expect(frame.level).toBeLessThan(before + 10);
+    h.send({ type: 'reset' });
+    expect(level(h)).toBe(100);
+    expect(h.frame.plant!.now.faults).toEqual(['pump_dead']);
+    expect(() => h.session.handle({ type: 'plantFault', id: 'boiler_burst', active: true })).not.toThrow();
+    expect(lastOf(h.of('error')).message).toMatch(/tank has no fault "boiler_burst"; it has low_stuck_off/);
+  });
+});
