@@ -205,6 +205,30 @@ async function typeLines(lines: readonly string[]) {
   }
 }
 
+test('text typed just before another project is opened never goes into that project', async () => {
+  await page.evaluate(({ p }) => window.rungsmith!.documentStore!.getState().loadProject(p), {
+    p: newProject('First', { pous: [newPou('Main', { language: 'ST', networks: [], source: 'A := 1;' })] }),
+  });
+  await openPou('Main');
+  await content().click();
+  await page.keyboard.press('Control+End');
+  await page.keyboard.type(' B := 2;');
+  // At once (the burst is not committed yet): a project whose Main has the same POU id is opened.
+  await page.evaluate(() => {
+    const s = window.rungsmith!.documentStore!.getState();
+    const other = JSON.parse(JSON.stringify(s.project)) as Project;
+    const main = other.pous.find((p) => p.name === 'Main')!;
+    s.loadProject({ ...other, name: 'Second', pous: [{ ...main, source: 'C := 3;' }] });
+  });
+  await poll(shownText).toBe('C := 3;');
+  // Past the burst's pause (ST_BURST_PAUSE_MS, 700 ms), and with the editor left: nothing was committed.
+  await page.getByTestId('tab-project').click();
+  await page.waitForTimeout(1500);
+  expect(await source('Main')).toBe('C := 3;');
+  expect(await page.evaluate(() => window.rungsmith!.documentStore!.getState().dirty)).toBe(false);
+  expect(await undoName()).toBeUndefined();
+});
+
 test('a Scale FUNCTION and a hysteresis FB written in ST through the UI, called from LD, run', async () => {
   const editor = new EditorPage(page);
   const draw = new DrawPage(page);

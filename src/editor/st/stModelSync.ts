@@ -42,6 +42,8 @@ class ModelSync {
   /** Line of the last edit of the burst (a cursor move off it ends the burst). */
   private editLine = 0;
   private readonly unsubscribe: () => void;
+  /** The project the burst belongs to (DocumentState.opened): a burst never goes into another one. */
+  private opened: number;
 
   constructor(
     private readonly view: EditorView,
@@ -50,9 +52,11 @@ class ModelSync {
   ) {
     this.base = view.state.doc.toString();
     this.local = ChangeSet.empty(this.base.length);
+    this.opened = store.getState().opened;
     this.unsubscribe = store.subscribe((s, prev) => {
       if (s.project === prev.project) return;
       const next = s.project.pous.find((p) => p.id === pouId)?.source;
+      if (s.opened !== this.opened) return this.reopened(s.opened, next);
       if (next !== undefined && next !== this.base) this.fromModel(next);
     });
   }
@@ -93,12 +97,29 @@ class ModelSync {
     if (this.timer) clearTimeout(this.timer);
     this.timer = undefined;
     if (!this.pending) return;
+    if (this.store.getState().opened !== this.opened) return this.reopened(this.store.getState().opened, undefined);
     const text = this.view.state.doc.toString();
     const pou = this.store.getState().project.pous.find((p) => p.id === this.pouId);
     this.base = text;
     this.local = ChangeSet.empty(text.length);
     if (pou && pou.source !== text)
       this.store.getState().setPouSource(this.pouId, text, stEditStepName(pou.name));
+  }
+
+  /**
+   * Another project was opened (a file, an import, an example, New) while this editor was still
+   * shown: a burst not committed yet belonged to the old project and is dropped, never carried into
+   * the new one (which may have a POU with the same id). The editor shows the new project's text.
+   */
+  private reopened(opened: number, next: string | undefined): void {
+    if (this.timer) clearTimeout(this.timer);
+    this.timer = undefined;
+    this.opened = opened;
+    this.base = next ?? this.view.state.doc.toString();
+    this.local = ChangeSet.empty(this.base.length);
+    const shown = this.view.state.doc.toString();
+    if (next === undefined || next === shown) return;
+    this.view.dispatch({ changes: textDiff(shown, next), annotations: fromModel.of(true) });
   }
 
   /** The model's text changed elsewhere: merge that change with the burst not yet committed. */

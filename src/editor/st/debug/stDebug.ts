@@ -5,8 +5,18 @@
 // where execution is paused highlighted (and a fault's line). The simulator's state comes from the
 // running app's simulator store (simCommands.ts simControls), which the engine fills from the
 // instrumented tier (runtime/scanCycle.ts: only the shown ST body is observed).
+import { commitStEdit } from '../stModelSync';
 import { Prec, RangeSetBuilder, StateEffect, StateField, type Extension } from '@codemirror/state';
-import { Decoration, EditorView, GutterMarker, gutter, keymap, ViewPlugin, WidgetType, type DecorationSet } from '@codemirror/view';
+import {
+  Decoration,
+  EditorView,
+  GutterMarker,
+  gutter,
+  keymap,
+  ViewPlugin,
+  WidgetType,
+  type DecorationSet,
+} from '@codemirror/view';
 import type { StepRequest } from '../../../bridge/steppingLease';
 import type { StepFrame } from '../../../engine/api';
 import type { LineBreakpoint, SimTextTrace } from '../../../sim/protocol';
@@ -29,18 +39,46 @@ export interface StDebugState {
   readonly instance: string | undefined;
 }
 
-const EMPTY: StDebugState = { pou: '', trace: undefined, pause: 0, fault: 0, breakpoints: [], instance: undefined };
+const EMPTY: StDebugState = {
+  pou: '',
+  trace: undefined,
+  pause: 0,
+  fault: 0,
+  breakpoints: [],
+  instance: undefined,
+};
 
-const same = (a: string | undefined, b: string | undefined) => (a ?? '').toUpperCase() === (b ?? '').toUpperCase();
+const same = (a: string | undefined, b: string | undefined) =>
+  (a ?? '').toUpperCase() === (b ?? '').toUpperCase();
 
 /** The debug state of `pou` in the simulator's state (pure: tested without a page). */
 export function debugStateOf(s: SimState, pou: string): StDebugState {
   const instance = s.canvasScope?.view.instance;
   const trace = s.text && same(s.text.pou, pou) ? s.text : undefined;
-  const at: StepFrame | undefined = s.mode === 'paused' && s.historyScan === undefined ? s.position.at(-1) : undefined;
-  const pause = at && same(at.pou, pou) && at.line !== undefined && (instance === undefined || same(at.instance, instance)) ? at.line : 0;
-  const fault = s.fault && same(s.fault.pou, pou) && s.fault.line !== undefined && (instance === undefined || same(s.fault.instance, instance)) ? s.fault.line : 0;
-  return { pou, trace, pause, fault, breakpoints: s.lineBreakpoints.filter((b) => same(b.pou, pou)), instance };
+  const at: StepFrame | undefined =
+    s.mode === 'paused' && s.historyScan === undefined ? s.position.at(-1) : undefined;
+  const pause =
+    at &&
+    same(at.pou, pou) &&
+    at.line !== undefined &&
+    (instance === undefined || same(at.instance, instance))
+      ? at.line
+      : 0;
+  const fault =
+    s.fault &&
+    same(s.fault.pou, pou) &&
+    s.fault.line !== undefined &&
+    (instance === undefined || same(s.fault.instance, instance))
+      ? s.fault.line
+      : 0;
+  return {
+    pou,
+    trace,
+    pause,
+    fault,
+    breakpoints: s.lineBreakpoints.filter((b) => same(b.pou, pou)),
+    instance,
+  };
 }
 
 const setDebug = StateEffect.define<StDebugState>();
@@ -93,7 +131,8 @@ function decorationsOf(state: { doc: EditorView['state']['doc']; field: StDebugS
     else if (n === field.pause) b.add(line.from, line.from, pauseLine);
     if (t && stops.has(n)) b.add(line.from, line.from, ran.has(n) ? ranLine : dimLine);
     const values = byLine.get(n);
-    if (values) b.add(line.to, line.to, Decoration.widget({ widget: new ValuesWidget(values.join('   ')), side: 1 }));
+    if (values)
+      b.add(line.to, line.to, Decoration.widget({ widget: new ValuesWidget(values.join('   ')), side: 1 }));
   }
   return b.finish();
 }
@@ -137,7 +176,9 @@ const breakpointGutter = gutter({
   markers: (view) => {
     const b = new RangeSetBuilder<GutterMarker>();
     const doc = view.state.doc;
-    const list = [...view.state.field(debugField).breakpoints].filter((x) => x.line <= doc.lines).sort((x, y) => x.line - y.line);
+    const list = [...view.state.field(debugField).breakpoints]
+      .filter((x) => x.line <= doc.lines)
+      .sort((x, y) => x.line - y.line);
     let last = 0;
     for (const bp of list) {
       if (bp.line === last) continue;
@@ -191,7 +232,12 @@ const simLink = (ctx: StEditorContext) =>
       const moved = next.pause !== shown.pause && next.pause > 0 && next.pause <= view.state.doc.lines;
       shown = next;
       view.dispatch({
-        effects: [setDebug.of(next), ...(moved ? [EditorView.scrollIntoView(view.state.doc.line(next.pause).from, { y: 'nearest' })] : [])],
+        effects: [
+          setDebug.of(next),
+          ...(moved
+            ? [EditorView.scrollIntoView(view.state.doc.line(next.pause).from, { y: 'nearest' })]
+            : []),
+        ],
       });
     };
     const connect = () => {
@@ -243,28 +289,42 @@ const stepKey = (request: StepRequest) => (): boolean => {
   return true;
 };
 
+/** A key that acts on the program: the typing burst goes into the model first (Run must compile what is shown). */
+const committed =
+  (run: (view: EditorView) => boolean) =>
+  (view: EditorView): boolean => {
+    commitStEdit(view);
+    return run(view);
+  };
+
 /** The simulator's keys inside the editor: F9 on the cursor line, F5 / Shift+F5, F10 / F11 / Shift+F11. */
-const debugKeys = keymap.of([
-  { key: 'F9', run: (view) => toggleLineBreakpoint(view, view.state.doc.lineAt(view.state.selection.main.head).number) },
-  { key: 'F10', run: stepKey({ kind: 'network' }) },
-  { key: 'F11', run: stepKey({ kind: 'network', into: true }) },
-  { key: 'Shift-F11', run: stepKey({ kind: 'network', out: true }) },
-  {
-    key: 'F5',
-    run: () => {
-      const c = simControls.current;
-      if (c && c.sim.getState().mode !== 'running' && c.sim.getState().mode !== 'faulted') c.commands.run();
-      return !!c;
+const debugKeys = keymap.of(
+  [
+    {
+      key: 'F9',
+      run: (view: EditorView) =>
+        toggleLineBreakpoint(view, view.state.doc.lineAt(view.state.selection.main.head).number),
     },
-  },
-  {
-    key: 'Shift-F5',
-    run: () => {
-      simControls.current?.sim.getState().pause();
-      return !!simControls.current;
+    { key: 'F10', run: stepKey({ kind: 'network' }) },
+    { key: 'F11', run: stepKey({ kind: 'network', into: true }) },
+    { key: 'Shift-F11', run: stepKey({ kind: 'network', out: true }) },
+    {
+      key: 'F5',
+      run: () => {
+        const c = simControls.current;
+        if (c && c.sim.getState().mode !== 'running' && c.sim.getState().mode !== 'faulted') c.commands.run();
+        return !!c;
+      },
     },
-  },
-]);
+    {
+      key: 'Shift-F5',
+      run: () => {
+        simControls.current?.sim.getState().pause();
+        return !!simControls.current;
+      },
+    },
+  ].map((b) => ({ ...b, run: committed(b.run) })),
+);
 
 /** The debugging extensions of the ST editor of one POU. */
 export function stDebugExtensions(ctx: StEditorContext): Extension[] {
