@@ -6,8 +6,8 @@
 // At every stage nothing overflows the window and the page has logged no error.
 import type { BrowserContext, Page } from 'playwright-core';
 import ModbusRTU from 'modbus-serial';
-import { expect, inject, test } from 'vitest';
-import { waitForApp, useChromium } from './appPage';
+import { expect, test } from 'vitest';
+import { appUrl, simModbusPort, waitForApp, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 import { EditorPage, poll } from './panelsPage';
 import { SimPage } from './simPage';
@@ -55,7 +55,7 @@ test('the first day: draw, run, fix, keep, explain, test, structure, rename, pri
   const draw = new DrawPage(page);
   const sim = new SimPage(page);
   try {
-    await page.goto(inject('appUrl'));
+    await page.goto(appUrl());
     await waitForApp(page);
     await stage('opened');
 
@@ -400,7 +400,7 @@ test('the first day: draw, run, fix, keep, explain, test, structure, rename, pri
     await sim.waitForValue('Start', false);
     await poll(() => panel.getByTestId('hw-point-%QX0.0').getByTestId('hw-value').textContent()).toBe('TRUE');
     const modbus = new ModbusRTU();
-    await modbus.connectTCP('127.0.0.1', { port: inject('simModbusPort') });
+    await modbus.connectTCP('127.0.0.1', { port: simModbusPort() });
     try {
       modbus.setTimeout(5_000);
       await expect.poll(async () => (await modbus.readCoils(0, 1)).data[0], { timeout: 15_000 }).toBe(true);
