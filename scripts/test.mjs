@@ -1,38 +1,36 @@
 #!/usr/bin/env node
-// `npm test`: the type check, lint, unit tests, build and browser tests, in two lanes that run at
-// the same time, each lane in order:
+// `npm test`: the type check, lint, build, unit tests and browser tests, in three stages:
 //
-//   lane 1: vite build  -> browser tests (vitest.e2e.config.ts, against the server `npm start` runs)
-//   lane 2: tsc --noEmit -> eslint . -> unit tests (vitest.config.ts)
+//   1. tsc --noEmit, eslint . and vite build, side by side (no deadlines in them: they only need CPU);
+//   2. the unit tests (vitest.config.ts: two files at a time);
+//   3. the browser tests (vitest.e2e.config.ts: two files at a time, each worker with its own
+//      server `npm start` runs), once the build passed.
 //
-// The browser tests are the longest phase and wait on Chromium much of the time; the unit tests
-// wait on child processes (gateway, pymodbus, mbpoll) much of the time. Run one after the other,
-// each leaves a core idle; side by side they finish minutes sooner, also on a loaded 2-core
-// machine (docs/benchmarks.md, "The test suite"). Every phase runs whatever happens to the others,
-// so one run reports every failure; the exit code is 1 when any phase failed.
+// The unit and browser tests wait on deadlines (a gateway answering, a page painting), so they do
+// not run beside each other: on a busy 2-core machine that made both miss deadlines.
+// Every phase runs whatever happens to the others (only the browser tests need the build), so
+// one run reports every failure; the exit code is 1 when any phase failed.
 //
 // Output: each line is prefixed with its phase ("unit │ …") as it comes; at the end, the output of
 // every failed phase is printed again whole, then a table of the phases with their times.
-// `npm run test:unit` and `npm run test:e2e` still run one part alone.
+// `npm run typecheck`, `npm run lint`, `npm run test:unit` and `npm run test:e2e` run one part alone.
 import { spawn } from 'node:child_process';
 import { performance } from 'node:perf_hooks';
 
 const npx = process.platform === 'win32' ? 'npx.cmd' : 'npx';
 
-/** The phases of each lane, in order. */
-const lanes = [
-  [
-    { name: 'build', cmd: [npx, 'vite', 'build'] },
-    { name: 'e2e', cmd: [npx, 'vitest', 'run', '-c', 'vitest.e2e.config.ts'] },
-  ],
+/** The stages, in order; the phases of a stage run side by side. */
+const stages = [
   [
     { name: 'typecheck', cmd: [npx, 'tsc', '-p', 'tsconfig.json', '--noEmit'] },
     { name: 'lint', cmd: [npx, 'eslint', '.'] },
-    { name: 'unit', cmd: [npx, 'vitest', 'run'] },
+    { name: 'build', cmd: [npx, 'vite', 'build'] },
   ],
+  [{ name: 'unit', cmd: [npx, 'vitest', 'run'] }],
+  [{ name: 'e2e', cmd: [npx, 'vitest', 'run', '-c', 'vitest.e2e.config.ts'], needs: 'build' }],
 ];
 
-const width = Math.max(...lanes.flat().map((p) => p.name.length));
+const width = Math.max(...stages.flat().map((p) => p.name.length));
 const color = process.stdout.isTTY ? { FORCE_COLOR: '1' } : {};
 const children = new Set();
 
@@ -79,22 +77,20 @@ for (const signal of ['SIGINT', 'SIGTERM']) {
 }
 
 const started = performance.now();
-const results = (
-  await Promise.all(
-    lanes.map(async (lane) => {
-      const out = [];
-      for (const phase of lane) {
+const results = [];
+for (const stage of stages) {
+  results.push(
+    ...(await Promise.all(
+      stage.map((phase) => {
         // The browser tests need the build: when it failed, they are not run.
-        if (phase.name === 'e2e' && out.some((r) => r.code !== 0)) {
-          out.push({ ...phase, code: -1, seconds: 0, output: 'not run: the build failed\n', skipped: true });
-          continue;
+        if (phase.needs && results.some((r) => r.name === phase.needs && r.code !== 0)) {
+          return { ...phase, code: -1, seconds: 0, output: `not run: ${phase.needs} failed\n`, skipped: true };
         }
-        out.push(await run(phase));
-      }
-      return out;
-    }),
-  )
-).flat();
+        return run(phase);
+      }),
+    )),
+  );
+}
 const total = (performance.now() - started) / 1000;
 
 const failed = results.filter((r) => r.code !== 0);
