@@ -87,7 +87,9 @@ test('the first day: draw, run, fix, keep, explain, test, structure, rename, pri
     await expect.poll(() => draw.problemsSummary(), CHECKS).toBe('No problems');
     await stage('seal-in drawn');
 
-    // 2. A TON in a new network (tour step 3): Motor → T1 (PT T#2s) → Lamp.
+    // 2. A TON in a new network (tour step 3): Motor → T1 (PT T#20s) → Lamp. Step 3 pauses while T1
+    // is timing: 20 s leaves room for the clicks from Start to Pause on a busy machine (with 2 s,
+    // ET had reached PT before the pause at load 20, and stepping could not raise it).
     await page.keyboard.press('n');
     await poll(async () => (await draw.networks()).length).toBe(2);
     await page.keyboard.press('c');
@@ -101,7 +103,7 @@ test('the first day: draw, run, fix, keep, explain, test, structure, rename, pri
     const pin = page.getByTestId('pin-editor');
     await pin.waitFor();
     await poll(() => page.locator('[data-pin]').getAttribute('data-pin')).toBe('PT');
-    await pin.fill('T#2s');
+    await pin.fill('T#20s');
     await page.keyboard.press('Tab');
     await poll(() => page.locator('[data-pin]').getAttribute('data-pin')).toBe('Q');
     await pin.fill('Lamp');
@@ -112,7 +114,7 @@ test('the first day: draw, run, fix, keep, explain, test, structure, rename, pri
     await poll(async () => {
       const box = (await draw.networks())[1]!.elements.find((e) => e.kind === 'box');
       return box && box.kind === 'box' ? { type: box.blockType, instance: box.instance, ...box.inputs, ...box.outputs } : undefined;
-    }).toMatchObject({ type: 'TON', instance: 'T1', PT: 'T#2s', Q: 'Lamp' });
+    }).toMatchObject({ type: 'TON', instance: 'T1', PT: 'T#20s', Q: 'Lamp' });
     await expect.poll(() => draw.problemsSummary(), CHECKS).toBe('No problems');
     await stage('TON added');
 
