@@ -8,10 +8,11 @@ export default defineConfig({
     globalSetup: ['tests/e2e/global-setup.ts'],
     testTimeout: 90_000,
     hookTimeout: 60_000,
-    // Two files at a time, each worker with a server of its own (global-setup.ts) and every file
-    // with browser contexts of its own in the run's one Chromium: a file waits on the page much of
-    // the time, and two keep a 2-core machine busy. `--no-file-parallelism` runs one at a time.
-    maxWorkers: 2,
+    // One file at a time. The global setup starts a server per worker and a file only talks to its
+    // own worker's server (appPage.ts appUrl()), so `--maxWorkers=2` runs two files at a time
+    // against servers of their own; on a busy 2-core machine (load 20-30) that made the hardware
+    // and small-screen journeys miss their deadlines, so it is not the default.
+    maxWorkers: 1,
     // One module cache per worker: playwright-core and the helpers are imported once, not per file
     // (about 3 s a file on a busy machine). The files keep no state in shared modules.
     isolate: false,

@@ -3,8 +3,8 @@
 //
 //   1. tsc --noEmit, eslint . and vite build, side by side (no deadlines in them: they only need CPU);
 //   2. the unit tests (vitest.config.ts: two files at a time);
-//   3. the browser tests (vitest.e2e.config.ts: two files at a time, each worker with its own
-//      server `npm start` runs), once the build passed.
+//   3. the browser tests (vitest.e2e.config.ts, against the server `npm start` runs), when the
+//      build passed.
 //
 // The unit and browser tests wait on deadlines (a gateway answering, a page painting), so they do
 // not run beside each other: on a busy 2-core machine that made both miss deadlines.

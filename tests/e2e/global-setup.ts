@@ -1,9 +1,9 @@
 // Starts the server `npm start` starts (bin/rungsmith-gateway.mjs: the gateway's static server with
 // its CSP and headers, /io and the simulated device) on free loopback ports, serving the built app
 // (dist/), and checks for Chromium. Browser tests therefore run the app exactly as users get it.
-// One server per worker: the files run two at a time (vitest.e2e.config.ts), and a file only ever
-// talks to its own worker's server (appPage.ts appUrl(), simModbusPort()), so the files of one
-// worker see one server one after another exactly as in a run of one file at a time.
+// One server per worker (vitest.e2e.config.ts runs one file at a time; `--maxWorkers=2` two), and a
+// file only ever talks to its own worker's server (appPage.ts appUrl(), simModbusPort()), so the
+// files of one worker see one server one after another exactly as in a run of one file at a time.
 // It also starts the one Chromium the test files connect to (appPage.ts useChromium); each file
 // opens its pages in contexts of its own.
 import { spawn, type ChildProcess } from 'node:child_process';
