@@ -1,8 +1,30 @@
-// Shared set-up of the browser tests: one Chromium per test file, and the app opened in a page that
-// records console errors.
+// Shared set-up of the browser tests: a connection per test file to the run's one Chromium, the
+// URL of this worker's app server, and the app opened in a page that records console errors.
 import type { Browser, Locator, Page } from 'playwright-core';
 import { afterAll, beforeAll, expect, inject } from 'vitest';
 import { collectPageErrors, connectChromium } from './browser';
+
+/** This worker's index among the run's servers (VITEST_POOL_ID is 1, 2, … up to maxWorkers). */
+function worker(count: number): number {
+  const id = Number(process.env.VITEST_POOL_ID ?? 1);
+  if (!Number.isInteger(id) || id < 1 || id > count) throw new Error(`VITEST_POOL_ID ${process.env.VITEST_POOL_ID} has no app server (the global setup started ${count})`);
+  return id - 1;
+}
+
+/**
+ * The app's URL on this worker's server (tests/e2e/global-setup.ts): the URL the server `npm start`
+ * runs printed, http://127.0.0.1:PORT/#token=…. Files running at the same time never share a server.
+ */
+export function appUrl(): string {
+  const urls = inject('appUrls');
+  return urls[worker(urls.length)]!;
+}
+
+/** The Modbus TCP port of this worker's server's simulated I/O device (127.0.0.1). */
+export function simModbusPort(): number {
+  const ports = inject('simModbusPorts');
+  return ports[worker(ports.length)]!;
+}
 
 /** The window size the canvas tests lay the ladder out in. */
 export const APP_VIEWPORT = { width: 1440, height: 900 } as const;
@@ -48,7 +70,7 @@ export interface AppPage {
 }
 
 /** Opens the app (the built preview unless `url` says otherwise) in a new page and waits for it. */
-export async function openApp(browser: Browser, url: string = inject('appUrl')): Promise<AppPage> {
+export async function openApp(browser: Browser, url: string = appUrl()): Promise<AppPage> {
   const page = await browser.newPage({ viewport: APP_VIEWPORT });
   const errors = collectPageErrors(page);
   await page.goto(url);

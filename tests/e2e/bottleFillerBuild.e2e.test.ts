@@ -7,9 +7,9 @@
 // CTU, a TON, a maintenance jump with labels, 13 networks in Main, a program Signals in a second
 // task. At the end the checks find no error, F5 runs it and Start lights the run lamp.
 import type { Page } from 'playwright-core';
-import { afterAll, afterEach, beforeAll, expect, inject, test } from 'vitest';
+import { afterAll, afterEach, beforeAll, expect, test } from 'vitest';
 import type { Project } from '../../src/model/project';
-import { openApp, useChromium } from './appPage';
+import { appUrl, openApp, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 import { SimPage } from './simPage';
 
@@ -199,7 +199,7 @@ beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   await page
     .context()
-    .grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(inject('appUrl')).origin });
+    .grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(appUrl()).origin });
   draw = new DrawPage(page);
   sim = new SimPage(page);
 });

@@ -1,9 +1,9 @@
 // Canvas gestures added on review of the editor issue: dragging elements into another network (one
 // undo step), two-finger pinch zoom on a touch screen, and Enter on an unchanged name in the
 // inline editor moving on like a commit.
-import { afterAll, beforeAll, beforeEach, expect, inject, test } from 'vitest';
+import { afterAll, beforeAll, beforeEach, expect, test } from 'vitest';
 import type { Page } from 'playwright-core';
-import { APP_VIEWPORT, openApp, useChromium, waitForApp } from './appPage';
+import { APP_VIEWPORT, appUrl, openApp, useChromium, waitForApp } from './appPage';
 import { collectPageErrors } from './browser';
 import { DrawPage } from './drawPage';
 
@@ -156,7 +156,7 @@ test('Enter on an unchanged name closes the name field and moves the cursor on',
 test('two fingers spreading on a touch screen zoom the canvas in, pinching zooms out', async () => {
   const touchPage = await browser().newPage({ viewport: APP_VIEWPORT, hasTouch: true });
   const touchErrors = collectPageErrors(touchPage);
-  await touchPage.goto(inject('appUrl'));
+  await touchPage.goto(appUrl());
   await waitForApp(touchPage);
   const box = (await touchPage.getByTestId('ladder-canvas').boundingBox())!;
   const cx = box.x + box.width / 2;

@@ -6,8 +6,8 @@
 // At every stage nothing overflows the window and the page has logged no error.
 import type { BrowserContext, Page } from 'playwright-core';
 import ModbusRTU from 'modbus-serial';
-import { expect, inject, test } from 'vitest';
-import { waitForApp, useChromium } from './appPage';
+import { expect, test } from 'vitest';
+import { appUrl, simModbusPort, waitForApp, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 import { EditorPage, poll } from './panelsPage';
 import { SimPage } from './simPage';
@@ -55,7 +55,7 @@ test('the first day: draw, run, fix, keep, explain, test, structure, rename, pri
   const draw = new DrawPage(page);
   const sim = new SimPage(page);
   try {
-    await page.goto(inject('appUrl'));
+    await page.goto(appUrl());
     await waitForApp(page);
     await stage('opened');
 
@@ -87,7 +87,9 @@ test('the first day: draw, run, fix, keep, explain, test, structure, rename, pri
     await expect.poll(() => draw.problemsSummary(), CHECKS).toBe('No problems');
     await stage('seal-in drawn');
 
-    // 2. A TON in a new network (tour step 3): Motor → T1 (PT T#2s) → Lamp.
+    // 2. A TON in a new network (tour step 3): Motor → T1 (PT T#20s) → Lamp. Step 3 pauses while T1
+    // is timing: 20 s leaves room for the clicks from Start to Pause on a busy machine (with 2 s,
+    // ET had reached PT before the pause at load 20, and stepping could not raise it).
     await page.keyboard.press('n');
     await poll(async () => (await draw.networks()).length).toBe(2);
     await page.keyboard.press('c');
@@ -101,7 +103,7 @@ test('the first day: draw, run, fix, keep, explain, test, structure, rename, pri
     const pin = page.getByTestId('pin-editor');
     await pin.waitFor();
     await poll(() => page.locator('[data-pin]').getAttribute('data-pin')).toBe('PT');
-    await pin.fill('T#2s');
+    await pin.fill('T#20s');
     await page.keyboard.press('Tab');
     await poll(() => page.locator('[data-pin]').getAttribute('data-pin')).toBe('Q');
     await pin.fill('Lamp');
@@ -112,7 +114,7 @@ test('the first day: draw, run, fix, keep, explain, test, structure, rename, pri
     await poll(async () => {
       const box = (await draw.networks())[1]!.elements.find((e) => e.kind === 'box');
       return box && box.kind === 'box' ? { type: box.blockType, instance: box.instance, ...box.inputs, ...box.outputs } : undefined;
-    }).toMatchObject({ type: 'TON', instance: 'T1', PT: 'T#2s', Q: 'Lamp' });
+    }).toMatchObject({ type: 'TON', instance: 'T1', PT: 'T#20s', Q: 'Lamp' });
     await expect.poll(() => draw.problemsSummary(), CHECKS).toBe('No problems');
     await stage('TON added');
 
@@ -400,7 +402,7 @@ test('the first day: draw, run, fix, keep, explain, test, structure, rename, pri
     await sim.waitForValue('Start', false);
     await poll(() => panel.getByTestId('hw-point-%QX0.0').getByTestId('hw-value').textContent()).toBe('TRUE');
     const modbus = new ModbusRTU();
-    await modbus.connectTCP('127.0.0.1', { port: inject('simModbusPort') });
+    await modbus.connectTCP('127.0.0.1', { port: simModbusPort() });
     try {
       modbus.setTimeout(5_000);
       await expect.poll(async () => (await modbus.readCoils(0, 1)).data[0], { timeout: 15_000 }).toBe(true);

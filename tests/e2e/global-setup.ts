@@ -1,14 +1,18 @@
 // Starts the server `npm start` starts (bin/rungsmith-gateway.mjs: the gateway's static server with
 // its CSP and headers, /io and the simulated device) on free loopback ports, serving the built app
 // (dist/), and checks for Chromium. Browser tests therefore run the app exactly as users get it.
-// It also starts the one Chromium the test files connect to (appPage.ts useChromium).
+// One server per worker (vitest.e2e.config.ts runs one file at a time; `--maxWorkers=2` two), and a
+// file only ever talks to its own worker's server (appPage.ts appUrl(), simModbusPort()), so the
+// files of one worker see one server one after another exactly as in a run of one file at a time.
+// It also starts the one Chromium the test files connect to (appPage.ts useChromium); each file
+// opens its pages in contexts of its own.
 import { spawn, type ChildProcess } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import type { TestProject } from 'vitest/node';
 import type { BrowserServer } from 'playwright-core';
 import { CHROMIUM_PATH, launchChromiumServer } from './browser';
 
-let server: ChildProcess | undefined;
+const servers: ChildProcess[] = [];
 let chromium: BrowserServer | undefined;
 
 /** Waits for the line the gateway prints when it is ready: "Rungsmith gateway: open http://127.0.0.1:PORT/#token=…". */
@@ -64,35 +68,53 @@ export async function setup(project: TestProject) {
     );
   }
   if (!existsSync('dist/index.html')) throw new Error('dist/ is missing: run "npm run build" (npm run test:e2e does it).');
-  const started = await startServer();
-  server = started.child;
-  project.provide('appUrl', started.url);
-  project.provide('simModbusPort', started.simModbusPort);
+  const workers = Math.max(1, project.config.maxWorkers || 1);
   try {
-    chromium = await launchChromiumServer();
+    const [started] = await Promise.all([
+      Promise.all(
+        Array.from({ length: workers }, async () => {
+          const s = await startServer();
+          servers.push(s.child);
+          return s;
+        }),
+      ),
+      launchChromiumServer().then((c) => (chromium = c)),
+    ]);
+    project.provide(
+      'appUrls',
+      started.map((s) => s.url),
+    );
+    project.provide(
+      'simModbusPorts',
+      started.map((s) => s.simModbusPort),
+    );
+    project.provide('browserWsEndpoint', chromium!.wsEndpoint());
   } catch (e) {
     await teardown();
     throw e;
   }
-  project.provide('browserWsEndpoint', chromium.wsEndpoint());
 }
 
 export async function teardown() {
   await chromium?.close();
-  const child = server;
-  if (!child || child.exitCode !== null) return;
-  await new Promise<void>((resolve) => {
-    child.once('exit', () => resolve());
-    child.kill('SIGTERM');
-  });
+  await Promise.all(
+    servers.splice(0).map(
+      (child) =>
+        new Promise<void>((resolve) => {
+          if (child.exitCode !== null || child.signalCode !== null) return resolve();
+          child.once('exit', () => resolve());
+          child.kill('SIGTERM');
+        }),
+    ),
+  );
 }
 
 declare module 'vitest' {
   export interface ProvidedContext {
-    /** The URL the app server printed: http://127.0.0.1:PORT/#token=… */
-    appUrl: string;
-    /** The Modbus TCP port of the app server's simulated I/O device (127.0.0.1). */
-    simModbusPort: number;
+    /** Per worker (VITEST_POOL_ID 1, 2, …), the URL its app server printed: http://127.0.0.1:PORT/#token=…; read it with appPage.ts appUrl(). */
+    appUrls: string[];
+    /** Per worker, the Modbus TCP port of its app server's simulated I/O device (127.0.0.1); appPage.ts simModbusPort(). */
+    simModbusPorts: number[];
     /** Where the run's Chromium listens (playwright's browser server). */
     browserWsEndpoint: string;
   }

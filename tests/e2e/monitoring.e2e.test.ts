@@ -5,11 +5,11 @@
 // the cursor's variable, and the list is still there after a reload. The canvas is read through its
 // drawing calls (recorded in the page), not screenshots.
 import type { Page } from 'playwright-core';
-import { expect, inject, test } from 'vitest';
+import { expect, test } from 'vitest';
 import type { Project } from '../../src/model/project';
 import { ladder, project, vars } from '../engine/ladder';
 import { collectPageErrors } from './browser';
-import { APP_VIEWPORT, useChromium, waitForApp } from './appPage';
+import { APP_VIEWPORT, appUrl, useChromium, waitForApp } from './appPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -126,7 +126,7 @@ test('values beside the pins while running, clear of the names, and an older val
   page = await browser().newPage({ viewport: APP_VIEWPORT });
   errors = collectPageErrors(page);
   await page.addInitScript(recordTexts);
-  await page.goto(inject('appUrl'));
+  await page.goto(appUrl());
   await waitForApp(page);
   sim = new SimPage(page);
   await sim.load(timerAdd());

@@ -2,8 +2,8 @@
 import type { Browser, Locator, Page } from 'playwright-core';
 import type { Project } from '../../src/model/project';
 import type { UiState } from '../../src/store/uiStore';
-import { expect, inject } from 'vitest';
-import { chooseMenuItem, waitForApp } from './appPage';
+import { expect } from 'vitest';
+import { appUrl, chooseMenuItem, waitForApp } from './appPage';
 import { collectPageErrors } from './browser';
 
 /** expect.poll with room for the checks: they run after a quiet time, in an idle moment, in a worker. */
@@ -16,7 +16,7 @@ export class EditorPage {
   }
 
   /** Opens the app (the built preview unless `url` says otherwise) in its own context that accepts downloads. */
-  static async open(browser: Browser, url: string = inject('appUrl')): Promise<EditorPage> {
+  static async open(browser: Browser, url: string = appUrl()): Promise<EditorPage> {
     const context = await browser.newContext({ acceptDownloads: true });
     const page = await context.newPage();
     const editor = new EditorPage(page);

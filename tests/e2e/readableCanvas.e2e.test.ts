@@ -4,13 +4,13 @@
 // and nothing moving when Run starts. Checked through the canvas's drawing calls (recorded in the
 // page), not screenshots.
 import type { Page } from 'playwright-core';
-import { afterEach, beforeEach, expect, inject, test } from 'vitest';
+import { afterEach, beforeEach, expect, test } from 'vitest';
 import { CELL_W, cellCentre, columnsOf, RAIL_X } from '../../src/editor/canvas/geometry';
 import { FORCED_BADGE } from '../../src/editor/theme/monitorStyle';
 import type { Project } from '../../src/model/project';
 import { ladder, project, vars } from '../engine/ladder';
 import { collectPageErrors } from './browser';
-import { useChromium, waitForApp } from './appPage';
+import { appUrl, useChromium, waitForApp } from './appPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -213,7 +213,7 @@ beforeEach(async () => {
   page = await browser().newPage({ viewport: { width: 1280, height: 720 } });
   errors = collectPageErrors(page);
   await page.addInitScript(recordDrawing);
-  await page.goto(inject('appUrl'));
+  await page.goto(appUrl());
   await waitForApp(page);
   sim = new SimPage(page);
 });

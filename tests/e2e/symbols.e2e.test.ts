@@ -4,9 +4,9 @@
 // global from the canvas and from the completion list; a POU variable hiding a global warned in
 // Problems (LD-W05). One page for the file: each test goes on from the last one's project.
 import type { Page } from 'playwright-core';
-import { beforeAll, expect, inject, test } from 'vitest';
+import { beforeAll, expect, test } from 'vitest';
 import type { Project } from '../../src/model/project';
-import { useChromium } from './appPage';
+import { appUrl, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 import { EditorPage, poll } from './panelsPage';
 
@@ -26,7 +26,7 @@ beforeAll(async () => {
   page = editor.page;
   await page
     .context()
-    .grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(inject('appUrl')).origin });
+    .grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(appUrl()).origin });
   draw = new DrawPage(page);
   await page.evaluate(() => {
     const doc = window.rungsmith!.documentStore!.getState();
