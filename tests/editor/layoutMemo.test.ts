@@ -42,19 +42,19 @@ describe('the canvas layout memoised per network', () => {
     expect(networkMeasures(edited[0]!, library)).toBe(kept);
   });
 
-  it('a comment, a collapse and more rows change the tops of the networks below', () => {
+  it('a comment, a collapse and room asked for below a rung change the tops of the networks below', () => {
     const edited = base.map((n, i) =>
       i === 1
         ? { ...n, comment: 'line one\nline two\nline three' }
         : i === 2
           ? { ...n, collapsed: true }
-          : i === 4
-            ? { ...n, rows: 5 }
-            : n,
+          : n,
     );
+    // The keyboard cursor went below network 4's rung: it shows 5 rows (its grid keeps its own).
+    const room = { network: base[4]!.id, rows: 5 };
     const before = layoutNetworks(base, library);
-    const after = layoutNetworks(edited, library);
-    expect(plain(after)).toEqual(fresh(edited, library));
+    const after = layoutNetworks(edited, library, undefined, room);
+    expect(plain(after)).toEqual(fresh(edited, library, undefined, room));
     expect(after.heights[1]).toBeGreaterThan(before.heights[1]!);
     expect(after.heights[2]).toBeLessThan(before.heights[2]!);
     expect(after.heights[4]).toBeGreaterThan(before.heights[4]!);
