@@ -19,34 +19,12 @@ import {
   stringEnd,
   symbolAt,
   typedLiteralEnd,
+  ST_STATEMENT_WORDS,
 } from '../../engine/st/lexer';
 import { ELEMENTARY_TYPES } from '../../model/iecTypes';
 import { blockAt, CLOSING_WORDS, OPENING_WORDS, stStructure, type StStructure } from './stBlocks';
 
-const CONTROL = new Set([
-  'IF',
-  'THEN',
-  'ELSIF',
-  'ELSE',
-  'END_IF',
-  'CASE',
-  'OF',
-  'END_CASE',
-  'FOR',
-  'TO',
-  'BY',
-  'DO',
-  'END_FOR',
-  'WHILE',
-  'END_WHILE',
-  'REPEAT',
-  'UNTIL',
-  'END_REPEAT',
-  'EXIT',
-  'RETURN',
-  'CONTINUE',
-  'JMP',
-]);
+const CONTROL = new Set<string>([...ST_STATEMENT_WORDS, 'JMP']);
 const DEFINITION = new Set([
   'PROGRAM',
   'END_PROGRAM',

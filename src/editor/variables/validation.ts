@@ -1,5 +1,6 @@
 // Checks a variable table the way a PLC programmer expects to be told about mistakes: per row and
 // per field, in plain words. Pure functions: the table shows the result inline.
+import { IEC_DECLARATION_WORDS, ST_OPERATOR_WORDS, ST_STATEMENT_WORDS } from '../../engine/st/lexer';
 import { blockSignature } from '../../model/blocks';
 import { anonymousType, leafPaths, resolveType } from '../../model/dataTypes';
 import { blockLibrary, STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
@@ -27,70 +28,24 @@ export interface VariableIssue {
 
 /** Words IEC 61131-3 reserves, which cannot name a variable (types and block names are added below). */
 const KEYWORDS = [
-  'TRUE',
-  'FALSE',
-  'AND',
-  'OR',
-  'XOR',
-  'NOT',
-  'MOD',
-  'IF',
-  'THEN',
-  'ELSE',
-  'ELSIF',
-  'END_IF',
-  'CASE',
-  'OF',
-  'END_CASE',
-  'FOR',
-  'TO',
-  'BY',
-  'DO',
-  'END_FOR',
-  'WHILE',
-  'END_WHILE',
-  'REPEAT',
-  'UNTIL',
-  'END_REPEAT',
-  'EXIT',
-  'RETURN',
-  'VAR',
-  'VAR_INPUT',
-  'VAR_OUTPUT',
-  'VAR_IN_OUT',
-  'VAR_EXTERNAL',
-  'VAR_GLOBAL',
-  'VAR_TEMP',
-  'END_VAR',
-  'CONSTANT',
-  'RETAIN',
-  'NON_RETAIN',
-  'AT',
-  'PROGRAM',
-  'END_PROGRAM',
-  'FUNCTION',
-  'END_FUNCTION',
-  'FUNCTION_BLOCK',
-  'END_FUNCTION_BLOCK',
-  'TYPE',
-  'END_TYPE',
-  'STRUCT',
-  'END_STRUCT',
-  'ARRAY',
-  'STRING',
-  'WSTRING',
-  'DATE',
-  'TIME_OF_DAY',
-  'TOD',
-  'DATE_AND_TIME',
-  'DT',
-  'EN',
-  'ENO',
-  'CONFIGURATION',
-  'RESOURCE',
-  'TASK',
-  'WITH',
-  'ON',
+  ...ST_OPERATOR_WORDS,
+  // CONTINUE (IEC 3rd edition) is not reserved for variable names: older projects use it as one.
+  ...ST_STATEMENT_WORDS.filter((w) => w !== 'CONTINUE'),
+  ...IEC_DECLARATION_WORDS,
+  ...[
+    'DATE',
+    'TIME_OF_DAY',
+    'TOD',
+    'DATE_AND_TIME',
+    'DT',
+    'EN',
+    'ENO',
+    'CONFIGURATION',
+    'RESOURCE',
+    'TASK',
+    'WITH',
+    'ON',
+  ],
 ];
 const RESERVED = new Set(KEYWORDS);
 
@@ -233,8 +188,7 @@ export function validateVariables(
           field: 'type',
           message: resolved && written ? resolved.message : `unknown type "${v.type}"`,
         });
-    }
-    else if (owner?.kind === 'FUNCTION' && lib.isFbType(type))
+    } else if (owner?.kind === 'FUNCTION' && lib.isFbType(type))
       issues.push({
         index,
         field: 'type',
@@ -273,7 +227,10 @@ export function validateVariables(
           message: `a ${lib.signature(type)?.name ?? type} instance takes no initial value`,
         });
       else if (isElementaryType(type) || parseSizedString(type)) {
-        const problem = checkInitialValue(v.initial, parseSizedString(type)?.type ?? (type as ElementaryType));
+        const problem = checkInitialValue(
+          v.initial,
+          parseSizedString(type)?.type ?? (type as ElementaryType),
+        );
         if (problem) issues.push({ index, field: 'initial', message: problem });
       } else if (scope.project && resolveType(scope.project, v.type).ok) {
         const leaves = leafPaths(scope.project, v);

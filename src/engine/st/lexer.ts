@@ -14,10 +14,37 @@ export interface Token {
 }
 
 /** The operator and punctuation symbols, longest first where one starts another. */
-export const SYMBOLS: readonly string[] = ['**', ':=', '=>', '<=', '>=', '<>', '..', '+', '-', '*', '/', '=', '<', '>', '(', ')', ',', ';', ':', '.', '&', '[', ']', '^', '#'];
+export const SYMBOLS: readonly string[] = [
+  '**',
+  ':=',
+  '=>',
+  '<=',
+  '>=',
+  '<>',
+  '..',
+  '+',
+  '-',
+  '*',
+  '/',
+  '=',
+  '<',
+  '>',
+  '(',
+  ')',
+  ',',
+  ';',
+  ':',
+  '.',
+  '&',
+  '[',
+  ']',
+  '^',
+  '#',
+];
 
 /** A letter or `_` (by character code: the lexer runs on every keystroke in the ST editor). */
-export const isIdentStartCode = (k: number): boolean => (k >= 65 && k <= 90) || (k >= 97 && k <= 122) || k === 95;
+export const isIdentStartCode = (k: number): boolean =>
+  (k >= 65 && k <= 90) || (k >= 97 && k <= 122) || k === 95;
 const isIdentCode = (k: number): boolean => isIdentStartCode(k) || (k >= 48 && k <= 57);
 const isIdentStart = (c: string): boolean => isIdentStartCode(c.charCodeAt(0));
 const isIdentChar = (c: string): boolean => isIdentCode(c.charCodeAt(0));
@@ -47,7 +74,10 @@ export function numberEnd(text: string, i: number): number {
     end++;
     while (end < text.length && (isDigit(text[end]!) || text[end] === '_')) end++;
   }
-  if (/[eE]/.test(text[end] ?? '') && (isDigit(text[end + 1] ?? '') || (/[+-]/.test(text[end + 1] ?? '') && isDigit(text[end + 2] ?? '')))) {
+  if (
+    /[eE]/.test(text[end] ?? '') &&
+    (isDigit(text[end + 1] ?? '') || (/[+-]/.test(text[end + 1] ?? '') && isDigit(text[end + 2] ?? '')))
+  ) {
     end += 2;
     while (end < text.length && isDigit(text[end]!)) end++;
   }
@@ -65,7 +95,13 @@ export function typedLiteralEnd(text: string, hash: number): number {
     const d = text[end]!;
     if (isIdentChar(d) || d === '#') end++;
     else if (d === '.' && isDigit(text[end + 1] ?? '')) end++;
-    else if ((d === '+' || d === '-') && /[eE]/.test(text[end - 1]!) && isDigit(text[end - 2] ?? '') && isDigit(text[end + 1] ?? '')) end++;
+    else if (
+      (d === '+' || d === '-') &&
+      /[eE]/.test(text[end - 1]!) &&
+      isDigit(text[end - 2] ?? '') &&
+      isDigit(text[end + 1] ?? '')
+    )
+      end++;
     else break;
   }
   return end;
@@ -90,7 +126,8 @@ export function stringEnd(text: string, i: number): number {
 }
 
 /** The symbol at `i`, or undefined. */
-export const symbolAt = (text: string, i: number): string | undefined => SYMBOLS.find((s) => text.startsWith(s, i));
+export const symbolAt = (text: string, i: number): string | undefined =>
+  SYMBOLS.find((s) => text.startsWith(s, i));
 
 export function tokenize(text: string): Token[] {
   const out: Token[] = [];
@@ -184,3 +221,58 @@ export function tokenize(text: string): Token[] {
   out.push({ kind: 'eof', text: '', upper: '', pos: pos(i) });
   return out;
 }
+
+/** ST's statement words (IEC 61131-3, 3.3.2). */
+export const ST_STATEMENT_WORDS = [
+  'IF',
+  'THEN',
+  'ELSIF',
+  'ELSE',
+  'END_IF',
+  'CASE',
+  'OF',
+  'END_CASE',
+  'FOR',
+  'TO',
+  'BY',
+  'DO',
+  'END_FOR',
+  'WHILE',
+  'END_WHILE',
+  'REPEAT',
+  'UNTIL',
+  'END_REPEAT',
+  'EXIT',
+  'CONTINUE',
+  'RETURN',
+] as const;
+/** Operators and Boolean literals written as words. */
+export const ST_OPERATOR_WORDS = ['AND', 'OR', 'XOR', 'NOT', 'MOD', 'TRUE', 'FALSE'] as const;
+/** Words of declarations and program organisation units. */
+export const IEC_DECLARATION_WORDS = [
+  'VAR',
+  'VAR_INPUT',
+  'VAR_OUTPUT',
+  'VAR_IN_OUT',
+  'VAR_TEMP',
+  'VAR_EXTERNAL',
+  'VAR_GLOBAL',
+  'END_VAR',
+  'CONSTANT',
+  'RETAIN',
+  'NON_RETAIN',
+  'AT',
+  'PROGRAM',
+  'END_PROGRAM',
+  'FUNCTION',
+  'END_FUNCTION',
+  'FUNCTION_BLOCK',
+  'END_FUNCTION_BLOCK',
+  'TYPE',
+  'END_TYPE',
+  'STRUCT',
+  'END_STRUCT',
+  'ARRAY',
+  'STRING',
+  'WSTRING',
+] as const;

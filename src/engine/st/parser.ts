@@ -1,20 +1,35 @@
 // Recursive-descent parser of Structured Text statements and expressions. Precedence, highest
 // first (IEC 61131-3 table 71): ( ), function call, **, unary - and NOT, * / MOD, + -,
 // < > <= >=, = <>, AND &, XOR, OR; operators of one level group left to right.
-import { StSyntaxError, type Arg, type BinaryOp, type CaseLabel, type Expr, type PathStep, type Pos, type Stmt } from './ast';
-import { tokenize, type Token } from './lexer';
+import {
+  StSyntaxError,
+  type Arg,
+  type BinaryOp,
+  type CaseLabel,
+  type Expr,
+  type PathStep,
+  type Pos,
+  type Stmt,
+} from './ast';
+import { ST_OPERATOR_WORDS, ST_STATEMENT_WORDS, tokenize, type Token } from './lexer';
 
 /** Words that end a statement list (and cannot start a statement). */
-const ENDERS = new Set(['END_IF', 'ELSIF', 'ELSE', 'END_CASE', 'END_FOR', 'END_WHILE', 'UNTIL', 'END_REPEAT']);
-
-const KEYWORDS = new Set([
-  ...ENDERS,
-  'IF', 'THEN', 'CASE', 'OF', 'FOR', 'TO', 'BY', 'DO', 'WHILE', 'REPEAT', 'EXIT', 'RETURN', 'CONTINUE',
-  'NOT', 'AND', 'OR', 'XOR', 'MOD', 'TRUE', 'FALSE',
+const ENDERS = new Set([
+  'END_IF',
+  'ELSIF',
+  'ELSE',
+  'END_CASE',
+  'END_FOR',
+  'END_WHILE',
+  'UNTIL',
+  'END_REPEAT',
 ]);
 
+const KEYWORDS = new Set<string>([...ST_STATEMENT_WORDS, ...ST_OPERATOR_WORDS]);
+
 /** The pragma MATIEC's timers use to read the clock: `{__SET_VAR(data__->,NAME,,__CURRENT_TIME)}`. */
-const CURRENT_TIME_PRAGMA = /^\s*__SET_VAR\s*\(\s*data__->\s*,\s*([A-Za-z_][A-Za-z0-9_]*)\s*,\s*,\s*__CURRENT_TIME\s*\)\s*;?\s*$/;
+const CURRENT_TIME_PRAGMA =
+  /^\s*__SET_VAR\s*\(\s*data__->\s*,\s*([A-Za-z_][A-Za-z0-9_]*)\s*,\s*,\s*__CURRENT_TIME\s*\)\s*;?\s*$/;
 
 export interface ParseOptions {
   /** Called for a pragma the engine does not run (kept for a warning). */
@@ -215,7 +230,8 @@ export class Parser {
     const out: Stmt[] = [];
     for (;;) {
       const t = this.t;
-      if (t.kind === 'eof' || (t.kind === 'ident' && (t.upper === 'ELSE' || t.upper === 'END_CASE'))) return out;
+      if (t.kind === 'eof' || (t.kind === 'ident' && (t.upper === 'ELSE' || t.upper === 'END_CASE')))
+        return out;
       if (this.accept(';')) continue;
       if (this.startsCaseLabel()) return out;
       if (t.kind === 'ident' && ENDERS.has(t.upper)) this.fail('expected END_CASE');
@@ -311,11 +327,20 @@ export class Parser {
     do {
       const t = this.t;
       const pos = t.pos;
-      if (t.kind === 'ident' && t.upper === 'NOT' && this.peek().kind === 'ident' && this.peek(2).text === '=>') {
+      if (
+        t.kind === 'ident' &&
+        t.upper === 'NOT' &&
+        this.peek().kind === 'ident' &&
+        this.peek(2).text === '=>'
+      ) {
         const name = this.peek().text;
         this.k += 3;
         out.push({ name, out: true, negated: true, value: this.variable(), pos });
-      } else if (t.kind === 'ident' && this.peek().kind === 'symbol' && (this.peek().text === ':=' || this.peek().text === '=>')) {
+      } else if (
+        t.kind === 'ident' &&
+        this.peek().kind === 'symbol' &&
+        (this.peek().text === ':=' || this.peek().text === '=>')
+      ) {
         const isOut = this.peek().text === '=>';
         this.k += 2;
         if (isOut) out.push({ name: t.text, out: true, value: this.variable(), pos });
@@ -361,7 +386,12 @@ export class Parser {
       this.k++;
       const next = this.t;
       // -5, -1.5: a negative literal (so -32768 fits INT), unless ** binds to it.
-      if (next.kind === 'literal' && /^\d/.test(next.text) && !/#/.test(next.text) && !(this.peek().text === '**')) {
+      if (
+        next.kind === 'literal' &&
+        /^\d/.test(next.text) &&
+        !/#/.test(next.text) &&
+        !(this.peek().text === '**')
+      ) {
         this.k++;
         return { k: 'lit', text: `-${next.text}`, pos: t.pos };
       }
@@ -404,7 +434,12 @@ export class Parser {
       this.k++;
       return { k: 'lit', text: t.upper, pos: t.pos };
     }
-    if (t.kind === 'ident' && !KEYWORDS.has(t.upper) && this.peek().kind === 'symbol' && this.peek().text === '(') {
+    if (
+      t.kind === 'ident' &&
+      !KEYWORDS.has(t.upper) &&
+      this.peek().kind === 'symbol' &&
+      this.peek().text === '('
+    ) {
       this.k += 2;
       return { k: 'call', name: t.text, args: this.args(), pos: t.pos };
     }

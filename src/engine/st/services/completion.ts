@@ -2,6 +2,7 @@
 // members), after `Type#` an enum's values, inside a call's parentheses its parameters by name,
 // elsewhere the variables in scope, enum values, functions and function blocks with their
 // signatures, and the statements of ST as snippets.
+import { ST_OPERATOR_WORDS, ST_STATEMENT_WORDS } from '../lexer';
 import { FB_SIGNATURES, FUNCTION_SIGNATURES, type BlockSignature } from '../../../model/blocks';
 import type { Project } from '../../../model/project';
 import {
@@ -44,36 +45,7 @@ export interface StCompletionResult {
   readonly explicit: boolean;
 }
 
-const KEYWORDS = [
-  'IF',
-  'THEN',
-  'ELSIF',
-  'ELSE',
-  'END_IF',
-  'CASE',
-  'OF',
-  'END_CASE',
-  'FOR',
-  'TO',
-  'BY',
-  'DO',
-  'END_FOR',
-  'WHILE',
-  'END_WHILE',
-  'REPEAT',
-  'UNTIL',
-  'END_REPEAT',
-  'EXIT',
-  'CONTINUE',
-  'RETURN',
-  'AND',
-  'OR',
-  'XOR',
-  'NOT',
-  'MOD',
-  'TRUE',
-  'FALSE',
-];
+const KEYWORDS = [...ST_STATEMENT_WORDS, ...ST_OPERATOR_WORDS];
 
 /** Statement templates; `${}` is where the cursor goes. */
 const SNIPPETS: readonly { label: string; detail: string; apply: string }[] = [

@@ -3,6 +3,7 @@
 // or FUNCTION, the callers' `Inst.Pin` and named arguments `Inst(Pin := …)`, `F(Pin := …)`.
 // Token by token (comments, strings and pragmas are left alone), so the rest of the text stays
 // byte for byte. `planStRename` checks a new name before anything changes and says why it cannot.
+import { IEC_DECLARATION_WORDS, ST_OPERATOR_WORDS, ST_STATEMENT_WORDS } from '../lexer';
 import { blockSignature } from '../../../model/blocks';
 import type { PouId } from '../../../model/ids';
 import { IDENTIFIER_RE } from '../../../model/iecTypes';
@@ -128,60 +129,7 @@ export function stRenameEdits(
   return out;
 }
 
-const ST_WORDS = new Set([
-  'IF',
-  'THEN',
-  'ELSIF',
-  'ELSE',
-  'END_IF',
-  'CASE',
-  'OF',
-  'END_CASE',
-  'FOR',
-  'TO',
-  'BY',
-  'DO',
-  'END_FOR',
-  'WHILE',
-  'END_WHILE',
-  'REPEAT',
-  'UNTIL',
-  'END_REPEAT',
-  'EXIT',
-  'CONTINUE',
-  'RETURN',
-  'AND',
-  'OR',
-  'XOR',
-  'NOT',
-  'MOD',
-  'TRUE',
-  'FALSE',
-  'VAR',
-  'VAR_INPUT',
-  'VAR_OUTPUT',
-  'VAR_IN_OUT',
-  'VAR_TEMP',
-  'VAR_EXTERNAL',
-  'VAR_GLOBAL',
-  'END_VAR',
-  'CONSTANT',
-  'RETAIN',
-  'AT',
-  'FUNCTION',
-  'FUNCTION_BLOCK',
-  'PROGRAM',
-  'END_FUNCTION',
-  'END_FUNCTION_BLOCK',
-  'END_PROGRAM',
-  'TYPE',
-  'END_TYPE',
-  'STRUCT',
-  'END_STRUCT',
-  'ARRAY',
-  'STRING',
-  'WSTRING',
-]);
+const ST_WORDS = new Set<string>([...ST_STATEMENT_WORDS, ...ST_OPERATOR_WORDS, ...IEC_DECLARATION_WORDS]);
 
 export type RenamePlan =
   | {
