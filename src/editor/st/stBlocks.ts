@@ -3,7 +3,14 @@
 // the END_* that closes it, and where the multi-line comments are. Read tolerantly (an unclosed
 // comment or string runs to the end, a stray END_* is kept as unmatched) so it works on text being
 // typed. Used by keyword matching and folding (stLanguage.ts). Pure: no DOM, no CodeMirror.
-import { identEnd, isIdentStartCode, locationEnd, numberEnd, stringEnd, typedLiteralEnd } from '../../engine/st/lexer';
+import {
+  identEnd,
+  isIdentStartCode,
+  locationEnd,
+  numberEnd,
+  stringEnd,
+  typedLiteralEnd,
+} from '../../engine/st/lexer';
 
 export interface Word {
   readonly from: number;
@@ -29,6 +36,21 @@ export interface StStructure {
   readonly comments: readonly { readonly from: number; readonly to: number }[];
 }
 
+/** The keywords that open a section of variables (closed by END_VAR). */
+export const VAR_SECTIONS: readonly string[] = [
+  'VAR',
+  'VAR_INPUT',
+  'VAR_OUTPUT',
+  'VAR_IN_OUT',
+  'VAR_GLOBAL',
+  'VAR_EXTERNAL',
+  'VAR_TEMP',
+  'VAR_ACCESS',
+  'VAR_CONFIG',
+  'VAR_STAT',
+  'VAR_INST',
+];
+
 /** The keyword that opens a block, by the END_* that closes it. */
 const CLOSERS: Readonly<Record<string, readonly string[]>> = {
   END_IF: ['IF'],
@@ -36,19 +58,7 @@ const CLOSERS: Readonly<Record<string, readonly string[]>> = {
   END_FOR: ['FOR'],
   END_WHILE: ['WHILE'],
   END_REPEAT: ['REPEAT'],
-  END_VAR: [
-    'VAR',
-    'VAR_INPUT',
-    'VAR_OUTPUT',
-    'VAR_IN_OUT',
-    'VAR_GLOBAL',
-    'VAR_EXTERNAL',
-    'VAR_TEMP',
-    'VAR_ACCESS',
-    'VAR_CONFIG',
-    'VAR_STAT',
-    'VAR_INST',
-  ],
+  END_VAR: VAR_SECTIONS,
   END_STRUCT: ['STRUCT'],
   END_TYPE: ['TYPE'],
   END_PROGRAM: ['PROGRAM'],
@@ -87,7 +97,18 @@ export function stStructure(text: string): StStructure {
   while (i < n) {
     const code = text.charCodeAt(i);
     // Spaces, operators and punctuation: nothing to read (the common case, by character code).
-    if (code <= 32 || code === 59 || code === 58 || code === 61 || code === 44 || code === 41 || code === 43 || code === 45 || code === 62 || code === 60) {
+    if (
+      code <= 32 ||
+      code === 59 ||
+      code === 58 ||
+      code === 61 ||
+      code === 44 ||
+      code === 41 ||
+      code === 43 ||
+      code === 45 ||
+      code === 62 ||
+      code === 60
+    ) {
       i++;
       continue;
     }

@@ -22,7 +22,14 @@ import {
   ST_STATEMENT_WORDS,
 } from '../../engine/st/lexer';
 import { ELEMENTARY_TYPES } from '../../model/iecTypes';
-import { blockAt, CLOSING_WORDS, OPENING_WORDS, stStructure, type StStructure } from './stBlocks';
+import {
+  blockAt,
+  CLOSING_WORDS,
+  OPENING_WORDS,
+  stStructure,
+  VAR_SECTIONS,
+  type StStructure,
+} from './stBlocks';
 
 const CONTROL = new Set<string>([...ST_STATEMENT_WORDS, 'JMP']);
 const DEFINITION = new Set([
@@ -32,17 +39,7 @@ const DEFINITION = new Set([
   'END_FUNCTION',
   'FUNCTION_BLOCK',
   'END_FUNCTION_BLOCK',
-  'VAR',
-  'VAR_INPUT',
-  'VAR_OUTPUT',
-  'VAR_IN_OUT',
-  'VAR_GLOBAL',
-  'VAR_EXTERNAL',
-  'VAR_TEMP',
-  'VAR_ACCESS',
-  'VAR_CONFIG',
-  'VAR_STAT',
-  'VAR_INST',
+  ...VAR_SECTIONS,
   'END_VAR',
   'TYPE',
   'END_TYPE',
