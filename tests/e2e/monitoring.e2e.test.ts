@@ -146,8 +146,15 @@ test('values beside the pins while running, clear of the names, and an older val
   await sim.button('pause').click();
   await sim.waitForMode('Paused');
   const pausedEt = Number(await sim.value('T1.ET'));
-  for (let i = 0; i < 5; i++) await page.getByTestId('history-prev').click();
-  await page.getByTestId('history-marker').filter({ hasText: 'HISTORY' }).waitFor();
+  // One scan back at a time, each shown before the next (five quick clicks could leave the value read
+  // below from a scan the view then moved on from).
+  const marker = page.getByTestId('history-marker');
+  for (let i = 0; i < 5; i++) {
+    const before = await marker.getAttribute('title');
+    await page.getByTestId('history-prev').click();
+    await expect.poll(() => marker.getAttribute('title')).not.toBe(before);
+  }
+  await marker.filter({ hasText: 'HISTORY' }).waitFor();
   await expect.poll(async () => Number(await sim.value('T1.ET'))).toBeLessThan(pausedEt);
   const olderEt = Number(await sim.value('T1.ET'));
   // The wire's value at ADD.IN1 (ET's, left of the ADD box) and ET's own value are that scan's.
