@@ -5,11 +5,8 @@
 //                    the frame where the compiler's finding is underlined at its place
 //   st-commit-ms     a typing burst committed to the document (the 2,000-line text as one undo step)
 //                    to the next painted frame
-// Used by bench/editor.bench.ts; on its own: `npx vite build && npx tsx bench/stEditorFigures.ts`.
-import { existsSync } from 'node:fs';
-import { chromium, type Page } from 'playwright-core';
-import { preview } from 'vite';
-import { CHROMIUM_ARGS, CHROMIUM_PATH } from '../tests/e2e/browser';
+// Used by bench/editor.bench.ts (`npm run bench:editor`), which opens the built app in Chromium.
+import type { Page } from 'playwright-core';
 import type { Project } from '../src/model/project';
 import { stBenchProject } from './stServices';
 
@@ -127,41 +124,3 @@ export async function stEditorFigures(page: Page, repeats = 5, lines = 2000): Pr
   }
   return { lines, keystrokeMs: medianOf(keys), checkMs: medianOf(checks), commitMs: medianOf(commits) };
 }
-
-async function main() {
-  const dist = process.env.RUNGSMITH_DIST ?? 'dist';
-  if (!existsSync(`${dist}/index.html`)) throw new Error(`${dist}/ is missing: build first (npx vite build)`);
-  const server = await preview({
-    build: { outDir: dist },
-    preview: { port: 0, host: '127.0.0.1', strictPort: false },
-    logLevel: 'warn',
-  });
-  const address = server.httpServer.address();
-  if (!address || typeof address === 'string') throw new Error('preview server has no port');
-  const browser = await chromium.launch({
-    executablePath: CHROMIUM_PATH,
-    args: [...CHROMIUM_ARGS, '--disable-gpu-vsync', '--disable-frame-rate-limit'],
-    headless: true,
-  });
-  try {
-    const page = await (await browser.newContext({ viewport: { width: 1440, height: 900 } })).newPage();
-    await page.goto(`http://127.0.0.1:${address.port}/`);
-    await page.getByTestId('ladder-canvas').waitFor();
-    const f = await stEditorFigures(page);
-    console.log(
-      `ST editor, ${f.lines}-line body: keystroke to painted frame ${f.keystrokeMs.toFixed(1)} ms; keystroke to the finding shown ${f.checkMs.toFixed(1)} ms; commit of a burst ${f.commitMs.toFixed(1)} ms`,
-    );
-    console.log(
-      `st-keystroke-ms=${f.keystrokeMs.toFixed(1)} st-check-ms=${f.checkMs.toFixed(1)} st-commit-ms=${f.commitMs.toFixed(1)}`,
-    );
-  } finally {
-    await browser.close();
-    await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
-  }
-}
-
-if (process.argv[1]?.endsWith('stEditorFigures.ts'))
-  main().catch((e: unknown) => {
-    console.error(e);
-    process.exit(1);
-  });
