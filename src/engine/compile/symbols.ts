@@ -146,6 +146,7 @@ export type Access =
   | { readonly kind: 'bit'; readonly v: VarSymbol; readonly bit: number; readonly type: 'BOOL' }
   | {
       readonly kind: 'pin';
+
       readonly fb: FbSymbol;
       readonly pin: string;
       readonly type: ElementaryType;
@@ -157,6 +158,21 @@ export type Access =
    * lower bounds) plus, per index, (index - lower) * mult[store]; out of bounds faults (LD-E62).
    */
   | { readonly kind: 'elem'; readonly v: VarSymbol; readonly type: ElementaryType; readonly terms: readonly IndexTerm[]; readonly text: string };
+
+/** The name an access is shown under (the instance's own names: `Out`, `A[i]`, `T1.Q`; a constant's text). */
+export function accessName(a: Access): string {
+  switch (a.kind) {
+    case 'var':
+      return a.v.name;
+    case 'bit':
+      return `${a.v.name}.${a.bit}`;
+    case 'pin':
+      return `${a.fb.name}.${a.pin}`;
+    case 'const':
+    case 'elem':
+      return a.text;
+  }
+}
 
 export type Resolved =
   | { ok: true; access: Access }

@@ -7,7 +7,7 @@ import type { ElementaryType } from '../../model/iecTypes';
 import type { Pou } from '../../model/project';
 import type { CompiledProgram } from '../compile/program';
 import type { Source } from '../compile/ir';
-import type { Access } from '../compile/symbols';
+import { accessName, type Access } from '../compile/symbols';
 import { formatValue } from '../values/literals';
 import { accessKey, networkGraph, pathsTo, writesOf, type Arc, type PowerPath } from './graph';
 import { fbReason } from './fbReasons';
@@ -110,20 +110,6 @@ function networkName(b: Builder, n: number): string {
   const body = bodyAt(b.program, n);
   const where = body && (body.first > 0 || body.instance) ? ` of ${body.instance ? `${body.instance} (${body.pou})` : body.pou}` : '';
   return `network ${n - (where ? body!.first : 0) + 1}${where}${label ? ` (label ${label})` : ''}`;
-}
-
-function accessName(a: Access): string {
-  switch (a.kind) {
-    case 'var':
-      return a.v.name;
-    case 'bit':
-      return `${a.v.name}.${a.bit}`;
-    case 'pin':
-      return `${a.fb.name}.${a.pin}`;
-    case 'const':
-    case 'elem':
-      return a.text;
-  }
 }
 
 /** Why one arc's output on a path is off (the arc's input is on or it has none). */

@@ -7,7 +7,7 @@
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { ResolvedFunction } from '../library/fnTypes';
 import type { Source } from '../compile/ir';
-import type { Access } from '../compile/symbols';
+import { accessName, type Access } from '../compile/symbols';
 import type { StOp, TExpr, TStmt } from './lowered';
 
 /** What the ST code needs from the network emitter (compile/emitter.ts Emitter). */
@@ -71,7 +71,7 @@ class StGen {
   /** A write to `dst`, reported to the scanner after it in instrumented code. */
   private write(dst: Access, x: string, from: ElementaryType): string {
     const w = this.em.writeValue(dst, x, from);
-    const name = this.instrument ? accessName(dst) : undefined;
+    const name = this.instrument && dst.kind !== 'const' ? accessName(dst) : undefined;
     if (name === undefined) return w;
     const back = this.em.readValue({ from: 'access', access: dst }, dst.type);
     return `${w} X.w(i, ${this.line}, ${JSON.stringify(name)}, ${JSON.stringify(dst.type)}, ${back});`;
@@ -318,22 +318,6 @@ class StGen {
         return { pre: [...pre, ...args.map((a, i) => `${arr}[${i}] = ${a.code};`)], code: `${f}.impl(ctx, ${arr})` };
       }
     }
-  }
-}
-
-/** The name a write is shown under (the instance's own names: `Out`, `A[i]`, `T1.Q`); none for a constant. */
-function accessName(a: Access): string | undefined {
-  switch (a.kind) {
-    case 'var':
-      return a.v.name;
-    case 'bit':
-      return `${a.v.name}.${a.bit}`;
-    case 'pin':
-      return `${a.fb.name}.${a.pin}`;
-    case 'elem':
-      return a.text;
-    case 'const':
-      return undefined;
   }
 }
 
