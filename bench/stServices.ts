@@ -1,7 +1,7 @@
 // Figures of the ST language services (src/engine/st/services) on a generated 2,000-line ST body:
 // the check the editor runs after a keystroke (the compiler's findings for the body), completion,
 // hover, go to definition and a rename. Run: npx tsx bench/stServices.ts [lines]
-import { newPou, newProject } from '../src/model/factory';
+import { newPou, newProject, variable } from '../src/model/factory';
 import type { Project, Variable } from '../src/model/project';
 import {
   planStRename,
@@ -13,14 +13,7 @@ import {
 } from '../src/engine/st/services';
 import { median } from './median';
 
-const v = (name: string, type: string, more: Partial<Variable> = {}): Variable => ({
-  name,
-  type,
-  varClass: 'local',
-  retain: false,
-  comment: '',
-  ...more,
-});
+const v = variable;
 
 /** Ten lines of ST using the variables of motor `k` (timers, comparisons, a function, an IF). */
 function block(k: number): string[] {

@@ -7,8 +7,8 @@ import type { Locator, Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
 import type { ElementId } from '../../src/model/ids';
 import type { LdElement } from '../../src/model/elements';
-import { newNetwork, newPou, newProject } from '../../src/model/factory';
-import type { Project, Variable } from '../../src/model/project';
+import { newNetwork, newPou, newProject, variable } from '../../src/model/factory';
+import type { Project } from '../../src/model/project';
 import { openApp, useChromium } from './appPage';
 import { poll } from './panelsPage';
 import { SimPage } from './simPage';
@@ -24,14 +24,7 @@ beforeAll(async () => {
   await sim.load(plant());
 });
 
-const v = (name: string, type: string, more: Partial<Variable> = {}): Variable => ({
-  name,
-  type,
-  varClass: 'local',
-  retain: false,
-  comment: '',
-  ...more,
-});
+const v = variable;
 const HYST = 'IF X > Limit THEN\n    Q := TRUE;\nELSIF X < Limit - 1.0 THEN\n    Q := FALSE;\nEND_IF;';
 const MAIN = 'Motor1(IN := Start, PT := T#5s);\nH1(X := Level, Limit := 80.0);';
 

@@ -1,7 +1,7 @@
 // Language services of the ST editor (src/engine/st/services): diagnostics, completion, hover,
 // go to definition and rename, on a project with ST and LD POUs calling each other.
 import { describe, expect, it } from 'vitest';
-import { newNetwork, newPou, newProject } from '../../src/model/factory';
+import { newNetwork, newPou, newProject, variable } from '../../src/model/factory';
 import type { ElementId } from '../../src/model/ids';
 import type { LdElement } from '../../src/model/elements';
 import type { Pou, Project, Variable } from '../../src/model/project';
@@ -17,14 +17,7 @@ import {
 import { createDocumentStore } from '../../src/store/documentStore';
 import { renameVariable } from '../../src/store/renameVariable';
 
-const v = (name: string, type: string, more: Partial<Variable> = {}): Variable => ({
-  name,
-  type,
-  varClass: 'local',
-  retain: false,
-  comment: '',
-  ...more,
-});
+const v = variable;
 const st = (
   name: string,
   kind: Pou['kind'],
