@@ -159,8 +159,8 @@ function advanceRoad(
   if (green) {
     go += t1 - t0;
     while (go >= HEADWAY_MS && departed < arrived) {
-      // The car left when its headway was reached, inside this step.
-      last = t1 - (go - HEADWAY_MS);
+      // The car left when its headway was reached inside this step (not before it arrived).
+      last = Math.max(t1 - (go - HEADWAY_MS), arrivalTime(offsets, departed));
       departed++;
       go -= HEADWAY_MS;
     }
