@@ -29,6 +29,7 @@ export const CROSS_SIDE_MS = 6000;
 /** Waits that are consequences: a vehicle at the stop line, a pedestrian at a button. */
 export const VEHICLE_WAIT_LIMIT_MS = 120_000;
 export const PED_WAIT_LIMIT_MS = 60_000;
+const NOTHING: readonly PlantConsequence[] = [];
 /** The time of a car that never left (JSON-safe, unlike -Infinity). */
 const NEVER = -1_000_000_000;
 
@@ -495,6 +496,16 @@ export const intersection: PlantModel<IntersectionState> = {
   },
 
   check(before: IntersectionState, after: IntersectionState): readonly PlantConsequence[] {
+    // The common case, every scan: nothing started (no allocation).
+    if (
+      after.conflicts === before.conflicts &&
+      after.darkSignals === before.darkSignals &&
+      after.nearMisses === before.nearMisses &&
+      after.pedsCaught === before.pedsCaught &&
+      after.longWaits === before.longWaits &&
+      after.longPedWaits === before.longPedWaits
+    )
+      return NOTHING;
     const out: PlantConsequence[] = [];
     const newly = (now: number, was: number, bit: number) => (now & bit) !== 0 && (was & bit) === 0;
     const shown = (lamps: number, road: 'Main' | 'Side') =>
