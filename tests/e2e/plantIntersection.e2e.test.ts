@@ -19,7 +19,12 @@ interface PlantHandle {
     scan: number;
     plant?: {
       id: string;
-      now: { scan: number; faults: string[]; operator: Record<string, boolean> };
+      now: {
+        scan: number;
+        faults: string[];
+        operator: Record<string, boolean>;
+        state: { buttonMain: boolean };
+      };
       events: { text: string }[];
       eventCount: number;
     };
@@ -78,7 +83,9 @@ test('the reference solution serves the side road and a pedestrian for 5 minutes
   const box = (await button.boundingBox())!;
   await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
   await page.mouse.down();
-  await expect.poll(async () => (await plant())?.now.operator.CrossMain, { timeout: 10_000 }).toBe(true);
+  await expect.poll(() => button.getAttribute('aria-pressed'), { timeout: 10_000 }).toBe('true');
+  // Held until the machine has stepped with it held (a press between two scans is not seen, as on a real PLC).
+  await expect.poll(async () => (await plant())?.now.state.buttonMain, { timeout: 10_000 }).toBe(true);
   await page.mouse.up();
   await expect.poll(async () => (await plant())?.now.operator.CrossMain, { timeout: 10_000 }).toBe(false);
   await sim.button('pause').click();
@@ -133,11 +140,9 @@ test('a wrong program turns the side road green with the main road yellow: a loc
   await sim.button('reset').click();
   await sim.waitForMode('Stopped');
   await fastForward(300);
-  const event = page
-    .getByTestId('plant-events')
-    .getByRole('button', {
-      name: 'conflicting signals: main road yellow with side road green at scan 201 (20.00 s)',
-    });
+  const event = page.getByTestId('plant-events').getByRole('button', {
+    name: 'conflicting signals: main road yellow with side road green at scan 201 (20.00 s)',
+  });
   await event.click();
   await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(/^Recorded scan 201 \(/);
   // The drawing's readouts show that scan's machine: the conflict counted.
