@@ -1,8 +1,9 @@
 // The garage door (issue 26): its physics, faults and consequences; the exercise's reference
 // solution and wrong one through the scenario runner and `rungsmith test`; and the simulation
 // worker's trace of 2,000 scans equal to the CLI's, scan by scan, the door included.
-import { describe, expect, test } from 'vitest';
-import { CAR_TOP, garage, PREWARN_MS, type GarageState } from '../../src/plant/garage';
+import { afterEach, describe, expect, test } from 'vitest';
+import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
+import { CAR_TOP, CLOSED_LIMIT_AT, garage, PREWARN_MS, type GarageState } from '../../src/plant/garage';
 import {
   GARAGE_EXAMPLE,
   GARAGE_SCENARIO,
@@ -386,5 +387,40 @@ describe('the garage door on the command line and in the simulation worker', () 
     const seen = reversed.findIndex((r) => r[col('Obstacle')] === '1');
     expect(reversed[seen + 1]![col('MotorUp')]).toBe('1');
     expect(reversed[seen + 1]![col('OpenLimit')]).toBe('0');
+  });
+});
+
+describe("the garage door as the gateway's simulated device (npm start -- --plant garage)", () => {
+  let device: SimulatedDevice | undefined;
+  afterEach(async () => {
+    await device?.close();
+    device = undefined;
+  });
+
+  test('every point fits the device: the limits are its inputs, the contactors its coils, the door moves in real time', async () => {
+    device = new SimulatedDevice(null, 'garage');
+    await device.start({
+      inputs: () => undefined,
+      written: () => undefined,
+      status: () => undefined,
+    } as never);
+    const inputs = device.inputValues();
+    const coils = device.writtenValues();
+    for (const p of garage.points)
+      expect(p.kind === 'actuator' ? coils.has(p.address) : inputs.has(p.address)).toBe(true);
+    // The door stands closed: the closed limit is ON at %IX0.4, the open limit OFF.
+    expect(inputs.get('%IX0.4')).toBe(true);
+    expect(inputs.get('%IX0.3')).toBe(false);
+    // The controller switches MotorUp and the lamp on: the door rises, the closed limit goes OFF.
+    device.drive(
+      new Map([
+        ['%QX0.0', true],
+        ['%QX0.2', true],
+      ]),
+    );
+    await expect
+      .poll(() => device!.plantRead('position'), { timeout: 30_000 })
+      .toBeGreaterThan(CLOSED_LIMIT_AT);
+    await expect.poll(() => device!.inputValues().get('%IX0.4'), { timeout: 30_000 }).toBe(false);
   });
 });
