@@ -145,12 +145,18 @@ export class PlantLoop {
       const io = plc.ioPoint?.(p.address);
       if (io) return [{ point: p, read: () => io.read(), write: (v: Value) => io.write(v) }];
       if (plc.ioPoint) return [];
+      // The value last written is what the input holds (a sensor going OFF is written too).
+      let held: Value = p.type === 'BOOL' ? false : 0;
       try {
-        plc.setInputs({ [p.address]: p.type === 'BOOL' ? false : 0 });
+        plc.setInputs({ [p.address]: held });
       } catch {
         return [];
       }
-      return [{ point: p, read: () => false, write: (v: Value) => plc.setInputs({ [p.address]: v }) }];
+      const write = (v: Value) => {
+        plc.setInputs({ [p.address]: v });
+        held = v;
+      };
+      return [{ point: p, read: () => held, write }];
     });
     this.present();
   }

@@ -171,12 +171,12 @@ describe('the garage door model', () => {
   });
 
   test.each([
-    ['open_stuck_off', 'OpenLimit', at(100), false],
-    ['open_stuck_on', 'OpenLimit', at(0), true],
-    ['closed_stuck_off', 'ClosedLimit', at(0), false],
-    ['closed_stuck_on', 'ClosedLimit', at(100), true],
-    ['eye_stuck_off', 'Obstacle', run(at(100), { Doorway: true }, 100), false],
-  ] as const)('fault %s: %s reads %s whatever the door does', (fault, point, state, value) => {
+    ['open_stuck_off', 'OpenLimit', false, at(100)],
+    ['open_stuck_on', 'OpenLimit', true, at(0)],
+    ['closed_stuck_off', 'ClosedLimit', false, at(0)],
+    ['closed_stuck_on', 'ClosedLimit', true, at(100)],
+    ['eye_stuck_off', 'Obstacle', false, run(at(100), { Doorway: true }, 100)],
+  ] as const)('fault %s: %s reads %s whatever the door does', (fault, point, value, state) => {
     expect(garage.sense(state, none)[point]).toBe(!value);
     expect(garage.sense(state, new Set([fault]))[point]).toBe(value);
   });
@@ -419,8 +419,8 @@ describe("the garage door as the gateway's simulated device (npm start -- --plan
       ]),
     );
     await expect
-      .poll(() => device!.plantRead('position'), { timeout: 30_000 })
+      .poll(() => device!.plantRead('position'), { timeout: 20_000 })
       .toBeGreaterThan(CLOSED_LIMIT_AT);
-    await expect.poll(() => device!.inputValues().get('%IX0.4'), { timeout: 30_000 }).toBe(false);
+    await expect.poll(() => device!.inputValues().get('%IX0.4'), { timeout: 20_000 }).toBe(false);
   });
 });
