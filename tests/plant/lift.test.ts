@@ -2,7 +2,6 @@
 // purity; the exercise's reference and wrong solutions; the worker's trace equal to the CLI's.
 import { describe, expect, test } from 'vitest';
 import { BUFFER_MM, lift, type LiftState } from '../../src/plant/lift';
-import { PlantLoop } from '../../src/plant/loop';
 import { PLANT_EXAMPLES, LIFT_SCENARIO, liftReference, liftWrong } from '../../src/plant/exercises';
 import { runScenario } from '../../src/sim/scenario';
 import { checkProject } from '../../src/engine/check';
