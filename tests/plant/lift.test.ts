@@ -1,6 +1,7 @@
 // The three-floor lift (issue 26): its physics as a table of cases, each fault and consequence,
 // purity; the exercise's reference and wrong solutions; the worker's trace equal to the CLI's.
-import { describe, expect, test } from 'vitest';
+import { describe, expect, test, vi } from 'vitest';
+import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import { BUFFER_MM, lift, type LiftState } from '../../src/plant/lift';
 import { PLANT_EXAMPLES, LIFT_SCENARIO, liftReference, liftWrong } from '../../src/plant/exercises';
 import { runScenario } from '../../src/sim/scenario';
@@ -363,5 +364,32 @@ describe('rungsmith and the lift', () => {
     expect(r.out).toMatch(/lift\.served +INT +Calls answered/);
     expect(r.out).toContain('Answer the calls of a three-floor lift');
     expect(rungsmith(['plants']).out).toContain('lift: Three-floor lift');
+  });
+});
+
+describe("the lift as the gateway's simulated device (npm start -- --plant lift)", () => {
+  test("its default I/O map fits the device: the sensors are its inputs, a master's coil runs the motor", async () => {
+    const device = new SimulatedDevice(null, 'lift');
+    await device.start({
+      inputs: () => undefined,
+      written: () => undefined,
+      status: () => undefined,
+    } as never);
+    try {
+      const inputs = device.inputValues();
+      expect([inputs.get('%IX0.3'), inputs.get('%IX0.4'), inputs.get('%IX0.6'), inputs.get('%IW0')]).toEqual([
+        true,
+        false,
+        true,
+        0,
+      ]);
+      device.drive(new Map([['%QX0.0', true]]));
+      await vi.waitFor(() => expect(device.plantRead('lift.position')).toBeGreaterThan(20), {
+        timeout: 20_000,
+      });
+      await vi.waitFor(() => expect(device.inputValues().get('%IX0.3')).toBe(false), { timeout: 20_000 });
+    } finally {
+      await device.close();
+    }
   });
 });
