@@ -227,6 +227,14 @@ describe('the lift exercise', () => {
     expect(result.error).toBe('the car moved with the door 100 % open at scan 528 (10.54 s)');
   });
 
+  test('timing matters: scanned every 100 ms (50 mm a scan at full speed), the reference misses the floor sensors', () => {
+    const csv =
+      '# plant: lift\n# cycle: 100ms\nscan,lift.Call2,lift.Call3,expect lift.served\n1,1,1,\n3,0,0,\n400,,,0\n';
+    expect(runScenario(liftReference(), { name: 'slow scan', csv }).result.error).toBe(
+      'the car ran 100 mm past the top floor (floor 3) at scan 125 (12.40 s)',
+    );
+  });
+
   test('a fault from the scenario: the top floor sensor stuck OFF runs the reference into the buffer; expecting the count checks it', () => {
     const csv =
       '# plant: lift\n# cycle: 20ms\nscan,lift.Call3,fault floor3_stuck_off,expect lift.overruns,expect lift.crashes\n1,1,1,,\n6,0,,0,0\n1000,,,1,1\n';
