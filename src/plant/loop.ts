@@ -145,18 +145,18 @@ export class PlantLoop {
       const io = plc.ioPoint?.(p.address);
       if (io) return [{ point: p, read: () => io.read(), write: (v: Value) => io.write(v) }];
       if (plc.ioPoint) return [];
-      // The value last written is what the input holds (a sensor going OFF is written too).
-      let held: Value = p.type === 'BOOL' ? false : 0;
+      // Without resolved points the input is read back as last written (a sensor turning OFF is written too).
+      let last: Value = p.type === 'BOOL' ? false : 0;
       try {
-        plc.setInputs({ [p.address]: held });
+        plc.setInputs({ [p.address]: last });
       } catch {
         return [];
       }
       const write = (v: Value) => {
         plc.setInputs({ [p.address]: v });
-        held = v;
+        last = v;
       };
-      return [{ point: p, read: () => held, write }];
+      return [{ point: p, read: () => last, write }];
     });
     this.present();
   }
