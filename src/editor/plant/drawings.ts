@@ -1,7 +1,9 @@
 // How each machine is drawn (issue 26): one Konva component per machine id, given the machine's
 // state (a frame's, or a recorded scan's). The model itself (src/plant) knows nothing of drawing.
 import type { ComponentType } from 'react';
+import { GarageDrawing, GARAGE_SIZE } from './GarageDrawing';
 import { IntersectionDrawing, INTERSECTION_SIZE } from './IntersectionDrawing';
+import { LiftDrawing, LIFT_SIZE } from './LiftDrawing';
 import { TankDrawing, TANK_SIZE } from './TankDrawing';
 
 export interface PlantDrawingProps {
@@ -16,5 +18,7 @@ export interface PlantDrawing {
 
 export const PLANT_DRAWINGS: Readonly<Record<string, PlantDrawing>> = {
   tank: { component: TankDrawing, ...TANK_SIZE },
+  garage: { component: GarageDrawing, ...GARAGE_SIZE },
+  lift: { component: LiftDrawing, ...LIFT_SIZE },
   intersection: { component: IntersectionDrawing, ...INTERSECTION_SIZE },
 };
