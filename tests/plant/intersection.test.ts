@@ -2,6 +2,7 @@
 // faults and consequences; the exercise's scenario; and the machine in closed loop, the worker's
 // trace equal to the CLI's scan by scan, and `rungsmith test` on the reference and the wrong one.
 import { describe, expect, test } from 'vitest';
+import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import {
   HEADWAY_MS,
   intersection,
@@ -409,5 +410,41 @@ describe('rungsmith and the intersection', () => {
     const one = rungsmith(['plants', 'intersection']);
     expect(one.out).toContain('Rest on main road green.');
     expect(one.out).toMatch(/I\/O:\n {4}%IX0\.0 +CrossMain/);
+  });
+});
+
+describe("the intersection as the gateway's simulated device (npm start -- --plant intersection)", () => {
+  test('every point fits the device; a master lighting the main road green lets its cars through, the side road queues on its loop', async () => {
+    const device = new SimulatedDevice(null, 'intersection');
+    await device.start({
+      inputs: () => undefined,
+      written: () => undefined,
+      status: () => undefined,
+    } as never);
+    try {
+      const inputs = device.inputValues();
+      const coils = device.writtenValues();
+      for (const p of intersection.points)
+        expect([p.name, p.kind === 'actuator' ? coils.has(p.address) : inputs.has(p.address)]).toEqual([
+          p.name,
+          true,
+        ]);
+      expect(inputs.get('%IX0.3')).toBe(false);
+      // MainGreen, SideRed and both DON'T WALK lamps, as a controller resting on the main road would.
+      device.drive(
+        new Map([
+          ['%QX0.2', true],
+          ['%QX0.3', true],
+          ['%QX0.7', true],
+          ['%QX1.1', true],
+        ]),
+      );
+      // In real time: the first main road car (1.5 s) goes through, the first side road car (4 s) waits on the loop.
+      await expect.poll(() => device.plantRead('intersection.served_main'), { timeout: 20_000 }).toBe(1);
+      await expect.poll(() => device.inputValues().get('%IX0.3'), { timeout: 20_000 }).toBe(true);
+      expect(device.plantRead('intersection.dark_signals')).toBe(0);
+    } finally {
+      await device.close();
+    }
   });
 });
