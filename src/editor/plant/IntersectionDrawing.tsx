@@ -263,10 +263,11 @@ export function IntersectionDrawing({ state }: PlantDrawingProps) {
       {waitingMain > SHOWN && (
         <Text
           text={`+${waitingMain - SHOWN}`}
-          x={M.x + M.w + 4}
-          y={mainStop + (SHOWN - 1) * 28 - 4}
+          x={M.x + 4}
+          y={mainStop + (SHOWN - 1) * 28 - 6}
           fontSize={11}
-          fill={DARK}
+          fontStyle="bold"
+          fill={MARK}
         />
       )}
       {Array.from({ length: Math.min(waitingSide, SHOWN) }, (_, i) => (
