@@ -131,18 +131,23 @@ const bitCount = (m: number): number => {
 /** How many bits came on from `before` to `now` (conditions that started). */
 const started = (now: number, before: number): number => bitCount(now & ~before);
 
+/** One road's queue after a step: filled in place (no allocation per step), read into the new state. */
 interface Road {
-  readonly arrived: number;
-  readonly departed: number;
-  readonly go: number;
-  readonly last: number;
-  readonly long: number;
-  readonly longWaits: number;
-  readonly maxWait: number;
+  arrived: number;
+  departed: number;
+  go: number;
+  last: number;
+  long: number;
+  longWaits: number;
+  maxWait: number;
 }
+const road = (): Road => ({ arrived: 0, departed: 0, go: 0, last: 0, long: 0, longWaits: 0, maxWait: 0 });
+const MAIN_ROAD = road();
+const SIDE_ROAD = road();
 
 /** One road's queue over one step: arrivals from the schedule, departures while its green is lit. */
 function advanceRoad(
+  out: Road,
   offsets: readonly number[],
   departedBefore: number,
   goBefore: number,
@@ -178,7 +183,14 @@ function advanceRoad(
     long++;
     longWaits++;
   }
-  return { arrived, departed, go, last, long, longWaits, maxWait };
+  out.arrived = arrived;
+  out.departed = departed;
+  out.go = go;
+  out.last = last;
+  out.long = long;
+  out.longWaits = longWaits;
+  out.maxWait = maxWait;
+  return out;
 }
 
 export const intersection: PlantModel<IntersectionState> = {
@@ -375,6 +387,7 @@ export const intersection: PlantModel<IntersectionState> = {
     const mainGreen = has(lit, LAMP.MainGreen);
     const sideGreen = has(lit, LAMP.SideGreen);
     const main = advanceRoad(
+      MAIN_ROAD,
       MAIN_ARRIVALS_MS,
       s.departedMain,
       s.goMain,
@@ -386,6 +399,7 @@ export const intersection: PlantModel<IntersectionState> = {
       s.maxWaitMs,
     );
     const side = advanceRoad(
+      SIDE_ROAD,
       SIDE_ARRIVALS_MS,
       s.departedSide,
       s.goSide,
