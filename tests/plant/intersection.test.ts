@@ -260,6 +260,12 @@ describe('the intersection exercise', () => {
       csv: '# plant: intersection\n# cycle: 100ms\nscan,fault main_green_out,expect intersection.dark_signals,expect intersection.served_main\n1,1,1,0\n300,,1,0\n',
     });
     expect(dark.result).toMatchObject({ ok: true, scans: 300 });
+    // A pedestrian's press alone asks for the side phase (the dead loop sees no car): WALK comes.
+    const walked = runScenario(intersectionReference(), {
+      name: 'press',
+      csv: '# plant: intersection\n# cycle: 100ms\nscan,intersection.CrossMain,fault side_loop_stuck_off,expect intersection.ped_served,expect SideGreen\n1,,1,0,0\n50,1,,0,\n52,0,,,\n260,,,1,1\n',
+    });
+    expect(walked.result).toMatchObject({ ok: true, scans: 260 });
     const stranded = runScenario(intersectionReference(), {
       name: 'loop',
       csv: '# plant: intersection\n# cycle: 100ms\nscan,fault side_loop_stuck_off,expect SideGreen\n1,1,0\n1500,,0\n',
