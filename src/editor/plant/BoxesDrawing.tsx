@@ -18,7 +18,7 @@ import {
 } from '../../plant/boxes';
 import type { PlantDrawingProps } from './drawings';
 
-export const BOXES_SIZE = { width: 440, height: 240 } as const;
+export const BOXES_SIZE = { width: 300, height: 250 } as const;
 
 const NO_FAULTS: ReadonlySet<string> = new Set();
 const LIT = '#22c55e';
@@ -27,9 +27,9 @@ const ALARM = '#dc2626';
 const LARGE = '#92400e';
 const SMALL = '#e2b66f';
 
-/** The belt: x from the infeed, 0.125 px per mm; y across, its edge by the pusher at the top. */
-const B = { x: 20, y: 78, w: 60 } as const;
-const SCALE = 0.125;
+/** The belt: x from the infeed, 0.084 px per mm; y across, its edge by the pusher at the top. */
+const B = { x: 14, y: 78, w: 60 } as const;
+const SCALE = 0.084;
 const xOf = (mm: number) => B.x + mm * SCALE;
 const BELT_END = xOf(BELT_LENGTH_MM);
 const BOX_W = BOX_LENGTH_MM * SCALE;
@@ -38,6 +38,8 @@ const acrossOf = (b: Box) => (b.large ? 44 : 28);
 
 function Eye({ mm, on, label, high }: { mm: number; on: boolean; label: string; high?: boolean }) {
   const x = xOf(mm);
+  // The size sensor's eye is high: drawn above the belt, the others below it.
+  const dotY = high ? B.y - 12 : B.y + B.w + 10;
   return (
     <Group>
       <Line
@@ -47,18 +49,11 @@ function Eye({ mm, on, label, high }: { mm: number; on: boolean; label: string; 
         dash={high ? [2, 2] : [6, 3]}
         opacity={on ? 1 : 0.6}
       />
-      <Circle
-        x={x}
-        y={B.y + B.w + 10}
-        radius={5}
-        fill={on ? LIT : '#e5e7eb'}
-        stroke="#111827"
-        strokeWidth={1}
-      />
+      <Circle x={x} y={dotY} radius={5} fill={on ? LIT : '#e5e7eb'} stroke="#111827" strokeWidth={1} />
       <Text
         text={label}
         x={x - 30}
-        y={B.y + B.w + 17}
+        y={high ? dotY - 19 : dotY + 7}
         width={60}
         align="center"
         fontSize={10}
@@ -112,24 +107,24 @@ export function BoxesDrawing({ state }: PlantDrawingProps) {
   return (
     <Group>
       {/* Counters. */}
-      <Text text={`Sorted ${s.sorted}`} x={50} y={6} fontSize={13} fontStyle="bold" fill="#166534" />
+      <Text text={`Sorted ${s.sorted}`} x={32} y={6} fontSize={13} fontStyle="bold" fill="#166534" />
       <Text
         text={`Missorted ${s.missorted}   Jams ${s.jams}   Fallen ${s.fallen}`}
-        x={140}
+        x={100}
         y={7}
-        fontSize={12}
+        fontSize={11}
         fill={s.missorted + s.jams + s.fallen > 0 ? ALARM : '#374151'}
       />
       {/* Run lamp. */}
       <Circle
-        x={22}
+        x={16}
         y={14}
         radius={9}
         fill={s.lamp ? '#facc15' : '#e5e7eb'}
         stroke="#111827"
         strokeWidth={1}
       />
-      <Text text="Run" x={2} y={25} width={40} align="center" fontSize={10} fill="#374151" />
+      <Text text="Run" x={-4} y={25} width={40} align="center" fontSize={10} fill="#374151" />
       {/* The belt, its cleats moving with it, the motor at the infeed. */}
       <Rect
         x={B.x}
@@ -146,7 +141,7 @@ export function BoxesDrawing({ state }: PlantDrawingProps) {
           <Line key={i} points={[x, B.y + 1, x, B.y + B.w - 1]} stroke="#9ca3af" strokeWidth={1} />
         ) : null;
       })}
-      <Group x={B.x + 4} y={B.y + B.w + 34}>
+      <Group x={B.x + 6} y={B.y + B.w + 42}>
         <Circle radius={12} fill={motor} stroke="#111827" strokeWidth={1} />
         <Text
           text="M"
@@ -160,16 +155,16 @@ export function BoxesDrawing({ state }: PlantDrawingProps) {
         />
         <Text text="Belt" x={14} y={-5} fontSize={10} fill="#374151" />
       </Group>
-      <Text text="Infeed" x={B.x - 14} y={B.y - 16} fontSize={10} fill="#374151" />
+      <Text text="Infeed" x={B.x - 10} y={B.y - 14} fontSize={10} fill="#374151" />
       {/* The chute for large boxes, beside the belt at the pusher. */}
       <Line
         points={[
           px - plateW / 2 - 4,
           B.y + B.w,
           px - plateW / 2 - 10,
-          200,
+          194,
           px + plateW / 2 + 10,
-          200,
+          194,
           px + plateW / 2 + 4,
           B.y + B.w,
         ]}
@@ -181,7 +176,7 @@ export function BoxesDrawing({ state }: PlantDrawingProps) {
       <Text
         text={`Chute (large)\n${s.largeChute}`}
         x={px - 45}
-        y={203}
+        y={197}
         width={90}
         align="center"
         fontSize={10}
@@ -191,7 +186,7 @@ export function BoxesDrawing({ state }: PlantDrawingProps) {
       <Rect
         x={BELT_END + 4}
         y={B.y - 8}
-        width={56}
+        width={44}
         height={B.w + 16}
         fill="#f3f4f6"
         stroke="#111827"
@@ -201,7 +196,7 @@ export function BoxesDrawing({ state }: PlantDrawingProps) {
         text={`Bin\n(small)\n${s.smallBin}`}
         x={BELT_END + 4}
         y={B.y + 12}
-        width={56}
+        width={44}
         align="center"
         fontSize={10}
         fill="#374151"
@@ -218,29 +213,29 @@ export function BoxesDrawing({ state }: PlantDrawingProps) {
       <Rect x={px - 8} y={30} width={16} height={26} fill={pusherColour} stroke="#111827" strokeWidth={1} />
       <Line points={[px, 56, px, plateY]} stroke="#111827" strokeWidth={3} />
       <Rect x={px - plateW / 2} y={plateY - 4} width={plateW} height={5} fill="#374151" />
-      <Text text="Pusher" x={px + 12} y={34} fontSize={10} fill="#374151" />
+      <Text text="Pusher" x={px - 48} y={34} fontSize={10} fill="#374151" />
       <Circle
-        x={px + 62}
+        x={px + 16}
         y={40}
         radius={4}
         fill={eyes.PusherIn === true ? LIT : '#e5e7eb'}
         stroke="#111827"
         strokeWidth={1}
       />
-      <Text text="In" x={px + 68} y={35} fontSize={9} fill="#374151" />
+      <Text text="In" x={px + 22} y={35} fontSize={9} fill="#374151" />
       <Circle
-        x={px + 84}
+        x={px + 40}
         y={40}
         radius={4}
         fill={eyes.PusherOut === true ? LIT : '#e5e7eb'}
         stroke="#111827"
         strokeWidth={1}
       />
-      <Text text="Out" x={px + 90} y={35} fontSize={9} fill="#374151" />
+      <Text text="Out" x={px + 46} y={35} fontSize={9} fill="#374151" />
       {/* Consequences. */}
-      {jammed && <Text text="JAM" x={px - 60} y={36} fontSize={14} fontStyle="bold" fill={ALARM} />}
+      {jammed && <Text text="JAM" x={px - 40} y={54} fontSize={14} fontStyle="bold" fill={ALARM} />}
       {s.fallen > 0 && (
-        <Group x={px + plateW / 2 + 24} y={188} rotation={-20}>
+        <Group x={px + plateW / 2 + 20} y={196} rotation={-20}>
           <Rect width={BOX_W} height={22} fill={SMALL} stroke={ALARM} strokeWidth={2} />
           <Text text="FELL" width={BOX_W} y={6} align="center" fontSize={9} fontStyle="bold" fill={ALARM} />
         </Group>
