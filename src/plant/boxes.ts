@@ -94,9 +94,10 @@ const towards = (from: number, target: number, dtMs: number, travelMs: number): 
 const sizeOf = (b: Box): string => (b.large ? 'large' : 'small');
 /** The box breaks a photo-eye at `at` (across the belt, so anywhere sideways while on the belt). */
 const covers = (b: Box, at: number): boolean => b.x >= at && b.x - BOX_LENGTH_MM <= at;
-const centre = (b: Box): number => b.x - BOX_LENGTH_MM / 2;
-const underPlate = (b: Box): boolean =>
-  b.x > PUSHER_MM - PLATE_HALF_MM && b.x - BOX_LENGTH_MM < PUSHER_MM + PLATE_HALF_MM;
+/** The plate's upstream face along the belt. */
+const PLATE_FACE_MM = PUSHER_MM - PLATE_HALF_MM;
+/** A box whose front is at `x` is (partly) in front of the plate. */
+const underPlate = (x: number): boolean => x > PLATE_FACE_MM && x - BOX_LENGTH_MM < PUSHER_MM + PLATE_HALF_MM;
 
 export const boxes: PlantModel<BoxesState> = {
   id: 'boxes',
@@ -240,24 +241,35 @@ export const boxes: PlantModel<BoxesState> = {
     let lastJam = s.lastJam;
     let lastFall = s.lastFall;
     let lastOut = s.lastOut;
-    const next: Box[] = [];
+    // The pusher travels (a plate striking a box stops it there, below).
+    let pusher = towards(
+      s.pusher,
+      on(drive.Pusher) ? 1 : 0,
+      dtMs,
+      faults.has('pusher_slow') ? SLOW_PUSHER_TRAVEL_MS : PUSHER_TRAVEL_MS,
+    );
+    let f = plateFront(pusher);
+    const extending = pusher > s.pusher;
+    const kept: Box[] = [];
 
-    // 1. Along the belt, downstream first: each box moves with the belt unless the plate holds it
-    //    (being pushed, struck), the plate stands in its way, or the box ahead stops it.
+    // Downstream first. Along the belt: each box moves with the belt unless the plate holds it
+    // (being pushed, struck), the plate stands in its way, or the box ahead stops it.
     let limit = Infinity;
     for (const b of s.boxes) {
       let x = b.x;
+      let side = b.side;
+      let pushed = b.pushed;
       let blocked = false;
       let jammed = b.jammed;
-      const held = (b.pushed || b.jammed) && touches(f0, b.side) && underPlate(b);
+      const held = (pushed || jammed) && touches(f0, side) && underPlate(x);
       if (held) blocked = true;
       else {
-        x = b.x + travel;
-        if (f0 > b.side && b.x <= PUSHER_MM - PLATE_HALF_MM && x > PUSHER_MM - PLATE_HALF_MM) {
+        x += travel;
+        if (f0 > side && b.x <= PLATE_FACE_MM && x > PLATE_FACE_MM) {
           // The extended plate stands across this box's lane: it runs into it.
-          x = PUSHER_MM - PLATE_HALF_MM;
+          x = PLATE_FACE_MM;
           blocked = true;
-          if (!b.jammed) {
+          if (!jammed) {
             jammed = true;
             jams++;
             lastJam = `box ${b.n} (${sizeOf(b)}) jammed against the extended pusher`;
@@ -268,7 +280,7 @@ export const boxes: PlantModel<BoxesState> = {
           blocked = true;
         }
       }
-      if (!blocked && !held) jammed = false;
+      if (!blocked) jammed = false;
       // Off the end of the belt into the bin once its centre passes the end.
       if (x - BOX_LENGTH_MM / 2 >= BELT_LENGTH_MM) {
         smallBin++;
@@ -280,44 +292,36 @@ export const boxes: PlantModel<BoxesState> = {
         continue;
       }
       limit = x - BOX_LENGTH_MM;
-      next.push(x === b.x && blocked === b.blocked && jammed === b.jammed ? b : { ...b, x, blocked, jammed });
-    }
 
-    // 2. Across the belt: the pusher travels; its plate pushes the box square in front of it,
-    //    strikes a box that is not (a jam: the plate stops there), lets go when it goes back.
-    const wantOut = on(drive.Pusher);
-    let pusher = towards(
-      s.pusher,
-      wantOut ? 1 : 0,
-      dtMs,
-      faults.has('pusher_slow') ? SLOW_PUSHER_TRAVEL_MS : PUSHER_TRAVEL_MS,
-    );
-    let f = plateFront(pusher);
-    const kept: Box[] = [];
-    for (let i = 0; i < next.length; i++) {
-      let b = next[i]!;
-      if (underPlate(b) && f > b.side + 1e-9 && pusher > s.pusher) {
-        if (!b.pushed && (b.jammed || Math.abs(centre(b) - PUSHER_MM) > STATION_WINDOW_MM)) {
+      // Across the belt: the plate pushes the box square in front of it, strikes a box that is
+      // not (a jam: the plate stops there), lets go when it goes back.
+      if (extending && underPlate(x) && f > side + 1e-9) {
+        blocked = true;
+        if (!pushed && (jammed || Math.abs(x - BOX_LENGTH_MM / 2 - PUSHER_MM) > STATION_WINDOW_MM)) {
           // Struck off the station: the plate stops against the box.
-          if (!b.jammed) {
+          if (!jammed) {
             jams++;
             lastJam = `the pusher struck box ${b.n} (${sizeOf(b)}) off the station`;
           }
-          pusher = Math.max(s.pusher, (b.side + 0.1) / 1.1);
-          f = b.side;
-          b = { ...b, jammed: true, blocked: true };
-        } else b = { ...b, pushed: true, side: Math.min(1, f), blocked: true };
-      } else if ((b.pushed || b.jammed) && !touches(f, b.side)) {
+          jammed = true;
+          pusher = Math.max(s.pusher, (side + 0.1) / 1.1);
+          f = side;
+        } else {
+          pushed = true;
+          side = Math.min(1, f);
+        }
+      } else if ((pushed || jammed) && !touches(f, side)) {
         // The plate left it.
-        if (b.pushed && b.side >= TIP_OVER_SIDE) {
+        if (pushed && side >= TIP_OVER_SIDE) {
           fallen++;
           lastOut = 'floor';
-          lastFall = `box ${b.n} (${sizeOf(b)}) fell off the belt (pushed ${Math.round(b.side * 100)} % across, then let go)`;
+          lastFall = `box ${b.n} (${sizeOf(b)}) fell off the belt (pushed ${Math.round(side * 100)} % across, then let go)`;
           continue;
         }
-        b = { ...b, pushed: false, jammed: false };
+        pushed = false;
+        jammed = false;
       }
-      if (b.side >= INTO_CHUTE_SIDE) {
+      if (side >= INTO_CHUTE_SIDE) {
         largeChute++;
         lastOut = 'chute';
         if (b.large) sorted++;
@@ -327,7 +331,11 @@ export const boxes: PlantModel<BoxesState> = {
         }
         continue;
       }
-      kept.push(b);
+      kept.push(
+        x === b.x && side === b.side && blocked === b.blocked && jammed === b.jammed && pushed === b.pushed
+          ? b
+          : { n: b.n, large: b.large, x, side, blocked, jammed, pushed },
+      );
     }
 
     // 3. The feeder: a box on the belt every BOX_SPACING_MM of travel, when the infeed is clear.
