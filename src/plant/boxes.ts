@@ -48,8 +48,12 @@ export interface Box {
   /** 1, 2, 3… in the order the feeder put them on the belt. */
   readonly n: number;
   readonly large: boolean;
-  /** Front edge, mm from the infeed. */
-  readonly x: number;
+  /**
+   * Where its front edge is, less the belt's travel (`BoxesState.belt`): the front is at
+   * `belt + base` mm from the infeed. A box riding the belt keeps its base (and its object: a
+   * step allocates nothing for it); a box held still gets a new one.
+   */
+  readonly base: number;
   /** Sideways offset, 0 (on its lane) to 1 (across the belt: off into the chute from 0.97). */
   readonly side: number;
   /** Held against the pusher's plate or a box ahead: it does not move with the belt. */
@@ -66,6 +70,8 @@ export interface BoxesState {
   /** Pusher extension, 0 (in) to 1 (out). */
   readonly pusher: number;
   readonly lamp: boolean;
+  /** Belt travel since the start, mm. */
+  readonly belt: number;
   /** Belt travel since the feeder last put a box on it, mm. */
   readonly feed: number;
   /** Boxes fed so far (the next box is number fed + 1). */
@@ -92,12 +98,17 @@ const towards = (from: number, target: number, dtMs: number, travelMs: number): 
   return target > from ? Math.min(target, from + delta) : Math.max(target, from - delta);
 };
 const sizeOf = (b: Box): string => (b.large ? 'large' : 'small');
-/** The box breaks a photo-eye at `at` (across the belt, so anywhere sideways while on the belt). */
-const covers = (b: Box, at: number): boolean => b.x >= at && b.x - BOX_LENGTH_MM <= at;
+/** Where a box's front edge is, mm from the infeed. */
+export const frontOf = (s: BoxesState, b: Box): number => s.belt + b.base;
+/** A box with its front at `x` breaks a photo-eye at `at` (across the belt, so anywhere sideways while on the belt). */
+const covers = (x: number, at: number): boolean => x >= at && x - BOX_LENGTH_MM <= at;
 /** The plate's upstream face along the belt. */
 const PLATE_FACE_MM = PUSHER_MM - PLATE_HALF_MM;
+/** Positions are sums of travel and base: a box held at the face may read a hair off it. */
+const HAIR_MM = 1e-6;
 /** A box whose front is at `x` is (partly) in front of the plate. */
-const underPlate = (x: number): boolean => x > PLATE_FACE_MM && x - BOX_LENGTH_MM < PUSHER_MM + PLATE_HALF_MM;
+const underPlate = (x: number): boolean =>
+  x > PLATE_FACE_MM + HAIR_MM && x - BOX_LENGTH_MM < PUSHER_MM + PLATE_HALF_MM;
 
 export const boxes: PlantModel<BoxesState> = {
   id: 'boxes',
@@ -207,6 +218,7 @@ export const boxes: PlantModel<BoxesState> = {
     speed: 0,
     pusher: 0,
     lamp: false,
+    belt: 0,
     feed: BOX_SPACING_MM,
     fed: 0,
     boxes: [],
@@ -250,25 +262,34 @@ export const boxes: PlantModel<BoxesState> = {
     );
     let f = plateFront(pusher);
     const extending = pusher > s.pusher;
-    const kept: Box[] = [];
+    const belt = s.belt + travel;
+    const list = s.boxes;
+    /** The new list of boxes, made on the first box that changes (riding boxes are kept as they are). */
+    let kept: Box[] | undefined;
 
     // Downstream first. Along the belt: each box moves with the belt unless the plate holds it
     // (being pushed, struck), the plate stands in its way, or the box ahead stops it.
     let limit = Infinity;
-    for (const b of s.boxes) {
-      let x = b.x;
+    for (let i = 0; i < list.length; i++) {
+      const b = list[i]!;
+      const was = s.belt + b.base;
+      let x = was;
       let side = b.side;
       let pushed = b.pushed;
       let blocked = false;
       let jammed = b.jammed;
+      /** It moved with the belt all the step: its base stays (exactly) what it was. */
+      let rode = false;
       const held = (pushed || jammed) && touches(f0, side) && underPlate(x);
       if (held) blocked = true;
       else {
-        x += travel;
-        if (f0 > side && b.x <= PLATE_FACE_MM && x > PLATE_FACE_MM) {
+        rode = true;
+        x = belt + b.base;
+        if (f0 > side && was <= PLATE_FACE_MM + HAIR_MM && x > PLATE_FACE_MM) {
           // The extended plate stands across this box's lane: it runs into it.
           x = PLATE_FACE_MM;
           blocked = true;
+          rode = false;
           if (!jammed) {
             jammed = true;
             jams++;
@@ -276,13 +297,15 @@ export const boxes: PlantModel<BoxesState> = {
           }
         }
         if (x > limit) {
-          x = Math.max(b.x, limit);
+          x = Math.max(was, limit);
           blocked = true;
+          rode = false;
         }
       }
       if (!blocked) jammed = false;
       // Off the end of the belt into the bin once its centre passes the end.
       if (x - BOX_LENGTH_MM / 2 >= BELT_LENGTH_MM) {
+        kept ??= list.slice(0, i);
         smallBin++;
         lastOut = 'bin';
         if (b.large) {
@@ -313,6 +336,7 @@ export const boxes: PlantModel<BoxesState> = {
       } else if ((pushed || jammed) && !touches(f, side)) {
         // The plate left it.
         if (pushed && side >= TIP_OVER_SIDE) {
+          kept ??= list.slice(0, i);
           fallen++;
           lastOut = 'floor';
           lastFall = `box ${b.n} (${sizeOf(b)}) fell off the belt (pushed ${Math.round(side * 100)} % across, then let go)`;
@@ -322,6 +346,7 @@ export const boxes: PlantModel<BoxesState> = {
         jammed = false;
       }
       if (side >= INTO_CHUTE_SIDE) {
+        kept ??= list.slice(0, i);
         largeChute++;
         lastOut = 'chute';
         if (b.large) sorted++;
@@ -331,25 +356,31 @@ export const boxes: PlantModel<BoxesState> = {
         }
         continue;
       }
-      kept.push(
-        x === b.x && side === b.side && blocked === b.blocked && jammed === b.jammed && pushed === b.pushed
-          ? b
-          : { n: b.n, large: b.large, x, side, blocked, jammed, pushed },
-      );
+      const base = rode ? b.base : x - belt;
+      if (
+        base === b.base &&
+        side === b.side &&
+        blocked === b.blocked &&
+        jammed === b.jammed &&
+        pushed === b.pushed
+      )
+        kept?.push(b);
+      else (kept ??= list.slice(0, i)).push({ n: b.n, large: b.large, base, side, blocked, jammed, pushed });
     }
 
     // 3. The feeder: a box on the belt every BOX_SPACING_MM of travel, when the infeed is clear.
     let feed = s.feed + travel;
     let fed = s.fed;
-    const last = kept[kept.length - 1];
+    const now = kept ?? list;
+    const last = now[now.length - 1];
     if (feed >= BOX_SPACING_MM && travel > 0) {
       const x = feed - BOX_SPACING_MM;
-      if (!last || last.x - BOX_LENGTH_MM >= x) {
+      if (!last || belt + last.base - BOX_LENGTH_MM >= x) {
         fed++;
-        kept.push({
+        (kept ??= list.slice()).push({
           n: fed,
           large: SIZE_PATTERN[(fed - 1) % SIZE_PATTERN.length] === 'L',
-          x,
+          base: x - belt,
           side: 0,
           blocked: false,
           jammed: false,
@@ -363,9 +394,10 @@ export const boxes: PlantModel<BoxesState> = {
       speed,
       pusher,
       lamp: on(drive.RunLamp),
+      belt,
       feed,
       fed,
-      boxes: kept,
+      boxes: kept ?? list,
       smallBin,
       largeChute,
       sorted,
@@ -384,9 +416,10 @@ export const boxes: PlantModel<BoxesState> = {
     let size = false;
     let atPusher = false;
     for (const b of s.boxes) {
-      if (covers(b, ENTRY_EYE_MM)) entry = true;
-      if (b.large && covers(b, SIZE_EYE_MM)) size = true;
-      if (covers(b, PUSHER_EYE_MM)) atPusher = true;
+      const x = s.belt + b.base;
+      if (covers(x, ENTRY_EYE_MM)) entry = true;
+      if (b.large && covers(x, SIZE_EYE_MM)) size = true;
+      if (covers(x, PUSHER_EYE_MM)) atPusher = true;
     }
     return {
       EntryEye: faults.has('entry_stuck_on') ? true : entry,

@@ -7,6 +7,7 @@ import {
   BELT_SPEED_MM_S,
   BOX_SPACING_MM,
   boxes,
+  frontOf,
   PUSHER_MM,
   SIZE_PATTERN,
   type BoxesState,
@@ -67,7 +68,7 @@ describe('the box sorter model', () => {
       [2, SIZE_PATTERN[1] === 'L'],
       [3, SIZE_PATTERN[2] === 'L'],
     ]);
-    expect(s.boxes[0]!.x - s.boxes[1]!.x).toBeCloseTo(BOX_SPACING_MM, 6);
+    expect(s.boxes[0]!.base - s.boxes[1]!.base).toBeCloseTo(BOX_SPACING_MM, 6);
     // Stopped: the belt coasts down and nothing moves after.
     for (let i = 0; i < 10; i++) s = boxes.step(s, { Conveyor: false }, 100, none);
     const still = boxes.step(s, {}, 100, none);
@@ -90,7 +91,7 @@ describe('the box sorter model', () => {
   ])('the eyes: %s', (_what, x, large, eyes) => {
     const s: BoxesState = {
       ...boxes.initial(),
-      boxes: [{ n: 1, large, x, side: 0, blocked: false, jammed: false, pushed: false }],
+      boxes: [{ n: 1, large, base: x, side: 0, blocked: false, jammed: false, pushed: false }],
     };
     expect(boxes.sense(s, none)).toEqual({ ...eyes, PusherOut: false, PusherIn: true });
   });
@@ -198,7 +199,7 @@ describe('the box sorter model', () => {
     expect(jam.s.jams).toBe(1);
     expect(boxes.quantity(jam.s, 'jammed')).toBe(true);
     // Boxes queue behind the jammed one, and the feeder goes on feeding while there is room.
-    expect(jam.s.boxes.map((b) => [b.n, b.x, b.blocked, b.jammed])).toEqual([
+    expect(jam.s.boxes.map((b) => [b.n, Math.round(frontOf(jam.s, b)), b.blocked, b.jammed])).toEqual([
       [2, 1850, true, true],
       [3, 1550, true, false],
       [4, 1250, true, false],
@@ -225,7 +226,7 @@ describe('the box sorter model', () => {
         {
           n: 7,
           large: true,
-          x: PUSHER_MM + offset + 150,
+          base: PUSHER_MM + offset + 150,
           side: 0,
           blocked: false,
           jammed: false,

@@ -13,6 +13,7 @@ import {
   PUSHER_MM,
   SIZE_EYE_MM,
   boxes,
+  frontOf,
   type Box,
   type BoxesState,
 } from '../../plant/boxes';
@@ -63,11 +64,11 @@ function Eye({ mm, on, label, high }: { mm: number; on: boolean; label: string; 
   );
 }
 
-function BoxShape({ b }: { b: Box }) {
+function BoxShape({ b, front }: { b: Box; front: number }) {
   const across = acrossOf(b);
   // Its lane: along the edge by the pusher, pushed `side` of the belt's width towards the chute.
   const y = B.y + 4 + b.side * B.w;
-  const x = xOf(b.x) - BOX_W;
+  const x = xOf(front) - BOX_W;
   return (
     <Group x={x} y={y}>
       <Rect
@@ -102,8 +103,8 @@ export function BoxesDrawing({ state }: PlantDrawingProps) {
   const jammed = s.boxes.some((b) => b.jammed);
   const motor = s.speed > 0.99 ? LIT : s.speed > 0.01 ? '#eab308' : DARK;
   const pusherColour = s.pusher > 0.98 ? LIT : s.pusher > 0.02 ? '#eab308' : DARK;
-  // Belt travel since the last box, to move the belt's cleats with it.
-  const cleat = (s.feed * SCALE) % 20;
+  // The belt's cleats move with it.
+  const cleat = (s.belt * SCALE) % 20;
   return (
     <Group>
       {/* Counters. */}
@@ -207,7 +208,7 @@ export function BoxesDrawing({ state }: PlantDrawingProps) {
       <Eye mm={PUSHER_EYE_MM} on={eyes.PusherEye === true} label="At pusher" />
       {/* Boxes. */}
       {s.boxes.map((b) => (
-        <BoxShape key={b.n} b={b} />
+        <BoxShape key={b.n} b={b} front={frontOf(s, b)} />
       ))}
       {/* The pusher: cylinder above the belt, rod and plate across it. */}
       <Rect x={px - 8} y={30} width={16} height={26} fill={pusherColour} stroke="#111827" strokeWidth={1} />
