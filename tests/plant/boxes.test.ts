@@ -2,7 +2,8 @@
 // each fault, each consequence located, purity; the exercise (reference passes, wrong fails
 // where it goes wrong, in-process and through `rungsmith test`); and the worker's trace of 2,000
 // scans equal to the CLI's, machine included.
-import { describe, expect, test } from 'vitest';
+import { afterEach, describe, expect, test } from 'vitest';
+import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import {
   BELT_SPEED_MM_S,
   BOX_SPACING_MM,
@@ -395,5 +396,32 @@ describe('the box sorter in the simulation session', () => {
       .slice(1)
       .filter((r, i, all) => i > 0 && r.split(',')[10] === '1' && all[i - 1]!.split(',')[10] === '0');
     expect(pushes.length).toBe(end.largeChute);
+  });
+});
+
+describe("the box sorter as the gateway's simulated device (npm start -- --plant boxes)", () => {
+  let device: SimulatedDevice | undefined;
+  afterEach(async () => {
+    await device?.close();
+    device = undefined;
+  });
+
+  test('every point fits the device: the eyes and limits are its inputs, the motor and pusher its coils, boxes ride in real time', async () => {
+    device = new SimulatedDevice(null, 'boxes');
+    await device.start({
+      inputs: () => undefined,
+      written: () => undefined,
+      status: () => undefined,
+    } as never);
+    const inputs = device.inputValues();
+    const coils = device.writtenValues();
+    for (const p of boxes.points)
+      expect(p.kind === 'actuator' ? coils.has(p.address) : inputs.has(p.address)).toBe(true);
+    // At rest: the pusher in (%IX0.6), no box at the entry eye (%IX0.2).
+    expect([inputs.get('%IX0.6'), inputs.get('%IX0.2')]).toEqual([true, false]);
+    // A master switches the belt motor on: the first box rides into the entry eye.
+    device.drive(new Map([['%QX0.0', true]]));
+    await expect.poll(() => device!.plantRead('boxes.fed'), { timeout: 20_000 }).toBe(1);
+    await expect.poll(() => device!.inputValues().get('%IX0.2'), { timeout: 20_000 }).toBe(true);
   });
 });

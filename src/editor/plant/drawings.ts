@@ -2,6 +2,8 @@
 // state (a frame's, or a recorded scan's). The model itself (src/plant) knows nothing of drawing.
 import type { ComponentType } from 'react';
 import { BoxesDrawing, BOXES_SIZE } from './BoxesDrawing';
+import { GarageDrawing, GARAGE_SIZE } from './GarageDrawing';
+import { LiftDrawing, LIFT_SIZE } from './LiftDrawing';
 import { TankDrawing, TANK_SIZE } from './TankDrawing';
 
 export interface PlantDrawingProps {
@@ -17,4 +19,6 @@ export interface PlantDrawing {
 export const PLANT_DRAWINGS: Readonly<Record<string, PlantDrawing>> = {
   tank: { component: TankDrawing, ...TANK_SIZE },
   boxes: { component: BoxesDrawing, ...BOXES_SIZE },
+  garage: { component: GarageDrawing, ...GARAGE_SIZE },
+  lift: { component: LiftDrawing, ...LIFT_SIZE },
 };
