@@ -192,7 +192,7 @@ export const boxes: PlantModel<BoxesState> = {
     { id: 'entry_stuck_on', title: 'Entry photo-eye stuck ON' },
     { id: 'size_stuck_off', title: 'Size sensor stuck OFF (sees no large box)' },
     { id: 'size_stuck_on', title: 'Size sensor stuck ON' },
-    { id: 'pusher_eye_stuck_off', title: 'Photo-eye at the pusher stuck OFF' },
+    { id: 'station_stuck_off', title: 'Photo-eye at the pusher (station) stuck OFF' },
     { id: 'motor_dead', title: 'Belt motor does not start' },
     { id: 'pusher_slow', title: 'Pusher slow (3 s to extend or retract)' },
   ],
@@ -424,7 +424,7 @@ export const boxes: PlantModel<BoxesState> = {
     return {
       EntryEye: faults.has('entry_stuck_on') ? true : entry,
       SizeEye: faults.has('size_stuck_on') ? true : faults.has('size_stuck_off') ? false : size,
-      PusherEye: faults.has('pusher_eye_stuck_off') ? false : atPusher,
+      PusherEye: faults.has('station_stuck_off') ? false : atPusher,
       PusherOut: s.pusher >= OUT_LIMIT,
       PusherIn: s.pusher <= IN_LIMIT,
     };

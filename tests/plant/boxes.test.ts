@@ -170,7 +170,7 @@ describe('the box sorter model', () => {
     [
       'the eye at the pusher stuck OFF: nothing pushed',
       sorting,
-      new Set(['pusher_eye_stuck_off']),
+      new Set(['station_stuck_off']),
       6,
       ['missorted 122: box 2 (large) ran into the small-box bin'],
     ],
