@@ -2,9 +2,10 @@
 // I/O declared, a reference solution in ladder and a scenario it passes (`# plant: tank`), run in
 // CI by `rungsmith test`. Each machine's exercise is its own module (`<id>Exercise.ts`).
 import type { Example } from '../model/examples';
+import { MIXER_EXAMPLE } from './mixerExercise';
 import { TANK_EXAMPLE } from './tankExercise';
 
 export { plantVariables, taskText } from './exerciseKit';
 export { TANK_SCENARIO, tankReference, tankWrong } from './tankExercise';
 
-export const PLANT_EXAMPLES: readonly Example[] = [TANK_EXAMPLE];
+export const PLANT_EXAMPLES: readonly Example[] = [TANK_EXAMPLE, MIXER_EXAMPLE];
