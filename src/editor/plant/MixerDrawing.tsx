@@ -12,13 +12,15 @@ import {
   OVERHEAT_C,
   ratioOf,
   type MixerState,
+  type SpoilReason,
 } from '../../plant/mixer';
 import type { PlantDrawingProps } from './drawings';
 
 export const MIXER_SIZE = { width: 340, height: 290 } as const;
 
-const A_COLOUR = [245, 158, 11] as const;
-const B_COLOUR = [59, 130, 246] as const;
+/** A is yellow, B blue: a batch half and half is green. */
+const A_COLOUR = [250, 204, 21] as const;
+const B_COLOUR = [14, 165, 233] as const;
 const PIPE = '#9ca3af';
 const LIT = '#22c55e';
 const MOVING = '#eab308';
@@ -33,6 +35,14 @@ const yOf = (litres: number) => V.y + V.h - (litres / MIXER_CAPACITY_L) * V.h;
 const rgb = (c: readonly number[]) => `rgb(${c.map((x) => Math.round(x)).join(',')})`;
 /** The batch's colour: A's and B's mixed by their shares. */
 const mixColour = (shareA: number) => rgb(A_COLOUR.map((a, i) => a * shareA + B_COLOUR[i]! * (1 - shareA)));
+const SPOIL_WORD: Record<SpoilReason, string> = {
+  '': '',
+  overheat: 'overheated',
+  scorch: 'scorched',
+  ratio: 'ratio',
+  unheld: 'not held',
+  short: 'short',
+};
 const runColour = (x: number) => (x > 0.99 ? LIT : x > 0.01 ? MOVING : DARK);
 
 function Valve({ x, y, open, label }: { x: number; y: number; open: number; label: string }) {
@@ -61,18 +71,10 @@ function LevelSwitch({ litres, on, label }: { litres: number; on: boolean; label
   );
 }
 
-function Alarm({ text, y }: { text: string; y: number }) {
+/** A consequence, in the column left of the vessel (below the done lamp). */
+function Alarm({ text, row }: { text: string; row: number }) {
   return (
-    <Text
-      text={text}
-      x={V.x - 40}
-      y={y}
-      width={V.w + 80}
-      align="center"
-      fontSize={13}
-      fontStyle="bold"
-      fill={ALARM}
-    />
+    <Text text={text} x={4} y={140 + row * 16} width={112} fontSize={12} fontStyle="bold" fill={ALARM} />
   );
 }
 
@@ -105,6 +107,9 @@ export function MixerDrawing({ state }: PlantDrawingProps) {
       <Valve x={95} y={34} open={s.valveA} label="A" />
       <Line points={[334, 34, 210, 34, 210, V.y + 4]} stroke={inB ? rgb(B_COLOUR) : PIPE} strokeWidth={6} />
       <Valve x={270} y={34} open={s.valveB} label="B" />
+      {/* Vessel and batch. */}
+      <Rect x={V.x} y={V.y} width={V.w} height={V.h} stroke={INK} strokeWidth={2} fill="#f3f4f6" />
+      <Rect x={V.x + 1} y={top} width={V.w - 2} height={V.y + V.h - top - 1} fill={liquid} opacity={0.8} />
       {inA && (
         <Rect
           x={147}
@@ -125,9 +130,6 @@ export function MixerDrawing({ state }: PlantDrawingProps) {
           opacity={0.6}
         />
       )}
-      {/* Vessel and batch. */}
-      <Rect x={V.x} y={V.y} width={V.w} height={V.h} stroke={INK} strokeWidth={2} fill="#f3f4f6" />
-      <Rect x={V.x + 1} y={top} width={V.w - 2} height={V.y + V.h - top - 1} fill={liquid} opacity={0.8} />
       {/* Agitator: motor on the lid, shaft, blades. */}
       <Rect
         x={cx - 14}
@@ -173,8 +175,17 @@ export function MixerDrawing({ state }: PlantDrawingProps) {
         stroke={heaterColour}
         strokeWidth={4}
       />
-      <Text text="Heater" x={V.x - 46} y={heaterY - 10} fontSize={10} fill={LABEL} />
-      {/* What the vessel holds. */}
+      <Text text="Heater" x={V.x + 4} y={V.y + V.h + 4} fontSize={10} fill={LABEL} />
+      {/* What the vessel holds, on a plate in front of the shaft. */}
+      <Rect
+        x={V.x + 22}
+        y={V.y + 42}
+        width={V.w - 44}
+        height={s.level > 0 ? 60 : 44}
+        fill="#ffffff"
+        opacity={0.85}
+        cornerRadius={4}
+      />
       <Text
         text={`${Math.round(s.level)} L\n${s.temp.toFixed(1)} °C`}
         x={V.x}
@@ -188,7 +199,7 @@ export function MixerDrawing({ state }: PlantDrawingProps) {
       />
       {s.level > 0 && (
         <Text
-          text={`A ${Math.round(shareA * 100)} %  B ${Math.round((1 - shareA) * 100)} %`}
+          text={`A ${Math.round(shareA * 100)} % B ${Math.round((1 - shareA) * 100)} %`}
           x={V.x}
           y={V.y + 88}
           width={V.w}
@@ -215,14 +226,12 @@ export function MixerDrawing({ state }: PlantDrawingProps) {
         <Group>
           <Line points={[V.x, V.y, V.x - 12, V.y + 40]} stroke={liquid} strokeWidth={4} />
           <Line points={[V.x + V.w, V.y, V.x + V.w + 12, V.y + 40]} stroke={liquid} strokeWidth={4} />
-          <Alarm text="OVERFLOW" y={V.y + 110} />
+          <Alarm text="OVERFLOW" row={0} />
         </Group>
       )}
-      {s.scorching && <Alarm text="SCORCHED" y={V.y + 128} />}
-      {s.dryHeating && <Alarm text="HEATER DRY" y={V.y + 146} />}
-      {s.spoiledBatch && !s.scorching && (
-        <Alarm text={s.spoilReason === 'overheat' ? 'OVERHEATED: SPOILED' : 'SPOILED'} y={V.y + 128} />
-      )}
+      {s.scorching && <Alarm text="SCORCHED" row={1} />}
+      {s.dryHeating && <Alarm text="HEATER DRY" row={2} />}
+      {s.spoiledBatch && <Alarm text={`SPOILED (${SPOIL_WORD[s.spoilReason]})`} row={3} />}
     </Group>
   );
 }
