@@ -316,18 +316,16 @@ export const mixer: PlantModel<MixerState> = {
     let scorching = false;
     let inflowL = 0;
     let outflowL = 0;
-    const spoil = (reason: SpoilReason) => {
-      if (spoiledBatch) return;
-      spoiledBatch = true;
-      spoilReason = reason;
-      spoiled++;
-    };
     // The outlet ordered open on a vessel with a batch in it: the batch is discharged, judged now.
     if (wantOut === 1 && !s.outletOrdered && level > 0 && !judged) {
       judged = true;
       lastRatio = ratioOf(s);
       const reason = verdict(s);
-      if (reason) spoil(reason);
+      if (reason && !spoiledBatch) {
+        spoiledBatch = true;
+        spoilReason = reason;
+        spoiled++;
+      }
     }
     const n = Math.max(1, Math.ceil(dtMs / MAX_STEP_MS));
     const hMs = dtMs / n;
@@ -390,8 +388,13 @@ export const mixer: PlantModel<MixerState> = {
       }
       if (level >= ELEMENT_COVERED_L && agitator >= 0.9 && temp >= HOLD_MIN_C) heldMs += hMs;
       if (level > 0 && temp > maxTemp) maxTemp = temp;
-      if (level > 0 && temp > OVERHEAT_C) spoil('overheat');
-      if (scorching && level > 0) spoil('scorch');
+      // A batch is spoiled (and counted) once, by the first thing that spoils it.
+      const harm: SpoilReason = level <= 0 ? '' : scorching ? 'scorch' : temp > OVERHEAT_C ? 'overheat' : '';
+      if (harm && !spoiledBatch) {
+        spoiledBatch = true;
+        spoilReason = harm;
+        spoiled++;
+      }
       // Emptied: a good batch is done; the next one starts from nothing.
       if (level === 0 && judged) {
         if (judged && !spoiledBatch) batches++;
@@ -440,12 +443,12 @@ export const mixer: PlantModel<MixerState> = {
   },
 
   sense(s: MixerState, faults: ReadonlySet<string>): Record<string, Value> {
-    const sw = (id: string, real: boolean) =>
-      faults.has(`${id}_stuck_on`) ? true : faults.has(`${id}_stuck_off`) ? false : real;
+    // Runs every scan: the fault names are constants, looked up only when a fault is set.
+    const any = faults.size > 0;
     return {
-      LowLevel: sw('low', s.level >= LOW_SWITCH_L),
-      MidLevel: sw('mid', s.level >= MID_SWITCH_L),
-      HighLevel: sw('high', s.level >= HIGH_SWITCH_L),
+      LowLevel: (any && faults.has('low_stuck_on')) || s.level >= LOW_SWITCH_L,
+      MidLevel: !(any && faults.has('mid_stuck_off')) && s.level >= MID_SWITCH_L,
+      HighLevel: !(any && faults.has('high_stuck_off')) && s.level >= HIGH_SWITCH_L,
       AgitatorOn: s.agitator >= 0.9,
       Level: Math.round(s.level),
       Temperature: Math.round(s.shownTemp * 10),

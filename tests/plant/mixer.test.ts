@@ -148,13 +148,16 @@ describe('the mixer consequences', () => {
     expect(consequences(before, s)).toEqual(['scorch']);
   });
 
-  test('heating past 80 °C spoils the batch, once', () => {
+  test('heating past 80 °C spoils the batch, once (discharging it counts nothing more)', () => {
     const before = run(dosed(400, 400), { Agitator: true }, 3000);
     const s = run(before, { Agitator: true, Heater: true }, 60_000);
     expect(q(s, 'max_temp')).toBeGreaterThan(80);
     expect(s.spoiled).toBe(1);
     expect(consequences(before, s)).toEqual(['spoiled_overheat']);
     expect(mixer.check(before, s)[0]!.message).toBe('a batch overheated above 80 °C and is spoiled');
+    const empty = run(s, { OutletValve: true }, 25_000);
+    expect(empty.level).toBe(0);
+    expect([empty.spoiled, empty.batches]).toEqual([1, 0]);
   });
 
   test.each([
