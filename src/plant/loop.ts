@@ -150,7 +150,13 @@ export class PlantLoop {
       } catch {
         return [];
       }
-      return [{ point: p, read: () => false, write: (v: Value) => plc.setInputs({ [p.address]: v }) }];
+      // The value last written, so a change back (a switch going OFF) is written too.
+      let held: Value = p.type === 'BOOL' ? false : 0;
+      const write = (v: Value) => {
+        held = v;
+        plc.setInputs({ [p.address]: v });
+      };
+      return [{ point: p, read: () => held, write }];
     });
     this.present();
   }

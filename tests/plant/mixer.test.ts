@@ -3,6 +3,7 @@
 // worker session's trace equal to the CLI's scan by scan; `rungsmith test` and `rungsmith plants`.
 import { describe, expect, test } from 'vitest';
 import { mixer, type MixerState } from '../../src/plant/mixer';
+import { PlantLoop } from '../../src/plant/loop';
 import { PLANT_EXAMPLES } from '../../src/plant/exercises';
 import { MIXER_SCENARIO, mixerReference, mixerWrong } from '../../src/plant/mixerExercise';
 import { runScenario } from '../../src/sim/scenario';
@@ -281,6 +282,27 @@ describe('the mixer exercise', () => {
       ok: true,
       scans: 1500,
     });
+  });
+});
+
+describe('the mixer in closed loop', () => {
+  test('through a PLC known only by its I/O records (the gateway device): a switch that goes OFF is written OFF', () => {
+    const image: Record<string, unknown> = {};
+    let agitator = true;
+    const io = {
+      outputs: () => ({ '%QX0.2': agitator }),
+      setInputs: (v: Record<string, unknown>) => Object.assign(image, v),
+    };
+    const loop = new PlantLoop(mixer);
+    loop.bind(io);
+    expect(image['%IX0.5']).toBe(false);
+    for (let scan = 1; scan <= 30; scan++) loop.afterScan(scan, (scan - 1) * 100, 100);
+    expect(image['%IX0.5']).toBe(true);
+    agitator = false;
+    for (let scan = 31; scan <= 60; scan++) loop.afterScan(scan, (scan - 1) * 100, 100);
+    expect(loop.read('mixer.agitator')).toBe(0);
+    expect(image['%IX0.5']).toBe(false);
+    expect(image['%IW1']).toBe(200);
   });
 });
 
