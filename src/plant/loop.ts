@@ -145,18 +145,18 @@ export class PlantLoop {
       const io = plc.ioPoint?.(p.address);
       if (io) return [{ point: p, read: () => io.read(), write: (v: Value) => io.write(v) }];
       if (plc.ioPoint) return [];
+      // Without resolved points the input is read back as last written (a sensor turning OFF is written too).
+      let last: Value = p.type === 'BOOL' ? false : 0;
       try {
-        plc.setInputs({ [p.address]: p.type === 'BOOL' ? false : 0 });
+        plc.setInputs({ [p.address]: last });
       } catch {
         return [];
       }
-      // The value last written, so a change back (a switch going OFF) is written too.
-      let held: Value = p.type === 'BOOL' ? false : 0;
       const write = (v: Value) => {
-        held = v;
         plc.setInputs({ [p.address]: v });
+        last = v;
       };
-      return [{ point: p, read: () => held, write }];
+      return [{ point: p, read: () => last, write }];
     });
     this.present();
   }

@@ -1,7 +1,8 @@
 // The batch mixer (issue 26): its physics as a table of cases, each fault, each consequence, purity;
 // the exercise (reference clean and passing, the wrong one failing where the batch overheats); the
 // worker session's trace equal to the CLI's scan by scan; `rungsmith test` and `rungsmith plants`.
-import { describe, expect, test } from 'vitest';
+import { describe, expect, test, vi } from 'vitest';
+import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import { mixer, type MixerState } from '../../src/plant/mixer';
 import { PlantLoop } from '../../src/plant/loop';
 import { PLANT_EXAMPLES } from '../../src/plant/exercises';
@@ -304,6 +305,46 @@ describe('the mixer in closed loop', () => {
     expect(image['%IX0.5']).toBe(false);
     expect(image['%IW1']).toBe(200);
   });
+});
+
+describe("the mixer as the gateway's simulated device (npm start -- --plant mixer)", () => {
+  test('its default I/O map fits the device: a master writes the coils, the switches and transmitters come back', async () => {
+    const device = new SimulatedDevice(null, 'mixer');
+    await device.start({
+      inputs: () => undefined,
+      written: () => undefined,
+      status: () => undefined,
+    } as never);
+    try {
+      const inputs = device.inputValues();
+      expect([inputs.get('%IX0.2'), inputs.get('%IX0.5'), inputs.get('%IW0'), inputs.get('%IW1')]).toEqual([
+        false,
+        false,
+        0,
+        200,
+      ]);
+      device.drive(
+        new Map([
+          ['%QX0.0', true],
+          ['%QX0.2', true],
+        ]),
+      );
+      await vi.waitFor(() => expect(device.inputValues().get('%IX0.5')).toBe(true), { timeout: 20_000 });
+      await vi.waitFor(() => expect(device.inputValues().get('%IW0')).toBeGreaterThan(20), {
+        timeout: 20_000,
+      });
+      device.drive(
+        new Map([
+          ['%QX0.0', false],
+          ['%QX0.2', false],
+        ]),
+      );
+      await vi.waitFor(() => expect(device.inputValues().get('%IX0.5')).toBe(false), { timeout: 20_000 });
+      expect(device.plantRead('mixer.ratio')).toBe(100);
+    } finally {
+      await device.close();
+    }
+  }, 60_000);
 });
 
 const WATCH = [
