@@ -2,6 +2,7 @@
 // I/O declared, a reference solution in ladder and a scenario it passes (`# plant: tank`), run in
 // CI by `rungsmith test`. Each machine's exercise is its own module (`<id>Exercise.ts`).
 import type { Example } from '../model/examples';
+import { GARAGE_EXAMPLE } from './garageExercise';
 import { LIFT_EXAMPLE } from './liftExercise';
 import { MIXER_EXAMPLE } from './mixerExercise';
 import { TANK_EXAMPLE } from './tankExercise';
@@ -10,4 +11,4 @@ export { plantVariables, taskText } from './exerciseKit';
 export { TANK_SCENARIO, tankReference, tankWrong } from './tankExercise';
 export { LIFT_SCENARIO, liftReference, liftWrong } from './liftExercise';
 
-export const PLANT_EXAMPLES: readonly Example[] = [TANK_EXAMPLE, LIFT_EXAMPLE, MIXER_EXAMPLE];
+export const PLANT_EXAMPLES: readonly Example[] = [TANK_EXAMPLE, LIFT_EXAMPLE, GARAGE_EXAMPLE, MIXER_EXAMPLE];

@@ -1,6 +1,7 @@
 // How each machine is drawn (issue 26): one Konva component per machine id, given the machine's
 // state (a frame's, or a recorded scan's). The model itself (src/plant) knows nothing of drawing.
 import type { ComponentType } from 'react';
+import { GarageDrawing, GARAGE_SIZE } from './GarageDrawing';
 import { LiftDrawing, LIFT_SIZE } from './LiftDrawing';
 import { MixerDrawing, MIXER_SIZE } from './MixerDrawing';
 import { TankDrawing, TANK_SIZE } from './TankDrawing';
@@ -17,6 +18,7 @@ export interface PlantDrawing {
 
 export const PLANT_DRAWINGS: Readonly<Record<string, PlantDrawing>> = {
   tank: { component: TankDrawing, ...TANK_SIZE },
+  garage: { component: GarageDrawing, ...GARAGE_SIZE },
   lift: { component: LiftDrawing, ...LIFT_SIZE },
   mixer: { component: MixerDrawing, ...MIXER_SIZE },
 };
