@@ -253,7 +253,12 @@ export const mixer: PlantModel<MixerState> = {
     { name: 'temperature', type: 'REAL', unit: '°C', comment: 'Temperature of the batch' },
     { name: 'element', type: 'REAL', unit: '°C', comment: 'Temperature at the heater element' },
     { name: 'level', type: 'REAL', unit: 'L', comment: 'Liquid in the vessel' },
-    { name: 'ratio', type: 'REAL', unit: '%', comment: 'Share of ingredient A in the vessel' },
+    {
+      name: 'ratio',
+      type: 'REAL',
+      unit: '%',
+      comment: 'Share of ingredient A in the vessel (the last batch judged, when empty)',
+    },
     { name: 'held', type: 'REAL', unit: 's', comment: 'Time the batch was held hot and stirred' },
     { name: 'max_temp', type: 'REAL', unit: '°C', comment: 'Hottest the batch in the vessel was' },
     { name: 'valve_a', type: 'REAL', unit: '%', comment: 'Valve A opening' },

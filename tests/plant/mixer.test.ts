@@ -273,6 +273,30 @@ describe('the mixer exercise', () => {
     expect(result.error).toBe('a batch overheated above 80 °C and is spoiled at scan 819 (81.80 s)');
   });
 
+  test('Stop pauses the batch (valves closed, heater and agitator off), Start goes on with it', () => {
+    const csv = `# plant: mixer
+# cycle: 100ms
+scan,mixer.Start,mixer.Stop,expect DoseA,expect ValveA,expect mixer.valve_a,expect Agitator,expect Heater,expect mixer.batches
+1,1,0,1,1,*,0,0,0
+3,0,,1,1,*,0,0,0
+50,,1,1,0,*,0,0,0
+52,,0,1,0,*,0,0,0
+70,,,1,0,0,0,0,0
+300,,,1,0,0,0,0,0
+301,1,,1,1,*,0,0,0
+303,0,,1,1,*,0,0,0
+500,,,0,0,0,1,*,0
+600,,1,0,0,0,0,0,0
+602,,0,0,0,0,0,0,0
+700,,,0,0,0,0,0,0
+701,1,,0,0,0,1,*,0
+703,0,,*,*,*,*,*,0
+1500,,,*,*,*,*,*,1
+`;
+    const { result } = runScenario(mixerReference(), { name: 'pause', csv });
+    expect(result).toMatchObject({ ok: true, scans: 1500 });
+  });
+
   test('faults from a scenario: the high switch stuck OFF overflows the reference; the agitator dead, it never heats', () => {
     const stuck =
       '# plant: mixer\n# cycle: 100ms\nscan,mixer.Start,fault high_stuck_off,expect mixer.overflows\n1,1,1,0\n3,0,,0\n400,,,1\n';
