@@ -2,6 +2,7 @@
 import { boxes } from './boxes';
 import { garage } from './garage';
 import { lift } from './lift';
+import { mixer } from './mixer';
 import { tank } from './tank';
 import type { PlantModel } from './types';
 
@@ -9,6 +10,7 @@ export const PLANTS: readonly PlantModel[] = [
   tank as PlantModel,
   lift as PlantModel,
   garage as PlantModel,
+  mixer as PlantModel,
   boxes as PlantModel,
 ];
 

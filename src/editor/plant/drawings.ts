@@ -4,6 +4,7 @@ import type { ComponentType } from 'react';
 import { BoxesDrawing, BOXES_SIZE } from './BoxesDrawing';
 import { GarageDrawing, GARAGE_SIZE } from './GarageDrawing';
 import { LiftDrawing, LIFT_SIZE } from './LiftDrawing';
+import { MixerDrawing, MIXER_SIZE } from './MixerDrawing';
 import { TankDrawing, TANK_SIZE } from './TankDrawing';
 
 export interface PlantDrawingProps {
@@ -21,4 +22,5 @@ export const PLANT_DRAWINGS: Readonly<Record<string, PlantDrawing>> = {
   boxes: { component: BoxesDrawing, ...BOXES_SIZE },
   garage: { component: GarageDrawing, ...GARAGE_SIZE },
   lift: { component: LiftDrawing, ...LIFT_SIZE },
+  mixer: { component: MixerDrawing, ...MIXER_SIZE },
 };
