@@ -11,7 +11,7 @@ import { TC6_0201, XHTML_NS, preserved, type PreservedPou, type PreservedProject
 import { XmlWriter } from './xml/write';
 import { writeDataTypes } from './dataTypes';
 import { profileData } from './profileChoice';
-import { librariesData, libraryMark, scenariosData } from './rungsmithData';
+import { librariesData, libraryMark, plantData, scenariosData } from './rungsmithData';
 import { externalsMark, missingExternals, needsExternals } from './addedExternals';
 
 export interface ExportOptions {
@@ -196,6 +196,7 @@ export function exportPlcopen(project: Project, options: ExportOptions = {}): st
       w.raw(profileData(project.profile));
       if (libraries.length) w.raw(librariesData(libraries));
       if (project.scenarios?.length) w.raw(scenariosData(project.scenarios));
+      if (project.plant) w.raw(plantData(project.plant));
     });
   });
   return `<?xml version="1.0" encoding="utf-8"?>\n${w.toString()}`;

@@ -12,12 +12,13 @@ import {
   type Project,
   type DataType,
   type ProjectLibrary,
+  type ProjectPlant,
   type Scenario,
   type Task,
   type Variable,
 } from '../model/project';
 import { readExternalsMark } from './addedExternals';
-import { asLibraryPou, readLibrariesData, readLibraryMark, readScenariosData, RS_LIBRARIES, RS_LIBRARY, RS_SCENARIOS, type LibraryManifest } from './rungsmithData';
+import { asLibraryPou, readLibrariesData, readLibraryMark, readPlantData, readScenariosData, RS_LIBRARIES, RS_LIBRARY, RS_PLANT, RS_SCENARIOS, type LibraryManifest } from './rungsmithData';
 import { importLdBody, type BodyTuning } from './importBody';
 import { readInstances, readType, readVarLists } from './importInterface';
 import { LdGraphError } from './ldGraph';
@@ -425,6 +426,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
   pous.push(...libraryPous);
   const manifests: LibraryManifest[] = [];
   const scenarios: Scenario[] = [];
+  let plant: ProjectPlant | undefined;
   for (const holder of [root, contentHeader]) {
     const add = holder ? child(holder, 'addData') : undefined;
     for (const d of add ? childrenNamed(add, 'data') : []) {
@@ -433,6 +435,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
       // Rungsmith's libraries and scenarios (rungsmithData.ts): read back into the project.
       else if (d.attrs.name === RS_LIBRARIES) manifests.push(...readLibrariesData(d, warn));
       else if (d.attrs.name === RS_SCENARIOS) scenarios.push(...readScenariosData(d));
+      else if (d.attrs.name === RS_PLANT) plant = readPlantData(d) ?? plant;
       else if (d.attrs.handleUnknown === 'discard')
         warn(`addData "${d.attrs.name}" dropped (handleUnknown="discard")`, d);
       else keepProject.addData.push(raw(d));
@@ -494,6 +497,7 @@ function importChecked(text: string, tuning: BodyTuning | undefined): ImportResu
     globals: inst.globals,
     tasks,
     ...(scenarios.length ? { scenarios } : {}),
+    ...(plant ? { plant } : {}),
     ...(externalBlocks.length ? { externalBlocks } : {}),
     ...(split.dataTypes.length ? { dataTypes: split.dataTypes } : {}),
     ...(split.libraries.length ? { libraries: split.libraries } : {}),

@@ -53,6 +53,7 @@ export function extrasText(project: Project): string {
   return [
     libs.length ? `Libraries: ${libs.map((l) => `${l.name} (${l.pous.length} block${l.pous.length === 1 ? '' : 's'})`).join(', ')}.` : '',
     n ? `${n} test scenario${n === 1 ? '' : 's'}.` : '',
+    project.plant ? `Machine: ${project.plant.id}.` : '',
   ]
     .filter(Boolean)
     .join(' ');

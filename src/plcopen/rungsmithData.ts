@@ -9,10 +9,13 @@
 //   `<data name=".../libraries"><libraries xmlns="..."><library name hash sourceFile addedAt origin>
 //   <pou name="Conveyor"/><dataType name="Speed"/></library></libraries></data>`;
 // - the project's scenarios (docs/scenarios.md): `<data name=".../scenarios"><scenarios xmlns="...">
-//   <scenario name="fill cycle">CSV text</scenario></scenarios></data>` (line breaks as &#10;).
+//   <scenario name="fill cycle">CSV text</scenario></scenarios></data>` (line breaks as &#10;);
+// - the machine the project controls (docs/PLANTS.md) and the addresses the user changed:
+//   `<data name=".../plant"><plant xmlns="..." id="tank"><point name="Pump" address="%QX1.0"/>
+//   </plant></data>`.
 // Pure: no DOM.
 import { libraryPou } from '../model/libraries';
-import type { Pou, ProjectLibrary, Scenario } from '../model/project';
+import type { Pou, ProjectLibrary, ProjectPlant, Scenario } from '../model/project';
 import { childrenNamed, type XmlElement } from './xml/parse';
 import { escapeAttr } from './xml/write';
 import { RS_NS, preserved, type PreservedPou } from './types';
@@ -20,6 +23,7 @@ import { RS_NS, preserved, type PreservedPou } from './types';
 export const RS_LIBRARY = `${RS_NS}/library`;
 export const RS_LIBRARIES = `${RS_NS}/libraries`;
 export const RS_SCENARIOS = `${RS_NS}/scenarios`;
+export const RS_PLANT = `${RS_NS}/plant`;
 
 /** The addData `data` that marks an exported POU as a block of the library `name`. */
 export const libraryMark = (name: string): string =>
@@ -52,6 +56,32 @@ export function scenariosData(scenarios: readonly Scenario[]): string {
     '  </scenarios>',
     '</data>',
   ].join('\n');
+}
+
+/** The project-level `data` naming the machine the project controls and its changed addresses. */
+export function plantData(plant: ProjectPlant): string {
+  const points = Object.entries(plant.map ?? {});
+  const open = `  <plant xmlns="${RS_NS}" id="${escapeAttr(plant.id)}"`;
+  return [
+    `<data name="${RS_PLANT}" handleUnknown="discard">`,
+    ...(points.length
+      ? [
+          `${open}>`,
+          ...points.map(([name, address]) => `    <point name="${escapeAttr(name)}" address="${escapeAttr(address)}"/>`),
+          '  </plant>',
+        ]
+      : [`${open}/>`]),
+    '</data>',
+  ].join('\n');
+}
+
+/** The machine of a project-level `data` (the first `plant` with an id), if it names one. */
+export function readPlantData(data: XmlElement): ProjectPlant | undefined {
+  const plant = childrenNamed(data, 'plant').find((p) => p.attrs.id);
+  if (!plant) return undefined;
+  const map: Record<string, string> = {};
+  for (const p of childrenNamed(plant, 'point')) if (p.attrs.name && p.attrs.address) map[p.attrs.name] = p.attrs.address;
+  return Object.keys(map).length ? { id: plant.attrs.id!, map } : { id: plant.attrs.id! };
 }
 
 /** The library named by a POU's mark, if the `data` is one. */
