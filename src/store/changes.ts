@@ -7,7 +7,7 @@ import type { Network, Pou, Project, Task, Variable } from '../model/project';
 
 /** Network fields that are not its elements or vertical links. */
 export type NetworkProps = Omit<Network, 'id' | 'elements' | 'vlinks'>;
-export type ProjectProps = Pick<Project, 'name' | 'description' | 'profile' | 'scenarios' | 'dataTypes' | 'libraries' | 'onlineChange'>;
+export type ProjectProps = Pick<Project, 'name' | 'description' | 'profile' | 'scenarios' | 'dataTypes' | 'libraries' | 'onlineChange' | 'plant'>;
 /** POU fields a command may change in place (an `undefined` value removes an optional field). */
 export type PouProps = Pick<Pou, 'name' | 'comment' | 'kind' | 'returnType' | 'source'>;
 /** 'globals' addresses the project's global variables instead of a POU's. */
@@ -228,8 +228,12 @@ export function applyChange(project: Project, c: Change): Project {
       return updateVariables(project, c.scope, (vars) => removeAt(vars, c.index));
     case 'variable.update':
       return updateVariables(project, c.scope, (vars) => vars.map((v, i) => (i === c.index ? c.after : v)));
-    case 'project.update':
-      return { ...project, ...c.after };
+    case 'project.update': {
+      // An undefined value removes an optional field (a project without a machine has no `plant`).
+      const next: Record<string, unknown> = { ...project, ...c.after };
+      for (const [k, v] of Object.entries(c.after)) if (v === undefined) delete next[k];
+      return next as unknown as Project;
+    }
     case 'pou.update':
       return updatePou(project, c.pou, (p) => withFields(p, c.after));
     case 'pou.add':

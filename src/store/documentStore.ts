@@ -134,8 +134,13 @@ export interface DocumentState {
   loadProject(p: Project): void;
   /** The simulator's watch list kept with the project (not an undo step: no edit of the program). */
   setWatchList(names: readonly string[]): void;
-  /** The machine the simulator runs against and its changed addresses, kept with the project (not an undo step: no edit of the program). */
-  setPlant(plant: ProjectPlant | undefined): void;
+  /**
+   * The machine the simulator runs against and its changed addresses, kept with the project: one
+   * undo step named `name` (choosing a machine or rewiring a point is what the user undoes next;
+   * without a step of its own Undo would take back the edit before it instead). No step when
+   * nothing changes.
+   */
+  setPlant(plant: ProjectPlant | undefined, name?: string): void;
   newProject(name?: string): void;
   markSaved(): void;
   setActivePou(id: PouId): void;
@@ -287,11 +292,12 @@ export function createDocumentStore(initial: Project = makeProject()): DocumentS
         const project: Project = names.length > 0 ? { ...rest, watch: [...names] } : rest;
         set({ project, dirty: true, revision: s.revision + 1 });
       },
-      setPlant: (plant) => {
-        const s = get();
-        const { plant: _old, ...rest } = s.project;
-        const project: Project = plant ? { ...rest, plant } : rest;
-        set({ project, dirty: true, revision: s.revision + 1 });
+      setPlant: (plant, name) => {
+        const before = get().project.plant;
+        if (JSON.stringify(before ?? null) === JSON.stringify(plant ?? null)) return;
+        commit(name ?? (plant ? 'Choose the machine' : 'Choose no machine'), [
+          { type: 'project.update', before: { plant: before }, after: { plant } },
+        ]);
       },
       newProject: (name) => set(reset(makeProject(name))),
       markSaved: () => set({ dirty: false }),

@@ -31,7 +31,14 @@ export function PlantPanel() {
         <select
           data-testid="plant-choose"
           value={model?.id ?? ''}
-          onChange={(e) => doc.getState().setPlant(e.target.value ? { id: e.target.value } : undefined)}
+          onChange={(e) =>
+            doc
+              .getState()
+              .setPlant(
+                e.target.value ? { id: e.target.value } : undefined,
+                e.target.value ? `Choose the machine ${e.target.value}` : 'Choose no machine',
+              )
+          }
         >
           <option value="">None</option>
           {PLANTS.map((p) => (
@@ -306,7 +313,12 @@ function IoMap({
     const next: Record<string, string> = { ...map };
     if (address.toUpperCase() === original.address.toUpperCase()) delete next[point.name];
     else next[point.name] = address;
-    doc.getState().setPlant({ id: model.id, ...(Object.keys(next).length ? { map: next } : {}) });
+    doc
+      .getState()
+      .setPlant(
+        { id: model.id, ...(Object.keys(next).length ? { map: next } : {}) },
+        `Change the address of ${point.name}`,
+      );
   };
   const declare = () => {
     const s = doc.getState();
