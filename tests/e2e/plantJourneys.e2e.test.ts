@@ -1,0 +1,120 @@
+// The machines as a user meets them (issue 26), in real Chromium against the real server: a new
+// project built from scratch against a machine (choose it, declare its I/O, draw a rung, run it
+// fast-forwarded with Step N, rewire a point and undo it), and the drawing's operator buttons
+// readable in the dark theme. One page for the whole file.
+import type { Page } from 'playwright-core';
+import { beforeAll, expect, test } from 'vitest';
+import { openApp, useChromium } from './appPage';
+import { DrawPage } from './drawPage';
+import { SimPage } from './simPage';
+
+const browser = useChromium();
+let page: Page;
+let sim: SimPage;
+let draw: DrawPage;
+let errors: string[];
+
+const plantState = () =>
+  page.evaluate(
+    () =>
+      (
+        window.rungsmith as unknown as {
+          simStore: { getState(): { plant?: { id: string; now: { scan: number; state: Record<string, unknown> } } } };
+        }
+      ).simStore.getState().plant,
+  );
+const docPlant = () =>
+  page.evaluate(
+    () =>
+      (window.rungsmith as unknown as { documentStore: { getState(): { project: { plant?: unknown } } } }).documentStore.getState()
+        .project.plant,
+  );
+const scan = () =>
+  page.evaluate(() => (window.rungsmith as unknown as { simStore: { getState(): { scan: number } } }).simStore.getState().scan);
+
+beforeAll(async () => {
+  ({ page, errors } = await openApp(browser()));
+  sim = new SimPage(page);
+  draw = new DrawPage(page);
+});
+
+/** WCAG contrast ratio of two computed CSS colours (rgb()/rgba()). */
+function contrast(a: string, b: string): number {
+  const lum = (c: string) => {
+    const [r, g, bl] = c.match(/[\d.]+/g)!.slice(0, 3).map((x) => {
+      const v = Number(x) / 255;
+      return v <= 0.03928 ? v / 12.92 : ((v + 0.055) / 1.055) ** 2.4;
+    });
+    return 0.2126 * r! + 0.7152 * g! + 0.0722 * bl!;
+  };
+  const [hi, lo] = [lum(a), lum(b)].sort((x, y) => y - x);
+  return (hi! + 0.05) / (lo! + 0.05);
+}
+
+test("the drawing's operator buttons and the panel's status stay readable in the dark theme", async () => {
+  await sim.openExample('Tank level control (machine: tank)');
+  await sim.tab('Plant');
+  await page.getByTestId('theme-toggle').click();
+  await expect.poll(() => page.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
+  for (const id of ['plant-op-Start', 'plant-op-Stop', 'plant-status']) {
+    const colours = await page.getByTestId(id).evaluate((el) => {
+      let bg = 'rgba(0, 0, 0, 0)';
+      for (let e: Element | null = el; e && /rgba\(0, 0, 0, 0\)|transparent/.test(bg); e = e.parentElement)
+        bg = getComputedStyle(e).backgroundColor;
+      return { fg: getComputedStyle(el).color, bg };
+    });
+    expect(contrast(colours.fg, colours.bg), `${id}: ${colours.fg} on ${colours.bg}`).toBeGreaterThanOrEqual(4.5);
+  }
+  await page.getByTestId('theme-toggle').click();
+  expect(errors).toEqual([]);
+});
+
+test('a new project against the garage door: choose it, declare its I/O, draw a rung, step it; rewiring a point is undone by Undo', async () => {
+  await draw.menu('File', 'New project');
+  await sim.tab('Plant');
+  await page.getByTestId('plant-choose').selectOption('garage');
+  await expect.poll(docPlant).toEqual({ id: 'garage' });
+  await page.getByTestId('plant-declare').click();
+  await expect.poll(() => page.getByTestId('plant-declared').textContent()).toMatch(/^Declared 10 variables in Main: KeyOpen, /);
+  // The door runs up until its open limit: OpenLimit (NC) -> MotorUp.
+  await page.getByTestId('tab-palette').click();
+  await draw.pickPalette('contact-NC');
+  await draw.clickCell(0, 0, 0);
+  await draw.typeName('OpenLimit');
+  await draw.pickPalette('coil-COIL');
+  await draw.clickCell(0, 0, 9);
+  await draw.typeName('MotorUp');
+  await draw.pickPalette('link');
+  for (let col = 1; col <= 8; col++) await draw.clickCell(0, 0, col);
+  await draw.pickPalette('select');
+  await expect.poll(() => draw.problemsSummary()).toBe('No problems');
+  await page.getByTestId('sim-cycle').fill('100');
+  await page.getByTestId('sim-cycle').press('Enter');
+  await page.getByTestId('sim-step-count').fill('200');
+  await sim.button('step-n').click();
+  await expect.poll(scan, { timeout: 60_000 }).toBeGreaterThanOrEqual(200);
+  // 12 s end to end: open in 20 s of PLC time, stopped at the limit.
+  await expect.poll(async () => (await plantState())?.now.state.position, { timeout: 30_000 }).toBeGreaterThanOrEqual(99);
+  expect((await plantState())!.now.state.up).toBe(false);
+  await expect.poll(() => page.getByTestId('plant-q-position').textContent()).toMatch(/^garage\.position(99|100)\.\d %$/);
+
+  // Rewire the motor's up contactor, then Undo: the address comes back (not the rung drawn before).
+  await sim.button('reset').click();
+  await sim.waitForMode('Stopped');
+  const address = page.getByTestId('plant-address-MotorUp');
+  await address.fill('%QX1.5');
+  await address.press('Enter');
+  await expect.poll(docPlant).toEqual({ id: 'garage', map: { MotorUp: '%QX1.5' } });
+  await draw.menu('Edit', 'Undo');
+  await expect.poll(docPlant).toEqual({ id: 'garage' });
+  await expect.poll(() => page.getByTestId('plant-address-MotorUp').inputValue()).toBe('%QX0.0');
+  expect((await draw.elements(0)).length).toBeGreaterThanOrEqual(10);
+  await draw.menu('Edit', 'Redo');
+  await expect.poll(() => page.getByTestId('plant-address-MotorUp').inputValue()).toBe('%QX1.5');
+  // None, then Undo: the garage and its map again.
+  await page.getByTestId('plant-choose').selectOption('');
+  await expect.poll(docPlant).toBe(undefined);
+  await draw.menu('Edit', 'Undo');
+  await expect.poll(docPlant).toEqual({ id: 'garage', map: { MotorUp: '%QX1.5' } });
+  expect(errors).toEqual([]);
+});
