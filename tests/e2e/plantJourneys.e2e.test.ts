@@ -1,6 +1,7 @@
 // The machines as a user meets them (issue 26), in real Chromium against the real server: a new
 // project built from scratch against a machine (choose it, declare its I/O, draw a rung, run it
-// fast-forwarded with Step N, rewire a point and undo it), and the drawing's operator buttons
+// fast-forwarded with Step N, rewire a point (the I/O map says what the program has at each
+// address) and undo it), and the drawing's operator buttons
 // readable in the dark theme. One page for the whole file.
 import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
@@ -51,7 +52,7 @@ function contrast(a: string, b: string): number {
   return (hi! + 0.05) / (lo! + 0.05);
 }
 
-test("the drawing's operator buttons and the panel's status stay readable in the dark theme", async () => {
+test("the drawing's operator buttons and the panel's status stay readable in the dark theme; the I/O map fits the panel", async () => {
   await sim.openExample('Tank level control (machine: tank)');
   await sim.tab('Plant');
   await page.getByTestId('theme-toggle').click();
@@ -66,6 +67,12 @@ test("the drawing's operator buttons and the panel's status stay readable in the
     expect(contrast(colours.fg, colours.bg), `${id}: ${colours.fg} on ${colours.bg}`).toBeGreaterThanOrEqual(4.5);
   }
   await page.getByTestId('theme-toggle').click();
+  // The I/O map fits the panel: nothing cut off at its right edge.
+  const fit = await page.getByTestId('plant-panel').evaluate((panel) => ({
+    table: panel.querySelector('[data-testid="plant-io"]')!.getBoundingClientRect().right,
+    panel: panel.getBoundingClientRect().right,
+  }));
+  expect(fit.table).toBeLessThanOrEqual(fit.panel);
   expect(errors).toEqual([]);
 });
 
@@ -74,8 +81,10 @@ test('a new project against the garage door: choose it, declare its I/O, draw a 
   await sim.tab('Plant');
   await page.getByTestId('plant-choose').selectOption('garage');
   await expect.poll(docPlant).toEqual({ id: 'garage' });
+  await expect.poll(() => page.getByTestId('plant-wired-MotorUp').textContent()).toBe('not wired');
   await page.getByTestId('plant-declare').click();
   await expect.poll(() => page.getByTestId('plant-declared').textContent()).toMatch(/^Declared 10 variables in Main: KeyOpen, /);
+  await expect.poll(() => page.getByTestId('plant-wired-MotorUp').textContent()).toBe('MotorUp');
   // The door runs up until its open limit: OpenLimit (NC) -> MotorUp.
   await page.getByTestId('tab-palette').click();
   await draw.pickPalette('contact-NC');
@@ -105,6 +114,10 @@ test('a new project against the garage door: choose it, declare its I/O, draw a 
   await address.fill('%QX1.5');
   await address.press('Enter');
   await expect.poll(docPlant).toEqual({ id: 'garage', map: { MotorUp: '%QX1.5' } });
+  // The program still drives %QX0.0: the map says the motor is no longer connected to it.
+  await expect
+    .poll(() => page.getByTestId('plant-wired-MotorUp').textContent())
+    .toBe('not wired: MotorUp is at %QX0.0');
   await draw.menu('Edit', 'Undo');
   await expect.poll(docPlant).toEqual({ id: 'garage' });
   await expect.poll(() => page.getByTestId('plant-address-MotorUp').inputValue()).toBe('%QX0.0');

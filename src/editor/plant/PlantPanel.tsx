@@ -4,6 +4,8 @@
 // "Declare the machine's I/O". At a recorded scan (history) it shows the machine as it was then.
 import { useLayoutEffect, useRef, useState, type ReactNode } from 'react';
 import { Layer, Stage } from 'react-konva';
+import { locationText, parseLocation } from '../../model/iecTypes';
+import type { Project } from '../../model/project';
 import { plantVariables, taskText } from '../../plant/exercises';
 import { addressProblem, mappedPoints } from '../../plant/loop';
 import { PLANTS, plantById } from '../../plant/machines';
@@ -16,6 +18,34 @@ import { PLANT_DRAWINGS, type PlantDrawing } from './drawings';
 import './plant.css';
 
 const selectPlantConfig = (s: DocumentState) => s.project.plant;
+const selectProject = (s: DocumentState) => s.project;
+const canonical = (address: string | undefined): string | undefined => {
+  const loc = address ? parseLocation(address) : undefined;
+  return loc ? locationText(loc) : undefined;
+};
+
+/**
+ * What the program has at each point's address, as the machine is wired: the variable declared
+ * there (the point is wired to it), or nothing, with where a variable of the point's name is
+ * declared instead (rewired in the map but not in the program, or the other way round).
+ */
+function wiring(project: Project, points: readonly PlantPoint[]): Map<string, { wired?: string; elsewhere?: string }> {
+  const byLocation = new Map<string, string>();
+  const byName = new Map<string, string>();
+  for (const v of [...project.globals, ...project.pous.flatMap((p) => (p.kind === 'PROGRAM' ? p.variables : []))]) {
+    const at = canonical(v.location);
+    if (!at) continue;
+    if (!byLocation.has(at)) byLocation.set(at, v.name);
+    if (!byName.has(v.name.toUpperCase())) byName.set(v.name.toUpperCase(), at);
+  }
+  const out = new Map<string, { wired?: string; elsewhere?: string }>();
+  for (const p of points) {
+    const wired = byLocation.get(canonical(p.address) ?? '');
+    const elsewhere = wired ? undefined : byName.get(p.name.toUpperCase());
+    out.set(p.name, { ...(wired ? { wired } : {}), ...(elsewhere ? { elsewhere } : {}) });
+  }
+  return out;
+}
 const selectFrame = (s: SimState) => s.plant;
 const selectAtScan = (s: SimState) => s.plantAtScan;
 const selectHistoryScan = (s: SimState) => s.historyScan;
@@ -295,6 +325,8 @@ function IoMap({
   points: readonly PlantPoint[];
 }) {
   const doc = useDocumentStore();
+  const project = useDocument(selectProject);
+  const wired = wiring(project, points);
   const [problem, setProblem] = useState<string | undefined>();
   const [declared, setDeclared] = useState<string | undefined>();
   const change = (point: PlantPoint, text: string) => {
@@ -356,10 +388,8 @@ function IoMap({
         <thead>
           <tr>
             <th>Address</th>
-            <th>Name</th>
-            <th>Type</th>
-            <th>Kind</th>
-            <th>Comment</th>
+            <th>Point</th>
+            <th title="The program's variable at the point's address: what the machine is wired to">In the program</th>
           </tr>
         </thead>
         <tbody>
@@ -379,14 +409,35 @@ function IoMap({
                   }}
                 />
               </td>
-              <td>{p.name}</td>
-              <td>{p.type}</td>
-              <td>{p.kind}</td>
-              <td>{p.comment}</td>
+              <td>
+                <span className="rs-plant-point">{p.name}</span>{' '}
+                <span className="rs-plant-kind">
+                  {p.type} {p.kind}
+                </span>
+                <div className="rs-plant-comment">{p.comment}</div>
+              </td>
+              <WiredCell point={p} at={wired.get(p.name) ?? {}} />
             </tr>
           ))}
         </tbody>
       </table>
     </div>
+  );
+}
+
+function WiredCell({ point, at }: { point: PlantPoint; at: { wired?: string; elsewhere?: string } }) {
+  if (at.wired) return <td data-testid={`plant-wired-${point.name}`}>{at.wired}</td>;
+  return (
+    <td
+      data-testid={`plant-wired-${point.name}`}
+      className={at.elsewhere ? 'rs-plant-warning' : 'rs-plant-empty'}
+      title={
+        at.elsewhere
+          ? `The program declares ${point.name} at ${at.elsewhere}, the machine's ${point.name} is at ${point.address}: they are not connected`
+          : `No variable of the program is at ${point.address}`
+      }
+    >
+      {at.elsewhere ? `not wired: ${point.name} is at ${at.elsewhere}` : 'not wired'}
+    </td>
   );
 }
