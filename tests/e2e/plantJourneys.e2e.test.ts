@@ -67,6 +67,14 @@ test("the drawing's operator buttons and the panel's status stay readable in the
     expect(contrast(colours.fg, colours.bg), `${id}: ${colours.fg} on ${colours.bg}`).toBeGreaterThanOrEqual(4.5);
   }
   await page.getByTestId('theme-toggle').click();
+  // A push button held from the keyboard springs back when the focus leaves it (Tab while held).
+  const start = page.getByTestId('plant-op-Start');
+  await start.focus();
+  await page.keyboard.down(' ');
+  await expect.poll(() => start.getAttribute('aria-pressed')).toBe('true');
+  await page.keyboard.press('Tab');
+  await expect.poll(() => start.getAttribute('aria-pressed')).toBe('false');
+  await page.keyboard.up(' ');
   // The I/O map fits the panel: nothing cut off at its right edge.
   const fit = await page.getByTestId('plant-panel').evaluate((panel) => ({
     table: panel.querySelector('[data-testid="plant-io"]')!.getBoundingClientRect().right,

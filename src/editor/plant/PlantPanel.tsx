@@ -219,6 +219,11 @@ function OperatorControls({
             onKeyUp={(e) => {
               if (e.key === ' ' || e.key === 'Enter') set(p.name, false);
             }}
+            // A push button springs back: held from the keyboard, it is released when the focus
+            // leaves it (Tab, a click elsewhere), whose key-up then goes elsewhere.
+            onBlur={() => {
+              if (held[p.name]) set(p.name, false);
+            }}
           >
             {p.name}
           </button>
