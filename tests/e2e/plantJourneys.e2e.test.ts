@@ -20,7 +20,11 @@ const plantState = () =>
     () =>
       (
         window.rungsmith as unknown as {
-          simStore: { getState(): { plant?: { id: string; now: { scan: number; state: Record<string, unknown> } } } };
+          simStore: {
+            getState(): {
+              plant?: { id: string; now: { scan: number; state: Record<string, unknown>; faults: string[] } };
+            };
+          };
         }
       ).simStore.getState().plant,
   );
@@ -30,6 +34,7 @@ const docPlant = () =>
       (window.rungsmith as unknown as { documentStore: { getState(): { project: { plant?: unknown } } } }).documentStore.getState()
         .project.plant,
   );
+const faults = async () => (await plantState())?.now.faults;
 const scan = () =>
   page.evaluate(() => (window.rungsmith as unknown as { simStore: { getState(): { scan: number } } }).simStore.getState().scan);
 
@@ -52,7 +57,7 @@ function contrast(a: string, b: string): number {
   return (hi! + 0.05) / (lo! + 0.05);
 }
 
-test("the drawing's operator buttons and the panel's status stay readable in the dark theme; the I/O map fits the panel", async () => {
+test("the drawing's operator buttons and the panel's status stay readable in the dark theme; a held button springs back; stuck ON clears stuck OFF; the I/O map fits the panel", async () => {
   await sim.openExample('Tank level control (machine: tank)');
   await sim.tab('Plant');
   await page.getByTestId('theme-toggle').click();
@@ -75,6 +80,14 @@ test("the drawing's operator buttons and the panel's status stay readable in the
   await page.keyboard.press('Tab');
   await expect.poll(() => start.getAttribute('aria-pressed')).toBe('false');
   await page.keyboard.up(' ');
+  // A switch is stuck ON or OFF, not both: setting one fault of the pair clears the other.
+  await page.getByTestId('plant-fault-high_stuck_off').check();
+  await expect.poll(faults).toEqual(['high_stuck_off']);
+  await page.getByTestId('plant-fault-high_stuck_on').check();
+  await expect.poll(faults).toEqual(['high_stuck_on']);
+  await expect.poll(() => page.getByTestId('plant-fault-high_stuck_off').isChecked()).toBe(false);
+  await page.getByTestId('plant-fault-high_stuck_on').uncheck();
+  await expect.poll(faults).toEqual([]);
   // The I/O map fits the panel: nothing cut off at its right edge.
   const fit = await page.getByTestId('plant-panel').evaluate((panel) => ({
     table: panel.querySelector('[data-testid="plant-io"]')!.getBoundingClientRect().right,

@@ -310,6 +310,13 @@ function Faults({ model, active }: { model: PlantModel; active: readonly string[
             checked={pending?.id === f.id ? pending.on : active.includes(f.id)}
             onChange={(e) => {
               setAsked({ id: f.id, on: e.target.checked, against: key });
+              // A switch is stuck ON or stuck OFF, not both: setting one clears the other.
+              const other = /_stuck_on$/.test(f.id)
+                ? f.id.replace(/_on$/, '_off')
+                : /_stuck_off$/.test(f.id)
+                  ? f.id.replace(/_off$/, '_on')
+                  : undefined;
+              if (e.target.checked && other && active.includes(other)) sim.getState().plantFault(other, false);
               sim.getState().plantFault(f.id, e.target.checked);
             }}
           />{' '}
