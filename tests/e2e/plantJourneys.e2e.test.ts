@@ -1,12 +1,13 @@
 // The machines as a user meets them (issue 26), in real Chromium against the real server: a new
 // project built from scratch against a machine (choose it, declare its I/O, draw a rung, run it
 // fast-forwarded with Step N, rewire a point (the I/O map says what the program has at each
-// address) and undo it), and the drawing's operator buttons
+// address) and undo it, export it as PLCopen XML and import it back with its machine), and the drawing's operator buttons
 // readable in the dark theme. One page for the whole file.
 import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
 import { openApp, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
+import { EditorPage } from './panelsPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -150,5 +151,28 @@ test('a new project against the garage door: choose it, declare its I/O, draw a 
   await expect.poll(docPlant).toBe(undefined);
   await draw.menu('Edit', 'Undo');
   await expect.poll(docPlant).toEqual({ id: 'garage', map: { MotorUp: '%QX1.5' } });
+  expect(errors).toEqual([]);
+});
+
+test('the machine and its rewired point survive File > Export PLCopen XML and Import PLCopen XML…', async () => {
+  // The project of the test before: the garage, MotorUp rewired to %QX1.5.
+  await expect.poll(docPlant).toEqual({ id: 'garage', map: { MotorUp: '%QX1.5' } });
+  const editor = new EditorPage(page);
+  const file = await editor.download(async () => {
+    await draw.menu('File', 'Export PLCopen XML');
+    const anyway = page.getByTestId('export-review').getByRole('button', { name: 'Export anyway' });
+    if (await anyway.isVisible().catch(() => false)) await anyway.click();
+  });
+  expect(file.text).toContain('<point name="MotorUp" address="%QX1.5"/>');
+  await draw.menu('File', 'New project');
+  await page.getByRole('button', { name: 'Discard and start new' }).click();
+  await expect.poll(docPlant).toBe(undefined);
+  await editor.chooseFile('File', 'Import PLCopen XML…', { name: file.name, mimeType: 'application/xml', text: file.text });
+  const report = page.getByTestId('plcopen-report');
+  await expect.poll(() => report.getByTestId('plcopen-extras').textContent()).toContain('Machine: garage.');
+  await report.getByRole('button', { name: 'Open' }).click();
+  await expect.poll(docPlant).toEqual({ id: 'garage', map: { MotorUp: '%QX1.5' } });
+  await sim.tab('Plant');
+  await expect.poll(() => page.getByTestId('plant-address-MotorUp').inputValue()).toBe('%QX1.5');
   expect(errors).toEqual([]);
 });
