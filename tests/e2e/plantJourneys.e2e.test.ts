@@ -1,8 +1,8 @@
 // The machines as a user meets them (issue 26), in real Chromium against the real server: a new
 // project built from scratch against a machine (choose it, declare its I/O, draw a rung, run it
-// fast-forwarded with Step N, rewire a point (the I/O map says what the program has at each
-// address) and undo it, export it as PLCopen XML and import it back with its machine), and the drawing's operator buttons
-// readable in the dark theme. One page for the whole file.
+// fast-forwarded with Step N, rewire a point, the I/O map saying what the program has at each
+// address, undo it; export it as PLCopen XML and import it back with its machine), and the
+// drawing's operator buttons readable in the dark theme. One page for the whole file.
 import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
 import { openApp, useChromium } from './appPage';
