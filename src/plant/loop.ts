@@ -8,6 +8,7 @@
 import type { Value } from '../model/iecTypes';
 import { parseLocation } from '../model/iecTypes';
 import type { PlantConsequence, PlantModel, PlantPoint } from './types';
+import { resolvePlantName } from './values';
 
 /** What the loop needs of a PLC: its output image and its input image, by address. */
 export interface PlcIo {
@@ -70,6 +71,8 @@ export interface PlantSnapshot {
   readonly state: unknown;
   readonly faults: readonly string[];
   readonly operator: Readonly<Record<string, boolean>>;
+  /** Each actuator as the machine was driven in the step that ended here (absent for the initial state). */
+  readonly drive?: Readonly<Record<string, Value>>;
 }
 
 export class PlantLoop {
@@ -211,12 +214,15 @@ export class PlantLoop {
   }
 
   snapshot(): PlantSnapshot {
+    const drive: Record<string, Value> = {};
+    if (this.scan > 0) for (const p of this.actuators) drive[p.name] = this.driveRecord[p.name]!;
     return {
       scan: this.scan,
       timeMs: this.timeMs,
       state: this.state,
       faults: this.faultList,
       operator: this.operatorShown,
+      ...(this.scan > 0 ? { drive } : {}),
     };
   }
 
@@ -273,14 +279,17 @@ export class PlantLoop {
     return this.state;
   }
 
-  /** `level` or `tank.level`: a quantity, or a point (a sensor as sensed, an actuator as driven, an operator control as held). */
+  /**
+   * `level` or `tank.level`: a quantity, or a point (a sensor as sensed, an actuator as driven, an
+   * operator control as held); spelt exactly, `tank.Pump` is the contactor, `tank.pump` the speed.
+   */
   read(name: string): Value {
     const bare = name.toLowerCase().startsWith(`${this.model.id}.`)
       ? name.slice(this.model.id.length + 1)
       : name;
-    const q = this.model.quantities.find((x) => x.name.toLowerCase() === bare.toLowerCase());
-    if (q) return this.model.quantity(this.state, q.name);
-    const p = this.points.find((x) => x.name.toLowerCase() === bare.toLowerCase());
+    const ref = resolvePlantName(this.model, bare);
+    if (ref?.quantity) return this.model.quantity(this.state, ref.quantity.name);
+    const p = ref?.point;
     if (p?.kind === 'operator') return this.operator[p.name] === true;
     if (p?.kind === 'sensor') return this.model.sense(this.state, this.faults)[p.name]!;
     if (p) return { ...this.drive() }[p.name]!;
@@ -293,7 +302,6 @@ export class PlantLoop {
 /** The type `tank.level` (or `level`) reads as: a quantity's, or a point's; undefined when the machine has no such name. */
 export function plantValueType(model: PlantModel, name: string): 'BOOL' | 'INT' | 'REAL' | undefined {
   const bare = name.toLowerCase().startsWith(`${model.id}.`) ? name.slice(model.id.length + 1) : name;
-  const q = model.quantities.find((x) => x.name.toLowerCase() === bare.toLowerCase());
-  if (q) return q.type;
-  return model.points.find((x) => x.name.toLowerCase() === bare.toLowerCase())?.type;
+  const ref = resolvePlantName(model, bare);
+  return ref?.quantity?.type ?? ref?.point?.type;
 }

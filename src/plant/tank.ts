@@ -237,6 +237,24 @@ export const tank: PlantModel<TankState> = {
     return out;
   },
 
+  explain(s: TankState, point: string, faults: ReadonlySet<string>): string | undefined {
+    const level = `the level is ${s.level.toFixed(1)} L`;
+    const sw = (id: string, title: string, at: number) => {
+      if (faults.has(`${id}_stuck_on`)) return `${title} is stuck ON (fault ${id}_stuck_on): it reads ON whatever the level; ${level}`;
+      if (faults.has(`${id}_stuck_off`)) return `${title} is stuck OFF (fault ${id}_stuck_off): it reads OFF whatever the level; ${level}`;
+      return `${title} is ON at ${at} L and above; ${level}, so it is ${s.level >= at ? 'ON' : 'OFF'}`;
+    };
+    switch (point) {
+      case 'LowLevel':
+        return sw('low', 'the low level switch', LOW_SWITCH_L);
+      case 'HighLevel':
+        return sw('high', 'the high level switch', HIGH_SWITCH_L);
+      case 'Level':
+        return `the transmitter gives the level in whole litres; ${level}`;
+    }
+    return undefined;
+  },
+
   quantity(s: TankState, name: string): number | boolean {
     switch (name) {
       case 'level':
