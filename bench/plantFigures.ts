@@ -15,6 +15,9 @@ import { generateSimProgram } from './simProgram';
 import { HistoryRecorder } from '../src/sim/historyRecorder';
 import { buildLayout, findPou } from '../src/sim/layout';
 import type { CompiledProgram } from '../src/engine/plc';
+import type { Value } from '../src/model/iecTypes';
+import { setFlagsFromString } from 'node:v8';
+import { runInNewContext } from 'node:vm';
 
 const BLOCK = 4000;
 const ROUNDS = 12;
@@ -134,4 +137,70 @@ export const describePlantFigures = (f: PlantFigures): string =>
     `  engine alone: ${f.scanUs.toFixed(2)} µs without, ${f.withPlantUs.toFixed(2)} µs with the machine (${f.engineOverheadPct.toFixed(0)} %)`,
   ].join('\n');
 
-if (process.argv[1]?.endsWith('plantFigures.ts')) console.log(describePlantFigures(plantFigures()));
+/** The machine's history: heap per recorded scan and the time to show a recorded scan's machine. */
+export interface PlantHistoryFigures {
+  readonly scans: number;
+  readonly bytesPerScan: number;
+  readonly seekMedianUs: number;
+  readonly seekP99Us: number;
+  readonly seekMaxUs: number;
+}
+
+const HISTORY_SCANS = 100_000;
+
+function collectGarbage(): void {
+  setFlagsFromString('--expose-gc');
+  (runInNewContext('gc') as () => void)();
+}
+
+/**
+ * 100,000 scans of the tank kept in its loop's history, driven by a two-point controller on its own
+ * level (as the exercise's solution drives it), with faults and operator controls changing now and
+ * then; heap measured after a full collection before and after. Then 2,000 recorded scans shown at
+ * random (a seek): the median and the slowest.
+ */
+export function plantHistoryFigures(): PlantHistoryFigures {
+  const image: Record<string, Value> = { '%QX0.0': false, '%QX0.1': false, '%QX0.2': false, '%QX0.3': true };
+  const inputs: Record<string, Value> = {};
+  const io = {
+    outputs: () => image,
+    setInputs: (v: Readonly<Record<string, Value>>) => Object.assign(inputs, v),
+  };
+  collectGarbage();
+  // Typed arrays' contents are outside the JS heap: counted too.
+  const used = () => process.memoryUsage().heapUsed + process.memoryUsage().arrayBuffers;
+  const heap0 = used();
+  const loop = new PlantLoop(tank, {}, HISTORY_SCANS);
+  loop.bind(io);
+  for (let k = 1; k <= HISTORY_SCANS; k++) {
+    const fill = inputs['%IX0.2'] !== true || (image['%QX0.0'] === true && inputs['%IX0.3'] !== true);
+    image['%QX0.0'] = fill;
+    image['%QX0.1'] = fill;
+    image['%QX0.2'] = inputs['%IX0.2'] === true;
+    if (k % 5000 === 0) loop.setFault('inlet_slow', k % 10000 === 0);
+    if (k % 777 === 0) loop.setOperator('Start', k % 1554 === 0);
+    loop.afterScan(k, (k - 1) * CYCLE_MS, CYCLE_MS);
+  }
+  collectGarbage();
+  const bytesPerScan = (used() - heap0) / HISTORY_SCANS;
+  const times: number[] = [];
+  let seed = 12345;
+  for (let i = 0; i < 2000; i++) {
+    seed = (seed * 1103515245 + 12345) % 2147483648;
+    const scan = 1 + (seed % HISTORY_SCANS);
+    const t0 = performance.now();
+    const snap = loop.at(scan);
+    times.push((performance.now() - t0) * 1000);
+    if (snap?.scan !== scan) throw new Error(`scan ${scan} is not kept`);
+  }
+  times.sort((a, b) => a - b);
+  return { scans: HISTORY_SCANS, bytesPerScan, seekMedianUs: times[times.length >> 1]!, seekP99Us: times[Math.floor(times.length * 0.99)]!, seekMaxUs: times[times.length - 1]! };
+}
+
+export const describePlantHistoryFigures = (f: PlantHistoryFigures): string =>
+  `tank history: ${f.bytesPerScan.toFixed(1)} bytes per recorded scan (${((f.bytesPerScan * f.scans) / 1e6).toFixed(1)} MB for ${f.scans.toLocaleString('en-US')} scans); showing a recorded scan's machine: ${f.seekMedianUs.toFixed(1)} µs median, ${f.seekP99Us.toFixed(1)} µs p99, ${f.seekMaxUs.toFixed(1)} µs slowest of 2,000`;
+
+if (process.argv[1]?.endsWith('plantFigures.ts')) {
+  if (!process.argv.includes('--history')) console.log(describePlantFigures(plantFigures()));
+  console.log(describePlantHistoryFigures(plantHistoryFigures()));
+}

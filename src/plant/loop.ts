@@ -9,6 +9,7 @@ import type { Value } from '../model/iecTypes';
 import { parseLocation } from '../model/iecTypes';
 import type { PlantConsequence, PlantModel, PlantPoint } from './types';
 import { resolvePlantName } from './values';
+import { PlantHistory } from './history';
 
 /** What the loop needs of a PLC: its output image and its input image, by address. */
 export interface PlcIo {
@@ -88,8 +89,8 @@ export class PlantLoop {
   private faultList: readonly string[] = [];
   private operatorShown: Readonly<Record<string, boolean>> = {};
   private readonly events: PlantEvent[] = [];
-  /** The machine after each recorded scan, oldest first, at most `keep`. */
-  private readonly history: PlantSnapshot[] = [];
+  /** The machine after each recorded scan (the latest `keep` at least), compact: replayed from keyframes. */
+  private readonly history: PlantHistory;
   private readonly actuators: PlantPoint[];
   private readonly inputs: PlantPoint[];
   /** The points the program declares: actuators to read, sensors and operator controls to write. */
@@ -104,7 +105,7 @@ export class PlantLoop {
   constructor(
     model: PlantModel,
     map: PlantMap = {},
-    private readonly keep = 100_000,
+    keep = 100_000,
   ) {
     this.model = model;
     this.points = mappedPoints(model, map);
@@ -118,6 +119,7 @@ export class PlantLoop {
     for (const p of this.points) if (p.kind === 'operator') this.operator[p.name] = false;
     this.operatorShown = { ...this.operator };
     this.state = model.initial();
+    this.history = new PlantHistory(model, this.points, keep);
   }
 
   /** Back to the machine's initial state at PLC time 0 (a cold restart); faults and operator controls stay. */
@@ -126,7 +128,7 @@ export class PlantLoop {
     this.timeMs = 0;
     this.scan = 0;
     this.events.length = 0;
-    this.history.length = 0;
+    this.history.clear();
   }
 
   /**
@@ -163,14 +165,16 @@ export class PlantLoop {
     const target = scanTimeMs + cycleMs;
     const dt = Math.max(0, target - this.timeMs);
     const before = this.state;
-    this.state = this.model.step(before, this.drive(), dt, this.faults);
+    const drive = this.drive();
+    this.state = this.model.step(before, drive, dt, this.faults);
+    // What the step was given, for the history to replay it (the model is deterministic).
+    this.history.push(scan, before, this.timeMs, drive, this.faults, target);
     this.timeMs = target;
     this.scan = scan;
     const consequences = this.model.check(before, this.state);
     const found =
       consequences.length === 0 ? NONE : consequences.map((c) => this.locate(c, scan, scanTimeMs));
     for (const e of found) this.events.push(e);
-    this.record();
     this.present();
     return found;
   }
@@ -188,7 +192,11 @@ export class PlantLoop {
     const d = this.driveRecord;
     for (const p of this.inputs) if (p.kind === 'operator') d[p.name] = this.operator[p.name] === true;
     for (const p of this.unwired) d[p.name] = p.type === 'BOOL' ? false : 0;
-    for (const w of this.outputs) d[w.point.name] = w.read();
+    // BOOL points TRUE or FALSE exactly, INT points numbers: what the history records and replays.
+    for (const w of this.outputs) {
+      const v = w.read();
+      d[w.point.name] = w.point.type === 'BOOL' ? v === true : Number(v);
+    }
     return d;
   }
 
@@ -204,13 +212,6 @@ export class PlantLoop {
       // The image already holding the value is the common case: no write, no conversion.
       if (w.read() !== v) w.write(v);
     }
-  }
-
-  private record(): void {
-    if (this.keep <= 0) return;
-    // Dropped in chunks: shifting a 100,000-entry array every scan would cost more than the machine.
-    if (this.history.length >= this.keep + 1024) this.history.splice(0, this.history.length - this.keep);
-    this.history.push(this.snapshot());
   }
 
   snapshot(): PlantSnapshot {
@@ -229,16 +230,7 @@ export class PlantLoop {
   /** The machine as it was after scan `scan` (the initial state for 0), if still kept. */
   at(scan: number): PlantSnapshot | undefined {
     if (scan === 0) return { scan: 0, timeMs: 0, state: this.model.initial(), faults: [], operator: {} };
-    const first = this.history[0];
-    if (
-      !first ||
-      scan < first.scan ||
-      (this.history.length > this.keep && scan < this.history[this.history.length - this.keep]!.scan)
-    )
-      return undefined;
-    // Scans are recorded in order, one each, unless a reset restarted the count.
-    const guess = this.history[scan - first.scan];
-    return guess?.scan === scan ? guess : this.history.find((h) => h.scan === scan);
+    return this.history.at(scan);
   }
 
   setOperator(name: string, value: boolean): void {
