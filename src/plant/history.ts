@@ -69,16 +69,34 @@ export class PlantHistory {
     return this.total;
   }
 
+  /** A scan's record: `words` words of bits and one number per INT actuator, filled by the loop (`bitOf`, `intOf`, `faultBitOf`). */
+  newRecord(): { readonly bits: Uint32Array; readonly ints: Float64Array } {
+    return { bits: new Uint32Array(this.words), ints: new Float64Array(this.intDrive.length) };
+  }
+
+  /** The bit of a BOOL actuator or operator control in a record, -1 for another point. */
+  bitOf(name: string): number {
+    return this.boolDrive.find((s) => s.name === name)?.bit ?? -1;
+  }
+
+  /** The number of an INT actuator in a record, -1 for another point. */
+  intOf(name: string): number {
+    return this.intDrive.indexOf(name);
+  }
+
+  faultBitOf(id: string): number {
+    return this.faultBits.find((s) => s.name === id)?.bit ?? -1;
+  }
+
   /**
-   * Records a step: `before` is the state and PLC time it started from, `drive`, `faults` what it
-   * was given (BOOL values TRUE or FALSE exactly), `timeMs` the time it reached after scan `scan`.
+   * Records a step: `before` is the state and PLC time it started from, `record` what it was given
+   * (drive and faults, filled as `newRecord` says), `timeMs` the time it reached after scan `scan`.
    */
   push(
     scan: number,
     before: unknown,
     beforeMs: number,
-    drive: Readonly<Record<string, Value>>,
-    faults: ReadonlySet<string>,
+    record: { readonly bits: Uint32Array; readonly ints: Float64Array },
     timeMs: number,
   ): void {
     if (this.keep <= 0) return;
@@ -97,12 +115,10 @@ export class PlantHistory {
     }
     const i = c.count;
     c.times[i] = timeMs;
-    const w = i * this.words;
-    for (const s of this.boolDrive) if (drive[s.name] === true) c.bits[w + (s.bit >>> 5)]! |= 1 << (s.bit & 31);
-    if (faults.size > 0)
-      for (const s of this.faultBits) if (faults.has(s.name)) c.bits[w + (s.bit >>> 5)]! |= 1 << (s.bit & 31);
-    const n = this.intDrive.length;
-    for (let k = 0; k < n; k++) c.ints[i * n + k] = drive[this.intDrive[k]!] as number;
+    const words = this.words;
+    if (words === 1) c.bits[i] = record.bits[0]!;
+    else c.bits.set(record.bits, i * words);
+    if (record.ints.length > 0) c.ints.set(record.ints, i * record.ints.length);
     c.count++;
     this.total++;
     // The oldest chunk goes, whole, once the others hold `keep` scans.

@@ -19,12 +19,27 @@ export interface PlcIo {
   ioPoint?(location: string): { read(): Value; write(value: Value): void } | undefined;
 }
 
-/** A machine point wired to the PLC: how to read (actuators) or write (sensors, operator controls) it. */
-interface Wire {
-  readonly point: PlantPoint;
+/** One point of the PLC's I/O image, read and written every scan. */
+interface ImagePoint {
   read(): Value;
   write(value: Value): void;
 }
+
+/**
+ * A machine point wired to the PLC, resolved once per program (bind): its image point, and what
+ * the scan needs of the point without looking it up (its name, BOOL or not, operator control or not).
+ */
+interface Wire {
+  readonly point: PlantPoint;
+  readonly name: string;
+  readonly bool: boolean;
+  readonly operator: boolean;
+  readonly io: ImagePoint;
+  /** Where an actuator's value goes in the step's history record: a bit (BOOL) or a number (INT). */
+  readonly bit: number;
+  readonly int: number;
+}
+const NO_WRITE = (): void => {};
 
 /** A consequence where it happened: the scan after which the machine was seen to suffer it. */
 export interface PlantEvent extends PlantConsequence {
@@ -98,9 +113,13 @@ export class PlantLoop {
   /** Actuators the program does not drive: always off. */
   private unwired: PlantPoint[] = [];
   private declared: Wire[] = [];
+  /** Some declared point is a sensor: the model is asked what it senses. */
+  private sensing = false;
   private bound: PlcIo | undefined;
   /** The drive record handed to step(), refilled every scan. */
   private readonly driveRecord: Record<string, Value> = {};
+  /** The same as the history records it (src/plant/history.ts), faults included, kept up to date alongside. */
+  private readonly record: { readonly bits: Uint32Array; readonly ints: Float64Array };
 
   constructor(
     model: PlantModel,
@@ -120,6 +139,46 @@ export class PlantLoop {
     this.operatorShown = { ...this.operator };
     this.state = model.initial();
     this.history = new PlantHistory(model, this.points, keep);
+    this.record = this.history.newRecord();
+    this.driveConstants();
+  }
+
+  private wire(point: PlantPoint, io: ImagePoint): Wire {
+    return {
+      point,
+      name: point.name,
+      bool: point.type === 'BOOL',
+      operator: point.kind === 'operator',
+      io,
+      bit: this.history.bitOf(point.name),
+      int: this.history.intOf(point.name),
+    };
+  }
+
+  private setBit(bit: number, on: boolean): void {
+    if (bit < 0) return;
+    const bits = this.record.bits;
+    if (on) bits[bit >>> 5]! |= 1 << (bit & 31);
+    else bits[bit >>> 5]! &= ~(1 << (bit & 31));
+  }
+
+  /**
+   * The drive record's entries that do not change from scan to scan: operator controls (set again
+   * when one changes) and actuators no variable drives (off). The scan refills only the wired actuators.
+   */
+  private driveConstants(): void {
+    const d = this.driveRecord;
+    for (const p of this.inputs)
+      if (p.kind === 'operator') {
+        d[p.name] = this.operator[p.name] === true;
+        this.setBit(this.history.bitOf(p.name), this.operator[p.name] === true);
+      }
+    for (const p of this.unwired) {
+      d[p.name] = p.type === 'BOOL' ? false : 0;
+      this.setBit(this.history.bitOf(p.name), false);
+      const i = this.history.intOf(p.name);
+      if (i >= 0) this.record.ints[i] = 0;
+    }
   }
 
   /** Back to the machine's initial state at PLC time 0 (a cold restart); faults and operator controls stay. */
@@ -139,24 +198,26 @@ export class PlantLoop {
     this.bound = plc;
     this.outputs = this.actuators.flatMap((p) => {
       const io = plc.ioPoint?.(p.address);
-      if (io) return [{ point: p, read: () => io.read(), write: () => {} }];
+      if (io) return [this.wire(p, io)];
       if (plc.ioPoint) return [];
       // A PLC without resolved points: through its output record.
       const key = Object.keys(plc.outputs()).find((k) => addressKey(k) === addressKey(p.address));
-      return key === undefined ? [] : [{ point: p, read: () => plc.outputs()[key]!, write: () => {} }];
+      return key === undefined ? [] : [this.wire(p, { read: () => plc.outputs()[key]!, write: NO_WRITE })];
     });
     this.unwired = this.actuators.filter((p) => !this.outputs.some((w) => w.point === p));
     this.declared = this.inputs.flatMap((p) => {
       const io = plc.ioPoint?.(p.address);
-      if (io) return [{ point: p, read: () => io.read(), write: (v: Value) => io.write(v) }];
+      if (io) return [this.wire(p, io)];
       if (plc.ioPoint) return [];
       try {
         plc.setInputs({ [p.address]: p.type === 'BOOL' ? false : 0 });
       } catch {
         return [];
       }
-      return [{ point: p, read: () => false, write: (v: Value) => plc.setInputs({ [p.address]: v }) }];
+      return [this.wire(p, { read: () => false, write: (v: Value) => plc.setInputs({ [p.address]: v }) })];
     });
+    this.sensing = this.declared.some((w) => !w.operator);
+    this.driveConstants();
     this.present();
   }
 
@@ -168,7 +229,7 @@ export class PlantLoop {
     const drive = this.drive();
     this.state = this.model.step(before, drive, dt, this.faults);
     // What the step was given, for the history to replay it (the model is deterministic).
-    this.history.push(scan, before, this.timeMs, drive, this.faults, target);
+    this.history.push(scan, before, this.timeMs, this.record, target);
     this.timeMs = target;
     this.scan = scan;
     const consequences = this.model.check(before, this.state);
@@ -188,14 +249,25 @@ export class PlantLoop {
     };
   }
 
+  /** The drive record for a step: the wired actuators read from the output image (the rest is kept up to date). */
   private drive(): Record<string, Value> {
     const d = this.driveRecord;
-    for (const p of this.inputs) if (p.kind === 'operator') d[p.name] = this.operator[p.name] === true;
-    for (const p of this.unwired) d[p.name] = p.type === 'BOOL' ? false : 0;
+    const outputs = this.outputs;
     // BOOL points TRUE or FALSE exactly, INT points numbers: what the history records and replays.
-    for (const w of this.outputs) {
-      const v = w.read();
-      d[w.point.name] = w.point.type === 'BOOL' ? v === true : Number(v);
+    const bits = this.record.bits;
+    for (let i = 0; i < outputs.length; i++) {
+      const w = outputs[i]!;
+      const v = w.io.read();
+      if (w.bool) {
+        const on = v === true;
+        d[w.name] = on;
+        if (on) bits[w.bit >>> 5]! |= 1 << (w.bit & 31);
+        else bits[w.bit >>> 5]! &= ~(1 << (w.bit & 31));
+      } else {
+        const n = Number(v);
+        d[w.name] = n;
+        this.record.ints[w.int] = n;
+      }
     }
     return d;
   }
@@ -205,12 +277,14 @@ export class PlantLoop {
    * every scan: the machine drives those inputs as wires would (a forced input keeps its force).
    */
   present(): void {
-    if (!this.bound || this.declared.length === 0) return;
-    const sensed = this.model.sense(this.state, this.faults);
-    for (const w of this.declared) {
-      const v = w.point.kind === 'operator' ? this.operator[w.point.name] === true : sensed[w.point.name]!;
+    const declared = this.declared;
+    if (!this.bound || declared.length === 0) return;
+    const sensed = this.sensing ? this.model.sense(this.state, this.faults) : undefined;
+    for (let i = 0; i < declared.length; i++) {
+      const w = declared[i]!;
+      const v = w.operator ? this.operator[w.name] === true : sensed![w.name]!;
       // The image already holding the value is the common case: no write, no conversion.
-      if (w.read() !== v) w.write(v);
+      if (w.io.read() !== v) w.io.write(v);
     }
   }
 
@@ -243,6 +317,8 @@ export class PlantLoop {
           .join(', ')}`,
       );
     this.operator[p.name] = value;
+    this.driveRecord[p.name] = value;
+    this.setBit(this.history.bitOf(p.name), value);
     this.operatorShown = { ...this.operator };
     this.present();
   }
@@ -255,6 +331,7 @@ export class PlantLoop {
       );
     if (active) this.faults.add(f.id);
     else this.faults.delete(f.id);
+    this.setBit(this.history.faultBitOf(f.id), active);
     this.faultList = [...this.faults].sort();
     this.present();
   }

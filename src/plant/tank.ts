@@ -47,6 +47,7 @@ const towards = (from: number, target: number, dtMs: number, travelMs: number): 
   return target > from ? Math.min(target, from + delta) : Math.max(target, from - delta);
 };
 const on = (v: Value | undefined): boolean => v === true;
+const NOTHING: readonly PlantConsequence[] = [];
 
 export const tank: PlantModel<TankState> = {
   id: 'tank',
@@ -159,16 +160,17 @@ export const tank: PlantModel<TankState> = {
   }),
 
   step(s: TankState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>): TankState {
-    const pump = towards(s.pump, on(drive.Pump) && !faults.has('pump_dead') ? 1 : 0, dtMs, PUMP_RAMP_MS);
+    const faulty = faults.size > 0;
+    const pump = towards(s.pump, on(drive.Pump) && !(faulty && faults.has('pump_dead')) ? 1 : 0, dtMs, PUMP_RAMP_MS);
     const inlet = towards(
       s.inlet,
       on(drive.InletValve) ? 1 : 0,
       dtMs,
-      faults.has('inlet_slow') ? SLOW_VALVE_TRAVEL_MS : VALVE_TRAVEL_MS,
+      faulty && faults.has('inlet_slow') ? SLOW_VALVE_TRAVEL_MS : VALVE_TRAVEL_MS,
     );
     const drain = towards(
       s.drain,
-      on(drive.DrainValve) && !faults.has('drain_stuck') ? 1 : 0,
+      on(drive.DrainValve) && !(faulty && faults.has('drain_stuck')) ? 1 : 0,
       dtMs,
       VALVE_TRAVEL_MS,
     );
@@ -207,16 +209,21 @@ export const tank: PlantModel<TankState> = {
   },
 
   sense(s: TankState, faults: ReadonlySet<string>): Record<string, Value> {
-    const sw = (id: string, real: boolean) =>
-      faults.has(`${id}_stuck_on`) ? true : faults.has(`${id}_stuck_off`) ? false : real;
+    const low = s.level >= LOW_SWITCH_L;
+    const high = s.level >= HIGH_SWITCH_L;
+    // No fault set (the usual case): the switches as the water has them.
+    if (faults.size === 0) return { LowLevel: low, HighLevel: high, Level: Math.round(s.level) };
     return {
-      LowLevel: sw('low', s.level >= LOW_SWITCH_L),
-      HighLevel: sw('high', s.level >= HIGH_SWITCH_L),
+      LowLevel: faults.has('low_stuck_on') ? true : faults.has('low_stuck_off') ? false : low,
+      HighLevel: faults.has('high_stuck_on') ? true : faults.has('high_stuck_off') ? false : high,
       Level: Math.round(s.level),
     };
   },
 
   check(before: TankState, after: TankState): readonly PlantConsequence[] {
+    // Nothing happened (every scan but a handful): no list made.
+    if (after.overflows === before.overflows && after.dryRuns === before.dryRuns && after.deadheads === before.deadheads)
+      return NOTHING;
     const out: PlantConsequence[] = [];
     if (after.overflows > before.overflows)
       out.push({ id: 'overflow', severity: 'error', message: 'the tank overflowed', counter: 'overflows' });

@@ -85,6 +85,23 @@ describe('the machine history', () => {
     for (const s of kept.slice(0, 300)) expect(loop.at(s.scan)!.state).toEqual(s.state);
   });
 
+  test('a program that no longer drives an actuator (an online change) leaves it off, live and in the history', () => {
+    const loop = new PlantLoop(tank);
+    loop.bind({ outputs: () => ({ '%QX0.0': true, '%QX0.1': true }), setInputs: () => {} });
+    loop.setOperator('Stop', true);
+    for (let k = 1; k <= 10; k++) loop.afterScan(k, (k - 1) * 100, 100);
+    expect(loop.read('tank.Pump')).toBe(true);
+    loop.bind({ outputs: () => ({ '%QX0.1': true }), setInputs: () => {} });
+    for (let k = 11; k <= 20; k++) loop.afterScan(k, (k - 1) * 100, 100);
+    expect(loop.read('tank.Pump')).toBe(false);
+    expect(loop.at(10)!.drive).toEqual({ Pump: true, InletValve: true, DrainValve: false, RunLamp: false });
+    expect(loop.at(11)!.drive).toEqual({ Pump: false, InletValve: true, DrainValve: false, RunLamp: false });
+    expect(loop.at(11)!.operator).toEqual({ Start: false, Stop: true });
+    // The pump ran down after the change: the history replays it as it happened.
+    expect((loop.at(20)!.state as TankState).pump).toBe((loop.currentState() as TankState).pump);
+    expect((loop.at(20)!.state as TankState).pump).toBe(0);
+  });
+
   test('a cold restart starts the history over', () => {
     const { loop } = run(tank, 300, 100_000);
     loop.reset();
@@ -101,7 +118,9 @@ describe('the machine history', () => {
     const step = (scan: number, pump: boolean) => {
       const drive = { Pump: pump, InletValve: pump, DrainValve: false, RunLamp: false, Start: false, Stop: false };
       const next = tank.step(s, drive, 100, new Set());
-      h.push(scan, s, t, drive, new Set(), t + 100);
+      const record = h.newRecord();
+      for (const name of ['Pump', 'InletValve']) if (pump) record.bits[0]! |= 1 << h.bitOf(name);
+      h.push(scan, s, t, record, t + 100);
       t += 100;
       s = next;
       states.set(scan, s);
