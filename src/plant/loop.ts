@@ -209,12 +209,18 @@ export class PlantLoop {
       const io = plc.ioPoint?.(p.address);
       if (io) return [this.wire(p, io)];
       if (plc.ioPoint) return [];
+      // Without resolved points the input is read back as last written (a sensor turning OFF is written too).
+      let last: Value = p.type === 'BOOL' ? false : 0;
       try {
-        plc.setInputs({ [p.address]: p.type === 'BOOL' ? false : 0 });
+        plc.setInputs({ [p.address]: last });
       } catch {
         return [];
       }
-      return [this.wire(p, { read: () => false, write: (v: Value) => plc.setInputs({ [p.address]: v }) })];
+      const write = (v: Value) => {
+        plc.setInputs({ [p.address]: v });
+        last = v;
+      };
+      return [this.wire(p, { read: () => last, write })];
     });
     this.sensing = this.declared.some((w) => !w.operator);
     this.driveConstants();
