@@ -10,6 +10,9 @@ import { findPlantName, formatPlantValue, plantNames, plantSpelling, plantValue 
 import { SimHarness } from '../sim/harness';
 import { PLANTS } from '../../src/plant/machines';
 import type { TrendSamples } from '../../src/sim/protocol';
+import { createSimStore } from '../../src/store/simStore';
+import { loopback } from '../sim/loopback';
+import { plantWatchText } from '../../src/editor/plant/plantWatch';
 
 const lastOf = <T>(xs: T[]): T => xs[xs.length - 1]!;
 
@@ -148,6 +151,23 @@ describe('the machine in the trend and "Why?" of the simulation session', () => 
     expect(start).toContain('Start (%IX0.0) is written by the machine tank: Start, start push button (NO), an operator button held when scan 1 read it.');
   });
 
+  test('"Why?" on a contact of a sensor (the canvas menu) says the machine wrote it too', () => {
+    const project = tankReference();
+    const pou = project.pous.find((p) => p.kind === 'PROGRAM')!;
+    let at: { network: number; element: number } | undefined;
+    pou.networks.forEach((n, network) =>
+      n.elements.forEach((el, element) => {
+        if (!at && el.kind === 'contact' && el.variable === 'LowLevel') at = { network, element };
+      }),
+    );
+    expect(at).toBeDefined();
+    const h = run(50);
+    h.send({ type: 'explain', id: 1, scan: 50, target: { kind: 'element', ...at! } });
+    const text = lastOf(h.of('explanation')).explanation.lines.join('\n');
+    expect(text).toContain('LowLevel (%IX0.2) is written by the machine tank: LowLevel, low level float switch, ON at 200 L and above.');
+    expect(text).toContain('The machine after scan 49: level');
+  });
+
   test('"Why?" on a machine name explains it from the recorded machine', () => {
     const h = run(100);
     const snap = view(h, 60).plant!;
@@ -158,5 +178,37 @@ describe('the machine in the trend and "Why?" of the simulation session', () => 
     const hl = why(h, 60, 'tank.HighLevel');
     expect(hl.title).toBe('tank.HighLevel is FALSE after scan 60');
     expect(hl.lines.join('\n')).toContain('The high level switch is ON at 800 L and above');
+  });
+});
+
+describe('the machine in the simulation store (watch and trend lists)', () => {
+  test('tank.Pump and tank.pump are two names: both watched and trended; values live and at a recorded scan', () => {
+    const { transport, scheduler } = loopback();
+    const store = createSimStore(transport);
+    const s = () => store.getState();
+    s().setPlant({ id: 'tank' });
+    s().plantOperator('Start', true);
+    s().step(tankReference(), 40);
+    scheduler.advance(1000);
+    expect(s().plant?.now.scan).toBe(40);
+    for (const n of ['tank.Pump', 'tank.pump', 'tank.level', 'tank.Pump']) s().addWatch(n);
+    expect(s().watch).toEqual(['tank.Pump', 'tank.pump', 'tank.level']);
+    s().toggleTrend('tank.Pump');
+    s().toggleTrend('tank.pump');
+    expect(s().trendNames).toEqual(['tank.Pump', 'tank.pump']);
+    s().toggleTrend('tank.pump');
+    expect(s().trendNames).toEqual(['tank.Pump']);
+    expect(plantWatchText(s(), 'tank.Pump')).toBe('TRUE');
+    // Spelt in lower case, the pump's speed in percent (ramping up).
+    expect(plantWatchText(s(), 'tank.pump')).toBe(`${((s().plant!.now.state as TankState).pump * 100).toFixed(1)} %`);
+    expect((s().plant!.now.state as TankState).pump).toBeGreaterThan(0);
+    const live = plantWatchText(s(), 'tank.level');
+    expect(live).toBe(`${(s().plant!.now.state as TankState).level.toFixed(1)} L`);
+    s().seekHistory(3);
+    scheduler.advance(10);
+    expect(s().historyScan).toBe(3);
+    expect(plantWatchText(s(), 'tank.level')).toBe(`${(s().plantAtScan!.state as TankState).level.toFixed(1)} L`);
+    expect(plantWatchText(s(), 'tank.level')).not.toBe(live);
+    expect(plantWatchText(s(), 'tank.nothing')).toBeUndefined();
   });
 });
