@@ -34,6 +34,8 @@ interface Slot {
 
 export class PlantHistory {
   private chunks: Chunk[] = [];
+  /** The arrays of the last chunk dropped, used again for the next one (no allocation in the steady state). */
+  private spare: Pick<Chunk, 'times' | 'bits' | 'ints'> | undefined;
   private total = 0;
   /** BOOL actuators and operator controls (bits), then faults (bits); INT actuators (numbers). */
   private readonly boolDrive: Slot[] = [];
@@ -102,15 +104,14 @@ export class PlantHistory {
     if (this.keep <= 0) return;
     let c = this.chunks[this.chunks.length - 1];
     if (!c || c.count === this.chunk || c.firstScan + c.count !== scan) {
-      c = {
-        firstScan: scan,
-        state: before,
-        timeMs: beforeMs,
-        count: 0,
+      // Every slot of the arrays is written before it is read: a dropped chunk's serve as they are.
+      const arrays = this.spare ?? {
         times: new Float64Array(this.chunk),
         bits: new Uint32Array(this.chunk * this.words),
         ints: new Float64Array(this.chunk * this.intDrive.length),
       };
+      this.spare = undefined;
+      c = { firstScan: scan, state: before, timeMs: beforeMs, count: 0, times: arrays.times, bits: arrays.bits, ints: arrays.ints };
       this.chunks.push(c);
     }
     const i = c.count;
@@ -123,8 +124,9 @@ export class PlantHistory {
     this.total++;
     // The oldest chunk goes, whole, once the others hold `keep` scans.
     while (this.total - this.chunks[0]!.count >= this.keep) {
-      this.total -= this.chunks[0]!.count;
-      this.chunks.shift();
+      const dropped = this.chunks.shift()!;
+      this.total -= dropped.count;
+      if (dropped.times.length === this.chunk) this.spare = dropped;
     }
   }
 

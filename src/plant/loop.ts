@@ -35,8 +35,13 @@ interface Wire {
   readonly bool: boolean;
   readonly operator: boolean;
   readonly io: ImagePoint;
-  /** Where an actuator's value goes in the step's history record: a bit (BOOL) or a number (INT). */
+  /**
+   * Where the point's value is in the step's history record (the loop's own copy of the drive): a
+   * BOOL actuator's or an operator control's bit (its word and mask), an INT actuator's number.
+   */
   readonly bit: number;
+  readonly word: number;
+  readonly mask: number;
   readonly int: number;
 }
 const NO_WRITE = (): void => {};
@@ -110,8 +115,6 @@ export class PlantLoop {
   private readonly inputs: PlantPoint[];
   /** The points the program declares: actuators to read, sensors and operator controls to write. */
   private outputs: Wire[] = [];
-  /** Actuators the program does not drive: always off. */
-  private unwired: PlantPoint[] = [];
   private declared: Wire[] = [];
   /** Some declared point is a sensor: the model is asked what it senses. */
   private sensing = false;
@@ -133,7 +136,6 @@ export class PlantLoop {
       if (problem) throw new Error(`${model.id}: ${problem}`);
     }
     this.actuators = this.points.filter((p) => p.kind === 'actuator');
-    this.unwired = this.actuators;
     this.inputs = this.points.filter((p) => p.kind !== 'actuator');
     for (const p of this.points) if (p.kind === 'operator') this.operator[p.name] = false;
     this.operatorShown = { ...this.operator };
@@ -144,13 +146,16 @@ export class PlantLoop {
   }
 
   private wire(point: PlantPoint, io: ImagePoint): Wire {
+    const bit = this.history.bitOf(point.name);
     return {
       point,
       name: point.name,
       bool: point.type === 'BOOL',
       operator: point.kind === 'operator',
       io,
-      bit: this.history.bitOf(point.name),
+      bit,
+      word: bit < 0 ? 0 : bit >>> 5,
+      mask: bit < 0 ? 0 : 1 << (bit & 31),
       int: this.history.intOf(point.name),
     };
   }
@@ -163,8 +168,8 @@ export class PlantLoop {
   }
 
   /**
-   * The drive record's entries that do not change from scan to scan: operator controls (set again
-   * when one changes) and actuators no variable drives (off). The scan refills only the wired actuators.
+   * The drive record afresh: operator controls as held (set again when one changes) and every
+   * actuator off; the scan then writes the wired actuators' changes (drive()).
    */
   private driveConstants(): void {
     const d = this.driveRecord;
@@ -173,7 +178,8 @@ export class PlantLoop {
         d[p.name] = this.operator[p.name] === true;
         this.setBit(this.history.bitOf(p.name), this.operator[p.name] === true);
       }
-    for (const p of this.unwired) {
+    // Every actuator off, until a wired one reads otherwise (the scan writes only changes).
+    for (const p of this.actuators) {
       d[p.name] = p.type === 'BOOL' ? false : 0;
       this.setBit(this.history.bitOf(p.name), false);
       const i = this.history.intOf(p.name);
@@ -204,7 +210,6 @@ export class PlantLoop {
       const key = Object.keys(plc.outputs()).find((k) => addressKey(k) === addressKey(p.address));
       return key === undefined ? [] : [this.wire(p, { read: () => plc.outputs()[key]!, write: NO_WRITE })];
     });
-    this.unwired = this.actuators.filter((p) => !this.outputs.some((w) => w.point === p));
     this.declared = this.inputs.flatMap((p) => {
       const io = plc.ioPoint?.(p.address);
       if (io) return [this.wire(p, io)];
@@ -224,6 +229,8 @@ export class PlantLoop {
     });
     this.sensing = this.declared.some((w) => !w.operator);
     this.driveConstants();
+    // The wired actuators as the output image has them now (a frame before the next scan shows them).
+    this.drive();
     this.present();
   }
 
@@ -259,20 +266,26 @@ export class PlantLoop {
   private drive(): Record<string, Value> {
     const d = this.driveRecord;
     const outputs = this.outputs;
-    // BOOL points TRUE or FALSE exactly, INT points numbers: what the history records and replays.
     const bits = this.record.bits;
+    const ints = this.record.ints;
+    // BOOL points TRUE or FALSE exactly, INT points numbers: what the history records and replays.
+    // The record holds the last values: only a change is written by name (outputs change seldom).
     for (let i = 0; i < outputs.length; i++) {
       const w = outputs[i]!;
       const v = w.io.read();
       if (w.bool) {
         const on = v === true;
-        d[w.name] = on;
-        if (on) bits[w.bit >>> 5]! |= 1 << (w.bit & 31);
-        else bits[w.bit >>> 5]! &= ~(1 << (w.bit & 31));
+        const word = bits[w.word]!;
+        if (on !== ((word & w.mask) !== 0)) {
+          bits[w.word] = on ? word | w.mask : word & ~w.mask;
+          d[w.name] = on;
+        }
       } else {
         const n = Number(v);
-        d[w.name] = n;
-        this.record.ints[w.int] = n;
+        if (!Object.is(n, ints[w.int])) {
+          ints[w.int] = n;
+          d[w.name] = n;
+        }
       }
     }
     return d;
@@ -286,9 +299,11 @@ export class PlantLoop {
     const declared = this.declared;
     if (!this.bound || declared.length === 0) return;
     const sensed = this.sensing ? this.model.sense(this.state, this.faults) : undefined;
+    const bits = this.record.bits;
     for (let i = 0; i < declared.length; i++) {
       const w = declared[i]!;
-      const v = w.operator ? this.operator[w.name] === true : sensed![w.name]!;
+      // An operator control as held: its bit in the record (setOperator keeps it).
+      const v = w.operator ? (bits[w.word]! & w.mask) !== 0 : sensed![w.name]!;
       // The image already holding the value is the common case: no write, no conversion.
       if (w.io.read() !== v) w.io.write(v);
     }

@@ -73,16 +73,24 @@ describe('the machine history', () => {
     }
   });
 
-  test('it keeps at least the latest `keep` scans, dropping whole keyframe chunks', () => {
+  test('it keeps at least the latest `keep` scans, dropping whole keyframe chunks (their arrays used again)', () => {
     const keep = 600;
-    const { loop, live } = run(tank, 2000, keep);
+    const scans = 12 * PLANT_HISTORY_CHUNK + 31;
+    const { loop, live } = run(tank, scans, keep);
     const kept = live.filter((s) => loop.at(s.scan) !== undefined);
     expect(kept.length).toBeGreaterThanOrEqual(keep);
     expect(kept.length).toBeLessThan(keep + PLANT_HISTORY_CHUNK);
-    // The kept ones are the latest, each exact.
-    expect(kept.at(-1)!.scan).toBe(2000);
-    expect(kept[0]!.scan).toBe(2000 - kept.length + 1);
-    for (const s of kept.slice(0, 300)) expect(loop.at(s.scan)!.state).toEqual(s.state);
+    // The kept ones are the latest, one run of scans, each exact; the older ones are gone.
+    expect(kept.at(-1)!.scan).toBe(scans);
+    expect(kept[0]!.scan).toBe(scans - kept.length + 1);
+    for (const s of kept) {
+      const seen = loop.at(s.scan)!;
+      expect(seen.scan).toBe(s.scan);
+      expect(seen.state).toEqual(s.state);
+      expect(seen.drive).toEqual(s.drive);
+    }
+    expect(loop.at(kept[0]!.scan - 1)).toBeUndefined();
+    expect(loop.at(1)).toBeUndefined();
   });
 
   test('a program that no longer drives an actuator (an online change) leaves it off, live and in the history', () => {
