@@ -136,3 +136,18 @@ test('a wrong program (no high limit on the heater) spoils the first batch: a lo
     .toMatch(/^mixer\.temperature80\.\d °C$/);
   expect(errors).toEqual([]);
 });
+
+test('the drawing fits the panel: wider than the panel, it is scaled down, never cut off, and its buttons stay on it', async () => {
+  const box = async (sel: string) => (await page.locator(sel).first().boundingBox())!;
+  const panel = await page.getByTestId('plant-panel').evaluate((e) => ({ x: e.getBoundingClientRect().x, width: e.clientWidth }));
+  const drawing = await box('.rs-plant-drawing');
+  const canvas = await box('.rs-plant-drawing canvas');
+  // The mixer is drawn 340 px wide, more than the right panel has inside at this window size.
+  expect(panel.width).toBeLessThan(340);
+  expect(Number(await page.locator('.rs-plant-drawing').getAttribute('data-scale'))).toBeLessThan(1);
+  expect(drawing.x + drawing.width).toBeLessThanOrEqual(panel.x + panel.width + 0.5);
+  expect(canvas.width).toBeLessThanOrEqual(drawing.width);
+  const start = await page.getByTestId('plant-op-Start').boundingBox();
+  expect(start!.x + start!.width).toBeLessThanOrEqual(drawing.x + drawing.width);
+  expect(start!.y + start!.height).toBeLessThanOrEqual(drawing.y + drawing.height);
+});
