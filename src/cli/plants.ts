@@ -7,16 +7,20 @@ function describe(m: PlantModel, withTask: boolean): string {
   const out = [`${m.id}: ${m.title}`];
   if (withTask) out.push('', ...m.task.split('\n').map((l) => `  ${l}`), '');
   out.push('  I/O:');
+  // Columns as wide as the longest name (and at least as wide as the tank's), a space apart.
+  const nameWidth = Math.max(11, ...m.points.map((p) => p.name.length)) + 1;
+  const quantityWidth = Math.max(19, ...m.quantities.map((q) => m.id.length + 1 + q.name.length)) + 1;
   for (const p of m.points)
     out.push(
-      `    ${p.address.padEnd(8)}${p.name.padEnd(12)}${p.type.padEnd(6)}${(p.kind + (p.control ? ` (${p.control})` : '')).padEnd(19)}${p.comment}`,
+      `    ${p.address.padEnd(8)}${p.name.padEnd(nameWidth)}${p.type.padEnd(6)}${(p.kind + (p.control ? ` (${p.control})` : '')).padEnd(19)}${p.comment}`,
     );
   out.push('  Faults:');
-  for (const f of m.faults) out.push(`    ${f.id.padEnd(20)}${f.title}`);
+  const faultWidth = Math.max(19, ...m.faults.map((f) => f.id.length)) + 1;
+  for (const f of m.faults) out.push(`    ${f.id.padEnd(faultWidth)}${f.title}`);
   out.push('  Quantities:');
   for (const q of m.quantities)
     out.push(
-      `    ${`${m.id}.${q.name}`.padEnd(20)}${q.type.padEnd(6)}${(q.unit ?? '').padEnd(5)}${q.comment}`,
+      `    ${`${m.id}.${q.name}`.padEnd(quantityWidth)}${q.type.padEnd(6)}${(q.unit ?? '').padEnd(5)}${q.comment}`,
     );
   return out.join('\n');
 }

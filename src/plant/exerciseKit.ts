@@ -14,8 +14,11 @@ export function plantVariables(model: PlantModel, map: PlantMap = {}): Variable[
 
 /** The task as the project's description: the text, then the I/O table. */
 export function taskText(model: PlantModel, map: PlantMap = {}): string {
-  const rows = mappedPoints(model, map).map(
-    (p) => `${p.address.padEnd(7)} ${p.name.padEnd(11)} ${p.type.padEnd(4)} ${p.kind.padEnd(8)} ${p.comment}`,
+  const points = mappedPoints(model, map);
+  const nameWidth = Math.max(11, ...points.map((p) => p.name.length));
+  const rows = points.map(
+    (p) =>
+      `${p.address.padEnd(7)} ${p.name.padEnd(nameWidth)} ${p.type.padEnd(4)} ${p.kind.padEnd(8)} ${p.comment}`,
   );
   return `${model.task}\n\nI/O:\n${rows.join('\n')}`;
 }

@@ -145,12 +145,18 @@ export class PlantLoop {
       const io = plc.ioPoint?.(p.address);
       if (io) return [{ point: p, read: () => io.read(), write: (v: Value) => io.write(v) }];
       if (plc.ioPoint) return [];
+      // Without resolved points the input is read back as last written (a sensor turning OFF is written too).
+      let last: Value = p.type === 'BOOL' ? false : 0;
       try {
-        plc.setInputs({ [p.address]: p.type === 'BOOL' ? false : 0 });
+        plc.setInputs({ [p.address]: last });
       } catch {
         return [];
       }
-      return [{ point: p, read: () => false, write: (v: Value) => plc.setInputs({ [p.address]: v }) }];
+      const write = (v: Value) => {
+        plc.setInputs({ [p.address]: v });
+        last = v;
+      };
+      return [{ point: p, read: () => last, write }];
     });
     this.present();
   }

@@ -1,8 +1,20 @@
 // Every machine there is, by id. A new machine is one module added here (docs/PLANTS.md).
+import { boxes } from './boxes';
+import { garage } from './garage';
+import { intersection } from './intersection';
+import { lift } from './lift';
+import { mixer } from './mixer';
 import { tank } from './tank';
 import type { PlantModel } from './types';
 
-export const PLANTS: readonly PlantModel[] = [tank as PlantModel];
+export const PLANTS: readonly PlantModel[] = [
+  tank as PlantModel,
+  lift as PlantModel,
+  garage as PlantModel,
+  mixer as PlantModel,
+  boxes as PlantModel,
+  intersection as PlantModel,
+];
 
 export function plantById(id: string): PlantModel | undefined {
   const key = id.trim().toLowerCase();

@@ -104,7 +104,7 @@ describe('the tank exercise', () => {
     const p = tankReference();
     expect(validateProject(JSON.parse(JSON.stringify(p)))).toMatchObject({ ok: true });
     expect(checkProject(p).map(formatDiagnostic)).toEqual([]);
-    expect(PLANT_EXAMPLES.map((e) => e.id)).toEqual(['tank-level']);
+    expect(PLANT_EXAMPLES.map((e) => e.id)).toContain('tank-level');
   });
 
   test('the reference solution holds the tank between the switches for 5 minutes', () => {

@@ -2,7 +2,7 @@
 // its operator controls on the drawing (buttons held while pressed, switches that toggle), its
 // consequences located by scan, faults to set on purpose, the I/O map (addresses editable) and
 // "Declare the machine's I/O". At a recorded scan (history) it shows the machine as it was then.
-import { useState } from 'react';
+import { useLayoutEffect, useRef, useState, type ReactNode } from 'react';
 import { Layer, Stage } from 'react-konva';
 import { plantVariables, taskText } from '../../plant/exercises';
 import { addressProblem, mappedPoints } from '../../plant/loop';
@@ -12,7 +12,7 @@ import type { DocumentState } from '../../store/documentStore';
 import { useDocument, useDocumentStore } from '../../store/documentStore';
 import type { SimState } from '../../store/simState';
 import { useSim, useSimStore } from '../sim/simContext';
-import { PLANT_DRAWINGS } from './drawings';
+import { PLANT_DRAWINGS, type PlantDrawing } from './drawings';
 import './plant.css';
 
 const selectPlantConfig = (s: DocumentState) => s.project.plant;
@@ -60,7 +60,6 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
   const shown = historyScan !== undefined && atScan ? atScan : live?.now;
   const state = shown?.state ?? model.initial();
   const drawing = PLANT_DRAWINGS[model.id];
-  const Drawing = drawing?.component;
   return (
     <>
       <p className="rs-plant-status" data-testid="plant-status">
@@ -72,15 +71,10 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
             ? `After scan ${shown.scan.toLocaleString('en-US')} (${(shown.timeMs / 1000).toFixed(2)} s)`
             : 'Initial state: run or step the program'}
       </p>
-      {Drawing && drawing && (
-        <div className="rs-plant-drawing" style={{ width: drawing.width, height: drawing.height }}>
-          <Stage width={drawing.width} height={drawing.height} data-testid="plant-stage">
-            <Layer listening={false}>
-              <Drawing state={state} />
-            </Layer>
-          </Stage>
+      {drawing && (
+        <FittedDrawing drawing={drawing} state={state}>
           <OperatorControls points={points} held={shown?.operator ?? {}} />
-        </div>
+        </FittedDrawing>
       )}
       <Readouts model={model} state={state} />
       <Consequences />
@@ -91,6 +85,54 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
         <pre data-testid="plant-task">{taskText(model, map)}</pre>
       </details>
     </>
+  );
+}
+
+/** The drawing at most this much larger than drawn, when the panel is widened. */
+const MAX_SCALE = 1.75;
+/** ...and never smaller than this (the panel scrolls sideways instead). */
+const MIN_SCALE = 0.6;
+
+/**
+ * The machine's drawing scaled to the panel's width (narrower panels shrink it rather than cut
+ * it off; a widened panel enlarges it), with the operator controls placed over it.
+ */
+function FittedDrawing({
+  drawing,
+  state,
+  children,
+}: {
+  drawing: PlantDrawing;
+  state: unknown;
+  children: ReactNode;
+}) {
+  const outer = useRef<HTMLDivElement>(null);
+  const [available, setAvailable] = useState(drawing.width);
+  useLayoutEffect(() => {
+    const el = outer.current;
+    if (!el) return;
+    const fit = () => setAvailable(el.clientWidth);
+    fit();
+    const resize = new ResizeObserver(fit);
+    resize.observe(el);
+    return () => resize.disconnect();
+  }, []);
+  // The border takes 2 px of the width.
+  const scale = Math.min(MAX_SCALE, Math.max(MIN_SCALE, (available - 2) / drawing.width));
+  const width = Math.floor(drawing.width * scale);
+  const height = Math.floor(drawing.height * scale);
+  const Drawing = drawing.component;
+  return (
+    <div ref={outer} className="rs-plant-fit">
+      <div className="rs-plant-drawing" style={{ width, height }} data-scale={scale.toFixed(3)}>
+        <Stage width={width} height={height} scaleX={scale} scaleY={scale}>
+          <Layer listening={false}>
+            <Drawing state={state} />
+          </Layer>
+        </Stage>
+        {children}
+      </div>
+    </div>
   );
 }
 

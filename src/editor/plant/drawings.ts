@@ -1,6 +1,11 @@
 // How each machine is drawn (issue 26): one Konva component per machine id, given the machine's
 // state (a frame's, or a recorded scan's). The model itself (src/plant) knows nothing of drawing.
 import type { ComponentType } from 'react';
+import { BoxesDrawing, BOXES_SIZE } from './BoxesDrawing';
+import { GarageDrawing, GARAGE_SIZE } from './GarageDrawing';
+import { IntersectionDrawing, INTERSECTION_SIZE } from './IntersectionDrawing';
+import { LiftDrawing, LIFT_SIZE } from './LiftDrawing';
+import { MixerDrawing, MIXER_SIZE } from './MixerDrawing';
 import { TankDrawing, TANK_SIZE } from './TankDrawing';
 
 export interface PlantDrawingProps {
@@ -15,4 +20,9 @@ export interface PlantDrawing {
 
 export const PLANT_DRAWINGS: Readonly<Record<string, PlantDrawing>> = {
   tank: { component: TankDrawing, ...TANK_SIZE },
+  boxes: { component: BoxesDrawing, ...BOXES_SIZE },
+  garage: { component: GarageDrawing, ...GARAGE_SIZE },
+  lift: { component: LiftDrawing, ...LIFT_SIZE },
+  mixer: { component: MixerDrawing, ...MIXER_SIZE },
+  intersection: { component: IntersectionDrawing, ...INTERSECTION_SIZE },
 };

@@ -1,0 +1,530 @@
+// The batch mixer (issue 26): a 1,000 L vessel dosed with two ingredients through valves A and B,
+// stirred by an agitator, heated by an immersion heater at its bottom and emptied through an
+// outlet valve. Level switches (low: the heater is covered, mid: ingredient A's dose, high: the
+// batch is full), an analog level and an analog temperature in tenths of a degree.
+//
+// The heat goes from the heater into a small zone of liquid around its element (the "element"
+// temperature) and from there into the batch: quickly with the agitator running, hardly at all
+// without it, so heating without the agitator scorches the product on the element. The batch
+// loses heat to the 20 °C room. A batch is judged when the outlet opens: the ratio of A to B, how
+// long it was held hot with the agitator after the last ingredient went in, whether it overheated
+// or scorched. A good batch counts once the vessel is empty.
+import type { Value } from '../model/iecTypes';
+import type { PlantConsequence, PlantDrive, PlantModel } from './types';
+
+export const MIXER_CAPACITY_L = 1000;
+/** Where the level switches sit: ON at and above these levels. */
+export const LOW_SWITCH_L = 100;
+export const MID_SWITCH_L = 400;
+export const HIGH_SWITCH_L = 800;
+/** The heater's element is under liquid from this level up. */
+export const ELEMENT_COVERED_L = 60;
+/** Fully open valves: litres per second. */
+export const FLOW_A_L_S = 40;
+export const FLOW_B_L_S = 40;
+export const OUTLET_L_S = 50;
+export const AMBIENT_C = 20;
+/** The recipe: hold at the set point (held counts from HOLD_MIN_C) for HOLD_S with the agitator running. */
+export const SETPOINT_C = 60;
+export const HOLD_MIN_C = 57;
+export const HOLD_S = 30;
+/** A batch above this is spoiled; the product on the element scorches above SCORCH_C. */
+export const OVERHEAT_C = 80;
+export const SCORCH_C = 150;
+/** The share of A in a good batch, percent, and its least volume. */
+export const RATIO_MIN = 40;
+export const RATIO_MAX = 60;
+export const MIN_BATCH_L = 700;
+
+const VALVE_TRAVEL_MS = 1000;
+const SLOW_VALVE_TRAVEL_MS = 15_000;
+const AGITATOR_RAMP_MS = 2000;
+/** The heater's power, as degrees times litres per second (1,000: 1.25 °C/s into 800 L). */
+const HEATER_POWER = 1000;
+/** The liquid around the element, litres, and how fast it mixes with the batch (per second). */
+const ZONE_L = 40;
+const MIX_STILL = 0.05;
+const MIX_STIRRED = 3;
+/** Heat lost to the room, per second, per degree above it. */
+const LOSS = 0.005;
+/** The longest integration step (ms): a step of a longer cycle is cut into these. */
+const MAX_STEP_MS = 50;
+
+/** Why the last spoiled batch was spoiled. */
+export type SpoilReason = '' | 'overheat' | 'scorch' | 'ratio' | 'unheld' | 'short';
+
+export interface MixerState {
+  /** Liquid in the vessel, litres, and how much of it is ingredient A and B. */
+  readonly level: number;
+  readonly volA: number;
+  readonly volB: number;
+  /** The batch's temperature and the element zone's, °C. */
+  readonly temp: number;
+  readonly element: number;
+  /** What the temperature transmitter shows, °C (frozen by the `temp_frozen` fault). */
+  readonly shownTemp: number;
+  /** Valve openings and agitator speed: 0 to 1. */
+  readonly valveA: number;
+  readonly valveB: number;
+  readonly outlet: number;
+  readonly agitator: number;
+  /** The program orders the outlet open (a discharge starts when it does). */
+  readonly outletOrdered: boolean;
+  /** The agitator's blades, degrees (drawn turning). */
+  readonly angle: number;
+  /** The heater's element carries current (and is not burnt). */
+  readonly heating: boolean;
+  readonly lamp: boolean;
+  /** The batch now in the vessel: time held hot and stirred since the last ingredient, hottest it was. */
+  readonly heldMs: number;
+  readonly maxTemp: number;
+  /** Judged when the outlet opened; spoiled (and counted) at most once. */
+  readonly judged: boolean;
+  readonly spoiledBatch: boolean;
+  readonly spoilReason: SpoilReason;
+  /** The share of A of the last batch judged (percent). */
+  readonly lastRatio: number;
+  readonly overflowing: boolean;
+  readonly dryHeating: boolean;
+  readonly scorching: boolean;
+  readonly batches: number;
+  readonly spoiled: number;
+  readonly overflows: number;
+  readonly scorches: number;
+  readonly dryHeats: number;
+  /** Flows in the last step, litres per second. */
+  readonly inflow: number;
+  readonly outflow: number;
+}
+
+const towards = (from: number, target: number, dtMs: number, travelMs: number): number => {
+  const delta = dtMs / travelMs;
+  return target > from ? Math.min(target, from + delta) : Math.max(target, from - delta);
+};
+const on = (v: Value | undefined): boolean => v === true;
+
+/** The share of A in what the vessel holds, percent (0 when empty). */
+export function ratioOf(s: Pick<MixerState, 'volA' | 'volB'>): number {
+  const total = s.volA + s.volB;
+  return total > 0 ? (s.volA / total) * 100 : 0;
+}
+
+/** What is wrong with a batch being discharged, or '' for a good one. */
+function verdict(s: { volA: number; volB: number; heldMs: number }): SpoilReason {
+  const ratio = ratioOf(s);
+  if (s.volA + s.volB < MIN_BATCH_L) return 'short';
+  if (ratio < RATIO_MIN || ratio > RATIO_MAX) return 'ratio';
+  if (s.heldMs < HOLD_S * 1000) return 'unheld';
+  return '';
+}
+
+const SPOIL_TEXT: Record<Exclude<SpoilReason, '' | 'scorch'>, string> = {
+  overheat: `a batch overheated above ${OVERHEAT_C} °C and is spoiled`,
+  ratio: `a batch was discharged with the wrong ratio (A must be ${RATIO_MIN} to ${RATIO_MAX} % of it) and is spoiled`,
+  unheld: `a batch was discharged before it was held ${HOLD_S} s at ${SETPOINT_C} °C with the agitator running, and is spoiled`,
+  short: `a batch was discharged short (less than ${MIN_BATCH_L} L) and is spoiled`,
+};
+
+export const mixer: PlantModel<MixerState> = {
+  id: 'mixer',
+  title: 'Batch mixer',
+  task: [
+    'Make batches: dose ingredient A, then B, stir and heat, hold, discharge; three good batches.',
+    'Start (a push button) starts production, Stop pauses it (valves closed, heater and agitator off;',
+    'Start goes on with the same batch). Each batch, from an empty vessel:',
+    '1. open ValveA until MidLevel comes ON (400 L), then close it;',
+    '2. open ValveB until HighLevel comes ON (800 L), then close it;',
+    '3. run the Agitator; with the agitator running (AgitatorOn) and the heater covered (LowLevel),',
+    `   heat (Heater) to ${SETPOINT_C} °C (Temperature is in tenths of a degree: ${SETPOINT_C * 10});`,
+    `4. hold the batch at ${SETPOINT_C} °C with the agitator running for ${HOLD_S} s;`,
+    '5. heater and agitator off, open OutletValve until the vessel is empty (a few seconds after',
+    '   LowLevel goes OFF), then close it; DoneLamp is lit while a finished batch is discharged.',
+    'Then start the next batch. The vessel must never overflow. Never heat an uncovered element',
+    '(it burns out) or without the agitator (the product scorches on the element). A batch above',
+    `${OVERHEAT_C} °C, discharged before it was held, or with A outside ${RATIO_MIN} to ${RATIO_MAX} % is spoiled.`,
+    'Level (%IW0) is in litres, 0 to 1000; the heated batch loses heat to the 20 °C room.',
+  ].join('\n'),
+  points: [
+    {
+      name: 'Start',
+      address: '%IX0.0',
+      type: 'BOOL',
+      kind: 'operator',
+      control: 'button',
+      comment: 'Start push button (NO)',
+    },
+    {
+      name: 'Stop',
+      address: '%IX0.1',
+      type: 'BOOL',
+      kind: 'operator',
+      control: 'button',
+      comment: 'Stop push button (NO)',
+    },
+    {
+      name: 'LowLevel',
+      address: '%IX0.2',
+      type: 'BOOL',
+      kind: 'sensor',
+      comment: 'Low level switch, ON at 100 L and above (heater covered)',
+    },
+    {
+      name: 'MidLevel',
+      address: '%IX0.3',
+      type: 'BOOL',
+      kind: 'sensor',
+      comment: 'Mid level switch, ON at 400 L and above (dose of A)',
+    },
+    {
+      name: 'HighLevel',
+      address: '%IX0.4',
+      type: 'BOOL',
+      kind: 'sensor',
+      comment: 'High level switch, ON at 800 L and above (batch full)',
+    },
+    {
+      name: 'AgitatorOn',
+      address: '%IX0.5',
+      type: 'BOOL',
+      kind: 'sensor',
+      comment: 'Agitator speed monitor, ON at full speed',
+    },
+    {
+      name: 'Level',
+      address: '%IW0',
+      type: 'INT',
+      kind: 'sensor',
+      comment: 'Level transmitter, litres (0 to 1000)',
+    },
+    {
+      name: 'Temperature',
+      address: '%IW1',
+      type: 'INT',
+      kind: 'sensor',
+      comment: 'Temperature transmitter, 0.1 °C (600 = 60.0 °C)',
+    },
+    {
+      name: 'ValveA',
+      address: '%QX0.0',
+      type: 'BOOL',
+      kind: 'actuator',
+      comment: 'Ingredient A valve solenoid (open when ON)',
+    },
+    {
+      name: 'ValveB',
+      address: '%QX0.1',
+      type: 'BOOL',
+      kind: 'actuator',
+      comment: 'Ingredient B valve solenoid (open when ON)',
+    },
+    {
+      name: 'Agitator',
+      address: '%QX0.2',
+      type: 'BOOL',
+      kind: 'actuator',
+      comment: 'Agitator motor contactor',
+    },
+    {
+      name: 'Heater',
+      address: '%QX0.3',
+      type: 'BOOL',
+      kind: 'actuator',
+      comment: 'Immersion heater contactor',
+    },
+    {
+      name: 'OutletValve',
+      address: '%QX0.4',
+      type: 'BOOL',
+      kind: 'actuator',
+      comment: 'Outlet valve solenoid (open when ON)',
+    },
+    { name: 'DoneLamp', address: '%QX0.5', type: 'BOOL', kind: 'actuator', comment: 'Batch done pilot lamp' },
+  ],
+  faults: [
+    { id: 'low_stuck_on', title: 'Low level switch stuck ON' },
+    { id: 'mid_stuck_off', title: 'Mid level switch stuck OFF' },
+    { id: 'high_stuck_off', title: 'High level switch stuck OFF' },
+    { id: 'valve_a_slow', title: 'Valve A slow (15 s to open or close)' },
+    { id: 'agitator_dead', title: 'Agitator motor does not start' },
+    { id: 'heater_dead', title: 'Heater element burnt out (does not heat)' },
+    { id: 'temp_frozen', title: 'Temperature transmitter frozen' },
+  ],
+  quantities: [
+    { name: 'temperature', type: 'REAL', unit: '°C', comment: 'Temperature of the batch' },
+    { name: 'element', type: 'REAL', unit: '°C', comment: 'Temperature at the heater element' },
+    { name: 'level', type: 'REAL', unit: 'L', comment: 'Liquid in the vessel' },
+    {
+      name: 'ratio',
+      type: 'REAL',
+      unit: '%',
+      comment: 'Share of ingredient A in the vessel (the last batch judged, when empty)',
+    },
+    { name: 'held', type: 'REAL', unit: 's', comment: 'Time the batch was held hot and stirred' },
+    { name: 'max_temp', type: 'REAL', unit: '°C', comment: 'Hottest the batch in the vessel was' },
+    { name: 'valve_a', type: 'REAL', unit: '%', comment: 'Valve A opening' },
+    { name: 'valve_b', type: 'REAL', unit: '%', comment: 'Valve B opening' },
+    { name: 'outlet', type: 'REAL', unit: '%', comment: 'Outlet valve opening' },
+    { name: 'agitator', type: 'REAL', unit: '%', comment: 'Agitator speed' },
+    { name: 'heating', type: 'BOOL', comment: 'The heater heats' },
+    { name: 'overflowing', type: 'BOOL', comment: 'Liquid is pouring over the rim' },
+    { name: 'batches', type: 'INT', comment: 'Good batches discharged' },
+    { name: 'spoiled', type: 'INT', comment: 'Batches spoiled' },
+    { name: 'overflows', type: 'INT', comment: 'Times the vessel overflowed' },
+    { name: 'scorches', type: 'INT', comment: 'Times the product scorched on the heater' },
+    { name: 'dry_heats', type: 'INT', comment: 'Times the heater ran dry (element not covered)' },
+  ],
+
+  initial: () => ({
+    level: 0,
+    volA: 0,
+    volB: 0,
+    temp: AMBIENT_C,
+    element: AMBIENT_C,
+    shownTemp: AMBIENT_C,
+    valveA: 0,
+    valveB: 0,
+    outlet: 0,
+    agitator: 0,
+    outletOrdered: false,
+    angle: 0,
+    heating: false,
+    lamp: false,
+    heldMs: 0,
+    maxTemp: AMBIENT_C,
+    judged: false,
+    spoiledBatch: false,
+    spoilReason: '',
+    lastRatio: 0,
+    overflowing: false,
+    dryHeating: false,
+    scorching: false,
+    batches: 0,
+    spoiled: 0,
+    overflows: 0,
+    scorches: 0,
+    dryHeats: 0,
+    inflow: 0,
+    outflow: 0,
+  }),
+
+  step(s: MixerState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>): MixerState {
+    const wantA = on(drive.ValveA) ? 1 : 0;
+    const wantB = on(drive.ValveB) ? 1 : 0;
+    const wantOut = on(drive.OutletValve) ? 1 : 0;
+    const wantAgitator = on(drive.Agitator) && !faults.has('agitator_dead') ? 1 : 0;
+    const heating = on(drive.Heater) && !faults.has('heater_dead');
+    const travelA = faults.has('valve_a_slow') ? SLOW_VALVE_TRAVEL_MS : VALVE_TRAVEL_MS;
+    let { level, volA, volB, temp, element, valveA, valveB, outlet, agitator, heldMs, maxTemp, angle } = s;
+    let { judged, spoiledBatch, spoilReason, lastRatio, batches, spoiled, overflows, scorches, dryHeats } = s;
+    let overflowing = false;
+    let dryHeating = false;
+    let scorching = false;
+    let inflowL = 0;
+    let outflowL = 0;
+    // The outlet ordered open on a vessel with a batch in it: the batch is discharged, judged now.
+    if (wantOut === 1 && !s.outletOrdered && level > 0 && !judged) {
+      judged = true;
+      lastRatio = ratioOf(s);
+      const reason = verdict(s);
+      if (reason && !spoiledBatch) {
+        spoiledBatch = true;
+        spoilReason = reason;
+        spoiled++;
+      }
+    }
+    const n = Math.max(1, Math.ceil(dtMs / MAX_STEP_MS));
+    const hMs = dtMs / n;
+    const h = hMs / 1000;
+    for (let i = 0; i < n; i++) {
+      valveA = towards(valveA, wantA, hMs, travelA);
+      valveB = towards(valveB, wantB, hMs, VALVE_TRAVEL_MS);
+      outlet = towards(outlet, wantOut, hMs, VALVE_TRAVEL_MS);
+      agitator = towards(agitator, wantAgitator, hMs, AGITATOR_RAMP_MS);
+      angle = (angle + agitator * 360 * h) % 360;
+      // Ingredients come in at room temperature and mix into the batch.
+      const inA = FLOW_A_L_S * valveA * h;
+      const inB = FLOW_B_L_S * valveB * h;
+      if (inA + inB > 0) {
+        // An ingredient into a batch already judged (its discharge stopped short): a new batch.
+        if (judged) {
+          judged = false;
+          spoiledBatch = false;
+          maxTemp = temp;
+        }
+        temp = (temp * level + AMBIENT_C * (inA + inB)) / (level + inA + inB);
+        level += inA + inB;
+        volA += inA;
+        volB += inB;
+        inflowL += inA + inB;
+        heldMs = 0;
+      }
+      // Over the rim: what spills takes A and B with it as they are mixed.
+      if (level > MIXER_CAPACITY_L) {
+        const keep = MIXER_CAPACITY_L / level;
+        volA *= keep;
+        volB *= keep;
+        level = MIXER_CAPACITY_L;
+        overflowing = true;
+      }
+      // The outlet.
+      const out = Math.min(OUTLET_L_S * outlet * h, level);
+      if (out > 0) {
+        const keep = level > 0 ? (level - out) / level : 0;
+        volA *= keep;
+        volB *= keep;
+        level -= out;
+        outflowL += out;
+        if (level < 1e-9) level = volA = volB = 0;
+      }
+      // Heat: heater -> element zone -> batch -> room.
+      const power = heating ? HEATER_POWER : 0;
+      if (level >= ELEMENT_COVERED_L) {
+        const zone = Math.min(ZONE_L, level);
+        const mix = MIX_STILL + MIX_STIRRED * agitator;
+        const flow = mix * (element - temp);
+        element += h * (power / zone - flow);
+        temp += h * (flow * (zone / level) - LOSS * (temp - AMBIENT_C));
+        if (element > SCORCH_C) scorching = true;
+      } else {
+        // An element in the air heats by itself; with no batch the vessel cools to the room.
+        if (heating) dryHeating = true;
+        element += h * (power / ZONE_L - MIX_STILL * (element - AMBIENT_C));
+        temp += h * -LOSS * 4 * (temp - AMBIENT_C);
+      }
+      if (level >= ELEMENT_COVERED_L && agitator >= 0.9 && temp >= HOLD_MIN_C) heldMs += hMs;
+      if (level > 0 && temp > maxTemp) maxTemp = temp;
+      // A batch is spoiled (and counted) once, by the first thing that spoils it.
+      const harm: SpoilReason = level <= 0 ? '' : scorching ? 'scorch' : temp > OVERHEAT_C ? 'overheat' : '';
+      if (harm && !spoiledBatch) {
+        spoiledBatch = true;
+        spoilReason = harm;
+        spoiled++;
+      }
+      // Emptied: a good batch is done; the next one starts from nothing.
+      if (level === 0 && judged) {
+        if (judged && !spoiledBatch) batches++;
+        judged = false;
+        spoiledBatch = false;
+        heldMs = 0;
+        maxTemp = temp;
+      }
+    }
+    if (overflowing && !s.overflowing) overflows++;
+    if (scorching && !s.scorching) scorches++;
+    if (dryHeating && !s.dryHeating) dryHeats++;
+    const dt = dtMs / 1000;
+    return {
+      level,
+      volA,
+      volB,
+      temp,
+      element,
+      shownTemp: faults.has('temp_frozen') ? s.shownTemp : temp,
+      valveA,
+      valveB,
+      outlet,
+      agitator,
+      outletOrdered: wantOut === 1,
+      angle,
+      heating,
+      lamp: on(drive.DoneLamp),
+      heldMs,
+      maxTemp,
+      judged,
+      spoiledBatch,
+      spoilReason,
+      lastRatio,
+      overflowing,
+      dryHeating,
+      scorching,
+      batches,
+      spoiled,
+      overflows,
+      scorches,
+      dryHeats,
+      inflow: dt > 0 ? inflowL / dt : 0,
+      outflow: dt > 0 ? outflowL / dt : 0,
+    };
+  },
+
+  sense(s: MixerState, faults: ReadonlySet<string>): Record<string, Value> {
+    // Runs every scan: the fault names are constants, looked up only when a fault is set.
+    const any = faults.size > 0;
+    return {
+      LowLevel: (any && faults.has('low_stuck_on')) || s.level >= LOW_SWITCH_L,
+      MidLevel: !(any && faults.has('mid_stuck_off')) && s.level >= MID_SWITCH_L,
+      HighLevel: !(any && faults.has('high_stuck_off')) && s.level >= HIGH_SWITCH_L,
+      AgitatorOn: s.agitator >= 0.9,
+      Level: Math.round(s.level),
+      Temperature: Math.round(s.shownTemp * 10),
+    };
+  },
+
+  check(before: MixerState, after: MixerState): readonly PlantConsequence[] {
+    const out: PlantConsequence[] = [];
+    if (after.overflows > before.overflows)
+      out.push({ id: 'overflow', severity: 'error', message: 'the mixer overflowed', counter: 'overflows' });
+    if (after.dryHeats > before.dryHeats)
+      out.push({
+        id: 'dry_heat',
+        severity: 'error',
+        message: 'the heater ran dry (its element was not covered)',
+        counter: 'dry_heats',
+      });
+    if (after.scorches > before.scorches)
+      out.push({
+        id: 'scorch',
+        severity: 'error',
+        message: 'the product scorched on the heater (heating without the agitator) and the batch is spoiled',
+        counter: 'scorches',
+      });
+    if (after.spoiled > before.spoiled && after.spoilReason !== 'scorch')
+      out.push({
+        id: `spoiled_${after.spoilReason}`,
+        severity: 'error',
+        message: SPOIL_TEXT[after.spoilReason as keyof typeof SPOIL_TEXT],
+        counter: 'spoiled',
+      });
+    return out;
+  },
+
+  quantity(s: MixerState, name: string): number | boolean {
+    switch (name) {
+      case 'temperature':
+        return s.temp;
+      case 'element':
+        return s.element;
+      case 'level':
+        return s.level;
+      case 'ratio':
+        return s.level > 0 ? ratioOf(s) : s.lastRatio;
+      case 'held':
+        return s.heldMs / 1000;
+      case 'max_temp':
+        return s.maxTemp;
+      case 'valve_a':
+        return s.valveA * 100;
+      case 'valve_b':
+        return s.valveB * 100;
+      case 'outlet':
+        return s.outlet * 100;
+      case 'agitator':
+        return s.agitator * 100;
+      case 'heating':
+        return s.heating;
+      case 'overflowing':
+        return s.overflowing;
+      case 'batches':
+        return s.batches;
+      case 'spoiled':
+        return s.spoiled;
+      case 'overflows':
+        return s.overflows;
+      case 'scorches':
+        return s.scorches;
+      case 'dry_heats':
+        return s.dryHeats;
+    }
+    throw new Error(`mixer has no quantity "${name}"`);
+  },
+};

@@ -1,0 +1,473 @@
+// The batch mixer (issue 26): its physics as a table of cases, each fault, each consequence, purity;
+// the exercise (reference clean and passing, the wrong one failing where the batch overheats); the
+// worker session's trace equal to the CLI's scan by scan; `rungsmith test` and `rungsmith plants`.
+import { describe, expect, test, vi } from 'vitest';
+import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
+import { mixer, type MixerState } from '../../src/plant/mixer';
+import { PlantLoop } from '../../src/plant/loop';
+import { PLANT_EXAMPLES } from '../../src/plant/exercises';
+import { MIXER_SCENARIO, mixerReference, mixerWrong } from '../../src/plant/mixerExercise';
+import { runScenario } from '../../src/sim/scenario';
+import { checkProject } from '../../src/engine/check';
+import { formatDiagnostic } from '../../src/engine/compile/report';
+import { validateProject } from '../../src/model/load';
+import type { PlantFrame } from '../../src/sim/sessionPlant';
+import { rungsmith } from '../cli/memoryIo';
+import { SimHarness } from '../sim/harness';
+
+const none = new Set<string>();
+type Drive = Partial<
+  Record<'ValveA' | 'ValveB' | 'Agitator' | 'Heater' | 'OutletValve' | 'DoneLamp', boolean>
+>;
+const run = (s: MixerState, drive: Drive, ms: number, faults = none, dt = 100): MixerState => {
+  for (let t = 0; t < ms; t += dt) s = mixer.step(s, drive, dt, faults);
+  return s;
+};
+/** A batch: `a` litres of A and `b` of B dosed (open until the level is reached, as a program would). */
+const dosed = (a: number, b: number, faults = none): MixerState => {
+  let s = mixer.initial();
+  while (s.level < a) s = mixer.step(s, { ValveA: true }, 100, faults);
+  while (s.level < a + b) s = mixer.step(s, { ValveB: true }, 100, faults);
+  return run(s, {}, 2000, faults);
+};
+/** Stirred, heated to 60 °C by a thermostat, held `holdMs` at it. */
+const heldBatch = (s: MixerState, holdMs: number): MixerState => {
+  s = run(s, { Agitator: true }, 3000);
+  while (s.temp < 60) s = mixer.step(s, { Agitator: true, Heater: true }, 100, none);
+  for (let t = 0; t < holdMs; t += 100) s = mixer.step(s, { Agitator: true, Heater: s.temp < 60 }, 100, none);
+  return s;
+};
+const q = (s: MixerState, name: string) => mixer.quantity(s, name);
+const consequences = (before: MixerState, after: MixerState) => mixer.check(before, after).map((c) => c.id);
+
+describe('the mixer model', () => {
+  test.each([
+    // name, drive, ms, expected level range, ratio
+    ['valve A alone: 40 L/s once open (1 s travel)', { ValveA: true }, 10_000, [375, 385], 100],
+    ['valve B alone', { ValveB: true }, 5000, [175, 185], 0],
+    ['both valves: half and half', { ValveA: true, ValveB: true }, 5000, [355, 365], 50],
+    ['the outlet on an empty vessel: nothing', { OutletValve: true }, 5000, [0, 0], 0],
+    ['nothing driven: nothing moves', {}, 5000, [0, 0], 0],
+  ] as const)('%s', (_name, drive, ms, [lo, hi], ratio) => {
+    const s = run(mixer.initial(), drive, ms);
+    expect(s.level).toBeGreaterThanOrEqual(lo);
+    expect(s.level).toBeLessThanOrEqual(hi);
+    expect(q(s, 'ratio')).toBeCloseTo(ratio, 5);
+    expect(s.temp).toBeCloseTo(20, 5);
+  });
+
+  test('the switches and transmitters follow the vessel: low at 100 L, mid at 400 L, high at 800 L; temperature in 0.1 °C', () => {
+    const cases: [number, boolean, boolean, boolean][] = [
+      [50, false, false, false],
+      [150, true, false, false],
+      [450, true, true, false],
+      [820, true, true, true],
+    ];
+    for (const [litres, low, mid, high] of cases) {
+      let s = mixer.initial();
+      while (s.level < litres) s = mixer.step(s, { ValveA: true }, 100, none);
+      s = run(s, {}, 1500);
+      expect(mixer.sense(s, none)).toMatchObject({
+        LowLevel: low,
+        MidLevel: mid,
+        HighLevel: high,
+        Level: Math.round(s.level),
+        Temperature: 200,
+        AgitatorOn: false,
+      });
+    }
+  });
+
+  test('the agitator reaches full speed in 2 s (AgitatorOn from 90 %) and turns its blades', () => {
+    const s1 = run(mixer.initial(), { Agitator: true }, 1000);
+    expect(q(s1, 'agitator')).toBeCloseTo(50, 5);
+    expect(mixer.sense(s1, none).AgitatorOn).toBe(false);
+    const s2 = run(s1, { Agitator: true }, 1000);
+    expect(mixer.sense(s2, none).AgitatorOn).toBe(true);
+    expect(s2.angle).not.toBe(s1.angle);
+  });
+
+  test('heating a stirred batch: about 1.2 °C/s into 800 L, the element a few degrees above the batch', () => {
+    const before = run(dosed(400, 400), { Agitator: true }, 3000);
+    const s = run(before, { Agitator: true, Heater: true }, 20_000);
+    expect(s.temp).toBeGreaterThan(40);
+    expect(s.temp).toBeLessThan(47);
+    expect(s.element - s.temp).toBeGreaterThan(3);
+    expect(s.element - s.temp).toBeLessThan(15);
+    expect(mixer.sense(s, none).Temperature).toBe(Math.round(s.temp * 10));
+    expect(consequences(before, s)).toEqual([]);
+  });
+
+  test('a hot batch loses heat to the 20 °C room (time constant 200 s)', () => {
+    const hot = heldBatch(dosed(400, 400), 0);
+    const s = run(hot, {}, 100_000);
+    // e^-0.5 of the excess is left, and a little more: the element's zone gives its heat up too.
+    const left = (hot.temp - 20) * Math.exp(-0.5);
+    expect(s.temp - 20).toBeGreaterThan(left);
+    expect(s.temp - 20).toBeLessThan(left + 1.5);
+  });
+
+  test('a long cycle is integrated in short steps: one 1 s step is ten 100 ms steps', () => {
+    const start = run(dosed(400, 400), { Agitator: true }, 3000);
+    const drive = { Agitator: true, Heater: true };
+    const one = run(start, drive, 1000, none, 1000);
+    const ten = run(start, drive, 1000, none, 100);
+    expect(one.temp).toBeCloseTo(ten.temp, 9);
+    expect(one.element).toBeCloseTo(ten.element, 9);
+  });
+});
+
+describe('the mixer consequences', () => {
+  test('dosing without end overflows once, the spill taking A and B as mixed', () => {
+    const before = mixer.initial();
+    const s = run(before, { ValveA: true, ValveB: true }, 20_000);
+    expect(s.level).toBe(1000);
+    expect(s.overflowing).toBe(true);
+    expect(s.overflows).toBe(1);
+    expect(q(s, 'ratio')).toBeCloseTo(50, 5);
+    expect(consequences(before, s)).toEqual(['overflow']);
+    expect(mixer.check(before, s)[0]).toMatchObject({ severity: 'error', counter: 'overflows' });
+  });
+
+  test('the heater on an uncovered element runs dry', () => {
+    const before = mixer.initial();
+    const s = run(before, { Heater: true }, 500);
+    expect(s.dryHeats).toBe(1);
+    expect(consequences(before, s)).toEqual(['dry_heat']);
+    expect(mixer.check(before, s)[0]!.message).toBe('the heater ran dry (its element was not covered)');
+    // Covered (above 60 L) it heats the batch instead.
+    const covered = run(dosed(100, 0), { Heater: true, Agitator: true }, 500);
+    expect(covered.dryHeats).toBe(0);
+  });
+
+  test('heating without the agitator scorches the product on the element within seconds, spoiling the batch', () => {
+    const before = dosed(400, 400);
+    const s = run(before, { Heater: true }, 10_000);
+    expect(s.element).toBeGreaterThan(150);
+    expect(s.temp).toBeLessThan(25);
+    expect(s.scorches).toBe(1);
+    expect(s.spoiled).toBe(1);
+    expect(consequences(before, s)).toEqual(['scorch']);
+  });
+
+  test('heating past 80 °C spoils the batch, once (discharging it counts nothing more)', () => {
+    const before = run(dosed(400, 400), { Agitator: true }, 3000);
+    const s = run(before, { Agitator: true, Heater: true }, 60_000);
+    expect(q(s, 'max_temp')).toBeGreaterThan(80);
+    expect(s.spoiled).toBe(1);
+    expect(consequences(before, s)).toEqual(['spoiled_overheat']);
+    expect(mixer.check(before, s)[0]!.message).toBe('a batch overheated above 80 °C and is spoiled');
+    const empty = run(s, { OutletValve: true }, 25_000);
+    expect(empty.level).toBe(0);
+    expect([empty.spoiled, empty.batches]).toEqual([1, 0]);
+  });
+
+  test.each([
+    ['short', 300, 300, 30_000, 'spoiled_short'],
+    ['wrong ratio', 600, 200, 30_000, 'spoiled_ratio'],
+    ['not held long enough', 400, 400, 20_000, 'spoiled_unheld'],
+  ] as const)('a batch discharged %s is spoiled when the outlet opens', (_n, a, b, hold, id) => {
+    const ready = heldBatch(dosed(a, b), hold);
+    const s = mixer.step(ready, { OutletValve: true }, 100, none);
+    expect(s.spoiled).toBe(1);
+    expect(consequences(ready, s)).toEqual([id]);
+    const empty = run(s, { OutletValve: true }, 25_000);
+    expect(empty.level).toBe(0);
+    expect(empty.batches).toBe(0);
+  });
+
+  test('a good batch: judged when the outlet opens, counted once the vessel is empty; the next starts afresh', () => {
+    const ready = heldBatch(dosed(400, 400), 30_500);
+    expect(q(ready, 'held')).toBeGreaterThanOrEqual(30);
+    const opening = mixer.step(ready, { OutletValve: true }, 100, none);
+    expect(opening.judged).toBe(true);
+    expect(consequences(ready, opening)).toEqual([]);
+    const half = run(opening, { OutletValve: true }, 5000);
+    expect(half.batches).toBe(0);
+    const empty = run(half, { OutletValve: true }, 20_000);
+    expect(empty.level).toBe(0);
+    expect(empty.batches).toBe(1);
+    expect(empty.spoiled).toBe(0);
+    // The last batch's ratio: a little more A than B (the dose of A ends with its valve's travel).
+    expect(q(empty, 'ratio')).toBeGreaterThan(50);
+    expect(q(empty, 'ratio')).toBeLessThan(53);
+    expect(q(empty, 'held')).toBe(0);
+    // Closing the outlet and opening it again on the empty vessel counts nothing more.
+    const again = run(run(empty, {}, 2000), { OutletValve: true }, 2000);
+    expect(again.batches).toBe(1);
+  });
+});
+
+describe('the mixer faults', () => {
+  test('level switches stuck', () => {
+    expect(mixer.sense(mixer.initial(), new Set(['low_stuck_on'])).LowLevel).toBe(true);
+    const full = dosed(400, 400);
+    expect(mixer.sense(full, new Set(['mid_stuck_off'])).MidLevel).toBe(false);
+    expect(mixer.sense(full, new Set(['high_stuck_off'])).HighLevel).toBe(false);
+    expect(mixer.sense(full, none)).toMatchObject({ MidLevel: true, HighLevel: true });
+  });
+
+  test('valve A slow: 15 s to open', () => {
+    const s = run(mixer.initial(), { ValveA: true }, 3000, new Set(['valve_a_slow']));
+    expect(q(s, 'valve_a')).toBeCloseTo(20, 5);
+  });
+
+  test('the agitator does not start: no speed, no AgitatorOn, and heating scorches', () => {
+    const dead = new Set(['agitator_dead']);
+    const s = run(dosed(400, 400), { Agitator: true, Heater: true }, 10_000, dead);
+    expect(s.agitator).toBe(0);
+    expect(mixer.sense(s, dead).AgitatorOn).toBe(false);
+    expect(s.scorches).toBe(1);
+  });
+
+  test('the heater element burnt out: no heat, not even dry', () => {
+    const dead = new Set(['heater_dead']);
+    const s = run(dosed(400, 400), { Agitator: true, Heater: true }, 20_000, dead);
+    expect(s.temp).toBeCloseTo(20, 5);
+    expect(s.heating).toBe(false);
+    expect(run(mixer.initial(), { Heater: true }, 1000, dead).dryHeats).toBe(0);
+  });
+
+  test('the temperature transmitter frozen: it keeps showing what it showed when the fault came', () => {
+    const frozen = new Set(['temp_frozen']);
+    const start = run(dosed(400, 400), { Agitator: true, Heater: true }, 10_000);
+    const shown = mixer.sense(start, frozen).Temperature;
+    const later = run(start, { Agitator: true, Heater: true }, 20_000, frozen);
+    expect(later.temp).toBeGreaterThan(start.temp + 20);
+    expect(mixer.sense(later, frozen).Temperature).toBe(shown);
+    // Cleared, it reads the batch again after the next step.
+    const cleared = mixer.step(later, { Agitator: true }, 100, none);
+    expect(mixer.sense(cleared, none).Temperature).toBe(Math.round(cleared.temp * 10));
+  });
+
+  test('a step is pure: the same state, drive, time and faults give the same state, the input is not changed', () => {
+    const s0 = dosed(400, 400);
+    const copy = JSON.stringify(s0);
+    const drive = { Agitator: true, Heater: true, OutletValve: true };
+    const a = mixer.step(s0, drive, 100, new Set(['valve_a_slow']));
+    const b = mixer.step(s0, drive, 100, new Set(['valve_a_slow']));
+    expect(a).toEqual(b);
+    expect(JSON.stringify(s0)).toBe(copy);
+    expect(() => mixer.quantity(s0, 'pressure')).toThrow('mixer has no quantity "pressure"');
+  });
+});
+
+describe('the mixer exercise', () => {
+  test('the reference solution checks clean and is offered as an example', () => {
+    const p = mixerReference();
+    expect(validateProject(JSON.parse(JSON.stringify(p)))).toMatchObject({ ok: true });
+    expect(checkProject(p).map(formatDiagnostic)).toEqual([]);
+    expect(checkProject(mixerWrong()).map(formatDiagnostic)).toEqual([]);
+    expect(PLANT_EXAMPLES.map((e) => e.id)).toContain('batch-mixer');
+    expect(p.plant).toEqual({ id: 'mixer' });
+  });
+
+  test('the reference solution makes three good batches', () => {
+    const { result } = runScenario(mixerReference(), MIXER_SCENARIO);
+    expect(result).toMatchObject({ ok: true, scans: 3300 });
+  });
+
+  test('the wrong solution (no high limit on the heater) fails where the first batch overheats', () => {
+    const { result } = runScenario(mixerWrong(), MIXER_SCENARIO);
+    expect(result.ok).toBe(false);
+    expect(result.error).toBe('a batch overheated above 80 °C and is spoiled at scan 819 (81.80 s)');
+  });
+
+  test('Stop pauses the batch (valves closed, heater and agitator off), Start goes on with it', () => {
+    const csv = `# plant: mixer
+# cycle: 100ms
+scan,mixer.Start,mixer.Stop,expect DoseA,expect ValveA,expect mixer.valve_a,expect Agitator,expect Heater,expect mixer.batches
+1,1,0,1,1,*,0,0,0
+3,0,,1,1,*,0,0,0
+50,,1,1,0,*,0,0,0
+52,,0,1,0,*,0,0,0
+70,,,1,0,0,0,0,0
+300,,,1,0,0,0,0,0
+301,1,,1,1,*,0,0,0
+303,0,,1,1,*,0,0,0
+500,,,0,0,0,1,*,0
+600,,1,0,0,0,0,0,0
+602,,0,0,0,0,0,0,0
+700,,,0,0,0,0,0,0
+701,1,,0,0,0,1,*,0
+703,0,,*,*,*,*,*,0
+1500,,,*,*,*,*,*,1
+`;
+    const { result } = runScenario(mixerReference(), { name: 'pause', csv });
+    expect(result).toMatchObject({ ok: true, scans: 1500 });
+  });
+
+  test('faults from a scenario: the high switch stuck OFF overflows the reference; the agitator dead, it never heats', () => {
+    const stuck =
+      '# plant: mixer\n# cycle: 100ms\nscan,mixer.Start,fault high_stuck_off,expect mixer.overflows\n1,1,1,0\n3,0,,0\n400,,,1\n';
+    expect(runScenario(mixerReference(), { name: 'stuck', csv: stuck }).result).toMatchObject({ ok: true });
+    const dead =
+      '# plant: mixer\n# cycle: 100ms\nscan,mixer.Start,fault agitator_dead,expect Heater,expect mixer.temperature ~ 0.5,expect mixer.scorches\n1,1,1,0,20,0\n3,0,,0,20,0\n1500,,,0,20,0\n';
+    expect(runScenario(mixerReference(), { name: 'dead', csv: dead }).result).toMatchObject({
+      ok: true,
+      scans: 1500,
+    });
+  });
+});
+
+describe('the mixer in closed loop', () => {
+  test('through a PLC known only by its I/O records (the gateway device): a switch that goes OFF is written OFF', () => {
+    const image: Record<string, unknown> = {};
+    let agitator = true;
+    const io = {
+      outputs: () => ({ '%QX0.2': agitator }),
+      setInputs: (v: Record<string, unknown>) => Object.assign(image, v),
+    };
+    const loop = new PlantLoop(mixer);
+    loop.bind(io);
+    expect(image['%IX0.5']).toBe(false);
+    for (let scan = 1; scan <= 30; scan++) loop.afterScan(scan, (scan - 1) * 100, 100);
+    expect(image['%IX0.5']).toBe(true);
+    agitator = false;
+    for (let scan = 31; scan <= 60; scan++) loop.afterScan(scan, (scan - 1) * 100, 100);
+    expect(loop.read('mixer.agitator')).toBe(0);
+    expect(image['%IX0.5']).toBe(false);
+    expect(image['%IW1']).toBe(200);
+  });
+});
+
+describe("the mixer as the gateway's simulated device (npm start -- --plant mixer)", () => {
+  test('its default I/O map fits the device: a master writes the coils, the switches and transmitters come back', async () => {
+    const device = new SimulatedDevice(null, 'mixer');
+    await device.start({
+      inputs: () => undefined,
+      written: () => undefined,
+      status: () => undefined,
+    } as never);
+    try {
+      const inputs = device.inputValues();
+      expect([inputs.get('%IX0.2'), inputs.get('%IX0.5'), inputs.get('%IW0'), inputs.get('%IW1')]).toEqual([
+        false,
+        false,
+        0,
+        200,
+      ]);
+      device.drive(
+        new Map([
+          ['%QX0.0', true],
+          ['%QX0.2', true],
+        ]),
+      );
+      await vi.waitFor(() => expect(device.inputValues().get('%IX0.5')).toBe(true), { timeout: 20_000 });
+      await vi.waitFor(() => expect(device.inputValues().get('%IW0')).toBeGreaterThan(20), {
+        timeout: 20_000,
+      });
+      device.drive(
+        new Map([
+          ['%QX0.0', false],
+          ['%QX0.2', false],
+        ]),
+      );
+      await vi.waitFor(() => expect(device.inputValues().get('%IX0.5')).toBe(false), { timeout: 20_000 });
+      expect(device.plantRead('mixer.ratio')).toBe(100);
+    } finally {
+      await device.close();
+    }
+  }, 60_000);
+});
+
+const WATCH = [
+  'Start',
+  'Running',
+  'DoseA',
+  'DoseB',
+  'Mixing',
+  'Holding',
+  'Emptying',
+  'LowLevel',
+  'MidLevel',
+  'HighLevel',
+  'AgitatorOn',
+  'Level',
+  'Temperature',
+  'ValveA',
+  'ValveB',
+  'Agitator',
+  'Heater',
+  'OutletValve',
+];
+const lastOf = <T>(xs: T[]): T => xs[xs.length - 1]!;
+
+describe('the mixer in the simulation session and on the command line', () => {
+  test('the worker trace of 2,000 scans equals the CLI trace scan by scan, machine included', () => {
+    const h = new SimHarness().send(
+      { type: 'setCycle', cycleMs: 100 },
+      { type: 'setPlant', plant: { id: 'mixer' } },
+      { type: 'load', project: mixerReference() },
+    );
+    h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'step', scans: 2 }).settle();
+    h.send({ type: 'plantOperator', name: 'Start', value: false }, { type: 'step', scans: 1998 });
+    while (h.frame.scan < 2000) h.settle();
+    expect(h.frame.scan).toBe(2000);
+    h.send({ type: 'historyExport', id: 1, format: 'trace', names: WATCH });
+    const worker = lastOf(h.of('historyText')).text.trim().split('\n');
+    const cli = rungsmith(
+      [
+        'simulate',
+        'mixer.json',
+        '--plant',
+        'mixer',
+        '--inputs',
+        'stim.csv',
+        '--scans',
+        '2000',
+        '--cycle',
+        '100ms',
+        '--watch',
+        [...WATCH, 'mixer.temperature'].join(','),
+      ],
+      { 'mixer.json': JSON.stringify(mixerReference()), 'stim.csv': 'scan,mixer.Start\n1,1\n3,0\n' },
+    );
+    expect(cli.code).toBe(0);
+    expect(cli.err).toBe('');
+    const rows = cli.out.trim().split('\n');
+    expect(rows).toHaveLength(2001);
+    expect(rows.map((r) => r.split(',').slice(0, -1).join(','))).toEqual(worker);
+    for (const scan of [1, 2, 3, 250, 777, 1093, 2000]) {
+      h.send({ type: 'historySeek', scan });
+      const view = lastOf(h.of('historyView')).view;
+      expect(view.plant?.scan).toBe(scan);
+      expect(String((view.plant!.state as MixerState).temp)).toBe(rows[scan]!.split(',').at(-1));
+    }
+    // The first batch is done and counted, the second under way.
+    const now = (h.frame.plant as PlantFrame).now.state as MixerState;
+    expect(now.batches).toBe(1);
+    expect(now.spoiled).toBe(0);
+    expect(h.frame.plant!.eventCount).toBe(0);
+  });
+
+  test('rungsmith test: the reference passes its scenario, the wrong one fails where the batch overheats', () => {
+    const ok = rungsmith(['test', 'mixer.json'], { 'mixer.json': JSON.stringify(mixerReference()) });
+    expect(ok.code).toBe(0);
+    expect(ok.out).toContain('PASS Three good batches (3300 scans)');
+    const bad = rungsmith(['test', 'mixer.json', '--junit', 'out.xml'], {
+      'mixer.json': JSON.stringify(mixerWrong()),
+    });
+    expect(bad.code).toBe(1);
+    expect(bad.out).toContain(
+      'FAIL Three good batches: a batch overheated above 80 °C and is spoiled at scan 819 (81.80 s)',
+    );
+    expect(bad.files.get('out.xml')).toContain(
+      'failure message="a batch overheated above 80 °C and is spoiled at scan 819 (81.80 s)"',
+    );
+  });
+
+  test('rungsmith plants mixer lists its I/O map, faults and quantities', () => {
+    const r = rungsmith(['plants', 'mixer']);
+    expect(r.code).toBe(0);
+    expect(r.out).toMatch(/^mixer: Batch mixer\n/);
+    expect(r.out).toContain('Make batches: dose ingredient A, then B');
+    expect(r.out).toContain(
+      '    %IW1    Temperature INT   sensor             Temperature transmitter, 0.1 °C (600 = 60.0 °C)',
+    );
+    expect(r.out).toContain('    %QX0.3  Heater      BOOL  actuator           Immersion heater contactor');
+    expect(r.out).toContain('    temp_frozen         Temperature transmitter frozen');
+    expect(r.out).toContain('    mixer.temperature');
+    expect(rungsmith(['plants']).out).toContain('mixer: Batch mixer');
+  });
+});
