@@ -141,11 +141,8 @@ export interface SimState {
   unload(): void;
   warmRestart(): void;
   setCycle(cycleMs: number): void;
-  /**
-   * The document changed: compiled and applied as an online change when a program is loaded.
-   * Returns whether it was sent to the worker (false: no program loaded, or nothing it runs changed).
-   */
-  documentChanged(project: Project): boolean;
+  /** The document changed: compiled and applied as an online change when a program is loaded. */
+  documentChanged(project: Project): void;
   toggleBreakpoint(networkId: string): void;
   /** Sets or clears a breakpoint on a line of an ST/IL POU (`instance`: only in that instance). */
   toggleLineBreakpoint(pou: string, line: number, instance?: string): void;

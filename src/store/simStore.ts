@@ -273,14 +273,13 @@ export function createSimStore(transport: SimTransport): SimStore {
         send({ type: 'setCycle', cycleMs });
       },
       documentChanged: (project) => {
-        if (!get().layout) return false;
+        if (!get().layout) return;
         const id = programId(project);
-        if (id === track.requested?.id) return false;
+        if (id === track.requested?.id) return;
         track.requested = { project, id, by: 'load' };
         // Online change: the running program stays accepted until the swap (or while the edit has errors).
         expected.set(new Set(running === null ? [id] : [id, running]));
         send({ type: 'load', ...packDocument(project), epoch: nextEpoch() });
-        return true;
       },
       toggleBreakpoint: (networkId) => {
         const { breakpoints } = get();

@@ -1,5 +1,5 @@
-import { describe, expect, test, vi } from 'vitest';
-import { checkedDiagnostics, holdChecks, onChecked, requestCheck } from '../../src/editor/problems/checker';
+import { describe, expect, test } from 'vitest';
+import { checkedDiagnostics, onChecked, requestCheck } from '../../src/editor/problems/checker';
 import { newNetwork, newPou, newProject, variable } from '../../src/model/factory';
 import type { ElementId } from '../../src/model/ids';
 
@@ -42,37 +42,5 @@ describe('the live checker (in the page when no Web Worker exists, as in Node)',
     const fixed = withCoil('Motor', true);
     requestCheck(fixed);
     expect(checkedDiagnostics(fixed)).toEqual([]);
-  });
-});
-
-describe('checks held while the simulator compiles an online change', () => {
-  test('a version asked for during a hold is checked when the hold is released, and subscribers hear it', () => {
-    const project = withCoil('Lamp', false);
-    let heard = 0;
-    const stop = onChecked(() => heard++);
-    const hold = holdChecks(60_000);
-    requestCheck(project);
-    expect(checkedDiagnostics(project)).toBeUndefined();
-    hold.release();
-    expect(checkedDiagnostics(project)?.map((d) => d.rule)).toEqual(['LD-R08']);
-    expect(heard).toBe(1);
-    stop();
-  });
-  test('a hold never lasts past its deadline, moved by extend', () => {
-    vi.useFakeTimers();
-    try {
-      const project = withCoil('Horn', false);
-      const hold = holdChecks(100);
-      requestCheck(project);
-      vi.advanceTimersByTime(60);
-      hold.extend(100);
-      vi.advanceTimersByTime(60);
-      expect(checkedDiagnostics(project)).toBeUndefined();
-      vi.advanceTimersByTime(60);
-      expect(checkedDiagnostics(project)?.map((d) => d.rule)).toEqual(['LD-R08']);
-      hold.release();
-    } finally {
-      vi.useRealTimers();
-    }
   });
 });

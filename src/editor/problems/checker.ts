@@ -47,56 +47,7 @@ function startWorker(): Worker | null {
   }
 }
 
-/** Deadlines (performance.now()) of the holds on checking (holdChecks); none: checks run. */
-const holds = new Set<{ until: number }>();
-let holdTimer: ReturnType<typeof setTimeout> | undefined;
-
-const held = (): boolean => {
-  const now = performance.now();
-  for (const h of holds) if (h.until <= now) holds.delete(h);
-  return holds.size > 0;
-};
-
-/** Checks the version waiting, if any, when no hold is left (a deadline passed or a release). */
-function resumeWhenFree(): void {
-  clearTimeout(holdTimer);
-  holdTimer = undefined;
-  if (held()) {
-    const next = Math.min(...[...holds].map((h) => h.until));
-    holdTimer = setTimeout(resumeWhenFree, Math.max(0, next - performance.now()));
-    return;
-  }
-  if (running) return;
-  const project = waiting;
-  sendNext();
-  // Checked in the page (no worker): the result is there already.
-  if (project && results.has(project)) notify();
-}
-
-/**
- * Holds the checks back for at most `maxMs` (or until the returned release): while the simulator's
- * worker compiles an online change of the document, the check (the same work in another worker)
- * waits, so on two cores the two compiles do not take turns with the running scans. The hold's
- * deadline can be moved (`extend`): it never holds longer than `maxMs` after the last extension.
- */
-export function holdChecks(maxMs: number): { release(): void; extend(ms: number): void } {
-  const hold = { until: performance.now() + maxMs };
-  holds.add(hold);
-  resumeWhenFree();
-  return {
-    release: () => {
-      if (holds.delete(hold)) resumeWhenFree();
-    },
-    extend: (ms: number) => {
-      if (!holds.has(hold)) return;
-      hold.until = performance.now() + ms;
-      resumeWhenFree();
-    },
-  };
-}
-
 function sendNext() {
-  if (held()) return;
   const project = waiting;
   waiting = undefined;
   if (!project || results.has(project)) return;

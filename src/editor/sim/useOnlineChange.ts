@@ -15,29 +15,16 @@ import { gatewayLink } from '../../bridge/gatewayLink';
 import { changedNetworkIds, changeList } from '../../sim/changeList';
 import { programId } from '../../sim/programId';
 import { useDocumentStore } from '../../store/documentStore';
-import { holdChecks } from '../problems/checker';
 import type { SimState } from '../../store/simState';
 import { useSimStore } from './simContext';
 
 const DEBOUNCE_MS = 300;
-/**
- * Longest time the editor's own check of an edit waits for the simulator to compile and apply it
- * (the check is the same work in another worker: run side by side on two cores, the two compiles
- * take turns with the running scans, which then miss cycles; docs/benchmarks.md).
- */
-const CHECK_HOLD_MS = 3000;
 
 export function useOnlineChange(): void {
   const documents = useDocumentStore();
   const sim = useSimStore();
   useEffect(() => {
     let timer: ReturnType<typeof setTimeout> | undefined;
-    /** The hold on the editor's check while an online change compiles (holdChecks). */
-    let hold: ReturnType<typeof holdChecks> | undefined;
-    const releaseHold = () => {
-      hold?.release();
-      hold = undefined;
-    };
     /** Apply on request: what differs between the running program and the shown document. */
     const updateUnapplied = () => {
       const s = sim.getState();
@@ -70,26 +57,12 @@ export function useOnlineChange(): void {
         return;
       }
       if (s.unapplied) s.setUnapplied(undefined);
-      // From the edit on, the check waits for the online change (it would start before the pause ends).
-      if (hold) hold.extend(DEBOUNCE_MS + 200);
-      else if (s.mode === 'running') hold = holdChecks(DEBOUNCE_MS + 200);
-      timer = setTimeout(() => {
-        if (sim.getState().documentChanged(documents.getState().project)) hold?.extend(CHECK_HOLD_MS);
-        else releaseHold();
-      }, DEBOUNCE_MS);
+      timer = setTimeout(() => sim.getState().documentChanged(documents.getState().project), DEBOUNCE_MS);
     });
     // The running program changed (applied, Run, Reset, stopped): the difference is worked out again.
     const watched = (s: SimState) => [s.onlineMode, s.live, s.runningProgram, s.runningProject] as const;
     let last = watched(sim.getState());
-    const unsubscribeSim = sim.subscribe((state, previous) => {
-      // The online change is in (or waits for the user, or was refused, or the run ended): the check goes on.
-      if (
-        hold &&
-        ((state.onlineChange !== previous.onlineChange && state.onlineChange?.kind !== 'pending') ||
-          state.refusal !== previous.refusal ||
-          state.mode !== 'running')
-      )
-        releaseHold();
+    const unsubscribeSim = sim.subscribe((state) => {
       const now = watched(state);
       if (now.every((v, i) => v === last[i])) return;
       last = now;
@@ -97,7 +70,6 @@ export function useOnlineChange(): void {
     });
     return () => {
       clearTimeout(timer);
-      releaseHold();
       unsubscribe();
       unsubscribeSim();
     };
