@@ -1,6 +1,7 @@
 // The tank (issue 26): a 1,000 L tank filled by a pump through an inlet valve and drawn off by
 // the process through a drain valve, with low and high level switches and an analog level.
 // Flows are in litres per second of PLC time; valves and the pump take time to move.
+import { START_STOP_BUTTONS } from './points';
 import type { Value } from '../model/iecTypes';
 import type { PlantConsequence, PlantDrive, PlantModel } from './types';
 
@@ -63,22 +64,7 @@ export const tank: PlantModel<TankState> = {
     'Level (%IW0) is the water in litres, 0 to 1000; the switches sit at 200 L and 800 L.',
   ].join('\n'),
   points: [
-    {
-      name: 'Start',
-      address: '%IX0.0',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Start push button (NO)',
-    },
-    {
-      name: 'Stop',
-      address: '%IX0.1',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Stop push button (NO)',
-    },
+    ...START_STOP_BUTTONS,
     {
       name: 'LowLevel',
       address: '%IX0.2',
