@@ -62,7 +62,7 @@ function summarize(p: Profile, top = Number(process.env.TOP ?? 35)): string {
   return `SELF\n${fmt(self)}\nTOTAL\n${fmt(total)}`;
 }
 
-interface TraceEvent { name: string; ph: string; dur?: number; tid: number; pid: number; args?: { name?: string } }
+interface TraceEvent { name: string; ph: string; dur?: number; tdur?: number; tid: number; pid: number; args?: { name?: string } }
 
 /** With TRACE=1: Chromium's timeline instead of the JS profiler, ms per event name on the renderer's main thread. */
 async function traced(cdp: CDPSession, name: string, fn: () => Promise<unknown>) {
@@ -76,12 +76,18 @@ async function traced(cdp: CDPSession, name: string, fn: () => Promise<unknown>)
   await cdp.send('Tracing.end');
   await done;
   const main = events.find((e) => e.name === 'thread_name' && e.args?.name === 'CrRendererMain');
-  const sums = new Map<string, number>();
+  // Wall time and the thread's own CPU time (tdur: what a busy machine does not inflate by waiting for a core).
+  const sums = new Map<string, { dur: number; cpu: number }>();
   for (const e of events)
-    if (main && e.tid === main.tid && e.pid === main.pid && e.ph === 'X' && e.dur)
-      sums.set(e.name, (sums.get(e.name) ?? 0) + e.dur / 1000);
-  console.log(`==== ${name} (trace): ${JSON.stringify(r)}`);
-  for (const [k, v] of [...sums].sort((a, b) => b[1] - a[1]).slice(0, 30)) console.log(`${v.toFixed(1).padStart(8)} ms  ${k}`);
+    if (main && e.tid === main.tid && e.pid === main.pid && e.ph === 'X' && e.dur) {
+      const s = sums.get(e.name) ?? { dur: 0, cpu: 0 };
+      s.dur += e.dur / 1000;
+      s.cpu += (e.tdur ?? 0) / 1000;
+      sums.set(e.name, s);
+    }
+  console.log(`==== ${name} (trace, wall ms / thread CPU ms): ${JSON.stringify(r)}`);
+  for (const [k, v] of [...sums].sort((a, b) => b[1].dur - a[1].dur).slice(0, 30))
+    console.log(`${v.dur.toFixed(1).padStart(8)} ${v.cpu.toFixed(1).padStart(8)} ms  ${k}`);
 }
 
 async function profiled(cdp: CDPSession, name: string, fn: () => Promise<unknown>) {

@@ -4,7 +4,8 @@
 // 3. frame times (requestAnimationFrame deltas, median and p95) while it runs with the canvas visible,
 //    for the 1,000-network program and a 200-network one.
 // 4. the cost of a machine in closed loop (the tank, issue 26) per scan of a 100-network program (plantFigures.ts).
-// Last line: `bench:sim scans-per-s=<n> p95-frame-ms=<n> history-overhead-pct=<n> seek-ms=<n> search-ms=<n> plant-us=<n> plant-pct=<n>`
+//    and the machine's history: bytes per recorded scan, time to show a recorded scan's machine.
+// Last line: `bench:sim scans-per-s=<n> p95-frame-ms=<n> history-overhead-pct=<n> seek-ms=<n> search-ms=<n> plant-us=<n> plant-pct=<n> plant-history-bytes=<n>`
 // (p95 of the 1,000-network run; scan history on a 100-network program in Node, see historyFigures.ts:
 // seek-ms the slowest of 300 seeks, search-ms the slowest search replaying all 100,000 scans).
 import { existsSync } from 'node:fs';
@@ -15,7 +16,7 @@ import type { Project } from '../src/model/project';
 import { launchChromium } from '../tests/e2e/browser';
 import { describeHistoryFigures, historyFigures } from './historyFigures';
 import { generateSimProgram } from './simProgram';
-import { describePlantFigures, plantFigures } from './plantFigures';
+import { describePlantFigures, describePlantHistoryFigures, plantFigures, plantHistoryFigures } from './plantFigures';
 
 const MEASURE_MS = 4000;
 
@@ -130,8 +131,10 @@ async function main() {
     console.log(describeHistoryFigures(history));
     const plant = plantFigures();
     console.log(describePlantFigures(plant));
+    const plantHistory = plantHistoryFigures();
+    console.log(describePlantHistoryFigures(plantHistory));
     console.log(
-      `bench:sim scans-per-s=${Math.round(fast.scansPerS)} p95-frame-ms=${bigFrames.p95.toFixed(1)} history-overhead-pct=${history.overheadPct.toFixed(0)} seek-ms=${history.seekMaxMs.toFixed(2)} search-ms=${Math.max(history.changeSearchMs, history.conditionSearchMs, history.conditionBackMs).toFixed(0)} plant-us=${plant.plantUs.toFixed(2)} plant-pct=${plant.overheadPct.toFixed(1)}`,
+      `bench:sim scans-per-s=${Math.round(fast.scansPerS)} p95-frame-ms=${bigFrames.p95.toFixed(1)} history-overhead-pct=${history.overheadPct.toFixed(0)} seek-ms=${history.seekMaxMs.toFixed(2)} search-ms=${Math.max(history.changeSearchMs, history.conditionSearchMs, history.conditionBackMs).toFixed(0)} plant-us=${plant.plantUs.toFixed(2)} plant-pct=${plant.overheadPct.toFixed(1)} plant-history-bytes=${plantHistory.bytesPerScan.toFixed(1)}`,
     );
   } finally {
     await browser.close();

@@ -8,6 +8,7 @@
 // `BOX_SPACING_MM` of belt travel, their sizes from a fixed repeating pattern: the same program
 // and the same operator actions always see the same boxes. Across the belt the pusher's plate
 // and a box's sideways offset run from 0 (belt's edge by the pusher) to 1 (off into the chute).
+import { START_STOP_BUTTONS } from './points';
 import type { Value } from '../model/iecTypes';
 import type { PlantConsequence, PlantDrive, PlantModel } from './types';
 
@@ -127,22 +128,7 @@ export const boxes: PlantModel<BoxesState> = {
     'Goal: 10 boxes sorted into the right place, none missorted, no jam, no box fallen.',
   ].join('\n'),
   points: [
-    {
-      name: 'Start',
-      address: '%IX0.0',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Start push button (NO)',
-    },
-    {
-      name: 'Stop',
-      address: '%IX0.1',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Stop push button (NO)',
-    },
+    ...START_STOP_BUTTONS,
     {
       name: 'EntryEye',
       address: '%IX0.2',

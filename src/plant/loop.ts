@@ -8,6 +8,8 @@
 import type { Value } from '../model/iecTypes';
 import { parseLocation } from '../model/iecTypes';
 import type { PlantConsequence, PlantModel, PlantPoint } from './types';
+import { resolvePlantName } from './values';
+import { PlantHistory } from './history';
 
 /** What the loop needs of a PLC: its output image and its input image, by address. */
 export interface PlcIo {
@@ -17,12 +19,32 @@ export interface PlcIo {
   ioPoint?(location: string): { read(): Value; write(value: Value): void } | undefined;
 }
 
-/** A machine point wired to the PLC: how to read (actuators) or write (sensors, operator controls) it. */
-interface Wire {
-  readonly point: PlantPoint;
+/** One point of the PLC's I/O image, read and written every scan. */
+interface ImagePoint {
   read(): Value;
   write(value: Value): void;
 }
+
+/**
+ * A machine point wired to the PLC, resolved once per program (bind): its image point, and what
+ * the scan needs of the point without looking it up (its name, BOOL or not, operator control or not).
+ */
+interface Wire {
+  readonly point: PlantPoint;
+  readonly name: string;
+  readonly bool: boolean;
+  readonly operator: boolean;
+  readonly io: ImagePoint;
+  /**
+   * Where the point's value is in the step's history record (the loop's own copy of the drive): a
+   * BOOL actuator's or an operator control's bit (its word and mask), an INT actuator's number.
+   */
+  readonly bit: number;
+  readonly word: number;
+  readonly mask: number;
+  readonly int: number;
+}
+const NO_WRITE = (): void => {};
 
 /** A consequence where it happened: the scan after which the machine was seen to suffer it. */
 export interface PlantEvent extends PlantConsequence {
@@ -70,6 +92,8 @@ export interface PlantSnapshot {
   readonly state: unknown;
   readonly faults: readonly string[];
   readonly operator: Readonly<Record<string, boolean>>;
+  /** Each actuator as the machine was driven in the step that ended here (absent for the initial state). */
+  readonly drive?: Readonly<Record<string, Value>>;
 }
 
 export class PlantLoop {
@@ -85,23 +109,25 @@ export class PlantLoop {
   private faultList: readonly string[] = [];
   private operatorShown: Readonly<Record<string, boolean>> = {};
   private readonly events: PlantEvent[] = [];
-  /** The machine after each recorded scan, oldest first, at most `keep`. */
-  private readonly history: PlantSnapshot[] = [];
+  /** The machine after each recorded scan (the latest `keep` at least), compact: replayed from keyframes. */
+  private readonly history: PlantHistory;
   private readonly actuators: PlantPoint[];
   private readonly inputs: PlantPoint[];
   /** The points the program declares: actuators to read, sensors and operator controls to write. */
   private outputs: Wire[] = [];
-  /** Actuators the program does not drive: always off. */
-  private unwired: PlantPoint[] = [];
   private declared: Wire[] = [];
+  /** Some declared point is a sensor: the model is asked what it senses. */
+  private sensing = false;
   private bound: PlcIo | undefined;
   /** The drive record handed to step(), refilled every scan. */
   private readonly driveRecord: Record<string, Value> = {};
+  /** The same as the history records it (src/plant/history.ts), faults included, kept up to date alongside. */
+  private readonly record: { readonly bits: Uint32Array; readonly ints: Float64Array };
 
   constructor(
     model: PlantModel,
     map: PlantMap = {},
-    private readonly keep = 100_000,
+    keep = 100_000,
   ) {
     this.model = model;
     this.points = mappedPoints(model, map);
@@ -110,11 +136,55 @@ export class PlantLoop {
       if (problem) throw new Error(`${model.id}: ${problem}`);
     }
     this.actuators = this.points.filter((p) => p.kind === 'actuator');
-    this.unwired = this.actuators;
     this.inputs = this.points.filter((p) => p.kind !== 'actuator');
     for (const p of this.points) if (p.kind === 'operator') this.operator[p.name] = false;
     this.operatorShown = { ...this.operator };
     this.state = model.initial();
+    this.history = new PlantHistory(model, this.points, keep);
+    this.record = this.history.newRecord();
+    this.driveConstants();
+  }
+
+  private wire(point: PlantPoint, io: ImagePoint): Wire {
+    const bit = this.history.bitOf(point.name);
+    return {
+      point,
+      name: point.name,
+      bool: point.type === 'BOOL',
+      operator: point.kind === 'operator',
+      io,
+      bit,
+      word: bit < 0 ? 0 : bit >>> 5,
+      mask: bit < 0 ? 0 : 1 << (bit & 31),
+      int: this.history.intOf(point.name),
+    };
+  }
+
+  private setBit(bit: number, on: boolean): void {
+    if (bit < 0) return;
+    const bits = this.record.bits;
+    if (on) bits[bit >>> 5]! |= 1 << (bit & 31);
+    else bits[bit >>> 5]! &= ~(1 << (bit & 31));
+  }
+
+  /**
+   * The drive record afresh: operator controls as held (set again when one changes) and every
+   * actuator off; the scan then writes the wired actuators' changes (drive()).
+   */
+  private driveConstants(): void {
+    const d = this.driveRecord;
+    for (const p of this.inputs)
+      if (p.kind === 'operator') {
+        d[p.name] = this.operator[p.name] === true;
+        this.setBit(this.history.bitOf(p.name), this.operator[p.name] === true);
+      }
+    // Every actuator off, until a wired one reads otherwise (the scan writes only changes).
+    for (const p of this.actuators) {
+      d[p.name] = p.type === 'BOOL' ? false : 0;
+      this.setBit(this.history.bitOf(p.name), false);
+      const i = this.history.intOf(p.name);
+      if (i >= 0) this.record.ints[i] = 0;
+    }
   }
 
   /** Back to the machine's initial state at PLC time 0 (a cold restart); faults and operator controls stay. */
@@ -123,7 +193,7 @@ export class PlantLoop {
     this.timeMs = 0;
     this.scan = 0;
     this.events.length = 0;
-    this.history.length = 0;
+    this.history.clear();
   }
 
   /**
@@ -134,16 +204,15 @@ export class PlantLoop {
     this.bound = plc;
     this.outputs = this.actuators.flatMap((p) => {
       const io = plc.ioPoint?.(p.address);
-      if (io) return [{ point: p, read: () => io.read(), write: () => {} }];
+      if (io) return [this.wire(p, io)];
       if (plc.ioPoint) return [];
       // A PLC without resolved points: through its output record.
       const key = Object.keys(plc.outputs()).find((k) => addressKey(k) === addressKey(p.address));
-      return key === undefined ? [] : [{ point: p, read: () => plc.outputs()[key]!, write: () => {} }];
+      return key === undefined ? [] : [this.wire(p, { read: () => plc.outputs()[key]!, write: NO_WRITE })];
     });
-    this.unwired = this.actuators.filter((p) => !this.outputs.some((w) => w.point === p));
     this.declared = this.inputs.flatMap((p) => {
       const io = plc.ioPoint?.(p.address);
-      if (io) return [{ point: p, read: () => io.read(), write: (v: Value) => io.write(v) }];
+      if (io) return [this.wire(p, io)];
       if (plc.ioPoint) return [];
       // Without resolved points the input is read back as last written (a sensor turning OFF is written too).
       let last: Value = p.type === 'BOOL' ? false : 0;
@@ -156,8 +225,12 @@ export class PlantLoop {
         plc.setInputs({ [p.address]: v });
         last = v;
       };
-      return [{ point: p, read: () => last, write }];
+      return [this.wire(p, { read: () => last, write })];
     });
+    this.sensing = this.declared.some((w) => !w.operator);
+    this.driveConstants();
+    // The wired actuators as the output image has them now (a frame before the next scan shows them).
+    this.drive();
     this.present();
   }
 
@@ -166,14 +239,16 @@ export class PlantLoop {
     const target = scanTimeMs + cycleMs;
     const dt = Math.max(0, target - this.timeMs);
     const before = this.state;
-    this.state = this.model.step(before, this.drive(), dt, this.faults);
+    const drive = this.drive();
+    this.state = this.model.step(before, drive, dt, this.faults);
+    // What the step was given, for the history to replay it (the model is deterministic).
+    this.history.push(scan, before, this.timeMs, this.record, target);
     this.timeMs = target;
     this.scan = scan;
     const consequences = this.model.check(before, this.state);
     const found =
       consequences.length === 0 ? NONE : consequences.map((c) => this.locate(c, scan, scanTimeMs));
     for (const e of found) this.events.push(e);
-    this.record();
     this.present();
     return found;
   }
@@ -187,11 +262,32 @@ export class PlantLoop {
     };
   }
 
+  /** The drive record for a step: the wired actuators read from the output image (the rest is kept up to date). */
   private drive(): Record<string, Value> {
     const d = this.driveRecord;
-    for (const p of this.inputs) if (p.kind === 'operator') d[p.name] = this.operator[p.name] === true;
-    for (const p of this.unwired) d[p.name] = p.type === 'BOOL' ? false : 0;
-    for (const w of this.outputs) d[w.point.name] = w.read();
+    const outputs = this.outputs;
+    const bits = this.record.bits;
+    const ints = this.record.ints;
+    // BOOL points TRUE or FALSE exactly, INT points numbers: what the history records and replays.
+    // The record holds the last values: only a change is written by name (outputs change seldom).
+    for (let i = 0; i < outputs.length; i++) {
+      const w = outputs[i]!;
+      const v = w.io.read();
+      if (w.bool) {
+        const on = v === true;
+        const word = bits[w.word]!;
+        if (on !== ((word & w.mask) !== 0)) {
+          bits[w.word] = on ? word | w.mask : word & ~w.mask;
+          d[w.name] = on;
+        }
+      } else {
+        const n = Number(v);
+        if (!Object.is(n, ints[w.int])) {
+          ints[w.int] = n;
+          d[w.name] = n;
+        }
+      }
+    }
     return d;
   }
 
@@ -200,45 +296,36 @@ export class PlantLoop {
    * every scan: the machine drives those inputs as wires would (a forced input keeps its force).
    */
   present(): void {
-    if (!this.bound || this.declared.length === 0) return;
-    const sensed = this.model.sense(this.state, this.faults);
-    for (const w of this.declared) {
-      const v = w.point.kind === 'operator' ? this.operator[w.point.name] === true : sensed[w.point.name]!;
+    const declared = this.declared;
+    if (!this.bound || declared.length === 0) return;
+    const sensed = this.sensing ? this.model.sense(this.state, this.faults) : undefined;
+    const bits = this.record.bits;
+    for (let i = 0; i < declared.length; i++) {
+      const w = declared[i]!;
+      // An operator control as held: its bit in the record (setOperator keeps it).
+      const v = w.operator ? (bits[w.word]! & w.mask) !== 0 : sensed![w.name]!;
       // The image already holding the value is the common case: no write, no conversion.
-      if (w.read() !== v) w.write(v);
+      if (w.io.read() !== v) w.io.write(v);
     }
   }
 
-  private record(): void {
-    if (this.keep <= 0) return;
-    // Dropped in chunks: shifting a 100,000-entry array every scan would cost more than the machine.
-    if (this.history.length >= this.keep + 1024) this.history.splice(0, this.history.length - this.keep);
-    this.history.push(this.snapshot());
-  }
-
   snapshot(): PlantSnapshot {
+    const drive: Record<string, Value> = {};
+    if (this.scan > 0) for (const p of this.actuators) drive[p.name] = this.driveRecord[p.name]!;
     return {
       scan: this.scan,
       timeMs: this.timeMs,
       state: this.state,
       faults: this.faultList,
       operator: this.operatorShown,
+      ...(this.scan > 0 ? { drive } : {}),
     };
   }
 
   /** The machine as it was after scan `scan` (the initial state for 0), if still kept. */
   at(scan: number): PlantSnapshot | undefined {
     if (scan === 0) return { scan: 0, timeMs: 0, state: this.model.initial(), faults: [], operator: {} };
-    const first = this.history[0];
-    if (
-      !first ||
-      scan < first.scan ||
-      (this.history.length > this.keep && scan < this.history[this.history.length - this.keep]!.scan)
-    )
-      return undefined;
-    // Scans are recorded in order, one each, unless a reset restarted the count.
-    const guess = this.history[scan - first.scan];
-    return guess?.scan === scan ? guess : this.history.find((h) => h.scan === scan);
+    return this.history.at(scan);
   }
 
   setOperator(name: string, value: boolean): void {
@@ -251,6 +338,8 @@ export class PlantLoop {
           .join(', ')}`,
       );
     this.operator[p.name] = value;
+    this.driveRecord[p.name] = value;
+    this.setBit(this.history.bitOf(p.name), value);
     this.operatorShown = { ...this.operator };
     this.present();
   }
@@ -263,6 +352,7 @@ export class PlantLoop {
       );
     if (active) this.faults.add(f.id);
     else this.faults.delete(f.id);
+    this.setBit(this.history.faultBitOf(f.id), active);
     this.faultList = [...this.faults].sort();
     this.present();
   }
@@ -279,14 +369,17 @@ export class PlantLoop {
     return this.state;
   }
 
-  /** `level` or `tank.level`: a quantity, or a point (a sensor as sensed, an actuator as driven, an operator control as held). */
+  /**
+   * `level` or `tank.level`: a quantity, or a point (a sensor as sensed, an actuator as driven, an
+   * operator control as held); spelt exactly, `tank.Pump` is the contactor, `tank.pump` the speed.
+   */
   read(name: string): Value {
     const bare = name.toLowerCase().startsWith(`${this.model.id}.`)
       ? name.slice(this.model.id.length + 1)
       : name;
-    const q = this.model.quantities.find((x) => x.name.toLowerCase() === bare.toLowerCase());
-    if (q) return this.model.quantity(this.state, q.name);
-    const p = this.points.find((x) => x.name.toLowerCase() === bare.toLowerCase());
+    const ref = resolvePlantName(this.model, bare);
+    if (ref?.quantity) return this.model.quantity(this.state, ref.quantity.name);
+    const p = ref?.point;
     if (p?.kind === 'operator') return this.operator[p.name] === true;
     if (p?.kind === 'sensor') return this.model.sense(this.state, this.faults)[p.name]!;
     if (p) return { ...this.drive() }[p.name]!;
@@ -299,7 +392,6 @@ export class PlantLoop {
 /** The type `tank.level` (or `level`) reads as: a quantity's, or a point's; undefined when the machine has no such name. */
 export function plantValueType(model: PlantModel, name: string): 'BOOL' | 'INT' | 'REAL' | undefined {
   const bare = name.toLowerCase().startsWith(`${model.id}.`) ? name.slice(model.id.length + 1) : name;
-  const q = model.quantities.find((x) => x.name.toLowerCase() === bare.toLowerCase());
-  if (q) return q.type;
-  return model.points.find((x) => x.name.toLowerCase() === bare.toLowerCase())?.type;
+  const ref = resolvePlantName(model, bare);
+  return ref?.quantity?.type ?? ref?.point?.type;
 }

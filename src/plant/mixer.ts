@@ -9,6 +9,7 @@
 // loses heat to the 20 °C room. A batch is judged when the outlet opens: the ratio of A to B, how
 // long it was held hot with the agitator after the last ingredient went in, whether it overheated
 // or scorched. A good batch counts once the vessel is empty.
+import { START_STOP_BUTTONS } from './points';
 import type { Value } from '../model/iecTypes';
 import type { PlantConsequence, PlantDrive, PlantModel } from './types';
 
@@ -145,22 +146,7 @@ export const mixer: PlantModel<MixerState> = {
     'Level (%IW0) is in litres, 0 to 1000; the heated batch loses heat to the 20 °C room.',
   ].join('\n'),
   points: [
-    {
-      name: 'Start',
-      address: '%IX0.0',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Start push button (NO)',
-    },
-    {
-      name: 'Stop',
-      address: '%IX0.1',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Stop push button (NO)',
-    },
+    ...START_STOP_BUTTONS,
     {
       name: 'LowLevel',
       address: '%IX0.2',

@@ -1,6 +1,7 @@
 // The tank (issue 26): a 1,000 L tank filled by a pump through an inlet valve and drawn off by
 // the process through a drain valve, with low and high level switches and an analog level.
 // Flows are in litres per second of PLC time; valves and the pump take time to move.
+import { START_STOP_BUTTONS } from './points';
 import type { Value } from '../model/iecTypes';
 import type { PlantConsequence, PlantDrive, PlantModel } from './types';
 
@@ -47,6 +48,7 @@ const towards = (from: number, target: number, dtMs: number, travelMs: number): 
   return target > from ? Math.min(target, from + delta) : Math.max(target, from - delta);
 };
 const on = (v: Value | undefined): boolean => v === true;
+const NOTHING: readonly PlantConsequence[] = [];
 
 export const tank: PlantModel<TankState> = {
   id: 'tank',
@@ -62,22 +64,7 @@ export const tank: PlantModel<TankState> = {
     'Level (%IW0) is the water in litres, 0 to 1000; the switches sit at 200 L and 800 L.',
   ].join('\n'),
   points: [
-    {
-      name: 'Start',
-      address: '%IX0.0',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Start push button (NO)',
-    },
-    {
-      name: 'Stop',
-      address: '%IX0.1',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Stop push button (NO)',
-    },
+    ...START_STOP_BUTTONS,
     {
       name: 'LowLevel',
       address: '%IX0.2',
@@ -159,16 +146,17 @@ export const tank: PlantModel<TankState> = {
   }),
 
   step(s: TankState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>): TankState {
-    const pump = towards(s.pump, on(drive.Pump) && !faults.has('pump_dead') ? 1 : 0, dtMs, PUMP_RAMP_MS);
+    const faulty = faults.size > 0;
+    const pump = towards(s.pump, on(drive.Pump) && !(faulty && faults.has('pump_dead')) ? 1 : 0, dtMs, PUMP_RAMP_MS);
     const inlet = towards(
       s.inlet,
       on(drive.InletValve) ? 1 : 0,
       dtMs,
-      faults.has('inlet_slow') ? SLOW_VALVE_TRAVEL_MS : VALVE_TRAVEL_MS,
+      faulty && faults.has('inlet_slow') ? SLOW_VALVE_TRAVEL_MS : VALVE_TRAVEL_MS,
     );
     const drain = towards(
       s.drain,
-      on(drive.DrainValve) && !faults.has('drain_stuck') ? 1 : 0,
+      on(drive.DrainValve) && !(faulty && faults.has('drain_stuck')) ? 1 : 0,
       dtMs,
       VALVE_TRAVEL_MS,
     );
@@ -207,16 +195,21 @@ export const tank: PlantModel<TankState> = {
   },
 
   sense(s: TankState, faults: ReadonlySet<string>): Record<string, Value> {
-    const sw = (id: string, real: boolean) =>
-      faults.has(`${id}_stuck_on`) ? true : faults.has(`${id}_stuck_off`) ? false : real;
+    const low = s.level >= LOW_SWITCH_L;
+    const high = s.level >= HIGH_SWITCH_L;
+    // No fault set (the usual case): the switches as the water has them.
+    if (faults.size === 0) return { LowLevel: low, HighLevel: high, Level: Math.round(s.level) };
     return {
-      LowLevel: sw('low', s.level >= LOW_SWITCH_L),
-      HighLevel: sw('high', s.level >= HIGH_SWITCH_L),
+      LowLevel: faults.has('low_stuck_on') ? true : faults.has('low_stuck_off') ? false : low,
+      HighLevel: faults.has('high_stuck_on') ? true : faults.has('high_stuck_off') ? false : high,
       Level: Math.round(s.level),
     };
   },
 
   check(before: TankState, after: TankState): readonly PlantConsequence[] {
+    // Nothing happened (every scan but a handful): no list made.
+    if (after.overflows === before.overflows && after.dryRuns === before.dryRuns && after.deadheads === before.deadheads)
+      return NOTHING;
     const out: PlantConsequence[] = [];
     if (after.overflows > before.overflows)
       out.push({ id: 'overflow', severity: 'error', message: 'the tank overflowed', counter: 'overflows' });
@@ -235,6 +228,24 @@ export const tank: PlantModel<TankState> = {
         counter: 'deadheads',
       });
     return out;
+  },
+
+  explain(s: TankState, point: string, faults: ReadonlySet<string>): string | undefined {
+    const level = `the level is ${s.level.toFixed(1)} L`;
+    const sw = (id: string, title: string, at: number) => {
+      if (faults.has(`${id}_stuck_on`)) return `${title} is stuck ON (fault ${id}_stuck_on): it reads ON whatever the level; ${level}`;
+      if (faults.has(`${id}_stuck_off`)) return `${title} is stuck OFF (fault ${id}_stuck_off): it reads OFF whatever the level; ${level}`;
+      return `${title} is ON at ${at} L and above; ${level}, so it is ${s.level >= at ? 'ON' : 'OFF'}`;
+    };
+    switch (point) {
+      case 'LowLevel':
+        return sw('low', 'the low level switch', LOW_SWITCH_L);
+      case 'HighLevel':
+        return sw('high', 'the high level switch', HIGH_SWITCH_L);
+      case 'Level':
+        return `the transmitter gives the level in whole litres; ${level}`;
+    }
+    return undefined;
   },
 
   quantity(s: TankState, name: string): number | boolean {

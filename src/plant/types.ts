@@ -85,4 +85,10 @@ export interface PlantModel<S = unknown> {
   check(before: S, after: S): readonly PlantConsequence[];
   /** A named quantity (`level`), as a number or boolean. */
   quantity(state: S, name: string): number | boolean;
+  /**
+   * Optional, for "Why?": why sensor `point` reads what it reads in `state`, in a few words
+   * (`ON at 800 L and above; the level is 812.4 L`). Without it "Why?" gives the point's comment
+   * and the machine's quantities.
+   */
+  explain?(state: S, point: string, faults: ReadonlySet<string>): string | undefined;
 }

@@ -29,6 +29,7 @@ import type { SimEngine } from './simEngine';
 import { withYieldPoints } from '../engine/yieldPoint';
 import { applyDelta } from './projectDelta';
 import { SessionPlant } from './sessionPlant';
+import { plantNameWhy, withPlantWhy } from './plantWhy';
 
 export interface SessionDeps {
   readonly engine: SimEngine;
@@ -115,6 +116,8 @@ export class SimSession {
   private carried: { plc: Plc; shown: ShownScan } | undefined;
   /** The machine in closed loop with the program (issue 26). */
   private readonly plant = new SessionPlant();
+  /** The machine's names the trend may sample (`tank.level`), read off the machine rather than the PLC. */
+  private trendPlantNames: ReadonlySet<string> = new Set();
 
   constructor(private readonly deps: SessionDeps) {
     this.runner = new ScanRunner(
@@ -122,11 +125,14 @@ export class SimSession {
         current: () => this.requirePlc(),
         atBoundary: () => this.applyPending(),
         scanCompleted: (plc, startTime) => {
-          if (this.trend.active) this.trend.record(this.scanBase + plc.scanCount, startTime, (n) => plc.read(n));
           this.recorder?.record(this.scanBase + plc.scanCount, startTime);
           // The machine after the scan is recorded as it ran (the recorder takes its input image):
           // outputs are written, the next scan's inputs not yet read.
           if (this.plant.active) this.plant.afterScan(this.scanBase + plc.scanCount, startTime, this.runner.cycleMs);
+          // Sampled after the machine's step: `tank.level` in a scan's sample is the machine after
+          // that scan, as the history shows it (the program's variables are unchanged by the step,
+          // which writes only the input image the next scan reads).
+          if (this.trend.active) this.trend.record(this.scanBase + plc.scanCount, startTime, this.trendRead(plc));
           if (this.outputsSubscribed) this.postOutputs();
         },
         stopped: (outcome) => this.stoppedAt(outcome),
@@ -277,7 +283,16 @@ export class SimSession {
       case 'historySeek':
       case 'historyFind':
       case 'explain':
-      case 'historyExport':
+      case 'historyExport': {
+        const why = this.plant.whyContext();
+        // "Why?" on a machine name (`tank.level`) that is not the program's: the machine explains it.
+        if (why && m.type === 'explain' && !this.layout?.variables.some((v) => m.target.kind === 'variable' && v.name.toUpperCase() === m.target.name.toUpperCase())) {
+          const explanation = plantNameWhy(m.scan, m.target, why);
+          if (explanation) {
+            this.deps.post({ type: 'explanation', id: m.id, explanation });
+            return;
+          }
+        }
         answerHistory(m, {
           recorder: this.recorder,
           plc: this.plc,
@@ -289,15 +304,21 @@ export class SimSession {
           post: (message, transfer) => {
             // A recorded scan shows the machine as it was then.
             const plant = message.type === 'historyView' ? this.plant.at(message.view.scan) : undefined;
-            this.deps.post(plant && message.type === 'historyView' ? { ...message, view: { ...message.view, plant } } : message, transfer);
+            if (plant && message.type === 'historyView') this.deps.post({ ...message, view: { ...message.view, plant } }, transfer);
+            // An input the machine writes, an output it reads: the machine says its part.
+            else if (why && message.type === 'explanation') this.deps.post({ ...message, explanation: withPlantWhy(message.explanation, why) }, transfer);
+            else this.deps.post(message, transfer);
           },
         });
         return;
+      }
       case 'replayScenario':
         this.replayScenario(m.id, m.project, m.scenario);
         return;
       case 'setPlant':
         this.plant.configure(m.plant, this.plc);
+        // The trend may name the machine (`tank.level`): known now, or no longer.
+        this.configureTrend();
         this.postFrame();
         return;
       case 'plantOperator':
@@ -546,11 +567,27 @@ export class SimSession {
       this.trendRequest.names.length > 0 || request
         ? new Map((this.layout?.variables ?? []).map((v) => [v.name.toUpperCase(), v.name]))
         : new Map<string, string>();
-    const names = this.trendRequest.names.flatMap((n) => known.get(n.toUpperCase()) ?? []);
-    const triggerName = request && known.get(request.name.toUpperCase());
+    // The program's names, then the machine's (`tank.level`; `tank.Pump` and `tank.pump` differ by case).
+    const machine = new Set<string>();
+    const spell = (n: string): string | undefined => {
+      const own = known.get(n.toUpperCase());
+      if (own !== undefined) return own;
+      const m = this.plant.spelling(n);
+      if (m !== undefined) machine.add(m);
+      return m;
+    };
+    const names = this.trendRequest.names.flatMap((n) => spell(n) ?? []);
+    const triggerName = request && spell(request.name);
+    this.trendPlantNames = machine;
     // Before a program is loaded the trigger waits armed; a name the program lacks is reported.
     const trigger = request && { ...request, name: triggerName ?? request.name };
     this.trend.configure(names, this.trendRequest.capacity, trigger, { known: !this.layout || triggerName !== undefined, rearm });
+  }
+
+  /** How the trend reads a name: the machine's (`tank.level`) from the machine, the others from the PLC. */
+  private trendRead(plc: Plc): (name: string) => Value {
+    const machine = this.trendPlantNames;
+    return machine.size === 0 ? (n) => plc.read(n) : (n) => (machine.has(n) ? this.plant.read(n) : plc.read(n));
   }
 
   private requirePlc(): Plc {

@@ -6,6 +6,9 @@ import type { Plc } from '../engine/api';
 import { requirePlant } from '../plant/machines';
 import { PlantLoop, type PlantEvent, type PlantMap, type PlantSnapshot } from '../plant/loop';
 import type { PlantPoint } from '../plant/types';
+import type { Value } from '../model/iecTypes';
+import { plantNames, plantSpelling, type PlantName } from '../plant/values';
+import type { PlantWhyContext } from './plantWhy';
 
 /** Consequences a frame carries (the newest); the panel lists them. */
 const FRAME_EVENTS = 50;
@@ -71,6 +74,27 @@ export class SessionPlant {
 
   at(scan: number): PlantSnapshot | undefined {
     return this.loop?.at(scan);
+  }
+
+  /** The machine's readable names (`tank.level`, `tank.Pump`) for the watch, the trend and "Why?"; none without a machine. */
+  names(): PlantName[] {
+    return this.loop ? plantNames(this.loop.model) : [];
+  }
+
+  /** The machine's spelling of one of its names (`TANK.LEVEL` -> `tank.level`), or undefined. */
+  spelling(name: string): string | undefined {
+    return this.loop && plantSpelling(this.loop.model, name);
+  }
+
+  /** `tank.level` now (after the last step). */
+  read(name: string): Value {
+    return this.require().read(name);
+  }
+
+  /** What "Why?" needs of the machine, or undefined without one. */
+  whyContext(): PlantWhyContext | undefined {
+    const loop = this.loop;
+    return loop && { model: loop.model, points: loop.points, at: (scan) => loop.at(scan) };
   }
 
   /** For scenario replays in the simulator: the machine's loop, started over. */

@@ -23,7 +23,8 @@ export function resolveWatchName(
 ): WatchNameChoice {
   const t = text.trim().toUpperCase();
   if (!t) return { choices: [] };
-  const exact = names.find((n) => n.toUpperCase() === t);
+  // Spelt exactly first: names that differ only by case (a machine's `tank.Pump` and `tank.pump`) are both offered.
+  const exact = names.find((n) => n === text.trim()) ?? names.find((n) => n.toUpperCase() === t);
   if (exact) return { name: exact, choices: [] };
   if (!instances.length) return { choices: [] };
   const prefixes = instances.map((i) => `${i.toUpperCase()}.`);
@@ -62,9 +63,12 @@ export function completeWatchName(text: string, names: readonly string[], limit 
   const starts: string[] = [];
   const segment: string[] = [];
   const contains: string[] = [];
+  const typed = text.trim();
+  // The typed name itself is left out; a name spelt otherwise (`tank.Pump` for `tank.pump`) is another name.
+  const spelt = names.filter((n) => n.toUpperCase() === t);
   for (const n of names) {
     const u = n.toUpperCase();
-    if (u === t) continue;
+    if (u === t && (n === typed || spelt.length === 1)) continue;
     if (u.startsWith(t)) starts.push(n);
     else if (u.split(/[.[]/).some((s, i) => i > 0 && s.startsWith(t))) segment.push(n);
     else if (u.includes(t)) contains.push(n);

@@ -26,6 +26,12 @@ export const DEFAULT_TREND_SCANS = 500;
 export const MAX_TREND_SCANS = DEFAULT_HISTORY_SCANS;
 
 const sameName = (a: string, b: string) => a.toUpperCase() === b.toUpperCase();
+/**
+ * The same watched or trended name: in any case, but a machine's names (`tank.Pump`, the contactor,
+ * and `tank.pump`, the speed) are told apart by their spelling (src/plant/values.ts).
+ */
+const sameWatched = (plant: string | undefined) => (a: string, b: string) =>
+  a === b || (sameName(a, b) && !(plant !== undefined && a.toLowerCase().startsWith(`${plant}.`)));
 
 interface SentDocument {
   readonly project: Project;
@@ -306,13 +312,18 @@ export function createSimStore(transport: SimTransport): SimStore {
       pressInput: (name) => send({ type: 'write', name, input: { value: true } }),
       releaseInput: (name) => send({ type: 'write', name, input: { value: false } }),
       addWatch: (name) => {
-        if (get().watch.some((w) => sameName(w, name))) return;
+        const same = sameWatched(get().plant?.id);
+        if (get().watch.some((w) => same(w, name))) return;
         set({ watch: [...get().watch, name] });
       },
-      removeWatch: (name) => set({ watch: get().watch.filter((w) => !sameName(w, name)) }),
+      removeWatch: (name) => {
+        const same = sameWatched(get().plant?.id);
+        set({ watch: get().watch.filter((w) => !same(w, name)) });
+      },
       toggleTrend: (name) => {
         const { trendNames } = get();
-        const next = trendNames.some((n) => sameName(n, name)) ? trendNames.filter((n) => !sameName(n, name)) : [...trendNames, name];
+        const same = sameWatched(get().plant?.id);
+        const next = trendNames.some((n) => same(n, name)) ? trendNames.filter((n) => !same(n, name)) : [...trendNames, name];
         set({ trendNames: next, trend: emptyTrend(next), trendCapture: undefined });
         sendTrend();
       },

@@ -8,6 +8,7 @@ import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
 import { garageWrong } from '../../src/plant/garageExercise';
 import { openApp, useChromium } from './appPage';
+import { PlantPage } from './plantPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -15,63 +16,19 @@ let page: Page;
 let sim: SimPage;
 let errors: string[];
 
-interface PlantHandle {
-  getState(): {
-    timeMs: number;
-    plant?: {
-      id: string;
-      now: { scan: number; state: Record<string, number | boolean>; faults: string[] };
-      eventCount: number;
-    };
-    exportHistory(r: { format: 'trace'; names: string[] }): Promise<string>;
-  };
-}
-const plant = () =>
-  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().plant);
+let plants: PlantPage;
+const plant = () => plants.plant();
 const door = async () => (await plant())!.now.state;
-const simTime = () =>
-  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().timeMs);
-const trace = async (names: string[]) =>
-  (
-    await page.evaluate(
-      (n) =>
-        (window.rungsmith as unknown as { simStore: PlantHandle }).simStore
-          .getState()
-          .exportHistory({ format: 'trace', names: n }),
-      names,
-    )
-  )
-    .trim()
-    .split('\n')
-    .slice(1)
-    .map((r) => r.split(',').map(Number));
+const trace = (names: string[]) => plants.trace(names);
 const readout = (name: string) => page.getByTestId(`plant-q-${name}`).textContent();
 
 /** Runs, turns the key (a button on the drawing) until the program's `flag` is set, lets it spring back, pauses. */
 async function turnKey(key: 'KeyOpen' | 'KeyClose', flag: 'Opening' | 'Closing') {
-  await sim.button('run').click();
-  await sim.waitForMode('Running');
-  const button = page.getByTestId(`plant-op-${key}`);
-  await button.scrollIntoViewIfNeeded();
-  const box = (await button.boundingBox())!;
-  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-  await page.mouse.down();
-  await expect.poll(() => button.getAttribute('aria-pressed'), { timeout: 10_000 }).toBe('true');
-  await sim.waitForValue(flag, true);
-  await page.mouse.up();
-  await expect.poll(() => button.getAttribute('aria-pressed'), { timeout: 10_000 }).toBe('false');
-  await sim.button('pause').click();
-  await sim.waitForMode('Paused');
+  await plants.runHoldPause(key, flag);
 }
 
 /** Step N of `scans` scans (fast-forward on the virtual clock), waiting until they are done. */
-async function fastForward(scans: number) {
-  const from = await simTime();
-  await page.getByTestId('sim-step-count').fill(String(scans));
-  await sim.button('step-n').click();
-  await expect.poll(simTime, { timeout: 120_000 }).toBeGreaterThanOrEqual(from + scans * 100);
-  await sim.waitForMode('Paused');
-}
+const fastForward = (scans: number) => plants.fastForward(scans);
 
 /** The door opened fully on the key, then closed on it: one full cycle. */
 async function cycle() {
@@ -101,6 +58,7 @@ async function carWhileClosing() {
 beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
+  plants = new PlantPage(page, sim);
   await sim.openExample('Garage door (machine: garage)');
   await sim.tab('Plant');
   await page.getByTestId('sim-cycle').fill('100');

@@ -7,6 +7,7 @@ import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
 import { intersectionWrong } from '../../src/plant/intersectionExercise';
 import { openApp, useChromium } from './appPage';
+import { PlantPage } from './plantPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -14,58 +15,21 @@ let page: Page;
 let sim: SimPage;
 let errors: string[];
 
-interface PlantHandle {
-  getState(): {
-    scan: number;
-    plant?: {
-      id: string;
-      now: {
-        scan: number;
-        faults: string[];
-        operator: Record<string, boolean>;
-        state: { buttonMain: boolean };
-      };
-      events: { text: string }[];
-      eventCount: number;
-    };
-    exportHistory(r: { format: 'trace'; names: string[] }): Promise<string>;
-  };
-}
-const plant = () =>
-  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().plant);
-const simScan = () =>
-  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().scan);
+let plants: PlantPage;
+const plant = () => plants.plant<{ buttonMain: boolean }>();
 /** The trace of `names`, one row of numbers per recorded scan (scan, time, then the names). */
-const trace = async (names: string[]) =>
-  (
-    await page.evaluate(
-      (n) =>
-        (window.rungsmith as unknown as { simStore: PlantHandle }).simStore
-          .getState()
-          .exportHistory({ format: 'trace', names: n }),
-      names,
-    )
-  )
-    .trim()
-    .split('\n')
-    .slice(1)
-    .map((r) => r.split(',').map(Number));
+const trace = (names: string[]) => plants.trace(names);
 /** A quantity as the panel's readout shows it ("22.6 s" reads 22.6). */
 const readout = async (name: string) =>
   Number.parseFloat((await page.getByTestId(`plant-q-${name}`).locator('td').textContent())!);
 
 /** Step N of `scans` scans (the virtual clock: fast-forward), from a paused or stopped simulation. */
-async function fastForward(scans: number) {
-  const from = await simScan();
-  await page.getByTestId('sim-step-count').fill(String(scans));
-  await sim.button('step-n').click();
-  await expect.poll(simScan, { timeout: 120_000 }).toBeGreaterThanOrEqual(from + scans);
-  await sim.waitForMode('Paused');
-}
+const fastForward = (scans: number) => plants.fastForward(scans);
 
 beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
+  plants = new PlantPage(page, sim);
   await sim.openExample('Road intersection (machine: intersection)');
   await sim.tab('Plant');
   await page.getByTestId('sim-cycle').fill('100');

@@ -7,6 +7,7 @@ import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
 import { liftWrong } from '../../src/plant/exercises';
 import { openApp, useChromium } from './appPage';
+import { PlantPage } from './plantPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -14,50 +15,13 @@ let page: Page;
 let sim: SimPage;
 let errors: string[];
 
-interface PlantHandle {
-  getState(): {
-    timeMs: number;
-    plant?: {
-      id: string;
-      now: { scan: number; state: Record<string, number | boolean>; faults: string[] };
-      events: { text: string }[];
-      eventCount: number;
-    };
-    exportHistory(r: { format: 'trace'; names: string[] }): Promise<string>;
-  };
-}
-const plant = () =>
-  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().plant);
-const simTime = () =>
-  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().timeMs);
+let plants: PlantPage;
+const plant = () => plants.plant();
 /** The recorded scans' values of `names`, one row of numbers a scan (scan, time, then the names). */
-const trace = async (names: string[]) =>
-  (
-    await page.evaluate(
-      (n) =>
-        (window.rungsmith as unknown as { simStore: PlantHandle }).simStore
-          .getState()
-          .exportHistory({ format: 'trace', names: n }),
-      names,
-    )
-  )
-    .trim()
-    .split('\n')
-    .slice(1)
-    .map((r) => r.split(',').map(Number));
+const trace = (names: string[]) => plants.trace(names);
 
 /** While running: holds a call button on the drawing until the program has registered the call (its lamp lit). */
-async function call(floor: number) {
-  const button = page.getByTestId(`plant-op-Call${floor}`);
-  await button.scrollIntoViewIfNeeded();
-  const box = (await button.boundingBox())!;
-  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-  await page.mouse.down();
-  await expect.poll(() => button.getAttribute('aria-pressed'), { timeout: 10_000 }).toBe('true');
-  await sim.waitForValue(`CallLamp${floor}`, true);
-  await page.mouse.up();
-  await expect.poll(() => button.getAttribute('aria-pressed'), { timeout: 10_000 }).toBe('false');
-}
+const call = (floor: number) => plants.holdUntil(`Call${floor}`, `CallLamp${floor}`);
 
 /** Runs, presses the call buttons of `floors` one after the other, pauses, then Step N of `scans` scans (fast-forward). */
 async function callAndFastForward(floors: number[], scans: number) {
@@ -66,16 +30,13 @@ async function callAndFastForward(floors: number[], scans: number) {
   for (const f of floors) await call(f);
   await sim.button('pause').click();
   await sim.waitForMode('Paused');
-  const from = await simTime();
-  await page.getByTestId('sim-step-count').fill(String(scans));
-  await sim.button('step-n').click();
-  await expect.poll(simTime, { timeout: 120_000 }).toBeGreaterThanOrEqual(from + scans * 20);
-  await sim.waitForMode('Paused');
+  await plants.fastForward(scans);
 }
 
 beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
+  plants = new PlantPage(page, sim);
   await sim.openExample('Three-floor lift (machine: lift)');
   await sim.tab('Plant');
   await page.getByTestId('sim-cycle').fill('20');

@@ -7,6 +7,7 @@ import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
 import { mixerWrong } from '../../src/plant/mixerExercise';
 import { openApp, useChromium } from './appPage';
+import { PlantPage } from './plantPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -14,63 +15,20 @@ let page: Page;
 let sim: SimPage;
 let errors: string[];
 
-interface PlantHandle {
-  getState(): {
-    timeMs: number;
-    plant?: {
-      id: string;
-      now: { scan: number; state: Record<string, number | boolean>; faults: string[] };
-      events: { text: string }[];
-      eventCount: number;
-    };
-    exportHistory(r: { format: 'trace'; names: string[] }): Promise<string>;
-  };
-}
-const plant = () =>
-  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().plant);
-const simTime = () =>
-  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().timeMs);
-/** The trace of `names` as rows of numbers (scan, time, then the names' values). */
-const trace = async (names: string[]) =>
-  (
-    await page.evaluate(
-      (n) =>
-        (window.rungsmith as unknown as { simStore: PlantHandle }).simStore
-          .getState()
-          .exportHistory({ format: 'trace', names: n }),
-      names,
-    )
-  )
-    .trim()
-    .split('\n')
-    .slice(1)
-    .map((r) => r.split(',').map(Number));
+let plants: PlantPage;
+const plant = () => plants.plant();
+const trace = (names: string[]) => plants.trace(names);
 
-/** Runs, presses Start on the drawing until the program runs, releases it, pauses; then Step N of `scans` scans. */
+/** Runs, holds Start on the drawing until the program runs, releases it, pauses; then Step N of `scans` scans. */
 async function startAndFastForward(scans: number) {
-  await sim.button('run').click();
-  await sim.waitForMode('Running');
-  const start = page.getByTestId('plant-op-Start');
-  await start.scrollIntoViewIfNeeded();
-  const box = (await start.boundingBox())!;
-  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-  await page.mouse.down();
-  await expect.poll(() => start.getAttribute('aria-pressed'), { timeout: 10_000 }).toBe('true');
-  await sim.waitForValue('Running', true);
-  await page.mouse.up();
-  await expect.poll(() => start.getAttribute('aria-pressed'), { timeout: 10_000 }).toBe('false');
-  await sim.button('pause').click();
-  await sim.waitForMode('Paused');
-  const from = await simTime();
-  await page.getByTestId('sim-step-count').fill(String(scans));
-  await sim.button('step-n').click();
-  await expect.poll(simTime, { timeout: 120_000 }).toBeGreaterThanOrEqual(from + scans * 100);
-  await sim.waitForMode('Paused');
+  await plants.runHoldPause('Start', 'Running');
+  await plants.fastForward(scans);
 }
 
 beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
+  plants = new PlantPage(page, sim);
   await sim.openExample('Batch mixer (machine: mixer)');
   await sim.tab('Plant');
   await page.getByTestId('sim-cycle').fill('100');

@@ -7,6 +7,7 @@ import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
 import { tankWrong } from '../../src/plant/exercises';
 import { openApp, useChromium } from './appPage';
+import { PlantPage } from './plantPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -14,63 +15,20 @@ let page: Page;
 let sim: SimPage;
 let errors: string[];
 
-interface PlantHandle {
-  getState(): {
-    scan: number;
-    timeMs: number;
-    mode: string;
-    plant?: {
-      id: string;
-      now: {
-        scan: number;
-        state: Record<string, number | boolean>;
-        faults: string[];
-        operator: Record<string, boolean>;
-      };
-      events: { text: string }[];
-      eventCount: number;
-    };
-    exportHistory(r: { format: 'trace'; names: string[] }): Promise<string>;
-  };
-}
-const plant = () =>
-  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().plant);
-const simTime = () =>
-  page.evaluate(() => (window.rungsmith as unknown as { simStore: PlantHandle }).simStore.getState().timeMs);
-const trace = (names: string[]) =>
-  page.evaluate(
-    (n) =>
-      (window.rungsmith as unknown as { simStore: PlantHandle }).simStore
-        .getState()
-        .exportHistory({ format: 'trace', names: n }),
-    names,
-  );
+let plants: PlantPage;
+const plant = () => plants.plant();
+const trace = (names: string[]) => plants.traceText(names);
 
 /** Runs, presses Start on the drawing until the program runs, releases it, pauses; then Step N of `scans` scans (fast-forward). */
 async function startAndFastForward(scans: number) {
-  await sim.button('run').click();
-  await sim.waitForMode('Running');
-  const start = page.getByTestId('plant-op-Start');
-  await start.scrollIntoViewIfNeeded();
-  const box = (await start.boundingBox())!;
-  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-  await page.mouse.down();
-  await expect.poll(() => start.getAttribute('aria-pressed'), { timeout: 10_000 }).toBe('true');
-  await sim.waitForValue('Running', true);
-  await page.mouse.up();
-  await expect.poll(() => start.getAttribute('aria-pressed'), { timeout: 10_000 }).toBe('false');
-  await sim.button('pause').click();
-  await sim.waitForMode('Paused');
-  const from = await simTime();
-  await page.getByTestId('sim-step-count').fill(String(scans));
-  await sim.button('step-n').click();
-  await expect.poll(simTime, { timeout: 120_000 }).toBeGreaterThanOrEqual(from + scans * 100);
-  await sim.waitForMode('Paused');
+  await plants.runHoldPause('Start', 'Running');
+  await plants.fastForward(scans);
 }
 
 beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
+  plants = new PlantPage(page, sim);
   await sim.openExample('Tank level control (machine: tank)');
   await sim.tab('Plant');
   await page.getByTestId('sim-cycle').fill('100');

@@ -1,23 +1,89 @@
 // The machines on the command line (issue 26): `rungsmith test` runs the exercise's scenario as CI
 // does, `rungsmith simulate --plant` traces the machine, `rungsmith plants` lists the machines.
 import { describe, expect, test } from 'vitest';
+import type { Project } from '../../src/model/project';
+import { boxesReference, boxesWrong } from '../../src/plant/boxesExercise';
 import { tankReference, tankWrong } from '../../src/plant/exercises';
+import { garageReference, garageWrong } from '../../src/plant/garageExercise';
+import { intersectionReference, intersectionWrong } from '../../src/plant/intersectionExercise';
+import { liftReference, liftWrong } from '../../src/plant/liftExercise';
+import { mixerReference, mixerWrong } from '../../src/plant/mixerExercise';
 import { rungsmith } from '../cli/memoryIo';
 
+/** Each machine's exercise as CI runs it: its scenario, the scans it takes, where the wrong solution fails. */
+const EXERCISES: {
+  id: string;
+  reference: () => Project;
+  wrong: () => Project;
+  scenario: string;
+  scans: number;
+  failure: string;
+}[] = [
+  {
+    id: 'tank',
+    reference: tankReference,
+    wrong: tankWrong,
+    scenario: 'Tank held between the switches for 5 minutes',
+    scans: 3000,
+    failure: 'the tank overflowed at scan 576 (57.50 s)',
+  },
+  {
+    id: 'boxes',
+    reference: boxesReference,
+    wrong: boxesWrong,
+    scenario: 'Ten boxes sorted by size',
+    scans: 482,
+    failure: 'box 2 (large) ran into the small-box bin at scan 122 (12.10 s)',
+  },
+  {
+    id: 'intersection',
+    reference: intersectionReference,
+    wrong: intersectionWrong,
+    scenario: 'Side road and pedestrians served for 5 minutes, no conflict',
+    scans: 3000,
+    failure: 'conflicting signals: main road yellow with side road green at scan 201 (20.00 s)',
+  },
+  {
+    id: 'garage',
+    reference: garageReference,
+    wrong: garageWrong,
+    scenario: 'Garage door: three cycles on the key, reversing for a car',
+    scans: 1000,
+    failure: 'the door came down on the car in the doorway at scan 499 (49.80 s)',
+  },
+  {
+    id: 'mixer',
+    reference: mixerReference,
+    wrong: mixerWrong,
+    scenario: 'Three good batches',
+    scans: 3300,
+    failure: 'a batch overheated above 80 °C and is spoiled at scan 819 (81.80 s)',
+  },
+  {
+    id: 'lift',
+    reference: liftReference,
+    wrong: liftWrong,
+    scenario: 'Six calls answered, level with the floors',
+    scans: 5000,
+    failure: 'the car moved with the door 100 % open at scan 528 (10.54 s)',
+  },
+];
+
 describe('rungsmith and the machines', () => {
-  test('test: the reference solution passes its scenario, the wrong one fails where the tank overflows', () => {
-    const ok = rungsmith(['test', 'tank.json'], { 'tank.json': JSON.stringify(tankReference()) });
-    expect(ok.code).toBe(0);
-    expect(ok.out).toContain('PASS Tank held between the switches for 5 minutes (3000 scans)');
-    const bad = rungsmith(['test', 'tank.json', '--junit', 'out.xml'], {
-      'tank.json': JSON.stringify(tankWrong()),
-    });
-    expect(bad.code).toBe(1);
-    expect(bad.out).toContain(
-      'FAIL Tank held between the switches for 5 minutes: the tank overflowed at scan 576 (57.50 s)',
-    );
-    expect(bad.files.get('out.xml')).toContain('failure message="the tank overflowed at scan 576 (57.50 s)"');
-  });
+  test.each(EXERCISES)(
+    'test ($id): the reference solution passes its scenario, the wrong one fails where it goes wrong, in the JUnit file too',
+    ({ id, reference, wrong, scenario, scans, failure }) => {
+      const ok = rungsmith(['test', `${id}.json`], { [`${id}.json`]: JSON.stringify(reference()) });
+      expect(ok.code).toBe(0);
+      expect(ok.out).toContain(`PASS ${scenario} (${scans} scans)`);
+      const bad = rungsmith(['test', `${id}.json`, '--junit', 'out.xml'], {
+        [`${id}.json`]: JSON.stringify(wrong()),
+      });
+      expect(bad.code).toBe(1);
+      expect(bad.out).toContain(`FAIL ${scenario}: ${failure}`);
+      expect(bad.files.get('out.xml')).toContain(`failure message="${failure}"`);
+    },
+  );
 
   test('simulate --plant: the machine in the trace, its faults and controls as stimulus columns, consequences on stderr', () => {
     const r = rungsmith(

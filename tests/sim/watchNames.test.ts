@@ -55,3 +55,14 @@ describe('completion as a name is typed (issue 24)', () => {
     expect(completeWatchName('  ', READABLE)).toEqual([]);
   });
 });
+
+describe("a machine's names that differ only by case", () => {
+  const names = ['Pump', 'tank.level', 'tank.pump', 'tank.Pump', 'tank.HighLevel'];
+  test('completion offers both spellings, and the exact one resolves to itself', () => {
+    expect(completeWatchName('tank.p', names)).toEqual(['tank.pump', 'tank.Pump']);
+    expect(completeWatchName('tank.pump', names)).toEqual(['tank.Pump']);
+    expect(resolveWatchName('tank.Pump', names, []).name).toBe('tank.Pump');
+    expect(resolveWatchName('tank.pump', names, []).name).toBe('tank.pump');
+    expect(completeWatchName('tank.', names)).toEqual(['tank.HighLevel', 'tank.level', 'tank.pump', 'tank.Pump']);
+  });
+});

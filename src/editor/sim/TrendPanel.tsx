@@ -17,6 +17,7 @@ import { trendImage } from './trendPng';
 import { cursorReadout, nearestIndex, trendCsv } from './trendTools';
 import { useConfigurationInstances, useWatchCandidates } from './useWatchCandidates';
 import { VariablePicker } from './VariablePicker';
+import { usePlantCandidates } from '../plant/plantWatch';
 import './sim.css';
 
 const selectTrend = (s: SimState) => s.trend;
@@ -37,7 +38,10 @@ export function TrendPanel() {
   const live = useSim(selectTrend);
   const capture = useSim(selectCapture);
   const history = useSim(selectHistory);
-  const candidates = useWatchCandidates();
+  const readable = useWatchCandidates();
+  const machine = usePlantCandidates();
+  // The program's names, then the machine's (`tank.level`).
+  const candidates = useMemo(() => [...readable, ...machine], [readable, machine]);
   const instances = useConfigurationInstances();
   const [capacityText, setCapacityText] = useState(String(capacity));
   const [capacityError, setCapacityError] = useState<string>();
@@ -48,15 +52,17 @@ export function TrendPanel() {
   // What is drawn: a frozen picture, else the trigger's capture, else the live window.
   const shown: TrendBuffer = frozen ?? capture?.samples ?? live;
   const signals = useMemo<TrendSignal[]>(
-    () => shown.names.map((name) => ({ name, type: candidates.find((t) => t.name.toUpperCase() === name.toUpperCase())?.type ?? 'LREAL' })),
+    () => shown.names.map((name) => ({ name, type: (candidates.find((t) => t.name === name) ?? candidates.find((t) => t.name.toUpperCase() === name.toUpperCase()))?.type ?? 'LREAL' })),
     [shown.names, candidates],
   );
   const triggerTime = capture && !frozen ? capture.samples.timesMs[capture.triggerIndex] : undefined;
   const marks = useMemo<TrendMarks>(() => ({ ...cursors, trigger: triggerTime }), [cursors, triggerTime]);
 
   const add = (text: string) => {
-    const known = candidates.find((c) => c.name.toUpperCase() === text.trim().toUpperCase());
-    if (known && !names.some((n) => n.toUpperCase() === known.name.toUpperCase())) sim.getState().toggleTrend(known.name);
+    const typed = text.trim();
+    // Spelt exactly first: `tank.Pump` (the contactor) is not `tank.pump` (its speed).
+    const known = candidates.find((c) => c.name === typed) ?? candidates.find((c) => c.name.toUpperCase() === typed.toUpperCase());
+    if (known && !names.includes(known.name)) sim.getState().toggleTrend(known.name);
   };
   const historyScans = history ? history.last - history.first + 1 : undefined;
   const commitCapacity = (text = capacityText) => {

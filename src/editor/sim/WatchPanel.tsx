@@ -17,6 +17,8 @@ import { useConfigurationInstances, useWatchCandidates } from './useWatchCandida
 import { VariablePicker } from './VariablePicker';
 import { preparedValues } from './preparedValues';
 import { aggregateCandidates, enumText, leafCount, modelLeaf, watchTree, type WatchNode } from './watchTree';
+import { plantNameInfo, plantWatchText, usePlantCandidates } from '../plant/plantWatch';
+import type { PlantName } from '../../plant/values';
 import './sim.css';
 
 const selectWatch = (s: SimState) => s.watch;
@@ -29,12 +31,14 @@ export function WatchPanel() {
   const readable = useWatchCandidates();
   const instances = useConfigurationInstances();
   const project = useDocument(selectProject);
-  // Readable names, then the struct/array variables (watched as trees of their members).
-  const candidates = useMemo(() => [...readable, ...aggregateCandidates(project, readable)], [readable, project]);
+  const machine = usePlantCandidates();
+  // Readable names, then the struct/array variables (watched as trees of their members), then the machine's (`tank.level`).
+  const candidates = useMemo(() => [...readable, ...aggregateCandidates(project, readable), ...machine], [readable, project, machine]);
   const add = (text: string) => {
     const name = text.trim();
     if (!name) return;
-    const known = candidates.find((c) => c.name.toUpperCase() === name.toUpperCase());
+    // Spelt exactly first: `tank.Pump` (the contactor) is not `tank.pump` (its speed).
+    const known = candidates.find((c) => c.name === name) ?? candidates.find((c) => c.name.toUpperCase() === name.toUpperCase());
     sim.getState().addWatch(known?.name ?? name);
   };
   return (
@@ -58,6 +62,8 @@ export function WatchPanel() {
             {watch.map((name) => {
               const variable = readable.find((c) => c.name.toUpperCase() === name.toUpperCase());
               const members = variable ? [] : watchTree(name, readable);
+              const onMachine = variable || members.length > 0 ? undefined : plantNameInfo(project, name);
+              if (onMachine) return <PlantWatchRow key={name} name={name} info={onMachine} />;
               return members.length > 0 ? (
                 <WatchGroup key={name} node={{ path: name, label: name, children: members }} depth={0}
                   type={candidates.find((c) => c.name.toUpperCase() === name.toUpperCase())?.type} />
@@ -69,6 +75,31 @@ export function WatchPanel() {
         </table>
       )}
     </div>
+  );
+}
+
+/**
+ * A name of the machine (`tank.level`, `tank.Pump`): its value live or at the recorded scan viewed,
+ * trendable; the machine works it out, so it is neither written nor forced here (operate the
+ * machine's controls, set its faults, in the Plant panel).
+ */
+function PlantWatchRow({ name, info }: { name: string; info: PlantName }) {
+  const sim = useSimStore();
+  const value = useSim((s) => plantWatchText(s, name));
+  const inTrend = useSim((s) => s.trendNames.includes(name));
+  return (
+    <tr data-testid={`watch-row-${name}`} className="rs-watch-machine">
+      <td title={`${info.comment} (the machine's ${info.kind === 'quantity' ? 'quantity' : info.kind})`}>{name}</td>
+      <td>{info.type}</td>
+      <td data-testid="watch-value">{value ?? '—'}</td>
+      <td className="rs-sim-unit">machine</td>
+      <td className="rs-sim-actions">
+        <label className="rs-sim-check" title="Show in the trend">
+          <input type="checkbox" checked={inTrend} onChange={() => sim.getState().toggleTrend(name)} /> Trend
+        </label>
+        <button type="button" className="rs-sim-icon" aria-label={`Stop watching ${name}`} onClick={() => sim.getState().removeWatch(name)}>×</button>
+      </td>
+    </tr>
   );
 }
 

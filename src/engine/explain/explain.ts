@@ -53,12 +53,18 @@ export interface Explanation {
   readonly links: readonly ExplainLink[];
   /** For a coil: each path from the left rail and where it was blocked. */
   readonly paths?: readonly PathReport[];
+  /**
+   * The located variables explained (`HighLevel` at `%IX0.3`): the simulator adds what drives an
+   * input from outside or what an output drives (a machine in closed loop, issue 26).
+   */
+  readonly io?: readonly { readonly name: string; readonly location: string }[];
 }
 
 class Builder {
   readonly lines: string[] = [];
   readonly marks: ExplainMark[] = [];
   readonly links: ExplainLink[] = [];
+  readonly io: { name: string; location: string }[] = [];
   private readonly linked = new Set<string>();
   constructor(
     readonly program: CompiledProgram,
@@ -293,6 +299,7 @@ function explainWriters(b: Builder, name: string, subject?: { network: number; e
   const last = wrote[wrote.length - 1];
   const varName = a.kind === 'var' || a.kind === 'bit' ? a.v.name : name;
   const forced = b.view.forced?.has(varName.toUpperCase());
+  if (a.kind === 'var' && a.v.locationText && !b.io.some((x) => x.name === varName)) b.io.push({ name: varName, location: a.v.locationText });
   if (forced) b.lines.push(`${varName} is forced: the program's writes do not change it.`);
   if (last) {
     b.mark(last.network, last.arc.element, 'writer');
@@ -398,7 +405,7 @@ export function explain(program: CompiledProgram, pou: Pou, view: ScanView, targ
       if (!on) analysePaths(b, target.network, arc.inNets[0]!, sym);
     }
   }
-  return { scan: view.scan, target, title, lines: b.lines, marks: b.marks, links: b.links, ...(paths ? { paths } : {}) };
+  return { scan: view.scan, target, title, lines: b.lines, marks: b.marks, links: b.links, ...(paths ? { paths } : {}), ...(b.io.length ? { io: b.io } : {}) };
 }
 
 function changeOf(b: Builder, name: string, target: ExplainTarget): void {

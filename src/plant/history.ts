@@ -1,0 +1,184 @@
+// The machine's history (issue 26): the machine as it was after every recorded scan, kept compact
+// and exact. Per scan only what the step was given is kept: when it ended (PLC time), each BOOL
+// actuator and operator control and each fault as one bit, each INT actuator as a number. Every
+// CHUNK scans the state before the chunk's first step is kept whole (a keyframe); the state after
+// any scan is worked out again by replaying the model's `step` from that keyframe with the recorded
+// drive, times and faults. The model is deterministic (docs/PLANTS.md), so the replayed state is
+// the state the machine had, to the bit.
+import type { Value } from '../model/iecTypes';
+import type { PlantSnapshot } from './loop';
+import type { PlantModel, PlantPoint } from './types';
+
+/** Scans per keyframe: a seek replays at most CHUNK - 1 steps. */
+export const PLANT_HISTORY_CHUNK = 256;
+
+interface Chunk {
+  readonly firstScan: number;
+  /** The state before the chunk's first step, and the PLC time it had reached. */
+  readonly state: unknown;
+  readonly timeMs: number;
+  count: number;
+  /** PLC time the machine reached after each step. */
+  readonly times: Float64Array;
+  /** `words` 32-bit words per scan: BOOL actuators, operator controls, faults, one bit each. */
+  readonly bits: Uint32Array;
+  /** INT actuators, one number each per scan. */
+  readonly ints: Float64Array;
+}
+
+/** Where one drive value or fault sits in a scan's record. */
+interface Slot {
+  readonly name: string;
+  readonly bit: number;
+}
+
+export class PlantHistory {
+  private chunks: Chunk[] = [];
+  /** The arrays of the last chunk dropped, used again for the next one (no allocation in the steady state). */
+  private spare: Pick<Chunk, 'times' | 'bits' | 'ints'> | undefined;
+  private total = 0;
+  /** BOOL actuators and operator controls (bits), then faults (bits); INT actuators (numbers). */
+  private readonly boolDrive: Slot[] = [];
+  private readonly intDrive: string[] = [];
+  private readonly faultBits: Slot[] = [];
+  private readonly words: number;
+  private readonly actuators: readonly PlantPoint[];
+  private readonly operators: readonly PlantPoint[];
+
+  constructor(
+    private readonly model: PlantModel,
+    points: readonly PlantPoint[],
+    /** At least this many of the latest scans are kept (whole chunks are dropped). */
+    private readonly keep: number,
+    private readonly chunk = PLANT_HISTORY_CHUNK,
+  ) {
+    let bit = 0;
+    this.actuators = points.filter((p) => p.kind === 'actuator');
+    this.operators = points.filter((p) => p.kind === 'operator');
+    for (const p of [...this.actuators, ...this.operators])
+      if (p.type === 'BOOL') this.boolDrive.push({ name: p.name, bit: bit++ });
+      else this.intDrive.push(p.name);
+    for (const f of model.faults) this.faultBits.push({ name: f.id, bit: bit++ });
+    this.words = Math.max(1, Math.ceil(bit / 32));
+  }
+
+  clear(): void {
+    this.chunks = [];
+    this.total = 0;
+  }
+
+  get length(): number {
+    return this.total;
+  }
+
+  /** A scan's record: `words` words of bits and one number per INT actuator, filled by the loop (`bitOf`, `intOf`, `faultBitOf`). */
+  newRecord(): { readonly bits: Uint32Array; readonly ints: Float64Array } {
+    return { bits: new Uint32Array(this.words), ints: new Float64Array(this.intDrive.length) };
+  }
+
+  /** The bit of a BOOL actuator or operator control in a record, -1 for another point. */
+  bitOf(name: string): number {
+    return this.boolDrive.find((s) => s.name === name)?.bit ?? -1;
+  }
+
+  /** The number of an INT actuator in a record, -1 for another point. */
+  intOf(name: string): number {
+    return this.intDrive.indexOf(name);
+  }
+
+  faultBitOf(id: string): number {
+    return this.faultBits.find((s) => s.name === id)?.bit ?? -1;
+  }
+
+  /**
+   * Records a step: `before` is the state and PLC time it started from, `record` what it was given
+   * (drive and faults, filled as `newRecord` says), `timeMs` the time it reached after scan `scan`.
+   */
+  push(
+    scan: number,
+    before: unknown,
+    beforeMs: number,
+    record: { readonly bits: Uint32Array; readonly ints: Float64Array },
+    timeMs: number,
+  ): void {
+    if (this.keep <= 0) return;
+    let c = this.chunks[this.chunks.length - 1];
+    if (!c || c.count === this.chunk || c.firstScan + c.count !== scan) {
+      // Every slot of the arrays is written before it is read: a dropped chunk's serve as they are.
+      const arrays = this.spare ?? {
+        times: new Float64Array(this.chunk),
+        bits: new Uint32Array(this.chunk * this.words),
+        ints: new Float64Array(this.chunk * this.intDrive.length),
+      };
+      this.spare = undefined;
+      c = { firstScan: scan, state: before, timeMs: beforeMs, count: 0, times: arrays.times, bits: arrays.bits, ints: arrays.ints };
+      this.chunks.push(c);
+    }
+    const i = c.count;
+    c.times[i] = timeMs;
+    const words = this.words;
+    if (words === 1) c.bits[i] = record.bits[0]!;
+    else c.bits.set(record.bits, i * words);
+    if (record.ints.length > 0) c.ints.set(record.ints, i * record.ints.length);
+    c.count++;
+    this.total++;
+    // The oldest chunk goes, whole, once the others hold `keep` scans.
+    while (this.total - this.chunks[0]!.count >= this.keep) {
+      const dropped = this.chunks.shift()!;
+      this.total -= dropped.count;
+      if (dropped.times.length === this.chunk) this.spare = dropped;
+    }
+  }
+
+  /** The oldest scan kept, if any. */
+  get firstScan(): number | undefined {
+    return this.chunks[0]?.firstScan;
+  }
+
+  /** The machine after scan `scan`, replayed from its chunk's keyframe; undefined when not kept. */
+  at(scan: number): PlantSnapshot | undefined {
+    const c = this.chunkOf(scan);
+    if (!c) return undefined;
+    const last = scan - c.firstScan;
+    let state = c.state;
+    let time = c.timeMs;
+    // One drive record and one fault set refilled for every step (valid only during the call, as in the loop).
+    const drive: Record<string, Value> = {};
+    const faults = new Set<string>();
+    for (let i = 0; i <= last; i++) {
+      this.fill(c, i, drive, faults);
+      const t = c.times[i]!;
+      state = this.model.step(state, drive, Math.max(0, t - time), faults);
+      time = t;
+    }
+    const operator: Record<string, boolean> = {};
+    for (const p of this.operators) operator[p.name] = drive[p.name] === true;
+    const shown: Record<string, Value> = {};
+    for (const p of this.actuators) shown[p.name] = drive[p.name]!;
+    return { scan, timeMs: time, state, faults: [...faults].sort(), operator, drive: shown };
+  }
+
+  private chunkOf(scan: number): Chunk | undefined {
+    let lo = 0;
+    let hi = this.chunks.length - 1;
+    while (lo <= hi) {
+      const mid = (lo + hi) >> 1;
+      const c = this.chunks[mid]!;
+      if (scan < c.firstScan) hi = mid - 1;
+      else if (scan >= c.firstScan + c.count) lo = mid + 1;
+      else return c;
+    }
+    return undefined;
+  }
+
+  /** Scan `i` of chunk `c`: its drive and faults into the records given. */
+  private fill(c: Chunk, i: number, drive: Record<string, Value>, faults: Set<string>): void {
+    const w = i * this.words;
+    const bits = c.bits;
+    for (const s of this.boolDrive) drive[s.name] = (bits[w + (s.bit >>> 5)]! & (1 << (s.bit & 31))) !== 0;
+    const n = this.intDrive.length;
+    for (let k = 0; k < n; k++) drive[this.intDrive[k]!] = c.ints[i * n + k]!;
+    faults.clear();
+    for (const s of this.faultBits) if ((bits[w + (s.bit >>> 5)]! & (1 << (s.bit & 31))) !== 0) faults.add(s.name);
+  }
+}
