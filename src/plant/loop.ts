@@ -197,6 +197,18 @@ export class PlantLoop {
   }
 
   /**
+   * The machine is taken away (None chosen, or another machine or wiring): the inputs it drove
+   * fall to FALSE / 0, as wires that are cut, instead of keeping the machine's last values (a
+   * limit switch left ON with nothing behind it). A forced input keeps its force. No-op unbound.
+   */
+  release(): void {
+    for (const w of this.declared) if (w.io.read() !== (w.bool ? false : 0)) w.io.write(w.bool ? false : 0);
+    this.declared = [];
+    this.outputs = [];
+    this.bound = undefined;
+  }
+
+  /**
    * Attaches a (new) PLC: which of the machine's points its program declares. Points it does not
    * declare are simply not wired. The PLC gets the machine's inputs now, for its next scan.
    */
@@ -237,6 +249,9 @@ export class PlantLoop {
   /** The program's scan `scan` ended; `scanTimeMs` is when it started, `cycleMs` the scan cycle. */
   afterScan(scan: number, scanTimeMs: number, cycleMs: number): readonly PlantEvent[] {
     const target = scanTimeMs + cycleMs;
+    // A machine that has not stepped yet starts at this scan's PLC time: attached to a program
+    // already at scan 24 (2.4 s), its first step is one cycle, not 2.5 s at once.
+    if (this.scan === 0) this.timeMs = scanTimeMs;
     const dt = Math.max(0, target - this.timeMs);
     const before = this.state;
     const drive = this.drive();

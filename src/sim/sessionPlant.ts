@@ -32,6 +32,7 @@ export class SessionPlant {
   /** Attaches the machine (`null`: none). A new machine or map starts from its initial state. */
   configure(config: { readonly id: string; readonly map?: PlantMap } | null, plc: Plc | undefined): void {
     if (!config) {
+      this.loop?.release();
       this.loop = undefined;
       return;
     }
@@ -43,6 +44,7 @@ export class SessionPlant {
       JSON.stringify(this.loop.points) === JSON.stringify(loop.points)
     )
       return;
+    this.loop?.release();
     this.loop = loop;
     if (plc) loop.bind(plc);
   }

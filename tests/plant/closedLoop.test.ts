@@ -4,6 +4,8 @@
 import { describe, expect, test } from 'vitest';
 import { tankReference, tankWrong } from '../../src/plant/exercises';
 import { rungsmith } from '../cli/memoryIo';
+import { PlantLoop } from '../../src/plant/loop';
+import { tank } from '../../src/plant/tank';
 import { SimHarness } from '../sim/harness';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import type { TankState } from '../../src/plant/tank';
@@ -104,5 +106,42 @@ describe('the tank in the simulation session', () => {
     expect(h.frame.plant!.now.faults).toEqual(['pump_dead']);
     expect(() => h.session.handle({ type: 'plantFault', id: 'boiler_burst', active: true })).not.toThrow();
     expect(lastOf(h.of('error')).message).toMatch(/tank has no fault "boiler_burst"; it has low_stuck_off/);
+  });
+});
+
+describe('taking the machine away', () => {
+  test("None chosen while paused: the inputs the machine drove fall to FALSE / 0, as cut wires (a switch does not stay ON)", () => {
+    const h = new SimHarness().send(
+      { type: 'setCycle', cycleMs: 100 },
+      { type: 'setPlant', plant: { id: 'tank' } },
+      { type: 'load', project: tankReference() },
+    );
+    h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'step', scans: 2 }).settle();
+    h.send({ type: 'plantOperator', name: 'Start', value: false }, { type: 'step', scans: 300 });
+    while (h.frame.scan < 302) h.settle();
+    // Filling from 100 L: by now above the low switch (200 L), and Level reads the litres.
+    expect(h.value('LowLevel')).toBe(true);
+    expect(h.value('Level')).toBeGreaterThan(200);
+    h.send({ type: 'setPlant', plant: null }, { type: 'step', scans: 1 });
+    while (h.frame.scan < 303) h.settle();
+    expect(h.frame.plant).toBeUndefined();
+    expect(h.value('LowLevel')).toBe(false);
+    expect(h.value('Level')).toBe(0);
+  });
+});
+
+describe('attaching the machine to a program already running', () => {
+  test('attached after scan 24 (2.4 s), its first step is one cycle of PLC time, not 2.5 s at once', () => {
+    const io = { outputs: () => ({ '%QX0.0': true, '%QX0.1': true }), setInputs: () => undefined };
+    const joined = new PlantLoop(tank);
+    joined.bind(io);
+    joined.afterScan(25, 2400, 100);
+    const fromStart = new PlantLoop(tank);
+    fromStart.bind(io);
+    fromStart.afterScan(1, 0, 100);
+    // The pump runs up over 0.5 s: after one 0.1 s step both are at the same speed (%), well short of full.
+    expect(joined.read('pump')).toBe(fromStart.read('pump'));
+    expect(joined.read('pump')).toBeLessThan(100);
+    expect(joined.snapshot()).toMatchObject({ scan: 25, timeMs: 2500 });
   });
 });
