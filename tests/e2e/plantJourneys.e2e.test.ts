@@ -154,7 +154,7 @@ test('a new project against the garage door: choose it, declare its I/O, draw a 
   expect(errors).toEqual([]);
 });
 
-test('the machine and its rewired point survive File > Export PLCopen XML and Import PLCopen XML…', async () => {
+test('the machine and its rewired point survive File > Export PLCopen XML and Import PLCopen XML…; Declare the machine\'s I/O then moves the variable to the new address', async () => {
   // The project of the test before: the garage, MotorUp rewired to %QX1.5.
   await expect.poll(docPlant).toEqual({ id: 'garage', map: { MotorUp: '%QX1.5' } });
   const editor = new EditorPage(page);
@@ -174,5 +174,12 @@ test('the machine and its rewired point survive File > Export PLCopen XML and Im
   await expect.poll(docPlant).toEqual({ id: 'garage', map: { MotorUp: '%QX1.5' } });
   await sim.tab('Plant');
   await expect.poll(() => page.getByTestId('plant-address-MotorUp').inputValue()).toBe('%QX1.5');
+  // Declare the machine's I/O moves the variable to the rewired address, as one undo step.
+  await expect.poll(() => page.getByTestId('plant-wired-MotorUp').textContent()).toBe('not wired: MotorUp is at %QX0.0');
+  await page.getByTestId('plant-declare').click();
+  await expect.poll(() => page.getByTestId('plant-declared').textContent()).toBe('Moved MotorUp from %QX0.0 to %QX1.5.');
+  await expect.poll(() => page.getByTestId('plant-wired-MotorUp').textContent()).toBe('MotorUp');
+  await draw.menu('Edit', 'Undo');
+  await expect.poll(() => page.getByTestId('plant-wired-MotorUp').textContent()).toBe('not wired: MotorUp is at %QX0.0');
   expect(errors).toEqual([]);
 });

@@ -375,12 +375,22 @@ function IoMap({
       setDeclared('The project has no PROGRAM to declare the I/O in.');
       return;
     }
-    const added = s.addVariables(plantVariables(model, map), "Declare the machine's I/O", pou.id);
-    setDeclared(
-      added.length
-        ? `Declared ${added.length} variable${added.length === 1 ? '' : 's'} in ${pou.name}: ${added.join(', ')}.`
-        : `Every point is declared in ${pou.name} already.`,
-    );
+    // A point rewired in the map whose variable (same name) is still at its old address moves with
+    // it, in the same undo step as the variables added.
+    const moves = points.flatMap((p) => {
+      const v = pou.variables.find((x) => x.name.toUpperCase() === p.name.toUpperCase());
+      return v?.location && canonical(v.location) !== canonical(p.address) ? [{ name: v.name, from: v.location, to: p.address }] : [];
+    });
+    const added = s.batch("Declare the machine's I/O", () => {
+      const names = s.addVariables(plantVariables(model, map), "Declare the machine's I/O", pou.id);
+      for (const m of moves) s.updateVariable(m.name, { location: m.to }, pou.id);
+      return names;
+    });
+    const said = [
+      added.length ? `Declared ${added.length} variable${added.length === 1 ? '' : 's'} in ${pou.name}: ${added.join(', ')}.` : '',
+      moves.length ? `Moved ${moves.map((m) => `${m.name} from ${m.from} to ${m.to}`).join(', ')}.` : '',
+    ].filter(Boolean);
+    setDeclared(said.length ? said.join(' ') : `Every point is declared in ${pou.name} already.`);
   };
   return (
     <div className="rs-plant-io">
