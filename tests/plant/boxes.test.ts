@@ -24,6 +24,7 @@ import type { Value } from '../../src/model/iecTypes';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
+import { cliTrace, workerTrace } from './traces';
 
 const none: ReadonlySet<string> = new Set();
 type Sensed = Record<string, Value>;
@@ -339,25 +340,15 @@ describe('the box sorter in the simulation session', () => {
     h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'step', scans: 2 }).settle();
     h.send({ type: 'plantOperator', name: 'Start', value: false }, { type: 'step', scans: 1998 });
     while (h.frame.scan < 2000) h.settle();
-    h.send({ type: 'historyExport', id: 1, format: 'trace', names: WATCH });
-    const worker = lastOf(h.of('historyText')).text.trim().split('\n');
-    const cli = rungsmith(
-      [
-        'simulate',
-        'boxes.json',
-        '--plant',
-        'boxes',
-        '--inputs',
-        'stim.csv',
-        '--scans',
-        '2000',
-        '--cycle',
-        '100ms',
-        '--watch',
-        [...WATCH, 'boxes.sorted', 'boxes.pusher'].join(','),
-      ],
-      { 'boxes.json': JSON.stringify(boxesReference()), 'stim.csv': 'scan,boxes.Start\n1,1\n3,0\n' },
-    );
+    const worker = workerTrace(h, WATCH);
+    const cli = cliTrace({
+      project: boxesReference(),
+      plant: 'boxes',
+      stimulus: 'scan,boxes.Start\n1,1\n3,0\n',
+      scans: 2000,
+      cycle: '100ms',
+      watch: [...WATCH, 'boxes.sorted', 'boxes.pusher'],
+    });
     expect(cli.code).toBe(0);
     expect(cli.err).toBe('');
     const rows = cli.out.trim().split('\n');

@@ -3,12 +3,12 @@
 // machine as it was; operator controls and faults act from the next scan.
 import { describe, expect, test } from 'vitest';
 import { tankReference, tankWrong } from '../../src/plant/exercises';
-import { rungsmith } from '../cli/memoryIo';
 import { PlantLoop } from '../../src/plant/loop';
 import { tank } from '../../src/plant/tank';
 import { SimHarness } from '../sim/harness';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import type { TankState } from '../../src/plant/tank';
+import { cliTrace, workerTrace } from './traces';
 
 const WATCH = [
   'Start',
@@ -41,28 +41,15 @@ describe('the tank in the simulation session', () => {
   test('the worker trace of 2,000 scans equals the CLI trace scan by scan, machine included', () => {
     const h = sessionRun();
     expect(h.frame.scan).toBe(2000);
-    h.send({ type: 'historyExport', id: 1, format: 'trace', names: WATCH });
-    const worker = lastOf(h.of('historyText')).text.trim().split('\n');
-    const cli = rungsmith(
-      [
-        'simulate',
-        'tank.json',
-        '--plant',
-        'tank',
-        '--inputs',
-        'stim.csv',
-        '--scans',
-        '2000',
-        '--cycle',
-        '100ms',
-        '--watch',
-        [...WATCH, 'tank.level'].join(','),
-      ],
-      {
-        'tank.json': JSON.stringify(tankReference()),
-        'stim.csv': 'scan,tank.Start\n1,1\n3,0\n',
-      },
-    );
+    const worker = workerTrace(h, WATCH);
+    const cli = cliTrace({
+      project: tankReference(),
+      plant: 'tank',
+      stimulus: 'scan,tank.Start\n1,1\n3,0\n',
+      scans: 2000,
+      cycle: '100ms',
+      watch: [...WATCH, 'tank.level'],
+    });
     expect(cli.code).toBe(0);
     const rows = cli.out.trim().split('\n');
     expect(rows).toHaveLength(2001);
@@ -110,7 +97,7 @@ describe('the tank in the simulation session', () => {
 });
 
 describe('taking the machine away', () => {
-  test("None chosen while paused: the inputs the machine drove fall to FALSE / 0, as cut wires (a switch does not stay ON)", () => {
+  test('None chosen while paused: the inputs the machine drove fall to FALSE / 0, as cut wires (a switch does not stay ON)', () => {
     const h = new SimHarness().send(
       { type: 'setCycle', cycleMs: 100 },
       { type: 'setPlant', plant: { id: 'tank' } },

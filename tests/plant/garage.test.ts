@@ -20,6 +20,7 @@ import { validateProject } from '../../src/model/load';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
+import { cliTrace, workerTrace } from './traces';
 
 const none = new Set<string>();
 type Drive = Partial<Record<'MotorUp' | 'MotorDown' | 'WarningLamp' | 'Doorway', boolean>>;
@@ -334,30 +335,20 @@ describe('the garage door on the command line and in the simulation worker', () 
     const door = (h.frame.plant as PlantFrame).now.state as GarageState;
     expect(door.cycles).toBe(4);
     expect(door.hits).toBe(0);
-    h.send({ type: 'historyExport', id: 1, format: 'trace', names: WATCH });
-    const worker = h.of('historyText').at(-1)!.text.trim().split('\n');
+    const worker = workerTrace(h, WATCH);
     const stim = ['scan,garage.KeyOpen,garage.KeyClose,garage.Doorway'];
     for (const [scan, name, value] of ACTIONS)
       stim.push(
         `${scan},${['KeyOpen', 'KeyClose', 'Doorway'].map((n) => (n === name ? (value ? 1 : 0) : '')).join(',')}`,
       );
-    const cli = rungsmith(
-      [
-        'simulate',
-        'garage.json',
-        '--plant',
-        'garage',
-        '--inputs',
-        'stim.csv',
-        '--scans',
-        '2000',
-        '--cycle',
-        '100ms',
-        '--watch',
-        [...WATCH, 'garage.position'].join(','),
-      ],
-      { 'garage.json': JSON.stringify(garageReference()), 'stim.csv': `${stim.join('\n')}\n` },
-    );
+    const cli = cliTrace({
+      project: garageReference(),
+      plant: 'garage',
+      stimulus: `${stim.join('\n')}\n`,
+      scans: 2000,
+      cycle: '100ms',
+      watch: [...WATCH, 'garage.position'],
+    });
     expect(cli.code).toBe(0);
     expect(cli.err).toBe('');
     const rows = cli.out.trim().split('\n');

@@ -26,6 +26,7 @@ import { validateProject } from '../../src/model/load';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
+import { cliTrace, workerTrace } from './traces';
 
 const none = new Set<string>();
 type Drive = Record<string, boolean>;
@@ -327,28 +328,18 @@ describe('the intersection in closed loop', () => {
   test('the worker trace of 2,000 scans equals the CLI trace scan by scan, machine included', () => {
     const h = sessionRun(2000);
     expect(h.frame.scan).toBe(2000);
-    h.send({ type: 'historyExport', id: 1, format: 'trace', names: WATCH });
-    const worker = lastOf(h.of('historyText')).text.trim().split('\n');
+    const worker = workerTrace(h, WATCH);
     const stimulus = ['scan,intersection.CrossMain,intersection.CrossSide'];
     for (const [scan, name, value] of PRESSES)
       stimulus.push(name === 'CrossMain' ? `${scan},${value ? 1 : 0},` : `${scan},,${value ? 1 : 0}`);
-    const cli = rungsmith(
-      [
-        'simulate',
-        'i.json',
-        '--plant',
-        'intersection',
-        '--inputs',
-        'stim.csv',
-        '--scans',
-        '2000',
-        '--cycle',
-        '100ms',
-        '--watch',
-        [...WATCH, 'intersection.served', 'intersection.ped_served'].join(','),
-      ],
-      { 'i.json': JSON.stringify(intersectionReference()), 'stim.csv': `${stimulus.join('\n')}\n` },
-    );
+    const cli = cliTrace({
+      project: intersectionReference(),
+      plant: 'intersection',
+      stimulus: `${stimulus.join('\n')}\n`,
+      scans: 2000,
+      cycle: '100ms',
+      watch: [...WATCH, 'intersection.served', 'intersection.ped_served'],
+    });
     expect(cli.code).toBe(0);
     expect(cli.err).toBe('');
     const rows = cli.out.trim().split('\n');

@@ -11,6 +11,7 @@ import { validateProject } from '../../src/model/load';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
+import { cliTrace, workerTrace } from './traces';
 
 const none = new Set<string>();
 type Drive = Record<string, boolean>;
@@ -291,28 +292,15 @@ describe('the lift in the simulation session', () => {
     h.send({ type: 'plantOperator', name: 'Call2', value: false });
     stepTo(h, 2000);
     expect(h.frame.scan).toBe(2000);
-    h.send({ type: 'historyExport', id: 1, format: 'trace', names: WATCH });
-    const worker = lastOf(h.of('historyText')).text.trim().split('\n');
-    const cli = rungsmith(
-      [
-        'simulate',
-        'lift.json',
-        '--plant',
-        'lift',
-        '--inputs',
-        'stim.csv',
-        '--scans',
-        '2000',
-        '--cycle',
-        '20ms',
-        '--watch',
-        [...WATCH, 'lift.position'].join(','),
-      ],
-      {
-        'lift.json': JSON.stringify(liftReference()),
-        'stim.csv': 'scan,lift.Call3,lift.Call2\n1,1,\n6,0,\n200,,1\n205,,0\n',
-      },
-    );
+    const worker = workerTrace(h, WATCH);
+    const cli = cliTrace({
+      project: liftReference(),
+      plant: 'lift',
+      stimulus: 'scan,lift.Call3,lift.Call2\n1,1,\n6,0,\n200,,1\n205,,0\n',
+      scans: 2000,
+      cycle: '20ms',
+      watch: [...WATCH, 'lift.position'],
+    });
     expect(cli.code).toBe(0);
     expect(cli.err).toBe('');
     const rows = cli.out.trim().split('\n');

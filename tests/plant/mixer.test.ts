@@ -14,6 +14,7 @@ import { validateProject } from '../../src/model/load';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
+import { cliTrace, workerTrace } from './traces';
 
 const none = new Set<string>();
 type Drive = Partial<
@@ -404,25 +405,15 @@ describe('the mixer in the simulation session and on the command line', () => {
     h.send({ type: 'plantOperator', name: 'Start', value: false }, { type: 'step', scans: 1998 });
     while (h.frame.scan < 2000) h.settle();
     expect(h.frame.scan).toBe(2000);
-    h.send({ type: 'historyExport', id: 1, format: 'trace', names: WATCH });
-    const worker = lastOf(h.of('historyText')).text.trim().split('\n');
-    const cli = rungsmith(
-      [
-        'simulate',
-        'mixer.json',
-        '--plant',
-        'mixer',
-        '--inputs',
-        'stim.csv',
-        '--scans',
-        '2000',
-        '--cycle',
-        '100ms',
-        '--watch',
-        [...WATCH, 'mixer.temperature'].join(','),
-      ],
-      { 'mixer.json': JSON.stringify(mixerReference()), 'stim.csv': 'scan,mixer.Start\n1,1\n3,0\n' },
-    );
+    const worker = workerTrace(h, WATCH);
+    const cli = cliTrace({
+      project: mixerReference(),
+      plant: 'mixer',
+      stimulus: 'scan,mixer.Start\n1,1\n3,0\n',
+      scans: 2000,
+      cycle: '100ms',
+      watch: [...WATCH, 'mixer.temperature'],
+    });
     expect(cli.code).toBe(0);
     expect(cli.err).toBe('');
     const rows = cli.out.trim().split('\n');

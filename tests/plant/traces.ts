@@ -1,0 +1,41 @@
+// The two traces a machine's determinism test compares (issue 26): the worker session's recorded
+// scans and `rungsmith simulate --plant`, the same program, stimulus and cycle.
+import type { Project } from '../../src/model/project';
+import { rungsmith } from '../cli/memoryIo';
+import type { SimHarness } from '../sim/harness';
+
+/** The session's recorded scans of `names` as the History's Export writes them, one line a scan (header first). */
+export function workerTrace(h: SimHarness, names: readonly string[]): string[] {
+  h.send({ type: 'historyExport', id: 1, format: 'trace', names: [...names] });
+  const texts = h.of('historyText');
+  return texts[texts.length - 1]!.text.trim().split('\n');
+}
+
+/** `rungsmith simulate FILE --plant ID --inputs stim.csv --scans N --cycle C --watch …` on `project`. */
+export function cliTrace(o: {
+  project: Project;
+  plant: string;
+  stimulus: string;
+  scans: number;
+  cycle: string;
+  watch: readonly string[];
+}): ReturnType<typeof rungsmith> {
+  const file = `${o.plant}.json`;
+  return rungsmith(
+    [
+      'simulate',
+      file,
+      '--plant',
+      o.plant,
+      '--inputs',
+      'stim.csv',
+      '--scans',
+      String(o.scans),
+      '--cycle',
+      o.cycle,
+      '--watch',
+      o.watch.join(','),
+    ],
+    { [file]: JSON.stringify(o.project), 'stim.csv': o.stimulus },
+  );
+}
