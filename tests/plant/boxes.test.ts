@@ -3,7 +3,7 @@
 // where it goes wrong, in-process and through `rungsmith test`); and the worker's trace of 2,000
 // scans equal to the CLI's, machine included.
 import { afterEach, describe, expect, test } from 'vitest';
-import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
+import type { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import {
   BELT_SPEED_MM_S,
   BOX_SPACING_MM,
@@ -24,7 +24,7 @@ import type { Value } from '../../src/model/iecTypes';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
-import { cliTrace, workerTrace } from './traces';
+import { cliTrace, startedPlantDevice, workerTrace } from './traces';
 
 const none: ReadonlySet<string> = new Set();
 type Sensed = Record<string, Value>;
@@ -382,12 +382,7 @@ describe("the box sorter as the gateway's simulated device (npm start -- --plant
   });
 
   test('every point fits the device: the eyes and limits are its inputs, the motor and pusher its coils, boxes ride in real time', async () => {
-    device = new SimulatedDevice(null, 'boxes');
-    await device.start({
-      inputs: () => undefined,
-      written: () => undefined,
-      status: () => undefined,
-    } as never);
+    device = await startedPlantDevice('boxes');
     const inputs = device.inputValues();
     const coils = device.writtenValues();
     for (const p of boxes.points)

@@ -2,7 +2,7 @@
 // solution and wrong one through the scenario runner and `rungsmith test`; and the simulation
 // worker's trace of 2,000 scans equal to the CLI's, scan by scan, the door included.
 import { afterEach, describe, expect, test } from 'vitest';
-import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
+import type { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import { CAR_TOP, CLOSED_LIMIT_AT, garage, PREWARN_MS, type GarageState } from '../../src/plant/garage';
 import {
   GARAGE_EXAMPLE,
@@ -20,7 +20,7 @@ import { validateProject } from '../../src/model/load';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
-import { cliTrace, workerTrace } from './traces';
+import { cliTrace, startedPlantDevice, workerTrace } from './traces';
 
 const none = new Set<string>();
 type Drive = Partial<Record<'MotorUp' | 'MotorDown' | 'WarningLamp' | 'Doorway', boolean>>;
@@ -378,12 +378,7 @@ describe("the garage door as the gateway's simulated device (npm start -- --plan
   });
 
   test('every point fits the device: the limits are its inputs, the contactors its coils, the door moves in real time', async () => {
-    device = new SimulatedDevice(null, 'garage');
-    await device.start({
-      inputs: () => undefined,
-      written: () => undefined,
-      status: () => undefined,
-    } as never);
+    device = await startedPlantDevice('garage');
     const inputs = device.inputValues();
     const coils = device.writtenValues();
     for (const p of garage.points)

@@ -2,7 +2,6 @@
 // faults and consequences; the exercise's scenario; and the machine in closed loop, the worker's
 // trace equal to the CLI's scan by scan, and `rungsmith test` on the reference and the wrong one.
 import { describe, expect, test } from 'vitest';
-import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import {
   HEADWAY_MS,
   intersection,
@@ -26,7 +25,7 @@ import { validateProject } from '../../src/model/load';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
-import { cliTrace, workerTrace } from './traces';
+import { cliTrace, startedPlantDevice, workerTrace } from './traces';
 
 const none = new Set<string>();
 type Drive = Record<string, boolean>;
@@ -396,12 +395,7 @@ describe('rungsmith and the intersection', () => {
 
 describe("the intersection as the gateway's simulated device (npm start -- --plant intersection)", () => {
   test('every point fits the device; a master lighting the main road green lets its cars through, the side road queues on its loop', async () => {
-    const device = new SimulatedDevice(null, 'intersection');
-    await device.start({
-      inputs: () => undefined,
-      written: () => undefined,
-      status: () => undefined,
-    } as never);
+    const device = await startedPlantDevice('intersection');
     try {
       const inputs = device.inputValues();
       const coils = device.writtenValues();

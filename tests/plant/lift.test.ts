@@ -1,7 +1,6 @@
 // The three-floor lift (issue 26): its physics as a table of cases, each fault and consequence,
 // purity; the exercise's reference and wrong solutions; the worker's trace equal to the CLI's.
 import { describe, expect, test, vi } from 'vitest';
-import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import { BUFFER_MM, lift, type LiftState } from '../../src/plant/lift';
 import { PLANT_EXAMPLES, LIFT_SCENARIO, liftReference, liftWrong } from '../../src/plant/exercises';
 import { runScenario } from '../../src/sim/scenario';
@@ -11,7 +10,7 @@ import { validateProject } from '../../src/model/load';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
-import { cliTrace, workerTrace } from './traces';
+import { cliTrace, startedPlantDevice, workerTrace } from './traces';
 
 const none = new Set<string>();
 type Drive = Record<string, boolean>;
@@ -354,12 +353,7 @@ describe('rungsmith and the lift', () => {
 
 describe("the lift as the gateway's simulated device (npm start -- --plant lift)", () => {
   test("its default I/O map fits the device: the sensors are its inputs, a master's coil runs the motor", async () => {
-    const device = new SimulatedDevice(null, 'lift');
-    await device.start({
-      inputs: () => undefined,
-      written: () => undefined,
-      status: () => undefined,
-    } as never);
+    const device = await startedPlantDevice('lift');
     try {
       const inputs = device.inputValues();
       expect([inputs.get('%IX0.3'), inputs.get('%IX0.4'), inputs.get('%IX0.6'), inputs.get('%IW0')]).toEqual([

@@ -2,7 +2,6 @@
 // the exercise (reference clean and passing, the wrong one failing where the batch overheats); the
 // worker session's trace equal to the CLI's scan by scan; `rungsmith test` and `rungsmith plants`.
 import { describe, expect, test, vi } from 'vitest';
-import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import { mixer, type MixerState } from '../../src/plant/mixer';
 import { PlantLoop } from '../../src/plant/loop';
 import { PLANT_EXAMPLES } from '../../src/plant/exercises';
@@ -14,7 +13,7 @@ import { validateProject } from '../../src/model/load';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
-import { cliTrace, workerTrace } from './traces';
+import { cliTrace, startedPlantDevice, workerTrace } from './traces';
 
 const none = new Set<string>();
 type Drive = Partial<
@@ -334,12 +333,7 @@ describe('the mixer in closed loop', () => {
 
 describe("the mixer as the gateway's simulated device (npm start -- --plant mixer)", () => {
   test('its default I/O map fits the device: a master writes the coils, the switches and transmitters come back', async () => {
-    const device = new SimulatedDevice(null, 'mixer');
-    await device.start({
-      inputs: () => undefined,
-      written: () => undefined,
-      status: () => undefined,
-    } as never);
+    const device = await startedPlantDevice('mixer');
     try {
       const inputs = device.inputValues();
       expect([inputs.get('%IX0.2'), inputs.get('%IX0.5'), inputs.get('%IW0'), inputs.get('%IW1')]).toEqual([

@@ -2,6 +2,7 @@
 // scans and `rungsmith simulate --plant`, the same program, stimulus and cycle.
 import type { Project } from '../../src/model/project';
 import { rungsmith } from '../cli/memoryIo';
+import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import type { SimHarness } from '../sim/harness';
 
 /** The session's recorded scans of `names` as the History's Export writes them, one line a scan (header first). */
@@ -38,4 +39,11 @@ export function cliTrace(o: {
     ],
     { [file]: JSON.stringify(o.project), 'stim.csv': o.stimulus },
   );
+}
+
+/** The gateway's simulated device as `npm start -- --plant ID` makes it, started with no gateway listening (no Modbus port). */
+export async function startedPlantDevice(plant: string): Promise<SimulatedDevice> {
+  const device = new SimulatedDevice(null, plant);
+  await device.start({ inputs: () => undefined, written: () => undefined, status: () => undefined } as never);
+  return device;
 }
