@@ -380,6 +380,26 @@ export interface Plc {
    * read, as setInputs), an output's image (read only). Undefined when no variable is declared there.
    */
   ioPoint?(location: string): IoPoint | undefined;
+  /**
+   * The I/O image itself, by index, for a caller that reads and writes many points every scan
+   * without a call per point (a machine in closed loop, issue 26). The same arrays for the PLC's
+   * life; optional for other implementations.
+   */
+  ioImage?(): IoImage;
+}
+
+/** A PLC's input and output images by index (Plc.ioImage). */
+export interface IoImage {
+  /** The input image: what the next scan reads (a forced input's force still wins). Written only through `write`. */
+  readonly inputs: readonly Value[];
+  /** The output image as the last scan left it. */
+  readonly outputs: readonly Value[];
+  /** The index in `inputs` of the input variable declared at a location, -1 when none. */
+  input(location: string): number;
+  /** The index in `outputs` of the output variable declared at a location, -1 when none. */
+  output(location: string): number;
+  /** Writes input `index` as IoPoint.write does: converted to the variable's type, applied at the next input read. */
+  write(index: number, value: Value): void;
 }
 
 export interface IoPoint {

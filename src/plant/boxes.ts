@@ -8,9 +8,9 @@
 // `BOX_SPACING_MM` of belt travel, their sizes from a fixed repeating pattern: the same program
 // and the same operator actions always see the same boxes. Across the belt the pusher's plate
 // and a box's sideways offset run from 0 (belt's edge by the pusher) to 1 (off into the chute).
-import { START_STOP_BUTTONS } from './points';
+import { START_STOP_BUTTONS, sensorSlots } from './points';
 import type { Value } from '../model/iecTypes';
-import type { PlantConsequence, PlantDrive, PlantModel } from './types';
+import type { PlantConsequence, PlantDrive, PlantModel, PlantPoint, Writable } from './types';
 
 /** Positions along the belt, mm from the infeed (a box's position is its front, downstream, edge). */
 export const BELT_LENGTH_MM = 2800;
@@ -111,6 +111,56 @@ const HAIR_MM = 1e-6;
 const underPlate = (x: number): boolean =>
   x > PLATE_FACE_MM + HAIR_MM && x - BOX_LENGTH_MM < PUSHER_MM + PLATE_HALF_MM;
 
+const POINTS: readonly PlantPoint[] = [
+  ...START_STOP_BUTTONS,
+  {
+    name: 'EntryEye',
+    address: '%IX0.2',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Entry photo-eye, 0.4 m from the infeed (ON while a box breaks it)',
+  },
+  {
+    name: 'SizeEye',
+    address: '%IX0.3',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Size sensor, high photo-eye at 0.8 m (ON while a large box breaks it)',
+  },
+  {
+    name: 'PusherEye',
+    address: '%IX0.4',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Photo-eye at the pusher, 2.1 m (ON while a box is in front of the pusher)',
+  },
+  {
+    name: 'PusherOut',
+    address: '%IX0.5',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Pusher extended limit switch',
+  },
+  {
+    name: 'PusherIn',
+    address: '%IX0.6',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Pusher retracted limit switch',
+  },
+  { name: 'Conveyor', address: '%QX0.0', type: 'BOOL', kind: 'actuator', comment: 'Belt motor contactor' },
+  {
+    name: 'Pusher',
+    address: '%QX0.1',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Pusher cylinder solenoid valve (extends while ON)',
+  },
+  { name: 'RunLamp', address: '%QX0.2', type: 'BOOL', kind: 'actuator', comment: 'Running pilot lamp' },
+];
+/** Where sense() writes each sensor (the loop's input image order). */
+const SENSE = sensorSlots(POINTS, ['EntryEye', 'SizeEye', 'PusherEye', 'PusherOut', 'PusherIn']);
+
 export const boxes: PlantModel<BoxesState> = {
   id: 'boxes',
   title: 'Box sorter (conveyor, size sensor, pusher)',
@@ -127,53 +177,7 @@ export const boxes: PlantModel<BoxesState> = {
     'striking a box off the station or left out in the way of the next box jams the conveyor.',
     'Goal: 10 boxes sorted into the right place, none missorted, no jam, no box fallen.',
   ].join('\n'),
-  points: [
-    ...START_STOP_BUTTONS,
-    {
-      name: 'EntryEye',
-      address: '%IX0.2',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Entry photo-eye, 0.4 m from the infeed (ON while a box breaks it)',
-    },
-    {
-      name: 'SizeEye',
-      address: '%IX0.3',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Size sensor, high photo-eye at 0.8 m (ON while a large box breaks it)',
-    },
-    {
-      name: 'PusherEye',
-      address: '%IX0.4',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Photo-eye at the pusher, 2.1 m (ON while a box is in front of the pusher)',
-    },
-    {
-      name: 'PusherOut',
-      address: '%IX0.5',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Pusher extended limit switch',
-    },
-    {
-      name: 'PusherIn',
-      address: '%IX0.6',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Pusher retracted limit switch',
-    },
-    { name: 'Conveyor', address: '%QX0.0', type: 'BOOL', kind: 'actuator', comment: 'Belt motor contactor' },
-    {
-      name: 'Pusher',
-      address: '%QX0.1',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Pusher cylinder solenoid valve (extends while ON)',
-    },
-    { name: 'RunLamp', address: '%QX0.2', type: 'BOOL', kind: 'actuator', comment: 'Running pilot lamp' },
-  ],
+  points: POINTS,
   faults: [
     { id: 'entry_stuck_on', title: 'Entry photo-eye stuck ON' },
     { id: 'size_stuck_off', title: 'Size sensor stuck OFF (sees no large box)' },
@@ -220,7 +224,7 @@ export const boxes: PlantModel<BoxesState> = {
     lastOut: '',
   }),
 
-  step(s: BoxesState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>): BoxesState {
+  step(s: BoxesState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>, into: Writable<BoxesState> = { ...s }): BoxesState {
     const speed = towards(
       s.speed,
       on(drive.Conveyor) && !faults.has('motor_dead') ? 1 : 0,
@@ -376,28 +380,27 @@ export const boxes: PlantModel<BoxesState> = {
       } else feed = BOX_SPACING_MM;
     }
 
-    return {
-      speed,
-      pusher,
-      lamp: on(drive.RunLamp),
-      belt,
-      feed,
-      fed,
-      boxes: kept ?? list,
-      smallBin,
-      largeChute,
-      sorted,
-      missorted,
-      jams,
-      fallen,
-      lastMissort,
-      lastJam,
-      lastFall,
-      lastOut,
-    };
+    into.speed = speed;
+    into.pusher = pusher;
+    into.lamp = on(drive.RunLamp);
+    into.belt = belt;
+    into.feed = feed;
+    into.fed = fed;
+    into.boxes = kept ?? list;
+    into.smallBin = smallBin;
+    into.largeChute = largeChute;
+    into.sorted = sorted;
+    into.missorted = missorted;
+    into.jams = jams;
+    into.fallen = fallen;
+    into.lastMissort = lastMissort;
+    into.lastJam = lastJam;
+    into.lastFall = lastFall;
+    into.lastOut = lastOut;
+    return into;
   },
 
-  sense(s: BoxesState, faults: ReadonlySet<string>): Record<string, Value> {
+  sense(s: BoxesState, faults: ReadonlySet<string>, out: Value[]): void {
     let entry = false;
     let size = false;
     let atPusher = false;
@@ -407,13 +410,11 @@ export const boxes: PlantModel<BoxesState> = {
       if (b.large && covers(x, SIZE_EYE_MM)) size = true;
       if (covers(x, PUSHER_EYE_MM)) atPusher = true;
     }
-    return {
-      EntryEye: faults.has('entry_stuck_on') ? true : entry,
-      SizeEye: faults.has('size_stuck_on') ? true : faults.has('size_stuck_off') ? false : size,
-      PusherEye: faults.has('station_stuck_off') ? false : atPusher,
-      PusherOut: s.pusher >= OUT_LIMIT,
-      PusherIn: s.pusher <= IN_LIMIT,
-    };
+    out[SENSE.EntryEye] = faults.has('entry_stuck_on') ? true : entry;
+    out[SENSE.SizeEye] = faults.has('size_stuck_on') ? true : faults.has('size_stuck_off') ? false : size;
+    out[SENSE.PusherEye] = faults.has('station_stuck_off') ? false : atPusher;
+    out[SENSE.PusherOut] = s.pusher >= OUT_LIMIT;
+    out[SENSE.PusherIn] = s.pusher <= IN_LIMIT;
   },
 
   check(before: BoxesState, after: BoxesState): readonly PlantConsequence[] {

@@ -3,8 +3,9 @@
 // the doorway, a key switch and a warning lamp. The operator drives a car into the doorway (it can
 // pass only under a door open above its roof); a door that comes down on it hits it.
 // Position is the door's opening in percent of the doorway's height (0 closed, 100 fully open).
+import { sensorSlots } from './points';
 import type { Value } from '../model/iecTypes';
-import type { PlantConsequence, PlantDrive, PlantModel } from './types';
+import type { PlantConsequence, PlantDrive, PlantModel, PlantPoint, Writable } from './types';
 
 /** Full travel at nominal speed, and with the `motor_slow` fault. */
 export const TRAVEL_MS = 12_000;
@@ -57,6 +58,85 @@ export interface GarageState {
 
 const on = (v: Value | undefined): boolean => v === true;
 
+const POINTS: readonly PlantPoint[] = [
+  {
+    name: 'KeyOpen',
+    address: '%IX0.0',
+    type: 'BOOL',
+    kind: 'operator',
+    control: 'button',
+    comment: 'Key switch turned to OPEN (spring return)',
+  },
+  {
+    name: 'KeyClose',
+    address: '%IX0.1',
+    type: 'BOOL',
+    kind: 'operator',
+    control: 'button',
+    comment: 'Key switch turned to CLOSE (spring return)',
+  },
+  {
+    name: 'Stop',
+    address: '%IX0.2',
+    type: 'BOOL',
+    kind: 'operator',
+    control: 'button',
+    comment: 'Stop push button (NO)',
+  },
+  {
+    name: 'OpenLimit',
+    address: '%IX0.3',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Open limit switch, ON at 99 % open and above',
+  },
+  {
+    name: 'ClosedLimit',
+    address: '%IX0.4',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Closed limit switch, ON at 1 % open and below',
+  },
+  {
+    name: 'Obstacle',
+    address: '%IX0.5',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Photo-eye across the doorway, ON while the beam is broken',
+  },
+  {
+    name: 'Doorway',
+    address: '%IX0.6',
+    type: 'BOOL',
+    kind: 'operator',
+    control: 'switch',
+    comment: 'A car in the doorway (simulation: the operator drives one in; read Obstacle)',
+  },
+  {
+    name: 'MotorUp',
+    address: '%QX0.0',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Motor contactor, door up',
+  },
+  {
+    name: 'MotorDown',
+    address: '%QX0.1',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Motor contactor, door down',
+  },
+  {
+    name: 'WarningLamp',
+    address: '%QX0.2',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Warning lamp over the doorway',
+  },
+];
+/** Where sense() writes each sensor (the loop's input image order). */
+const SENSE = sensorSlots(POINTS, ['OpenLimit', 'ClosedLimit', 'Obstacle']);
+
 export const garage: PlantModel<GarageState> = {
   id: 'garage',
   title: 'Garage door',
@@ -75,82 +155,7 @@ export const garage: PlantModel<GarageState> = {
     'drives a car into the doorway (it passes only under a door open above 60 %); the program reads',
     'the photo-eye, not Doorway.',
   ].join('\n'),
-  points: [
-    {
-      name: 'KeyOpen',
-      address: '%IX0.0',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Key switch turned to OPEN (spring return)',
-    },
-    {
-      name: 'KeyClose',
-      address: '%IX0.1',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Key switch turned to CLOSE (spring return)',
-    },
-    {
-      name: 'Stop',
-      address: '%IX0.2',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Stop push button (NO)',
-    },
-    {
-      name: 'OpenLimit',
-      address: '%IX0.3',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Open limit switch, ON at 99 % open and above',
-    },
-    {
-      name: 'ClosedLimit',
-      address: '%IX0.4',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Closed limit switch, ON at 1 % open and below',
-    },
-    {
-      name: 'Obstacle',
-      address: '%IX0.5',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Photo-eye across the doorway, ON while the beam is broken',
-    },
-    {
-      name: 'Doorway',
-      address: '%IX0.6',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'switch',
-      comment: 'A car in the doorway (simulation: the operator drives one in; read Obstacle)',
-    },
-    {
-      name: 'MotorUp',
-      address: '%QX0.0',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Motor contactor, door up',
-    },
-    {
-      name: 'MotorDown',
-      address: '%QX0.1',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Motor contactor, door down',
-    },
-    {
-      name: 'WarningLamp',
-      address: '%QX0.2',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Warning lamp over the doorway',
-    },
-  ],
+  points: POINTS,
   faults: [
     { id: 'open_stuck_off', title: 'Open limit switch stuck OFF' },
     { id: 'open_stuck_on', title: 'Open limit switch stuck ON' },
@@ -199,7 +204,7 @@ export const garage: PlantModel<GarageState> = {
     unwarned: 0,
   }),
 
-  step(s: GarageState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>): GarageState {
+  step(s: GarageState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>, into: Writable<GarageState> = { ...s }): GarageState {
     const up = on(drive.MotorUp);
     const down = on(drive.MotorDown);
     const lamp = on(drive.WarningLamp);
@@ -232,37 +237,34 @@ export const garage: PlantModel<GarageState> = {
     const open = position >= OPEN_LIMIT_AT;
     const closed = position <= CLOSED_LIMIT_AT;
     const cycleDone = closed && s.wasOpen;
-    return {
-      position,
-      speed,
-      up,
-      down,
-      lamp,
-      lampMs,
-      moving,
-      carWaiting,
-      carIn,
-      onCar,
-      short,
-      pushMs,
-      unwarnedNow,
-      wasOpen: open || (s.wasOpen && !closed),
-      cycles: s.cycles + (cycleDone ? 1 : 0),
-      hits: s.hits + (onCar && !s.onCar ? 1 : 0),
-      overruns: s.overruns + (pushMs > OVERRUN_MS && s.pushMs <= OVERRUN_MS ? 1 : 0),
-      shorts: s.shorts + (short && !s.short ? 1 : 0),
-      unwarned: s.unwarned + (unwarnedNow && !s.unwarnedNow ? 1 : 0),
-    };
+    into.position = position;
+    into.speed = speed;
+    into.up = up;
+    into.down = down;
+    into.lamp = lamp;
+    into.lampMs = lampMs;
+    into.moving = moving;
+    into.carWaiting = carWaiting;
+    into.carIn = carIn;
+    into.onCar = onCar;
+    into.short = short;
+    into.pushMs = pushMs;
+    into.unwarnedNow = unwarnedNow;
+    into.wasOpen = open || (s.wasOpen && !closed);
+    into.cycles = s.cycles + (cycleDone ? 1 : 0);
+    into.hits = s.hits + (onCar && !s.onCar ? 1 : 0);
+    into.overruns = s.overruns + (pushMs > OVERRUN_MS && s.pushMs <= OVERRUN_MS ? 1 : 0);
+    into.shorts = s.shorts + (short && !s.short ? 1 : 0);
+    into.unwarned = s.unwarned + (unwarnedNow && !s.unwarnedNow ? 1 : 0);
+    return into;
   },
 
-  sense(s: GarageState, faults: ReadonlySet<string>): Record<string, Value> {
+  sense(s: GarageState, faults: ReadonlySet<string>, out: Value[]): void {
     const sw = (id: string, real: boolean) =>
       faults.has(`${id}_stuck_on`) ? true : faults.has(`${id}_stuck_off`) ? false : real;
-    return {
-      OpenLimit: sw('open', s.position >= OPEN_LIMIT_AT),
-      ClosedLimit: sw('closed', s.position <= CLOSED_LIMIT_AT),
-      Obstacle: sw('eye', s.carIn),
-    };
+    out[SENSE.OpenLimit] = sw('open', s.position >= OPEN_LIMIT_AT);
+    out[SENSE.ClosedLimit] = sw('closed', s.position <= CLOSED_LIMIT_AT);
+    out[SENSE.Obstacle] = sw('eye', s.carIn);
   },
 
   check(before: GarageState, after: GarageState): readonly PlantConsequence[] {

@@ -8,6 +8,7 @@
 import type { Value } from '../model/iecTypes';
 import type { PlantSnapshot } from './loop';
 import type { PlantModel, PlantPoint } from './types';
+import { copyPlantState } from './points';
 
 /** Scans per keyframe: a seek replays at most CHUNK - 1 steps. */
 export const PLANT_HISTORY_CHUNK = 256;
@@ -111,7 +112,8 @@ export class PlantHistory {
         ints: new Float64Array(this.chunk * this.intDrive.length),
       };
       this.spare = undefined;
-      c = { firstScan: scan, state: before, timeMs: beforeMs, count: 0, times: arrays.times, bits: arrays.bits, ints: arrays.ints };
+      // A copy: the loop steps into its state objects again (no later step changes this one).
+      c = { firstScan: scan, state: copyPlantState(before), timeMs: beforeMs, count: 0, times: arrays.times, bits: arrays.bits, ints: arrays.ints };
       this.chunks.push(c);
     }
     const i = c.count;
@@ -140,7 +142,10 @@ export class PlantHistory {
     const c = this.chunkOf(scan);
     if (!c) return undefined;
     const last = scan - c.firstScan;
-    let state = c.state;
+    // Stepped between two copies of the keyframe (as the loop steps), the keyframe itself untouched:
+    // the last one written is handed out, and nothing else has it.
+    let state: unknown = Object.assign(this.model.initial() as object, c.state);
+    let spare: unknown = Object.assign(this.model.initial() as object, c.state);
     let time = c.timeMs;
     // One drive record and one fault set refilled for every step (valid only during the call, as in the loop).
     const drive: Record<string, Value> = {};
@@ -148,7 +153,9 @@ export class PlantHistory {
     for (let i = 0; i <= last; i++) {
       this.fill(c, i, drive, faults);
       const t = c.times[i]!;
-      state = this.model.step(state, drive, Math.max(0, t - time), faults);
+      const next = this.model.step(state, drive, Math.max(0, t - time), faults, spare);
+      spare = state;
+      state = next;
       time = t;
     }
     const operator: Record<string, boolean> = {};

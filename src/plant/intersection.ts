@@ -9,8 +9,9 @@
 // the crossing's WALK lamp lights and takes 8 s (main road) or 6 s (side road) to cross.
 //
 // A conflict monitor, as in a real signal cabinet, watches the lamps the program drives.
+import { sensorSlots } from './points';
 import type { Value } from '../model/iecTypes';
-import type { PlantConsequence, PlantDrive, PlantModel } from './types';
+import type { PlantConsequence, PlantDrive, PlantModel, PlantPoint, Writable } from './types';
 
 /** Vehicle arrivals, ms into each repeating minute (sorted). Main: 12 a minute; side: 6, in bunches. */
 export const MAIN_ARRIVALS_MS: readonly number[] = [
@@ -193,6 +194,99 @@ function advanceRoad(
   return out;
 }
 
+const POINTS: readonly PlantPoint[] = [
+  {
+    name: 'CrossMain',
+    address: '%IX0.0',
+    type: 'BOOL',
+    kind: 'operator',
+    control: 'button',
+    comment: 'Pedestrian push button at the crossing over the main road',
+  },
+  {
+    name: 'CrossSide',
+    address: '%IX0.1',
+    type: 'BOOL',
+    kind: 'operator',
+    control: 'button',
+    comment: 'Pedestrian push button at the crossing over the side road',
+  },
+  {
+    name: 'LoopMain',
+    address: '%IX0.2',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Detector loop at the main road stop line, ON while a vehicle waits',
+  },
+  {
+    name: 'LoopSide',
+    address: '%IX0.3',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Detector loop at the side road stop line, ON while a vehicle waits',
+  },
+  { name: 'MainRed', address: '%QX0.0', type: 'BOOL', kind: 'actuator', comment: 'Main road signal, red' },
+  {
+    name: 'MainYellow',
+    address: '%QX0.1',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Main road signal, yellow',
+  },
+  {
+    name: 'MainGreen',
+    address: '%QX0.2',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Main road signal, green',
+  },
+  { name: 'SideRed', address: '%QX0.3', type: 'BOOL', kind: 'actuator', comment: 'Side road signal, red' },
+  {
+    name: 'SideYellow',
+    address: '%QX0.4',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Side road signal, yellow',
+  },
+  {
+    name: 'SideGreen',
+    address: '%QX0.5',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Side road signal, green',
+  },
+  {
+    name: 'WalkMain',
+    address: '%QX0.6',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Crossing over the main road, WALK lamp',
+  },
+  {
+    name: 'DontWalkMain',
+    address: '%QX0.7',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: "Crossing over the main road, DON'T WALK lamp",
+  },
+  {
+    name: 'WalkSide',
+    address: '%QX1.0',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Crossing over the side road, WALK lamp',
+  },
+  {
+    name: 'DontWalkSide',
+    address: '%QX1.1',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: "Crossing over the side road, DON'T WALK lamp",
+  },
+];
+/** Where sense() writes each sensor (the loop's input image order). */
+const SENSE = sensorSlots(POINTS, ['LoopMain', 'LoopSide']);
+
 export const intersection: PlantModel<IntersectionState> = {
   id: 'intersection',
   title: 'Road intersection',
@@ -212,96 +306,7 @@ export const intersection: PlantModel<IntersectionState> = {
     'yellow), never leave a signal head dark, never let a vehicle wait more than 120 s or a pedestrian',
     'more than 60 s. Vehicles leave one every 2 s while their green is lit.',
   ].join('\n'),
-  points: [
-    {
-      name: 'CrossMain',
-      address: '%IX0.0',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Pedestrian push button at the crossing over the main road',
-    },
-    {
-      name: 'CrossSide',
-      address: '%IX0.1',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Pedestrian push button at the crossing over the side road',
-    },
-    {
-      name: 'LoopMain',
-      address: '%IX0.2',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Detector loop at the main road stop line, ON while a vehicle waits',
-    },
-    {
-      name: 'LoopSide',
-      address: '%IX0.3',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Detector loop at the side road stop line, ON while a vehicle waits',
-    },
-    { name: 'MainRed', address: '%QX0.0', type: 'BOOL', kind: 'actuator', comment: 'Main road signal, red' },
-    {
-      name: 'MainYellow',
-      address: '%QX0.1',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Main road signal, yellow',
-    },
-    {
-      name: 'MainGreen',
-      address: '%QX0.2',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Main road signal, green',
-    },
-    { name: 'SideRed', address: '%QX0.3', type: 'BOOL', kind: 'actuator', comment: 'Side road signal, red' },
-    {
-      name: 'SideYellow',
-      address: '%QX0.4',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Side road signal, yellow',
-    },
-    {
-      name: 'SideGreen',
-      address: '%QX0.5',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Side road signal, green',
-    },
-    {
-      name: 'WalkMain',
-      address: '%QX0.6',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Crossing over the main road, WALK lamp',
-    },
-    {
-      name: 'DontWalkMain',
-      address: '%QX0.7',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: "Crossing over the main road, DON'T WALK lamp",
-    },
-    {
-      name: 'WalkSide',
-      address: '%QX1.0',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Crossing over the side road, WALK lamp',
-    },
-    {
-      name: 'DontWalkSide',
-      address: '%QX1.1',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: "Crossing over the side road, DON'T WALK lamp",
-    },
-  ],
+  points: POINTS,
   faults: [
     { id: 'main_green_out', title: 'Main road green lamp burnt out' },
     { id: 'side_loop_stuck_off', title: 'Side road detector loop stuck OFF' },
@@ -375,7 +380,7 @@ export const intersection: PlantModel<IntersectionState> = {
     s: IntersectionState,
     drive: PlantDrive,
     dtMs: number,
-    faults: ReadonlySet<string>,
+    faults: ReadonlySet<string>, into: Writable<IntersectionState> = { ...s },
   ): IntersectionState {
     const t0 = s.timeMs;
     const t1 = t0 + dtMs;
@@ -458,55 +463,52 @@ export const intersection: PlantModel<IntersectionState> = {
       (mainGreen && t1 - side.last < CLEAR_MS ? ROAD.Main : 0) |
       (sideGreen && t1 - main.last < CLEAR_MS ? ROAD.Side : 0);
 
-    return {
-      timeMs: t1,
-      lamps,
-      lit,
-      arrivedMain: main.arrived,
-      departedMain: main.departed,
-      arrivedSide: side.arrived,
-      departedSide: side.departed,
-      goMain: main.go,
-      goSide: side.go,
-      lastMainMs: main.last,
-      lastSideMs: side.last,
-      maxWaitMs: side.maxWait,
-      longMain: main.long,
-      longSide: side.long,
-      pedWaitMain,
-      pedWaitSide,
-      pedSinceMain,
-      pedSinceSide,
-      pedLongMain,
-      pedLongSide,
-      pedOnMain,
-      pedOnSide,
-      buttonMain,
-      buttonSide,
-      pedServed,
-      conflict,
-      dark,
-      caught,
-      box,
-      conflicts: s.conflicts + started(conflict, s.conflict),
-      darkSignals: s.darkSignals + started(dark, s.dark),
-      pedsCaught: s.pedsCaught + started(caught, s.caught),
-      nearMisses: s.nearMisses + started(box, s.box),
-      longWaits: s.longWaits + main.longWaits + side.longWaits,
-      longPedWaits,
-    };
+    into.timeMs = t1;
+    into.lamps = lamps;
+    into.lit = lit;
+    into.arrivedMain = main.arrived;
+    into.departedMain = main.departed;
+    into.arrivedSide = side.arrived;
+    into.departedSide = side.departed;
+    into.goMain = main.go;
+    into.goSide = side.go;
+    into.lastMainMs = main.last;
+    into.lastSideMs = side.last;
+    into.maxWaitMs = side.maxWait;
+    into.longMain = main.long;
+    into.longSide = side.long;
+    into.pedWaitMain = pedWaitMain;
+    into.pedWaitSide = pedWaitSide;
+    into.pedSinceMain = pedSinceMain;
+    into.pedSinceSide = pedSinceSide;
+    into.pedLongMain = pedLongMain;
+    into.pedLongSide = pedLongSide;
+    into.pedOnMain = pedOnMain;
+    into.pedOnSide = pedOnSide;
+    into.buttonMain = buttonMain;
+    into.buttonSide = buttonSide;
+    into.pedServed = pedServed;
+    into.conflict = conflict;
+    into.dark = dark;
+    into.caught = caught;
+    into.box = box;
+    into.conflicts = s.conflicts + started(conflict, s.conflict);
+    into.darkSignals = s.darkSignals + started(dark, s.dark);
+    into.pedsCaught = s.pedsCaught + started(caught, s.caught);
+    into.nearMisses = s.nearMisses + started(box, s.box);
+    into.longWaits = s.longWaits + main.longWaits + side.longWaits;
+    into.longPedWaits = longPedWaits;
+    return into;
   },
 
-  sense(s: IntersectionState, faults: ReadonlySet<string>): Record<string, Value> {
+  sense(s: IntersectionState, faults: ReadonlySet<string>, out: Value[]): void {
     const loopSide = faults.has('side_loop_stuck_on')
       ? true
       : faults.has('side_loop_stuck_off')
         ? false
         : s.arrivedSide > s.departedSide;
-    return {
-      LoopMain: faults.has('main_loop_stuck_off') ? false : s.arrivedMain > s.departedMain,
-      LoopSide: loopSide,
-    };
+    out[SENSE.LoopMain] = faults.has('main_loop_stuck_off') ? false : s.arrivedMain > s.departedMain;
+    out[SENSE.LoopSide] = loopSide;
   },
 
   check(before: IntersectionState, after: IntersectionState): readonly PlantConsequence[] {

@@ -6,8 +6,9 @@
 //
 // The passengers are the operator's: a call button press is a passenger waiting at that landing
 // until the door stands fully open there (`served`), however the program handles its lamps.
+import { sensorSlots } from './points';
 import type { Value } from '../model/iecTypes';
-import type { PlantConsequence, PlantDrive, PlantModel } from './types';
+import type { PlantConsequence, PlantDrive, PlantModel, PlantPoint, Writable } from './types';
 
 /** Floor levels, mm above floor 1 (floors 1, 2, 3). */
 export const FLOOR_MM = [0, 3000, 6000] as const;
@@ -156,6 +157,119 @@ function passenger(
   return NO_CALL;
 }
 
+const POINTS: readonly PlantPoint[] = [
+  {
+    name: 'Call1',
+    address: '%IX0.0',
+    type: 'BOOL',
+    kind: 'operator',
+    control: 'button',
+    comment: 'Call button, floor 1 landing (NO)',
+  },
+  {
+    name: 'Call2',
+    address: '%IX0.1',
+    type: 'BOOL',
+    kind: 'operator',
+    control: 'button',
+    comment: 'Call button, floor 2 landing (NO)',
+  },
+  {
+    name: 'Call3',
+    address: '%IX0.2',
+    type: 'BOOL',
+    kind: 'operator',
+    control: 'button',
+    comment: 'Call button, floor 3 landing (NO)',
+  },
+  {
+    name: 'AtFloor1',
+    address: '%IX0.3',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Floor 1 level sensor, ON within 20 mm of the floor',
+  },
+  {
+    name: 'AtFloor2',
+    address: '%IX0.4',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Floor 2 level sensor, ON within 20 mm of the floor',
+  },
+  {
+    name: 'AtFloor3',
+    address: '%IX0.5',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Floor 3 level sensor, ON within 20 mm of the floor',
+  },
+  {
+    name: 'DoorClosed',
+    address: '%IX0.6',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Car door closed limit switch',
+  },
+  {
+    name: 'DoorOpened',
+    address: '%IX0.7',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Car door fully open limit switch',
+  },
+  {
+    name: 'Position',
+    address: '%IW0',
+    type: 'INT',
+    kind: 'sensor',
+    comment: 'Shaft encoder, car level in mm above floor 1',
+  },
+  {
+    name: 'MotorUp',
+    address: '%QX0.0',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Hoist motor contactor, up',
+  },
+  {
+    name: 'MotorDown',
+    address: '%QX0.1',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Hoist motor contactor, down',
+  },
+  {
+    name: 'DoorOpen',
+    address: '%QX0.2',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Door operator: open while ON, close while OFF',
+  },
+  {
+    name: 'CallLamp1',
+    address: '%QX0.3',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Call registered lamp, floor 1',
+  },
+  {
+    name: 'CallLamp2',
+    address: '%QX0.4',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Call registered lamp, floor 2',
+  },
+  {
+    name: 'CallLamp3',
+    address: '%QX0.5',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Call registered lamp, floor 3',
+  },
+];
+/** Where sense() writes each sensor (the loop's input image order). */
+const SENSE = sensorSlots(POINTS, ['AtFloor1', 'AtFloor2', 'AtFloor3', 'DoorClosed', 'DoorOpened', 'Position']);
+
 export const lift: PlantModel<LiftState> = {
   id: 'lift',
   title: 'Three-floor lift',
@@ -172,116 +286,7 @@ export const lift: PlantModel<LiftState> = {
     'must never move unless the door is closed (DoorClosed ON and DoorOpen off).',
     'Floors are 3,000 mm apart; Position (%IW0) is the car level in mm above floor 1.',
   ].join('\n'),
-  points: [
-    {
-      name: 'Call1',
-      address: '%IX0.0',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Call button, floor 1 landing (NO)',
-    },
-    {
-      name: 'Call2',
-      address: '%IX0.1',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Call button, floor 2 landing (NO)',
-    },
-    {
-      name: 'Call3',
-      address: '%IX0.2',
-      type: 'BOOL',
-      kind: 'operator',
-      control: 'button',
-      comment: 'Call button, floor 3 landing (NO)',
-    },
-    {
-      name: 'AtFloor1',
-      address: '%IX0.3',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Floor 1 level sensor, ON within 20 mm of the floor',
-    },
-    {
-      name: 'AtFloor2',
-      address: '%IX0.4',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Floor 2 level sensor, ON within 20 mm of the floor',
-    },
-    {
-      name: 'AtFloor3',
-      address: '%IX0.5',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Floor 3 level sensor, ON within 20 mm of the floor',
-    },
-    {
-      name: 'DoorClosed',
-      address: '%IX0.6',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Car door closed limit switch',
-    },
-    {
-      name: 'DoorOpened',
-      address: '%IX0.7',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Car door fully open limit switch',
-    },
-    {
-      name: 'Position',
-      address: '%IW0',
-      type: 'INT',
-      kind: 'sensor',
-      comment: 'Shaft encoder, car level in mm above floor 1',
-    },
-    {
-      name: 'MotorUp',
-      address: '%QX0.0',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Hoist motor contactor, up',
-    },
-    {
-      name: 'MotorDown',
-      address: '%QX0.1',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Hoist motor contactor, down',
-    },
-    {
-      name: 'DoorOpen',
-      address: '%QX0.2',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Door operator: open while ON, close while OFF',
-    },
-    {
-      name: 'CallLamp1',
-      address: '%QX0.3',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Call registered lamp, floor 1',
-    },
-    {
-      name: 'CallLamp2',
-      address: '%QX0.4',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Call registered lamp, floor 2',
-    },
-    {
-      name: 'CallLamp3',
-      address: '%QX0.5',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Call registered lamp, floor 3',
-    },
-  ],
+  points: POINTS,
   faults: [
     { id: 'floor2_stuck_off', title: 'Floor 2 sensor stuck OFF' },
     { id: 'floor2_stuck_on', title: 'Floor 2 sensor stuck ON' },
@@ -348,7 +353,7 @@ export const lift: PlantModel<LiftState> = {
     stopOffset: 0,
   }),
 
-  step(s: LiftState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>): LiftState {
+  step(s: LiftState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>, into: Writable<LiftState> = { ...s }): LiftState {
     const up = on(drive.MotorUp);
     const down = on(drive.MotorDown);
     const bothOn = up && down;
@@ -390,52 +395,49 @@ export const lift: PlantModel<LiftState> = {
     const call1 = passenger(s.call1, 0, (held & 1) !== 0, (s.held & 1) !== 0, s.timeMs, timeMs, open);
     const call2 = passenger(s.call2, 1, (held & 2) !== 0, (s.held & 2) !== 0, s.timeMs, timeMs, open);
     const call3 = passenger(s.call3, 2, (held & 4) !== 0, (s.held & 4) !== 0, s.timeMs, timeMs, open);
-    return {
-      position,
-      speed,
-      door,
-      motorUp: up,
-      motorDown: down,
-      doorCmd,
-      lamp1: on(drive.CallLamp1),
-      lamp2: on(drive.CallLamp2),
-      lamp3: on(drive.CallLamp3),
-      call1,
-      call2,
-      call3,
-      held,
-      timeMs,
-      served: tally.served,
-      maxWaitMs: tally.maxWaitMs,
-      overrunning,
-      crashed,
-      doorMoving,
-      bothOn,
-      overruns: s.overruns + (overrunning && !s.overrunning ? 1 : 0),
-      crashes: s.crashes + (crashed && !s.crashed ? 1 : 0),
-      doorMoves: s.doorMoves + (doorMoving && !s.doorMoving ? 1 : 0),
-      bothMotors: s.bothMotors + (bothOn && !s.bothOn ? 1 : 0),
-      misstops,
-      stopFloor,
-      stopOffset,
-    };
+    into.position = position;
+    into.speed = speed;
+    into.door = door;
+    into.motorUp = up;
+    into.motorDown = down;
+    into.doorCmd = doorCmd;
+    into.lamp1 = on(drive.CallLamp1);
+    into.lamp2 = on(drive.CallLamp2);
+    into.lamp3 = on(drive.CallLamp3);
+    into.call1 = call1;
+    into.call2 = call2;
+    into.call3 = call3;
+    into.held = held;
+    into.timeMs = timeMs;
+    into.served = tally.served;
+    into.maxWaitMs = tally.maxWaitMs;
+    into.overrunning = overrunning;
+    into.crashed = crashed;
+    into.doorMoving = doorMoving;
+    into.bothOn = bothOn;
+    into.overruns = s.overruns + (overrunning && !s.overrunning ? 1 : 0);
+    into.crashes = s.crashes + (crashed && !s.crashed ? 1 : 0);
+    into.doorMoves = s.doorMoves + (doorMoving && !s.doorMoving ? 1 : 0);
+    into.bothMotors = s.bothMotors + (bothOn && !s.bothOn ? 1 : 0);
+    into.misstops = misstops;
+    into.stopFloor = stopFloor;
+    into.stopOffset = stopOffset;
+    return into;
   },
 
-  sense(s: LiftState, faults: ReadonlySet<string>): Record<string, Value> {
+  sense(s: LiftState, faults: ReadonlySet<string>, out: Value[]): void {
     const at = (i: number): boolean =>
       faults.has(STUCK_ON[i]!)
         ? true
         : faults.has(STUCK_OFF[i]!)
           ? false
           : Math.abs(s.position - FLOOR_MM[i]!) <= FLOOR_WINDOW_MM;
-    return {
-      AtFloor1: at(0),
-      AtFloor2: at(1),
-      AtFloor3: at(2),
-      DoorClosed: s.door <= 0,
-      DoorOpened: s.door >= 1,
-      Position: Math.round(s.position),
-    };
+    out[SENSE.AtFloor1] = at(0);
+    out[SENSE.AtFloor2] = at(1);
+    out[SENSE.AtFloor3] = at(2);
+    out[SENSE.DoorClosed] = s.door <= 0;
+    out[SENSE.DoorOpened] = s.door >= 1;
+    out[SENSE.Position] = Math.round(s.position);
   },
 
   check(before: LiftState, after: LiftState): readonly PlantConsequence[] {

@@ -5,36 +5,48 @@
 //
 // It knows the PLC only as an I/O image by address (the `PlcIo` below), so the simulator, the
 // scenarios, the CLI and the gateway's simulated device drive it alike.
+import type { IoImage } from '../engine/api';
 import type { Value } from '../model/iecTypes';
 import { parseLocation } from '../model/iecTypes';
 import type { PlantConsequence, PlantModel, PlantPoint } from './types';
 import { resolvePlantName } from './values';
 import { PlantHistory } from './history';
+import { copyPlantState, senseRecord } from './points';
 
 /** What the loop needs of a PLC: its output image and its input image, by address. */
 export interface PlcIo {
   outputs(): Record<string, Value>;
   setInputs(values: Readonly<Record<string, Value>>): void;
-  /** A point resolved once (the engine's Plc.ioPoint): read and written every scan without a lookup. */
-  ioPoint?(location: string): { read(): Value; write(value: Value): void } | undefined;
-}
-
-/** One point of the PLC's I/O image, read and written every scan. */
-interface ImagePoint {
-  read(): Value;
-  write(value: Value): void;
+  /** The image itself, by index (the engine's Plc.ioImage): read and written every scan without a lookup or a call per point. */
+  ioImage?(): IoImage;
 }
 
 /**
- * A machine point wired to the PLC, resolved once per program (bind): its image point, and what
- * the scan needs of the point without looking it up (its name, BOOL or not, operator control or not).
+ * The PLC's I/O image as the loop reads and writes it every scan: arrays by index (the engine's
+ * own), or, for a PLC without them, the loop's copies of its points (`refresh` reads them again
+ * before a step, `write` sets the PLC's input by address).
+ */
+interface LoopImage {
+  readonly inputs: readonly Value[];
+  readonly outputs: readonly Value[];
+  write(index: number, value: Value): void;
+  refresh(): void;
+}
+
+/**
+ * A machine point wired to the PLC, resolved once per program (bind): its index in the image, and
+ * what the scan needs of the point without looking it up (its name, BOOL or not, operator control
+ * or sensor slot).
  */
 interface Wire {
   readonly point: PlantPoint;
   readonly name: string;
   readonly bool: boolean;
   readonly operator: boolean;
-  readonly io: ImagePoint;
+  /** A sensor's slot in what `sense` writes (the loop's `sensed`), -1 for another point. */
+  readonly slot: number;
+  /** The point's index in the image's inputs (sensors, operator controls) or outputs (actuators). */
+  readonly index: number;
   /**
    * Where the point's value is in the step's history record (the loop's own copy of the drive): a
    * BOOL actuator's or an operator control's bit (its word and mask), an INT actuator's number.
@@ -44,7 +56,7 @@ interface Wire {
   readonly mask: number;
   readonly int: number;
 }
-const NO_WRITE = (): void => {};
+const NO_REFRESH = (): void => {};
 
 /** A consequence where it happened: the scan after which the machine was seen to suffer it. */
 export interface PlantEvent extends PlantConsequence {
@@ -99,7 +111,17 @@ export interface PlantSnapshot {
 export class PlantLoop {
   readonly model: PlantModel;
   readonly points: readonly PlantPoint[];
+  /**
+   * The machine now, and the other of the two state objects the loop steps between (each step
+   * writes the next state into the one not current): no state is made per scan. Whatever is
+   * handed out (snapshot, currentState) or kept (the history's keyframes) is a copy.
+   */
   private state: unknown;
+  private spare: unknown;
+  /** What `sense` wrote last: the sensors by slot (sensorSlots), reused every scan. */
+  private readonly sensed: Value[];
+  /** Each point's sensor slot by name (sensors only). */
+  private readonly sensorSlot = new Map<string, number>();
   /** PLC time the machine has reached. */
   private timeMs = 0;
   private scan = 0;
@@ -119,6 +141,7 @@ export class PlantLoop {
   /** Some declared point is a sensor: the model is asked what it senses. */
   private sensing = false;
   private bound: PlcIo | undefined;
+  private image: LoopImage = { inputs: [], outputs: [], write: () => {}, refresh: NO_REFRESH };
   /** The drive record handed to step(), refilled every scan. */
   private readonly driveRecord: Record<string, Value> = {};
   /** The same as the history records it (src/plant/history.ts), faults included, kept up to date alongside. */
@@ -139,20 +162,29 @@ export class PlantLoop {
     this.inputs = this.points.filter((p) => p.kind !== 'actuator');
     for (const p of this.points) if (p.kind === 'operator') this.operator[p.name] = false;
     this.operatorShown = { ...this.operator };
+    // Two objects made alike (one shape: the step's reads and writes stay monomorphic).
     this.state = model.initial();
+    this.spare = model.initial();
+    this.sensed = [];
+    for (const p of this.points)
+      if (p.kind === 'sensor') {
+        this.sensorSlot.set(p.name, this.sensed.length);
+        this.sensed.push(p.type === 'BOOL' ? false : 0);
+      }
     this.history = new PlantHistory(model, this.points, keep);
     this.record = this.history.newRecord();
     this.driveConstants();
   }
 
-  private wire(point: PlantPoint, io: ImagePoint): Wire {
+  private wire(point: PlantPoint, index: number): Wire {
     const bit = this.history.bitOf(point.name);
     return {
       point,
       name: point.name,
       bool: point.type === 'BOOL',
       operator: point.kind === 'operator',
-      io,
+      slot: this.sensorSlot.get(point.name) ?? -1,
+      index,
       bit,
       word: bit < 0 ? 0 : bit >>> 5,
       mask: bit < 0 ? 0 : 1 << (bit & 31),
@@ -190,6 +222,7 @@ export class PlantLoop {
   /** Back to the machine's initial state at PLC time 0 (a cold restart); faults and operator controls stay. */
   reset(): void {
     this.state = this.model.initial();
+    this.spare = this.model.initial();
     this.timeMs = 0;
     this.scan = 0;
     this.events.length = 0;
@@ -202,7 +235,10 @@ export class PlantLoop {
    * limit switch left ON with nothing behind it). A forced input keeps its force. No-op unbound.
    */
   release(): void {
-    for (const w of this.declared) if (w.io.read() !== (w.bool ? false : 0)) w.io.write(w.bool ? false : 0);
+    const image = this.image;
+    image.refresh();
+    for (const w of this.declared)
+      if (image.inputs[w.index] !== (w.bool ? false : 0)) image.write(w.index, w.bool ? false : 0);
     this.declared = [];
     this.outputs = [];
     this.bound = undefined;
@@ -214,30 +250,15 @@ export class PlantLoop {
    */
   bind(plc: PlcIo): void {
     this.bound = plc;
+    const image = plc.ioImage ? engineImage(plc.ioImage()) : recordImage(plc, this.actuators, this.inputs);
+    this.image = image.image;
     this.outputs = this.actuators.flatMap((p) => {
-      const io = plc.ioPoint?.(p.address);
-      if (io) return [this.wire(p, io)];
-      if (plc.ioPoint) return [];
-      // A PLC without resolved points: through its output record.
-      const key = Object.keys(plc.outputs()).find((k) => addressKey(k) === addressKey(p.address));
-      return key === undefined ? [] : [this.wire(p, { read: () => plc.outputs()[key]!, write: NO_WRITE })];
+      const i = image.output(p.address);
+      return i < 0 ? [] : [this.wire(p, i)];
     });
     this.declared = this.inputs.flatMap((p) => {
-      const io = plc.ioPoint?.(p.address);
-      if (io) return [this.wire(p, io)];
-      if (plc.ioPoint) return [];
-      // Without resolved points the input is read back as last written (a sensor turning OFF is written too).
-      let last: Value = p.type === 'BOOL' ? false : 0;
-      try {
-        plc.setInputs({ [p.address]: last });
-      } catch {
-        return [];
-      }
-      const write = (v: Value) => {
-        plc.setInputs({ [p.address]: v });
-        last = v;
-      };
-      return [this.wire(p, { read: () => last, write })];
+      const i = image.input(p.address);
+      return i < 0 ? [] : [this.wire(p, i)];
     });
     this.sensing = this.declared.some((w) => !w.operator);
     this.driveConstants();
@@ -252,17 +273,24 @@ export class PlantLoop {
     // A machine that has not stepped yet starts at this scan's PLC time: attached to a program
     // already at scan 24 (2.4 s), its first step is one cycle, not 2.5 s at once.
     if (this.scan === 0) this.timeMs = scanTimeMs;
-    const dt = Math.max(0, target - this.timeMs);
+    const dt = target > this.timeMs ? target - this.timeMs : 0;
     const before = this.state;
     const drive = this.drive();
-    this.state = this.model.step(before, drive, dt, this.faults);
-    // What the step was given, for the history to replay it (the model is deterministic).
+    // What the step is given, for the history to replay it (the model is deterministic); the
+    // history copies `before` when it keeps it whole.
     this.history.push(scan, before, this.timeMs, this.record, target);
+    // Into the spare state object: `before` is the spare one for the next step.
+    const after = this.model.step(before, drive, dt, this.faults, this.spare);
+    this.state = after;
+    this.spare = before;
     this.timeMs = target;
     this.scan = scan;
-    const consequences = this.model.check(before, this.state);
-    const found =
-      consequences.length === 0 ? NONE : consequences.map((c) => this.locate(c, scan, scanTimeMs));
+    const consequences = this.model.check(before, after);
+    if (consequences.length === 0) {
+      this.present();
+      return NONE;
+    }
+    const found = consequences.map((c) => this.locate(c, scan, scanTimeMs));
     for (const e of found) this.events.push(e);
     this.present();
     return found;
@@ -281,13 +309,16 @@ export class PlantLoop {
   private drive(): Record<string, Value> {
     const d = this.driveRecord;
     const outputs = this.outputs;
+    const image = this.image;
+    image.refresh();
+    const values = image.outputs;
     const bits = this.record.bits;
     const ints = this.record.ints;
     // BOOL points TRUE or FALSE exactly, INT points numbers: what the history records and replays.
     // The record holds the last values: only a change is written by name (outputs change seldom).
     for (let i = 0; i < outputs.length; i++) {
       const w = outputs[i]!;
-      const v = w.io.read();
+      const v = values[w.index];
       if (w.bool) {
         const on = v === true;
         const word = bits[w.word]!;
@@ -313,14 +344,17 @@ export class PlantLoop {
   present(): void {
     const declared = this.declared;
     if (!this.bound || declared.length === 0) return;
-    const sensed = this.sensing ? this.model.sense(this.state, this.faults) : undefined;
+    const sensed = this.sensed;
+    if (this.sensing) this.model.sense(this.state, this.faults, sensed);
     const bits = this.record.bits;
+    const image = this.image;
+    const inputs = image.inputs;
     for (let i = 0; i < declared.length; i++) {
       const w = declared[i]!;
-      // An operator control as held: its bit in the record (setOperator keeps it).
-      const v = w.operator ? (bits[w.word]! & w.mask) !== 0 : sensed![w.name]!;
+      // An operator control as held: its bit in the record (setOperator keeps it); a sensor at its slot.
+      const v = w.slot < 0 ? (bits[w.word]! & w.mask) !== 0 : sensed[w.slot]!;
       // The image already holding the value is the common case: no write, no conversion.
-      if (w.io.read() !== v) w.io.write(v);
+      if (inputs[w.index] !== v) image.write(w.index, v);
     }
   }
 
@@ -330,7 +364,7 @@ export class PlantLoop {
     return {
       scan: this.scan,
       timeMs: this.timeMs,
-      state: this.state,
+      state: copyPlantState(this.state),
       faults: this.faultList,
       operator: this.operatorShown,
       ...(this.scan > 0 ? { drive } : {}),
@@ -380,8 +414,9 @@ export class PlantLoop {
     return this.events;
   }
 
+  /** The machine's state now (a copy: the loop's own objects change every step). */
   currentState(): unknown {
-    return this.state;
+    return copyPlantState(this.state);
   }
 
   /**
@@ -396,7 +431,7 @@ export class PlantLoop {
     if (ref?.quantity) return this.model.quantity(this.state, ref.quantity.name);
     const p = ref?.point;
     if (p?.kind === 'operator') return this.operator[p.name] === true;
-    if (p?.kind === 'sensor') return this.model.sense(this.state, this.faults)[p.name]!;
+    if (p?.kind === 'sensor') return senseRecord(this.model, this.state, this.faults)[p.name]!;
     if (p) return { ...this.drive() }[p.name]!;
     throw new Error(
       `${this.model.id} has no quantity or point "${bare}"; it has ${[...this.model.quantities.map((x) => x.name), ...this.points.map((x) => x.name)].join(', ')}`,
@@ -409,4 +444,67 @@ export function plantValueType(model: PlantModel, name: string): 'BOOL' | 'INT' 
   const bare = name.toLowerCase().startsWith(`${model.id}.`) ? name.slice(model.id.length + 1) : name;
   const ref = resolvePlantName(model, bare);
   return ref?.quantity?.type ?? ref?.point?.type;
+}
+
+/** How a PLC's image is reached: by index into its arrays. */
+interface BoundImage {
+  readonly image: LoopImage;
+  input(address: string): number;
+  output(address: string): number;
+}
+
+/** The engine's own image (Plc.ioImage): its arrays, read in place. */
+function engineImage(io: IoImage): BoundImage {
+  return {
+    image: { inputs: io.inputs, outputs: io.outputs, write: (i, v) => io.write(i, v), refresh: NO_REFRESH },
+    input: (address) => io.input(address),
+    output: (address) => io.output(address),
+  };
+}
+
+/**
+ * A PLC known only by its output and input records (the gateway's simulated device): the loop's
+ * copies, the outputs read again before every step, an input read back as last written (a sensor
+ * turning OFF is written too).
+ */
+function recordImage(plc: PlcIo, actuators: readonly PlantPoint[], inputPoints: readonly PlantPoint[]): BoundImage {
+  const outputs: Value[] = [];
+  const outputKeys: string[] = [];
+  const inputs: Value[] = [];
+  const inputAddresses: string[] = [];
+  const image: LoopImage = {
+    inputs,
+    outputs,
+    write: (i, v) => {
+      plc.setInputs({ [inputAddresses[i]!]: v });
+      inputs[i] = v;
+    },
+    refresh: () => {
+      if (outputKeys.length === 0) return;
+      const now = plc.outputs();
+      for (let i = 0; i < outputKeys.length; i++) outputs[i] = now[outputKeys[i]!]!;
+    },
+  };
+  return {
+    image,
+    output: (address) => {
+      const key = Object.keys(plc.outputs()).find((k) => addressKey(k) === addressKey(address));
+      if (key === undefined || !actuators.some((p) => p.address === address)) return -1;
+      outputKeys.push(key);
+      outputs.push(plc.outputs()[key]!);
+      return outputs.length - 1;
+    },
+    input: (address) => {
+      const p = inputPoints.find((q) => q.address === address);
+      const zero: Value = p?.type === 'BOOL' ? false : 0;
+      try {
+        plc.setInputs({ [address]: zero });
+      } catch {
+        return -1;
+      }
+      inputAddresses.push(address);
+      inputs.push(zero);
+      return inputs.length - 1;
+    },
+  };
 }

@@ -9,9 +9,9 @@
 // loses heat to the 20 °C room. A batch is judged when the outlet opens: the ratio of A to B, how
 // long it was held hot with the agitator after the last ingredient went in, whether it overheated
 // or scorched. A good batch counts once the vessel is empty.
-import { START_STOP_BUTTONS } from './points';
+import { START_STOP_BUTTONS, sensorSlots } from './points';
 import type { Value } from '../model/iecTypes';
-import type { PlantConsequence, PlantDrive, PlantModel } from './types';
+import type { PlantConsequence, PlantDrive, PlantModel, PlantPoint, Writable } from './types';
 
 export const MIXER_CAPACITY_L = 1000;
 /** Where the level switches sit: ON at and above these levels. */
@@ -126,6 +126,90 @@ const SPOIL_TEXT: Record<Exclude<SpoilReason, '' | 'scorch'>, string> = {
   short: `a batch was discharged short (less than ${MIN_BATCH_L} L) and is spoiled`,
 };
 
+const POINTS: readonly PlantPoint[] = [
+  ...START_STOP_BUTTONS,
+  {
+    name: 'LowLevel',
+    address: '%IX0.2',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Low level switch, ON at 100 L and above (heater covered)',
+  },
+  {
+    name: 'MidLevel',
+    address: '%IX0.3',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Mid level switch, ON at 400 L and above (dose of A)',
+  },
+  {
+    name: 'HighLevel',
+    address: '%IX0.4',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'High level switch, ON at 800 L and above (batch full)',
+  },
+  {
+    name: 'AgitatorOn',
+    address: '%IX0.5',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Agitator speed monitor, ON at full speed',
+  },
+  {
+    name: 'Level',
+    address: '%IW0',
+    type: 'INT',
+    kind: 'sensor',
+    comment: 'Level transmitter, litres (0 to 1000)',
+  },
+  {
+    name: 'Temperature',
+    address: '%IW1',
+    type: 'INT',
+    kind: 'sensor',
+    comment: 'Temperature transmitter, 0.1 °C (600 = 60.0 °C)',
+  },
+  {
+    name: 'ValveA',
+    address: '%QX0.0',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Ingredient A valve solenoid (open when ON)',
+  },
+  {
+    name: 'ValveB',
+    address: '%QX0.1',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Ingredient B valve solenoid (open when ON)',
+  },
+  {
+    name: 'Agitator',
+    address: '%QX0.2',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Agitator motor contactor',
+  },
+  {
+    name: 'Heater',
+    address: '%QX0.3',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Immersion heater contactor',
+  },
+  {
+    name: 'OutletValve',
+    address: '%QX0.4',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Outlet valve solenoid (open when ON)',
+  },
+  { name: 'DoneLamp', address: '%QX0.5', type: 'BOOL', kind: 'actuator', comment: 'Batch done pilot lamp' },
+];
+/** Where sense() writes each sensor (the loop's input image order). */
+const SENSE = sensorSlots(POINTS, ['LowLevel', 'MidLevel', 'HighLevel', 'AgitatorOn', 'Level', 'Temperature']);
+
 export const mixer: PlantModel<MixerState> = {
   id: 'mixer',
   title: 'Batch mixer',
@@ -145,87 +229,7 @@ export const mixer: PlantModel<MixerState> = {
     `${OVERHEAT_C} °C, discharged before it was held, or with A outside ${RATIO_MIN} to ${RATIO_MAX} % is spoiled.`,
     'Level (%IW0) is in litres, 0 to 1000; the heated batch loses heat to the 20 °C room.',
   ].join('\n'),
-  points: [
-    ...START_STOP_BUTTONS,
-    {
-      name: 'LowLevel',
-      address: '%IX0.2',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Low level switch, ON at 100 L and above (heater covered)',
-    },
-    {
-      name: 'MidLevel',
-      address: '%IX0.3',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Mid level switch, ON at 400 L and above (dose of A)',
-    },
-    {
-      name: 'HighLevel',
-      address: '%IX0.4',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'High level switch, ON at 800 L and above (batch full)',
-    },
-    {
-      name: 'AgitatorOn',
-      address: '%IX0.5',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Agitator speed monitor, ON at full speed',
-    },
-    {
-      name: 'Level',
-      address: '%IW0',
-      type: 'INT',
-      kind: 'sensor',
-      comment: 'Level transmitter, litres (0 to 1000)',
-    },
-    {
-      name: 'Temperature',
-      address: '%IW1',
-      type: 'INT',
-      kind: 'sensor',
-      comment: 'Temperature transmitter, 0.1 °C (600 = 60.0 °C)',
-    },
-    {
-      name: 'ValveA',
-      address: '%QX0.0',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Ingredient A valve solenoid (open when ON)',
-    },
-    {
-      name: 'ValveB',
-      address: '%QX0.1',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Ingredient B valve solenoid (open when ON)',
-    },
-    {
-      name: 'Agitator',
-      address: '%QX0.2',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Agitator motor contactor',
-    },
-    {
-      name: 'Heater',
-      address: '%QX0.3',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Immersion heater contactor',
-    },
-    {
-      name: 'OutletValve',
-      address: '%QX0.4',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Outlet valve solenoid (open when ON)',
-    },
-    { name: 'DoneLamp', address: '%QX0.5', type: 'BOOL', kind: 'actuator', comment: 'Batch done pilot lamp' },
-  ],
+  points: POINTS,
   faults: [
     { id: 'low_stuck_on', title: 'Low level switch stuck ON' },
     { id: 'mid_stuck_off', title: 'Mid level switch stuck OFF' },
@@ -293,7 +297,7 @@ export const mixer: PlantModel<MixerState> = {
     outflow: 0,
   }),
 
-  step(s: MixerState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>): MixerState {
+  step(s: MixerState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>, into: Writable<MixerState> = { ...s }): MixerState {
     const wantA = on(drive.ValveA) ? 1 : 0;
     const wantB = on(drive.ValveB) ? 1 : 0;
     const wantOut = on(drive.OutletValve) ? 1 : 0;
@@ -399,51 +403,48 @@ export const mixer: PlantModel<MixerState> = {
     if (scorching && !s.scorching) scorches++;
     if (dryHeating && !s.dryHeating) dryHeats++;
     const dt = dtMs / 1000;
-    return {
-      level,
-      volA,
-      volB,
-      temp,
-      element,
-      shownTemp: faults.has('temp_frozen') ? s.shownTemp : temp,
-      valveA,
-      valveB,
-      outlet,
-      agitator,
-      outletOrdered: wantOut === 1,
-      angle,
-      heating,
-      lamp: on(drive.DoneLamp),
-      heldMs,
-      maxTemp,
-      judged,
-      spoiledBatch,
-      spoilReason,
-      lastRatio,
-      overflowing,
-      dryHeating,
-      scorching,
-      batches,
-      spoiled,
-      overflows,
-      scorches,
-      dryHeats,
-      inflow: dt > 0 ? inflowL / dt : 0,
-      outflow: dt > 0 ? outflowL / dt : 0,
-    };
+    into.level = level;
+    into.volA = volA;
+    into.volB = volB;
+    into.temp = temp;
+    into.element = element;
+    into.shownTemp = faults.has('temp_frozen') ? s.shownTemp : temp;
+    into.valveA = valveA;
+    into.valveB = valveB;
+    into.outlet = outlet;
+    into.agitator = agitator;
+    into.outletOrdered = wantOut === 1;
+    into.angle = angle;
+    into.heating = heating;
+    into.lamp = on(drive.DoneLamp);
+    into.heldMs = heldMs;
+    into.maxTemp = maxTemp;
+    into.judged = judged;
+    into.spoiledBatch = spoiledBatch;
+    into.spoilReason = spoilReason;
+    into.lastRatio = lastRatio;
+    into.overflowing = overflowing;
+    into.dryHeating = dryHeating;
+    into.scorching = scorching;
+    into.batches = batches;
+    into.spoiled = spoiled;
+    into.overflows = overflows;
+    into.scorches = scorches;
+    into.dryHeats = dryHeats;
+    into.inflow = dt > 0 ? inflowL / dt : 0;
+    into.outflow = dt > 0 ? outflowL / dt : 0;
+    return into;
   },
 
-  sense(s: MixerState, faults: ReadonlySet<string>): Record<string, Value> {
+  sense(s: MixerState, faults: ReadonlySet<string>, out: Value[]): void {
     // Runs every scan: the fault names are constants, looked up only when a fault is set.
     const any = faults.size > 0;
-    return {
-      LowLevel: (any && faults.has('low_stuck_on')) || s.level >= LOW_SWITCH_L,
-      MidLevel: !(any && faults.has('mid_stuck_off')) && s.level >= MID_SWITCH_L,
-      HighLevel: !(any && faults.has('high_stuck_off')) && s.level >= HIGH_SWITCH_L,
-      AgitatorOn: s.agitator >= 0.9,
-      Level: Math.round(s.level),
-      Temperature: Math.round(s.shownTemp * 10),
-    };
+    out[SENSE.LowLevel] = (any && faults.has('low_stuck_on')) || s.level >= LOW_SWITCH_L;
+    out[SENSE.MidLevel] = !(any && faults.has('mid_stuck_off')) && s.level >= MID_SWITCH_L;
+    out[SENSE.HighLevel] = !(any && faults.has('high_stuck_off')) && s.level >= HIGH_SWITCH_L;
+    out[SENSE.AgitatorOn] = s.agitator >= 0.9;
+    out[SENSE.Level] = Math.round(s.level);
+    out[SENSE.Temperature] = Math.round(s.shownTemp * 10);
   },
 
   check(before: MixerState, after: MixerState): readonly PlantConsequence[] {

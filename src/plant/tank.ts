@@ -1,9 +1,9 @@
 // The tank (issue 26): a 1,000 L tank filled by a pump through an inlet valve and drawn off by
 // the process through a drain valve, with low and high level switches and an analog level.
 // Flows are in litres per second of PLC time; valves and the pump take time to move.
-import { START_STOP_BUTTONS } from './points';
+import { START_STOP_BUTTONS, sensorSlots } from './points';
 import type { Value } from '../model/iecTypes';
-import type { PlantConsequence, PlantDrive, PlantModel } from './types';
+import type { PlantConsequence, PlantDrive, PlantModel, PlantPoint, Writable } from './types';
 
 export const TANK_CAPACITY_L = 1000;
 /** Where the float switches sit: ON at and above these levels. */
@@ -50,6 +50,49 @@ const towards = (from: number, target: number, dtMs: number, travelMs: number): 
 const on = (v: Value | undefined): boolean => v === true;
 const NOTHING: readonly PlantConsequence[] = [];
 
+const POINTS: readonly PlantPoint[] = [
+  ...START_STOP_BUTTONS,
+  {
+    name: 'LowLevel',
+    address: '%IX0.2',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'Low level float switch, ON at 200 L and above',
+  },
+  {
+    name: 'HighLevel',
+    address: '%IX0.3',
+    type: 'BOOL',
+    kind: 'sensor',
+    comment: 'High level float switch, ON at 800 L and above',
+  },
+  {
+    name: 'Level',
+    address: '%IW0',
+    type: 'INT',
+    kind: 'sensor',
+    comment: 'Level transmitter, litres (0 to 1000)',
+  },
+  { name: 'Pump', address: '%QX0.0', type: 'BOOL', kind: 'actuator', comment: 'Feed pump contactor' },
+  {
+    name: 'InletValve',
+    address: '%QX0.1',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Inlet valve solenoid (open when ON)',
+  },
+  {
+    name: 'DrainValve',
+    address: '%QX0.2',
+    type: 'BOOL',
+    kind: 'actuator',
+    comment: 'Drain valve to the process (open when ON)',
+  },
+  { name: 'RunLamp', address: '%QX0.3', type: 'BOOL', kind: 'actuator', comment: 'Running pilot lamp' },
+];
+/** Where sense() writes each sensor (the loop's input image order). */
+const SENSE = sensorSlots(POINTS, ['LowLevel', 'HighLevel', 'Level']);
+
 export const tank: PlantModel<TankState> = {
   id: 'tank',
   title: 'Tank level control',
@@ -63,46 +106,7 @@ export const tank: PlantModel<TankState> = {
     'Stopped: Pump off, both valves closed. The tank must never overflow.',
     'Level (%IW0) is the water in litres, 0 to 1000; the switches sit at 200 L and 800 L.',
   ].join('\n'),
-  points: [
-    ...START_STOP_BUTTONS,
-    {
-      name: 'LowLevel',
-      address: '%IX0.2',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'Low level float switch, ON at 200 L and above',
-    },
-    {
-      name: 'HighLevel',
-      address: '%IX0.3',
-      type: 'BOOL',
-      kind: 'sensor',
-      comment: 'High level float switch, ON at 800 L and above',
-    },
-    {
-      name: 'Level',
-      address: '%IW0',
-      type: 'INT',
-      kind: 'sensor',
-      comment: 'Level transmitter, litres (0 to 1000)',
-    },
-    { name: 'Pump', address: '%QX0.0', type: 'BOOL', kind: 'actuator', comment: 'Feed pump contactor' },
-    {
-      name: 'InletValve',
-      address: '%QX0.1',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Inlet valve solenoid (open when ON)',
-    },
-    {
-      name: 'DrainValve',
-      address: '%QX0.2',
-      type: 'BOOL',
-      kind: 'actuator',
-      comment: 'Drain valve to the process (open when ON)',
-    },
-    { name: 'RunLamp', address: '%QX0.3', type: 'BOOL', kind: 'actuator', comment: 'Running pilot lamp' },
-  ],
+  points: POINTS,
   faults: [
     { id: 'low_stuck_off', title: 'Low level switch stuck OFF' },
     { id: 'low_stuck_on', title: 'Low level switch stuck ON' },
@@ -145,7 +149,7 @@ export const tank: PlantModel<TankState> = {
     outflow: 0,
   }),
 
-  step(s: TankState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>): TankState {
+  step(s: TankState, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>, into: Writable<TankState> = { ...s }): TankState {
     const faulty = faults.size > 0;
     const pump = towards(s.pump, on(drive.Pump) && !(faulty && faults.has('pump_dead')) ? 1 : 0, dtMs, PUMP_RAMP_MS);
     const inlet = towards(
@@ -176,34 +180,36 @@ export const tank: PlantModel<TankState> = {
     if (level < 0) level = 0;
     const deadheading = pump > 0.5 && inlet < 0.05;
     const deadheadMs = deadheading ? s.deadheadMs + dtMs : 0;
-    return {
-      level,
-      pump,
-      inlet,
-      drain,
-      lamp: on(drive.RunLamp),
-      overflowing,
-      dry,
-      deadheadMs,
-      overflows: s.overflows + (overflowing && !s.overflowing ? 1 : 0),
-      dryRuns: s.dryRuns + (dry && !s.dry ? 1 : 0),
-      deadheads: s.deadheads + (deadheadMs >= DEADHEAD_MS && s.deadheadMs < DEADHEAD_MS ? 1 : 0),
-      spilled,
-      inflow,
-      outflow: dt > 0 ? outflow : 0,
-    };
+    into.level = level;
+    into.pump = pump;
+    into.inlet = inlet;
+    into.drain = drain;
+    into.lamp = on(drive.RunLamp);
+    into.overflowing = overflowing;
+    into.dry = dry;
+    into.deadheadMs = deadheadMs;
+    into.overflows = s.overflows + (overflowing && !s.overflowing ? 1 : 0);
+    into.dryRuns = s.dryRuns + (dry && !s.dry ? 1 : 0);
+    into.deadheads = s.deadheads + (deadheadMs >= DEADHEAD_MS && s.deadheadMs < DEADHEAD_MS ? 1 : 0);
+    into.spilled = spilled;
+    into.inflow = inflow;
+    into.outflow = dt > 0 ? outflow : 0;
+    return into;
   },
 
-  sense(s: TankState, faults: ReadonlySet<string>): Record<string, Value> {
+  sense(s: TankState, faults: ReadonlySet<string>, out: Value[]): void {
     const low = s.level >= LOW_SWITCH_L;
     const high = s.level >= HIGH_SWITCH_L;
     // No fault set (the usual case): the switches as the water has them.
-    if (faults.size === 0) return { LowLevel: low, HighLevel: high, Level: Math.round(s.level) };
-    return {
-      LowLevel: faults.has('low_stuck_on') ? true : faults.has('low_stuck_off') ? false : low,
-      HighLevel: faults.has('high_stuck_on') ? true : faults.has('high_stuck_off') ? false : high,
-      Level: Math.round(s.level),
-    };
+    if (faults.size === 0) {
+      out[SENSE.LowLevel] = low;
+      out[SENSE.HighLevel] = high;
+      out[SENSE.Level] = Math.round(s.level);
+      return;
+    }
+    out[SENSE.LowLevel] = faults.has('low_stuck_on') ? true : faults.has('low_stuck_off') ? false : low;
+    out[SENSE.HighLevel] = faults.has('high_stuck_on') ? true : faults.has('high_stuck_off') ? false : high;
+    out[SENSE.Level] = Math.round(s.level);
   },
 
   check(before: TankState, after: TankState): readonly PlantConsequence[] {

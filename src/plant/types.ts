@@ -60,9 +60,14 @@ export interface PlantConsequence {
  */
 export type PlantDrive = Readonly<Record<string, Value>>;
 
+/** A state's fields writable: what `step` fills (`into`). */
+export type Writable<S> = { -readonly [K in keyof S]: S[K] };
+
 /**
- * One machine. `S` is its state: plain, serialisable data (numbers, booleans, small records) so
- * a scan's state can be recorded, posted to the page and compared; `step` never mutates it.
+ * One machine. `S` is its state: plain, serialisable data (numbers, booleans, strings, and arrays
+ * or records that are never changed once made) so a scan's state can be recorded, posted to the
+ * page and compared. The loop keeps two state objects and steps from one into the other every scan
+ * (no allocation per scan); whoever keeps a state gets a copy (`copyPlantState`).
  */
 export interface PlantModel<S = unknown> {
   /** Short lower-case identifier: `# plant: tank`, `--plant tank`, `tank.level`. */
@@ -75,12 +80,18 @@ export interface PlantModel<S = unknown> {
   readonly quantities: readonly PlantQuantity[];
   initial(): S;
   /**
-   * The state `dtMs` of PLC time later, driven by `drive` the whole time, with `faults` active.
-   * Pure and deterministic: the same arguments always give the same state.
+   * The state `dtMs` of PLC time after `from`, driven by `drive` the whole time, with `faults`
+   * active, written into `into` (every field of it: `into` holds an older state) and returned.
+   * Never changes `from` (nor any array or record in it: a new one replaces one that changes).
+   * Without `into`, a new object. Pure and deterministic: the same arguments always give the same state.
    */
-  step(state: S, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>): S;
-  /** The sensors the program reads in this state, by point name (operator points are the loop's). */
-  sense(state: S, faults: ReadonlySet<string>): Record<string, Value>;
+  step(from: S, drive: PlantDrive, dtMs: number, faults: ReadonlySet<string>, into?: S): S;
+  /**
+   * The sensors the program reads in this state, written into `out` at their slots: the sensor
+   * points in the order of `points` (`sensorSlots`); every sensor every call. Operator points are
+   * the loop's. `senseRecord` gives them by name.
+   */
+  sense(state: S, faults: ReadonlySet<string>, out: Value[]): void;
   /** The consequences that started between `before` and `after` (one step). */
   check(before: S, after: S): readonly PlantConsequence[];
   /** A named quantity (`level`), as a number or boolean. */

@@ -5,6 +5,7 @@
 import type { Value } from '../model/iecTypes';
 import type { PlantSnapshot } from './loop';
 import type { PlantModel, PlantPoint, PlantQuantity, PointKind } from './types';
+import { senseRecord } from './points';
 
 export interface PlantName {
   /** `tank.level`, `tank.Pump`. */
@@ -76,7 +77,7 @@ export function plantValue(model: PlantModel, snapshot: PlantSnapshot, name: str
   if (ref.quantity) return model.quantity(snapshot.state, ref.quantity.name);
   const p = ref.point;
   if (p.kind === 'operator') return snapshot.operator[p.name] === true;
-  if (p.kind === 'sensor') return model.sense(snapshot.state, new Set(snapshot.faults))[p.name];
+  if (p.kind === 'sensor') return senseRecord(model, snapshot.state, new Set(snapshot.faults))[p.name];
   return snapshot.drive?.[p.name];
 }
 

@@ -5,6 +5,7 @@
 import type { Explanation, ExplainTarget } from '../engine/explain';
 import { addressKey, type PlantSnapshot } from '../plant/loop';
 import type { PlantModel, PlantPoint } from '../plant/types';
+import { senseRecord } from '../plant/points';
 import { describeQuantities, findPlantName, formatPlantValue, plantValue } from '../plant/values';
 
 const scanWords = (scan: number): string => `scan ${scan.toLocaleString('en-US')}`;
@@ -69,7 +70,7 @@ export function withPlantWhy(e: Explanation, ctx: PlantWhyContext): Explanation 
       continue;
     }
     const faults = new Set(snap.faults);
-    const value = model.sense(snap.state, faults)[point.name];
+    const value = senseRecord(model, snap.state, faults)[point.name];
     const because = model.explain?.(snap.state, point.name, faults);
     lines.push(
       `${name} (${location}) is written by the machine ${model.id}: ${what}. It presented ${value === undefined ? '?' : formatPlantValue(point.type, value)} after ${scanWords(before)} (${timeWords(snap.timeMs)}), the input ${scanWords(e.scan)} read${because ? `: ${because}` : ''}.`,

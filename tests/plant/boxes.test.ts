@@ -2,6 +2,7 @@
 // each fault, each consequence located, purity; the exercise (reference passes, wrong fails
 // where it goes wrong, in-process and through `rungsmith test`); and the worker's trace of 2,000
 // scans equal to the CLI's, machine included.
+import { senseRecord } from '../../src/plant/points';
 import { afterEach, describe, expect, test } from 'vitest';
 import type { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import {
@@ -37,7 +38,7 @@ function closedLoop(logic: Logic, scans: number, faults: ReadonlySet<string> = n
   const m: Record<string, boolean> = {};
   const events: string[] = [];
   for (let k = 1; k <= scans; k++) {
-    const push = logic(boxes.sense(s, faults), m);
+    const push = logic(senseRecord(boxes, s, faults), m);
     const before = s;
     s = boxes.step(s, { Conveyor: true, Pusher: push, RunLamp: true }, 100, faults);
     for (const c of boxes.check(before, s)) events.push(`${c.id} ${k}: ${c.message}`);
@@ -95,7 +96,7 @@ describe('the box sorter model', () => {
       ...boxes.initial(),
       boxes: [{ n: 1, large, base: x, side: 0, blocked: false, jammed: false, pushed: false }],
     };
-    expect(boxes.sense(s, none)).toEqual({ ...eyes, PusherOut: false, PusherIn: true });
+    expect(senseRecord(boxes, s, none)).toEqual({ ...eyes, PusherOut: false, PusherIn: true });
   });
 
   const pushEvery: Logic = (x, m) => {
@@ -246,7 +247,7 @@ describe('the box sorter model', () => {
     if (outcome.jams) {
       expect(messages).toEqual(['the pusher struck box 7 (large) off the station']);
       expect(s.pusher).toBeLessThan(0.1);
-      expect(boxes.sense(s, none).PusherOut).toBe(false);
+      expect(senseRecord(boxes, s, none).PusherOut).toBe(false);
       // Back in, the plate lets go of the box: it rides on.
       for (let i = 0; i < 3; i++) s = boxes.step(s, { Conveyor: true }, 100, none);
       expect(s.boxes[0]).toMatchObject({ jammed: false, blocked: false });
@@ -257,10 +258,10 @@ describe('the box sorter model', () => {
     let s = boxes.initial();
     for (let i = 0; i < 6; i++) s = boxes.step(s, { Pusher: true }, 100, new Set(['pusher_slow']));
     expect(s.pusher).toBeCloseTo(0.2, 9);
-    expect(boxes.sense(s, none)).toMatchObject({ PusherIn: false, PusherOut: false });
+    expect(senseRecord(boxes, s, none)).toMatchObject({ PusherIn: false, PusherOut: false });
     for (let i = 0; i < 6; i++) s = boxes.step(s, { Pusher: true }, 100, none);
-    expect(boxes.sense(s, none)).toMatchObject({ PusherIn: false, PusherOut: true });
-    expect(boxes.sense(boxes.initial(), new Set(['entry_stuck_on'])).EntryEye).toBe(true);
+    expect(senseRecord(boxes, s, none)).toMatchObject({ PusherIn: false, PusherOut: true });
+    expect(senseRecord(boxes, boxes.initial(), new Set(['entry_stuck_on'])).EntryEye).toBe(true);
   });
 
   test('a step is pure: the same state, drive and time give the same state, the input is not changed', () => {

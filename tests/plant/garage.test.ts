@@ -1,6 +1,7 @@
 // The garage door (issue 26): its physics, faults and consequences; the exercise's reference
 // solution and wrong one through the scenario runner and `rungsmith test`; and the simulation
 // worker's trace of 2,000 scans equal to the CLI's, scan by scan, the door included.
+import { senseRecord } from '../../src/plant/points';
 import { afterEach, describe, expect, test } from 'vitest';
 import type { SimulatedDevice } from '../../src/gateway/simulatedDevice';
 import { CAR_TOP, CLOSED_LIMIT_AT, garage, PREWARN_MS, type GarageState } from '../../src/plant/garage';
@@ -66,18 +67,18 @@ describe('the garage door model', () => {
   });
 
   test('the limit switches and the photo-eye follow the door and the car', () => {
-    expect(garage.sense(garage.initial(), none)).toEqual({
+    expect(senseRecord(garage, garage.initial(), none)).toEqual({
       OpenLimit: false,
       ClosedLimit: true,
       Obstacle: false,
     });
-    expect(garage.sense(at(50), none)).toEqual({ OpenLimit: false, ClosedLimit: false, Obstacle: false });
-    expect(garage.sense(at(99.2), none)).toEqual({ OpenLimit: true, ClosedLimit: false, Obstacle: false });
+    expect(senseRecord(garage, at(50), none)).toEqual({ OpenLimit: false, ClosedLimit: false, Obstacle: false });
+    expect(senseRecord(garage, at(99.2), none)).toEqual({ OpenLimit: true, ClosedLimit: false, Obstacle: false });
     const car = run(at(100), { Doorway: true }, 100);
     expect(car.carIn).toBe(true);
-    expect(garage.sense(car, none).Obstacle).toBe(true);
+    expect(senseRecord(garage, car, none).Obstacle).toBe(true);
     // The car leaves when the operator says.
-    expect(garage.sense(run(car, {}, 100), none).Obstacle).toBe(false);
+    expect(senseRecord(garage, run(car, {}, 100), none).Obstacle).toBe(false);
   });
 
   test('a braking door stops within 0.1 s; reversing brakes first, then ramps up the other way', () => {
@@ -94,7 +95,7 @@ describe('the garage door model', () => {
     const low = run(at(CAR_TOP - 10), { Doorway: true }, 1000);
     expect(low.carWaiting).toBe(true);
     expect(low.carIn).toBe(false);
-    expect(garage.sense(low, none).Obstacle).toBe(false);
+    expect(senseRecord(garage, low, none).Obstacle).toBe(false);
     // The door opens above it: in it comes.
     const opened = run(low, { ...UP, Doorway: true }, 3000);
     expect(opened.position).toBeGreaterThan(CAR_TOP);
@@ -178,8 +179,8 @@ describe('the garage door model', () => {
     ['closed_stuck_on', 'ClosedLimit', true, at(100)],
     ['eye_stuck_off', 'Obstacle', false, run(at(100), { Doorway: true }, 100)],
   ] as const)('fault %s: %s reads %s whatever the door does', (fault, point, value, state) => {
-    expect(garage.sense(state, none)[point]).toBe(!value);
-    expect(garage.sense(state, new Set([fault]))[point]).toBe(value);
+    expect(senseRecord(garage, state, none)[point]).toBe(!value);
+    expect(senseRecord(garage, state, new Set([fault]))[point]).toBe(value);
   });
 
   test('faults: the motor does not start; a slow motor takes 30 s end to end', () => {

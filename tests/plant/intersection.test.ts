@@ -1,6 +1,7 @@
 // The road intersection (issue 26): the model's traffic and pedestrians, its conflict monitor,
 // faults and consequences; the exercise's scenario; and the machine in closed loop, the worker's
 // trace equal to the CLI's scan by scan, and `rungsmith test` on the reference and the wrong one.
+import { senseRecord } from '../../src/plant/points';
 import { describe, expect, test } from 'vitest';
 import {
   HEADWAY_MS,
@@ -96,7 +97,7 @@ describe('the intersection model', () => {
       events.push(...r.events);
     }
     for (const [name, value] of Object.entries(expected)) expect([name, q(s, name)]).toEqual([name, value]);
-    expect(intersection.sense(s, none)).toEqual(sensed);
+    expect(senseRecord(intersection, s, none)).toEqual(sensed);
     expect(events).toEqual([]);
   });
 
@@ -209,11 +210,11 @@ describe('the intersection model', () => {
     expect(burnt.s.lamps & 4).toBe(4);
     expect(burnt.s.lit & 4).toBe(0);
     const queued = burnt.s;
-    expect(intersection.sense(queued, none)).toEqual({ LoopMain: true, LoopSide: true });
-    expect(intersection.sense(queued, new Set(['side_loop_stuck_off'])).LoopSide).toBe(false);
-    expect(intersection.sense(queued, new Set(['main_loop_stuck_off'])).LoopMain).toBe(false);
-    expect(intersection.sense(intersection.initial(), new Set(['side_loop_stuck_on'])).LoopSide).toBe(true);
-    expect(intersection.sense(intersection.initial(), none)).toEqual({ LoopMain: false, LoopSide: false });
+    expect(senseRecord(intersection, queued, none)).toEqual({ LoopMain: true, LoopSide: true });
+    expect(senseRecord(intersection, queued, new Set(['side_loop_stuck_off'])).LoopSide).toBe(false);
+    expect(senseRecord(intersection, queued, new Set(['main_loop_stuck_off'])).LoopMain).toBe(false);
+    expect(senseRecord(intersection, intersection.initial(), new Set(['side_loop_stuck_on'])).LoopSide).toBe(true);
+    expect(senseRecord(intersection, intersection.initial(), none)).toEqual({ LoopMain: false, LoopSide: false });
   });
 
   test('a step is pure: the same state, drive and time give the same state, the input is not changed', () => {

@@ -1,5 +1,6 @@
 // The three-floor lift (issue 26): its physics as a table of cases, each fault and consequence,
 // purity; the exercise's reference and wrong solutions; the worker's trace equal to the CLI's.
+import { senseRecord } from '../../src/plant/points';
 import { describe, expect, test, vi } from 'vitest';
 import { BUFFER_MM, lift, type LiftState } from '../../src/plant/lift';
 import { PLANT_EXAMPLES, LIFT_SCENARIO, liftReference, liftWrong } from '../../src/plant/exercises';
@@ -88,13 +89,13 @@ describe('the lift model', () => {
     [3020.4, { AtFloor2: false, Position: 3020 }],
     [6000, { AtFloor3: true, AtFloor2: false }],
   ])('the floor sensors are ON within 20 mm of their floor: at %d mm', (position, want) => {
-    expect(lift.sense(at(position), none)).toMatchObject(want);
+    expect(senseRecord(lift, at(position), none)).toMatchObject(want);
   });
 
   test('the door limit switches: closed only fully closed, opened only fully open', () => {
-    expect(lift.sense(at(0), none)).toMatchObject({ DoorClosed: true, DoorOpened: false });
-    expect(lift.sense(at(0, { door: 0.01 }), none)).toMatchObject({ DoorClosed: false, DoorOpened: false });
-    expect(lift.sense(at(0, { door: 1 }), none)).toMatchObject({ DoorClosed: false, DoorOpened: true });
+    expect(senseRecord(lift, at(0), none)).toMatchObject({ DoorClosed: true, DoorOpened: false });
+    expect(senseRecord(lift, at(0, { door: 0.01 }), none)).toMatchObject({ DoorClosed: false, DoorOpened: false });
+    expect(senseRecord(lift, at(0, { door: 1 }), none)).toMatchObject({ DoorClosed: false, DoorOpened: true });
   });
 
   test('a call is answered when the door stands fully open at its floor, with the wait', () => {
@@ -167,22 +168,22 @@ describe('the lift model', () => {
     // Dropped as the sensor comes ON (20 ms scans): level, no warning.
     const level: string[] = [];
     s = at(6000);
-    for (let i = 0; i < 2000 && !lift.sense(s, none).AtFloor2; i++) s = run(s, DOWN, 20, none, 20, level);
+    for (let i = 0; i < 2000 && !senseRecord(lift, s, none).AtFloor2; i++) s = run(s, DOWN, 20, none, 20, level);
     s = run(s, {}, 200, none, 20, level);
     expect(level).toEqual([]);
     expect(Math.abs(s.position - 3000)).toBeLessThanOrEqual(20);
   });
 
   test('faults: floor sensors stuck, a dead motor, a slow door, an obstructed door', () => {
-    expect(lift.sense(at(3000), new Set(['floor2_stuck_off'])).AtFloor2).toBe(false);
-    expect(lift.sense(at(0), new Set(['floor2_stuck_on'])).AtFloor2).toBe(true);
-    expect(lift.sense(at(6000), new Set(['floor3_stuck_off'])).AtFloor3).toBe(false);
+    expect(senseRecord(lift, at(3000), new Set(['floor2_stuck_off'])).AtFloor2).toBe(false);
+    expect(senseRecord(lift, at(0), new Set(['floor2_stuck_on'])).AtFloor2).toBe(true);
+    expect(senseRecord(lift, at(6000), new Set(['floor3_stuck_off'])).AtFloor3).toBe(false);
     expect(run(at(0), UP, 2000, new Set(['motor_dead'])).position).toBe(0);
     expect(run(at(0), { DoorOpen: true }, 2000, new Set(['door_slow'])).door).toBeCloseTo(1 / 3, 6);
     const obstructed = new Set(['door_obstructed']);
     const stuck = run(at(0, { door: 1 }), {}, 3000, obstructed);
     expect(stuck.door).toBeCloseTo(0.3, 6);
-    expect(lift.sense(stuck, obstructed)).toMatchObject({ DoorClosed: false, DoorOpened: false });
+    expect(senseRecord(lift, stuck, obstructed)).toMatchObject({ DoorClosed: false, DoorOpened: false });
     // A closed door has nothing in its way; an obstruction does not stop it opening.
     expect(run(at(0), {}, 1000, obstructed).door).toBe(0);
     expect(run(stuck, { DoorOpen: true }, 2000, obstructed).door).toBe(1);

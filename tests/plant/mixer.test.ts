@@ -1,6 +1,7 @@
 // The batch mixer (issue 26): its physics as a table of cases, each fault, each consequence, purity;
 // the exercise (reference clean and passing, the wrong one failing where the batch overheats); the
 // worker session's trace equal to the CLI's scan by scan; `rungsmith test` and `rungsmith plants`.
+import { senseRecord } from '../../src/plant/points';
 import { describe, expect, test, vi } from 'vitest';
 import { mixer, type MixerState } from '../../src/plant/mixer';
 import { PlantLoop } from '../../src/plant/loop';
@@ -67,7 +68,7 @@ describe('the mixer model', () => {
       let s = mixer.initial();
       while (s.level < litres) s = mixer.step(s, { ValveA: true }, 100, none);
       s = run(s, {}, 1500);
-      expect(mixer.sense(s, none)).toMatchObject({
+      expect(senseRecord(mixer, s, none)).toMatchObject({
         LowLevel: low,
         MidLevel: mid,
         HighLevel: high,
@@ -81,9 +82,9 @@ describe('the mixer model', () => {
   test('the agitator reaches full speed in 2 s (AgitatorOn from 90 %) and turns its blades', () => {
     const s1 = run(mixer.initial(), { Agitator: true }, 1000);
     expect(q(s1, 'agitator')).toBeCloseTo(50, 5);
-    expect(mixer.sense(s1, none).AgitatorOn).toBe(false);
+    expect(senseRecord(mixer, s1, none).AgitatorOn).toBe(false);
     const s2 = run(s1, { Agitator: true }, 1000);
-    expect(mixer.sense(s2, none).AgitatorOn).toBe(true);
+    expect(senseRecord(mixer, s2, none).AgitatorOn).toBe(true);
     expect(s2.angle).not.toBe(s1.angle);
   });
 
@@ -94,7 +95,7 @@ describe('the mixer model', () => {
     expect(s.temp).toBeLessThan(47);
     expect(s.element - s.temp).toBeGreaterThan(3);
     expect(s.element - s.temp).toBeLessThan(15);
-    expect(mixer.sense(s, none).Temperature).toBe(Math.round(s.temp * 10));
+    expect(senseRecord(mixer, s, none).Temperature).toBe(Math.round(s.temp * 10));
     expect(consequences(before, s)).toEqual([]);
   });
 
@@ -200,11 +201,11 @@ describe('the mixer consequences', () => {
 
 describe('the mixer faults', () => {
   test('level switches stuck', () => {
-    expect(mixer.sense(mixer.initial(), new Set(['low_stuck_on'])).LowLevel).toBe(true);
+    expect(senseRecord(mixer, mixer.initial(), new Set(['low_stuck_on'])).LowLevel).toBe(true);
     const full = dosed(400, 400);
-    expect(mixer.sense(full, new Set(['mid_stuck_off'])).MidLevel).toBe(false);
-    expect(mixer.sense(full, new Set(['high_stuck_off'])).HighLevel).toBe(false);
-    expect(mixer.sense(full, none)).toMatchObject({ MidLevel: true, HighLevel: true });
+    expect(senseRecord(mixer, full, new Set(['mid_stuck_off'])).MidLevel).toBe(false);
+    expect(senseRecord(mixer, full, new Set(['high_stuck_off'])).HighLevel).toBe(false);
+    expect(senseRecord(mixer, full, none)).toMatchObject({ MidLevel: true, HighLevel: true });
   });
 
   test('valve A slow: 15 s to open', () => {
@@ -216,7 +217,7 @@ describe('the mixer faults', () => {
     const dead = new Set(['agitator_dead']);
     const s = run(dosed(400, 400), { Agitator: true, Heater: true }, 10_000, dead);
     expect(s.agitator).toBe(0);
-    expect(mixer.sense(s, dead).AgitatorOn).toBe(false);
+    expect(senseRecord(mixer, s, dead).AgitatorOn).toBe(false);
     expect(s.scorches).toBe(1);
   });
 
@@ -231,13 +232,13 @@ describe('the mixer faults', () => {
   test('the temperature transmitter frozen: it keeps showing what it showed when the fault came', () => {
     const frozen = new Set(['temp_frozen']);
     const start = run(dosed(400, 400), { Agitator: true, Heater: true }, 10_000);
-    const shown = mixer.sense(start, frozen).Temperature;
+    const shown = senseRecord(mixer, start, frozen).Temperature;
     const later = run(start, { Agitator: true, Heater: true }, 20_000, frozen);
     expect(later.temp).toBeGreaterThan(start.temp + 20);
-    expect(mixer.sense(later, frozen).Temperature).toBe(shown);
+    expect(senseRecord(mixer, later, frozen).Temperature).toBe(shown);
     // Cleared, it reads the batch again after the next step.
     const cleared = mixer.step(later, { Agitator: true }, 100, none);
-    expect(mixer.sense(cleared, none).Temperature).toBe(Math.round(cleared.temp * 10));
+    expect(senseRecord(mixer, cleared, none).Temperature).toBe(Math.round(cleared.temp * 10));
   });
 
   test('a step is pure: the same state, drive, time and faults give the same state, the input is not changed', () => {

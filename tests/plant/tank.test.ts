@@ -1,3 +1,4 @@
+import { senseRecord } from '../../src/plant/points';
 import { describe, expect, test } from 'vitest';
 import { tank, type TankState } from '../../src/plant/tank';
 import { PlantLoop } from '../../src/plant/loop';
@@ -26,7 +27,7 @@ describe('the tank model', () => {
     // 10 s, less the ramps (pump 0.5 s, valve 1 s): a little under 250 L added to the first 100 L.
     expect(s.level).toBeGreaterThan(320);
     expect(s.level).toBeLessThan(350);
-    expect(tank.sense(s, none)).toEqual({ LowLevel: true, HighLevel: false, Level: Math.round(s.level) });
+    expect(senseRecord(tank, s, none)).toEqual({ LowLevel: true, HighLevel: false, Level: Math.round(s.level) });
   });
 
   test('the pump alone moves no water and counts as running against the closed valve', () => {
@@ -52,8 +53,8 @@ describe('the tank model', () => {
 
   test('faults: a switch stuck, a dead pump, a slow inlet valve', () => {
     const full = run(tank.initial(), { Pump: true, InletValve: true }, 40_000);
-    expect(tank.sense(full, new Set(['high_stuck_off'])).HighLevel).toBe(false);
-    expect(tank.sense(tank.initial(), new Set(['low_stuck_on'])).LowLevel).toBe(true);
+    expect(senseRecord(tank, full, new Set(['high_stuck_off'])).HighLevel).toBe(false);
+    expect(senseRecord(tank, tank.initial(), new Set(['low_stuck_on'])).LowLevel).toBe(true);
     expect(run(tank.initial(), { Pump: true, InletValve: true }, 5000, new Set(['pump_dead'])).level).toBe(
       100,
     );

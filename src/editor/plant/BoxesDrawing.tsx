@@ -3,6 +3,7 @@
 // them, the pusher and its plate across the belt, the side chute for large boxes and the bin at
 // the end for small ones, the belt motor coloured by its speed, the run lamp, the counters, and
 // the consequences on the drawing (a jammed box outlined red, JAM, a box fallen on the floor).
+import { senseRecord } from '../../plant/points';
 import { Circle, Group, Line, Rect, Text } from 'react-konva';
 import {
   BELT_LENGTH_MM,
@@ -99,7 +100,7 @@ export function BoxesDrawing({ state }: PlantDrawingProps) {
   // The plate's front across the belt (its face reaches the belt's edge at 1/11 of the stroke).
   const plateY = B.y + (s.pusher * 1.1 - 0.1) * B.w;
   // The eyes as they really are (a fault shows in the program's inputs, not on the machine).
-  const eyes = boxes.sense(s, NO_FAULTS);
+  const eyes = senseRecord(boxes, s, NO_FAULTS);
   const jammed = s.boxes.some((b) => b.jammed);
   const motor = s.speed > 0.99 ? LIT : s.speed > 0.01 ? '#eab308' : DARK;
   const pusherColour = s.pusher > 0.98 ? LIT : s.pusher > 0.02 ? '#eab308' : DARK;

@@ -15,6 +15,7 @@ import type {
   PlcState,
   PowerSnapshot,
   ScanReport,
+  IoImage,
   IoPoint,
   SnapshotOptions,
   StateItem,
@@ -192,6 +193,35 @@ export class ScanPlc extends ScanCycle implements Plc {
         throw new Error(`${location} is an output: the program writes it`);
       },
     };
+  }
+
+  private image: IoImage | undefined;
+
+  ioImage(): IoImage {
+    if (this.image) return this.image;
+    const inputs = this.inputs;
+    const image = this.inputImage;
+    const meters = this.meters;
+    const atLocation = (location: string) => this.program.symbols.atLocation(location, false);
+    this.image = {
+      inputs: image,
+      outputs: this.outputImage,
+      input: (location) => {
+        const v = atLocation(location);
+        return v ? inputs.indexOf(v) : -1;
+      },
+      output: (location) => {
+        const v = atLocation(location);
+        return v ? this.outputsVars.indexOf(v) : -1;
+      },
+      // As ioPoint's write: counted as an input written at a boundary (or a change from outside mid-scan).
+      write: (index, value) => {
+        const v = inputs[index]!;
+        meters[this.cursor === -1 ? 0 : 1]!++;
+        image[index] = typeof value === 'boolean' && v.type === 'BOOL' ? value : coerce(v.type, value, v.locationText ?? v.name);
+      },
+    };
+    return this.image;
   }
 
   outputs(): Record<string, Value> {
