@@ -5,7 +5,6 @@
 //
 // It knows the PLC only as an I/O image by address (the `PlcIo` below), so the simulator, the
 // scenarios, the CLI and the gateway's simulated device drive it alike.
-import type { IoImage } from '../engine/api';
 import type { Value } from '../model/iecTypes';
 import { parseLocation } from '../model/iecTypes';
 import type { PlantConsequence, PlantModel, PlantPoint } from './types';
@@ -18,7 +17,18 @@ export interface PlcIo {
   outputs(): Record<string, Value>;
   setInputs(values: Readonly<Record<string, Value>>): void;
   /** The image itself, by index (the engine's Plc.ioImage): read and written every scan without a lookup or a call per point. */
-  ioImage?(): IoImage;
+  ioImage?(): PlcImage;
+}
+
+/** A PLC's input and output images by index, as the engine's Plc.ioImage gives them (this layer does not import the engine). */
+export interface PlcImage {
+  readonly inputs: readonly Value[];
+  readonly outputs: readonly Value[];
+  /** Index of the input / output declared at a location, -1 when none. */
+  input(location: string): number;
+  output(location: string): number;
+  /** Writes an input as the engine does (converted, counted, applied at the next input read). */
+  write(index: number, value: Value): void;
 }
 
 /**
@@ -454,7 +464,7 @@ interface BoundImage {
 }
 
 /** The engine's own image (Plc.ioImage): its arrays, read in place. */
-function engineImage(io: IoImage): BoundImage {
+function engineImage(io: PlcImage): BoundImage {
   return {
     image: { inputs: io.inputs, outputs: io.outputs, write: (i, v) => io.write(i, v), refresh: NO_REFRESH },
     input: (address) => io.input(address),
