@@ -35,6 +35,8 @@ interface Slot {
 
 export class PlantHistory {
   private chunks: Chunk[] = [];
+  /** The last chunk, the one being filled. */
+  private open: Chunk | undefined;
   /** The arrays of the last chunk dropped, used again for the next one (no allocation in the steady state). */
   private spare: Pick<Chunk, 'times' | 'bits' | 'ints'> | undefined;
   private total = 0;
@@ -43,6 +45,7 @@ export class PlantHistory {
   private readonly intDrive: string[] = [];
   private readonly faultBits: Slot[] = [];
   private readonly words: number;
+  private readonly intCount: number;
   private readonly actuators: readonly PlantPoint[];
   private readonly operators: readonly PlantPoint[];
 
@@ -61,10 +64,12 @@ export class PlantHistory {
       else this.intDrive.push(p.name);
     for (const f of model.faults) this.faultBits.push({ name: f.id, bit: bit++ });
     this.words = Math.max(1, Math.ceil(bit / 32));
+    this.intCount = this.intDrive.length;
   }
 
   clear(): void {
     this.chunks = [];
+    this.open = undefined;
     this.total = 0;
   }
 
@@ -102,29 +107,40 @@ export class PlantHistory {
     record: { readonly bits: Uint32Array; readonly ints: Float64Array },
     timeMs: number,
   ): void {
-    if (this.keep <= 0) return;
-    let c = this.chunks[this.chunks.length - 1];
-    if (!c || c.count === this.chunk || c.firstScan + c.count !== scan) {
-      // Every slot of the arrays is written before it is read: a dropped chunk's serve as they are.
-      const arrays = this.spare ?? {
-        times: new Float64Array(this.chunk),
-        bits: new Uint32Array(this.chunk * this.words),
-        ints: new Float64Array(this.chunk * this.intDrive.length),
-      };
-      this.spare = undefined;
-      // A copy: the loop steps into its state objects again (no later step changes this one).
-      c = { firstScan: scan, state: copyPlantState(before), timeMs: beforeMs, count: 0, times: arrays.times, bits: arrays.bits, ints: arrays.ints };
-      this.chunks.push(c);
+    let c = this.open;
+    // The usual case: the next scan of the open chunk.
+    if (c === undefined || c.count === this.chunk || c.firstScan + c.count !== scan) {
+      if (this.keep <= 0) return;
+      c = this.startChunk(scan, before, beforeMs);
     }
     const i = c.count;
     c.times[i] = timeMs;
     const words = this.words;
     if (words === 1) c.bits[i] = record.bits[0]!;
-    else c.bits.set(record.bits, i * words);
-    if (record.ints.length > 0) c.ints.set(record.ints, i * record.ints.length);
-    c.count++;
-    this.total++;
+    else for (let w = 0; w < words; w++) c.bits[i * words + w] = record.bits[w]!;
+    const n = this.intCount;
+    for (let k = 0; k < n; k++) c.ints[i * n + k] = record.ints[k]!;
+    c.count = i + 1;
     // The oldest chunk goes, whole, once the others hold `keep` scans.
+    if (++this.total - this.chunks[0]!.count >= this.keep) this.dropOldest();
+  }
+
+  private startChunk(scan: number, before: unknown, beforeMs: number): Chunk {
+    // Every slot of the arrays is written before it is read: a dropped chunk's serve as they are.
+    const arrays = this.spare ?? {
+      times: new Float64Array(this.chunk),
+      bits: new Uint32Array(this.chunk * this.words),
+      ints: new Float64Array(this.chunk * this.intCount),
+    };
+    this.spare = undefined;
+    // A copy: the loop steps into its state objects again (no later step changes this one).
+    const c: Chunk = { firstScan: scan, state: copyPlantState(before), timeMs: beforeMs, count: 0, times: arrays.times, bits: arrays.bits, ints: arrays.ints };
+    this.chunks.push(c);
+    this.open = c;
+    return c;
+  }
+
+  private dropOldest(): void {
     while (this.total - this.chunks[0]!.count >= this.keep) {
       const dropped = this.chunks.shift()!;
       this.total -= dropped.count;

@@ -148,8 +148,19 @@ export class PlantLoop {
   /** The points the program declares: actuators to read, sensors and operator controls to write. */
   private outputs: Wire[] = [];
   private declared: Wire[] = [];
-  /** Some declared point is a sensor: the model is asked what it senses. */
-  private sensing = false;
+  /**
+   * The same wiring flat, as the scan reads it (typed arrays by wire, no object per point):
+   * outputs' image index, their bit in the record (BOOL) or -1 and their number (INT) or -1;
+   * sensors' image index and slot; operator controls' image index and bit.
+   */
+  private outIndex = new Int32Array(0);
+  private outBit = new Int32Array(0);
+  private outInt = new Int32Array(0);
+  private outName: string[] = [];
+  private sensorIndex = new Int32Array(0);
+  private sensorAt = new Int32Array(0);
+  private operatorIndex = new Int32Array(0);
+  private operatorBit = new Int32Array(0);
   private bound: PlcIo | undefined;
   private image: LoopImage = { inputs: [], outputs: [], write: () => {}, refresh: NO_REFRESH };
   /** The drive record handed to step(), refilled every scan. */
@@ -251,6 +262,7 @@ export class PlantLoop {
       if (image.inputs[w.index] !== (w.bool ? false : 0)) image.write(w.index, w.bool ? false : 0);
     this.declared = [];
     this.outputs = [];
+    this.flatten();
     this.bound = undefined;
   }
 
@@ -270,11 +282,25 @@ export class PlantLoop {
       const i = image.input(p.address);
       return i < 0 ? [] : [this.wire(p, i)];
     });
-    this.sensing = this.declared.some((w) => !w.operator);
+    this.flatten();
     this.driveConstants();
     // The wired actuators as the output image has them now (a frame before the next scan shows them).
     this.drive();
     this.present();
+  }
+
+  private flatten(): void {
+    const outs = this.outputs;
+    this.outIndex = Int32Array.from(outs, (w) => w.index);
+    this.outBit = Int32Array.from(outs, (w) => (w.bool ? w.bit : -1));
+    this.outInt = Int32Array.from(outs, (w) => (w.bool ? -1 : w.int));
+    this.outName = outs.map((w) => w.name);
+    const sensors = this.declared.filter((w) => !w.operator);
+    this.sensorIndex = Int32Array.from(sensors, (w) => w.index);
+    this.sensorAt = Int32Array.from(sensors, (w) => w.slot);
+    const operators = this.declared.filter((w) => w.operator);
+    this.operatorIndex = Int32Array.from(operators, (w) => w.index);
+    this.operatorBit = Int32Array.from(operators, (w) => w.bit);
   }
 
   /** The program's scan `scan` ended; `scanTimeMs` is when it started, `cycleMs` the scan cycle. */
@@ -318,29 +344,32 @@ export class PlantLoop {
   /** The drive record for a step: the wired actuators read from the output image (the rest is kept up to date). */
   private drive(): Record<string, Value> {
     const d = this.driveRecord;
-    const outputs = this.outputs;
     const image = this.image;
     image.refresh();
     const values = image.outputs;
+    const index = this.outIndex;
+    const boolBit = this.outBit;
     const bits = this.record.bits;
-    const ints = this.record.ints;
     // BOOL points TRUE or FALSE exactly, INT points numbers: what the history records and replays.
     // The record holds the last values: only a change is written by name (outputs change seldom).
-    for (let i = 0; i < outputs.length; i++) {
-      const w = outputs[i]!;
-      const v = values[w.index];
-      if (w.bool) {
+    for (let i = 0; i < index.length; i++) {
+      const v = values[index[i]!];
+      const bit = boolBit[i]!;
+      if (bit >= 0) {
+        const word = bit >>> 5;
+        const mask = 1 << (bit & 31);
         const on = v === true;
-        const word = bits[w.word]!;
-        if (on !== ((word & w.mask) !== 0)) {
-          bits[w.word] = on ? word | w.mask : word & ~w.mask;
-          d[w.name] = on;
+        if (on !== ((bits[word]! & mask) !== 0)) {
+          bits[word]! ^= mask;
+          d[this.outName[i]!] = on;
         }
       } else {
+        const ints = this.record.ints;
+        const k = this.outInt[i]!;
         const n = Number(v);
-        if (!Object.is(n, ints[w.int])) {
-          ints[w.int] = n;
-          d[w.name] = n;
+        if (!Object.is(n, ints[k])) {
+          ints[k] = n;
+          d[this.outName[i]!] = n;
         }
       }
     }
@@ -352,19 +381,31 @@ export class PlantLoop {
    * every scan: the machine drives those inputs as wires would (a forced input keeps its force).
    */
   present(): void {
-    const declared = this.declared;
-    if (!this.bound || declared.length === 0) return;
-    const sensed = this.sensed;
-    if (this.sensing) this.model.sense(this.state, this.faults, sensed);
-    const bits = this.record.bits;
+    if (!this.bound) return;
     const image = this.image;
     const inputs = image.inputs;
-    for (let i = 0; i < declared.length; i++) {
-      const w = declared[i]!;
-      // An operator control as held: its bit in the record (setOperator keeps it); a sensor at its slot.
-      const v = w.slot < 0 ? (bits[w.word]! & w.mask) !== 0 : sensed[w.slot]!;
-      // The image already holding the value is the common case: no write, no conversion.
-      if (inputs[w.index] !== v) image.write(w.index, v);
+    // Sensors, then operator controls: two plain loops (no branch on the kind of point per point).
+    // The image already holding the value is the common case: no write, no conversion.
+    const sensorIndex = this.sensorIndex;
+    if (sensorIndex.length > 0) {
+      const sensed = this.sensed;
+      this.model.sense(this.state, this.faults, sensed);
+      const slot = this.sensorAt;
+      for (let i = 0; i < sensorIndex.length; i++) {
+        const v = sensed[slot[i]!]!;
+        const at = sensorIndex[i]!;
+        if (inputs[at] !== v) image.write(at, v);
+      }
+    }
+    // An operator control as held: its bit in the record (setOperator keeps it).
+    const operatorIndex = this.operatorIndex;
+    const operatorBit = this.operatorBit;
+    const bits = this.record.bits;
+    for (let i = 0; i < operatorIndex.length; i++) {
+      const bit = operatorBit[i]!;
+      const v = (bits[bit >>> 5]! & (1 << (bit & 31))) !== 0;
+      const at = operatorIndex[i]!;
+      if (inputs[at] !== v) image.write(at, v);
     }
   }
 
