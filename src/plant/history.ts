@@ -35,8 +35,17 @@ interface Slot {
 
 export class PlantHistory {
   private chunks: Chunk[] = [];
-  /** The last chunk, the one being filled. */
+  /** The last chunk, the one being filled, and its arrays and count (push touches only these). */
   private open: Chunk | undefined;
+  private openTimes: Float64Array = new Float64Array(0);
+  private openBits: Uint32Array = new Uint32Array(0);
+  private openInts: Float64Array = new Float64Array(0);
+  /** Scans in the open chunk: `chunk` when there is none (the next push starts one). */
+  private openCount: number;
+  /** The scan the open chunk takes next. */
+  private nextScan = -1;
+  /** Scans in the oldest chunk (while it is the open one, kept up to date by dropOldest only when it matters). */
+  private oldestCount = 0;
   /** The arrays of the last chunk dropped, used again for the next one (no allocation in the steady state). */
   private spare: Pick<Chunk, 'times' | 'bits' | 'ints'> | undefined;
   private total = 0;
@@ -65,11 +74,15 @@ export class PlantHistory {
     for (const f of model.faults) this.faultBits.push({ name: f.id, bit: bit++ });
     this.words = Math.max(1, Math.ceil(bit / 32));
     this.intCount = this.intDrive.length;
+    this.openCount = this.chunk;
   }
 
   clear(): void {
     this.chunks = [];
     this.open = undefined;
+    this.openCount = this.chunk;
+    this.nextScan = -1;
+    this.oldestCount = 0;
     this.total = 0;
   }
 
@@ -107,22 +120,24 @@ export class PlantHistory {
     record: { readonly bits: Uint32Array; readonly ints: Float64Array },
     timeMs: number,
   ): void {
-    let c = this.open;
-    // The usual case: the next scan of the open chunk.
-    if (c === undefined || c.count === this.chunk || c.firstScan + c.count !== scan) {
+    // The usual case: the next scan of the open chunk, written through the history's own fields
+    // (its arrays and count: no other object is touched).
+    let i = this.openCount;
+    if (i === this.chunk || scan !== this.nextScan) {
       if (this.keep <= 0) return;
-      c = this.startChunk(scan, before, beforeMs);
+      this.startChunk(scan, before, beforeMs);
+      i = 0;
     }
-    const i = c.count;
-    c.times[i] = timeMs;
+    this.openTimes[i] = timeMs;
     const words = this.words;
-    if (words === 1) c.bits[i] = record.bits[0]!;
-    else for (let w = 0; w < words; w++) c.bits[i * words + w] = record.bits[w]!;
+    if (words === 1) this.openBits[i] = record.bits[0]!;
+    else for (let w = 0; w < words; w++) this.openBits[i * words + w] = record.bits[w]!;
     const n = this.intCount;
-    for (let k = 0; k < n; k++) c.ints[i * n + k] = record.ints[k]!;
-    c.count = i + 1;
+    for (let k = 0; k < n; k++) this.openInts[i * n + k] = record.ints[k]!;
+    this.openCount = i + 1;
+    this.nextScan = scan + 1;
     // The oldest chunk goes, whole, once the others hold `keep` scans.
-    if (++this.total - this.chunks[0]!.count >= this.keep) this.dropOldest();
+    if (++this.total - this.oldestCount >= this.keep) this.dropOldest();
   }
 
   private startChunk(scan: number, before: unknown, beforeMs: number): Chunk {
@@ -133,19 +148,32 @@ export class PlantHistory {
       ints: new Float64Array(this.chunk * this.intCount),
     };
     this.spare = undefined;
+    // The chunk open until now is complete (its count is kept in `openCount` while open).
+    if (this.open) this.open.count = this.openCount;
     // A copy: the loop steps into its state objects again (no later step changes this one).
     const c: Chunk = { firstScan: scan, state: copyPlantState(before), timeMs: beforeMs, count: 0, times: arrays.times, bits: arrays.bits, ints: arrays.ints };
     this.chunks.push(c);
     this.open = c;
+    this.openTimes = c.times;
+    this.openBits = c.bits;
+    this.openInts = c.ints;
+    this.openCount = 0;
+    if (this.chunks.length === 1) this.oldestCount = 0;
     return c;
   }
 
   private dropOldest(): void {
-    while (this.total - this.chunks[0]!.count >= this.keep) {
+    while (this.total - this.countOf(this.chunks[0]!) >= this.keep) {
       const dropped = this.chunks.shift()!;
       this.total -= dropped.count;
       if (dropped.times.length === this.chunk) this.spare = dropped;
     }
+    this.oldestCount = this.countOf(this.chunks[0]!);
+  }
+
+  /** Scans in a chunk (the open one's count is the history's). */
+  private countOf(c: Chunk): number {
+    return c === this.open ? this.openCount : c.count;
   }
 
   /** The oldest scan kept, if any. */
@@ -188,7 +216,7 @@ export class PlantHistory {
       const mid = (lo + hi) >> 1;
       const c = this.chunks[mid]!;
       if (scan < c.firstScan) hi = mid - 1;
-      else if (scan >= c.firstScan + c.count) lo = mid + 1;
+      else if (scan >= c.firstScan + this.countOf(c)) lo = mid + 1;
       else return c;
     }
     return undefined;

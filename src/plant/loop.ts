@@ -149,20 +149,24 @@ export class PlantLoop {
   private outputs: Wire[] = [];
   private declared: Wire[] = [];
   /**
-   * The same wiring flat, as the scan reads it (typed arrays by wire, no object per point):
-   * outputs' image index, their bit in the record (BOOL) or -1 and their number (INT) or -1;
-   * sensors' image index and slot; operator controls' image index and bit.
+   * The same wiring flat, as the scan reads it: one array of numbers, a few cache lines, no
+   * object per point (after a scan of a large program the machine's data is out of the fastest
+   * cache: each distinct object it touches costs). Per actuator: its image index, its bit in the
+   * record (BOOL) or -1, its number (INT) or -1; per sensor: image index and slot; per operator
+   * control: image index and bit. `sensorsAt` and `operatorsAt` are where those parts start.
    */
-  private outIndex = new Int32Array(0);
-  private outBit = new Int32Array(0);
-  private outInt = new Int32Array(0);
+  private wiring = new Int32Array(0);
+  private sensorsAt = 0;
+  private operatorsAt = 0;
   private outName: string[] = [];
-  private sensorIndex = new Int32Array(0);
-  private sensorAt = new Int32Array(0);
-  private operatorIndex = new Int32Array(0);
-  private operatorBit = new Int32Array(0);
   private bound: PlcIo | undefined;
   private image: LoopImage = { inputs: [], outputs: [], write: () => {}, refresh: NO_REFRESH };
+  /** The image's arrays (kept here: read every scan). */
+  private inputImage: readonly Value[] = [];
+  private outputImage: readonly Value[] = [];
+  /** The record's arrays (kept here: read every scan). */
+  private readonly bits: Uint32Array;
+  private readonly ints: Float64Array;
   /** The drive record handed to step(), refilled every scan. */
   private readonly driveRecord: Record<string, Value> = {};
   /** The same as the history records it (src/plant/history.ts), faults included, kept up to date alongside. */
@@ -194,6 +198,8 @@ export class PlantLoop {
       }
     this.history = new PlantHistory(model, this.points, keep);
     this.record = this.history.newRecord();
+    this.bits = this.record.bits;
+    this.ints = this.record.ints;
     this.driveConstants();
   }
 
@@ -291,16 +297,18 @@ export class PlantLoop {
 
   private flatten(): void {
     const outs = this.outputs;
-    this.outIndex = Int32Array.from(outs, (w) => w.index);
-    this.outBit = Int32Array.from(outs, (w) => (w.bool ? w.bit : -1));
-    this.outInt = Int32Array.from(outs, (w) => (w.bool ? -1 : w.int));
-    this.outName = outs.map((w) => w.name);
     const sensors = this.declared.filter((w) => !w.operator);
-    this.sensorIndex = Int32Array.from(sensors, (w) => w.index);
-    this.sensorAt = Int32Array.from(sensors, (w) => w.slot);
     const operators = this.declared.filter((w) => w.operator);
-    this.operatorIndex = Int32Array.from(operators, (w) => w.index);
-    this.operatorBit = Int32Array.from(operators, (w) => w.bit);
+    this.wiring = Int32Array.from([
+      ...outs.flatMap((w) => [w.index, w.bool ? w.bit : -1, w.bool ? -1 : w.int]),
+      ...sensors.flatMap((w) => [w.index, w.slot]),
+      ...operators.flatMap((w) => [w.index, w.bit]),
+    ]);
+    this.sensorsAt = outs.length * 3;
+    this.operatorsAt = this.sensorsAt + sensors.length * 2;
+    this.outName = outs.map((w) => w.name);
+    this.inputImage = this.image.inputs;
+    this.outputImage = this.image.outputs;
   }
 
   /** The program's scan `scan` ended; `scanTimeMs` is when it started, `cycleMs` the scan cycle. */
@@ -344,32 +352,31 @@ export class PlantLoop {
   /** The drive record for a step: the wired actuators read from the output image (the rest is kept up to date). */
   private drive(): Record<string, Value> {
     const d = this.driveRecord;
-    const image = this.image;
-    image.refresh();
-    const values = image.outputs;
-    const index = this.outIndex;
-    const boolBit = this.outBit;
-    const bits = this.record.bits;
+    this.image.refresh();
+    const values = this.outputImage;
+    const wiring = this.wiring;
+    const end = this.sensorsAt;
+    const bits = this.bits;
     // BOOL points TRUE or FALSE exactly, INT points numbers: what the history records and replays.
     // The record holds the last values: only a change is written by name (outputs change seldom).
-    for (let i = 0; i < index.length; i++) {
-      const v = values[index[i]!];
-      const bit = boolBit[i]!;
+    for (let i = 0; i < end; i += 3) {
+      const v = values[wiring[i]!];
+      const bit = wiring[i + 1]!;
       if (bit >= 0) {
         const word = bit >>> 5;
         const mask = 1 << (bit & 31);
         const on = v === true;
         if (on !== ((bits[word]! & mask) !== 0)) {
           bits[word]! ^= mask;
-          d[this.outName[i]!] = on;
+          d[this.outName[i / 3]!] = on;
         }
       } else {
-        const ints = this.record.ints;
-        const k = this.outInt[i]!;
+        const ints = this.ints;
+        const k = wiring[i + 2]!;
         const n = Number(v);
         if (!Object.is(n, ints[k])) {
           ints[k] = n;
-          d[this.outName[i]!] = n;
+          d[this.outName[i / 3]!] = n;
         }
       }
     }
@@ -382,30 +389,27 @@ export class PlantLoop {
    */
   present(): void {
     if (!this.bound) return;
-    const image = this.image;
-    const inputs = image.inputs;
+    const inputs = this.inputImage;
+    const wiring = this.wiring;
     // Sensors, then operator controls: two plain loops (no branch on the kind of point per point).
     // The image already holding the value is the common case: no write, no conversion.
-    const sensorIndex = this.sensorIndex;
-    if (sensorIndex.length > 0) {
+    const sensorsEnd = this.operatorsAt;
+    if (sensorsEnd > this.sensorsAt) {
       const sensed = this.sensed;
       this.model.sense(this.state, this.faults, sensed);
-      const slot = this.sensorAt;
-      for (let i = 0; i < sensorIndex.length; i++) {
-        const v = sensed[slot[i]!]!;
-        const at = sensorIndex[i]!;
-        if (inputs[at] !== v) image.write(at, v);
+      for (let i = this.sensorsAt; i < sensorsEnd; i += 2) {
+        const v = sensed[wiring[i + 1]!]!;
+        const at = wiring[i]!;
+        if (inputs[at] !== v) this.image.write(at, v);
       }
     }
     // An operator control as held: its bit in the record (setOperator keeps it).
-    const operatorIndex = this.operatorIndex;
-    const operatorBit = this.operatorBit;
-    const bits = this.record.bits;
-    for (let i = 0; i < operatorIndex.length; i++) {
-      const bit = operatorBit[i]!;
+    const bits = this.bits;
+    for (let i = sensorsEnd; i < wiring.length; i += 2) {
+      const bit = wiring[i + 1]!;
       const v = (bits[bit >>> 5]! & (1 << (bit & 31))) !== 0;
-      const at = operatorIndex[i]!;
-      if (inputs[at] !== v) image.write(at, v);
+      const at = wiring[i]!;
+      if (inputs[at] !== v) this.image.write(at, v);
     }
   }
 

@@ -1,0 +1,126 @@
+// The loop steps every machine between two state objects (docs/PLANTS.md, "Keep it cheap"): each
+// step writes the next state into the object that held the state before last. That is exact only
+// if `step` writes every field of `into` and never changes `from`; and whoever keeps a state (a
+// snapshot, a keyframe, the page's frame) must hold a copy no later step changes. For every
+// machine registered, with its actuators, operator controls and faults changing now and then.
+import { describe, expect, test } from 'vitest';
+import type { Value } from '../../src/model/iecTypes';
+import { PlantLoop } from '../../src/plant/loop';
+import { PLANTS } from '../../src/plant/machines';
+import { senseRecord, sensorSlots } from '../../src/plant/points';
+import type { PlantModel } from '../../src/plant/types';
+
+function lcg(seed: number): () => number {
+  let s = seed;
+  return () => {
+    s = (s * 1103515245 + 12345) % 2147483648;
+    return s / 2147483648;
+  };
+}
+
+/** Every field of a state turned into a value no step could leave by chance (an old state, at worst). */
+function poisoned(state: object): Record<string, unknown> {
+  const out: Record<string, unknown> = {};
+  for (const [k, v] of Object.entries(state))
+    out[k] = typeof v === 'number' ? -987654.321 : typeof v === 'boolean' ? !v : typeof v === 'string' ? 'poison' : Array.isArray(v) ? [{ poison: true }] : { poison: true };
+  return out;
+}
+
+/** Frozen, arrays and records inside too: a step writing to it throws (modules are strict). */
+function frozen<T>(value: T): T {
+  if (value && typeof value === 'object' && !Object.isFrozen(value)) {
+    for (const v of Object.values(value)) frozen(v);
+    Object.freeze(value);
+  }
+  return value;
+}
+
+/** A run's drives, times and faults, the same for every way of stepping it. */
+function script(model: PlantModel, steps: number) {
+  const rnd = lcg(11);
+  const driven = model.points.filter((p) => p.kind !== 'sensor');
+  const drive: Record<string, Value> = {};
+  for (const p of driven) drive[p.name] = p.type === 'BOOL' ? false : 0;
+  const faults = new Set<string>();
+  const out: { drive: Record<string, Value>; dt: number; faults: Set<string> }[] = [];
+  for (let i = 0; i < steps; i++) {
+    for (const p of driven) if (rnd() < 0.06) drive[p.name] = p.type === 'BOOL' ? !drive[p.name] : Math.floor(rnd() * 1000);
+    for (const f of model.faults)
+      if (rnd() < 0.003) {
+        if (rnd() < 0.5) faults.add(f.id);
+        else faults.delete(f.id);
+      }
+    out.push({ drive: { ...drive }, dt: rnd() < 0.02 ? 700 : 100, faults: new Set(faults) });
+  }
+  return out;
+}
+
+describe('stepping into a second state object', () => {
+  for (const model of PLANTS)
+    test(`${model.id}: step writes every field of \`into\` and never changes \`from\``, () => {
+      const steps = script(model, 3000);
+      // Fresh objects every step (step without `into`), from frozen states.
+      let fresh = frozen(model.initial());
+      const expected: unknown[] = [];
+      for (const s of steps) {
+        fresh = frozen(model.step(fresh, s.drive, s.dt, s.faults));
+        expected.push(fresh);
+      }
+      // Into a poisoned object every step: whatever it held must not show through.
+      let state = model.initial();
+      steps.forEach((s, i) => {
+        const into = poisoned(state as object);
+        state = model.step(frozen(state), s.drive, s.dt, s.faults, into as never);
+        expect(state).toBe(into);
+        expect(state, `step ${i + 1}`).toEqual(expected[i]);
+        state = { ...(state as object) } as never;
+      });
+    });
+
+  for (const model of PLANTS)
+    test(`${model.id}: snapshots, the current state and seeked scans keep their values as the machine goes on`, () => {
+      const rnd = lcg(3);
+      const image: Record<string, Value> = {};
+      for (const p of model.points) if (p.kind === 'actuator') image[p.address] = p.type === 'BOOL' ? false : 0;
+      const loop = new PlantLoop(model, {}, 10_000);
+      loop.bind({ outputs: () => image, setInputs: () => {} });
+      const kept: { snap: ReturnType<PlantLoop['snapshot']>; copy: string; current: unknown; currentCopy: string }[] = [];
+      for (let k = 1; k <= 600; k++) {
+        for (const p of model.points)
+          if (p.kind === 'actuator' && rnd() < 0.1) image[p.address] = p.type === 'BOOL' ? !image[p.address] : Math.floor(rnd() * 1000);
+        loop.afterScan(k, (k - 1) * 100, 100);
+        if (k % 50 === 0) {
+          const snap = loop.snapshot();
+          const current = loop.currentState();
+          kept.push({ snap, copy: JSON.stringify(snap.state), current, currentCopy: JSON.stringify(current) });
+        }
+      }
+      for (const { snap, copy, current, currentCopy } of kept) {
+        expect(JSON.stringify(snap.state)).toBe(copy);
+        expect(JSON.stringify(current)).toBe(currentCopy);
+        // The history gives the same machine for that scan, and seeking it twice changes neither.
+        const seek = loop.at(snap.scan)!;
+        expect(seek.state).toEqual(snap.state);
+        loop.at(snap.scan);
+        expect(seek.state).toEqual(snap.state);
+      }
+    });
+
+  for (const model of PLANTS)
+    test(`${model.id}: sense writes every sensor at its slot, in the order of the points`, () => {
+      const sensors = model.points.filter((p) => p.kind === 'sensor').map((p) => p.name);
+      const out: Value[] = sensors.map(() => 'unwritten' as unknown as Value);
+      model.sense(model.initial(), new Set(), out);
+      expect(out).toHaveLength(sensors.length);
+      for (const v of out) expect(typeof v === 'boolean' || typeof v === 'number').toBe(true);
+      expect(Object.keys(senseRecord(model, model.initial(), new Set()))).toEqual(sensors);
+    });
+
+  test('a machine whose sense names are not its sensor points is refused when its module loads', () => {
+    const points = PLANTS[0]!.points;
+    const sensors = points.filter((p) => p.kind === 'sensor').map((p) => p.name);
+    expect(sensorSlots(points, [...sensors].reverse())).toEqual(Object.fromEntries(sensors.map((n, i) => [n, i])));
+    expect(() => sensorSlots(points, sensors.slice(1))).toThrow(`the sensor points are ${sensors.join(', ')}`);
+    expect(() => sensorSlots(points, [...sensors, 'Nothing'])).toThrow('sense writes');
+  });
+});
