@@ -93,6 +93,7 @@ export interface BoxesState {
   readonly lastOut: string;
 }
 
+const NOTHING: readonly PlantConsequence[] = [];
 const on = (v: Value | undefined): boolean => v === true;
 const towards = (from: number, target: number, dtMs: number, travelMs: number): number => {
   const delta = dtMs / travelMs;
@@ -419,7 +420,7 @@ export const boxes: PlantModel<BoxesState> = {
 
   check(before: BoxesState, after: BoxesState): readonly PlantConsequence[] {
     if (after.missorted === before.missorted && after.jams === before.jams && after.fallen === before.fallen)
-      return [];
+      return NOTHING;
     const out: PlantConsequence[] = [];
     if (after.missorted > before.missorted)
       out.push({ id: 'missorted', severity: 'error', message: after.lastMissort, counter: 'missorted' });

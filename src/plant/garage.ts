@@ -260,10 +260,19 @@ export const garage: PlantModel<GarageState> = {
   },
 
   sense(s: GarageState, faults: ReadonlySet<string>, out: Value[]): void {
+    const open = s.position >= OPEN_LIMIT_AT;
+    const closed = s.position <= CLOSED_LIMIT_AT;
+    // No fault set (the usual case): the switches as the door has them, no fault looked up.
+    if (faults.size === 0) {
+      out[SENSE.OpenLimit] = open;
+      out[SENSE.ClosedLimit] = closed;
+      out[SENSE.Obstacle] = s.carIn;
+      return;
+    }
     const sw = (id: string, real: boolean) =>
       faults.has(`${id}_stuck_on`) ? true : faults.has(`${id}_stuck_off`) ? false : real;
-    out[SENSE.OpenLimit] = sw('open', s.position >= OPEN_LIMIT_AT);
-    out[SENSE.ClosedLimit] = sw('closed', s.position <= CLOSED_LIMIT_AT);
+    out[SENSE.OpenLimit] = sw('open', open);
+    out[SENSE.ClosedLimit] = sw('closed', closed);
     out[SENSE.Obstacle] = sw('eye', s.carIn);
   },
 

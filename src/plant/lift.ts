@@ -426,10 +426,12 @@ export const lift: PlantModel<LiftState> = {
   },
 
   sense(s: LiftState, faults: ReadonlySet<string>, out: Value[]): void {
+    // No fault set (the usual case): no fault looked up.
+    const any = faults.size > 0;
     const at = (i: number): boolean =>
-      faults.has(STUCK_ON[i]!)
+      any && faults.has(STUCK_ON[i]!)
         ? true
-        : faults.has(STUCK_OFF[i]!)
+        : any && faults.has(STUCK_OFF[i]!)
           ? false
           : Math.abs(s.position - FLOOR_MM[i]!) <= FLOOR_WINDOW_MM;
     out[SENSE.AtFloor1] = at(0);
