@@ -59,11 +59,9 @@ interface Wire {
   readonly index: number;
   /**
    * Where the point's value is in the step's history record (the loop's own copy of the drive): a
-   * BOOL actuator's or an operator control's bit (its word and mask), an INT actuator's number.
+   * BOOL actuator's or an operator control's bit, an INT actuator's number.
    */
   readonly bit: number;
-  readonly word: number;
-  readonly mask: number;
   readonly int: number;
 }
 const NO_REFRESH = (): void => {};
@@ -149,16 +147,12 @@ export class PlantLoop {
   private outputs: Wire[] = [];
   private declared: Wire[] = [];
   /**
-   * The same wiring flat, as the scan reads it: one array of numbers, a few cache lines, no
-   * object per point (after a scan of a large program the machine's data is out of the fastest
-   * cache: each distinct object it touches costs). Per actuator: its image index, its bit in the
-   * record (BOOL) or -1, its number (INT) or -1; per sensor: image index and slot; per operator
-   * control: image index and bit. `sensorsAt` and `operatorsAt` are where those parts start.
+   * The same wiring as code (`compileDrive`, `compilePresent`): straight-line reads and writes of
+   * the image at the wired points' indices, no loop over points and no object per point.
    */
-  private wiring = new Int32Array(0);
-  private sensorsAt = 0;
-  private operatorsAt = 0;
-  private outName: string[] = [];
+  private sensing = false;
+  private driveCode: DriveCode = () => {};
+  private presentCode: PresentCode = () => {};
   private bound: PlcIo | undefined;
   private image: LoopImage = { inputs: [], outputs: [], write: () => {}, refresh: NO_REFRESH };
   /** The image's arrays (kept here: read every scan). */
@@ -204,7 +198,6 @@ export class PlantLoop {
   }
 
   private wire(point: PlantPoint, index: number): Wire {
-    const bit = this.history.bitOf(point.name);
     return {
       point,
       name: point.name,
@@ -212,9 +205,7 @@ export class PlantLoop {
       operator: point.kind === 'operator',
       slot: this.sensorSlot.get(point.name) ?? -1,
       index,
-      bit,
-      word: bit < 0 ? 0 : bit >>> 5,
-      mask: bit < 0 ? 0 : 1 << (bit & 31),
+      bit: this.history.bitOf(point.name),
       int: this.history.intOf(point.name),
     };
   }
@@ -296,19 +287,15 @@ export class PlantLoop {
   }
 
   private flatten(): void {
-    const outs = this.outputs;
     const sensors = this.declared.filter((w) => !w.operator);
-    const operators = this.declared.filter((w) => w.operator);
-    this.wiring = Int32Array.from([
-      ...outs.flatMap((w) => [w.index, w.bool ? w.bit : -1, w.bool ? -1 : w.int]),
-      ...sensors.flatMap((w) => [w.index, w.slot]),
-      ...operators.flatMap((w) => [w.index, w.bit]),
-    ]);
-    this.sensorsAt = outs.length * 3;
-    this.operatorsAt = this.sensorsAt + sensors.length * 2;
-    this.outName = outs.map((w) => w.name);
+    this.sensing = sensors.length > 0;
     this.inputImage = this.image.inputs;
     this.outputImage = this.image.outputs;
+    this.driveCode = compileDrive(this.outputs);
+    this.presentCode = compilePresent(
+      sensors,
+      this.declared.filter((w) => w.operator),
+    );
   }
 
   /** The program's scan `scan` ended; `scanTimeMs` is when it started, `cycleMs` the scan cycle. */
@@ -351,36 +338,9 @@ export class PlantLoop {
 
   /** The drive record for a step: the wired actuators read from the output image (the rest is kept up to date). */
   private drive(): Record<string, Value> {
-    const d = this.driveRecord;
     this.image.refresh();
-    const values = this.outputImage;
-    const wiring = this.wiring;
-    const end = this.sensorsAt;
-    const bits = this.bits;
-    // BOOL points TRUE or FALSE exactly, INT points numbers: what the history records and replays.
-    // The record holds the last values: only a change is written by name (outputs change seldom).
-    for (let i = 0; i < end; i += 3) {
-      const v = values[wiring[i]!];
-      const bit = wiring[i + 1]!;
-      if (bit >= 0) {
-        const word = bit >>> 5;
-        const mask = 1 << (bit & 31);
-        const on = v === true;
-        if (on !== ((bits[word]! & mask) !== 0)) {
-          bits[word]! ^= mask;
-          d[this.outName[i / 3]!] = on;
-        }
-      } else {
-        const ints = this.ints;
-        const k = wiring[i + 2]!;
-        const n = Number(v);
-        if (!Object.is(n, ints[k])) {
-          ints[k] = n;
-          d[this.outName[i / 3]!] = n;
-        }
-      }
-    }
-    return d;
+    this.driveCode(this.outputImage, this.bits, this.ints, this.driveRecord);
+    return this.driveRecord;
   }
 
   /**
@@ -389,28 +349,8 @@ export class PlantLoop {
    */
   present(): void {
     if (!this.bound) return;
-    const inputs = this.inputImage;
-    const wiring = this.wiring;
-    // Sensors, then operator controls: two plain loops (no branch on the kind of point per point).
-    // The image already holding the value is the common case: no write, no conversion.
-    const sensorsEnd = this.operatorsAt;
-    if (sensorsEnd > this.sensorsAt) {
-      const sensed = this.sensed;
-      this.model.sense(this.state, this.faults, sensed);
-      for (let i = this.sensorsAt; i < sensorsEnd; i += 2) {
-        const v = sensed[wiring[i + 1]!]!;
-        const at = wiring[i]!;
-        if (inputs[at] !== v) this.image.write(at, v);
-      }
-    }
-    // An operator control as held: its bit in the record (setOperator keeps it).
-    const bits = this.bits;
-    for (let i = sensorsEnd; i < wiring.length; i += 2) {
-      const bit = wiring[i + 1]!;
-      const v = (bits[bit >>> 5]! & (1 << (bit & 31))) !== 0;
-      const at = wiring[i]!;
-      if (inputs[at] !== v) this.image.write(at, v);
-    }
+    if (this.sensing) this.model.sense(this.state, this.faults, this.sensed);
+    this.presentCode(this.inputImage, this.sensed, this.bits, this.image);
   }
 
   snapshot(): PlantSnapshot {
@@ -562,4 +502,42 @@ function recordImage(plc: PlcIo, actuators: readonly PlantPoint[], inputPoints: 
       return inputs.length - 1;
     },
   };
+}
+
+type DriveCode = (values: readonly Value[], bits: Uint32Array, ints: Float64Array, drive: Record<string, Value>) => void;
+type PresentCode = (inputs: readonly Value[], sensed: readonly Value[], bits: Uint32Array, image: LoopImage) => void;
+
+/**
+ * The drive for one wiring as straight-line code (as the engine compiles a program, and where it
+ * runs: the simulator's and the scenarios' workers, the CLI, the gateway; the page's CSP allows
+ * `new Function` in workers only, src/gateway/staticFiles.ts). Each wired
+ * actuator read from its place in the output image; a change goes into the history's record and,
+ * by name, into the drive record. BOOL points TRUE or FALSE exactly, INT points numbers.
+ */
+function compileDrive(outs: readonly Wire[]): DriveCode {
+  const body = outs.map((w) => {
+    const name = JSON.stringify(w.name);
+    if (w.bool) {
+      const word = w.bit >>> 5;
+      const mask = (1 << (w.bit & 31)) >>> 0;
+      return `on = O[${w.index}] === true; if (on !== ((B[${word}] & ${mask}) !== 0)) { B[${word}] ^= ${mask}; D[${name}] = on; }`;
+    }
+    return `n = Number(O[${w.index}]); if (!Object.is(n, N[${w.int}])) { N[${w.int}] = n; D[${name}] = n; }`;
+  });
+  return new Function('O', 'B', 'N', 'D', `"use strict"; let on, n;\n${body.join('\n')}`) as DriveCode;
+}
+
+/**
+ * Presenting for one wiring as straight-line code: each sensor as sensed (its slot), each operator
+ * control as held (its bit in the record), written into the input image only where it differs.
+ */
+function compilePresent(sensors: readonly Wire[], operators: readonly Wire[]): PresentCode {
+  const body = [
+    ...sensors.map((w) => `v = S[${w.slot}]; if (I[${w.index}] !== v) M.write(${w.index}, v);`),
+    ...operators.map(
+      (w) =>
+        `v = (B[${w.bit >>> 5}] & ${(1 << (w.bit & 31)) >>> 0}) !== 0; if (I[${w.index}] !== v) M.write(${w.index}, v);`,
+    ),
+  ];
+  return new Function('I', 'S', 'B', 'M', `"use strict"; let v;\n${body.join('\n')}`) as PresentCode;
 }

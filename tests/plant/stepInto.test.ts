@@ -8,7 +8,11 @@ import type { Value } from '../../src/model/iecTypes';
 import { PlantLoop } from '../../src/plant/loop';
 import { PLANTS } from '../../src/plant/machines';
 import { senseRecord, sensorSlots } from '../../src/plant/points';
-import type { PlantModel } from '../../src/plant/types';
+import type { PlantModel, PlantPoint, Writable } from '../../src/plant/types';
+import type { Project } from '../../src/model/project';
+import { compileProgram, createPlc } from '../../src/engine/plc';
+import { tankReference } from '../../src/plant/exercises';
+import { tank } from '../../src/plant/tank';
 
 function lcg(seed: number): () => number {
   let s = seed;
@@ -122,5 +126,86 @@ describe('stepping into a second state object', () => {
     expect(sensorSlots(points, [...sensors].reverse())).toEqual(Object.fromEntries(sensors.map((n, i) => [n, i])));
     expect(() => sensorSlots(points, sensors.slice(1))).toThrow(`the sensor points are ${sensors.join(', ')}`);
     expect(() => sensorSlots(points, [...sensors, 'Nothing'])).toThrow('sense writes');
+  });
+});
+
+describe('the loop on the engine’s I/O image', () => {
+  const plcOf = (project: Project) => createPlc(compileProgram(project).program!, { cycleMs: 100 });
+
+  test('sensors go into the input image by index; a hand-written input is overwritten next scan, a forced one keeps its force', () => {
+    const plc = plcOf(tankReference());
+    const loop = new PlantLoop(tank, {}, 1000);
+    loop.bind(plc);
+    const high = plc.ioPoint!('%IX0.3')!;
+    const low = plc.ioPoint!('%IX0.2')!;
+    const level = plc.ioPoint!('%IW0')!;
+    // The initial tank: 100 L, both switches OFF, the transmitter 100.
+    expect([low.read(), high.read(), level.read()]).toEqual([false, false, 100]);
+    // Written by hand: overwritten by the machine after the next scan, as a wire would.
+    plc.setInputs({ '%IX0.3': true });
+    plc.scan();
+    expect(plc.values().HighLevel).toBe(true);
+    loop.afterScan(1, 0, 100);
+    expect(high.read()).toBe(false);
+    plc.scan();
+    expect(plc.values().HighLevel).toBe(false);
+    // Forced: the program reads the forced value whatever the machine writes.
+    plc.force('HighLevel', true);
+    for (let k = 3; k <= 5; k++) {
+      plc.scan();
+      loop.afterScan(k, (k - 1) * 100, 100);
+      expect(plc.values().HighLevel).toBe(true);
+    }
+    plc.unforce('HighLevel');
+    plc.scan();
+    expect(plc.values().HighLevel).toBe(false);
+  });
+
+  test('an INT actuator is read as a number, recorded and replayed; the drive record changes by name only when the output does', () => {
+    interface DialState {
+      readonly speed: number;
+      readonly turns: number;
+    }
+    const points: PlantPoint[] = [
+      { name: 'Speed', address: '%QW0', type: 'INT', kind: 'actuator', comment: 'Speed setpoint' },
+      { name: 'Run', address: '%QX0.0', type: 'BOOL', kind: 'actuator', comment: 'Run' },
+      { name: 'Turns', address: '%IW0', type: 'INT', kind: 'sensor', comment: 'Turns counted' },
+    ];
+    const SENSE = sensorSlots(points, ['Turns']);
+    const dial: PlantModel<DialState> = {
+      id: 'dial',
+      title: 'Dial',
+      task: '',
+      points,
+      faults: [],
+      quantities: [{ name: 'turns', type: 'REAL', comment: 'turns' }],
+      initial: () => ({ speed: 0, turns: 0 }),
+      step(s, drive, dtMs, _faults, into: Writable<DialState> = { ...s }) {
+        into.speed = drive.Run === true ? Number(drive.Speed) : 0;
+        into.turns = s.turns + (into.speed * dtMs) / 1000;
+        return into;
+      },
+      sense(s, _faults, out) {
+        out[SENSE.Turns] = Math.floor(s.turns);
+      },
+      check: () => [],
+      quantity: (s) => s.turns,
+    };
+    const outputs: Record<string, Value> = { '%QW0': 0, '%QX0.0': false };
+    const inputs: Record<string, Value> = {};
+    const loop = new PlantLoop(dial as PlantModel, {}, 1000);
+    loop.bind({ outputs: () => outputs, setInputs: (v) => Object.assign(inputs, v) });
+    const speeds = [0, 30, 30, -12, 700, 700, 5];
+    speeds.forEach((speed, i) => {
+      outputs['%QW0'] = speed;
+      outputs['%QX0.0'] = i > 0;
+      loop.afterScan(i + 1, i * 100, 100);
+      expect(loop.snapshot().drive).toEqual({ Speed: speed, Run: i > 0 });
+    });
+    const live = (loop.currentState() as DialState).turns;
+    expect(live).toBeCloseTo((30 + 30 - 12 + 700 + 700 + 5) / 10, 9);
+    expect(inputs['%IW0']).toBe(Math.floor(live));
+    speeds.forEach((speed, i) => expect(loop.at(i + 1)!.drive).toEqual({ Speed: speed, Run: i > 0 }));
+    expect(loop.at(speeds.length)!.state).toEqual(loop.currentState());
   });
 });
