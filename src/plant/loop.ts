@@ -269,7 +269,7 @@ export class PlantLoop {
    */
   bind(plc: PlcIo): void {
     this.bound = plc;
-    const image = plc.ioImage ? engineImage(plc.ioImage()) : recordImage(plc, this.actuators, this.inputs);
+    const image = plc.ioImage ? engineImage(plc.ioImage()) : recordImage(plc, this.inputs);
     this.image = image.image;
     this.outputs = this.actuators.flatMap((p) => {
       const i = image.output(p.address);
@@ -462,7 +462,7 @@ function engineImage(io: PlcImage): BoundImage {
  * copies, the outputs read again before every step, an input read back as last written (a sensor
  * turning OFF is written too).
  */
-function recordImage(plc: PlcIo, actuators: readonly PlantPoint[], inputPoints: readonly PlantPoint[]): BoundImage {
+function recordImage(plc: PlcIo, inputPoints: readonly PlantPoint[]): BoundImage {
   const outputs: Value[] = [];
   const outputKeys: string[] = [];
   const inputs: Value[] = [];
@@ -484,7 +484,7 @@ function recordImage(plc: PlcIo, actuators: readonly PlantPoint[], inputPoints: 
     image,
     output: (address) => {
       const key = Object.keys(plc.outputs()).find((k) => addressKey(k) === addressKey(address));
-      if (key === undefined || !actuators.some((p) => p.address === address)) return -1;
+      if (key === undefined) return -1;
       outputKeys.push(key);
       outputs.push(plc.outputs()[key]!);
       return outputs.length - 1;
