@@ -44,6 +44,8 @@ export interface TankState {
 }
 
 const towards = (from: number, target: number, dtMs: number, travelMs: number): number => {
+  // At rest (the usual case): the same as below, without a division.
+  if (from === target) return target;
   const delta = dtMs / travelMs;
   return target > from ? Math.min(target, from + delta) : Math.max(target, from - delta);
 };
@@ -168,7 +170,8 @@ export const tank: PlantModel<TankState> = {
     const inflow = INFLOW_L_S * pump * inlet;
     const wanted = OUTFLOW_L_S * drain;
     let level = s.level + inflow * dt;
-    const outflow = Math.min(wanted, level / (dt || 1));
+    // The drain closed (no draw): 0, as the minimum below gives it (the level is never negative), without a division.
+    const outflow = wanted === 0 ? 0 : Math.min(wanted, level / (dt || 1));
     level -= outflow * dt;
     let spilled = s.spilled;
     const overflowing = level > TANK_CAPACITY_L;
