@@ -58,6 +58,7 @@ export interface GarageState {
 
 const on = (v: Value | undefined): boolean => v === true;
 
+const NOTHING: readonly PlantConsequence[] = [];
 const POINTS: readonly PlantPoint[] = [
   {
     name: 'KeyOpen',
@@ -277,30 +278,31 @@ export const garage: PlantModel<GarageState> = {
   },
 
   check(before: GarageState, after: GarageState): readonly PlantConsequence[] {
-    const out: PlantConsequence[] = [];
+    // Nothing started (every scan but a handful): no list made.
+    let out: PlantConsequence[] | undefined;
     if (after.hits > before.hits)
-      out.push({
+      (out ??= []).push({
         id: 'hit',
         severity: 'error',
         message: 'the door came down on the car in the doorway',
         counter: 'hits',
       });
     if (after.shorts > before.shorts)
-      out.push({
+      (out ??= []).push({
         id: 'short',
         severity: 'error',
         message: 'MotorUp and MotorDown were on together (short circuit)',
         counter: 'shorts',
       });
     if (after.overruns > before.overruns)
-      out.push({
+      (out ??= []).push({
         id: 'overrun',
         severity: 'error',
         message: `the motor drove the door against its ${after.position >= 100 ? 'open' : 'closed'} end stop for over ${OVERRUN_MS / 1000} s (overrun)`,
         counter: 'overruns',
       });
     if (after.unwarned > before.unwarned)
-      out.push({
+      (out ??= []).push({
         id: 'unwarned',
         severity: 'warning',
         message: after.lamp
@@ -308,7 +310,7 @@ export const garage: PlantModel<GarageState> = {
           : 'the door moved without the warning lamp lit',
         counter: 'unwarned',
       });
-    return out;
+    return out ?? NOTHING;
   },
 
   quantity(s: GarageState, name: string): number | boolean {

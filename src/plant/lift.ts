@@ -157,6 +157,7 @@ function passenger(
   return NO_CALL;
 }
 
+const NOTHING: readonly PlantConsequence[] = [];
 const POINTS: readonly PlantPoint[] = [
   {
     name: 'Call1',
@@ -443,24 +444,25 @@ export const lift: PlantModel<LiftState> = {
   },
 
   check(before: LiftState, after: LiftState): readonly PlantConsequence[] {
-    const out: PlantConsequence[] = [];
+    // Nothing started (every scan but a handful): no list made.
+    let out: PlantConsequence[] | undefined;
     const top = after.position > TOP_MM / 2;
     if (after.bothMotors > before.bothMotors)
-      out.push({
+      (out ??= []).push({
         id: 'both_motors',
         severity: 'error',
         message: 'MotorUp and MotorDown were on together (the motor tripped)',
         counter: 'both_motors',
       });
     if (after.doorMoves > before.doorMoves)
-      out.push({
+      (out ??= []).push({
         id: 'door_move',
         severity: 'error',
         message: `the car moved with the door ${Math.round(Math.max(after.door, before.door) * 100)} % open`,
         counter: 'door_moves',
       });
     if (after.overruns > before.overruns)
-      out.push({
+      (out ??= []).push({
         id: 'overrun',
         severity: 'error',
         message: top
@@ -469,7 +471,7 @@ export const lift: PlantModel<LiftState> = {
         counter: 'overruns',
       });
     if (after.crashes > before.crashes)
-      out.push({
+      (out ??= []).push({
         id: 'crash',
         severity: 'error',
         message: top
@@ -478,13 +480,13 @@ export const lift: PlantModel<LiftState> = {
         counter: 'crashes',
       });
     if (after.misstops > before.misstops)
-      out.push({
+      (out ??= []).push({
         id: 'misstop',
         severity: 'warning',
         message: `the car stopped ${mm(after.stopOffset)} mm ${after.stopOffset > 0 ? 'above' : 'below'} floor ${after.stopFloor}`,
         counter: 'misstops',
       });
-    return out;
+    return out ?? NOTHING;
   },
 
   quantity(s: LiftState, name: string): number | boolean {

@@ -126,6 +126,7 @@ const SPOIL_TEXT: Record<Exclude<SpoilReason, '' | 'scorch'>, string> = {
   short: `a batch was discharged short (less than ${MIN_BATCH_L} L) and is spoiled`,
 };
 
+const NOTHING: readonly PlantConsequence[] = [];
 const POINTS: readonly PlantPoint[] = [
   ...START_STOP_BUTTONS,
   {
@@ -448,31 +449,32 @@ export const mixer: PlantModel<MixerState> = {
   },
 
   check(before: MixerState, after: MixerState): readonly PlantConsequence[] {
-    const out: PlantConsequence[] = [];
+    // Nothing started (every scan but a handful): no list made.
+    let out: PlantConsequence[] | undefined;
     if (after.overflows > before.overflows)
-      out.push({ id: 'overflow', severity: 'error', message: 'the mixer overflowed', counter: 'overflows' });
+      (out ??= []).push({ id: 'overflow', severity: 'error', message: 'the mixer overflowed', counter: 'overflows' });
     if (after.dryHeats > before.dryHeats)
-      out.push({
+      (out ??= []).push({
         id: 'dry_heat',
         severity: 'error',
         message: 'the heater ran dry (its element was not covered)',
         counter: 'dry_heats',
       });
     if (after.scorches > before.scorches)
-      out.push({
+      (out ??= []).push({
         id: 'scorch',
         severity: 'error',
         message: 'the product scorched on the heater (heating without the agitator) and the batch is spoiled',
         counter: 'scorches',
       });
     if (after.spoiled > before.spoiled && after.spoilReason !== 'scorch')
-      out.push({
+      (out ??= []).push({
         id: `spoiled_${after.spoilReason}`,
         severity: 'error',
         message: SPOIL_TEXT[after.spoilReason as keyof typeof SPOIL_TEXT],
         counter: 'spoiled',
       });
-    return out;
+    return out ?? NOTHING;
   },
 
   quantity(s: MixerState, name: string): number | boolean {

@@ -120,6 +120,16 @@ describe('stepping into a second state object', () => {
       expect(Object.keys(senseRecord(model, model.initial(), new Set()))).toEqual(sensors);
     });
 
+  for (const model of PLANTS)
+    test(`${model.id}: check makes no list when nothing started (one shared empty list)`, () => {
+      // Nothing driven: after the first step (where the intersection's dark heads start), nothing new.
+      const a = model.step(model.initial(), {}, 100, new Set());
+      const b = model.step(a, {}, 100, new Set());
+      const first = model.check(a, b);
+      expect(first).toEqual([]);
+      expect(model.check(b, model.step(b, {}, 100, new Set()))).toBe(first);
+    });
+
   test('a machine whose sense names are not its sensor points is refused when its module loads', () => {
     const points = PLANTS[0]!.points;
     const sensors = points.filter((p) => p.kind === 'sensor').map((p) => p.name);
