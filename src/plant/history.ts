@@ -35,6 +35,8 @@ interface Slot {
 
 export class PlantHistory {
   private chunks: Chunk[] = [];
+  /** The two state objects a seek steps between (made on the first seek). */
+  private replay: [unknown, unknown] | undefined;
   /** The last chunk, the one being filled, and its arrays and count (push touches only these). */
   private open: Chunk | undefined;
   private openTimes: Float64Array = new Float64Array(0);
@@ -186,16 +188,19 @@ export class PlantHistory {
     const c = this.chunkOf(scan);
     if (!c) return undefined;
     const last = scan - c.firstScan;
-    // Stepped between two copies of the keyframe (as the loop steps), the keyframe itself untouched:
-    // the last one written is handed out, and nothing else has it.
-    let state: unknown = Object.assign(this.model.initial() as object, c.state);
-    let spare: unknown = Object.assign(this.model.initial() as object, c.state);
+    // Stepped between the history's two replay objects (as the loop steps), from the keyframe,
+    // which stays untouched; what is handed out is a copy of the last one written. The same two
+    // objects every seek: their shape settles once (fresh ones would change shape in every seek).
+    this.replay ??= [this.model.initial(), this.model.initial()];
+    let state: unknown = Object.assign(this.replay[0] as object, c.state);
+    let spare: unknown = this.replay[1];
     let time = c.timeMs;
     // One drive record and one fault set refilled for every step (valid only during the call, as in the loop).
     const drive: Record<string, Value> = {};
     const faults = new Set<string>();
     for (let i = 0; i <= last; i++) {
-      this.fill(c, i, drive, faults);
+      // Outputs, operator controls and faults change seldom: the records are refilled only when they do.
+      if (i === 0 || !this.sameRecord(c, i - 1, i)) this.fill(c, i, drive, faults);
       const t = c.times[i]!;
       const next = this.model.step(state, drive, Math.max(0, t - time), faults, spare);
       spare = state;
@@ -206,7 +211,7 @@ export class PlantHistory {
     for (const p of this.operators) operator[p.name] = drive[p.name] === true;
     const shown: Record<string, Value> = {};
     for (const p of this.actuators) shown[p.name] = drive[p.name]!;
-    return { scan, timeMs: time, state, faults: [...faults].sort(), operator, drive: shown };
+    return { scan, timeMs: time, state: copyPlantState(state), faults: [...faults].sort(), operator, drive: shown };
   }
 
   private chunkOf(scan: number): Chunk | undefined {
@@ -220,6 +225,15 @@ export class PlantHistory {
       else return c;
     }
     return undefined;
+  }
+
+  /** Scans `i` and `j` of chunk `c` were given the same drive and faults. */
+  private sameRecord(c: Chunk, i: number, j: number): boolean {
+    const words = this.words;
+    for (let w = 0; w < words; w++) if (c.bits[i * words + w] !== c.bits[j * words + w]) return false;
+    const n = this.intCount;
+    for (let k = 0; k < n; k++) if (!Object.is(c.ints[i * n + k], c.ints[j * n + k])) return false;
+    return true;
   }
 
   /** Scan `i` of chunk `c`: its drive and faults into the records given. */
