@@ -122,6 +122,10 @@ async function recordTrace<T>(cdp: CDPSession, fn: () => Promise<T>): Promise<{ 
 async function traced(cdp: CDPSession, name: string, fn: () => Promise<unknown>) {
   const { r, events } = await recordTrace(cdp, fn);
   printTrace(name, r, events);
+  // TIMELINE=1: every click's events, from its pointerdown.
+  if (process.env.TIMELINE)
+    for (const down of events.filter((e) => e.name === 'EventDispatch' && e.args?.data?.type === 'pointerdown'))
+      console.log(`pointerdown\n${timeline(events, down)}`);
 }
 
 function printTrace(name: string, r: unknown, events: readonly TraceEvent[]) {
@@ -203,15 +207,14 @@ function reactRendersHook() {
 }
 
 /** TIMELINE=1: one click's top-level events per thread, from the pointerdown (ms: start +wall /CPU). */
-function timeline(events: readonly TraceEvent[]): string {
+function timeline(events: readonly TraceEvent[], down = events.find((e) => e.name === 'EventDispatch' && e.args?.data?.type === 'pointerdown')): string {
   const names = new Map<string, string>();
   for (const e of events) if (e.name === 'thread_name' && e.args?.name) names.set(`${e.pid}:${e.tid}`, e.args.name);
-  const down = events.find((e) => e.name === 'EventDispatch' && e.args?.data?.type === 'pointerdown');
   if (!down) return '(no pointerdown)';
   const ends = new Map<string, number>();
   const lines: string[] = [];
   for (const e of [...events].sort((a, b) => a.ts - b.ts)) {
-    if (e.ph !== 'X' || e.dur === undefined || e.ts < down.ts - 2000 || e.ts > down.ts + 60_000) continue;
+    if (e.ph !== 'X' || e.dur === undefined || e.ts < down.ts - 2000 || e.ts > down.ts + Number(process.env.WINDOW_MS ?? 60) * 1000) continue;
     const k = `${e.pid}:${e.tid}`;
     const sub = e.ts < (ends.get(k) ?? -Infinity);
     if (sub && !['EventDispatch', 'FunctionCall', 'Paint', 'Commit', 'Layout', 'UpdateLayoutTree', 'PrePaint', 'Layerize', 'FireAnimationFrame', 'TimerFire'].includes(e.name)) continue;
