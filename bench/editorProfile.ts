@@ -355,6 +355,8 @@ async function main() {
       const renders = new Map<string, { n: number; ms: number }>();
       for (let k = 0; k < repeats; k++) {
         const p = await cellOnScreen(page, Math.floor(((k + 0.5) * count) / repeats), 0, 0);
+        // PREMOVE=1: the pointer rests on the cell first (a user's hover), so the click is the press alone.
+        if (process.env.PREMOVE) await page.mouse.move(p.x, p.y);
         // SETTLE=0 clicks two frames after the scroll, as bench:editor does; else 150 ms later.
         await page.evaluate((ms) => new Promise((r) => setTimeout(r, ms)), Number(process.env.SETTLE ?? 150));
         const click = async () => {
