@@ -49,22 +49,26 @@ async function traced<T>(cdp: CDPSession, fn: () => Promise<T>): Promise<T> {
   }
   for (const [label, to] of [['edit to applied', applied], ['applied to +1 s', applied + 1e6]] as const) {
     const start = label === 'edit to applied' ? from : applied;
-    const cpu = new Map<string, { cpu: number; gc: number; longest: number }>();
+    const cpu = new Map<string, { cpu: number; gc: number; longest: number; gcLongest: number; gcs: number }>();
     for (const e of events) {
       if (e.ph !== 'X' || e.ts < start || e.ts > to) continue;
       const key = `${e.pid}:${e.tid}`;
-      const t = cpu.get(key) ?? { cpu: 0, gc: 0, longest: 0 };
+      const t = cpu.get(key) ?? { cpu: 0, gc: 0, longest: 0, gcLongest: 0, gcs: 0 };
       // Top-level tasks only (their nested events are inside them).
       if (e.name === 'ThreadControllerImpl::RunTask' || e.name === 'RunTask') {
         t.cpu += (e.tdur ?? 0) / 1000;
         t.longest = Math.max(t.longest, (e.dur ?? 0) / 1000);
       }
-      if (/^(MinorGC|MajorGC|V8\.GC_SCAVENGER$|V8\.GC_MARK_COMPACTOR$|V8\.GCScavenger$|V8\.GCFinalizeMC$)/.test(e.name)) t.gc += (e.dur ?? 0) / 1000;
+      if (/^(MinorGC|MajorGC|V8\.GC_SCAVENGER$|V8\.GC_MARK_COMPACTOR$|V8\.GCScavenger$|V8\.GCFinalizeMC$)/.test(e.name)) {
+        t.gc += (e.dur ?? 0) / 1000;
+        t.gcLongest = Math.max(t.gcLongest, (e.dur ?? 0) / 1000);
+        t.gcs++;
+      }
       cpu.set(key, t);
     }
     const rows = [...cpu]
       .filter(([, t]) => t.cpu > 1 || t.gc > 1)
-      .map(([k, t]) => `${(names.get(k) ?? k).padEnd(28)} CPU ${t.cpu.toFixed(0).padStart(5)} ms  GC ${t.gc.toFixed(0).padStart(4)} ms  longest task ${t.longest.toFixed(0)} ms`);
+      .map(([k, t]) => `${(names.get(k) ?? k).padEnd(28)} CPU ${t.cpu.toFixed(0).padStart(5)} ms  GC ${t.gc.toFixed(0).padStart(4)} ms (${t.gcs}, longest ${t.gcLongest.toFixed(1)} ms)  longest task ${t.longest.toFixed(0)} ms`);
     console.log(`  ${label} (${((to - start) / 1000).toFixed(0)} ms):\n    ${rows.join('\n    ')}`);
   }
   return r;
