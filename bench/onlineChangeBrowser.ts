@@ -6,7 +6,7 @@
 // the CPU it used from the edit to the change applied (the marks oc-edit and oc-applied), with the
 // simulator worker's garbage collections: what competed with the scans for the 2 cores.
 import { existsSync } from 'node:fs';
-import { chromium, type CDPSession } from 'playwright-core';
+import { chromium, type CDPSession, type Page } from 'playwright-core';
 import { preview } from 'vite';
 import { CHROMIUM_ARGS, CHROMIUM_PATH } from '../tests/e2e/browser';
 import { sealInProject } from '../tests/e2e/sealInProject';
@@ -74,6 +74,33 @@ async function traced<T>(cdp: CDPSession, fn: () => Promise<T>): Promise<T> {
   return r;
 }
 
+/**
+ * CONTROL=1: the cycles the same program misses running as long as the figure's window (edit to 1 s
+ * after the change) without any change: what the machine's load alone costs.
+ */
+async function missedWithoutChange(page: Page, windowMs: number): Promise<number> {
+  await page.evaluate(() => {
+    const sim = (window as unknown as ControlHandle).rungsmith.simStore.getState();
+    sim.run((window as unknown as ControlHandle).rungsmith.documentStore.getState().project);
+  });
+  await page.waitForTimeout(1000);
+  const start = await page.evaluate(() => (window as unknown as ControlHandle).rungsmith.simStore.getState().exec.late ?? 0);
+  await page.waitForTimeout(windowMs);
+  return page.evaluate((s) => {
+    const sim = (window as unknown as ControlHandle).rungsmith.simStore.getState();
+    const late = (sim.exec.late ?? 0) - s;
+    sim.pause();
+    return late;
+  }, start);
+}
+
+interface ControlHandle {
+  rungsmith: {
+    documentStore: { getState(): { project: unknown } };
+    simStore: { getState(): { exec: { late?: number }; run(p: unknown): void; pause(): void } };
+  };
+}
+
 async function main() {
   const dist = process.env.RUNGSMITH_DIST ?? 'dist';
   const runs = Number(process.argv[2] ?? 3);
@@ -91,12 +118,14 @@ async function main() {
     for (const [name, project] of [['bottle650', bottleFillerProject(50)], ['seal1000', sealInProject(1000)]] as const) {
       const missed: number[] = [];
       const applied: number[] = [];
+      const control: number[] = [];
       for (let r = 0; r < runs; r++) {
         const f = process.env.TRACE ? await traced(cdp, () => measureRunAndOnlineChange(page, project)) : await measureRunAndOnlineChange(page, project);
         missed.push(f.onlineChangeOverruns);
         applied.push(Math.round(f.appliedMs));
+        if (process.env.CONTROL) control.push(await missedWithoutChange(page, f.appliedMs + 1000));
       }
-      out.push(`${name}: missed ${missed.join(',')} applied-ms ${applied.join(',')}`);
+      out.push(`${name}: missed ${missed.join(',')} applied-ms ${applied.join(',')}${control.length ? ` without a change ${control.join(',')}` : ''}`);
       console.log(out[out.length - 1]);
     }
   } finally {
