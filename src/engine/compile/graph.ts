@@ -116,8 +116,9 @@ interface BuiltGraph {
  * Graphs by network object. The model is immutable (an edit makes new element, list and network
  * objects), and a graph depends only on the network and its boxes' layouts: a compile of an edited
  * project rebuilds only the graphs of the networks the edit touched, and a body lowered once per
- * instance of its FB builds its graphs once (an online change at 650 networks: compile/README in
- * docs/benchmarks.md). Nothing changes a graph after it is built.
+ * instance of its FB builds its graphs once (the online change at 650 networks, docs/benchmarks.md).
+ * Nothing changes a graph after it is built; the lists are compared item by item, so a list changed
+ * in place after a compile is never taken for the one compiled.
  */
 const built = new WeakMap<Network, BuiltGraph>();
 
