@@ -142,6 +142,23 @@ test('at 1280×720 the bars are one line each, a new network fits, and nothing m
   );
   expect(new Set(buttons.map((b) => b.middle)).size).toBe(1);
   expect(Math.max(...buttons.map((b) => b.right))).toBeLessThanOrEqual(1280);
+  // Every tab of the side panels is in sight, inside its panel (Outline and Plant were scrolled out of the right one).
+  for (const panel of ['.rs-left', '.rs-right', '.rs-bottom']) {
+    const area = await box(panel);
+    const tabs = await page.locator(`${panel} [role="tab"]`).evaluateAll((els) =>
+      els.map((e) => {
+        const r = e.getBoundingClientRect();
+        return { name: e.textContent, left: r.left, right: r.right, width: r.width };
+      }),
+    );
+    expect(tabs.length).toBeGreaterThan(1);
+    for (const t of tabs) {
+      expect(t.width, `${panel} ${t.name}`).toBeGreaterThan(0);
+      expect(t.left, `${panel} ${t.name}`).toBeGreaterThanOrEqual(area.x);
+      expect(t.right, `${panel} ${t.name}`).toBeLessThanOrEqual(area.x + area.width);
+    }
+  }
+  await expect.poll(() => page.locator('.rs-right [role="tab"]').allTextContents()).toContain('Plant');
   // The default network is drawn whole, without scrolling sideways.
   const canvas = page.getByTestId('ladder-canvas');
   expect(await canvas.evaluate((el) => el.scrollWidth <= el.clientWidth)).toBe(true);

@@ -128,6 +128,14 @@ test('a new project against the garage door: choose it, declare its I/O, draw a 
   await expect.poll(async () => (await plantState())?.now.state.position, { timeout: 30_000 }).toBeGreaterThanOrEqual(99);
   expect((await plantState())!.now.state.up).toBe(false);
   await expect.poll(() => page.getByTestId('plant-q-position').textContent()).toMatch(/^garage\.position(99|100)\.\d %$/);
+  // Taken away and chosen again while paused at scan 200: the door starts over, and says it moves
+  // from the next scan (not "After scan 0"); one step later it is the next scan's.
+  const paused = await scan();
+  await page.getByTestId('plant-choose').selectOption('');
+  await page.getByTestId('plant-choose').selectOption('garage');
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toBe('Initial state: the machine moves from the next scan on');
+  await sim.button('step-scan').click();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(new RegExp(`^After scan ${paused + 1} \\(`));
 
   // Rewire the motor's up contactor, then Undo: the address comes back (not the rung drawn before).
   await sim.button('reset').click();

@@ -25,6 +25,7 @@ import type { PlantFrame } from '../../src/sim/sessionPlant';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
 import { cliTrace, startedPlantDevice, workerTrace } from './traces';
+import { csvValue } from '../../src/engine/values/literals';
 
 const none: ReadonlySet<string> = new Set();
 type Sensed = Record<string, Value>;
@@ -360,7 +361,7 @@ describe('the box sorter in the simulation session', () => {
       const state = lastOf(h.of('historyView')).view.plant!.state as BoxesState;
       const [sorted, pusher] = rows[scan]!.split(',').slice(-2);
       expect(String(state.sorted)).toBe(sorted);
-      expect(String(state.pusher * 100)).toBe(pusher);
+      expect(csvValue('REAL', state.pusher * 100)).toBe(pusher);
     }
     // 2,000 scans of 100 ms: the feeder's 44 boxes, all sorted or on the belt, the pusher out for every large one.
     const end = (h.frame.plant as PlantFrame).now.state as BoxesState;

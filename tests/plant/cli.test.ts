@@ -113,6 +113,18 @@ describe('rungsmith and the machines', () => {
     expect(r.err).toMatch(/^error tank: the tank overflowed at scan \d+ \(\d+\.\d\d s\)\n$/);
   });
 
+  test('simulate --plant writes the machine REAL quantities as REALs: 60, not 60.00000000000001', () => {
+    const r = rungsmith(
+      ['simulate', 'tank.json', '--plant', 'tank', '--inputs', 's.csv', '--scans', '12', '--cycle', '100ms', '--watch', 'tank.pump,tank.inlet,tank.inflow'],
+      { 'tank.json': JSON.stringify(tankReference()), 's.csv': 'scan,tank.Start\n1,1\n3,0\n' },
+    );
+    expect(r.code).toBe(0);
+    const rows = r.out.trim().split('\n');
+    // The pump ramps up 20 % per 100 ms scan, the inlet valve 10 %: round figures, as a REAL holds them.
+    expect(rows.slice(1, 6).map((row) => row.split(',').slice(2, 4).join(','))).toEqual(['20,10', '40,20', '60,30', '80,40', '100,50']);
+    for (const row of rows.slice(1)) for (const cell of row.split(',').slice(2)) expect(cell.replace(/^-|\./g, '').length).toBeLessThanOrEqual(9);
+  });
+
   test('simulate --plant names what does not exist', () => {
     const files = { 'tank.json': JSON.stringify(tankReference()) };
     expect(rungsmith(['simulate', 'tank.json', '--plant', 'boiler'], files).err).toContain(

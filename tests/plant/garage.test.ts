@@ -21,6 +21,7 @@ import type { PlantFrame } from '../../src/sim/sessionPlant';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
 import { cliTrace, startedPlantDevice, workerTrace } from './traces';
+import { csvValue } from '../../src/engine/values/literals';
 
 const none = new Set<string>();
 type Drive = Partial<Record<'MotorUp' | 'MotorDown' | 'WarningLamp' | 'Doorway', boolean>>;
@@ -359,7 +360,7 @@ describe('the garage door on the command line and in the simulation worker', () 
       h.send({ type: 'historySeek', scan });
       const view = h.of('historyView').at(-1)!.view;
       expect(view.plant?.scan).toBe(scan);
-      expect(String((view.plant!.state as GarageState).position)).toBe(rows[scan]!.split(',').at(-1));
+      expect(csvValue('REAL', (view.plant!.state as GarageState).position)).toBe(rows[scan]!.split(',').at(-1));
     }
     // The door reversed for the car: Obstacle ON, then MotorUp with the door not yet open.
     const col = (name: string) => WATCH.indexOf(name) + 2;

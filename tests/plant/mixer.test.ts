@@ -14,6 +14,7 @@ import type { PlantFrame } from '../../src/sim/sessionPlant';
 import { rungsmith } from '../cli/memoryIo';
 import { SimHarness } from '../sim/harness';
 import { cliTrace, startedPlantDevice, workerTrace } from './traces';
+import { csvValue } from '../../src/engine/values/literals';
 
 const none = new Set<string>();
 type Drive = Partial<
@@ -417,7 +418,7 @@ describe('the mixer in the simulation session and on the command line', () => {
       h.send({ type: 'historySeek', scan });
       const view = lastOf(h.of('historyView')).view;
       expect(view.plant?.scan).toBe(scan);
-      expect(String((view.plant!.state as MixerState).temp)).toBe(rows[scan]!.split(',').at(-1));
+      expect(csvValue('REAL', (view.plant!.state as MixerState).temp)).toBe(rows[scan]!.split(',').at(-1));
     }
     // The first batch is done and counted, the second under way.
     const now = (h.frame.plant as PlantFrame).now.state as MixerState;

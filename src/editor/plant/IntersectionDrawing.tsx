@@ -81,7 +81,7 @@ function SignalHead({
       <Lamp x={0} y={0} colour="#ef4444" lamps={s.lamps} lit={s.lit} bit={LAMP[`${road}Red`]} />
       <Lamp x={0} y={16} colour="#facc15" lamps={s.lamps} lit={s.lit} bit={LAMP[`${road}Yellow`]} />
       <Lamp x={0} y={32} colour="#22c55e" lamps={s.lamps} lit={s.lit} bit={LAMP[`${road}Green`]} />
-      <Text text={label} x={-24} y={45} width={48} align="center" fontSize={10} fill={DARK} />
+      <Text text={label} x={-24} y={45} width={48} align="center" fontSize={12} fontStyle="bold" fill={DARK} />
       {dark && (
         <Text
           text="DARK"
@@ -288,14 +288,14 @@ export function IntersectionDrawing({ state }: PlantDrawingProps) {
       <SignalHead x={M.x - 18} y={S.y + S.h + 20} road="Side" s={s} label="Side" />
       <PedHead x={M.x - 50} y={S.y - 50} crossing="Main" s={s} />
       <PedHead x={M.x + M.w + 30} y={S.y - 50} crossing="Side" s={s} />
-      <Text text="cross main" x={M.x - 56} y={S.y - 62} width={56} align="center" fontSize={9} fill={DARK} />
+      <Text text="cross main" x={M.x - 72} y={S.y - 64} width={72} align="center" fontSize={11} fill={DARK} />
       <Text
         text="cross side"
-        x={M.x + M.w + 24}
-        y={S.y - 62}
-        width={56}
+        x={M.x + M.w + 22}
+        y={S.y - 64}
+        width={72}
         align="center"
-        fontSize={9}
+        fontSize={11}
         fill={DARK}
       />
       {/* Pedestrians waiting at the kerb, and crossing. */}

@@ -104,9 +104,12 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
           ? atScan
             ? `Recorded scan ${atScan.scan.toLocaleString('en-US')} (${(atScan.timeMs / 1000).toFixed(2)} s)`
             : `Scan ${historyScan.toLocaleString('en-US')} is no longer kept for the machine`
-          : shown
+          : shown && shown.scan > 0
             ? `After scan ${shown.scan.toLocaleString('en-US')} (${(shown.timeMs / 1000).toFixed(2)} s)`
-            : 'Initial state: run or step the program'}
+            : shown
+              ? // Attached to a program already past scan 0: the machine's first step is the next scan's.
+                'Initial state: the machine moves from the next scan on'
+              : 'Initial state: run or step the program'}
       </p>
       {drawing && (
         <FittedDrawing drawing={drawing} state={state}>

@@ -1,7 +1,12 @@
 // Shortest decimal text for floating-point values.
 
-/** Shortest decimal digits that read back (as a 32-bit float) to the same REAL. */
-export function shortestReal(v: number): string {
+/**
+ * Shortest decimal digits that read back (as a 32-bit float) to the same REAL. A number that is not
+ * a 32-bit float yet (a machine's quantity, computed in 64 bits, read as a REAL) is taken as the REAL
+ * it would be stored as: 60.00000000000001 is 60, not 17 digits of noise.
+ */
+export function shortestReal(value: number): string {
+  const v = Math.fround(value);
   if (!Number.isFinite(v)) return String(v);
   if (v === 0) return Object.is(v, -0) ? '-0' : '0';
   for (let digits = 1; digits <= 9; digits++) {
