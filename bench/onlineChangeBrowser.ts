@@ -119,13 +119,15 @@ async function main() {
       const missed: number[] = [];
       const applied: number[] = [];
       const control: number[] = [];
+      const firstScan: number[] = [];
       for (let r = 0; r < runs; r++) {
         const f = process.env.TRACE ? await traced(cdp, () => measureRunAndOnlineChange(page, project)) : await measureRunAndOnlineChange(page, project);
         missed.push(f.onlineChangeOverruns);
         applied.push(Math.round(f.appliedMs));
+        firstScan.push(Math.round(f.runFirstScanMs));
         if (process.env.CONTROL) control.push(await missedWithoutChange(page, f.appliedMs + 1000));
       }
-      out.push(`${name}: missed ${missed.join(',')} applied-ms ${applied.join(',')}${control.length ? ` without a change ${control.join(',')}` : ''}`);
+      out.push(`${name}: missed ${missed.join(',')} applied-ms ${applied.join(',')} run-first-scan-ms ${firstScan.join(',')}${control.length ? ` without a change ${control.join(',')}` : ''}`);
       console.log(out[out.length - 1]);
     }
   } finally {
