@@ -271,7 +271,7 @@ async function main() {
       [`${NETWORKS}-network project`, sealFigures],
     ] as const)
       console.log(
-        `${name}: first render ${round(f.firstRenderMs)} ms; from the input event to the painted frame: select ${round(f.selectMs)} ms, keystroke ${round(f.keystrokeMs)} ms, commit with declaration ${round(f.commitMs)} ms, undo ${round(f.undoMs)} ms, paste of 200 networks ${round(f.paste200Ms)} ms; running: p95 frame ${round(f.runningP95)} ms` +
+        `${name}: first render ${round(f.firstRenderMs)} ms; from the input event to the painted frame: select ${round(f.selectMs)} ms (the same click again, changing nothing: ${round(f.reclickMs)} ms), keystroke ${round(f.keystrokeMs)} ms, commit with declaration ${round(f.commitMs)} ms, undo ${round(f.undoMs)} ms, paste of 200 networks ${round(f.paste200Ms)} ms; running: p95 frame ${round(f.runningP95)} ms` +
           (f.online
             ? `, Run to first scan ${round(f.online.runFirstScanMs)} ms, online change missed ${f.online.onlineChangeOverruns} cycles`
             : ', Run/online change not measured (no bench/onlineChangeFigures.ts)'),

@@ -26,12 +26,23 @@ interface Profile {
 }
 
 /** Self ms per function (name, file, line), and total ms per function on the stack. */
-function summarize(p: Profile, top = Number(process.env.TOP ?? 35)): string {
+function summarize(p: Profile | readonly Profile[], top = Number(process.env.TOP ?? 35)): string {
+  const self = new Map<string, number>();
+  const total = new Map<string, number>();
+  for (const one of Array.isArray(p) ? p : [p]) addUp(one as Profile, self, total);
+  const fmt = (m: Map<string, number>) =>
+    [...m]
+      .sort((a, b) => b[1] - a[1])
+      .slice(0, top)
+      .map(([k, v]) => `${v.toFixed(1).padStart(8)} ms  ${k}`)
+      .join('\n');
+  return `SELF\n${fmt(self)}\nTOTAL\n${fmt(total)}`;
+}
+
+function addUp(p: Profile, self: Map<string, number>, total: Map<string, number>) {
   const byId = new Map(p.nodes.map((n) => [n.id, n]));
   const parent = new Map<number, number>();
   for (const n of p.nodes) for (const c of n.children ?? []) parent.set(c, n.id);
-  const self = new Map<string, number>();
-  const total = new Map<string, number>();
   const key = (n: ProfileNode) =>
     `${n.callFrame.functionName || '(anon)'} ${n.callFrame.url.split('/').pop()}:${n.callFrame.lineNumber + 1}`;
   const focus = process.env.FOCUS;
@@ -40,7 +51,8 @@ function summarize(p: Profile, top = Number(process.env.TOP ?? 35)): string {
     return false;
   };
   for (let i = 0; i < p.samples.length; i++) {
-    const dt = (p.timeDeltas[i + 1] ?? 0) / 1000;
+    // COUNT=1: every sample counts its interval (a sampler starved of a core gives a few huge deltas).
+    const dt = process.env.COUNT ? Number(process.env.INTERVAL ?? 200) / 1000 : (p.timeDeltas[i + 1] ?? 0) / 1000;
     let n = byId.get(p.samples[i]!);
     if (!n) continue;
     if (focus && !under(n)) continue;
@@ -53,41 +65,172 @@ function summarize(p: Profile, top = Number(process.env.TOP ?? 35)): string {
       total.set(k, (total.get(k) ?? 0) + dt);
     }
   }
-  const fmt = (m: Map<string, number>) =>
-    [...m]
-      .sort((a, b) => b[1] - a[1])
-      .slice(0, top)
-      .map(([k, v]) => `${v.toFixed(1).padStart(8)} ms  ${k}`)
-      .join('\n');
-  return `SELF\n${fmt(self)}\nTOTAL\n${fmt(total)}`;
 }
 
-interface TraceEvent { name: string; ph: string; dur?: number; tdur?: number; tid: number; pid: number; args?: { name?: string } }
+interface TraceEvent { name: string; ph: string; ts: number; dur?: number; tdur?: number; tid: number; pid: number; args?: { name?: string; data?: { type?: string; functionName?: string; lineNumber?: number } } }
 
-/** With TRACE=1: Chromium's timeline instead of the JS profiler, ms per event name on the renderer's main thread. */
-async function traced(cdp: CDPSession, name: string, fn: () => Promise<unknown>) {
+/** Thread CPU per thread (the outermost events' tdur, so nested events count once), busiest first. */
+function threadTotals(events: readonly TraceEvent[]): string {
+  const names = new Map<string, string>();
+  for (const e of events) if (e.name === 'thread_name' && e.args?.name) names.set(`${e.pid}:${e.tid}`, e.args.name);
+  const byThread = new Map<string, TraceEvent[]>();
+  for (const e of events)
+    if (e.ph === 'X' && e.dur !== undefined) {
+      const k = `${e.pid}:${e.tid}`;
+      const list = byThread.get(k) ?? [];
+      list.push(e);
+      byThread.set(k, list);
+    }
+  const out: [string, number, number][] = [];
+  for (const [k, list] of byThread) {
+    list.sort((a, b) => a.ts - b.ts);
+    let end = -Infinity;
+    let wall = 0;
+    let cpu = 0;
+    for (const e of list) {
+      if (e.ts < end) continue;
+      end = e.ts + e.dur!;
+      wall += e.dur! / 1000;
+      cpu += (e.tdur ?? 0) / 1000;
+    }
+    out.push([names.get(k) ?? k, wall, cpu]);
+  }
+  return out
+    .sort((a, b) => b[2] - a[2])
+    .filter((t) => t[2] >= 0.5)
+    .map(([n, w, c]) => `${w.toFixed(1).padStart(8)} ${c.toFixed(1).padStart(8)} ms  thread ${n}`)
+    .join('\n');
+}
+
+/** Chromium's timeline events recorded while `fn` runs. */
+async function recordTrace<T>(cdp: CDPSession, fn: () => Promise<T>): Promise<{ r: T; events: TraceEvent[] }> {
   const events: TraceEvent[] = [];
-  cdp.on('Tracing.dataCollected', (e) => {
-    events.push(...(e.value as unknown as TraceEvent[]));
-  });
+  const collect = (e: { value: unknown }) => {
+    events.push(...(e.value as TraceEvent[]));
+  };
+  cdp.on('Tracing.dataCollected', collect);
   const done = new Promise<void>((r) => cdp.once('Tracing.tracingComplete', () => r()));
-  await cdp.send('Tracing.start', { traceConfig: { includedCategories: ['devtools.timeline', 'disabled-by-default-devtools.timeline'] } } as never);
+  await cdp.send('Tracing.start', { traceConfig: { includedCategories: ['devtools.timeline', 'disabled-by-default-devtools.timeline', 'toplevel', 'viz', 'cc'] } } as never);
   const r = await fn();
   await cdp.send('Tracing.end');
   await done;
+  cdp.off('Tracing.dataCollected', collect);
+  return { r, events };
+}
+
+/** With TRACE=1: Chromium's timeline instead of the JS profiler, ms per event name on the renderer's main thread. */
+async function traced(cdp: CDPSession, name: string, fn: () => Promise<unknown>) {
+  const { r, events } = await recordTrace(cdp, fn);
+  printTrace(name, r, events);
+  // TIMELINE=1: every click's events, from its pointerdown.
+  if (process.env.TIMELINE)
+    for (const down of events.filter((e) => e.name === 'EventDispatch' && e.args?.data?.type === 'pointerdown'))
+      console.log(`pointerdown\n${timeline(events, down)}`);
+}
+
+function printTrace(name: string, r: unknown, events: readonly TraceEvent[]) {
   const main = events.find((e) => e.name === 'thread_name' && e.args?.name === 'CrRendererMain');
   // Wall time and the thread's own CPU time (tdur: what a busy machine does not inflate by waiting for a core).
   const sums = new Map<string, { dur: number; cpu: number }>();
   for (const e of events)
     if (main && e.tid === main.tid && e.pid === main.pid && e.ph === 'X' && e.dur) {
-      const s = sums.get(e.name) ?? { dur: 0, cpu: 0 };
+      // An input's handling by its type (pointerdown, click, …); a script by what ran it.
+      const data = e.args?.data;
+      const key =
+        e.name === 'EventDispatch' && data?.type
+          ? `EventDispatch ${data.type}`
+          : e.name === 'FunctionCall' && data?.functionName !== undefined
+            ? `FunctionCall ${data.functionName || '(anon)'}:${data.lineNumber ?? ''}`
+            : e.name;
+      const s = sums.get(key) ?? { dur: 0, cpu: 0 };
       s.dur += e.dur / 1000;
       s.cpu += (e.tdur ?? 0) / 1000;
-      sums.set(e.name, s);
+      sums.set(key, s);
     }
   console.log(`==== ${name} (trace, wall ms / thread CPU ms): ${JSON.stringify(r)}`);
   for (const [k, v] of [...sums].sort((a, b) => b[1].dur - a[1].dur).slice(0, 30))
     console.log(`${v.dur.toFixed(1).padStart(8)} ${v.cpu.toFixed(1).padStart(8)} ms  ${k}`);
+  console.log(threadTotals(events));
+}
+
+/** Installed before the app: counts the components each commit rendered, while window.__rr is set. */
+function reactRendersHook() {
+  interface Fiber {
+    tag: number;
+    type: { name?: string; displayName?: string; type?: { name?: string }; render?: { name?: string } } | string | null;
+    child: Fiber | null;
+    sibling: Fiber | null;
+    alternate: Fiber | null;
+    memoizedProps: unknown;
+    memoizedState: unknown;
+    actualStartTime?: number;
+    selfBaseDuration?: number;
+  }
+  const w = window as unknown as { __rr?: Map<string, { n: number; ms: number }>; __REACT_DEVTOOLS_GLOBAL_HOOK__?: unknown };
+  const name = (f: Fiber) => {
+    const t = f.type;
+    if (!t || typeof t === 'string') return undefined;
+    return t.displayName ?? t.name ?? t.type?.name ?? t.render?.name ?? undefined;
+  };
+  let id = 0;
+  w.__REACT_DEVTOOLS_GLOBAL_HOOK__ = {
+    supportsFiber: true,
+    renderers: new Map(),
+    inject: () => ++id,
+    checkDCE: () => {},
+    onCommitFiberUnmount: () => {},
+    onPostCommitFiberRoot: () => {},
+    onCommitFiberRoot: (_id: number, root: { current: Fiber }) => {
+      const out = w.__rr;
+      (w as unknown as { __rrCommits: number }).__rrCommits = ((w as unknown as { __rrCommits?: number }).__rrCommits ?? 0) + 1;
+      if (!out) return;
+      const start = root.current.actualStartTime ?? 0;
+      const walk = (f: Fiber | null) => {
+        for (; f; f = f.sibling) {
+          if ((f.actualStartTime ?? -1) >= start) {
+            const a = f.alternate;
+            const rendered = !a || a.memoizedProps !== f.memoizedProps || a.memoizedState !== f.memoizedState;
+            const n = [0, 1, 11, 14, 15].includes(f.tag) && rendered ? name(f) : undefined;
+            if (n) {
+              const e = out.get(n) ?? { n: 0, ms: 0 };
+              e.n++;
+              e.ms += f.selfBaseDuration ?? 0;
+              out.set(n, e);
+            }
+            walk(f.child);
+          }
+        }
+      };
+      walk(root.current);
+    },
+  };
+}
+
+/** TIMELINE=1: one click's top-level events per thread, from the pointerdown (ms: start +wall /CPU). */
+function timeline(events: readonly TraceEvent[], down = events.find((e) => e.name === 'EventDispatch' && e.args?.data?.type === 'pointerdown')): string {
+  const names = new Map<string, string>();
+  for (const e of events) if (e.name === 'thread_name' && e.args?.name) names.set(`${e.pid}:${e.tid}`, e.args.name);
+  if (!down) return '(no pointerdown)';
+  const ends = new Map<string, number>();
+  const lines: string[] = [];
+  for (const e of [...events].sort((a, b) => a.ts - b.ts)) {
+    if (e.ph !== 'X' || e.dur === undefined || e.ts < down.ts - 2000 || e.ts > down.ts + Number(process.env.WINDOW_MS ?? 60) * 1000) continue;
+    const k = `${e.pid}:${e.tid}`;
+    const sub = e.ts < (ends.get(k) ?? -Infinity);
+    if (sub && !['EventDispatch', 'FunctionCall', 'Paint', 'Commit', 'Layout', 'UpdateLayoutTree', 'PrePaint', 'Layerize', 'FireAnimationFrame', 'TimerFire'].includes(e.name)) continue;
+    if (!sub) ends.set(k, e.ts + e.dur);
+    if (e.dur < (e.name === "Paint" ? 0 : 200)) continue;
+    const data = e.args?.data;
+    const what =
+      data?.type ??
+      (data?.functionName !== undefined
+        ? `${data.functionName}:${data.lineNumber}`
+        : ['Paint', 'Layout', 'UpdateLayoutTree'].includes(e.name) && process.env.TIMELINE === 'paint'
+          ? JSON.stringify(e.name === 'Paint' ? data : e.args)
+          : '');
+    lines.push(`${((e.ts - down.ts) / 1000).toFixed(1).padStart(6)} +${(e.dur / 1000).toFixed(1)} /${((e.tdur ?? 0) / 1000).toFixed(1)}  ${(names.get(k) ?? k).slice(0, 24).padEnd(24)} ${sub ? '  ' : ''}${e.name} ${what}`);
+  }
+  return lines.join('\n');
 }
 
 async function profiled(cdp: CDPSession, name: string, fn: () => Promise<unknown>) {
@@ -104,7 +247,7 @@ async function profiled(cdp: CDPSession, name: string, fn: () => Promise<unknown
 async function main() {
   const dist = process.env.RUNGSMITH_DIST ?? 'dist';
   const what = process.argv[2] ?? 'all';
-  const project: Project = process.argv[3] === 'bottle' ? bottleFillerProject(50) : sealInProject(1000);
+  const project: Project = process.argv[3] === 'bottle' ? bottleFillerProject(50) : sealInProject(Number(process.env.NETWORKS ?? 1000));
   if (!existsSync(`${dist}/index.html`)) throw new Error(`${dist}/ is missing`);
   const server = await preview({ build: { outDir: dist }, preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'warn' });
   const address = server.httpServer.address();
@@ -113,6 +256,10 @@ async function main() {
   try {
     const context = await browser.newContext({ viewport: { width: 1440, height: 900 }, permissions: ['clipboard-read', 'clipboard-write'] });
     const page = await context.newPage();
+    // REACT_RENDERS=1 with a profiling build of React (react-dom/profiling): which components render
+    // per click, and their own render time (the fibers begun in a commit whose props or state changed).
+    // (tsx names nested functions through a helper, __name, that the page lacks.)
+    if (process.env.REACT_RENDERS) await page.addInitScript({ content: `window.__name ??= (f) => f; (${reactRendersHook.toString()})();` });
     const cdp = await page.context().newCDPSession(page);
     await page.goto(`http://127.0.0.1:${address.port}/`);
     await page.getByTestId('ladder-canvas').waitFor();
@@ -197,7 +344,65 @@ async function main() {
         });
       }
     }
-    if (what === 'interact') await profiled(cdp, 'interact', () => interactionFigures(page, 3));
+    if (what === 'clicks') {
+      // Clicks on the contact of networks spread over the POU, as bench:editor's select-ms does
+      // (scrolled there first, like a user), each traced alone: latency and every thread's CPU.
+      const count = project.pous[0]!.networks.length;
+      const repeats = Number(process.env.REPEAT ?? 12);
+      const out: number[] = [];
+      const all: TraceEvent[] = [];
+      const profiles: Profile[] = [];
+      const renders = new Map<string, { n: number; ms: number }>();
+      for (let k = 0; k < repeats; k++) {
+        const p = await cellOnScreen(page, Math.floor(((k + 0.5) * count) / repeats), 0, 0);
+        // PREMOVE=1: the pointer rests on the cell first (a user's hover), so the click is the press alone.
+        if (process.env.PREMOVE) await page.mouse.move(p.x, p.y);
+        // SETTLE=0 clicks two frames after the scroll, as bench:editor does; else 150 ms later.
+        await page.evaluate((ms) => new Promise((r) => setTimeout(r, ms)), Number(process.env.SETTLE ?? 150));
+        const click = async () => {
+          if (process.env.REACT_RENDERS) await page.evaluate(() => ((window as unknown as { __rr: unknown }).__rr = new Map()));
+          const ms = await timed(page, 'pointerdown', () => page.mouse.click(p.x, p.y));
+          if (process.env.REACT_RENDERS) {
+            const rr = await page.evaluate(() => {
+              const w = window as unknown as { __rr?: Map<string, { n: number; ms: number }> };
+              const m = [...(w.__rr ?? [])];
+              delete w.__rr;
+              return m;
+            });
+            for (const [n, e] of rr) {
+              const t = renders.get(n) ?? { n: 0, ms: 0 };
+              t.n += e.n;
+              t.ms += e.ms;
+              renders.set(n, t);
+            }
+          }
+          return ms;
+        };
+        if (process.env.TRACE) {
+          const { r, events } = await recordTrace(cdp, click);
+          out.push(r);
+          all.push(...events);
+          if (process.env.TIMELINE) console.log(`click ${k}: ${Math.round(r * 10) / 10} ms\n${timeline(events)}`);
+        } else {
+          await cdp.send('Profiler.enable');
+          await cdp.send('Profiler.setSamplingInterval', { interval: Number(process.env.INTERVAL ?? 200) });
+          await cdp.send('Profiler.start');
+          out.push(await click());
+          profiles.push(((await cdp.send('Profiler.stop')) as unknown as { profile: Profile }).profile);
+        }
+        await page.evaluate(() => new Promise((r) => setTimeout(r, 150)));
+      }
+      if (process.env.REACT_RENDERS) {
+        const rr = [...renders];
+        console.log(`==== components rendered in ${repeats} clicks (count, own render ms); commits seen ${await page.evaluate(() => (window as unknown as { __rrCommits?: number }).__rrCommits)}`);
+        for (const [n, e] of rr.sort((a, b) => b[1].ms - a[1].ms)) console.log(`${String(e.n).padStart(6)} ${e.ms.toFixed(1).padStart(8)} ms  ${n}`);
+      }
+      const sorted = [...out].sort((a, b) => a - b);
+      const r = { median: Math.round(sorted[Math.floor((sorted.length - 1) / 2)]! * 10) / 10, each: out.map(Math.round) };
+      if (process.env.TRACE) printTrace('clicks', r, all);
+      else console.log(`==== clicks: ${JSON.stringify(r)}\n${summarize(profiles)}`);
+    }
+    if (what === 'interact') await profiled(cdp, 'interact', () => interactionFigures(page, Number(process.env.REPEAT ?? 3)));
     if (what === 'running') await profiled(cdp, 'running', () => runningFrameP95(page));
   } finally {
     await browser.close();

@@ -6,7 +6,7 @@
 // the CPU it used from the edit to the change applied (the marks oc-edit and oc-applied), with the
 // simulator worker's garbage collections: what competed with the scans for the 2 cores.
 import { existsSync } from 'node:fs';
-import { chromium, type CDPSession } from 'playwright-core';
+import { chromium, type CDPSession, type Page } from 'playwright-core';
 import { preview } from 'vite';
 import { CHROMIUM_ARGS, CHROMIUM_PATH } from '../tests/e2e/browser';
 import { sealInProject } from '../tests/e2e/sealInProject';
@@ -49,25 +49,56 @@ async function traced<T>(cdp: CDPSession, fn: () => Promise<T>): Promise<T> {
   }
   for (const [label, to] of [['edit to applied', applied], ['applied to +1 s', applied + 1e6]] as const) {
     const start = label === 'edit to applied' ? from : applied;
-    const cpu = new Map<string, { cpu: number; gc: number; longest: number }>();
+    const cpu = new Map<string, { cpu: number; gc: number; longest: number; gcLongest: number; gcs: number }>();
     for (const e of events) {
       if (e.ph !== 'X' || e.ts < start || e.ts > to) continue;
       const key = `${e.pid}:${e.tid}`;
-      const t = cpu.get(key) ?? { cpu: 0, gc: 0, longest: 0 };
+      const t = cpu.get(key) ?? { cpu: 0, gc: 0, longest: 0, gcLongest: 0, gcs: 0 };
       // Top-level tasks only (their nested events are inside them).
       if (e.name === 'ThreadControllerImpl::RunTask' || e.name === 'RunTask') {
         t.cpu += (e.tdur ?? 0) / 1000;
         t.longest = Math.max(t.longest, (e.dur ?? 0) / 1000);
       }
-      if (/^(MinorGC|MajorGC|V8\.GC_SCAVENGER$|V8\.GC_MARK_COMPACTOR$|V8\.GCScavenger$|V8\.GCFinalizeMC$)/.test(e.name)) t.gc += (e.dur ?? 0) / 1000;
+      if (/^(MinorGC|MajorGC|V8\.GC_SCAVENGER$|V8\.GC_MARK_COMPACTOR$|V8\.GCScavenger$|V8\.GCFinalizeMC$)/.test(e.name)) {
+        t.gc += (e.dur ?? 0) / 1000;
+        t.gcLongest = Math.max(t.gcLongest, (e.dur ?? 0) / 1000);
+        t.gcs++;
+      }
       cpu.set(key, t);
     }
     const rows = [...cpu]
       .filter(([, t]) => t.cpu > 1 || t.gc > 1)
-      .map(([k, t]) => `${(names.get(k) ?? k).padEnd(28)} CPU ${t.cpu.toFixed(0).padStart(5)} ms  GC ${t.gc.toFixed(0).padStart(4)} ms  longest task ${t.longest.toFixed(0)} ms`);
+      .map(([k, t]) => `${(names.get(k) ?? k).padEnd(28)} CPU ${t.cpu.toFixed(0).padStart(5)} ms  GC ${t.gc.toFixed(0).padStart(4)} ms (${t.gcs}, longest ${t.gcLongest.toFixed(1)} ms)  longest task ${t.longest.toFixed(0)} ms`);
     console.log(`  ${label} (${((to - start) / 1000).toFixed(0)} ms):\n    ${rows.join('\n    ')}`);
   }
   return r;
+}
+
+/**
+ * CONTROL=1: the cycles the same program misses running as long as the figure's window (edit to 1 s
+ * after the change) without any change: what the machine's load alone costs.
+ */
+async function missedWithoutChange(page: Page, windowMs: number): Promise<number> {
+  await page.evaluate(() => {
+    const sim = (window as unknown as ControlHandle).rungsmith.simStore.getState();
+    sim.run((window as unknown as ControlHandle).rungsmith.documentStore.getState().project);
+  });
+  await page.waitForTimeout(1000);
+  const start = await page.evaluate(() => (window as unknown as ControlHandle).rungsmith.simStore.getState().exec.late ?? 0);
+  await page.waitForTimeout(windowMs);
+  return page.evaluate((s) => {
+    const sim = (window as unknown as ControlHandle).rungsmith.simStore.getState();
+    const late = (sim.exec.late ?? 0) - s;
+    sim.pause();
+    return late;
+  }, start);
+}
+
+interface ControlHandle {
+  rungsmith: {
+    documentStore: { getState(): { project: unknown } };
+    simStore: { getState(): { exec: { late?: number }; run(p: unknown): void; pause(): void } };
+  };
 }
 
 async function main() {
@@ -87,12 +118,16 @@ async function main() {
     for (const [name, project] of [['bottle650', bottleFillerProject(50)], ['seal1000', sealInProject(1000)]] as const) {
       const missed: number[] = [];
       const applied: number[] = [];
+      const control: number[] = [];
+      const firstScan: number[] = [];
       for (let r = 0; r < runs; r++) {
         const f = process.env.TRACE ? await traced(cdp, () => measureRunAndOnlineChange(page, project)) : await measureRunAndOnlineChange(page, project);
         missed.push(f.onlineChangeOverruns);
         applied.push(Math.round(f.appliedMs));
+        firstScan.push(Math.round(f.runFirstScanMs));
+        if (process.env.CONTROL) control.push(await missedWithoutChange(page, f.appliedMs + 1000));
       }
-      out.push(`${name}: missed ${missed.join(',')} applied-ms ${applied.join(',')}`);
+      out.push(`${name}: missed ${missed.join(',')} applied-ms ${applied.join(',')} run-first-scan-ms ${firstScan.join(',')}${control.length ? ` without a change ${control.join(',')}` : ''}`);
       console.log(out[out.length - 1]);
     }
   } finally {

@@ -16,9 +16,11 @@ interface Props {
   readonly onCommit: (text: string) => void;
   readonly placeholder?: string;
   readonly testId?: string;
+  /** What the field binds (VariableInput's resetKey). */
+  readonly resetKey?: string;
 }
 
-export function BindingField({ label, detail, value, role, onCommit, placeholder, testId }: Props) {
+export function BindingField({ label, detail, value, role, onCommit, placeholder, testId, resetKey }: Props) {
   const id = useId();
   return (
     <div className="rs-field">
@@ -35,6 +37,7 @@ export function BindingField({ label, detail, value, role, onCommit, placeholder
           aria-label={detail ? `${label} : ${detail}` : label}
           placeholder={placeholder}
           data-testid={testId}
+          resetKey={resetKey}
         />
       </div>
       <BindingInfo value={value} role={role} />

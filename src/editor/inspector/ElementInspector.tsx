@@ -55,6 +55,7 @@ export function ElementInspector({ element: el, network, networkIndex, labels }:
               role={{ kind: 'contact' }}
               placeholder="BOOL variable, T1.Q or Word.3"
               testId="inspector-variable"
+              resetKey={el.id}
               onCommit={(variable) => update(el.id, { variable })}
             />
           )}
@@ -83,6 +84,7 @@ export function ElementInspector({ element: el, network, networkIndex, labels }:
             role={{ kind: 'coil' }}
             placeholder="BOOL variable"
             testId="inspector-variable"
+            resetKey={el.id}
             onCommit={(variable) => update(el.id, { variable })}
           />
         </>
@@ -125,6 +127,7 @@ export function ElementInspector({ element: el, network, networkIndex, labels }:
             className="rs-cell-input"
             rows={2}
             data-testid="inspector-element-comment"
+            resetKey={el.id}
             placeholder={
               el.kind === 'box' ? 'shown under the box' : "shown under the symbol, instead of the variable's comment"
             }

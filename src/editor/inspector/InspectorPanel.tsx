@@ -23,7 +23,9 @@ export function InspectorPanel() {
   else if (elements.length === 1 && elements[0]) {
     body = (
       <ElementInspector
-        key={elements[0].id}
+        // A contact or coil selected after another one keeps the inspector's fields (they drop what
+        // was typed for the other by its id): a click builds no new form (docs/benchmarks.md).
+        key={elements[0].kind === 'contact' || elements[0].kind === 'coil' ? elements[0].kind : elements[0].id}
         element={elements[0]}
         network={network}
         networkIndex={index}

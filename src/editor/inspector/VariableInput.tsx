@@ -41,6 +41,11 @@ export interface VariableInputProps {
   readonly 'aria-label'?: string;
   readonly 'data-testid'?: string;
   readonly className?: string;
+  /**
+   * What the field binds (the inspector's element): a field kept for the next element of the same
+   * kind drops what was typed for the previous one and closes its list.
+   */
+  readonly resetKey?: string;
 }
 
 export type EndKey = 'enter' | 'tab' | 'backtab';
@@ -70,6 +75,13 @@ export function VariableInput(props: VariableInputProps) {
   const escaping = useRef(false);
   /** The user moved in the list with the arrows (an untouched field's list is only a suggestion). */
   const navigated = useRef(false);
+  const [draftFor, setDraftFor] = useState(props.resetKey);
+  if (draftFor !== props.resetKey) {
+    setDraftFor(props.resetKey);
+    setDraft(undefined);
+    setOpen(false);
+    setActive(0);
+  }
   const text = draft ?? value;
 
   // The names the field can offer depend on the declarations, not on what is typed: built once per

@@ -23,15 +23,25 @@ export interface CommitOptions {
   readonly multiline?: boolean;
   /** Enter also leaves the field for the canvas (the network header's title and comment). */
   readonly leaveOnEnter?: boolean;
+  /**
+   * What the field edits (the inspector's element): a field kept for the next element of the same
+   * kind (not built again on every selection) drops a draft typed for the previous one.
+   */
+  readonly resetKey?: string;
 }
 
 /** The value, change, key and blur handlers of a field that commits once (see the file comment). */
 export function useCommitField<E extends Field>(
   value: string,
   onCommit: (text: string) => void,
-  { multiline = false, leaveOnEnter = false }: CommitOptions = {},
+  { multiline = false, leaveOnEnter = false, resetKey }: CommitOptions = {},
 ) {
   const [draft, setDraft] = useState<string | undefined>(undefined);
+  const [draftFor, setDraftFor] = useState(resetKey);
+  if (draftFor !== resetKey) {
+    setDraftFor(resetKey);
+    setDraft(undefined);
+  }
   /** Set while Escape moves the focus away: that blur must not commit. */
   const reverting = useRef(false);
   const commit = () => {
@@ -62,10 +72,12 @@ export function useCommitField<E extends Field>(
 type InputProps = Omit<InputHTMLAttributes<HTMLInputElement>, 'value' | 'onChange' | 'defaultValue'> & {
   readonly value: string;
   readonly onCommit: (text: string) => void;
+  /** See CommitOptions.resetKey. */
+  readonly resetKey?: string;
 };
 
-export function CommitInput({ value, onCommit, onKeyDown, onBlur, ...rest }: InputProps) {
-  const field = useCommitField<HTMLInputElement>(value, onCommit);
+export function CommitInput({ value, onCommit, onKeyDown, onBlur, resetKey, ...rest }: InputProps) {
+  const field = useCommitField<HTMLInputElement>(value, onCommit, { resetKey });
   return (
     <input
       {...rest}
@@ -86,10 +98,12 @@ export function CommitInput({ value, onCommit, onKeyDown, onBlur, ...rest }: Inp
 type AreaProps = Omit<TextareaHTMLAttributes<HTMLTextAreaElement>, 'value' | 'onChange' | 'defaultValue'> & {
   readonly value: string;
   readonly onCommit: (text: string) => void;
+  /** See CommitOptions.resetKey. */
+  readonly resetKey?: string;
 };
 
 /** A multi-line CommitInput: Enter commits, Shift+Enter is a new line. */
-export function CommitTextArea({ value, onCommit, ...rest }: AreaProps) {
-  const field = useCommitField<HTMLTextAreaElement>(value, onCommit, { multiline: true });
+export function CommitTextArea({ value, onCommit, resetKey, ...rest }: AreaProps) {
+  const field = useCommitField<HTMLTextAreaElement>(value, onCommit, { multiline: true, resetKey });
   return <textarea {...rest} {...field} />;
 }

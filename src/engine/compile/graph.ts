@@ -95,22 +95,83 @@ export const connectionPoint = (el: { kind: string; row: number; col: number }, 
 
 const boxOf = (el: LdElement): BoxElement | undefined => (el.kind === 'box' ? el : undefined);
 
+/**
+ * A network's graph as last built, with what it was built from: the network's grid, its element
+ * and vertical-link lists, and each box's pin layout (a user block's layout is a new object when its
+ * interface changes, boxLayout.ts).
+ */
+interface BuiltGraph {
+  readonly rows: number;
+  readonly cols: number;
+  readonly elements: Network['elements'];
+  /** The elements and vertical links it held (a list changed in place is seen). */
+  readonly held: readonly LdElement[];
+  readonly vlinks: Network['vlinks'];
+  readonly heldVlinks: Network['vlinks'];
+  readonly layouts: readonly (BoxLayout | undefined)[];
+  readonly graph: NetworkGraph;
+}
+
+/**
+ * Graphs by network object. The model is immutable (an edit makes new element, list and network
+ * objects), and a graph depends only on the network and its boxes' layouts: a compile of an edited
+ * project rebuilds only the graphs of the networks the edit touched, and a body lowered once per
+ * instance of its FB builds its graphs once (the online change at 650 networks, docs/benchmarks.md).
+ * Nothing changes a graph after it is built; the lists are compared item by item, so a list changed
+ * in place after a compile is never taken for the one compiled.
+ */
+const built = new WeakMap<Network, BuiltGraph>();
+
+function sameItems<T>(a: readonly T[], b: readonly T[]): boolean {
+  if (a.length !== b.length) return false;
+  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return false;
+  return true;
+}
+
 /** The graph of a network; boxes of user blocks need the project's `library` for their pins. */
 export function buildGraph(network: Network, library: BlockLibrary = STANDARD_LIBRARY): NetworkGraph {
+  const layouts = network.elements.map((el) => {
+    const box = boxOf(el);
+    return box ? boxLayout(box, library) : undefined;
+  });
+  const hit = built.get(network);
+  if (
+    hit &&
+    hit.rows === network.rows &&
+    hit.cols === network.cols &&
+    hit.elements === network.elements &&
+    sameItems(hit.held, network.elements) &&
+    hit.vlinks === network.vlinks &&
+    sameItems(hit.heldVlinks, network.vlinks) &&
+    sameItems(hit.layouts, layouts)
+  )
+    return hit.graph;
+  const graph = graphOf(network, layouts);
+  built.set(network, {
+    rows: network.rows,
+    cols: network.cols,
+    elements: network.elements,
+    held: network.elements.slice(),
+    vlinks: network.vlinks,
+    heldVlinks: network.vlinks.slice(),
+    layouts,
+    graph,
+  });
+  return graph;
+}
+
+function graphOf(network: Network, layouts: readonly (BoxLayout | undefined)[]): NetworkGraph {
   const { rows, cols } = network;
   const width = cols + 1;
   const point = (row: number, boundary: number) => row * width + boundary;
   const edges: WireEdge[] = [];
   const bars: [number, number][] = [];
-  const layouts: (BoxLayout | undefined)[] = [];
   const misplaced: { index: number; reason: string }[] = [];
   const occupied = new Map<number, number>();
   const placed: boolean[] = [];
 
   network.elements.forEach((el, index) => {
-    const box = boxOf(el);
-    const layout = box ? boxLayout(box, library) : undefined;
-    layouts.push(layout);
+    const layout = layouts[index];
     const h = layout ? layout.rows : 1;
     const w = layout ? layout.cols : 1;
     if (el.row < 0 || el.col < 0 || el.row + h > rows || el.col + w > cols) {

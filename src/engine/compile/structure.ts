@@ -10,7 +10,8 @@ import type { LdElement, VLink } from '../../model/elements';
 import type { Network } from '../../model/project';
 import type { GraphNode, Net, NetworkGraph } from './graph';
 import { netIsUsed, upstream } from './graph';
-import { cellName, describeElement, type Reporter } from './report';
+import { cellName, describeElement, type Located, type Reporter } from './report';
+import type { RuleId } from '../api';
 
 const isCoil = (el: LdElement) => el.kind === 'coil';
 const isTransitionCoil = (el: LdElement) => el.kind === 'coil' && (el.coil === 'P' || el.coil === 'N');
@@ -23,7 +24,52 @@ export function powerOutputPin(node: GraphNode): string | undefined {
   return node.layout?.outputs.find((p) => p.type === 'BOOL')?.name;
 }
 
+/** A finding of the structural rules, as reported (replayed on every reporter that checks the same graph). */
+interface Finding {
+  readonly severity: 'error' | 'warning';
+  readonly rule: RuleId;
+  readonly message: string;
+  readonly at?: Located;
+}
+
+/** Collects findings instead of reporting them. */
+class Findings {
+  readonly list: Finding[] = [];
+  errors = 0;
+  error(rule: RuleId, message: string, at?: Located): void {
+    this.errors++;
+    this.list.push({ severity: 'error', rule, message, ...(at ? { at: located(at) } : {}) });
+  }
+  warning(rule: RuleId, message: string, at?: Located): void {
+    this.list.push({ severity: 'warning', rule, message, ...(at ? { at: located(at) } : {}) });
+  }
+}
+
+const located = (at: Located): Located => ({ row: at.row, col: at.col, ...(at.id !== undefined ? { id: at.id } : {}) });
+
+/**
+ * The findings per graph: a graph is built once per network object (graph.ts), and the rules read
+ * only the network and its graph, so a network checked again (an unchanged network in the next
+ * compile, a body lowered for every instance of its FB) gives the same findings without the work.
+ */
+const checked = new WeakMap<NetworkGraph, { readonly ok: boolean; readonly found: readonly Finding[] }>();
+
 export function checkStructure(network: Network, g: NetworkGraph, r: Reporter): boolean {
+  let memo = checked.get(g);
+  if (!memo) {
+    const findings = new Findings();
+    const ok = checkRules(network, g, findings);
+    memo = { ok, found: findings.list };
+    checked.set(g, memo);
+  }
+  for (const f of memo.found) {
+    if (f.severity === 'error') r.error(f.rule, f.message, f.at);
+    else r.warning(f.rule, f.message, f.at);
+  }
+  return memo.ok;
+}
+
+function checkRules(network: Network, g: NetworkGraph, r: Findings): boolean {
   const before = r.errors;
   const width = g.cols + 1;
   const at = (p: number) => ({ row: Math.floor(p / width), col: Math.min(p % width, g.cols - 1) });

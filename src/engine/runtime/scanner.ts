@@ -89,9 +89,18 @@ export class ScanPlc extends ScanCycle implements Plc {
 
   // ---- variables ----
 
+  /**
+   * Names resolved so far: a program's symbols never change after its compile, and the simulator
+   * reads the same names every frame (every shown variable, 40 times a second).
+   */
+  private readonly resolved = new Map<string, Access>();
+
   private access(name: string): Access {
+    const known = this.resolved.get(name);
+    if (known) return known;
     const res = this.program.symbols.resolve(name, { literals: false, implicitLocations: false });
     if (!res.ok) throw new Error(`${name}: ${res.message}`);
+    this.resolved.set(name, res.access);
     return res.access;
   }
 

@@ -25,22 +25,33 @@ export function networkPower(
   first = 0,
   end = program.networks.length,
 ): NetworkPower[] {
-  return program.networks.slice(first, end).map((ir, k) => {
-    const i = first + k;
+  // Run for every shown network at display rate while the program runs: loops, no closures or sets.
+  const out: NetworkPower[] = [];
+  const last = Math.min(end, program.networks.length);
+  for (let i = first; i < last; i++) {
+    const ir = program.networks[i]!;
     const shape = program.shapes[i]!;
     const executed = ranInScan(t, i);
-    const rails = new Set(ir.railNets);
-    const base = t.words[i]!;
-    const on = (net: number) =>
-      executed && net >= 0
-        ? rails.has(net)
-          ? 1
-          : (t.power[base + Math.floor(net / NETS_PER_WORD)]! >>> (net % NETS_PER_WORD)) & 1
-        : 0;
     const elements = new Uint8Array(shape.elements);
     const vlinks = new Uint8Array(shape.vlinks);
-    ir.elementNets.forEach(([a, b], k) => (elements[k] = on(a) | (on(b) << 1) | (executed ? 4 : 0)));
-    ir.vlinkNets.forEach((net, k) => (vlinks[k] = on(net)));
-    return { elements, vlinks, executed };
-  });
+    if (executed) {
+      const base = t.words[i]!;
+      const nets = ir.elementNets;
+      for (let k = 0; k < nets.length; k++) {
+        const pair = nets[k]!;
+        elements[k] = netOn(ir.railNets, t.power, base, pair[0]) | (netOn(ir.railNets, t.power, base, pair[1]) << 1) | 4;
+      }
+      const vnets = ir.vlinkNets;
+      for (let k = 0; k < vnets.length; k++) vlinks[k] = netOn(ir.railNets, t.power, base, vnets[k]!);
+    }
+    out.push({ elements, vlinks, executed });
+  }
+  return out;
+}
+
+/** 1 when the net is powered in the network's packed words (a rail net always is); 0 for no net (-1). */
+function netOn(rails: readonly number[], power: Int32Array, base: number, net: number): number {
+  if (net < 0) return 0;
+  for (let r = 0; r < rails.length; r++) if (rails[r] === net) return 1;
+  return (power[base + Math.floor(net / NETS_PER_WORD)]! >>> (net % NETS_PER_WORD)) & 1;
 }
