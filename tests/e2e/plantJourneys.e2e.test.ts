@@ -133,9 +133,15 @@ test('a new project against the garage door: choose it, declare its I/O, draw a 
   const paused = await scan();
   await page.getByTestId('plant-choose').selectOption('');
   await page.getByTestId('plant-choose').selectOption('garage');
-  await expect.poll(() => page.getByTestId('plant-status').textContent()).toBe('Initial state: the machine moves from the next scan on');
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toBe('Initial state: it moves from the next scan on');
+  // The status is one line whatever it says: the drawing's buttons below it do not move under the pointer.
+  const statusHeight = async () => (await page.getByTestId('plant-status').boundingBox())!.height;
+  const startTop = async () => (await page.getByTestId('plant-op-KeyOpen').boundingBox())!.y;
+  const [height, top] = [await statusHeight(), await startTop()];
   await sim.button('step-scan').click();
   await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(new RegExp(`^After scan ${paused + 1} \\(`));
+  expect(await statusHeight()).toBe(height);
+  expect(await startTop()).toBe(top);
 
   // Rewire the motor's up contactor, then Undo: the address comes back (not the rung drawn before).
   await sim.button('reset').click();

@@ -29,10 +29,16 @@ const canonical = (address: string | undefined): string | undefined => {
  * there (the point is wired to it), or nothing, with where a variable of the point's name is
  * declared instead (rewired in the map but not in the program, or the other way round).
  */
-function wiring(project: Project, points: readonly PlantPoint[]): Map<string, { wired?: string; elsewhere?: string }> {
+function wiring(
+  project: Project,
+  points: readonly PlantPoint[],
+): Map<string, { wired?: string; elsewhere?: string }> {
   const byLocation = new Map<string, string>();
   const byName = new Map<string, string>();
-  for (const v of [...project.globals, ...project.pous.flatMap((p) => (p.kind === 'PROGRAM' ? p.variables : []))]) {
+  for (const v of [
+    ...project.globals,
+    ...project.pous.flatMap((p) => (p.kind === 'PROGRAM' ? p.variables : [])),
+  ]) {
     const at = canonical(v.location);
     if (!at) continue;
     if (!byLocation.has(at)) byLocation.set(at, v.name);
@@ -96,20 +102,22 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
   const live = frame?.id === model.id ? frame : undefined;
   const shown = historyScan !== undefined && atScan ? atScan : live?.now;
   const state = shown?.state ?? model.initial();
+  const status =
+    historyScan !== undefined
+      ? atScan
+        ? `Recorded scan ${atScan.scan.toLocaleString('en-US')} (${(atScan.timeMs / 1000).toFixed(2)} s)`
+        : `Scan ${historyScan.toLocaleString('en-US')} is no longer kept for the machine`
+      : shown && shown.scan > 0
+        ? `After scan ${shown.scan.toLocaleString('en-US')} (${(shown.timeMs / 1000).toFixed(2)} s)`
+        : shown
+          ? // Attached to a program already past scan 0: the machine's first step is the next scan's.
+            'Initial state: it moves from the next scan on'
+          : 'Initial state: run or step the program';
   const drawing = PLANT_DRAWINGS[model.id];
   return (
     <>
-      <p className="rs-plant-status" data-testid="plant-status">
-        {historyScan !== undefined
-          ? atScan
-            ? `Recorded scan ${atScan.scan.toLocaleString('en-US')} (${(atScan.timeMs / 1000).toFixed(2)} s)`
-            : `Scan ${historyScan.toLocaleString('en-US')} is no longer kept for the machine`
-          : shown && shown.scan > 0
-            ? `After scan ${shown.scan.toLocaleString('en-US')} (${(shown.timeMs / 1000).toFixed(2)} s)`
-            : shown
-              ? // Attached to a program already past scan 0: the machine's first step is the next scan's.
-                'Initial state: the machine moves from the next scan on'
-              : 'Initial state: run or step the program'}
+      <p className="rs-plant-status" data-testid="plant-status" title={status}>
+        {status}
       </p>
       {drawing && (
         <FittedDrawing drawing={drawing} state={state}>
@@ -319,7 +327,8 @@ function Faults({ model, active }: { model: PlantModel; active: readonly string[
                 : /_stuck_off$/.test(f.id)
                   ? f.id.replace(/_off$/, '_on')
                   : undefined;
-              if (e.target.checked && other && active.includes(other)) sim.getState().plantFault(other, false);
+              if (e.target.checked && other && active.includes(other))
+                sim.getState().plantFault(other, false);
               sim.getState().plantFault(f.id, e.target.checked);
             }}
           />{' '}
@@ -382,7 +391,9 @@ function IoMap({
     // it, in the same undo step as the variables added.
     const moves = points.flatMap((p) => {
       const v = pou.variables.find((x) => x.name.toUpperCase() === p.name.toUpperCase());
-      return v?.location && canonical(v.location) !== canonical(p.address) ? [{ name: v.name, from: v.location, to: p.address }] : [];
+      return v?.location && canonical(v.location) !== canonical(p.address)
+        ? [{ name: v.name, from: v.location, to: p.address }]
+        : [];
     });
     const added = s.batch("Declare the machine's I/O", () => {
       const names = s.addVariables(plantVariables(model, map), "Declare the machine's I/O", pou.id);
@@ -390,7 +401,9 @@ function IoMap({
       return names;
     });
     const said = [
-      added.length ? `Declared ${added.length} variable${added.length === 1 ? '' : 's'} in ${pou.name}: ${added.join(', ')}.` : '',
+      added.length
+        ? `Declared ${added.length} variable${added.length === 1 ? '' : 's'} in ${pou.name}: ${added.join(', ')}.`
+        : '',
       moves.length ? `Moved ${moves.map((m) => `${m.name} from ${m.from} to ${m.to}`).join(', ')}.` : '',
     ].filter(Boolean);
     setDeclared(said.length ? said.join(' ') : `Every point is declared in ${pou.name} already.`);
@@ -414,7 +427,9 @@ function IoMap({
           <tr>
             <th>Address</th>
             <th>Point</th>
-            <th title="The program's variable at the point's address: what the machine is wired to">In the program</th>
+            <th title="The program's variable at the point's address: what the machine is wired to">
+              In the program
+            </th>
           </tr>
         </thead>
         <tbody>
