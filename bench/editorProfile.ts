@@ -1,7 +1,7 @@
 // Where the editor's time goes: loads a generated project into the built app in Chromium, records
 // Chromium's sampling profiler (CDP Profiler) around the first render and around a series of edits,
 // and prints the functions with the most self time. For finding causes; the figures are bench:editor's.
-// `npx vite build --outDir /tmp/x --minify false && RUNGSMITH_DIST=/tmp/x npx tsx bench/editorProfile.ts [load|edit|select|undo|all] [bottle]`
+// `npx vite build --outDir /tmp/x --minify false && RUNGSMITH_DIST=/tmp/x npx tsx bench/editorProfile.ts [load|edit|select|undo|clicks|interact|afterundo|all] [bottle]`
 import { existsSync, writeFileSync } from 'node:fs';
 import { chromium, type CDPSession } from 'playwright-core';
 import { preview } from 'vite';
@@ -401,6 +401,24 @@ async function main() {
       const r = { median: Math.round(sorted[Math.floor((sorted.length - 1) / 2)]! * 10) / 10, each: out.map(Math.round) };
       if (process.env.TRACE) printTrace('clicks', r, all);
       else console.log(`==== clicks: ${JSON.stringify(r)}\n${summarize(profiles)}`);
+    }
+    // What the page does in the second after an undo of a commit with declaration, with no input (the
+    // work a click that soon after lands on): bench:editor clicks 150 ms after such an undo.
+    if (what === 'afterundo') {
+      const count = project.pous[0]!.networks.length;
+      for (let k = 0; k < Number(process.env.REPEAT ?? 3); k++) {
+        const p = await cellOnScreen(page, Math.floor(((k + 0.5) * count) / 3), 0, 0);
+        await page.mouse.click(p.x, p.y);
+        await page.evaluate(() => new Promise((r) => setTimeout(r, 150)));
+        await page.keyboard.press('Enter');
+        await page.keyboard.press('Control+a');
+        await page.keyboard.type(`After${k}Undo`);
+        await page.keyboard.press('Enter');
+        await page.evaluate(() => new Promise((r) => setTimeout(r, 150)));
+        await page.keyboard.press('Control+z');
+        await profiled(cdp, `afterundo${k}`, () => page.evaluate(() => new Promise((r) => setTimeout(r, Number(1000)))));
+        await page.evaluate(() => new Promise((r) => setTimeout(r, 1000)));
+      }
     }
     if (what === 'interact') await profiled(cdp, 'interact', () => interactionFigures(page, Number(process.env.REPEAT ?? 3)));
     if (what === 'running') await profiled(cdp, 'running', () => runningFrameP95(page));
