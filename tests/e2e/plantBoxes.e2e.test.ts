@@ -20,20 +20,13 @@ let plants: PlantPage;
 const plant = () => plants.plant<Record<string, number | boolean | unknown[]>>();
 const trace = (names: string[]) => plants.trace(names);
 
-/** Runs, holds Start on the drawing until the program runs, releases it, pauses; then Step N of `scans` scans. */
-async function startAndFastForward(scans: number) {
-  await plants.runHoldPause('Start', 'Running');
-  await plants.fastForward(scans);
-}
+const startAndFastForward = (scans: number) => plants.startAndFastForward(scans);
 
 beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
   plants = new PlantPage(page, sim);
-  await sim.openExample('Box sorter (machine: boxes)');
-  await sim.tab('Plant');
-  await page.getByTestId('sim-cycle').fill('100');
-  await page.getByTestId('sim-cycle').press('Enter');
+  await plants.openExercise('Box sorter (machine: boxes)', 100);
 });
 
 test('the reference solution sorts 10 boxes by size: large ones pushed into the chute, small ones into the bin', async () => {

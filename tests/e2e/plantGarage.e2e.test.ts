@@ -59,10 +59,7 @@ beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
   plants = new PlantPage(page, sim);
-  await sim.openExample('Garage door (machine: garage)');
-  await sim.tab('Plant');
-  await page.getByTestId('sim-cycle').fill('100');
-  await page.getByTestId('sim-cycle').press('Enter');
+  await plants.openExercise('Garage door (machine: garage)', 100);
 });
 
 test('the reference solution opens and closes the door three times on the key and reverses for the car', async () => {

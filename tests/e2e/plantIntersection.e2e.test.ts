@@ -30,10 +30,7 @@ beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
   plants = new PlantPage(page, sim);
-  await sim.openExample('Road intersection (machine: intersection)');
-  await sim.tab('Plant');
-  await page.getByTestId('sim-cycle').fill('100');
-  await page.getByTestId('sim-cycle').press('Enter');
+  await plants.openExercise('Road intersection (machine: intersection)', 100);
 });
 
 test('the reference solution serves the side road and a pedestrian for 5 minutes of PLC time, no conflict', async () => {

@@ -37,10 +37,7 @@ beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
   plants = new PlantPage(page, sim);
-  await sim.openExample('Three-floor lift (machine: lift)');
-  await sim.tab('Plant');
-  await page.getByTestId('sim-cycle').fill('20');
-  await page.getByTestId('sim-cycle').press('Enter');
+  await plants.openExercise('Three-floor lift (machine: lift)', 20);
 });
 
 test('the reference solution answers six calls pressed on the drawing, level with the floors, the door closed whenever the car moves', async () => {

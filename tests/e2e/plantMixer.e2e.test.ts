@@ -19,20 +19,13 @@ let plants: PlantPage;
 const plant = () => plants.plant();
 const trace = (names: string[]) => plants.trace(names);
 
-/** Runs, holds Start on the drawing until the program runs, releases it, pauses; then Step N of `scans` scans. */
-async function startAndFastForward(scans: number) {
-  await plants.runHoldPause('Start', 'Running');
-  await plants.fastForward(scans);
-}
+const startAndFastForward = (scans: number) => plants.startAndFastForward(scans);
 
 beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
   plants = new PlantPage(page, sim);
-  await sim.openExample('Batch mixer (machine: mixer)');
-  await sim.tab('Plant');
-  await page.getByTestId('sim-cycle').fill('100');
-  await page.getByTestId('sim-cycle').press('Enter');
+  await plants.openExercise('Batch mixer (machine: mixer)', 100);
 });
 
 test('the reference solution makes three good batches: dosed, heated to 60 °C, held, discharged', async () => {

@@ -79,6 +79,20 @@ export class PlantPage {
     await expect.poll(() => button.getAttribute('aria-pressed'), { timeout: 10_000 }).toBe('false');
   }
 
+  /** Opens the machine's exercise from File > Examples, shows the Plant tab and sets the scan cycle. */
+  async openExercise(title: string, cycleMs: number): Promise<void> {
+    await this.sim.openExample(title);
+    await this.sim.tab('Plant');
+    await this.page.getByTestId('sim-cycle').fill(String(cycleMs));
+    await this.page.getByTestId('sim-cycle').press('Enter');
+  }
+
+  /** Runs, holds Start on the drawing until the program runs, releases it, pauses; then Step N of `scans` scans. */
+  async startAndFastForward(scans: number): Promise<void> {
+    await this.runHoldPause('Start', 'Running');
+    await this.fastForward(scans);
+  }
+
   /** Run, hold `control` until `variable` is TRUE, pause. */
   async runHoldPause(control: string, variable: string): Promise<void> {
     await this.sim.button('run').click();

@@ -19,20 +19,13 @@ let plants: PlantPage;
 const plant = () => plants.plant();
 const trace = (names: string[]) => plants.traceText(names);
 
-/** Runs, presses Start on the drawing until the program runs, releases it, pauses; then Step N of `scans` scans (fast-forward). */
-async function startAndFastForward(scans: number) {
-  await plants.runHoldPause('Start', 'Running');
-  await plants.fastForward(scans);
-}
+const startAndFastForward = (scans: number) => plants.startAndFastForward(scans);
 
 beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
   sim = new SimPage(page);
   plants = new PlantPage(page, sim);
-  await sim.openExample('Tank level control (machine: tank)');
-  await sim.tab('Plant');
-  await page.getByTestId('sim-cycle').fill('100');
-  await page.getByTestId('sim-cycle').press('Enter');
+  await plants.openExercise('Tank level control (machine: tank)', 100);
 });
 
 test('the reference solution holds the tank between the switches for 5 minutes of PLC time', async () => {
