@@ -117,7 +117,12 @@ const settle = (page: Page) => page.evaluate(() => new Promise((r) => setTimeout
  * paste of 200 networks (undone after). The shown POU must have a contact at row 0, column 0 of
  * every network (both generated bench projects do).
  */
-export async function interactionFigures(page: Page, repeats = 7): Promise<InteractionFigures> {
+export async function interactionFigures(
+  page: Page,
+  repeats = 7,
+  /** Runs each select click (bench/editorProfile.ts traces it); the click alone when absent. */
+  aroundSelect: (click: () => Promise<number>) => Promise<number> = (click) => click(),
+): Promise<InteractionFigures> {
   const select: number[] = [];
   const reclick: number[] = [];
   const keys: number[] = [];
@@ -127,7 +132,7 @@ export async function interactionFigures(page: Page, repeats = 7): Promise<Inter
   for (let k = 0; k < repeats; k++) {
     const index = Math.floor(((k + 0.5) * count) / repeats);
     const p = await cellOnScreen(page, index, 0, 0);
-    select.push(await timed(page, 'pointerdown', () => page.mouse.click(p.x, p.y)));
+    select.push(await aroundSelect(() => timed(page, 'pointerdown', () => page.mouse.click(p.x, p.y))));
     await settle(page);
     const selected = await page.evaluate(() => window.rungsmith!.uiStore!.getState().selection.elements.length);
     if (selected !== 1) throw new Error(`the click on network ${index + 1} selected ${selected} elements, not its contact`);

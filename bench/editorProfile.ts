@@ -1,7 +1,7 @@
 // Where the editor's time goes: loads a generated project into the built app in Chromium, records
 // Chromium's sampling profiler (CDP Profiler) around the first render and around a series of edits,
 // and prints the functions with the most self time. For finding causes; the figures are bench:editor's.
-// `npx vite build --outDir /tmp/x --minify false && RUNGSMITH_DIST=/tmp/x npx tsx bench/editorProfile.ts [load|edit|select|undo|clicks|interact|afterundo|all] [bottle]`
+// `npx vite build --outDir /tmp/x --minify false && RUNGSMITH_DIST=/tmp/x npx tsx bench/editorProfile.ts [load|edit|select|undo|clicks|interact|afterundo|benchselect|all] [bottle]`
 import { existsSync, writeFileSync } from 'node:fs';
 import { chromium, type CDPSession } from 'playwright-core';
 import { preview } from 'vite';
@@ -419,6 +419,38 @@ async function main() {
         await profiled(cdp, `afterundo${k}`, () => page.evaluate(() => new Promise((r) => setTimeout(r, Number(1000)))));
         await page.evaluate(() => new Promise((r) => setTimeout(r, 1000)));
       }
+    }
+    // bench:editor's own sequence (select, the same click again, type, commit, undo per network),
+    // its select clicks alone traced (TRACE=1) or profiled: what select-ms measures.
+    if (what === 'benchselect') {
+      const all: TraceEvent[] = [];
+      const profiles: Profile[] = [];
+      const out: number[] = [];
+      // RUNS=2: the sequence twice, the second on code the first has warmed (bench:editor's bottle
+      // filler clicks are the first clicks of its page).
+      for (let run = 0; run < Number(process.env.RUNS ?? 1); run++)
+      await interactionFigures(page, Number(process.env.REPEAT ?? 7), async (click) => {
+        let ms: number;
+        if (process.env.TRACE) {
+          const { r, events } = await recordTrace(cdp, click);
+          all.push(...events);
+          ms = r;
+          if (process.env.TIMELINE) console.log(`click ${out.length}: ${Math.round(r * 10) / 10} ms\n${timeline(events)}`);
+        } else {
+          await cdp.send('Profiler.enable');
+          await cdp.send('Profiler.setSamplingInterval', { interval: Number(process.env.INTERVAL ?? 200) });
+          await cdp.send('Profiler.start');
+          ms = await click();
+          profiles.push(((await cdp.send('Profiler.stop')) as unknown as { profile: Profile }).profile);
+        }
+        out.push(ms);
+        return ms;
+      });
+      const sorted = [...out].sort((a, b) => a - b);
+      const r = { median: Math.round(sorted[Math.floor((sorted.length - 1) / 2)]! * 10) / 10, each: out.map(Math.round) };
+      if (process.env.TRACE_OUT) writeFileSync(process.env.TRACE_OUT, JSON.stringify(all));
+      if (process.env.TRACE) printTrace('benchselect', r, all);
+      else console.log(`==== benchselect: ${JSON.stringify(r)}\n${summarize(profiles)}`);
     }
     if (what === 'interact') await profiled(cdp, 'interact', () => interactionFigures(page, Number(process.env.REPEAT ?? 3)));
     if (what === 'running') await profiled(cdp, 'running', () => runningFrameP95(page));

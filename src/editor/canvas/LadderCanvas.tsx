@@ -17,14 +17,12 @@ import {
 import { elementAt } from '../../store/networkEdits';
 import {
   clampZoom,
-  selectCursor,
-  selectSelection,
   selectTheme,
   selectZoom,
   useUi,
   useUiStore,
 } from '../../store/uiStore';
-import { cursorAnchor, type EditorContext } from '../commands/editorActions';
+import type { EditorContext } from '../commands/editorActions';
 import { useDiagnosticsByNetwork } from '../problems/useDiagnostics';
 import { readCanvasTheme, type CanvasTheme } from '../theme/canvasTheme';
 import { BlockPicker } from './BlockPicker';
@@ -53,6 +51,7 @@ import type { DragState } from './dragTargets';
 import { markersByNetwork } from './markers';
 import { NetworkHeader } from './NetworkHeader';
 import { NetworkShape } from './NetworkShape';
+import { SelectionMarks } from './SelectionMarks';
 import { useCanvasPointer, type PointerView } from './useCanvasPointer';
 import { usePinchZoom, type ZoomAnchor } from './usePinchZoom';
 import './canvas.css';
@@ -89,8 +88,7 @@ export function LadderCanvas() {
   const pou = useDocument(selectActivePou);
   const library = useDocument(selectLibrary);
   const zoom = useUi(selectZoom);
-  const selection = useUi(selectSelection);
-  const cursor = useUi(selectCursor);
+  // The selection and the cursor are drawn by SelectionMarks: a click does not render the canvas.
   const themeName = useUi(selectTheme);
   const tool = useUi((s) => s.tool);
   const focusRequest = useUi((s) => s.focusRequest);
@@ -100,10 +98,16 @@ export function LadderCanvas() {
   const symbols = symbolCommentsFor(showSymbolComments, pou?.variables, globals);
   // Networks are as tall as the rows they use; room to place into shows while placing (canvasLayout.ts).
   const dragging = useUi((s) => s.dragging);
-  const room = roomFor({ tool, cursor, dragging }, networks, library);
-  const roomKey = room ? (room.all ? 'all' : `${room.network}:${room.rows}`) : '';
-  // eslint-disable-next-line react-hooks/exhaustive-deps
-  const stableRoom = useMemo<Room | undefined>(() => room, [roomKey]);
+  // The cursor matters to the layout only below a network's used rows (room to place into).
+  const roomKey = useUi((s) => {
+    const r = roomFor({ tool, cursor: s.cursor, dragging }, networks, library);
+    return r ? (r.all ? 'all' : `${r.network}:${r.rows}`) : '';
+  });
+  const stableRoom = useMemo<Room | undefined>(
+    () => roomFor({ tool, cursor: ui.getState().cursor, dragging }, networks, library),
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+    [roomKey],
+  );
   const layout = useMemo(
     () => layoutNetworks(networks, library, symbols, stableRoom),
     [networks, library, symbols, stableRoom],
@@ -194,37 +198,6 @@ export function LadderCanvas() {
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [focusRequest]);
 
-  // The cursor never stays inside an element of several cells (a click on a box's right half, an undo
-  // that leaves it where a box now is): it stands on the element's own cell.
-  useLayoutEffect(() => {
-    const n = cursor && networks.find((m) => m.id === cursor.network);
-    if (!cursor || !n) return;
-    const at = cursorAnchor(n, cursor, library);
-    if (at.row !== cursor.row || at.col !== cursor.col) ui.getState().setCursor({ network: n.id, ...at });
-  }, [cursor, networks, library, ui]);
-
-  // Keep the keyboard cursor on screen.
-  useLayoutEffect(() => {
-    const el = scrollRef.current;
-    if (!el || !cursor) return;
-    const i = networks.findIndex((n) => n.id === cursor.network);
-    const n = networks[i];
-    if (!n) return;
-    const pitch = pitchOf(layout, i);
-    const top = (layout.tops[i]! + headerHeight(n) + cursor.row * pitch) * zoom;
-    const cell = cellRect(columnsOf(layout, n), cursor, 1, 1, pitch);
-    const left = (RAIL_X + cell.x) * zoom;
-    const margin = 24;
-    if (top < el.scrollTop + margin)
-      el.scrollTop = top - (i > 0 && cursor.row === 0 ? headerHeight(n) * zoom : 0) - margin;
-    else if (top + pitch * zoom > el.scrollTop + el.clientHeight - margin)
-      el.scrollTop = top + pitch * zoom - el.clientHeight + margin;
-    if (left < el.scrollLeft) el.scrollLeft = left - margin;
-    else if (left + cell.width * zoom > el.scrollLeft + el.clientWidth)
-      el.scrollLeft = left + cell.width * zoom - el.clientWidth + margin;
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [cursor]);
-
   // When every network gains (or loses) its empty row to drop on, the network being worked on stays
   // where it is on screen (the cursor's, else the one at the view's top): no jump under the pointer.
   const prevLayout = useRef<CanvasLayout>(layout);
@@ -236,6 +209,7 @@ export function LadderCanvas() {
     if (old.tops.length !== layout.tops.length) return;
     const viewTop = el.scrollTop / zoom;
     const viewBottom = viewTop + el.clientHeight / zoom;
+    const cursor = ui.getState().cursor;
     let a = cursor ? networks.findIndex((n) => n.id === cursor.network) : -1;
     if (a < 0 || old.tops[a]! + old.heights[a]! < viewTop || old.tops[a]! > viewBottom)
       a = networkIndexAt(old, viewTop + VIEW_PROBE);
@@ -279,7 +253,6 @@ export function LadderCanvas() {
   const stageWidth = size.width + 2 * BAND_X;
   const stageHeight = size.height + 2 * BAND_Y;
   const { first, last } = visibleRange(layout, win.top / zoom, (win.top + stageHeight) / zoom);
-  const selectedSet = useMemo(() => new Set(selection.elements), [selection]);
   const refocus = () => scrollRef.current?.focus({ preventScroll: true });
   const hoverProblems = hover
     ? (markers.get(hover.index)?.markers ?? NO_MARKERS).filter(
@@ -341,8 +314,8 @@ export function LadderCanvas() {
                           index={i}
                           top={layout.tops[i]!}
                           theme={theme}
-                          selected={selection.network === n.id ? selectedSet : EMPTY_SET}
-                          cursor={cursor?.network === n.id ? cursor : undefined}
+                          selected={EMPTY_SET}
+                          cursor={undefined}
                           hover={hover?.index === i ? hover.cell : undefined}
                           markers={markers.get(i)?.markers ?? NO_MARKERS}
                           drag={dragPaints.get(n.id)}
@@ -389,6 +362,7 @@ export function LadderCanvas() {
                 />
               )}
             </div>
+            <SelectionMarks layout={layout} networks={networks} library={library} zoom={zoom} scrollRef={scrollRef} />
             <InlineEditor layout={layout} zoom={zoom} onDone={refocus} />
           </div>
           <BlockPicker onDone={refocus} />

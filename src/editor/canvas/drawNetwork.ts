@@ -224,14 +224,12 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
       const text = paint.device.get(el.id);
       if (text) drawDeviceMark(ctx, t, elementRect(nc, el, paint.library, pitch), text);
     }
-  for (const el of n.elements) {
-    if (!paint.selected.has(el.id)) continue;
-    const r = elementRect(nc, el, paint.library, pitch);
+  for (const r of selectionRects(n, nc, paint.selected, paint.library, pitch)) {
     ctx.fillStyle = t.selectionFill;
     ctx.strokeStyle = t.selection;
-    ctx.lineWidth = 2;
-    ctx.fillRect(r.x + 2, r.y + 2, r.width - 4, r.height - 4);
-    ctx.strokeRect(r.x + 2, r.y + 2, r.width - 4, r.height - 4);
+    ctx.lineWidth = SELECTION_LINE;
+    ctx.fillRect(r.x, r.y, r.width, r.height);
+    ctx.strokeRect(r.x, r.y, r.width, r.height);
   }
   if (paint.hover) drawConnectionPartners(ctx, t, n, paint.hover, paint.library, pitch);
   for (const m of paint.markers) {
@@ -263,19 +261,45 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     }
   }
   if (paint.cursor) {
-    const { row, col } = paint.cursor;
-    const k = nc.alignedAt[row] ?? -1;
+    const r = cursorRect(n, nc, paint.cursor, paint.library, pitch);
     ctx.strokeStyle = t.cursor;
-    ctx.lineWidth = 2.5;
-    if (k >= 0 && col > k && col < n.cols) {
-      // An empty cell past a rail-aligned coil: after the end of the rung, a bar right of the rail.
-      ctx.strokeRect(w + 4, row * pitch + 6, 5, pitch - 12);
-    } else {
-      // On a box (or any element of several cells) the cursor frames the whole element: it stands
-      // on the element, never on one of its halves.
-      const el = elementAt(n, paint.cursor, paint.library);
-      const r = el && el.kind !== 'link' ? elementRect(nc, el, paint.library, pitch) : cellRect(nc, paint.cursor, 1, 1, pitch);
-      ctx.strokeRect(r.x + 1, r.y + 1, r.width - 2, r.height - 2);
-    }
+    ctx.lineWidth = CURSOR_LINE;
+    ctx.strokeRect(r.x, r.y, r.width, r.height);
   }
+}
+
+/** Width of the selection's outline; the rectangles below are the outlines' centre lines. */
+export const SELECTION_LINE = 2;
+/** Width of the keyboard cursor's outline. */
+export const CURSOR_LINE = 2.5;
+
+/** The selection marks of a network's selected elements (grid coordinates: outline's centre line, filled inside). */
+export function selectionRects(
+  n: Network,
+  nc: NetworkColumns,
+  selected: ReadonlySet<ElementId>,
+  library: BlockLibrary | undefined,
+  pitch = CELL_H,
+): Rect[] {
+  const out: Rect[] = [];
+  if (selected.size === 0) return out;
+  for (const el of n.elements) {
+    if (!selected.has(el.id)) continue;
+    const r = elementRect(nc, el, library, pitch);
+    out.push({ x: r.x + 2, y: r.y + 2, width: r.width - 4, height: r.height - 4 });
+  }
+  return out;
+}
+
+/** The keyboard cursor's outline in a network (grid coordinates, the outline's centre line). */
+export function cursorRect(n: Network, nc: NetworkColumns, cursor: Cell, library: BlockLibrary | undefined, pitch = CELL_H): Rect {
+  const { row, col } = cursor;
+  const k = nc.alignedAt[row] ?? -1;
+  // An empty cell past a rail-aligned coil: after the end of the rung, a bar right of the rail.
+  if (k >= 0 && col > k && col < n.cols) return { x: nc.xs[n.cols]! + 4, y: row * pitch + 6, width: 5, height: pitch - 12 };
+  // On a box (or any element of several cells) the cursor frames the whole element: it stands
+  // on the element, never on one of its halves.
+  const el = elementAt(n, cursor, library);
+  const r = el && el.kind !== 'link' ? elementRect(nc, el, library, pitch) : cellRect(nc, cursor, 1, 1, pitch);
+  return { x: r.x + 1, y: r.y + 1, width: r.width - 2, height: r.height - 2 };
 }
