@@ -14,6 +14,7 @@ import {
   useDocument,
   useDocumentStore,
 } from '../../store/documentStore';
+import { isConnection } from '../../store/connectors';
 import { elementAt } from '../../store/networkEdits';
 import {
   clampZoom,
@@ -261,6 +262,9 @@ export function LadderCanvas() {
     : NO_MARKERS;
   const hoverNetwork = hover ? networks[hover.index] : undefined;
   const hoverElement = hoverNetwork && hover ? elementAt(hoverNetwork, hover.cell, library) : undefined;
+  // Only a connector's partners are drawn into the network's picture when the pointer rests on it;
+  // the cell's own fill is SelectionMarks' (moving the pointer redraws no network).
+  const hoverOnConnection = hoverElement !== undefined && isConnection(hoverElement);
   const visible: number[] = [];
   for (let i = first; i <= last; i++) visible.push(i);
 
@@ -316,7 +320,7 @@ export function LadderCanvas() {
                           theme={theme}
                           selected={EMPTY_SET}
                           cursor={undefined}
-                          hover={hover?.index === i ? hover.cell : undefined}
+                          partners={hover?.index === i && hoverOnConnection ? hover.cell : undefined}
                           markers={markers.get(i)?.markers ?? NO_MARKERS}
                           drag={dragPaints.get(n.id)}
                           zoom={zoom}
@@ -362,7 +366,7 @@ export function LadderCanvas() {
                 />
               )}
             </div>
-            <SelectionMarks layout={layout} networks={networks} library={library} zoom={zoom} scrollRef={scrollRef} />
+            <SelectionMarks layout={layout} networks={networks} library={library} zoom={zoom} scrollRef={scrollRef} hover={hover} />
             <InlineEditor layout={layout} zoom={zoom} onDone={refocus} />
           </div>
           <BlockPicker onDone={refocus} />

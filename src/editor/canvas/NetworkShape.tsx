@@ -20,7 +20,8 @@ export interface NetworkShapeProps {
   readonly theme: CanvasTheme;
   readonly selected: ReadonlySet<ElementId>;
   readonly cursor: Cell | undefined;
-  readonly hover: Cell | undefined;
+  /** The cell under the pointer, on a connector: its partners are outlined (the hover's fill is a page element). */
+  readonly partners: Cell | undefined;
   readonly markers: readonly CellMarker[];
   readonly drag: NetworkPaint['drag'];
   /** Current zoom: the cached bitmap is drawn at this scale so it stays sharp. */
@@ -39,7 +40,7 @@ export interface NetworkShapeProps {
 const CACHE_MARGIN = 12;
 
 export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps) {
-  const { network, index, top, theme, selected, cursor, hover, markers, drag, zoom, library, symbols } = props;
+  const { network, index, top, theme, selected, cursor, partners, markers, drag, zoom, library, symbols } = props;
   const pitch = props.pitch ?? CELL_H;
   const rows = props.rows ?? network.rows;
   const ref = useRef<Konva.Shape>(null);
@@ -49,7 +50,8 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
       library,
       selected,
       cursor,
-      hover,
+      hover: undefined,
+      ...(partners ? { partners } : {}),
       markers,
       ...(pitch !== CELL_H ? { pitch } : {}),
       rows,
@@ -61,7 +63,7 @@ export const NetworkShape = memo(function NetworkShape(props: NetworkShapeProps)
       ...(overlay.forced ? { forced: overlay.forced } : {}),
       ...(overlay.device ? { device: overlay.device } : {}),
     }),
-    [library, selected, cursor, hover, markers, pitch, rows, symbols, drag, overlay.power, overlay.liveValues, overlay.pinValues, overlay.forced, overlay.device],
+    [library, selected, cursor, partners, markers, pitch, rows, symbols, drag, overlay.power, overlay.liveValues, overlay.pinValues, overlay.forced, overlay.device],
   );
   const width = networkWidth(network, library);
   const height = rows * pitch + GRID_PAD_BOTTOM;

@@ -1,9 +1,10 @@
-// The selection and the keyboard cursor, drawn by page elements over the canvas instead of into the
+// The selection, the keyboard cursor and the cell under the pointer, drawn by page elements over the canvas instead of into the
 // networks' pictures: a click or an arrow key then changes two small elements (each on its own
 // compositor layer, moved by a transform) and redraws no network, does not render the canvas and
 // hands no new stage bitmap to the compositor (docs/benchmarks.md, select-ms). The rectangles are
 // the ones drawNetworkGrid draws for print (selectionRects, cursorRect).
-import { useLayoutEffect, type RefObject } from 'react';
+import { memo, useLayoutEffect, type RefObject } from 'react';
+import type { Cell } from '../../model/grid';
 import type { BlockLibrary } from '../../model/library';
 import type { Network } from '../../model/project';
 import { selectCursor, selectSelection, useUi, useUiStore } from '../../store/uiStore';
@@ -17,6 +18,8 @@ interface Props {
   readonly library: BlockLibrary;
   readonly zoom: number;
   readonly scrollRef: RefObject<HTMLDivElement | null>;
+  /** The grid cell under the pointer (network index and cell). */
+  readonly hover: { readonly index: number; readonly cell: Cell } | undefined;
 }
 
 type Rect = { x: number; y: number; width: number; height: number };
@@ -29,7 +32,7 @@ const boxStyle = (r: Rect, line: number) => ({
   borderWidth: line,
 });
 
-export function SelectionMarks({ layout, networks, library, zoom, scrollRef }: Props) {
+export const SelectionMarks = memo(function SelectionMarks({ layout, networks, library, zoom, scrollRef, hover }: Props) {
   const ui = useUiStore();
   const selection = useUi(selectSelection);
   const cursor = useUi(selectCursor);
@@ -82,8 +85,25 @@ export function SelectionMarks({ layout, networks, library, zoom, scrollRef }: P
   const cursorBox =
     cur && cursor ? cursorRect(cur.n, columnsOf(layout, cur.n), cursor, library, pitchOf(layout, cur.i)) : undefined;
 
+  const hovered = hover ? networks[hover.index] : undefined;
+  const hoverBox =
+    hover && hovered && !hovered.collapsed
+      ? cellRect(columnsOf(layout, hovered), hover.cell, 1, 1, pitchOf(layout, hover.index))
+      : undefined;
+
   return (
     <div className="rs-marks" style={{ transform: `scale(${zoom})` }}>
+      {hover && hovered && hoverBox && (
+        <div
+          className="rs-mark rs-hover-mark"
+          data-testid="canvas-hover-mark"
+          style={{
+            transform: `translate(${RAIL_X + hoverBox.x}px, ${layout.tops[hover.index]! + headerHeight(hovered) + hoverBox.y}px)`,
+            width: hoverBox.width,
+            height: hoverBox.height,
+          }}
+        />
+      )}
       {selected.map((r, k) => (
         <div key={k} className="rs-mark rs-selection-mark" data-testid="canvas-selection-mark" style={boxStyle(r, SELECTION_LINE)} />
       ))}
@@ -96,4 +116,4 @@ export function SelectionMarks({ layout, networks, library, zoom, scrollRef }: P
       )}
     </div>
   );
-}
+});

@@ -30,6 +30,9 @@ export interface NetworkPaint {
   readonly selected: ReadonlySet<ElementId>;
   readonly cursor: Cell | undefined;
   readonly hover: Cell | undefined;
+  /** The cell under the pointer when only its connection partners are drawn here (the canvas draws
+   * the hover's fill with a page element, SelectionMarks.tsx); `hover` draws both. */
+  readonly partners?: Cell | undefined;
   readonly markers: readonly CellMarker[];
   /** Height of the network's rows (CELL_H when absent; taller when comments are shown under operands). */
   readonly pitch?: number;
@@ -231,7 +234,8 @@ export function drawNetworkGrid(ctx: Ctx, t: CanvasTheme, n: Network, paint: Net
     ctx.fillRect(r.x, r.y, r.width, r.height);
     ctx.strokeRect(r.x, r.y, r.width, r.height);
   }
-  if (paint.hover) drawConnectionPartners(ctx, t, n, paint.hover, paint.library, pitch);
+  const partners = paint.partners ?? paint.hover;
+  if (partners) drawConnectionPartners(ctx, t, n, partners, paint.library, pitch);
   for (const m of paint.markers) {
     const el = elementAt(n, m.cell, paint.library);
     const r = el ? { ...elementRect(nc, el, paint.library, pitch), height: CELL_H, y: m.cell.row * pitch } : { ...cellRect(nc, m.cell, 1, 1, pitch), height: CELL_H };
