@@ -272,6 +272,8 @@ async function main() {
         store.loadProject((window as unknown as { __p: Project }).__p);
         return new Promise<number>((resolve) => requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - t0), 0)));
       });
+    // STYLE='css': a diagnostic stylesheet added to the page (what a part of the page costs a click).
+    if (process.env.STYLE) await page.addStyleTag({ content: process.env.STYLE });
     if (what === 'load' || what === 'all') await profiled(cdp, 'load', load);
     else await load();
     await page.evaluate(() => new Promise((r) => setTimeout(r, 2000)));
