@@ -562,7 +562,7 @@ function compileDrive(outs: readonly Wire[]): DriveCode {
     }
     return `n = Number(O[${w.index}]); if (!Object.is(n, N[${w.int}])) { N[${w.int}] = n; D[${name}] = n; c = true; }`;
   });
-  return new Function('O', 'B', 'N', 'D', `"use strict"; let on, n, c = false;\n${body.join('\n')}\nreturn c;`) as DriveCode;
+  return compiled<DriveCode>(['O', 'B', 'N', 'D'], `"use strict"; let on, n, c = false;\n${body.join('\n')}\nreturn c;`);
 }
 
 /**
@@ -575,7 +575,7 @@ function compileDrive(outs: readonly Wire[]): DriveCode {
 function compileSameState(state: unknown): (a: unknown, b: unknown) => boolean {
   const keys = Object.keys(state as object);
   const body = keys.map((k) => `Object.is(a[${JSON.stringify(k)}], b[${JSON.stringify(k)}])`).join(' &&\n');
-  return new Function('a', 'b', `"use strict"; return ${body || 'true'};`) as (a: unknown, b: unknown) => boolean;
+  return compiled<(a: unknown, b: unknown) => boolean>(['a', 'b'], `"use strict"; return ${body || 'true'};`);
 }
 
 /**
@@ -590,5 +590,25 @@ function compilePresent(sensors: readonly Wire[], operators: readonly Wire[]): P
         `v = (B[${w.bit >>> 5}] & ${(1 << (w.bit & 31)) >>> 0}) !== 0; if (I[${w.index}] !== v) M.write(${w.index}, v);`,
     ),
   ];
-  return new Function('I', 'S', 'B', 'M', `"use strict"; let v;\n${body.join('\n')}`) as PresentCode;
+  return compiled<PresentCode>(['I', 'S', 'B', 'M'], `"use strict"; let v;\n${body.join('\n')}`);
+}
+
+/**
+ * The functions compiled so far, by their text: the same wiring bound again (a program loaded
+ * again, an online change that keeps the I/O, a second loop on the same program) gets the same
+ * function, so the loop's calls of it stay monomorphic (a new function per bind makes them
+ * polymorphic, then megamorphic: not inlined, slower every scan). A few per machine and wiring.
+ */
+const COMPILED = new Map<string, unknown>();
+/** Kept at most (a session that rewires again and again starts over past it). */
+const COMPILED_MAX = 256;
+function compiled<F>(params: readonly string[], body: string): F {
+  const key = `${params.join(',')}\n${body}`;
+  let fn = COMPILED.get(key);
+  if (!fn) {
+    if (COMPILED.size >= COMPILED_MAX) COMPILED.clear();
+    fn = new Function(...params, body);
+    COMPILED.set(key, fn);
+  }
+  return fn as F;
 }
