@@ -6,12 +6,20 @@
 // warmed-up PLC each; the median of the rounds' paired differences counts, so a busy machine
 // disturbs both alike.
 // Target: under 5 % of the scan.
+//
+// In that program the tank stands still (its actuators are outputs the program leaves off): the
+// figure is an idle machine's, which the loop no longer steps (docs/PLANTS.md, "at rest"). A second
+// pair measures a tank that moves every scan: the same program with the tank's reference solution
+// added (its points at addresses of their own), filling and draining for the whole run.
 import { compileProgram, createPlc } from '../src/engine/plc';
 import type { Plc } from '../src/engine/api';
 import { variable } from '../src/model/factory';
 import type { Project } from '../src/model/project';
 import { PlantLoop } from '../src/plant/loop';
 import { tank } from '../src/plant/tank';
+import { tankReference } from '../src/plant/tankExercise';
+import { plantVariables } from '../src/plant/exerciseKit';
+import type { PlantMap } from '../src/plant/loop';
 import { generateSimProgram } from './simProgram';
 import { HistoryRecorder } from '../src/sim/historyRecorder';
 import { buildLayout, findPou } from '../src/sim/layout';
@@ -41,6 +49,39 @@ function wiredProgram(): Project {
   };
 }
 
+/** Where the moving tank's points are wired (clear of the generated program's I0-I15, Q0-Q15). */
+const MOVING_MAP: PlantMap = {
+  Start: '%IX2.0',
+  Stop: '%IX2.1',
+  LowLevel: '%IX2.2',
+  HighLevel: '%IX2.3',
+  Level: '%IW1',
+  Pump: '%QX2.0',
+  InletValve: '%QX2.1',
+  DrainValve: '%QX2.2',
+  RunLamp: '%QX2.3',
+};
+const MOVING_INPUTS = ['%IX2.0', '%IX2.1', '%IX2.2', '%IX2.3', '%IW1'];
+
+/** The generated program and the tank's reference solution in one POU: the tank fills and drains every scan of the run. */
+function movingProgram(): Project {
+  const p = generateSimProgram(100);
+  const [main, ...rest] = p.pous;
+  const ref = tankReference().pous[0]!;
+  const own = ref.variables.filter((v) => !tank.points.some((q) => q.name === v.name));
+  return {
+    ...p,
+    pous: [
+      {
+        ...main!,
+        variables: [...main!.variables, ...plantVariables(tank, MOVING_MAP), ...own],
+        networks: [...main!.networks, ...ref.networks],
+      },
+      ...rest,
+    ],
+  };
+}
+
 function newPlc(project: Project, recorded: boolean): { plc: Plc; recorder?: HistoryRecorder } {
   const { program } = compileProgram(project);
   if (!program) throw new Error('bench program does not compile');
@@ -56,6 +97,7 @@ function newPlc(project: Project, recorded: boolean): { plc: Plc; recorder?: His
 }
 
 const INPUTS = ['%IX0.0', '%IX0.1', '%IX0.2', '%IX0.3', '%IW0'];
+let inputs = INPUTS;
 
 /**
  * ms per scan over a block. With the machine: it steps after every scan, after the recorder (as in
@@ -69,7 +111,7 @@ function block(
   tape: Value[],
   round: number,
 ): number {
-  const points = INPUTS.map((a) => plc.ioPoint!(a)!);
+  const points = inputs.map((a) => plc.ioPoint!(a)!);
   const t0 = performance.now();
   for (let i = 0; i < BLOCK; i++) {
     const k = plc.scanCount + 1;
@@ -94,14 +136,15 @@ function block(
  * alternate, after warm-up blocks; each round's difference is paired (a busy machine slows both
  * blocks of a round alike) and the medians count.
  */
-function compare(project: Project, recorded: boolean): [number, number] {
+function compare(project: Project, recorded: boolean, map: PlantMap = {}): [number, number] {
+  inputs = map === MOVING_MAP ? MOVING_INPUTS : INPUTS;
   const bare = newPlc(project, recorded);
   const wired = newPlc(project, recorded);
-  const loop = new PlantLoop(tank);
+  const loop = new PlantLoop(tank, map);
   loop.bind(wired.plc);
   loop.setOperator('Start', true);
   // The first scan's inputs: what the machine presents at the start.
-  const tape: Value[] = INPUTS.map((a) => wired.plc.ioPoint!(a)!.read());
+  const tape: Value[] = inputs.map((a) => wired.plc.ioPoint!(a)!.read());
   const without: number[] = [];
   const cost: number[] = [];
   for (let r = 0; r < WARMUP + ROUNDS; r++) {
@@ -162,6 +205,10 @@ export interface PlantFigures {
   /** The scan as the simulator's worker runs Step N (runner, history, frames), and the machine's share of it. */
   readonly sessionScanUs: number;
   readonly sessionPct: number;
+  /** The tank moving every scan (the program with its reference solution added), recorded scans: the scan without it, the machine's cost, its share. */
+  readonly movingScanUs: number;
+  readonly movingPlantUs: number;
+  readonly movingPct: number;
 }
 
 export function plantFigures(): PlantFigures {
@@ -169,7 +216,11 @@ export function plantFigures(): PlantFigures {
   const [scanUs, engineCostUs] = compare(project, false);
   const [recordedScanUs, plantUs] = compare(project, true);
   const session = sessionScanUs(project);
+  const [movingScanUs, movingPlantUs] = compare(movingProgram(), true, MOVING_MAP);
   return {
+    movingScanUs,
+    movingPlantUs,
+    movingPct: (Math.max(0, movingPlantUs) / movingScanUs) * 100,
     sessionScanUs: session,
     sessionPct: (Math.max(0, plantUs) / session) * 100,
     scanUs,
@@ -187,6 +238,7 @@ export const describePlantFigures = (f: PlantFigures): string =>
     `tank in closed loop with a 100-network program, as the worker scans (history recorded): ${f.recordedScanUs.toFixed(2)} µs without, ${f.recordedWithPlantUs.toFixed(2)} µs with the machine: ${f.plantUs.toFixed(2)} µs per scan, ${f.overheadPct.toFixed(1)} % (target < 5 %)`,
     `  engine alone: ${f.scanUs.toFixed(2)} µs without, ${f.withPlantUs.toFixed(2)} µs with the machine (${f.engineOverheadPct.toFixed(0)} %)`,
     `  the same program as the simulator's worker runs Step N (scan runner, history, frames): ${f.sessionScanUs.toFixed(2)} µs per scan; the machine is ${f.sessionPct.toFixed(1)} % of it`,
+    `  the tank there stands still (the program leaves its actuators off); moving every scan (the program with the tank's reference solution added): ${f.movingScanUs.toFixed(2)} µs without, ${f.movingPlantUs.toFixed(2)} µs per scan for the machine, ${f.movingPct.toFixed(1)} %`,
   ].join('\n');
 
 /** The machine's history: heap per recorded scan and the time to show a recorded scan's machine. */

@@ -5,7 +5,7 @@
 //    for the 1,000-network program and a 200-network one.
 // 4. the cost of a machine in closed loop (the tank, issue 26) per scan of a 100-network program (plantFigures.ts).
 //    and the machine's history: bytes per recorded scan, time to show a recorded scan's machine.
-// Last line: `bench:sim scans-per-s=<n> p95-frame-ms=<n> history-overhead-pct=<n> seek-ms=<n> search-ms=<n> plant-us=<n> plant-pct=<n> plant-history-bytes=<n>`
+// Last line: `bench:sim scans-per-s=<n> p95-frame-ms=<n> history-overhead-pct=<n> seek-ms=<n> search-ms=<n> plant-us=<n> plant-pct=<n> plant-history-bytes=<n> plant-moving-us=<n> plant-moving-pct=<n>`
 // (p95 of the 1,000-network run; scan history on a 100-network program in Node, see historyFigures.ts:
 // seek-ms the slowest of 300 seeks, search-ms the slowest search replaying all 100,000 scans).
 import { existsSync } from 'node:fs';
@@ -134,7 +134,7 @@ async function main() {
     const plantHistory = plantHistoryFigures();
     console.log(describePlantHistoryFigures(plantHistory));
     console.log(
-      `bench:sim scans-per-s=${Math.round(fast.scansPerS)} p95-frame-ms=${bigFrames.p95.toFixed(1)} history-overhead-pct=${history.overheadPct.toFixed(0)} seek-ms=${history.seekMaxMs.toFixed(2)} search-ms=${Math.max(history.changeSearchMs, history.conditionSearchMs, history.conditionBackMs).toFixed(0)} plant-us=${plant.plantUs.toFixed(2)} plant-pct=${plant.overheadPct.toFixed(1)} plant-history-bytes=${plantHistory.bytesPerScan.toFixed(1)}`,
+      `bench:sim scans-per-s=${Math.round(fast.scansPerS)} p95-frame-ms=${bigFrames.p95.toFixed(1)} history-overhead-pct=${history.overheadPct.toFixed(0)} seek-ms=${history.seekMaxMs.toFixed(2)} search-ms=${Math.max(history.changeSearchMs, history.conditionSearchMs, history.conditionBackMs).toFixed(0)} plant-us=${plant.plantUs.toFixed(2)} plant-pct=${plant.overheadPct.toFixed(1)} plant-history-bytes=${plantHistory.bytesPerScan.toFixed(1)} plant-moving-us=${plant.movingPlantUs.toFixed(2)} plant-moving-pct=${plant.movingPct.toFixed(1)}`,
     );
   } finally {
     await browser.close();

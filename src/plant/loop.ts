@@ -65,6 +65,8 @@ interface Wire {
   readonly int: number;
 }
 const NO_REFRESH = (): void => {};
+/** A step is compared with the state it started from (at rest?) every this many scans. */
+const REST_CHECK = 16;
 
 /** A consequence where it happened: the scan after which the machine was seen to suffer it. */
 export interface PlantEvent extends PlantConsequence {
@@ -151,10 +153,24 @@ export class PlantLoop {
    * the image at the wired points' indices, no loop over points and no object per point.
    */
   private sensing = false;
-  private driveCode: DriveCode = () => {};
+  private driveCode: DriveCode = () => false;
   private presentCode: PresentCode = () => {};
   private bound: PlcIo | undefined;
   private image: LoopImage = { inputs: [], outputs: [], write: () => {}, refresh: NO_REFRESH };
+  /** The image's `refresh`, undefined for the engine's own arrays (nothing to read again). */
+  private refresh: (() => void) | undefined;
+  /**
+   * The machine is at rest: its last step, given `restDtMs` of time and the drive and faults it
+   * has now, left every field of its state as it was (`sameState`). The model is deterministic
+   * (docs/PLANTS.md), so the next step with the same drive, faults and time would give that state
+   * again: the loop does not make it, nor check or sense it (same state, same sensors, nothing
+   * started). Any change of drive, operator control, fault, time or wiring ends the rest.
+   * Looked for every REST_CHECK scans (afterScan).
+   */
+  private rest = false;
+  private restDtMs = -1;
+  /** Every field of two states alike (Object.is; an array or record in a state by identity), compiled at bind. */
+  private sameState: (a: unknown, b: unknown) => boolean = () => false;
   /** The image's arrays (kept here: read every scan). */
   private inputImage: readonly Value[] = [];
   private outputImage: readonly Value[] = [];
@@ -239,6 +255,7 @@ export class PlantLoop {
 
   /** Back to the machine's initial state at PLC time 0 (a cold restart); faults and operator controls stay. */
   reset(): void {
+    this.rest = false;
     this.state = this.model.initial();
     this.spare = this.model.initial();
     this.timeMs = 0;
@@ -289,6 +306,9 @@ export class PlantLoop {
   private flatten(): void {
     const sensors = this.declared.filter((w) => !w.operator);
     this.sensing = sensors.length > 0;
+    this.rest = false;
+    this.refresh = this.image.refresh === NO_REFRESH ? undefined : this.image.refresh;
+    this.sameState = compileSameState(this.state);
     this.inputImage = this.image.inputs;
     this.outputImage = this.image.outputs;
     this.driveCode = compileDrive(this.outputs);
@@ -306,12 +326,27 @@ export class PlantLoop {
     if (this.scan === 0) this.timeMs = scanTimeMs;
     const dt = target > this.timeMs ? target - this.timeMs : 0;
     const before = this.state;
-    const drive = this.drive();
+    this.refresh?.();
+    const changed = this.driveCode(this.outputImage, this.bits, this.ints, this.driveRecord);
     // What the step is given, for the history to replay it (the model is deterministic); the
     // history copies `before` when it keeps it whole.
     this.history.push(scan, before, this.timeMs, this.record, target);
+    if (this.rest && !changed && dt === this.restDtMs) {
+      // At rest (see `rest`): the step would give this very state again, the same sensors (the
+      // faults are the same too) and no consequence. The inputs are written again where they
+      // differ, as every scan (a wire drives its input whatever was written to it meanwhile).
+      this.timeMs = target;
+      this.scan = scan;
+      this.presentCode(this.inputImage, this.sensed, this.bits, this.image);
+      return NONE;
+    }
     // Into the spare state object: `before` is the spare one for the next step.
-    const after = this.model.step(before, drive, dt, this.faults, this.spare);
+    const after = this.model.step(before, this.driveRecord, dt, this.faults, this.spare);
+    // Whether this step found the machine at rest, looked at every REST_CHECK scans only: the
+    // comparison costs a moving machine more than the step it would save (a function and two
+    // states' every field read); a machine that stops is at rest a few scans later.
+    this.rest = scan % REST_CHECK === 0 && this.sameState(before, after);
+    this.restDtMs = dt;
     this.state = after;
     this.spare = before;
     this.timeMs = target;
@@ -339,7 +374,7 @@ export class PlantLoop {
   /** The drive record for a step: the wired actuators read from the output image (the rest is kept up to date). */
   private drive(): Record<string, Value> {
     this.image.refresh();
-    this.driveCode(this.outputImage, this.bits, this.ints, this.driveRecord);
+    if (this.driveCode(this.outputImage, this.bits, this.ints, this.driveRecord)) this.rest = false;
     return this.driveRecord;
   }
 
@@ -383,6 +418,7 @@ export class PlantLoop {
       );
     this.operator[p.name] = value;
     this.driveRecord[p.name] = value;
+    this.rest = false;
     this.setBit(this.history.bitOf(p.name), value);
     this.operatorShown = { ...this.operator };
     this.present();
@@ -396,6 +432,7 @@ export class PlantLoop {
       );
     if (active) this.faults.add(f.id);
     else this.faults.delete(f.id);
+    this.rest = false;
     this.setBit(this.history.faultBitOf(f.id), active);
     this.faultList = [...this.faults].sort();
     this.present();
@@ -504,7 +541,8 @@ function recordImage(plc: PlcIo, inputPoints: readonly PlantPoint[]): BoundImage
   };
 }
 
-type DriveCode = (values: readonly Value[], bits: Uint32Array, ints: Float64Array, drive: Record<string, Value>) => void;
+/** Returns whether a wired actuator changed. */
+type DriveCode = (values: readonly Value[], bits: Uint32Array, ints: Float64Array, drive: Record<string, Value>) => boolean;
 type PresentCode = (inputs: readonly Value[], sensed: readonly Value[], bits: Uint32Array, image: LoopImage) => void;
 
 /**
@@ -520,11 +558,24 @@ function compileDrive(outs: readonly Wire[]): DriveCode {
     if (w.bool) {
       const word = w.bit >>> 5;
       const mask = (1 << (w.bit & 31)) >>> 0;
-      return `on = O[${w.index}] === true; if (on !== ((B[${word}] & ${mask}) !== 0)) { B[${word}] ^= ${mask}; D[${name}] = on; }`;
+      return `on = O[${w.index}] === true; if (on !== ((B[${word}] & ${mask}) !== 0)) { B[${word}] ^= ${mask}; D[${name}] = on; c = true; }`;
     }
-    return `n = Number(O[${w.index}]); if (!Object.is(n, N[${w.int}])) { N[${w.int}] = n; D[${name}] = n; }`;
+    return `n = Number(O[${w.index}]); if (!Object.is(n, N[${w.int}])) { N[${w.int}] = n; D[${name}] = n; c = true; }`;
   });
-  return new Function('O', 'B', 'N', 'D', `"use strict"; let on, n;\n${body.join('\n')}`) as DriveCode;
+  return compiled<DriveCode>(['O', 'B', 'N', 'D'], `"use strict"; let on, n, c = false;\n${body.join('\n')}\nreturn c;`);
+}
+
+/**
+ * Whether two states of a machine are alike in every field, as straight-line code for the
+ * machine's fields (those of `state`, made by `initial()`: every state has them): numbers and
+ * booleans by Object.is (NaN alike, 0 and -0 not), strings by value, arrays and records by
+ * identity (a state's are never changed once made: the same one is the same content; a step that
+ * makes a new one, even alike, is simply never at rest).
+ */
+function compileSameState(state: unknown): (a: unknown, b: unknown) => boolean {
+  const keys = Object.keys(state as object);
+  const body = keys.map((k) => `Object.is(a[${JSON.stringify(k)}], b[${JSON.stringify(k)}])`).join(' &&\n');
+  return compiled<(a: unknown, b: unknown) => boolean>(['a', 'b'], `"use strict"; return ${body || 'true'};`);
 }
 
 /**
@@ -539,5 +590,25 @@ function compilePresent(sensors: readonly Wire[], operators: readonly Wire[]): P
         `v = (B[${w.bit >>> 5}] & ${(1 << (w.bit & 31)) >>> 0}) !== 0; if (I[${w.index}] !== v) M.write(${w.index}, v);`,
     ),
   ];
-  return new Function('I', 'S', 'B', 'M', `"use strict"; let v;\n${body.join('\n')}`) as PresentCode;
+  return compiled<PresentCode>(['I', 'S', 'B', 'M'], `"use strict"; let v;\n${body.join('\n')}`);
+}
+
+/**
+ * The functions compiled so far, by their text: the same wiring bound again (a program loaded
+ * again, an online change that keeps the I/O, a second loop on the same program) gets the same
+ * function, so the loop's calls of it stay monomorphic (a new function per bind makes them
+ * polymorphic, then megamorphic: not inlined, slower every scan). A few per machine and wiring.
+ */
+const COMPILED = new Map<string, unknown>();
+/** Kept at most (a session that rewires again and again starts over past it). */
+const COMPILED_MAX = 256;
+function compiled<F>(params: readonly string[], body: string): F {
+  const key = `${params.join(',')}\n${body}`;
+  let fn = COMPILED.get(key);
+  if (!fn) {
+    if (COMPILED.size >= COMPILED_MAX) COMPILED.clear();
+    fn = new Function(...params, body);
+    COMPILED.set(key, fn);
+  }
+  return fn as F;
 }

@@ -418,12 +418,14 @@ export class SimSession {
       }),
     );
     poll();
+    const shownId = withYieldPoints(poll, () => fingerprintId(fingerprint));
+    poll();
     const shownLayout = this.view && findPou(project, this.view.pou) ? withView(project, layout, this.view) : layout;
     const next: LoadedProgram = {
       plc,
       layout: withYieldPoints(poll, () => withPinLines(shownLayout, plc, program as CompiledProgram, project)),
       fingerprint,
-      id: fingerprintId(fingerprint),
+      id: shownId,
       program,
       pou: findPou(project, plc.pou),
       project,

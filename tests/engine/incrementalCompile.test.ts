@@ -127,6 +127,19 @@ describe('a compile of an edited project behaves as a compile from scratch', () 
   });
 
   for (const [what, edit] of edits) {
+    test(`${what}, compiled as the simulator runs it (its two tasks' configuration): the same findings and scans as from scratch`, () => {
+      const asRun = { configuration: true } as const;
+      compileProgram(base, asRun);
+      const edited = edit(base);
+      const incremental = compileProgram(edited, asRun);
+      const scratch = compileProgram(fresh(edited), asRun);
+      expect(incremental.diagnostics).toEqual(scratch.diagnostics);
+      expect(incremental.program).toBeDefined();
+      const a = createPlc(incremental.program!, { cycleMs: 10 });
+      const b = createPlc(scratch.program!, { cycleMs: 10 });
+      expectSameScans(a, b, inputsOf(base), 120);
+    });
+
     test(`${what}: the same findings, and the same variables and power in every scan`, () => {
       // The running program's compile first (what the next compile can reuse), then the edit.
       compiled(base);

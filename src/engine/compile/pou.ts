@@ -48,6 +48,15 @@ export function lowerPou(
   return { ...lowered, ok };
 }
 
+/**
+ * The declarations of a POU checked on its own (what lowerPou reports before its networks): its
+ * variables, the externals it names, LD-E22. Its networks are checked where they are lowered.
+ */
+export function checkDeclarations(project: Project, pou: Pou, profile: Profile, out: Diagnostic[]): void {
+  const r = new Reporter(out, pou.name, -1);
+  checkPouKind(pou, buildSymbols(project, pou, r, new Reporter([], 'globals', -1), blockLibrary(project), profile), r);
+}
+
 /** An SFC POU checked on its own: its chart (steps, transitions, qualifiers, the code inside it). */
 function checkChart(project: Project, pou: Pou, profile: Profile, symbols: SymbolTable, out: Diagnostic[], place: Placement): LoweredPou {
   const start = out.length;

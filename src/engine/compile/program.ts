@@ -12,7 +12,7 @@ import type { EdgeOwner } from './context';
 import { reportDataTypes } from './aggregates';
 import { Flattener, type BodyInfo } from './flatten';
 import type { NetworkIR } from './ir';
-import { lowerPou } from './pou';
+import { checkDeclarations, lowerPou } from './pou';
 import { Reporter } from './report';
 import { SymbolTable, type Store, type VarSymbol } from './symbols';
 import { buildSymbols, declareGlobals, storageFor } from './pouSymbols';
@@ -125,16 +125,46 @@ export function assembleProgram(
     const rates = taskSchedule(project.tasks);
     const triggers = taskTriggers(root, rates, r);
     if (diagnostics.some((d) => d.severity === 'error') || !triggers) return { diagnostics };
-    for (const pou of roots) lowerPou(project, pou, profile, diagnostics, []);
-    if (!checkCallees(project, roots, profile, diagnostics)) return { diagnostics: [...globals, ...diagnostics] };
+    // Each program is checked on its own (its findings name its variables as the program sees
+    // them). Its declarations are checked here; its networks are lowered for its first instance
+    // below, and only when that lowering finds anything are they lowered again on the program's
+    // own table for the findings' words: a program without findings is not lowered twice (half of
+    // an online change's compile of a 650-network program). An SFC program is checked as before.
+    const rootFindings = roots.map((pou): Diagnostic[] => {
+      const out: Diagnostic[] = [];
+      if (pou.language === 'SFC') lowerPou(project, pou, profile, out, []);
+      else checkDeclarations(project, pou, profile, out);
+      return out;
+    });
+    const calleeFindings: Diagnostic[] = [];
+    if (!checkCallees(project, roots, profile, calleeFindings)) {
+      // Nothing is lowered: every program is checked on its own, for the Problems list.
+      for (const pou of roots) lowerPou(project, pou, profile, diagnostics, []);
+      return { diagnostics: [...globals, ...diagnostics, ...calleeFindings] };
+    }
     flat.setRoot(root);
     // Every program's range first (contiguous, in declaration order), then their bodies and callees.
     const reserved = bound.map((b) => flat.reserve(b.pou, { kind: 'program', instance: b.name }));
+    const instanceFindings = new Map<Pou, Diagnostic[]>();
     bound.forEach((b, i) => {
       const u = root.instantiate(b.pou, b.name, false);
       root.bind(b.name, u);
-      if (reserved[i]) flat.lower(reserved[i], u.scope);
+      let sink: Diagnostic[] | undefined;
+      if (b.pou.language !== 'SFC' && !instanceFindings.has(b.pou)) instanceFindings.set(b.pou, (sink = []));
+      if (reserved[i]) flat.lower(reserved[i], u.scope, sink);
     });
+    roots.forEach((pou, i) => {
+      const found = instanceFindings.get(pou);
+      if (!found?.length) return;
+      // Found something: the program's own check, for its findings in its own words.
+      const own: Diagnostic[] = [];
+      lowerPou(project, pou, profile, own, []);
+      // (Never expected: an error of the instance's lowering the own check does not see is still reported.)
+      const isError = (d: Diagnostic) => d.severity === 'error';
+      if (found.some(isError) && !own.some(isError)) own.push(...found.filter(isError));
+      rootFindings[i] = own;
+    });
+    diagnostics.push(...rootFindings.flat(), ...calleeFindings);
     schedule = { rates, programTask: Int32Array.from(bound, (b) => b.task), triggers };
   } else {
     const pou = opts.pou ? findPou(project, opts.pou) : project.pous.find((p) => p.kind === 'PROGRAM');

@@ -9,7 +9,8 @@ import type { Fault, PlcOptions, TaskSchedule, StepFrame, StepReport, TextTarget
 import type { FnContext } from '../library/fnTypes';
 import { slotKey } from '../compile/emitter';
 import { isStraight } from '../compile/programConstants';
-import { DISPATCH_PARAMS, planDispatch, type DispatchFn, type DispatchPlan } from '../compile/dispatch';
+import { planDispatch, type DispatchFn, type DispatchPlan } from '../compile/dispatch';
+import { dispatchFactory } from './codeCache';
 import type { SegmentFn } from '../compile/segments';
 import { generateSegment, planSegments } from '../compile/segments';
 import { DEFAULT_TIERING, Tiering, type TieringOptions } from './tiering';
@@ -187,7 +188,7 @@ export abstract class ScanCycle {
     this.cycleMs = program.schedule?.multiRate ? program.schedule.tickMs : opts.cycleMs;
     const m = this.mem;
     const link = (body: string, constants: unknown, shape: Int32Array) =>
-      (new Function(...DISPATCH_PARAMS, body) as (...args: unknown[]) => unknown)(
+      dispatchFactory(body)(
         m.b,
         m.n,
         m.g,
@@ -569,10 +570,10 @@ export abstract class ScanCycle {
     for (const v of this.forces.keys())
       for (const at of plan.writes.get(slotKey(v.store, v.slot)) ?? []) plan.P[at] = this.mem.sink[v.store];
     const m = this.mem;
-    this.stepGens = (new Function(...DISPATCH_PARAMS, plan.stepBody) as (...args: unknown[]) => typeof this.stepGens)(
+    this.stepGens = dispatchFactory(plan.stepBody)(
       m.b, m.n, m.g, m.fbs, p.functions, m.edges, this.power, plan.constants, this.ctx,
       this.ranIn, this.stats, plan.P, plan.V, plan.base, plan.shape, this.exec,
-    );
+    ) as typeof this.stepGens;
     return plan;
   }
 
