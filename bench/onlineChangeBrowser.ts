@@ -1,6 +1,8 @@
 // Only the Run and online-change figures of bench:editor (bench/onlineChangeFigures.ts), on the
 // bottle filler (650 networks) and the 1,000-network project, several runs each, in the built app
-// served by vite preview: for comparing two builds run interleaved on a shared machine.
+// served by vite preview: for comparing two builds run interleaved on a shared machine. Chromium runs
+// with its frame rate capped to the display, as a user's does (bench:editor's online-change-overruns);
+// UNCAPPED=1 takes the cap off as bench:editor's other figures do (its online-change-overruns-uncapped).
 //   npx vite build --outDir /tmp/x && RUNGSMITH_DIST=/tmp/x npx tsx bench/onlineChangeBrowser.ts [runs]
 // TRACE=1: Chromium's timeline of each run, and per thread (page, simulator worker, checker worker)
 // the CPU it used from the edit to the change applied (the marks oc-edit and oc-applied), with the
@@ -108,7 +110,7 @@ async function main() {
   const server = await preview({ build: { outDir: dist }, preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'warn' });
   const address = server.httpServer.address();
   if (!address || typeof address === 'string') throw new Error('no port');
-  const browser = await chromium.launch({ executablePath: CHROMIUM_PATH, args: [...CHROMIUM_ARGS, '--disable-gpu-vsync', '--disable-frame-rate-limit'], headless: true });
+  const browser = await chromium.launch({ executablePath: CHROMIUM_PATH, args: process.env.UNCAPPED ? [...CHROMIUM_ARGS, '--disable-gpu-vsync', '--disable-frame-rate-limit'] : CHROMIUM_ARGS, headless: true });
   try {
     const page = await browser.newPage({ viewport: { width: 1440, height: 900 } });
     const cdp = await page.context().newCDPSession(page);
