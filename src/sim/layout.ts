@@ -179,7 +179,13 @@ function networkPrint(network: object): string {
  * collapsed state, descriptions, test scenarios, the watch list, the online change mode) left out: equal fingerprints mean no online change is needed.
  */
 export function programFingerprint(project: Project): string {
-  const pous = project.pous.map((p) => `${behaviourPrint({ ...p, networks: undefined })}[${p.networks.map(networkPrint).join(',')}]`);
+  // A yield point every 64 networks: an online change's fingerprint (~0.5 MB at 1,000 networks)
+  // is made in pieces, between which the simulator runs the scans that fell due (yieldPoint.ts).
+  const print = (n: object, i: number) => {
+    if ((i & 63) === 63) yieldPoint();
+    return networkPrint(n);
+  };
+  const pous = project.pous.map((p) => `${behaviourPrint({ ...p, networks: undefined })}[${p.networks.map(print).join(',')}]`);
   return `${behaviourPrint({ ...project, pous: undefined })}{${pous.join(',')}}`;
 }
 

@@ -395,11 +395,13 @@ export class SimSession {
 
   /** Compiles the document. Returns false (and reports why) when it has errors. */
   private load(project: Project, starting = false, confirm = false): boolean {
-    const fingerprint = programFingerprint(project);
-    if (this.plc && fingerprint === (this.pending?.program.fingerprint ?? this.fingerprint)) return true;
     // While Run paces scans, the scans that fall due during the compile run at its yield points
     // (between networks): compiling an online change never delays a scan of the running program.
+    // So does making the document's fingerprint (a yield point every 64 networks).
     const poll = () => this.runner.poll();
+    const fingerprint = withYieldPoints(poll, () => programFingerprint(project));
+    poll();
+    if (this.plc && fingerprint === (this.pending?.program.fingerprint ?? this.fingerprint)) return true;
     const { program, diagnostics } = withYieldPoints(poll, () => this.deps.engine.compile(project));
     const online = this.plc !== undefined && (this.mode !== 'stopped' || this.plc.scanCount > 0);
     if (!program || diagnostics.some((d) => d.severity === 'error')) {

@@ -7,6 +7,7 @@ import type { Pou, Project } from '../../model/project';
 import type { Diagnostic } from '../api';
 import { Reporter } from './report';
 import { calledNames } from '../st/index';
+import { yieldPoint } from '../yieldPoint';
 
 interface Use {
   readonly callee: Pou;
@@ -37,6 +38,8 @@ export function usesOf(project: Project, pou: Pou): Use[] {
       const callee = lib.userPou(el.blockType);
       if (callee) out.push({ callee, network: i, box: el });
     }
+    // Between pieces of 64 networks, the simulator runs the scans that fell due (yieldPoint.ts).
+    if ((i & 63) === 63) yieldPoint();
   });
   return out;
 }

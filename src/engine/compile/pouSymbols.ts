@@ -6,6 +6,7 @@ import { STANDARD_LIBRARY, type BlockLibrary } from '../../model/library';
 import { globalsWithOutside, outsideGlobals } from '../../model/outsideGlobals';
 import type { Reporter } from './report';
 import { declaredElementaryType, Storage, SymbolTable } from './symbols';
+import { yieldPoint } from '../yieldPoint';
 
 /**
  * Builds the symbol table of a POU: its variables first, then the project's globals. A VAR_EXTERNAL
@@ -21,10 +22,20 @@ export function buildSymbols(
 ): SymbolTable {
   const table = new SymbolTable(storageFor(project, profile), '', library);
   table.instantiating = new Set([pou.name.toUpperCase()]);
-  for (const v of pou.variables) if (v.varClass !== 'external') table.declare(v, false, r, v.varClass === 'temp');
+  // A yield point every 64 declarations: a program of a thousand variables and more is declared in
+  // pieces, between which the simulator runs the scans that fell due (yieldPoint.ts).
+  let n = 0;
+  for (const v of pou.variables)
+    if (v.varClass !== 'external') {
+      table.declare(v, false, r, v.varClass === 'temp');
+      if ((++n & 63) === 0) yieldPoint();
+    }
   if (pou.kind === 'FUNCTION' && !pou.variables.some((v) => v.name.toUpperCase() === pou.name.toUpperCase()))
     table.declare({ name: pou.name, type: pou.returnType ?? 'BOOL', varClass: 'output', retain: false, comment: '' }, false, r);
-  for (const v of globalsWithOutside(project)) table.declare(v, true, globalsReporter);
+  for (const v of globalsWithOutside(project)) {
+    table.declare(v, true, globalsReporter);
+    if ((++n & 63) === 0) yieldPoint();
+  }
   for (const v of pou.variables) if (v.varClass === 'external') checkExternal(table, project, pou, v, r);
   return table;
 }
@@ -38,7 +49,11 @@ export function storageFor(project: Project, profile: Profile): Storage {
 
 /** Declares the project's globals into a program's storage (once per program). */
 export function declareGlobals(table: SymbolTable, project: Project, r: Reporter): void {
-  for (const v of globalsWithOutside(project)) table.declare(v, true, r);
+  let n = 0;
+  for (const v of globalsWithOutside(project)) {
+    table.declare(v, true, r);
+    if ((++n & 63) === 0) yieldPoint();
+  }
 }
 
 function checkExternal(table: SymbolTable, project: Project, pou: Pou, decl: Variable, r: Reporter): void {
