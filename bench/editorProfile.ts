@@ -2,6 +2,12 @@
 // Chromium's sampling profiler (CDP Profiler) around the first render and around a series of edits,
 // and prints the functions with the most self time. For finding causes; the figures are bench:editor's.
 // `npx vite build --outDir /tmp/x --minify false && RUNGSMITH_DIST=/tmp/x npx tsx bench/editorProfile.ts [load|edit|select|undo|clicks|interact|afterundo|benchselect|all] [bottle]`
+// Switches: TRACE=1 (Chromium trace instead of the JS profiler; TIMELINE=1 prints each click's events
+// per thread), TRACE_CATS=a,b (more trace categories, e.g. v8,disabled-by-default-v8.compile),
+// TRACE_OUT=file (the events as JSON), JS_FLAGS="--trace-opt --trace-deopt" (V8 flags; with
+// DEBUG=pw:browser its log shows), STYLE=css (added to the page). benchselect: RUNS, REPEAT; TAIL_MS=n
+// traces n ms of the page after the scroll instead of the click (what the scroll leaves running),
+// TAIL_DELAY=n waits n ms after the scroll first.
 import { existsSync, writeFileSync } from 'node:fs';
 import { chromium, type CDPSession } from 'playwright-core';
 import { preview } from 'vite';
@@ -110,7 +116,7 @@ async function recordTrace<T>(cdp: CDPSession, fn: () => Promise<T>): Promise<{ 
   };
   cdp.on('Tracing.dataCollected', collect);
   const done = new Promise<void>((r) => cdp.once('Tracing.tracingComplete', () => r()));
-  await cdp.send('Tracing.start', { traceConfig: { includedCategories: ['devtools.timeline', 'disabled-by-default-devtools.timeline', 'toplevel', 'viz', 'cc'] } } as never);
+  await cdp.send('Tracing.start', { traceConfig: { includedCategories: ['devtools.timeline', 'disabled-by-default-devtools.timeline', 'toplevel', 'viz', 'cc', ...(process.env.TRACE_CATS ? process.env.TRACE_CATS.split(',') : [])] } } as never);
   const r = await fn();
   await cdp.send('Tracing.end');
   await done;
@@ -252,7 +258,7 @@ async function main() {
   const server = await preview({ build: { outDir: dist }, preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'warn' });
   const address = server.httpServer.address();
   if (!address || typeof address === 'string') throw new Error('no port');
-  const browser = await chromium.launch({ executablePath: CHROMIUM_PATH, args: [...CHROMIUM_ARGS, '--disable-gpu-vsync', '--disable-frame-rate-limit'], headless: true });
+  const browser = await chromium.launch({ executablePath: CHROMIUM_PATH, args: [...CHROMIUM_ARGS, '--disable-gpu-vsync', '--disable-frame-rate-limit', ...(process.env.JS_FLAGS ? [`--js-flags=${process.env.JS_FLAGS}`] : [])], headless: true });
   try {
     const context = await browser.newContext({ viewport: { width: 1440, height: 900 }, permissions: ['clipboard-read', 'clipboard-write'] });
     const page = await context.newPage();
@@ -434,7 +440,13 @@ async function main() {
       await interactionFigures(page, Number(process.env.REPEAT ?? 7), async (click) => {
         let ms: number;
         if (process.env.TRACE) {
-          const { r, events } = await recordTrace(cdp, click);
+          // TAIL_MS: what the page does in that long after the scroll, with no click (traced), then the click (not).
+          const tail = Number(process.env.TAIL_MS ?? 0);
+          if (process.env.TAIL_DELAY) await page.evaluate((ms) => new Promise((res) => setTimeout(res, ms)), Number(process.env.TAIL_DELAY));
+          const { r, events } = tail
+            ? await recordTrace(cdp, () => page.evaluate((ms) => new Promise<number>((res) => setTimeout(() => res(ms), ms)), tail))
+            : await recordTrace(cdp, click);
+          if (tail) await click();
           all.push(...events);
           ms = r;
           if (process.env.TIMELINE) console.log(`click ${out.length}: ${Math.round(r * 10) / 10} ms\n${timeline(events)}`);

@@ -22,10 +22,22 @@ async function main() {
     await page.goto(`http://127.0.0.1:${address.port}/`);
     await page.getByTestId('ladder-canvas').waitFor();
     await page.evaluate(() => new Promise((r) => setTimeout(r, 300)));
+    if (process.env.PRE_PRINT) {
+      // What bench:editor does first: the 1,000-network project, its print preview opened and closed.
+      await page.evaluate((p) => window.rungsmith!.documentStore!.getState().loadProject(p), sealInProject(1000));
+      await page.evaluate(() => new Promise((r) => setTimeout(r, 1500)));
+      await page.keyboard.press('Control+p');
+      await page.getByTestId('print-dialog').waitFor();
+      await page.getByTestId('print-preview').click();
+      await page.locator('[data-testid="print-view"][data-ready="true"]').waitFor({ timeout: 60000 });
+      await page.getByTestId('print-close').click();
+      await page.evaluate(() => new Promise((r) => setTimeout(r, 500)));
+    }
     await page.evaluate((p) => {
       window.rungsmith!.documentStore!.getState().loadProject(p);
     }, project);
     await page.evaluate(() => new Promise((r) => setTimeout(r, 1500)));
+    if (process.env.PROBE_CSS) await page.addStyleTag({ content: process.env.PROBE_CSS });
     await page.evaluate('window.__name ??= (f) => f');
     const rows: string[] = [];
     const phases: number[][] = [];
