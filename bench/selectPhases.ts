@@ -48,7 +48,7 @@ async function main() {
           w.__ph = {};
           const down = (e: Event) => {
             window.removeEventListener('pointerdown', down, true);
-            w.__ph = { ts: e.timeStamp, dispatch: performance.now() };
+            w.__ph = { ts: e.timeStamp, dispatch: performance.now(), anim: document.getAnimations().filter((a) => a.playState === 'running').length };
             const after = () => {
               window.removeEventListener('pointerdown', after);
               w.__ph.handled = performance.now();
@@ -63,12 +63,12 @@ async function main() {
         });
         const ms = await click();
         const ph = await page.evaluate(() => (window as unknown as { __ph: Record<string, number> }).__ph);
-        const p = [ph.dispatch! - ph.ts!, ph.handled! - ph.dispatch!, ph.raf! - ph.handled!, ph.timer! - ph.raf!, ms];
+        const p = [ph.dispatch! - ph.ts!, ph.handled! - ph.dispatch!, ph.raf! - ph.handled!, ph.timer! - ph.raf!, ms, ph.anim!];
         phases.push(p);
         rows.push(p.map((x) => x.toFixed(1).padStart(6)).join(''));
         return ms;
       });
-    console.log(' delay handlr  toRAF  frame  total');
+    console.log(' delay handlr  toRAF  frame  total  animations running at the click');
     console.log(rows.join('\n'));
     const med = (i: number) => [...phases.map((p) => p[i]!)].sort((a, b) => a - b)[Math.floor((phases.length - 1) / 2)]!;
     console.log('median ' + [0, 1, 2, 3, 4].map((i) => med(i).toFixed(1)).join(' '));

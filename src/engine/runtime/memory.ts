@@ -3,7 +3,7 @@
 import type { ElementaryType, Value } from '../../model/iecTypes';
 import type { FbInstance } from '../library/fbs';
 import { createFb } from '../library/fbs';
-import { defaultValue, isSingleByte, isStringType, isValueOfType, normalize } from '../values/types';
+import { defaultValue, isSingleByte, isStringType, isValueOfType, normalize, numberRange } from '../values/types';
 import type { CompiledProgram } from '../compile/program';
 import type { Access, VarSymbol } from '../compile/symbols';
 
@@ -123,6 +123,12 @@ export class Memory {
  * STRING_MAX_LEN characters. Throws on a wrong kind.
  */
 export function coerce(type: ElementaryType, value: Value, what: string): Value {
+  // The usual case first (an input or a sensor written every scan): a whole number in the range of
+  // an 8/16/32-bit type is stored as it is (what the steps below give it, -0 as 0).
+  if (typeof value === 'number') {
+    const range = numberRange(type);
+    if (range !== undefined && Number.isInteger(value) && value >= range.min && value <= range.max) return value === 0 ? 0 : value;
+  }
   if (isStringType(type)) {
     if (typeof value !== 'string') throw new Error(`${what} is ${type}; ${String(value)} is not text (give a string)`);
     if (type === 'STRING' && !isSingleByte(value))

@@ -41,6 +41,25 @@ describe('normalize wraps integers at their width (two\'s complement)', () => {
   });
 });
 
+describe('isValueOfType at the edges of every integer and bit-string type', () => {
+  const sized: ElementaryType[] = ['SINT', 'INT', 'DINT', 'LINT', 'USINT', 'UINT', 'UDINT', 'ULINT', 'BYTE', 'WORD', 'DWORD', 'LWORD'];
+  it.each(sized)('%s: its smallest and largest value are values of it, one beyond is not, nor a fraction or the other kind', (t) => {
+    const { min, max } = typeRange(t as Parameters<typeof typeRange>[0]);
+    const big = t === 'LINT' || t === 'ULINT' || t === 'LWORD';
+    const as = (b: bigint): Value => (big ? b : Number(b));
+    expect(isValueOfType(t, as(min))).toBe(true);
+    expect(isValueOfType(t, as(max))).toBe(true);
+    expect(isValueOfType(t, as(min - 1n))).toBe(false);
+    expect(isValueOfType(t, as(max + 1n))).toBe(false);
+    expect(isValueOfType(t, big ? 0 : 0n)).toBe(false);
+    if (!big) {
+      expect(isValueOfType(t, 1.5)).toBe(false);
+      expect(isValueOfType(t, Number.NaN)).toBe(false);
+      expect(isValueOfType(t, Number.POSITIVE_INFINITY)).toBe(false);
+    }
+  });
+});
+
 describe('typeRange and defaultValue', () => {
   it('gives the IEC ranges', () => {
     expect(typeRange('SINT')).toEqual({ min: -128n, max: 127n });
