@@ -155,8 +155,12 @@ export function useCanvasPointer(
     setBand(undefined);
   }, [edgeStop, ctx.ui]);
 
+  /** On the canvas itself (the layer the stage is drawn on), not on a header's field or button over it. */
+  const onCanvas = (e: { target: EventTarget; currentTarget: EventTarget }) =>
+    e.target === e.currentTarget || e.target instanceof HTMLCanvasElement;
+
   const onPointerDown = (e: ReactPointerEvent<HTMLDivElement>) => {
-    if (!(e.target instanceof HTMLCanvasElement)) return;
+    if (!onCanvas(e)) return;
     const el = scrollRef.current!;
     el.focus({ preventScroll: true });
     if (e.button === 1 || (e.button === 0 && spaceHeld.current)) {
@@ -317,7 +321,7 @@ export function useCanvasPointer(
   const onDoubleClick = (e: MouseEvent<HTMLDivElement>) => {
     // The press captured the pointer on this layer, so Chromium sends the click and the
     // double-click to the layer itself, not to the canvas under it; a header field never counts.
-    if (!(e.target instanceof HTMLCanvasElement) && e.target !== e.currentTarget) return;
+    if (!onCanvas(e)) return;
     const { layout, networks } = view.current;
     const hit = hitTest(layout, networks, contentPoint(e));
     if (hit.area !== 'grid') return;
@@ -340,7 +344,7 @@ export function useCanvasPointer(
       // Focus is managed in onPointerDown; the browser's own focus-on-mousedown would take it away
       // from a name editor that just opened.
       onMouseDown: (e: MouseEvent<HTMLDivElement>) => {
-        if (e.target instanceof HTMLCanvasElement) e.preventDefault();
+        if (onCanvas(e)) e.preventDefault();
       },
     },
   };
