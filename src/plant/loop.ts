@@ -193,6 +193,15 @@ export class PlantLoop {
       const problem = addressProblem(p, p.address);
       if (problem) throw new Error(`${model.id}: ${problem}`);
     }
+    // Two points on one wire: the machine would write two sensors into one input (or read one
+    // output as two actuators), and the program's variable at the other's address is not wired.
+    const at = new Map<string, PlantPoint>();
+    for (const p of this.points) {
+      const key = addressKey(p.address);
+      const other = at.get(key);
+      if (other) throw new Error(`${model.id}: ${other.name} and ${p.name} are both at ${addressKey(p.address)}; each point of the machine needs an address of its own`);
+      at.set(key, p);
+    }
     this.actuators = this.points.filter((p) => p.kind === 'actuator');
     this.inputs = this.points.filter((p) => p.kind !== 'actuator');
     for (const p of this.points) if (p.kind === 'operator') this.operator[p.name] = false;

@@ -36,7 +36,17 @@ export class SessionPlant {
       this.loop = undefined;
       return;
     }
-    const loop = new PlantLoop(requirePlant(config.id), config.map ?? {});
+    let loop: PlantLoop;
+    try {
+      loop = new PlantLoop(requirePlant(config.id), config.map ?? {});
+    } catch (e) {
+      // A machine or wiring refused (a map with two points on one address, a bad address): the
+      // machine attached before is taken away all the same, its inputs falling to FALSE / 0,
+      // rather than left driving the program as if it had been chosen.
+      this.loop?.release();
+      this.loop = undefined;
+      throw e;
+    }
     // The same machine with the same wiring keeps its state, faults and operator controls.
     if (
       this.loop &&

@@ -3,9 +3,11 @@
 // machine's I/O" never moves a variable of another type onto a point's address.
 import { describe, expect, test } from 'vitest';
 import { variable } from '../../src/model/factory';
-import { mappedPoints } from '../../src/plant/loop';
+import { tankReference } from '../../src/plant/exercises';
+import { mappedPoints, PlantLoop } from '../../src/plant/loop';
 import { tank } from '../../src/plant/tank';
 import { declarePlan, rewireAddress } from '../../src/plant/wiring';
+import { SimHarness } from '../sim/harness';
 
 const points = mappedPoints(tank);
 const point = (name: string) => points.find((p) => p.name === name)!;
@@ -90,5 +92,34 @@ describe('declarePlan', () => {
       "Level (global, REAL; the machine's Level is INT at %IW0)",
       "RunLamp (global, at %QX3.0; the machine's RunLamp is at %QX0.3)",
     ]);
+  });
+});
+
+describe('a map with two points on one address', () => {
+  test('the loop refuses it, naming both points', () => {
+    expect(() => new PlantLoop(tank, { Start: '%IX00.2' })).toThrow(
+      'tank: Start and LowLevel are both at %IX0.2; each point of the machine needs an address of its own',
+    );
+  });
+
+  test('in the session it takes the machine attached before away (its inputs fall to FALSE / 0) and says why', () => {
+    const h = new SimHarness().send(
+      { type: 'setCycle', cycleMs: 100 },
+      { type: 'setPlant', plant: { id: 'tank' } },
+      { type: 'load', project: tankReference() },
+    );
+    h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'step', scans: 2 }).settle();
+    h.send({ type: 'plantOperator', name: 'Start', value: false }, { type: 'step', scans: 300 });
+    while (h.frame.scan < 302) h.settle();
+    expect(h.value('LowLevel')).toBe(true);
+    expect(h.value('Level')).toBeGreaterThan(200);
+    h.send({ type: 'setPlant', plant: { id: 'tank', map: { Start: '%IX0.2' } } }, { type: 'step', scans: 1 });
+    while (h.frame.scan < 303) h.settle();
+    expect(h.of('error').map((m) => m.message)).toContain(
+      'tank: Start and LowLevel are both at %IX0.2; each point of the machine needs an address of its own',
+    );
+    expect(h.frame.plant).toBeUndefined();
+    expect(h.value('LowLevel')).toBe(false);
+    expect(h.value('Level')).toBe(0);
   });
 });
