@@ -85,3 +85,20 @@ test("Declare the machine's I/O leaves a variable of another type where it is an
   expect(await mainVariable('Level')).toBe('BOOL@%IX5.0');
   expect(errors).toEqual([]);
 });
+
+test("another machine chosen: the I/O map's refusal and Declare's report of the machine before are gone", async () => {
+  const start = page.getByTestId('plant-address-Start');
+  await start.fill('%QX0.0');
+  await start.press('Enter');
+  await expect
+    .poll(() => page.getByTestId('plant-io-problem').textContent())
+    .toBe('Start: a sensor or operator control is a %I input, not %QX0.0');
+  await page.getByTestId('plant-declare').click();
+  await expect.poll(() => page.getByTestId('plant-declared').count()).toBe(1);
+  await page.getByTestId('plant-choose').selectOption('lift');
+  await expect.poll(docPlant).toEqual({ id: 'lift' });
+  await expect.poll(() => page.getByTestId('plant-address-Call1').inputValue()).toBe('%IX0.0');
+  expect(await page.getByTestId('plant-io-problem').count()).toBe(0);
+  expect(await page.getByTestId('plant-declared').count()).toBe(0);
+  expect(errors).toEqual([]);
+});

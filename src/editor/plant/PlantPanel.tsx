@@ -90,7 +90,9 @@ export function PlantPanel() {
           The project names the machine "{config.id}", which this version does not have.
         </p>
       )}
-      {model && <Machine model={model} map={config?.map ?? {}} />}
+      {/* Keyed by the machine: what the panel said of the machine before (a refused address, a
+          Declare report, a fault box awaiting the worker) does not stay under another one. */}
+      {model && <Machine key={model.id} model={model} map={config?.map ?? {}} />}
     </div>
   );
 }
