@@ -274,6 +274,23 @@ export class PlantLoop {
   }
 
   /**
+   * The machine of `before`, the same model wired otherwise (a point rewired while the program
+   * runs), goes on in this loop, not yet bound: its state, PLC time and scan, faults, operator
+   * controls and consequences. Moving a terminal does not refill the tank or lower the door. The
+   * scans recorded before are `before`'s history, not this one's.
+   */
+  continueFrom(before: PlantLoop): void {
+    if (before.model !== this.model) return;
+    // Field by field into this loop's own object (one shape); a state's arrays are never changed, so sharing them is safe.
+    Object.assign(this.state as object, before.state as object);
+    this.timeMs = before.timeMs;
+    this.scan = before.scan;
+    this.events.push(...before.events);
+    for (const f of before.faults) this.setFault(f, true);
+    for (const [name, held] of Object.entries(before.operator)) if (held) this.setOperator(name, true);
+  }
+
+  /**
    * The machine is taken away (None chosen, or another machine or wiring): the inputs it drove
    * fall to FALSE / 0, as wires that are cut, instead of keeping the machine's last values (a
    * limit switch left ON with nothing behind it). A forced input keeps its force. No-op unbound.

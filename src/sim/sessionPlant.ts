@@ -47,7 +47,7 @@ export class SessionPlant {
       this.loop = undefined;
       throw e;
     }
-    // The same machine with the same wiring keeps its state, faults and operator controls.
+    // The same machine with the same wiring keeps its loop (state, faults, operator controls, history).
     if (
       this.loop &&
       this.loop.model.id === loop.model.id &&
@@ -55,6 +55,8 @@ export class SessionPlant {
     )
       return;
     this.loop?.release();
+    // The same machine rewired: it goes on as it was (a terminal moved does not refill the tank).
+    if (this.loop?.model.id === loop.model.id) loop.continueFrom(this.loop);
     this.loop = loop;
     if (plc) loop.bind(plc);
   }

@@ -8,6 +8,8 @@ import { mappedPoints, PlantLoop } from '../../src/plant/loop';
 import { tank } from '../../src/plant/tank';
 import { declarePlan, rewireAddress } from '../../src/plant/wiring';
 import { SimHarness } from '../sim/harness';
+import type { PlantFrame } from '../../src/sim/sessionPlant';
+import type { TankState } from '../../src/plant/tank';
 
 const points = mappedPoints(tank);
 const point = (name: string) => points.find((p) => p.name === name)!;
@@ -121,5 +123,31 @@ describe('a map with two points on one address', () => {
     expect(h.frame.plant).toBeUndefined();
     expect(h.value('LowLevel')).toBe(false);
     expect(h.value('Level')).toBe(0);
+  });
+});
+
+describe('a point rewired while the program runs', () => {
+  test('the machine goes on as it was (level, PLC time, faults, consequences); the input left falls to FALSE', () => {
+    const h = new SimHarness().send(
+      { type: 'setCycle', cycleMs: 100 },
+      { type: 'setPlant', plant: { id: 'tank' } },
+      { type: 'load', project: tankReference() },
+    );
+    h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'step', scans: 2 }).settle();
+    h.send({ type: 'plantOperator', name: 'Start', value: false }, { type: 'plantFault', id: 'drain_stuck', active: true });
+    h.send({ type: 'step', scans: 300 });
+    while (h.frame.scan < 302) h.settle();
+    const before = (h.frame.plant as PlantFrame).now;
+    expect((before.state as TankState).level).toBeGreaterThan(200);
+    // LowLevel moved from %IX0.2 to %IX1.5: the program's LowLevel (%IX0.2) is no longer wired.
+    h.send({ type: 'setPlant', plant: { id: 'tank', map: { LowLevel: '%IX1.5' } } }, { type: 'step', scans: 1 });
+    while (h.frame.scan < 303) h.settle();
+    const after = (h.frame.plant as PlantFrame).now;
+    expect(after.scan).toBe(303);
+    expect(after.timeMs).toBe(before.timeMs + 100);
+    expect(Math.abs((after.state as TankState).level - (before.state as TankState).level)).toBeLessThan(5);
+    expect(after.faults).toEqual(['drain_stuck']);
+    expect(h.value('LowLevel')).toBe(false);
+    expect(h.value('Level')).toBeGreaterThan(200);
   });
 });
