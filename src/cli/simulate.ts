@@ -172,7 +172,19 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
   const stimTypes = new Map<string, ElementaryType>();
   for (const c of stim?.columns ?? []) {
     try {
-      if (faultOf(c) !== undefined || onPlant(c)) {
+      const fault = faultOf(c);
+      if (fault !== undefined || onPlant(c)) {
+        // Checked before the first scan: only the machine's operator controls and faults can be set.
+        const model = loop!.model;
+        if (fault !== undefined && !model.faults.some((f) => f.id === fault.toLowerCase()))
+          throw new Error(`${model.id} has no fault "${fault}"; it has ${model.faults.map((f) => f.id).join(', ')}`);
+        const operators = model.points.filter((p) => p.kind === 'operator');
+        if (fault === undefined && !plantValueType(model, c))
+          throw new Error(`${model.id} has no operator control "${c.slice(model.id.length + 1)}"; it has ${operators.map((p) => p.name).join(', ')}`);
+        if (fault === undefined && !operators.some((p) => `${model.id}.${p.name}`.toLowerCase() === c.toLowerCase()))
+          throw new Error(
+            `only the machine's operator controls can be set (${operators.map((p) => `${model.id}.${p.name}`).join(', ')}); watch its state with --watch ${c}`,
+          );
         stimTypes.set(c, 'BOOL');
         continue;
       }

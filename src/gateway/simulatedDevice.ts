@@ -30,6 +30,8 @@ const SIM_POINTS: readonly DevicePoint[] = expandPoints(
 
 const ILLEGAL_ADDRESS = { modbusErrorCode: 0x02, msg: 'Illegal data address' };
 const ILLEGAL_FUNCTION = { modbusErrorCode: 0x01, msg: 'Outputs belong to the controller' };
+/** `--plant`: the machine's sensors drive their inputs, as wires do; a Modbus write to one is refused. */
+const MACHINE_SENSOR = { modbusErrorCode: 0x01, msg: "Sensors belong to the machine" };
 
 export class SimulatedDevice implements Device {
   readonly info = { id: SIMULATED_DEVICE_ID, kind: 'simulated' as const, target: 'simulated' };
@@ -181,6 +183,10 @@ export class SimulatedDevice implements Device {
   private driveInput(table: 'discreteInputs' | 'inputRegisters', register: number, value: WireValue): void {
     const p = this.byTable.get(`${table}:${register}`);
     if (!p) throw ILLEGAL_ADDRESS;
+    // The machine writes its sensors' inputs only when they change: a value written over one would
+    // stay, a limit switch ON with nothing behind it. Its operator controls may be pressed.
+    if (this.plant?.points.some((q) => q.kind === 'sensor' && addressKey(q.address) === addressKey(p.address)))
+      throw MACHINE_SENSOR;
     this.setInputs(new Map([[p.address, value]]));
   }
 

@@ -193,6 +193,15 @@ export class PlantLoop {
       const problem = addressProblem(p, p.address);
       if (problem) throw new Error(`${model.id}: ${problem}`);
     }
+    // Two points on one wire: the machine would write two sensors into one input (or read one
+    // output as two actuators), and the program's variable at the other's address is not wired.
+    const at = new Map<string, PlantPoint>();
+    for (const p of this.points) {
+      const key = addressKey(p.address);
+      const other = at.get(key);
+      if (other) throw new Error(`${model.id}: ${other.name} and ${p.name} are both at ${addressKey(p.address)}; each point of the machine needs an address of its own`);
+      at.set(key, p);
+    }
     this.actuators = this.points.filter((p) => p.kind === 'actuator');
     this.inputs = this.points.filter((p) => p.kind !== 'actuator');
     for (const p of this.points) if (p.kind === 'operator') this.operator[p.name] = false;
@@ -262,6 +271,23 @@ export class PlantLoop {
     this.scan = 0;
     this.events.length = 0;
     this.history.clear();
+  }
+
+  /**
+   * The machine of `before`, the same model wired otherwise (a point rewired while the program
+   * runs), goes on in this loop, not yet bound: its state, PLC time and scan, faults, operator
+   * controls and consequences. Moving a terminal does not refill the tank or lower the door. The
+   * scans recorded before are `before`'s history, not this one's.
+   */
+  continueFrom(before: PlantLoop): void {
+    if (before.model !== this.model) return;
+    // Field by field into this loop's own object (one shape); a state's arrays are never changed, so sharing them is safe.
+    Object.assign(this.state as object, before.state as object);
+    this.timeMs = before.timeMs;
+    this.scan = before.scan;
+    this.events.push(...before.events);
+    for (const f of before.faults) this.setFault(f, true);
+    for (const [name, held] of Object.entries(before.operator)) if (held) this.setOperator(name, true);
   }
 
   /**

@@ -36,8 +36,18 @@ export class SessionPlant {
       this.loop = undefined;
       return;
     }
-    const loop = new PlantLoop(requirePlant(config.id), config.map ?? {});
-    // The same machine with the same wiring keeps its state, faults and operator controls.
+    let loop: PlantLoop;
+    try {
+      loop = new PlantLoop(requirePlant(config.id), config.map ?? {});
+    } catch (e) {
+      // A machine or wiring refused (a map with two points on one address, a bad address): the
+      // machine attached before is taken away all the same, its inputs falling to FALSE / 0,
+      // rather than left driving the program as if it had been chosen.
+      this.loop?.release();
+      this.loop = undefined;
+      throw e;
+    }
+    // The same machine with the same wiring keeps its loop (state, faults, operator controls, history).
     if (
       this.loop &&
       this.loop.model.id === loop.model.id &&
@@ -45,6 +55,8 @@ export class SessionPlant {
     )
       return;
     this.loop?.release();
+    // The same machine rewired: it goes on as it was (a terminal moved does not refill the tank).
+    if (this.loop?.model.id === loop.model.id) loop.continueFrom(this.loop);
     this.loop = loop;
     if (plc) loop.bind(plc);
   }

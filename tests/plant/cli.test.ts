@@ -135,6 +135,27 @@ describe('rungsmith and the machines', () => {
     ).toContain('--watch: tank has no quantity or point "volume"');
   });
 
+  test('simulate --plant refuses a stimulus column that sets the machine\'s state, or a fault it lacks, before the first scan', () => {
+    const files = { 'tank.json': JSON.stringify(tankReference()) };
+    const run = (header: string, row: string) =>
+      rungsmith(['simulate', 'tank.json', '--plant', 'tank', '--inputs', 's.csv', '--watch', 'tank.level'], {
+        ...files,
+        's.csv': `scan,${header}\n1,1\n2000,${row}\n`,
+      });
+    // A quantity or a sensor cannot be set: the machine works them out (was "500 is an integer, not a BOOL").
+    const level = run('tank.level', '500');
+    expect(level.code).toBe(2);
+    expect(level.out).toBe('');
+    expect(level.err).toBe(
+      'rungsmith: s.csv: column "tank.level": only the machine\'s operator controls can be set (tank.Start, tank.Stop); watch its state with --watch tank.level\n',
+    );
+    expect(run('tank.LowLevel', '0').err).toContain('column "tank.LowLevel": only the machine\'s operator controls can be set');
+    expect(run('tank.Nope', '0').err).toBe('rungsmith: s.csv: column "tank.Nope": tank has no operator control "Nope"; it has Start, Stop\n');
+    expect(run('fault pump_daed', '0').err).toBe(
+      'rungsmith: s.csv: column "fault pump_daed": tank has no fault "pump_daed"; it has low_stuck_off, low_stuck_on, high_stuck_off, high_stuck_on, pump_dead, inlet_slow, drain_stuck\n',
+    );
+  });
+
   test('plants lists each machine with its I/O map, faults and quantities', () => {
     const all = rungsmith(['plants']);
     expect(all.code).toBe(0);

@@ -6,10 +6,11 @@ import { useLayoutEffect, useRef, useState, type ReactNode } from 'react';
 import { Layer, Stage } from 'react-konva';
 import { locationText, parseLocation } from '../../model/iecTypes';
 import type { Project } from '../../model/project';
-import { plantVariables, taskText } from '../../plant/exercises';
-import { addressProblem, mappedPoints } from '../../plant/loop';
+import { taskText } from '../../plant/exercises';
+import { mappedPoints } from '../../plant/loop';
 import { PLANTS, plantById } from '../../plant/machines';
 import type { PlantModel, PlantPoint } from '../../plant/types';
+import { declarePlan, rewireAddress } from '../../plant/wiring';
 import type { DocumentState } from '../../store/documentStore';
 import { useDocument, useDocumentStore } from '../../store/documentStore';
 import type { SimState } from '../../store/simState';
@@ -89,7 +90,9 @@ export function PlantPanel() {
           The project names the machine "{config.id}", which this version does not have.
         </p>
       )}
-      {model && <Machine model={model} map={config?.map ?? {}} />}
+      {/* Keyed by the machine: what the panel said of the machine before (a refused address, a
+          Declare report, a fault box awaiting the worker) does not stay under another one. */}
+      {model && <Machine key={model.id} model={model} map={config?.map ?? {}} />}
     </div>
   );
 }
@@ -354,20 +357,18 @@ function IoMap({
   const [problem, setProblem] = useState<string | undefined>();
   const [declared, setDeclared] = useState<string | undefined>();
   const change = (point: PlantPoint, text: string) => {
-    const address = text.trim();
-    if (address === point.address) return;
-    const p = addressProblem(point, address);
-    const clash = points.find(
-      (q) => q.name !== point.name && q.address.toUpperCase() === address.toUpperCase(),
-    );
-    if (p || clash) {
-      setProblem(p ?? `${point.name}: ${address} is already ${clash!.name}'s address`);
+    if (text.trim() === point.address) return;
+    const typed = rewireAddress(points, point, text);
+    if (typed.problem !== undefined) {
+      setProblem(typed.problem);
       return;
     }
+    const address = typed.address;
     setProblem(undefined);
+    if (address === point.address) return;
     const original = model.points.find((q) => q.name === point.name)!;
     const next: Record<string, string> = { ...map };
-    if (address.toUpperCase() === original.address.toUpperCase()) delete next[point.name];
+    if (address === original.address) delete next[point.name];
     else next[point.name] = address;
     doc
       .getState()
@@ -387,24 +388,21 @@ function IoMap({
       setDeclared('The project has no PROGRAM to declare the I/O in.');
       return;
     }
-    // A point rewired in the map whose variable (same name) is still at its old address moves with
-    // it, in the same undo step as the variables added.
-    const moves = points.flatMap((p) => {
-      const v = pou.variables.find((x) => x.name.toUpperCase() === p.name.toUpperCase());
-      return v?.location && canonical(v.location) !== canonical(p.address)
-        ? [{ name: v.name, from: v.location, to: p.address }]
-        : [];
-    });
+    // A point rewired in the map whose variable (same name and type) is still at its old address
+    // moves with it, in the same undo step as the variables added; a variable of a point's name
+    // that cannot carry it (another type, no address, a global) is left alone and said.
+    const plan = declarePlan(model, map, pou.variables, project.globals);
     const added = s.batch("Declare the machine's I/O", () => {
-      const names = s.addVariables(plantVariables(model, map), "Declare the machine's I/O", pou.id);
-      for (const m of moves) s.updateVariable(m.name, { location: m.to }, pou.id);
+      const names = s.addVariables(plan.add, "Declare the machine's I/O", pou.id);
+      for (const m of plan.moves) s.updateVariable(m.name, { location: m.to }, pou.id);
       return names;
     });
     const said = [
       added.length
         ? `Declared ${added.length} variable${added.length === 1 ? '' : 's'} in ${pou.name}: ${added.join(', ')}.`
         : '',
-      moves.length ? `Moved ${moves.map((m) => `${m.name} from ${m.from} to ${m.to}`).join(', ')}.` : '',
+      plan.moves.length ? `Moved ${plan.moves.map((m) => `${m.name} from ${m.from} to ${m.to}`).join(', ')}.` : '',
+      plan.kept.length ? `Not wired, left as declared: ${plan.kept.join(', ')}.` : '',
     ].filter(Boolean);
     setDeclared(said.length ? said.join(' ') : `Every point is declared in ${pou.name} already.`);
   };
