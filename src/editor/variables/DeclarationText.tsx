@@ -32,6 +32,8 @@ interface Props {
 }
 
 const NO_VARS: readonly Variable[] = [];
+const CHANGED_ELSEWHERE =
+  'The variables changed elsewhere (table, undo) while this text has changes: applying it makes them what the text says; Revert shows them.';
 /** Texts longer than this (about 200 declarations) are checked once typing pauses for PAUSE_MS. */
 const LONG_TEXT = 8000;
 const PAUSE_MS = 150;
@@ -72,35 +74,42 @@ export function DeclarationText({ scope, pouName }: Props) {
   const section: DeclarationSection = scope === 'globals' ? 'globals' : 'pou';
   const printed = useMemo(() => printDeclarations(vars, section), [vars, section]);
   const owner = pouName ?? 'Global variables';
-  const [draft, setDraftState] = useState(() => draftOf(scope) ?? printed);
+  const [draft, setDraftState] = useState(() => draftOf(scope)?.text ?? printed);
+  /** The text the draft started from: while they are equal, model changes re-print the text. */
+  const [basis, setBasis] = useState(() => draftOf(scope)?.basis ?? printed);
+  /** The variables changed elsewhere while the text had changes (kept with the draft: said again when the view reopens). */
+  const [stale, setStale] = useState(() => draftOf(scope)?.stale ?? false);
   const setDraft = (text: string) => {
     setDraftState(text);
     // Kept only while it says something the variables do not (typed back to them: nothing kept).
-    keepDraft(scope, text === printed ? undefined : text);
+    keepDraft(scope, text === printed ? undefined : { text, basis, stale });
   };
-  /** The text the draft started from: while they are equal, model changes re-print the text. */
-  const [basis, setBasis] = useState(printed);
   const [shownScope, setShownScope] = useState(scope);
-  const [note, setNote] = useState('');
+  const [note, setNote] = useState(() => (draftOf(scope)?.stale ? CHANGED_ELSEWHERE : ''));
   const area = useRef<HTMLTextAreaElement>(null);
   const gutter = useRef<HTMLDivElement>(null);
   const escaped = useRef(false);
 
   // Another list, or the model changed while the text has no changes of its own: show it afresh.
+  // A draft kept while the view was closed (or showed another list) comes back with the basis it
+  // started from, so a change made meanwhile (a name declared from the canvas) is said here too.
   if (shownScope !== scope) {
+    const kept = draftOf(scope);
     setShownScope(scope);
-    setDraftState(draftOf(scope) ?? printed);
-    setBasis(printed);
-    setNote('');
+    setDraftState(kept?.text ?? printed);
+    setBasis(kept?.basis ?? printed);
+    setStale(kept?.stale ?? false);
+    setNote(kept?.stale ? CHANGED_ELSEWHERE : '');
   } else if (basis !== printed) {
     setBasis(printed);
     if (draft === basis) {
       setDraftState(printed);
       keepDraft(scope, undefined);
-    } else
-      setNote(
-        'The variables changed elsewhere (table, undo) while this text has changes: applying it makes them what the text says; Revert shows them.',
-      );
+    } else {
+      setStale(true);
+      keepDraft(scope, { text: draft, basis: printed, stale: true });
+      setNote(CHANGED_ELSEWHERE);
+    }
   }
 
   // Parsed and checked behind the typing: at once for a POU's few lines (deferred, so the
@@ -178,6 +187,7 @@ export function DeclarationText({ scope, pouName }: Props) {
     setDraftState(reprinted);
     keepDraft(scope, undefined);
     setBasis(reprinted);
+    setStale(false);
     setNote('');
     setPending(scope, undefined);
     return true;
@@ -186,6 +196,8 @@ export function DeclarationText({ scope, pouName }: Props) {
   const revert = () => {
     setDraftState(printed);
     keepDraft(scope, undefined);
+    setBasis(printed);
+    setStale(false);
     setNote('');
     setPending(scope, undefined);
   };

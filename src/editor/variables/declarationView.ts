@@ -71,12 +71,21 @@ export function setPending(scope: VariableScope, pending: PendingText | undefine
   declarationView.setState({ pending: next });
 }
 
+/** Unapplied text of a list: the text, the printed variables it was last in step with, and whether they changed since. */
+export interface Draft {
+  readonly text: string;
+  /** The variables as printed when the text last followed them: printed differently now means they changed elsewhere. */
+  readonly basis: string;
+  /** The variables changed elsewhere while this text had changes (the text view says so until applied or reverted). */
+  readonly stale: boolean;
+}
+
 /** Unapplied text per list, kept while the text view is closed (read when it opens again). */
-const drafts = new Map<VariableScope, string>();
-export const draftOf = (scope: VariableScope): string | undefined => drafts.get(scope);
-export function keepDraft(scope: VariableScope, text: string | undefined): void {
-  if (text === undefined) drafts.delete(scope);
-  else drafts.set(scope, text);
+const drafts = new Map<VariableScope, Draft>();
+export const draftOf = (scope: VariableScope): Draft | undefined => drafts.get(scope);
+export function keepDraft(scope: VariableScope, draft: Draft | undefined): void {
+  if (draft === undefined) drafts.delete(scope);
+  else drafts.set(scope, draft);
 }
 
 let seq = 0;

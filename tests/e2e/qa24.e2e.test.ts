@@ -1,0 +1,60 @@
+// Exploratory QA of issue 24's features (a day's work at CODESYS speed), in a real Chromium on the
+// real server: what a user found broken, kept fixed. One page for the file; each test says what it
+// starts from.
+import { afterAll, beforeAll, expect, test } from 'vitest';
+import type { Page } from 'playwright-core';
+import { openApp, useChromium } from './appPage';
+import { DrawPage } from './drawPage';
+
+const browser = useChromium();
+let page: Page;
+let errors: string[];
+let draw: DrawPage;
+const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000 });
+
+beforeAll(async () => {
+  ({ page, errors } = await openApp(browser()));
+  draw = new DrawPage(page);
+  await page.evaluate(() => localStorage.removeItem('rungsmith.variablesView'));
+});
+
+afterAll(() => {
+  expect(errors).toEqual([]);
+});
+
+const mainVariables = () =>
+  page.evaluate(() => {
+    const s = window.rungsmith!.documentStore!.getState();
+    return s.project.pous.find((p) => p.id === s.activePouId)!.variables.map((v) => v.name);
+  });
+
+test('text with a syntax error left in the text view: a name declared from the canvas meanwhile is said to have changed the variables, also after the view was closed', async () => {
+  await page.evaluate(() => window.rungsmith!.documentStore!.getState().newProject('Decl'));
+  const panel = page.getByTestId('variables-panel');
+  await page.getByRole('tab', { name: 'Variables', exact: true }).click();
+  await panel.getByText('Text', { exact: true }).click();
+  const area = panel.getByRole('textbox', { name: /as IEC text/ });
+  await area.fill('VAR\n\tA : BOOL;\nEND_VAR\n');
+  await area.press('Control+Enter');
+  await poll(mainVariables).toEqual(['A']);
+  // A declaration typed without its ";", then the user goes elsewhere: not applied, kept.
+  await area.press('Control+End');
+  await page.keyboard.type('VAR\n\tB : INT\nEND_VAR\n');
+  await poll(() => panel.getByTestId('declaration-status').textContent()).toContain('1 syntax error');
+  await page.getByRole('tab', { name: 'Inspector', exact: true }).click();
+  // Foo declared from the canvas while the text view is closed.
+  await draw.clickCell(0, 0, 0);
+  await page.keyboard.press('c');
+  await draw.typeName('Foo');
+  await poll(mainVariables).toEqual(['A', 'Foo']);
+  // Back in the text: still the text as typed, and it says the variables changed meanwhile
+  // (applying it as it stands would drop Foo).
+  await page.getByRole('tab', { name: 'Variables', exact: true }).click();
+  expect(await area.inputValue()).toBe('VAR\n\tA : BOOL;\nEND_VAR\nVAR\n\tB : INT\nEND_VAR\n');
+  await poll(() => panel.getByTestId('declaration-note').textContent()).toMatch(/^The variables changed elsewhere/);
+  // Revert shows them, Foo included, and the note goes.
+  await panel.getByRole('button', { name: 'Revert' }).click();
+  await poll(() => area.inputValue()).toBe('VAR\n\tA : BOOL;\n\tFoo : BOOL;\nEND_VAR\n');
+  expect(await panel.getByTestId('declaration-note').count()).toBe(0);
+  await panel.getByText('Table', { exact: true }).click();
+});
