@@ -58,3 +58,25 @@ test('text with a syntax error left in the text view: a name declared from the c
   expect(await panel.getByTestId('declaration-note').count()).toBe(0);
   await panel.getByText('Table', { exact: true }).click();
 });
+
+test("another project opened: the last one's unapplied globals text and its LD-E18 stay with it", async () => {
+  const panel = page.getByTestId('variables-panel');
+  await page.getByRole('tab', { name: 'Variables', exact: true }).click();
+  await panel.getByText('Global', { exact: true }).click();
+  await panel.getByText('Text', { exact: true }).click();
+  const area = panel.getByRole('textbox', { name: /as IEC text/ });
+  await area.fill('VAR_GLOBAL\n\tG1 : INT\nEND_VAR\n');
+  await page.getByRole('tab', { name: 'Problems', exact: true }).click();
+  const syntax = page.getByTestId('problems-panel').locator('[data-rule="LD-E18"]');
+  await poll(() => syntax.count()).toBe(1);
+  // File > New project (the unsaved project is discarded).
+  await page.getByTestId('menu-file').click();
+  await page.getByRole('menuitem', { name: /^New project/ }).click();
+  await page.getByRole('button', { name: 'Discard and start new' }).click();
+  await page.getByTestId('project-name').filter({ hasText: 'Untitled' }).waitFor();
+  await poll(() => syntax.count()).toBe(0);
+  await page.getByRole('tab', { name: 'Variables', exact: true }).click();
+  await poll(() => area.inputValue()).toBe('VAR_GLOBAL\nEND_VAR\n');
+  expect(await panel.getByTestId('declaration-status').textContent()).toBe('Applied');
+  await panel.getByText('Table', { exact: true }).click();
+});

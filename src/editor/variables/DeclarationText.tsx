@@ -73,19 +73,22 @@ export function DeclarationText({ scope, pouName }: Props) {
   );
   const section: DeclarationSection = scope === 'globals' ? 'globals' : 'pou';
   const printed = useMemo(() => printDeclarations(vars, section), [vars, section]);
+  /** The project shown (another one opened: its own lists, none of this one's drafts). */
+  const opened = useDocument((s) => s.opened);
+  const shown = `${opened}:${scope}`;
   const owner = pouName ?? 'Global variables';
-  const [draft, setDraftState] = useState(() => draftOf(scope)?.text ?? printed);
+  const [draft, setDraftState] = useState(() => draftOf(scope, opened)?.text ?? printed);
   /** The text the draft started from: while they are equal, model changes re-print the text. */
-  const [basis, setBasis] = useState(() => draftOf(scope)?.basis ?? printed);
+  const [basis, setBasis] = useState(() => draftOf(scope, opened)?.basis ?? printed);
   /** The variables changed elsewhere while the text had changes (kept with the draft: said again when the view reopens). */
-  const [stale, setStale] = useState(() => draftOf(scope)?.stale ?? false);
+  const [stale, setStale] = useState(() => draftOf(scope, opened)?.stale ?? false);
   const setDraft = (text: string) => {
     setDraftState(text);
     // Kept only while it says something the variables do not (typed back to them: nothing kept).
-    keepDraft(scope, text === printed ? undefined : { text, basis, stale });
+    keepDraft(scope, text === printed ? undefined : { opened, text, basis, stale });
   };
-  const [shownScope, setShownScope] = useState(scope);
-  const [note, setNote] = useState(() => (draftOf(scope)?.stale ? CHANGED_ELSEWHERE : ''));
+  const [shownScope, setShownScope] = useState(shown);
+  const [note, setNote] = useState(() => (draftOf(scope, opened)?.stale ? CHANGED_ELSEWHERE : ''));
   const area = useRef<HTMLTextAreaElement>(null);
   const gutter = useRef<HTMLDivElement>(null);
   const escaped = useRef(false);
@@ -93,9 +96,9 @@ export function DeclarationText({ scope, pouName }: Props) {
   // Another list, or the model changed while the text has no changes of its own: show it afresh.
   // A draft kept while the view was closed (or showed another list) comes back with the basis it
   // started from, so a change made meanwhile (a name declared from the canvas) is said here too.
-  if (shownScope !== scope) {
-    const kept = draftOf(scope);
-    setShownScope(scope);
+  if (shownScope !== shown) {
+    const kept = draftOf(scope, opened);
+    setShownScope(shown);
     setDraftState(kept?.text ?? printed);
     setBasis(kept?.basis ?? printed);
     setStale(kept?.stale ?? false);
@@ -107,7 +110,7 @@ export function DeclarationText({ scope, pouName }: Props) {
       keepDraft(scope, undefined);
     } else {
       setStale(true);
-      keepDraft(scope, { text: draft, basis: printed, stale: true });
+      keepDraft(scope, { opened, text: draft, basis: printed, stale: true });
       setNote(CHANGED_ELSEWHERE);
     }
   }
@@ -138,8 +141,8 @@ export function DeclarationText({ scope, pouName }: Props) {
   const checkedDirty = checkedDraft !== printed;
   useEffect(() => {
     const errors = parsed.problems.filter((p) => p.severity === 'error');
-    setPending(scope, checkedDirty && errors.length > 0 ? { owner, problems: errors } : undefined);
-  }, [scope, checkedDirty, parsed, owner]);
+    setPending(scope, checkedDirty && errors.length > 0 ? { opened, owner, problems: errors } : undefined);
+  }, [scope, checkedDirty, parsed, owner, opened]);
 
   const caretTo = (line: number, col: number, focus = true) => {
     const el = area.current;
