@@ -80,3 +80,29 @@ test("another project opened: the last one's unapplied globals text and its LD-E
   expect(await panel.getByTestId('declaration-status').textContent()).toBe('Applied');
   await panel.getByText('Table', { exact: true }).click();
 });
+
+test('the command palette and the list of shortcuts give the keyboard back to the canvas when they close', async () => {
+  // Still the new project: one empty network.
+  const canvasFocused = () => page.evaluate(() => document.activeElement?.getAttribute('aria-label')?.startsWith('Ladder diagram') ?? false);
+  await draw.clickCell(0, 0, 0);
+  await poll(canvasFocused).toBe(true);
+  await page.keyboard.press('Control+Shift+P');
+  const palette = page.getByTestId('command-palette');
+  await palette.getByTestId('palette-input').fill('cursor right');
+  await page.keyboard.press('Enter');
+  await palette.waitFor({ state: 'detached' });
+  await poll(() => page.evaluate(() => window.rungsmith!.uiStore!.getState().cursor?.col)).toBe(1);
+  await poll(canvasFocused).toBe(true);
+  // Closed with Escape.
+  await page.keyboard.press('Control+Shift+P');
+  await palette.waitFor();
+  await page.keyboard.press('Escape');
+  await palette.waitFor({ state: 'detached' });
+  await poll(canvasFocused).toBe(true);
+  await page.keyboard.press('?');
+  const shortcuts = page.getByTestId('shortcut-list');
+  await shortcuts.waitFor();
+  await page.keyboard.press('Escape');
+  await shortcuts.waitFor({ state: 'detached' });
+  await poll(canvasFocused).toBe(true);
+});
