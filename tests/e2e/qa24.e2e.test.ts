@@ -3,7 +3,7 @@
 // starts from.
 import { afterAll, beforeAll, expect, test } from 'vitest';
 import type { Page } from 'playwright-core';
-import { openApp, useChromium } from './appPage';
+import { appUrl, openApp, useChromium } from './appPage';
 import { DrawPage } from './drawPage';
 
 const browser = useChromium();
@@ -14,6 +14,7 @@ const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000 
 
 beforeAll(async () => {
   ({ page, errors } = await openApp(browser()));
+  await page.context().grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(appUrl()).origin });
   draw = new DrawPage(page);
   await page.evaluate(() => localStorage.removeItem('rungsmith.variablesView'));
 });
@@ -105,4 +106,24 @@ test('the command palette and the list of shortcuts give the keyboard back to th
   await page.keyboard.press('Escape');
   await shortcuts.waitFor({ state: 'detached' });
   await poll(canvasFocused).toBe(true);
+});
+
+test('Ctrl+V in the declarations text view pastes the text there (declarations copied from another tool), not a symbol table preview', async () => {
+  await page.evaluate(() => window.rungsmith!.documentStore!.getState().newProject('Paste'));
+  const panel = page.getByTestId('variables-panel');
+  await page.getByRole('tab', { name: 'Variables', exact: true }).click();
+  await panel.getByText(/^Main/).click();
+  await panel.getByText('Text', { exact: true }).click();
+  const area = panel.getByRole('textbox', { name: /as IEC text/ });
+  await poll(() => area.inputValue()).toBe('VAR\nEND_VAR\n');
+  await page.evaluate((t) => navigator.clipboard.writeText(t), '\tStart AT %IX0.0 : BOOL;\n\tCount : INT := 0;\n');
+  await area.focus();
+  await page.keyboard.press('Control+Home');
+  await page.keyboard.press('ArrowDown');
+  await page.keyboard.press('Control+V');
+  await poll(() => area.inputValue()).toBe('VAR\n\tStart AT %IX0.0 : BOOL;\n\tCount : INT := 0;\nEND_VAR\n');
+  expect(await page.getByTestId('symbol-paste-dialog').count()).toBe(0);
+  await page.keyboard.press('Control+Enter');
+  await poll(mainVariables).toEqual(['Start', 'Count']);
+  await panel.getByText('Table', { exact: true }).click();
 });
