@@ -127,3 +127,21 @@ test('Ctrl+V in the declarations text view pastes the text there (declarations c
   await poll(mainVariables).toEqual(['Start', 'Count']);
   await panel.getByText('Table', { exact: true }).click();
 });
+
+test('? with an element selected after Reset (nothing recorded) lists the shortcuts instead of an empty Why?', async () => {
+  await page.evaluate(() => window.rungsmith!.documentStore!.getState().newProject('Why'));
+  await draw.clickCell(0, 0, 0);
+  await page.keyboard.press('c');
+  await draw.typeName('Start');
+  await page.getByTestId('sim-run').click();
+  await page.getByTestId('sim-mode').filter({ hasText: 'Running' }).waitFor();
+  await page.getByTestId('sim-reset').click();
+  await page.getByTestId('sim-mode').filter({ hasText: 'Stopped' }).waitFor();
+  await draw.clickCell(0, 0, 0);
+  await poll(() => page.evaluate(() => window.rungsmith!.uiStore!.getState().selection.elements.length)).toBe(1);
+  await page.keyboard.press('?');
+  const shortcuts = page.getByTestId('shortcut-list');
+  await shortcuts.waitFor();
+  await page.keyboard.press('Escape');
+  await shortcuts.waitFor({ state: 'detached' });
+});
