@@ -17,8 +17,8 @@ export function scopeVariables(doc: DocumentStore, scope: VariableScope): readon
 }
 
 /**
- * Makes the scope declare exactly `variables` (parsed from the text, in its order). One name
- * changed at the same position is a rename (uses and test scenarios follow); other names gone are
+ * Makes the scope declare exactly `variables` (parsed from the text, in its order). Names changed
+ * at the same position are renames (uses and test scenarios follow); other names gone are
  * deleted, new ones added, changed ones updated. Returns whether anything changed, or why not.
  */
 export function applyDeclarationText(
@@ -31,9 +31,9 @@ export function applyDeclarationText(
   let failure: string | undefined;
   doc.getState().batch(EDIT_DECLARATIONS, () => {
     const s = () => doc.getState();
-    if (plan.rename) {
-      const r = renameVariable(doc, plan.rename.from, plan.rename.to, [scope], EDIT_DECLARATIONS);
-      if (!r.ok) failure = r.reason;
+    for (const rename of plan.renames ?? []) {
+      const r = renameVariable(doc, rename.from, rename.to, [scope], EDIT_DECLARATIONS);
+      if (!r.ok) failure ??= r.reason;
     }
     for (const name of plan.removed) s().deleteVariable(name, scope);
     for (const { name, after } of plan.updated) {

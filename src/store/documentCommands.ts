@@ -333,7 +333,14 @@ export function documentCommands({ get, commit, editNetwork }: CommandOps): Comm
       const changes: Change[] = [{ type: 'variable.update', scope: sc, index, before, after }];
       if (renamed) {
         for (const pou of get().project.pous) {
-          if (sc === 'globals' ? declaresLocally(pou, before.name) : pou.id !== sc) continue;
+          // A POU's VAR_EXTERNAL of a renamed global names that global: renamed with it, uses and all.
+          const external = sc === 'globals' ? pou.variables.findIndex((v) => v.varClass === 'external' && v.name.toUpperCase() === before.name.toUpperCase()) : -1;
+          if (external >= 0) {
+            const ext = pou.variables[external]!;
+            if (pou.variables.some((v, i) => i !== external && v.name.toUpperCase() === after.name.toUpperCase())) return false;
+            changes.push({ type: 'variable.update', scope: pou.id, index: external, before: ext, after: { ...ext, name: after.name } });
+          }
+          if (sc === 'globals' ? external < 0 && declaresLocally(pou, before.name) : pou.id !== sc) continue;
           for (const net of pou.networks) {
             const elements = net.elements.map((e) => renameInElement(e, before.name, after.name));
             changes.push(...diffNetwork(pou.id, net, { ...net, elements }));

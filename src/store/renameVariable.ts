@@ -108,6 +108,14 @@ export function renameVariable(
       return { ok: false, reason: `"${to}" is already declared in ${where}` };
     }
   }
+  // A global's VAR_EXTERNAL declarations are renamed with it (updateVariable): the new name must be free there too.
+  if (scopes.includes('globals')) {
+    const same = (a: string, b: string) => a.toUpperCase() === b.toUpperCase();
+    const blocked = project.pous.find(
+      (p) => p.variables.some((v) => v.varClass === 'external' && same(v.name, from)) && p.variables.some((v) => same(v.name, to) && !same(v.name, from)),
+    );
+    if (blocked) return { ok: false, reason: `"${to}" is already declared in POU ${blocked.name}, which uses the global ${from} as VAR_EXTERNAL` };
+  }
   doc.getState().batch(stepName, () => {
     for (const sc of scopes) {
       const declared =

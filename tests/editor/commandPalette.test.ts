@@ -2,9 +2,11 @@
 // docs/keyboard.md holds the list generated from them (so the two agree).
 import { readFileSync, writeFileSync } from 'node:fs';
 import { describe, expect, test } from 'vitest';
-import { allCommands, filterCommands, fuzzyScore, shortcutGroups, shortcutMarkdown } from '../../src/editor/commands/allCommands';
+import { allCommands, availability, filterCommands, fuzzyScore, shortcutGroups, shortcutMarkdown } from '../../src/editor/commands/allCommands';
 import { COMMANDS } from '../../src/editor/commands/registry';
-import { SIM_COMMANDS } from '../../src/editor/commands/simCommands';
+import { SIM_COMMANDS, simControls } from '../../src/editor/commands/simCommands';
+import type { EditorContext } from '../../src/editor/commands/editorActions';
+import type { SimStore } from '../../src/store/simState';
 import { FILE_MENU_COMMANDS } from '../../src/editor/files/FileMenu';
 import { SHELL_COMMANDS } from '../../src/editor/layout/shellCommands';
 
@@ -71,5 +73,30 @@ describe('docs/keyboard.md', () => {
     if (normalise(current) !== normalise(generated) && process.env.UPDATE_KEYBOARD_DOC === '1') writeFileSync(DOC, doc.slice(0, begin) + generated + doc.slice(end + END.length));
     else expect(normalise(current), `${DOC} is out of date: run UPDATE_KEYBOARD_DOC=1 npx vitest run tests/editor/commandPalette.test.ts`).toBe(normalise(generated));
     expect(shortcutGroups(allCommands()).map((g) => g.group)).toContain('Simulation');
+  });
+});
+
+describe('Apply changes… (Alt+F8)', () => {
+  const apply = allCommands().find((c) => c.id === 'sim.applyChanges')!;
+  /** Its availability with the simulator in this state (only what the command reads). */
+  const reason = (state: { onlineMode: 'edit' | 'request'; live: boolean; runningProgram: string | null; unapplied?: object }) => {
+    const sim = { getState: () => ({ onlineChange: undefined, unapplied: undefined, ...state }) } as unknown as SimStore;
+    simControls.current = { sim, commands: {} as never, project: () => ({}) as never };
+    try {
+      return availability(apply, {} as EditorContext);
+    } finally {
+      simControls.current = undefined;
+    }
+  };
+
+  test('says why it has nothing to do without claiming the running program is the one shown when it may not be', () => {
+    // Apply as you edit, running, the last edit not applied because of its errors: the program shown is not the one running.
+    expect(reason({ onlineMode: 'edit', live: true, runningProgram: 'p1' })).toEqual({
+      enabled: false,
+      reason: 'Edits are applied as you make them (Online change: apply as you edit, in the Project inspector); an edit with errors is not applied until it is fixed.',
+    });
+    expect(reason({ onlineMode: 'request', live: false, runningProgram: null }).reason).toBe('Nothing is running: Run starts the program shown.');
+    expect(reason({ onlineMode: 'request', live: true, runningProgram: 'p1' }).reason).toBe('The running program is the one shown: nothing to apply.');
+    expect(reason({ onlineMode: 'request', live: true, runningProgram: 'p1', unapplied: { count: 1 } })).toEqual({ enabled: true });
   });
 });

@@ -203,7 +203,7 @@ describe('what an edited text changes', () => {
 
   it('one name changed at the same place is a rename', () => {
     const plan = planDeclarationEdit(before, [variable('A', 'INT'), variable('Run', 'BOOL'), before[2]!]);
-    expect(plan.rename).toEqual({ from: 'B', to: 'Run' });
+    expect(plan.renames).toEqual([{ from: 'B', to: 'Run' }]);
     expect(plan.removed).toEqual([]);
     expect(plan.added).toEqual([]);
     expect(plan.updated).toEqual([]);
@@ -211,13 +211,24 @@ describe('what an edited text changes', () => {
 
   it('a name changed and its type too is a rename plus an update', () => {
     const plan = planDeclarationEdit(before, [before[0]!, variable('Run', 'INT'), before[2]!]);
-    expect(plan.rename).toEqual({ from: 'B', to: 'Run' });
+    expect(plan.renames).toEqual([{ from: 'B', to: 'Run' }]);
+    expect(plan.updated).toEqual([{ name: 'Run', after: variable('Run', 'INT') }]);
+  });
+
+  it('several names changed at their places in one edit are renames, each with its own changes', () => {
+    const plan = planDeclarationEdit(before, [variable('X', 'INT'), variable('Run', 'INT'), before[2]!]);
+    expect(plan.renames).toEqual([
+      { from: 'A', to: 'X' },
+      { from: 'B', to: 'Run' },
+    ]);
+    expect(plan.removed).toEqual([]);
+    expect(plan.added).toEqual([]);
     expect(plan.updated).toEqual([{ name: 'Run', after: variable('Run', 'INT') }]);
   });
 
   it('otherwise names gone are removed and new names added; a global keeps its scope', () => {
     const plan = planDeclarationEdit(before, [variable('C', 'TIME', { initial: 'T#5s' }), variable('D', 'INT'), variable('E', 'INT')]);
-    expect(plan.rename).toBeUndefined();
+    expect(plan.renames).toBeUndefined();
     expect(plan.removed).toEqual(['A', 'B']);
     expect(plan.added.map((v) => v.name)).toEqual(['D', 'E']);
     expect(plan.updated).toEqual([{ name: 'C', after: { ...variable('C', 'TIME', { initial: 'T#5s' }), scope: 'resource' } }]);

@@ -69,4 +69,24 @@ describe('prepared values', () => {
     preparedValues.getState().clear();
     expect(preparedMessage('Wrote', writePrepared(store))).toMatch(/No prepared values/);
   });
+
+  test('a prepared value the variable cannot hold ("abc" for an INT, 2 for a BOOL) is neither written nor forced: it stays prepared with the reason', () => {
+    const { s, scheduler, store } = setup();
+    s().run(motorProgram());
+    scheduler.advance(50);
+    preparedValues.getState().clear();
+    preparedValues.getState().prepare({ name: 'Motor', text: '2', input: { text: '2' } });
+    preparedValues.getState().prepare({ name: 'Stop', text: 'TRUE', input: { text: 'TRUE' } });
+    const wrote = writePrepared(store);
+    expect(wrote.done).toEqual(['Stop']);
+    expect(preparedMessage('Wrote', wrote)).toBe('Wrote Stop. Motor not written: 2 is an integer, not a BOOL (use TRUE, FALSE, 1 or 0).');
+    expect([...preparedValues.getState().values.values()].map((v) => v.text)).toEqual(['2']);
+    const forced = forcePrepared(store);
+    expect(forced.done).toEqual([]);
+    expect(forced.kept.map((k) => k.name)).toEqual(['Motor']);
+    scheduler.advance(50);
+    expect(s().forced.size).toBe(0);
+    expect(liveText(s(), 'Motor')).toBe('FALSE');
+    preparedValues.getState().clear();
+  });
 });

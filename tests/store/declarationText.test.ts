@@ -69,6 +69,21 @@ test('one name changed in place is a rename: contacts, coils and scenario column
   expect(doc.getState().history.undo).toHaveLength(1);
 });
 
+test('two names changed in place in one edit are two renames: the contact and the coil follow, one undo step', () => {
+  const doc = createDocumentStore(plant());
+  const before = doc.getState().project;
+  const pou = main(before);
+  const text = printDeclarations(pou.variables, 'pou').replace('Start AT', 'StartBtn AT').replace('Motor :', 'Pump :');
+  expect(applyDeclarationText(doc, pou.id, parse(text))).toEqual({ ok: true, changed: true });
+  const after = doc.getState().project;
+  expect(main(after).variables.map((v) => v.name)).toEqual(['StartBtn', 'Pump', 'Count']);
+  expect(main(after).networks[0]!.elements.map((e) => (e.kind === 'contact' || e.kind === 'coil' ? e.variable : ''))).toEqual(['StartBtn', 'Pump']);
+  expect(after.scenarios![0]!.csv).toBe('scan,StartBtn,expect Pump\n1,1,1\n');
+  expect(doc.getState().history.undo).toHaveLength(1);
+  doc.getState().undo();
+  expect(doc.getState().project).toEqual(before);
+});
+
 test('a field dropped from the text is dropped from the variable; an unchanged text changes nothing', () => {
   const doc = createDocumentStore(plant());
   const pou = main(doc.getState().project);

@@ -9,6 +9,7 @@ import {
   planFindReplace,
   renameInNames,
   renameInScenarioCsv,
+  renameVariable,
   type ReplacePlan,
 } from '../../src/store/renameVariable';
 
@@ -103,4 +104,52 @@ test('a rename to a name already declared is refused and changes nothing', () =>
 test('scenario headers, watch and trend names follow a rename', () => {
   expect(renameInScenarioCsv('scan,"motor",expect: MOTOR.Q~1\n1,1,1', 'Motor', 'Pump')).toBe('scan,Pump,expect: Pump.Q~1\n1,1,1');
   expect(renameInNames(['Motor', 'Main.Motor', 'Motor2', 'T1.Q'], 'Motor', 'Pump')).toEqual(['Pump', 'Main.Pump', 'Motor2', 'T1.Q']);
+});
+
+/** A global Start used directly in Main, through VAR_EXTERNAL in FB Other, and hidden by a VAR_INPUT Start in FB Conv. */
+function externals(otherExtra: Variable[] = []): Project {
+  return newProject('p', {
+    globals: [{ ...v('Start', 'BOOL'), location: '%IX0.0' }],
+    pous: [
+      { ...newPou('Main'), variables: [v('Motor', 'BOOL')], networks: [newNetwork({ elements: [contact('Start'), coil('Motor')] })] },
+      {
+        ...newPou('Conv', { kind: 'FUNCTION_BLOCK' }),
+        variables: [{ ...v('Start', 'BOOL'), varClass: 'input' }, { ...v('Out1', 'BOOL'), varClass: 'output' }],
+        networks: [newNetwork({ elements: [contact('Start'), coil('Out1')] })],
+      },
+      {
+        ...newPou('Other', { kind: 'FUNCTION_BLOCK' }),
+        variables: [{ ...v('Start', 'BOOL'), varClass: 'external' }, { ...v('Out2', 'BOOL'), varClass: 'output' }, ...otherExtra],
+        networks: [newNetwork({ elements: [contact('Start'), coil('Out2')] })],
+      },
+    ],
+  });
+}
+const declaredAndUsed = (p: Project) =>
+  p.pous.map((pou) => [pou.name, pou.variables.map((x) => `${x.varClass} ${x.name}`), pou.networks[0]!.elements.map((e) => (e.kind === 'contact' || e.kind === 'coil' ? e.variable : ''))]);
+
+test("renaming a global renames the VAR_EXTERNAL declarations of it and their uses (not a POU's own variable of that name), one undo step", () => {
+  const doc = createDocumentStore(externals());
+  const original = doc.getState().project;
+  expect(doc.getState().updateVariable('Start', { name: 'StartBtn' }, 'globals')).toBe(true);
+  const p = doc.getState().project;
+  expect(p.globals.map((g) => g.name)).toEqual(['StartBtn']);
+  expect(declaredAndUsed(p)).toEqual([
+    ['Main', ['local Motor'], ['StartBtn', 'Motor']],
+    ['Conv', ['input Start', 'output Out1'], ['Start', 'Out1']],
+    ['Other', ['external StartBtn', 'output Out2'], ['StartBtn', 'Out2']],
+  ]);
+  doc.getState().undo();
+  expect(doc.getState().project).toEqual(original);
+});
+
+test('a global is not renamed to a name a POU declaring it VAR_EXTERNAL already uses', () => {
+  const doc = createDocumentStore(externals([v('StartBtn', 'INT')]));
+  const before = doc.getState().project;
+  expect(doc.getState().updateVariable('Start', { name: 'StartBtn' }, 'globals')).toBe(false);
+  expect(renameVariable(doc, 'Start', 'StartBtn', ['globals'])).toEqual({
+    ok: false,
+    reason: '"StartBtn" is already declared in POU Other, which uses the global Start as VAR_EXTERNAL',
+  });
+  expect(doc.getState().project).toBe(before);
 });

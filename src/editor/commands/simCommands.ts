@@ -4,7 +4,7 @@
 // forces the prepared values of the watch table, Alt+F8 applies the edits kept back (apply on request). They run through the toolbar's commands (aware of
 // attached hardware), which SimKeysHost (useSimKeys) hands over while the app is mounted.
 import type { Project } from '../../model/project';
-import type { SimStore } from '../../store/simState';
+import type { SimState, SimStore } from '../../store/simState';
 import type { SimCommands } from '../hardware/useHardwareStepping';
 import { forcePrepared, preparedMessage, preparedValues, writePrepared } from '../sim/preparedValues';
 import type { EditorContext } from './editorActions';
@@ -27,6 +27,14 @@ export interface SimCommand {
 
 const mode = () => simControls.current?.sim.getState().mode;
 const notMounted = 'The simulator is not ready yet.';
+
+/** Why Apply changes has nothing to do: said as it is (an edit with errors in apply-as-you-edit is not "the program shown"). */
+function unappliedNone(s: Pick<SimState, 'onlineMode' | 'live' | 'runningProgram'>): string {
+  if (!s.live || s.runningProgram === null) return 'Nothing is running: Run starts the program shown.';
+  if (s.onlineMode !== 'request')
+    return 'Edits are applied as you make them (Online change: apply as you edit, in the Project inspector); an edit with errors is not applied until it is fixed.';
+  return 'The running program is the one shown: nothing to apply.';
+}
 
 /** Why Run / Step cannot start now. */
 const cannotStart = (): string | undefined =>
@@ -134,7 +142,7 @@ export const SIM_COMMANDS: readonly SimCommand[] = [
       !simControls.current
         ? notMounted
         : !simControls.current.sim.getState().unapplied
-          ? 'The running program is the one shown: nothing to apply.'
+          ? unappliedNone(simControls.current.sim.getState())
           : simControls.current.sim.getState().onlineChange?.kind === 'confirm'
             ? 'The change list is open: confirm or cancel it.'
             : undefined,

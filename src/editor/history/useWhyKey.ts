@@ -21,7 +21,8 @@ export function useWhyKey(sim: SimStore): void {
       const sel = ui.getState().selection;
       const layout = sim.getState().layout;
       const id = sel.elements[0];
-      if (!layout || !id || sel.network === undefined) return;
+      // Nothing recorded (never run, or Reset): no Why? to give, so `?` lists the shortcuts (CommandHost).
+      if (!layout || !id || sel.network === undefined || sim.getState().history?.last === undefined) return;
       const network = layout.networkIds.indexOf(sel.network);
       const pou = doc.getState().project.pous.find((p) => p.name === layout.pou);
       const element = pou?.networks[network]?.elements.findIndex((el) => el.id === id) ?? -1;

@@ -92,12 +92,16 @@ export interface ModalProps {
  */
 export function useModal(onClose: () => void): ModalProps {
   const entry = useRef<OpenModal | null>(null);
+  // Where the focus was before the dialog: read at its first render, before a control of the dialog
+  // takes it with autoFocus (React focuses those before this hook's layout effect runs).
+  const opener = useRef<HTMLElement | null | undefined>(undefined);
+  if (opener.current === undefined) opener.current = document.activeElement instanceof HTMLElement ? document.activeElement : null;
   if (!entry.current) entry.current = { element: null, close: onClose };
   entry.current.close = onClose;
 
   useLayoutEffect(() => {
     const modal = entry.current!;
-    const before = document.activeElement instanceof HTMLElement ? document.activeElement : null;
+    const before = opener.current ?? null;
     stack.push(modal);
     if (stack.length === 1) install();
     refocus(modal);

@@ -45,10 +45,11 @@ export function ProblemsPanel() {
   const { checked } = checkedList;
   // Declaration text not applied because it does not parse (variables panel, Text view): LD-E18.
   const pending = useStore(declarationView, (s) => s.pending);
+  const opened = useDocument((s) => s.opened);
   const textPlaces = useMemo(() => {
     const places = new Map<Diagnostic, { scope: VariableScope; line: number; col: number }>();
     for (const [scope, p] of pending)
-      for (const e of p.problems)
+      for (const e of p.opened === opened ? p.problems : [])
         if (e.severity === 'error')
           places.set(
             {
@@ -61,7 +62,7 @@ export function ProblemsPanel() {
             { scope, line: e.line, col: e.col },
           );
     return places;
-  }, [pending]);
+  }, [pending, opened]);
   const diagnostics = useMemo(
     () => (textPlaces.size ? [...textPlaces.keys(), ...checkedList.diagnostics] : checkedList.diagnostics),
     [textPlaces, checkedList.diagnostics],

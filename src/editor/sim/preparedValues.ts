@@ -3,6 +3,9 @@
 // row's Force). Writing or forcing all prepared values clears them. A field input of attached
 // hardware is never written, and is forced only through its row's confirmed "Force on hardware".
 import { createStore } from 'zustand/vanilla';
+import { parseValueText } from '../../engine/values/literals';
+import { isElementaryType } from '../../model/iecTypes';
+import { typeOfName } from '../../sim/carryOver';
 import type { SimValueInput } from '../../sim/protocol';
 import type { SimStore } from '../../store/simState';
 
@@ -51,6 +54,19 @@ export interface PreparedOutcome {
   readonly kept: readonly { readonly name: string; readonly why: string }[];
 }
 
+/**
+ * Why a prepared value cannot be written as typed ("abc" for an INT, 2 for a BOOL), or undefined: it
+ * is checked against the running program's type of the name before anything is sent, so a value the
+ * simulator would refuse stays prepared with the reason instead of being reported written.
+ */
+function refusal(sim: SimStore, v: PreparedValue): string | undefined {
+  if (!('text' in v.input)) return undefined;
+  const type = typeOfName(sim.getState().layout, v.name);
+  if (!type || !isElementaryType(type)) return undefined;
+  const parsed = parseValueText(type, v.input.text);
+  return parsed.ok ? undefined : parsed.message;
+}
+
 /** Ctrl+F7: writes every prepared value once (an input: at the next input read) and clears them. */
 export function writePrepared(sim: SimStore): PreparedOutcome {
   const done: string[] = [];
@@ -58,6 +74,11 @@ export function writePrepared(sim: SimStore): PreparedOutcome {
   for (const v of preparedValues.getState().values.values()) {
     if (v.field) {
       kept.push({ name: v.name, why: `a field input (${v.field}) comes from the device: force it with its row's Force on hardware` });
+      continue;
+    }
+    const why = refusal(sim, v);
+    if (why) {
+      kept.push({ name: v.name, why });
       continue;
     }
     sim.getState().write(v.name, v.input);
@@ -80,6 +101,11 @@ export function forcePrepared(sim: SimStore): PreparedOutcome {
       kept.push({ name: v.name, why: `forcing a field input (${v.field}) drives outputs on the hardware: confirm with its row's Force on hardware` });
       continue;
     }
+    const why = refusal(sim, v);
+    if (why) {
+      kept.push({ name: v.name, why });
+      continue;
+    }
     sim.getState().force(v.name, v.input);
     preparedValues.getState().discard(v.name);
     done.push(v.name);
@@ -92,6 +118,6 @@ export function preparedMessage(verb: 'Wrote' | 'Forced', outcome: PreparedOutco
   if (outcome.done.length === 0 && outcome.kept.length === 0)
     return `No prepared values: type one in the Watch table's "Prepared value" column, then press ${verb === 'Wrote' ? 'Ctrl+F7' : 'F7'}.`;
   const done = outcome.done.length ? `${verb} ${outcome.done.join(', ')}.` : '';
-  const kept = outcome.kept.map((k) => `${k.name} not ${verb.toLowerCase()}: ${k.why}.`).join(' ');
+  const kept = outcome.kept.map((k) => `${k.name} not ${verb === 'Wrote' ? 'written' : 'forced'}: ${k.why}.`).join(' ');
   return [done, kept].filter(Boolean).join(' ');
 }

@@ -32,6 +32,8 @@ interface Props {
 }
 
 const NO_VARS: readonly Variable[] = [];
+const CHANGED_ELSEWHERE =
+  'The variables changed elsewhere (table, undo) while this text has changes: applying it makes them what the text says; Revert shows them.';
 /** Texts longer than this (about 200 declarations) are checked once typing pauses for PAUSE_MS. */
 const LONG_TEXT = 8000;
 const PAUSE_MS = 150;
@@ -71,36 +73,46 @@ export function DeclarationText({ scope, pouName }: Props) {
   );
   const section: DeclarationSection = scope === 'globals' ? 'globals' : 'pou';
   const printed = useMemo(() => printDeclarations(vars, section), [vars, section]);
+  /** The project shown (another one opened: its own lists, none of this one's drafts). */
+  const opened = useDocument((s) => s.opened);
+  const shown = `${opened}:${scope}`;
   const owner = pouName ?? 'Global variables';
-  const [draft, setDraftState] = useState(() => draftOf(scope) ?? printed);
+  const [draft, setDraftState] = useState(() => draftOf(scope, opened)?.text ?? printed);
+  /** The text the draft started from: while they are equal, model changes re-print the text. */
+  const [basis, setBasis] = useState(() => draftOf(scope, opened)?.basis ?? printed);
+  /** The variables changed elsewhere while the text had changes (kept with the draft: said again when the view reopens). */
+  const [stale, setStale] = useState(() => draftOf(scope, opened)?.stale ?? false);
   const setDraft = (text: string) => {
     setDraftState(text);
     // Kept only while it says something the variables do not (typed back to them: nothing kept).
-    keepDraft(scope, text === printed ? undefined : text);
+    keepDraft(scope, text === printed ? undefined : { opened, text, basis, stale });
   };
-  /** The text the draft started from: while they are equal, model changes re-print the text. */
-  const [basis, setBasis] = useState(printed);
-  const [shownScope, setShownScope] = useState(scope);
-  const [note, setNote] = useState('');
+  const [shownScope, setShownScope] = useState(shown);
+  const [note, setNote] = useState(() => (draftOf(scope, opened)?.stale ? CHANGED_ELSEWHERE : ''));
   const area = useRef<HTMLTextAreaElement>(null);
   const gutter = useRef<HTMLDivElement>(null);
   const escaped = useRef(false);
 
   // Another list, or the model changed while the text has no changes of its own: show it afresh.
-  if (shownScope !== scope) {
-    setShownScope(scope);
-    setDraftState(draftOf(scope) ?? printed);
-    setBasis(printed);
-    setNote('');
+  // A draft kept while the view was closed (or showed another list) comes back with the basis it
+  // started from, so a change made meanwhile (a name declared from the canvas) is said here too.
+  if (shownScope !== shown) {
+    const kept = draftOf(scope, opened);
+    setShownScope(shown);
+    setDraftState(kept?.text ?? printed);
+    setBasis(kept?.basis ?? printed);
+    setStale(kept?.stale ?? false);
+    setNote(kept?.stale ? CHANGED_ELSEWHERE : '');
   } else if (basis !== printed) {
     setBasis(printed);
     if (draft === basis) {
       setDraftState(printed);
       keepDraft(scope, undefined);
-    } else
-      setNote(
-        'The variables changed elsewhere (table, undo) while this text has changes: applying it makes them what the text says; Revert shows them.',
-      );
+    } else {
+      setStale(true);
+      keepDraft(scope, { opened, text: draft, basis: printed, stale: true });
+      setNote(CHANGED_ELSEWHERE);
+    }
   }
 
   // Parsed and checked behind the typing: at once for a POU's few lines (deferred, so the
@@ -129,8 +141,8 @@ export function DeclarationText({ scope, pouName }: Props) {
   const checkedDirty = checkedDraft !== printed;
   useEffect(() => {
     const errors = parsed.problems.filter((p) => p.severity === 'error');
-    setPending(scope, checkedDirty && errors.length > 0 ? { owner, problems: errors } : undefined);
-  }, [scope, checkedDirty, parsed, owner]);
+    setPending(scope, checkedDirty && errors.length > 0 ? { opened, owner, problems: errors } : undefined);
+  }, [scope, checkedDirty, parsed, owner, opened]);
 
   const caretTo = (line: number, col: number, focus = true) => {
     const el = area.current;
@@ -178,6 +190,7 @@ export function DeclarationText({ scope, pouName }: Props) {
     setDraftState(reprinted);
     keepDraft(scope, undefined);
     setBasis(reprinted);
+    setStale(false);
     setNote('');
     setPending(scope, undefined);
     return true;
@@ -186,6 +199,8 @@ export function DeclarationText({ scope, pouName }: Props) {
   const revert = () => {
     setDraftState(printed);
     keepDraft(scope, undefined);
+    setBasis(printed);
+    setStale(false);
     setNote('');
     setPending(scope, undefined);
   };

@@ -173,8 +173,19 @@ export function VariablesPanel() {
   const change = (v: Variable, patch: Partial<Variable>) => {
     setFocusName(undefined);
     if (store.getState().updateVariable(v.name, patch, scope)) setRefusal('');
-    else if (patch.name !== undefined)
-      setRefusal(`Cannot rename "${v.name}" to "${patch.name}": that name is already declared here.`);
+    else if (patch.name !== undefined) {
+      const to = patch.name.toUpperCase();
+      // A global is renamed in the POUs declaring it VAR_EXTERNAL too: the name may be taken there.
+      const inPou =
+        scope === 'globals'
+          ? store.getState().project.pous.find((p) => p.variables.some((w) => w.varClass === 'external' && w.name.toUpperCase() === v.name.toUpperCase()) && p.variables.some((w) => w.name.toUpperCase() === to))
+          : undefined;
+      setRefusal(
+        inPou
+          ? `Cannot rename "${v.name}" to "${patch.name}": ${inPou.name} declares ${v.name} VAR_EXTERNAL and already has a variable "${patch.name}".`
+          : `Cannot rename "${v.name}" to "${patch.name}": that name is already declared here.`,
+      );
+    }
   };
 
   return (

@@ -20,6 +20,8 @@ function readView(): VariablesView {
 
 /** Syntax errors of text typed in the text view and not applied (it does not parse). */
 export interface PendingText {
+  /** The project it was typed in (DocumentState.opened): another project opened since shows none of it. */
+  readonly opened: number;
   /** Who it declares, for the Problems list: the POU's name, or "Global variables". */
   readonly owner: string;
   readonly problems: readonly DeclarationProblem[];
@@ -59,7 +61,7 @@ export function setVariablesView(view: VariablesView): void {
 }
 
 const pendingKey = (p: PendingText | undefined) =>
-  p ? `${p.owner}\n${p.problems.map((e) => `${e.severity}:${e.line}:${e.col}:${e.message}`).join('\n')}` : '';
+  p ? `${p.opened}\n${p.owner}\n${p.problems.map((e) => `${e.severity}:${e.line}:${e.col}:${e.message}`).join('\n')}` : '';
 
 /** Records (or clears) the syntax errors of a list's unapplied text; no change, no notification. */
 export function setPending(scope: VariableScope, pending: PendingText | undefined): void {
@@ -71,12 +73,26 @@ export function setPending(scope: VariableScope, pending: PendingText | undefine
   declarationView.setState({ pending: next });
 }
 
+/** Unapplied text of a list: the text, the printed variables it was last in step with, and whether they changed since. */
+export interface Draft {
+  /** The project it was typed in (DocumentState.opened): another project opened since has no draft. */
+  readonly opened: number;
+  readonly text: string;
+  /** The variables as printed when the text last followed them: printed differently now means they changed elsewhere. */
+  readonly basis: string;
+  /** The variables changed elsewhere while this text had changes (the text view says so until applied or reverted). */
+  readonly stale: boolean;
+}
+
 /** Unapplied text per list, kept while the text view is closed (read when it opens again). */
-const drafts = new Map<VariableScope, string>();
-export const draftOf = (scope: VariableScope): string | undefined => drafts.get(scope);
-export function keepDraft(scope: VariableScope, text: string | undefined): void {
-  if (text === undefined) drafts.delete(scope);
-  else drafts.set(scope, text);
+const drafts = new Map<VariableScope, Draft>();
+export const draftOf = (scope: VariableScope, opened: number): Draft | undefined => {
+  const d = drafts.get(scope);
+  return d?.opened === opened ? d : undefined;
+};
+export function keepDraft(scope: VariableScope, draft: Draft | undefined): void {
+  if (draft === undefined) drafts.delete(scope);
+  else drafts.set(scope, draft);
 }
 
 let seq = 0;

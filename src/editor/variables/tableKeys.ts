@@ -16,12 +16,14 @@ export function isTextField(target: EventTarget | null): boolean {
 
 /**
  * A paste into the table that is a symbol table: any text pasted outside a text field, or text of
- * several cells (a tab or a line break) pasted into one: a single word pasted into a field stays
- * the field's.
+ * several cells (a tab or a line break) pasted into a one-line field: a single word pasted into a
+ * field stays the field's, and so does anything pasted into a text area (the text view).
  */
 export function isTablePaste(target: EventTarget | null, text: string): boolean {
   if (text.trim() === '') return false;
   if (!isTextField(target)) return true;
+  // A field of several lines (the declarations' text view) takes text of several lines as text.
+  if (target instanceof HTMLElement && (target.tagName === 'TEXTAREA' || target.isContentEditable)) return false;
   const t = text.replace(/[\r\n]+$/, '');
   return t.includes('\t') || t.includes('\n');
 }

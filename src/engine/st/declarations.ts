@@ -476,9 +476,9 @@ export function sameDeclaration(a: Variable, b: Variable): boolean {
 }
 
 export interface DeclarationEdit {
-  /** Exactly one name changed at the same position: a rename (uses follow). */
-  readonly rename?: { readonly from: string; readonly to: string };
-  /** Old variables the text no longer declares (after the rename). */
+  /** Names changed at the same position, the rest of the list in place: renames (uses follow). */
+  readonly renames?: readonly { readonly from: string; readonly to: string }[];
+  /** Old variables the text no longer declares (after the renames). */
   readonly removed: readonly string[];
   /** Existing variables (by their name after the rename) whose declaration changed, with the new one. */
   readonly updated: readonly { readonly name: string; readonly after: Variable }[];
@@ -489,9 +489,10 @@ export interface DeclarationEdit {
 }
 
 /**
- * What turns `before` into `after`. Variables are matched by name (case-insensitive). When exactly
- * one old name is gone and one new name appears, at the same position in both lists, it is a
- * rename. For globals, `after` takes `scope` (configuration/resource) of the variable it matches.
+ * What turns `before` into `after`. Variables are matched by name (case-insensitive). When the old
+ * names gone and the new names that appear are as many, each new one at the position of an old one
+ * in both lists (Start → StartBtn and Motor → Pump in one edit), they are renames. For globals,
+ * `after` takes `scope` (configuration/resource) of the variable it matches.
  */
 export function planDeclarationEdit(before: readonly Variable[], after: readonly Variable[]): DeclarationEdit {
   const key = (v: Variable) => v.name.toUpperCase();
@@ -499,28 +500,29 @@ export function planDeclarationEdit(before: readonly Variable[], after: readonly
   const newKeys = new Set(after.map(key));
   const gone = before.filter((v) => !newKeys.has(key(v)));
   const fresh = after.filter((v) => !oldByKey.has(key(v)));
-  let rename: DeclarationEdit['rename'];
-  if (gone.length === 1 && fresh.length === 1) {
-    const from = gone[0]!;
-    const to = fresh[0]!;
-    if (before.indexOf(from) === after.indexOf(to)) rename = { from: from.name, to: to.name };
-  }
+  const renames =
+    gone.length > 0 && gone.length === fresh.length && gone.every((from, i) => before.indexOf(from) === after.indexOf(fresh[i]!))
+      ? gone.map((from, i) => ({ from: from.name, to: fresh[i]!.name }))
+      : [];
+  /** New name (upper case) -> the old variable it renames. */
+  const renamedFrom = new Map(renames.map((r) => [r.to.toUpperCase(), oldByKey.get(r.from.toUpperCase())!]));
   const updated: { name: string; after: Variable }[] = [];
   const added: Variable[] = [];
   for (const v of after) {
-    const old = rename && key(v) === rename.to.toUpperCase() ? oldByKey.get(rename.from.toUpperCase()) : oldByKey.get(key(v));
+    const from = renamedFrom.get(key(v));
+    const old = from ?? oldByKey.get(key(v));
     if (!old) {
       added.push(v);
       continue;
     }
     const next: Variable = old.scope !== undefined ? { ...v, scope: old.scope } : v;
-    const renamedOld = rename && old.name === rename.from ? { ...old, name: v.name } : old;
+    const renamedOld = from ? { ...old, name: v.name } : old;
     if (!sameDeclaration(renamedOld, next))
       updated.push({ name: renamedOld.name, after: next });
   }
   return {
-    ...(rename ? { rename } : {}),
-    removed: gone.filter((v) => !rename || v.name !== rename.from).map((v) => v.name),
+    ...(renames.length ? { renames } : {}),
+    removed: gone.filter((v) => !renames.some((r) => r.from === v.name)).map((v) => v.name),
     updated,
     added,
     order: after.map((v) => v.name),
