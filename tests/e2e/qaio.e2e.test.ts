@@ -1,0 +1,82 @@
+// Exploratory QA of live I/O safety, the bugs it found, in a real Chromium against a gateway serving
+// the built app with its simulated device. The device's coils are read back over Modbus TCP with
+// mbpoll (coil 800 + n drives discrete input n), never from the page.
+import { chromium, type Browser, type Locator, type Page } from 'playwright-core';
+import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
+import { resolveConfig } from '../../src/gateway/config';
+import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
+import { eventually, mbpoll, mbpollValues } from '../gateway/helpers';
+import { openApp } from './appPage';
+import { CHROMIUM_ARGS, CHROMIUM_PATH } from './browser';
+import { SimPage } from './simPage';
+
+describe('live I/O: leaving the page', () => {
+  let gw: RunningGateway;
+  // Users' browsers keep a page left for another address in the back/forward cache, frozen, with its
+  // workers; Playwright turns that cache off by default, so this file's Chromium has it on again.
+  let chromiumWithCache: Browser | undefined;
+  beforeAll(async () => {
+    gw = await startGateway({ port: 0, config: resolveConfig({ simulated: { modbusPort: 0 } }), distDir: 'dist' });
+    chromiumWithCache = await chromium.launch({ executablePath: CHROMIUM_PATH, args: CHROMIUM_ARGS, headless: true, ignoreDefaultArgs: ['--disable-back-forward-cache'] });
+  });
+  afterAll(async () => {
+    await chromiumWithCache?.close();
+    await gw?.close();
+  });
+  const browser = () => chromiumWithCache!;
+  const pages: Page[] = [];
+  afterEach(async () => {
+    for (const p of pages.splice(0)) await p.close().catch(() => undefined);
+    await mbpoll(port(), ['-t', '0', '-r', '800', '127.0.0.1', '0', '0']);
+  });
+
+  const port = () => gw.simulated?.modbusServerPort ?? 0;
+  const coils = async (count = 2) => mbpollValues(await mbpoll(port(), ['-t', '0', '-r', '0', '-c', String(count), '127.0.0.1']));
+  const deviceInput = (n: number, on: boolean) => mbpoll(port(), ['-t', '0', '-r', String(800 + n), '127.0.0.1', on ? '1' : '0']);
+
+  async function connect(panel: Locator) {
+    await panel.getByTestId('hw-connect').click();
+    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
+  }
+
+  async function openOnHardware(example: string) {
+    const { page, errors } = await openApp(browser(), gw.url);
+    pages.push(page);
+    const sim = new SimPage(page);
+    await sim.openExample(example);
+    await page.getByTestId('tab-hardware').click();
+    const panel = page.getByTestId('hardware-panel');
+    await connect(panel);
+    return { page, errors, sim, panel };
+  }
+
+  it('going to another address in the tab while outputs are ON switches them off at once and frees the lease; the page brought back is Stopped', async () => {
+    const { page, errors, sim } = await openOnHardware('Motor start/stop (seal-in)');
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await deviceInput(0, true);
+    await eventually(async () => (await coils())[0] === 1, 10_000, 'Motor on the device');
+    await deviceInput(0, false); // sealed in: the motor stays on by the program alone
+
+    // The page goes into the back/forward cache, frozen. Its link must not stay open: the gateway
+    // sees the controller go (not a watchdog trip later), writes the safe state and frees the lease.
+    await page.goto('about:blank');
+    await eventually(() => !gw.hub.status().armed, 10_000, 'disarmed');
+    expect(gw.hub.status().disarm?.cause).toBe('controller-lost');
+    expect(gw.hub.status().controller).toBe(false);
+    await eventually(async () => (await coils())[0] === 0, 10_000, 'Motor off on the device');
+
+    // The page opened next is the controller, not an observer of a frozen page's lease.
+    const other = await openOnHardware('Motor start/stop (seal-in)');
+    expect(gw.hub.status().controller).toBe(true);
+    await other.page.close();
+
+    // Back from the cache: Stopped, saying why, and nothing armed.
+    await page.goBack({ waitUntil: 'commit' });
+    await sim.waitForMode('Stopped');
+    await expect.poll(() => page.getByTestId('sim-notice').textContent()).toMatch(/the page was left while linked to the hardware/);
+    expect(gw.hub.status().armed).toBe(false);
+    expect((await coils())[0]).toBe(0);
+    expect(errors).toEqual([]);
+  });
+});
