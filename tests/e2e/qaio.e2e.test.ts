@@ -79,4 +79,32 @@ describe('live I/O: leaving the page', () => {
     expect((await coils())[0]).toBe(0);
     expect(errors).toEqual([]);
   });
+
+  it('a page that asked to be controller while another page holds the lease runs as observer, and its toolbar says its outputs are not driven', async () => {
+    const a = await openOnHardware('Motor start/stop (seal-in)');
+    await a.sim.button('run').click();
+    await a.sim.waitForMode('Running');
+    await expect.poll(() => gw.hub.status().armed).toBe(true);
+
+    const { page, errors } = await openApp(browser(), gw.url);
+    pages.push(page);
+    const sim = new SimPage(page);
+    await sim.openExample('Parts counter (CTU)');
+    await page.getByTestId('tab-hardware').click();
+    const panel = page.getByTestId('hardware-panel');
+    expect(await panel.getByTestId('hw-role').inputValue()).toBe('controller');
+    await panel.getByTestId('hw-connect').click();
+    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as observer');
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await expect
+      .poll(() => page.getByTestId('hw-run-observer').textContent())
+      .toBe('Outputs not driven — this page is connected as observer (read only); another page is the controller. Disconnect and connect as controller to drive them.');
+    expect(gw.hub.status().armed).toBe(true); // page A still drives
+    await sim.button('pause').click();
+    await sim.waitForMode('Paused');
+    await page.getByTestId('hw-run-observer').waitFor({ state: 'detached' });
+    expect(errors).toEqual([]);
+    expect(a.errors).toEqual([]);
+  });
 });
