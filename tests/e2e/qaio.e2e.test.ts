@@ -107,4 +107,41 @@ describe('live I/O: leaving the page', () => {
     expect(errors).toEqual([]);
     expect(a.errors).toEqual([]);
   });
+
+  it('a prepared value typed for an input before the hardware was attached is not forced by F7 on the device: it asks for Force on hardware', async () => {
+    const { page, errors } = await openApp(browser(), gw.url);
+    pages.push(page);
+    const sim = new SimPage(page);
+    await sim.openExample('Motor start/stop (seal-in)');
+    // Not connected yet: Start is a plain input, and TRUE is prepared for it in the Watch table.
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await sim.tab('Watch');
+    await page.getByTestId('watch-add-name').fill('Start');
+    await page.getByTestId('watch-add').click();
+    const start = page.getByTestId('watch-row-Start');
+    await start.getByTestId('watch-input').fill('TRUE');
+    await sim.button('reset').click();
+    await sim.waitForMode('Stopped');
+
+    // Connected as controller and running on the device: Start now comes from the device.
+    await page.getByTestId('tab-hardware').click();
+    await connect(page.getByTestId('hardware-panel'));
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await expect.poll(() => gw.hub.status().armed).toBe(true);
+    await sim.tab('Watch');
+    await page.getByTestId('watch-panel').click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press('F7');
+    await expect.poll(() => page.getByTestId('status-bar').textContent()).toMatch(/Start not forced: forcing a field input \(%IX0\.0\) drives outputs on the hardware: confirm with its row's Force on hardware/);
+    await page.keyboard.press('Control+F7');
+    await expect.poll(() => page.getByTestId('status-bar').textContent()).toMatch(/Start not written: a field input \(%IX0\.0\) comes from the device/);
+    const from = Number(await page.getByTestId('sim-scan').textContent());
+    await expect.poll(async () => Number(await page.getByTestId('sim-scan').textContent()), { timeout: 30_000 }).toBeGreaterThan(from + 20);
+    expect(await sim.value('Start')).toBe(false);
+    expect(await sim.value('Motor')).toBe(false);
+    expect((await coils())[0]).toBe(0);
+    await sim.button('pause').click();
+    expect(errors).toEqual([]);
+  });
 });

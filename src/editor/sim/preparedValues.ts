@@ -3,6 +3,7 @@
 // row's Force). Writing or forcing all prepared values clears them. A field input of attached
 // hardware is never written, and is forced only through its row's confirmed "Force on hardware".
 import { createStore } from 'zustand/vanilla';
+import { fieldInputAddress } from '../hardware/fieldIo';
 import type { SimValueInput } from '../../sim/protocol';
 import type { SimStore } from '../../store/simState';
 
@@ -44,6 +45,15 @@ export const preparedValues = createStore<PreparedState>()((set, get) => ({
   clear: () => set({ values: new Map() }),
 }));
 
+/**
+ * The device address when the prepared value's variable is a field input now, as it is written or
+ * forced: a value typed before the hardware was attached must not slip past the confirmation.
+ */
+function fieldOf(sim: SimStore, v: PreparedValue): string | undefined {
+  const s = sim.getState();
+  return fieldInputAddress(s.layout?.variables[s.variableIndex.get(v.name.toUpperCase()) ?? -1]) ?? v.field;
+}
+
 /** What writing or forcing the prepared values did, as the status line says it. */
 export interface PreparedOutcome {
   readonly done: readonly string[];
@@ -56,8 +66,9 @@ export function writePrepared(sim: SimStore): PreparedOutcome {
   const done: string[] = [];
   const kept: { name: string; why: string }[] = [];
   for (const v of preparedValues.getState().values.values()) {
-    if (v.field) {
-      kept.push({ name: v.name, why: `a field input (${v.field}) comes from the device: force it with its row's Force on hardware` });
+    const field = fieldOf(sim, v);
+    if (field) {
+      kept.push({ name: v.name, why: `a field input (${field}) comes from the device: force it with its row's Force on hardware` });
       continue;
     }
     sim.getState().write(v.name, v.input);
@@ -76,8 +87,9 @@ export function forcePrepared(sim: SimStore): PreparedOutcome {
       kept.push({ name: v.name, why: 'function block pins cannot be forced' });
       continue;
     }
-    if (v.field) {
-      kept.push({ name: v.name, why: `forcing a field input (${v.field}) drives outputs on the hardware: confirm with its row's Force on hardware` });
+    const field = fieldOf(sim, v);
+    if (field) {
+      kept.push({ name: v.name, why: `forcing a field input (${field}) drives outputs on the hardware: confirm with its row's Force on hardware` });
       continue;
     }
     sim.getState().force(v.name, v.input);
@@ -92,6 +104,6 @@ export function preparedMessage(verb: 'Wrote' | 'Forced', outcome: PreparedOutco
   if (outcome.done.length === 0 && outcome.kept.length === 0)
     return `No prepared values: type one in the Watch table's "Prepared value" column, then press ${verb === 'Wrote' ? 'Ctrl+F7' : 'F7'}.`;
   const done = outcome.done.length ? `${verb} ${outcome.done.join(', ')}.` : '';
-  const kept = outcome.kept.map((k) => `${k.name} not ${verb.toLowerCase()}: ${k.why}.`).join(' ');
+  const kept = outcome.kept.map((k) => `${k.name} not ${verb === 'Wrote' ? 'written' : 'forced'}: ${k.why}.`).join(' ');
   return [done, kept].filter(Boolean).join(' ');
 }
