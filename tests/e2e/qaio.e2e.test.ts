@@ -144,4 +144,41 @@ describe('live I/O: leaving the page', () => {
     await sim.button('pause').click();
     expect(errors).toEqual([]);
   });
+
+  it('a force made before the hardware was attached ends as the link opens as controller, and Run leaves the motor off', async () => {
+    const { page, errors } = await openApp(browser(), gw.url);
+    pages.push(page);
+    const sim = new SimPage(page);
+    await sim.openExample('Motor start/stop (seal-in)');
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await sim.tab('Watch');
+    await page.getByTestId('watch-add-name').fill('Start');
+    await page.getByTestId('watch-add').click();
+    const start = page.getByTestId('watch-row-Start');
+    await start.getByTestId('watch-input').fill('TRUE');
+    await start.getByTestId('watch-force').click(); // in simulation: no hardware, no confirmation
+    await expect.poll(() => start.getByTestId('watch-value').textContent()).toBe('TRUE F');
+    await sim.button('reset').click();
+    await sim.waitForMode('Stopped');
+    expect(await start.getByTestId('watch-value').textContent()).toBe('TRUE F'); // forces outlive Reset
+
+    await page.getByTestId('tab-hardware').click();
+    await connect(page.getByTestId('hardware-panel'));
+    await expect
+      .poll(() => page.getByTestId('sim-notice').textContent())
+      .toMatch(/^Unforced Start \(%IX0\.0\): forces made before the hardware was attached are not carried onto it\./);
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await expect.poll(() => gw.hub.status().armed).toBe(true);
+    const from = Number(await page.getByTestId('sim-scan').textContent());
+    await expect.poll(async () => Number(await page.getByTestId('sim-scan').textContent()), { timeout: 30_000 }).toBeGreaterThan(from + 20);
+    expect(await sim.value('Start')).toBe(false);
+    expect(await sim.value('Motor')).toBe(false);
+    expect((await coils())[0]).toBe(0);
+    await sim.tab('Watch');
+    expect(await start.getByTestId('watch-value').textContent()).toBe('FALSE');
+    await sim.button('pause').click();
+    expect(errors).toEqual([]);
+  });
 });
