@@ -15,7 +15,7 @@
  */
 import type { Value } from '../model/iecTypes';
 import { PROTOCOL_VERSION } from '../protocol/messages';
-import { canonicalAddress, type PointType, type WireValue } from '../protocol/points';
+import { canonicalAddress, zeroOf, type PointType, type WireValue } from '../protocol/points';
 import type { GatewayDrive, GatewayHostMessage, GatewayWorkerMessage, SimFrame } from '../sim/protocol';
 import type { SocketLike } from './GatewayClient';
 import { OutputPump } from './outputPump';
@@ -37,6 +37,13 @@ interface Link {
   /** Output point types by address (from the welcome). */
   outTypes: Map<string, PointType>;
   values: Record<string, WireValue>;
+  /**
+   * Outputs written through this link since the gateway last disarmed (it then writes the safe
+   * image itself). One the program shown no longer writes, after an online change moved or removed
+   * its variable, is written OFF/0: the gateway keeps the last value of a point it is not sent, so
+   * it would stay ON with no program switching it off.
+   */
+  driven: Map<string, PointType>;
 }
 
 const OPEN = 1;
@@ -118,11 +125,18 @@ export class GatewayRelay {
     const drive = this.drive;
     if (!drive || !this.programs.has(program)) return; // only the program shown drives the outputs
     const next: Record<string, WireValue> = { ...this.image };
+    const written = new Set<string>();
     for (const [text, value] of Object.entries(outputs)) {
       const address = canonicalAddress(text);
       const type = address ? drive.link.outTypes.get(address) : undefined;
-      if (address && type) next[address] = toWire(type, value);
+      if (address && type) {
+        next[address] = toWire(type, value);
+        written.add(address);
+      }
     }
+    // `outputs` is the program's whole output image: a point driven before and missing now is no longer its output.
+    for (const [address, type] of drive.link.driven) if (!written.has(address)) next[address] = zeroOf(type);
+    for (const address of written) drive.link.driven.set(address, drive.link.outTypes.get(address)!);
     this.image = next;
     this.imageOf = program;
     this.pump.offer(next);
@@ -136,7 +150,7 @@ export class GatewayRelay {
       this.post({ type: 'gwEvent', id, event: 'close', code: 1006, reason: e instanceof Error ? e.message : String(e) });
       return;
     }
-    const link: Link = { id, socket, role: null, pollMs: undefined, outTypes: new Map(), values: {} };
+    const link: Link = { id, socket, role: null, pollMs: undefined, outTypes: new Map(), values: {}, driven: new Map() };
     this.links.set(id, link);
     this.current = link;
     socket.onopen = () => this.post({ type: 'gwEvent', id, event: 'open' });
@@ -156,7 +170,7 @@ export class GatewayRelay {
 
   /** What the relay needs from the gateway's messages: role, point types, input values. */
   private observe(link: Link, text: string): void {
-    let m: { t?: unknown; role?: unknown; pollMs?: unknown; points?: unknown; values?: unknown };
+    let m: { t?: unknown; role?: unknown; pollMs?: unknown; points?: unknown; values?: unknown; armed?: unknown };
     try {
       m = JSON.parse(text) as typeof m;
     } catch {
@@ -171,6 +185,8 @@ export class GatewayRelay {
           if (typeof p.address === 'string' && p.dir === 'out') link.outTypes.set(p.address, p.type as PointType);
         }
       }
+    } else if (m.t === 'status' && m.armed === false) {
+      link.driven.clear(); // disarmed: the gateway holds every output in the safe state
     } else if ((m.t === 'image' || m.t === 'inputs' || m.t === 'written') && m.values && typeof m.values === 'object') {
       const values = m.values as Record<string, WireValue>;
       link.values = m.t === 'image' ? { ...values } : { ...link.values, ...values };

@@ -6,7 +6,8 @@ export interface SimTransport {
   send(message: HostMessage): void;
   /** Returns an unsubscribe function. */
   listen(listener: (message: WorkerMessage) => void): () => void;
-  terminate(): void;
+  /** Ends the worker and whatever it held (the gateway link's socket); `reason` says why, in plain words. */
+  terminate(reason?: string): void;
 }
 
 /** A transport over the real Web Worker (browser only). */
@@ -34,12 +35,12 @@ export function createWorkerTransport(): SimTransport {
       listeners.add(listener);
       return () => listeners.delete(listener);
     },
-    terminate() {
+    terminate(reason = 'the worker was terminated') {
       if (!worker) return;
       worker.terminate();
       worker = undefined;
       // Whatever the worker held (the gateway link's socket) is gone with it.
-      const message: WorkerMessage = { type: 'error', message: 'the simulator stopped: the worker was terminated' };
+      const message: WorkerMessage = { type: 'error', message: `the simulator stopped: ${reason}` };
       for (const listener of listeners) listener(message);
     },
   };

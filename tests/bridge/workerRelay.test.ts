@@ -149,4 +149,51 @@ describe('controller outputs from where the program runs', () => {
     await eventually(async () => (await coil(4)) === 0, 5000, 'safe state');
     client.disconnect();
   });
+
+  it('an online change that moves an output to another address switches the old one off; it is not left ON with no program writing it', async () => {
+    const listeners = new Set<(m: WorkerMessage) => void>();
+    const relay = new GatewayRelay((m) => listeners.forEach((l) => l(m)), (url) => new WebSocket(url) as unknown as SocketLike, {
+      setInputs: () => undefined,
+      wantOutputs: () => undefined,
+    });
+    const transport: SimTransport = {
+      send: (m) => {
+        if (m.type.startsWith('gw')) queueMicrotask(() => relay.handle(m as Parameters<GatewayRelay['handle']>[0]));
+      },
+      listen: (l) => {
+        listeners.add(l);
+        return () => listeners.delete(l);
+      },
+      terminate: () => undefined,
+    };
+    const client = new GatewayClient({ socketUrl: `ws://127.0.0.1:${gw.port}/io`, token: gw.token, role: 'controller', socketFactory: workerSocketFactory(transport) });
+    client.connect();
+    await eventually(() => client.snapshot.link === 'open' && client.snapshot.status !== null, 5000, 'open through the relay');
+    const bridge = new GatewayBridge(client, workerDriver(transport));
+    transport.send({ type: 'gwPrograms', ids: ['P'] });
+    bridge.requestArm();
+    const { bindings } = checkBindings(project, client.snapshot.points);
+    const detach = bridge.attach({ setInputs: () => undefined, onOutputs: () => () => undefined }, bindings);
+    relay.frame(frame('running'));
+    await eventually(() => client.snapshot.status?.armed === true, 5000, 'armed');
+    relay.outputs({ '%QX0.1': true }, 'P');
+    await eventually(async () => (await coil(1)) === 1, 5000, 'Q ON at %QX0.1');
+
+    // Applied online: Q now at %QX0.5 (the page tells the worker the program shown changed).
+    transport.send({ type: 'gwPrograms', ids: ['P2'] });
+    await new Promise((r) => queueMicrotask(() => r(undefined)));
+    relay.outputs({ '%QX0.5': true }, 'P2');
+    await eventually(async () => (await coil(5)) === 1, 5000, 'Q ON at its new address');
+    await eventually(async () => (await coil(1)) === 0, 5000, 'the old address switched off');
+    // The heartbeat keeps it off, and the gateway stays armed for the program's own output.
+    relay.outputs({ '%QX0.5': true }, 'P2');
+    expect(gw.hub.status().armed).toBe(true);
+    expect(await coil(1)).toBe(0);
+
+    relay.frame(frame('paused'));
+    await eventually(async () => (await coil(5)) === 0, 5000, 'safe state');
+    detach();
+    client.disconnect();
+    await eventually(() => !gw.hub.status().controller, 5000, 'lease released');
+  });
 });

@@ -4,6 +4,7 @@
 import { useEffect, useRef } from 'react';
 import { gatewayLink } from '../../bridge/gatewayLink';
 import { checkBindings } from '../../bridge/mapping';
+import { canonicalAddress } from '../../protocol/points';
 import type { SimState } from '../../store/simState';
 import { selectProject, useDocument } from '../../store/documentStore';
 import { useSim, useSimStore } from '../sim/simContext';
@@ -20,6 +21,33 @@ export function HardwareSimLink() {
   const { link, role, points } = useGateway();
   const stepping = useSteppingView().phase === 'stepping';
   const wasRunning = useRef(false);
+  const wasAttached = useRef(false);
+
+  useEffect(() => {
+    // Forces made before this page drove the hardware (in simulation, as observer, or in an earlier
+    // link) were never confirmed for it: carried onto the device, a forced input or output would
+    // drive real outputs at the next Run or Arm without a word. They end as the hardware attaches,
+    // and the notice says which; a force on the hardware is made again (inputs with its confirmation).
+    const attached = link === 'open' && role === 'controller';
+    if (!attached || wasAttached.current) {
+      wasAttached.current = attached;
+      return;
+    }
+    wasAttached.current = true;
+    const s = sim.getState();
+    const ended: string[] = [];
+    for (const name of s.forced.keys()) {
+      const variable = s.layout?.variables[s.variableIndex.get(name) ?? -1];
+      const address = variable?.location ? canonicalAddress(variable.location) : undefined;
+      if (!variable || !address || !points.some((p) => p.address === address)) continue;
+      s.unforce(variable.name);
+      ended.push(`${variable.name} (${address})`);
+    }
+    if (ended.length > 0)
+      sim.setState({
+        notice: `Unforced ${ended.join(', ')}: forces made before the hardware was attached are not carried onto it. Force again on the hardware if you mean it (a field input asks to confirm).`,
+      });
+  }, [link, role, points, sim]);
 
   useEffect(() => {
     if (stepping) {

@@ -113,6 +113,14 @@ export function SteppingBadge() {
         </span>
       );
     }
+    if (running && gateway.link === 'open' && gateway.role === 'observer') {
+      // Asked as controller while another page held the lease, a page is an observer: what it runs is not what drives the hardware.
+      return (
+        <span className="rs-hw-running-disarmed" role="status" data-testid="hw-run-observer">
+          <strong>Outputs not driven</strong> — this page is connected as observer (read only){status?.controller ? '; another page is the controller' : ''}. Disconnect and connect as controller to drive them.
+        </span>
+      );
+    }
     if (!running || gateway.link !== 'open' || gateway.role !== 'controller' || status?.armed !== false) return null;
     return (
       <span className="rs-hw-running-disarmed" role="status" data-testid="hw-run-disarmed">

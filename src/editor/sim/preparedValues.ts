@@ -6,6 +6,7 @@ import { createStore } from 'zustand/vanilla';
 import { parseValueText } from '../../engine/values/literals';
 import { isElementaryType } from '../../model/iecTypes';
 import { typeOfName } from '../../sim/carryOver';
+import { fieldInputAddress } from '../hardware/fieldIo';
 import type { SimValueInput } from '../../sim/protocol';
 import type { SimStore } from '../../store/simState';
 
@@ -47,6 +48,15 @@ export const preparedValues = createStore<PreparedState>()((set, get) => ({
   clear: () => set({ values: new Map() }),
 }));
 
+/**
+ * The device address when the prepared value's variable is a field input now, as it is written or
+ * forced: a value typed before the hardware was attached must not slip past the confirmation.
+ */
+function fieldOf(sim: SimStore, v: PreparedValue): string | undefined {
+  const s = sim.getState();
+  return fieldInputAddress(s.layout?.variables[s.variableIndex.get(v.name.toUpperCase()) ?? -1]) ?? v.field;
+}
+
 /** What writing or forcing the prepared values did, as the status line says it. */
 export interface PreparedOutcome {
   readonly done: readonly string[];
@@ -72,8 +82,9 @@ export function writePrepared(sim: SimStore): PreparedOutcome {
   const done: string[] = [];
   const kept: { name: string; why: string }[] = [];
   for (const v of preparedValues.getState().values.values()) {
-    if (v.field) {
-      kept.push({ name: v.name, why: `a field input (${v.field}) comes from the device: force it with its row's Force on hardware` });
+    const field = fieldOf(sim, v);
+    if (field) {
+      kept.push({ name: v.name, why: `a field input (${field}) comes from the device: force it with its row's Force on hardware` });
       continue;
     }
     const why = refusal(sim, v);
@@ -97,8 +108,9 @@ export function forcePrepared(sim: SimStore): PreparedOutcome {
       kept.push({ name: v.name, why: 'function block pins cannot be forced' });
       continue;
     }
-    if (v.field) {
-      kept.push({ name: v.name, why: `forcing a field input (${v.field}) drives outputs on the hardware: confirm with its row's Force on hardware` });
+    const field = fieldOf(sim, v);
+    if (field) {
+      kept.push({ name: v.name, why: `forcing a field input (${field}) drives outputs on the hardware: confirm with its row's Force on hardware` });
       continue;
     }
     const why = refusal(sim, v);

@@ -17,6 +17,15 @@ export function getAppSimStore(): SimStore {
     // The gateway link lives in the same worker as the scan: outputs and the lease heartbeat come
     // from where the program runs (src/bridge/workerRelay.ts).
     gatewayLink.useWorker(transport);
+    // Leaving the page for another address in the same tab can keep it alive in the back/forward
+    // cache, frozen, with the worker and its gateway socket open: the gateway would see neither a
+    // stop nor a close, outputs would stay on until the watchdog tripped, and the frozen page would
+    // hold the controller lease so that the page opened next is only an observer. With hardware
+    // linked, the worker ends as the page is hidden: its socket closes, the gateway writes the safe
+    // state at once and frees the lease. A page brought back shows Stopped and reconnects (never armed).
+    window.addEventListener('pagehide', () => {
+      if (gatewayLink.client) transport.terminate('the page was left while linked to the hardware (the gateway holds the outputs in the safe state); press Run to run again');
+    });
     // Scripting aid and test handle, next to the document and UI stores (docs/editor.md "Scripting aid").
     const w = window as unknown as { rungsmith?: Record<string, unknown> };
     w.rungsmith = { ...(w.rungsmith ?? {}), simStore: appStore, terminateSimulation: () => transport.terminate() };
