@@ -56,8 +56,14 @@ async function main() {
         if (d > 0) console.log(`  +${d} ${l.width}x${l.height} at ${l.offsetX},${l.offsetY} ${await describe(l)}`);
       }
     }
-    console.log('all layers:');
-    for (const l of layers) console.log(`  ${l.width}x${l.height} at ${l.offsetX},${l.offsetY} ${await describe(l)}`);
+    console.log('all layers (why composited):');
+    for (const l of layers) {
+      let why = '';
+      try {
+        why = ((await cdp.send('LayerTree.compositingReasons', { layerId: l.layerId })) as { compositingReasonIds?: string[] }).compositingReasonIds?.join(',') ?? '';
+      } catch { why = '?'; }
+      console.log(`  ${l.width}x${l.height} at ${l.offsetX},${l.offsetY} ${await describe(l)} [${why}]`);
+    }
   } finally {
     await browser.close();
     await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
