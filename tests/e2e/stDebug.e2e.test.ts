@@ -130,7 +130,11 @@ test('a breakpoint on a line pauses there with the path; step into from LD and o
   const live = await countShown();
   await page.getByTestId('history-prev').click();
   await page.getByTestId('history-marker').filter({ hasText: 'HISTORY' }).waitFor();
-  await poll(async () => (await countShown()) !== live).toBe(true);
+  // The recorded scan's value, once shown (while the page asks the worker for it, line 7 shows none).
+  await poll(async () => {
+    const v = await countShown();
+    return Number.isFinite(v) && v !== live;
+  }).toBe(true);
   const older = await countShown();
   // Count goes up by one each scan: the recorded scan's value leads to the live one.
   expect((older + 1) % 10000).toBe(live);
