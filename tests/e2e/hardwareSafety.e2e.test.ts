@@ -1,13 +1,13 @@
 // Issue 10, "Live I/O that can be trusted", the browser's side, in a real Chromium against the
 // gateway serving the built app with its simulated device. Device outputs are read back over
 // Modbus TCP with mbpoll; inputs are set on the device the same way (coil 800 + n drives discrete input n).
-import type { Locator, Page } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
 import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
-import { eventually, mbpoll, mbpollValues } from '../gateway/helpers';
-import { openApp, useChromium } from './appPage';
-import { SimPage } from './simPage';
+import { eventually, mbpoll } from '../gateway/helpers';
+import { useChromium } from './appPage';
+import { hardwareLab } from './hardwareLab';
 
 describe('Live I/O that can be trusted', () => {
   let gw: RunningGateway;
@@ -27,26 +27,7 @@ describe('Live I/O that can be trusted', () => {
   });
 
   const port = () => gw.simulated?.modbusServerPort ?? 0;
-  /** Device coils 0.. (the %QX0.x outputs as the device holds them). */
-  const coils = async (count = 2) => mbpollValues(await mbpoll(port(), ['-t', '0', '-r', '0', '-c', String(count), '127.0.0.1']));
-  /** Sets discrete input n (%IX0.n) on the device, as a field device would. */
-  const deviceInput = (n: number, on: boolean) => mbpoll(port(), ['-t', '0', '-r', String(800 + n), '127.0.0.1', on ? '1' : '0']);
-
-  async function connect(panel: Locator) {
-    await panel.getByTestId('hw-connect').click();
-    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
-  }
-
-  async function openOnHardware(example: string) {
-    const { page, errors } = await openApp(browser(), gw.url);
-    pages.push(page);
-    const sim = new SimPage(page);
-    await sim.openExample(example);
-    await page.getByTestId('tab-hardware').click();
-    const panel = page.getByTestId('hardware-panel');
-    await connect(panel);
-    return { page, errors, sim, panel };
-  }
+  const { coils, deviceInput, connect, openOnHardware } = hardwareLab({ port, browser, url: () => gw.url, pages });
 
   /** Scans run on: the scan counter passes `n` more scans (a behaviour, not a time). */
   async function scansPass(page: Page, n: number) {

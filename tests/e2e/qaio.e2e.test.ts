@@ -1,12 +1,13 @@
 // Exploratory QA of live I/O safety, the bugs it found, in a real Chromium against a gateway serving
 // the built app with its simulated device. The device's coils are read back over Modbus TCP with
 // mbpoll (coil 800 + n drives discrete input n), never from the page.
-import { chromium, type Browser, type Locator, type Page } from 'playwright-core';
+import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
 import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
-import { eventually, mbpoll, mbpollValues } from '../gateway/helpers';
+import { eventually, mbpoll } from '../gateway/helpers';
 import { openApp } from './appPage';
+import { hardwareLab } from './hardwareLab';
 import { CHROMIUM_ARGS, CHROMIUM_PATH } from './browser';
 import { SimPage } from './simPage';
 
@@ -31,24 +32,7 @@ describe('live I/O: leaving the page', () => {
   });
 
   const port = () => gw.simulated?.modbusServerPort ?? 0;
-  const coils = async (count = 2) => mbpollValues(await mbpoll(port(), ['-t', '0', '-r', '0', '-c', String(count), '127.0.0.1']));
-  const deviceInput = (n: number, on: boolean) => mbpoll(port(), ['-t', '0', '-r', String(800 + n), '127.0.0.1', on ? '1' : '0']);
-
-  async function connect(panel: Locator) {
-    await panel.getByTestId('hw-connect').click();
-    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
-  }
-
-  async function openOnHardware(example: string) {
-    const { page, errors } = await openApp(browser(), gw.url);
-    pages.push(page);
-    const sim = new SimPage(page);
-    await sim.openExample(example);
-    await page.getByTestId('tab-hardware').click();
-    const panel = page.getByTestId('hardware-panel');
-    await connect(panel);
-    return { page, errors, sim, panel };
-  }
+  const { coils, deviceInput, connect, openOnHardware } = hardwareLab({ port, browser, url: () => gw.url, pages });
 
   it('going to another address in the tab while outputs are ON switches them off at once and frees the lease; the page brought back is Stopped', async () => {
     const { page, errors, sim } = await openOnHardware('Motor start/stop (seal-in)');
