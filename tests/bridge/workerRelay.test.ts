@@ -31,6 +31,23 @@ function countingFactory(counter: { outputs: number }) {
 
 const frame = (mode: SimFrame['mode']) => ({ mode }) as SimFrame;
 
+/** The worker's relay and the page's transport to it, as the simulator's worker and host connect them. */
+function relayInWorker(...args: ConstructorParameters<typeof GatewayRelay> extends [unknown, ...infer R] ? R : never) {
+  const listeners = new Set<(m: WorkerMessage) => void>();
+  const relay = new GatewayRelay((m) => listeners.forEach((l) => l(m)), ...args);
+  const transport: SimTransport = {
+    send: (m) => {
+      if (m.type.startsWith('gw')) queueMicrotask(() => relay.handle(m as Parameters<GatewayRelay['handle']>[0]));
+    },
+    listen: (l) => {
+      listeners.add(l);
+      return () => listeners.delete(l);
+    },
+    terminate: () => undefined,
+  };
+  return { relay, transport };
+}
+
 describe('controller outputs from where the program runs', () => {
   let gw: RunningGateway;
   beforeAll(async () => {
@@ -42,23 +59,12 @@ describe('controller outputs from where the program runs', () => {
 
   it('the relay applies inputs, sends a 1 kHz output stream coalesced with the last image, and ends the drive with stop when the program stops', async () => {
     const sent = { outputs: 0 };
-    const listeners = new Set<(m: WorkerMessage) => void>();
     const inputs: Record<string, Value>[] = [];
     let wantsOutputs = false;
-    const relay = new GatewayRelay((m) => listeners.forEach((l) => l(m)), countingFactory(sent), {
+    const { relay, transport } = relayInWorker(countingFactory(sent), {
       setInputs: (v) => inputs.push({ ...v }),
       wantOutputs: (on) => (wantsOutputs = on),
     });
-    const transport: SimTransport = {
-      send: (m) => {
-        if (m.type.startsWith('gw')) queueMicrotask(() => relay.handle(m as Parameters<GatewayRelay['handle']>[0]));
-      },
-      listen: (l) => {
-        listeners.add(l);
-        return () => listeners.delete(l);
-      },
-      terminate: () => undefined,
-    };
     const ended: string[] = [];
     const driver = workerDriver(transport);
     driver.onEnded((r) => ended.push(r));
@@ -151,21 +157,10 @@ describe('controller outputs from where the program runs', () => {
   });
 
   it('an online change that moves an output to another address switches the old one off; it is not left ON with no program writing it', async () => {
-    const listeners = new Set<(m: WorkerMessage) => void>();
-    const relay = new GatewayRelay((m) => listeners.forEach((l) => l(m)), (url) => new WebSocket(url) as unknown as SocketLike, {
+    const { relay, transport } = relayInWorker((url) => new WebSocket(url) as unknown as SocketLike, {
       setInputs: () => undefined,
       wantOutputs: () => undefined,
     });
-    const transport: SimTransport = {
-      send: (m) => {
-        if (m.type.startsWith('gw')) queueMicrotask(() => relay.handle(m as Parameters<GatewayRelay['handle']>[0]));
-      },
-      listen: (l) => {
-        listeners.add(l);
-        return () => listeners.delete(l);
-      },
-      terminate: () => undefined,
-    };
     const client = new GatewayClient({ socketUrl: `ws://127.0.0.1:${gw.port}/io`, token: gw.token, role: 'controller', socketFactory: workerSocketFactory(transport) });
     client.connect();
     await eventually(() => client.snapshot.link === 'open' && client.snapshot.status !== null, 5000, 'open through the relay');

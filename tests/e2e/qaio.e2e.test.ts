@@ -34,6 +34,22 @@ describe('live I/O: leaving the page', () => {
   const port = () => gw.simulated?.modbusServerPort ?? 0;
   const { coils, deviceInput, connect, openOnHardware } = hardwareLab({ port, browser, url: () => gw.url, pages });
 
+  /** The motor example running in plain simulation (no hardware), Start in the Watch table with TRUE prepared. */
+  async function startPreparedInSimulation() {
+    const { page, errors } = await openApp(browser(), gw.url);
+    pages.push(page);
+    const sim = new SimPage(page);
+    await sim.openExample('Motor start/stop (seal-in)');
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await sim.tab('Watch');
+    await page.getByTestId('watch-add-name').fill('Start');
+    await page.getByTestId('watch-add').click();
+    const start = page.getByTestId('watch-row-Start');
+    await start.getByTestId('watch-input').fill('TRUE');
+    return { page, errors, sim, start };
+  }
+
   it('going to another address in the tab while outputs are ON switches them off at once and frees the lease; the page brought back is Stopped', async () => {
     const { page, errors, sim } = await openOnHardware('Motor start/stop (seal-in)');
     await sim.button('run').click();
@@ -93,18 +109,8 @@ describe('live I/O: leaving the page', () => {
   });
 
   it('a prepared value typed for an input before the hardware was attached is not forced by F7 on the device: it asks for Force on hardware', async () => {
-    const { page, errors } = await openApp(browser(), gw.url);
-    pages.push(page);
-    const sim = new SimPage(page);
-    await sim.openExample('Motor start/stop (seal-in)');
     // Not connected yet: Start is a plain input, and TRUE is prepared for it in the Watch table.
-    await sim.button('run').click();
-    await sim.waitForMode('Running');
-    await sim.tab('Watch');
-    await page.getByTestId('watch-add-name').fill('Start');
-    await page.getByTestId('watch-add').click();
-    const start = page.getByTestId('watch-row-Start');
-    await start.getByTestId('watch-input').fill('TRUE');
+    const { page, errors, sim } = await startPreparedInSimulation();
     await sim.button('reset').click();
     await sim.waitForMode('Stopped');
 
@@ -130,17 +136,7 @@ describe('live I/O: leaving the page', () => {
   });
 
   it('a force made before the hardware was attached ends as the link opens as controller, and Run leaves the motor off', async () => {
-    const { page, errors } = await openApp(browser(), gw.url);
-    pages.push(page);
-    const sim = new SimPage(page);
-    await sim.openExample('Motor start/stop (seal-in)');
-    await sim.button('run').click();
-    await sim.waitForMode('Running');
-    await sim.tab('Watch');
-    await page.getByTestId('watch-add-name').fill('Start');
-    await page.getByTestId('watch-add').click();
-    const start = page.getByTestId('watch-row-Start');
-    await start.getByTestId('watch-input').fill('TRUE');
+    const { page, errors, sim, start } = await startPreparedInSimulation();
     await start.getByTestId('watch-force').click(); // in simulation: no hardware, no confirmation
     await expect.poll(() => start.getByTestId('watch-value').textContent()).toBe('TRUE F');
     await sim.button('reset').click();
