@@ -1,6 +1,6 @@
 // The built-in simulated I/O device: 16 DI, 16 DO, 4 AI, 4 AO on the OpenPLC default map, also
 // served as a Modbus TCP server on loopback so mbpoll or a plant simulator can drive its inputs.
-import type { AddressInfo, Server } from 'node:net';
+import type { AddressInfo, Server, Socket } from 'node:net';
 import type { DeviceOutputs } from '../protocol/messages';
 import type { Quality, WireValue } from '../protocol/points';
 import { safeImage, type Device, type DeviceListener, type Values } from './device';
@@ -48,6 +48,13 @@ export class SimulatedDevice implements Device {
   /** `--plant`: the machine whose I/O this device is, and its real-time stepping. */
   private readonly plant: PlantLoop | undefined;
   private plantTimer: ReturnType<typeof setInterval> | undefined;
+  /**
+   * `--plant`: the outputs a Modbus master (the PLC under test) wrote. When the last master's
+   * connection closes they fall OFF / 0, as a PLC's outputs do when it stops or is unplugged (its
+   * contactors drop out; a coupler's communication watchdog does the same): a pump is not left
+   * running into an overflow by a PLC that is gone.
+   */
+  private readonly masterWritten = new Set<string>();
 
   /**
    * @param modbusPort loopback port of the Modbus server (0: any free port; null: no server).
@@ -190,6 +197,20 @@ export class SimulatedDevice implements Device {
     this.setInputs(new Map([[p.address, value]]));
   }
 
+  /**
+   * A Modbus connection closed: with none left, the outputs the masters wrote fall OFF / 0. Deferred
+   * one timer turn, after the requests that connection sent last (modbus-serial serves each on a timer).
+   */
+  private masterGone(server: ModbusServer): void {
+    if (!this.plant) return;
+    setTimeout(() => {
+      if (this.server !== server || server.socks.size > 0 || this.masterWritten.size === 0) return;
+      const off = new Map<string, WireValue>([...this.masterWritten].map((a) => [a, a.startsWith('%QX') ? false : 0]));
+      this.masterWritten.clear();
+      this.writeOutputs(off);
+    }, 0);
+  }
+
   private startModbusServer(port: number): Promise<void> {
     const bit = (v: WireValue) => v === true;
     const word = (v: WireValue) => (typeof v === 'number' ? v & 0xffff : v ? 1 : 0);
@@ -202,6 +223,7 @@ export class SimulatedDevice implements Device {
         // Virtual commissioning: the Modbus master is the PLC and drives the machine's actuators.
         const actuator = this.plant && addr < SIM_INPUT_COIL_BASE ? this.byTable.get(`coils:${addr}`) : undefined;
         if (actuator) {
+          this.masterWritten.add(actuator.address);
           this.writeOutputs(new Map([[actuator.address, value]]));
           return;
         }
@@ -209,6 +231,13 @@ export class SimulatedDevice implements Device {
         this.driveInput('discreteInputs', addr - SIM_INPUT_COIL_BASE, value);
       },
       setRegister: (addr: number, value: number) => {
+        // A machine's INT actuators (%QW) are the master's too, as its coils are.
+        const actuator = this.plant && addr < SIM_INPUT_REGISTER_BASE ? this.byTable.get(`holdingRegisters:${addr}`) : undefined;
+        if (actuator) {
+          this.masterWritten.add(actuator.address);
+          this.writeOutputs(new Map([[actuator.address, value & 0xffff]]));
+          return;
+        }
         if (addr < SIM_INPUT_REGISTER_BASE) throw this.byTable.has(`holdingRegisters:${addr}`) ? ILLEGAL_FUNCTION : ILLEGAL_ADDRESS;
         this.driveInput('inputRegisters', addr - SIM_INPUT_REGISTER_BASE, value & 0xffff);
       },
@@ -219,6 +248,8 @@ export class SimulatedDevice implements Device {
       const inner = (server as unknown as { _server: Server })._server;
       const fail = (err: Error) => reject(new Error(`simulated device: cannot listen on 127.0.0.1:${port} for Modbus TCP (${err.message})`));
       inner.once('error', fail);
+      // modbus-serial forgets a socket (server.socks) in its own close listener, registered before this one.
+      inner.on('connection', (sock: Socket) => sock.once('close', () => this.masterGone(server)));
       inner.once('listening', () => {
         inner.off('error', fail);
         this.port = (inner.address() as AddressInfo).port;

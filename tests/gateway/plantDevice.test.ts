@@ -2,6 +2,10 @@
 // Modbus device be the tank, advancing in real time. pymodbus plays the PLC: it writes the pump
 // and valve coils and reads the level back rising, then falling.
 import { spawn } from 'node:child_process';
+import { mkdtempSync, writeFileSync } from 'node:fs';
+import { connect } from 'node:net';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterEach, expect, test } from 'vitest';
 import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
@@ -71,4 +75,98 @@ test('a Modbus write over one of the machine\'s sensors is refused (the sensor w
   // The low switch is still OFF (100 L), the level is the machine's, Start is held.
   expect(run.out).toMatch(/inputs \[True, False, False\] 10\d\b/);
   expect(device.plantRead('tank.LowLevel')).toBe(false);
+}, 60_000);
+
+/** Runs a pymodbus script (its port is argv[1]) to its end. */
+function python(script: string, port: number): Promise<{ code: number | null; out: string }> {
+  return new Promise((resolve) => {
+    const p = spawn('/usr/bin/python3', ['-c', script, String(port)], { stdio: ['ignore', 'pipe', 'pipe'] });
+    let out = '';
+    p.stdout.on('data', (d: Buffer) => (out += d.toString()));
+    p.stderr.on('data', (d: Buffer) => (out += d.toString()));
+    p.on('close', (code) => resolve({ code, out }));
+  });
+}
+
+/** Waits (generously) for `cond`, polling the device: the machine steps in real time. */
+async function until(cond: () => boolean, what: string): Promise<void> {
+  const end = Date.now() + 30_000;
+  while (!cond()) {
+    if (Date.now() > end) throw new Error(`timed out waiting for ${what}`);
+    await new Promise((r) => setTimeout(r, 20));
+  }
+}
+
+test('the PLC gone (its Modbus connection closed), the outputs it wrote fall OFF: the pump stops, the tank does not overflow', async () => {
+  device = new SimulatedDevice(0, 'tank');
+  await device.start({ inputs: () => undefined, written: () => undefined, status: () => undefined } as never);
+  const port = device.modbusServerPort!;
+  const master = [
+    'import sys',
+    'from pymodbus.client import ModbusTcpClient',
+    'c = ModbusTcpClient("127.0.0.1", port=int(sys.argv[1]))',
+    'assert c.connect()',
+    'assert not c.write_coils(0, [True, True]).isError()',
+    'print("coils", c.read_coils(0, count=2).bits[:2], flush=True)',
+    // %QW0, where a machine's INT actuator (a speed setpoint) would be: the master's too.
+    'assert not c.write_register(0, 1234).isError()',
+    'c.close()',
+  ].join('\n');
+  // An HMI (or a second PLC) still connected keeps them: the outputs fall when the last master goes.
+  const hmi = await new Promise<import('node:net').Socket>((resolve) => {
+    const s = connect(port, '127.0.0.1', () => resolve(s));
+  });
+  const run = await python(master, port);
+  expect(run.code, run.out).toBe(0);
+  expect(run.out).toContain('coils [True, True]');
+  await until(() => device!.plantRead('tank.inflow') !== 0, 'the pump to deliver water');
+  await new Promise((r) => setTimeout(r, 200));
+  expect(device.writtenValues().get('%QX0.0')).toBe(true);
+  expect(device.writtenValues().get('%QW0')).toBe(1234);
+  hmi.destroy();
+  await until(() => device!.writtenValues().get('%QX0.0') === false, 'the pump coil to fall OFF');
+  expect(device.writtenValues().get('%QX0.1')).toBe(false);
+  expect(device.writtenValues().get('%QW0')).toBe(0);
+  expect(device.plantRead('tank.Pump')).toBe(false);
+  await until(() => device!.plantRead('tank.inflow') === 0, 'the pump to run down and the inlet to close');
+  // A PLC that reconnects finds its outputs OFF and drives them again.
+  const again = await python(
+    [
+      'import sys',
+      'from pymodbus.client import ModbusTcpClient',
+      'c = ModbusTcpClient("127.0.0.1", port=int(sys.argv[1]))',
+      'assert c.connect()',
+      'print("coils", c.read_coils(0, count=2).bits[:2])',
+      'c.close()',
+    ].join('\n'),
+    port,
+  );
+  expect(again.out).toContain('coils [False, False]');
+  expect(device.plantRead('tank.overflows')).toBe(0);
+}, 90_000);
+
+/** `rungsmith-gateway ARGS` run to its exit (a refused start exits at once). */
+function gateway(args: readonly string[]): Promise<{ code: number | null; err: string }> {
+  return new Promise((resolve) => {
+    const p = spawn(process.execPath, ['bin/rungsmith-gateway.mjs', '--port', '0', '--no-app', ...args], { stdio: ['ignore', 'ignore', 'pipe'] });
+    let err = '';
+    p.stderr.on('data', (d: Buffer) => (err += d.toString()));
+    const kill = setTimeout(() => p.kill('SIGTERM'), 30_000);
+    p.on('close', (code) => {
+      clearTimeout(kill);
+      resolve({ code, err });
+    });
+  });
+}
+
+test('--plant with a wrong name, or with --config naming real devices (no simulated device to be the machine), is refused at start', async () => {
+  const wrong = await gateway(['--sim-port', '0', '--plant', 'tnak']);
+  expect(wrong.code).toBe(2);
+  expect(wrong.err).toContain('--plant: there is no machine "tnak"; the machines are tank, lift, garage, mixer, boxes, intersection');
+  const dir = mkdtempSync(join(tmpdir(), 'rungsmith-plant-'));
+  const config = join(dir, 'gateway.json');
+  writeFileSync(config, JSON.stringify({ devices: [{ id: 'io1', host: '127.0.0.1', port: 1, points: [{ address: '%IX0.0' }] }] }));
+  const withDevices = await gateway(['--config', config, '--plant', 'tank']);
+  expect(withDevices.code).toBe(2);
+  expect(withDevices.err).toContain(`--plant (with --config ${config}): the machine "tank" is the built-in simulated device, which runs only with no "devices" configured`);
 }, 60_000);
