@@ -64,6 +64,16 @@ export class SimulatedDevice implements Device {
     this.plant = plant === undefined ? undefined : new PlantLoop(requirePlant(plant), {}, 0);
   }
 
+  /**
+   * `--plant`: why setting `address` by hand (the Hardware panel, a Modbus write) is refused, when it
+   * is one of the machine's sensors: the machine writes it only when it changes, so a value set over
+   * it would stay (a limit switch ON with nothing behind it). Undefined for any other input.
+   */
+  machineSensorRefusal(address: string): string | undefined {
+    const sensor = this.plant?.points.find((q) => q.kind === 'sensor' && addressKey(q.address) === addressKey(address));
+    return sensor && `${address} is the machine "${this.plant!.model.id}"'s sensor ${sensor.name}: the machine sets it`;
+  }
+
   /** `--plant`: the machine's quantity (`level`), for tests and logs. */
   plantRead(name: string): Value | undefined {
     return this.plant?.read(name);
@@ -192,8 +202,7 @@ export class SimulatedDevice implements Device {
     if (!p) throw ILLEGAL_ADDRESS;
     // The machine writes its sensors' inputs only when they change: a value written over one would
     // stay, a limit switch ON with nothing behind it. Its operator controls may be pressed.
-    if (this.plant?.points.some((q) => q.kind === 'sensor' && addressKey(q.address) === addressKey(p.address)))
-      throw MACHINE_SENSOR;
+    if (this.machineSensorRefusal(p.address)) throw MACHINE_SENSOR;
     this.setInputs(new Map([[p.address, value]]));
   }
 

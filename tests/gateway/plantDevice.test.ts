@@ -8,7 +8,10 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterEach, expect, test } from 'vitest';
+import { resolveConfig } from '../../src/gateway/config';
+import { startGateway } from '../../src/gateway/gateway';
 import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
+import { eventually, TestClient } from './helpers';
 
 const MASTER = fileURLToPath(new URL('./fixtures/plant_master.py', import.meta.url));
 let device: SimulatedDevice | undefined;
@@ -169,4 +172,26 @@ test('--plant with a wrong name, or with --config naming real devices (no simula
   const withDevices = await gateway(['--config', config, '--plant', 'tank']);
   expect(withDevices.code).toBe(2);
   expect(withDevices.err).toContain(`--plant (with --config ${config}): the machine "tank" is the built-in simulated device, which runs only with no "devices" configured`);
+}, 60_000);
+
+test("the Hardware panel cannot set the machine's sensors either (they would stay so); its operator controls it can", async () => {
+  const gw = await startGateway({ port: 0, config: resolveConfig({ simulated: { modbusPort: null, plant: 'tank' } }), distDir: null });
+  try {
+    const c = await TestClient.hello(gw.port, gw.token, 'observer');
+    // %IX0.3 is the high level switch: OFF at 100 L. %IX0.0 the Start button.
+    c.send({ t: 'simulate', seq: 1, values: { '%IX0.3': true } });
+    await eventually(() => c.messages.some((m) => m.t === 'error'), 5000, 'the refusal');
+    expect(c.messages.find((m) => m.t === 'error')).toMatchObject({
+      code: 'not-input',
+      message: '%IX0.3 is the machine "tank"\'s sensor HighLevel: the machine sets it',
+      ref: 1,
+    });
+    c.send({ t: 'simulate', seq: 2, values: { '%IX0.0': true } });
+    await eventually(() => c.values()['%IX0.0'] === true, 5000, 'Start held');
+    expect(gw.simulated!.inputValues().get('%IX0.3')).toBe(false);
+    expect(gw.simulated!.plantRead('tank.HighLevel')).toBe(false);
+    c.close();
+  } finally {
+    await gw.close();
+  }
 }, 60_000);
