@@ -9,6 +9,7 @@ import { expandPoints, type DevicePoint } from './pointMap';
 import { requirePlant } from '../plant/machines';
 import { addressKey, PlantLoop } from '../plant/loop';
 import type { Value } from '../model/iecTypes';
+import type { PlantModel } from '../plant/types';
 
 /** A machine's step in real time (virtual commissioning): every this many ms of wall time. */
 const PLANT_STEP_MS = 20;
@@ -32,6 +33,19 @@ const ILLEGAL_ADDRESS = { modbusErrorCode: 0x02, msg: 'Illegal data address' };
 const ILLEGAL_FUNCTION = { modbusErrorCode: 0x01, msg: 'Outputs belong to the controller' };
 /** `--plant`: the machine's sensors drive their inputs, as wires do; a Modbus write to one is refused. */
 const MACHINE_SENSOR = { modbusErrorCode: 0x01, msg: "Sensors belong to the machine" };
+
+/**
+ * `--plant`: the first of a machine's points the simulated device has no place for (its default
+ * address is not among the device's 16 DI, 16 DO, 4 AI, 4 AO), as a sentence; undefined when all fit.
+ */
+export function simulatedDeviceMisfit(model: Pick<PlantModel, 'id' | 'points'>): string | undefined {
+  const on = new Set(SIM_POINTS.map((p) => addressKey(p.address)));
+  const out = model.points.find((p) => !on.has(addressKey(p.address)));
+  return (
+    out &&
+    `the machine "${model.id}"'s ${out.kind} ${out.name} at ${out.address} has no place on the simulated device (%IX0.0-%IX1.7, %QX0.0-%QX1.7, %IW0-%IW3, %QW0-%QW3)`
+  );
+}
 
 export class SimulatedDevice implements Device {
   readonly info = { id: SIMULATED_DEVICE_ID, kind: 'simulated' as const, target: 'simulated' };
@@ -61,7 +75,10 @@ export class SimulatedDevice implements Device {
    * @param plant a machine (`tank`): its sensors drive the inputs, its actuators are the coils a Modbus master writes.
    */
   constructor(private readonly modbusPort: number | null, plant?: string) {
-    this.plant = plant === undefined ? undefined : new PlantLoop(requirePlant(plant), {}, 0);
+    const model = plant === undefined ? undefined : requirePlant(plant);
+    const misfit = model && simulatedDeviceMisfit(model);
+    if (misfit) throw new Error(`--plant: ${misfit}`);
+    this.plant = model && new PlantLoop(model, {}, 0);
   }
 
   /**

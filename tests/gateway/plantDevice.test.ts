@@ -10,7 +10,8 @@ import { fileURLToPath } from 'node:url';
 import { afterEach, expect, test } from 'vitest';
 import { resolveConfig } from '../../src/gateway/config';
 import { startGateway } from '../../src/gateway/gateway';
-import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
+import { SimulatedDevice, simulatedDeviceMisfit } from '../../src/gateway/simulatedDevice';
+import { PLANTS } from '../../src/plant/machines';
 import { eventually, TestClient } from './helpers';
 
 const MASTER = fileURLToPath(new URL('./fixtures/plant_master.py', import.meta.url));
@@ -195,3 +196,17 @@ test("the Hardware panel cannot set the machine's sensors either (they would sta
     await gw.close();
   }
 }, 60_000);
+
+test('every machine fits the simulated device; a machine with a point beyond it (a new one, docs/PLANTS.md) is refused at start, named', () => {
+  for (const model of PLANTS) expect(simulatedDeviceMisfit(model), model.id).toBeUndefined();
+  const oven = {
+    id: 'oven',
+    points: [
+      { name: 'Heater', address: '%QX0.0', type: 'BOOL', kind: 'actuator', comment: 'Heater contactor' },
+      { name: 'Hot', address: '%IX2.1', type: 'BOOL', kind: 'sensor', comment: 'Thermostat' },
+    ],
+  } as const;
+  expect(simulatedDeviceMisfit(oven)).toBe(
+    'the machine "oven"\'s sensor Hot at %IX2.1 has no place on the simulated device (%IX0.0-%IX1.7, %QX0.0-%QX1.7, %IW0-%IW3, %QW0-%QW3)',
+  );
+});
