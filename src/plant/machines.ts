@@ -28,3 +28,21 @@ export function requirePlant(id: string): PlantModel {
     throw new Error(`there is no machine "${id}"; the machines are ${PLANTS.map((m) => m.id).join(', ')}`);
   return p;
 }
+
+/**
+ * For a name no variable has: when it is a machine's (`tank.level`) and that machine is not the one
+ * running, what to do about it (`add "# plant: tank"`), given how the machine is chosen there
+ * (`add "# plant: tank" before the header` in a scenario, `add --plant tank` on the command line). Else undefined.
+ */
+export function machineNameHint(
+  name: string,
+  running: PlantModel | undefined,
+  choose: (id: string) => string,
+): string | undefined {
+  const dot = name.indexOf('.');
+  const model = dot > 0 ? PLANTS.find((p) => p.id === name.slice(0, dot).trim().toLowerCase()) : undefined;
+  if (!model || model === running) return undefined;
+  return running
+    ? `${name} is the machine ${model.id}'s, and this runs ${running.id}`
+    : `${name} is the machine ${model.id}'s: ${choose(model.id)}`;
+}

@@ -25,7 +25,7 @@ import type { ElementaryType, Value } from '../model/iecTypes';
 import type { Project, Scenario } from '../model/project';
 import { readCsv } from './csv';
 import { runOptions } from './runTarget';
-import { requirePlant } from '../plant/machines';
+import { machineNameHint, requirePlant } from '../plant/machines';
 import { PlantLoop, plantValueType } from '../plant/loop';
 import type { PlantModel } from '../plant/types';
 
@@ -174,7 +174,10 @@ function typeOf(program: CompiledProgram, name: string, line: number, plant: Pla
     return t;
   }
   const r = program.symbols.resolve(name, { literals: false, implicitLocations: false });
-  if (!r.ok) throw new ScenarioError(line, `unknown variable "${name}": ${r.message}`);
+  if (!r.ok) {
+    const hint = machineNameHint(name, plant, (id) => `add "# plant: ${id}" before the header`);
+    throw new ScenarioError(line, `unknown variable "${name}": ${r.message}${hint ? `; ${hint}` : ''}`);
+  }
   if (r.access.kind === 'const') throw new ScenarioError(line, `"${name}" is a constant, not a variable`);
   return r.access.type;
 }

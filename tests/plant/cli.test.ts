@@ -156,6 +156,30 @@ describe('rungsmith and the machines', () => {
     );
   });
 
+  test("a machine's name, fault or control without its machine says what to add (--plant / # plant:), not only that the variable is undeclared", () => {
+    const files = { 'tank.json': JSON.stringify(tankReference()) };
+    const watch = rungsmith(['simulate', 'tank.json', '--scans', '3', '--watch', 'Pump,tank.level'], files);
+    expect(watch.code).toBe(2);
+    expect(watch.err).toBe(
+      'rungsmith: unknown variable "tank.level": "tank" is not declared; tank.level is the machine tank\'s: add --plant tank\n',
+    );
+    expect(rungsmith(['simulate', 'tank.json', '--plant', 'mixer', '--scans', '3', '--watch', 'tank.level'], files).err).toContain(
+      'tank.level is the machine tank\'s, and this runs mixer',
+    );
+    // Was: "fault pump_dead" is a constant, not a variable.
+    const fault = rungsmith(['simulate', 'tank.json', '--inputs', 's.csv'], { ...files, 's.csv': 'scan,fault pump_dead\n1,1\n' });
+    expect(fault.code).toBe(2);
+    expect(fault.err).toBe(
+      'rungsmith: s.csv: column "fault pump_dead": "fault pump_dead" sets a machine\'s fault: run the program with its machine (--plant NAME)\n',
+    );
+    const project = { ...tankReference(), scenarios: [{ name: 'No machine', csv: 'scan,tank.Start,expect tank.level\n1,1,100\n' }] };
+    const test = rungsmith(['test', 'tank.json'], { 'tank.json': JSON.stringify(project) });
+    expect(test.code).toBe(1);
+    expect(test.out).toContain(
+      'FAIL No machine: line 1: unknown variable "tank.Start": "tank" is not declared; tank.Start is the machine tank\'s: add "# plant: tank" before the header',
+    );
+  });
+
   test('plants lists each machine with its I/O map, faults and quantities', () => {
     const all = rungsmith(['plants']);
     expect(all.code).toBe(0);
