@@ -185,11 +185,12 @@ export class SimulatedDevice implements Device {
       },
     };
     loop.bind(io);
-    const t0 = Date.now();
+    // The monotonic clock: a wall clock set back (NTP, the user) must not step the machine backwards.
+    const t0 = performance.now();
     let k = 0;
     let last = 0;
     this.plantTimer = setInterval(() => {
-      const now = Date.now() - t0;
+      const now = Math.round(performance.now() - t0);
       loop.afterScan(++k, last, now - last);
       last = now;
     }, PLANT_STEP_MS);

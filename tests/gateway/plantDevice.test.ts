@@ -7,7 +7,7 @@ import { connect } from 'node:net';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { afterEach, expect, test } from 'vitest';
+import { afterEach, expect, test, vi } from 'vitest';
 import { resolveConfig } from '../../src/gateway/config';
 import { startGateway } from '../../src/gateway/gateway';
 import { SimulatedDevice, simulatedDeviceMisfit } from '../../src/gateway/simulatedDevice';
@@ -210,3 +210,30 @@ test('every machine fits the simulated device; a machine with a point beyond it 
     'the machine "oven"\'s sensor Hot at %IX2.1 has no place on the simulated device (%IX0.0-%IX1.7, %QX0.0-%QX1.7, %IW0-%IW3, %QW0-%QW3)',
   );
 });
+
+test('the wall clock stepped (NTP, the user setting it) does not leap the machine: a filling tank does not overflow in one step', async () => {
+  device = new SimulatedDevice(null, 'tank');
+  await device.start({ inputs: () => undefined, written: () => undefined, status: () => undefined } as never);
+  device.drive(new Map([['%QX0.0', true], ['%QX0.1', true]]));
+  await until(() => (device!.plantRead('tank.inflow') as number) > 0, 'the pump to deliver water');
+  const real = Date.now.bind(Date);
+  // The wall clock jumps an hour ahead, then back two hours: the machine's time is real time elapsed.
+  const spy = vi.spyOn(Date, 'now').mockImplementation(() => real() + 3_600_000);
+  try {
+    await new Promise((r) => setTimeout(r, 300));
+    spy.mockImplementation(() => real() - 3_600_000);
+    const levels: number[] = [];
+    const end = real() + 300;
+    while (real() < end) {
+      levels.push(device.plantRead('tank.level') as number);
+      await new Promise((r) => setTimeout(r, 20));
+    }
+    for (let i = 1; i < levels.length; i++) expect(levels[i]!).toBeGreaterThanOrEqual(levels[i - 1]!);
+    expect(levels.at(-1)!).toBeGreaterThan(levels[0]!);
+    // 25 L/s for well under a minute from 100 L: nowhere near the rim.
+    expect(device.plantRead('tank.level') as number).toBeLessThan(600);
+    expect(device.plantRead('tank.overflows')).toBe(0);
+  } finally {
+    spy.mockRestore();
+  }
+}, 60_000);
