@@ -73,8 +73,13 @@ export class SimulatedDevice implements Device {
   /**
    * @param modbusPort loopback port of the Modbus server (0: any free port; null: no server).
    * @param plant a machine (`tank`): its sensors drive the inputs, its actuators are the coils a Modbus master writes.
+   * @param log the gateway's log: the machine's consequences (the tank overflowed) and its outputs falling when the PLC goes.
    */
-  constructor(private readonly modbusPort: number | null, plant?: string) {
+  constructor(
+    private readonly modbusPort: number | null,
+    plant?: string,
+    private readonly log: (line: string) => void = () => undefined,
+  ) {
     const model = plant === undefined ? undefined : requirePlant(plant);
     const misfit = model && simulatedDeviceMisfit(model);
     if (misfit) throw new Error(`--plant: ${misfit}`);
@@ -191,8 +196,10 @@ export class SimulatedDevice implements Device {
     let last = 0;
     this.plantTimer = setInterval(() => {
       const now = Math.round(performance.now() - t0);
-      loop.afterScan(++k, last, now - last);
+      const events = loop.afterScan(++k, last, now - last);
       last = now;
+      for (const e of events)
+        this.log(`machine "${loop.model.id}": ${e.severity} ${e.message}, ${(e.timeMs / 1000).toFixed(1)} s after the gateway started`);
     }, PLANT_STEP_MS);
   }
 
@@ -229,12 +236,18 @@ export class SimulatedDevice implements Device {
    * one timer turn, after the requests that connection sent last (modbus-serial serves each on a timer).
    */
   private masterGone(server: ModbusServer): void {
-    if (!this.plant) return;
+    const plant = this.plant;
+    if (!plant) return;
     setTimeout(() => {
       if (this.server !== server || server.socks.size > 0 || this.masterWritten.size === 0) return;
       const off = new Map<string, WireValue>([...this.masterWritten].map((a) => [a, a.startsWith('%QX') ? false : 0]));
       this.masterWritten.clear();
       this.writeOutputs(off);
+      const keys = new Set([...off.keys()].map(addressKey));
+      const names = plant.points.filter((p) => keys.has(addressKey(p.address))).map((p) => p.name);
+      this.log(
+        `machine "${plant.model.id}": the Modbus master (the PLC) disconnected; the outputs it wrote are OFF${names.length ? ` (${names.join(', ')})` : ''}`,
+      );
     }, 0);
   }
 

@@ -102,7 +102,8 @@ async function until(cond: () => boolean, what: string): Promise<void> {
 }
 
 test('the PLC gone (its Modbus connection closed), the outputs it wrote fall OFF: the pump stops, the tank does not overflow', async () => {
-  device = new SimulatedDevice(0, 'tank');
+  const log: string[] = [];
+  device = new SimulatedDevice(0, 'tank', (line) => log.push(line));
   await device.start({ inputs: () => undefined, written: () => undefined, status: () => undefined } as never);
   const port = device.modbusServerPort!;
   const master = [
@@ -131,6 +132,7 @@ test('the PLC gone (its Modbus connection closed), the outputs it wrote fall OFF
   await until(() => device!.writtenValues().get('%QX0.0') === false, 'the pump coil to fall OFF');
   expect(device.writtenValues().get('%QX0.1')).toBe(false);
   expect(device.writtenValues().get('%QW0')).toBe(0);
+  expect(log).toEqual(['machine "tank": the Modbus master (the PLC) disconnected; the outputs it wrote are OFF (Pump, InletValve)']);
   expect(device.plantRead('tank.Pump')).toBe(false);
   await until(() => device!.plantRead('tank.inflow') === 0, 'the pump to run down and the inlet to close');
   // A PLC that reconnects finds its outputs OFF and drives them again.
@@ -236,4 +238,14 @@ test('the wall clock stepped (NTP, the user setting it) does not leap the machin
   } finally {
     spy.mockRestore();
   }
+}, 60_000);
+
+test("the machine's consequences go to the gateway's log, in real time: both door contactors on shorts the garage's motor", async () => {
+  const log: string[] = [];
+  device = new SimulatedDevice(null, 'garage', (line) => log.push(line));
+  await device.start({ inputs: () => undefined, written: () => undefined, status: () => undefined } as never);
+  device.drive(new Map([['%QX0.0', true], ['%QX0.1', true]]));
+  await until(() => log.length > 0, 'the consequence in the log');
+  expect(log[0]).toMatch(/^machine "garage": error MotorUp and MotorDown were on together \(short circuit\), \d+\.\d s after the gateway started$/);
+  expect(device.plantRead('garage.shorts')).toBe(1);
 }, 60_000);
