@@ -88,17 +88,22 @@ export function parseScenario(text: string, name = 'scenario'): ParsedScenario {
   }
   let cycleMs: number | undefined;
   let pou: string | undefined;
-  let plant: string | undefined;
+  let plant: { readonly id: string; readonly line: number } | undefined;
   for (const c of read.comments) {
-    const m = /^(cycle|pou|plant)\s*:\s*(.+)$/i.exec(c.cells[0]!);
+    const m = /^(cycle|pou|plant)\s*:\s*(.+)$/i.exec(c.cells[0]!) ?? /^(plant)\s*:\s*()$/i.exec(c.cells[0]!);
     if (!m) continue;
     if (m[1]!.toLowerCase() === 'pou') pou = m[2]!.trim();
     else if (m[1]!.toLowerCase() === 'plant') {
+      let id: string;
       try {
-        plant = requirePlant(m[2]!).id;
+        id = requirePlant(m[2]!).id;
       } catch (e) {
         throw new ScenarioError(c.line, (e as Error).message);
       }
+      // A second machine would silently replace the first: the columns of one would then be unknown.
+      if (plant && plant.id !== id)
+        throw new ScenarioError(c.line, `a scenario runs against one machine: line ${plant.line} already names ${plant.id}, this line ${id}`);
+      plant = { id, line: c.line };
     }
     else {
       const ms = toleranceOf(m[2]!, c.line);
@@ -137,7 +142,7 @@ export function parseScenario(text: string, name = 'scenario'): ParsedScenario {
     rows.push({ scan, line: r.line, cells });
   }
   if (rows.length === 0) throw new ScenarioError(head.line, 'the scenario has no rows');
-  return { name, columns, rows, scans: last, headerLine: head.line, ...(cycleMs !== undefined ? { cycleMs } : {}), ...(pou ? { pou } : {}), ...(plant ? { plant } : {}) };
+  return { name, columns, rows, scans: last, headerLine: head.line, ...(cycleMs !== undefined ? { cycleMs } : {}), ...(pou ? { pou } : {}), ...(plant ? { plant: plant.id } : {}) };
 }
 
 /** Where a run first differed from the scenario. */

@@ -180,6 +180,18 @@ describe('rungsmith and the machines', () => {
     );
   });
 
+  test('"# plant:" naming no machine, or a second one, fails the scenario at its line (it was ignored, or the last one won)', () => {
+    const run = (csv: string) =>
+      rungsmith(['test', 'tank.json'], { 'tank.json': JSON.stringify({ ...tankReference(), scenarios: [{ name: 'S', csv }] }) });
+    const empty = run('# plant:\nscan,expect Pump\n1,0\n');
+    expect(empty.code).toBe(1);
+    expect(empty.out).toContain('FAIL S: line 1: there is no machine ""; the machines are tank, lift, garage, mixer, boxes, intersection');
+    const two = run('# plant: tank\n# plant: mixer\nscan,tank.Start\n1,1\n');
+    expect(two.code).toBe(1);
+    expect(two.out).toContain('FAIL S: line 2: a scenario runs against one machine: line 1 already names tank, this line mixer');
+    expect(run('# plant: tank\n# plant: Tank\nscan,tank.Start,expect tank.level ~ 1\n1,1,100\n').code).toBe(0);
+  });
+
   test('plants lists each machine with its I/O map, faults and quantities', () => {
     const all = rungsmith(['plants']);
     expect(all.code).toBe(0);
