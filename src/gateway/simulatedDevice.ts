@@ -82,7 +82,7 @@ export class SimulatedDevice implements Device {
   ) {
     const model = plant === undefined ? undefined : requirePlant(plant);
     const misfit = model && simulatedDeviceMisfit(model);
-    if (misfit) throw new Error(`--plant: ${misfit}`);
+    if (misfit) throw new Error(misfit);
     this.plant = model && new PlantLoop(model, {}, 0);
   }
 
@@ -190,7 +190,7 @@ export class SimulatedDevice implements Device {
       },
     };
     loop.bind(io);
-    // The monotonic clock: a wall clock set back (NTP, the user) must not step the machine backwards.
+    // The monotonic clock: a wall clock set forward or back (NTP, the user) must not leap or freeze the machine.
     const t0 = performance.now();
     let k = 0;
     let last = 0;
