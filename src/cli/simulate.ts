@@ -10,7 +10,7 @@ import { parseInterval } from '../plcopen/durations';
 import { UsageError, type CliIo } from './io';
 import { parseStimulus, type Stimulus } from './stimulus';
 import { csvRow } from '../sim/csv';
-import { machineNameHint, requirePlant } from '../plant/machines';
+import { machineNameHint, requirePlant, strayMapWarning } from '../plant/machines';
 import type { PlantModel } from '../plant/types';
 import { PlantLoop, plantValueType } from '../plant/loop';
 
@@ -145,6 +145,8 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
     try {
       const model = requirePlant(opts.plant);
       loop = new PlantLoop(model, project.plant?.id === model.id ? project.plant.map : undefined, 0);
+      const stray = project.plant?.id === model.id ? strayMapWarning(project.plant) : undefined;
+      if (stray) io.err(`${stray}\n`);
     } catch (e) {
       throw new UsageError(`--plant: ${(e as Error).message}`);
     }

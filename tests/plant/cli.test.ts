@@ -192,6 +192,19 @@ describe('rungsmith and the machines', () => {
     expect(run('# plant: tank\n# plant: Tank\nscan,tank.Start,expect tank.level ~ 1\n1,1,100\n').code).toBe(0);
   });
 
+  test("a project's I/O map naming no point of the machine (a typo) is warned about on stderr by test and simulate, not silently ignored", () => {
+    const project = { ...tankReference(), plant: { id: 'tank', map: { Pmp: '%QX0.5' } } };
+    const warning =
+      'warning tank: the project\'s I/O map names "Pmp", not a point of the machine (Start, Stop, LowLevel, HighLevel, Level, Pump, InletValve, DrainValve, RunLamp): it changes nothing\n';
+    const test = rungsmith(['test', 'tank.json'], { 'tank.json': JSON.stringify(project) });
+    expect(test.code).toBe(0);
+    expect(test.err).toBe(warning);
+    const sim = rungsmith(['simulate', 'tank.json', '--plant', 'tank', '--scans', '1', '--watch', 'Pump'], { 'tank.json': JSON.stringify(project) });
+    expect(sim.code).toBe(0);
+    expect(sim.err).toBe(warning);
+    expect(rungsmith(['test', 'tank.json'], { 'tank.json': JSON.stringify(tankReference()) }).err).toBe('');
+  });
+
   test('plants lists each machine with its I/O map, faults and quantities', () => {
     const all = rungsmith(['plants']);
     expect(all.code).toBe(0);
