@@ -214,7 +214,7 @@ export class Session {
           const sensor = this.ctx.simulated.machineSensorRefusal(address);
           if (sensor) return this.refuse('not-input', sensor, ref);
         }
-        this.ctx.simulated.setInputs(checked);
+        this.ctx.simulated.simulateInputs(checked);
         return;
       }
       case 'outputs':

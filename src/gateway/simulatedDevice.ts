@@ -136,6 +136,21 @@ export class SimulatedDevice implements Device {
     if (changed.size) this.listener?.inputs(changed, new Map([...changed.keys()].map((a) => [a, 'good' as const])));
   }
 
+  /**
+   * Inputs set from outside: the Hardware panel, a Modbus write into the input windows. With a
+   * machine, one of its operator controls is operated on the machine too (the garage's Doorway
+   * drives a car in: its photo-eye then sees it), not only shown to the program.
+   */
+  simulateInputs(values: Values): void {
+    const plant = this.plant;
+    if (plant)
+      for (const [address, value] of values) {
+        const op = plant.points.find((q) => q.kind === 'operator' && addressKey(q.address) === addressKey(address));
+        if (op) plant.setOperator(op.name, value === true);
+      }
+    this.setInputs(values);
+  }
+
   outputsState(): DeviceOutputs {
     return this.mode === 'drive' ? 'driven' : 'safe';
   }
@@ -228,7 +243,7 @@ export class SimulatedDevice implements Device {
     // The machine writes its sensors' inputs only when they change: a value written over one would
     // stay, a limit switch ON with nothing behind it. Its operator controls may be pressed.
     if (this.machineSensorRefusal(p.address)) throw MACHINE_SENSOR;
-    this.setInputs(new Map([[p.address, value]]));
+    this.simulateInputs(new Map([[p.address, value]]));
   }
 
   /**

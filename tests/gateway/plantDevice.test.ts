@@ -249,3 +249,38 @@ test("the machine's consequences go to the gateway's log, in real time: both doo
   expect(log[0]).toMatch(/^machine "garage": error MotorUp and MotorDown were on together \(short circuit\), \d+\.\d s after the gateway started$/);
   expect(device.plantRead('garage.shorts')).toBe(1);
 }, 60_000);
+
+test("an operator control set over Modbus or from the Hardware panel operates the machine: the garage's Doorway drives a car in, its photo-eye sees it", async () => {
+  const gw = await startGateway({ port: 0, config: resolveConfig({ simulated: { modbusPort: 0, plant: 'garage' } }), distDir: null });
+  try {
+    const sim = gw.simulated!;
+    // The door opened past the car's roof (12 s end to end; a car cannot drive through a closed door).
+    sim.drive(new Map([['%QX0.0', true]]));
+    await until(() => (sim.plantRead('garage.position') as number) > 70, 'the door open past the car');
+    sim.drive(new Map([['%QX0.0', false]]));
+    // Coil 806 sets %IX0.6, the garage's Doorway switch: a car drives into the doorway.
+    const run = await python(
+      [
+        'import sys',
+        'from pymodbus.client import ModbusTcpClient',
+        'c = ModbusTcpClient("127.0.0.1", port=int(sys.argv[1]))',
+        'assert c.connect()',
+        'assert not c.write_coil(806, True).isError()',
+        'c.close()',
+      ].join('\n'),
+      sim.modbusServerPort!,
+    );
+    expect(run.code, run.out).toBe(0);
+    await until(() => sim.plantRead('garage.car_in') === true, 'the car in the doorway');
+    // %IX0.5, the photo-eye across the doorway, sees it.
+    await until(() => sim.inputValues().get('%IX0.5') === true, 'the photo-eye broken');
+    // The Hardware panel drives it out again.
+    const c = await TestClient.hello(gw.port, gw.token, 'observer');
+    c.send({ t: 'simulate', seq: 1, values: { '%IX0.6': false } });
+    await until(() => sim.plantRead('garage.car_in') === false, 'the car gone');
+    await until(() => sim.inputValues().get('%IX0.5') === false, 'the photo-eye clear');
+    c.close();
+  } finally {
+    await gw.close();
+  }
+}, 60_000);
