@@ -81,6 +81,8 @@ export function testProject(io: CliIo, project: Project, opts: TestOptions): num
       io.out(`FAIL ${r.name}: ${failureText(r)}\n`);
       for (const l of why) io.out(`  ${l}\n`);
     }
+    // The machine's warnings fail nothing, but the run had them (the door moved without its warning).
+    for (const w of r.warnings ?? []) io.out(`  warning: ${w}\n`);
   }
   const failed = outcomes.filter((o) => !o.result.ok).length;
   io.out(`${outcomes.length - failed} passed, ${failed} failed (${outcomes.length} scenario${outcomes.length === 1 ? '' : 's'} of ${project.name})\n`);

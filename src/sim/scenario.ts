@@ -163,6 +163,8 @@ export interface ScenarioResult {
   readonly divergences: readonly Divergence[];
   /** The scenario or the program could not be run: why (the scenario line, the rule id). */
   readonly error?: string;
+  /** The machine's consequences of severity warning (they fail nothing), located, in order. */
+  readonly warnings?: readonly string[];
 }
 
 interface Check {
@@ -258,6 +260,8 @@ export function runPrepared(
   const loop = plant?.loop;
   loop?.bind(plc);
   const checked = new Set(parsed.columns.filter((c) => c.kind === 'expect').map((c) => c.name.toLowerCase()));
+  const warnings: string[] = [];
+  const done = (r: Omit<ScenarioResult, 'name'>): Omit<ScenarioResult, 'name'> => (warnings.length ? { ...r, warnings } : r);
   let row = 0;
   for (let scan = 1; scan <= parsed.scans; scan++) {
     const at = parsed.rows[row]?.scan === scan ? row : -1;
@@ -270,12 +274,13 @@ export function runPrepared(
     const report = plc.scan();
     if (report.fault) {
       afterScan?.(scan);
-      return { ok: false, scans: scan, divergences: [], error: `scan ${scan}: ${report.fault.message}` };
+      return done({ ok: false, scans: scan, divergences: [], error: `scan ${scan}: ${report.fault.message}` });
     }
     afterScan?.(scan);
     const events = loop?.afterScan(scan, (scan - 1) * plant!.cycleMs, plant!.cycleMs);
     const harm = events?.find((e) => e.severity === 'error' && !(e.counter && checked.has(`${loop!.model.id}.${e.counter}`.toLowerCase())));
-    if (harm) return { ok: false, scans: scan, divergences: [], error: harm.text };
+    if (events) for (const e of events) if (e.severity === 'warning') warnings.push(e.text);
+    if (harm) return done({ ok: false, scans: scan, divergences: [], error: harm.text });
     if (at < 0) continue;
     row++;
     const divergences: Divergence[] = [];
@@ -291,9 +296,9 @@ export function runPrepared(
           actual: checkText(check.type, actual),
         });
     }
-    if (divergences.length) return { ok: false, scans: scan, divergences };
+    if (divergences.length) return done({ ok: false, scans: scan, divergences });
   }
-  return { ok: true, scans: parsed.scans, divergences: [] };
+  return done({ ok: true, scans: parsed.scans, divergences: [] });
 }
 
 /**

@@ -8,6 +8,10 @@ import { garageReference, garageWrong } from '../../src/plant/garageExercise';
 import { intersectionReference, intersectionWrong } from '../../src/plant/intersectionExercise';
 import { liftReference, liftWrong } from '../../src/plant/liftExercise';
 import { mixerReference, mixerWrong } from '../../src/plant/mixerExercise';
+import { coil, contact, network, rung } from '../../src/model/examples';
+import { newPou, newProject } from '../../src/model/factory';
+import { plantVariables } from '../../src/plant/exerciseKit';
+import { tank } from '../../src/plant/tank';
 import { rungsmith } from '../cli/memoryIo';
 
 /** Each machine's exercise as CI runs it: its scenario, the scans it takes, where the wrong solution fails. */
@@ -203,6 +207,25 @@ describe('rungsmith and the machines', () => {
     expect(sim.code).toBe(0);
     expect(sim.err).toBe(warning);
     expect(rungsmith(['test', 'tank.json'], { 'tank.json': JSON.stringify(tankReference()) }).err).toBe('');
+  });
+
+  test("the machine's warnings (they fail nothing) are listed under the scenario's PASS or FAIL", () => {
+    // Start runs the pump, and nothing opens the inlet valve: the pump runs against it (a warning).
+    const main = newPou('Main', {
+      variables: plantVariables(tank),
+      networks: [network('Pump', 'The pump runs on Start.', rung([contact(0, 0, 'Start')], coil(0, 'Pump')), { rows: 1 })],
+    });
+    const project = newProject('Deadhead', {
+      scenarios: [{ name: 'Pump on Start', csv: '# plant: tank\n# cycle: 100ms\nscan,tank.Start,expect Pump\n1,1,1\n60,,1\n' }],
+      plant: { id: 'tank' },
+      pous: [main],
+      tasks: [{ name: 'MainTask', cycleMs: 100, priority: 1, programs: [{ instance: 'MainInstance', pou: 'Main' }] }],
+    });
+    const r = rungsmith(['test', 'p.json'], { 'p.json': JSON.stringify(project) });
+    expect(r.code).toBe(0);
+    expect(r.out).toMatch(
+      /^PASS Pump on Start \(60 scans\)\n {2}warning: the pump ran 3 s against the closed inlet valve at scan \d+ \(\d+\.\d\d s\)\n1 passed, 0 failed/,
+    );
   });
 
   test('plants lists each machine with its I/O map, faults and quantities', () => {
