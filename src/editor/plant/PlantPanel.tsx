@@ -124,7 +124,12 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
       </p>
       {drawing && (
         <FittedDrawing drawing={drawing} state={state}>
-          <OperatorControls points={points} held={shown?.operator ?? {}} />
+          <OperatorControls
+            points={points}
+            held={shown?.operator ?? {}}
+            live={live?.now.operator ?? {}}
+            viewing={historyScan !== undefined}
+          />
         </FittedDrawing>
       )}
       <Readouts model={model} state={state} />
@@ -187,17 +192,29 @@ function FittedDrawing({
   );
 }
 
-/** Operator controls on the drawing: real buttons (keyboard, screen readers), placed over it. */
+/**
+ * Operator controls on the drawing: real buttons (keyboard, screen readers), placed over it. They
+ * show the controls as the drawing's scan had them (`held`) but act on the live machine (`live`):
+ * a switch turns from where it is now, and a control used at a recorded scan goes back to Live,
+ * where what it does is seen.
+ */
 function OperatorControls({
   points,
   held,
+  live,
+  viewing,
 }: {
   points: readonly PlantPoint[];
   held: Readonly<Record<string, boolean>>;
+  live: Readonly<Record<string, boolean>>;
+  viewing: boolean;
 }) {
   const sim = useSimStore();
   const operators = points.filter((p) => p.kind === 'operator');
-  const set = (name: string, value: boolean) => sim.getState().plantOperator(name, value);
+  const set = (name: string, value: boolean) => {
+    if (viewing) sim.getState().goLive();
+    sim.getState().plantOperator(name, value);
+  };
   return (
     <div className="rs-plant-operator">
       {operators.map((p) =>
@@ -209,7 +226,7 @@ function OperatorControls({
             aria-pressed={held[p.name] === true}
             title={p.comment}
             className={held[p.name] ? 'rs-plant-op on' : 'rs-plant-op'}
-            onClick={() => set(p.name, !held[p.name])}
+            onClick={() => set(p.name, !live[p.name])}
           >
             {p.name}
           </button>
@@ -236,7 +253,7 @@ function OperatorControls({
             // A push button springs back: held from the keyboard, it is released when the focus
             // leaves it (Tab, a click elsewhere), whose key-up then goes elsewhere.
             onBlur={() => {
-              if (held[p.name]) set(p.name, false);
+              if (live[p.name]) sim.getState().plantOperator(p.name, false);
             }}
           >
             {p.name}

@@ -1,0 +1,50 @@
+// Exploratory QA of the box sorter, the garage door and the lift in the Plant panel (issue 26),
+// in real Chromium against the real server: what a student or trainer hit using them. One page
+// for the file.
+import type { Page } from 'playwright-core';
+import { beforeAll, expect, test } from 'vitest';
+import { openApp, useChromium } from './appPage';
+import { PlantPage } from './plantPage';
+import { SimPage } from './simPage';
+
+const browser = useChromium();
+let page: Page;
+let sim: SimPage;
+let plants: PlantPage;
+let errors: string[];
+
+interface GarageNow {
+  carIn: boolean;
+  position: number;
+}
+const garage = async () => (await plants.plant<GarageNow>())!.now.state;
+
+beforeAll(async () => {
+  ({ page, errors } = await openApp(browser()));
+  sim = new SimPage(page);
+  plants = new PlantPage(page, sim);
+});
+
+test('at a recorded scan the drawing\'s switch shows it as it was, and turning it acts on the live machine and goes back to Live', async () => {
+  await plants.openExercise('Garage door (machine: garage)', 100);
+  await plants.runHoldPause('KeyOpen', 'WarningLamp');
+  await plants.fastForward(150);
+  const doorway = page.getByTestId('plant-op-Doorway');
+  await doorway.click();
+  await expect.poll(async () => (await plants.plant())!.now.operator.Doorway).toBe(true);
+  await plants.fastForward(20);
+  expect((await garage()).carIn).toBe(true);
+  await expect.poll(() => doorway.getAttribute('aria-pressed')).toBe('true');
+  // Back to scan 100: the door opening, no car yet.
+  await page.evaluate(() => (window.rungsmith as unknown as { simStore: { getState(): { seekHistory(s: number): void } } }).simStore.getState().seekHistory(100));
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(/^Recorded scan 100 \(/);
+  await expect.poll(() => doorway.getAttribute('aria-pressed')).toBe('false');
+  // The operator drives the car out: the live switch turns OFF (it was ON), and the panel shows it live.
+  await doorway.click();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(/^After scan /);
+  await expect.poll(async () => (await plants.plant())!.now.operator.Doorway).toBe(false);
+  await expect.poll(() => doorway.getAttribute('aria-pressed')).toBe('false');
+  await plants.fastForward(1);
+  expect((await garage()).carIn).toBe(false);
+  expect(errors).toEqual([]);
+});
