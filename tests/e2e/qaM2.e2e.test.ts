@@ -48,3 +48,24 @@ test('at a recorded scan the drawing\'s switch shows it as it was, and turning i
   expect((await garage()).carIn).toBe(false);
   expect(errors).toEqual([]);
 });
+
+test('"Why?" on the box sorter\'s PusherEye names the box in front of it and where it is, at the recorded scan', async () => {
+  await plants.openExercise('Box sorter (machine: boxes)', 20);
+  await plants.startAndFastForward(400);
+  // The first recorded scan the photo-eye at the pusher read ON.
+  await page.getByTestId('history-condition').fill('PusherEye');
+  await page.getByTestId('history-find').click();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(/^Recorded scan /);
+  const status = (await page.getByTestId('plant-status').textContent())!;
+  const scan = /^Recorded scan ([\d,]+)/.exec(status)![1]!;
+  await sim.tab('Why?');
+  await page.getByTestId('why-input').fill('PusherEye');
+  await page.getByTestId('why-ask').click();
+  const why = page.getByTestId('why-explanation');
+  await expect.poll(() => why.textContent()).toContain(`PusherEye is TRUE after scan ${scan}`);
+  expect(await why.textContent()).toMatch(
+    /the photo-eye at the pusher at 2\.10 m is ON while a box breaks its beam; box 1 \(small\) is in front of it, its front edge at 2\.1\d m, so it is ON/,
+  );
+  await sim.tab('Plant');
+  expect(errors).toEqual([]);
+});
