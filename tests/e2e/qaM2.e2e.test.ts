@@ -69,3 +69,25 @@ test('"Why?" on the box sorter\'s PusherEye names the box in front of it and whe
   await sim.tab('Plant');
   expect(errors).toEqual([]);
 });
+
+test('a consequence opens its scan with the time it gave, as the History gives it; live, the panel gives the toolbar\'s time', async () => {
+  await page.getByTestId('history-live').click();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(/^After scan /);
+  await page.getByTestId('plant-fault-size_stuck_off').check();
+  await expect.poll(async () => (await plants.plant())!.now.faults).toEqual(['size_stuck_off']);
+  await plants.fastForward(600);
+  // Live: after scan N at 20 ms the toolbar gives the scan's time, (N - 1) x 20 ms; so does the panel.
+  const live = await plants.simScan();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toBe(
+    `After scan ${live.toLocaleString('en-US')} (${(((live - 1) * 20) / 1000).toFixed(2)} s)`,
+  );
+  const event = page.getByTestId('plant-events').getByRole('button', { name: /\(large\) ran into the small-box bin at scan/ }).first();
+  const [, scan, time] = /at scan ([\d,]+) \((\d+\.\d\d) s\)/.exec((await event.textContent())!)!;
+  await event.click();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toBe(`Recorded scan ${scan} (${time} s)`);
+  await expect.poll(() => page.getByTestId('history-marker').textContent()).toBe(`HISTORY scan ${scan} · ${time}0 s`);
+  const n = Number(scan!.replace(/,/g, ''));
+  expect(Number(time)).toBeCloseTo(((n - 1) * 20) / 1000, 5);
+  await page.getByTestId('plant-fault-size_stuck_off').uncheck();
+  expect(errors).toEqual([]);
+});

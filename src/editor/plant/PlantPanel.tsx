@@ -56,6 +56,10 @@ function wiring(
 const selectFrame = (s: SimState) => s.plant;
 const selectAtScan = (s: SimState) => s.plantAtScan;
 const selectHistoryScan = (s: SimState) => s.historyScan;
+const selectHistoryTime = (s: SimState) => s.historyTimeMs;
+const selectScan = (s: SimState) => s.scan;
+const selectTime = (s: SimState) => s.timeMs;
+const seconds = (ms: number) => `${(ms / 1000).toFixed(2)} s`;
 
 export function PlantPanel() {
   const config = useDocument(selectPlantConfig);
@@ -101,6 +105,9 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
   const frame = useSim(selectFrame);
   const atScan = useSim(selectAtScan);
   const historyScan = useSim(selectHistoryScan);
+  const historyTime = useSim(selectHistoryTime);
+  const simScan = useSim(selectScan);
+  const simTime = useSim(selectTime);
   const points = mappedPoints(model, map);
   const live = frame?.id === model.id ? frame : undefined;
   const shown = historyScan !== undefined && atScan ? atScan : live?.now;
@@ -108,10 +115,12 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
   const status =
     historyScan !== undefined
       ? atScan
-        ? `Recorded scan ${atScan.scan.toLocaleString('en-US')} (${(atScan.timeMs / 1000).toFixed(2)} s)`
+        ? // A scan's time is when it started, as the History, the toolbar and the consequences
+          // ("at scan 625 (12.48 s)") give it; the machine's own time is the scan's end.
+          `Recorded scan ${atScan.scan.toLocaleString('en-US')} (${seconds(atScan.scan === historyScan && historyTime !== undefined ? historyTime : atScan.timeMs)})`
         : `Scan ${historyScan.toLocaleString('en-US')} is no longer kept for the machine`
       : shown && shown.scan > 0
-        ? `After scan ${shown.scan.toLocaleString('en-US')} (${(shown.timeMs / 1000).toFixed(2)} s)`
+        ? `After scan ${shown.scan.toLocaleString('en-US')} (${seconds(shown.scan === simScan ? simTime : shown.timeMs)})`
         : shown
           ? // Attached to a program already past scan 0: the machine's first step is the next scan's.
             'Initial state: it moves from the next scan on'
