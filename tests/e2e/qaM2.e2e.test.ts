@@ -91,3 +91,22 @@ test('a consequence opens its scan with the time it gave, as the History gives i
   await page.getByTestId('plant-fault-size_stuck_off').uncheck();
   expect(errors).toEqual([]);
 });
+
+test('paused at a breakpoint inside a scan, the panel shows the machine after the scan before, with that scan\'s time', async () => {
+  await page.getByTestId('history-live').click();
+  const network = await page.evaluate(
+    () =>
+      window.rungsmith!.documentStore!.getState().project.pous[0]!.networks.find((n) => n.title === 'Pusher')!.id,
+  );
+  type Breakpoints = { simStore: { getState(): { toggleBreakpoint(id: string): void } } };
+  await page.evaluate((id) => (window.rungsmith as unknown as Breakpoints).simStore.getState().toggleBreakpoint(id), network);
+  await sim.button('run').click();
+  await sim.waitForMode('Paused');
+  // Scan N stopped before its Pusher network: the machine is as scan N - 1 left it.
+  const scan = await plants.simScan();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toBe(
+    `After scan ${(scan - 1).toLocaleString('en-US')} (${(((scan - 2) * 20) / 1000).toFixed(2)} s)`,
+  );
+  await page.evaluate((id) => (window.rungsmith as unknown as Breakpoints).simStore.getState().toggleBreakpoint(id), network);
+  expect(errors).toEqual([]);
+});

@@ -59,6 +59,7 @@ const selectHistoryScan = (s: SimState) => s.historyScan;
 const selectHistoryTime = (s: SimState) => s.historyTimeMs;
 const selectScan = (s: SimState) => s.scan;
 const selectTime = (s: SimState) => s.timeMs;
+const selectCycle = (s: SimState) => s.cycleMs;
 const seconds = (ms: number) => `${(ms / 1000).toFixed(2)} s`;
 
 export function PlantPanel() {
@@ -108,6 +109,10 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
   const historyTime = useSim(selectHistoryTime);
   const simScan = useSim(selectScan);
   const simTime = useSim(selectTime);
+  const cycleMs = useSim(selectCycle);
+  /** When scan `scan` started, the machine having reached `endMs` after it. */
+  const started = (scan: number, endMs: number, known: number | undefined, knownMs: number | undefined) =>
+    scan === known && knownMs !== undefined ? knownMs : Math.max(0, endMs - cycleMs);
   const points = mappedPoints(model, map);
   const live = frame?.id === model.id ? frame : undefined;
   const shown = historyScan !== undefined && atScan ? atScan : live?.now;
@@ -117,10 +122,10 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
       ? atScan
         ? // A scan's time is when it started, as the History, the toolbar and the consequences
           // ("at scan 625 (12.48 s)") give it; the machine's own time is the scan's end.
-          `Recorded scan ${atScan.scan.toLocaleString('en-US')} (${seconds(atScan.scan === historyScan && historyTime !== undefined ? historyTime : atScan.timeMs)})`
+          `Recorded scan ${atScan.scan.toLocaleString('en-US')} (${seconds(started(atScan.scan, atScan.timeMs, historyScan, historyTime))})`
         : `Scan ${historyScan.toLocaleString('en-US')} is no longer kept for the machine`
       : shown && shown.scan > 0
-        ? `After scan ${shown.scan.toLocaleString('en-US')} (${seconds(shown.scan === simScan ? simTime : shown.timeMs)})`
+        ? `After scan ${shown.scan.toLocaleString('en-US')} (${seconds(started(shown.scan, shown.timeMs, simScan, simTime))})`
         : shown
           ? // Attached to a program already past scan 0: the machine's first step is the next scan's.
             'Initial state: it moves from the next scan on'
