@@ -232,7 +232,9 @@ export const garage: PlantModel<GarageState> = {
     const onCar = carIn && position <= CAR_TOP && (speed < 0 || s.onCar);
     const moving = position !== s.position;
     const lampMs = lamp ? s.lampMs + dtMs : 0;
-    const unwarnedNow = moving && (!lamp || (!s.moving && lampMs < PREWARN_MS));
+    // Driven by the motor, that is: a door braking to a stop after the contactor dropped (with the
+    // lamp, as the limit switch ends the run) is not moved without warning, however fast the scan.
+    const unwarnedNow = moving && target !== 0 && (!lamp || (!s.moving && lampMs < PREWARN_MS));
     const pushing = (speed > 0 && position >= 100) || (speed < 0 && position <= 0);
     const pushMs = pushing ? s.pushMs + dtMs : 0;
     const open = position >= OPEN_LIMIT_AT;
