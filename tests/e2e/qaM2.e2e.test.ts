@@ -101,6 +101,7 @@ test('paused at a breakpoint inside a scan, the panel shows the machine after th
   type Breakpoints = { simStore: { getState(): { toggleBreakpoint(id: string): void } } };
   await page.evaluate((id) => (window.rungsmith as unknown as Breakpoints).simStore.getState().toggleBreakpoint(id), network);
   await sim.button('run').click();
+  await page.waitForFunction(() => (window.rungsmith as unknown as { simStore: { getState(): { breakpointHit?: number } } }).simStore.getState().breakpointHit !== undefined, null, { timeout: 30_000 });
   await sim.waitForMode('Paused');
   // Scan N stopped before its Pusher network: the machine is as scan N - 1 left it.
   const scan = await plants.simScan();
