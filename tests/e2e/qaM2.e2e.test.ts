@@ -25,6 +25,16 @@ beforeAll(async () => {
   plants = new PlantPage(page, sim);
 });
 
+test('an exercise opened from File > Examples shows its machine: the Plant tab is chosen, the drawing in view', async () => {
+  await sim.tab('Inspector');
+  await expect.poll(() => page.getByTestId('plant-panel').isVisible()).toBe(false);
+  await sim.openExample('Three-floor lift (machine: lift)');
+  await expect.poll(() => page.getByRole('tab', { name: 'Plant' }).getAttribute('aria-selected')).toBe('true');
+  await expect.poll(() => page.getByTestId('plant-panel').isVisible()).toBe(true);
+  await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('lift');
+  expect(await page.getByTestId('plant-op-Call1').isVisible()).toBe(true);
+});
+
 test('at a recorded scan the drawing\'s switch shows it as it was, and turning it acts on the live machine and goes back to Live', async () => {
   await plants.openExercise('Garage door (machine: garage)', 100);
   await plants.runHoldPause('KeyOpen', 'WarningLamp');
