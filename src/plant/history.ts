@@ -271,6 +271,25 @@ export class PlantHistory {
     return { scan, timeMs: time, state: copyPlantState(state), faults: [...faults].sort(), operator, drive: shown };
   }
 
+  /**
+   * The operator controls held and the faults set in scan `scan` (what its step was given; read
+   * from the run that holds it, nothing replayed), or undefined when the scan is not kept.
+   */
+  controlsAt(scan: number): { readonly operator: Record<string, boolean>; readonly faults: string[] } | undefined {
+    const c = this.chunkOf(scan);
+    if (!c) return undefined;
+    const i = scan - c.firstScan;
+    const stride = this.stride;
+    let run = 0;
+    while (run + 1 < c.runCount && c.runs[(run + 1) * stride + RUN_START]! <= i) run++;
+    const drive: Record<string, Value> = {};
+    const faults = new Set<string>();
+    this.fill(c.runs, run * stride + RUN_RECORD, drive, faults);
+    const operator: Record<string, boolean> = {};
+    for (const p of this.operators) operator[p.name] = drive[p.name] === true;
+    return { operator, faults: [...faults].sort() };
+  }
+
   private chunkOf(scan: number): Chunk | undefined {
     let lo = this.head;
     let hi = this.chunks.length - 1;

@@ -456,6 +456,11 @@ export class PlantLoop {
     return this.history.at(scan);
   }
 
+  /** The operator controls held and the faults set in scan `scan`, if it is still kept (PlantHistory.controlsAt). */
+  controlsAt(scan: number): { readonly operator: Record<string, boolean>; readonly faults: string[] } | undefined {
+    return this.history.controlsAt(scan);
+  }
+
   setOperator(name: string, value: boolean): void {
     const p = this.points.find((q) => q.kind === 'operator' && q.name.toUpperCase() === name.toUpperCase());
     if (!p)

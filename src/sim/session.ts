@@ -305,6 +305,7 @@ export class SimSession {
           sinceColdStart: this.sinceColdStart,
           cycleMs: this.runner.cycleMs,
           text: this.textTarget(),
+          plant: this.plant.recording(),
           post: (message, transfer) => {
             // A recorded scan shows the machine as it was then.
             const plant = message.type === 'historyView' ? this.plant.at(message.view.scan) : undefined;
