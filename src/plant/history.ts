@@ -272,6 +272,54 @@ export class PlantHistory {
   }
 
   /**
+   * The machine after each kept scan of [from, to] in turn, replayed once from the first one's
+   * keyframe on (a step per scan, where `at` for each would replay from its keyframe every time):
+   * for a trace or a search over many scans. The snapshot handed to `fn` (its state and records) is
+   * valid only during the call.
+   */
+  walk(from: number, to: number, fn: (snapshot: PlantSnapshot) => void): void {
+    const first = this.chunkOf(Math.max(from, this.firstScan ?? from));
+    if (!first) return;
+    this.replay ??= [this.model.initial(), this.model.initial()];
+    const drive: Record<string, Value> = {};
+    const faultSet = new Set<string>();
+    const stride = this.stride;
+    for (let k = this.chunks.indexOf(first); k < this.chunks.length; k++) {
+      const c = this.chunks[k]!;
+      if (c.firstScan > to) return;
+      let state: unknown = Object.assign(this.replay[0] as object, c.state);
+      let spare: unknown = this.replay[1];
+      let next = 0;
+      let dt = 0;
+      let time = 0;
+      let operator: Record<string, boolean> = {};
+      let shown: Record<string, Value> = {};
+      let faults: string[] = [];
+      const count = this.countOf(c);
+      for (let i = 0; i < count; i++) {
+        const scan = c.firstScan + i;
+        if (scan > to) return;
+        if (next < c.runCount && c.runs[next * stride + RUN_START] === i) {
+          const at = next * stride;
+          this.fill(c.runs, at + RUN_RECORD, drive, faultSet);
+          dt = c.runs[at + RUN_DT]!;
+          time = c.runs[at + RUN_TIME]!;
+          next++;
+          operator = {};
+          for (const p of this.operators) operator[p.name] = drive[p.name] === true;
+          shown = {};
+          for (const p of this.actuators) shown[p.name] = drive[p.name]!;
+          faults = [...faultSet].sort();
+        } else time = time + dt;
+        const after = this.model.step(state, drive, dt, faultSet, spare);
+        spare = state;
+        state = after;
+        if (scan >= from) fn({ scan, timeMs: time, state, faults, operator, drive: shown });
+      }
+    }
+  }
+
+  /**
    * The operator controls held and the faults set in scan `scan` (what its step was given; read
    * from the run that holds it, nothing replayed), or undefined when the scan is not kept.
    */

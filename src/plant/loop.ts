@@ -456,6 +456,11 @@ export class PlantLoop {
     return this.history.at(scan);
   }
 
+  /** The machine after each kept scan of [from, to] in turn (PlantHistory.walk: the snapshot is valid only during the call). */
+  walk(from: number, to: number, fn: (snapshot: PlantSnapshot) => void): void {
+    this.history.walk(from, to, fn);
+  }
+
   /** The operator controls held and the faults set in scan `scan`, if it is still kept (PlantHistory.controlsAt). */
   controlsAt(scan: number): { readonly operator: Record<string, boolean>; readonly faults: string[] } | undefined {
     return this.history.controlsAt(scan);

@@ -16,7 +16,15 @@ import { ScanHistory, type HistoryOptions, type InputChange } from './history';
 import { ChangeIndex, sameValue } from './historyChanges';
 import type { HistoryView, SimLayout, SimView } from './protocol';
 import { Replayer, type HistoryState } from './replay';
-import type { PlantColumns } from './scenarioRecording';
+import type { PlantColumns, TraceColumns } from './scenarioRecording';
+
+/** The machine's names a condition may read (`tank.level > 500`), and their values per recorded scan. */
+export interface ConditionPlant {
+  /** The machine's spelling of a name it has (`TANK.LEVEL` -> `tank.level`), undefined otherwise. */
+  spelling(name: string): string | undefined;
+  /** The values of `names` in each scan of [from, to]. */
+  values(names: readonly string[], from: number, to: number): (scan: number) => readonly Value[];
+}
 import { recordedBody } from './viewPower';
 import { readPinValues, viewBody, viewPou } from './pinValues';
 
@@ -220,19 +228,34 @@ export class HistoryRecorder {
     return at < from ? at : this.changes.lastChange(i, from - 1);
   }
 
-  findCondition(expression: string, from: number, direction: 1 | -1): number | undefined {
+  findCondition(expression: string, from: number, direction: 1 | -1, plant?: ConditionPlant): number | undefined {
+    // The condition's names in the order it reads them: the program's recorded ones (`names`, their
+    // values walked from the history) and the machine's (`tank.level`, worked out from its history).
     const names: string[] = [];
+    const machine: string[] = [];
+    const slots: number[] = [];
     const test = compileCondition(expression, (n) => {
       const i = this.indexOf(n);
-      if (i === undefined) return undefined;
-      const name = this.names[i]!;
-      const at = names.indexOf(name);
-      return at >= 0 ? at : names.push(name) - 1;
+      const key = i !== undefined ? this.names[i]! : plant?.spelling(n);
+      if (key === undefined) return undefined;
+      const list = i !== undefined ? names : machine;
+      let at = list.indexOf(key);
+      if (at < 0) at = list.push(key) - 1;
+      const slot = i !== undefined ? at : -1 - at;
+      const known = slots.indexOf(slot);
+      return known >= 0 ? known : slots.push(slot) - 1;
     });
     const first = this.history.first;
     if (first === undefined) return undefined;
     const last = this.history.last!;
-    const holds = (values: readonly Value[]) => test(values);
+    const machineAt = plant && machine.length ? plant.values(machine, first, last) : undefined;
+    const read = new Array<Value>(slots.length);
+    const holds = (values: readonly Value[], scan: number) => {
+      if (!machineAt) return test(values);
+      const m = machineAt(scan);
+      for (let k = 0; k < slots.length; k++) read[k] = slots[k]! >= 0 ? values[slots[k]!]! : m[-1 - slots[k]!]!;
+      return test(read);
+    };
     const start = from + direction;
     if (direction === 1) return start > last ? undefined : this.replayer.walk(Math.max(start, first), last, names, holds);
     // Backwards: segment by segment from the newest, the last scan where it holds in each.
@@ -241,7 +264,7 @@ export class HistoryRecorder {
       const segFrom = Math.max(seg.firstScan, first);
       let found: number | undefined;
       this.replayer.walk(segFrom, upTo, names, (values, scan) => {
-        if (holds(values)) found = scan;
+        if (holds(values, scan)) found = scan;
         return false;
       });
       if (found !== undefined) return found;
@@ -284,13 +307,13 @@ export class HistoryRecorder {
   }
 
   /** The recorded range as a trace in the CLI's format: scan,time_ms,<names...> (BOOL 0/1, TIME in ms). */
-  traceCsv(names: readonly string[], from?: number, to?: number): string {
+  traceCsv(names: readonly string[], from?: number, to?: number, plant?: TraceColumns): string {
     const cols = this.types(names);
-    const lines = [csvRow(['scan', 'time_ms', ...cols.map((c) => c.name)])];
+    const lines = [csvRow(['scan', 'time_ms', ...cols.map((c) => c.name), ...(plant?.names ?? [])])];
     const range = this.range(from, to);
     if (range)
       this.each(cols, range, (values, scan) => {
-        lines.push(csvRow([String(scan), String(this.history.timeOf(scan)), ...cols.map((c, j) => csvValue(c.type, values[j]!))]));
+        lines.push(csvRow([String(scan), String(this.history.timeOf(scan)), ...cols.map((c, j) => csvValue(c.type, values[j]!)), ...(plant?.cells(scan) ?? [])]));
       });
     return `${lines.join('\n')}\n`;
   }

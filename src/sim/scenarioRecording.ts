@@ -3,7 +3,13 @@
 import type { Plc } from '../engine/api';
 import type { Project } from '../model/project';
 import { addressKey } from '../plant/loop';
-import type { PlantPoint } from '../plant/types';
+import type { PlantModel, PlantPoint } from '../plant/types';
+import type { PlantSnapshot } from '../plant/loop';
+import { findPlantName, plantNames, plantSpelling, plantValue } from '../plant/values';
+import type { Value } from '../model/iecTypes';
+import type { ConditionPlant } from './historyRecorder';
+import { plantValueType } from '../plant/loop';
+import { csvValue } from '../engine/values/literals';
 import type { HistoryRecorder } from './historyRecorder';
 import { isProgramView, withView } from './layout';
 import type { SimLayout } from './protocol';
@@ -58,6 +64,9 @@ export function plcScanWithClock(plc: Plc, before: (scan: number) => void): Plc 
 /** The machine the recorded scans ran against, as a recorded scenario needs it. */
 export interface RecordedPlant {
   readonly id: string;
+  readonly model: PlantModel;
+  /** The machine after each kept scan of [from, to] in turn (valid only during the call). */
+  walk(from: number, to: number, fn: (snapshot: PlantSnapshot) => void): void;
   /** Its points at their addresses (the map it ran with). */
   readonly points: readonly PlantPoint[];
   /** The operator controls held and the faults set in a scan, if still kept. */
@@ -108,6 +117,55 @@ export function plantRecording(
         const c = plant.controlsAt(scan);
         return [...controls.map((n) => c?.operator[n] === true), ...faultList.map((f) => c?.faults.includes(f) === true)];
       },
+    },
+  };
+}
+
+/** The machine's columns of a trace: their names and, per scan of the range, their cells. */
+export interface TraceColumns {
+  readonly names: readonly string[];
+  cells(scan: number): readonly string[];
+}
+
+/**
+ * A trace's names split into the program's and the machine's (`tank.level`, `tank.Pump`); without
+ * names asked for, the program's variables and every quantity of the machine. The machine's cells
+ * are worked out in one walk over the range (a step per scan), formatted as `rungsmith simulate
+ * --watch` writes them.
+ */
+export function plantTrace(
+  plant: RecordedPlant | undefined,
+  names: readonly string[] | undefined,
+  programNames: readonly string[],
+  range: readonly [number, number] | undefined,
+): { program: string[]; columns?: TraceColumns } {
+  const asked = names ?? [...programNames, ...(plant ? plantNames(plant.model).filter((n) => n.kind === 'quantity').map((n) => n.name) : [])];
+  const own = new Set(programNames.map((n) => n.toUpperCase()));
+  const onPlant = (n: string) => plant !== undefined && !own.has(n.toUpperCase()) && findPlantName(plant.model, n) !== undefined;
+  const machine = asked.filter(onPlant);
+  const program = asked.filter((n) => !onPlant(n));
+  if (!plant || machine.length === 0) return { program };
+  const types = machine.map((n) => plantValueType(plant.model, n)!);
+  const rows = new Map<number, string[]>();
+  if (range)
+    plant.walk(range[0], range[1], (snap) => {
+      rows.set(snap.scan, machine.map((n, j) => csvValue(types[j]!, plantValue(plant.model, snap, n) ?? '')));
+    });
+  return { program, columns: { names: machine, cells: (scan) => rows.get(scan) ?? machine.map(() => '') } };
+}
+
+/** The machine's names for History Find's conditions (`lift.position > 3000`), their values worked out in one walk over the history. */
+export function conditionPlant(plant: RecordedPlant | undefined): ConditionPlant | undefined {
+  if (!plant) return undefined;
+  return {
+    spelling: (name) => plantSpelling(plant.model, name),
+    values: (names, from, to) => {
+      const rows: (readonly Value[])[] = [];
+      plant.walk(from, to, (snap) => {
+        rows[snap.scan - from] = names.map((n) => plantValue(plant.model, snap, n) ?? 0);
+      });
+      const none = names.map(() => 0);
+      return (scan) => rows[scan - from] ?? none;
     },
   };
 }

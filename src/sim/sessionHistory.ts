@@ -5,7 +5,7 @@ import type { Project } from '../model/project';
 import type { HistoryRecorder } from './historyRecorder';
 import { isProgramView } from './layout';
 import type { HostMessage, SimFrame, SimLayout, WorkerMessage } from './protocol';
-import { plantRecording, scenarioRecordingProblem, type RecordedPlant, type SinceColdStart } from './scenarioRecording';
+import { conditionPlant, plantRecording, plantTrace, scenarioRecordingProblem, type RecordedPlant, type SinceColdStart } from './scenarioRecording';
 
 /** The history requests a session answers with answerHistory. */
 export type HistoryRequest = Extract<HostMessage, { type: 'historySeek' | 'historyFind' | 'explain' | 'historyExport' }>;
@@ -56,7 +56,7 @@ export function answerHistory(m: HistoryRequest, ctx: HistoryContext): void {
       return;
     case 'historyFind': {
       const recorder = requireHistory(ctx.recorder);
-      const found = m.change !== undefined ? recorder.findChange(m.change, m.from, m.direction) : recorder.findCondition(m.condition ?? '', m.from, m.direction);
+      const found = m.change !== undefined ? recorder.findChange(m.change, m.from, m.direction) : recorder.findCondition(m.condition ?? '', m.from, m.direction, conditionPlant(ctx.plant));
       if (found === undefined) {
         const what = m.change !== undefined ? `no ${m.direction > 0 ? 'later' : 'earlier'} change of ${m.change}` : `${m.condition} does not hold in any ${m.direction > 0 ? 'later' : 'earlier'} recorded scan`;
         ctx.post({ type: 'historyNotFound', message: `${what} (scans ${recorder.history.first} to ${recorder.history.last} are recorded)` });
@@ -90,7 +90,7 @@ export function answerHistory(m: HistoryRequest, ctx: HistoryContext): void {
       }
       const text =
         m.format === 'trace'
-          ? recorder.traceCsv(m.names ?? ctx.layout!.variables.map((v) => v.name), m.from, m.to)
+          ? traceText(recorder, ctx, m.names, m.from, m.to)
           : plant && !('problem' in plant)
             ? recorder.scenarioCsv(plant.inputs, m.outputs ?? [], ctx.cycleMs, m.from, m.to, plant.columns)
             : recorder.scenarioCsv(m.inputs ?? [], m.outputs ?? [], ctx.cycleMs, m.from, m.to);
@@ -99,3 +99,11 @@ export function answerHistory(m: HistoryRequest, ctx: HistoryContext): void {
     }
   }
 }
+
+/** The recorded scans as a trace: the program's variables asked for and the machine's names (`tank.level`) beside them. */
+function traceText(recorder: HistoryRecorder, ctx: HistoryContext, names: readonly string[] | undefined, from: number | undefined, to: number | undefined): string {
+  const programNames = ctx.layout!.variables.map((v) => v.name);
+  const { program, columns } = plantTrace(ctx.plant, names, programNames, recorder.recordedRange(from, to));
+  return recorder.traceCsv(program, from, to, columns);
+}
+

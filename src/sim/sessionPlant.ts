@@ -115,7 +115,7 @@ export class SessionPlant {
   /** What recording the history as a scenario needs of the machine, or undefined without one. */
   recording(): RecordedPlant | undefined {
     const loop = this.loop;
-    return loop && { id: loop.model.id, points: loop.points, controlsAt: (scan) => loop.controlsAt(scan) };
+    return loop && { id: loop.model.id, model: loop.model, points: loop.points, controlsAt: (scan) => loop.controlsAt(scan), walk: (from, to, fn) => loop.walk(from, to, fn) };
   }
 
   /** For scenario replays in the simulator: the machine's loop, started over. */

@@ -9,6 +9,7 @@ import { PlantHistory, PLANT_HISTORY_CHUNK } from '../../src/plant/history';
 import { PlantLoop, type PlantSnapshot } from '../../src/plant/loop';
 import { PLANTS } from '../../src/plant/machines';
 import { tank, type TankState } from '../../src/plant/tank';
+import { copyPlantState } from '../../src/plant/points';
 
 /** A small deterministic generator (no Math.random: the run is the same every time). */
 function lcg(seed: number): () => number {
@@ -59,6 +60,22 @@ describe('the machine history', () => {
       }
       expect(loop.at(0)!.state).toEqual(model.initial());
       expect(loop.at(scans + 1)).toBeUndefined();
+    });
+
+  for (const model of PLANTS)
+    test(`${model.id}: walking a range of recorded scans gives each scan's machine as a seek does`, () => {
+      const { loop, live } = run(model, 3 * PLANT_HISTORY_CHUNK + 77, 100_000);
+      const seen: number[] = [];
+      loop.walk(100, 700, (snap) => {
+        seen.push(snap.scan);
+        const was = live[snap.scan - 1]!;
+        expect(snap.timeMs).toBe(was.timeMs);
+        expect(copyPlantState(snap.state)).toEqual(was.state);
+        expect(snap.faults).toEqual(was.faults);
+        expect(snap.operator).toEqual(was.operator);
+        expect(snap.drive).toEqual(was.drive);
+      });
+      expect(seen).toEqual(Array.from({ length: 601 }, (_, i) => 100 + i));
     });
 
   test('the tank driven hard (overflows, faults, long scans): the seeked states are the live ones, to the bit', () => {

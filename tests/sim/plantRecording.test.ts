@@ -70,4 +70,65 @@ describe('a scenario recorded against a machine', () => {
       /machine tank .* record starts later .* Press Reset/,
     );
   });
+
+  test('an exported trace has the machine\'s quantities beside the program\'s variables, scan by scan as rungsmith simulate writes them', async () => {
+    const { s, scheduler } = setup();
+    const project = tankReference();
+    s().setPlant({ id: 'tank' });
+    s().run(project);
+    scheduler.advance(300);
+    s().plantOperator('Start', true);
+    scheduler.advance(300);
+    s().plantOperator('Start', false);
+    scheduler.advance(30_000);
+    s().pause();
+    const rows = (await s().exportHistory({ format: 'trace' })).trim().split('\n').map((l) => l.split(','));
+    const header = rows[0]!;
+    expect(header).toEqual(expect.arrayContaining(['Pump', 'Running', 'tank.level', 'tank.inflow', 'tank.overflows']));
+    const scans = rows.slice(1);
+    expect(scans.length).toBe(s().history!.last);
+    // The same columns as the command line's trace of the same run (its Start pressed at the same scans).
+    const pressed = scans.findIndex((r) => r[header.indexOf('Start')] === '1') + 1;
+    const released = scans.findIndex((r, i) => i >= pressed && r[header.indexOf('Start')] === '0') + 1;
+    // At the simulation's cycle (its trace's time step).
+    const cycle = Number(scans[1]![header.indexOf('time_ms')]) - Number(scans[0]![header.indexOf('time_ms')]);
+    const cli = rungsmith(['simulate', 'tank.json', '--plant', 'tank', '--cycle', `${cycle}ms`, '--scans', String(scans.length), '--watch', 'Pump,tank.level,tank.inflow', '--inputs', 'stim.csv'], {
+      'tank.json': JSON.stringify(project),
+      'stim.csv': `scan,tank.Start\n${pressed},1\n${released},0\n`,
+    });
+    expect(cli.err).toBe('');
+    const cliRows = cli.out.trim().split('\n').map((l) => l.split(','));
+    const at = (row: string[], h: string[], name: string) => row[h.indexOf(name)];
+    for (const k of [1, pressed, pressed + 1, 500, 1000, scans.length]) {
+      const mine = scans[k - 1]!;
+      const theirs = cliRows.find((r) => r[0] === String(k))!;
+      for (const name of ['Pump', 'tank.level', 'tank.inflow']) expect(at(mine, header, name), `${name} at scan ${k}`).toBe(at(theirs, cliRows[0]!, name));
+    }
+    // The tank did fill: its level moved.
+    expect(new Set(scans.map((r) => at(r, header, 'tank.level'))).size).toBeGreaterThan(100);
+  });
+
+  test('History Find reads the machine\'s names: the first recorded scan where the tank holds more than 500 L', async () => {
+    const { s, scheduler } = setup();
+    s().setPlant({ id: 'tank' });
+    s().run(tankReference());
+    scheduler.advance(300);
+    s().plantOperator('Start', true);
+    scheduler.advance(300);
+    s().plantOperator('Start', false);
+    scheduler.advance(60_000);
+    s().pause();
+    const trace = (await s().exportHistory({ format: 'trace', names: ['tank.level'] })).trim().split('\n').slice(1).map((l) => l.split(','));
+    const expected = trace.findIndex((r) => Number(r[2]) > 500) + 1;
+    expect(expected).toBeGreaterThan(1);
+    s().seekHistory(1);
+    await expect.poll(() => s().historyScan).toBe(1);
+    s().findCondition('TANK.LEVEL > 500 AND Pump', 1);
+    await expect.poll(() => s().historyScan).toBe(expected);
+    expect(s().historyMessage).toBeUndefined();
+    // And back: the last scan before it where the tank was still at or under 500 L.
+    s().findCondition('tank.level <= 500', -1);
+    await expect.poll(() => s().historyScan).toBe(expected - 1);
+  });
 });
+
