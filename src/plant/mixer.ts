@@ -342,7 +342,10 @@ export const mixer: PlantModel<MixerState> = {
           spoiledBatch = false;
           maxTemp = temp;
         }
+        // Into the emptied vessel: a batch of its own, whose hottest so far is what it is now.
+        const fresh = level <= 0;
         temp = (temp * level + AMBIENT_C * (inA + inB)) / (level + inA + inB);
+        if (fresh) maxTemp = temp;
         level += inA + inB;
         volA += inA;
         volB += inB;

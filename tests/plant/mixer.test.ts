@@ -198,6 +198,18 @@ describe('the mixer consequences', () => {
     const again = run(run(empty, {}, 2000), { OutletValve: true }, 2000);
     expect(again.batches).toBe(1);
   });
+
+  test("the next batch's hottest temperature is its own: dosed cold into the emptied vessel, max_temp is about 20 °C, not the last batch's 60", () => {
+    const empty = run(heldBatch(dosed(400, 400), 30_500), { OutletValve: true }, 25_000);
+    expect(empty.level).toBe(0);
+    expect(q(empty, 'max_temp')).toBeGreaterThan(55);
+    const next = run(run(empty, {}, 1000), { ValveA: true }, 3000);
+    expect(next.level).toBeGreaterThan(0);
+    // Cold ingredient (a little warmed by the element still hot from the last batch).
+    expect(q(next, 'temperature')).toBeLessThan(21);
+    expect(q(next, 'max_temp')).toBeLessThan(21);
+    expect(q(next, 'max_temp')).toBeGreaterThanOrEqual(q(next, 'temperature') as number);
+  });
 });
 
 describe('the mixer faults', () => {

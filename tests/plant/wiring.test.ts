@@ -27,6 +27,12 @@ describe('rewireAddress', () => {
     expect(rewireAddress(points, point('Start'), text)).toEqual({ problem });
   });
 
+  test('an INT point given a bit address is refused in English: "an INT point"', () => {
+    expect(rewireAddress(points, point('Level'), '%IX1.1')).toEqual({
+      problem: 'Level: an INT point needs a %IW address, not %IX1.1',
+    });
+  });
+
   test('a free address is kept as IEC spells it', () => {
     expect(rewireAddress(points, point('Start'), ' %ix01.5 ')).toEqual({ address: '%IX1.5' });
     expect(rewireAddress(points, point('Level'), '%iw02')).toEqual({ address: '%IW2' });
