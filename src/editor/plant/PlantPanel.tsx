@@ -270,10 +270,27 @@ function Readouts({ model, state }: { model: PlantModel; state: unknown }) {
   );
 }
 
+const selectHistory = (s: SimState) => s.history;
+
 function Consequences() {
   const frame = useSim(selectFrame);
+  const history = useSim(selectHistory);
   const sim = useSimStore();
   const events = frame?.events ?? [];
+  // A consequence whose scan the history no longer keeps (a long run): said, instead of showing
+  // the nearest scan kept as if it were that one.
+  const [gone, setGone] = useState<string | undefined>();
+  const show = (scan: number) => {
+    const h = sim.getState().history;
+    if (h && (scan < h.first || scan > h.last)) {
+      setGone(
+        `Scan ${scan.toLocaleString('en-US')} is no longer in the history (it keeps scans ${h.first.toLocaleString('en-US')} to ${h.last.toLocaleString('en-US')}).`,
+      );
+      return;
+    }
+    setGone(undefined);
+    sim.getState().seekHistory(scan);
+  };
   return (
     <div className="rs-plant-events" data-testid="plant-events">
       <h4>
@@ -292,14 +309,23 @@ function Consequences() {
               <button
                 type="button"
                 className="rs-plant-link"
-                title="Show this scan in the history"
-                onClick={() => sim.getState().seekHistory(e.scan)}
+                title={
+                  history && e.scan < history.first
+                    ? 'This scan is no longer in the history'
+                    : 'Show this scan in the history'
+                }
+                onClick={() => show(e.scan)}
               >
                 {e.text}
               </button>
             </li>
           ))}
         </ul>
+      )}
+      {gone && events.length > 0 && (
+        <p className="rs-plant-warning" role="status" data-testid="plant-events-gone">
+          {gone}
+        </p>
       )}
     </div>
   );

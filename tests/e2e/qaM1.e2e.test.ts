@@ -1,0 +1,52 @@
+// Exploratory QA of the tank, the batch mixer and the road intersection in the Plant panel
+// (issue 26), as a student or trainer uses them, in real Chromium against the real server: what
+// was found wrong, each test failing before its fix. One page for the whole file.
+import type { Page } from 'playwright-core';
+import { beforeAll, expect, test } from 'vitest';
+import { tankWrong } from '../../src/plant/exercises';
+import { openApp, useChromium } from './appPage';
+import { PlantPage } from './plantPage';
+import { SimPage } from './simPage';
+
+const browser = useChromium();
+let page: Page;
+let sim: SimPage;
+let plants: PlantPage;
+let errors: string[];
+
+interface HistoryHandle {
+  getState(): { history?: { first: number; last: number }; historyScan?: number };
+}
+const historyRange = () =>
+  page.evaluate(() => (window.rungsmith as unknown as { simStore: HistoryHandle }).simStore.getState().history);
+const historyScan = () =>
+  page.evaluate(() => (window.rungsmith as unknown as { simStore: HistoryHandle }).simStore.getState().historyScan);
+
+beforeAll(async () => {
+  ({ page, errors } = await openApp(browser()));
+  sim = new SimPage(page);
+  plants = new PlantPage(page, sim);
+  await plants.openExercise('Tank level control (machine: tank)', 100);
+});
+
+test('a consequence whose scan the history no longer keeps says so when clicked, instead of showing another scan as that one', async () => {
+  await sim.load(tankWrong());
+  await expect.poll(() => page.getByTestId('project-name').textContent()).toContain('wrong');
+  await plants.startAndFastForward(900);
+  const event = page.getByTestId('plant-events').getByRole('button', { name: /the tank overflowed at scan/ });
+  const scan = Number(/at scan ([\d,]+)/.exec((await event.textContent())!)![1]!.replace(/,/g, ''));
+  // Many minutes of PLC time later (fast-forward): the history keeps the newest scans only.
+  await plants.fastForward(101_000);
+  const range = (await historyRange())!;
+  expect(range.first).toBeGreaterThan(scan);
+  await event.click();
+  await expect
+    .poll(() => page.getByTestId('plant-events-gone').textContent())
+    .toBe(
+      `Scan ${scan.toLocaleString('en-US')} is no longer in the history (it keeps scans ${range.first.toLocaleString('en-US')} to ${range.last.toLocaleString('en-US')}).`,
+    );
+  // The drawing stays live: no recorded scan is shown as if it were the overflow's.
+  expect(await historyScan()).toBeUndefined();
+  expect(await page.getByTestId('plant-status').textContent()).toMatch(/^After scan /);
+  expect(errors).toEqual([]);
+});
