@@ -590,6 +590,24 @@ export const intersection: PlantModel<IntersectionState> = {
     return out;
   },
 
+  explain(s: IntersectionState, point: string, faults: ReadonlySet<string>): string | undefined {
+    const loop = (road: 'main' | 'side', waiting: number, id: string) => {
+      const queue = `${waiting} vehicle${waiting === 1 ? '' : 's'} wait${waiting === 1 ? 's' : ''} at the ${road} road stop line`;
+      if (faults.has(`${id}_stuck_on`))
+        return `the ${road} road detector loop is stuck ON (fault ${id}_stuck_on): it reads ON whatever waits; ${queue}`;
+      if (faults.has(`${id}_stuck_off`))
+        return `the ${road} road detector loop is stuck OFF (fault ${id}_stuck_off): it reads OFF whatever waits; ${queue}`;
+      return `the ${road} road detector loop is ON while a vehicle waits at the stop line; ${queue}, so it is ${waiting > 0 ? 'ON' : 'OFF'}`;
+    };
+    switch (point) {
+      case 'LoopMain':
+        return loop('main', s.arrivedMain - s.departedMain, 'main_loop');
+      case 'LoopSide':
+        return loop('side', s.arrivedSide - s.departedSide, 'side_loop');
+    }
+    return undefined;
+  },
+
   quantity(s: IntersectionState, name: string): number | boolean {
     switch (name) {
       case 'served':

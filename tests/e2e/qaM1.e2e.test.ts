@@ -50,3 +50,29 @@ test('a consequence whose scan the history no longer keeps says so when clicked,
   expect(await page.getByTestId('plant-status').textContent()).toMatch(/^After scan /);
   expect(errors).toEqual([]);
 });
+
+test('"Why?" on the mixer\'s Temperature with the transmitter frozen from the panel explains it by the machine: frozen at what it shows, the batch hotter', async () => {
+  await plants.openExercise('Batch mixer (machine: mixer)', 100);
+  // Dosed (about 40 s) and heating: then the transmitter freezes while the heater goes on.
+  await plants.startAndFastForward(450);
+  await page.getByTestId('plant-fault-temp_frozen').check();
+  await expect.poll(async () => (await plants.plant())?.now.faults).toEqual(['temp_frozen']);
+  await plants.fastForward(100);
+  const shown = Number(await sim.value('Temperature'));
+  await sim.tab('Why?');
+  await page.getByTestId('why-input').fill('Temperature');
+  await page.getByTestId('why-ask').click();
+  const why = page.getByTestId('why-explanation');
+  await expect.poll(() => why.textContent()).toContain('the transmitter is frozen (fault temp_frozen): it keeps showing ');
+  const text = (await why.textContent())!;
+  const m = /it keeps showing (\d+\.\d) °C \((\d+)\) whatever the batch; the batch is (\d+\.\d) °C/.exec(text)!;
+  expect(Number(m[2])).toBe(shown);
+  expect(Number(m[3])).toBeGreaterThan(Number(m[1]));
+  // A switch: the level against it.
+  await page.getByTestId('why-input').fill('HighLevel');
+  await page.getByTestId('why-ask').click();
+  await expect.poll(() => why.textContent()).toMatch(/the high level switch is ON at 800 L and above; the level is \d+\.\d L, so it is ON/);
+  await page.getByTestId('plant-fault-temp_frozen').uncheck();
+  await expect.poll(async () => (await plants.plant())?.now.faults).toEqual([]);
+  expect(errors).toEqual([]);
+});

@@ -217,6 +217,22 @@ describe('the intersection model', () => {
     expect(senseRecord(intersection, intersection.initial(), none)).toEqual({ LoopMain: false, LoopSide: false });
   });
 
+  test('"Why?" on a detector loop: the vehicles waiting at its stop line, or the fault that holds it', () => {
+    const queued = run(intersection.initial(), MAIN_GO, 10_000, new Set(['main_green_out'])).s;
+    const why = (point: string, faults: string[] = []) => intersection.explain!(queued, point, new Set(faults));
+    expect(why('LoopMain')).toBe(
+      'the main road detector loop is ON while a vehicle waits at the stop line; 2 vehicles wait at the main road stop line, so it is ON',
+    );
+    expect(why('LoopSide', ['side_loop_stuck_off'])).toBe(
+      `the side road detector loop is stuck OFF (fault side_loop_stuck_off): it reads OFF whatever waits; ${q(queued, 'waiting_side')} vehicle${q(queued, 'waiting_side') === 1 ? ' waits' : 's wait'} at the side road stop line`,
+    );
+    expect(intersection.explain!(intersection.initial(), 'LoopSide', new Set(['side_loop_stuck_on']))).toBe(
+      'the side road detector loop is stuck ON (fault side_loop_stuck_on): it reads ON whatever waits; 0 vehicles wait at the side road stop line',
+    );
+    expect(intersection.explain!(intersection.initial(), 'LoopMain', none)).toMatch(/; 0 vehicles wait at the main road stop line, so it is OFF$/);
+    expect(why('CrossMain')).toBeUndefined();
+  });
+
   test('a step is pure: the same state, drive and time give the same state, the input is not changed', () => {
     const s0 = run(intersection.initial(), ALL_RED, 12_000).s;
     const copy = JSON.stringify(s0);
