@@ -3,6 +3,8 @@
 // was found wrong, each test failing before its fix. One page for the whole file.
 import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
+import { coil, contact, rung } from '../../src/model/examples';
+import { intersectionReference } from '../../src/plant/intersectionExercise';
 import { tankWrong } from '../../src/plant/exercises';
 import { openApp, useChromium } from './appPage';
 import { PlantPage } from './plantPage';
@@ -74,5 +76,33 @@ test('"Why?" on the mixer\'s Temperature with the transmitter frozen from the pa
   await expect.poll(() => why.textContent()).toMatch(/the high level switch is ON at 800 L and above; the level is \d+\.\d L, so it is ON/);
   await page.getByTestId('plant-fault-temp_frozen').uncheck();
   await expect.poll(async () => (await plants.plant())?.now.faults).toEqual([]);
+  expect(errors).toEqual([]);
+});
+
+test('a program that leaves the main road red lit under its green: the signal shows both, a located conflict, CONFLICT on the drawing', async () => {
+  // A classic mistake: red whenever the main road is not yellow (forgetting its green).
+  const project = intersectionReference();
+  project.name = 'Road intersection (wrong: red under the green)';
+  const main = project.pous[0]!;
+  main.networks = main.networks.map((n) =>
+    n.title === 'Main road red'
+      ? { ...n, elements: rung([contact(0, 0, 'MainYellow', 'NC')], coil(0, 'MainRed')) }
+      : n,
+  );
+  await sim.load(project);
+  await expect.poll(() => page.getByTestId('project-name').textContent()).toContain('red under the green');
+  await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('intersection');
+  await sim.button('reset').click();
+  await sim.waitForMode('Stopped');
+  await plants.fastForward(50);
+  const event = page.getByTestId('plant-events').getByRole('button', {
+    name: 'conflicting signals: the main road signal shows red and green together at scan 1 (0.00 s)',
+  });
+  await expect.poll(() => event.count()).toBe(1);
+  const p = (await plants.plant<{ lamps: number; conflict: number }>())!;
+  // Both lamps lit on the head, the monitor's conflict still on (drawn as CONFLICT).
+  expect(p.now.state.lamps & 5).toBe(5);
+  expect(p.now.state.conflict).not.toBe(0);
+  await expect.poll(() => page.getByTestId('plant-q-conflicts').textContent()).toBe('intersection.conflicts1');
   expect(errors).toEqual([]);
 });

@@ -155,10 +155,27 @@ describe('the intersection model', () => {
     ]);
     expect(r.events.every((e) => e.severity === 'error' && e.counter === 'conflicts')).toBe(true);
     expect(q(r.s, 'conflicts')).toBe(3);
-    const yellow = run(intersection.initial(), { ...MAIN_GO, MainYellow: true, SideGreen: true }, 100);
+    const yellow = run(intersection.initial(), { ...MAIN_GO, SideRed: false, MainYellow: true, SideGreen: true }, 100);
     expect(messages(yellow.events)).toEqual([
       'conflicting signals: main road green and yellow with side road green',
     ]);
+  });
+
+  test('a signal showing two things at once: red with green on one head, WALK with DON\'T WALK; red with yellow is a legal phase', () => {
+    const r = run(intersection.initial(), { ...MAIN_GO, MainRed: true, WalkSide: true }, 300);
+    expect(messages(r.events)).toEqual([
+      'conflicting signals: the main road signal shows red and green together',
+      "conflicting signals: WALK and DON'T WALK together over the side road",
+    ]);
+    expect(r.events.every((e) => e.severity === 'error' && e.counter === 'conflicts')).toBe(true);
+    expect(q(r.s, 'conflicts')).toBe(2);
+    const side = run(intersection.initial(), { ...SIDE_GO, SideRed: true, WalkMain: true }, 100);
+    expect(messages(side.events)).toEqual([
+      'conflicting signals: the side road signal shows red and green together',
+      "conflicting signals: WALK and DON'T WALK together over the main road",
+    ]);
+    // Red and yellow together (before green, as in some countries) is no conflict.
+    expect(run(intersection.initial(), { ...ALL_RED, MainYellow: true }, 300).events).toEqual([]);
   });
 
   test('near miss: green to the other road while a car is still in the intersection (no yellow, no all-red)', () => {
