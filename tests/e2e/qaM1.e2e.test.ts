@@ -81,14 +81,22 @@ test('"Why?" on the mixer\'s Temperature with the transmitter frozen from the pa
 
 test('a program that leaves the main road red lit under its green: the signal shows both, a located conflict, CONFLICT on the drawing', async () => {
   // A classic mistake: red whenever the main road is not yellow (forgetting its green).
-  const project = intersectionReference();
-  project.name = 'Road intersection (wrong: red under the green)';
-  const main = project.pous[0]!;
-  main.networks = main.networks.map((n) =>
-    n.title === 'Main road red'
-      ? { ...n, elements: rung([contact(0, 0, 'MainYellow', 'NC')], coil(0, 'MainRed')) }
-      : n,
-  );
+  const reference = intersectionReference();
+  const main = reference.pous[0]!;
+  const project = {
+    ...reference,
+    name: 'Road intersection (wrong: red under the green)',
+    pous: [
+      {
+        ...main,
+        networks: main.networks.map((n) =>
+          n.title === 'Main road red'
+            ? { ...n, elements: rung([contact(0, 0, 'MainYellow', 'NC')], coil(0, 'MainRed')) }
+            : n,
+        ),
+      },
+    ],
+  };
   await sim.load(project);
   await expect.poll(() => page.getByTestId('project-name').textContent()).toContain('red under the green');
   await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('intersection');
