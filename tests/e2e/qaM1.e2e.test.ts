@@ -114,3 +114,41 @@ test('a program that leaves the main road red lit under its green: the signal sh
   await expect.poll(() => page.getByTestId('plant-q-conflicts').textContent()).toBe('intersection.conflicts1');
   expect(errors).toEqual([]);
 });
+
+/** The colour of the drawing's pixel at (x, y) in the drawing's own coordinates, as "r,g,b". */
+const drawnColour = (x: number, y: number) =>
+  page.evaluate(
+    ([px, py]) => {
+      const box = document.querySelector<HTMLElement>('.rs-plant-drawing')!;
+      const scale = Number(box.dataset.scale);
+      const canvas = box.querySelector('canvas')!;
+      const ratio = canvas.width / canvas.getBoundingClientRect().width;
+      const d = canvas.getContext('2d')!.getImageData(Math.round(px! * scale * ratio), Math.round(py! * scale * ratio), 1, 1).data;
+      return `${d[0]},${d[1]},${d[2]}`;
+    },
+    [x, y],
+  );
+const LIT = '34,197,94';
+const UNLIT = '229,231,235';
+
+test('a level switch stuck OFF is drawn as it reads: under water its lamp stays dark, as the program sees it', async () => {
+  await plants.openExercise('Tank level control (machine: tank)', 100);
+  await sim.button('reset').click();
+  await sim.waitForMode('Stopped');
+  await page.getByTestId('plant-fault-high_stuck_off').check();
+  await expect.poll(async () => (await plants.plant())?.now.faults).toEqual(['high_stuck_off']);
+  // The reference never sees the high switch: it fills on past 800 L.
+  await plants.startAndFastForward(500);
+  const level = (await plants.plant<{ level: number }>())!.now.state.level;
+  expect(level).toBeGreaterThan(850);
+  expect(await sim.value('HighLevel')).toBe(false);
+  // The tank's switch lamps sit right of the vessel (x 230) at 800 L (y 76) and 200 L (y 184).
+  await expect.poll(() => drawnColour(230, 76)).toBe(UNLIT);
+  expect(await drawnColour(230, 184)).toBe(LIT);
+  // Cleared, the switch reads ON under water and its lamp lights.
+  await page.getByTestId('plant-fault-high_stuck_off').uncheck();
+  await expect.poll(async () => (await plants.plant())?.now.faults).toEqual([]);
+  await plants.fastForward(1);
+  await expect.poll(() => drawnColour(230, 76)).toBe(LIT);
+  expect(errors).toEqual([]);
+});

@@ -4,11 +4,12 @@
 // "Declare the machine's I/O". At a recorded scan (history) it shows the machine as it was then.
 import { useLayoutEffect, useRef, useState, type ReactNode } from 'react';
 import { Layer, Stage } from 'react-konva';
-import { locationText, parseLocation } from '../../model/iecTypes';
+import { locationText, parseLocation, type Value } from '../../model/iecTypes';
 import type { Project } from '../../model/project';
 import { taskText } from '../../plant/exercises';
 import { mappedPoints } from '../../plant/loop';
 import { PLANTS, plantById } from '../../plant/machines';
+import { senseRecord } from '../../plant/points';
 import type { PlantModel, PlantPoint } from '../../plant/types';
 import { declarePlan, rewireAddress } from '../../plant/wiring';
 import type { DocumentState } from '../../store/documentStore';
@@ -105,6 +106,8 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
   const live = frame?.id === model.id ? frame : undefined;
   const shown = historyScan !== undefined && atScan ? atScan : live?.now;
   const state = shown?.state ?? model.initial();
+  // The sensors as the program read them after that step: a stuck switch is drawn as it reads.
+  const sensed = senseRecord(model, state, new Set(shown?.faults ?? []));
   const status =
     historyScan !== undefined
       ? atScan
@@ -123,7 +126,7 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
         {status}
       </p>
       {drawing && (
-        <FittedDrawing drawing={drawing} state={state}>
+        <FittedDrawing drawing={drawing} state={state} sensed={sensed}>
           <OperatorControls points={points} held={shown?.operator ?? {}} />
         </FittedDrawing>
       )}
@@ -151,10 +154,12 @@ const MIN_SCALE = 0.6;
 function FittedDrawing({
   drawing,
   state,
+  sensed,
   children,
 }: {
   drawing: PlantDrawing;
   state: unknown;
+  sensed: Readonly<Record<string, Value>>;
   children: ReactNode;
 }) {
   const outer = useRef<HTMLDivElement>(null);
@@ -178,7 +183,7 @@ function FittedDrawing({
       <div className="rs-plant-drawing" style={{ width, height }} data-scale={scale.toFixed(3)}>
         <Stage width={width} height={height} scaleX={scale} scaleY={scale}>
           <Layer listening={false}>
-            <Drawing state={state} />
+            <Drawing state={state} sensed={sensed} />
           </Layer>
         </Stage>
         {children}
