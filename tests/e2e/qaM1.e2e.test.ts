@@ -152,3 +152,21 @@ test('a level switch stuck OFF is drawn as it reads: under water its lamp stays 
   await expect.poll(() => drawnColour(230, 76)).toBe(LIT);
   expect(errors).toEqual([]);
 });
+
+test('a quick click on Start on the drawing at a slow scan cycle starts the tank: the press is held until a scan has read it', async () => {
+  await plants.openExercise('Tank level control (machine: tank)', 1000);
+  await sim.button('reset').click();
+  await sim.waitForMode('Stopped');
+  await sim.button('run').click();
+  await sim.waitForMode('Running');
+  const start = page.getByTestId('plant-op-Start');
+  await start.click();
+  await sim.waitForValue('Running', true);
+  await expect.poll(() => start.getAttribute('aria-pressed'), { timeout: 10_000 }).toBe('false');
+  // The program saw the press for exactly one scan.
+  const rows = await plants.trace(['Start']);
+  expect(rows.filter((r) => r[2] === 1)).toHaveLength(1);
+  await sim.button('pause').click();
+  await sim.waitForMode('Paused');
+  expect(errors).toEqual([]);
+});
