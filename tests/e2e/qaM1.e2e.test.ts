@@ -170,3 +170,37 @@ test('a quick click on Start on the drawing at a slow scan cycle starts the tank
   await sim.waitForMode('Paused');
   expect(errors).toEqual([]);
 });
+
+test("the Inputs tab shows the machine's inputs as coming from the machine: no switch or value to set that the next scan would overwrite", async () => {
+  await plants.openExercise('Tank level control (machine: tank)', 100);
+  await sim.button('reset').click();
+  await sim.waitForMode('Stopped');
+  await sim.button('step-scan').click();
+  await sim.waitForMode('Paused');
+  await sim.tab('Inputs');
+  const low = page.getByTestId('input-LowLevel');
+  await expect.poll(() => low.getByTestId('input-from-machine').textContent()).toBe('from the machine');
+  expect(await low.getByTestId('input-switch').isDisabled()).toBe(true);
+  expect(await low.getByTestId('input-hold').isDisabled()).toBe(true);
+  expect(await low.getByTestId('input-switch').getAttribute('title')).toBe(
+    'Written by the machine tank every scan (its sensor LowLevel); a value set here would be overwritten. Only a force overrides it.',
+  );
+  const start = page.getByTestId('input-Start');
+  expect(await start.getByTestId('input-from-machine').getAttribute('title')).toContain(
+    'its operator control Start: press it on the drawing in the Plant panel',
+  );
+  const level = page.getByTestId('input-Level');
+  expect(await level.getByRole('button', { name: 'Set' }).isDisabled()).toBe(true);
+  await expect.poll(() => level.getByTestId('input-from-machine').textContent()).toBe('from the machine');
+  // Rewired elsewhere in the map, LowLevel's input is no longer the machine's: it can be set again.
+  const address = page.getByTestId('plant-address-LowLevel');
+  await sim.tab('Plant');
+  await address.fill('%IX1.0');
+  await address.press('Enter');
+  await sim.tab('Inputs');
+  await expect.poll(() => low.getByTestId('input-from-machine').count()).toBe(0);
+  expect(await low.getByTestId('input-switch').isDisabled()).toBe(false);
+  await page.keyboard.press('Control+z');
+  await expect.poll(() => low.getByTestId('input-from-machine').count()).toBe(1);
+  expect(errors).toEqual([]);
+});
