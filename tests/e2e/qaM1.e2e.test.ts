@@ -204,3 +204,16 @@ test("the Inputs tab shows the machine's inputs as coming from the machine: no s
   await expect.poll(() => low.getByTestId('input-from-machine').count()).toBe(1);
   expect(errors).toEqual([]);
 });
+
+test('an exercise opened from File > Examples shows its machine: the Plant tab comes forward', async () => {
+  // A project just loaded (nothing unsaved to ask about), with another tab in front.
+  await sim.load(tankWrong());
+  await expect.poll(() => page.getByTestId('project-name').textContent()).toContain('wrong');
+  await page.getByTestId('tab-inspector').click();
+  await expect.poll(() => page.getByTestId('plant-panel').count()).toBe(0);
+  await sim.openExample('Batch mixer (machine: mixer)');
+  await expect.poll(() => page.getByTestId('plant-panel').isVisible()).toBe(true);
+  expect(await page.getByTestId('tab-plant').getAttribute('aria-selected')).toBe('true');
+  await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('mixer');
+  expect(errors).toEqual([]);
+});
