@@ -217,3 +217,21 @@ test('an exercise opened from File > Examples shows its machine: the Plant tab c
   await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('mixer');
   expect(errors).toEqual([]);
 });
+
+test("double-clicking a contact on one of the machine's inputs does not switch it (the next scan would undo it): it offers the force menu and says why", async () => {
+  await plants.openExercise('Tank level control (machine: tank)', 100);
+  await sim.button('reset').click();
+  await sim.waitForMode('Stopped');
+  await sim.button('step-scan').click();
+  await sim.waitForMode('Paused');
+  expect(await sim.value('LowLevel')).toBe(false);
+  // Network 3, "Start filling": Running, then LowLevel (NC) at row 0, column 1.
+  await sim.switchCell(2, 0, 1);
+  await expect.poll(() => page.getByTestId('sim-context-menu').isVisible()).toBe(true);
+  await expect
+    .poll(() => page.getByTestId('status-bar').textContent())
+    .toContain('LowLevel comes from the machine tank (its sensor LowLevel): it writes it every scan; force it to override');
+  await page.keyboard.press('Escape');
+  expect(await sim.value('LowLevel')).toBe(false);
+  expect(errors).toEqual([]);
+});
