@@ -10,7 +10,8 @@ import { parseInterval } from '../plcopen/durations';
 import { UsageError, type CliIo } from './io';
 import { parseStimulus, type Stimulus } from './stimulus';
 import { csvRow } from '../sim/csv';
-import { requirePlant } from '../plant/machines';
+import { machineNameHint, requirePlant, strayMapWarning } from '../plant/machines';
+import type { PlantModel } from '../plant/types';
 import { PlantLoop, plantValueType } from '../plant/loop';
 
 export interface SimulateOptions {
@@ -107,9 +108,14 @@ function resolveName(program: CompiledProgram, name: string, firstInstance: stri
   return program.symbols.resolve(inInstance, opts).ok ? inInstance : name;
 }
 
-function typeOf(program: CompiledProgram, name: string): ElementaryType {
+function typeOf(program: CompiledProgram, name: string, plant: PlantModel | undefined): ElementaryType {
+  if (!plant && /^fault\s+\S+$/i.test(name.trim()))
+    throw new UsageError(`"${name}" sets a machine's fault: run the program with its machine (--plant NAME)`);
   const r = program.symbols.resolve(name, { literals: false, implicitLocations: false });
-  if (!r.ok) throw new UsageError(`unknown variable "${name}": ${r.message}`);
+  if (!r.ok) {
+    const hint = machineNameHint(name, plant, (id) => `add --plant ${id}`);
+    throw new UsageError(`unknown variable "${name}": ${r.message}${hint ? `; ${hint}` : ''}`);
+  }
   if (r.access.kind === 'const') throw new UsageError(`"${name}" is a constant, not a variable`);
   return r.access.type;
 }
@@ -139,6 +145,8 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
     try {
       const model = requirePlant(opts.plant);
       loop = new PlantLoop(model, project.plant?.id === model.id ? project.plant.map : undefined, 0);
+      const stray = project.plant?.id === model.id ? strayMapWarning(project.plant) : undefined;
+      if (stray) io.err(`${stray}\n`);
     } catch (e) {
       throw new UsageError(`--plant: ${(e as Error).message}`);
     }
@@ -160,7 +168,7 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
   const firstInstance = configuration?.[0]?.instance;
   const watched = watch.map((w) => (onPlant(w) ? w : resolveName(program, w, firstInstance)));
   const types = watched.map((w): ElementaryType => {
-    if (!onPlant(w)) return typeOf(program, w);
+    if (!onPlant(w)) return typeOf(program, w, loop?.model);
     const t = plantValueType(loop!.model, w);
     if (!t) throw new UsageError(`--watch: ${loop!.model.id} has no quantity or point "${w.slice(loop!.model.id.length + 1)}" (rungsmith plants ${loop!.model.id} lists them)`);
     return t;
@@ -188,7 +196,7 @@ export function simulate(io: CliIo, project: Project, opts: SimulateOptions): nu
         stimTypes.set(c, 'BOOL');
         continue;
       }
-      stimTypes.set(c, typeOf(program, resolveName(program, c, firstInstance)));
+      stimTypes.set(c, typeOf(program, resolveName(program, c, firstInstance), loop?.model));
     } catch (e) {
       throw new UsageError(`${opts.stimulus!.file}: column "${c}": ${(e as Error).message}`);
     }

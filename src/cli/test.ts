@@ -5,7 +5,7 @@ import { explain, liveScanView } from '../engine/explain';
 import type { Project } from '../model/project';
 import { runScenario, type ScenarioResult } from '../sim/scenario';
 import { UsageError, type CliIo } from './io';
-import { plantById } from '../plant/machines';
+import { plantById, strayMapWarning } from '../plant/machines';
 
 export interface TestOptions {
   readonly junit?: string;
@@ -57,6 +57,8 @@ export function testProject(io: CliIo, project: Project, opts: TestOptions): num
     io.err(`the project ${project.name} has no test scenarios; record one in the Tests panel or add one to "scenarios"\n`);
     return 1;
   }
+  const stray = strayMapWarning(project.plant);
+  if (stray) io.err(`${stray}\n`);
   const outcomes: Outcome[] = [];
   for (const scenario of chosen) {
     const t0 = performance.now();
@@ -79,6 +81,8 @@ export function testProject(io: CliIo, project: Project, opts: TestOptions): num
       io.out(`FAIL ${r.name}: ${failureText(r)}\n`);
       for (const l of why) io.out(`  ${l}\n`);
     }
+    // The machine's warnings fail nothing, but the run had them (the door moved without its warning).
+    for (const w of r.warnings ?? []) io.out(`  warning: ${w}\n`);
   }
   const failed = outcomes.filter((o) => !o.result.ok).length;
   io.out(`${outcomes.length - failed} passed, ${failed} failed (${outcomes.length} scenario${outcomes.length === 1 ? '' : 's'} of ${project.name})\n`);

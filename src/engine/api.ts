@@ -400,6 +400,12 @@ export interface IoImage {
   output(location: string): number;
   /** Writes input `index` as IoPoint.write does: converted to the variable's type, applied at the next input read. */
   write(index: number, value: Value): void;
+  /**
+   * One counter, counted up by every write of the input image, whichever way (`write`, setInputs,
+   * a variable written by name, a restore or a replay of the history): a reader that finds the count
+   * its own last write left knows nobody else wrote an input since.
+   */
+  readonly inputWrites: Uint32Array;
 }
 
 export interface IoPoint {

@@ -6,6 +6,7 @@ import { z } from 'zod';
 import { POINT_TYPES } from '../protocol/points';
 import { ConfigError, MODBUS_TABLES } from './configTypes';
 import { expandPoints, type DevicePoint } from './pointMap';
+import { PLANTS, plantById } from '../plant/machines';
 
 const pointEntrySchema = z.strictObject({
   address: z.string().min(1),
@@ -120,7 +121,24 @@ export function resolveConfig(raw: unknown, source = 'config'): ResolvedConfig {
     }
     return { ...d, resolvedPoints };
   });
-  return { ...cfg, devices };
+  const resolved = { ...cfg, devices };
+  checkPlant(resolved, `${source}: simulated.plant`);
+  return resolved;
+}
+
+/**
+ * `--plant` / `simulated.plant`: a machine there is, and the built-in simulated device to be it
+ * (it runs only when no `devices` are configured). Throws a ConfigError located at `where`.
+ */
+export function checkPlant(config: ResolvedConfig, where: string): void {
+  const id = config.simulated.plant;
+  if (id === undefined) return;
+  if (!plantById(id)) throw new ConfigError(where, `there is no machine "${id}"; the machines are ${PLANTS.map((m) => m.id).join(', ')}`);
+  if (config.devices.length > 0)
+    throw new ConfigError(
+      where,
+      `the machine "${id}" is the built-in simulated device, which runs only with no "devices" configured; this config names ${config.devices.length} Modbus device(s): drop the devices or the machine`,
+    );
 }
 
 /** Reads and validates a config file. */

@@ -3,7 +3,7 @@ import { spawnSync } from 'node:child_process';
 import { existsSync, readdirSync, statSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { loadConfigFile, resolveConfig, type ResolvedConfig } from './config';
+import { checkPlant, loadConfigFile, resolveConfig, type ResolvedConfig } from './config';
 import { ConfigError } from './configTypes';
 import { startGateway, type RunningGateway } from './gateway';
 import { SHUTDOWN_SAFE_DEADLINE_MS } from './ioHub';
@@ -87,6 +87,7 @@ async function main(): Promise<void> {
   const base: ResolvedConfig = args.config ? loadConfigFile(args.config) : resolveConfig({});
   const withPort: ResolvedConfig = args.simPort !== undefined ? { ...base, simulated: { ...base.simulated, modbusPort: args.simPort } } : base;
   const config: ResolvedConfig = args.plant !== undefined ? { ...withPort, simulated: { ...withPort.simulated, plant: args.plant } } : withPort;
+  if (args.plant !== undefined) checkPlant(config, args.config ? `--plant (with --config ${args.config})` : '--plant');
   if (args.build && args.app) buildIfNeeded();
   const envPort = process.env.PORT !== undefined && process.env.PORT !== '' ? Number(process.env.PORT) : undefined;
   if (envPort !== undefined && (!Number.isInteger(envPort) || envPort < 0 || envPort > 65535)) throw new ConfigError('PORT', `is not a port number: ${process.env.PORT}`);

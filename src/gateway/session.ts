@@ -210,7 +210,11 @@ export class Session {
         }
         const checked = hub.check(msg.values, 'in', true);
         if (!(checked instanceof Map)) return this.refuse(checked.code, checked.message, ref);
-        this.ctx.simulated.setInputs(checked);
+        for (const address of checked.keys()) {
+          const sensor = this.ctx.simulated.machineSensorRefusal(address);
+          if (sensor) return this.refuse('not-input', sensor, ref);
+        }
+        this.ctx.simulated.simulateInputs(checked);
         return;
       }
       case 'outputs':

@@ -1,6 +1,6 @@
 // The built-in simulated I/O device: 16 DI, 16 DO, 4 AI, 4 AO on the OpenPLC default map, also
 // served as a Modbus TCP server on loopback so mbpoll or a plant simulator can drive its inputs.
-import type { AddressInfo, Server } from 'node:net';
+import type { AddressInfo, Server, Socket } from 'node:net';
 import type { DeviceOutputs } from '../protocol/messages';
 import type { Quality, WireValue } from '../protocol/points';
 import { safeImage, type Device, type DeviceListener, type Values } from './device';
@@ -9,6 +9,7 @@ import { expandPoints, type DevicePoint } from './pointMap';
 import { requirePlant } from '../plant/machines';
 import { addressKey, PlantLoop } from '../plant/loop';
 import type { Value } from '../model/iecTypes';
+import type { PlantModel } from '../plant/types';
 
 /** A machine's step in real time (virtual commissioning): every this many ms of wall time. */
 const PLANT_STEP_MS = 20;
@@ -33,6 +34,19 @@ const ILLEGAL_FUNCTION = { modbusErrorCode: 0x01, msg: 'Outputs belong to the co
 /** `--plant`: the machine's sensors drive their inputs, as wires do; a Modbus write to one is refused. */
 const MACHINE_SENSOR = { modbusErrorCode: 0x01, msg: "Sensors belong to the machine" };
 
+/**
+ * `--plant`: the first of a machine's points the simulated device has no place for (its default
+ * address is not among the device's 16 DI, 16 DO, 4 AI, 4 AO), as a sentence; undefined when all fit.
+ */
+export function simulatedDeviceMisfit(model: Pick<PlantModel, 'id' | 'points'>): string | undefined {
+  const on = new Set(SIM_POINTS.map((p) => addressKey(p.address)));
+  const out = model.points.find((p) => !on.has(addressKey(p.address)));
+  return (
+    out &&
+    `the machine "${model.id}"'s ${out.kind} ${out.name} at ${out.address} has no place on the simulated device (%IX0.0-%IX1.7, %QX0.0-%QX1.7, %IW0-%IW3, %QW0-%QW3)`
+  );
+}
+
 export class SimulatedDevice implements Device {
   readonly info = { id: SIMULATED_DEVICE_ID, kind: 'simulated' as const, target: 'simulated' };
   readonly points = SIM_POINTS;
@@ -48,13 +62,38 @@ export class SimulatedDevice implements Device {
   /** `--plant`: the machine whose I/O this device is, and its real-time stepping. */
   private readonly plant: PlantLoop | undefined;
   private plantTimer: ReturnType<typeof setInterval> | undefined;
+  /**
+   * `--plant`: the outputs a Modbus master (the PLC under test) wrote. When the last master's
+   * connection closes they fall OFF / 0, as a PLC's outputs do when it stops or is unplugged (its
+   * contactors drop out; a coupler's communication watchdog does the same): a pump is not left
+   * running into an overflow by a PLC that is gone.
+   */
+  private readonly masterWritten = new Set<string>();
 
   /**
    * @param modbusPort loopback port of the Modbus server (0: any free port; null: no server).
    * @param plant a machine (`tank`): its sensors drive the inputs, its actuators are the coils a Modbus master writes.
+   * @param log the gateway's log: the machine's consequences (the tank overflowed) and its outputs falling when the PLC goes.
    */
-  constructor(private readonly modbusPort: number | null, plant?: string) {
-    this.plant = plant === undefined ? undefined : new PlantLoop(requirePlant(plant), {}, 0);
+  constructor(
+    private readonly modbusPort: number | null,
+    plant?: string,
+    private readonly log: (line: string) => void = () => undefined,
+  ) {
+    const model = plant === undefined ? undefined : requirePlant(plant);
+    const misfit = model && simulatedDeviceMisfit(model);
+    if (misfit) throw new Error(misfit);
+    this.plant = model && new PlantLoop(model, {}, 0);
+  }
+
+  /**
+   * `--plant`: why setting `address` by hand (the Hardware panel, a Modbus write) is refused, when it
+   * is one of the machine's sensors: the machine writes it only when it changes, so a value set over
+   * it would stay (a limit switch ON with nothing behind it). Undefined for any other input.
+   */
+  machineSensorRefusal(address: string): string | undefined {
+    const sensor = this.plant?.points.find((q) => q.kind === 'sensor' && addressKey(q.address) === addressKey(address));
+    return sensor && `${address} is the machine "${this.plant!.model.id}"'s sensor ${sensor.name}: the machine sets it`;
   }
 
   /** `--plant`: the machine's quantity (`level`), for tests and logs. */
@@ -95,6 +134,21 @@ export class SimulatedDevice implements Device {
       this.values.set(address, value);
     }
     if (changed.size) this.listener?.inputs(changed, new Map([...changed.keys()].map((a) => [a, 'good' as const])));
+  }
+
+  /**
+   * Inputs set from outside: the Hardware panel, a Modbus write into the input windows. With a
+   * machine, one of its operator controls is operated on the machine too (the garage's Doorway
+   * drives a car in: its photo-eye then sees it), not only shown to the program.
+   */
+  simulateInputs(values: Values): void {
+    const plant = this.plant;
+    if (plant)
+      for (const [address, value] of values) {
+        const op = plant.points.find((q) => q.kind === 'operator' && addressKey(q.address) === addressKey(address));
+        if (op) plant.setOperator(op.name, value === true);
+      }
+    this.setInputs(values);
   }
 
   outputsState(): DeviceOutputs {
@@ -151,13 +205,16 @@ export class SimulatedDevice implements Device {
       },
     };
     loop.bind(io);
-    const t0 = Date.now();
+    // The monotonic clock: a wall clock set forward or back (NTP, the user) must not leap or freeze the machine.
+    const t0 = performance.now();
     let k = 0;
     let last = 0;
     this.plantTimer = setInterval(() => {
-      const now = Date.now() - t0;
-      loop.afterScan(++k, last, now - last);
+      const now = Math.round(performance.now() - t0);
+      const events = loop.afterScan(++k, last, now - last);
       last = now;
+      for (const e of events)
+        this.log(`machine "${loop.model.id}": ${e.severity} ${e.message}, ${(e.timeMs / 1000).toFixed(1)} s after the gateway started`);
     }, PLANT_STEP_MS);
   }
 
@@ -185,9 +242,28 @@ export class SimulatedDevice implements Device {
     if (!p) throw ILLEGAL_ADDRESS;
     // The machine writes its sensors' inputs only when they change: a value written over one would
     // stay, a limit switch ON with nothing behind it. Its operator controls may be pressed.
-    if (this.plant?.points.some((q) => q.kind === 'sensor' && addressKey(q.address) === addressKey(p.address)))
-      throw MACHINE_SENSOR;
-    this.setInputs(new Map([[p.address, value]]));
+    if (this.machineSensorRefusal(p.address)) throw MACHINE_SENSOR;
+    this.simulateInputs(new Map([[p.address, value]]));
+  }
+
+  /**
+   * A Modbus connection closed: with none left, the outputs the masters wrote fall OFF / 0. Deferred
+   * one timer turn, after the requests that connection sent last (modbus-serial serves each on a timer).
+   */
+  private masterGone(server: ModbusServer): void {
+    const plant = this.plant;
+    if (!plant) return;
+    setTimeout(() => {
+      if (this.server !== server || server.socks.size > 0 || this.masterWritten.size === 0) return;
+      const off = new Map<string, WireValue>([...this.masterWritten].map((a) => [a, a.startsWith('%QX') ? false : 0]));
+      this.masterWritten.clear();
+      this.writeOutputs(off);
+      const keys = new Set([...off.keys()].map(addressKey));
+      const names = plant.points.filter((p) => keys.has(addressKey(p.address))).map((p) => p.name);
+      this.log(
+        `machine "${plant.model.id}": the Modbus master (the PLC) disconnected; the outputs it wrote are OFF${names.length ? ` (${names.join(', ')})` : ''}`,
+      );
+    }, 0);
   }
 
   private startModbusServer(port: number): Promise<void> {
@@ -202,6 +278,7 @@ export class SimulatedDevice implements Device {
         // Virtual commissioning: the Modbus master is the PLC and drives the machine's actuators.
         const actuator = this.plant && addr < SIM_INPUT_COIL_BASE ? this.byTable.get(`coils:${addr}`) : undefined;
         if (actuator) {
+          this.masterWritten.add(actuator.address);
           this.writeOutputs(new Map([[actuator.address, value]]));
           return;
         }
@@ -209,6 +286,13 @@ export class SimulatedDevice implements Device {
         this.driveInput('discreteInputs', addr - SIM_INPUT_COIL_BASE, value);
       },
       setRegister: (addr: number, value: number) => {
+        // A machine's INT actuators (%QW) are the master's too, as its coils are.
+        const actuator = this.plant && addr < SIM_INPUT_REGISTER_BASE ? this.byTable.get(`holdingRegisters:${addr}`) : undefined;
+        if (actuator) {
+          this.masterWritten.add(actuator.address);
+          this.writeOutputs(new Map([[actuator.address, value & 0xffff]]));
+          return;
+        }
         if (addr < SIM_INPUT_REGISTER_BASE) throw this.byTable.has(`holdingRegisters:${addr}`) ? ILLEGAL_FUNCTION : ILLEGAL_ADDRESS;
         this.driveInput('inputRegisters', addr - SIM_INPUT_REGISTER_BASE, value & 0xffff);
       },
@@ -219,6 +303,8 @@ export class SimulatedDevice implements Device {
       const inner = (server as unknown as { _server: Server })._server;
       const fail = (err: Error) => reject(new Error(`simulated device: cannot listen on 127.0.0.1:${port} for Modbus TCP (${err.message})`));
       inner.once('error', fail);
+      // modbus-serial forgets a socket (server.socks) in its own close listener, registered before this one.
+      inner.on('connection', (sock: Socket) => sock.once('close', () => this.masterGone(server)));
       inner.once('listening', () => {
         inner.off('error', fail);
         this.port = (inner.address() as AddressInfo).port;

@@ -418,6 +418,47 @@ export const boxes: PlantModel<BoxesState> = {
     out[SENSE.PusherIn] = s.pusher <= IN_LIMIT;
   },
 
+  explain(s: BoxesState, point: string, faults: ReadonlySet<string>): string | undefined {
+    const m = (mm: number) => `${(mm / 1000).toFixed(2)} m`;
+    const pusher = `the pusher is ${(s.pusher * 100).toFixed(1)} % out`;
+    /** What is at a photo-eye `at` mm along the belt, and whether it breaks the beam (`large`: only a large box does). */
+    const eye = (title: string, at: number, largeOnly: boolean): string => {
+      const there = s.boxes.filter((b) => covers(frontOf(s, b), at));
+      const breaking = there.filter((b) => b.large || !largeOnly);
+      const words = there.map(
+        (b) =>
+          `box ${b.n} (${sizeOf(b)}) is in front of it, its front edge at ${m(frontOf(s, b))}${largeOnly && !b.large ? ', too low to break the high beam' : ''}`,
+      );
+      const upstream = s.boxes.filter((b) => frontOf(s, b) < at).map((b) => frontOf(s, b));
+      const next = upstream.length ? Math.max(...upstream) : undefined;
+      const what = words.length
+        ? words.join('; ')
+        : `no box is in front of it${next === undefined ? '' : ` (the next box's front edge is at ${m(next)})`}`;
+      return `${title} at ${m(at)} is ON while ${largeOnly ? 'a large box' : 'a box'} breaks its beam; ${what}, so it is ${breaking.length ? 'ON' : 'OFF'}`;
+    };
+    switch (point) {
+      case 'EntryEye':
+        return faults.has('entry_stuck_on')
+          ? 'the entry photo-eye is stuck ON (fault entry_stuck_on): it reads ON whatever is on the belt'
+          : eye('the entry photo-eye', ENTRY_EYE_MM, false);
+      case 'SizeEye':
+        return faults.has('size_stuck_on')
+          ? 'the size sensor is stuck ON (fault size_stuck_on): it reads ON whatever is on the belt'
+          : faults.has('size_stuck_off')
+            ? 'the size sensor is stuck OFF (fault size_stuck_off): it reads OFF whatever is on the belt'
+            : eye('the size sensor, a high photo-eye,', SIZE_EYE_MM, true);
+      case 'PusherEye':
+        return faults.has('station_stuck_off')
+          ? 'the photo-eye at the pusher is stuck OFF (fault station_stuck_off): it reads OFF whatever is on the belt'
+          : eye('the photo-eye at the pusher', PUSHER_EYE_MM, false);
+      case 'PusherOut':
+        return `the out limit switch is ON at ${OUT_LIMIT * 100} % out and over; ${pusher}, so it is ${s.pusher >= OUT_LIMIT ? 'ON' : 'OFF'}`;
+      case 'PusherIn':
+        return `the in limit switch is ON at ${IN_LIMIT * 100} % out and under; ${pusher}, so it is ${s.pusher <= IN_LIMIT ? 'ON' : 'OFF'}`;
+    }
+    return undefined;
+  },
+
   check(before: BoxesState, after: BoxesState): readonly PlantConsequence[] {
     if (after.missorted === before.missorted && after.jams === before.jams && after.fallen === before.fallen)
       return NOTHING;

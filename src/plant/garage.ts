@@ -232,7 +232,9 @@ export const garage: PlantModel<GarageState> = {
     const onCar = carIn && position <= CAR_TOP && (speed < 0 || s.onCar);
     const moving = position !== s.position;
     const lampMs = lamp ? s.lampMs + dtMs : 0;
-    const unwarnedNow = moving && (!lamp || (!s.moving && lampMs < PREWARN_MS));
+    // Driven by the motor, that is: a door braking to a stop after the contactor dropped (with the
+    // lamp, as the limit switch ends the run) is not moved without warning, however fast the scan.
+    const unwarnedNow = moving && target !== 0 && (!lamp || (!s.moving && lampMs < PREWARN_MS));
     const pushing = (speed > 0 && position >= 100) || (speed < 0 && position <= 0);
     const pushMs = pushing ? s.pushMs + dtMs : 0;
     const open = position >= OPEN_LIMIT_AT;
@@ -275,6 +277,37 @@ export const garage: PlantModel<GarageState> = {
     out[SENSE.OpenLimit] = sw('open', open);
     out[SENSE.ClosedLimit] = sw('closed', closed);
     out[SENSE.Obstacle] = sw('eye', s.carIn);
+  },
+
+  explain(s: GarageState, point: string, faults: ReadonlySet<string>): string | undefined {
+    const door = `the door is ${s.position.toFixed(1)} % open`;
+    const stuck = (id: string, title: string, whatever: string): string | undefined =>
+      faults.has(`${id}_stuck_on`)
+        ? `${title} is stuck ON (fault ${id}_stuck_on): it reads ON ${whatever}`
+        : faults.has(`${id}_stuck_off`)
+          ? `${title} is stuck OFF (fault ${id}_stuck_off): it reads OFF ${whatever}`
+          : undefined;
+    switch (point) {
+      case 'OpenLimit':
+        return (
+          (stuck('open', 'the open limit switch', `wherever the door is; ${door}`) ??
+          `the open limit switch is ON at ${OPEN_LIMIT_AT} % open and above; ${door}, so it is ${s.position >= OPEN_LIMIT_AT ? 'ON' : 'OFF'}`)
+        );
+      case 'ClosedLimit':
+        return (
+          (stuck('closed', 'the closed limit switch', `wherever the door is; ${door}`) ??
+          `the closed limit switch is ON at ${CLOSED_LIMIT_AT} % open and below; ${door}, so it is ${s.position <= CLOSED_LIMIT_AT ? 'ON' : 'OFF'}`)
+        );
+      case 'Obstacle': {
+        const car = s.carIn
+          ? `a car is in the doorway, in the beam${s.onCar ? ', with the door resting on it' : ''}`
+          : s.carWaiting
+            ? `a car waits outside: it drives in only under a door open above ${CAR_TOP} %, and ${door}`
+            : 'no car is in the doorway';
+        return stuck('eye', 'the photo-eye', `whatever is in the doorway; ${car}`) ?? `the photo-eye is ON while something breaks its beam; ${car}, so it is ${s.carIn ? 'ON' : 'OFF'}`;
+      }
+    }
+    return undefined;
   },
 
   check(before: GarageState, after: GarageState): readonly PlantConsequence[] {

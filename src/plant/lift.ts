@@ -443,6 +443,31 @@ export const lift: PlantModel<LiftState> = {
     out[SENSE.Position] = Math.round(s.position);
   },
 
+  explain(s: LiftState, point: string, faults: ReadonlySet<string>): string | undefined {
+    const mm = (v: number) => `${v.toLocaleString('en-US', { minimumFractionDigits: 1, maximumFractionDigits: 1 })} mm`;
+    const car = `the car is at ${mm(s.position)}`;
+    const door = `the door is ${(s.door * 100).toFixed(1)} % open`;
+    const floor = /^AtFloor([123])$/.exec(point);
+    if (floor) {
+      const i = Number(floor[1]) - 1;
+      const level = FLOOR_MM[i]!;
+      const title = `the floor ${i + 1} sensor`;
+      if (faults.has(STUCK_ON[i]!)) return `${title} is stuck ON (fault ${STUCK_ON[i]}): it reads ON wherever the car is; ${car}`;
+      if (faults.has(STUCK_OFF[i]!)) return `${title} is stuck OFF (fault ${STUCK_OFF[i]}): it reads OFF wherever the car is; ${car}`;
+      const off = Math.abs(s.position - level);
+      return `${title} is ON within ${FLOOR_WINDOW_MM} mm of floor ${i + 1} (${level.toLocaleString('en-US')} mm); ${car}, ${mm(off)} ${s.position >= level ? 'above' : 'below'} it, so it is ${off <= FLOOR_WINDOW_MM ? 'ON' : 'OFF'}`;
+    }
+    switch (point) {
+      case 'DoorClosed':
+        return `the closed limit switch is ON only with the door fully closed; ${door}, so it is ${s.door <= 0 ? 'ON' : 'OFF'}`;
+      case 'DoorOpened':
+        return `the fully open limit switch is ON only with the door fully open; ${door}, so it is ${s.door >= 1 ? 'ON' : 'OFF'}`;
+      case 'Position':
+        return `the shaft encoder gives the car level in whole millimetres above floor 1; ${car}`;
+    }
+    return undefined;
+  },
+
   check(before: LiftState, after: LiftState): readonly PlantConsequence[] {
     // Nothing started (every scan but a handful): no list made.
     let out: PlantConsequence[] | undefined;

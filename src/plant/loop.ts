@@ -29,6 +29,8 @@ export interface PlcImage {
   output(location: string): number;
   /** Writes an input as the engine does (converted, counted, applied at the next input read). */
   write(index: number, value: Value): void;
+  /** Counted up by every write of the input image, whoever writes (the engine's IoImage.inputWrites); without it the machine presents its inputs every scan. */
+  readonly inputWrites?: Uint32Array;
 }
 
 /**
@@ -41,6 +43,8 @@ interface LoopImage {
   readonly outputs: readonly Value[];
   write(index: number, value: Value): void;
   refresh(): void;
+  /** PlcImage.inputWrites, when the image has it. */
+  readonly writes?: Uint32Array;
 }
 
 /**
@@ -171,12 +175,17 @@ export class PlantLoop {
   private restDtMs = -1;
   /** Every field of two states alike (Object.is; an array or record in a state by identity), compiled at bind. */
   private sameState: (a: unknown, b: unknown) => boolean = () => false;
+  /** The image's count of input writes, and the count after the machine last presented its inputs (-1: not yet). */
+  private writes: Uint32Array | undefined;
+  private presented = -1;
   /** The image's arrays (kept here: read every scan). */
   private inputImage: readonly Value[] = [];
   private outputImage: readonly Value[] = [];
   /** The record's arrays (kept here: read every scan). */
   private readonly bits: Uint32Array;
   private readonly ints: Float64Array;
+  /** The record changed since the history was last given it (a drive, operator control or fault). */
+  private recordChanged = true;
   /** The drive record handed to step(), refilled every scan. */
   private readonly driveRecord: Record<string, Value> = {};
   /** The same as the history records it (src/plant/history.ts), faults included, kept up to date alongside. */
@@ -237,6 +246,7 @@ export class PlantLoop {
 
   private setBit(bit: number, on: boolean): void {
     if (bit < 0) return;
+    this.recordChanged = true;
     const bits = this.record.bits;
     if (on) bits[bit >>> 5]! |= 1 << (bit & 31);
     else bits[bit >>> 5]! &= ~(1 << (bit & 31));
@@ -247,6 +257,7 @@ export class PlantLoop {
    * actuator off; the scan then writes the wired actuators' changes (drive()).
    */
   private driveConstants(): void {
+    this.recordChanged = true;
     const d = this.driveRecord;
     for (const p of this.inputs)
       if (p.kind === 'operator') {
@@ -337,6 +348,8 @@ export class PlantLoop {
     this.sameState = compileSameState(this.state);
     this.inputImage = this.image.inputs;
     this.outputImage = this.image.outputs;
+    this.writes = this.image.writes;
+    this.presented = -1;
     this.driveCode = compileDrive(this.outputs);
     this.presentCode = compilePresent(
       sensors,
@@ -356,14 +369,20 @@ export class PlantLoop {
     const changed = this.driveCode(this.outputImage, this.bits, this.ints, this.driveRecord);
     // What the step is given, for the history to replay it (the model is deterministic); the
     // history copies `before` when it keeps it whole.
-    this.history.push(scan, before, this.timeMs, this.record, target);
+    this.history.push(scan, before, this.timeMs, this.record, target, !(changed || this.recordChanged));
+    this.recordChanged = false;
     if (this.rest && !changed && dt === this.restDtMs) {
       // At rest (see `rest`): the step would give this very state again, the same sensors (the
       // faults are the same too) and no consequence. The inputs are written again where they
       // differ, as every scan (a wire drives its input whatever was written to it meanwhile).
       this.timeMs = target;
       this.scan = scan;
-      this.presentCode(this.inputImage, this.sensed, this.bits, this.image);
+      // Nobody wrote an input since the machine presented them (the count its own writes left): nothing to present again.
+      const writes = this.writes;
+      if (writes === undefined || writes[0] !== this.presented) {
+        this.presentCode(this.inputImage, this.sensed, this.bits, this.image);
+        if (writes) this.presented = writes[0]!;
+      }
       return NONE;
     }
     // Into the spare state object: `before` is the spare one for the next step.
@@ -400,7 +419,10 @@ export class PlantLoop {
   /** The drive record for a step: the wired actuators read from the output image (the rest is kept up to date). */
   private drive(): Record<string, Value> {
     this.image.refresh();
-    if (this.driveCode(this.outputImage, this.bits, this.ints, this.driveRecord)) this.rest = false;
+    if (this.driveCode(this.outputImage, this.bits, this.ints, this.driveRecord)) {
+      this.rest = false;
+      this.recordChanged = true;
+    }
     return this.driveRecord;
   }
 
@@ -412,6 +434,7 @@ export class PlantLoop {
     if (!this.bound) return;
     if (this.sensing) this.model.sense(this.state, this.faults, this.sensed);
     this.presentCode(this.inputImage, this.sensed, this.bits, this.image);
+    if (this.writes) this.presented = this.writes[0]!;
   }
 
   snapshot(): PlantSnapshot {
@@ -431,6 +454,11 @@ export class PlantLoop {
   at(scan: number): PlantSnapshot | undefined {
     if (scan === 0) return { scan: 0, timeMs: 0, state: this.model.initial(), faults: [], operator: {} };
     return this.history.at(scan);
+  }
+
+  /** The operator controls held and the faults set in scan `scan`, if it is still kept (PlantHistory.controlsAt). */
+  controlsAt(scan: number): { readonly operator: Record<string, boolean>; readonly faults: string[] } | undefined {
+    return this.history.controlsAt(scan);
   }
 
   setOperator(name: string, value: boolean): void {
@@ -514,7 +542,7 @@ interface BoundImage {
 /** The engine's own image (Plc.ioImage): its arrays, read in place. */
 function engineImage(io: PlcImage): BoundImage {
   return {
-    image: { inputs: io.inputs, outputs: io.outputs, write: (i, v) => io.write(i, v), refresh: NO_REFRESH },
+    image: { inputs: io.inputs, outputs: io.outputs, write: io.write.bind(io), refresh: NO_REFRESH, ...(io.inputWrites ? { writes: io.inputWrites } : {}) },
     input: (address) => io.input(address),
     output: (address) => io.output(address),
   };
@@ -530,12 +558,16 @@ function recordImage(plc: PlcIo, inputPoints: readonly PlantPoint[]): BoundImage
   const outputKeys: string[] = [];
   const inputs: Value[] = [];
   const inputAddresses: string[] = [];
+  // Only the loop writes its copies of the inputs.
+  const writes = new Uint32Array(1);
   const image: LoopImage = {
     inputs,
     outputs,
+    writes,
     write: (i, v) => {
       plc.setInputs({ [inputAddresses[i]!]: v });
       inputs[i] = v;
+      writes[0]!++;
     },
     refresh: () => {
       if (outputKeys.length === 0) return;

@@ -16,6 +16,7 @@ import { ScanHistory, type HistoryOptions, type InputChange } from './history';
 import { ChangeIndex, sameValue } from './historyChanges';
 import type { HistoryView, SimLayout, SimView } from './protocol';
 import { Replayer, type HistoryState } from './replay';
+import type { PlantColumns } from './scenarioRecording';
 import { recordedBody } from './viewPower';
 import { readPinValues, viewBody, viewPou } from './pinValues';
 
@@ -249,6 +250,11 @@ export class HistoryRecorder {
     return undefined;
   }
 
+  /** The recorded scans within [from, to], or undefined when none is recorded. */
+  recordedRange(from?: number, to?: number): [number, number] | undefined {
+    return this.range(from, to);
+  }
+
   private range(from?: number, to?: number): [number, number] | undefined {
     const first = this.history.first;
     if (first === undefined) return undefined;
@@ -293,22 +299,39 @@ export class HistoryRecorder {
    * The recorded range as a test scenario: the inputs where they changed (scan 1 = the range's
    * first scan, every input set there), and the outputs expected at those scans and wherever they changed.
    */
-  scenarioCsv(inputs: readonly string[], outputs: readonly string[], cycleMs: number, from?: number, to?: number): string {
+    scenarioCsv(inputs: readonly string[], outputs: readonly string[], cycleMs: number, from?: number, to?: number, plant?: PlantColumns): string {
     const ins = this.types(inputs);
     const outs = this.types(outputs);
     const range = this.range(from, to);
-    const head = [`# Recorded from scans ${range ? `${range[0]} to ${range[1]}` : '(none)'} of a simulation`, `# cycle: ${cycleMs}ms`];
-    const lines = [csvRow(['scan', ...ins.map((c) => c.name), ...outs.map((c) => `expect ${c.name}`)])];
+    const head = [
+      `# Recorded from scans ${range ? `${range[0]} to ${range[1]}` : '(none)'} of a simulation`,
+      `# cycle: ${cycleMs}ms`,
+      ...(plant ? [`# plant: ${plant.id}`] : []),
+    ];
+    // The machine's operator controls and faults (pressed / set: 1, else 0) after the inputs.
+    const extra = plant?.names ?? [];
+    const lines = [csvRow(['scan', ...ins.map((c) => c.name), ...extra, ...outs.map((c) => `expect ${c.name}`)])];
     if (range) {
       const n = ins.length;
       let prev: Value[] | undefined;
+      let prevExtra: readonly boolean[] | undefined;
       this.each([...ins, ...outs], range, (values, scan) => {
         const k = scan - range[0] + 1;
+        const now = plant?.at(scan) ?? [];
         const changedIn = ins.map((_, j) => !prev || !sameValue(prev[j]!, values[j]!));
+        const changedExtra = now.map((v, j) => !prevExtra || prevExtra[j] !== v);
         const changedOut = outs.some((_, j) => !prev || !sameValue(prev[n + j]!, values[n + j]!));
-        if (changedIn.some(Boolean) || changedOut || scan === range[1])
-          lines.push(csvRow([String(k), ...ins.map((c, j) => (changedIn[j] ? csvValue(c.type, values[j]!) : '')), ...outs.map((c, j) => csvValue(c.type, values[n + j]!))]));
+        if (changedIn.some(Boolean) || changedExtra.some(Boolean) || changedOut || scan === range[1])
+          lines.push(
+            csvRow([
+              String(k),
+              ...ins.map((c, j) => (changedIn[j] ? csvValue(c.type, values[j]!) : '')),
+              ...now.map((v, j) => (changedExtra[j] ? (v ? '1' : '0') : '')),
+              ...outs.map((c, j) => csvValue(c.type, values[n + j]!)),
+            ]),
+          );
         prev = values.slice();
+        prevExtra = now;
       });
     }
     return `${[...head, ...lines].join('\n')}\n`;

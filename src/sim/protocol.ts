@@ -402,4 +402,6 @@ export type WorkerMessage =
   /** `refused`: why the recorded scans make no scenario (text is empty then). */
   | { readonly type: 'historyText'; readonly id: number; readonly format: 'trace' | 'scenario'; readonly text: string; readonly refused?: string }
   | { readonly type: 'scenarioReplayed'; readonly id: number; readonly result: ScenarioResult }
+  /** A request answered by id (explain, historyExport, replayScenario) could not be answered: why, for its caller. */
+  | { readonly type: 'requestFailed'; readonly id: number; readonly message: string }
   | GatewayWorkerMessage;

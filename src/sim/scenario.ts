@@ -25,7 +25,7 @@ import type { ElementaryType, Value } from '../model/iecTypes';
 import type { Project, Scenario } from '../model/project';
 import { readCsv } from './csv';
 import { runOptions } from './runTarget';
-import { requirePlant } from '../plant/machines';
+import { machineNameHint, requirePlant } from '../plant/machines';
 import { PlantLoop, plantValueType } from '../plant/loop';
 import type { PlantModel } from '../plant/types';
 
@@ -88,17 +88,22 @@ export function parseScenario(text: string, name = 'scenario'): ParsedScenario {
   }
   let cycleMs: number | undefined;
   let pou: string | undefined;
-  let plant: string | undefined;
+  let plant: { readonly id: string; readonly line: number } | undefined;
   for (const c of read.comments) {
-    const m = /^(cycle|pou|plant)\s*:\s*(.+)$/i.exec(c.cells[0]!);
+    const m = /^(cycle|pou|plant)\s*:\s*(.+)$/i.exec(c.cells[0]!) ?? /^(plant)\s*:\s*()$/i.exec(c.cells[0]!);
     if (!m) continue;
     if (m[1]!.toLowerCase() === 'pou') pou = m[2]!.trim();
     else if (m[1]!.toLowerCase() === 'plant') {
+      let id: string;
       try {
-        plant = requirePlant(m[2]!).id;
+        id = requirePlant(m[2]!).id;
       } catch (e) {
         throw new ScenarioError(c.line, (e as Error).message);
       }
+      // A second machine would silently replace the first: the columns of one would then be unknown.
+      if (plant && plant.id !== id)
+        throw new ScenarioError(c.line, `a scenario runs against one machine: line ${plant.line} already names ${plant.id}, this line ${id}`);
+      plant = { id, line: c.line };
     }
     else {
       const ms = toleranceOf(m[2]!, c.line);
@@ -137,7 +142,7 @@ export function parseScenario(text: string, name = 'scenario'): ParsedScenario {
     rows.push({ scan, line: r.line, cells });
   }
   if (rows.length === 0) throw new ScenarioError(head.line, 'the scenario has no rows');
-  return { name, columns, rows, scans: last, headerLine: head.line, ...(cycleMs !== undefined ? { cycleMs } : {}), ...(pou ? { pou } : {}), ...(plant ? { plant } : {}) };
+  return { name, columns, rows, scans: last, headerLine: head.line, ...(cycleMs !== undefined ? { cycleMs } : {}), ...(pou ? { pou } : {}), ...(plant ? { plant: plant.id } : {}) };
 }
 
 /** Where a run first differed from the scenario. */
@@ -158,6 +163,8 @@ export interface ScenarioResult {
   readonly divergences: readonly Divergence[];
   /** The scenario or the program could not be run: why (the scenario line, the rule id). */
   readonly error?: string;
+  /** The machine's consequences of severity warning (they fail nothing), located, in order. */
+  readonly warnings?: readonly string[];
 }
 
 interface Check {
@@ -174,7 +181,10 @@ function typeOf(program: CompiledProgram, name: string, line: number, plant: Pla
     return t;
   }
   const r = program.symbols.resolve(name, { literals: false, implicitLocations: false });
-  if (!r.ok) throw new ScenarioError(line, `unknown variable "${name}": ${r.message}`);
+  if (!r.ok) {
+    const hint = machineNameHint(name, plant, (id) => `add "# plant: ${id}" before the header`);
+    throw new ScenarioError(line, `unknown variable "${name}": ${r.message}${hint ? `; ${hint}` : ''}`);
+  }
   if (r.access.kind === 'const') throw new ScenarioError(line, `"${name}" is a constant, not a variable`);
   return r.access.type;
 }
@@ -250,6 +260,8 @@ export function runPrepared(
   const loop = plant?.loop;
   loop?.bind(plc);
   const checked = new Set(parsed.columns.filter((c) => c.kind === 'expect').map((c) => c.name.toLowerCase()));
+  const warnings: string[] = [];
+  const done = (r: Omit<ScenarioResult, 'name'>): Omit<ScenarioResult, 'name'> => (warnings.length ? { ...r, warnings } : r);
   let row = 0;
   for (let scan = 1; scan <= parsed.scans; scan++) {
     const at = parsed.rows[row]?.scan === scan ? row : -1;
@@ -262,12 +274,13 @@ export function runPrepared(
     const report = plc.scan();
     if (report.fault) {
       afterScan?.(scan);
-      return { ok: false, scans: scan, divergences: [], error: `scan ${scan}: ${report.fault.message}` };
+      return done({ ok: false, scans: scan, divergences: [], error: `scan ${scan}: ${report.fault.message}` });
     }
     afterScan?.(scan);
     const events = loop?.afterScan(scan, (scan - 1) * plant!.cycleMs, plant!.cycleMs);
     const harm = events?.find((e) => e.severity === 'error' && !(e.counter && checked.has(`${loop!.model.id}.${e.counter}`.toLowerCase())));
-    if (harm) return { ok: false, scans: scan, divergences: [], error: harm.text };
+    if (events) for (const e of events) if (e.severity === 'warning') warnings.push(e.text);
+    if (harm) return done({ ok: false, scans: scan, divergences: [], error: harm.text });
     if (at < 0) continue;
     row++;
     const divergences: Divergence[] = [];
@@ -283,9 +296,9 @@ export function runPrepared(
           actual: checkText(check.type, actual),
         });
     }
-    if (divergences.length) return { ok: false, scans: scan, divergences };
+    if (divergences.length) return done({ ok: false, scans: scan, divergences });
   }
-  return { ok: true, scans: parsed.scans, divergences: [] };
+  return done({ ok: true, scans: parsed.scans, divergences: [] });
 }
 
 /**

@@ -2,6 +2,8 @@
 // the recorded scans can replay as they ran, and the helpers a scenario replay runs with.
 import type { Plc } from '../engine/api';
 import type { Project } from '../model/project';
+import { addressKey } from '../plant/loop';
+import type { PlantPoint } from '../plant/types';
 import type { HistoryRecorder } from './historyRecorder';
 import { isProgramView, withView } from './layout';
 import type { SimLayout } from './protocol';
@@ -52,3 +54,61 @@ export function plcScanWithClock(plc: Plc, before: (scan: number) => void): Plc 
     },
   });
 }
+
+/** The machine the recorded scans ran against, as a recorded scenario needs it. */
+export interface RecordedPlant {
+  readonly id: string;
+  /** Its points at their addresses (the map it ran with). */
+  readonly points: readonly PlantPoint[];
+  /** The operator controls held and the faults set in a scan, if still kept. */
+  controlsAt(scan: number): { readonly operator: Readonly<Record<string, boolean>>; readonly faults: readonly string[] } | undefined;
+}
+
+/** The machine's columns of a recorded scenario: `tank.Start` per operator control, `fault ID` per fault set in the range. */
+export interface PlantColumns {
+  readonly id: string;
+  readonly names: readonly string[];
+  /** Each column's value in a scan (pressed / set). */
+  at(scan: number): readonly boolean[];
+}
+
+/**
+ * Recording scans run against a machine: the machine's sensors and operator controls are not the
+ * program's inputs to set (the machine sets them: `inputs` without them), its controls and faults
+ * are columns of their own, read from the machine's history. Refused (`problem`) when the
+ * machine's record does not start at scan 1: it was attached or rewired after the cold start, and
+ * a scenario starts it with the program.
+ */
+export function plantRecording(
+  plant: RecordedPlant,
+  layout: SimLayout | undefined,
+  inputs: readonly string[],
+  range: readonly [number, number] | undefined,
+): { problem: string } | { inputs: string[]; columns: PlantColumns } {
+  if (range && !plant.controlsAt(1))
+    return {
+      problem: `A scenario starts the machine ${plant.id} with the program at the cold start, but its record starts later (it was chosen or rewired after scan 1). Press Reset (cold restart), run and operate it, then record again.`,
+    };
+  const wired = new Set(plant.points.filter((p) => p.kind !== 'actuator').map((p) => addressKey(p.address)));
+  const located = new Map((layout?.variables ?? []).map((v) => [v.name.toUpperCase(), v.location]));
+  const own = inputs.filter((name) => {
+    const at = located.get(name.toUpperCase());
+    return !(at && wired.has(addressKey(at)));
+  });
+  const controls = plant.points.filter((p) => p.kind === 'operator').map((p) => p.name);
+  const faults = new Set<string>();
+  if (range) for (let scan = range[0]; scan <= range[1]; scan++) for (const f of plant.controlsAt(scan)?.faults ?? []) faults.add(f);
+  const faultList = [...faults].sort();
+  return {
+    inputs: own,
+    columns: {
+      id: plant.id,
+      names: [...controls.map((c) => `${plant.id}.${c}`), ...faultList.map((f) => `fault ${f}`)],
+      at: (scan) => {
+        const c = plant.controlsAt(scan);
+        return [...controls.map((n) => c?.operator[n] === true), ...faultList.map((f) => c?.faults.includes(f) === true)];
+      },
+    },
+  };
+}
+

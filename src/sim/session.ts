@@ -154,7 +154,11 @@ export class SimSession {
     try {
       this.dispatch(this.withDocument(message));
     } catch (error) {
-      this.deps.post({ type: 'error', message: error instanceof Error ? error.message : String(error) });
+      const text = error instanceof Error ? error.message : String(error);
+      // A request the page waits on by id is answered, with the reason: a notice alone would leave it waiting.
+      if (message.type === 'explain' || message.type === 'historyExport' || message.type === 'replayScenario')
+        this.deps.post({ type: 'requestFailed', id: message.id, message: text });
+      else this.deps.post({ type: 'error', message: text });
       this.postFrame();
     }
   }
@@ -301,6 +305,7 @@ export class SimSession {
           sinceColdStart: this.sinceColdStart,
           cycleMs: this.runner.cycleMs,
           text: this.textTarget(),
+          plant: this.plant.recording(),
           post: (message, transfer) => {
             // A recorded scan shows the machine as it was then.
             const plant = message.type === 'historyView' ? this.plant.at(message.view.scan) : undefined;

@@ -5,7 +5,7 @@ import type { Project } from '../model/project';
 import type { HistoryRecorder } from './historyRecorder';
 import { isProgramView } from './layout';
 import type { HostMessage, SimFrame, SimLayout, WorkerMessage } from './protocol';
-import { scenarioRecordingProblem, type SinceColdStart } from './scenarioRecording';
+import { plantRecording, scenarioRecordingProblem, type RecordedPlant, type SinceColdStart } from './scenarioRecording';
 
 /** The history requests a session answers with answerHistory. */
 export type HistoryRequest = Extract<HostMessage, { type: 'historySeek' | 'historyFind' | 'explain' | 'historyExport' }>;
@@ -21,6 +21,8 @@ export interface HistoryContext {
   readonly cycleMs: number;
   /** The shown body when it is ST/IL: a recorded scan's view carries what it did. */
   readonly text?: TextTarget | undefined;
+  /** The machine the program runs against, if any: a recorded scenario runs against it too. */
+  readonly plant?: RecordedPlant | undefined;
   post(message: WorkerMessage, transfer?: Transferable[]): void;
 }
 
@@ -78,7 +80,10 @@ export function answerHistory(m: HistoryRequest, ctx: HistoryContext): void {
     }
     case 'historyExport': {
       const recorder = requireHistory(ctx.recorder);
-      const refused = m.format === 'scenario' ? scenarioRecordingProblem(ctx.sinceColdStart, recorder, m.from) : undefined;
+      let refused = m.format === 'scenario' ? scenarioRecordingProblem(ctx.sinceColdStart, recorder, m.from) : undefined;
+      // Against a machine: its controls and faults are the scenario's columns, its sensors not inputs to set.
+      const plant = m.format === 'scenario' && !refused && ctx.plant ? plantRecording(ctx.plant, ctx.layout, m.inputs ?? [], recorder.recordedRange(m.from, m.to)) : undefined;
+      if (plant && 'problem' in plant) refused = plant.problem;
       if (refused) {
         ctx.post({ type: 'historyText', id: m.id, format: m.format, text: '', refused });
         return;
@@ -86,7 +91,9 @@ export function answerHistory(m: HistoryRequest, ctx: HistoryContext): void {
       const text =
         m.format === 'trace'
           ? recorder.traceCsv(m.names ?? ctx.layout!.variables.map((v) => v.name), m.from, m.to)
-          : recorder.scenarioCsv(m.inputs ?? [], m.outputs ?? [], ctx.cycleMs, m.from, m.to);
+          : plant && !('problem' in plant)
+            ? recorder.scenarioCsv(plant.inputs, m.outputs ?? [], ctx.cycleMs, m.from, m.to, plant.columns)
+            : recorder.scenarioCsv(m.inputs ?? [], m.outputs ?? [], ctx.cycleMs, m.from, m.to);
       ctx.post({ type: 'historyText', id: m.id, format: m.format, text });
       return;
     }

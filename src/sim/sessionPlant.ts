@@ -9,6 +9,7 @@ import type { PlantPoint } from '../plant/types';
 import type { Value } from '../model/iecTypes';
 import { plantNames, plantSpelling, type PlantName } from '../plant/values';
 import type { PlantWhyContext } from './plantWhy';
+import type { RecordedPlant } from './scenarioRecording';
 
 /** Consequences a frame carries (the newest); the panel lists them. */
 const FRAME_EVENTS = 50;
@@ -150,6 +151,12 @@ export class SessionPlant {
   whyContext(): PlantWhyContext | undefined {
     const loop = this.loop;
     return loop && { model: loop.model, points: loop.points, at: (scan) => loop.at(scan) };
+  }
+
+  /** What recording the history as a scenario needs of the machine, or undefined without one. */
+  recording(): RecordedPlant | undefined {
+    const loop = this.loop;
+    return loop && { id: loop.model.id, points: loop.points, controlsAt: (scan) => loop.controlsAt(scan) };
   }
 
   /** For scenario replays in the simulator: the machine's loop, started over. */

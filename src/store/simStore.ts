@@ -516,6 +516,9 @@ export function createSimStore(transport: SimTransport): SimStore {
         if (message.message.startsWith(WORKER_GONE)) {
           // The worker itself is gone (crashed or terminated): nothing runs any more, and the
           // simulation must not show Running (nor drive hardware) for a program that no longer exists.
+          // Nothing will answer the requests waiting either.
+          for (const p of pending.values()) p.reject(new Error(message.message));
+          pending.clear();
           track.requested = undefined;
           running = null;
           expected.set(new Set());
@@ -533,6 +536,12 @@ export function createSimStore(transport: SimTransport): SimStore {
       case 'historyNotFound':
         store.setState({ historyMessage: message.message });
         return;
+      case 'requestFailed': {
+        const p = pending.get(message.id);
+        pending.delete(message.id);
+        p?.reject(new Error(message.message));
+        return;
+      }
       case 'explanation':
       case 'historyText':
       case 'scenarioReplayed': {

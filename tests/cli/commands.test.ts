@@ -123,4 +123,16 @@ describe('rungsmith usage', () => {
     expect(r.status).toBe(0);
     expect(r.stdout).toBe('scan,time_ms,A,B\n1,0,1,1\n2,5,1,1\n');
   });
+
+  it('piped into a reader that stops early (| head), it ends quietly with its own exit code, no EPIPE stack trace', () => {
+    const bin = fileURLToPath(new URL('../../bin/rungsmith.mjs', import.meta.url));
+    const file = fileURLToPath(new URL('../fixtures/plcopen/jump-label-return.xml', import.meta.url));
+    // 60,000 rows are far more than a pipe holds: the writes after head exits fail with EPIPE.
+    const script = `"${process.execPath}" "${bin}" simulate "${file}" --scans 60000 --watch A,B | head -n 2; echo "status \${PIPESTATUS[0]}"`;
+    const r = spawnSync('/bin/bash', ['-c', script], { encoding: 'utf8', timeout: 120_000 });
+    expect(r.stderr).not.toContain('EPIPE');
+    // Only the program's own warnings (its jump and RETURN under openplc), no stack trace.
+    expect(r.stderr.trim().split('\n').every((l) => l.startsWith('warning LD-W'))).toBe(true);
+    expect(r.stdout).toBe('scan,time_ms,A,B\n1,0,1,1\nstatus 0\n');
+  });
 });

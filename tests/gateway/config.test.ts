@@ -9,6 +9,17 @@ import { planBlocks } from '../../src/gateway/modbusPlan';
 const device = (points: unknown[], extra: Record<string, unknown> = {}) => ({ devices: [{ id: 'io1', host: '127.0.0.1', points, ...extra }] });
 
 describe('gateway config', () => {
+  it('simulated.plant names a machine there is, and only for the simulated device (no "devices"): located errors', () => {
+    expect(resolveConfig({ simulated: { plant: 'mixer' } }).simulated.plant).toBe('mixer');
+    expect(() => resolveConfig({ simulated: { plant: 'tnak' } }, 'gw.json')).toThrow(
+      'gw.json: simulated.plant: there is no machine "tnak"; the machines are tank,',
+    );
+    // Else the machine would silently not be there: real devices replace the simulated one.
+    expect(() => resolveConfig({ ...device([{ address: '%IX0.0' }]), simulated: { plant: 'tank' } }, 'gw.json')).toThrow(
+      'gw.json: simulated.plant: the machine "tank" is the built-in simulated device, which runs only with no "devices" configured',
+    );
+  });
+
   it('has safe defaults: watchdog 1000 ms, no auto re-arm, simulated device when no devices are named', () => {
     const c = resolveConfig({});
     expect(c).toMatchObject({ watchdogMs: 1000, autoRearm: false, devices: [], simulated: { modbusPort: 5020 } });

@@ -13,6 +13,9 @@ import { PLANTS } from '../../src/plant/machines';
 import { senseRecord } from '../../src/plant/points';
 import { tank } from '../../src/plant/tank';
 import type { PlantModel } from '../../src/plant/types';
+import { compileProgram, createPlc } from '../../src/engine/plc';
+import { newProject } from '../../src/model/factory';
+import { plantVariables } from '../../src/plant/exerciseKit';
 
 /** A small deterministic generator (no Math.random: the run is the same every time). */
 function lcg(seed: number): () => number {
@@ -140,4 +143,51 @@ describe('a machine at rest', () => {
     }
     for (let k = 1; k <= 2000; k += 7) expect(loop.at(k)!.state, `scan ${k}`).toEqual(live[k - 1]);
   });
+
+  test('at rest, an input written over by anything else (a write by name, setInputs, the image, a restore) is the machine\'s again after the next scan', () => {
+    // The program only declares the tank's points (its actuators stay off): the tank stands still.
+    const project = newProject('idle tank');
+    const plc = createPlc(compileProgram({ ...project, pous: [{ ...project.pous[0]!, variables: plantVariables(tank) }] }).program!, { cycleMs: 10 });
+    const loop = new PlantLoop(tank);
+    loop.bind(plc);
+    let k = 0;
+    const scan = () => {
+      k++;
+      plc.scan();
+      loop.afterScan(k, (k - 1) * 10, 10);
+    };
+    for (let i = 0; i < 100; i++) scan();
+    const probe = plc.probe!();
+    const saved = probe.save();
+    const io = plc.ioImage!();
+    const level = io.input('%IW0');
+    // The machine presents 100 L, the low switch OFF.
+    expect(io.inputs[level]).toBe(100);
+    const overwrites: [string, () => void][] = [
+      ['a write by name', () => plc.write('Level', 555)],
+      ['setInputs', () => plc.setInputs({ '%IW0': 555 })],
+      ['the image', () => io.write(level, 555)],
+      ['an input point', () => plc.ioPoint!('%IW0')!.write(555)],
+      [
+        'a restore',
+        () => {
+          plc.write('Level', 555);
+          const written = probe.save();
+          scan();
+          probe.restore(written);
+        },
+      ],
+    ];
+    for (const [how, overwrite] of overwrites) {
+      overwrite();
+      expect(io.inputs[level], how).toBe(555);
+      scan();
+      expect(io.inputs[level], how).toBe(100);
+      expect(plc.read('Level'), how).toBe(555);
+      scan();
+      expect(plc.read('Level'), how).toBe(100);
+    }
+    probe.restore(saved);
+  });
 });
+

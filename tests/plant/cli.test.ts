@@ -8,6 +8,10 @@ import { garageReference, garageWrong } from '../../src/plant/garageExercise';
 import { intersectionReference, intersectionWrong } from '../../src/plant/intersectionExercise';
 import { liftReference, liftWrong } from '../../src/plant/liftExercise';
 import { mixerReference, mixerWrong } from '../../src/plant/mixerExercise';
+import { coil, contact, network, rung } from '../../src/model/examples';
+import { newPou, newProject } from '../../src/model/factory';
+import { plantVariables } from '../../src/plant/exerciseKit';
+import { tank } from '../../src/plant/tank';
 import { rungsmith } from '../cli/memoryIo';
 
 /** Each machine's exercise as CI runs it: its scenario, the scans it takes, where the wrong solution fails. */
@@ -153,6 +157,74 @@ describe('rungsmith and the machines', () => {
     expect(run('tank.Nope', '0').err).toBe('rungsmith: s.csv: column "tank.Nope": tank has no operator control "Nope"; it has Start, Stop\n');
     expect(run('fault pump_daed', '0').err).toBe(
       'rungsmith: s.csv: column "fault pump_daed": tank has no fault "pump_daed"; it has low_stuck_off, low_stuck_on, high_stuck_off, high_stuck_on, pump_dead, inlet_slow, drain_stuck\n',
+    );
+  });
+
+  test("a machine's name, fault or control without its machine says what to add (--plant / # plant:), not only that the variable is undeclared", () => {
+    const files = { 'tank.json': JSON.stringify(tankReference()) };
+    const watch = rungsmith(['simulate', 'tank.json', '--scans', '3', '--watch', 'Pump,tank.level'], files);
+    expect(watch.code).toBe(2);
+    expect(watch.err).toBe(
+      'rungsmith: unknown variable "tank.level": "tank" is not declared; tank.level is the machine tank\'s: add --plant tank\n',
+    );
+    expect(rungsmith(['simulate', 'tank.json', '--plant', 'mixer', '--scans', '3', '--watch', 'tank.level'], files).err).toContain(
+      'tank.level is the machine tank\'s, and this runs mixer',
+    );
+    // Was: "fault pump_dead" is a constant, not a variable.
+    const fault = rungsmith(['simulate', 'tank.json', '--inputs', 's.csv'], { ...files, 's.csv': 'scan,fault pump_dead\n1,1\n' });
+    expect(fault.code).toBe(2);
+    expect(fault.err).toBe(
+      'rungsmith: s.csv: column "fault pump_dead": "fault pump_dead" sets a machine\'s fault: run the program with its machine (--plant NAME)\n',
+    );
+    const project = { ...tankReference(), scenarios: [{ name: 'No machine', csv: 'scan,tank.Start,expect tank.level\n1,1,100\n' }] };
+    const test = rungsmith(['test', 'tank.json'], { 'tank.json': JSON.stringify(project) });
+    expect(test.code).toBe(1);
+    expect(test.out).toContain(
+      'FAIL No machine: line 1: unknown variable "tank.Start": "tank" is not declared; tank.Start is the machine tank\'s: add "# plant: tank" before the header',
+    );
+  });
+
+  test('"# plant:" naming no machine, or a second one, fails the scenario at its line (it was ignored, or the last one won)', () => {
+    const run = (csv: string) =>
+      rungsmith(['test', 'tank.json'], { 'tank.json': JSON.stringify({ ...tankReference(), scenarios: [{ name: 'S', csv }] }) });
+    const empty = run('# plant:\nscan,expect Pump\n1,0\n');
+    expect(empty.code).toBe(1);
+    expect(empty.out).toContain('FAIL S: line 1: there is no machine ""; the machines are tank, lift, garage, mixer, boxes, intersection');
+    const two = run('# plant: tank\n# plant: mixer\nscan,tank.Start\n1,1\n');
+    expect(two.code).toBe(1);
+    expect(two.out).toContain('FAIL S: line 2: a scenario runs against one machine: line 1 already names tank, this line mixer');
+    expect(run('# plant: tank\n# plant: Tank\nscan,tank.Start,expect tank.level ~ 1\n1,1,100\n').code).toBe(0);
+  });
+
+  test("a project's I/O map naming no point of the machine (a typo) is warned about on stderr by test and simulate, not silently ignored", () => {
+    const project = { ...tankReference(), plant: { id: 'tank', map: { Pmp: '%QX0.5' } } };
+    const warning =
+      'warning tank: the project\'s I/O map names "Pmp", not a point of the machine (Start, Stop, LowLevel, HighLevel, Level, Pump, InletValve, DrainValve, RunLamp): it changes nothing\n';
+    const test = rungsmith(['test', 'tank.json'], { 'tank.json': JSON.stringify(project) });
+    expect(test.code).toBe(0);
+    expect(test.err).toBe(warning);
+    const sim = rungsmith(['simulate', 'tank.json', '--plant', 'tank', '--scans', '1', '--watch', 'Pump'], { 'tank.json': JSON.stringify(project) });
+    expect(sim.code).toBe(0);
+    expect(sim.err).toBe(warning);
+    expect(rungsmith(['test', 'tank.json'], { 'tank.json': JSON.stringify(tankReference()) }).err).toBe('');
+  });
+
+  test("the machine's warnings (they fail nothing) are listed under the scenario's PASS or FAIL", () => {
+    // Start runs the pump, and nothing opens the inlet valve: the pump runs against it (a warning).
+    const main = newPou('Main', {
+      variables: plantVariables(tank),
+      networks: [network('Pump', 'The pump runs on Start.', rung([contact(0, 0, 'Start')], coil(0, 'Pump')), { rows: 1 })],
+    });
+    const project = newProject('Deadhead', {
+      scenarios: [{ name: 'Pump on Start', csv: '# plant: tank\n# cycle: 100ms\nscan,tank.Start,expect Pump\n1,1,1\n60,,1\n' }],
+      plant: { id: 'tank' },
+      pous: [main],
+      tasks: [{ name: 'MainTask', cycleMs: 100, priority: 1, programs: [{ instance: 'MainInstance', pou: 'Main' }] }],
+    });
+    const r = rungsmith(['test', 'p.json'], { 'p.json': JSON.stringify(project) });
+    expect(r.code).toBe(0);
+    expect(r.out).toMatch(
+      /^PASS Pump on Start \(60 scans\)\n {2}warning: the pump ran 3 s against the closed inlet valve at scan \d+ \(\d+\.\d\d s\)\n1 passed, 0 failed/,
     );
   });
 

@@ -173,6 +173,24 @@ describe('the garage door model', () => {
     expect(consequences(warned, UP, 3000).ids).toEqual([]);
   });
 
+  test('a door braking to a stop after the motor and the lamp went off together is no unwarned move, at any scan', () => {
+    // At full speed up, the contactor and the lamp dropped in one scan: 0.1 s of braking, in 10 ms steps.
+    let s = run(at(40), UP, 2000);
+    expect(s.speed).toBe(1);
+    const ids: string[] = [];
+    for (let t = 0; t < 200; t += 10) {
+      const next = garage.step(s, {}, 10, none);
+      ids.push(...garage.check(s, next).map((c) => c.id));
+      s = next;
+    }
+    expect(s.speed).toBe(0);
+    expect(s.position).toBeGreaterThan(40 + 100 * (1.8 / 12));
+    expect(ids).toEqual([]);
+    expect(s.unwarned).toBe(0);
+    // Driven without the lamp it still is.
+    expect(consequences(at(40, 0), { MotorUp: true }, 300).ids).toEqual(['unwarned']);
+  });
+
   test.each([
     ['open_stuck_off', 'OpenLimit', false, at(100)],
     ['open_stuck_on', 'OpenLimit', true, at(0)],
@@ -231,6 +249,15 @@ describe('the garage door exercise', () => {
   test('the reference solution opens and closes the door three times, reversing for the car', () => {
     const { result } = runScenario(garageReference(), GARAGE_SCENARIO);
     expect(result).toMatchObject({ ok: true, scans: 1000 });
+  });
+
+  test.each([10, 20, 50])('the reference solution opens the door at %i ms scans with no warning (it gave one as the door braked at the limit)', (cycle) => {
+    const scans = Math.ceil(14_000 / cycle);
+    const { result } = runScenario(garageReference(), {
+      name: `open at ${cycle} ms`,
+      csv: `# plant: garage\n# cycle: ${cycle}ms\nscan,garage.KeyOpen,expect OpenLimit,expect garage.unwarned\n1,1,0,0\n${Math.ceil(200 / cycle)},0,,\n${scans},,1,0\n`,
+    });
+    expect(result).toMatchObject({ ok: true, scans });
   });
 
   test('the wrong solution (it ignores the photo-eye) fails where the door comes down on the car', () => {

@@ -132,4 +132,18 @@ describe('opening another project', () => {
     expect(s().mode).toBe('running');
     expect(s().layout?.networkIds).toHaveLength(1);
   });
+
+  test('a request the simulator cannot answer is answered with why: Why? on a scan no longer recorded, a trace of unknown names', async () => {
+    const { s, scheduler } = setup();
+    s().run(example('motor-start-stop'));
+    scheduler.advance(50);
+    s().explain({ kind: 'variable', name: 'Motor' }, 999_999);
+    // Said where the question was asked (the Why? panel), not left waiting.
+    await expect.poll(() => s().historyMessage).toBe('scan 999999 is not in the history');
+    await expect(s().exportHistory({ format: 'trace', names: ['NoSuchVariable'] })).rejects.toThrow(/NoSuchVariable/);
+    // The simulation goes on.
+    scheduler.advance(50);
+    expect(s().mode).toBe('running');
+  });
 });
+

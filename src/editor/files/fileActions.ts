@@ -3,6 +3,7 @@ import type { Project } from '../../model/project';
 import type { DocumentStore } from '../../store/documentStore';
 import { filesUi } from './filesUi';
 import { downloadProject, readProjectFile } from './projectFile';
+import { showPlantTab } from '../plant/showPlantTab';
 
 /** Runs `replace` now, or after the user agreed to lose the unsaved changes. */
 export function replaceDocument(
@@ -57,5 +58,7 @@ export function loadWithConsent(store: DocumentStore, project: Project, what: st
   replaceDocument(store, what, 'Discard and open', () => {
     store.getState().loadProject(project);
     filesUi.getState().setNotice(notice);
+    // A project that names a machine (an exercise) opens with the machine in view.
+    if (project.plant) showPlantTab();
   });
 }

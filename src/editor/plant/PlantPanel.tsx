@@ -57,6 +57,11 @@ function wiring(
 const selectFrame = (s: SimState) => s.plant;
 const selectAtScan = (s: SimState) => s.plantAtScan;
 const selectHistoryScan = (s: SimState) => s.historyScan;
+const selectHistoryTime = (s: SimState) => s.historyTimeMs;
+const selectScan = (s: SimState) => s.scan;
+const selectTime = (s: SimState) => s.timeMs;
+const selectCycle = (s: SimState) => s.cycleMs;
+const seconds = (ms: number) => `${(ms / 1000).toFixed(2)} s`;
 
 export function PlantPanel() {
   const config = useDocument(selectPlantConfig);
@@ -102,6 +107,13 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
   const frame = useSim(selectFrame);
   const atScan = useSim(selectAtScan);
   const historyScan = useSim(selectHistoryScan);
+  const historyTime = useSim(selectHistoryTime);
+  const simScan = useSim(selectScan);
+  const simTime = useSim(selectTime);
+  const cycleMs = useSim(selectCycle);
+  /** When scan `scan` started, the machine having reached `endMs` after it. */
+  const started = (scan: number, endMs: number, known: number | undefined, knownMs: number | undefined) =>
+    scan === known && knownMs !== undefined ? knownMs : Math.max(0, endMs - cycleMs);
   const points = mappedPoints(model, map);
   const live = frame?.id === model.id ? frame : undefined;
   const shown = historyScan !== undefined && atScan ? atScan : live?.now;
@@ -111,10 +123,12 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
   const status =
     historyScan !== undefined
       ? atScan
-        ? `Recorded scan ${atScan.scan.toLocaleString('en-US')} (${(atScan.timeMs / 1000).toFixed(2)} s)`
+        ? // A scan's time is when it started, as the History, the toolbar and the consequences
+          // ("at scan 625 (12.48 s)") give it; the machine's own time is the scan's end.
+          `Recorded scan ${atScan.scan.toLocaleString('en-US')} (${seconds(started(atScan.scan, atScan.timeMs, historyScan, historyTime))})`
         : `Scan ${historyScan.toLocaleString('en-US')} is no longer kept for the machine`
       : shown && shown.scan > 0
-        ? `After scan ${shown.scan.toLocaleString('en-US')} (${(shown.timeMs / 1000).toFixed(2)} s)`
+        ? `After scan ${shown.scan.toLocaleString('en-US')} (${seconds(started(shown.scan, shown.timeMs, simScan, simTime))})`
         : shown
           ? // Attached to a program already past scan 0: the machine's first step is the next scan's.
             'Initial state: it moves from the next scan on'
@@ -127,7 +141,12 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
       </p>
       {drawing && (
         <FittedDrawing drawing={drawing} state={state} sensed={sensed}>
-          <OperatorControls points={points} held={shown?.operator ?? {}} />
+          <OperatorControls
+            points={points}
+            held={shown?.operator ?? {}}
+            live={live?.now.operator ?? {}}
+            viewing={historyScan !== undefined}
+          />
         </FittedDrawing>
       )}
       <Readouts model={model} state={state} />
@@ -192,17 +211,29 @@ function FittedDrawing({
   );
 }
 
-/** Operator controls on the drawing: real buttons (keyboard, screen readers), placed over it. */
+/**
+ * Operator controls on the drawing: real buttons (keyboard, screen readers), placed over it. They
+ * show the controls as the drawing's scan had them (`held`) but act on the live machine (`live`):
+ * a switch turns from where it is now, and a control used at a recorded scan goes back to Live,
+ * where what it does is seen.
+ */
 function OperatorControls({
   points,
   held,
+  live,
+  viewing,
 }: {
   points: readonly PlantPoint[];
   held: Readonly<Record<string, boolean>>;
+  live: Readonly<Record<string, boolean>>;
+  viewing: boolean;
 }) {
   const sim = useSimStore();
   const operators = points.filter((p) => p.kind === 'operator');
-  const set = (name: string, value: boolean) => sim.getState().plantOperator(name, value);
+  const set = (name: string, value: boolean) => {
+    if (viewing) sim.getState().goLive();
+    sim.getState().plantOperator(name, value);
+  };
   return (
     <div className="rs-plant-operator">
       {operators.map((p) =>
@@ -214,7 +245,7 @@ function OperatorControls({
             aria-pressed={held[p.name] === true}
             title={p.comment}
             className={held[p.name] ? 'rs-plant-op on' : 'rs-plant-op'}
-            onClick={() => set(p.name, !held[p.name])}
+            onClick={() => set(p.name, !live[p.name])}
           >
             {p.name}
           </button>
@@ -241,7 +272,7 @@ function OperatorControls({
             // A push button springs back: held from the keyboard, it is released when the focus
             // leaves it (Tab, a click elsewhere), whose key-up then goes elsewhere.
             onBlur={() => {
-              if (held[p.name]) set(p.name, false);
+              if (live[p.name]) sim.getState().plantOperator(p.name, false);
             }}
           >
             {p.name}

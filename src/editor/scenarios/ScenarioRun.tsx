@@ -18,7 +18,11 @@ export function getScenarioSimStore(): SimStore {
 /** Runs the scenario from a cold start in the scenario simulation; a failure is explained at its first divergent scan. */
 export async function runScenarioApart(project: Project, scenario: Scenario): Promise<ScenarioResult> {
   const sim = getScenarioSimStore();
-  const result = await sim.getState().replayScenario(project, scenario);
+  // The simulator could not run it at all (it failed or stopped): a failed result saying why, not a run that never ends.
+  const result = await sim
+    .getState()
+    .replayScenario(project, scenario)
+    .catch((error: Error): ScenarioResult => ({ name: scenario.name, ok: false, scans: 0, divergences: [], error: error.message }));
   const d = result.divergences[0];
   if (d) sim.getState().explain({ kind: 'variable', name: d.name }, d.scan);
   return result;

@@ -63,6 +63,8 @@ export abstract class ScanCycle {
   private readonly ctx: FnContext = { error: false };
   protected readonly inputs: VarSymbol[];
   protected readonly inputImage: Value[];
+  /** How many times the input image was written, whichever way (IoImage.inputWrites). */
+  protected readonly inputWrites = new Uint32Array(1);
   protected readonly outputsVars: VarSymbol[];
   protected readonly outputImage: Value[];
   protected readonly forces = new Map<VarSymbol, Value>();

@@ -115,6 +115,7 @@ export class ScanPlc extends ScanCycle implements Plc {
     this.meters[input && this.cursor === -1 ? 0 : 1]!++;
     if (input) {
       this.inputImage[this.inputs.indexOf(a.v)] = v;
+      this.inputWrites[0]!++;
       return;
     }
     if ((a.kind === 'var' || a.kind === 'bit') && this.forces.has(a.v)) return; // a forced value wins
@@ -175,6 +176,7 @@ export class ScanPlc extends ScanCycle implements Plc {
       const index = v ? this.inputs.indexOf(v) : -1;
       if (!v || index < 0) throw new Error(`${loc}: no input variable is declared at this location`);
       this.inputImage[index] = coerce(v.type, value, loc);
+      this.inputWrites[0]!++;
     }
   }
 
@@ -185,11 +187,13 @@ export class ScanPlc extends ScanCycle implements Plc {
     if (input >= 0) {
       const image = this.inputImage;
       const meters = this.meters;
+      const writes = this.inputWrites;
       return {
         read: () => image[input]!,
         write: (value) => {
           meters[this.cursor === -1 ? 0 : 1]!++;
           image[input] = typeof value === 'boolean' && v.type === 'BOOL' ? value : coerce(v.type, value, location);
+          writes[0]!++;
         },
       };
     }
@@ -211,10 +215,12 @@ export class ScanPlc extends ScanCycle implements Plc {
     const inputs = this.inputs;
     const image = this.inputImage;
     const meters = this.meters;
+    const writes = this.inputWrites;
     const atLocation = (location: string) => this.program.symbols.atLocation(location, false);
     this.image = {
       inputs: image,
       outputs: this.outputImage,
+      inputWrites: writes,
       input: (location) => {
         const v = atLocation(location);
         return v ? inputs.indexOf(v) : -1;
@@ -228,6 +234,7 @@ export class ScanPlc extends ScanCycle implements Plc {
         const v = inputs[index]!;
         meters[this.cursor === -1 ? 0 : 1]!++;
         image[index] = typeof value === 'boolean' && v.type === 'BOOL' ? value : coerce(v.type, value, v.locationText ?? v.name);
+        writes[0]!++;
       },
     };
     return this.image;
@@ -332,7 +339,10 @@ export class ScanPlc extends ScanCycle implements Plc {
       save: () => this.saveImage(),
       restore: (image) => this.restoreImage(image as Image),
       replay: (timeMs, inputs) => {
-        if (inputs) for (let i = 0; i < this.inputImage.length; i++) this.inputImage[i] = inputs[i]!;
+        if (inputs) {
+          for (let i = 0; i < this.inputImage.length; i++) this.inputImage[i] = inputs[i]!;
+          this.inputWrites[0]!++;
+        }
         this.replayAt = timeMs;
         try {
           this.runScans(1);
@@ -369,6 +379,7 @@ export class ScanPlc extends ScanCycle implements Plc {
     this.power.set(image.power);
     this.ranIn.set(image.ranIn);
     image.inputs.forEach((v, i) => (this.inputImage[i] = v));
+    this.inputWrites[0]!++;
     image.outputs.forEach((v, i) => (this.outputImage[i] = v));
     const forced = new Map(image.forces);
     for (const v of [...this.forces.keys()]) if (!forced.has(v)) {

@@ -1,0 +1,123 @@
+// Exploratory QA of the box sorter, the garage door and the lift in the Plant panel (issue 26),
+// in real Chromium against the real server: what a student or trainer hit using them. One page
+// for the file.
+import type { Page } from 'playwright-core';
+import { beforeAll, expect, test } from 'vitest';
+import { openApp, useChromium } from './appPage';
+import { PlantPage } from './plantPage';
+import { SimPage } from './simPage';
+
+const browser = useChromium();
+let page: Page;
+let sim: SimPage;
+let plants: PlantPage;
+let errors: string[];
+
+interface GarageNow {
+  carIn: boolean;
+  position: number;
+}
+const garage = async () => (await plants.plant<GarageNow>())!.now.state;
+
+beforeAll(async () => {
+  ({ page, errors } = await openApp(browser()));
+  sim = new SimPage(page);
+  plants = new PlantPage(page, sim);
+});
+
+test('an exercise opened from File > Examples shows its machine: the Plant tab is chosen, the drawing in view', async () => {
+  await sim.tab('Inspector');
+  await expect.poll(() => page.getByTestId('plant-panel').isVisible()).toBe(false);
+  await sim.openExample('Three-floor lift (machine: lift)');
+  await expect.poll(() => page.getByRole('tab', { name: 'Plant' }).getAttribute('aria-selected')).toBe('true');
+  await expect.poll(() => page.getByTestId('plant-panel').isVisible()).toBe(true);
+  await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('lift');
+  expect(await page.getByTestId('plant-op-Call1').isVisible()).toBe(true);
+});
+
+test('at a recorded scan the drawing\'s switch shows it as it was, and turning it acts on the live machine and goes back to Live', async () => {
+  await plants.openExercise('Garage door (machine: garage)', 100);
+  await plants.runHoldPause('KeyOpen', 'WarningLamp');
+  await plants.fastForward(150);
+  const doorway = page.getByTestId('plant-op-Doorway');
+  await doorway.click();
+  await expect.poll(async () => (await plants.plant())!.now.operator.Doorway).toBe(true);
+  await plants.fastForward(20);
+  expect((await garage()).carIn).toBe(true);
+  await expect.poll(() => doorway.getAttribute('aria-pressed')).toBe('true');
+  // Back to scan 100: the door opening, no car yet.
+  await page.evaluate(() => (window.rungsmith as unknown as { simStore: { getState(): { seekHistory(s: number): void } } }).simStore.getState().seekHistory(100));
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(/^Recorded scan 100 \(/);
+  await expect.poll(() => doorway.getAttribute('aria-pressed')).toBe('false');
+  // The operator drives the car out: the live switch turns OFF (it was ON), and the panel shows it live.
+  await doorway.click();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(/^After scan /);
+  await expect.poll(async () => (await plants.plant())!.now.operator.Doorway).toBe(false);
+  await expect.poll(() => doorway.getAttribute('aria-pressed')).toBe('false');
+  await plants.fastForward(1);
+  expect((await garage()).carIn).toBe(false);
+  expect(errors).toEqual([]);
+});
+
+test('"Why?" on the box sorter\'s PusherEye names the box in front of it and where it is, at the recorded scan', async () => {
+  await plants.openExercise('Box sorter (machine: boxes)', 20);
+  await plants.startAndFastForward(400);
+  // The first recorded scan the photo-eye at the pusher read ON.
+  await page.getByTestId('history-condition').fill('PusherEye');
+  await page.getByTestId('history-find').click();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(/^Recorded scan /);
+  const status = (await page.getByTestId('plant-status').textContent())!;
+  const scan = /^Recorded scan ([\d,]+)/.exec(status)![1]!;
+  await sim.tab('Why?');
+  await page.getByTestId('why-input').fill('PusherEye');
+  await page.getByTestId('why-ask').click();
+  const why = page.getByTestId('why-explanation');
+  await expect.poll(() => why.textContent()).toContain(`PusherEye is TRUE after scan ${scan}`);
+  expect(await why.textContent()).toMatch(
+    /the photo-eye at the pusher at 2\.10 m is ON while a box breaks its beam; box 1 \(small\) is in front of it, its front edge at 2\.1\d m, so it is ON/,
+  );
+  await sim.tab('Plant');
+  expect(errors).toEqual([]);
+});
+
+test('a consequence opens its scan with the time it gave, as the History gives it; live, the panel gives the toolbar\'s time', async () => {
+  await page.getByTestId('history-live').click();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toMatch(/^After scan /);
+  await page.getByTestId('plant-fault-size_stuck_off').check();
+  await expect.poll(async () => (await plants.plant())!.now.faults).toEqual(['size_stuck_off']);
+  await plants.fastForward(600);
+  // Live: after scan N at 20 ms the toolbar gives the scan's time, (N - 1) x 20 ms; so does the panel.
+  const live = await plants.simScan();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toBe(
+    `After scan ${live.toLocaleString('en-US')} (${(((live - 1) * 20) / 1000).toFixed(2)} s)`,
+  );
+  const event = page.getByTestId('plant-events').getByRole('button', { name: /\(large\) ran into the small-box bin at scan/ }).first();
+  const [, scan, time] = /at scan ([\d,]+) \((\d+\.\d\d) s\)/.exec((await event.textContent())!)!;
+  await event.click();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toBe(`Recorded scan ${scan} (${time} s)`);
+  await expect.poll(() => page.getByTestId('history-marker').textContent()).toBe(`HISTORY scan ${scan} · ${time}0 s`);
+  const n = Number(scan!.replace(/,/g, ''));
+  expect(Number(time)).toBeCloseTo(((n - 1) * 20) / 1000, 5);
+  await page.getByTestId('plant-fault-size_stuck_off').uncheck();
+  expect(errors).toEqual([]);
+});
+
+test('paused at a breakpoint inside a scan, the panel shows the machine after the scan before, with that scan\'s time', async () => {
+  await page.getByTestId('history-live').click();
+  const network = await page.evaluate(
+    () =>
+      window.rungsmith!.documentStore!.getState().project.pous[0]!.networks.find((n) => n.title === 'Pusher')!.id,
+  );
+  type Breakpoints = { simStore: { getState(): { toggleBreakpoint(id: string): void } } };
+  await page.evaluate((id) => (window.rungsmith as unknown as Breakpoints).simStore.getState().toggleBreakpoint(id), network);
+  await sim.button('run').click();
+  await page.waitForFunction(() => (window.rungsmith as unknown as { simStore: { getState(): { breakpointHit?: number } } }).simStore.getState().breakpointHit !== undefined, null, { timeout: 30_000 });
+  await sim.waitForMode('Paused');
+  // Scan N stopped before its Pusher network: the machine is as scan N - 1 left it.
+  const scan = await plants.simScan();
+  await expect.poll(() => page.getByTestId('plant-status').textContent()).toBe(
+    `After scan ${(scan - 1).toLocaleString('en-US')} (${(((scan - 2) * 20) / 1000).toFixed(2)} s)`,
+  );
+  await page.evaluate((id) => (window.rungsmith as unknown as Breakpoints).simStore.getState().toggleBreakpoint(id), network);
+  expect(errors).toEqual([]);
+});
