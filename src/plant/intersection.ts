@@ -50,8 +50,12 @@ export const LAMP = {
 type LampName = keyof typeof LAMP;
 const LAMP_NAMES = Object.keys(LAMP) as LampName[];
 
-/** Bits of `conflict`: which pairs of signals that must never show together do. */
-export const CONFLICT = { Roads: 1, WalkMain: 2, WalkSide: 4 } as const;
+/**
+ * Bits of `conflict`: which pairs of signals that must never show together do: both roads going,
+ * WALK over a road whose traffic goes, and one head showing two things (red with green, WALK with
+ * DON'T WALK), which a signal cabinet's monitor flags as it does a conflict.
+ */
+export const CONFLICT = { Roads: 1, WalkMain: 2, WalkSide: 4, MainHead: 8, SideHead: 16, PedMain: 32, PedSide: 64 } as const;
 /** Bits of `dark`: which signal heads give no light at all. */
 export const HEAD = { Main: 1, Side: 2, PedMain: 4, PedSide: 8 } as const;
 /** Bits of `caught` (a crossing's pedestrians) and `box` (a road's green over the other's car). */
@@ -302,9 +306,10 @@ export const intersection: PlantModel<IntersectionState> = {
     "main road traffic: light WALK at the start of that green, for a few seconds, then DON'T WALK",
     'long enough for the last to reach the far side (8 s over the main road, 6 s over the side road)',
     'before the traffic they cross gets green.',
-    'Never show conflicting signals (both roads green or yellow, or WALK over a road with green or',
-    'yellow), never leave a signal head dark, never let a vehicle wait more than 120 s or a pedestrian',
-    'more than 60 s. Vehicles leave one every 2 s while their green is lit.',
+    'Never show conflicting signals (both roads green or yellow, WALK over a road with green or',
+    "yellow, red with green on one signal, WALK with DON'T WALK), never leave a signal head dark,",
+    'never let a vehicle wait more than 120 s or a pedestrian more than 60 s. Vehicles leave one',
+    'every 2 s while their green is lit.',
   ].join('\n'),
   points: POINTS,
   faults: [
@@ -449,7 +454,11 @@ export const intersection: PlantModel<IntersectionState> = {
     const conflict =
       (mainGo && sideGo ? CONFLICT.Roads : 0) |
       (mainGo && has(lamps, LAMP.WalkMain) ? CONFLICT.WalkMain : 0) |
-      (sideGo && has(lamps, LAMP.WalkSide) ? CONFLICT.WalkSide : 0);
+      (sideGo && has(lamps, LAMP.WalkSide) ? CONFLICT.WalkSide : 0) |
+      ((lamps & (LAMP.MainRed | LAMP.MainGreen)) === (LAMP.MainRed | LAMP.MainGreen) ? CONFLICT.MainHead : 0) |
+      ((lamps & (LAMP.SideRed | LAMP.SideGreen)) === (LAMP.SideRed | LAMP.SideGreen) ? CONFLICT.SideHead : 0) |
+      ((lamps & (LAMP.WalkMain | LAMP.DontWalkMain)) === (LAMP.WalkMain | LAMP.DontWalkMain) ? CONFLICT.PedMain : 0) |
+      ((lamps & (LAMP.WalkSide | LAMP.DontWalkSide)) === (LAMP.WalkSide | LAMP.DontWalkSide) ? CONFLICT.PedSide : 0);
     // Dark heads: on the light given (a burnt-out lamp leaves its head dark).
     const dark =
       (has(lit, LAMP.MainRed | LAMP.MainYellow | LAMP.MainGreen) ? 0 : HEAD.Main) |
@@ -541,6 +550,10 @@ export const intersection: PlantModel<IntersectionState> = {
       conflict(`WALK over the main road with main road ${shown(after.lamps, 'Main')}`);
     if (newly(after.conflict, before.conflict, CONFLICT.WalkSide))
       conflict(`WALK over the side road with side road ${shown(after.lamps, 'Side')}`);
+    if (newly(after.conflict, before.conflict, CONFLICT.MainHead)) conflict('the main road signal shows red and green together');
+    if (newly(after.conflict, before.conflict, CONFLICT.SideHead)) conflict('the side road signal shows red and green together');
+    if (newly(after.conflict, before.conflict, CONFLICT.PedMain)) conflict("WALK and DON'T WALK together over the main road");
+    if (newly(after.conflict, before.conflict, CONFLICT.PedSide)) conflict("WALK and DON'T WALK together over the side road");
     const heads: [number, string][] = [
       [HEAD.Main, 'the main road signal'],
       [HEAD.Side, 'the side road signal'],
@@ -588,6 +601,24 @@ export const intersection: PlantModel<IntersectionState> = {
       });
     }
     return out;
+  },
+
+  explain(s: IntersectionState, point: string, faults: ReadonlySet<string>): string | undefined {
+    const loop = (road: 'main' | 'side', waiting: number, id: string) => {
+      const queue = `${waiting} vehicle${waiting === 1 ? '' : 's'} wait${waiting === 1 ? 's' : ''} at the ${road} road stop line`;
+      if (faults.has(`${id}_stuck_on`))
+        return `the ${road} road detector loop is stuck ON (fault ${id}_stuck_on): it reads ON whatever waits; ${queue}`;
+      if (faults.has(`${id}_stuck_off`))
+        return `the ${road} road detector loop is stuck OFF (fault ${id}_stuck_off): it reads OFF whatever waits; ${queue}`;
+      return `the ${road} road detector loop is ON while a vehicle waits at the stop line; ${queue}, so it is ${waiting > 0 ? 'ON' : 'OFF'}`;
+    };
+    switch (point) {
+      case 'LoopMain':
+        return loop('main', s.arrivedMain - s.departedMain, 'main_loop');
+      case 'LoopSide':
+        return loop('side', s.arrivedSide - s.departedSide, 'side_loop');
+    }
+    return undefined;
   },
 
   quantity(s: IntersectionState, name: string): number | boolean {

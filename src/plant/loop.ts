@@ -105,7 +105,7 @@ export function addressProblem(point: PlantPoint, address: string): string | und
     return `${point.name}: ${point.kind === 'actuator' ? 'an actuator is a %Q output' : 'a sensor or operator control is a %I input'}, not ${address}`;
   const wantSize = point.type === 'BOOL' ? 'X' : 'W';
   if ((loc.size || 'X') !== wantSize)
-    return `${point.name}: a ${point.type} point needs a %${wantArea}${wantSize} address, not ${address}`;
+    return `${point.name}: ${point.type === 'INT' ? 'an' : 'a'} ${point.type} point needs a %${wantArea}${wantSize} address, not ${address}`;
   return undefined;
 }
 

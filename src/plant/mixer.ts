@@ -342,7 +342,10 @@ export const mixer: PlantModel<MixerState> = {
           spoiledBatch = false;
           maxTemp = temp;
         }
+        // Into the emptied vessel: a batch of its own, whose hottest so far is what it is now.
+        const fresh = level <= 0;
         temp = (temp * level + AMBIENT_C * (inA + inB)) / (level + inA + inB);
+        if (fresh) maxTemp = temp;
         level += inA + inB;
         volA += inA;
         volB += inB;
@@ -475,6 +478,36 @@ export const mixer: PlantModel<MixerState> = {
         counter: 'spoiled',
       });
     return out ?? NOTHING;
+  },
+
+  explain(s: MixerState, point: string, faults: ReadonlySet<string>): string | undefined {
+    const level = `the level is ${s.level.toFixed(1)} L`;
+    const sw = (title: string, at: number, stuck?: 'ON' | 'OFF', fault?: string) =>
+      stuck && fault && faults.has(fault)
+        ? `${title} is stuck ${stuck} (fault ${fault}): it reads ${stuck} whatever the level; ${level}`
+        : `${title} is ON at ${at} L and above; ${level}, so it is ${s.level >= at ? 'ON' : 'OFF'}`;
+    switch (point) {
+      case 'LowLevel':
+        return sw('the low level switch', LOW_SWITCH_L, 'ON', 'low_stuck_on');
+      case 'MidLevel':
+        return sw('the mid level switch', MID_SWITCH_L, 'OFF', 'mid_stuck_off');
+      case 'HighLevel':
+        return sw('the high level switch', HIGH_SWITCH_L, 'OFF', 'high_stuck_off');
+      case 'AgitatorOn': {
+        const speed = `the agitator runs at ${(s.agitator * 100).toFixed(0)} % of full speed`;
+        const dead = faults.has('agitator_dead') ? ' (its motor does not start: fault agitator_dead)' : '';
+        return `the speed monitor is ON from 90 % of full speed; ${speed}${dead}, so it is ${s.agitator >= 0.9 ? 'ON' : 'OFF'}`;
+      }
+      case 'Level':
+        return `the transmitter gives the level in whole litres; ${level}`;
+      case 'Temperature': {
+        const shown = `${s.shownTemp.toFixed(1)} °C (${Math.round(s.shownTemp * 10)})`;
+        return faults.has('temp_frozen')
+          ? `the transmitter is frozen (fault temp_frozen): it keeps showing ${shown} whatever the batch; the batch is ${s.temp.toFixed(1)} °C`
+          : `the transmitter gives the batch's temperature in tenths of a degree; the batch is ${shown}`;
+      }
+    }
+    return undefined;
   },
 
   quantity(s: MixerState, name: string): number | boolean {

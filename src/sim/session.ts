@@ -327,7 +327,7 @@ export class SimSession {
         this.postFrame();
         return;
       case 'plantOperator':
-        this.plant.setOperator(m.name, m.value);
+        this.plant.setOperator(m.name, m.value, this.mode === 'running');
         this.postFrame();
         return;
       case 'plantFault':

@@ -25,6 +25,15 @@ export interface PlantFrame {
 
 export class SessionPlant {
   private loop: PlantLoop | undefined;
+  /**
+   * Push buttons pressed since the last scan while running, and those of them already let go: a
+   * click shorter than the scan cycle (a quick click at a slow cycle) stays pressed until a scan
+   * has read it, then springs back, so a click on the drawing is never lost. The program sees it
+   * for one scan, the machine for one step, as a press held that long. (Stopped or paused, no
+   * scan is coming: a click is let go when it is.)
+   */
+  private unread = new Set<string>();
+  private letGo = new Set<string>();
 
   get active(): boolean {
     return this.loop !== undefined;
@@ -35,6 +44,8 @@ export class SessionPlant {
     if (!config) {
       this.loop?.release();
       this.loop = undefined;
+      this.unread.clear();
+      this.letGo.clear();
       return;
     }
     let loop: PlantLoop;
@@ -56,8 +67,13 @@ export class SessionPlant {
     )
       return;
     this.loop?.release();
-    // The same machine rewired: it goes on as it was (a terminal moved does not refill the tank).
+    // The same machine rewired: it goes on as it was (a terminal moved does not refill the tank),
+    // a click not yet read included; another machine has no such press.
     if (this.loop?.model.id === loop.model.id) loop.continueFrom(this.loop);
+    else {
+      this.unread.clear();
+      this.letGo.clear();
+    }
     this.loop = loop;
     if (plc) loop.bind(plc);
   }
@@ -71,16 +87,41 @@ export class SessionPlant {
 
   coldRestart(plc: Plc | undefined): void {
     if (!this.loop) return;
+    this.releaseUnread();
     this.loop.reset();
     if (plc) this.loop.bind(plc);
   }
 
   afterScan(scan: number, startTimeMs: number, cycleMs: number): void {
     this.loop?.afterScan(scan, startTimeMs, cycleMs);
+    // Presses this scan read: those let go spring back now.
+    if (this.unread.size > 0) this.releaseUnread();
   }
 
-  setOperator(name: string, value: boolean): void {
-    this.require().setOperator(name, value);
+  private releaseUnread(): void {
+    this.unread.clear();
+    for (const name of this.letGo) this.loop?.setOperator(name, false);
+    this.letGo.clear();
+  }
+
+  /** An operator control held (TRUE) or let go; `running`: scans are coming (a click is held until one reads it). */
+  setOperator(name: string, value: boolean, running = false): void {
+    const loop = this.require();
+    const button = running
+      ? loop.points.find(
+          (p) => p.kind === 'operator' && p.control !== 'switch' && p.name.toUpperCase() === name.toUpperCase(),
+        )
+      : undefined;
+    // Let go before any scan read the press: held until the next scan has.
+    if (button && !value && this.unread.has(button.name)) {
+      this.letGo.add(button.name);
+      return;
+    }
+    loop.setOperator(name, value);
+    if (button && value) {
+      this.unread.add(button.name);
+      this.letGo.delete(button.name);
+    }
   }
 
   setFault(id: string, active: boolean): void {

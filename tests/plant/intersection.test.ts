@@ -155,10 +155,27 @@ describe('the intersection model', () => {
     ]);
     expect(r.events.every((e) => e.severity === 'error' && e.counter === 'conflicts')).toBe(true);
     expect(q(r.s, 'conflicts')).toBe(3);
-    const yellow = run(intersection.initial(), { ...MAIN_GO, MainYellow: true, SideGreen: true }, 100);
+    const yellow = run(intersection.initial(), { ...MAIN_GO, SideRed: false, MainYellow: true, SideGreen: true }, 100);
     expect(messages(yellow.events)).toEqual([
       'conflicting signals: main road green and yellow with side road green',
     ]);
+  });
+
+  test('a signal showing two things at once: red with green on one head, WALK with DON\'T WALK; red with yellow is a legal phase', () => {
+    const r = run(intersection.initial(), { ...MAIN_GO, MainRed: true, WalkSide: true }, 300);
+    expect(messages(r.events)).toEqual([
+      'conflicting signals: the main road signal shows red and green together',
+      "conflicting signals: WALK and DON'T WALK together over the side road",
+    ]);
+    expect(r.events.every((e) => e.severity === 'error' && e.counter === 'conflicts')).toBe(true);
+    expect(q(r.s, 'conflicts')).toBe(2);
+    const side = run(intersection.initial(), { ...SIDE_GO, SideRed: true, WalkMain: true }, 100);
+    expect(messages(side.events)).toEqual([
+      'conflicting signals: the side road signal shows red and green together',
+      "conflicting signals: WALK and DON'T WALK together over the main road",
+    ]);
+    // Red and yellow together (before green, as in some countries) is no conflict.
+    expect(run(intersection.initial(), { ...ALL_RED, MainYellow: true }, 300).events).toEqual([]);
   });
 
   test('near miss: green to the other road while a car is still in the intersection (no yellow, no all-red)', () => {
@@ -215,6 +232,22 @@ describe('the intersection model', () => {
     expect(senseRecord(intersection, queued, new Set(['main_loop_stuck_off'])).LoopMain).toBe(false);
     expect(senseRecord(intersection, intersection.initial(), new Set(['side_loop_stuck_on'])).LoopSide).toBe(true);
     expect(senseRecord(intersection, intersection.initial(), none)).toEqual({ LoopMain: false, LoopSide: false });
+  });
+
+  test('"Why?" on a detector loop: the vehicles waiting at its stop line, or the fault that holds it', () => {
+    const queued = run(intersection.initial(), MAIN_GO, 10_000, new Set(['main_green_out'])).s;
+    const why = (point: string, faults: string[] = []) => intersection.explain!(queued, point, new Set(faults));
+    expect(why('LoopMain')).toBe(
+      'the main road detector loop is ON while a vehicle waits at the stop line; 2 vehicles wait at the main road stop line, so it is ON',
+    );
+    expect(why('LoopSide', ['side_loop_stuck_off'])).toBe(
+      `the side road detector loop is stuck OFF (fault side_loop_stuck_off): it reads OFF whatever waits; ${q(queued, 'waiting_side')} vehicle${q(queued, 'waiting_side') === 1 ? ' waits' : 's wait'} at the side road stop line`,
+    );
+    expect(intersection.explain!(intersection.initial(), 'LoopSide', new Set(['side_loop_stuck_on']))).toBe(
+      'the side road detector loop is stuck ON (fault side_loop_stuck_on): it reads ON whatever waits; 0 vehicles wait at the side road stop line',
+    );
+    expect(intersection.explain!(intersection.initial(), 'LoopMain', none)).toMatch(/; 0 vehicles wait at the main road stop line, so it is OFF$/);
+    expect(why('CrossMain')).toBeUndefined();
   });
 
   test('a step is pure: the same state, drive and time give the same state, the input is not changed', () => {

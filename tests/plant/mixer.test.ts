@@ -198,6 +198,18 @@ describe('the mixer consequences', () => {
     const again = run(run(empty, {}, 2000), { OutletValve: true }, 2000);
     expect(again.batches).toBe(1);
   });
+
+  test("the next batch's hottest temperature is its own: dosed cold into the emptied vessel, max_temp is about 20 °C, not the last batch's 60", () => {
+    const empty = run(heldBatch(dosed(400, 400), 30_500), { OutletValve: true }, 25_000);
+    expect(empty.level).toBe(0);
+    expect(q(empty, 'max_temp')).toBeGreaterThan(55);
+    const next = run(run(empty, {}, 1000), { ValveA: true }, 3000);
+    expect(next.level).toBeGreaterThan(0);
+    // Cold ingredient (a little warmed by the element still hot from the last batch).
+    expect(q(next, 'temperature')).toBeLessThan(21);
+    expect(q(next, 'max_temp')).toBeLessThan(21);
+    expect(q(next, 'max_temp')).toBeGreaterThanOrEqual(q(next, 'temperature') as number);
+  });
 });
 
 describe('the mixer faults', () => {
@@ -240,6 +252,35 @@ describe('the mixer faults', () => {
     // Cleared, it reads the batch again after the next step.
     const cleared = mixer.step(later, { Agitator: true }, 100, none);
     expect(senseRecord(mixer, cleared, none).Temperature).toBe(Math.round(cleared.temp * 10));
+  });
+
+  test('"Why?" on a sensor: the level against the switch, the agitator\'s speed, the transmitter (frozen or not), faults named', () => {
+    const s = heldBatch(dosed(400, 400), 0);
+    const why = (point: string, faults: string[] = []) => mixer.explain!(s, point, new Set(faults));
+    const level = `the level is ${s.level.toFixed(1)} L`;
+    expect(why('HighLevel')).toBe(`the high level switch is ON at 800 L and above; ${level}, so it is ON`);
+    expect(why('HighLevel', ['high_stuck_off'])).toBe(
+      `the high level switch is stuck OFF (fault high_stuck_off): it reads OFF whatever the level; ${level}`,
+    );
+    expect(mixer.explain!(mixer.initial(), 'LowLevel', new Set(['low_stuck_on']))).toBe(
+      'the low level switch is stuck ON (fault low_stuck_on): it reads ON whatever the level; the level is 0.0 L',
+    );
+    expect(why('MidLevel')).toMatch(/^the mid level switch is ON at 400 L and above; .*, so it is ON$/);
+    expect(why('AgitatorOn')).toBe('the speed monitor is ON from 90 % of full speed; the agitator runs at 100 % of full speed, so it is ON');
+    expect(why('Temperature')).toBe(
+      `the transmitter gives the batch's temperature in tenths of a degree; the batch is ${s.temp.toFixed(1)} °C (${Math.round(s.temp * 10)})`,
+    );
+    // Frozen while the batch heats on: it shows what it showed when the fault came.
+    const frozen = new Set(['temp_frozen']);
+    const cold = run(dosed(400, 400), { Agitator: true }, 3000);
+    const hot = run(cold, { Agitator: true, Heater: true }, 10_000, frozen);
+    expect(mixer.explain!(hot, 'Temperature', frozen)).toBe(
+      `the transmitter is frozen (fault temp_frozen): it keeps showing ${cold.temp.toFixed(1)} °C (${Math.round(cold.temp * 10)}) whatever the batch; the batch is ${hot.temp.toFixed(1)} °C`,
+    );
+    expect(mixer.explain!(mixer.initial(), 'AgitatorOn', new Set(['agitator_dead']))).toBe(
+      'the speed monitor is ON from 90 % of full speed; the agitator runs at 0 % of full speed (its motor does not start: fault agitator_dead), so it is OFF',
+    );
+    expect(why('Heater')).toBeUndefined();
   });
 
   test('a step is pure: the same state, drive, time and faults give the same state, the input is not changed', () => {

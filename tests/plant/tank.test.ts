@@ -96,7 +96,7 @@ describe('the tank in closed loop', () => {
     expect(() => new PlantLoop(tank, { Pump: '%IX0.0' })).toThrow(
       /Pump: an actuator is a %Q output, not %IX0.0/,
     );
-    expect(() => new PlantLoop(tank, { Level: '%IX1.0' })).toThrow(/Level: a INT point needs a %IW address/);
+    expect(() => new PlantLoop(tank, { Level: '%IX1.0' })).toThrow(/Level: an INT point needs a %IW address/);
   });
 });
 

@@ -27,6 +27,12 @@ describe('rewireAddress', () => {
     expect(rewireAddress(points, point('Start'), text)).toEqual({ problem });
   });
 
+  test('an INT point given a bit address is refused in English: "an INT point"', () => {
+    expect(rewireAddress(points, point('Level'), '%IX1.1')).toEqual({
+      problem: 'Level: an INT point needs a %IW address, not %IX1.1',
+    });
+  });
+
   test('a free address is kept as IEC spells it', () => {
     expect(rewireAddress(points, point('Start'), ' %ix01.5 ')).toEqual({ address: '%IX1.5' });
     expect(rewireAddress(points, point('Level'), '%iw02')).toEqual({ address: '%IW2' });
@@ -149,5 +155,48 @@ describe('a point rewired while the program runs', () => {
     expect(after.faults).toEqual(['drain_stuck']);
     expect(h.value('LowLevel')).toBe(false);
     expect(h.value('Level')).toBeGreaterThan(200);
+  });
+});
+
+describe('a click on a push button shorter than a scan', () => {
+  test('while running, is held until a scan has read it, then springs back: the program sees it for one scan', () => {
+    const h = new SimHarness().send(
+      { type: 'setCycle', cycleMs: 1000 },
+      { type: 'setPlant', plant: { id: 'tank' } },
+      { type: 'run', project: tankReference() },
+    );
+    h.advance(1000);
+    const scan = h.frame.scan;
+    expect(scan).toBeGreaterThan(0);
+    // Pressed and let go between two scans of a slow cycle.
+    h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'plantOperator', name: 'Start', value: false });
+    expect((h.frame.plant as PlantFrame).now.operator.Start).toBe(true);
+    h.advance(1000);
+    expect(h.frame.scan).toBe(scan + 1);
+    expect(h.value('Running')).toBe(true);
+    expect(h.value('Start')).toBe(true);
+    expect((h.frame.plant as PlantFrame).now.operator.Start).toBe(false);
+    h.advance(1000);
+    expect(h.value('Start')).toBe(false);
+    expect(h.value('Running')).toBe(true);
+    // A press held over scans is let go at once.
+    h.send({ type: 'plantOperator', name: 'Stop', value: true });
+    h.advance(2000);
+    h.send({ type: 'plantOperator', name: 'Stop', value: false });
+    expect((h.frame.plant as PlantFrame).now.operator.Stop).toBe(false);
+    expect(h.value('Running')).toBe(false);
+  });
+
+  test('paused or stopped (no scan coming), a click is let go when it is', () => {
+    const h = new SimHarness().send(
+      { type: 'setCycle', cycleMs: 100 },
+      { type: 'setPlant', plant: { id: 'tank' } },
+      { type: 'load', project: tankReference() },
+      { type: 'step', scans: 1 },
+    );
+    while (h.frame.scan < 1) h.settle();
+    h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'plantOperator', name: 'Start', value: false });
+    h.settle();
+    expect((h.frame.plant as PlantFrame).now.operator.Start).toBe(false);
   });
 });

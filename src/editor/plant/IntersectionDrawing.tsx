@@ -190,7 +190,7 @@ function People({ x, y, n }: { x: number; y: number; n: number }) {
   );
 }
 
-export function IntersectionDrawing({ state }: PlantDrawingProps) {
+export function IntersectionDrawing({ state, sensed }: PlantDrawingProps) {
   const s = state as IntersectionState;
   const waitingMain = s.arrivedMain - s.departedMain;
   const waitingSide = s.arrivedSide - s.departedSide;
@@ -237,13 +237,13 @@ export function IntersectionDrawing({ state }: PlantDrawingProps) {
       {Array.from({ length: 5 }, (_, i) => (
         <Rect key={`zs${i}`} x={M.x + M.w + 6} y={S.y + 3 + i * 10} width={16} height={5} fill={MARK} />
       ))}
-      {/* Detector loops at the stop lines, lit while a car stands on them. */}
+      {/* Detector loops at the stop lines, lit while the loop reads ON (a car stands on it, or a fault holds it). */}
       <Rect
         x={mainLane - 10}
         y={mainStop - 14}
         width={20}
         height={28}
-        stroke={waitingMain > 0 ? '#facc15' : '#d1d5db'}
+        stroke={(sensed ? sensed.LoopMain === true : waitingMain > 0) ? '#facc15' : '#d1d5db'}
         strokeWidth={2}
         dash={[3, 2]}
       />
@@ -252,7 +252,7 @@ export function IntersectionDrawing({ state }: PlantDrawingProps) {
         y={sideLane - 10}
         width={28}
         height={20}
-        stroke={waitingSide > 0 ? '#facc15' : '#d1d5db'}
+        stroke={(sensed ? sensed.LoopSide === true : waitingSide > 0) ? '#facc15' : '#d1d5db'}
         strokeWidth={2}
         dash={[3, 2]}
       />

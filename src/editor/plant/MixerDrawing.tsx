@@ -78,7 +78,7 @@ function Alarm({ text, row }: { text: string; row: number }) {
   );
 }
 
-export function MixerDrawing({ state }: PlantDrawingProps) {
+export function MixerDrawing({ state, sensed }: PlantDrawingProps) {
   const s = state as MixerState;
   const top = yOf(s.level);
   const shareA = s.level > 0 ? ratioOf(s) / 100 : 0.5;
@@ -208,9 +208,21 @@ export function MixerDrawing({ state }: PlantDrawingProps) {
           fill={INK}
         />
       )}
-      <LevelSwitch litres={HIGH_SWITCH_L} on={s.level >= HIGH_SWITCH_L} label="High" />
-      <LevelSwitch litres={MID_SWITCH_L} on={s.level >= MID_SWITCH_L} label="Mid" />
-      <LevelSwitch litres={LOW_SWITCH_L} on={s.level >= LOW_SWITCH_L} label="Low" />
+      <LevelSwitch
+        litres={HIGH_SWITCH_L}
+        on={sensed ? sensed.HighLevel === true : s.level >= HIGH_SWITCH_L}
+        label="High"
+      />
+      <LevelSwitch
+        litres={MID_SWITCH_L}
+        on={sensed ? sensed.MidLevel === true : s.level >= MID_SWITCH_L}
+        label="Mid"
+      />
+      <LevelSwitch
+        litres={LOW_SWITCH_L}
+        on={sensed ? sensed.LowLevel === true : s.level >= LOW_SWITCH_L}
+        label="Low"
+      />
       {/* Outlet to the filling line. */}
       <Line
         points={[cx, V.y + V.h, cx, 252, 334, 252]}

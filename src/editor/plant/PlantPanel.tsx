@@ -4,11 +4,12 @@
 // "Declare the machine's I/O". At a recorded scan (history) it shows the machine as it was then.
 import { useLayoutEffect, useRef, useState, type ReactNode } from 'react';
 import { Layer, Stage } from 'react-konva';
-import { locationText, parseLocation } from '../../model/iecTypes';
+import { locationText, parseLocation, type Value } from '../../model/iecTypes';
 import type { Project } from '../../model/project';
 import { taskText } from '../../plant/exercises';
 import { mappedPoints } from '../../plant/loop';
 import { PLANTS, plantById } from '../../plant/machines';
+import { senseRecord } from '../../plant/points';
 import type { PlantModel, PlantPoint } from '../../plant/types';
 import { declarePlan, rewireAddress } from '../../plant/wiring';
 import type { DocumentState } from '../../store/documentStore';
@@ -117,6 +118,8 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
   const live = frame?.id === model.id ? frame : undefined;
   const shown = historyScan !== undefined && atScan ? atScan : live?.now;
   const state = shown?.state ?? model.initial();
+  // The sensors as the program read them after that step: a stuck switch is drawn as it reads.
+  const sensed = senseRecord(model, state, new Set(shown?.faults ?? []));
   const status =
     historyScan !== undefined
       ? atScan
@@ -137,7 +140,7 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
         {status}
       </p>
       {drawing && (
-        <FittedDrawing drawing={drawing} state={state}>
+        <FittedDrawing drawing={drawing} state={state} sensed={sensed}>
           <OperatorControls
             points={points}
             held={shown?.operator ?? {}}
@@ -170,10 +173,12 @@ const MIN_SCALE = 0.6;
 function FittedDrawing({
   drawing,
   state,
+  sensed,
   children,
 }: {
   drawing: PlantDrawing;
   state: unknown;
+  sensed: Readonly<Record<string, Value>>;
   children: ReactNode;
 }) {
   const outer = useRef<HTMLDivElement>(null);
@@ -197,7 +202,7 @@ function FittedDrawing({
       <div className="rs-plant-drawing" style={{ width, height }} data-scale={scale.toFixed(3)}>
         <Stage width={width} height={height} scaleX={scale} scaleY={scale}>
           <Layer listening={false}>
-            <Drawing state={state} />
+            <Drawing state={state} sensed={sensed} />
           </Layer>
         </Stage>
         {children}
@@ -301,10 +306,27 @@ function Readouts({ model, state }: { model: PlantModel; state: unknown }) {
   );
 }
 
+const selectHistory = (s: SimState) => s.history;
+
 function Consequences() {
   const frame = useSim(selectFrame);
+  const history = useSim(selectHistory);
   const sim = useSimStore();
   const events = frame?.events ?? [];
+  // A consequence whose scan the history no longer keeps (a long run): said, instead of showing
+  // the nearest scan kept as if it were that one.
+  const [gone, setGone] = useState<string | undefined>();
+  const show = (scan: number) => {
+    const h = sim.getState().history;
+    if (h && (scan < h.first || scan > h.last)) {
+      setGone(
+        `Scan ${scan.toLocaleString('en-US')} is no longer in the history (it keeps scans ${h.first.toLocaleString('en-US')} to ${h.last.toLocaleString('en-US')}).`,
+      );
+      return;
+    }
+    setGone(undefined);
+    sim.getState().seekHistory(scan);
+  };
   return (
     <div className="rs-plant-events" data-testid="plant-events">
       <h4>
@@ -323,14 +345,23 @@ function Consequences() {
               <button
                 type="button"
                 className="rs-plant-link"
-                title="Show this scan in the history"
-                onClick={() => sim.getState().seekHistory(e.scan)}
+                title={
+                  history && e.scan < history.first
+                    ? 'This scan is no longer in the history'
+                    : 'Show this scan in the history'
+                }
+                onClick={() => show(e.scan)}
               >
                 {e.text}
               </button>
             </li>
           ))}
         </ul>
+      )}
+      {gone && events.length > 0 && (
+        <p className="rs-plant-warning" role="status" data-testid="plant-events-gone">
+          {gone}
+        </p>
       )}
     </div>
   );

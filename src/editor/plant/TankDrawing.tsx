@@ -45,7 +45,7 @@ function FloatSwitch({ litres, on, label }: { litres: number; on: boolean; label
   );
 }
 
-export function TankDrawing({ state }: PlantDrawingProps) {
+export function TankDrawing({ state, sensed }: PlantDrawingProps) {
   const s = state as TankState;
   const top = yOf(s.level);
   const inflowing = s.inflow > 0;
@@ -85,8 +85,16 @@ export function TankDrawing({ state }: PlantDrawingProps) {
         fontStyle="bold"
         fill="#111827"
       />
-      <FloatSwitch litres={HIGH_SWITCH_L} on={s.level >= HIGH_SWITCH_L} label="High" />
-      <FloatSwitch litres={LOW_SWITCH_L} on={s.level >= LOW_SWITCH_L} label="Low" />
+      <FloatSwitch
+        litres={HIGH_SWITCH_L}
+        on={sensed ? sensed.HighLevel === true : s.level >= HIGH_SWITCH_L}
+        label="High"
+      />
+      <FloatSwitch
+        litres={LOW_SWITCH_L}
+        on={sensed ? sensed.LowLevel === true : s.level >= LOW_SWITCH_L}
+        label="Low"
+      />
       {/* Drain to the process. */}
       <Line
         points={[V.x + V.w / 2, V.y + V.h, V.x + V.w / 2, 236, 290, 236]}

@@ -1,6 +1,7 @@
 // How each machine is drawn (issue 26): one Konva component per machine id, given the machine's
 // state (a frame's, or a recorded scan's). The model itself (src/plant) knows nothing of drawing.
 import type { ComponentType } from 'react';
+import type { Value } from '../../model/iecTypes';
 import { BoxesDrawing, BOXES_SIZE } from './BoxesDrawing';
 import { GarageDrawing, GARAGE_SIZE } from './GarageDrawing';
 import { IntersectionDrawing, INTERSECTION_SIZE } from './IntersectionDrawing';
@@ -10,6 +11,11 @@ import { TankDrawing, TANK_SIZE } from './TankDrawing';
 
 export interface PlantDrawingProps {
   readonly state: unknown;
+  /**
+   * The sensors as the program reads them in that state, faults applied (a switch stuck OFF
+   * reads OFF under water): what a sensor's lamp on the drawing shows, by point name.
+   */
+  readonly sensed?: Readonly<Record<string, Value>>;
 }
 
 export interface PlantDrawing {

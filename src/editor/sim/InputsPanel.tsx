@@ -2,9 +2,12 @@
 // word inputs take a typed value. Changes reach the PLC at its next input read.
 // With hardware attached as controller, an input the gateway has as a point comes from the device:
 // its switch, button and field are off, saying so (only a confirmed force, from the canvas's
-// context menu or the Watch panel, overrides it).
+// context menu or the Watch panel, overrides it). Likewise an input the project's machine (Plant
+// panel) writes every scan, a sensor or an operator control: it comes from the machine.
 import { useMemo, useState } from 'react';
 import { parseLocation } from '../../model/iecTypes';
+import { addressKey, mappedPoints } from '../../plant/loop';
+import { plantById } from '../../plant/machines';
 import type { SimState } from '../../store/simState';
 import { selectProject, useDocument } from '../../store/documentStore';
 import { fieldInputAddress, fieldInputWords } from '../hardware/fieldIo';
@@ -19,6 +22,8 @@ interface InputRow {
   readonly type: string;
   readonly location: string;
   readonly comment: string;
+  /** The machine's words when its sensor or operator control is at this input: it writes it every scan. */
+  readonly machine?: string;
 }
 
 export function InputsPanel() {
@@ -26,9 +31,22 @@ export function InputsPanel() {
   const inputs = useMemo<InputRow[]>(() => {
     const pou = project.pous.find((p) => p.kind === 'PROGRAM');
     const all = [...(pou?.variables ?? []), ...project.globals];
+    const model = project.plant ? plantById(project.plant.id) : undefined;
+    const points = new Map(
+      (model ? mappedPoints(model, project.plant?.map) : [])
+        .filter((p) => p.kind !== 'actuator')
+        .map((p) => [addressKey(p.address), p] as const),
+    );
     return all
       .filter((v) => v.location && parseLocation(v.location)?.area === 'I')
-      .map((v) => ({ name: v.name, type: v.type.toUpperCase(), location: v.location!, comment: v.comment }));
+      .map((v) => {
+        const point = points.get(addressKey(v.location!));
+        const machine =
+          model && point
+            ? `Written by the machine ${model.id} every scan (its ${point.kind === 'operator' ? 'operator control' : 'sensor'} ${point.name}${point.kind === 'operator' ? ': press it on the drawing in the Plant panel' : ''}); a value set here would be overwritten. Only a force overrides it.`
+            : undefined;
+        return { name: v.name, type: v.type.toUpperCase(), location: v.location!, comment: v.comment, ...(machine ? { machine } : {}) };
+      });
   }, [project]);
   return (
     <div className="rs-sim-panel" data-testid="inputs-panel">
@@ -66,12 +84,13 @@ function BoolInput({ row }: { row: InputRow }) {
   const forced = useSim((s) => forcedText(s, row.name));
   const on = value === 'TRUE';
   const release = () => sim.getState().releaseInput(row.name);
+  const machine = field ? undefined : row.machine;
   return (
     <tr data-testid={`input-${row.name}`}>
       <Label row={row} />
       <td>
-        <button type="button" role="switch" aria-checked={on} aria-label={`${row.name} switch`} disabled={value === undefined || field !== undefined}
-          title={field ? fieldInputWords(field, row.name) : undefined}
+        <button type="button" role="switch" aria-checked={on} aria-label={`${row.name} switch`} disabled={value === undefined || field !== undefined || machine !== undefined}
+          title={field ? fieldInputWords(field, row.name) : machine}
           className={`rs-sim-switch${on ? ' rs-sim-on' : ''}`} onClick={() => sim.getState().toggleInput(row.name)} data-testid="input-switch">
           {value === undefined ? '—' : on ? 'ON' : 'OFF'}
         </button>
@@ -79,8 +98,8 @@ function BoolInput({ row }: { row: InputRow }) {
         {forced !== undefined && <ForcedBadge title={`forced to ${forced}`} />}
       </td>
       <td>
-        <button type="button" className="rs-sim-btn" disabled={value === undefined || field !== undefined}
-          title={field ? fieldInputWords(field, row.name) : 'Push-button: ON while the mouse button is held'}
+        <button type="button" className="rs-sim-btn" disabled={value === undefined || field !== undefined || machine !== undefined}
+          title={field ? fieldInputWords(field, row.name) : (machine ?? 'Push-button: ON while the mouse button is held')}
           onPointerDown={(e) => {
             e.currentTarget.setPointerCapture(e.pointerId);
             sim.getState().pressInput(row.name);
@@ -89,13 +108,27 @@ function BoolInput({ row }: { row: InputRow }) {
           Hold
         </button>
       </td>
-      {field && forced === undefined ? (
-        <td>
-          <span className="rs-sim-unit" data-testid="input-from-device">from the device</span>
-        </td>
-      ) : null}
+      <FromCell field={field} machine={machine} forced={forced} />
     </tr>
   );
+}
+
+/** Where an input comes from when not from this panel: the device, or the machine (unless forced). */
+function FromCell({ field, machine, forced }: { field: string | undefined; machine: string | undefined; forced: string | undefined }) {
+  if (forced !== undefined) return null;
+  if (field)
+    return (
+      <td>
+        <span className="rs-sim-unit" data-testid="input-from-device">from the device</span>
+      </td>
+    );
+  if (machine)
+    return (
+      <td>
+        <span className="rs-sim-unit" title={machine} data-testid="input-from-machine">from the machine</span>
+      </td>
+    );
+  return null;
 }
 
 function WordInput({ row }: { row: InputRow }) {
@@ -104,7 +137,8 @@ function WordInput({ row }: { row: InputRow }) {
   const value = useSim((s) => liveText(s, row.name));
   const forced = useSim((s) => forcedText(s, row.name));
   const [text, setText] = useState('');
-  const write = () => !field && text.trim() && sim.getState().write(row.name, { text });
+  const machine = field ? undefined : row.machine;
+  const write = () => !field && !machine && text.trim() && sim.getState().write(row.name, { text });
   return (
     <tr data-testid={`input-${row.name}`}>
       <Label row={row} />
@@ -115,9 +149,10 @@ function WordInput({ row }: { row: InputRow }) {
       <td>
         <input className="rs-sim-text rs-sim-narrow" aria-label={`New value for ${row.name}`} placeholder={row.type} value={text}
           onChange={(e) => setText(e.target.value)} onKeyDown={(e) => e.key === 'Enter' && write()} />
-        <button type="button" className="rs-sim-btn" disabled={value === undefined || field !== undefined}
-          title={field ? fieldInputWords(field, row.name) : undefined} onClick={write}>Set</button>
+        <button type="button" className="rs-sim-btn" disabled={value === undefined || field !== undefined || machine !== undefined}
+          title={field ? fieldInputWords(field, row.name) : machine} onClick={write}>Set</button>
       </td>
+      <FromCell field={undefined} machine={machine} forced={forced} />
     </tr>
   );
 }

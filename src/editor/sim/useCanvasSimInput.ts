@@ -7,6 +7,9 @@
 //   status line (SimInputHint) say so;
 // - with hardware attached (controller), an input the gateway has as a point comes from the device:
 //   a double-click does not write it, it opens the menu that says so and offers a (confirmed) force;
+// - with a machine attached (Plant panel), an input it writes every scan (a sensor, an operator
+//   control) comes from the machine: a double-click does not write it (the next scan would undo it),
+//   it opens the force menu and the status line says so;
 // - right-click a contact or coil: the force/watch/trend menu;
 // - right-click or double-click a call of a user FB: "Open instance", the FB's tab with that instance picked.
 // Inside an FB's body the operands are the monitored instance's (`Motor1.Start`), globals as they are.
@@ -20,6 +23,7 @@ import type { SimState } from '../../store/simState';
 import { useUiStore } from '../../store/uiStore';
 import { hitTest } from '../canvas/geometry';
 import { fieldInputAddress } from '../hardware/fieldIo';
+import { addressKey } from '../../plant/loop';
 import { canvasName } from './liveValues';
 import { useSimStore } from './simContext';
 import { openBody } from './useFollowExecution';
@@ -39,12 +43,25 @@ export function simInputOf(s: SimState, el: LdElement | undefined): string | und
   return v?.role === 'input' && v.type === 'BOOL' ? v.name : undefined;
 }
 
+/** "the machine tank (its sensor LowLevel)" when the attached machine writes input `name` every scan. */
+export function machineInputOf(s: SimState, name: string): string | undefined {
+  const plant = s.plant;
+  const location = s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1]?.location;
+  if (!plant || !location) return undefined;
+  const key = addressKey(location);
+  const point = plant.points.find((p) => p.kind !== 'actuator' && addressKey(p.address) === key);
+  if (!point) return undefined;
+  return `the machine ${plant.id} (its ${point.kind === 'operator' ? 'operator control' : 'sensor'} ${point.name})`;
+}
+
 /** How to change the input a contact reads, for its tooltip and the status line. */
 export function simInputHint(s: SimState, el: LdElement | undefined): string | undefined {
   const name = simInputOf(s, el);
   if (!name) return undefined;
   if (fieldInputAddress(s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1]))
     return `${name} comes from the device: double-click to force it`;
+  const machine = machineInputOf(s, name);
+  if (machine) return `${name} comes from ${machine}: double-click to force it`;
   return `Input ${name}: double-click to switch it, Alt+press to hold it on (a click only selects)`;
 }
 
@@ -97,6 +114,13 @@ export function useCanvasSimInput(): void {
           s.openContextMenu({ x: e.clientX, y: e.clientY, variable: name });
           return;
         }
+        const machine = machineInputOf(s, name);
+        if (machine) {
+          // The machine writes it every scan: a switch here would be undone; a force overrides it.
+          s.openContextMenu({ x: e.clientX, y: e.clientY, variable: name });
+          ui.getState().setStatus(`${name} comes from ${machine}: it writes it every scan; force it to override`);
+          return;
+        }
         s.toggleInput(name);
         ui.getState().setStatus(`${name} switched ${s.values[s.variableIndex.get(name.toUpperCase()) ?? -1] === true ? 'OFF' : 'ON'} (double-click)`);
         return;
@@ -114,7 +138,7 @@ export function useCanvasSimInput(): void {
       if (e.button !== 0 || !e.altKey || e.shiftKey || e.ctrlKey || e.metaKey) return;
       const s = sim.getState();
       const name = simInputOf(s, elementUnder(e));
-      if (!name || fieldInputAddress(s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1])) return;
+      if (!name || fieldInputAddress(s.layout?.variables[s.variableIndex.get(name.toUpperCase()) ?? -1]) || machineInputOf(s, name)) return;
       e.stopPropagation();
       e.preventDefault();
       held = name;
