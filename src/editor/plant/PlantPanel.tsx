@@ -16,6 +16,7 @@ import type { DocumentState } from '../../store/documentStore';
 import { useDocument, useDocumentStore } from '../../store/documentStore';
 import type { SimState } from '../../store/simState';
 import { useSim, useSimStore } from '../sim/simContext';
+import { useHardwareAttached } from './PlantHost';
 import { PLANT_DRAWINGS, type PlantDrawing } from './drawings';
 import './plant.css';
 
@@ -104,6 +105,7 @@ export function PlantPanel() {
 }
 
 function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<string, string>> }) {
+  const hardware = useHardwareAttached();
   const frame = useSim(selectFrame);
   const atScan = useSim(selectAtScan);
   const historyScan = useSim(selectHistoryScan);
@@ -134,6 +136,13 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
             'Initial state: it moves from the next scan on'
           : 'Initial state: run or step the program';
   const drawing = PLANT_DRAWINGS[model.id];
+  if (hardware)
+    return (
+      <p className="rs-plant-status" data-testid="plant-status">
+        Set aside while this page drives the hardware: the program&apos;s inputs come from the device, not from the
+        machine. Disconnect in the Hardware panel to run against the machine again.
+      </p>
+    );
   return (
     <>
       <p className="rs-plant-status" data-testid="plant-status" title={status}>
