@@ -184,6 +184,15 @@ export class PlantLoop {
   /** The record's arrays (kept here: read every scan). */
   private readonly bits: Uint32Array;
   private readonly ints: Float64Array;
+  /**
+   * Scans at rest the history has not been given yet (settle): how many, the first one, the PLC
+   * time the machine had before it, and the record they were all given (a copy: the loop's own
+   * record changes in place when the drive, an operator control or a fault does).
+   */
+  private pending = 0;
+  private pendingFrom = 0;
+  private pendingTime = 0;
+  private readonly restRecord: { readonly bits: Uint32Array; readonly ints: Float64Array };
   /** The record changed since the history was last given it (a drive, operator control or fault). */
   private recordChanged = true;
   /** The drive record handed to step(), refilled every scan. */
@@ -226,6 +235,7 @@ export class PlantLoop {
       }
     this.history = new PlantHistory(model, this.points, keep);
     this.record = this.history.newRecord();
+    this.restRecord = this.history.newRecord();
     this.bits = this.record.bits;
     this.ints = this.record.ints;
     this.driveConstants();
@@ -276,6 +286,7 @@ export class PlantLoop {
   /** Back to the machine's initial state at PLC time 0 (a cold restart); faults and operator controls stay. */
   reset(): void {
     this.rest = false;
+    this.pending = 0;
     this.state = this.model.initial();
     this.spare = this.model.initial();
     this.timeMs = 0;
@@ -367,10 +378,32 @@ export class PlantLoop {
     const before = this.state;
     this.refresh?.();
     const changed = this.driveCode(this.outputImage, this.bits, this.ints, this.driveRecord);
+    const same = !(changed || this.recordChanged);
+    this.recordChanged = false;
+    if (this.rest && same && dt === this.restDtMs && scan === this.scan + 1 && target === this.timeMs + dt) {
+      // At rest, the next scan, its time the last one's plus the same step: the history is told of
+      // such scans in one go when something changes or it is asked (settle): the same state,
+      // record and step each time, its times worked out by the very additions made here.
+      if (this.pending === 0) {
+        this.pendingFrom = scan;
+        this.pendingTime = this.timeMs;
+        this.restRecord.bits.set(this.record.bits);
+        this.restRecord.ints.set(this.record.ints);
+      }
+      this.pending++;
+      this.timeMs = target;
+      this.scan = scan;
+      const writes = this.writes;
+      if (writes === undefined || writes[0] !== this.presented) {
+        this.presentCode(this.inputImage, this.sensed, this.bits, this.image);
+        if (writes) this.presented = writes[0]!;
+      }
+      return NONE;
+    }
+    if (this.pending > 0) this.settle();
     // What the step is given, for the history to replay it (the model is deterministic); the
     // history copies `before` when it keeps it whole.
-    this.history.push(scan, before, this.timeMs, this.record, target, !(changed || this.recordChanged));
-    this.recordChanged = false;
+    this.history.push(scan, before, this.timeMs, this.record, target, same);
     if (this.rest && !changed && dt === this.restDtMs) {
       // At rest (see `rest`): the step would give this very state again, the same sensors (the
       // faults are the same too) and no consequence. The inputs are written again where they
@@ -405,6 +438,22 @@ export class PlantLoop {
     for (const e of found) this.events.push(e);
     this.present();
     return found;
+  }
+
+  /**
+   * The scans at rest not yet recorded go into the history: each given the rest's record and time
+   * step, from the state the machine rests in (unchanged all the while), at the times the scans
+   * reached (the same additions as in afterScan, so the same numbers).
+   */
+  private settle(): void {
+    const n = this.pending;
+    this.pending = 0;
+    let t = this.pendingTime;
+    for (let j = 0; j < n; j++) {
+      const next = t + this.restDtMs;
+      this.history.push(this.pendingFrom + j, this.state, t, this.restRecord, next, true);
+      t = next;
+    }
   }
 
   private locate(c: PlantConsequence, scan: number, timeMs: number): PlantEvent {
@@ -453,16 +502,19 @@ export class PlantLoop {
   /** The machine as it was after scan `scan` (the initial state for 0), if still kept. */
   at(scan: number): PlantSnapshot | undefined {
     if (scan === 0) return { scan: 0, timeMs: 0, state: this.model.initial(), faults: [], operator: {} };
+    if (this.pending > 0) this.settle();
     return this.history.at(scan);
   }
 
   /** The machine after each kept scan of [from, to] in turn (PlantHistory.walk: the snapshot is valid only during the call). */
   walk(from: number, to: number, fn: (snapshot: PlantSnapshot) => void): void {
+    if (this.pending > 0) this.settle();
     this.history.walk(from, to, fn);
   }
 
   /** The operator controls held and the faults set in scan `scan`, if it is still kept (PlantHistory.controlsAt). */
   controlsAt(scan: number): { readonly operator: Record<string, boolean>; readonly faults: string[] } | undefined {
+    if (this.pending > 0) this.settle();
     return this.history.controlsAt(scan);
   }
 

@@ -144,6 +144,37 @@ describe('a machine at rest', () => {
     for (let k = 1; k <= 2000; k += 7) expect(loop.at(k)!.state, `scan ${k}`).toEqual(live[k - 1]);
   });
 
+  test('scans at rest, told to the history later in one go, are recorded as they ran: across keyframes, an operator press, a fault, a seek in the middle of a rest', () => {
+    const image: Record<string, Value> = { '%QX0.0': false, '%QX0.1': false, '%QX0.2': false, '%QX0.3': false };
+    const loop = new PlantLoop(tank);
+    loop.bind({ outputs: () => image, setInputs: () => {} });
+    const live: ReturnType<PlantLoop['snapshot']>[] = [];
+    for (let k = 1; k <= 2000; k++) {
+      if (k === 700) loop.setOperator('Start', true);
+      if (k === 701) loop.setOperator('Start', false);
+      if (k === 900) image['%QX0.2'] = true;
+      if (k === 1000) image['%QX0.2'] = false;
+      if (k === 1300) loop.setFault('pump_dead', true);
+      // Asked in the middle of a rest: what it has not been told yet is told first; the rest goes on.
+      if (k === 1500) expect(loop.at(1400)!.state).toEqual(live[1399]!.state);
+      // A scan that took longer (a pause in real time) breaks the run of equal steps.
+      const start = k <= 1700 ? (k - 1) * 10 : (k - 1) * 10 + 35;
+      loop.afterScan(k, start, 10);
+      live.push(loop.snapshot());
+    }
+    for (const was of live) {
+      const seen = loop.at(was.scan)!;
+      expect(seen.timeMs, `scan ${was.scan}`).toBe(was.timeMs);
+      expect(seen.state, `scan ${was.scan}`).toEqual(was.state);
+      expect(seen.operator, `scan ${was.scan}`).toEqual(was.operator);
+      expect(seen.faults, `scan ${was.scan}`).toEqual(was.faults);
+      expect(seen.drive, `scan ${was.scan}`).toEqual(was.drive);
+    }
+    expect(live[699]!.operator.Start).toBe(true);
+    expect(loop.at(700)!.operator.Start).toBe(true);
+    expect(loop.at(699)!.operator.Start).toBe(false);
+  });
+
   test('at rest, an input written over by anything else (a write by name, setInputs, the image, a restore) is the machine\'s again after the next scan', () => {
     // The program only declares the tank's points (its actuators stay off): the tank stands still.
     const project = newProject('idle tank');
