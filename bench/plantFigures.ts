@@ -200,6 +200,17 @@ function compare(project: Project, recorded: boolean, map: PlantMap = {}): [numb
   return [median(without), median(cost)];
 }
 
+/**
+ * `compare` three times, each with PLCs and a machine of its own: the median cost and the scan it
+ * was measured against. One comparison moves by a few tens of ns from run to run (where the new
+ * objects land, when a collection falls); three keep one such run from being the figure.
+ */
+function compareThrice(project: Project, recorded: boolean, map: PlantMap = {}): [number, number] {
+  const runs = [compare(project, recorded, map), compare(project, recorded, map), compare(project, recorded, map)];
+  runs.sort((a, b) => a[1] - b[1]);
+  return runs[1]!;
+}
+
 function median(xs: number[]): number {
   const s = [...xs].sort((a, b) => a - b);
   return s[s.length >> 1]!;
@@ -255,10 +266,10 @@ export interface PlantFigures {
 
 export function plantFigures(): PlantFigures {
   const project = wiredProgram();
-  const [scanUs, engineCostUs] = compare(project, false);
-  const [recordedScanUs, plantUs] = compare(project, true);
+  const [scanUs, engineCostUs] = compareThrice(project, false);
+  const [recordedScanUs, plantUs] = compareThrice(project, true);
   const session = sessionScanUs(project);
-  const [movingScanUs, movingPlantUs] = compare(movingProgram(), true, MOVING_MAP);
+  const [movingScanUs, movingPlantUs] = compareThrice(movingProgram(), true, MOVING_MAP);
   return {
     movingScanUs,
     movingPlantUs,

@@ -391,32 +391,15 @@ export class PlantLoop {
         this.restRecord.ints.set(this.record.ints);
       }
       this.pending++;
-      this.timeMs = target;
-      this.scan = scan;
-      const writes = this.writes;
-      if (writes === undefined || writes[0] !== this.presented) {
-        this.presentCode(this.inputImage, this.sensed, this.bits, this.image);
-        if (writes) this.presented = writes[0]!;
-      }
-      return NONE;
+      return this.restedAt(scan, target);
     }
     if (this.pending > 0) this.settle();
     // What the step is given, for the history to replay it (the model is deterministic); the
     // history copies `before` when it keeps it whole.
     this.history.push(scan, before, this.timeMs, this.record, target, same);
     if (this.rest && !changed && dt === this.restDtMs) {
-      // At rest (see `rest`): the step would give this very state again, the same sensors (the
-      // faults are the same too) and no consequence. The inputs are written again where they
-      // differ, as every scan (a wire drives its input whatever was written to it meanwhile).
-      this.timeMs = target;
-      this.scan = scan;
-      // Nobody wrote an input since the machine presented them (the count its own writes left): nothing to present again.
-      const writes = this.writes;
-      if (writes === undefined || writes[0] !== this.presented) {
-        this.presentCode(this.inputImage, this.sensed, this.bits, this.image);
-        if (writes) this.presented = writes[0]!;
-      }
-      return NONE;
+      // At rest, a scan the history was given at once (another step, or not right after the last scan).
+      return this.restedAt(scan, target);
     }
     // Into the spare state object: `before` is the spare one for the next step.
     const after = this.model.step(before, this.driveRecord, dt, this.faults, this.spare);
@@ -438,6 +421,24 @@ export class PlantLoop {
     for (const e of found) this.events.push(e);
     this.present();
     return found;
+  }
+
+  /**
+   * Scan `scan` at rest (see `rest`): the step would give this very state again, the same sensors
+   * (the faults are the same too) and no consequence. The machine reaches the scan's time; its
+   * inputs are written again where they differ (a wire drives its input whatever was written to it
+   * meanwhile), which only someone else's write since it presented them can make so (the image's
+   * count of writes is the one its own writes left: nothing to present again).
+   */
+  private restedAt(scan: number, target: number): readonly PlantEvent[] {
+    this.timeMs = target;
+    this.scan = scan;
+    const writes = this.writes;
+    if (writes === undefined || writes[0] !== this.presented) {
+      this.presentCode(this.inputImage, this.sensed, this.bits, this.image);
+      if (writes) this.presented = writes[0]!;
+    }
+    return NONE;
   }
 
   /**

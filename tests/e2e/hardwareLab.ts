@@ -3,7 +3,9 @@
 // the same way (coil 800 + n drives discrete input n), and a page opened on an example and connected
 // as controller.
 import type { Browser, Locator, Page } from 'playwright-core';
-import { expect } from 'vitest';
+import { afterAll, afterEach, beforeAll, expect } from 'vitest';
+import { resolveConfig } from '../../src/gateway/config';
+import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
 import { mbpoll, mbpollValues } from '../gateway/helpers';
 import { openApp } from './appPage';
 import { SimPage } from './simPage';
@@ -44,3 +46,26 @@ export function hardwareLab({ port, browser, url, pages }: HardwareLabOptions) {
 
   return { coils, deviceInput, inputsOff, connect, openOnHardware };
 }
+
+/**
+ * For a describe block: the gateway serving the built app with its simulated device, started before
+ * its tests and closed after them; after each test the pages it opened are closed and the device's
+ * inputs are off again, as found. With the lab on it.
+ */
+export function useHardwareGateway(browser: () => Browser) {
+  let gw: RunningGateway;
+  const pages: Page[] = [];
+  beforeAll(async () => {
+    gw = await startGateway({ port: 0, config: resolveConfig({ simulated: { modbusPort: 0 } }), distDir: 'dist' });
+  });
+  afterAll(async () => {
+    await gw?.close();
+  });
+  const port = () => gw.simulated?.modbusServerPort ?? 0;
+  afterEach(async () => {
+    for (const p of pages.splice(0)) await p.close().catch(() => undefined);
+    await mbpoll(port(), ['-t', '0', '-r', '800', '127.0.0.1', '0', '0', '0', '0']);
+  });
+  return { gateway: () => gw, port, pages, ...hardwareLab({ port, browser, url: () => gw.url, pages }) };
+}
+

@@ -2,32 +2,13 @@
 // gateway serving the built app with its simulated device. Device outputs are read back over
 // Modbus TCP with mbpoll; inputs are set on the device the same way (coil 800 + n drives discrete input n).
 import type { Page } from 'playwright-core';
-import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
-import { resolveConfig } from '../../src/gateway/config';
-import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
-import { eventually, mbpoll } from '../gateway/helpers';
+import { describe, expect, it } from 'vitest';
+import { eventually } from '../gateway/helpers';
 import { useChromium } from './appPage';
-import { hardwareLab } from './hardwareLab';
+import { useHardwareGateway } from './hardwareLab';
 
 describe('Live I/O that can be trusted', () => {
-  let gw: RunningGateway;
-  beforeAll(async () => {
-    gw = await startGateway({ port: 0, config: resolveConfig({ simulated: { modbusPort: 0 } }), distDir: 'dist' });
-  });
-  afterAll(async () => {
-    await gw?.close();
-  });
-  const browser = useChromium();
-  const pages: Page[] = [];
-  afterEach(async () => {
-    for (const p of pages.splice(0)) await p.close().catch(() => undefined);
-    // Leave the device as found: inputs off.
-    const port = gw.simulated?.modbusServerPort ?? 0;
-    await mbpoll(port, ['-t', '0', '-r', '800', '127.0.0.1', '0', '0']);
-  });
-
-  const port = () => gw.simulated?.modbusServerPort ?? 0;
-  const { coils, deviceInput, connect, openOnHardware } = hardwareLab({ port, browser, url: () => gw.url, pages });
+  const { gateway, coils, deviceInput, connect, openOnHardware } = useHardwareGateway(useChromium());
 
   /** Scans run on: the scan counter passes `n` more scans (a behaviour, not a time). */
   async function scansPass(page: Page, n: number) {
@@ -67,9 +48,9 @@ describe('Live I/O that can be trusted', () => {
     await sim.waitForValue('PartSensor', true);
     await sim.waitForValue('PartCount', 1);
     await expect.poll(() => page.getByTestId('hw-run-disarmed').textContent()).toMatch(/Outputs not driven/);
-    expect(gw.hub.status().armed).toBe(false);
+    expect(gateway().hub.status().armed).toBe(false);
     await panel.getByTestId('hw-arm').click();
-    await expect.poll(() => gw.hub.status().armed).toBe(true);
+    await expect.poll(() => gateway().hub.status().armed).toBe(true);
     await scansPass(page, 20);
     // Start is still held on the device: the motor program would have switched coil 0 on.
     expect((await coils())[0]).toBe(0);

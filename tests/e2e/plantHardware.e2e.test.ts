@@ -4,29 +4,12 @@
 // sensor deciding what real outputs do; disconnected, the machine is back. Device inputs are set over
 // Modbus TCP with mbpoll (coil 800 + n drives discrete input n).
 import type { Page } from 'playwright-core';
-import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
-import { resolveConfig } from '../../src/gateway/config';
-import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
-import { mbpoll } from '../gateway/helpers';
+import { describe, expect, it } from 'vitest';
 import { useChromium } from './appPage';
-import { hardwareLab } from './hardwareLab';
+import { useHardwareGateway } from './hardwareLab';
 
 describe('a machine and the hardware', () => {
-  let gw: RunningGateway;
-  beforeAll(async () => {
-    gw = await startGateway({ port: 0, config: resolveConfig({ simulated: { modbusPort: 0 } }), distDir: 'dist' });
-  });
-  afterAll(async () => {
-    await gw?.close();
-  });
-  const browser = useChromium();
-  const pages: Page[] = [];
-  afterEach(async () => {
-    for (const p of pages.splice(0)) await p.close().catch(() => undefined);
-    await mbpoll(gw.simulated?.modbusServerPort ?? 0, ['-t', '0', '-r', '800', '127.0.0.1', '0', '0', '0', '0']);
-  });
-  const port = () => gw.simulated?.modbusServerPort ?? 0;
-  const { coils, deviceInput, openOnHardware } = hardwareLab({ port, browser, url: () => gw.url, pages });
+  const { coils, deviceInput, openOnHardware } = useHardwareGateway(useChromium());
   const attachedMachine = (page: Page) =>
     page.evaluate(() => (window.rungsmith as unknown as { simStore: { getState(): { plant?: { id: string } } } }).simStore.getState().plant?.id);
 

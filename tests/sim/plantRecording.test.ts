@@ -13,26 +13,35 @@ function setup() {
   return { scheduler, s: () => store.getState() };
 }
 
-const inputsOf = (s: ReturnType<ReturnType<typeof setup>['s']>) => s.layout!.variables.filter((v) => v.role === 'input').map((v) => v.name);
-const outputsOf = (s: ReturnType<ReturnType<typeof setup>['s']>) => s.layout!.variables.filter((v) => v.role === 'output').map((v) => v.name);
+/** The tank's reference solution run against the tank, Start pressed on the drawing; `then` runs on before the pause (ms of PLC time). */
+function startedTank(then: (s: Sim, advance: (ms: number) => void) => void = () => {}) {
+  const { s, scheduler } = setup();
+  const project = tankReference();
+  s().setPlant({ id: 'tank' });
+  s().run(project);
+  scheduler.advance(300);
+  s().plantOperator('Start', true);
+  scheduler.advance(300);
+  s().plantOperator('Start', false);
+  then(s, (ms) => scheduler.advance(ms));
+  s().pause();
+  return { s, project };
+}
+type Sim = ReturnType<typeof setup>['s'];
+
+const inputsOf = (s: ReturnType<Sim>) => s.layout!.variables.filter((v) => v.role === 'input').map((v) => v.name);
+const outputsOf = (s: ReturnType<Sim>) => s.layout!.variables.filter((v) => v.role === 'output').map((v) => v.name);
 
 describe('a scenario recorded against a machine', () => {
   test('names the machine, has its controls and faults as columns, not its sensors, and replays as it ran', async () => {
-    const { s, scheduler } = setup();
-    const project = tankReference();
-    s().setPlant({ id: 'tank' });
-    s().run(project);
-    scheduler.advance(300);
     // The operator starts the system; later a valve goes slow, and is repaired.
-    s().plantOperator('Start', true);
-    scheduler.advance(300);
-    s().plantOperator('Start', false);
-    scheduler.advance(20_000);
-    s().plantFault('inlet_slow', true);
-    scheduler.advance(20_000);
-    s().plantFault('inlet_slow', false);
-    scheduler.advance(10_000);
-    s().pause();
+    const { s, project } = startedTank((sim, advance) => {
+      advance(20_000);
+      sim().plantFault('inlet_slow', true);
+      advance(20_000);
+      sim().plantFault('inlet_slow', false);
+      advance(10_000);
+    });
     const csv = await s().exportHistory({ format: 'scenario', inputs: inputsOf(s()), outputs: outputsOf(s()) });
     const lines = csv.trim().split('\n');
     expect(lines).toContain('# plant: tank');
@@ -72,16 +81,7 @@ describe('a scenario recorded against a machine', () => {
   });
 
   test('an exported trace has the machine\'s quantities beside the program\'s variables, scan by scan as rungsmith simulate writes them', async () => {
-    const { s, scheduler } = setup();
-    const project = tankReference();
-    s().setPlant({ id: 'tank' });
-    s().run(project);
-    scheduler.advance(300);
-    s().plantOperator('Start', true);
-    scheduler.advance(300);
-    s().plantOperator('Start', false);
-    scheduler.advance(30_000);
-    s().pause();
+    const { s, project } = startedTank((_, advance) => advance(30_000));
     const rows = (await s().exportHistory({ format: 'trace' })).trim().split('\n').map((l) => l.split(','));
     const header = rows[0]!;
     expect(header).toEqual(expect.arrayContaining(['Pump', 'Running', 'tank.level', 'tank.inflow', 'tank.overflows']));
@@ -109,15 +109,7 @@ describe('a scenario recorded against a machine', () => {
   });
 
   test('History Find reads the machine\'s names: the first recorded scan where the tank holds more than 500 L', async () => {
-    const { s, scheduler } = setup();
-    s().setPlant({ id: 'tank' });
-    s().run(tankReference());
-    scheduler.advance(300);
-    s().plantOperator('Start', true);
-    scheduler.advance(300);
-    s().plantOperator('Start', false);
-    scheduler.advance(60_000);
-    s().pause();
+    const { s } = startedTank((_, advance) => advance(60_000));
     const trace = (await s().exportHistory({ format: 'trace', names: ['tank.level'] })).trim().split('\n').slice(1).map((l) => l.split(','));
     const expected = trace.findIndex((r) => Number(r[2]) > 500) + 1;
     expect(expected).toBeGreaterThan(1);
