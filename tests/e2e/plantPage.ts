@@ -28,6 +28,21 @@ export class PlantPage {
     readonly sim: SimPage,
   ) {}
 
+  /** The colour of the drawing's pixel at (x, y) in the drawing's own coordinates, as "r,g,b". */
+  drawnColour(x: number, y: number): Promise<string> {
+    return this.page.evaluate(
+      ([px, py]) => {
+        const box = document.querySelector<HTMLElement>('.rs-plant-drawing')!;
+        const scale = Number(box.dataset.scale);
+        const canvas = box.querySelector('canvas')!;
+        const ratio = canvas.width / canvas.getBoundingClientRect().width;
+        const d = canvas.getContext('2d')!.getImageData(Math.round(px! * scale * ratio), Math.round(py! * scale * ratio), 1, 1).data;
+        return `${d[0]},${d[1]},${d[2]}`;
+      },
+      [x, y],
+    );
+  }
+
   /** The machine's live frame (state, faults, operator controls, consequences). */
   async plant<S = Record<string, number | boolean>>(): Promise<PlantFrame<S> | undefined> {
     return (await this.page.evaluate(
@@ -111,3 +126,8 @@ export class PlantPage {
     await this.sim.waitForMode('Paused');
   }
 }
+
+/** A sensor's lamp on the drawings, lit and unlit ("r,g,b"). */
+export const LAMP_LIT = '34,197,94';
+export const LAMP_UNLIT = '229,231,235';
+

@@ -7,7 +7,7 @@ import { coil, contact, rung } from '../../src/model/examples';
 import { intersectionReference } from '../../src/plant/intersectionExercise';
 import { tankReference, tankWrong } from '../../src/plant/exercises';
 import { openApp, useChromium } from './appPage';
-import { PlantPage } from './plantPage';
+import { LAMP_LIT, LAMP_UNLIT, PlantPage } from './plantPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -115,21 +115,9 @@ test('a program that leaves the main road red lit under its green: the signal sh
   expect(errors).toEqual([]);
 });
 
-/** The colour of the drawing's pixel at (x, y) in the drawing's own coordinates, as "r,g,b". */
-const drawnColour = (x: number, y: number) =>
-  page.evaluate(
-    ([px, py]) => {
-      const box = document.querySelector<HTMLElement>('.rs-plant-drawing')!;
-      const scale = Number(box.dataset.scale);
-      const canvas = box.querySelector('canvas')!;
-      const ratio = canvas.width / canvas.getBoundingClientRect().width;
-      const d = canvas.getContext('2d')!.getImageData(Math.round(px! * scale * ratio), Math.round(py! * scale * ratio), 1, 1).data;
-      return `${d[0]},${d[1]},${d[2]}`;
-    },
-    [x, y],
-  );
-const LIT = '34,197,94';
-const UNLIT = '229,231,235';
+const drawnColour = (x: number, y: number) => plants.drawnColour(x, y);
+const LIT = LAMP_LIT;
+const UNLIT = LAMP_UNLIT;
 
 test('a level switch stuck OFF is drawn as it reads: under water its lamp stays dark, as the program sees it', async () => {
   await plants.openExercise('Tank level control (machine: tank)', 100);

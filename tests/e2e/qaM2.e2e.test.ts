@@ -4,7 +4,7 @@
 import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
 import { openApp, useChromium } from './appPage';
-import { PlantPage } from './plantPage';
+import { LAMP_LIT, LAMP_UNLIT, PlantPage } from './plantPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -121,3 +121,29 @@ test('paused at a breakpoint inside a scan, the panel shows the machine after th
   await page.evaluate((id) => (window.rungsmith as unknown as Breakpoints).simStore.getState().toggleBreakpoint(id), network);
   expect(errors).toEqual([]);
 });
+
+test('a stuck limit switch or floor sensor is drawn as the program reads it: dark at its stop, lit with no car, as before when cleared', async () => {
+  // The garage door starts closed: its Closed limit lamp (left of the track, at the floor) is lit.
+  await plants.openExercise('Garage door (machine: garage)', 100);
+  await sim.button('reset').click();
+  await sim.waitForMode('Stopped');
+  await expect.poll(() => plants.drawnColour(14, 216)).toBe(LAMP_LIT);
+  await page.getByTestId('plant-fault-closed_stuck_off').check();
+  await expect.poll(async () => (await plants.plant())?.now.faults).toEqual(['closed_stuck_off']);
+  await expect.poll(() => plants.drawnColour(14, 216)).toBe(LAMP_UNLIT);
+  await page.getByTestId('plant-fault-closed_stuck_off').uncheck();
+  await expect.poll(() => plants.drawnColour(14, 216)).toBe(LAMP_LIT);
+  // The lift's car waits at floor 1: its AtFloor1 lamp on the shaft wall is lit, AtFloor2's dark;
+  // with the floor 2 sensor stuck ON, AtFloor2's lamp is lit with no car there.
+  await plants.openExercise('Three-floor lift (machine: lift)', 20);
+  await sim.button('reset').click();
+  await sim.waitForMode('Stopped');
+  await expect.poll(() => plants.drawnColour(206, 280)).toBe(LAMP_LIT);
+  await expect.poll(() => plants.drawnColour(206, 190)).toBe(LAMP_UNLIT);
+  await page.getByTestId('plant-fault-floor2_stuck_on').check();
+  await expect.poll(() => plants.drawnColour(206, 190)).toBe(LAMP_LIT);
+  await page.getByTestId('plant-fault-floor2_stuck_on').uncheck();
+  await expect.poll(() => plants.drawnColour(206, 190)).toBe(LAMP_UNLIT);
+  expect(errors).toEqual([]);
+});
+

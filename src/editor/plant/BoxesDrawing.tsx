@@ -93,14 +93,15 @@ function BoxShape({ b, front }: { b: Box; front: number }) {
   );
 }
 
-export function BoxesDrawing({ state }: PlantDrawingProps) {
+export function BoxesDrawing({ state, sensed }: PlantDrawingProps) {
   const s = state as BoxesState;
   const px = xOf(PUSHER_MM);
   const plateW = PLATE_HALF_MM * 2 * SCALE;
   // The plate's front across the belt (its face reaches the belt's edge at 1/11 of the stroke).
   const plateY = B.y + (s.pusher * 1.1 - 0.1) * B.w;
-  // The eyes as they really are (a fault shows in the program's inputs, not on the machine).
-  const eyes = senseRecord(boxes, s, NO_FAULTS);
+  // The eyes' lamps as the program reads them, faults applied (a stuck eye is lit with no box in
+  // front of it: the boxes show where things really are).
+  const eyes = sensed ?? senseRecord(boxes, s, NO_FAULTS);
   const jammed = s.boxes.some((b) => b.jammed);
   const motor = s.speed > 0.99 ? LIT : s.speed > 0.01 ? '#eab308' : DARK;
   const pusherColour = s.pusher > 0.98 ? LIT : s.pusher > 0.02 ? '#eab308' : DARK;

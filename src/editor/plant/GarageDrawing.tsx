@@ -92,7 +92,7 @@ function Car({ x, w, top, faded }: { x: number; w: number; top: number; faded?: 
   );
 }
 
-export function GarageDrawing({ state }: PlantDrawingProps) {
+export function GarageDrawing({ state, sensed }: PlantDrawingProps) {
   const s = state as GarageState;
   const edge = yOf(s.position);
   const motorColor = s.short ? ALARM : Math.abs(s.speed) > 0.99 ? LIT : s.speed !== 0 ? RAMP : DARK;
@@ -131,7 +131,8 @@ export function GarageDrawing({ state }: PlantDrawingProps) {
       <Rect x={D.x - 6} y={D.y} width={6} height={D.h} fill="#a8a29e" />
       <Rect x={D.x + D.w} y={D.y} width={6} height={D.h} fill="#a8a29e" />
       <Line points={[0, FLOOR, GARAGE_SIZE.width, FLOOR]} stroke="#111827" strokeWidth={2} />
-      {/* The photo-eye across the doorway, near the floor; the beam red when broken. */}
+      {/* The photo-eye across the doorway, near the floor; the beam red when the car breaks it, the
+          receiver's lamp as the program reads it (a stuck eye sees no car in the beam). */}
       <Line
         points={[D.x + 2, FLOOR - 14, D.x + D.w - 2, FLOOR - 14]}
         stroke={s.carIn ? ALARM : '#86efac'}
@@ -143,7 +144,7 @@ export function GarageDrawing({ state }: PlantDrawingProps) {
         y={FLOOR - 19}
         width={8}
         height={10}
-        fill={s.carIn ? LIT : OFF}
+        fill={(sensed ? sensed.Obstacle === true : s.carIn) ? LIT : OFF}
         stroke="#111827"
         strokeWidth={1}
       />
@@ -158,8 +159,9 @@ export function GarageDrawing({ state }: PlantDrawingProps) {
       />
       <Text text="photo-eye" x={D.x} y={FLOOR + 4} width={D.w} align="center" fontSize={10} fill={TEXT} />
       {/* The limit switches on the left track. */}
-      <Indicator x={14} y={D.y + 6} on={s.position >= OPEN_LIMIT_AT} label="Open" />
-      <Indicator x={14} y={FLOOR - 8} on={s.position <= CLOSED_LIMIT_AT} label="Closed" />
+      {/* Lit as the program reads them, faults applied (a switch stuck OFF stays dark at its stop). */}
+      <Indicator x={14} y={D.y + 6} on={sensed ? sensed.OpenLimit === true : s.position >= OPEN_LIMIT_AT} label="Open" />
+      <Indicator x={14} y={FLOOR - 8} on={sensed ? sensed.ClosedLimit === true : s.position <= CLOSED_LIMIT_AT} label="Closed" />
       <Line points={[56, D.y + 16, 56, FLOOR - 18]} stroke="#d6d3d1" strokeWidth={2} />
       <Line points={[50, edge, 62, edge]} stroke="#57534e" strokeWidth={3} />
       {/* The motor over the doorway, its contactors beside it. */}

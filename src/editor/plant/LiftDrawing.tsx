@@ -41,11 +41,12 @@ function Spring({ x, y1, y2, hit }: { x: number; y1: number; y2: number; hit: bo
   return <Line points={points} stroke={hit ? ALARM : DARK} strokeWidth={hit ? 3 : 2} />;
 }
 
-function Landing({ s, i }: { s: LiftState; i: number }) {
+function Landing({ s, i, sensed }: { s: LiftState; i: number; sensed: PlantDrawingProps['sensed'] }) {
   const y = yOf(FLOOR_MM[i]!);
   const lamp = i === 0 ? s.lamp1 : i === 1 ? s.lamp2 : s.lamp3;
   const call = i === 0 ? s.call1 : i === 1 ? s.call2 : s.call3;
-  const at = Math.abs(s.position - FLOOR_MM[i]!) <= FLOOR_WINDOW_MM;
+  // Lit as the program reads it, faults applied (a sensor stuck OFF stays dark with the car level).
+  const at = sensed ? sensed[`AtFloor${i + 1}`] === true : Math.abs(s.position - FLOOR_MM[i]!) <= FLOOR_WINDOW_MM;
   return (
     <Group>
       {/* The landing floor and its number. */}
@@ -78,7 +79,7 @@ function Landing({ s, i }: { s: LiftState; i: number }) {
   );
 }
 
-export function LiftDrawing({ state }: PlantDrawingProps) {
+export function LiftDrawing({ state, sensed }: PlantDrawingProps) {
   const s = state as LiftState;
   const carBottom = yOf(s.position);
   const carTop = yOf(s.position + CAR_MM);
@@ -109,7 +110,7 @@ export function LiftDrawing({ state }: PlantDrawingProps) {
         hit={s.crashed && s.position > 0}
       />
       {[0, 1, 2].map((i) => (
-        <Landing key={i} s={s} i={i} />
+        <Landing key={i} s={s} i={i} sensed={sensed} />
       ))}
       {/* Hoist motor: off, ramping or braking, at full speed; the rope to the car. */}
       <Line points={[S.x + S.w / 2, S.top + 2, S.x + S.w / 2, carTop]} stroke={DARK} strokeWidth={1} />
