@@ -16,7 +16,9 @@ let plants: PlantPage;
 let errors: string[];
 
 interface Handle {
-  simStore: { getState(): { historyScan?: number; exportHistory(r: { format: 'trace' }): Promise<string> } };
+  simStore: {
+    getState(): { historyScan?: number; plant?: { now: { faults: string[] } }; exportHistory(r: { format: 'trace' }): Promise<string>; seekHistory(scan: number): void };
+  };
   documentStore: { getState(): { project: { scenarios?: { name: string; csv: string }[] } } };
 }
 
@@ -71,3 +73,24 @@ test('Record from simulation makes a scenario against the machine that replays t
   await expect.poll(() => page.getByTestId('scenario-run-result').textContent(), { timeout: 60_000 }).toMatch(/^PASS in \d+ scans$/);
   expect(errors).toEqual([]);
 });
+
+test('at a recorded scan the fault boxes show the faults set then; a box used there turns the live fault over and goes back to Live', async () => {
+  await sim.tab('Plant');
+  const box = page.getByTestId('plant-fault-inlet_slow');
+  const state = () => page.evaluate(() => (window.rungsmith as unknown as Handle).simStore.getState());
+  const before = (await plants.simScan()) - 5;
+  await box.check();
+  await expect.poll(async () => (await state()).plant?.now.faults).toEqual(['inlet_slow']);
+  await plants.fastForward(20);
+  // A scan recorded before the fault: its box is clear, as the machine was then.
+  await page.evaluate((scan) => (window.rungsmith as unknown as Handle).simStore.getState().seekHistory(scan), before);
+  await expect.poll(async () => (await state()).historyScan).toBe(before);
+  await expect.poll(() => box.isChecked()).toBe(false);
+  // Used there, it clears the live fault (set now) and shows Live.
+  await box.click();
+  await expect.poll(async () => (await state()).historyScan).toBeUndefined();
+  await expect.poll(async () => (await state()).plant?.now.faults).toEqual([]);
+  await expect.poll(() => box.isChecked()).toBe(false);
+  expect(errors).toEqual([]);
+});
+

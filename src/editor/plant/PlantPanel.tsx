@@ -62,6 +62,7 @@ const selectHistoryTime = (s: SimState) => s.historyTimeMs;
 const selectScan = (s: SimState) => s.scan;
 const selectTime = (s: SimState) => s.timeMs;
 const selectCycle = (s: SimState) => s.cycleMs;
+const selectMode = (s: SimState) => s.mode;
 const seconds = (ms: number) => `${(ms / 1000).toFixed(2)} s`;
 
 export function PlantPanel() {
@@ -113,6 +114,7 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
   const simScan = useSim(selectScan);
   const simTime = useSim(selectTime);
   const cycleMs = useSim(selectCycle);
+  const mode = useSim(selectMode);
   /** When scan `scan` started, the machine having reached `endMs` after it. */
   const started = (scan: number, endMs: number, known: number | undefined, knownMs: number | undefined) =>
     scan === known && knownMs !== undefined ? knownMs : Math.max(0, endMs - cycleMs);
@@ -131,7 +133,7 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
         : `Scan ${historyScan.toLocaleString('en-US')} is no longer kept for the machine`
       : shown && shown.scan > 0
         ? `After scan ${shown.scan.toLocaleString('en-US')} (${seconds(started(shown.scan, shown.timeMs, simScan, simTime))})`
-        : shown
+        : shown && mode !== 'stopped'
           ? // Attached to a program already past scan 0: the machine's first step is the next scan's.
             'Initial state: it moves from the next scan on'
           : 'Initial state: run or step the program';
@@ -160,7 +162,11 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
       )}
       <Readouts model={model} state={state} />
       <Consequences />
-      <Faults model={model} active={live?.now.faults ?? []} />
+      <Faults
+        model={model}
+        active={live?.now.faults ?? []}
+        shown={historyScan !== undefined && atScan ? atScan.faults : undefined}
+      />
       <IoMap model={model} map={map} points={points} />
       <details className="rs-plant-task">
         <summary>Task</summary>
@@ -376,7 +382,12 @@ function Consequences() {
   );
 }
 
-function Faults({ model, active }: { model: PlantModel; active: readonly string[] }) {
+/**
+ * The fault boxes: the live machine's faults, or at a recorded scan the faults set in that scan
+ * (`shown`, as the drawing shows it then). A box acts on the live machine, from its live faults,
+ * and goes back to Live, as the operator controls do.
+ */
+function Faults({ model, active, shown }: { model: PlantModel; active: readonly string[]; shown: readonly string[] | undefined }) {
   const sim = useSimStore();
   // A box shows what was asked until the worker's next frame says what is set.
   const [asked, setAsked] = useState<
@@ -392,18 +403,20 @@ function Faults({ model, active }: { model: PlantModel; active: readonly string[
           <input
             type="checkbox"
             data-testid={`plant-fault-${f.id}`}
-            checked={pending?.id === f.id ? pending.on : active.includes(f.id)}
+            checked={pending?.id === f.id ? pending.on : (shown ?? active).includes(f.id)}
             onChange={(e) => {
-              setAsked({ id: f.id, on: e.target.checked, against: key });
+              // At a recorded scan the box turns the live fault over (set if it is not now, cleared if it is).
+              const on = shown ? !active.includes(f.id) : e.target.checked;
+              if (shown) sim.getState().goLive();
+              setAsked({ id: f.id, on, against: key });
               // A switch is stuck ON or stuck OFF, not both: setting one clears the other.
               const other = /_stuck_on$/.test(f.id)
                 ? f.id.replace(/_on$/, '_off')
                 : /_stuck_off$/.test(f.id)
                   ? f.id.replace(/_off$/, '_on')
                   : undefined;
-              if (e.target.checked && other && active.includes(other))
-                sim.getState().plantFault(other, false);
-              sim.getState().plantFault(f.id, e.target.checked);
+              if (on && other && active.includes(other)) sim.getState().plantFault(other, false);
+              sim.getState().plantFault(f.id, on);
             }}
           />{' '}
           {f.title}
