@@ -22,8 +22,8 @@ import type { PlantColumns, TraceColumns } from './scenarioRecording';
 export interface ConditionPlant {
   /** The machine's spelling of a name it has (`TANK.LEVEL` -> `tank.level`), undefined otherwise. */
   spelling(name: string): string | undefined;
-  /** The values of `names` in each scan of [from, to]. */
-  values(names: readonly string[], from: number, to: number): (scan: number) => readonly Value[];
+  /** The values of `names` in each scan of [from, to]; undefined for a scan the machine has no record of. */
+  values(names: readonly string[], from: number, to: number): (scan: number) => readonly Value[] | undefined;
 }
 import { recordedBody } from './viewPower';
 import { readPinValues, viewBody, viewPou } from './pinValues';
@@ -253,6 +253,7 @@ export class HistoryRecorder {
     const holds = (values: readonly Value[], scan: number) => {
       if (!machineAt) return test(values);
       const m = machineAt(scan);
+      if (!m) return false;
       for (let k = 0; k < slots.length; k++) read[k] = slots[k]! >= 0 ? values[slots[k]!]! : m[-1 - slots[k]!]!;
       return test(read);
     };

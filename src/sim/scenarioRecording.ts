@@ -164,8 +164,8 @@ export function conditionPlant(plant: RecordedPlant | undefined): ConditionPlant
       plant.walk(from, to, (snap) => {
         rows[snap.scan - from] = names.map((n) => plantValue(plant.model, snap, n) ?? 0);
       });
-      const none = names.map(() => 0);
-      return (scan) => rows[scan - from] ?? none;
+      // A scan the machine's history does not have (it was chosen later): no values, the condition does not hold there.
+      return (scan) => rows[scan - from];
     },
   };
 }

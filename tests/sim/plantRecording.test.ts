@@ -122,5 +122,21 @@ describe('a scenario recorded against a machine', () => {
     s().findCondition('tank.level <= 500', -1);
     await expect.poll(() => s().historyScan).toBe(expected - 1);
   });
+
+  test('History Find on a machine name skips the scans before the machine was chosen (nothing of it is recorded there)', async () => {
+    const { s, scheduler } = setup();
+    s().run(tankReference());
+    scheduler.advance(1000);
+    s().setPlant({ id: 'tank' });
+    const chosenAt = s().scan;
+    scheduler.advance(1000);
+    s().pause();
+    s().seekHistory(1);
+    await expect.poll(() => s().historyScan).toBe(1);
+    // The tank holds 100 L from its first step: the first scan where it is below 150 L is one it ran in.
+    s().findCondition('tank.level < 150', 1);
+    await expect.poll(() => s().historyScan).toBeGreaterThan(chosenAt);
+    expect(s().historyScan).toBeLessThanOrEqual(chosenAt + 2);
+  });
 });
 
