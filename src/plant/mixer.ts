@@ -32,6 +32,8 @@ export const HOLD_S = 30;
 /** A batch above this is spoiled; the product on the element scorches above SCORCH_C. */
 export const OVERHEAT_C = 80;
 export const SCORCH_C = 150;
+/** An element heating in the air burns out at this temperature (some 20 s dry): it never heats again until the machine is reset. */
+export const BURNOUT_C = 350;
 /** The share of A in a good batch, percent, and its least volume. */
 export const RATIO_MIN = 40;
 export const RATIO_MAX = 60;
@@ -75,6 +77,8 @@ export interface MixerState {
   readonly angle: number;
   /** The heater's element carries current (and is not burnt). */
   readonly heating: boolean;
+  /** The element burnt out, heated uncovered past BURNOUT_C: it heats no more (a new one comes with a reset). */
+  readonly burntOut: boolean;
   readonly lamp: boolean;
   /** The batch now in the vessel: time held hot and stirred since the last ingredient, hottest it was. */
   readonly heldMs: number;
@@ -263,6 +267,7 @@ export const mixer: PlantModel<MixerState> = {
     { name: 'overflows', type: 'INT', comment: 'Times the vessel overflowed' },
     { name: 'scorches', type: 'INT', comment: 'Times the product scorched on the heater' },
     { name: 'dry_heats', type: 'INT', comment: 'Times the heater ran dry (element not covered)' },
+    { name: 'burnt_out', type: 'BOOL', comment: 'The heater element burnt out (heated uncovered): it heats no more until a reset' },
   ],
 
   initial: () => ({
@@ -294,6 +299,7 @@ export const mixer: PlantModel<MixerState> = {
     overflows: 0,
     scorches: 0,
     dryHeats: 0,
+    burntOut: false,
     inflow: 0,
     outflow: 0,
   }),
@@ -303,7 +309,9 @@ export const mixer: PlantModel<MixerState> = {
     const wantB = on(drive.ValveB) ? 1 : 0;
     const wantOut = on(drive.OutletValve) ? 1 : 0;
     const wantAgitator = on(drive.Agitator) && !faults.has('agitator_dead') ? 1 : 0;
-    const heating = on(drive.Heater) && !faults.has('heater_dead');
+    const ordered = on(drive.Heater) && !faults.has('heater_dead');
+    let burntOut = s.burntOut;
+    let heating = ordered && !burntOut;
     const travelA = faults.has('valve_a_slow') ? SLOW_VALVE_TRAVEL_MS : VALVE_TRAVEL_MS;
     let { level, volA, volB, temp, element, valveA, valveB, outlet, agitator, heldMs, maxTemp, angle } = s;
     let { judged, spoiledBatch, spoilReason, lastRatio, batches, spoiled, overflows, scorches, dryHeats } = s;
@@ -380,9 +388,13 @@ export const mixer: PlantModel<MixerState> = {
         temp += h * (flow * (zone / level) - LOSS * (temp - AMBIENT_C));
         if (element > SCORCH_C) scorching = true;
       } else {
-        // An element in the air heats by itself; with no batch the vessel cools to the room.
+        // An element in the air heats by itself, and burns out; with no batch the vessel cools to the room.
         if (heating) dryHeating = true;
         element += h * (power / ZONE_L - MIX_STILL * (element - AMBIENT_C));
+        if (heating && element > BURNOUT_C) {
+          burntOut = true;
+          heating = false;
+        }
         temp += h * -LOSS * 4 * (temp - AMBIENT_C);
       }
       if (level >= ELEMENT_COVERED_L && agitator >= 0.9 && temp >= HOLD_MIN_C) heldMs += hMs;
@@ -420,6 +432,7 @@ export const mixer: PlantModel<MixerState> = {
     into.outletOrdered = wantOut === 1;
     into.angle = angle;
     into.heating = heating;
+    into.burntOut = burntOut;
     into.lamp = on(drive.DoneLamp);
     into.heldMs = heldMs;
     into.maxTemp = maxTemp;
@@ -462,6 +475,13 @@ export const mixer: PlantModel<MixerState> = {
         severity: 'error',
         message: 'the heater ran dry (its element was not covered)',
         counter: 'dry_heats',
+      });
+    if (after.burntOut && !before.burntOut)
+      (out ??= []).push({
+        id: 'burnout',
+        severity: 'error',
+        message: `the heater element burnt out (it heated uncovered past ${BURNOUT_C} °C): it heats no more until the machine is reset`,
+        counter: 'burnt_out',
       });
     if (after.scorches > before.scorches)
       (out ??= []).push({
@@ -546,6 +566,8 @@ export const mixer: PlantModel<MixerState> = {
         return s.scorches;
       case 'dry_heats':
         return s.dryHeats;
+      case 'burnt_out':
+        return s.burntOut;
     }
     throw new Error(`mixer has no quantity "${name}"`);
   },

@@ -98,12 +98,14 @@ test('a consequence opens its scan with the time it gave, as the History gives i
   await expect.poll(() => page.getByTestId('history-marker').textContent()).toBe(`HISTORY scan ${scan} · ${time}0 s`);
   const n = Number(scan!.replace(/,/g, ''));
   expect(Number(time)).toBeCloseTo(((n - 1) * 20) / 1000, 5);
+  // The fault box at that recorded scan (checked: the fault was set then) clears the live fault and goes back to Live.
   await page.getByTestId('plant-fault-size_stuck_off').uncheck();
+  await page.getByTestId('history-marker').filter({ hasText: 'Live' }).waitFor();
+  await expect.poll(async () => (await plants.plant())!.now.faults).toEqual([]);
   expect(errors).toEqual([]);
 });
 
 test('paused at a breakpoint inside a scan, the panel shows the machine after the scan before, with that scan\'s time', async () => {
-  await page.getByTestId('history-live').click();
   const network = await page.evaluate(
     () =>
       window.rungsmith!.documentStore!.getState().project.pous[0]!.networks.find((n) => n.title === 'Pusher')!.id,

@@ -3,7 +3,7 @@
 // worker session's trace equal to the CLI's scan by scan; `rungsmith test` and `rungsmith plants`.
 import { senseRecord } from '../../src/plant/points';
 import { describe, expect, test, vi } from 'vitest';
-import { mixer, type MixerState } from '../../src/plant/mixer';
+import { BURNOUT_C, mixer, type MixerState } from '../../src/plant/mixer';
 import { PlantLoop } from '../../src/plant/loop';
 import { PLANT_EXAMPLES } from '../../src/plant/exercises';
 import { MIXER_SCENARIO, mixerReference, mixerWrong } from '../../src/plant/mixerExercise';
@@ -140,6 +140,28 @@ describe('the mixer consequences', () => {
     // Covered (above 60 L) it heats the batch instead.
     const covered = run(dosed(100, 0), { Heater: true, Agitator: true }, 500);
     expect(covered.dryHeats).toBe(0);
+  });
+
+  test('an element heated uncovered burns out within seconds: it heats no more, even covered, until the machine is reset', () => {
+    const before = mixer.initial();
+    // Five seconds dry: hot, not yet burnt.
+    const warm = run(before, { Heater: true }, 5000);
+    expect(warm.burntOut).toBe(false);
+    expect(warm.element).toBeLessThan(BURNOUT_C);
+    // Kept on: past BURNOUT_C it burns out once, said as a consequence, and no longer carries current.
+    const burnt = run(warm, { Heater: true }, 40_000);
+    expect(burnt.burntOut).toBe(true);
+    expect(burnt.heating).toBe(false);
+    expect(burnt.element).toBeLessThan(BURNOUT_C + 5);
+    expect(consequences(warm, burnt)).toEqual(['burnout']);
+    expect(mixer.check(warm, burnt)[0]).toMatchObject({ severity: 'error', counter: 'burnt_out' });
+    expect(q(burnt, 'burnt_out')).toBe(true);
+    // A batch dosed and heated afterwards stays at room temperature.
+    const batch = run({ ...burnt, level: 400, volA: 400, element: 20 }, { Heater: true, Agitator: true }, 20_000);
+    expect(batch.temp).toBeCloseTo(20, 1);
+    expect(batch.burntOut).toBe(true);
+    // A reset (the initial state) has a new element.
+    expect(mixer.initial().burntOut).toBe(false);
   });
 
   test('heating without the agitator scorches the product on the element within seconds, spoiling the batch', () => {

@@ -242,7 +242,7 @@ export function MixerDrawing({ state, sensed }: PlantDrawingProps) {
         </Group>
       )}
       {s.scorching && <Alarm text="SCORCHED" row={1} />}
-      {s.dryHeating && <Alarm text="HEATER DRY" row={2} />}
+      {s.burntOut ? <Alarm text="HEATER BURNT OUT" row={2} /> : s.dryHeating && <Alarm text="HEATER DRY" row={2} />}
       {s.spoiledBatch && <Alarm text={`SPOILED (${SPOIL_WORD[s.spoilReason]})`} row={3} />}
     </Group>
   );
