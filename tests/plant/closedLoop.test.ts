@@ -8,7 +8,7 @@ import { tank } from '../../src/plant/tank';
 import { SimHarness } from '../sim/harness';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import type { TankState } from '../../src/plant/tank';
-import { cliTrace, workerTrace } from './traces';
+import { cliTrace, tankFilledInSession, workerTrace } from './traces';
 
 const WATCH = [
   'Start',
@@ -98,14 +98,7 @@ describe('the tank in the simulation session', () => {
 
 describe('taking the machine away', () => {
   test('None chosen while paused: the inputs the machine drove fall to FALSE / 0, as cut wires (a switch does not stay ON)', () => {
-    const h = new SimHarness().send(
-      { type: 'setCycle', cycleMs: 100 },
-      { type: 'setPlant', plant: { id: 'tank' } },
-      { type: 'load', project: tankReference() },
-    );
-    h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'step', scans: 2 }).settle();
-    h.send({ type: 'plantOperator', name: 'Start', value: false }, { type: 'step', scans: 300 });
-    while (h.frame.scan < 302) h.settle();
+    const h = tankFilledInSession();
     // Filling from 100 L: by now above the low switch (200 L), and Level reads the litres.
     expect(h.value('LowLevel')).toBe(true);
     expect(h.value('Level')).toBeGreaterThan(200);

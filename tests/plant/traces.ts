@@ -3,7 +3,8 @@
 import type { Project } from '../../src/model/project';
 import { rungsmith } from '../cli/memoryIo';
 import { SimulatedDevice } from '../../src/gateway/simulatedDevice';
-import type { SimHarness } from '../sim/harness';
+import { SimHarness } from '../sim/harness';
+import { tankReference } from '../../src/plant/exercises';
 
 /** The session's recorded scans of `names` as the History's Export writes them, one line a scan (header first). */
 export function workerTrace(h: SimHarness, names: readonly string[]): string[] {
@@ -47,3 +48,21 @@ export async function startedPlantDevice(plant: string): Promise<SimulatedDevice
   await device.start({ inputs: () => undefined, written: () => undefined, status: () => undefined } as never);
   return device;
 }
+
+/**
+ * A simulation session (100 ms cycle) running the tank's reference solution against the tank,
+ * Start pressed for two scans, then 300 scans on: at scan 302 the tank has filled from 100 L past
+ * its low switch (200 L).
+ */
+export function tankFilledInSession(): SimHarness {
+  const h = new SimHarness().send(
+    { type: 'setCycle', cycleMs: 100 },
+    { type: 'setPlant', plant: { id: 'tank' } },
+    { type: 'load', project: tankReference() },
+  );
+  h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'step', scans: 2 }).settle();
+  h.send({ type: 'plantOperator', name: 'Start', value: false }, { type: 'step', scans: 300 });
+  while (h.frame.scan < 302) h.settle();
+  return h;
+}
+

@@ -7,6 +7,7 @@ import { tankReference } from '../../src/plant/exercises';
 import { mappedPoints, PlantLoop } from '../../src/plant/loop';
 import { tank } from '../../src/plant/tank';
 import { declarePlan, rewireAddress } from '../../src/plant/wiring';
+import { tankFilledInSession } from './traces';
 import { SimHarness } from '../sim/harness';
 import type { PlantFrame } from '../../src/sim/sessionPlant';
 import type { TankState } from '../../src/plant/tank';
@@ -111,14 +112,7 @@ describe('a map with two points on one address', () => {
   });
 
   test('in the session it takes the machine attached before away (its inputs fall to FALSE / 0) and says why', () => {
-    const h = new SimHarness().send(
-      { type: 'setCycle', cycleMs: 100 },
-      { type: 'setPlant', plant: { id: 'tank' } },
-      { type: 'load', project: tankReference() },
-    );
-    h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'step', scans: 2 }).settle();
-    h.send({ type: 'plantOperator', name: 'Start', value: false }, { type: 'step', scans: 300 });
-    while (h.frame.scan < 302) h.settle();
+    const h = tankFilledInSession();
     expect(h.value('LowLevel')).toBe(true);
     expect(h.value('Level')).toBeGreaterThan(200);
     h.send({ type: 'setPlant', plant: { id: 'tank', map: { Start: '%IX0.2' } } }, { type: 'step', scans: 1 });
