@@ -276,10 +276,6 @@ export class HistoryRecorder {
 
   /** The recorded scans within [from, to], or undefined when none is recorded. */
   recordedRange(from?: number, to?: number): [number, number] | undefined {
-    return this.range(from, to);
-  }
-
-  private range(from?: number, to?: number): [number, number] | undefined {
     const first = this.history.first;
     if (first === undefined) return undefined;
     return [Math.max(first, from ?? first), Math.min(this.history.last!, to ?? this.history.last!)];
@@ -311,7 +307,7 @@ export class HistoryRecorder {
   traceCsv(names: readonly string[], from?: number, to?: number, plant?: TraceColumns): string {
     const cols = this.types(names);
     const lines = [csvRow(['scan', 'time_ms', ...cols.map((c) => c.name), ...(plant?.names ?? [])])];
-    const range = this.range(from, to);
+    const range = this.recordedRange(from, to);
     if (range)
       this.each(cols, range, (values, scan) => {
         lines.push(csvRow([String(scan), String(this.history.timeOf(scan)), ...cols.map((c, j) => csvValue(c.type, values[j]!)), ...(plant?.cells(scan) ?? [])]));
@@ -326,7 +322,7 @@ export class HistoryRecorder {
     scenarioCsv(inputs: readonly string[], outputs: readonly string[], cycleMs: number, from?: number, to?: number, plant?: PlantColumns): string {
     const ins = this.types(inputs);
     const outs = this.types(outputs);
-    const range = this.range(from, to);
+    const range = this.recordedRange(from, to);
     const head = [
       `# Recorded from scans ${range ? `${range[0]} to ${range[1]}` : '(none)'} of a simulation`,
       `# cycle: ${cycleMs}ms`,
