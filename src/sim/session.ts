@@ -719,7 +719,9 @@ export class SimSession {
     try {
       const parsed = parseScenario(scenario.csv, scenario.name);
       const prep = prepareScenario(parsed, this.loaded!.program as CompiledProgram);
-      const plantLoop = parsed.plant ? this.plant.forScenario(parsed.plant) : undefined;
+      const plantLoop = parsed.plant
+        ? this.plant.forScenario(parsed.plant, project.plant?.id === parsed.plant ? project.plant.map : undefined)
+        : undefined;
       const cycle = scenarioCycle(project, parsed, plc.pou, plc.schedule);
       this.runner.setCycle(cycle);
       if (this.layout) this.layout = { ...this.layout, cycleMs: cycle };

@@ -159,11 +159,20 @@ export class SessionPlant {
     return loop && { id: loop.model.id, model: loop.model, points: loop.points, controlsAt: (scan) => loop.controlsAt(scan), walk: (from, to, fn) => loop.walk(from, to, fn) };
   }
 
-  /** For scenario replays in the simulator: the machine's loop, started over. */
-  forScenario(id: string): PlantLoop {
-    if (this.loop?.model.id !== id) this.configure({ id }, undefined);
-    this.loop!.reset();
-    return this.loop!;
+  /**
+   * For scenario replays in the simulator: a new loop of the scenario's machine, wired by `map`
+   * (the project's, when it names that machine), from its initial state with no fault set and no
+   * control held, as `rungsmith test` runs it. Neither what a run before left set (a fault column
+   * set to 1, a button held at its end) nor the default map instead of the project's may change
+   * the verdict.
+   */
+  forScenario(id: string, map: PlantMap | undefined): PlantLoop {
+    this.loop?.release();
+    this.loop = undefined;
+    this.unread.clear();
+    this.letGo.clear();
+    this.loop = new PlantLoop(requirePlant(id), map ?? {});
+    return this.loop;
   }
 
   frame(): PlantFrame | undefined {
