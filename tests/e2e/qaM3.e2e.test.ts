@@ -67,3 +67,29 @@ test("a scenario run from the Tests tab uses the project's I/O map, as `rungsmit
   expect(await runScenario(0)).toBe('PASS in 3000 scans');
   expect(errors).toEqual([]);
 });
+
+test("a refused address keeps its problem and its mark while another point is rewired; Esc gives the point's address back", async () => {
+  await openExample('Tank level control (machine: tank)');
+  await sim.tab('Plant');
+  const pump = page.getByTestId('plant-address-Pump');
+  await pump.fill('hello');
+  await pump.press('Tab');
+  const problems = page.getByTestId('plant-io-problem');
+  await expect.poll(() => problems.allTextContents()).toEqual(['Pump: "hello" is not an IEC address (%IX0.0, %IW2, %QX1.3)']);
+  // Another point rewired: the field still says "hello", so its problem stays said (it vanished,
+  // leaving Pump's field showing an address the pump does not have and no error).
+  const lamp = page.getByTestId('plant-address-RunLamp');
+  await lamp.fill('%QX1.3');
+  await lamp.press('Enter');
+  await expect.poll(() => page.getByTestId('plant-wired-RunLamp').textContent()).toBe('not wired: RunLamp is at %QX0.3');
+  expect(await problems.allTextContents()).toEqual(['Pump: "hello" is not an IEC address (%IX0.0, %IW2, %QX1.3)']);
+  expect(await pump.inputValue()).toBe('hello');
+  expect(await pump.getAttribute('aria-invalid')).toBe('true');
+  expect(await lamp.getAttribute('aria-invalid')).toBe('false');
+  // Esc: the pump's address back in its field, nothing left to say.
+  await pump.press('Escape');
+  await expect.poll(() => pump.inputValue()).toBe('%QX0.0');
+  await expect.poll(() => problems.count()).toBe(0);
+  expect(await pump.getAttribute('aria-invalid')).toBe('false');
+  expect(errors).toEqual([]);
+});

@@ -438,17 +438,31 @@ function IoMap({
   const doc = useDocumentStore();
   const project = useDocument(selectProject);
   const wired = wiring(project, points);
-  const [problem, setProblem] = useState<string | undefined>();
+  // A refused address stays in its field, marked, with its problem, until that field is put
+  // right (or Esc gives the point's address back): another point changed meanwhile does not
+  // clear it, which left the field showing an address the point does not have, and no error.
+  const [problems, setProblems] = useState<Readonly<Record<string, string>>>({});
+  const setProblem = (name: string, text: string | undefined) =>
+    setProblems((all) => {
+      if (all[name] === text) return all;
+      const next = { ...all };
+      if (text === undefined) delete next[name];
+      else next[name] = text;
+      return next;
+    });
   const [declared, setDeclared] = useState<string | undefined>();
   const change = (point: PlantPoint, text: string) => {
-    if (text.trim() === point.address) return;
+    if (text.trim() === point.address) {
+      setProblem(point.name, undefined);
+      return;
+    }
     const typed = rewireAddress(points, point, text);
     if (typed.problem !== undefined) {
-      setProblem(typed.problem);
+      setProblem(point.name, typed.problem);
       return;
     }
     const address = typed.address;
-    setProblem(undefined);
+    setProblem(point.name, undefined);
     if (address === point.address) return;
     const original = model.points.find((q) => q.name === point.name)!;
     const next: Record<string, string> = { ...map };
@@ -499,11 +513,13 @@ function IoMap({
         </button>
       </h4>
       {declared && <p data-testid="plant-declared">{declared}</p>}
-      {problem && (
-        <p className="rs-plant-error" role="alert" data-testid="plant-io-problem">
-          {problem}
-        </p>
-      )}
+      {points
+        .filter((p) => problems[p.name] !== undefined)
+        .map((p) => (
+          <p key={p.name} className="rs-plant-error" role="alert" data-testid="plant-io-problem">
+            {problems[p.name]}
+          </p>
+        ))}
       <table data-testid="plant-io">
         <thead>
           <tr>
@@ -524,10 +540,17 @@ function IoMap({
                   size={7}
                   defaultValue={p.address}
                   aria-label={`Address of ${p.name}`}
+                  aria-invalid={problems[p.name] !== undefined}
+                  title={problems[p.name] ?? `${p.name}'s address (Enter to change it, Esc to keep ${p.address})`}
+                  className={problems[p.name] !== undefined ? 'rs-plant-invalid' : undefined}
                   data-testid={`plant-address-${p.name}`}
                   onBlur={(e) => change(p, e.target.value)}
                   onKeyDown={(e) => {
                     if (e.key === 'Enter') change(p, e.currentTarget.value);
+                    else if (e.key === 'Escape') {
+                      e.currentTarget.value = p.address;
+                      setProblem(p.name, undefined);
+                    }
                   }}
                 />
               </td>
