@@ -3,7 +3,7 @@
 // One page for the whole file; each test says what it starts from.
 import type { Page } from 'playwright-core';
 import { beforeAll, expect, test } from 'vitest';
-import { openApp, useChromium } from './appPage';
+import { appUrl, openApp, useChromium, waitForApp } from './appPage';
 import { SimPage } from './simPage';
 
 const browser = useChromium();
@@ -91,5 +91,32 @@ test("a refused address keeps its problem and its mark while another point is re
   await expect.poll(() => pump.inputValue()).toBe('%QX0.0');
   await expect.poll(() => problems.count()).toBe(0);
   expect(await pump.getAttribute('aria-invalid')).toBe('false');
+  expect(errors).toEqual([]);
+});
+
+test('the app open in a second tab of the same browser: both tabs say they share one autosave (a reload keeps only the tab changed last); closing one, the other stops saying it', async () => {
+  // Two tabs of one browser profile (one context: one IndexedDB and localStorage).
+  const context = await browser().newContext();
+  try {
+    const first = await context.newPage();
+    await first.goto(appUrl());
+    await waitForApp(first);
+    expect(await first.getByTestId('other-tab-notice').count()).toBe(0);
+    const second = await context.newPage();
+    await second.goto(appUrl());
+    await waitForApp(second);
+    for (const tab of [first, second])
+      await expect
+        .poll(() => tab.getByTestId('other-tab-notice').textContent(), { timeout: 30_000 })
+        .toContain('Rungsmith is also open in another tab of this browser. The tabs share one autosave');
+    // A reload is not another tab.
+    await second.reload();
+    await waitForApp(second);
+    await expect.poll(() => second.getByTestId('other-tab-notice').count(), { timeout: 30_000 }).toBe(1);
+    await second.close();
+    await expect.poll(() => first.getByTestId('other-tab-notice').count(), { timeout: 30_000 }).toBe(0);
+  } finally {
+    await context.close();
+  }
   expect(errors).toEqual([]);
 });

@@ -9,11 +9,14 @@ import { HiddenFilePicker } from './HiddenFilePicker';
 import { Notice } from '../layout/Notice';
 import { ModalDialog, OkButton } from './ModalDialog';
 import { useAutosave } from './useAutosave';
+import { OTHER_TAB_WARNING, otherTabs, watchOtherTabs } from './otherTabs';
 import './files.css';
 
 export function FilesHost() {
   const store = useDocumentStore();
   useAutosave(store);
+  // Another tab with the app open shares this autosave: said (OtherTabNotice) while it is open.
+  useEffect(() => watchOtherTabs(), []);
   const open = useCallback((file: File) => void openChosenFile(store, file), [store]);
   useFileDrop(open);
   return (
@@ -62,6 +65,13 @@ export function FileNotice() {
   const serial = useStore(filesUi, (s) => s.noticeSerial);
   if (!notice) return null;
   return <Notice testId="file-notice" tone="info" text={notice} token={serial} onDismiss={() => filesUi.getState().setNotice('')} />;
+}
+
+/** While Rungsmith is open in another tab of this browser: the tabs overwrite each other's autosave. */
+export function OtherTabNotice() {
+  const others = useStore(otherTabs, (s) => s.others);
+  if (others.length === 0) return null;
+  return <Notice testId="other-tab-notice" tone="info" text={OTHER_TAB_WARNING} token={others} />;
 }
 
 function ConfirmDialog() {

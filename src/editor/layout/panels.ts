@@ -3,7 +3,7 @@
 // mounted once (dialogs, background work such as autosave).
 import { CommandHost } from '../commands/CommandHost';
 import type { ComponentType } from 'react';
-import { FilesHost, FileNotice } from '../files/FilesHost';
+import { FilesHost, FileNotice, OtherTabNotice } from '../files/FilesHost';
 import { HardwarePanel } from '../hardware/HardwarePanel';
 import { HardwareSimLink } from '../hardware/HardwareSimLink';
 import { PlcopenHost } from '../plcopen/PlcopenHost';
@@ -75,6 +75,7 @@ export const TOP_BAR_ITEMS: readonly BarSlot[] = [{ id: 'simulation', component:
 export const NOTICES: readonly BarSlot[] = [
   { id: 'simulation', component: SimNotices },
   { id: 'files', component: FileNotice },
+  { id: 'other-tab', component: OtherTabNotice },
 ];
 
 /** Mounted once inside the stores' providers. */
