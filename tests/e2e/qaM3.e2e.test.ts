@@ -120,3 +120,21 @@ test('the app open in a second tab of the same browser: both tabs say they share
   }
   expect(errors).toEqual([]);
 });
+
+test('a reload in the middle of a machine exercise brings the work back with the machine in view: the Plant tab, the machine and its rewired point', async () => {
+  await openExample('Garage door (machine: garage)');
+  await sim.tab('Plant');
+  const address = page.getByTestId('plant-address-WarningLamp');
+  await address.fill('%QX1.7');
+  await address.press('Enter');
+  await expect.poll(() => page.getByTestId('plant-wired-WarningLamp').textContent()).toBe('not wired: WarningLamp is at %QX0.2');
+  // The change is autosaved (the status says when), then the page is reloaded.
+  await expect.poll(() => page.getByTestId('autosave-status').getAttribute('data-pending'), { timeout: 30_000 }).toBe('false');
+  await page.reload();
+  await page.getByTestId('file-notice').filter({ hasText: 'Restored "Garage door"' }).waitFor({ timeout: 30_000 });
+  await expect.poll(() => page.getByRole('tab', { name: 'Plant' }).getAttribute('aria-selected')).toBe('true');
+  await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('garage');
+  expect(await page.getByTestId('plant-address-WarningLamp').inputValue()).toBe('%QX1.7');
+  expect(await page.locator('.rs-plant-drawing canvas').isVisible()).toBe(true);
+  expect(errors).toEqual([]);
+});

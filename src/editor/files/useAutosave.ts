@@ -16,6 +16,7 @@ import {
 } from './autosaveJournal';
 import { readAutosave, removeJournal, writeAutosave, writeJournal } from './autosaveStore';
 import { filesUi } from './filesUi';
+import { showPlantTab } from '../plant/showPlantTab';
 import { whenIdle } from './projectJson';
 
 /** Quiet time after the last change before writing the snapshot, ms. */
@@ -50,6 +51,8 @@ function useRecovery(store: DocumentStore): Ready | undefined {
           store.getState().loadProject(decision.project);
           if (decision.unsavedChanges) store.setState({ dirty: true });
           filesUi.getState().setNotice(recoveryNotice(decision, clock) ?? '');
+          // Work on a machine comes back with the machine in view, as the project opened.
+          if (decision.project.plant) showPlantTab();
         } else if (decision.action === 'discard') {
           filesUi.getState().setNotice(recoveryNotice(decision, clock) ?? '');
         }
