@@ -138,3 +138,14 @@ test('a reload in the middle of a machine exercise brings the work back with the
   expect(await page.locator('.rs-plant-drawing canvas').isVisible()).toBe(true);
   expect(errors).toEqual([]);
 });
+
+test('a wrong solution that overflows the tank fails its scenario at the scan of the overflow: the run says FAIL, not "did not run"', async () => {
+  await openExample('Tank level control (machine: tank)');
+  // The classic mistake: nothing stops filling at the high switch.
+  await page.getByRole('button', { name: 'Delete network 4' }).click();
+  await expect.poll(async () => (await sim.draw.networks()).map((n) => n.title)).not.toContain('Stop filling');
+  await sim.tab('Tests');
+  expect(await runScenario(0)).toMatch(/^FAIL: the tank overflowed at scan [\d,]+ \([\d.]+ s\)$/);
+  expect(await rows().nth(0).getByTestId('tests-failure').textContent()).toMatch(/^the tank overflowed at scan [\d,]+ /);
+  expect(errors).toEqual([]);
+});

@@ -8,6 +8,7 @@ import type { ScenarioResult } from '../../sim/scenario';
 import { createWorkerTransport } from '../../sim/host';
 import type { SimState, SimStore } from '../../store/simState';
 import { createSimStore } from '../../store/simStore';
+import { errorText } from './scenarioText';
 
 let scenarioSim: SimStore | undefined;
 /** The simulation scenario runs use: separate from the app's (never bound to the gateway). */
@@ -49,7 +50,7 @@ export function ScenarioRunView({ name, result, onClose }: { name: string; resul
         <strong>{name}</strong>
         <span data-testid="scenario-run-result">
           {result.error
-            ? `did not run: ${result.error}`
+            ? errorText(result)
             : result.ok
               ? `PASS in ${result.scans} scan${result.scans === 1 ? '' : 's'}`
               : `FAIL at scan ${first?.scan}: ${result.divergences.map((d) => `${d.name} expected ${d.expected}, got ${d.actual}`).join('; ')}`}
