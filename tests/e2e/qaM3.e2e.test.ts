@@ -149,3 +149,24 @@ test('a wrong solution that overflows the tank fails its scenario at the scan of
   expect(await rows().nth(0).getByTestId('tests-failure').textContent()).toMatch(/^the tank overflowed at scan [\d,]+ /);
   expect(errors).toEqual([]);
 });
+
+test("an exercise's task is the first thing under the machine: its goal in one line above the drawing, the whole text and I/O table a click away", async () => {
+  await openExample('Three-floor lift (machine: lift)');
+  await sim.tab('Plant');
+  const goal = page.getByTestId('plant-task-goal');
+  await expect.poll(() => goal.textContent()).toBe('Task: Answer the calls of a three-floor lift.');
+  // Above the drawing, in view without scrolling the panel (it was last, under the I/O map).
+  const [summary, drawing, panel] = await Promise.all([
+    goal.boundingBox(),
+    page.locator('.rs-plant-drawing').boundingBox(),
+    page.getByTestId('plant-panel').boundingBox(),
+  ]);
+  expect(summary!.y + summary!.height).toBeLessThanOrEqual(drawing!.y);
+  expect(summary!.y).toBeGreaterThanOrEqual(panel!.y);
+  const text = page.getByTestId('plant-task');
+  expect(await text.isVisible()).toBe(false);
+  await goal.click();
+  await expect.poll(() => text.isVisible()).toBe(true);
+  expect(await text.textContent()).toMatch(/I\/O:\n%IX0\.0 +Call1 /);
+  expect(errors).toEqual([]);
+});

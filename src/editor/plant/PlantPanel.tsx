@@ -145,8 +145,17 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
         machine. Disconnect in the Hardware panel to run against the machine again.
       </p>
     );
+  const task = taskText(model, map);
   return (
     <>
+      {/* The exercise first, its goal said in the summary: a newcomer sees what the program must do
+          without scrolling past the drawing, readouts, faults and I/O map (it was last, closed). */}
+      <details className="rs-plant-task" data-testid="plant-task-box">
+        <summary data-testid="plant-task-goal">
+          <strong>Task:</strong> {goal(task)}
+        </summary>
+        <pre data-testid="plant-task">{task}</pre>
+      </details>
       <p className="rs-plant-status" data-testid="plant-status" title={status}>
         {status}
       </p>
@@ -168,12 +177,15 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
         shown={historyScan !== undefined && atScan ? atScan.faults : undefined}
       />
       <IoMap model={model} map={map} points={points} />
-      <details className="rs-plant-task">
-        <summary>Task</summary>
-        <pre data-testid="plant-task">{taskText(model, map)}</pre>
-      </details>
     </>
   );
+}
+
+/** The task's first sentence (its goal), on one line. */
+function goal(task: string): string {
+  const text = task.split(/\n\s*\n/)[0]!.replace(/\s+/g, ' ').trim();
+  const end = text.search(/\.(\s|$)/);
+  return end >= 0 ? text.slice(0, end + 1) : text;
 }
 
 /** The drawing at most this much larger than drawn, when the panel is widened. */
