@@ -170,3 +170,35 @@ test("an exercise's task is the first thing under the machine: its goal in one l
   expect(await text.textContent()).toMatch(/I\/O:\n%IX0\.0 +Call1 /);
   expect(errors).toEqual([]);
 });
+
+test("a machine's point named on a contact in a new project is declared at the machine's address by Enter; a name of the program's own gets no machine wire", async () => {
+  await sim.draw.menu('File', 'New project');
+  const discard = page.getByRole('button', { name: 'Discard and start new' });
+  if (await discard.isVisible().catch(() => false)) await discard.click();
+  await expect.poll(async () => (await sim.draw.networks()).length).toBe(1);
+  await sim.tab('Plant');
+  await page.getByTestId('plant-choose').selectOption('tank');
+  await expect.poll(() => page.getByTestId('plant-wired-LowLevel').textContent()).toBe('not wired');
+  // Drawn from the keyboard, without "Declare the machine's I/O": the offer under the name says
+  // where the machine has it, and Enter takes it (it declared LowLevel with no address: not wired).
+  await sim.draw.clickCell(0, 0, 0);
+  await page.keyboard.press('c');
+  const input = page.getByTestId('inline-editor');
+  await input.waitFor();
+  await input.fill('LowLevel');
+  await expect
+    .poll(() => page.locator('li[role="option"][aria-selected="true"]').textContent())
+    .toBe("Declare LowLevelBOOL input at %IX0.2, the machine's LowLevel");
+  await page.keyboard.press('Enter');
+  await input.waitFor({ state: 'detached' });
+  await expect.poll(() => page.getByTestId('plant-wired-LowLevel').textContent()).toBe('LowLevel');
+  // A name of the program's own offered as an input is not put on the machine's Start button (%IX0.0).
+  await page.keyboard.press('c');
+  await input.waitFor();
+  await input.fill('Reset');
+  const offers = await page.locator('li[role="option"]').allTextContents();
+  expect(offers).toContain('Declare ResetBOOL input at %IX0.4');
+  expect(offers.join('\n')).not.toContain('%IX0.0');
+  await page.keyboard.press('Escape');
+  expect(errors).toEqual([]);
+});

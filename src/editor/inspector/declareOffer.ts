@@ -12,7 +12,9 @@ import { variable } from '../../model/factory';
 import type { PinType } from '../../model/iecTypes';
 import type { Pou, PouKind, Project, VarClass, Variable } from '../../model/project';
 import type { VariableScope } from '../../store/changes';
-import { nextFreeAddress, type AddressArea } from '../variables/addresses';
+import { machinePoints, nextFreeAddress, type AddressArea } from '../variables/addresses';
+import { addressOwners } from '../variables/validation';
+import { locationText, parseLocation } from '../../model/iecTypes';
 import { identifierProblem, isKnownVariableType } from '../variables/validation';
 import { blockLibrary } from '../../model/library';
 import { resolveType } from '../../model/dataTypes';
@@ -155,6 +157,10 @@ export function declareChoices(
     return choices;
   }
   const choices: DeclareChoice[] = [{ label: type, variable: variable(trimmed, type) }];
+  // A point of the project's machine (LowLevel with the tank chosen): at the machine's address first,
+  // so Enter wires it (the next free input, %IX0.0, is the tank's Start button).
+  const machine = machineOffer(project, trimmed, type, role);
+  if (machine) choices.unshift(machine);
   const areas = areasFor(role);
   for (const area of areas) {
     const location = nextFreeAddress(project, area, type);
@@ -179,6 +185,25 @@ export function declareChoices(
       external,
     });
   return choices;
+}
+
+/**
+ * The declaration of a point of the project's machine named `name` (any case), at the address the
+ * machine is wired to, with the point's comment: undefined when there is no such point, its type is
+ * not `type`, or a variable of the project has its address already.
+ */
+function machineOffer(project: Project, name: string, type: string, role: BindingRole): DeclareChoice | undefined {
+  if (role.kind === 'instance') return undefined;
+  const point = machinePoints(project).find((p) => p.name.toUpperCase() === name.toUpperCase());
+  const loc = point ? parseLocation(point.address) : undefined;
+  if (!point || !loc || point.type !== type.toUpperCase()) return undefined;
+  const address = locationText(loc);
+  if ([...addressOwners(project).keys()].some((k) => k === address)) return undefined;
+  const words = point.kind === 'actuator' ? 'output' : 'input';
+  return {
+    label: `${point.type} ${words} at ${address}, the machine's ${point.name}`,
+    variable: variable(name, point.type, { location: address, comment: point.comment }),
+  };
 }
 
 /**
