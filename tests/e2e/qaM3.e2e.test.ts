@@ -202,3 +202,35 @@ test("a machine's point named on a contact in a new project is declared at the m
   await page.keyboard.press('Escape');
   expect(errors).toEqual([]);
 });
+
+test("with the side panel at its narrowest, every operator button of every machine stays whole on its drawing (the garage's Doorway ran off its right edge)", async () => {
+  const panels = (right: number) =>
+    page.evaluate((r) => {
+      const p = JSON.parse(localStorage.getItem('rungsmith.panels') ?? '{}') as Record<string, unknown>;
+      localStorage.setItem('rungsmith.panels', JSON.stringify({ ...p, right: r }));
+    }, right);
+  await panels(240);
+  try {
+    await page.reload();
+    await page.getByRole('heading', { name: /Rungsmith/ }).first().waitFor();
+    await sim.tab('Plant');
+    await expect.poll(async () => (await page.getByTestId('plant-panel').boundingBox())?.width).toBeLessThanOrEqual(240);
+    for (const id of ['tank', 'lift', 'garage', 'mixer', 'boxes', 'intersection']) {
+      await page.getByTestId('plant-choose').selectOption(id);
+      await expect.poll(() => page.locator('.rs-plant-op').count()).toBeGreaterThan(0);
+      const drawing = (await page.locator('.rs-plant-drawing').boundingBox())!;
+      for (const button of await page.locator('.rs-plant-op').all()) {
+        const box = (await button.boundingBox())!;
+        const name = await button.textContent();
+        expect(box.x, `${id} ${name}`).toBeGreaterThanOrEqual(drawing.x);
+        expect(box.x + box.width, `${id} ${name}`).toBeLessThanOrEqual(drawing.x + drawing.width);
+        expect(box.y + box.height, `${id} ${name}`).toBeLessThanOrEqual(drawing.y + drawing.height);
+        // Whole: its name not cut (the text fits the button).
+        expect(await button.evaluate((b) => b.scrollWidth <= b.clientWidth + 1), `${id} ${name}`).toBe(true);
+      }
+    }
+  } finally {
+    await panels(340);
+  }
+  expect(errors).toEqual([]);
+});

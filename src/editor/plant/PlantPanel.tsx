@@ -226,7 +226,12 @@ function FittedDrawing({
   const Drawing = drawing.component;
   return (
     <div ref={outer} className="rs-plant-fit">
-      <div className="rs-plant-drawing" style={{ width, height }} data-scale={scale.toFixed(3)}>
+      <div
+        className="rs-plant-drawing"
+        // The operator buttons over it shrink with it (plant.css), so a narrow panel cuts none off.
+        style={{ width, height, ['--plant-scale' as string]: scale.toFixed(3) }}
+        data-scale={scale.toFixed(3)}
+      >
         <Stage width={width} height={height} scaleX={scale} scaleY={scale}>
           <Layer listening={false}>
             <Drawing state={state} sensed={sensed} />
