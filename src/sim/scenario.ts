@@ -165,6 +165,11 @@ export interface ScenarioResult {
   readonly error?: string;
   /** The machine's consequences of severity warning (they fail nothing), located, in order. */
   readonly warnings?: readonly string[];
+  /**
+   * Failed on a machine's consequence (`error` says which, at what scan): the machine's quantity
+   * counting it (`tank.overflows`), what "Why?" explains at that scan.
+   */
+  readonly consequence?: string;
 }
 
 interface Check {
@@ -280,7 +285,14 @@ export function runPrepared(
     const events = loop?.afterScan(scan, (scan - 1) * plant!.cycleMs, plant!.cycleMs);
     const harm = events?.find((e) => e.severity === 'error' && !(e.counter && checked.has(`${loop!.model.id}.${e.counter}`.toLowerCase())));
     if (events) for (const e of events) if (e.severity === 'warning') warnings.push(e.text);
-    if (harm) return done({ ok: false, scans: scan, divergences: [], error: harm.text });
+    if (harm)
+      return done({
+        ok: false,
+        scans: scan,
+        divergences: [],
+        error: harm.text,
+        ...(harm.counter ? { consequence: `${loop!.model.id}.${harm.counter}` } : {}),
+      });
     if (at < 0) continue;
     row++;
     const divergences: Divergence[] = [];

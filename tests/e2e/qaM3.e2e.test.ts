@@ -139,7 +139,7 @@ test('a reload in the middle of a machine exercise brings the work back with the
   expect(errors).toEqual([]);
 });
 
-test('a wrong solution that overflows the tank fails its scenario at the scan of the overflow: the run says FAIL, not "did not run"', async () => {
+test('a wrong solution that overflows the tank fails its scenario at the scan of the overflow: the run says FAIL, not "did not run", and Why? shows the machine there', async () => {
   await openExample('Tank level control (machine: tank)');
   // The classic mistake: nothing stops filling at the high switch.
   await page.getByRole('button', { name: 'Delete network 4' }).click();
@@ -147,6 +147,14 @@ test('a wrong solution that overflows the tank fails its scenario at the scan of
   await sim.tab('Tests');
   expect(await runScenario(0)).toMatch(/^FAIL: the tank overflowed at scan [\d,]+ \([\d.]+ s\)$/);
   expect(await rows().nth(0).getByTestId('tests-failure').textContent()).toMatch(/^the tank overflowed at scan [\d,]+ /);
+  // "Why it failed" explains the machine at that scan, as it does a divergence: the pump and the
+  // inlet still driven with the tank full, and ◀ steps back through the run.
+  const scan = Number((await page.getByTestId('scenario-run-result').textContent())!.match(/scan ([\d,]+)/)![1]!.replace(/,/g, ''));
+  const title = page.getByTestId('scenario-why-title');
+  await expect.poll(() => title.textContent(), { timeout: 30_000 }).toBe(`tank.overflows is 1 after scan ${scan.toLocaleString('en-US')}`);
+  expect(await page.getByTestId('scenario-why').textContent()).toMatch(/pump 100\.0 %, inlet 100\.0 %/);
+  await page.getByTestId('scenario-why').getByRole('button', { name: 'Previous scan' }).click();
+  await expect.poll(() => title.textContent()).toBe(`tank.overflows is 0 after scan ${(scan - 1).toLocaleString('en-US')}`);
   expect(errors).toEqual([]);
 });
 

@@ -24,8 +24,11 @@ export async function runScenarioApart(project: Project, scenario: Scenario): Pr
     .getState()
     .replayScenario(project, scenario)
     .catch((error: Error): ScenarioResult => ({ name: scenario.name, ok: false, scans: 0, divergences: [], error: error.message }));
+  // Why? at the first divergence, or at the machine's consequence the run failed on (the tank
+  // overflowed: the machine as the scan left it, which the program drove).
   const d = result.divergences[0];
-  if (d) sim.getState().explain({ kind: 'variable', name: d.name }, d.scan);
+  const target = d?.name ?? result.consequence;
+  if (target) sim.getState().explain({ kind: 'variable', name: target }, d?.scan ?? result.scans);
   return result;
 }
 
@@ -37,8 +40,8 @@ export function ScenarioRunView({ name, result, onClose }: { name: string; resul
   const explanation = useStore(sim, selectExplanation);
   const history = useStore(sim, selectHistory);
   const first = result.divergences[0];
-  const [target] = useState(first?.name);
-  const at = explanation?.scan ?? first?.scan;
+  const [target] = useState(first?.name ?? result.consequence);
+  const at = explanation?.scan ?? first?.scan ?? (result.consequence ? result.scans : undefined);
   const go = (scan: number) => {
     if (!target || !history) return;
     const s = Math.max(history.first, Math.min(history.last, scan));
@@ -60,7 +63,7 @@ export function ScenarioRunView({ name, result, onClose }: { name: string; resul
       <p className="rs-sim-empty" data-testid="scenario-run-note">
         Ran from a cold start in a simulation of its own: the live session (its scan, values and forces) is untouched.
       </p>
-      {first && explanation && (
+      {target && explanation && (
         <div data-testid="scenario-why">
           <div className="rs-sim-panel-bar">
             <button type="button" className="rs-sim-btn" aria-label="Previous scan" disabled={!history || at === undefined || at <= history.first} onClick={() => at !== undefined && go(at - 1)}>◀</button>
