@@ -327,7 +327,8 @@ export class SimSession {
         this.postFrame();
         return;
       case 'plantOperator':
-        this.plant.setOperator(m.name, m.value, this.mode === 'running');
+        // Running, paused or stopped, a click is held until a scan has read it (Step scan too).
+        this.plant.setOperator(m.name, m.value, this.mode !== 'faulted');
         this.postFrame();
         return;
       case 'plantFault':

@@ -26,11 +26,12 @@ export interface PlantFrame {
 export class SessionPlant {
   private loop: PlantLoop | undefined;
   /**
-   * Push buttons pressed since the last scan while running, and those of them already let go: a
-   * click shorter than the scan cycle (a quick click at a slow cycle) stays pressed until a scan
-   * has read it, then springs back, so a click on the drawing is never lost. The program sees it
-   * for one scan, the machine for one step, as a press held that long. (Stopped or paused, no
-   * scan is coming: a click is let go when it is.)
+   * Push buttons pressed since the last scan, and those of them already let go: a click shorter
+   * than the scan cycle (a quick click at a slow cycle) stays pressed until a scan has read it,
+   * then springs back, so a click on the drawing is never lost. The program sees it for one scan,
+   * the machine for one step, as a press held that long. Paused or stopped alike: Start clicked,
+   * then Step scan, is read by that scan (the click was let go at once, and stepping through a
+   * start-up could not press Start at all); Reset lets it go unread.
    */
   private unread = new Set<string>();
   private letGo = new Set<string>();
@@ -104,10 +105,10 @@ export class SessionPlant {
     this.letGo.clear();
   }
 
-  /** An operator control held (TRUE) or let go; `running`: scans are coming (a click is held until one reads it). */
-  setOperator(name: string, value: boolean, running = false): void {
+  /** An operator control held (TRUE) or let go; `holdUntilRead`: a click is held until a scan reads it. */
+  setOperator(name: string, value: boolean, holdUntilRead = false): void {
     const loop = this.require();
-    const button = running
+    const button = holdUntilRead
       ? loop.points.find(
           (p) => p.kind === 'operator' && p.control !== 'switch' && p.name.toUpperCase() === name.toUpperCase(),
         )

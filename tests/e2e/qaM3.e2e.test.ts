@@ -242,3 +242,34 @@ test("with the side panel at its narrowest, every operator button of every machi
   }
   expect(errors).toEqual([]);
 });
+
+test('stepping through a start-up: Start clicked on the drawing while paused (or stopped) stays pressed until Step scan has read it, then springs back', async () => {
+  await openExample('Tank level control (machine: tank)');
+  await sim.tab('Plant');
+  const start = page.getByTestId('plant-op-Start');
+  // Paused after a step: a click, then Step scan. The click was let go at once, and no step saw it.
+  await sim.button('step-scan').click();
+  await sim.waitForMode('Paused');
+  await start.click();
+  await expect.poll(() => start.getAttribute('aria-pressed')).toBe('true');
+  expect(await sim.value('Running')).toBe(false);
+  await sim.button('step-scan').click();
+  await sim.waitForValue('Running', true);
+  await expect.poll(() => start.getAttribute('aria-pressed')).toBe('false');
+  // Stopped (after Reset) alike: the first step reads it. Reset lets an unread click go.
+  await sim.button('reset').click();
+  await sim.waitForMode('Stopped');
+  await start.click();
+  await expect.poll(() => start.getAttribute('aria-pressed')).toBe('true');
+  await sim.button('reset').click();
+  await expect.poll(() => start.getAttribute('aria-pressed')).toBe('false');
+  await start.click();
+  await sim.button('step-scan').click();
+  await sim.waitForValue('Running', true);
+  await expect.poll(() => start.getAttribute('aria-pressed')).toBe('false');
+  // The next step does not see it again: Stop then stops the system.
+  await page.getByTestId('plant-op-Stop').click();
+  await sim.button('step-scan').click();
+  await sim.waitForValue('Running', false);
+  expect(errors).toEqual([]);
+});

@@ -181,7 +181,7 @@ describe('a click on a push button shorter than a scan', () => {
     expect(h.value('Running')).toBe(false);
   });
 
-  test('paused or stopped (no scan coming), a click is let go when it is', () => {
+  test('paused or stopped alike, is held until the next step has read it (stepping through a start-up); Reset lets it go', () => {
     const h = new SimHarness().send(
       { type: 'setCycle', cycleMs: 100 },
       { type: 'setPlant', plant: { id: 'tank' } },
@@ -191,6 +191,19 @@ describe('a click on a push button shorter than a scan', () => {
     while (h.frame.scan < 1) h.settle();
     h.send({ type: 'plantOperator', name: 'Start', value: true }, { type: 'plantOperator', name: 'Start', value: false });
     h.settle();
+    expect((h.frame.plant as PlantFrame).now.operator.Start).toBe(true);
+    h.send({ type: 'step', scans: 1 });
+    while (h.frame.scan < 2) h.settle();
+    expect(h.value('Running')).toBe(true);
     expect((h.frame.plant as PlantFrame).now.operator.Start).toBe(false);
+    // Stopped: held too, until Reset lets it go unread.
+    h.send({ type: 'reset' });
+    h.settle();
+    h.send({ type: 'plantOperator', name: 'Stop', value: true }, { type: 'plantOperator', name: 'Stop', value: false });
+    h.settle();
+    expect((h.frame.plant as PlantFrame).now.operator.Stop).toBe(true);
+    h.send({ type: 'reset' });
+    h.settle();
+    expect((h.frame.plant as PlantFrame).now.operator.Stop).toBe(false);
   });
 });
