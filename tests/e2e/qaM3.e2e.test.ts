@@ -211,6 +211,39 @@ test("a machine's point named on a contact in a new project is declared at the m
   expect(errors).toEqual([]);
 });
 
+test("a reload keeps the faults set on purpose and a switch turned ON, as Reset does (the machine starts over); push buttons spring back", async () => {
+  await openExample('Garage door (machine: garage)');
+  await sim.tab('Plant');
+  const plant = () =>
+    page.evaluate(
+      () => (window.rungsmith as unknown as { simStore: { getState(): { plant?: { now: { faults: string[]; operator: Record<string, boolean> } } } } }).simStore.getState().plant?.now,
+    );
+  const fault = page.getByTestId('plant-fault-open_stuck_off');
+  await fault.check();
+  await page.getByTestId('plant-op-Doorway').click();
+  await expect.poll(async () => (await plant())?.faults).toEqual(['open_stuck_off']);
+  await expect.poll(async () => (await plant())?.operator.Doorway).toBe(true);
+  await expect.poll(() => page.getByTestId('autosave-status').getAttribute('data-pending'), { timeout: 30_000 }).toBe('false');
+  await page.reload();
+  await page.getByTestId('file-notice').filter({ hasText: 'Restored "Garage door"' }).waitFor({ timeout: 30_000 });
+  await expect.poll(async () => (await plant())?.faults, { timeout: 30_000 }).toEqual(['open_stuck_off']);
+  await expect.poll(async () => (await plant())?.operator.Doorway).toBe(true);
+  expect(await page.getByTestId('plant-fault-open_stuck_off').isChecked()).toBe(true);
+  expect(await page.getByTestId('plant-op-Doorway').getAttribute('aria-pressed')).toBe('true');
+  expect(await page.getByTestId('plant-op-KeyOpen').getAttribute('aria-pressed')).toBe('false');
+  // Cleared, and reloaded again: nothing comes back.
+  await page.getByTestId('plant-fault-open_stuck_off').uncheck();
+  await page.getByTestId('plant-op-Doorway').click();
+  await expect.poll(async () => (await plant())?.faults).toEqual([]);
+  await expect.poll(async () => (await plant())?.operator.Doorway).toBe(false);
+  await page.reload();
+  await page.getByTestId('file-notice').filter({ hasText: 'Restored "Garage door"' }).waitFor({ timeout: 30_000 });
+  await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('garage');
+  await expect.poll(async () => (await plant())?.operator.Doorway).toBe(false);
+  expect((await plant())?.faults).toEqual([]);
+  expect(errors).toEqual([]);
+});
+
 test("with the side panel at its narrowest, every operator button of every machine stays whole on its drawing (the garage's Doorway ran off its right edge)", async () => {
   const panels = (right: number) =>
     page.evaluate((r) => {
