@@ -244,6 +244,29 @@ test("a reload keeps the faults set on purpose and a switch turned ON, as Reset 
   expect(errors).toEqual([]);
 });
 
+test("New scenario in a machine exercise runs against the machine: # plant: tank, the operator's tank.Start and tank.Stop as columns, not the inputs the machine writes", async () => {
+  await openExample('Tank level control (machine: tank)');
+  await sim.tab('Tests');
+  await page.getByTestId('tests-new').click();
+  const editor = page.getByTestId('scenario-editor');
+  const csv = editor.getByLabel('Scenario CSV');
+  await expect.poll(() => csv.inputValue()).toContain('# plant: tank\n');
+  expect(await editor.getByTestId('scenario-table').locator('th').allTextContents()).toEqual([
+    'scan',
+    'tank.Start',
+    'tank.Stop',
+    'expect Pump',
+    'expect InletValve',
+    'expect DrainValve',
+    'expect RunLamp',
+  ]);
+  // Filled in from the grid as a newcomer would: Start pressed at scan 1, the lamp lit at scan 3.
+  await csv.fill(`${(await csv.inputValue()).replace(/\n1,.*\n$/, '\n1,1,,*,*,*,*\n3,0,,*,*,*,1\n')}`);
+  await editor.getByRole('button', { name: 'Save scenario' }).click();
+  expect(await runScenario(1)).toBe('PASS in 3 scans');
+  expect(errors).toEqual([]);
+});
+
 test("with the side panel at its narrowest, every operator button of every machine stays whole on its drawing (the garage's Doorway ran off its right edge)", async () => {
   const panels = (right: number) =>
     page.evaluate((r) => {
