@@ -2,11 +2,13 @@
 // runs the MATIEC reference, /tmp/oracle) and tests/plant/matiecReference.test.ts (which checks the
 // simulator against the outputs MATIEC gave, kept in tests/plant/matiec/) share. An exercise's run:
 // its reference solution in closed loop with its machine through its scenario's operator presses
-// and faults, profile openplc, `rungsmith simulate --plant` as a user runs it.
+// and faults (and a run of an operator's actions and faults mid-run), profile openplc,
+// `rungsmith simulate --plant` as a user runs it.
 import { rungsmith } from '../cli/memoryIo';
 import { parseLocation } from '../../src/model/iecTypes';
 import type { Example } from '../../src/model/examples';
 import type { Project } from '../../src/model/project';
+import { actionStimulus, MACHINES } from './operatorRuns';
 
 export interface ExerciseRun {
   readonly id: string;
@@ -44,22 +46,43 @@ function located(project: Project): { inputs: string[]; outputs: string[] } {
   return { inputs, outputs };
 }
 
-/** The exercise's reference solution run through its scenario by `rungsmith simulate --plant` (in memory). */
-export function exerciseRun(example: Example): ExerciseRun {
+/** What a closed-loop run is given: the stimulus (operator controls, faults), how long, at what cycle. */
+interface RunSpec {
+  readonly stimulus: string;
+  readonly scans: number;
+  readonly cycle: string;
+}
+
+/**
+ * The two runs of each exercise's reference solution: its scenario (`ID`: the goal reached), and
+ * the operator working the controls with faults set and cleared mid-run (`ID-operator`: stops,
+ * restarts, the program's reactions to faults; the runs of faultTraces.test.ts, 2,000 scans).
+ */
+export function exerciseRuns(example: Example): { readonly name: string; readonly run: () => ExerciseRun }[] {
   const project = example.build();
   const id = project.plant!.id;
   const scenario = project.scenarios![0]!;
-  const cycle = /# cycle: (\S+)/.exec(scenario.csv)?.[1] ?? '10ms';
-  const cycleMs = Number(/^(\d+)ms$/.exec(cycle)![1]);
   const { text, scans } = scenarioStimulus(scenario.csv);
+  const cycle = /# cycle: (\S+)/.exec(scenario.csv)?.[1] ?? '10ms';
+  const operator = MACHINES.find((m) => m.id === id)!;
+  return [
+    { name: id, run: () => closedLoopRun(project, { stimulus: text, scans, cycle }) },
+    { name: `${id}-operator`, run: () => closedLoopRun(project, { stimulus: actionStimulus(id, operator.actions), scans: 2000, cycle: `${operator.cycleMs}ms` }) },
+  ];
+}
+
+/** A reference solution run in closed loop with its machine by `rungsmith simulate --plant` (in memory). */
+function closedLoopRun(project: Project, spec: RunSpec): ExerciseRun {
+  const id = project.plant!.id;
+  const cycleMs = Number(/^(\d+)ms$/.exec(spec.cycle)![1]);
   const { inputs, outputs } = located(project);
   const run = rungsmith(
-    ['simulate', 'p.json', '--plant', id, '--inputs', 'stim.csv', '--scans', String(scans), '--cycle', cycle, '--profile', 'openplc', '--watch', [...inputs, ...outputs].join(',')],
-    { 'p.json': JSON.stringify(project), 'stim.csv': text },
+    ['simulate', 'p.json', '--plant', id, '--inputs', 'stim.csv', '--scans', String(spec.scans), '--cycle', spec.cycle, '--profile', 'openplc', '--watch', [...inputs, ...outputs].join(',')],
+    { 'p.json': JSON.stringify(project), 'stim.csv': spec.stimulus },
   );
   if (run.code !== 0) throw new Error(`${id}: rungsmith simulate failed: ${run.err}`);
   const trace = run.out.trim().split('\n').map((l) => l.split(','));
-  return { id, project, cycle, cycleMs, scans, inputs, outputs, trace };
+  return { id, project, cycle: spec.cycle, cycleMs, scans: spec.scans, inputs, outputs, trace };
 }
 
 /**
@@ -81,13 +104,13 @@ export function changeRows(trace: readonly string[][], names: readonly string[])
 }
 
 /** The kept file's first line: what it is. Then `scan,<inputs>,<outputs>` rows where any changes. */
-export const KEPT_HEADER = (id: string, scans: number, cycle: string): string =>
-  `# ${id}: ${scans} scans at ${cycle}. The inputs the machine presented to the ${id} exercise's reference solution in the simulator over its scenario, and the outputs MATIEC's compile of that program (profile openplc) gave for them, scan by scan: the rows where any changes. Made by scripts/plantOracle.ts --write; do not edit.`;
+export const KEPT_HEADER = (name: string, id: string, scans: number, cycle: string): string =>
+  `# ${name}: ${scans} scans at ${cycle}. The inputs the machine presented to the ${id} exercise's reference solution in the simulator over ${name === id ? 'its scenario' : 'an operator\'s actions and faults mid-run'}, and the outputs MATIEC's compile of that program (profile openplc) gave for them, scan by scan: the rows where any changes. Made by scripts/plantOracle.ts --write; do not edit.`;
 
 /** A kept file read back: its scans and cycle, columns and change rows. */
 export function readKept(text: string): { scans: number; cycle: string; header: string[]; rows: string[][] } {
   const lines = text.trim().split('\n');
-  const m = /^# \w+: (\d+) scans at (\S+)\./.exec(lines[0]!);
+  const m = /^# [\w-]+: (\d+) scans at (\S+)\./.exec(lines[0]!);
   if (!m) throw new Error('not a kept MATIEC run');
   return { scans: Number(m[1]), cycle: m[2]!, header: lines[1]!.split(','), rows: lines.slice(2).map((l) => l.split(',')) };
 }

@@ -1,5 +1,6 @@
 // Each machine's reference solution runs as MATIEC runs it (issue 26; LD-SEMANTICS.md section 9):
-// tests/plant/matiec/<id>.csv keeps, for the exercise's scenario in closed loop with its machine,
+// tests/plant/matiec/<id>.csv keeps, for the exercise's scenario in closed loop with its machine
+// (<id>-operator.csv: for an operator's actions and faults mid-run, faultTraces.test.ts's run),
 // the inputs the machine presented scan by scan and the outputs MATIEC's compile of the same
 // program (what an OpenPLC runtime runs) gave for them (scripts/plantOracle.ts, with the MATIEC
 // reference built). Here the simulator, profile openplc, is fed those inputs and must drive the
@@ -15,8 +16,8 @@ import { changeRows, readKept } from './matiecKit';
 describe("the machines' reference solutions against MATIEC", () => {
   for (const example of PLANT_EXAMPLES) {
     const { plant, scenarios: _s, ...project } = example.build();
-    test(`${plant!.id}: fed the inputs its machine presented, the outputs equal MATIEC's at every scan`, () => {
-      const kept = readKept(readFileSync(join(import.meta.dirname, 'matiec', `${plant!.id}.csv`), 'utf8'));
+    test.each([plant!.id, `${plant!.id}-operator`])(`%s: fed the inputs its machine presented, the outputs equal MATIEC's at every scan`, (name) => {
+      const kept = readKept(readFileSync(join(import.meta.dirname, 'matiec', `${name}.csv`), 'utf8'));
       const main = project.pous.find((p) => p.kind === 'PROGRAM')!;
       const located = (area: string) => main.variables.filter((v) => v.location?.toUpperCase().startsWith(`%${area}`)).map((v) => v.name);
       const inputs = located('I');
