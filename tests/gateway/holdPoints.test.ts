@@ -4,7 +4,16 @@
 import { mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import WebSocket from 'ws';
 import { afterEach, expect, it } from 'vitest';
+import { GatewayBridge } from '../../src/bridge/GatewayBridge';
+import { GatewayClient, type SocketLike } from '../../src/bridge/GatewayClient';
+import { checkBindings } from '../../src/bridge/mapping';
+import { GatewayRelay } from '../../src/bridge/workerRelay';
+import { workerDriver, workerSocketFactory } from '../../src/bridge/workerSocket';
+import { newPou, newProject, variable } from '../../src/model/factory';
+import type { SimTransport } from '../../src/sim/host';
+import type { SimFrame, WorkerMessage } from '../../src/sim/protocol';
 import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
 import { freeLoopbackPort } from '../../src/gateway/modbusLib';
@@ -104,4 +113,73 @@ it('a gateway started next to a held valve leaves it as the device holds it; the
   clients.push(o);
   await o.waitFor((m): m is Status => m.t === 'status' && m.devices[0]?.outputs === 'safe', 10_000);
   expect(await plant.get('co', 0, 2)).toEqual([0, 1]);
+}, 60_000);
+
+it('an online change that moves the valve (hold) and the motor off their outputs: the motor output goes OFF, the held valve keeps its value, as in the safe state', async () => {
+  const modbusPort = await freeLoopbackPort();
+  plant = await PyModbusServer.start(modbusPort);
+  gw = await startGateway({
+    port: 0,
+    config: resolveConfig({
+      devices: [
+        {
+          id: 'plant',
+          host: '127.0.0.1',
+          port: modbusPort,
+          pollMs: POLL_MS,
+          timeoutMs: 300,
+          points: [{ address: '%QX0.0' }, { address: '%QX0.1', hold: true }, { address: '%QX0.2', count: 2 }],
+        },
+      ],
+    }),
+    distDir: null,
+  });
+  // The worker's relay and the page's transport to it, as the simulator's worker and host join them.
+  const listeners = new Set<(m: WorkerMessage) => void>();
+  const relay = new GatewayRelay((m) => listeners.forEach((l) => l(m)), (url) => new WebSocket(url) as unknown as SocketLike, {
+    setInputs: () => undefined,
+    wantOutputs: () => undefined,
+  });
+  const transport: SimTransport = {
+    send: (m) => {
+      if (m.type.startsWith('gw')) queueMicrotask(() => relay.handle(m as Parameters<GatewayRelay['handle']>[0]));
+    },
+    listen: (l) => {
+      listeners.add(l);
+      return () => listeners.delete(l);
+    },
+    terminate: () => undefined,
+  };
+  const client = new GatewayClient({ socketUrl: `ws://127.0.0.1:${gw.port}/io`, token: gw.token, role: 'controller', socketFactory: workerSocketFactory(transport) });
+  client.connect();
+  try {
+    await eventually(() => client.snapshot.link === 'open' && client.snapshot.status?.devices[0]?.state === 'online', 5000, 'open, device online');
+    const bridge = new GatewayBridge(client, workerDriver(transport));
+    transport.send({ type: 'gwPrograms', ids: ['P'] });
+    bridge.requestArm();
+    const project = newProject('P', {
+      pous: [newPou('Main', { variables: [variable('Motor', 'BOOL', { location: '%QX0.0' }), variable('Valve', 'BOOL', { location: '%QX0.1' })] })],
+    });
+    bridge.attach({ setInputs: () => undefined, onOutputs: () => () => undefined }, checkBindings(project, client.snapshot.points).bindings);
+    relay.frame({ mode: 'running' } as SimFrame);
+    await eventually(() => client.snapshot.status?.armed === true, 5000, 'armed');
+    relay.outputs({ '%QX0.0': true, '%QX0.1': true }, 'P');
+    await eventually(async () => (await plant!.get('co', 0, 4)).join() === '1,1,0,0', 5000, 'motor and valve ON');
+
+    // Applied online: Motor now at %QX0.3, Valve at %QX0.2.
+    transport.send({ type: 'gwPrograms', ids: ['P2'] });
+    await new Promise((r) => queueMicrotask(() => r(undefined)));
+    relay.outputs({ '%QX0.2': true, '%QX0.3': true }, 'P2');
+    await eventually(async () => (await plant!.get('co', 2, 2)).join() === '1,1', 5000, 'both at their new addresses');
+    await eventually(async () => (await plant!.get('co', 0, 1))[0] === 0, 5000, 'the motor\'s old output OFF');
+    for (let i = 0; i < 6; i++) {
+      relay.outputs({ '%QX0.2': true, '%QX0.3': true }, 'P2');
+      await new Promise((r) => setTimeout(r, POLL_MS));
+      expect(await plant.get('co', 0, 4)).toEqual([0, 1, 1, 1]); // the held valve did not move
+    }
+    relay.frame({ mode: 'paused' } as SimFrame);
+    await eventually(async () => (await plant!.get('co', 0, 4)).join() === '0,1,0,0', 5000, 'STOP: OFF but the held valve');
+  } finally {
+    client.disconnect();
+  }
 }, 60_000);
