@@ -56,6 +56,33 @@ describe('live I/O round 2: the simulated device', () => {
     expect(errors).toEqual([]);
   });
 
+  it("Safe state while running: Outputs not driven says why, whole, and its Arm is inside the window (in the one-line tool bar both were past the window's edge), and Arm drives the motor again", async () => {
+    const { page, sim, panel } = await openOnHardware('Motor start/stop (seal-in)');
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await deviceInput(0, true);
+    await eventually(async () => (await coils())[0] === 1, 10_000, 'Motor ON on the device');
+    await deviceInput(0, false);
+    await panel.getByTestId('hw-safe').click();
+    await eventually(async () => (await coils())[0] === 0, 10_000, 'safe state on the device');
+    const badge = page.getByTestId('hw-run-disarmed');
+    await expect
+      .poll(() => badge.textContent())
+      .toMatch(/^Outputs not driven — STOP or Safe state \(.*\): STOP \(.*\): outputs are held in the safe state until the controller arms again \(Run or Arm\)Arm$/);
+    const window = page.viewportSize()!;
+    for (const part of [badge.locator('.rs-hw-reason'), page.getByTestId('hw-run-arm')]) {
+      const box = (await part.boundingBox())!;
+      expect(box.x + box.width).toBeLessThanOrEqual(window.width);
+      expect(box.x).toBeGreaterThanOrEqual(0);
+      expect(box.width).toBeGreaterThan(20);
+    }
+    await page.getByTestId('hw-run-arm').click();
+    await eventually(async () => (await coils())[0] === 1, 15_000, 'driven again after its Arm');
+    await badge.waitFor({ state: 'detached' });
+    await sim.button('pause').click();
+    await eventually(async () => (await coils())[0] === 0, 10_000, 'Pause: safe state');
+  });
+
   it("the page's tab crashes while a sealed-in motor runs: the gateway sees the controller go, the motor goes OFF on the device and the lease is free", async () => {
     const { page, sim } = await openOnHardware('Motor start/stop (seal-in)');
     await sim.button('run').click();
