@@ -69,6 +69,8 @@ describe('live I/O round 2: the simulated device', () => {
     await expect
       .poll(() => badge.textContent())
       .toMatch(/^Outputs not driven — STOP or Safe state \(.*\): STOP \(.*\): outputs are held in the safe state until the controller arms again \(Run or Arm\)Arm$/);
+    // The Hardware panel names the refusal once ("Outputs refused: outputs refused: ..." before).
+    await expect.poll(() => panel.getByTestId('hw-last-error').textContent()).toMatch(/^Outputs refused: STOP \(the controller sent stop\): outputs are held/);
     const window = page.viewportSize()!;
     for (const part of [badge.locator('.rs-hw-reason'), page.getByTestId('hw-run-arm')]) {
       const box = (await part.boundingBox())!;
