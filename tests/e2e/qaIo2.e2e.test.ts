@@ -166,7 +166,7 @@ describe('live I/O round 2: a real device (pymodbus) behind a gateway that stops
     expect(await deviceCoils()).toEqual([0, 0]);
   });
 
-  it('the device lost while the page drives it (a coupler power-cycled): the toolbar says so and why, the device comes back OFF and stays OFF until Arm', async () => {
+  it('the device lost while the page drives it (a coupler power-cycled): the page says so and why, its outputs show stale, the device comes back OFF and stays OFF until Arm', async () => {
     const { page, sim, panel } = await openOnHardware('Motor start/stop (seal-in)');
     await sim.button('run').click();
     await sim.waitForMode('Running');
@@ -177,8 +177,12 @@ describe('live I/O round 2: a real device (pymodbus) behind a gateway that stops
     await expect
       .poll(() => page.getByTestId('hw-run-disarmed').textContent(), { timeout: 15_000 })
       .toMatch(/^Outputs not driven — a device was lost .*device "plant" lost its connection/);
+    // What the unreachable device's motor output holds is not known: the Hardware panel says stale, not good.
+    const motorQuality = panel.getByTestId('hw-point-%QX0.0').locator('td').last();
+    await expect.poll(() => motorQuality.textContent(), { timeout: 15_000 }).toBe('stale');
     plant = await PyModbusServer.start(modbusPort);
     await expect.poll(() => panel.getByTestId('hw-device-plant').getByTestId('hw-device-outputs').textContent(), { timeout: 30_000 }).toBe('safe state');
+    await expect.poll(() => motorQuality.textContent()).toBe('good');
     const from = await scan(page);
     await expect.poll(() => scan(page), { timeout: 30_000 }).toBeGreaterThan(from + 20);
     expect(await sim.value('Motor')).toBe(true); // the program still wants it
