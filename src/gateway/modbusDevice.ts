@@ -521,19 +521,22 @@ export class ModbusTcpDevice implements Device {
     const client = this.client;
     if (!client) throw new Error('not connected');
     const seen = new Map<string, WireValue>();
+    // Part of the safe write: it waits for a slow device as long as the write itself does.
+    const timeoutMs = this.final ? this.requestTimeoutMs : Math.max(this.requestTimeoutMs, this.cfg.safeWriteTimeoutMs);
     try {
       for (const b of this.holdBlocks) {
         const n = b.points.length;
         const raw =
           b.table === 'coils'
-            ? (await this.request(() => client.readCoils(b.start, n))).data
-            : (await this.request(() => client.readHoldingRegisters(b.start, n))).data;
+            ? (await this.request(() => client.readCoils(b.start, n), timeoutMs)).data
+            : (await this.request(() => client.readHoldingRegisters(b.start, n), timeoutMs)).data;
         b.points.forEach((p, i) => {
           const r = raw[i];
           seen.set(p.address, typeof r === 'boolean' ? r : fromRegister(p.type, r ?? 0));
         });
       }
     } catch (e) {
+      if (isTimeout(e)) this.safeWriteTimedOut = true;
       if (!isModbusException(e)) throw e;
       this.listener?.log?.(
         `device "${this.info.id}" refuses reads of its outputs (${message(e)}): its hold outputs cannot be kept as they are and are written OFF/0 in the safe state`,

@@ -183,3 +183,22 @@ it('an online change that moves the valve (hold) and the motor off their outputs
     client.disconnect();
   }
 }, 60_000);
+
+it('a slow device (1.5 s per answer, timeout 300 ms) with a hold output still gets the safe state on a new connection: the hold read waits as the safe write does', async () => {
+  const modbusPort = await freeLoopbackPort();
+  plant = await PyModbusServer.start(modbusPort);
+  await plant.set('co', 0, [1, 1]); // what a previous run left: motor and valve ON
+  await plant.mode('slow', 1500);
+  gw = await startGateway({
+    port: 0,
+    config: resolveConfig({
+      devices: [{ id: 'plant', host: '127.0.0.1', port: modbusPort, pollMs: POLL_MS, timeoutMs: 300, points: [{ address: '%QX0.0' }, { address: '%QX0.1', hold: true }] }],
+    }),
+    distDir: null,
+  });
+  const o = await TestClient.hello(gw.port, gw.token, 'observer');
+  clients.push(o);
+  await o.waitFor((m): m is Status => m.t === 'status' && m.devices[0]?.outputs === 'safe', 30_000);
+  await plant.mode('normal');
+  expect(await plant.get('co', 0, 2)).toEqual([0, 1]);
+}, 60_000);
