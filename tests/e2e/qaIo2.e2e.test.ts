@@ -85,6 +85,30 @@ describe('live I/O round 2: the simulated device', () => {
     await eventually(async () => (await coils())[0] === 0, 10_000, 'Pause: safe state');
   });
 
+  it('Warm restart while a sealed-in motor runs on the device: the motor (not RETAIN) restarts OFF in the program shown and OFF on the device; Reset (cold restart) stops and holds the safe state', async () => {
+    const { page, sim } = await openOnHardware('Motor start/stop (seal-in)');
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await deviceInput(0, true);
+    await eventually(async () => (await coils())[0] === 1, 10_000, 'Motor ON on the device');
+    await deviceInput(0, false);
+    await page.getByTestId('sim-warm').click();
+    await sim.waitForValue('Motor', false);
+    await eventually(async () => (await coils())[0] === 0, 10_000, 'Motor OFF on the device after the warm restart');
+    expect(await sim.mode()).toBe('Running');
+    const from = await scan(page);
+    await expect.poll(() => scan(page), { timeout: 30_000 }).toBeGreaterThan(from + 20);
+    expect((await coils())[0]).toBe(0);
+    // Start again drives it (still armed: the restarted program is the one shown).
+    await deviceInput(0, true);
+    await eventually(async () => (await coils())[0] === 1, 10_000, 'Motor ON again');
+    await deviceInput(0, false);
+    await sim.button('reset').click();
+    await sim.waitForMode('Stopped');
+    await eventually(async () => (await coils())[0] === 0, 10_000, 'Reset: safe state');
+    expect(lab.gateway().hub.status()).toMatchObject({ armed: false, disarm: { cause: 'stop' } });
+  });
+
   it("the page's tab crashes while a sealed-in motor runs: the gateway sees the controller go, the motor goes OFF on the device and the lease is free", async () => {
     const { page, sim } = await openOnHardware('Motor start/stop (seal-in)');
     await sim.button('run').click();
