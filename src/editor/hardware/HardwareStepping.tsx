@@ -1,5 +1,6 @@
 // Stepping with hardware attached: the confirmation dialog (mounted once by HardwareSimLink) and
-// the toolbar badge that shows the lease and watchdog while stepping drives real outputs.
+// the badge, in the notice band under the tool bar, that shows the lease and watchdog while
+// stepping drives real outputs (and why a running program's outputs are not driven).
 import { useId, type ReactNode } from 'react';
 import type { StepRequest } from '../../bridge/steppingLease';
 import type { GatewayView } from '../../bridge/GatewayClient';
@@ -106,10 +107,11 @@ function RunBadge({ testId, reason, children }: { testId: string; reason: string
 }
 
 /**
- * In the notice band under the tool bar (the one-line tool bar has no room left for it: the
- * reason and Arm were past the window's edge): while stepping drives the hardware; and while the simulation runs as
- * controller with the outputs disarmed (Safe state, arm refused, a device lost...): it keeps running
- * in the browser, the outputs stay safe, and only the operator's Arm drives them again.
+ * In the notice band under the tool bar (the one-line tool bar has no room left for it: the reason
+ * and Arm were past the window's edge): while stepping drives the hardware; and while the
+ * simulation runs as controller with the outputs disarmed (Safe state, arm refused, a device
+ * lost...): it keeps running in the browser, the outputs stay safe, and only the operator's Arm
+ * drives them again.
  */
 export function SteppingBadge() {
   const view = useSteppingView();
