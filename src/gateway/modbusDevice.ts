@@ -522,7 +522,9 @@ export class ModbusTcpDevice implements Device {
     if (!client) throw new Error('not connected');
     const seen = new Map<string, WireValue>();
     // Part of the safe write: it waits for a slow device as long as the write itself does.
-    const timeoutMs = this.final ? this.requestTimeoutMs : Math.max(this.requestTimeoutMs, this.cfg.safeWriteTimeoutMs);
+    const timeoutMs = this.final
+      ? this.requestTimeoutMs
+      : Math.max(this.requestTimeoutMs, this.cfg.safeWriteTimeoutMs);
     try {
       for (const b of this.holdBlocks) {
         const n = b.points.length;

@@ -20,11 +20,21 @@ const browser = useChromium();
 
 /** Lamp (%QX0.0) lit by the program; the device's input %IX0.1 sends an ST FB into a loop that never ends. */
 function runawayProject() {
-  const spin = textPou('Spin', 'FUNCTION_BLOCK', [...io('input', 'Run BOOL'), ...vars('N DINT')], 'N := 0;\nWHILE Run DO\n  N := N + 1;\nEND_WHILE;');
-  const main = pou('Main', 'PROGRAM', vars('Go BOOL := TRUE', 'Lamp BOOL %QX0.0', 'Trig BOOL %IX0.1', 'S1 Spin'), [
-    ladder(['[Go] (Lamp)']),
-    ladder(['[Trig] # # .', '. # # .'], { boxes: [box('Spin', 0, 1, { instance: 'S1' })] }),
-  ]);
+  const spin = textPou(
+    'Spin',
+    'FUNCTION_BLOCK',
+    [...io('input', 'Run BOOL'), ...vars('N DINT')],
+    'N := 0;\nWHILE Run DO\n  N := N + 1;\nEND_WHILE;',
+  );
+  const main = pou(
+    'Main',
+    'PROGRAM',
+    vars('Go BOOL := TRUE', 'Lamp BOOL %QX0.0', 'Trig BOOL %IX0.1', 'S1 Spin'),
+    [
+      ladder(['[Go] (Lamp)']),
+      ladder(['[Trig] # # .', '. # # .'], { boxes: [box('Spin', 0, 1, { instance: 'S1' })] }),
+    ],
+  );
   return { ...stProject([main, spin]), name: 'Runaway' };
 }
 
@@ -49,7 +59,9 @@ describe('live I/O round 2: the simulated device', () => {
     await deviceInput(1, true); // the loop's condition, from the field
     await sim.waitForMode('Faulted');
     await eventually(async () => (await coils())[0] === 0, 10_000, 'Lamp OFF on the device');
-    await expect.poll(() => page.getByTestId('sim-fault').textContent()).toMatch(/Watchdog fault in S1 \(Spin\) line 2: .*looping in the loop at line 2/);
+    await expect
+      .poll(() => page.getByTestId('sim-fault').textContent())
+      .toMatch(/Watchdog fault in S1 \(Spin\) line 2: .*looping in the loop at line 2/);
     expect(lab.gateway().hub.status().armed).toBe(false);
     await expect.poll(() => panel.getByTestId('hw-disarm').textContent()).toMatch(/held in the safe state/);
     expect((await coils())[0]).toBe(0);
@@ -68,9 +80,13 @@ describe('live I/O round 2: the simulated device', () => {
     const badge = page.getByTestId('hw-run-disarmed');
     await expect
       .poll(() => badge.textContent())
-      .toMatch(/^Outputs not driven — STOP or Safe state \(.*\): STOP \(.*\): outputs are held in the safe state until the controller arms again \(Run or Arm\)Arm$/);
+      .toMatch(
+        /^Outputs not driven — STOP or Safe state \(.*\): STOP \(.*\): outputs are held in the safe state until the controller arms again \(Run or Arm\)Arm$/,
+      );
     // The Hardware panel names the refusal once ("Outputs refused: outputs refused: ..." before).
-    await expect.poll(() => panel.getByTestId('hw-last-error').textContent()).toMatch(/^Outputs refused: STOP \(the controller sent stop\): outputs are held/);
+    await expect
+      .poll(() => panel.getByTestId('hw-last-error').textContent())
+      .toMatch(/^Outputs refused: STOP \(the controller sent stop\): outputs are held/);
     const window = page.viewportSize()!;
     for (const part of [badge.locator('.rs-hw-reason'), page.getByTestId('hw-run-arm')]) {
       const box = (await part.boundingBox())!;
@@ -94,7 +110,11 @@ describe('live I/O round 2: the simulated device', () => {
     await deviceInput(0, false);
     await page.getByTestId('sim-warm').click();
     await sim.waitForValue('Motor', false);
-    await eventually(async () => (await coils())[0] === 0, 10_000, 'Motor OFF on the device after the warm restart');
+    await eventually(
+      async () => (await coils())[0] === 0,
+      10_000,
+      'Motor OFF on the device after the warm restart',
+    );
     expect(await sim.mode()).toBe('Running');
     const from = await scan(page);
     await expect.poll(() => scan(page), { timeout: 30_000 }).toBeGreaterThan(from + 20);
@@ -119,7 +139,11 @@ describe('live I/O round 2: the simulated device', () => {
     const cdp = await page.context().newCDPSession(page);
     void cdp.send('Page.crash').catch(() => undefined); // answered only by the crash
     await eventually(async () => (await coils())[0] === 0, 10_000, 'Motor OFF on the device');
-    expect(lab.gateway().hub.status()).toMatchObject({ armed: false, controller: false, disarm: { cause: 'controller-lost' } });
+    expect(lab.gateway().hub.status()).toMatchObject({
+      armed: false,
+      controller: false,
+      disarm: { cause: 'controller-lost' },
+    });
   });
 });
 
@@ -137,7 +161,19 @@ describe('live I/O round 2: a real device (pymodbus) behind a gateway that stops
       token: TOKEN,
       distDir: 'dist',
       config: resolveConfig({
-        devices: [{ id: 'plant', host: '127.0.0.1', port: modbusPort, pollMs: 50, timeoutMs: 300, points: [{ address: '%IX0.0', count: 2 }, { address: '%QX0.0', count: 2 }] }],
+        devices: [
+          {
+            id: 'plant',
+            host: '127.0.0.1',
+            port: modbusPort,
+            pollMs: 50,
+            timeoutMs: 300,
+            points: [
+              { address: '%IX0.0', count: 2 },
+              { address: '%QX0.0', count: 2 },
+            ],
+          },
+        ],
       }),
     });
     httpPort = gw.port;
@@ -174,17 +210,25 @@ describe('live I/O round 2: a real device (pymodbus) behind a gateway that stops
 
     await gw!.close(); // its shutdown writes the safe state last
     expect(await deviceCoils()).toEqual([0, 0]);
-    await expect.poll(() => page.getByTestId('hw-run-link-lost').textContent()).toMatch(/^Outputs not driven — hardware link lost/);
+    await expect
+      .poll(() => page.getByTestId('hw-run-link-lost').textContent())
+      .toMatch(/^Outputs not driven — hardware link lost/);
     expect(await row.getByTestId('watch-value').textContent()).toMatch(/^TRUE F/); // still forced in the page while the link is down
 
     await startGw();
-    await expect.poll(() => panel.getByTestId('hw-link').textContent(), { timeout: 30_000 }).toBe('Connected as controller');
+    await expect
+      .poll(() => panel.getByTestId('hw-link').textContent(), { timeout: 30_000 })
+      .toBe('Connected as controller');
     await expect
       .poll(() => page.getByTestId('sim-notice').textContent())
-      .toMatch(/^Unforced Motor \(%QX0\.0\): the link to the gateway was lost and is open again; a force on the hardware ends with its link/);
+      .toMatch(
+        /^Unforced Motor \(%QX0\.0\): the link to the gateway was lost and is open again; a force on the hardware ends with its link/,
+      );
     // No longer forced (no F); sealed in, the program still holds it TRUE, and the device's OFF is shown beside it.
     await expect.poll(() => row.getByTestId('watch-value').textContent()).toBe('TRUE device: FALSE');
-    await expect.poll(() => page.getByTestId('hw-run-disarmed').textContent()).toMatch(/^Outputs not driven — not armed since the gateway started/);
+    await expect
+      .poll(() => page.getByTestId('hw-run-disarmed').textContent())
+      .toMatch(/^Outputs not driven — not armed since the gateway started/);
     const from = await scan(page);
     await expect.poll(() => scan(page), { timeout: 30_000 }).toBeGreaterThan(from + 20);
     expect(await deviceCoils()).toEqual([0, 0]);
@@ -205,7 +249,11 @@ describe('live I/O round 2: a real device (pymodbus) behind a gateway that stops
     const motorQuality = panel.getByTestId('hw-point-%QX0.0').locator('td').last();
     await expect.poll(() => motorQuality.textContent(), { timeout: 15_000 }).toBe('stale');
     plant = await PyModbusServer.start(modbusPort);
-    await expect.poll(() => panel.getByTestId('hw-device-plant').getByTestId('hw-device-outputs').textContent(), { timeout: 30_000 }).toBe('safe state');
+    await expect
+      .poll(() => panel.getByTestId('hw-device-plant').getByTestId('hw-device-outputs').textContent(), {
+        timeout: 30_000,
+      })
+      .toBe('safe state');
     await expect.poll(() => motorQuality.textContent()).toBe('good');
     const from = await scan(page);
     await expect.poll(() => scan(page), { timeout: 30_000 }).toBeGreaterThan(from + 20);
