@@ -162,7 +162,7 @@ async function main(): Promise<void> {
   const gw = await startGateway({ port, config, distDir, token, log });
   running.gw = gw;
   const sim = gw.simulated?.modbusServerPort;
-  log(gw.simulated ? `simulated I/O device (16 DI, 16 DO, 4 AI, 4 AO)${sim ? `, Modbus TCP on 127.0.0.1:${sim}` : ''}${config.simulated.plant ? `; it is the machine "${config.simulated.plant}" (its actuators are the coils a Modbus master writes, docs/PLANTS.md)` : ''}` : `${config.devices.length} Modbus TCP device(s)`);
+  log(gw.simulated ? `simulated I/O device (16 DI, 16 DO, 4 AI, 4 AO)${sim ? `, Modbus TCP on 127.0.0.1:${sim}` : ''}${config.simulated.plant ? `; it is the machine "${config.simulated.plant}" (its actuators are the coils a Modbus master writes, docs/PLANTS.md; ${config.simulated.masterWatchdogMs > 0 ? `they fall OFF after ${config.simulated.masterWatchdogMs} ms without a write, --plant-watchdog` : 'no watchdog: --plant-watchdog 0'})` : ''}` : `${config.devices.length} Modbus TCP device(s)`);
   try {
     process.stdout.write(`Rungsmith gateway: open ${gw.url}\n`);
   } catch {
