@@ -81,6 +81,8 @@ export class SimulatedDevice implements Device {
    * without TCP noticing, another client such as an HMI keeping a connection open) loses its outputs.
    */
   private masterWatchdog: ReturnType<typeof setTimeout> | undefined;
+  /** `--plant`: the machine's push buttons (momentary) held pressed over Modbus (coil 800 + n), by address. */
+  private readonly buttonsHeld = new Set<string>();
 
   /**
    * @param modbusPort loopback port of the Modbus server (0: any free port; null: no server).
@@ -259,18 +261,31 @@ export class SimulatedDevice implements Device {
     // The machine writes its sensors' inputs only when they change: a value written over one would
     // stay, a limit switch ON with nothing behind it. Its operator controls may be pressed.
     if (this.machineSensorRefusal(p.address)) throw MACHINE_SENSOR;
+    const button = this.plant?.points.find((q) => q.kind === 'operator' && q.control === 'button' && addressKey(q.address) === addressKey(p.address));
+    if (button && value === true) this.buttonsHeld.add(p.address);
+    else this.buttonsHeld.delete(p.address);
     this.simulateInputs(new Map([[p.address, value]]));
   }
 
   /**
-   * A Modbus connection closed: with none left, the outputs the masters wrote fall OFF / 0. Deferred
-   * one timer turn, after the requests that connection sent last (modbus-serial serves each on a timer).
+   * A Modbus connection closed: with none left, the outputs the masters wrote fall OFF / 0, and the
+   * push buttons held over Modbus spring back (an operator who let go; a switch stays as it was set).
+   * Deferred one timer turn, after the requests that connection sent last (modbus-serial serves each
+   * on a timer).
    */
   private masterGone(server: ModbusServer): void {
-    if (!this.plant) return;
+    const plant = this.plant;
+    if (!plant) return;
     setTimeout(() => {
       if (this.server !== server || server.socks.size > 0) return;
       this.dropMasterOutputs('the Modbus master (the PLC) disconnected');
+      if (this.buttonsHeld.size === 0) return;
+      const released = [...this.buttonsHeld];
+      this.buttonsHeld.clear();
+      this.simulateInputs(new Map(released.map((a) => [a, false])));
+      const keys = new Set(released.map(addressKey));
+      const names = plant.points.filter((p) => keys.has(addressKey(p.address))).map((p) => p.name);
+      this.log(`machine "${plant.model.id}": the last Modbus client disconnected holding ${names.join(', ')}; released (a push button springs back)`);
     }, 0);
   }
 

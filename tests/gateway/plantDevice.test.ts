@@ -357,3 +357,29 @@ test('--plant-watchdog 0 turns the device watchdog off (a master writing once ke
   expect(bad.code).toBe(2);
   expect(bad.err).toContain('--plant-watchdog: needs 0 (off) or 100 to 60000 ms, got "50"');
 }, 60_000);
+
+test("a push button held over Modbus (an HMI, a test script) springs back when the last Modbus client disconnects", async () => {
+  const log: string[] = [];
+  device = new SimulatedDevice(0, 'garage', (line) => log.push(line));
+  await device.start({ inputs: () => undefined, written: () => undefined, status: () => undefined } as never);
+  const port = device.modbusServerPort!;
+  // Coil 800 + n sets discrete input n: %IX0.0 the garage's KeyOpen push button, pressed and never
+  // released by a script that ends (or an HMI that crashes) while holding it.
+  const run = await python(
+    [
+      'import sys',
+      'from pymodbus.client import ModbusTcpClient',
+      'c = ModbusTcpClient("127.0.0.1", port=int(sys.argv[1]))',
+      'assert c.connect()',
+      'assert not c.write_coil(800, True).isError()',
+      'print("held", c.read_discrete_inputs(0, count=1).bits[0], flush=True)',
+      'c.close()',
+    ].join('\n'),
+    port,
+  );
+  expect(run.out).toContain('held True');
+  await until(() => device!.inputValues().get('%IX0.0') === false, 'KeyOpen released');
+  expect(mbpollValues(await mbpoll(port, ['-t', '1', '-r', '0', '-c', '1', '127.0.0.1']))).toEqual([0]);
+  expect(device.plantRead('garage.KeyOpen')).toBe(false);
+  expect(log).toContain('machine "garage": the last Modbus client disconnected holding KeyOpen; released (a push button springs back)');
+}, 60_000);
