@@ -179,7 +179,7 @@ test("an exercise's task is the first thing under the machine: its goal in one l
   expect(errors).toEqual([]);
 });
 
-test("a machine's point named on a contact in a new project is declared at the machine's address by Enter; a name of the program's own gets no machine wire", async () => {
+test("a machine's point named on a contact in a new project is declared at the machine's address by Enter; a name of the program's own gets no machine wire; part of a point's name offers the point", async () => {
   await sim.draw.menu('File', 'New project');
   const discard = page.getByRole('button', { name: 'Discard and start new' });
   if (await discard.isVisible().catch(() => false)) await discard.click();
@@ -207,6 +207,12 @@ test("a machine's point named on a contact in a new project is declared at the m
   const offers = await page.locator('li[role="option"]').allTextContents();
   expect(offers).toContain('Declare ResetBOOL input at %IX0.4');
   expect(offers.join('\n')).not.toContain('%IX0.0');
+  // Part of a point's name: the machine's point is offered too, below the name typed (Enter keeps "High").
+  await input.fill('High');
+  await expect
+    .poll(() => page.locator('li[role="option"]').allTextContents())
+    .toContain("Declare HighLevelBOOL input at %IX0.3, the machine's HighLevel");
+  expect(await page.locator('li[role="option"][aria-selected="true"]').textContent()).toBe('Declare HighBOOL');
   await page.keyboard.press('Escape');
   expect(errors).toEqual([]);
 });

@@ -1,7 +1,7 @@
 // Declaring a name on the canvas with a machine chosen (issue 26): the machine's point is offered
 // at the machine's address first, and the next free address skips the machine's wires.
 import { describe, expect, test } from 'vitest';
-import { declareChoices } from '../../src/editor/inspector/declareOffer';
+import { declareChoices, machinePointOffers } from '../../src/editor/inspector/declareOffer';
 import { nextFreeAddress } from '../../src/editor/variables/addresses';
 import { newPou, newProject, variable } from '../../src/model/factory';
 import type { Project } from '../../src/model/project';
@@ -44,5 +44,27 @@ describe('the next free address with a machine chosen', () => {
     expect(nextFreeAddress(tankProject(), 'I', 'INT')).toBe('%IW1');
     expect(nextFreeAddress(tankProject([], { Start: '%IX0.4' }), 'I', 'BOOL')).toBe('%IX0.0');
     expect(nextFreeAddress(tankProject(), 'M', 'BOOL')).toBe('%MX0.0');
+  });
+});
+
+describe("the machine's points while a name is typed", () => {
+  const main = (p: Project) => p.pous[0]!;
+  test('the undeclared points starting with it, of the type the place takes, at their addresses', () => {
+    const project = tankProject([['HighLevel', 'BOOL', { location: '%IX0.3' }]]);
+    const offers = (typed: string, role: Parameters<typeof machinePointOffers>[2]) =>
+      machinePointOffers(project, typed, role, main(project)).map((c) => c.label);
+    expect(offers('L', contact)).toEqual(["BOOL input at %IX0.2, the machine's LowLevel"]);
+    // HighLevel is declared already; the name typed whole is declareChoices' own offer.
+    expect(offers('Hi', contact)).toEqual([]);
+    expect(offers('Level', { kind: 'pin', direction: 'input', pinType: 'ANY_NUM' })).toEqual([]);
+    expect(offers('Lev', { kind: 'pin', direction: 'input', pinType: 'ANY_NUM' })).toEqual(["INT input at %IW0, the machine's Level"]);
+    expect(offers('', contact)).toEqual([]);
+    expect(offers('P', coil)).toEqual(["BOOL output at %QX0.0, the machine's Pump"]);
+  });
+  test('not in a function block, nor without a machine', () => {
+    const fb = { kind: 'FUNCTION_BLOCK' as const, variables: [] };
+    expect(machinePointOffers(tankProject(), 'L', contact, fb)).toEqual([]);
+    const none = newProject('p', { pous: [newPou('Main')] });
+    expect(machinePointOffers(none, 'L', contact, none.pous[0]!)).toEqual([]);
   });
 });

@@ -12,7 +12,7 @@ import { useId, useMemo, useRef, useState, type KeyboardEvent } from 'react';
 import { parseLiteral } from '../../engine/values/literals';
 import { selectActivePou, selectProject, useDocument, useDocumentStore } from '../../store/documentStore';
 import { focusCanvas } from '../canvas/focusCanvas';
-import { declareChoice, declareChoices, typedDeclaration, type DeclareChoice } from './declareOffer';
+import { declareChoice, declareChoices, machinePointOffers, typedDeclaration, type DeclareChoice } from './declareOffer';
 import { blockLibrary } from '../../model/library';
 import { freshInstanceName } from '../../store/pouEdits';
 import { candidatesFor, rankCandidates, resolveName, type BindingRole, type Candidate } from './operands';
@@ -124,7 +124,9 @@ export function VariableInput(props: VariableInputProps) {
     const q = text.trim().toUpperCase();
     const starts = ranked.filter((o) => o.candidate.text.toUpperCase().startsWith(q));
     const contains = ranked.filter((o) => !o.candidate.text.toUpperCase().startsWith(q));
-    return [...starts, ...declares, ...contains];
+    // The machine's points that start with it (`Hi`: HighLevel), after the offer of the name typed.
+    const machine = typed ? [] : machinePointOffers(project, text, role, pou).map((choice) => ({ kind: 'declare' as const, choice }));
+    return [...starts, ...declares, ...machine, ...contains];
     // eslint-disable-next-line react-hooks/exhaustive-deps -- `role` is compared by value (callers build it per render)
   }, [project, pou, roleKey, candidates, text, open]);
   const shown = open && options.length > 0;

@@ -188,6 +188,26 @@ export function declareChoices(
 }
 
 /**
+ * In a program of a project with a machine: the machine's points not declared yet whose names start
+ * with what was typed (`Hi` -> HighLevel), each offered at the machine's address, so a newcomer sees
+ * the machine's names while typing. The name typed whole is offered by declareChoices itself.
+ */
+export function machinePointOffers(
+  project: Project,
+  typed: string,
+  role: BindingRole,
+  pou: Pick<Pou, 'kind' | 'variables'>,
+): DeclareChoice[] {
+  const q = typed.trim().toUpperCase();
+  if (q === '' || pou.kind !== 'PROGRAM' || role.kind === 'instance') return [];
+  const declared = new Set([...pou.variables, ...project.globals].map((v) => v.name.toUpperCase()));
+  const type = suggestedType(role).toUpperCase();
+  return machinePoints(project)
+    .filter((p) => p.name.toUpperCase().startsWith(q) && p.name.toUpperCase() !== q && !declared.has(p.name.toUpperCase()))
+    .flatMap((p) => machineOffer(project, p.name, type, role) ?? []);
+}
+
+/**
  * The declaration of a point of the project's machine named `name` (any case), at the address the
  * machine is wired to, with the point's comment: undefined when there is no such point, its type is
  * not `type`, or a variable of the project has its address already.
