@@ -273,6 +273,31 @@ test("New scenario in a machine exercise runs against the machine: # plant: tank
   expect(errors).toEqual([]);
 });
 
+test("a watched machine name whose machine is no longer chosen says so, with nothing to write or force; it reads again when the machine is chosen back", async () => {
+  await openExample('Tank level control (machine: tank)');
+  await sim.tab('Watch');
+  await page.getByTestId('watch-add-name').fill('tank.level');
+  await page.getByTestId('watch-add').click();
+  const row = page.getByTestId('watch-row-tank.level');
+  await expect.poll(() => row.getByTestId('watch-value').textContent()).toBe('100.0 L');
+  await sim.tab('Plant');
+  await page.getByTestId('plant-choose').selectOption('garage');
+  await sim.tab('Watch');
+  // It offered Write and Force, and Force said: unknown variable "tank.level".
+  await expect.poll(() => row.getByTestId('watch-detached').textContent()).toBe('tank not chosen');
+  expect(await row.getByTestId('watch-detached').getAttribute('title')).toBe(
+    "The machine tank (Tank level control) is not chosen: the project's machine is garage; choose it in the Plant panel to read tank.level.",
+  );
+  expect(await row.locator('td').nth(1).textContent()).toBe('REAL');
+  expect(await row.getByRole('button').allTextContents()).toEqual(['×']);
+  await sim.tab('Plant');
+  await page.getByTestId('plant-choose').selectOption('tank');
+  await sim.tab('Watch');
+  await expect.poll(() => row.getByTestId('watch-value').textContent()).toBe('100.0 L');
+  await row.getByRole('button', { name: 'Stop watching tank.level' }).click();
+  expect(errors).toEqual([]);
+});
+
 test("with the side panel at its narrowest, every operator button of every machine stays whole on its drawing (the garage's Doorway ran off its right edge)", async () => {
   const panels = (right: number) =>
     page.evaluate((r) => {

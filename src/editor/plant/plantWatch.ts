@@ -2,7 +2,7 @@
 // offered by the add fields as the program's names are, read off the machine the worker last
 // showed (live) or as it was at the recorded scan viewed.
 import { useMemo } from 'react';
-import { plantById } from '../../plant/machines';
+import { PLANTS, plantById } from '../../plant/machines';
 import { findPlantName, formatPlantValue, plantNames, plantValue, type PlantName } from '../../plant/values';
 import type { SimVariable } from '../../sim/protocol';
 import type { DocumentState } from '../../store/documentStore';
@@ -33,6 +33,26 @@ export function plantNameInfo(project: { readonly plant?: { readonly id: string 
   if (!model || !ref) return undefined;
   const spelt = `${model.id}.${ref.quantity?.name ?? ref.point!.name}`;
   return plantNames(model).find((n) => n.name === spelt);
+}
+
+/**
+ * `tank.level` when the project's machine is another one (or none): the name of which machine, and
+ * what it is, so the watch says the machine is not chosen instead of offering to write or force an
+ * unknown variable ("unknown variable \"tank.level\""). Undefined for any other name.
+ */
+export function otherPlantNameInfo(
+  project: { readonly plant?: { readonly id: string } },
+  name: string,
+): { readonly machine: string; readonly title: string; readonly info: PlantName } | undefined {
+  for (const model of PLANTS) {
+    if (model.id === project.plant?.id) continue;
+    const ref = findPlantName(model, name);
+    if (!ref) continue;
+    const spelt = `${model.id}.${ref.quantity?.name ?? ref.point!.name}`;
+    const info = plantNames(model).find((n) => n.name === spelt);
+    if (info) return { machine: model.id, title: model.title, info };
+  }
+  return undefined;
 }
 
 /**

@@ -17,7 +17,7 @@ import { useConfigurationInstances, useWatchCandidates } from './useWatchCandida
 import { VariablePicker } from './VariablePicker';
 import { preparedValues } from './preparedValues';
 import { aggregateCandidates, enumText, leafCount, modelLeaf, watchTree, type WatchNode } from './watchTree';
-import { plantNameInfo, plantWatchText, usePlantCandidates } from '../plant/plantWatch';
+import { otherPlantNameInfo, plantNameInfo, plantWatchText, usePlantCandidates } from '../plant/plantWatch';
 import type { PlantName } from '../../plant/values';
 import './sim.css';
 
@@ -64,6 +64,9 @@ export function WatchPanel() {
               const members = variable ? [] : watchTree(name, readable);
               const onMachine = variable || members.length > 0 ? undefined : plantNameInfo(project, name);
               if (onMachine) return <PlantWatchRow key={name} name={name} info={onMachine} />;
+              const elsewhere = variable || members.length > 0 ? undefined : otherPlantNameInfo(project, name);
+              if (elsewhere)
+                return <DetachedPlantRow key={name} name={name} other={elsewhere} current={project.plant?.id} />;
               return members.length > 0 ? (
                 <WatchGroup key={name} node={{ path: name, label: name, children: members }} depth={0}
                   type={candidates.find((c) => c.name.toUpperCase() === name.toUpperCase())?.type} />
@@ -97,6 +100,37 @@ function PlantWatchRow({ name, info }: { name: string; info: PlantName }) {
         <label className="rs-sim-check" title="Show in the trend">
           <input type="checkbox" checked={inTrend} onChange={() => sim.getState().toggleTrend(name)} /> Trend
         </label>
+        <button type="button" className="rs-sim-icon" aria-label={`Stop watching ${name}`} onClick={() => sim.getState().removeWatch(name)}>×</button>
+      </td>
+    </tr>
+  );
+}
+
+/**
+ * A name of a machine the project does not have now (`tank.level` watched, then the garage chosen):
+ * said so, with nothing to write or force (it offered Write and Force, which answered
+ * "unknown variable"); it reads again when that machine is chosen.
+ */
+function DetachedPlantRow({
+  name,
+  other,
+  current,
+}: {
+  name: string;
+  other: { readonly machine: string; readonly title: string; readonly info: PlantName };
+  current: string | undefined;
+}) {
+  const sim = useSimStore();
+  const why = `The machine ${other.machine} (${other.title}) is not chosen${current ? `: the project's machine is ${current}` : ''}; choose it in the Plant panel to read ${name}.`;
+  return (
+    <tr data-testid={`watch-row-${name}`} className="rs-watch-machine">
+      <td title={why}>{name}</td>
+      <td>{other.info.type}</td>
+      <td data-testid="watch-value">—</td>
+      <td className="rs-sim-unit" data-testid="watch-detached" title={why}>
+        {other.machine} not chosen
+      </td>
+      <td className="rs-sim-actions">
         <button type="button" className="rs-sim-icon" aria-label={`Stop watching ${name}`} onClick={() => sim.getState().removeWatch(name)}>×</button>
       </td>
     </tr>
