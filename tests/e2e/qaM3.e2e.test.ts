@@ -45,7 +45,11 @@ test("a scenario run from the Tests tab starts with no fault set: a troubleshoot
   await page.getByTestId('tests-new').click();
   const editor = page.getByTestId('scenario-editor');
   await editor.getByRole('textbox', { name: 'Name' }).fill('Dead pump');
-  await editor.getByLabel('Scenario CSV').fill('# plant: tank\n# cycle: 100ms\nscan,tank.Start,fault pump_dead,expect tank.pump\n1,1,1,\n50,,,0\n');
+  await editor
+    .getByLabel('Scenario CSV')
+    .fill(
+      '# plant: tank\n# cycle: 100ms\nscan,tank.Start,fault pump_dead,expect tank.pump\n1,1,1,\n50,,,0\n',
+    );
   await editor.getByRole('button', { name: 'Save scenario' }).click();
   expect(await runScenario(1)).toBe('PASS in 50 scans');
   // The reference solution still holds the tank: the dead pump was that scenario's, not this one's.
@@ -60,7 +64,9 @@ test("a scenario run from the Tests tab uses the project's I/O map, as `rungsmit
   await address.fill('%QX1.0');
   await address.press('Enter');
   await page.getByTestId('plant-declare').click();
-  await expect.poll(() => page.getByTestId('plant-declared').textContent()).toBe('Moved Pump from %QX0.0 to %QX1.0.');
+  await expect
+    .poll(() => page.getByTestId('plant-declared').textContent())
+    .toBe('Moved Pump from %QX0.0 to %QX1.0.');
   await expect.poll(() => page.getByTestId('plant-wired-Pump').textContent()).toBe('Pump');
   await sim.tab('Tests');
   // It failed at scan 600 with the level still at 100 L: the replay's tank had its pump at %QX0.0.
@@ -75,14 +81,20 @@ test("a refused address keeps its problem and its mark while another point is re
   await pump.fill('hello');
   await pump.press('Tab');
   const problems = page.getByTestId('plant-io-problem');
-  await expect.poll(() => problems.allTextContents()).toEqual(['Pump: "hello" is not an IEC address (%IX0.0, %IW2, %QX1.3)']);
+  await expect
+    .poll(() => problems.allTextContents())
+    .toEqual(['Pump: "hello" is not an IEC address (%IX0.0, %IW2, %QX1.3)']);
   // Another point rewired: the field still says "hello", so its problem stays said (it vanished,
   // leaving Pump's field showing an address the pump does not have and no error).
   const lamp = page.getByTestId('plant-address-RunLamp');
   await lamp.fill('%QX1.3');
   await lamp.press('Enter');
-  await expect.poll(() => page.getByTestId('plant-wired-RunLamp').textContent()).toBe('not wired: RunLamp is at %QX0.3');
-  expect(await problems.allTextContents()).toEqual(['Pump: "hello" is not an IEC address (%IX0.0, %IW2, %QX1.3)']);
+  await expect
+    .poll(() => page.getByTestId('plant-wired-RunLamp').textContent())
+    .toBe('not wired: RunLamp is at %QX0.3');
+  expect(await problems.allTextContents()).toEqual([
+    'Pump: "hello" is not an IEC address (%IX0.0, %IW2, %QX1.3)',
+  ]);
   expect(await pump.inputValue()).toBe('hello');
   expect(await pump.getAttribute('aria-invalid')).toBe('true');
   expect(await lamp.getAttribute('aria-invalid')).toBe('false');
@@ -127,12 +139,21 @@ test('a reload in the middle of a machine exercise brings the work back with the
   const address = page.getByTestId('plant-address-WarningLamp');
   await address.fill('%QX1.7');
   await address.press('Enter');
-  await expect.poll(() => page.getByTestId('plant-wired-WarningLamp').textContent()).toBe('not wired: WarningLamp is at %QX0.2');
+  await expect
+    .poll(() => page.getByTestId('plant-wired-WarningLamp').textContent())
+    .toBe('not wired: WarningLamp is at %QX0.2');
   // The change is autosaved (the status says when), then the page is reloaded.
-  await expect.poll(() => page.getByTestId('autosave-status').getAttribute('data-pending'), { timeout: 30_000 }).toBe('false');
+  await expect
+    .poll(() => page.getByTestId('autosave-status').getAttribute('data-pending'), { timeout: 30_000 })
+    .toBe('false');
   await page.reload();
-  await page.getByTestId('file-notice').filter({ hasText: 'Restored "Garage door"' }).waitFor({ timeout: 30_000 });
-  await expect.poll(() => page.getByRole('tab', { name: 'Plant' }).getAttribute('aria-selected')).toBe('true');
+  await page
+    .getByTestId('file-notice')
+    .filter({ hasText: 'Restored "Garage door"' })
+    .waitFor({ timeout: 30_000 });
+  await expect
+    .poll(() => page.getByRole('tab', { name: 'Plant' }).getAttribute('aria-selected'))
+    .toBe('true');
   await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('garage');
   expect(await page.getByTestId('plant-address-WarningLamp').inputValue()).toBe('%QX1.7');
   expect(await page.locator('.rs-plant-drawing canvas').isVisible()).toBe(true);
@@ -143,18 +164,30 @@ test('a wrong solution that overflows the tank fails its scenario at the scan of
   await openExample('Tank level control (machine: tank)');
   // The classic mistake: nothing stops filling at the high switch.
   await page.getByRole('button', { name: 'Delete network 4' }).click();
-  await expect.poll(async () => (await sim.draw.networks()).map((n) => n.title)).not.toContain('Stop filling');
+  await expect
+    .poll(async () => (await sim.draw.networks()).map((n) => n.title))
+    .not.toContain('Stop filling');
   await sim.tab('Tests');
   expect(await runScenario(0)).toMatch(/^FAIL: the tank overflowed at scan [\d,]+ \([\d.]+ s\)$/);
-  expect(await rows().nth(0).getByTestId('tests-failure').textContent()).toMatch(/^the tank overflowed at scan [\d,]+ /);
+  expect(await rows().nth(0).getByTestId('tests-failure').textContent()).toMatch(
+    /^the tank overflowed at scan [\d,]+ /,
+  );
   // "Why it failed" explains the machine at that scan, as it does a divergence: the pump and the
   // inlet still driven with the tank full, and ◀ steps back through the run.
-  const scan = Number((await page.getByTestId('scenario-run-result').textContent())!.match(/scan ([\d,]+)/)![1]!.replace(/,/g, ''));
+  const scan = Number(
+    (await page.getByTestId('scenario-run-result').textContent())!
+      .match(/scan ([\d,]+)/)![1]!
+      .replace(/,/g, ''),
+  );
   const title = page.getByTestId('scenario-why-title');
-  await expect.poll(() => title.textContent(), { timeout: 30_000 }).toBe(`tank.overflows is 1 after scan ${scan.toLocaleString('en-US')}`);
+  await expect
+    .poll(() => title.textContent(), { timeout: 30_000 })
+    .toBe(`tank.overflows is 1 after scan ${scan.toLocaleString('en-US')}`);
   expect(await page.getByTestId('scenario-why').textContent()).toMatch(/pump 100\.0 %, inlet 100\.0 %/);
   await page.getByTestId('scenario-why').getByRole('button', { name: 'Previous scan' }).click();
-  await expect.poll(() => title.textContent()).toBe(`tank.overflows is 0 after scan ${(scan - 1).toLocaleString('en-US')}`);
+  await expect
+    .poll(() => title.textContent())
+    .toBe(`tank.overflows is 0 after scan ${(scan - 1).toLocaleString('en-US')}`);
   expect(errors).toEqual([]);
 });
 
@@ -212,26 +245,40 @@ test("a machine's point named on a contact in a new project is declared at the m
   await expect
     .poll(() => page.locator('li[role="option"]').allTextContents())
     .toContain("Declare HighLevelBOOL input at %IX0.3, the machine's HighLevel");
-  expect(await page.locator('li[role="option"][aria-selected="true"]').textContent()).toBe('Declare HighBOOL');
+  expect(await page.locator('li[role="option"][aria-selected="true"]').textContent()).toBe(
+    'Declare HighBOOL',
+  );
   await page.keyboard.press('Escape');
   expect(errors).toEqual([]);
 });
 
-test("a reload keeps the faults set on purpose and a switch turned ON, as Reset does (the machine starts over); push buttons spring back", async () => {
+test('a reload keeps the faults set on purpose and a switch turned ON, as Reset does (the machine starts over); push buttons spring back', async () => {
   await openExample('Garage door (machine: garage)');
   await sim.tab('Plant');
   const plant = () =>
     page.evaluate(
-      () => (window.rungsmith as unknown as { simStore: { getState(): { plant?: { now: { faults: string[]; operator: Record<string, boolean> } } } } }).simStore.getState().plant?.now,
+      () =>
+        (
+          window.rungsmith as unknown as {
+            simStore: {
+              getState(): { plant?: { now: { faults: string[]; operator: Record<string, boolean> } } };
+            };
+          }
+        ).simStore.getState().plant?.now,
     );
   const fault = page.getByTestId('plant-fault-open_stuck_off');
   await fault.check();
   await page.getByTestId('plant-op-Doorway').click();
   await expect.poll(async () => (await plant())?.faults).toEqual(['open_stuck_off']);
   await expect.poll(async () => (await plant())?.operator.Doorway).toBe(true);
-  await expect.poll(() => page.getByTestId('autosave-status').getAttribute('data-pending'), { timeout: 30_000 }).toBe('false');
+  await expect
+    .poll(() => page.getByTestId('autosave-status').getAttribute('data-pending'), { timeout: 30_000 })
+    .toBe('false');
   await page.reload();
-  await page.getByTestId('file-notice').filter({ hasText: 'Restored "Garage door"' }).waitFor({ timeout: 30_000 });
+  await page
+    .getByTestId('file-notice')
+    .filter({ hasText: 'Restored "Garage door"' })
+    .waitFor({ timeout: 30_000 });
   await expect.poll(async () => (await plant())?.faults, { timeout: 30_000 }).toEqual(['open_stuck_off']);
   await expect.poll(async () => (await plant())?.operator.Doorway).toBe(true);
   expect(await page.getByTestId('plant-fault-open_stuck_off').isChecked()).toBe(true);
@@ -243,7 +290,10 @@ test("a reload keeps the faults set on purpose and a switch turned ON, as Reset 
   await expect.poll(async () => (await plant())?.faults).toEqual([]);
   await expect.poll(async () => (await plant())?.operator.Doorway).toBe(false);
   await page.reload();
-  await page.getByTestId('file-notice').filter({ hasText: 'Restored "Garage door"' }).waitFor({ timeout: 30_000 });
+  await page
+    .getByTestId('file-notice')
+    .filter({ hasText: 'Restored "Garage door"' })
+    .waitFor({ timeout: 30_000 });
   await expect.poll(() => page.getByTestId('plant-choose').inputValue()).toBe('garage');
   await expect.poll(async () => (await plant())?.operator.Doorway).toBe(false);
   expect((await plant())?.faults).toEqual([]);
@@ -273,7 +323,7 @@ test("New scenario in a machine exercise runs against the machine: # plant: tank
   expect(errors).toEqual([]);
 });
 
-test("a watched machine name whose machine is no longer chosen says so, with nothing to write or force; it reads again when the machine is chosen back", async () => {
+test('a watched machine name whose machine is no longer chosen says so, with nothing to write or force; it reads again when the machine is chosen back', async () => {
   await openExample('Tank level control (machine: tank)');
   await sim.tab('Watch');
   await page.getByTestId('watch-add-name').fill('tank.level');
@@ -307,9 +357,14 @@ test("with the side panel at its narrowest, every operator button of every machi
   await panels(240);
   try {
     await page.reload();
-    await page.getByRole('heading', { name: /Rungsmith/ }).first().waitFor();
+    await page
+      .getByRole('heading', { name: /Rungsmith/ })
+      .first()
+      .waitFor();
     await sim.tab('Plant');
-    await expect.poll(async () => (await page.getByTestId('plant-panel').boundingBox())?.width).toBeLessThanOrEqual(240);
+    await expect
+      .poll(async () => (await page.getByTestId('plant-panel').boundingBox())?.width)
+      .toBeLessThanOrEqual(240);
     for (const id of ['tank', 'lift', 'garage', 'mixer', 'boxes', 'intersection']) {
       await page.getByTestId('plant-choose').selectOption(id);
       await expect.poll(() => page.locator('.rs-plant-op').count()).toBeGreaterThan(0);

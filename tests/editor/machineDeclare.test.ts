@@ -18,16 +18,26 @@ describe("a machine's point typed on a contact or coil", () => {
   test('is offered first at the address the machine has it, with its comment, whatever the case typed', () => {
     const [first] = declareChoices(tankProject(), 'lowlevel', contact);
     expect(first!.label).toBe("BOOL input at %IX0.2, the machine's LowLevel");
-    expect(first!.variable).toMatchObject({ name: 'lowlevel', type: 'BOOL', location: '%IX0.2', comment: 'Low level float switch, ON at 200 L and above' });
-    expect(declareChoices(tankProject(), 'Pump', coil)[0]!.label).toBe("BOOL output at %QX0.0, the machine's Pump");
+    expect(first!.variable).toMatchObject({
+      name: 'lowlevel',
+      type: 'BOOL',
+      location: '%IX0.2',
+      comment: 'Low level float switch, ON at 200 L and above',
+    });
+    expect(declareChoices(tankProject(), 'Pump', coil)[0]!.label).toBe(
+      "BOOL output at %QX0.0, the machine's Pump",
+    );
   });
   test('at its rewired address; not offered when a variable has that address already, or for another type', () => {
-    expect(declareChoices(tankProject([], { Pump: '%QX1.0' }), 'Pump', coil)[0]!.variable.location).toBe('%QX1.0');
+    expect(declareChoices(tankProject([], { Pump: '%QX1.0' }), 'Pump', coil)[0]!.variable.location).toBe(
+      '%QX1.0',
+    );
     const taken = declareChoices(tankProject([['Feed', 'BOOL', { location: '%QX0.0' }]]), 'Pump', coil);
     expect(taken.map((c) => c.label)).not.toContain("BOOL output at %QX0.0, the machine's Pump");
-    expect(declareChoices(tankProject(), 'Level', { kind: 'pin', direction: 'input', pinType: 'ANY_NUM' })[0]!.label).toBe(
-      "INT input at %IW0, the machine's Level",
-    );
+    expect(
+      declareChoices(tankProject(), 'Level', { kind: 'pin', direction: 'input', pinType: 'ANY_NUM' })[0]!
+        .label,
+    ).toBe("INT input at %IW0, the machine's Level");
     expect(declareChoices(tankProject(), 'Level', contact)[0]!.label).toBe('BOOL');
   });
   test('a name that is no point of the machine gets no such offer; without a machine nothing changes', () => {
@@ -57,7 +67,9 @@ describe("the machine's points while a name is typed", () => {
     // HighLevel is declared already; the name typed whole is declareChoices' own offer.
     expect(offers('Hi', contact)).toEqual([]);
     expect(offers('Level', { kind: 'pin', direction: 'input', pinType: 'ANY_NUM' })).toEqual([]);
-    expect(offers('Lev', { kind: 'pin', direction: 'input', pinType: 'ANY_NUM' })).toEqual(["INT input at %IW0, the machine's Level"]);
+    expect(offers('Lev', { kind: 'pin', direction: 'input', pinType: 'ANY_NUM' })).toEqual([
+      "INT input at %IW0, the machine's Level",
+    ]);
     expect(offers('', contact)).toEqual([]);
     expect(offers('P', coil)).toEqual(["BOOL output at %QX0.0, the machine's Pump"]);
   });

@@ -7,14 +7,22 @@ const result = (scans: number, error: string) => ({ name: 'S', ok: false, scans,
 
 describe('errorText', () => {
   it("a machine's consequence after scans ran is a failure at its scan, said once", () => {
-    expect(errorText(result(576, 'the tank overflowed at scan 576 (57.50 s)'))).toBe('FAIL: the tank overflowed at scan 576 (57.50 s)');
-    expect(errorText(result(1204, 'the tank overflowed at scan 1,204 (120.30 s)'))).toBe('FAIL: the tank overflowed at scan 1,204 (120.30 s)');
+    expect(errorText(result(576, 'the tank overflowed at scan 576 (57.50 s)'))).toBe(
+      'FAIL: the tank overflowed at scan 576 (57.50 s)',
+    );
+    expect(errorText(result(1204, 'the tank overflowed at scan 1,204 (120.30 s)'))).toBe(
+      'FAIL: the tank overflowed at scan 1,204 (120.30 s)',
+    );
   });
   it('a PLC fault at a scan is a failure at that scan', () => {
-    expect(errorText(result(12, 'scan 12: division by zero in Main network 3'))).toBe('FAIL at scan 12: division by zero in Main network 3');
+    expect(errorText(result(12, 'scan 12: division by zero in Main network 3'))).toBe(
+      'FAIL at scan 12: division by zero in Main network 3',
+    );
   });
   it('an error naming no scan after scans ran says where it stopped', () => {
-    expect(errorText(result(3, 'the machine stopped answering'))).toBe('FAIL at scan 3: the machine stopped answering');
+    expect(errorText(result(3, 'the machine stopped answering'))).toBe(
+      'FAIL at scan 3: the machine stopped answering',
+    );
   });
   it('no scan run: it did not run', () => {
     expect(errorText(result(0, 'the program does not compile; see the Problems panel'))).toBe(

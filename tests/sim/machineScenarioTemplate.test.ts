@@ -25,8 +25,27 @@ test("a point rewired in the project's map: the variable at the machine's new ad
   const withOwn = {
     ...project,
     plant: { id: 'tank', map: { Stop: '%IX1.0' } },
-    pous: [{ ...main, variables: [...main.variables.map((v) => (v.name === 'Stop' ? { ...v, location: '%IX1.0' } : v)), { name: 'Jog', type: 'BOOL', varClass: 'local' as const, retain: false, comment: '', location: '%IX2.0' }] }],
+    pous: [
+      {
+        ...main,
+        variables: [
+          ...main.variables.map((v) => (v.name === 'Stop' ? { ...v, location: '%IX1.0' } : v)),
+          {
+            name: 'Jog',
+            type: 'BOOL',
+            varClass: 'local' as const,
+            retain: false,
+            comment: '',
+            location: '%IX2.0',
+          },
+        ],
+      },
+    ],
   };
-  const header = newScenarioCsv(withOwn).split('\n').find((l) => l.startsWith('scan,'));
-  expect(header).toBe('scan,tank.Start,tank.Stop,Jog,expect Pump,expect InletValve,expect DrainValve,expect RunLamp');
+  const header = newScenarioCsv(withOwn)
+    .split('\n')
+    .find((l) => l.startsWith('scan,'));
+  expect(header).toBe(
+    'scan,tank.Start,tank.Stop,Jog,expect Pump,expect InletValve,expect DrainValve,expect RunLamp',
+  );
 });

@@ -9,9 +9,14 @@ const csv = '# plant: tank\n# cycle: 100ms\nscan,tank.Start,expect Running\n1,1,
 test("a run failed on the tank's overflow names tank.overflows; a divergence or a pass names none", () => {
   const failed = runScenario(tankWrong(), { name: 'no overflow', csv }).result;
   expect(failed).toMatchObject({ ok: false, consequence: 'tank.overflows' });
-  expect(failed.error).toMatch(new RegExp(`^the tank overflowed at scan ${failed.scans.toLocaleString('en-US')} \\(`));
+  expect(failed.error).toMatch(
+    new RegExp(`^the tank overflowed at scan ${failed.scans.toLocaleString('en-US')} \\(`),
+  );
   expect(runScenario(tankReference(), { name: 'holds', csv }).result.consequence).toBeUndefined();
-  const diverged = runScenario(tankReference(), { name: 'wrong expectation', csv: csv.replace('3,0,1', '3,0,0') }).result;
+  const diverged = runScenario(tankReference(), {
+    name: 'wrong expectation',
+    csv: csv.replace('3,0,1', '3,0,0'),
+  }).result;
   expect(diverged).toMatchObject({ ok: false, scans: 3 });
   expect(diverged.consequence).toBeUndefined();
 });

@@ -18,7 +18,7 @@ export const otherTabs = createStore<OtherTabsState>()(() => ({ others: [] }));
 
 /** What the page says while another tab has Rungsmith open. */
 export const OTHER_TAB_WARNING =
-  'Rungsmith is also open in another tab of this browser. The tabs share one autosave: a reload brings back only the work of the tab changed last, and the other tab\'s changes are lost. Work in one tab, or save to a file (File > Save) before switching.';
+  "Rungsmith is also open in another tab of this browser. The tabs share one autosave: a reload brings back only the work of the tab changed last, and the other tab's changes are lost. Work in one tab, or save to a file (File > Save) before switching.";
 
 /**
  * Starts looking for other tabs (no-op where BroadcastChannel is missing). Returns the stop

@@ -25,7 +25,8 @@ export function controlsOf(frame: PlantFrame | undefined): KeptControls | undefi
 
 export function saveKeptControls(kept: KeptControls | undefined): void {
   try {
-    if (!kept || (kept.faults.length === 0 && kept.switches.length === 0)) sessionStorage.removeItem(KEPT_CONTROLS_KEY);
+    if (!kept || (kept.faults.length === 0 && kept.switches.length === 0))
+      sessionStorage.removeItem(KEPT_CONTROLS_KEY);
     else sessionStorage.setItem(KEPT_CONTROLS_KEY, JSON.stringify(kept));
   } catch {
     // Storage refused (private mode, full): they are just not kept over a reload.
@@ -38,7 +39,8 @@ export function loadKeptControls(id: string): KeptControls | undefined {
     const raw: unknown = JSON.parse(sessionStorage.getItem(KEPT_CONTROLS_KEY) ?? 'null');
     if (!raw || typeof raw !== 'object') return undefined;
     const r = raw as Record<string, unknown>;
-    const names = (v: unknown) => (Array.isArray(v) ? v.filter((x): x is string => typeof x === 'string') : []);
+    const names = (v: unknown) =>
+      Array.isArray(v) ? v.filter((x): x is string => typeof x === 'string') : [];
     if (r.id !== id) return undefined;
     return { id, faults: names(r.faults), switches: names(r.switches) };
   } catch {

@@ -10,7 +10,8 @@ export function errorText(result: ScenarioResult): string {
   const error = result.error ?? '';
   if (result.scans <= 0) return `did not run: ${error}`;
   const at = `scan ${result.scans.toLocaleString('en-US')}`;
-  if (error.startsWith(`scan ${result.scans}: `)) return `FAIL at ${at}: ${error.slice(`scan ${result.scans}: `.length)}`;
+  if (error.startsWith(`scan ${result.scans}: `))
+    return `FAIL at ${at}: ${error.slice(`scan ${result.scans}: `.length)}`;
   // The error names its scan already (a consequence's text): said once.
   const named = [`scan ${result.scans}`, at].some((s) => new RegExp(`(^|\\D)${s}(\\D|$)`).test(error));
   return named ? `FAIL: ${error}` : `FAIL at ${at}: ${error}`;

@@ -58,7 +58,10 @@ export function nextFreeAddress(project: Project, area: AddressArea, type: strin
   const size = sizeForType(type);
   if (!size) return undefined;
   const used = new Set<string>();
-  for (const key of [...addressOwners(project).keys(), ...machinePoints(project).map((p) => canonicalAddress(p.address) ?? '')]) {
+  for (const key of [
+    ...addressOwners(project).keys(),
+    ...machinePoints(project).map((p) => canonicalAddress(p.address) ?? ''),
+  ]) {
     const loc = parseLocation(key);
     if (loc && loc.area === area && loc.size === size) used.add(locationText(loc));
   }
