@@ -323,13 +323,14 @@ test("New scenario in a machine exercise runs against the machine: # plant: tank
   expect(errors).toEqual([]);
 });
 
-test('a watched machine name whose machine is no longer chosen says so, with nothing to write or force; it reads again when the machine is chosen back', async () => {
+test('a watched or trended machine name whose machine is no longer chosen says so, with nothing to write or force; it reads again when the machine is chosen back', async () => {
   await openExample('Tank level control (machine: tank)');
   await sim.tab('Watch');
   await page.getByTestId('watch-add-name').fill('tank.level');
   await page.getByTestId('watch-add').click();
   const row = page.getByTestId('watch-row-tank.level');
   await expect.poll(() => row.getByTestId('watch-value').textContent()).toBe('100.0 L');
+  await row.getByRole('checkbox', { name: 'Trend' }).check();
   await sim.tab('Plant');
   await page.getByTestId('plant-choose').selectOption('garage');
   await sim.tab('Watch');
@@ -340,10 +341,20 @@ test('a watched machine name whose machine is no longer chosen says so, with not
   );
   expect(await row.locator('td').nth(1).textContent()).toBe('REAL');
   expect(await row.getByRole('button').allTextContents()).toEqual(['×']);
+  // The trend says it too: no samples come for it (it drew a frozen line).
+  await sim.tab('Trend');
+  await expect
+    .poll(() => page.getByTestId('trend-chip-tank.level').textContent())
+    .toBe('tank.level (tank not chosen) ×');
+  await sim.tab('Watch');
   await sim.tab('Plant');
   await page.getByTestId('plant-choose').selectOption('tank');
   await sim.tab('Watch');
   await expect.poll(() => row.getByTestId('watch-value').textContent()).toBe('100.0 L');
+  await sim.tab('Trend');
+  await expect.poll(() => page.getByTestId('trend-chip-tank.level').textContent()).toBe('tank.level ×');
+  await page.getByTestId('trend-chip-tank.level').click();
+  await sim.tab('Watch');
   await row.getByRole('button', { name: 'Stop watching tank.level' }).click();
   expect(errors).toEqual([]);
 });

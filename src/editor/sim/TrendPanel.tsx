@@ -17,7 +17,10 @@ import { trendImage } from './trendPng';
 import { cursorReadout, nearestIndex, trendCsv } from './trendTools';
 import { useConfigurationInstances, useWatchCandidates } from './useWatchCandidates';
 import { VariablePicker } from './VariablePicker';
-import { usePlantCandidates } from '../plant/plantWatch';
+import { otherPlantNameInfo, plantNameInfo, usePlantCandidates } from '../plant/plantWatch';
+import { useDocument, type DocumentState } from '../../store/documentStore';
+
+const selectPlantConfig = (s: DocumentState) => s.project.plant;
 import './sim.css';
 
 const selectTrend = (s: SimState) => s.trend;
@@ -33,6 +36,7 @@ interface Cursors {
 
 export function TrendPanel() {
   const sim = useSimStore();
+  const plant = useDocument(selectPlantConfig);
   const names = useSim(selectTrendNames);
   const capacity = useSim(selectCapacity);
   const live = useSim(selectTrend);
@@ -138,11 +142,17 @@ export function TrendPanel() {
           title="Download the chart as shown, with its legend, as a PNG image" onClick={exportPng}>
           PNG
         </button>
-        {names.map((n) => (
-          <button key={n} type="button" className="rs-sim-chip" title={`Remove ${n} from the trend`} onClick={() => sim.getState().toggleTrend(n)}>
-            {n} ×
-          </button>
-        ))}
+        {names.map((n) => {
+          // A machine name whose machine is not the project's now (tank.level, the garage chosen): no samples come, said.
+          const other = plantNameInfo({ plant }, n) ? undefined : otherPlantNameInfo({ plant }, n);
+          return (
+            <button key={n} type="button" className="rs-sim-chip" data-testid={`trend-chip-${n}`}
+              title={other ? `The machine ${other.machine} is not chosen: ${n} has no samples until it is. Remove ${n} from the trend` : `Remove ${n} from the trend`}
+              onClick={() => sim.getState().toggleTrend(n)}>
+              {n}{other ? ` (${other.machine} not chosen)` : ''} ×
+            </button>
+          );
+        })}
       </div>
       {capacityError && <p className="rs-trend-error" role="alert" data-testid="trend-capacity-error">{capacityError}</p>}
       <TriggerBar candidates={candidates} frozen={frozen !== undefined} />
