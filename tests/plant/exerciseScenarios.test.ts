@@ -1,0 +1,56 @@
+// The machines' exercises judged as an instructor would: the mistakes students typically make
+// fail the exercise's scenario, each with a message that names the scan, the time or the check
+// and what went wrong; a solution that does what the task text asks passes.
+import { describe, expect, test } from 'vitest';
+import { tankReference } from '../../src/plant/exercises';
+import { studentSolution, testRun } from './studentSolutions';
+
+describe('tank: the scenario catches the typical mistakes', () => {
+  const TANK_OWN = ['Running: BOOL', 'Filling: BOOL'];
+  const tankSt = (running: string, fill: string, outputs: string) =>
+    studentSolution(tankReference(), `${running}\nRunLamp := Running;\n${fill}\n${outputs}\n`, TANK_OWN);
+  const RUNNING = 'Running := (Start OR Running) AND NOT Stop;';
+  const LATCH = 'IF Running AND NOT LowLevel THEN Filling := TRUE; END_IF;\nIF HighLevel OR NOT Running THEN Filling := FALSE; END_IF;';
+  const OUTPUTS = 'Pump := Filling; InletValve := Filling; DrainValve := Running AND LowLevel;';
+
+  test('the task written in ST as the text says passes', () => {
+    expect(testRun(tankSt(RUNNING, LATCH, OUTPUTS)).first).toBe('PASS Tank held between the switches for 5 minutes (3000 scans)');
+  });
+
+  test.each([
+    {
+      mistake: 'filling only while below the low switch (no latch up to the high switch)',
+      st: [RUNNING, 'Filling := Running AND NOT LowLevel;', OUTPUTS],
+      fails: 'scan 600 (line 13): tank.level expected 646 ± 50, got 200.95',
+    },
+    {
+      mistake: 'the process drawing from a tank below the low switch',
+      st: [RUNNING, LATCH, 'Pump := Filling; InletValve := Filling; DrainValve := Running;'],
+      fails: 'scan 20 (line 12): DrainValve expected 0, got 1',
+    },
+    {
+      mistake: 'the drain never opened (the process gets no water)',
+      st: [RUNNING, LATCH, 'Pump := Filling; InletValve := Filling; DrainValve := FALSE;'],
+      fails: 'scan 600 (line 13): DrainValve expected 1, got 0; tank.level expected 646 ± 50, got 804.25',
+    },
+    {
+      mistake: 'Stop ignored',
+      st: ['Running := Start OR Running;', LATCH, OUTPUTS],
+      fails: 'scan 2310 (line 18): Running expected 0, got 1; RunLamp expected 0, got 1; Pump expected 0, got 1; InletValve expected 0, got 1; DrainValve expected 0, got 1',
+    },
+    {
+      mistake: 'Stop does not end filling',
+      st: [RUNNING, 'IF Running AND NOT LowLevel THEN Filling := TRUE; END_IF;\nIF HighLevel THEN Filling := FALSE; END_IF;', OUTPUTS],
+      fails: 'scan 2310 (line 18): Pump expected 0, got 1; InletValve expected 0, got 1',
+    },
+    {
+      mistake: 'the pump run without opening the inlet valve',
+      st: [RUNNING, LATCH, 'Pump := Filling; InletValve := FALSE; DrainValve := Running AND LowLevel;'],
+      fails: 'scan 20 (line 12): InletValve expected 1, got 0',
+    },
+  ])('$mistake fails: $fails', ({ st, fails }) => {
+    const r = testRun(tankSt(st[0]!, st[1]!, st[2]!));
+    expect(r.code).toBe(1);
+    expect(r.first).toBe(`FAIL Tank held between the switches for 5 minutes: ${fails}`);
+  });
+});
