@@ -3,6 +3,7 @@
 // and what went wrong; a solution that does what the task text asks passes.
 import { describe, expect, test } from 'vitest';
 import { tankReference } from '../../src/plant/exercises';
+import { garageReference } from '../../src/plant/garageExercise';
 import { studentSolution, testRun } from './studentSolutions';
 
 describe('tank: the scenario catches the typical mistakes', () => {
@@ -52,5 +53,74 @@ describe('tank: the scenario catches the typical mistakes', () => {
     const r = testRun(tankSt(st[0]!, st[1]!, st[2]!));
     expect(r.code).toBe(1);
     expect(r.first).toBe(`FAIL Tank held between the switches for 5 minutes: ${fails}`);
+  });
+});
+
+describe('garage: the scenario catches the typical mistakes', () => {
+  const OWN = ['Opening: BOOL', 'Closing: BOOL', 'PreWarn: TON'];
+  const OPEN = 'Opening := (KeyOpen OR Opening OR (Closing AND Obstacle)) AND NOT OpenLimit AND NOT Stop;';
+  const CLOSE = 'Closing := (KeyClose OR Closing) AND NOT ClosedLimit AND NOT Stop AND NOT Obstacle AND NOT Opening;';
+  const MOTOR = `WarningLamp := Opening OR Closing;
+PreWarn(IN := WarningLamp, PT := T#1s);
+MotorUp := Opening AND PreWarn.Q AND NOT MotorDown;
+MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;`;
+  const garageSt = (...lines: string[]) => studentSolution(garageReference(), lines.join('\n'), OWN);
+  const NAME = 'Garage door: three cycles on the key, reversing for a car';
+
+  test('the task written in ST as the text says passes', () => {
+    expect(testRun(garageSt(OPEN, CLOSE, MOTOR)).first).toBe(`PASS ${NAME} (1200 scans)`);
+  });
+
+  test.each([
+    {
+      mistake: 'Stop ignored',
+      st: [
+        'Opening := (KeyOpen OR Opening OR (Closing AND Obstacle)) AND NOT OpenLimit;',
+        'Closing := (KeyClose OR Closing) AND NOT ClosedLimit AND NOT Obstacle AND NOT Opening;',
+        MOTOR,
+      ],
+      fails: 'scan 1080 (line 37): MotorUp expected 0, got 1; garage.position expected 40.8 ± 1, got 50',
+    },
+    {
+      mistake: 'KeyClose not locked out while the door opens (no interlock of the directions)',
+      st: [
+        OPEN,
+        'Closing := (KeyClose OR Closing) AND NOT ClosedLimit AND NOT Stop AND NOT Obstacle;',
+        'WarningLamp := Opening OR Closing; PreWarn(IN := WarningLamp, PT := T#1s);',
+        'MotorUp := Opening AND PreWarn.Q; MotorDown := Closing AND PreWarn.Q;',
+      ],
+      fails: 'MotorUp and MotorDown were on together (short circuit) at scan 760 (75.90 s)',
+    },
+    {
+      mistake: 'the closing door only stops for the car (no reversing)',
+      st: ['Opening := (KeyOpen OR Opening) AND NOT OpenLimit AND NOT Stop;', CLOSE, MOTOR],
+      fails: 'scan 540 (line 20): OpenLimit expected 1, got 0; garage.position expected 99.5 ± 1, got 83.333336',
+    },
+    {
+      mistake: 'the pre-warning timer too short',
+      st: [
+        OPEN,
+        CLOSE,
+        'WarningLamp := Opening OR Closing; PreWarn(IN := WarningLamp, PT := T#500ms);',
+        'MotorUp := Opening AND PreWarn.Q AND NOT MotorDown; MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;',
+      ],
+      fails: 'scan 150 (line 11): garage.unwarned expected 0, got 1',
+    },
+  ])('$mistake fails: $fails', ({ st, fails }) => {
+    const r = testRun(garageSt(...st));
+    expect(r.code).toBe(1);
+    expect(r.first).toBe(`FAIL ${NAME}: ${fails}`);
+  });
+
+  test('a pre-warning too short also says, located, what the warning was', () => {
+    const r = testRun(
+      garageSt(
+        OPEN,
+        CLOSE,
+        'WarningLamp := Opening OR Closing; PreWarn(IN := WarningLamp, PT := T#500ms);',
+        'MotorUp := Opening AND PreWarn.Q AND NOT MotorDown; MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;',
+      ),
+    );
+    expect(r.out).toContain('warning: the door started to move less than 1 s after the warning lamp lit at scan 6 (0.50 s)');
   });
 });
