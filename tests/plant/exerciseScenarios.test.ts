@@ -3,6 +3,7 @@
 // and what went wrong; a solution that does what the task text asks passes.
 import { describe, expect, test } from 'vitest';
 import { tankReference } from '../../src/plant/exercises';
+import { boxesReference } from '../../src/plant/boxesExercise';
 import { garageReference } from '../../src/plant/garageExercise';
 import { studentSolution, testRun } from './studentSolutions';
 
@@ -122,5 +123,72 @@ MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;`;
       ),
     );
     expect(r.out).toContain('warning: the door started to move less than 1 s after the warning lamp lit at scan 6 (0.50 s)');
+  });
+});
+
+describe('boxes: the scenario catches the typical mistakes', () => {
+  const OWN = ['Running: BOOL', 'Large: BOOL', 'Pushing: BOOL', 'T1: TON'];
+  const RUN = 'Running := (Start OR Running) AND NOT Stop; Conveyor := Running; RunLamp := Running;';
+  const SORT = `IF SizeEye THEN Large := TRUE; END_IF;
+IF PusherEye AND Large THEN Pushing := TRUE; END_IF;
+IF PusherOut THEN Pushing := FALSE; Large := FALSE; END_IF;
+Pusher := Pushing;`;
+  const boxesSt = (...lines: string[]) => studentSolution(boxesReference(), lines.join('\n'), OWN);
+  const NAME = 'Ten boxes sorted by size';
+
+  test('the task written in ST as the text says passes', () => {
+    expect(testRun(boxesSt(RUN, SORT)).first).toBe(`PASS ${NAME} (532 scans)`);
+  });
+
+  test.each([
+    {
+      mistake: 'Stop ignored',
+      st: ['Running := Start OR Running; Conveyor := Running; RunLamp := Running;', SORT],
+      fails: 'scan 275 (line 13): Running expected 0, got 1; Conveyor expected 0, got 1; RunLamp expected 0, got 1; boxes.speed expected 0, got 100',
+    },
+    {
+      mistake: 'the run lamp forgotten',
+      st: ['Running := (Start OR Running) AND NOT Stop; Conveyor := Running;', SORT],
+      fails: 'scan 3 (line 9): RunLamp expected 1, got 0',
+    },
+    {
+      mistake: 'the push timed from the size sensor (3 s at belt speed) instead of the eye at the pusher',
+      st: [
+        RUN,
+        `IF SizeEye THEN Large := TRUE; END_IF;
+T1(IN := Large, PT := T#3s);
+IF T1.Q AND Large THEN Pushing := TRUE; END_IF;
+IF PusherOut THEN Pushing := FALSE; Large := FALSE; END_IF;
+Pusher := Pushing;`,
+      ],
+      fails: 'box 6 (large) ran into the small-box bin at scan 352 (35.10 s)',
+    },
+    {
+      mistake: 'the large box never forgotten',
+      st: [
+        RUN,
+        `IF SizeEye THEN Large := TRUE; END_IF;
+IF PusherEye AND Large THEN Pushing := TRUE; END_IF;
+IF PusherOut THEN Pushing := FALSE; END_IF;
+Pusher := Pushing;`,
+      ],
+      fails: 'box 4 (small) was pushed into the large-box chute at scan 196 (19.50 s)',
+    },
+    {
+      mistake: 'the pusher held out for a fixed 0.3 s instead of to its out limit',
+      st: [
+        RUN,
+        `IF SizeEye THEN Large := TRUE; END_IF;
+IF PusherEye AND Large THEN Pushing := TRUE; END_IF;
+T1(IN := Pushing, PT := T#300ms);
+IF T1.Q THEN Pushing := FALSE; Large := FALSE; END_IF;
+Pusher := Pushing;`,
+      ],
+      fails: 'box 2 (large) fell off the belt (pushed 45 % across, then let go) at scan 104 (10.30 s)',
+    },
+  ])('$mistake fails: $fails', ({ st, fails }) => {
+    const r = testRun(boxesSt(...st));
+    expect(r.code).toBe(1);
+    expect(r.first).toBe(`FAIL ${NAME}: ${fails}`);
   });
 });
