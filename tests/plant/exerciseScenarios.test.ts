@@ -5,6 +5,7 @@ import { describe, expect, test } from 'vitest';
 import { tankReference } from '../../src/plant/exercises';
 import { boxesReference } from '../../src/plant/boxesExercise';
 import { garageReference } from '../../src/plant/garageExercise';
+import { mixerReference } from '../../src/plant/mixerExercise';
 import { studentSolution, testRun } from './studentSolutions';
 
 describe('tank: the scenario catches the typical mistakes', () => {
@@ -188,6 +189,68 @@ Pusher := Pushing;`,
     },
   ])('$mistake fails: $fails', ({ st, fails }) => {
     const r = testRun(boxesSt(...st));
+    expect(r.code).toBe(1);
+    expect(r.first).toBe(`FAIL ${NAME}: ${fails}`);
+  });
+});
+
+describe('mixer: the scenario catches the typical mistakes', () => {
+  const OWN = ['Running: BOOL', 'DoseA: BOOL', 'DoseB: BOOL', 'Mixing: BOOL', 'Emptying: BOOL', 'AtTemp: BOOL', 'Holding: BOOL', 'HoldTime: TON', 'EmptyTime: TON'];
+  const RUN = 'Running := (Start OR Running) AND NOT Stop;';
+  const DOSE = `IF Running AND NOT LowLevel AND NOT DoseA AND NOT DoseB AND NOT Mixing AND NOT Emptying THEN DoseA := TRUE; END_IF;
+IF DoseA AND MidLevel THEN DoseB := TRUE; DoseA := FALSE; END_IF;
+IF DoseB AND HighLevel THEN Mixing := TRUE; DoseB := FALSE; END_IF;`;
+  const HOLD = `AtTemp := Mixing AND Temperature >= 600;
+IF Mixing AND AtTemp THEN Holding := TRUE; END_IF;
+HoldTime(IN := Holding AND Running, PT := T#30s);`;
+  const EMPTY = `IF HoldTime.Q THEN Emptying := TRUE; Mixing := FALSE; Holding := FALSE; END_IF;
+EmptyTime(IN := Emptying AND Running AND NOT LowLevel, PT := T#4s);
+IF EmptyTime.Q THEN Emptying := FALSE; END_IF;`;
+  const OUT = `ValveA := DoseA AND Running; ValveB := DoseB AND Running; Agitator := Mixing AND Running;
+Heater := Mixing AND Running AND AgitatorOn AND LowLevel AND NOT AtTemp AND NOT HoldTime.Q;
+OutletValve := Emptying AND Running; DoneLamp := Emptying;`;
+  const mixerSt = (...lines: string[]) => studentSolution(mixerReference(), lines.join('\n'), OWN);
+  const NAME = 'Three good batches';
+
+  test('the task written in ST as the text says passes', () => {
+    expect(testRun(mixerSt(RUN, DOSE, HOLD, EMPTY, OUT)).first).toBe(`PASS ${NAME} (3400 scans)`);
+  });
+
+  test.each([
+    {
+      mistake: 'Stop ignored',
+      st: ['Running := Start OR Running;', DOSE, HOLD, EMPTY, OUT],
+      fails: 'scan 2610 (line 19): Running expected 0, got 1; Agitator expected 0, got 1; Heater expected 0, got 1',
+    },
+    {
+      mistake: 'the done lamp forgotten',
+      st: [RUN, DOSE, HOLD, EMPTY, OUT.replace(' DoneLamp := Emptying;', '')],
+      fails: 'scan 950 (line 14): DoneLamp expected 1, got 0',
+    },
+    {
+      mistake: 'A and B dosed together up to the high switch',
+      st: [
+        RUN,
+        `IF Running AND NOT LowLevel AND NOT DoseA AND NOT DoseB AND NOT Mixing AND NOT Emptying THEN DoseA := TRUE; DoseB := TRUE; END_IF;
+IF DoseA AND HighLevel THEN Mixing := TRUE; DoseA := FALSE; DoseB := FALSE; END_IF;`,
+        HOLD,
+        EMPTY,
+        OUT,
+      ],
+      fails: 'scan 50 (line 11): ValveB expected 0, got 1',
+    },
+    {
+      mistake: 'the outlet closed as soon as the low switch goes OFF',
+      st: [RUN, DOSE, HOLD, 'IF HoldTime.Q THEN Emptying := TRUE; Mixing := FALSE; Holding := FALSE; END_IF;\nIF Emptying AND NOT LowLevel THEN Emptying := FALSE; END_IF;', OUT],
+      fails: 'the vessel was not emptied (the outlet closed with 94.1 L left): the next batch was dosed onto it, and the last batch is not counted at scan 1,053 (105.20 s)',
+    },
+    {
+      mistake: 'the heater switched off for good at 60 °C (no thermostat through the hold)',
+      st: [RUN, DOSE, HOLD, EMPTY, OUT.replace('AND NOT AtTemp AND NOT HoldTime.Q', 'AND NOT Holding')],
+      fails: 'a batch was discharged held only 21.4 s at 57 °C or above with the agitator running (it must be held 30 s at 60 °C) and is spoiled at scan 903 (90.20 s)',
+    },
+  ])('$mistake fails: $fails', ({ st, fails }) => {
+    const r = testRun(mixerSt(...st));
     expect(r.code).toBe(1);
     expect(r.first).toBe(`FAIL ${NAME}: ${fails}`);
   });

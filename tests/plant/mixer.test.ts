@@ -200,6 +200,40 @@ describe('the mixer consequences', () => {
     expect(empty.batches).toBe(0);
   });
 
+  test('a spoiled batch says what it was: the share of A, the time it was held', () => {
+    const ratio = heldBatch(dosed(600, 200), 30_000);
+    expect(mixer.check(ratio, mixer.step(ratio, { OutletValve: true }, 100, none))[0]!.message).toMatch(
+      /^a batch was discharged with A (7[4-6]) % of it \(it must be 40 to 60 %\) and is spoiled$/,
+    );
+    const unheld = heldBatch(dosed(400, 400), 20_000);
+    const s = mixer.step(unheld, { OutletValve: true }, 100, none);
+    expect(mixer.check(unheld, s)[0]!.message).toBe(
+      `a batch was discharged held only ${(Math.floor(s.heldMs / 100) / 10).toFixed(1)} s at 57 °C or above with the agitator running (it must be held 30 s at 60 °C) and is spoiled`,
+    );
+    expect(s.heldMs).toBeGreaterThan(10_000);
+    expect(s.heldMs).toBeLessThan(30_000);
+  });
+
+  test('consequence: the next batch dosed onto what the last one left (the outlet closed early) is an error; the last batch is not counted', () => {
+    const ready = heldBatch(dosed(400, 400), 30_500);
+    // Discharged for 15 s at 50 L/s: some 60 L are left when the outlet closes.
+    const left = run(run(ready, { OutletValve: true }, 15_000), {}, 2000);
+    expect(left.level).toBeGreaterThan(20);
+    const next = mixer.step(left, { ValveA: true }, 100, none);
+    expect(consequences(left, next)).toEqual(['heel']);
+    expect(mixer.check(left, next)[0]).toMatchObject({
+      severity: 'error',
+      counter: 'heels',
+      message: `the vessel was not emptied (the outlet closed with ${left.level.toFixed(1)} L left): the next batch was dosed onto it, and the last batch is not counted`,
+    });
+    expect(q(next, 'heels')).toBe(1);
+    const after = run(next, { ValveA: true }, 5000);
+    expect([after.batches, after.heels]).toEqual([0, 1]);
+    // Emptied before the next batch: no such consequence.
+    const emptied = run(ready, { OutletValve: true }, 25_000);
+    expect(consequences(emptied, mixer.step(emptied, { ValveA: true }, 100, none))).toEqual([]);
+  });
+
   test('a good batch: judged when the outlet opens, counted once the vessel is empty; the next starts afresh', () => {
     const ready = heldBatch(dosed(400, 400), 30_500);
     expect(q(ready, 'held')).toBeGreaterThanOrEqual(30);
@@ -329,7 +363,7 @@ describe('the mixer exercise', () => {
 
   test('the reference solution makes three good batches', () => {
     const { result } = runScenario(mixerReference(), MIXER_SCENARIO);
-    expect(result).toMatchObject({ ok: true, scans: 3300 });
+    expect(result).toMatchObject({ ok: true, scans: 3400 });
   });
 
   test('the wrong solution (no high limit on the heater) fails where the first batch overheats', () => {
