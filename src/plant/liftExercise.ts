@@ -19,23 +19,25 @@ export const LIFT_SCENARIO: Scenario = {
   csv: `# plant: lift
 # cycle: 20ms
 # Each call button is pressed for 0.1 s. The car starts at floor 1 with its door closed.
+# At 10 s the car stands at floor 2 with its door fully open (held open 2 s once fully open).
 # A crash, an overrun, a move with the door not closed or both contactors on fails the scenario where it happens.
-scan,lift.Call1,lift.Call2,lift.Call3,expect CallLamp1,expect CallLamp2,expect CallLamp3,expect lift.served,expect lift.floor,expect lift.misstops,expect lift.max_wait ~ 0.5
-1,,,1,0,0,1,0,1,0,
-6,,,0,0,0,1,0,1,0,
-200,,1,,,,,,,,
-205,,0,,0,1,1,0,0,0,
-1000,1,,,1,0,1,1,3,0,
-1005,0,,,,,,,,,
-1250,,1,,,,,,,,
-1255,,0,,1,1,0,2,3,0,
-3000,,,,0,0,0,4,1,0,
-3100,,,1,,,,,,,
-3105,,,0,0,0,1,4,1,0,
-4000,,,,0,0,0,5,3,0,
-4100,1,,,,,,,,,
-4105,0,,,1,0,0,5,3,0,
-5000,,,,0,0,0,6,1,0,26.1
+scan,lift.Call1,lift.Call2,lift.Call3,expect CallLamp1,expect CallLamp2,expect CallLamp3,expect lift.served,expect lift.floor,expect lift.misstops,expect lift.max_wait ~ 0.5,expect DoorOpened
+1,,,1,0,0,1,0,1,0,,
+6,,,0,0,0,1,0,1,0,,
+200,,1,,,,,,,,,
+205,,0,,0,1,1,0,0,0,,
+500,,,,0,0,1,1,2,0,,1
+1000,1,,,1,0,1,1,3,0,,
+1005,0,,,,,,,,,,
+1250,,1,,,,,,,,,
+1255,,0,,1,1,0,2,3,0,,
+3000,,,,0,0,0,4,1,0,,
+3100,,,1,,,,,,,,
+3105,,,0,0,0,1,4,1,0,,
+4000,,,,0,0,0,5,3,0,,
+4100,1,,,,,,,,,,
+4105,0,,,1,0,0,5,3,0,,
+5000,,,,0,0,0,6,1,0,26.1,
 `,
 };
 

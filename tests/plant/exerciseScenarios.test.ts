@@ -2,7 +2,7 @@
 // fail the exercise's scenario, each with a message that names the scan, the time or the check
 // and what went wrong; a solution that does what the task text asks passes.
 import { describe, expect, test } from 'vitest';
-import { tankReference } from '../../src/plant/exercises';
+import { liftReference, tankReference } from '../../src/plant/exercises';
 import { boxesReference } from '../../src/plant/boxesExercise';
 import { garageReference } from '../../src/plant/garageExercise';
 import { mixerReference } from '../../src/plant/mixerExercise';
@@ -251,6 +251,54 @@ IF DoseA AND HighLevel THEN Mixing := TRUE; DoseA := FALSE; DoseB := FALSE; END_
     },
   ])('$mistake fails: $fails', ({ st, fails }) => {
     const r = testRun(mixerSt(...st));
+    expect(r.code).toBe(1);
+    expect(r.first).toBe(`FAIL ${NAME}: ${fails}`);
+  });
+});
+
+describe('lift: the scenario catches the typical mistakes', () => {
+  const OWN = ['Req1: BOOL', 'Req2: BOOL', 'Req3: BOOL', 'Here: BOOL', 'Above: BOOL', 'Below: BOOL', 'Standstill: TON', 'Dwell: TON'];
+  const CALLS = `IF Call1 THEN Req1 := TRUE; END_IF; IF Call2 THEN Req2 := TRUE; END_IF; IF Call3 THEN Req3 := TRUE; END_IF;
+IF AtFloor1 AND DoorOpened THEN Req1 := FALSE; END_IF;
+IF AtFloor2 AND DoorOpened THEN Req2 := FALSE; END_IF;
+IF AtFloor3 AND DoorOpened THEN Req3 := FALSE; END_IF;
+CallLamp1 := Req1; CallLamp2 := Req2; CallLamp3 := Req3;
+Here := (AtFloor1 AND Req1) OR (AtFloor2 AND Req2) OR (AtFloor3 AND Req3);
+Above := (AtFloor1 AND (Req2 OR Req3)) OR (AtFloor2 AND Req3);
+Below := (AtFloor3 AND (Req2 OR Req1)) OR (AtFloor2 AND Req1);
+Standstill(IN := NOT MotorUp AND NOT MotorDown, PT := T#300ms);
+IF Here AND Standstill.Q THEN DoorOpen := TRUE; END_IF;`;
+  const DWELL = `Dwell(IN := DoorOpen AND DoorOpened, PT := T#2s);
+IF Dwell.Q THEN DoorOpen := FALSE; END_IF;`;
+  const GO = `IF Above AND NOT Here AND DoorClosed AND NOT DoorOpen AND NOT MotorDown THEN MotorUp := TRUE; END_IF;
+IF Below AND NOT Here AND DoorClosed AND NOT DoorOpen AND NOT MotorUp THEN MotorDown := TRUE; END_IF;`;
+  const STOP = `IF (AtFloor2 AND Req2) OR AtFloor3 THEN MotorUp := FALSE; END_IF;
+IF (AtFloor2 AND Req2) OR AtFloor1 THEN MotorDown := FALSE; END_IF;`;
+  const liftSt = (...lines: string[]) => studentSolution(liftReference(), lines.join('\n'), OWN);
+  const NAME = 'Six calls answered, level with the floors';
+
+  test('the task written in ST as the text says passes', () => {
+    expect(testRun(liftSt(CALLS, DWELL, GO, STOP)).first).toBe(`PASS ${NAME} (5000 scans)`);
+  });
+
+  test.each([
+    {
+      mistake: 'the door closed as soon as it is fully open (no 2 s dwell)',
+      st: [CALLS, 'IF DoorOpened THEN DoorOpen := FALSE; END_IF;', GO, STOP],
+      fails: 'scan 500 (line 11): DoorOpened expected 1, got 0',
+    },
+    {
+      mistake: 'no stop at a called floor the car passes',
+      st: [CALLS, DWELL, GO, 'IF AtFloor3 THEN MotorUp := FALSE; END_IF;\nIF AtFloor1 THEN MotorDown := FALSE; END_IF;'],
+      fails: 'scan 500 (line 11): CallLamp2 expected 0, got 1; lift.served expected 1, got 0; lift.floor expected 2, got 0; DoorOpened expected 1, got 0',
+    },
+    {
+      mistake: 'the call not remembered (the lamp follows the button)',
+      st: [CALLS.replace('CallLamp1 := Req1; CallLamp2 := Req2; CallLamp3 := Req3;', 'CallLamp1 := Call1; CallLamp2 := Call2; CallLamp3 := Call3;'), DWELL, GO, STOP],
+      fails: 'scan 6 (line 8): CallLamp3 expected 1, got 0',
+    },
+  ])('$mistake fails: $fails', ({ st, fails }) => {
+    const r = testRun(liftSt(...st));
     expect(r.code).toBe(1);
     expect(r.first).toBe(`FAIL ${NAME}: ${fails}`);
   });
