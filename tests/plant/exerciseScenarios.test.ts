@@ -5,6 +5,7 @@ import { describe, expect, test } from 'vitest';
 import { liftReference, tankReference } from '../../src/plant/exercises';
 import { boxesReference } from '../../src/plant/boxesExercise';
 import { garageReference } from '../../src/plant/garageExercise';
+import { intersectionReference } from '../../src/plant/intersectionExercise';
 import { mixerReference } from '../../src/plant/mixerExercise';
 import { studentSolution, testRun } from './studentSolutions';
 
@@ -299,6 +300,60 @@ IF (AtFloor2 AND Req2) OR AtFloor1 THEN MotorDown := FALSE; END_IF;`;
     },
   ])('$mistake fails: $fails', ({ st, fails }) => {
     const r = testRun(liftSt(...st));
+    expect(r.code).toBe(1);
+    expect(r.first).toBe(`FAIL ${NAME}: ${fails}`);
+  });
+});
+
+describe('intersection: the scenario catches the typical mistakes', () => {
+  const OWN = [
+    'AskMain: BOOL', 'AskSide: BOOL', 'Demand: BOOL', 'Cycle: BOOL', 'MainGreenTime: TON', 'MainYellowTime: TON',
+    'AllRedTime1: TON', 'SideGreenTime: TON', 'SideYellowTime: TON', 'AllRedTime2: TON', 'WalkSideTime: TON', 'WalkMainTime: TON',
+  ];
+  const ASK = `IF CrossMain THEN AskMain := TRUE; END_IF; IF WalkMain THEN AskMain := FALSE; END_IF;
+IF CrossSide THEN AskSide := TRUE; END_IF; IF WalkSide THEN AskSide := FALSE; END_IF;
+Demand := LoopSide OR AskMain OR AskSide;`;
+  const times = (yellow: string, allRed: string) => `MainGreenTime(IN := NOT Cycle, PT := T#20s);
+IF MainGreenTime.Q AND Demand THEN Cycle := TRUE; END_IF;
+MainYellowTime(IN := Cycle, PT := ${yellow});
+AllRedTime1(IN := MainYellowTime.Q, PT := ${allRed});
+SideGreenTime(IN := AllRedTime1.Q, PT := T#10s);
+SideYellowTime(IN := SideGreenTime.Q, PT := ${yellow});
+AllRedTime2(IN := SideYellowTime.Q, PT := ${allRed});
+IF AllRedTime2.Q THEN Cycle := FALSE; END_IF;
+WalkSideTime(IN := NOT Cycle, PT := T#5s);
+WalkMainTime(IN := AllRedTime1.Q, PT := T#4s);`;
+  const LAMPS = `MainGreen := NOT Cycle; MainYellow := Cycle AND NOT MainYellowTime.Q; MainRed := Cycle AND MainYellowTime.Q;
+SideGreen := Cycle AND AllRedTime1.Q AND NOT SideGreenTime.Q;
+SideYellow := Cycle AND SideGreenTime.Q AND NOT SideYellowTime.Q;
+SideRed := NOT SideGreen AND NOT SideYellow;
+WalkMain := Cycle AND AllRedTime1.Q AND NOT WalkMainTime.Q; DontWalkMain := NOT WalkMain;
+WalkSide := NOT Cycle AND NOT WalkSideTime.Q; DontWalkSide := NOT WalkSide;`;
+  const st = (...lines: string[]) => studentSolution(intersectionReference(), lines.join('\n'), OWN);
+  const NAME = 'Side road and pedestrians served for 5 minutes, no conflict';
+
+  test('the task written in ST as the text says passes', () => {
+    expect(testRun(st(ASK, times('T#3s', 'T#2s'), LAMPS)).first).toBe(`PASS ${NAME} (3000 scans)`);
+  });
+
+  test.each([
+    {
+      mistake: 'a 1 s yellow',
+      st: [ASK, times('T#1s', 'T#2s'), LAMPS],
+      fails: 'the main road went from green to red after 1.0 s of yellow (at least 3 s of yellow asked) at scan 211 (21.00 s)',
+    },
+    {
+      mistake: 'no all-red between the roads',
+      st: [ASK, times('T#3s', 'T#0s'), LAMPS],
+      fails: 'the side road got green 0.1 s after the main road turned red (both roads red at least 2 s asked) at scan 232 (23.10 s)',
+    },
+    {
+      mistake: 'the side road green straight to red',
+      st: [ASK, times('T#3s', 'T#2s'), LAMPS.replace('SideYellow := Cycle AND SideGreenTime.Q AND NOT SideYellowTime.Q;', 'SideYellow := FALSE;')],
+      fails: 'the side road went from green to red without yellow (at least 3 s of yellow asked) at scan 351 (35.00 s)',
+    },
+  ])('$mistake fails: $fails', ({ st: lines, fails }) => {
+    const r = testRun(st(...lines));
     expect(r.code).toBe(1);
     expect(r.first).toBe(`FAIL ${NAME}: ${fails}`);
   });
