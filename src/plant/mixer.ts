@@ -515,7 +515,12 @@ export const mixer: PlantModel<MixerState> = {
       (out ??= []).push({
         id: 'scorch',
         severity: 'error',
-        message: 'the product scorched on the heater (heating without the agitator) and the batch is spoiled',
+        // Unstirred, the element scorches the still product around it; stirred, only a batch
+        // heated on far past its set point gets the element that hot (a frozen transmitter).
+        message:
+          after.agitator >= 0.9
+            ? `the product scorched on the heater (the batch was heated on to ${after.temp.toFixed(0)} °C) and the batch is spoiled`
+            : 'the product scorched on the heater (heating without the agitator) and the batch is spoiled',
         counter: 'scorches',
       });
     if (after.spoiled > before.spoiled && after.spoilReason !== 'scorch')

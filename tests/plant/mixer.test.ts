@@ -174,6 +174,25 @@ describe('the mixer consequences', () => {
     expect(consequences(before, s)).toEqual(['scorch']);
   });
 
+  test('a scorch says why: unstirred, or a stirred batch heated on far past its set point (a frozen transmitter)', () => {
+    const still = dosed(400, 400);
+    const unstirred = run(still, { Heater: true }, 10_000);
+    expect(mixer.check(still, unstirred).map((c) => c.message)).toEqual([
+      'the product scorched on the heater (heating without the agitator) and the batch is spoiled',
+    ]);
+    // Stirred and heated on: overheated first (spoiled once), then the element scorches the product.
+    let s = run(still, { Agitator: true }, 3000);
+    let scorch: string | undefined;
+    for (let t = 0; t < 300_000 && !scorch; t += 100) {
+      const next = mixer.step(s, { Agitator: true, Heater: true }, 100, none);
+      scorch = mixer.check(s, next).find((c) => c.id === 'scorch')?.message;
+      s = next;
+    }
+    expect(s.agitator).toBe(1);
+    expect(scorch).toBe(`the product scorched on the heater (the batch was heated on to ${s.temp.toFixed(0)} °C) and the batch is spoiled`);
+    expect(s.temp).toBeGreaterThan(100);
+  });
+
   test('heating past 80 °C spoils the batch, once (discharging it counts nothing more)', () => {
     const before = run(dosed(400, 400), { Agitator: true }, 3000);
     const s = run(before, { Agitator: true, Heater: true }, 60_000);
