@@ -255,7 +255,7 @@ export const mixer: PlantModel<MixerState> = {
     { id: 'high_stuck_off', title: 'High level switch stuck OFF' },
     { id: 'valve_a_slow', title: 'Valve A slow (15 s to open or close)' },
     { id: 'agitator_dead', title: 'Agitator motor does not start' },
-    { id: 'heater_dead', title: 'Heater element burnt out (does not heat)' },
+    { id: 'heater_dead', title: 'Heater does not heat (element open circuit)' },
     { id: 'temp_frozen', title: 'Temperature transmitter frozen' },
   ],
   quantities: [
@@ -268,7 +268,12 @@ export const mixer: PlantModel<MixerState> = {
       unit: '%',
       comment: 'Share of ingredient A in the vessel (the last batch judged, when empty)',
     },
-    { name: 'held', type: 'REAL', unit: 's', comment: 'Time the batch was held hot and stirred' },
+    {
+      name: 'held',
+      type: 'REAL',
+      unit: 's',
+      comment: 'Time the batch was held at 57 °C or above with the agitator at speed, since the last ingredient',
+    },
     { name: 'max_temp', type: 'REAL', unit: '°C', comment: 'Hottest the batch in the vessel was' },
     { name: 'valve_a', type: 'REAL', unit: '%', comment: 'Valve A opening' },
     { name: 'valve_b', type: 'REAL', unit: '%', comment: 'Valve B opening' },

@@ -193,6 +193,13 @@ describe('the mixer consequences', () => {
     expect(s.temp).toBeGreaterThan(100);
   });
 
+  test('the fault heater_dead is not the burnt-out element: the heater does not heat, burnt_out stays FALSE', () => {
+    expect(mixer.faults.find((f) => f.id === 'heater_dead')?.title).toBe('Heater does not heat (element open circuit)');
+    const s = run(dosed(400, 400), { Agitator: true, Heater: true }, 20_000, new Set(['heater_dead']));
+    expect([q(s, 'heating'), q(s, 'burnt_out')]).toEqual([false, false]);
+    expect(s.temp).toBeLessThan(21);
+  });
+
   test('heating past 80 °C spoils the batch, once (discharging it counts nothing more)', () => {
     const before = run(dosed(400, 400), { Agitator: true }, 3000);
     const s = run(before, { Agitator: true, Heater: true }, 60_000);
