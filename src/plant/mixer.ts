@@ -169,7 +169,7 @@ const POINTS: readonly PlantPoint[] = [
     address: '%IX0.5',
     type: 'BOOL',
     kind: 'sensor',
-    comment: 'Agitator speed monitor, ON at full speed',
+    comment: 'Agitator speed monitor, ON from 90 % of full speed (the motor runs up in 2 s)',
   },
   {
     name: 'Level',

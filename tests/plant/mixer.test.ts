@@ -200,6 +200,14 @@ describe('the mixer consequences', () => {
     expect(s.temp).toBeLessThan(21);
   });
 
+  test('AgitatorOn comes ON where its comment says: from 90 % of full speed, 1.8 s after the contactor (2 s run-up)', () => {
+    expect(mixer.points.find((p) => p.name === 'AgitatorOn')?.comment).toBe(
+      'Agitator speed monitor, ON from 90 % of full speed (the motor runs up in 2 s)',
+    );
+    const at = (ms: number) => senseRecord(mixer, run(dosed(400, 400), { Agitator: true }, ms), none).AgitatorOn;
+    expect([at(1700), at(1800), at(2000)]).toEqual([false, true, true]);
+  });
+
   test('heating past 80 °C spoils the batch, once (discharging it counts nothing more)', () => {
     const before = run(dosed(400, 400), { Agitator: true }, 3000);
     const s = run(before, { Agitator: true, Heater: true }, 60_000);
