@@ -348,6 +348,16 @@ WalkSide := NOT Cycle AND NOT WalkSideTime.Q; DontWalkSide := NOT WalkSide;`;
       fails: 'the side road got green 0.1 s after the main road turned red (both roads red at least 2 s asked) at scan 232 (23.10 s)',
     },
     {
+      mistake: 'WALK over the main road lit the whole side road green (10 s)',
+      st: [ASK, times('T#3s', 'T#2s').replace('WalkMainTime(IN := AllRedTime1.Q, PT := T#4s);', 'WalkMainTime(IN := AllRedTime1.Q, PT := T#10s);'), LAMPS],
+      fails: 'the main road got green while pedestrians were still crossing it at scan 1,604 (160.30 s)',
+    },
+    {
+      mistake: 'WALK over the side road lit the whole main road green',
+      st: [ASK, times('T#3s', 'T#2s'), LAMPS.replace('WalkSide := NOT Cycle AND NOT WalkSideTime.Q;', 'WalkSide := NOT Cycle;')],
+      fails: 'the side road got green while pedestrians were still crossing it at scan 1,855 (185.40 s)',
+    },
+    {
       mistake: 'the side road green straight to red',
       st: [ASK, times('T#3s', 'T#2s'), LAMPS.replace('SideYellow := Cycle AND SideGreenTime.Q AND NOT SideYellowTime.Q;', 'SideYellow := FALSE;')],
       fails: 'the side road went from green to red without yellow (at least 3 s of yellow asked) at scan 351 (35.00 s)',
