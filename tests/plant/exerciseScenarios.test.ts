@@ -368,3 +368,52 @@ WalkSide := NOT Cycle AND NOT WalkSideTime.Q; DontWalkSide := NOT WalkSide;`;
     expect(r.first).toBe(`FAIL ${NAME}: ${fails}`);
   });
 });
+
+describe('every reference solution reaches its goal at every scan cycle it is meant for', () => {
+  /** The scenario's operator actions at `cycle` (each at the same PLC time), then the goal checked 2 s after its last row. */
+  const atCycle = (csv: string, cycle: number, goal: string, value: string): string => {
+    const from = Number(/^# cycle: (\d+)ms$/m.exec(csv)![1]);
+    const lines = csv.trim().split('\n').filter((l) => !l.startsWith('#'));
+    const head = lines[0]!.split(',');
+    const inputs = head.map((h, i) => (h.startsWith('expect') ? -1 : i)).filter((i) => i > 0);
+    let last = 0;
+    let lastMs = 0;
+    const rows: string[] = [];
+    for (const line of lines.slice(1)) {
+      const cells = line.split(',');
+      const ms = (Number(cells[0]) - 1) * from;
+      lastMs = ms;
+      const set = inputs.map((i) => cells[i] ?? '');
+      if (set.every((c) => c === '')) continue;
+      // A press of one scan at the scenario's cycle still lasts one scan here.
+      const scan = Math.max(last + 1, Math.round(ms / cycle) + 1);
+      last = scan;
+      rows.push([scan, ...set, ''].join(','));
+    }
+    const end = Math.max(last + 1, Math.round((lastMs + 2000) / cycle) + 1);
+    rows.push([end, ...inputs.map(() => ''), value].join(','));
+    return `# plant: ${/^# plant: (\w+)$/m.exec(csv)![1]}\n# cycle: ${cycle}ms\nscan,${inputs.map((i) => head[i]).join(',')},expect ${goal}\n${rows.join('\n')}\n`;
+  };
+  test.each([
+    { id: 'tank', reference: tankReference, goal: 'tank.deadheads', value: '0', cycles: [1, 10, 50, 100, 200] },
+    { id: 'boxes', reference: boxesReference, goal: 'boxes.sorted', value: '10', cycles: [1, 10, 50, 100, 200] },
+    { id: 'garage', reference: garageReference, goal: 'garage.cycles', value: '3', cycles: [1, 10, 50, 100, 200] },
+    { id: 'mixer', reference: mixerReference, goal: 'mixer.batches', value: '3', cycles: [1, 10, 50, 100, 200] },
+    { id: 'intersection', reference: intersectionReference, goal: 'intersection.ped_served', value: '7', cycles: [1, 10, 50, 100, 200] },
+    // The lift needs a scan of 20 ms or faster (its task text says so): at 50 ms it stops off the floor.
+    { id: 'lift', reference: liftReference, goal: 'lift.served', value: '6', cycles: [1, 10, 20] },
+  ])('$id at $cycles ms', ({ reference, goal, value, cycles }) => {
+    for (const cycle of cycles) {
+      const project = reference();
+      const csv = atCycle(project.scenarios![0]!.csv, cycle, goal, value);
+      const r = testRun({ ...project, scenarios: [{ name: `at ${cycle} ms`, csv }] });
+      expect([cycle, r.first]).toEqual([cycle, expect.stringMatching(/^PASS at \d+ ms/)]);
+    }
+  });
+
+  test('the lift at 50 ms stops off the floor, as its task text warns', () => {
+    const project = liftReference();
+    const csv = atCycle(project.scenarios![0]!.csv, 50, 'lift.misstops', '0');
+    expect(testRun({ ...project, scenarios: [{ name: 'at 50 ms', csv }] }).out).toContain('warning: the car stopped 25 mm above floor 2');
+  });
+});
