@@ -18,6 +18,18 @@ export interface PlantWhyContext {
   readonly points: readonly PlantPoint[];
   /** The machine as it was after a recorded scan (0: its initial state), if still kept. */
   at(scan: number): PlantSnapshot | undefined;
+  /**
+   * The scan after which this machine, wired as it is, began driving the program (0: from the cold
+   * start). The inputs of scans up to it were not the machine's: it was chosen or rewired later.
+   */
+  readonly since: number;
+}
+
+/** Why the machine has no state for `scan`: it came later, or the scan is too old to be kept. */
+function missingWords(ctx: PlantWhyContext, scan: number): string {
+  return scan <= ctx.since
+    ? `The machine ${ctx.model.id} was chosen or rewired after ${scanWords(ctx.since)}: ${scanWords(scan)} came before it drove the program.`
+    : `The machine is no longer kept for ${scanWords(scan)}.`;
 }
 
 function faultWords(model: PlantModel, snapshot: PlantSnapshot): string | undefined {
@@ -34,7 +46,7 @@ export function withPlantWhy(e: Explanation, ctx: PlantWhyContext): Explanation 
   const machineAt = (scan: number, words: string) => {
     const snap = ctx.at(scan);
     if (!snap) {
-      lines.push(`The machine is no longer kept for ${scanWords(scan)}.`);
+      lines.push(missingWords(ctx, scan));
       return;
     }
     if (shown === snap.scan) return;
@@ -43,6 +55,9 @@ export function withPlantWhy(e: Explanation, ctx: PlantWhyContext): Explanation 
     const faults = faultWords(model, snap);
     if (faults) lines.push(faults);
   };
+  // A scan from before the machine drove the program: its inputs and outputs were not the
+  // machine's then (another machine, another wiring, or none), so it says nothing of them.
+  if (e.scan <= ctx.since) return e;
   for (const { name, location } of e.io ?? []) {
     const point = ctx.points.find((p) => addressKey(p.address) === addressKey(location));
     if (!point) continue;
@@ -66,7 +81,7 @@ export function withPlantWhy(e: Explanation, ctx: PlantWhyContext): Explanation 
     const snap = ctx.at(before);
     if (!snap) {
       lines.push(`${name} (${location}) is written by the machine ${model.id}: ${what}.`);
-      lines.push(`The machine is no longer kept for ${scanWords(before)}.`);
+      lines.push(missingWords(ctx, before));
       continue;
     }
     const faults = new Set(snap.faults);
@@ -88,7 +103,7 @@ export function plantNameWhy(scan: number, target: ExplainTarget, ctx: PlantWhyC
   if (!ref) return undefined;
   const snap = ctx.at(scan);
   const base = { scan, target, marks: [], links: [] };
-  if (!snap) return { ...base, title: `${target.name} at ${scanWords(scan)}`, lines: [`The machine is no longer kept for ${scanWords(scan)}.`] };
+  if (!snap) return { ...base, title: `${target.name} at ${scanWords(scan)}`, lines: [missingWords(ctx, scan)] };
   const value = plantValue(model, snap, target.name);
   const type = ref.quantity?.type ?? ref.point!.type;
   const shown = value === undefined ? '?' : formatPlantValue(type, value, ref.quantity?.unit);

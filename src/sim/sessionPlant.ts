@@ -21,6 +21,8 @@ export interface PlantFrame {
   /** The newest consequences, oldest first, and how many there were since the cold start. */
   readonly events: readonly PlantEvent[];
   readonly eventCount: number;
+  /** The scan after which this machine (with this wiring) began driving the program (0: from the cold start). */
+  readonly since: number;
 }
 
 export class SessionPlant {
@@ -34,6 +36,12 @@ export class SessionPlant {
    */
   private unread = new Set<string>();
   private letGo = new Set<string>();
+  /**
+   * The scan after which this loop began driving the program (0: from the cold start): a machine
+   * chosen or rewired while the program was at scan 240 drives the inputs scan 241 reads. Scans up
+   * to it were not this machine's (another machine, another wiring, or none).
+   */
+  private since = 0;
 
   get active(): boolean {
     return this.loop !== undefined;
@@ -75,13 +83,17 @@ export class SessionPlant {
       this.letGo.clear();
     }
     this.loop = loop;
+    this.since = plc?.scanCount ?? 0;
     if (plc) loop.bind(plc);
   }
 
   /** A program was installed: afresh (the machine starts over) or by an online change (it goes on). */
   install(plc: Plc, fresh: boolean): void {
     if (!this.loop) return;
-    if (fresh) this.loop.reset();
+    if (fresh) {
+      this.loop.reset();
+      this.since = 0;
+    }
     this.loop.bind(plc);
   }
 
@@ -89,6 +101,7 @@ export class SessionPlant {
     if (!this.loop) return;
     this.releaseUnread();
     this.loop.reset();
+    this.since = 0;
     if (plc) this.loop.bind(plc);
   }
 
@@ -150,7 +163,7 @@ export class SessionPlant {
   /** What "Why?" needs of the machine, or undefined without one. */
   whyContext(): PlantWhyContext | undefined {
     const loop = this.loop;
-    return loop && { model: loop.model, points: loop.points, at: (scan) => loop.at(scan) };
+    return loop && { model: loop.model, points: loop.points, at: (scan) => loop.at(scan), since: this.since };
   }
 
   /** What recording the history as a scenario needs of the machine, or undefined without one. */
@@ -163,6 +176,7 @@ export class SessionPlant {
   forScenario(id: string): PlantLoop {
     if (this.loop?.model.id !== id) this.configure({ id }, undefined);
     this.loop!.reset();
+    this.since = 0;
     return this.loop!;
   }
 
@@ -176,6 +190,7 @@ export class SessionPlant {
       now: loop.snapshot(),
       events: all.slice(-FRAME_EVENTS),
       eventCount: all.length,
+      since: this.since,
     };
   }
 

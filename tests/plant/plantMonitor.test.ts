@@ -168,6 +168,30 @@ describe('the machine in the trend and "Why?" of the simulation session', () => 
     expect(text).toContain('The machine after scan 49: level');
   });
 
+  test('"Why?" at a scan from before the machine was chosen says nothing of it; after, it does; the frame says where it began', () => {
+    // The program runs 20 scans with no machine, then the tank is chosen.
+    const h = new SimHarness().send({ type: 'setCycle', cycleMs: 100 }, { type: 'load', project: tankReference() }, { type: 'step', scans: 20 });
+    while (h.frame.scan < 20) h.settle();
+    h.send({ type: 'setPlant', plant: { id: 'tank' } }, { type: 'step', scans: 10 });
+    while (h.frame.scan < 30) h.settle();
+    expect(h.frame.plant?.since).toBe(20);
+    // Scan 15 read LowLevel as nobody wrote it: not the machine's.
+    const early = why(h, 15, 'LowLevel').lines.join('\n');
+    expect(early).not.toContain('machine');
+    expect(why(h, 20, 'Pump').lines.join('\n')).not.toContain('drives the machine');
+    // Scan 21 read what the machine presented when it was chosen, after scan 20.
+    const first = why(h, 21, 'LowLevel').lines.join('\n');
+    expect(first).toContain('LowLevel (%IX0.2) is written by the machine tank');
+    expect(why(h, 25, 'Pump').lines.join('\n')).toContain('Pump (%QX0.0) drives the machine tank');
+    // A machine name at scan 10: the machine came later, not "no longer kept".
+    expect(why(h, 10, 'tank.level').lines).toEqual(['The machine tank was chosen or rewired after scan 20: scan 10 came before it drove the program.']);
+    // A cold restart: the machine drives from the start again.
+    h.send({ type: 'reset' }, { type: 'step', scans: 3 });
+    while (h.frame.scan < 3) h.settle();
+    expect(h.frame.plant?.since).toBe(0);
+    expect(why(h, 1, 'LowLevel').lines.join('\n')).toContain('written by the machine tank');
+  });
+
   test('"Why?" on a machine name explains it from the recorded machine', () => {
     const h = run(100);
     const snap = view(h, 60).plant!;

@@ -130,7 +130,9 @@ function Machine({ model, map }: { model: PlantModel; map: Readonly<Record<strin
         ? // A scan's time is when it started, as the History, the toolbar and the consequences
           // ("at scan 625 (12.48 s)") give it; the machine's own time is the scan's end.
           `Recorded scan ${atScan.scan.toLocaleString('en-US')} (${seconds(started(atScan.scan, atScan.timeMs, historyScan, historyTime))})`
-        : `Scan ${historyScan.toLocaleString('en-US')} is no longer kept for the machine`
+        : live && historyScan <= live.since
+          ? `Scan ${historyScan.toLocaleString('en-US')} came before this machine drove the program (chosen or rewired after scan ${live.since.toLocaleString('en-US')})`
+          : `Scan ${historyScan.toLocaleString('en-US')} is no longer kept for the machine`
       : shown && shown.scan > 0
         ? `After scan ${shown.scan.toLocaleString('en-US')} (${seconds(started(shown.scan, shown.timeMs, simScan, simTime))})`
         : shown && mode !== 'stopped'
