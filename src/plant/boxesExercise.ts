@@ -18,16 +18,16 @@ export const BOXES_SCENARIO: Scenario = {
 # off the belt fails the scenario at the scan it happens, located.
 # Stop is pressed at 26.4 s, while a large box rides from the size sensor to the pusher: the belt
 # stops (the box with it); Start at 31.4 s goes on, and that box must still be pushed.
-scan,boxes.Start,boxes.Stop,expect Running,expect Conveyor,expect RunLamp,expect boxes.speed,expect boxes.sorted,expect boxes.large_chute
-1,1,0,,,,,,
-3,0,,1,1,1,*,0,0
-250,,,1,1,1,100,4,2
-265,,1,,,,,,
-267,,0,,,,,,
-275,,,0,0,0,0,5,2
-315,1,,,,,,,
-317,0,,1,1,1,*,5,2
-532,,,1,1,1,100,10,5
+scan,boxes.Start,boxes.Stop,expect Conveyor,expect RunLamp,expect boxes.speed,expect boxes.sorted,expect boxes.large_chute
+1,1,0,,,,,
+3,0,,1,1,*,0,0
+250,,,1,1,100,4,2
+265,,1,,,,,
+267,,0,,,,,
+275,,,0,0,0,5,2
+315,1,,,,,,
+317,0,,1,1,*,5,2
+532,,,1,1,100,10,5
 `,
 };
 

@@ -24,21 +24,21 @@ export const MIXER_SCENARIO: Scenario = {
 # at 40 s the batch is stirred; at 95 s it is discharged with DoneLamp lit, heater and agitator off.
 # Stop is pressed at 260 s while the third batch heats (everything goes off), Start at 270 s.
 # An overflow, a scorch, a heater run dry or a spoiled batch fails the scenario at the scan it happens.
-scan,mixer.Start,mixer.Stop,expect Running,expect ValveA,expect ValveB,expect Agitator,expect Heater,expect OutletValve,expect DoneLamp,expect mixer.batches,expect mixer.ratio ~ 10
-1,1,0,,,,,,,,0,
-3,0,,1,,,,,,,0,
-50,,,1,1,0,0,0,0,0,0,
-150,,,1,0,1,0,0,0,0,0,
-400,,,1,0,0,1,*,0,0,0,
-950,,,1,0,0,0,0,1,1,0,50
-1150,,,1,,,,,,,1,
-2250,,,1,,,,,,,2,
-2600,,1,,,,,,,,,
-2602,,0,,,,,,,,,
-2610,,,0,0,0,0,0,0,0,2,
-2700,1,,,,,,,,,,
-2702,0,,1,,,,,,,,
-3400,,,1,,,,,,,3,
+scan,mixer.Start,mixer.Stop,expect ValveA,expect ValveB,expect Agitator,expect Heater,expect OutletValve,expect DoneLamp,expect mixer.batches,expect mixer.ratio ~ 10
+1,1,0,,,,,,,0,
+3,0,,,,,,,,0,
+50,,,1,0,0,0,0,0,0,
+150,,,0,1,0,0,0,0,0,
+400,,,0,0,1,*,0,0,0,
+950,,,0,0,0,0,1,1,0,50
+1150,,,,,,,,,1,
+2250,,,,,,,,,2,
+2600,,1,,,,,,,,
+2602,,0,,,,,,,,
+2610,,,0,0,0,0,0,0,2,
+2700,1,,,,,,,,,
+2702,0,,,,,,,,,
+3400,,,,,,,,,3,
 `,
 };
 

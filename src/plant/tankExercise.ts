@@ -22,21 +22,21 @@ export const TANK_SCENARIO: Scenario = {
 # At 2 s the water is below the low switch: the pump fills through the open inlet, the drain is shut.
 # Stop is pressed at 230 s while the tank fills: everything goes off and the level stays; Start at 240 s.
 # An overflow or a dry run fails the scenario at the scan it happens.
-scan,tank.Start,tank.Stop,expect Running,expect RunLamp,expect Pump,expect InletValve,expect DrainValve,expect tank.level ~ 50,expect tank.deadheads
-1,1,0,,,,,,,
-3,0,,1,1,*,*,*,*,0
-20,,,1,1,1,1,0,138,0
-600,,,1,1,0,0,1,646,0
-1200,,,1,1,1,1,1,421,0
-1800,,,1,1,0,0,1,458,0
-2300,,1,,,,,,,
-2302,,0,,,,,,,
-2310,,,0,0,0,0,0,552,0
-2399,,,0,0,0,0,0,552,0
-2400,1,,,,,,,,
-2402,0,,1,1,*,*,*,*,0
-2700,,,1,1,0,0,1,256,0
-3000,,,1,1,1,1,1,557,0
+scan,tank.Start,tank.Stop,expect RunLamp,expect Pump,expect InletValve,expect DrainValve,expect tank.level ~ 50,expect tank.deadheads
+1,1,0,,,,,,
+3,0,,1,*,*,*,*,0
+20,,,1,1,1,0,138,0
+600,,,1,0,0,1,646,0
+1200,,,1,1,1,1,421,0
+1800,,,1,0,0,1,458,0
+2300,,1,,,,,,
+2302,,0,,,,,,
+2310,,,0,0,0,0,552,0
+2399,,,0,0,0,0,552,0
+2400,1,,,,,,,
+2402,0,,1,*,*,*,*,0
+2700,,,1,0,0,1,256,0
+3000,,,1,1,1,1,557,0
 `,
 };
 
