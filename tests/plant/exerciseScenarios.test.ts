@@ -14,11 +14,14 @@ describe('tank: the scenario catches the typical mistakes', () => {
   const tankSt = (running: string, fill: string, outputs: string) =>
     studentSolution(tankReference(), `${running}\nRunLamp := Running;\n${fill}\n${outputs}\n`, TANK_OWN);
   const RUNNING = 'Running := (Start OR Running) AND NOT Stop;';
-  const LATCH = 'IF Running AND NOT LowLevel THEN Filling := TRUE; END_IF;\nIF HighLevel OR NOT Running THEN Filling := FALSE; END_IF;';
+  const LATCH =
+    'IF Running AND NOT LowLevel THEN Filling := TRUE; END_IF;\nIF HighLevel OR NOT Running THEN Filling := FALSE; END_IF;';
   const OUTPUTS = 'Pump := Filling; InletValve := Filling; DrainValve := Running AND LowLevel;';
 
   test('the task written in ST as the text says passes', () => {
-    expect(testRun(tankSt(RUNNING, LATCH, OUTPUTS)).first).toBe('PASS Tank held between the switches for 5 minutes (3000 scans)');
+    expect(testRun(tankSt(RUNNING, LATCH, OUTPUTS)).first).toBe(
+      'PASS Tank held between the switches for 5 minutes (3000 scans)',
+    );
   });
 
   test("the scenario judges the machine's I/O only: a solution with its own names (no Running, no Filling) passes", () => {
@@ -55,11 +58,16 @@ Pump := Fill; InletValve := Fill; DrainValve := On AND LowLevel;
     {
       mistake: 'Stop ignored',
       st: ['Running := Start OR Running;', LATCH, OUTPUTS],
-      fails: 'scan 2310 (line 18): RunLamp expected 0, got 1; Pump expected 0, got 1; InletValve expected 0, got 1; DrainValve expected 0, got 1',
+      fails:
+        'scan 2310 (line 18): RunLamp expected 0, got 1; Pump expected 0, got 1; InletValve expected 0, got 1; DrainValve expected 0, got 1',
     },
     {
       mistake: 'Stop does not end filling',
-      st: [RUNNING, 'IF Running AND NOT LowLevel THEN Filling := TRUE; END_IF;\nIF HighLevel THEN Filling := FALSE; END_IF;', OUTPUTS],
+      st: [
+        RUNNING,
+        'IF Running AND NOT LowLevel THEN Filling := TRUE; END_IF;\nIF HighLevel THEN Filling := FALSE; END_IF;',
+        OUTPUTS,
+      ],
       fails: 'scan 2310 (line 18): Pump expected 0, got 1; InletValve expected 0, got 1',
     },
     {
@@ -77,7 +85,8 @@ Pump := Fill; InletValve := Fill; DrainValve := On AND LowLevel;
 describe('garage: the scenario catches the typical mistakes', () => {
   const OWN = ['Opening: BOOL', 'Closing: BOOL', 'PreWarn: TON'];
   const OPEN = 'Opening := (KeyOpen OR Opening OR (Closing AND Obstacle)) AND NOT OpenLimit AND NOT Stop;';
-  const CLOSE = 'Closing := (KeyClose OR Closing) AND NOT ClosedLimit AND NOT Stop AND NOT Obstacle AND NOT Opening;';
+  const CLOSE =
+    'Closing := (KeyClose OR Closing) AND NOT ClosedLimit AND NOT Stop AND NOT Obstacle AND NOT Opening;';
   const MOTOR = `WarningLamp := Opening OR Closing;
 PreWarn(IN := WarningLamp, PT := T#1s);
 MotorUp := Opening AND PreWarn.Q AND NOT MotorDown;
@@ -112,7 +121,8 @@ MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;`;
     {
       mistake: 'the closing door only stops for the car (no reversing)',
       st: ['Opening := (KeyOpen OR Opening) AND NOT OpenLimit AND NOT Stop;', CLOSE, MOTOR],
-      fails: 'scan 540 (line 20): OpenLimit expected 1, got 0; garage.position expected 99.5 ± 1, got 83.333336',
+      fails:
+        'scan 540 (line 20): OpenLimit expected 1, got 0; garage.position expected 99.5 ± 1, got 83.333336',
     },
     {
       mistake: 'the pre-warning timer too short',
@@ -139,7 +149,9 @@ MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;`;
         'MotorUp := Opening AND PreWarn.Q AND NOT MotorDown; MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;',
       ),
     );
-    expect(r.out).toContain('warning: the door started to move less than 1 s after the warning lamp lit at scan 6 (0.50 s)');
+    expect(r.out).toContain(
+      'warning: the door started to move less than 1 s after the warning lamp lit at scan 6 (0.50 s)',
+    );
   });
 });
 
@@ -161,7 +173,8 @@ Pusher := Pushing;`;
     {
       mistake: 'Stop ignored',
       st: ['Running := Start OR Running; Conveyor := Running; RunLamp := Running;', SORT],
-      fails: 'scan 275 (line 13): Conveyor expected 0, got 1; RunLamp expected 0, got 1; boxes.speed expected 0, got 100',
+      fails:
+        'scan 275 (line 13): Conveyor expected 0, got 1; RunLamp expected 0, got 1; boxes.speed expected 0, got 100',
     },
     {
       mistake: 'the run lamp forgotten',
@@ -211,7 +224,17 @@ Pusher := Pushing;`,
 });
 
 describe('mixer: the scenario catches the typical mistakes', () => {
-  const OWN = ['Running: BOOL', 'DoseA: BOOL', 'DoseB: BOOL', 'Mixing: BOOL', 'Emptying: BOOL', 'AtTemp: BOOL', 'Holding: BOOL', 'HoldTime: TON', 'EmptyTime: TON'];
+  const OWN = [
+    'Running: BOOL',
+    'DoseA: BOOL',
+    'DoseB: BOOL',
+    'Mixing: BOOL',
+    'Emptying: BOOL',
+    'AtTemp: BOOL',
+    'Holding: BOOL',
+    'HoldTime: TON',
+    'EmptyTime: TON',
+  ];
   const RUN = 'Running := (Start OR Running) AND NOT Stop;';
   const DOSE = `IF Running AND NOT LowLevel AND NOT DoseA AND NOT DoseB AND NOT Mixing AND NOT Emptying THEN DoseA := TRUE; END_IF;
 IF DoseA AND MidLevel THEN DoseB := TRUE; DoseA := FALSE; END_IF;
@@ -257,13 +280,21 @@ IF DoseA AND HighLevel THEN Mixing := TRUE; DoseA := FALSE; DoseB := FALSE; END_
     },
     {
       mistake: 'the outlet closed as soon as the low switch goes OFF',
-      st: [RUN, DOSE, HOLD, 'IF HoldTime.Q THEN Emptying := TRUE; Mixing := FALSE; Holding := FALSE; END_IF;\nIF Emptying AND NOT LowLevel THEN Emptying := FALSE; END_IF;', OUT],
-      fails: 'the vessel was not emptied (the outlet closed with 94.1 L left): the next batch was dosed onto it, and the last batch is not counted at scan 1,053 (105.20 s)',
+      st: [
+        RUN,
+        DOSE,
+        HOLD,
+        'IF HoldTime.Q THEN Emptying := TRUE; Mixing := FALSE; Holding := FALSE; END_IF;\nIF Emptying AND NOT LowLevel THEN Emptying := FALSE; END_IF;',
+        OUT,
+      ],
+      fails:
+        'the vessel was not emptied (the outlet closed with 94.1 L left): the next batch was dosed onto it, and the last batch is not counted at scan 1,053 (105.20 s)',
     },
     {
       mistake: 'the heater switched off for good at 60 °C (no thermostat through the hold)',
       st: [RUN, DOSE, HOLD, EMPTY, OUT.replace('AND NOT AtTemp AND NOT HoldTime.Q', 'AND NOT Holding')],
-      fails: 'a batch was discharged held only 21.4 s at 57 °C or above with the agitator running (it must be held 30 s at 60 °C) and is spoiled at scan 903 (90.20 s)',
+      fails:
+        'a batch was discharged held only 21.4 s at 57 °C or above with the agitator running (it must be held 30 s at 60 °C) and is spoiled at scan 903 (90.20 s)',
     },
   ])('$mistake fails: $fails', ({ st, fails }) => {
     const r = testRun(mixerSt(...st));
@@ -273,7 +304,16 @@ IF DoseA AND HighLevel THEN Mixing := TRUE; DoseA := FALSE; DoseB := FALSE; END_
 });
 
 describe('lift: the scenario catches the typical mistakes', () => {
-  const OWN = ['Req1: BOOL', 'Req2: BOOL', 'Req3: BOOL', 'Here: BOOL', 'Above: BOOL', 'Below: BOOL', 'Standstill: TON', 'Dwell: TON'];
+  const OWN = [
+    'Req1: BOOL',
+    'Req2: BOOL',
+    'Req3: BOOL',
+    'Here: BOOL',
+    'Above: BOOL',
+    'Below: BOOL',
+    'Standstill: TON',
+    'Dwell: TON',
+  ];
   const CALLS = `IF Call1 THEN Req1 := TRUE; END_IF; IF Call2 THEN Req2 := TRUE; END_IF; IF Call3 THEN Req3 := TRUE; END_IF;
 IF AtFloor1 AND DoorOpened THEN Req1 := FALSE; END_IF;
 IF AtFloor2 AND DoorOpened THEN Req2 := FALSE; END_IF;
@@ -305,12 +345,26 @@ IF (AtFloor2 AND Req2) OR AtFloor1 THEN MotorDown := FALSE; END_IF;`;
     },
     {
       mistake: 'no stop at a called floor the car passes',
-      st: [CALLS, DWELL, GO, 'IF AtFloor3 THEN MotorUp := FALSE; END_IF;\nIF AtFloor1 THEN MotorDown := FALSE; END_IF;'],
-      fails: 'scan 500 (line 11): CallLamp2 expected 0, got 1; lift.served expected 1, got 0; lift.floor expected 2, got 0; DoorOpened expected 1, got 0',
+      st: [
+        CALLS,
+        DWELL,
+        GO,
+        'IF AtFloor3 THEN MotorUp := FALSE; END_IF;\nIF AtFloor1 THEN MotorDown := FALSE; END_IF;',
+      ],
+      fails:
+        'scan 500 (line 11): CallLamp2 expected 0, got 1; lift.served expected 1, got 0; lift.floor expected 2, got 0; DoorOpened expected 1, got 0',
     },
     {
       mistake: 'the call not remembered (the lamp follows the button)',
-      st: [CALLS.replace('CallLamp1 := Req1; CallLamp2 := Req2; CallLamp3 := Req3;', 'CallLamp1 := Call1; CallLamp2 := Call2; CallLamp3 := Call3;'), DWELL, GO, STOP],
+      st: [
+        CALLS.replace(
+          'CallLamp1 := Req1; CallLamp2 := Req2; CallLamp3 := Req3;',
+          'CallLamp1 := Call1; CallLamp2 := Call2; CallLamp3 := Call3;',
+        ),
+        DWELL,
+        GO,
+        STOP,
+      ],
       fails: 'scan 6 (line 8): CallLamp3 expected 1, got 0',
     },
   ])('$mistake fails: $fails', ({ st, fails }) => {
@@ -322,8 +376,18 @@ IF (AtFloor2 AND Req2) OR AtFloor1 THEN MotorDown := FALSE; END_IF;`;
 
 describe('intersection: the scenario catches the typical mistakes', () => {
   const OWN = [
-    'AskMain: BOOL', 'AskSide: BOOL', 'Demand: BOOL', 'Cycle: BOOL', 'MainGreenTime: TON', 'MainYellowTime: TON',
-    'AllRedTime1: TON', 'SideGreenTime: TON', 'SideYellowTime: TON', 'AllRedTime2: TON', 'WalkSideTime: TON', 'WalkMainTime: TON',
+    'AskMain: BOOL',
+    'AskSide: BOOL',
+    'Demand: BOOL',
+    'Cycle: BOOL',
+    'MainGreenTime: TON',
+    'MainYellowTime: TON',
+    'AllRedTime1: TON',
+    'SideGreenTime: TON',
+    'SideYellowTime: TON',
+    'AllRedTime2: TON',
+    'WalkSideTime: TON',
+    'WalkMainTime: TON',
   ];
   const ASK = `IF CrossMain THEN AskMain := TRUE; END_IF; IF WalkMain THEN AskMain := FALSE; END_IF;
 IF CrossSide THEN AskSide := TRUE; END_IF; IF WalkSide THEN AskSide := FALSE; END_IF;
@@ -355,27 +419,48 @@ WalkSide := NOT Cycle AND NOT WalkSideTime.Q; DontWalkSide := NOT WalkSide;`;
     {
       mistake: 'a 1 s yellow',
       st: [ASK, times('T#1s', 'T#2s'), LAMPS],
-      fails: 'the main road went from green to red after 1.0 s of yellow (at least 3 s of yellow asked) at scan 211 (21.00 s)',
+      fails:
+        'the main road went from green to red after 1.0 s of yellow (at least 3 s of yellow asked) at scan 211 (21.00 s)',
     },
     {
       mistake: 'no all-red between the roads',
       st: [ASK, times('T#3s', 'T#0s'), LAMPS],
-      fails: 'the side road got green 0.1 s after the main road turned red (both roads red at least 2 s asked) at scan 232 (23.10 s)',
+      fails:
+        'the side road got green 0.1 s after the main road turned red (both roads red at least 2 s asked) at scan 232 (23.10 s)',
     },
     {
       mistake: 'WALK over the main road lit the whole side road green (10 s)',
-      st: [ASK, times('T#3s', 'T#2s').replace('WalkMainTime(IN := AllRedTime1.Q, PT := T#4s);', 'WalkMainTime(IN := AllRedTime1.Q, PT := T#10s);'), LAMPS],
+      st: [
+        ASK,
+        times('T#3s', 'T#2s').replace(
+          'WalkMainTime(IN := AllRedTime1.Q, PT := T#4s);',
+          'WalkMainTime(IN := AllRedTime1.Q, PT := T#10s);',
+        ),
+        LAMPS,
+      ],
       fails: 'the main road got green while pedestrians were still crossing it at scan 1,604 (160.30 s)',
     },
     {
       mistake: 'WALK over the side road lit the whole main road green',
-      st: [ASK, times('T#3s', 'T#2s'), LAMPS.replace('WalkSide := NOT Cycle AND NOT WalkSideTime.Q;', 'WalkSide := NOT Cycle;')],
+      st: [
+        ASK,
+        times('T#3s', 'T#2s'),
+        LAMPS.replace('WalkSide := NOT Cycle AND NOT WalkSideTime.Q;', 'WalkSide := NOT Cycle;'),
+      ],
       fails: 'the side road got green while pedestrians were still crossing it at scan 1,855 (185.40 s)',
     },
     {
       mistake: 'the side road green straight to red',
-      st: [ASK, times('T#3s', 'T#2s'), LAMPS.replace('SideYellow := Cycle AND SideGreenTime.Q AND NOT SideYellowTime.Q;', 'SideYellow := FALSE;')],
-      fails: 'the side road went from green to red without yellow (at least 3 s of yellow asked) at scan 351 (35.00 s)',
+      st: [
+        ASK,
+        times('T#3s', 'T#2s'),
+        LAMPS.replace(
+          'SideYellow := Cycle AND SideGreenTime.Q AND NOT SideYellowTime.Q;',
+          'SideYellow := FALSE;',
+        ),
+      ],
+      fails:
+        'the side road went from green to red without yellow (at least 3 s of yellow asked) at scan 351 (35.00 s)',
     },
   ])('$mistake fails: $fails', ({ st: lines, fails }) => {
     const r = testRun(st(...lines));
@@ -388,7 +473,10 @@ describe('every reference solution reaches its goal at every scan cycle it is me
   /** The scenario's operator actions at `cycle` (each at the same PLC time), then the goal checked 2 s after its last row. */
   const atCycle = (csv: string, cycle: number, goal: string, value: string): string => {
     const from = Number(/^# cycle: (\d+)ms$/m.exec(csv)![1]);
-    const lines = csv.trim().split('\n').filter((l) => !l.startsWith('#'));
+    const lines = csv
+      .trim()
+      .split('\n')
+      .filter((l) => !l.startsWith('#'));
     const head = lines[0]!.split(',');
     const inputs = head.map((h, i) => (h.startsWith('expect') ? -1 : i)).filter((i) => i > 0);
     let last = 0;
@@ -410,11 +498,41 @@ describe('every reference solution reaches its goal at every scan cycle it is me
     return `# plant: ${/^# plant: (\w+)$/m.exec(csv)![1]}\n# cycle: ${cycle}ms\nscan,${inputs.map((i) => head[i]).join(',')},expect ${goal}\n${rows.join('\n')}\n`;
   };
   test.each([
-    { id: 'tank', reference: tankReference, goal: 'tank.deadheads', value: '0', cycles: [1, 10, 50, 100, 200] },
-    { id: 'boxes', reference: boxesReference, goal: 'boxes.sorted', value: '10', cycles: [1, 10, 50, 100, 200] },
-    { id: 'garage', reference: garageReference, goal: 'garage.cycles', value: '3', cycles: [1, 10, 50, 100, 200] },
-    { id: 'mixer', reference: mixerReference, goal: 'mixer.batches', value: '3', cycles: [1, 10, 50, 100, 200] },
-    { id: 'intersection', reference: intersectionReference, goal: 'intersection.ped_served', value: '7', cycles: [1, 10, 50, 100, 200] },
+    {
+      id: 'tank',
+      reference: tankReference,
+      goal: 'tank.deadheads',
+      value: '0',
+      cycles: [1, 10, 50, 100, 200],
+    },
+    {
+      id: 'boxes',
+      reference: boxesReference,
+      goal: 'boxes.sorted',
+      value: '10',
+      cycles: [1, 10, 50, 100, 200],
+    },
+    {
+      id: 'garage',
+      reference: garageReference,
+      goal: 'garage.cycles',
+      value: '3',
+      cycles: [1, 10, 50, 100, 200],
+    },
+    {
+      id: 'mixer',
+      reference: mixerReference,
+      goal: 'mixer.batches',
+      value: '3',
+      cycles: [1, 10, 50, 100, 200],
+    },
+    {
+      id: 'intersection',
+      reference: intersectionReference,
+      goal: 'intersection.ped_served',
+      value: '7',
+      cycles: [1, 10, 50, 100, 200],
+    },
     // The lift needs a scan of 20 ms or faster (its task text says so): at 50 ms it stops off the floor.
     { id: 'lift', reference: liftReference, goal: 'lift.served', value: '6', cycles: [1, 10, 20] },
   ])('$id at $cycles ms', ({ reference, goal, value, cycles }) => {
@@ -429,6 +547,8 @@ describe('every reference solution reaches its goal at every scan cycle it is me
   test('the lift at 50 ms stops off the floor, as its task text warns', () => {
     const project = liftReference();
     const csv = atCycle(project.scenarios![0]!.csv, 50, 'lift.misstops', '0');
-    expect(testRun({ ...project, scenarios: [{ name: 'at 50 ms', csv }] }).out).toContain('warning: the car stopped 25 mm above floor 2');
+    expect(testRun({ ...project, scenarios: [{ name: 'at 50 ms', csv }] }).out).toContain(
+      'warning: the car stopped 25 mm above floor 2',
+    );
   });
 });
