@@ -2,6 +2,7 @@
 // fail the exercise's scenario, each with a message that names the scan, the time or the check
 // and what went wrong; a solution that does what the task text asks passes.
 import { describe, expect, test } from 'vitest';
+import type { Project } from '../../src/model/project';
 import { liftReference, tankReference } from '../../src/plant/exercises';
 import { boxesReference } from '../../src/plant/boxesExercise';
 import { garageReference } from '../../src/plant/garageExercise';
@@ -166,7 +167,13 @@ Pusher := Pushing;`;
   const NAME = 'Ten boxes sorted by size';
 
   test('the task written in ST as the text says passes', () => {
-    expect(testRun(boxesSt(RUN, SORT)).first).toBe(`PASS ${NAME} (532 scans)`);
+    expect(testRun(boxesSt(RUN, SORT)).first).toBe(`PASS ${NAME} (570 scans)`);
+  });
+
+  test('a correct design slower than the reference passes: the belt stopped while the pusher pushes', () => {
+    const stopping = RUN.replace('Conveyor := Running;', 'Conveyor := Running AND NOT Pushing;');
+    expect(stopping).not.toBe(RUN);
+    expect(testRun(boxesSt(stopping, SORT)).first).toBe(`PASS ${NAME} (570 scans)`);
   });
 
   test.each([
@@ -174,12 +181,12 @@ Pusher := Pushing;`;
       mistake: 'Stop ignored',
       st: ['Running := Start OR Running; Conveyor := Running; RunLamp := Running;', SORT],
       fails:
-        'scan 275 (line 13): Conveyor expected 0, got 1; RunLamp expected 0, got 1; boxes.speed expected 0, got 100',
+        'scan 275 (line 14): Conveyor expected 0, got 1; RunLamp expected 0, got 1; boxes.speed expected 0, got 100',
     },
     {
       mistake: 'the run lamp forgotten',
       st: ['Running := (Start OR Running) AND NOT Stop; Conveyor := Running;', SORT],
-      fails: 'scan 3 (line 9): RunLamp expected 1, got 0',
+      fails: 'scan 3 (line 10): RunLamp expected 1, got 0',
     },
     {
       mistake: 'the push timed from the size sensor (3 s at belt speed) instead of the eye at the pusher',
@@ -470,8 +477,8 @@ WalkSide := NOT Cycle AND NOT WalkSideTime.Q; DontWalkSide := NOT WalkSide;`;
 });
 
 describe('every reference solution reaches its goal at every scan cycle it is meant for', () => {
-  /** The scenario's operator actions at `cycle` (each at the same PLC time), then the goal checked 2 s after its last row. */
-  const atCycle = (csv: string, cycle: number, goal: string, value: string): string => {
+  /** The scenario's operator actions at `cycle` (each at the same PLC time), then the goal checked `afterMs` after its last row. */
+  const atCycle = (csv: string, cycle: number, goal: string, value: string, afterMs = 2000): string => {
     const from = Number(/^# cycle: (\d+)ms$/m.exec(csv)![1]);
     const lines = csv
       .trim()
@@ -493,7 +500,7 @@ describe('every reference solution reaches its goal at every scan cycle it is me
       last = scan;
       rows.push([scan, ...set, ''].join(','));
     }
-    const end = Math.max(last + 1, Math.round((lastMs + 2000) / cycle) + 1);
+    const end = Math.max(last + 1, Math.round((lastMs + afterMs) / cycle) + 1);
     rows.push([end, ...inputs.map(() => ''), value].join(','));
     return `# plant: ${/^# plant: (\w+)$/m.exec(csv)![1]}\n# cycle: ${cycle}ms\nscan,${inputs.map((i) => head[i]).join(',')},expect ${goal}\n${rows.join('\n')}\n`;
   };
@@ -511,6 +518,8 @@ describe('every reference solution reaches its goal at every scan cycle it is me
       goal: 'boxes.sorted',
       value: '10',
       cycles: [1, 10, 50, 100, 200],
+      // At the scenario's end: the 11th box comes 0.7 s after it.
+      afterMs: 0,
     },
     {
       id: 'garage',
@@ -535,10 +544,17 @@ describe('every reference solution reaches its goal at every scan cycle it is me
     },
     // The lift needs a scan of 20 ms or faster (its task text says so): at 50 ms it stops off the floor.
     { id: 'lift', reference: liftReference, goal: 'lift.served', value: '6', cycles: [1, 10, 20] },
-  ])('$id at $cycles ms', ({ reference, goal, value, cycles }) => {
+  ] as {
+    id: string;
+    reference: () => Project;
+    goal: string;
+    value: string;
+    cycles: number[];
+    afterMs?: number;
+  }[])('$id at $cycles ms', ({ reference, goal, value, cycles, afterMs }) => {
     for (const cycle of cycles) {
       const project = reference();
-      const csv = atCycle(project.scenarios![0]!.csv, cycle, goal, value);
+      const csv = atCycle(project.scenarios![0]!.csv, cycle, goal, value, afterMs);
       const r = testRun({ ...project, scenarios: [{ name: `at ${cycle} ms`, csv }] });
       expect([cycle, r.first]).toEqual([cycle, expect.stringMatching(/^PASS at \d+ ms/)]);
     }
