@@ -60,7 +60,7 @@ const EXERCISES: {
     reference: mixerReference,
     wrong: mixerWrong,
     scenario: 'Three good batches',
-    scans: 3400,
+    scans: 3600,
     failure: 'a batch overheated above 80 °C and is spoiled at scan 819 (81.80 s)',
   },
   {

@@ -259,19 +259,24 @@ OutletValve := Emptying AND Running; DoneLamp := Emptying;`;
   const NAME = 'Three good batches';
 
   test('the task written in ST as the text says passes', () => {
-    expect(testRun(mixerSt(RUN, DOSE, HOLD, EMPTY, OUT)).first).toBe(`PASS ${NAME} (3400 scans)`);
+    expect(testRun(mixerSt(RUN, DOSE, HOLD, EMPTY, OUT)).first).toBe(`PASS ${NAME} (3600 scans)`);
+  });
+
+  test('a correct design slower than the reference passes: a 35 s hold, the outlet open 6 s after the low switch', () => {
+    const slow = mixerSt(RUN, DOSE, HOLD.replace('T#30s', 'T#35s'), EMPTY.replace('T#4s', 'T#6s'), OUT);
+    expect(testRun(slow).first).toBe(`PASS ${NAME} (3600 scans)`);
   });
 
   test.each([
     {
       mistake: 'Stop ignored',
       st: ['Running := Start OR Running;', DOSE, HOLD, EMPTY, OUT],
-      fails: 'scan 2610 (line 19): Agitator expected 0, got 1; Heater expected 0, got 1',
+      fails: 'scan 2610 (line 20): Agitator expected 0, got 1; Heater expected 0, got 1',
     },
     {
       mistake: 'the done lamp forgotten',
       st: [RUN, DOSE, HOLD, EMPTY, OUT.replace(' DoneLamp := Emptying;', '')],
-      fails: 'scan 950 (line 14): DoneLamp expected 1, got 0',
+      fails: 'scan 1000 (line 15): DoneLamp expected 1, got 0',
     },
     {
       mistake: 'A and B dosed together up to the high switch',
@@ -283,7 +288,7 @@ IF DoseA AND HighLevel THEN Mixing := TRUE; DoseA := FALSE; DoseB := FALSE; END_
         EMPTY,
         OUT,
       ],
-      fails: 'scan 50 (line 11): ValveB expected 0, got 1',
+      fails: 'scan 50 (line 12): ValveB expected 0, got 1',
     },
     {
       mistake: 'the outlet closed as soon as the low switch goes OFF',
