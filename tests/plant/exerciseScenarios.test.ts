@@ -99,6 +99,12 @@ MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;`;
     expect(testRun(garageSt(OPEN, CLOSE, MOTOR)).first).toBe(`PASS ${NAME} (1200 scans)`);
   });
 
+  test('a correct design slower than the reference passes: a 2 s pre-warning', () => {
+    expect(testRun(garageSt(OPEN, CLOSE, MOTOR.replace('T#1s', 'T#2s'))).first).toBe(
+      `PASS ${NAME} (1200 scans)`,
+    );
+  });
+
   test.each([
     {
       mistake: 'Stop ignored',
@@ -107,7 +113,7 @@ MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;`;
         'Closing := (KeyClose OR Closing) AND NOT ClosedLimit AND NOT Obstacle AND NOT Opening;',
         MOTOR,
       ],
-      fails: 'scan 1080 (line 37): MotorUp expected 0, got 1; garage.position expected 40.8 ± 1, got 50',
+      fails: 'scan 1080 (line 38): MotorUp expected 0, got 1; garage.moving expected 0, got 1',
     },
     {
       mistake: 'KeyClose not locked out while the door opens (no interlock of the directions)',
@@ -123,7 +129,7 @@ MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;`;
       mistake: 'the closing door only stops for the car (no reversing)',
       st: ['Opening := (KeyOpen OR Opening) AND NOT OpenLimit AND NOT Stop;', CLOSE, MOTOR],
       fails:
-        'scan 540 (line 20): OpenLimit expected 1, got 0; garage.position expected 99.5 ± 1, got 83.333336',
+        'scan 540 (line 21): OpenLimit expected 1, got 0; garage.position expected 99.5 ± 1, got 83.333336',
     },
     {
       mistake: 'the pre-warning timer too short',
@@ -133,7 +139,7 @@ MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;`;
         'WarningLamp := Opening OR Closing; PreWarn(IN := WarningLamp, PT := T#500ms);',
         'MotorUp := Opening AND PreWarn.Q AND NOT MotorDown; MotorDown := Closing AND PreWarn.Q AND NOT MotorUp;',
       ],
-      fails: 'scan 150 (line 11): garage.unwarned expected 0, got 1',
+      fails: 'scan 150 (line 12): garage.unwarned expected 0, got 1',
     },
   ])('$mistake fails: $fails', ({ st, fails }) => {
     const r = testRun(garageSt(...st));
@@ -425,6 +431,15 @@ WalkSide := NOT Cycle AND NOT WalkSideTime.Q; DontWalkSide := NOT WalkSide;`;
 
   test('the task written in ST as the text says passes', () => {
     expect(testRun(st(ASK, times('T#3s', 'T#2s'), LAMPS)).first).toBe(`PASS ${NAME} (3000 scans)`);
+  });
+
+  test('a correct design other than the reference passes: a 25 s minimum green, 4 s of yellow, 3 s of all red', () => {
+    const other = times('T#4s', 'T#3s').replace(
+      'MainGreenTime(IN := NOT Cycle, PT := T#20s);',
+      'MainGreenTime(IN := NOT Cycle, PT := T#25s);',
+    );
+    expect(other).toContain('T#25s');
+    expect(testRun(st(ASK, other, LAMPS)).first).toBe(`PASS ${NAME} (3000 scans)`);
   });
 
   test.each([
