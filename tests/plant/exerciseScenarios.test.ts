@@ -356,6 +356,13 @@ IF (AtFloor2 AND Req2) OR AtFloor1 THEN MotorDown := FALSE; END_IF;`;
   });
 
   test.each([
+    ['waits 0.5 s at rest before opening the door', 'T#300ms', 'T#500ms'],
+    ['waits 0.15 s at rest before opening the door', 'T#300ms', 'T#150ms'],
+  ])('a correct design other than the reference passes: it %s', (_what, from, to) => {
+    expect(testRun(liftSt(CALLS.replace(from, to), DWELL, GO, STOP)).first).toBe(`PASS ${NAME} (5000 scans)`);
+  });
+
+  test.each([
     {
       mistake: 'the door closed as soon as it is fully open (no 2 s dwell)',
       st: [CALLS, 'IF DoorOpened THEN DoorOpen := FALSE; END_IF;', GO, STOP],
