@@ -118,7 +118,7 @@ export const tank: PlantModel<TankState> = {
     { id: 'high_stuck_off', title: 'High level switch stuck OFF' },
     { id: 'high_stuck_on', title: 'High level switch stuck ON' },
     { id: 'pump_dead', title: 'Pump motor does not start' },
-    { id: 'inlet_slow', title: 'Inlet valve slow (15 s to open)' },
+    { id: 'inlet_slow', title: 'Inlet valve slow (15 s to open or close)' },
     { id: 'drain_stuck', title: 'Drain valve stuck closed' },
   ],
   quantities: [
