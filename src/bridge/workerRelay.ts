@@ -36,12 +36,15 @@ interface Link {
   pollMs: number | undefined;
   /** Output point types by address (from the welcome). */
   outTypes: Map<string, PointType>;
+  /** Outputs configured `hold` (from the welcome): their safe value is their last value. */
+  holds: Set<string>;
   values: Record<string, WireValue>;
   /**
    * Outputs written through this link since the gateway last disarmed (it then writes the safe
    * image itself). One the program shown no longer writes, after an online change moved or removed
-   * its variable, is written OFF/0: the gateway keeps the last value of a point it is not sent, so
-   * it would stay ON with no program switching it off.
+   * its variable, is given its safe value: OFF/0 (the gateway keeps the last value of a point it is
+   * not sent, so it would stay ON with no program switching it off), or, configured `hold`, its last
+   * value (a valve that must not move when no program drives it, as in the safe state).
    */
   driven: Map<string, PointType>;
 }
@@ -134,8 +137,9 @@ export class GatewayRelay {
         written.add(address);
       }
     }
-    // `outputs` is the program's whole output image: a point driven before and missing now is no longer its output.
-    for (const [address, type] of drive.link.driven) if (!written.has(address)) next[address] = zeroOf(type);
+    // `outputs` is the program's whole output image: a point driven before and missing now is no
+    // longer its output, and takes its safe value (a `hold` point keeps the value it has: `next` holds it).
+    for (const [address, type] of drive.link.driven) if (!written.has(address) && !drive.link.holds.has(address)) next[address] = zeroOf(type);
     for (const address of written) drive.link.driven.set(address, drive.link.outTypes.get(address)!);
     this.image = next;
     this.imageOf = program;
@@ -150,7 +154,7 @@ export class GatewayRelay {
       this.post({ type: 'gwEvent', id, event: 'close', code: 1006, reason: e instanceof Error ? e.message : String(e) });
       return;
     }
-    const link: Link = { id, socket, role: null, pollMs: undefined, outTypes: new Map(), values: {}, driven: new Map() };
+    const link: Link = { id, socket, role: null, pollMs: undefined, outTypes: new Map(), holds: new Set(), values: {}, driven: new Map() };
     this.links.set(id, link);
     this.current = link;
     socket.onopen = () => this.post({ type: 'gwEvent', id, event: 'open' });
@@ -180,9 +184,11 @@ export class GatewayRelay {
       link.role = typeof m.role === 'string' ? m.role : null;
       link.pollMs = typeof m.pollMs === 'number' ? m.pollMs : undefined;
       link.outTypes = new Map();
+      link.holds = new Set();
       if (Array.isArray(m.points)) {
-        for (const p of m.points as { address?: unknown; type?: unknown; dir?: unknown }[]) {
+        for (const p of m.points as { address?: unknown; type?: unknown; dir?: unknown; hold?: unknown }[]) {
           if (typeof p.address === 'string' && p.dir === 'out') link.outTypes.set(p.address, p.type as PointType);
+          if (typeof p.address === 'string' && p.dir === 'out' && p.hold === true) link.holds.add(p.address);
         }
       }
     } else if (m.t === 'status' && m.armed === false) {

@@ -83,8 +83,19 @@ export const configSchema = z.strictObject({
       modbusPort: z.number().int().min(0).max(65535).nullable().default(5020),
       /** A machine (docs/PLANTS.md) the device is: its sensors are the inputs, a Modbus master writes its actuators (virtual commissioning). */
       plant: z.string().min(1).optional(),
+      /**
+       * With a machine: the device's communication watchdog (ms), as an I/O coupler's. No Modbus write to
+       * the machine's actuators for this long and the outputs the master wrote fall OFF / 0; 0 turns it off.
+       */
+      masterWatchdogMs: z
+        .number()
+        .int()
+        .min(0)
+        .max(60_000)
+        .refine((ms) => ms === 0 || ms >= 100, 'is 0 (off) or 100 to 60000 ms')
+        .default(1000),
     })
-    .default({ modbusPort: 5020 }),
+    .default({ modbusPort: 5020, masterWatchdogMs: 1000 }),
   devices: z.array(modbusDeviceSchema).default([]),
 });
 export type GatewayConfigFile = z.infer<typeof configSchema>;

@@ -70,7 +70,7 @@ export async function startGateway(opts: GatewayOptions): Promise<RunningGateway
   const config = opts.config ?? resolveConfig({});
   const log = opts.log ?? (() => undefined);
   const token = opts.token ?? config.token ?? newToken();
-  const simulated = config.devices.length === 0 ? new SimulatedDevice(config.simulated.modbusPort, config.simulated.plant, log) : undefined;
+  const simulated = config.devices.length === 0 ? new SimulatedDevice(config.simulated.modbusPort, config.simulated.plant, log, config.simulated.masterWatchdogMs) : undefined;
   const devices: Device[] = simulated ? [simulated] : config.devices.map((d) => new ModbusTcpDevice(d));
 
   const pollMs = simulated ? SIMULATED_POLL_MS : Math.min(...config.devices.map((d) => d.pollMs));

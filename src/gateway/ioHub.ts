@@ -63,7 +63,8 @@ export class IoHub {
     const map = new Map<string, Bound>();
     for (const device of devices) {
       for (const point of device.points) {
-        map.set(point.address, { info: { address: point.address, type: point.type, dir: point.dir, device: device.info.id }, point, device });
+        const info: PointInfo = { address: point.address, type: point.type, dir: point.dir, device: device.info.id, ...(point.hold ? { hold: true } : {}) };
+        map.set(point.address, { info, point, device });
       }
     }
     this.points = map;

@@ -13,12 +13,14 @@ const SAFE_STATE_UNCONFIRMED = 3;
 
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
 
-const USAGE = `usage: rungsmith-gateway [--port N] [--config FILE] [--sim-port N] [--plant NAME] [--build-if-needed] [--no-app]
+const USAGE = `usage: rungsmith-gateway [--port N] [--config FILE] [--sim-port N] [--plant NAME] [--plant-watchdog MS] [--build-if-needed] [--no-app]
   --port N            HTTP + WebSocket port on 127.0.0.1 (default: PORT or 8080; 0 picks a free port)
   --config FILE       JSON config naming Modbus TCP devices (docs/GATEWAY-CONFIG.md)
   --sim-port N        Modbus TCP port of the simulated device on 127.0.0.1 (default 5020, 0: free port)
   --plant NAME        the simulated device is that machine (docs/PLANTS.md), advancing in real time:
                       a Modbus master (a real PLC) writes its actuators (coils) and reads its sensors
+  --plant-watchdog MS with --plant: no write to the actuators for MS ms (default 1000, 0: off) and
+                      the outputs the master wrote fall OFF, as an I/O coupler's watchdog does
   --build-if-needed   run "vite build" when dist/ is missing or older than the sources
   --no-app            serve only the WebSocket endpoint /io
 env: RUNGSMITH_TOKEN fixes the token (else config "token", else a random 256-bit one)`;
@@ -28,6 +30,7 @@ interface Args {
   config?: string;
   simPort?: number;
   plant?: string;
+  plantWatchdog?: number;
   build: boolean;
   app: boolean;
 }
@@ -48,7 +51,13 @@ function parseArgs(argv: readonly string[]): Args {
       if (!name) throw new ConfigError('--plant', 'needs a machine name (rungsmith plants lists them)');
       args.plant = name;
     }
-    else if (a === '--config') {
+    else if (a === '--plant-watchdog') {
+      const text = argv[++i];
+      const ms = Number(text);
+      if (text === undefined || !Number.isInteger(ms) || ms < 0 || ms > 60_000 || (ms > 0 && ms < 100))
+        throw new ConfigError('--plant-watchdog', `needs 0 (off) or 100 to 60000 ms, got ${JSON.stringify(text ?? '')}`);
+      args.plantWatchdog = ms;
+    } else if (a === '--config') {
       const file = argv[++i];
       if (!file) throw new ConfigError('--config', 'needs a file name');
       args.config = file;
@@ -86,7 +95,9 @@ async function main(): Promise<void> {
   const args = parseArgs(process.argv.slice(2));
   const base: ResolvedConfig = args.config ? loadConfigFile(args.config) : resolveConfig({});
   const withPort: ResolvedConfig = args.simPort !== undefined ? { ...base, simulated: { ...base.simulated, modbusPort: args.simPort } } : base;
-  const config: ResolvedConfig = args.plant !== undefined ? { ...withPort, simulated: { ...withPort.simulated, plant: args.plant } } : withPort;
+  const withPlant: ResolvedConfig = args.plant !== undefined ? { ...withPort, simulated: { ...withPort.simulated, plant: args.plant } } : withPort;
+  const config: ResolvedConfig =
+    args.plantWatchdog !== undefined ? { ...withPlant, simulated: { ...withPlant.simulated, masterWatchdogMs: args.plantWatchdog } } : withPlant;
   if (args.plant !== undefined) checkPlant(config, args.config ? `--plant (with --config ${args.config})` : '--plant');
   if (args.build && args.app) buildIfNeeded();
   const envPort = process.env.PORT !== undefined && process.env.PORT !== '' ? Number(process.env.PORT) : undefined;
@@ -151,7 +162,7 @@ async function main(): Promise<void> {
   const gw = await startGateway({ port, config, distDir, token, log });
   running.gw = gw;
   const sim = gw.simulated?.modbusServerPort;
-  log(gw.simulated ? `simulated I/O device (16 DI, 16 DO, 4 AI, 4 AO)${sim ? `, Modbus TCP on 127.0.0.1:${sim}` : ''}${config.simulated.plant ? `; it is the machine "${config.simulated.plant}" (its actuators are the coils a Modbus master writes, docs/PLANTS.md)` : ''}` : `${config.devices.length} Modbus TCP device(s)`);
+  log(gw.simulated ? `simulated I/O device (16 DI, 16 DO, 4 AI, 4 AO)${sim ? `, Modbus TCP on 127.0.0.1:${sim}` : ''}${config.simulated.plant ? `; it is the machine "${config.simulated.plant}" (its actuators are the coils a Modbus master writes, docs/PLANTS.md; ${config.simulated.masterWatchdogMs > 0 ? `they fall OFF after ${config.simulated.masterWatchdogMs} ms without a write, --plant-watchdog` : 'no watchdog: --plant-watchdog 0'})` : ''}` : `${config.devices.length} Modbus TCP device(s)`);
   try {
     process.stdout.write(`Rungsmith gateway: open ${gw.url}\n`);
   } catch {

@@ -45,6 +45,14 @@ export class ModbusTcpDevice implements Device {
   error: string | null = null;
   private readonly readBlocks: RequestBlock[];
   private readonly writeBlocks: RequestBlock[];
+  /** The `hold` outputs, read back before the safe image is written on a new connection. */
+  private readonly holdBlocks: RequestBlock[];
+  /**
+   * A new connection (or the first): what the device's `hold` outputs hold is unknown (a coupler that
+   * restarted dropped them). The safe image keeps them as the device holds them, read back before it
+   * is written: a held output the restart switched off is not switched on again while disarmed.
+   */
+  private holdsUnknown = true;
   private readonly inputs = new Map<string, WireValue>();
   private readonly quality = new Map<string, Quality>();
   private readonly written = new Map<string, WireValue>();
@@ -108,6 +116,10 @@ export class ModbusTcpDevice implements Device {
     this.writeBlocks = planBlocks(
       this.points.filter((p) => p.dir === 'out'),
       true,
+    );
+    this.holdBlocks = planBlocks(
+      this.points.filter((p) => p.dir === 'out' && p.hold),
+      false,
     );
     for (const p of this.points) {
       if (p.dir === 'in') {
@@ -343,6 +355,7 @@ export class ModbusTcpDevice implements Device {
     // A new connection may be a restarted device: write the desired image (safe unless driven) first thing.
     this.connected = true;
     this.writeDue = true;
+    this.holdsUnknown = true;
     // A new connection may be a restarted device: nothing of ours to compare with until written again.
     // Hands off (another master seen), nothing is written: keep comparing with what was read back last.
     this.baselineValid = this.handsOff;
@@ -447,6 +460,7 @@ export class ModbusTcpDevice implements Device {
     const client = this.client;
     if (!client?.isOpen) throw new Error('not connected');
     if (!this.final && this.handsOff && this.mode === 'safe' && this.safeAcked) return false;
+    if (this.mode === 'safe' && this.holdsUnknown) await this.keepHolds();
     const version = this.desiredVersion;
     const mode = this.mode;
     const timeoutMs =
@@ -484,6 +498,7 @@ export class ModbusTcpDevice implements Device {
       throw e;
     }
     this.baselineValid = true;
+    this.holdsUnknown = false;
     if (!fromPoll) this.wroteSincePoll = true;
     if (version === this.desiredVersion) {
       this.writeDue = false;
@@ -495,6 +510,43 @@ export class ModbusTcpDevice implements Device {
     }
     if (changed.size) this.listener?.written(changed);
     return true;
+  }
+
+  /**
+   * The safe image on a new connection: each `hold` output keeps what the device holds now (read
+   * back), not the value last written on an earlier connection, which a restarted coupler no longer
+   * has. A device that refuses the read gets OFF/0 there (the safe direction), and the log says so.
+   */
+  private async keepHolds(): Promise<void> {
+    const client = this.client;
+    if (!client) throw new Error('not connected');
+    const seen = new Map<string, WireValue>();
+    // Part of the safe write: it waits for a slow device as long as the write itself does.
+    const timeoutMs = this.final
+      ? this.requestTimeoutMs
+      : Math.max(this.requestTimeoutMs, this.cfg.safeWriteTimeoutMs);
+    try {
+      for (const b of this.holdBlocks) {
+        const n = b.points.length;
+        const raw =
+          b.table === 'coils'
+            ? (await this.request(() => client.readCoils(b.start, n), timeoutMs)).data
+            : (await this.request(() => client.readHoldingRegisters(b.start, n), timeoutMs)).data;
+        b.points.forEach((p, i) => {
+          const r = raw[i];
+          seen.set(p.address, typeof r === 'boolean' ? r : fromRegister(p.type, r ?? 0));
+        });
+      }
+    } catch (e) {
+      if (isTimeout(e)) this.safeWriteTimedOut = true;
+      if (!isModbusException(e)) throw e;
+      this.listener?.log?.(
+        `device "${this.info.id}" refuses reads of its outputs (${message(e)}): its hold outputs cannot be kept as they are and are written OFF/0 in the safe state`,
+      );
+      for (const b of this.holdBlocks) for (const p of b.points) seen.set(p.address, zeroOf(p.type));
+    }
+    for (const [a, v] of seen) this.desired.set(a, v);
+    this.holdsUnknown = false;
   }
 
   private readBackDue(): boolean {

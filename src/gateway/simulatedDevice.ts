@@ -13,6 +13,12 @@ import type { PlantModel } from '../plant/types';
 
 /** A machine's step in real time (virtual commissioning): every this many ms of wall time. */
 const PLANT_STEP_MS = 20;
+/**
+ * `--plant`: the device's communication watchdog, as an I/O coupler's (Beckhoff BK9000: on, 1000 ms,
+ * re-triggered by write telegrams, outputs to 0): no write to the machine's actuators for this long
+ * and the outputs the Modbus master wrote fall OFF / 0. A PLC rewrites its outputs every cycle.
+ */
+export const PLANT_MASTER_WATCHDOG_MS = 1000;
 
 export const SIMULATED_DEVICE_ID = 'sim';
 /** Writable windows for driving the simulated inputs over Modbus (OpenPLC leaves these free). */
@@ -69,16 +75,26 @@ export class SimulatedDevice implements Device {
    * running into an overflow by a PLC that is gone.
    */
   private readonly masterWritten = new Set<string>();
+  /**
+   * `--plant`: the communication watchdog (PLANT_MASTER_WATCHDOG_MS), fed by every Modbus write to the
+   * machine's actuators. A master that stays connected but stops writing (hung, its cable pulled
+   * without TCP noticing, another client such as an HMI keeping a connection open) loses its outputs.
+   */
+  private masterWatchdog: ReturnType<typeof setTimeout> | undefined;
+  /** `--plant`: the machine's push buttons (momentary) held pressed over Modbus (coil 800 + n), by address. */
+  private readonly buttonsHeld = new Set<string>();
 
   /**
    * @param modbusPort loopback port of the Modbus server (0: any free port; null: no server).
    * @param plant a machine (`tank`): its sensors drive the inputs, its actuators are the coils a Modbus master writes.
    * @param log the gateway's log: the machine's consequences (the tank overflowed) and its outputs falling when the PLC goes.
+   * @param masterWatchdogMs `--plant`: no write to the actuators for this long and the master's outputs fall OFF (0: never).
    */
   constructor(
     private readonly modbusPort: number | null,
     plant?: string,
     private readonly log: (line: string) => void = () => undefined,
+    private readonly masterWatchdogMs: number = PLANT_MASTER_WATCHDOG_MS,
   ) {
     const model = plant === undefined ? undefined : requirePlant(plant);
     const misfit = model && simulatedDeviceMisfit(model);
@@ -219,6 +235,8 @@ export class SimulatedDevice implements Device {
   }
 
   async close(): Promise<void> {
+    clearTimeout(this.masterWatchdog);
+    this.masterWatchdog = undefined;
     if (this.plantTimer) clearInterval(this.plantTimer);
     this.plantTimer = undefined;
     const server = this.server;
@@ -243,27 +261,65 @@ export class SimulatedDevice implements Device {
     // The machine writes its sensors' inputs only when they change: a value written over one would
     // stay, a limit switch ON with nothing behind it. Its operator controls may be pressed.
     if (this.machineSensorRefusal(p.address)) throw MACHINE_SENSOR;
+    const button = this.plant?.points.find((q) => q.kind === 'operator' && q.control === 'button' && addressKey(q.address) === addressKey(p.address));
+    if (button && value === true) this.buttonsHeld.add(p.address);
+    else this.buttonsHeld.delete(p.address);
     this.simulateInputs(new Map([[p.address, value]]));
   }
 
   /**
-   * A Modbus connection closed: with none left, the outputs the masters wrote fall OFF / 0. Deferred
-   * one timer turn, after the requests that connection sent last (modbus-serial serves each on a timer).
+   * A Modbus connection closed: with none left, the outputs the masters wrote fall OFF / 0, and the
+   * push buttons held over Modbus spring back (an operator who let go; a switch stays as it was set).
+   * Deferred one timer turn, after the requests that connection sent last (modbus-serial serves each
+   * on a timer).
    */
   private masterGone(server: ModbusServer): void {
     const plant = this.plant;
     if (!plant) return;
     setTimeout(() => {
-      if (this.server !== server || server.socks.size > 0 || this.masterWritten.size === 0) return;
-      const off = new Map<string, WireValue>([...this.masterWritten].map((a) => [a, a.startsWith('%QX') ? false : 0]));
-      this.masterWritten.clear();
-      this.writeOutputs(off);
-      const keys = new Set([...off.keys()].map(addressKey));
+      if (this.server !== server || server.socks.size > 0) return;
+      this.dropMasterOutputs('the Modbus master (the PLC) disconnected');
+      if (this.buttonsHeld.size === 0) return;
+      const released = [...this.buttonsHeld];
+      this.buttonsHeld.clear();
+      this.simulateInputs(new Map(released.map((a) => [a, false])));
+      const keys = new Set(released.map(addressKey));
       const names = plant.points.filter((p) => keys.has(addressKey(p.address))).map((p) => p.name);
-      this.log(
-        `machine "${plant.model.id}": the Modbus master (the PLC) disconnected; the outputs it wrote are OFF${names.length ? ` (${names.join(', ')})` : ''}`,
-      );
+      this.log(`machine "${plant.model.id}": the last Modbus client disconnected holding ${names.join(', ')}; released (a push button springs back)`);
     }, 0);
+  }
+
+  /** A Modbus master wrote one of the machine's actuators: it is the PLC's output, and the watchdog is fed. */
+  private masterWrote(address: string, value: WireValue): void {
+    this.masterWritten.add(address);
+    this.writeOutputs(new Map([[address, value]]));
+    if (this.masterWatchdogMs <= 0) return;
+    if (this.masterWatchdog) this.masterWatchdog.refresh();
+    else {
+      this.masterWatchdog = setTimeout(() => {
+        this.masterWatchdog = undefined;
+        this.dropMasterOutputs(
+          `no write to its outputs from the Modbus master (the PLC) for ${this.masterWatchdogMs} ms (the device's communication watchdog, as an I/O coupler's; a PLC rewrites its outputs every cycle)`,
+        );
+      }, this.masterWatchdogMs);
+      this.masterWatchdog.unref?.();
+    }
+  }
+
+  /** The outputs the masters wrote fall OFF / 0, and the log says which and why (when one of them was on). */
+  private dropMasterOutputs(why: string): void {
+    const plant = this.plant;
+    clearTimeout(this.masterWatchdog);
+    this.masterWatchdog = undefined;
+    if (!plant || this.masterWritten.size === 0) return;
+    const off = new Map<string, WireValue>([...this.masterWritten].map((a) => [a, a.startsWith('%QX') ? false : 0]));
+    const wasOn = [...off.keys()].some((a) => this.values.get(a) !== off.get(a));
+    this.masterWritten.clear();
+    this.writeOutputs(off);
+    if (!wasOn) return;
+    const keys = new Set([...off.keys()].map(addressKey));
+    const names = plant.points.filter((p) => keys.has(addressKey(p.address))).map((p) => p.name);
+    this.log(`machine "${plant.model.id}": ${why}; the outputs it wrote are OFF${names.length ? ` (${names.join(', ')})` : ''}`);
   }
 
   private startModbusServer(port: number): Promise<void> {
@@ -278,8 +334,7 @@ export class SimulatedDevice implements Device {
         // Virtual commissioning: the Modbus master is the PLC and drives the machine's actuators.
         const actuator = this.plant && addr < SIM_INPUT_COIL_BASE ? this.byTable.get(`coils:${addr}`) : undefined;
         if (actuator) {
-          this.masterWritten.add(actuator.address);
-          this.writeOutputs(new Map([[actuator.address, value]]));
+          this.masterWrote(actuator.address, value);
           return;
         }
         if (addr < SIM_INPUT_COIL_BASE) throw this.byTable.has(`coils:${addr}`) ? ILLEGAL_FUNCTION : ILLEGAL_ADDRESS;
@@ -289,8 +344,7 @@ export class SimulatedDevice implements Device {
         // A machine's INT actuators (%QW) are the master's too, as its coils are.
         const actuator = this.plant && addr < SIM_INPUT_REGISTER_BASE ? this.byTable.get(`holdingRegisters:${addr}`) : undefined;
         if (actuator) {
-          this.masterWritten.add(actuator.address);
-          this.writeOutputs(new Map([[actuator.address, value & 0xffff]]));
+          this.masterWrote(actuator.address, value & 0xffff);
           return;
         }
         if (addr < SIM_INPUT_REGISTER_BASE) throw this.byTable.has(`holdingRegisters:${addr}`) ? ILLEGAL_FUNCTION : ILLEGAL_ADDRESS;

@@ -51,6 +51,8 @@ export const pointSchema = z.object({
   type: z.enum(POINT_TYPES),
   dir: z.enum(['in', 'out']),
   device: z.string(),
+  /** An output configured `hold`: its safe value is its last value, not OFF/0. */
+  hold: z.boolean().optional(),
 });
 export const deviceStateSchema = z.enum(['connecting', 'online', 'offline']);
 export type DeviceState = z.infer<typeof deviceStateSchema>;

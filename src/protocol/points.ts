@@ -16,6 +16,8 @@ export interface PointInfo {
   readonly type: PointType;
   readonly dir: PointDir;
   readonly device: string;
+  /** Outputs configured `hold`: the safe state keeps their value instead of OFF/0 (absent: false). */
+  readonly hold?: boolean;
 }
 
 /** Range of a point type's values on the wire. */

@@ -12,7 +12,7 @@ import { resolveConfig } from '../../src/gateway/config';
 import { startGateway } from '../../src/gateway/gateway';
 import { SimulatedDevice, simulatedDeviceMisfit } from '../../src/gateway/simulatedDevice';
 import { PLANTS } from '../../src/plant/machines';
-import { eventually, TestClient } from './helpers';
+import { eventually, mbpoll, mbpollValues, TestClient } from './helpers';
 
 const MASTER = fileURLToPath(new URL('./fixtures/plant_master.py', import.meta.url));
 let device: SimulatedDevice | undefined;
@@ -103,7 +103,8 @@ async function until(cond: () => boolean, what: string): Promise<void> {
 
 test('the PLC gone (its Modbus connection closed), the outputs it wrote fall OFF: the pump stops, the tank does not overflow', async () => {
   const log: string[] = [];
-  device = new SimulatedDevice(0, 'tank', (line) => log.push(line));
+  // The device watchdog off: this master writes once, and the connection's closing alone is tested.
+  device = new SimulatedDevice(0, 'tank', (line) => log.push(line), 0);
   await device.start({ inputs: () => undefined, written: () => undefined, status: () => undefined } as never);
   const port = device.modbusServerPort!;
   const master = [
@@ -283,4 +284,102 @@ test("an operator control set over Modbus or from the Hardware panel operates th
   } finally {
     await gw.close();
   }
+}, 60_000);
+
+test('a PLC that stays connected but stops writing (hung; an HMI keeps its own connection open) loses its outputs after the device watchdog, 1000 ms by default, as an I/O coupler does; one that rewrites them every cycle keeps them', async () => {
+  const log: string[] = [];
+  device = new SimulatedDevice(0, 'tank', (line) => log.push(line));
+  await device.start({ inputs: () => undefined, written: () => undefined, status: () => undefined } as never);
+  const port = device.modbusServerPort!;
+  // An HMI connected all along: it reads, it never writes the outputs.
+  const hmi = await new Promise<import('node:net').Socket>((resolve) => {
+    const s = connect(port, '127.0.0.1', () => resolve(s));
+  });
+  try {
+    // The PLC writes pump and inlet every 200 ms (its cycle) for 3 s, then hangs: connected, reading, writing nothing.
+    const run = await python(
+      [
+        'import sys, time',
+        'from pymodbus.client import ModbusTcpClient',
+        'c = ModbusTcpClient("127.0.0.1", port=int(sys.argv[1]))',
+        'assert c.connect()',
+        'end = time.time() + 3',
+        'while time.time() < end:',
+        '    assert not c.write_coils(0, [True, True]).isError()',
+        '    time.sleep(0.2)',
+        '    print("cycling", c.read_coils(0, count=2).bits[:2], flush=True)',
+        'end = time.time() + 20',
+        'while time.time() < end:',
+        '    bits = c.read_coils(0, count=2).bits[:2]',
+        '    if bits == [False, False]:',
+        '        print("hung: off", flush=True)',
+        '        break',
+        '    time.sleep(0.05)',
+        'c.close()',
+      ].join('\n'),
+      port,
+    );
+    expect(run.code, run.out).toBe(0);
+    const cycling = run.out.split('\n').filter((l) => l.startsWith('cycling'));
+    expect(cycling.length).toBeGreaterThan(5);
+    // Rewritten every cycle, the outputs never dropped (3 s, three times the watchdog).
+    expect(cycling.every((l) => l === 'cycling [True, True]'), run.out).toBe(true);
+    expect(run.out).toContain('hung: off');
+    expect(log[0]).toBe(
+      'machine "tank": no write to its outputs from the Modbus master (the PLC) for 1000 ms (the device\'s communication watchdog, as an I/O coupler\'s; a PLC rewrites its outputs every cycle); the outputs it wrote are OFF (Pump, InletValve)',
+    );
+    expect(device.plantRead('tank.Pump')).toBe(false);
+    // Read independently, with mbpoll, while the HMI is still connected.
+    expect(mbpollValues(await mbpoll(port, ['-t', '0', '-r', '0', '-c', '2', '127.0.0.1']))).toEqual([0, 0]);
+  } finally {
+    hmi.destroy();
+  }
+}, 90_000);
+
+test('--plant-watchdog 0 turns the device watchdog off (a master writing once keeps its outputs while connected); a bad value is refused at start', async () => {
+  device = new SimulatedDevice(0, 'tank', () => undefined, 0);
+  await device.start({ inputs: () => undefined, written: () => undefined, status: () => undefined } as never);
+  const run = await python(
+    [
+      'import sys, time',
+      'from pymodbus.client import ModbusTcpClient',
+      'c = ModbusTcpClient("127.0.0.1", port=int(sys.argv[1]))',
+      'assert c.connect()',
+      'assert not c.write_coil(0, True).isError()',
+      'time.sleep(2.5)',
+      'print("after", c.read_coils(0, count=1).bits[0], flush=True)',
+      'c.close()',
+    ].join('\n'),
+    device.modbusServerPort!,
+  );
+  expect(run.out).toContain('after True');
+  const bad = await gateway(['--sim-port', '0', '--plant', 'tank', '--plant-watchdog', '50']);
+  expect(bad.code).toBe(2);
+  expect(bad.err).toContain('--plant-watchdog: needs 0 (off) or 100 to 60000 ms, got "50"');
+}, 60_000);
+
+test("a push button held over Modbus (an HMI, a test script) springs back when the last Modbus client disconnects", async () => {
+  const log: string[] = [];
+  device = new SimulatedDevice(0, 'garage', (line) => log.push(line));
+  await device.start({ inputs: () => undefined, written: () => undefined, status: () => undefined } as never);
+  const port = device.modbusServerPort!;
+  // Coil 800 + n sets discrete input n: %IX0.0 the garage's KeyOpen push button, pressed and never
+  // released by a script that ends (or an HMI that crashes) while holding it.
+  const run = await python(
+    [
+      'import sys',
+      'from pymodbus.client import ModbusTcpClient',
+      'c = ModbusTcpClient("127.0.0.1", port=int(sys.argv[1]))',
+      'assert c.connect()',
+      'assert not c.write_coil(800, True).isError()',
+      'print("held", c.read_discrete_inputs(0, count=1).bits[0], flush=True)',
+      'c.close()',
+    ].join('\n'),
+    port,
+  );
+  expect(run.out).toContain('held True');
+  await until(() => device!.inputValues().get('%IX0.0') === false, 'KeyOpen released');
+  expect(mbpollValues(await mbpoll(port, ['-t', '1', '-r', '0', '-c', '1', '127.0.0.1']))).toEqual([0]);
+  expect(device.plantRead('garage.KeyOpen')).toBe(false);
+  expect(log).toContain('machine "garage": the last Modbus client disconnected holding KeyOpen; released (a push button springs back)');
 }, 60_000);

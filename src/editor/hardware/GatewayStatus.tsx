@@ -83,7 +83,7 @@ export function GatewayStatus() {
       </div>
       {view.lastError && (
         <p className="rs-hw-problem" role="alert" data-testid="hw-last-error">
-          {refusalWords(view.lastError.code, view.lastError.ref)}: {view.lastError.message}
+          {refusalWords(view.lastError.code, view.lastError.ref)}: {view.lastError.message.replace(/^outputs refused: /, '')}
         </p>
       )}
     </section>

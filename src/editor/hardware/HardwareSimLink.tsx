@@ -22,6 +22,8 @@ export function HardwareSimLink() {
   const stepping = useSteppingView().phase === 'stepping';
   const wasRunning = useRef(false);
   const wasAttached = useRef(false);
+  /** The controller link was lost (not disconnected by the user) and has not opened again yet. */
+  const lostLink = useRef(false);
 
   useEffect(() => {
     // Forces made before this page drove the hardware (in simulation, as observer, or in an earlier
@@ -29,11 +31,15 @@ export function HardwareSimLink() {
     // drive real outputs at the next Run or Arm without a word. They end as the hardware attaches,
     // and the notice says which; a force on the hardware is made again (inputs with its confirmation).
     const attached = link === 'open' && role === 'controller';
+    if (link === 'idle') lostLink.current = false; // disconnected on purpose
+    else if (wasAttached.current && !attached) lostLink.current = true;
     if (!attached || wasAttached.current) {
       wasAttached.current = attached;
       return;
     }
     wasAttached.current = true;
+    const afterLoss = lostLink.current;
+    lostLink.current = false;
     const s = sim.getState();
     const ended: string[] = [];
     for (const name of s.forced.keys()) {
@@ -45,7 +51,9 @@ export function HardwareSimLink() {
     }
     if (ended.length > 0)
       sim.setState({
-        notice: `Unforced ${ended.join(', ')}: forces made before the hardware was attached are not carried onto it. Force again on the hardware if you mean it (a field input asks to confirm).`,
+        notice: afterLoss
+          ? `Unforced ${ended.join(', ')}: the link to the gateway was lost and is open again; a force on the hardware ends with its link (the gateway held the outputs in the safe state meanwhile). Force again on the hardware if you mean it (a field input asks to confirm).`
+          : `Unforced ${ended.join(', ')}: forces made before the hardware was attached are not carried onto it. Force again on the hardware if you mean it (a field input asks to confirm).`,
       });
   }, [link, role, points, sim]);
 

@@ -1,6 +1,7 @@
 // Stepping with hardware attached: the confirmation dialog (mounted once by HardwareSimLink) and
-// the toolbar badge that shows the lease and watchdog while stepping drives real outputs.
-import { useId } from 'react';
+// the badge, in the notice band under the tool bar, that shows the lease and watchdog while
+// stepping drives real outputs (and why a running program's outputs are not driven).
+import { useId, type ReactNode } from 'react';
 import type { StepRequest } from '../../bridge/steppingLease';
 import type { GatewayView } from '../../bridge/GatewayClient';
 import type { StatusMessage } from '../../protocol/messages';
@@ -94,10 +95,23 @@ function SteppingConfirmBox({ request }: { readonly request: StepRequest }) {
 
 const selectRunning = (s: SimState) => s.mode === 'running';
 
+/** "Outputs not driven — why", with what to do (Arm), in the notice band under the tool bar. */
+function RunBadge({ testId, reason, children }: { testId: string; reason: string; children?: ReactNode }) {
+  return (
+    <span className="rs-hw-running-disarmed" role="status" data-testid={testId}>
+      <strong>Outputs not driven</strong>{' '}
+      <span className="rs-hw-reason">— {reason}</span>
+      {children}
+    </span>
+  );
+}
+
 /**
- * In the simulation toolbar: while stepping drives the hardware; and while the simulation runs as
- * controller with the outputs disarmed (Safe state, arm refused, a device lost...): it keeps running
- * in the browser, the outputs stay safe, and only the operator's Arm drives them again.
+ * In the notice band under the tool bar (the one-line tool bar has no room left for it: the reason
+ * and Arm were past the window's edge): while stepping drives the hardware; and while the
+ * simulation runs as controller with the outputs disarmed (Safe state, arm refused, a device
+ * lost...): it keeps running in the browser, the outputs stay safe, and only the operator's Arm
+ * drives them again.
  */
 export function SteppingBadge() {
   const view = useSteppingView();
@@ -108,25 +122,23 @@ export function SteppingBadge() {
     if (running && (gateway.link === 'retrying' || gateway.link === 'refused')) {
       // The simulation runs on, but never as if it still drove the hardware.
       return (
-        <span className="rs-hw-running-disarmed" role="status" data-testid="hw-run-link-lost">
-          <strong>Outputs not driven</strong> — hardware link {gateway.link === 'refused' ? 'refused' : 'lost'}: {gateway.problem ?? 'no connection to the gateway'}
-        </span>
+        <RunBadge testId="hw-run-link-lost" reason={`hardware link ${gateway.link === 'refused' ? 'refused' : 'lost'}: ${gateway.problem ?? 'no connection to the gateway'}`} />
       );
     }
     if (running && gateway.link === 'open' && gateway.role === 'observer') {
       // Asked as controller while another page held the lease, a page is an observer: what it runs is not what drives the hardware.
       return (
-        <span className="rs-hw-running-disarmed" role="status" data-testid="hw-run-observer">
-          <strong>Outputs not driven</strong> — this page is connected as observer (read only){status?.controller ? '; another page is the controller' : ''}. Disconnect and connect as controller to drive them.
-        </span>
+        <RunBadge
+          testId="hw-run-observer"
+          reason={`this page is connected as observer (read only)${status?.controller ? '; another page is the controller' : ''}. Disconnect and connect as controller to drive them.`}
+        />
       );
     }
     if (!running || gateway.link !== 'open' || gateway.role !== 'controller' || status?.armed !== false) return null;
     return (
-      <span className="rs-hw-running-disarmed" role="status" data-testid="hw-run-disarmed">
-        <strong>Outputs not driven</strong> — {disarmWords(gateway) ?? 'the gateway is disarmed'}
+      <RunBadge testId="hw-run-disarmed" reason={disarmWords(gateway) ?? 'the gateway is disarmed'}>
         <ArmButton view={gateway} testId="hw-run-arm" />
-      </span>
+      </RunBadge>
     );
   }
   return (

@@ -18,6 +18,9 @@ export function PointsTable() {
   if (view.link !== 'open') return null;
   const simulated = new Set(view.devices.filter((d) => d.kind === 'simulated').map((d) => d.id));
   const manyDevices = view.devices.length > 1;
+  // An output's value is what its device last acknowledged: with the device not online, what it
+  // holds now is unknown (a cut cable leaves a coupler's outputs as they were), so it shows stale.
+  const down = new Set((view.status?.devices ?? []).filter((d) => d.state !== 'online').map((d) => d.id));
   return (
     <section className="rs-hw-section" aria-label="I/O points">
       {report.problems.length > 0 && (
@@ -42,7 +45,7 @@ export function PointsTable() {
         </thead>
         <tbody>
           {view.points.map((p) => (
-            <PointRow key={p.address} point={p} value={view.values[p.address]} quality={view.quality[p.address]}
+            <PointRow key={p.address} point={p} value={view.values[p.address]} quality={p.dir === 'out' && down.has(p.device) ? 'stale' : view.quality[p.address]}
               variables={names.get(p.address)} settable={p.dir === 'in' && simulated.has(p.device)} showDevice={manyDevices} />
           ))}
         </tbody>

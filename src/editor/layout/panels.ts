@@ -16,6 +16,7 @@ import { useSimNetworkOverlay } from '../sim/canvasOverlay';
 import { InputsPanel } from '../sim/InputsPanel';
 import { SimHostMount } from '../sim/SimHostMount';
 import { SimToolbar } from '../sim/SimToolbar';
+import { SteppingBadge } from '../hardware/HardwareStepping';
 import { SimNotices } from '../sim/SimNotices';
 import { SimulationPanel } from '../sim/SimulationPanel';
 import { TrendPanel } from '../sim/TrendPanel';
@@ -75,6 +76,8 @@ export const TOP_BAR_ITEMS: readonly BarSlot[] = [{ id: 'simulation', component:
 export const NOTICES: readonly BarSlot[] = [
   { id: 'simulation', component: SimNotices },
   { id: 'files', component: FileNotice },
+  // The page driving hardware: stepping, or running with the outputs not driven (and why).
+  { id: 'hardware', component: SteppingBadge },
 ];
 
 /** Mounted once inside the stores' providers. */

@@ -3,7 +3,6 @@ import { useEffect, useState } from 'react';
 import { taskSchedule } from '../../engine/compile/taskSchedule';
 import { useDocument, type DocumentState } from '../../store/documentStore';
 import type { SimState } from '../../store/simState';
-import { SteppingBadge } from '../hardware/HardwareStepping';
 import { useSimCommands } from '../hardware/useHardwareStepping';
 import { useSim, useSimStore } from './simContext';
 import './sim.css';
@@ -106,7 +105,6 @@ export function SimToolbar() {
       </button>
       <CycleInput />
       <SimStatus />
-      <SteppingBadge />
     </div>
   );
 }
