@@ -20,8 +20,13 @@ export const SIZE_EYE_MM = 800;
 /** The pusher's centre line; its plate covers PUSHER_MM ± PLATE_HALF_MM along the belt. */
 export const PUSHER_MM = 2000;
 export const PLATE_HALF_MM = 150;
-/** The photo-eye at the pusher: a box breaks it from when its centre is 50 mm before the pusher. */
-export const PUSHER_EYE_MM = PUSHER_MM + 100;
+/**
+ * The photo-eye at the pusher: a box breaks it from when its centre is 70 mm before the pusher,
+ * placed so that a push ordered on it meets the box within the station window even when the
+ * program scans at 200 ms (the box runs on 80 mm a scan: one scan to read the eye, one step for
+ * the plate to reach the box, up to 160 mm), and at a 1 ms scan still meets it square.
+ */
+export const PUSHER_EYE_MM = PUSHER_MM + 80;
 /** A box whose centre is within this of the pusher's centre line is pushed square; farther, it is struck (jam). */
 export const STATION_WINDOW_MM = 100;
 /** Belt at full speed. */
@@ -133,7 +138,7 @@ const POINTS: readonly PlantPoint[] = [
     address: '%IX0.4',
     type: 'BOOL',
     kind: 'sensor',
-    comment: 'Photo-eye at the pusher, 2.1 m (ON while a box is in front of the pusher)',
+    comment: 'Photo-eye at the pusher, 2.08 m (ON while a box is in front of the pusher)',
   },
   {
     name: 'PusherOut',
@@ -169,13 +174,16 @@ export const boxes: PlantModel<BoxesState> = {
     'Sort the boxes by size: push every large box into the side chute, let every small box ride',
     'on to the bin at the end of the belt.',
     'Start (a push button) starts the conveyor, Stop stops it; RunLamp is lit while it runs.',
-    'A feeder puts a box on the belt every 1.8 m of belt travel (4.5 s at full speed). The size',
-    'sensor SizeEye is a high photo-eye only a large box breaks; it sits 1.2 m before the pusher.',
-    'PusherEye comes ON when a box has reached the pusher (its centre 50 mm before the pusher).',
+    'The belt runs at 0.4 m/s (0.5 s to run up); boxes are 0.3 m long. A feeder puts a box on the',
+    'belt every 1.8 m of belt travel (4.5 s at full speed). The size sensor SizeEye is a high',
+    'photo-eye only a large box breaks; it sits 1.2 m before the pusher.',
+    'PusherEye comes ON when a box has reached the pusher (its centre 70 mm before the pusher).',
     'Pusher extends the pusher while ON (0.6 s to the out limit PusherOut) and retracts it when',
     'OFF (PusherIn is the in limit). Push a large box only when it is in front of the pusher and',
     'hold the pusher out until PusherOut: a box pushed halfway falls off the belt, the pusher',
     'striking a box off the station or left out in the way of the next box jams the conveyor.',
+    'Scan at 200 ms or faster: a box runs on 80 mm in 200 ms, and the plate must meet it within',
+    '100 mm of its centre.',
     'Goal: 10 boxes sorted into the right place, none missorted, no jam, no box fallen.',
   ].join('\n'),
   points: POINTS,

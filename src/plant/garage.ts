@@ -26,7 +26,7 @@ export const PREWARN_MS = 1000;
 export interface GarageState {
   /** The door's opening, percent of the doorway's height: 0 closed, 100 fully open. */
   readonly position: number;
-  /** Motor speed, -1 (down at nominal speed) to 1 (up). */
+  /** Motor speed, -1 (down at nominal speed) to 1 (up); 0 stalled against an end stop or on the car. */
   readonly speed: number;
   /** The contactors and the lamp as the program drives them. */
   readonly up: boolean;
@@ -168,7 +168,12 @@ export const garage: PlantModel<GarageState> = {
   ],
   quantities: [
     { name: 'position', type: 'REAL', unit: '%', comment: 'Door opening: 0 closed, 100 fully open' },
-    { name: 'speed', type: 'REAL', unit: '%', comment: 'Motor speed, up positive, down negative' },
+    {
+      name: 'speed',
+      type: 'REAL',
+      unit: '%',
+      comment: 'Door speed, percent of full speed, up positive, down negative (0 stalled against a stop)',
+    },
     { name: 'moving', type: 'BOOL', comment: 'The door is moving' },
     { name: 'car_in', type: 'BOOL', comment: 'A car is in the doorway' },
     { name: 'on_car', type: 'BOOL', comment: 'The door rests on the car' },
@@ -230,12 +235,15 @@ export const garage: PlantModel<GarageState> = {
     if (position > 100) position = 100;
     if (position < floor) position = floor;
     const onCar = carIn && position <= CAR_TOP && (speed < 0 || s.onCar);
+    const pushing = (speed > 0 && position >= 100) || (speed < 0 && position <= 0);
+    // Against an end stop, or resting on the car, the door does not move: the motor stalls
+    // (its contactor may still be on: that is the overrun), so the door's speed is 0.
+    if ((speed > 0 && position >= 100) || (speed < 0 && position <= floor)) speed = 0;
     const moving = position !== s.position;
     const lampMs = lamp ? s.lampMs + dtMs : 0;
     // Driven by the motor, that is: a door braking to a stop after the contactor dropped (with the
     // lamp, as the limit switch ends the run) is not moved without warning, however fast the scan.
     const unwarnedNow = moving && target !== 0 && (!lamp || (!s.moving && lampMs < PREWARN_MS));
-    const pushing = (speed > 0 && position >= 100) || (speed < 0 && position <= 0);
     const pushMs = pushing ? s.pushMs + dtMs : 0;
     const open = position >= OPEN_LIMIT_AT;
     const closed = position <= CLOSED_LIMIT_AT;

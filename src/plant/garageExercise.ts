@@ -11,8 +11,9 @@ import { garage } from './garage';
 /**
  * Three full cycles on the key switch, 100 ms scans. The second close is interrupted: a car drives
  * into the doorway with the door still high (about 80 % open); the door must reverse and open
- * fully; the car leaves and the door closes. A door coming down on the car, a short circuit or an
- * overrun fails the scenario at the scan it happens.
+ * fully; the car leaves and the door closes. KeyClose turned while the door opens is ignored; Stop
+ * stops the door where it is. A door coming down on the car, a short circuit or an overrun fails
+ * the scenario at the scan it happens.
  */
 export const GARAGE_SCENARIO: Scenario = {
   name: 'Garage door: three cycles on the key, reversing for a car',
@@ -21,28 +22,43 @@ export const GARAGE_SCENARIO: Scenario = {
 # KeyOpen / KeyClose are turned for 0.2 s; the door takes 12 s (120 scans) from end to end.
 # Scan 470: a car drives into the doorway while the door closes (about 80 % open).
 # The door coming down on it fails the scenario where it happens ("the door came down on the car…").
-scan,garage.KeyOpen,garage.KeyClose,garage.Doorway,expect Obstacle,expect OpenLimit,expect ClosedLimit,expect garage.position ~ 1,expect garage.cycles,expect garage.unwarned
-1,1,0,0,0,0,1,0,0,0
-3,0,,,,,,,,
-150,,1,,0,1,0,99.5,0,0
-152,,0,,,,,,,
-290,,,,0,0,1,0.5,1,0
-300,1,,,,,,,,
-302,0,,,,,,,,
-440,,1,,,1,,99.5,1,
-442,,0,,,,,,,
-470,,,1,,,,,,
-472,,,,1,0,0,*,1,0
-540,,,,1,1,0,99.5,1,0
-560,,,0,,,,,,
-570,,1,,0,1,,,,
-572,,0,,,,,,,
-710,,,,0,0,1,0.5,2,0
-720,1,,,,,,,,
-722,0,,,,,,,,
-860,,1,,,1,,,,
-862,,0,,,,,,,
-1000,,,,0,0,1,0.5,3,0
+# Scan 760: KeyClose while the door opens: it opens on (MotorUp, never MotorDown with it).
+# Scan 1070: Stop while the door opens (about 41 %): it stays there, between its limits, the motor off;
+# KeyClose closes it.
+scan,garage.KeyOpen,garage.KeyClose,garage.Doorway,garage.Stop,expect MotorUp,expect MotorDown,expect Obstacle,expect OpenLimit,expect ClosedLimit,expect garage.position ~ 1,expect garage.cycles,expect garage.unwarned,expect garage.moving
+1,1,0,0,0,,,0,0,1,0,0,0,
+3,0,,,,,,,,,,,,
+150,,1,,,,,0,1,0,99.5,0,0,
+152,,0,,,,,,,,,,,
+290,,,,,,,0,0,1,0.5,1,0,
+300,1,,,,,,,,,,,,
+302,0,,,,,,,,,,,,
+440,,1,,,,,,1,,99.5,1,,
+442,,0,,,,,,,,,,,
+470,,,1,,,,,,,,,,
+472,,,,,,,1,0,0,*,1,0,
+540,,,,,,,1,1,0,99.5,1,0,
+560,,,0,,,,,,,,,,
+570,,1,,,,,0,1,,,,,
+572,,0,,,,,,,,,,,
+710,,,,,,,0,0,1,0.5,2,0,
+720,1,,,,,,,,,,,,
+722,0,,,,,,,,,,,,
+760,,1,,,,,,,,,,,
+762,,0,,,,,,,,,,,
+770,,,,,1,0,0,0,0,*,2,0,
+860,,1,,,,,,1,,,,,
+862,,0,,,,,,,,,,,
+1000,,,,,,,0,0,1,0.5,3,0,
+1010,1,,,,,,,,,,,,
+1012,0,,,,,,,,,,,,
+1070,,,,1,,,,,,,,,
+1072,,,,0,,,,,,,,,
+1080,,,,,0,0,0,0,0,*,3,0,0
+1100,,,,,0,0,0,0,0,*,3,0,0
+1110,,1,,,,,,,,,,,
+1112,,0,,,,,,,,,,,
+1200,,,,,0,0,0,0,1,0.5,3,0,
 `,
 };
 

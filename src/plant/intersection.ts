@@ -27,6 +27,15 @@ export const CLEAR_MS = 2000;
 /** How long a pedestrian takes to walk across the main road and across the side road. */
 export const CROSS_MAIN_MS = 8000;
 export const CROSS_SIDE_MS = 6000;
+/**
+ * The clearance intervals the conflict monitor checks, as a signal cabinet's does: a road's yellow
+ * lit at least YELLOW_MIN_MS between its green and its red, and both roads red at least
+ * ALL_RED_MIN_MS before the other road's green. PLC time is exact, so a timer of 3 s gives 3 s.
+ */
+export const YELLOW_MIN_MS = 3000;
+export const ALL_RED_MIN_MS = 2000;
+/** Sums of step times: a yellow timed exactly may read a hair short. */
+const CLEARANCE_HAIR_MS = 1e-6;
 /** Waits that are consequences: a vehicle at the stop line, a pedestrian at a button. */
 export const VEHICLE_WAIT_LIMIT_MS = 120_000;
 export const PED_WAIT_LIMIT_MS = 60_000;
@@ -108,6 +117,53 @@ export interface IntersectionState {
   readonly nearMisses: number;
   readonly longWaits: number;
   readonly longPedWaits: number;
+  /**
+   * The clearance monitor, per road: how long its yellow has been lit since its green, how long
+   * its red since it came on, whether that red followed its green or yellow (the other road's
+   * green then needs the all-red first), and the counts and account of the last short clearance.
+   */
+  readonly mainYellowMs: number;
+  readonly sideYellowMs: number;
+  readonly mainRedMs: number;
+  readonly sideRedMs: number;
+  readonly mainFromGo: boolean;
+  readonly sideFromGo: boolean;
+  readonly shortYellows: number;
+  readonly shortReds: number;
+  readonly lastShortYellow: string;
+  readonly lastShortRed: string;
+}
+
+/** One road's clearance after a step (module scratch, like a road's queue: no allocation per step). */
+const clearance = { yellowMs: 0, redMs: 0, fromGo: false, shortYellow: '' };
+
+/**
+ * One road's yellow and red over a step with `lamps` driven (`was`: the step before): fills
+ * `clearance`; `shortYellow` says how the road went red too soon after its green, or ''.
+ */
+function clear(road: 'main' | 'side', lamps: number, was: number, yellowMs: number, redMs: number, fromGo: boolean, dtMs: number): void {
+  const R = road === 'main' ? LAMP.MainRed : LAMP.SideRed;
+  const Y = road === 'main' ? LAMP.MainYellow : LAMP.SideYellow;
+  const G = road === 'main' ? LAMP.MainGreen : LAMP.SideGreen;
+  const go = has(lamps, G | Y);
+  clearance.shortYellow = '';
+  if (has(lamps, G)) clearance.yellowMs = 0;
+  else if (has(lamps, Y)) clearance.yellowMs = yellowMs + dtMs;
+  else clearance.yellowMs = yellowMs;
+  if (has(lamps, R) && !go) {
+    // Red now: after the road's green or yellow, the yellow must have been long enough.
+    const wentRed = !has(was, R) || has(was, G | Y);
+    if (wentRed && has(was, G | Y) && yellowMs < YELLOW_MIN_MS - CLEARANCE_HAIR_MS)
+      clearance.shortYellow =
+        yellowMs === 0
+          ? `the ${road} road went from green to red without yellow`
+          : `the ${road} road went from green to red after ${(yellowMs / 1000).toFixed(1)} s of yellow`;
+    clearance.redMs = wentRed ? dtMs : redMs + dtMs;
+    clearance.fromGo = wentRed ? has(was, G | Y) : fromGo;
+  } else {
+    clearance.redMs = 0;
+    clearance.fromGo = false;
+  }
 }
 
 /** Arrivals at or before `t` on a road with these offsets into the repeating period. */
@@ -305,7 +361,9 @@ export const intersection: PlantModel<IntersectionState> = {
     'crossing the main road walk with the side road traffic, those crossing the side road with the',
     "main road traffic: light WALK at the start of that green, for a few seconds, then DON'T WALK",
     'long enough for the last to reach the far side (8 s over the main road, 6 s over the side road)',
-    'before the traffic they cross gets green.',
+    'before the traffic they cross gets green. The conflict monitor checks the clearances: a road',
+    'going from green to red with less than 3 s of yellow, or a green less than 2 s after the other',
+    'road turned red, is an error.',
     'Never show conflicting signals (both roads green or yellow, WALK over a road with green or',
     "yellow, red with green on one signal, WALK with DON'T WALK), never leave a signal head dark,",
     'never let a vehicle wait more than 120 s or a pedestrian more than 60 s. Vehicles leave one',
@@ -341,6 +399,16 @@ export const intersection: PlantModel<IntersectionState> = {
     },
     { name: 'long_waits', type: 'INT', comment: 'Vehicles that waited more than 120 s' },
     { name: 'long_ped_waits', type: 'INT', comment: 'Times pedestrians waited more than 60 s' },
+    {
+      name: 'short_yellows',
+      type: 'INT',
+      comment: 'Times a road went from green to red with less than 3 s of yellow',
+    },
+    {
+      name: 'short_reds',
+      type: 'INT',
+      comment: 'Times a road got green less than 2 s after the other road turned red',
+    },
   ],
 
   initial: () => ({
@@ -379,6 +447,16 @@ export const intersection: PlantModel<IntersectionState> = {
     nearMisses: 0,
     longWaits: 0,
     longPedWaits: 0,
+    mainYellowMs: 0,
+    sideYellowMs: 0,
+    mainRedMs: 0,
+    sideRedMs: 0,
+    mainFromGo: false,
+    sideFromGo: false,
+    shortYellows: 0,
+    shortReds: 0,
+    lastShortYellow: '',
+    lastShortRed: '',
   }),
 
   step(
@@ -472,6 +550,41 @@ export const intersection: PlantModel<IntersectionState> = {
       (mainGreen && t1 - side.last < CLEAR_MS ? ROAD.Main : 0) |
       (sideGreen && t1 - main.last < CLEAR_MS ? ROAD.Side : 0);
 
+    // The clearance monitor: each road's yellow before its red, both red before a green.
+    let shortYellows = s.shortYellows;
+    let shortReds = s.shortReds;
+    let lastShortYellow = s.lastShortYellow;
+    let lastShortRed = s.lastShortRed;
+    clear('main', lamps, s.lamps, s.mainYellowMs, s.mainRedMs, s.mainFromGo, dtMs);
+    const mainYellowMs = clearance.yellowMs;
+    const mainRedMs = clearance.redMs;
+    const mainFromGo = clearance.fromGo;
+    if (clearance.shortYellow) {
+      shortYellows++;
+      lastShortYellow = clearance.shortYellow;
+    }
+    clear('side', lamps, s.lamps, s.sideYellowMs, s.sideRedMs, s.sideFromGo, dtMs);
+    const sideYellowMs = clearance.yellowMs;
+    const sideRedMs = clearance.redMs;
+    const sideFromGo = clearance.fromGo;
+    if (clearance.shortYellow) {
+      shortYellows++;
+      lastShortYellow = clearance.shortYellow;
+    }
+    // A green that lights: the other road, red after its own green or yellow, must have been red long enough.
+    // (The other road going until this very step: its red is 0 s old.)
+    for (const [road, G, other, otherGo, otherRedMs, otherFromGo] of [
+      ['main', LAMP.MainGreen, 'side', LAMP.SideGreen | LAMP.SideYellow, s.sideRedMs, s.sideFromGo],
+      ['side', LAMP.SideGreen, 'main', LAMP.MainGreen | LAMP.MainYellow, s.mainRedMs, s.mainFromGo],
+    ] as const) {
+      const wasGoing = has(s.lamps, otherGo);
+      const redMs = wasGoing ? 0 : otherRedMs;
+      if (has(lamps, G) && !has(s.lamps, G) && (wasGoing || otherFromGo) && redMs < ALL_RED_MIN_MS - CLEARANCE_HAIR_MS) {
+        shortReds++;
+        lastShortRed = `the ${road} road got green ${(redMs / 1000).toFixed(1)} s after the ${other} road turned red`;
+      }
+    }
+
     into.timeMs = t1;
     into.lamps = lamps;
     into.lit = lit;
@@ -507,6 +620,16 @@ export const intersection: PlantModel<IntersectionState> = {
     into.nearMisses = s.nearMisses + started(box, s.box);
     into.longWaits = s.longWaits + main.longWaits + side.longWaits;
     into.longPedWaits = longPedWaits;
+    into.mainYellowMs = mainYellowMs;
+    into.sideYellowMs = sideYellowMs;
+    into.mainRedMs = mainRedMs;
+    into.sideRedMs = sideRedMs;
+    into.mainFromGo = mainFromGo;
+    into.sideFromGo = sideFromGo;
+    into.shortYellows = shortYellows;
+    into.shortReds = shortReds;
+    into.lastShortYellow = lastShortYellow;
+    into.lastShortRed = lastShortRed;
     return into;
   },
 
@@ -528,7 +651,9 @@ export const intersection: PlantModel<IntersectionState> = {
       after.nearMisses === before.nearMisses &&
       after.pedsCaught === before.pedsCaught &&
       after.longWaits === before.longWaits &&
-      after.longPedWaits === before.longPedWaits
+      after.longPedWaits === before.longPedWaits &&
+      after.shortYellows === before.shortYellows &&
+      after.shortReds === before.shortReds
     )
       return NOTHING;
     const out: PlantConsequence[] = [];
@@ -600,6 +725,20 @@ export const intersection: PlantModel<IntersectionState> = {
         counter: 'long_ped_waits',
       });
     }
+    if (after.shortYellows > before.shortYellows)
+      out.push({
+        id: 'short_yellow',
+        severity: 'error',
+        message: `${after.lastShortYellow} (at least ${YELLOW_MIN_MS / 1000} s of yellow asked)`,
+        counter: 'short_yellows',
+      });
+    if (after.shortReds > before.shortReds)
+      out.push({
+        id: 'short_all_red',
+        severity: 'error',
+        message: `${after.lastShortRed} (both roads red at least ${ALL_RED_MIN_MS / 1000} s asked)`,
+        counter: 'short_reds',
+      });
     return out;
   },
 
@@ -651,6 +790,10 @@ export const intersection: PlantModel<IntersectionState> = {
         return s.longWaits;
       case 'long_ped_waits':
         return s.longPedWaits;
+      case 'short_yellows':
+        return s.shortYellows;
+      case 'short_reds':
+        return s.shortReds;
     }
     throw new Error(`intersection has no quantity "${name}"`);
   },

@@ -19,23 +19,31 @@ export const INTERSECTION_SCENARIO: Scenario = {
   csv: `# plant: intersection
 # cycle: 100ms
 # Pedestrians press CrossMain at 5 s, 95 s and 200 s, CrossSide at 70 s and 250 s (each for 0.2 s).
-# Checked every minute: vehicles served (all, side road), pedestrians served, the longest wait (under 35 s).
-scan,intersection.CrossMain,intersection.CrossSide,expect intersection.served ~ 3,expect intersection.served_side ~ 1,expect intersection.ped_served,expect intersection.max_wait ~ 15
+# Two come late: CrossMain at 153.3 s, 8 s into the side road green (after its WALK: crossing takes
+# 8 s, the main road gets green 7 s later), and CrossSide at 179.8 s, just before the main road
+# yellow (crossing takes 6 s, the side road gets green 5.6 s later): both must wait for the next WALK.
+# Checked every minute: vehicles served (all, side road), pedestrians served, the longest wait of a
+# vehicle (under 45 s: the side road served on demand); a longer minimum green or clearance is fine.
+scan,intersection.CrossMain,intersection.CrossSide,expect intersection.served ~ 6,expect intersection.served_side ~ 4,expect intersection.ped_served ~ 1,expect intersection.max_wait ~ 20
 50,1,,,,,
 52,0,,,,,
-600,,,17,5,1,20
+600,,,17,5,1,25
 700,,1,,,,
 702,,0,,,,
 950,1,,,,,
 952,0,,,,,
-1200,,,32,12,3,20
-1800,,,53,17,3,20
+1200,,,32,12,3,25
+1534,1,,,,,
+1536,0,,,,,
+1798,,,53,17,3,25
+1799,,1,,,,
+1801,,0,,,,
 2000,1,,,,,
 2002,0,,,,,
-2400,,,69,24,4,20
+2400,,,69,24,6,25
 2500,,1,,,,
 2502,,0,,,,
-3000,,,89,29,5,20
+3000,,,89,29,7,25
 `,
 };
 

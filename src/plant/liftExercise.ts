@@ -11,7 +11,8 @@ import { lift } from './lift';
 
 /**
  * Six calls answered in 100 s of PLC time (20 ms scans): 3 then 2 on the way up (the car stops at
- * 2 first), 1 and 2 on the way down (it stops at 2 first), then 3, then 1; the longest wait 26 s. Any overrun, crash, move with the door open
+ * 2 first), 1 and 2 on the way down (it stops at 2 first), then 3, then 1; the longest wait 26 s
+ * (up to 30 s for a program that waits longer at rest). Any overrun, crash, move with the door open
  * or both contactors on fails the scenario at the scan it happens.
  */
 export const LIFT_SCENARIO: Scenario = {
@@ -19,23 +20,25 @@ export const LIFT_SCENARIO: Scenario = {
   csv: `# plant: lift
 # cycle: 20ms
 # Each call button is pressed for 0.1 s. The car starts at floor 1 with its door closed.
+# At 10 s the car stands at floor 2 with its door fully open (held open 2 s once fully open).
 # A crash, an overrun, a move with the door not closed or both contactors on fails the scenario where it happens.
-scan,lift.Call1,lift.Call2,lift.Call3,expect CallLamp1,expect CallLamp2,expect CallLamp3,expect lift.served,expect lift.floor,expect lift.misstops,expect lift.max_wait ~ 0.5
-1,,,1,0,0,1,0,1,0,
-6,,,0,0,0,1,0,1,0,
-200,,1,,,,,,,,
-205,,0,,0,1,1,0,0,0,
-1000,1,,,1,0,1,1,3,0,
-1005,0,,,,,,,,,
-1250,,1,,,,,,,,
-1255,,0,,1,1,0,2,3,0,
-3000,,,,0,0,0,4,1,0,
-3100,,,1,,,,,,,
-3105,,,0,0,0,1,4,1,0,
-4000,,,,0,0,0,5,3,0,
-4100,1,,,,,,,,,
-4105,0,,,1,0,0,5,3,0,
-5000,,,,0,0,0,6,1,0,26.1
+scan,lift.Call1,lift.Call2,lift.Call3,expect CallLamp1,expect CallLamp2,expect CallLamp3,expect lift.served,expect lift.floor,expect lift.misstops,expect lift.max_wait ~ 4,expect DoorOpened
+1,,,1,0,0,1,0,1,0,,
+6,,,0,0,0,1,0,1,0,,
+200,,1,,,,,,,,,
+205,,0,,0,1,1,0,0,0,,
+500,,,,0,0,1,1,2,0,,1
+1000,1,,,1,0,1,1,3,0,,
+1005,0,,,,,,,,,,
+1250,,1,,,,,,,,,
+1255,,0,,1,1,0,2,*,0,,
+3000,,,,0,0,0,4,1,0,,
+3100,,,1,,,,,,,,
+3105,,,0,0,0,1,4,1,0,,
+4000,,,,0,0,0,5,3,0,,
+4100,1,,,,,,,,,,
+4105,0,,,1,0,0,5,3,0,,
+5000,,,,0,0,0,6,1,0,26.1,
 `,
 };
 

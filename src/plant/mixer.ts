@@ -97,6 +97,9 @@ export interface MixerState {
   readonly overflows: number;
   readonly scorches: number;
   readonly dryHeats: number;
+  /** Times the next batch was dosed onto what was left of the last one (its discharge closed early), and how much was left the last time, litres. */
+  readonly heels: number;
+  readonly heelL: number;
   /** Flows in the last step, litres per second. */
   readonly inflow: number;
   readonly outflow: number;
@@ -123,12 +126,19 @@ function verdict(s: { volA: number; volB: number; heldMs: number }): SpoilReason
   return '';
 }
 
-const SPOIL_TEXT: Record<Exclude<SpoilReason, '' | 'scorch'>, string> = {
-  overheat: `a batch overheated above ${OVERHEAT_C} °C and is spoiled`,
-  ratio: `a batch was discharged with the wrong ratio (A must be ${RATIO_MIN} to ${RATIO_MAX} % of it) and is spoiled`,
-  unheld: `a batch was discharged before it was held ${HOLD_S} s at ${SETPOINT_C} °C with the agitator running, and is spoiled`,
-  short: `a batch was discharged short (less than ${MIN_BATCH_L} L) and is spoiled`,
-};
+/** Why a batch was spoiled, with what it was (the held time, the ratio), as a consequence's message. */
+function spoilText(s: MixerState): string {
+  switch (s.spoilReason) {
+    case 'overheat':
+      return `a batch overheated above ${OVERHEAT_C} °C and is spoiled`;
+    case 'ratio':
+      return `a batch was discharged with A ${s.lastRatio.toFixed(0)} % of it (it must be ${RATIO_MIN} to ${RATIO_MAX} %) and is spoiled`;
+    case 'unheld':
+      return `a batch was discharged held only ${(Math.floor(s.heldMs / 100) / 10).toFixed(1)} s at ${HOLD_MIN_C} °C or above with the agitator running (it must be held ${HOLD_S} s at ${SETPOINT_C} °C) and is spoiled`;
+    default:
+      return `a batch was discharged short (less than ${MIN_BATCH_L} L) and is spoiled`;
+  }
+}
 
 const NOTHING: readonly PlantConsequence[] = [];
 const POINTS: readonly PlantPoint[] = [
@@ -159,7 +169,7 @@ const POINTS: readonly PlantPoint[] = [
     address: '%IX0.5',
     type: 'BOOL',
     kind: 'sensor',
-    comment: 'Agitator speed monitor, ON at full speed',
+    comment: 'Agitator speed monitor, ON from 90 % of full speed (the motor runs up in 2 s)',
   },
   {
     name: 'Level',
@@ -226,13 +236,17 @@ export const mixer: PlantModel<MixerState> = {
     '2. open ValveB until HighLevel comes ON (800 L), then close it;',
     '3. run the Agitator; with the agitator running (AgitatorOn) and the heater covered (LowLevel),',
     `   heat (Heater) to ${SETPOINT_C} °C (Temperature is in tenths of a degree: ${SETPOINT_C * 10});`,
-    `4. hold the batch at ${SETPOINT_C} °C with the agitator running for ${HOLD_S} s;`,
+    `4. hold the batch at ${SETPOINT_C} °C (${HOLD_MIN_C} °C or above counts) with the agitator running for ${HOLD_S} s;`,
     '5. heater and agitator off, open OutletValve until the vessel is empty (a few seconds after',
     '   LowLevel goes OFF), then close it; DoneLamp is lit while a finished batch is discharged.',
     'Then start the next batch. The vessel must never overflow. Never heat an uncovered element',
     '(it burns out) or without the agitator (the product scorches on the element). A batch above',
     `${OVERHEAT_C} °C, discharged before it was held, or with A outside ${RATIO_MIN} to ${RATIO_MAX} % is spoiled.`,
-    'Level (%IW0) is in litres, 0 to 1000; the heated batch loses heat to the 20 °C room.',
+    'Level (%IW0) is in litres, 0 to 1000. Valves A and B let in 40 L/s each, the outlet 50 L/s. The',
+    'process runs faster than a real one: the heater warms a full, stirred batch by about 1 °C a',
+    'second (20 to 60 °C in some 40 s); with the heater off the batch loses heat to the 20 °C room,',
+    'about 0.15 °C a second at 60 °C, so keep it there with a thermostat. Heated without the',
+    'agitator the product scorches within some 6 s; an uncovered element burns out within some 20 s.',
   ].join('\n'),
   points: POINTS,
   faults: [
@@ -241,7 +255,7 @@ export const mixer: PlantModel<MixerState> = {
     { id: 'high_stuck_off', title: 'High level switch stuck OFF' },
     { id: 'valve_a_slow', title: 'Valve A slow (15 s to open or close)' },
     { id: 'agitator_dead', title: 'Agitator motor does not start' },
-    { id: 'heater_dead', title: 'Heater element burnt out (does not heat)' },
+    { id: 'heater_dead', title: 'Heater does not heat (element open circuit)' },
     { id: 'temp_frozen', title: 'Temperature transmitter frozen' },
   ],
   quantities: [
@@ -254,7 +268,12 @@ export const mixer: PlantModel<MixerState> = {
       unit: '%',
       comment: 'Share of ingredient A in the vessel (the last batch judged, when empty)',
     },
-    { name: 'held', type: 'REAL', unit: 's', comment: 'Time the batch was held hot and stirred' },
+    {
+      name: 'held',
+      type: 'REAL',
+      unit: 's',
+      comment: 'Time the batch was held at 57 °C or above with the agitator at speed, since the last ingredient',
+    },
     { name: 'max_temp', type: 'REAL', unit: '°C', comment: 'Hottest the batch in the vessel was' },
     { name: 'valve_a', type: 'REAL', unit: '%', comment: 'Valve A opening' },
     { name: 'valve_b', type: 'REAL', unit: '%', comment: 'Valve B opening' },
@@ -267,6 +286,11 @@ export const mixer: PlantModel<MixerState> = {
     { name: 'overflows', type: 'INT', comment: 'Times the vessel overflowed' },
     { name: 'scorches', type: 'INT', comment: 'Times the product scorched on the heater' },
     { name: 'dry_heats', type: 'INT', comment: 'Times the heater ran dry (element not covered)' },
+    {
+      name: 'heels',
+      type: 'INT',
+      comment: 'Times the next batch was dosed onto what was left of the last one (outlet closed before the vessel was empty)',
+    },
     { name: 'burnt_out', type: 'BOOL', comment: 'The heater element burnt out (heated uncovered): it heats no more until a reset' },
   ],
 
@@ -299,6 +323,8 @@ export const mixer: PlantModel<MixerState> = {
     overflows: 0,
     scorches: 0,
     dryHeats: 0,
+    heels: 0,
+    heelL: 0,
     burntOut: false,
     inflow: 0,
     outflow: 0,
@@ -314,7 +340,7 @@ export const mixer: PlantModel<MixerState> = {
     let heating = ordered && !burntOut;
     const travelA = faults.has('valve_a_slow') ? SLOW_VALVE_TRAVEL_MS : VALVE_TRAVEL_MS;
     let { level, volA, volB, temp, element, valveA, valveB, outlet, agitator, heldMs, maxTemp, angle } = s;
-    let { judged, spoiledBatch, spoilReason, lastRatio, batches, spoiled, overflows, scorches, dryHeats } = s;
+    let { judged, spoiledBatch, spoilReason, lastRatio, batches, spoiled, overflows, scorches, dryHeats, heels, heelL } = s;
     let overflowing = false;
     let dryHeating = false;
     let scorching = false;
@@ -344,8 +370,13 @@ export const mixer: PlantModel<MixerState> = {
       const inA = FLOW_A_L_S * valveA * h;
       const inB = FLOW_B_L_S * valveB * h;
       if (inA + inB > 0) {
-        // An ingredient into a batch already judged (its discharge stopped short): a new batch.
+        // An ingredient into a batch already judged (its discharge stopped short): a new batch,
+        // on what was left of the last one (which is then never counted a good batch).
         if (judged) {
+          if (level > 0) {
+            heels++;
+            heelL = level;
+          }
           judged = false;
           spoiledBatch = false;
           maxTemp = temp;
@@ -448,6 +479,8 @@ export const mixer: PlantModel<MixerState> = {
     into.overflows = overflows;
     into.scorches = scorches;
     into.dryHeats = dryHeats;
+    into.heels = heels;
+    into.heelL = heelL;
     into.inflow = dt > 0 ? inflowL / dt : 0;
     into.outflow = dt > 0 ? outflowL / dt : 0;
     return into;
@@ -487,15 +520,27 @@ export const mixer: PlantModel<MixerState> = {
       (out ??= []).push({
         id: 'scorch',
         severity: 'error',
-        message: 'the product scorched on the heater (heating without the agitator) and the batch is spoiled',
+        // Unstirred, the element scorches the still product around it; stirred, only a batch
+        // heated on far past its set point gets the element that hot (a frozen transmitter).
+        message:
+          after.agitator >= 0.9
+            ? `the product scorched on the heater (the batch was heated on to ${after.temp.toFixed(0)} °C) and the batch is spoiled`
+            : 'the product scorched on the heater (heating without the agitator) and the batch is spoiled',
         counter: 'scorches',
       });
     if (after.spoiled > before.spoiled && after.spoilReason !== 'scorch')
       (out ??= []).push({
         id: `spoiled_${after.spoilReason}`,
         severity: 'error',
-        message: SPOIL_TEXT[after.spoilReason as keyof typeof SPOIL_TEXT],
+        message: spoilText(after),
         counter: 'spoiled',
+      });
+    if (after.heels > before.heels)
+      (out ??= []).push({
+        id: 'heel',
+        severity: 'error',
+        message: `the vessel was not emptied (the outlet closed with ${after.heelL.toFixed(1)} L left): the next batch was dosed onto it, and the last batch is not counted`,
+        counter: 'heels',
       });
     return out ?? NOTHING;
   },
@@ -566,6 +611,8 @@ export const mixer: PlantModel<MixerState> = {
         return s.scorches;
       case 'dry_heats':
         return s.dryHeats;
+      case 'heels':
+        return s.heels;
       case 'burnt_out':
         return s.burntOut;
     }

@@ -10,20 +10,36 @@ import type { Network, Project, Scenario } from '../model/project';
 import { plantVariables, taskText } from './exerciseKit';
 import { mixer } from './mixer';
 
-/** Three good batches in 6 minutes of PLC time: no overflow, no scorch, no spoiled batch. */
+/**
+ * Three good batches in 6 minutes of PLC time: no overflow, no scorch, no spoiled batch; the
+ * steps in order (A alone, then B alone, then stirred and heated, then discharged with the lamp),
+ * and Stop pausing the third batch while it heats (everything off), Start going on with it.
+ */
 export const MIXER_SCENARIO: Scenario = {
   name: 'Three good batches',
   csv: `# plant: mixer
 # cycle: 100ms
-# Start is pressed for 0.2 s. A batch takes about 2 minutes: dosing, heating to 60 °C, 30 s hold, discharge.
+# Start is pressed for 0.2 s. A batch takes under 2 minutes: dosing A (10 s), B (10 s), heating to
+# 60 °C (some 40 s), the 30 s hold, discharge. At 5 s only valve A is open, at 15 s only valve B;
+# at 40 s the batch is stirred; at 100 s it is discharged with DoneLamp lit, heater and agitator off.
+# Counted every batch a few seconds after its discharge; a longer hold or emptying time is fine.
+# Stop is pressed at 260 s while the third batch heats (everything goes off), Start at 270 s.
 # An overflow, a scorch, a heater run dry or a spoiled batch fails the scenario at the scan it happens.
-scan,mixer.Start,expect Running,expect mixer.batches,expect mixer.ratio ~ 10
-1,1,,0,
-3,0,1,0,
-1000,,1,0,50
-1150,,1,1,
-2250,,1,2,
-3300,,1,3,
+scan,mixer.Start,mixer.Stop,expect ValveA,expect ValveB,expect Agitator,expect Heater,expect OutletValve,expect DoneLamp,expect mixer.batches,expect mixer.ratio ~ 10
+1,1,0,,,,,,,0,
+3,0,,,,,,,,0,
+50,,,1,0,0,0,0,0,0,
+150,,,0,1,0,0,0,0,0,
+400,,,0,0,1,*,0,0,0,
+1000,,,0,0,0,0,1,1,0,50
+1200,,,,,,,,,1,
+2300,,,,,,,,,2,
+2600,,1,,,,,,,,
+2602,,0,,,,,,,,
+2610,,,0,0,0,0,0,0,2,
+2700,1,,,,,,,,,
+2702,0,,,,,,,,,
+3600,,,,,,,,,3,
 `,
 };
 

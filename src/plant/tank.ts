@@ -107,6 +107,9 @@ export const tank: PlantModel<TankState> = {
     'switch (HighLevel) comes ON, then stop filling. Never run Pump with InletValve closed.',
     'Stopped: Pump off, both valves closed. The tank must never overflow.',
     'Level (%IW0) is the water in litres, 0 to 1000; the switches sit at 200 L and 800 L.',
+    'The pump delivers 25 L/s through the open inlet (it takes 0.5 s to run up, a valve 1 s to open),',
+    'the process draws 10 L/s: the tank fills by some 15 L/s while the process draws, and empties',
+    'by 10 L/s. It starts with 100 L in it.',
   ].join('\n'),
   points: POINTS,
   faults: [
@@ -115,7 +118,7 @@ export const tank: PlantModel<TankState> = {
     { id: 'high_stuck_off', title: 'High level switch stuck OFF' },
     { id: 'high_stuck_on', title: 'High level switch stuck ON' },
     { id: 'pump_dead', title: 'Pump motor does not start' },
-    { id: 'inlet_slow', title: 'Inlet valve slow (15 s to open)' },
+    { id: 'inlet_slow', title: 'Inlet valve slow (15 s to open or close)' },
     { id: 'drain_stuck', title: 'Drain valve stuck closed' },
   ],
   quantities: [

@@ -7,21 +7,36 @@ import type { Network, Project, Scenario } from '../model/project';
 import { plantVariables, taskText } from './exerciseKit';
 import { tank } from './tank';
 
-/** Holding the tank between the switches for 5 minutes of PLC time, with no overflow, no dry run. */
+/**
+ * Holding the tank between the switches for 5 minutes of PLC time, with no overflow, no dry run:
+ * filling from the low switch up to the high switch while the process draws, the drain shut below
+ * the low switch, the inlet open whenever the pump runs, everything off on Stop and on again on Start.
+ */
 export const TANK_SCENARIO: Scenario = {
   name: 'Tank held between the switches for 5 minutes',
   csv: `# plant: tank
 # cycle: 100ms
-# Start is pressed for 0.2 s; the level is checked every minute (between 190 L and 830 L).
+# Start is pressed for 0.2 s. The tank fills from the low switch (200 L) to the high switch (800 L)
+# in about 45 s while the process draws, then the process draws it down in about 60 s: the level
+# is checked against that cycle (within 50 L) every minute.
+# At 2 s the water is below the low switch: the pump fills through the open inlet, the drain is shut.
+# Stop is pressed at 230 s while the tank fills: everything goes off and the level stays; Start at 240 s.
 # An overflow or a dry run fails the scenario at the scan it happens.
-scan,tank.Start,expect Running,expect tank.level ~ 320,expect tank.deadheads
-1,1,,,
-3,0,1,*,0
-600,,1,510,0
-1200,,1,510,0
-1800,,1,510,0
-2400,,1,510,0
-3000,,1,510,0
+scan,tank.Start,tank.Stop,expect RunLamp,expect Pump,expect InletValve,expect DrainValve,expect tank.level ~ 50,expect tank.deadheads
+1,1,0,,,,,,
+3,0,,1,*,*,*,*,0
+20,,,1,1,1,0,138,0
+600,,,1,0,0,1,646,0
+1200,,,1,1,1,1,421,0
+1800,,,1,0,0,1,458,0
+2300,,1,,,,,,
+2302,,0,,,,,,
+2310,,,0,0,0,0,552,0
+2399,,,0,0,0,0,552,0
+2400,1,,,,,,,
+2402,0,,1,*,*,*,*,0
+2700,,,1,0,0,1,256,0
+3000,,,1,1,1,1,557,0
 `,
 };
 

@@ -49,7 +49,7 @@ describe('"Why?" on the box sorter\'s sensors names the boxes and where they are
       `the size sensor, a high photo-eye, at 0.80 m is ON while a large box breaks its beam; box 1 (small) is in front of it, its front edge at ${(box1 / 1000).toFixed(2)} m, too low to break the high beam, so it is OFF`,
     );
     expect(boxes.explain!(at, 'PusherEye', NONE)).toBe(
-      `the photo-eye at the pusher at 2.10 m is ON while a box breaks its beam; no box is in front of it (the next box's front edge is at ${(box1 / 1000).toFixed(2)} m), so it is OFF`,
+      `the photo-eye at the pusher at 2.08 m is ON while a box breaks its beam; no box is in front of it (the next box's front edge is at ${(box1 / 1000).toFixed(2)} m), so it is OFF`,
     );
     expect(boxes.explain!(at, 'PusherIn', NONE)).toBe('the in limit switch is ON at 2 % out and under; the pusher is 0.0 % out, so it is ON');
     expect(boxes.explain!(at, 'SizeEye', new Set(['size_stuck_on']))).toBe(

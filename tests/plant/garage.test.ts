@@ -57,8 +57,8 @@ describe('the garage door model', () => {
     ['the motor ramps up in 0.5 s, then 12 s end to end', 0, UP, 1000, 100 * (0.8 / 12), 100],
     ['up for 6.5 s: a little over half the travel', 10, UP, 6500, 10 + 100 * (6.3 / 12), 100],
     ['down from fully open', 100, DOWN, 3000, 100 - 100 * (2.8 / 12), -100],
-    ['up stops at the end stop', 95, UP, 2000, 100, 100],
-    ['down stops at the floor', 5, DOWN, 2000, 0, -100],
+    ['up stops at the end stop: the motor stalls there (speed 0)', 95, UP, 2000, 100, 0],
+    ['down stops at the floor: the motor stalls there (speed 0)', 5, DOWN, 2000, 0, 0],
     ['no contactor: the door stays', 40, {}, 3000, 40, 0],
     ['both contactors: the motor does not turn', 40, { MotorUp: true, MotorDown: true }, 3000, 40, 0],
   ] as const)('%s', (_what, from, drive, ms, position, speed) => {
@@ -143,6 +143,10 @@ describe('the garage door model', () => {
     const open = consequences(at(98), UP, 3000);
     expect(open.ids).toEqual(['overrun']);
     expect(open.state.overruns).toBe(1);
+    // The contactor is on, the motor stalled: the door neither moves nor reads a speed.
+    expect(open.state.up).toBe(true);
+    expect(garage.quantity(open.state, 'speed')).toBe(0);
+    expect(open.state.moving).toBe(false);
     const closed = consequences(at(2), DOWN, 3000);
     expect(closed.ids).toEqual(['overrun']);
     const s = run(at(2), DOWN, 3000);
@@ -248,7 +252,7 @@ describe('the garage door exercise', () => {
 
   test('the reference solution opens and closes the door three times, reversing for the car', () => {
     const { result } = runScenario(garageReference(), GARAGE_SCENARIO);
-    expect(result).toMatchObject({ ok: true, scans: 1000 });
+    expect(result).toMatchObject({ ok: true, scans: 1200 });
   });
 
   test.each([10, 20, 50])('the reference solution opens the door at %i ms scans with no warning (it gave one as the door braked at the limit)', (cycle) => {

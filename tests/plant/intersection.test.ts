@@ -98,7 +98,8 @@ describe('the intersection model', () => {
     }
     for (const [name, value] of Object.entries(expected)) expect([name, q(s, name)]).toEqual([name, value]);
     expect(senseRecord(intersection, s, none)).toEqual(sensed);
-    expect(events).toEqual([]);
+    // The phases jump from one green to the other: only the clearance monitor speaks (tested below).
+    expect(events.filter((e) => e.counter !== 'short_yellows' && e.counter !== 'short_reds')).toEqual([]);
   });
 
   test('a car waits its headway behind the one in front: five leave in 10 s of green', () => {
@@ -178,12 +179,53 @@ describe('the intersection model', () => {
     expect(run(intersection.initial(), { ...ALL_RED, MainYellow: true }, 300).events).toEqual([]);
   });
 
+  test.each([
+    { yellow: 3000, red: 2000, step: 100, events: [] },
+    { yellow: 3000, red: 2000, step: 1, events: [] },
+    { yellow: 3000, red: 2100, step: 30, events: [] },
+    {
+      yellow: 2900,
+      red: 2000,
+      step: 100,
+      events: ['the main road went from green to red after 2.9 s of yellow (at least 3 s of yellow asked)'],
+    },
+    {
+      yellow: 3000,
+      red: 1900,
+      step: 100,
+      events: ['the side road got green 1.9 s after the main road turned red (both roads red at least 2 s asked)'],
+    },
+  ])(
+    'the clearance monitor: $yellow ms of yellow, $red ms of all red ($step ms steps) before the side road green',
+    ({ yellow, red, step, events }) => {
+      const yellowDrive: Drive = { MainYellow: true, SideRed: true, DontWalkMain: true, DontWalkSide: true };
+      const seen: PlantConsequence[] = [];
+      let s = intersection.initial();
+      for (const [drive, ms] of [
+        [MAIN_GO, 30_000],
+        [yellowDrive, yellow],
+        [ALL_RED, red],
+        [SIDE_GO, 1000],
+      ] as const) {
+        for (let t = 0; t < ms; t += step) {
+          const next = intersection.step(s, drive, step, none);
+          seen.push(...intersection.check(s, next));
+          s = next;
+        }
+      }
+      expect(messages(seen)).toEqual(events);
+      expect(Number(q(s, 'short_yellows')) + Number(q(s, 'short_reds'))).toBe(events.length);
+    },
+  );
+
   test('near miss: green to the other road while a car is still in the intersection (no yellow, no all-red)', () => {
     const mainGoing = run(intersection.initial(), MAIN_GO, 2000).s;
     expect(q(mainGoing, 'served_main')).toBe(1);
     const r = run(mainGoing, SIDE_GO, 100);
     expect(messages(r.events)).toEqual([
       'the side road got green while a car from the main road was still in the intersection',
+      'the main road went from green to red without yellow (at least 3 s of yellow asked)',
+      'the side road got green 0.0 s after the main road turned red (both roads red at least 2 s asked)',
     ]);
     expect(q(r.s, 'near_misses')).toBe(1);
     // After the all-red the car is through: no near miss.

@@ -174,6 +174,40 @@ describe('the mixer consequences', () => {
     expect(consequences(before, s)).toEqual(['scorch']);
   });
 
+  test('a scorch says why: unstirred, or a stirred batch heated on far past its set point (a frozen transmitter)', () => {
+    const still = dosed(400, 400);
+    const unstirred = run(still, { Heater: true }, 10_000);
+    expect(mixer.check(still, unstirred).map((c) => c.message)).toEqual([
+      'the product scorched on the heater (heating without the agitator) and the batch is spoiled',
+    ]);
+    // Stirred and heated on: overheated first (spoiled once), then the element scorches the product.
+    let s = run(still, { Agitator: true }, 3000);
+    let scorch: string | undefined;
+    for (let t = 0; t < 300_000 && !scorch; t += 100) {
+      const next = mixer.step(s, { Agitator: true, Heater: true }, 100, none);
+      scorch = mixer.check(s, next).find((c) => c.id === 'scorch')?.message;
+      s = next;
+    }
+    expect(s.agitator).toBe(1);
+    expect(scorch).toBe(`the product scorched on the heater (the batch was heated on to ${s.temp.toFixed(0)} °C) and the batch is spoiled`);
+    expect(s.temp).toBeGreaterThan(100);
+  });
+
+  test('the fault heater_dead is not the burnt-out element: the heater does not heat, burnt_out stays FALSE', () => {
+    expect(mixer.faults.find((f) => f.id === 'heater_dead')?.title).toBe('Heater does not heat (element open circuit)');
+    const s = run(dosed(400, 400), { Agitator: true, Heater: true }, 20_000, new Set(['heater_dead']));
+    expect([q(s, 'heating'), q(s, 'burnt_out')]).toEqual([false, false]);
+    expect(s.temp).toBeLessThan(21);
+  });
+
+  test('AgitatorOn comes ON where its comment says: from 90 % of full speed, 1.8 s after the contactor (2 s run-up)', () => {
+    expect(mixer.points.find((p) => p.name === 'AgitatorOn')?.comment).toBe(
+      'Agitator speed monitor, ON from 90 % of full speed (the motor runs up in 2 s)',
+    );
+    const at = (ms: number) => senseRecord(mixer, run(dosed(400, 400), { Agitator: true }, ms), none).AgitatorOn;
+    expect([at(1700), at(1800), at(2000)]).toEqual([false, true, true]);
+  });
+
   test('heating past 80 °C spoils the batch, once (discharging it counts nothing more)', () => {
     const before = run(dosed(400, 400), { Agitator: true }, 3000);
     const s = run(before, { Agitator: true, Heater: true }, 60_000);
@@ -198,6 +232,40 @@ describe('the mixer consequences', () => {
     const empty = run(s, { OutletValve: true }, 25_000);
     expect(empty.level).toBe(0);
     expect(empty.batches).toBe(0);
+  });
+
+  test('a spoiled batch says what it was: the share of A, the time it was held', () => {
+    const ratio = heldBatch(dosed(600, 200), 30_000);
+    expect(mixer.check(ratio, mixer.step(ratio, { OutletValve: true }, 100, none))[0]!.message).toMatch(
+      /^a batch was discharged with A (7[4-6]) % of it \(it must be 40 to 60 %\) and is spoiled$/,
+    );
+    const unheld = heldBatch(dosed(400, 400), 20_000);
+    const s = mixer.step(unheld, { OutletValve: true }, 100, none);
+    expect(mixer.check(unheld, s)[0]!.message).toBe(
+      `a batch was discharged held only ${(Math.floor(s.heldMs / 100) / 10).toFixed(1)} s at 57 °C or above with the agitator running (it must be held 30 s at 60 °C) and is spoiled`,
+    );
+    expect(s.heldMs).toBeGreaterThan(10_000);
+    expect(s.heldMs).toBeLessThan(30_000);
+  });
+
+  test('consequence: the next batch dosed onto what the last one left (the outlet closed early) is an error; the last batch is not counted', () => {
+    const ready = heldBatch(dosed(400, 400), 30_500);
+    // Discharged for 15 s at 50 L/s: some 60 L are left when the outlet closes.
+    const left = run(run(ready, { OutletValve: true }, 15_000), {}, 2000);
+    expect(left.level).toBeGreaterThan(20);
+    const next = mixer.step(left, { ValveA: true }, 100, none);
+    expect(consequences(left, next)).toEqual(['heel']);
+    expect(mixer.check(left, next)[0]).toMatchObject({
+      severity: 'error',
+      counter: 'heels',
+      message: `the vessel was not emptied (the outlet closed with ${left.level.toFixed(1)} L left): the next batch was dosed onto it, and the last batch is not counted`,
+    });
+    expect(q(next, 'heels')).toBe(1);
+    const after = run(next, { ValveA: true }, 5000);
+    expect([after.batches, after.heels]).toEqual([0, 1]);
+    // Emptied before the next batch: no such consequence.
+    const emptied = run(ready, { OutletValve: true }, 25_000);
+    expect(consequences(emptied, mixer.step(emptied, { ValveA: true }, 100, none))).toEqual([]);
   });
 
   test('a good batch: judged when the outlet opens, counted once the vessel is empty; the next starts afresh', () => {
@@ -329,7 +397,7 @@ describe('the mixer exercise', () => {
 
   test('the reference solution makes three good batches', () => {
     const { result } = runScenario(mixerReference(), MIXER_SCENARIO);
-    expect(result).toMatchObject({ ok: true, scans: 3300 });
+    expect(result).toMatchObject({ ok: true, scans: 3600 });
   });
 
   test('the wrong solution (no high limit on the heater) fails where the first batch overheats', () => {

@@ -60,6 +60,10 @@ describe('the tank model', () => {
     );
     const slow = run(tank.initial(), { Pump: true, InletValve: true }, 3000, new Set(['inlet_slow']));
     expect(slow.inlet).toBeCloseTo(0.2, 5);
+    // Slow both ways, as its title says: 3 s after the solenoid drops it is still 80 % open.
+    const open = { ...tank.initial(), inlet: 1 };
+    expect(run(open, {}, 3000, new Set(['inlet_slow'])).inlet).toBeCloseTo(0.8, 5);
+    expect(tank.faults.find((f) => f.id === 'inlet_slow')?.title).toBe('Inlet valve slow (15 s to open or close)');
   });
 
   test('a step is pure: the same state, drive and time give the same state, the input is not changed', () => {
