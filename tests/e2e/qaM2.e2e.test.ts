@@ -149,3 +149,26 @@ test('a stuck limit switch or floor sensor is drawn as the program reads it: dar
   expect(errors).toEqual([]);
 });
 
+
+test("the garage door's motor is drawn energised while its contactor drives it against a stop (stalled, speed 0), dark when both are off", async () => {
+  // The door starts closed. MotorDown forced ON drives it against the closed stop: it stalls there.
+  await plants.openExercise('Garage door (machine: garage)', 100);
+  await sim.button('reset').click();
+  await sim.waitForMode('Stopped');
+  // The motor box over the doorway (its centre 150, 18 in the drawing, clear of the arrow).
+  const motor = () => plants.drawnColour(150 - 16, 18);
+  await expect.poll(motor).toBe('75,85,99');
+  // A scan first: a force is made on a program loaded in the simulator.
+  await sim.button('step-scan').click();
+  await sim.waitForMode('Paused');
+  type Forcing = { simStore: { getState(): { force(n: string, v: { text: string }): void; unforce(n: string): void } } };
+  await page.evaluate(() => (window.rungsmith as unknown as Forcing).simStore.getState().force('MotorDown', { text: 'TRUE' }));
+  await sim.button('step-scan').click();
+  await expect.poll(async () => (await plants.plant<{ down: boolean; speed: number }>())!.now.state).toMatchObject({ down: true, speed: 0 });
+  // Amber: the contactor is on although the door does not move (it drew dark, as a motor off).
+  await expect.poll(motor).toBe('234,179,8');
+  await page.evaluate(() => (window.rungsmith as unknown as Forcing).simStore.getState().unforce('MotorDown'));
+  await sim.button('step-scan').click();
+  await expect.poll(motor).toBe('75,85,99');
+  expect(errors).toEqual([]);
+});

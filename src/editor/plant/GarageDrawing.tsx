@@ -95,7 +95,10 @@ function Car({ x, w, top, faded }: { x: number; w: number; top: number; faded?: 
 export function GarageDrawing({ state, sensed }: PlantDrawingProps) {
   const s = state as GarageState;
   const edge = yOf(s.position);
-  const motorColor = s.short ? ALARM : Math.abs(s.speed) > 0.99 ? LIT : s.speed !== 0 ? RAMP : DARK;
+  // Energised but not at speed (starting, or stalled against a stop or on the car): amber, as a
+  // motor whose contactor is on; dark only with both contactors off and the door still.
+  const energised = s.up || s.down;
+  const motorColor = s.short ? ALARM : Math.abs(s.speed) > 0.99 ? LIT : s.speed !== 0 || energised ? RAMP : DARK;
   const overrun = s.pushMs > OVERRUN_MS;
   // Section joints move with the door: they sit a whole section apart, up from its edge.
   const joints: number[] = [];
