@@ -9,6 +9,8 @@ import type { SimState } from '../../store/simState';
 import { selectProject, useDocument } from '../../store/documentStore';
 import { useSim, useSimStore } from '../sim/simContext';
 import { SteppingConfirmDialog } from './HardwareStepping';
+import { OutputForceConfirm } from './OutputForceConfirm';
+import { guardFieldOutputs } from './outputForce';
 import { hardwareStepping, useSteppingView } from './useHardwareStepping';
 import { useGateway } from './useGateway';
 
@@ -24,6 +26,9 @@ export function HardwareSimLink() {
   const wasAttached = useRef(false);
   /** The controller link was lost (not disconnected by the user) and has not opened again yet. */
   const lostLink = useRef(false);
+
+  // A write or force of a field output asks to confirm while this page drives the hardware.
+  useEffect(() => guardFieldOutputs(sim), [sim]);
 
   useEffect(() => {
     // Forces made before this page drove the hardware (in simulation, as observer, or in an earlier
@@ -84,5 +89,10 @@ export function HardwareSimLink() {
     return undefined;
   }, [mode, link, role, points, project, sim, stepping]);
 
-  return <SteppingConfirmDialog />;
+  return (
+    <>
+      <SteppingConfirmDialog />
+      <OutputForceConfirm />
+    </>
+  );
 }

@@ -1,0 +1,157 @@
+// Forcing or writing a real output while the page drives hardware asks to confirm first (as TIA Portal
+// warns before a force on a real output), whichever way the force is made: the canvas menu on the
+// coil, the Watch row's Force and Write, F7 on a prepared value. The dialog names the output, its
+// address, the device and the value; Cancel has the focus and sends nothing. In a real Chromium
+// against the gateway serving the built app with its simulated device; the device's coil is read
+// independently over Modbus TCP with mbpoll, never from the page.
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { eventually } from '../gateway/helpers';
+import { openApp, useChromium } from './appPage';
+import { useHardwareGateway } from './hardwareLab';
+import { SimPage } from './simPage';
+
+const browser = useChromium();
+
+/** Scans the page shows, to let some pass. */
+const scan = async (page: Page) => Number(await page.getByTestId('sim-scan').textContent());
+async function scansPass(page: Page, n: number) {
+  const from = await scan(page);
+  await expect.poll(() => scan(page), { timeout: 30_000 }).toBeGreaterThan(from + n);
+}
+
+describe('forcing a real output asks to confirm', () => {
+  const lab = useHardwareGateway(browser);
+  const { coils, deviceInput, openOnHardware } = lab;
+
+  /** The motor example running on the simulated device (Stop not closed: the program keeps Motor OFF). */
+  async function motorOnHardware() {
+    const opened = await openOnHardware('Motor start/stop (seal-in)');
+    await opened.sim.button('run').click();
+    await opened.sim.waitForMode('Running');
+    await expect.poll(() => lab.gateway().hub.status().armed).toBe(true);
+    return opened;
+  }
+
+  /** The confirmation for Motor to TRUE, with Cancel focused. */
+  async function expectDialog(page: Page, verb: 'Force' | 'Write') {
+    const dialog = page.getByTestId('hw-output-confirm');
+    await expect.poll(() => dialog.count()).toBe(1);
+    expect(await dialog.getByTestId('hw-output-confirm-title').textContent()).toBe(
+      `${verb} real output Motor (%QX0.0) to TRUE?`,
+    );
+    expect(await dialog.textContent()).toContain(
+      `Motor is output %QX0.0 of device "sim" (the gateway's simulated device).`,
+    );
+    expect(await dialog.textContent()).toContain('can cause injury or damage');
+    expect(await page.evaluate(() => document.activeElement?.getAttribute('data-testid'))).toBe(
+      'hw-output-cancel',
+    );
+    return dialog;
+  }
+
+  it('canvas menu on the Motor coil: Force TRUE asks; Cancel leaves the coil OFF on the device, Confirm drives it ON; unforced, the seal-in holds it until Stop on the device', async () => {
+    const { page, errors, sim } = await motorOnHardware();
+    const coil = await sim.draw.cellPoint(0, 0, 9);
+    const forceTrue = async () => {
+      await page.mouse.click(coil.x, coil.y, { button: 'right' });
+      await page.getByTestId('sim-context-menu').getByRole('menuitem', { name: 'Force TRUE' }).click();
+    };
+
+    await forceTrue();
+    const dialog = await expectDialog(page, 'Force');
+    expect(await dialog.getByTestId('hw-output-confirm-when').textContent()).toBe(
+      'The program drives the outputs: the device gets it at the next scan.',
+    );
+    await dialog.getByTestId('hw-output-cancel').click();
+    await expect.poll(() => dialog.count()).toBe(0);
+    await scansPass(page, 20);
+    expect(await sim.value('Motor')).toBe(false);
+    expect(
+      await page.evaluate(
+        () =>
+          (window.rungsmith!.simStore as { getState(): { forced: Map<string, unknown> } }).getState().forced
+            .size,
+      ),
+    ).toBe(0);
+    expect((await coils())[0]).toBe(0);
+
+    await forceTrue();
+    await (await expectDialog(page, 'Force')).getByTestId('hw-output-ok').click();
+    await eventually(async () => (await coils())[0] === 1, 10_000, 'Motor ON on the device after Confirm');
+    expect(await sim.value('Motor')).toBe(true);
+
+    // Unforcing asks nothing; the program's seal-in keeps the motor it found ON running (as a real
+    // PLC would) until Stop is pressed on the device.
+    await page.mouse.click(coil.x, coil.y, { button: 'right' });
+    await page.getByTestId('sim-context-menu').getByRole('menuitem', { name: 'Unforce' }).click();
+    await expect
+      .poll(() =>
+        page.evaluate(
+          () =>
+            (window.rungsmith!.simStore as { getState(): { forced: Map<string, unknown> } }).getState().forced
+              .size,
+        ),
+      )
+      .toBe(0);
+    expect((await coils())[0]).toBe(1);
+    await deviceInput(1, true);
+    await eventually(async () => (await coils())[0] === 0, 10_000, 'Motor OFF on the device after Stop');
+    expect(errors).toEqual([]);
+  });
+
+  it('Watch row Force (Escape), Write (Cancel) and F7 on a prepared TRUE (Cancel) all ask, and none reaches the device', async () => {
+    const { page, errors, sim } = await motorOnHardware();
+    await sim.tab('Watch');
+    await page.getByTestId('watch-add-name').fill('Motor');
+    await page.getByTestId('watch-add').click();
+    const row = page.getByTestId('watch-row-Motor');
+    await row.getByTestId('watch-input').fill('TRUE');
+
+    await row.getByTestId('watch-force').click();
+    await expectDialog(page, 'Force');
+    await page.keyboard.press('Escape');
+    await expect.poll(() => page.getByTestId('hw-output-confirm').count()).toBe(0);
+
+    await row.getByTestId('watch-write').click();
+    const write = await expectDialog(page, 'Write');
+    await write.getByTestId('hw-output-cancel').click();
+    await expect.poll(() => page.getByTestId('hw-output-confirm').count()).toBe(0);
+
+    await page.getByTestId('watch-panel').click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press('F7');
+    const f7 = await expectDialog(page, 'Force');
+    expect(await page.getByTestId('status-bar').textContent()).toMatch(
+      /Motor \(%QX0\.0\): a real output, forced only when you confirm it\./,
+    );
+    await f7.getByTestId('hw-output-cancel').click();
+    await expect.poll(() => page.getByTestId('hw-output-confirm').count()).toBe(0);
+
+    await scansPass(page, 20);
+    expect(await sim.value('Motor')).toBe(false);
+    expect(
+      await page.evaluate(
+        () =>
+          (window.rungsmith!.simStore as { getState(): { forced: Map<string, unknown> } }).getState().forced
+            .size,
+      ),
+    ).toBe(0);
+    for (let i = 0; i < 5; i++) expect((await coils())[0]).toBe(0);
+    expect(errors).toEqual([]);
+  });
+
+  it('without hardware, forcing the Motor coil stays one click: no confirmation', async () => {
+    const { page, errors } = await openApp(browser(), lab.gateway().url);
+    lab.pages.push(page);
+    const sim = new SimPage(page);
+    await sim.runExample('Motor start/stop (seal-in)');
+    const coil = await sim.draw.cellPoint(0, 0, 9);
+    await page.mouse.click(coil.x, coil.y, { button: 'right' });
+    await page.getByTestId('sim-context-menu').getByRole('menuitem', { name: 'Force TRUE' }).click();
+    await sim.waitForValue('Motor', true);
+    expect(await page.getByTestId('hw-output-confirm').count()).toBe(0);
+    // The page drives no hardware: the device's coil stays OFF.
+    expect((await coils())[0]).toBe(0);
+    expect(errors).toEqual([]);
+  });
+});
