@@ -5,8 +5,10 @@
 // against the gateway serving the built app with its simulated device; the device's coil is read
 // independently over Modbus TCP with mbpoll, never from the page.
 import type { Page } from 'playwright-core';
-import { describe, expect, it } from 'vitest';
-import { eventually } from '../gateway/helpers';
+import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
+import { resolveConfig } from '../../src/gateway/config';
+import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
+import { eventually, mbpoll, mbpollValues } from '../gateway/helpers';
 import { openApp, useChromium } from './appPage';
 import { useHardwareGateway } from './hardwareLab';
 import { SimPage } from './simPage';
@@ -152,6 +154,67 @@ describe('forcing a real output asks to confirm', () => {
     expect(await page.getByTestId('hw-output-confirm').count()).toBe(0);
     // The page drives no hardware: the device's coil stays OFF.
     expect((await coils())[0]).toBe(0);
+    expect(errors).toEqual([]);
+  });
+});
+
+describe('--plant: another Modbus master writes an actuator the page drives', () => {
+  let gw: RunningGateway;
+  const pages: Page[] = [];
+  beforeAll(async () => {
+    gw = await startGateway({
+      port: 0,
+      config: resolveConfig({ simulated: { modbusPort: 0, plant: 'tank', masterWatchdogMs: 0 } }),
+      distDir: 'dist',
+    });
+  });
+  afterAll(async () => {
+    await gw?.close();
+  });
+  afterEach(async () => {
+    for (const p of pages.splice(0)) await p.close().catch(() => undefined);
+  });
+  const port = () => gw.simulated!.modbusServerPort!;
+  const pump = async () =>
+    mbpollValues(await mbpoll(port(), ['-t', '0', '-r', '0', '-c', '1', '127.0.0.1']))[0];
+
+  it('the Hardware panel names the point and the master, the write is refused and the Pump is OFF on the machine', async () => {
+    const { page, errors } = await openApp(browser(), gw.url);
+    pages.push(page);
+    const sim = new SimPage(page);
+    await sim.openExample('Motor start/stop (seal-in)'); // Motor at %QX0.0: the tank's Pump
+    await page.getByTestId('tab-hardware').click();
+    const panel = page.getByTestId('hardware-panel');
+    await panel.getByTestId('hw-connect').click();
+    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await expect.poll(() => gw.hub.status().armed).toBe(true);
+    const coil = await sim.draw.cellPoint(0, 0, 9);
+    await page.mouse.click(coil.x, coil.y, { button: 'right' });
+    await page.getByTestId('sim-context-menu').getByRole('menuitem', { name: 'Force TRUE' }).click();
+    await page.getByTestId('hw-output-ok').click();
+    await eventually(async () => (await pump()) === 1, 10_000, 'the page drives the Pump ON');
+
+    // mbpoll as the other master switches the Pump off: refused (exception 06), mbpoll says so.
+    const refused = await mbpoll(port(), ['-t', '0', '-r', '0', '127.0.0.1', '0']).then(
+      () => 'written',
+      (e: Error) => e.message,
+    );
+    expect(refused).toMatch(/busy/i);
+    const text =
+      /^another Modbus master \(127\.0\.0\.1:\d+\) wrote the machine "tank"'s Pump \(%QX0\.0\) OFF while this gateway's controller drives it \(ON\); the write was refused/;
+    await expect
+      .poll(() => panel.getByTestId('hw-disarm').textContent(), { timeout: 10_000 })
+      .toMatch(
+        /another Modbus master \(127\.0\.0\.1:\d+\) wrote the machine "tank"'s Pump \(%QX0\.0\) OFF .*: disarmed/,
+      );
+    const row =
+      (await panel.getByTestId('hw-device-sim').getByTestId('hw-device-outputs').textContent()) ?? '';
+    expect(row.replace(/^not written by this gateway: /, '')).toMatch(text);
+    // The safe image is on the machine (read independently), while the program still forces Motor.
+    expect(await pump()).toBe(0);
+    expect(await sim.value('Motor')).toBe(true);
     expect(errors).toEqual([]);
   });
 });
