@@ -34,7 +34,7 @@ export function HardwareSimLink() {
     // Forces made before this page drove the hardware (in simulation, as observer, or in an earlier
     // link) were never confirmed for it: carried onto the device, a forced input or output would
     // drive real outputs at the next Run or Arm without a word. They end as the hardware attaches,
-    // and the notice says which; a force on the hardware is made again (inputs with its confirmation).
+    // and the notice says which; a force on the hardware is made again, with its confirmation.
     const attached = link === 'open' && role === 'controller';
     if (link === 'idle') lostLink.current = false; // disconnected on purpose
     else if (wasAttached.current && !attached) lostLink.current = true;
@@ -57,8 +57,8 @@ export function HardwareSimLink() {
     if (ended.length > 0)
       sim.setState({
         notice: afterLoss
-          ? `Unforced ${ended.join(', ')}: the link to the gateway was lost and is open again; a force on the hardware ends with its link (the gateway held the outputs in the safe state meanwhile). Force again on the hardware if you mean it (a field input asks to confirm).`
-          : `Unforced ${ended.join(', ')}: forces made before the hardware was attached are not carried onto it. Force again on the hardware if you mean it (a field input asks to confirm).`,
+          ? `Unforced ${ended.join(', ')}: the link to the gateway was lost and is open again; a force on the hardware ends with its link (the gateway held the outputs in the safe state meanwhile). Force again on the hardware if you mean it (it asks to confirm).`
+          : `Unforced ${ended.join(', ')}: forces made before the hardware was attached are not carried onto it. Force again on the hardware if you mean it (it asks to confirm).`,
       });
   }, [link, role, points, sim]);
 
