@@ -8,7 +8,8 @@ import type { Page } from 'playwright-core';
 import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
 import { resolveConfig } from '../../src/gateway/config';
 import { startGateway, type RunningGateway } from '../../src/gateway/gateway';
-import { eventually, mbpoll, mbpollValues } from '../gateway/helpers';
+import { freeLoopbackPort } from '../../src/gateway/modbusLib';
+import { eventually, mbpoll, mbpollValues, PyModbusServer } from '../gateway/helpers';
 import { openApp, useChromium } from './appPage';
 import { useHardwareGateway } from './hardwareLab';
 import { SimPage } from './simPage';
@@ -215,6 +216,81 @@ describe('--plant: another Modbus master writes an actuator the page drives', ()
     // The safe image is on the machine (read independently), while the program still forces Motor.
     expect(await pump()).toBe(0);
     expect(await sim.value('Motor')).toBe(true);
+    expect(errors).toEqual([]);
+  });
+});
+
+describe('forcing a real output of a Modbus TCP device (pymodbus) asks to confirm', () => {
+  let plant: PyModbusServer;
+  let gw: RunningGateway;
+  const pages: Page[] = [];
+  beforeAll(async () => {
+    const modbusPort = await freeLoopbackPort();
+    plant = await PyModbusServer.start(modbusPort);
+    const config = resolveConfig({
+      devices: [
+        {
+          id: 'plant',
+          host: '127.0.0.1',
+          port: modbusPort,
+          pollMs: 50,
+          timeoutMs: 1000,
+          points: [
+            { address: '%IX0.0', count: 8 },
+            { address: '%QX0.0', count: 8 },
+          ],
+        },
+      ],
+    });
+    gw = await startGateway({ port: 0, config, distDir: 'dist' });
+  });
+  afterAll(async () => {
+    for (const p of pages.splice(0)) await p.close().catch(() => undefined);
+    await gw?.close();
+    await plant?.kill();
+  });
+
+  it('the dialog names device "plant" and its address; Cancel leaves the coil OFF on the device, Confirm drives it ON', async () => {
+    const { page, errors } = await openApp(browser(), gw.url);
+    pages.push(page);
+    const sim = new SimPage(page);
+    await sim.openExample('Motor start/stop (seal-in)');
+    await page.getByTestId('tab-hardware').click();
+    const panel = page.getByTestId('hardware-panel');
+    await panel.getByTestId('hw-connect').click();
+    await expect.poll(() => panel.getByTestId('hw-link').textContent()).toBe('Connected as controller');
+    await sim.button('run').click();
+    await sim.waitForMode('Running');
+    await expect.poll(() => gw.hub.status().armed).toBe(true);
+    const coil = await sim.draw.cellPoint(0, 0, 9);
+    const forceTrue = async () => {
+      await page.mouse.click(coil.x, coil.y, { button: 'right' });
+      await page.getByTestId('sim-context-menu').getByRole('menuitem', { name: 'Force TRUE' }).click();
+    };
+    await forceTrue();
+    const dialog = page.getByTestId('hw-output-confirm');
+    await expect.poll(() => dialog.count()).toBe(1);
+    expect(await dialog.textContent()).toMatch(
+      /Motor is output %QX0\.0 of device "plant" \(127\.0\.0\.1:\d+ unit \d+\)\./,
+    );
+    await dialog.getByTestId('hw-output-cancel').click();
+    await scansPass(page, 20);
+    expect(await plant.get('co', 0, 1)).toEqual([0]);
+
+    await forceTrue();
+    await dialog.getByTestId('hw-output-ok').click();
+    await eventually(
+      async () => (await plant.get('co', 0, 1))[0] === 1,
+      10_000,
+      'Motor ON on the pymodbus device after Confirm',
+    );
+    // Stop the program: the gateway writes the safe state; the forced motor is OFF on the device.
+    await sim.button('pause').click();
+    await eventually(
+      async () => (await plant.get('co', 0, 1))[0] === 0,
+      10_000,
+      'Motor OFF on the device after Pause',
+    );
     expect(errors).toEqual([]);
   });
 });
