@@ -291,6 +291,15 @@ describe('forcing a real output of a Modbus TCP device (pymodbus) asks to confir
       10_000,
       'Motor OFF on the device after Pause',
     );
+    // Paused, a force still asks, and says when it would reach the device.
+    await page.mouse.click(coil.x, coil.y, { button: 'right' });
+    await page.getByTestId('sim-context-menu').getByRole('menuitem', { name: 'Force FALSE' }).click();
+    expect(await dialog.getByTestId('hw-output-confirm-when').textContent()).toBe(
+      'The outputs are held in the safe state now: the device gets it as soon as the program drives them (Run, or Arm).',
+    );
+    await dialog.getByTestId('hw-output-cancel').click();
+    await expect.poll(() => dialog.count()).toBe(0);
+    expect(await plant.get('co', 0, 1)).toEqual([0]);
     expect(errors).toEqual([]);
   });
 });

@@ -7,6 +7,7 @@ import { useSim } from '../sim/simContext';
 import { useModal } from '../layout/useModal';
 import { answerOutputConfirm, outputConfirm, type OutputConfirmRequest } from './outputForce';
 import { useGateway } from './useGateway';
+import { useSteppingView } from './useHardwareStepping';
 import './hardware.css';
 
 export function OutputForceConfirm() {
@@ -22,6 +23,7 @@ function OutputForceBox({ request }: { readonly request: OutputConfirmRequest })
   const modal = useModal(() => answerOutputConfirm(false));
   const running = useSim(selectRunning);
   const armed = useGateway().status?.armed !== false;
+  const stepping = useSteppingView().phase === 'stepping';
   const { kind, name, address, device, value } = request;
   const verb = kind === 'force' ? 'Force' : 'Write';
   return (
@@ -52,9 +54,11 @@ function OutputForceBox({ request }: { readonly request: OutputConfirmRequest })
             Forcing or writing a real output can cause injury or damage. Make sure the machine is safe for it.
           </p>
           <p data-testid="hw-output-confirm-when">
-            {running && armed
-              ? 'The program drives the outputs: the device gets it at the next scan.'
-              : 'The outputs are held in the safe state now: the device gets it as soon as the program drives them (Run, or Arm).'}
+            {stepping
+              ? 'Stepping drives the outputs: the device gets it at the next step.'
+              : running && armed
+                ? 'The program drives the outputs: the device gets it at the next scan.'
+                : 'The outputs are held in the safe state now: the device gets it as soon as the program drives them (Run, or Arm).'}
           </p>
         </div>
         <div className="rs-hw-dialog-buttons">
