@@ -4,6 +4,7 @@
 // address, the device and the value; Cancel has the focus and sends nothing. In a real Chromium
 // against the gateway serving the built app with its simulated device; the device's coil is read
 // independently over Modbus TCP with mbpoll, never from the page.
+import { spawn } from 'node:child_process';
 import type { Page } from 'playwright-core';
 import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
 import { resolveConfig } from '../../src/gateway/config';
@@ -179,7 +180,7 @@ describe('--plant: another Modbus master writes an actuator the page drives', ()
   const pump = async () =>
     mbpollValues(await mbpoll(port(), ['-t', '0', '-r', '0', '-c', '1', '127.0.0.1']))[0];
 
-  it('the Hardware panel names the point and the master, the write is refused and the Pump is OFF on the machine', async () => {
+  it('the Hardware panel names the point and the master, the write is refused and the Pump is OFF on the machine; a PLC writing it cyclically then has it, and Arm is refused while it does', async () => {
     const { page, errors } = await openApp(browser(), gw.url);
     pages.push(page);
     const sim = new SimPage(page);
@@ -216,6 +217,27 @@ describe('--plant: another Modbus master writes an actuator the page drives', ()
     // The safe image is on the machine (read independently), while the program still forces Motor.
     expect(await pump()).toBe(0);
     expect(await sim.value('Motor')).toBe(true);
+
+    // A PLC keeps writing the Pump every 100 ms: the machine is its now, and Arm is refused while it does.
+    const plc = spawn('/usr/bin/python3', [
+      '-c',
+      'import sys, time\nfrom pymodbus.client import ModbusTcpClient\nc = ModbusTcpClient("127.0.0.1", port=int(sys.argv[1]))\nassert c.connect()\nwhile True:\n    c.write_coil(0, True)\n    time.sleep(0.1)',
+      String(port()),
+    ]);
+    try {
+      await eventually(async () => (await pump()) === 1, 10_000, 'the PLC drives the Pump');
+      await panel.getByTestId('hw-arm').click();
+      await expect
+        .poll(() => panel.getByTestId('hw-last-error').textContent(), { timeout: 10_000 })
+        .toMatch(
+          /^Arm refused: another Modbus master \(127\.0\.0\.1:\d+\) is writing the machine "tank"'s actuators \(Pump \(%QX0\.0\) \d+\.\d s ago\): stop it, then arm/,
+        );
+      expect(gw.hub.status().armed).toBe(false);
+    } finally {
+      plc.kill();
+    }
+    // The PLC gone, what it wrote falls OFF (its connection closed).
+    await eventually(async () => (await pump()) === 0, 10_000, 'the Pump OFF after the PLC went');
     expect(errors).toEqual([]);
   });
 });
