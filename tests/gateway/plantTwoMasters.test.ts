@@ -31,7 +31,12 @@ function python(lines: readonly string[], port: number): Promise<{ code: number 
     let out = '';
     p.stdout.on('data', (d: Buffer) => (out += d.toString()));
     p.stderr.on('data', (d: Buffer) => (out += d.toString()));
-    p.on('close', (code) => resolve({ code, out }));
+    // Never left hanging: a script that does not end within 20 s is killed (and its output says so).
+    const timer = setTimeout(() => p.kill(), 20_000);
+    p.on('close', (code) => {
+      clearTimeout(timer);
+      resolve({ code, out });
+    });
   });
 }
 
@@ -39,7 +44,9 @@ describe('--plant: the page and another Modbus master on the machine', () => {
   let gw: RunningGateway | undefined;
   const clients: TestClient[] = [];
   const sockets: Socket[] = [];
+  const feeders: NodeJS.Timeout[] = [];
   afterEach(async () => {
+    feeders.splice(0).forEach((t) => clearInterval(t));
     clients.splice(0).forEach((c) => c.close());
     sockets.splice(0).forEach((s) => s.destroy());
     await gw?.close();
@@ -55,12 +62,20 @@ describe('--plant: the page and another Modbus master on the machine', () => {
   const pump = async (port: number) =>
     mbpollValues(await mbpoll(port, ['-t', '0', '-r', '0', '-c', '1', '127.0.0.1']))[0];
 
+  /** The page drives the Pump ON, as it does every scan (the gateway's lease watchdog is fed). */
+  function drivePump(c: TestClient): void {
+    feeders.splice(0).forEach((t) => clearInterval(t));
+    let seq = 0;
+    const send = () => c.send({ t: 'outputs', seq: ++seq, values: { '%QX0.0': true } });
+    send();
+    feeders.push(setInterval(send, 100));
+  }
   it('a master writing the Pump while the page drives it: refused, the gateway disarms naming Pump (%QX0.0) and the master, the pump is OFF; the master may then drive it alone, and arm waits until it stops', async () => {
     const log: string[] = [];
     const { gw, port } = await tankGateway(log);
     const c = await TestClient.armedController(gw.port, gw.token);
     clients.push(c);
-    c.send({ t: 'outputs', seq: 1, values: { '%QX0.0': true } });
+    drivePump(c);
     await eventually(async () => (await pump(port)) === 1, 10_000, 'the page drives the Pump ON');
 
     const from = c.messages.length;
@@ -100,30 +115,48 @@ describe('--plant: the page and another Modbus master on the machine', () => {
       'the Pump OFF after the master disconnected',
     );
 
-    // It wrote moments ago: arming would fight it (a PLC writes every cycle).
-    const before = c.messages.length;
-    c.send({ t: 'arm' });
-    const refused = await c.waitFor((m) => m.t === 'error' && m.code === 'arm-refused', 5000, before);
-    expect(refused.t === 'error' && refused.message).toMatch(
-      new RegExp(
-        `^another Modbus master \\(127\\.0\\.0\\.1:${peer}\\) is writing the machine "tank"'s actuators \\(Pump \\(%QX0\\.0\\) \\d+\\.\\d s ago\\): stop it, then arm; outputs stay in the safe state$`,
-      ),
-    );
-    expect(await pump(port)).toBe(0);
+    // A PLC writing the Pump every cycle has the machine now: arming would fight it, and is refused.
+    const plc = spawn('/usr/bin/python3', [
+      '-c',
+      'import sys, time\nfrom pymodbus.client import ModbusTcpClient\nc = ModbusTcpClient("127.0.0.1", port=int(sys.argv[1]))\nassert c.connect()\nprint("peer", c.socket.getsockname()[1], flush=True)\nwhile True:\n    c.write_coil(0, True)\n    time.sleep(0.1)',
+      String(port),
+    ]);
+    try {
+      let plcOut = '';
+      plc.stdout.on('data', (d: Buffer) => (plcOut += d.toString()));
+      await eventually(
+        async () => /^peer \d+$/m.test(plcOut) && (await pump(port)) === 1,
+        10_000,
+        'the PLC drives the Pump',
+      );
+      const plcPeer = /^peer (\d+)$/m.exec(plcOut)![1];
+      const before = c.messages.length;
+      c.send({ t: 'arm' });
+      const refused = await c.waitFor((m) => m.t === 'error' && m.code === 'arm-refused', 5000, before);
+      expect(refused.t === 'error' && refused.message).toMatch(
+        new RegExp(
+          `^another Modbus master \\(127\\.0\\.0\\.1:${plcPeer}\\) is writing the machine "tank"'s actuators \\(Pump \\(%QX0\\.0\\) \\d+\\.\\d s ago\\): stop it, then arm; outputs stay in the safe state$`,
+        ),
+      );
+      expect(gw.hub.status().armed).toBe(false);
+    } finally {
+      plc.kill();
+    }
+    await eventually(async () => (await pump(port)) === 0, 10_000, 'the Pump OFF after the PLC went');
 
     // Quiet for long enough: the operator arms, the page drives the machine again, the conflict is gone.
     await new Promise((r) => setTimeout(r, PLANT_MASTER_QUIET_MS));
     await c.arm();
-    c.send({ t: 'outputs', seq: 2, values: { '%QX0.0': true } });
+    drivePump(c);
     await eventually(async () => (await pump(port)) === 1, 10_000, 'the page drives the Pump again');
     await eventually(() => c.lastStatus()?.devices[0]?.conflict === null, 5000, 'the conflict cleared');
-  }, 60_000);
+  }, 120_000);
 
   it('a multiple-coil write (FC15) over the Pump the page drives is refused whole: the InletValve in it is not written either', async () => {
     const { gw, port } = await tankGateway();
     const c = await TestClient.armedController(gw.port, gw.token);
     clients.push(c);
-    c.send({ t: 'outputs', seq: 1, values: { '%QX0.0': true } });
+    drivePump(c);
     await eventually(async () => (await pump(port)) === 1, 10_000, 'the page drives the Pump ON');
     const run = await python(
       [
@@ -137,7 +170,7 @@ describe('--plant: the page and another Modbus master on the machine', () => {
     expect(mbpollValues(await mbpoll(port, ['-t', '0', '-r', '0', '-c', '3', '127.0.0.1']))).toEqual([
       0, 0, 0,
     ]);
-  }, 30_000);
+  }, 90_000);
 
   it('a page connected as controller but not driving (disarmed) leaves the machine to the Modbus master: its writes are taken, no conflict', async () => {
     const { gw, port } = await tankGateway();
@@ -152,7 +185,7 @@ describe('--plant: the page and another Modbus master on the machine', () => {
     expect(await pump(port)).toBe(1);
     expect(gw.hub.status().disarm?.cause).not.toBe('other-master');
     expect(gw.simulated!.conflict()).toBeNull();
-  }, 30_000);
+  }, 90_000);
 
   it("what a master wrote before the page armed is not dropped over the page's outputs when that master's connection closes", async () => {
     const log: string[] = [];
@@ -166,7 +199,7 @@ describe('--plant: the page and another Modbus master on the machine', () => {
     await new Promise((r) => setTimeout(r, PLANT_MASTER_QUIET_MS));
     const c = await TestClient.armedController(gw.port, gw.token);
     clients.push(c);
-    c.send({ t: 'outputs', seq: 1, values: { '%QX0.0': true } });
+    drivePump(c);
     await eventually(async () => (await pump(port)) === 1, 10_000, 'the page drives the Pump');
     hmi.destroy(); // the last Modbus client goes (mbpoll's own connections close too)
     for (let i = 0; i < 10; i++) {
@@ -175,5 +208,5 @@ describe('--plant: the page and another Modbus master on the machine', () => {
     }
     expect(log.filter((l) => l.includes('the outputs it wrote are OFF'))).toEqual([]);
     expect(gw.hub.status().armed).toBe(true);
-  }, 30_000);
+  }, 90_000);
 });
