@@ -39,6 +39,13 @@ const ILLEGAL_ADDRESS = { modbusErrorCode: 0x02, msg: 'Illegal data address' };
 const ILLEGAL_FUNCTION = { modbusErrorCode: 0x01, msg: 'Outputs belong to the controller' };
 /** `--plant`: the machine's sensors drive their inputs, as wires do; a Modbus write to one is refused. */
 const MACHINE_SENSOR = { modbusErrorCode: 0x01, msg: "Sensors belong to the machine" };
+/** `--plant`: a Modbus write to an actuator the gateway's controller drives is refused (two masters). */
+const CONTROLLER_DRIVES = { modbusErrorCode: 0x06, msg: "The gateway's controller drives the machine's actuators" };
+/**
+ * `--plant`: after a Modbus master last wrote the machine's actuators, `arm` waits this long (it is
+ * probably a PLC still writing them every cycle), as for another master on a real device.
+ */
+export const PLANT_MASTER_QUIET_MS = 3000;
 
 /**
  * `--plant`: the first of a machine's points the simulated device has no place for (its default
@@ -83,6 +90,19 @@ export class SimulatedDevice implements Device {
   private masterWatchdog: ReturnType<typeof setTimeout> | undefined;
   /** `--plant`: the machine's push buttons (momentary) held pressed over Modbus (coil 800 + n), by address. */
   private readonly buttonsHeld = new Set<string>();
+  /**
+   * `--plant`: two masters. The peer (`127.0.0.1:40312`) whose Modbus request is being served: set
+   * by a timer queued before modbus-serial's own for each request it parses (see startModbusServer).
+   */
+  private peer: string | undefined;
+  /** Counts the requests (the socket reads) served, to refuse a multiple write whole (below). */
+  private requestSeq = 0;
+  /** The request whose actuator write was refused: its other coils/registers are refused too. */
+  private refusedSeq = -1;
+  /** `--plant`: the last Modbus write to the machine's actuators, by whom, of what. */
+  private lastMasterWrite: { peer: string; address: string; value: WireValue; at: number } | undefined;
+  /** `--plant`: a Modbus master wrote an actuator while the gateway's controller drove them; cleared by the next drive. */
+  private conflictText: string | null = null;
 
   /**
    * @param modbusPort loopback port of the Modbus server (0: any free port; null: no server).
@@ -171,13 +191,67 @@ export class SimulatedDevice implements Device {
     return this.mode === 'drive' ? 'driven' : 'safe';
   }
 
+  /** `--plant`: what the other master did, while the gateway's controller is kept off the actuators for it. */
+  conflict(): string | null {
+    return this.mode === 'drive' ? null : this.conflictText;
+  }
+
+  /**
+   * `--plant`: a Modbus master (a PLC under test, a script) wrote the machine's actuators moments ago:
+   * it is driving the machine, and the controller arming would fight it. Null when arming is allowed.
+   */
+  armBlocker(): string | null {
+    const w = this.lastMasterWrite;
+    if (!this.plant || !w) return null;
+    const ago = Date.now() - w.at;
+    if (ago >= PLANT_MASTER_QUIET_MS) return null;
+    return `another Modbus master (${w.peer}) is writing the machine "${this.plant.model.id}"'s actuators (${this.pointWords(w.address)} ${(ago / 1000).toFixed(1)} s ago): stop it, then arm`;
+  }
+
   drive(values: Values): void {
     if (this.final) return;
     if (this.mode !== 'drive') {
       this.mode = 'drive';
+      this.conflictText = null;
+      // The controller drives the machine now: what a Modbus master wrote before is not its to drop
+      // (its watchdog or its disconnect must not switch the controller's outputs off).
+      this.masterWritten.clear();
+      clearTimeout(this.masterWatchdog);
+      this.masterWatchdog = undefined;
       this.listener?.status();
     }
     this.writeOutputs(values);
+  }
+
+  /** `Pump (%QX0.0)`: the machine's name of a point, with its address. */
+  private pointWords(address: string): string {
+    const name = this.plant?.points.find((p) => addressKey(p.address) === addressKey(address))?.name;
+    return name ? `${name} (${address})` : address;
+  }
+
+  /**
+   * `--plant`: a Modbus master writes one of the machine's actuators. While the gateway's controller
+   * (the page) drives them, that is two masters on one machine: the write is refused (exception 06,
+   * busy), and the hub is told, as for another master on a real device: it disarms, the safe image
+   * is written, and the page says which point and which master. Otherwise it is the master's output.
+   */
+  private actuatorWrite(address: string, value: WireValue): void {
+    const peer = this.peer ?? 'a Modbus client';
+    const drove = this.values.get(address);
+    this.lastMasterWrite = { peer, address, value, at: Date.now() };
+    // modbus-serial serves a multiple write (FC15/FC16) one coil at a time: once its first one was
+    // refused (and the gateway disarmed), the rest of it must not land half-written.
+    if (this.refusedSeq === this.requestSeq) throw CONTROLLER_DRIVES;
+    if (this.mode !== 'drive') {
+      this.masterWrote(address, value);
+      return;
+    }
+    const show = (v: WireValue | undefined) => (typeof v === 'boolean' ? (v ? 'ON' : 'OFF') : String(v));
+    this.conflictText = `another Modbus master (${peer}) wrote the machine "${this.plant!.model.id}"'s ${this.pointWords(address)} ${show(value)} while this gateway's controller drives it (${show(drove)}); the write was refused`;
+    this.refusedSeq = this.requestSeq;
+    this.log(`machine "${this.plant!.model.id}": ${this.conflictText}`);
+    this.listener?.otherMaster?.(this.conflictText);
+    throw CONTROLLER_DRIVES;
   }
 
   /** In-process: the safe image is on the device as soon as it is asked for. */
@@ -334,7 +408,7 @@ export class SimulatedDevice implements Device {
         // Virtual commissioning: the Modbus master is the PLC and drives the machine's actuators.
         const actuator = this.plant && addr < SIM_INPUT_COIL_BASE ? this.byTable.get(`coils:${addr}`) : undefined;
         if (actuator) {
-          this.masterWrote(actuator.address, value);
+          this.actuatorWrite(actuator.address, value);
           return;
         }
         if (addr < SIM_INPUT_COIL_BASE) throw this.byTable.has(`coils:${addr}`) ? ILLEGAL_FUNCTION : ILLEGAL_ADDRESS;
@@ -344,7 +418,7 @@ export class SimulatedDevice implements Device {
         // A machine's INT actuators (%QW) are the master's too, as its coils are.
         const actuator = this.plant && addr < SIM_INPUT_REGISTER_BASE ? this.byTable.get(`holdingRegisters:${addr}`) : undefined;
         if (actuator) {
-          this.masterWrote(actuator.address, value & 0xffff);
+          this.actuatorWrite(actuator.address, value & 0xffff);
           return;
         }
         if (addr < SIM_INPUT_REGISTER_BASE) throw this.byTable.has(`holdingRegisters:${addr}`) ? ILLEGAL_FUNCTION : ILLEGAL_ADDRESS;
@@ -358,7 +432,19 @@ export class SimulatedDevice implements Device {
       const fail = (err: Error) => reject(new Error(`simulated device: cannot listen on 127.0.0.1:${port} for Modbus TCP (${err.message})`));
       inner.once('error', fail);
       // modbus-serial forgets a socket (server.socks) in its own close listener, registered before this one.
-      inner.on('connection', (sock: Socket) => sock.once('close', () => this.masterGone(server)));
+      inner.on('connection', (sock: Socket) => {
+        sock.once('close', () => this.masterGone(server));
+        // Which master sent the request being served: modbus-serial parses each request on a timer
+        // queued in its 'data' listener; this one runs first and queues the peer's name before it
+        // (timers of one delay run in the order queued), so the name is set when the request is.
+        const peer = `${sock.remoteAddress ?? '?'}:${sock.remotePort ?? '?'}`;
+        sock.prependListener('data', () => {
+          setTimeout(() => {
+            this.peer = peer;
+            this.requestSeq++;
+          }, 0);
+        });
+      });
       inner.once('listening', () => {
         inner.off('error', fail);
         this.port = (inner.address() as AddressInfo).port;

@@ -14,6 +14,14 @@ import type { TrendBuffer } from '../sim/trendBuffer';
 import type { PlantFrame } from '../sim/sessionPlant';
 import type { PlantSnapshot } from '../plant/loop';
 
+/** A write or force of a variable, before it is sent to the simulator. */
+export interface SimValueAction {
+  readonly kind: 'write' | 'force';
+  readonly name: string;
+  readonly input: SimValueInput;
+}
+export type SimValueGuard = (action: SimValueAction, send: () => void) => boolean;
+
 export interface CompileRefusal {
   readonly diagnostics: readonly Diagnostic[];
   /** True when an edit made while running did not compile (the last good program keeps running). */
@@ -147,8 +155,15 @@ export interface SimState {
   /** Sets or clears a breakpoint on a line of an ST/IL POU (`instance`: only in that instance). */
   toggleLineBreakpoint(pou: string, line: number, instance?: string): void;
   clearBreakpoints(): void;
+  /** Writes once; a write the guard holds (setValueGuard) is sent only when the guard says so. */
   write(name: string, input: SimValueInput): void;
+  /** Forces; a force the guard holds (setValueGuard) is sent only when the guard says so. */
   force(name: string, input: SimValueInput): void;
+  /**
+   * Every write and force passes the guard first: it returns true when it holds the action (a field
+   * output of attached hardware asks to confirm) and calls `send` itself if and when it goes ahead.
+   */
+  setValueGuard(guard: SimValueGuard | undefined): void;
   unforce(name: string): void;
   unforceAll(): void;
   /** Flips a BOOL input (a switch). */

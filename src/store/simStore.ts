@@ -18,7 +18,7 @@ import type { ScenarioResult } from '../sim/scenario';
 import { appendTrend, emptyTrend } from '../sim/trendBuffer';
 import { DEFAULT_HISTORY_SCANS } from '../sim/history';
 import { scopeFor, viewKey, type CanvasScope } from '../sim/scope';
-import type { SimState, SimStore } from './simState';
+import type { SimState, SimStore, SimValueGuard } from './simState';
 
 export const DEFAULT_CYCLE_MS = 10;
 export const DEFAULT_TREND_SCANS = 500;
@@ -151,6 +151,8 @@ export function createSimStore(transport: SimTransport): SimStore {
     send({ type: 'setTrend', names: trendNames, capacity: trendCapacity, ...(trendTrigger ? { trigger: trendTrigger } : {}) });
   };
 
+  /** Holds writes and forces that must be confirmed first (a field output of attached hardware). */
+  let valueGuard: SimValueGuard | undefined;
   const store: SimStore = createStore<SimState>()((set, get) => {
     const currentValue = (name: string): Value | undefined => {
       const i = get().variableIndex.get(name.toUpperCase());
@@ -304,8 +306,17 @@ export function createSimStore(transport: SimTransport): SimStore {
         set({ breakpoints: [], lineBreakpoints: [] });
         sendBreakpoints();
       },
-      write: (name, input) => send({ type: 'write', name, input }),
-      force: (name, input) => send({ type: 'force', name, input }),
+      write: (name, input) => {
+        const go = () => send({ type: 'write', name, input });
+        if (!valueGuard?.({ kind: 'write', name, input }, go)) go();
+      },
+      force: (name, input) => {
+        const go = () => send({ type: 'force', name, input });
+        if (!valueGuard?.({ kind: 'force', name, input }, go)) go();
+      },
+      setValueGuard: (guard) => {
+        valueGuard = guard;
+      },
       unforce: (name) => send({ type: 'unforce', name }),
       unforceAll: () => send({ type: 'unforceAll' }),
       toggleInput: (name) => send({ type: 'write', name, input: { value: currentValue(name) !== true } }),

@@ -206,6 +206,7 @@ describe('live I/O round 2: a real device (pymodbus) behind a gateway that stops
     const row = page.getByTestId('watch-row-Motor');
     await row.getByTestId('watch-input').fill('TRUE');
     await row.getByTestId('watch-force').click();
+    await page.getByTestId('hw-output-ok').click(); // a real output: forced after its confirmation (hardwareForce.e2e.test.ts)
     await eventually(async () => (await deviceCoils())[0] === 1, 10_000, 'the forced motor ON on the device');
 
     await gw!.close(); // its shutdown writes the safe state last

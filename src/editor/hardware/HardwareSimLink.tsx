@@ -9,6 +9,8 @@ import type { SimState } from '../../store/simState';
 import { selectProject, useDocument } from '../../store/documentStore';
 import { useSim, useSimStore } from '../sim/simContext';
 import { SteppingConfirmDialog } from './HardwareStepping';
+import { OutputForceConfirm } from './OutputForceConfirm';
+import { guardFieldOutputs } from './outputForce';
 import { hardwareStepping, useSteppingView } from './useHardwareStepping';
 import { useGateway } from './useGateway';
 
@@ -25,11 +27,14 @@ export function HardwareSimLink() {
   /** The controller link was lost (not disconnected by the user) and has not opened again yet. */
   const lostLink = useRef(false);
 
+  // A write or force of a field output asks to confirm while this page drives the hardware.
+  useEffect(() => guardFieldOutputs(sim), [sim]);
+
   useEffect(() => {
     // Forces made before this page drove the hardware (in simulation, as observer, or in an earlier
     // link) were never confirmed for it: carried onto the device, a forced input or output would
     // drive real outputs at the next Run or Arm without a word. They end as the hardware attaches,
-    // and the notice says which; a force on the hardware is made again (inputs with its confirmation).
+    // and the notice says which; a force on the hardware is made again, with its confirmation.
     const attached = link === 'open' && role === 'controller';
     if (link === 'idle') lostLink.current = false; // disconnected on purpose
     else if (wasAttached.current && !attached) lostLink.current = true;
@@ -52,8 +57,8 @@ export function HardwareSimLink() {
     if (ended.length > 0)
       sim.setState({
         notice: afterLoss
-          ? `Unforced ${ended.join(', ')}: the link to the gateway was lost and is open again; a force on the hardware ends with its link (the gateway held the outputs in the safe state meanwhile). Force again on the hardware if you mean it (a field input asks to confirm).`
-          : `Unforced ${ended.join(', ')}: forces made before the hardware was attached are not carried onto it. Force again on the hardware if you mean it (a field input asks to confirm).`,
+          ? `Unforced ${ended.join(', ')}: the link to the gateway was lost and is open again; a force on the hardware ends with its link (the gateway held the outputs in the safe state meanwhile). Force again on the hardware if you mean it (it asks to confirm).`
+          : `Unforced ${ended.join(', ')}: forces made before the hardware was attached are not carried onto it. Force again on the hardware if you mean it (it asks to confirm).`,
       });
   }, [link, role, points, sim]);
 
@@ -84,5 +89,10 @@ export function HardwareSimLink() {
     return undefined;
   }, [mode, link, role, points, project, sim, stepping]);
 
-  return <SteppingConfirmDialog />;
+  return (
+    <>
+      <SteppingConfirmDialog />
+      <OutputForceConfirm />
+    </>
+  );
 }

@@ -50,3 +50,13 @@ export function deviceInputDiff(variable: SimVariable | undefined, programValue:
 }
 
 export const deviceText = (v: WireValue): string => (typeof v === 'boolean' ? (v ? 'TRUE' : 'FALSE') : String(v));
+
+/**
+ * The gateway output point a program variable writes, when hardware is attached as controller: a
+ * write or force of it drives a real output, so it asks to confirm first (outputForce.ts).
+ */
+export function fieldOutputAddress(variable: SimVariable | undefined, view: GatewayView = gatewayLink.snapshot()): string | undefined {
+  if (!variable?.location || !hardwareAttached(view)) return undefined;
+  const address = canonicalAddress(variable.location);
+  return address && view.points.some((p) => p.address === address && p.dir === 'out') ? address : undefined;
+}

@@ -6,7 +6,7 @@ import { createStore } from 'zustand/vanilla';
 import { parseValueText } from '../../engine/values/literals';
 import { isElementaryType } from '../../model/iecTypes';
 import { typeOfName } from '../../sim/carryOver';
-import { fieldInputAddress } from '../hardware/fieldIo';
+import { fieldInputAddress, fieldOutputAddress } from '../hardware/fieldIo';
 import type { SimValueInput } from '../../sim/protocol';
 import type { SimStore } from '../../store/simState';
 
@@ -57,9 +57,17 @@ function fieldOf(sim: SimStore, v: PreparedValue): string | undefined {
   return fieldInputAddress(s.layout?.variables[s.variableIndex.get(v.name.toUpperCase()) ?? -1]) ?? v.field;
 }
 
+/** A field output of attached hardware: its write or force waits for the confirmation (outputForce.ts). */
+function outputOf(sim: SimStore, v: PreparedValue): string | undefined {
+  const s = sim.getState();
+  return fieldOutputAddress(s.layout?.variables[s.variableIndex.get(v.name.toUpperCase()) ?? -1]);
+}
+
 /** What writing or forcing the prepared values did, as the status line says it. */
 export interface PreparedOutcome {
   readonly done: readonly string[];
+  /** Field outputs of attached hardware sent for confirmation ("Motor (%QX0.0)"). */
+  readonly asked?: readonly string[];
   /** Names left prepared, with why. */
   readonly kept: readonly { readonly name: string; readonly why: string }[];
 }
@@ -80,6 +88,7 @@ function refusal(sim: SimStore, v: PreparedValue): string | undefined {
 /** Ctrl+F7: writes every prepared value once (an input: at the next input read) and clears them. */
 export function writePrepared(sim: SimStore): PreparedOutcome {
   const done: string[] = [];
+  const asked: string[] = [];
   const kept: { name: string; why: string }[] = [];
   for (const v of preparedValues.getState().values.values()) {
     const field = fieldOf(sim, v);
@@ -92,16 +101,19 @@ export function writePrepared(sim: SimStore): PreparedOutcome {
       kept.push({ name: v.name, why });
       continue;
     }
+    const output = outputOf(sim, v);
     sim.getState().write(v.name, v.input);
     preparedValues.getState().discard(v.name);
-    done.push(v.name);
+    if (output) asked.push(`${v.name} (${output})`);
+    else done.push(v.name);
   }
-  return { done, kept };
+  return { done, kept, asked };
 }
 
 /** F7: forces every prepared value (it keeps the value whatever the program does) and clears them. */
 export function forcePrepared(sim: SimStore): PreparedOutcome {
   const done: string[] = [];
+  const asked: string[] = [];
   const kept: { name: string; why: string }[] = [];
   for (const v of preparedValues.getState().values.values()) {
     if (v.pin) {
@@ -118,18 +130,22 @@ export function forcePrepared(sim: SimStore): PreparedOutcome {
       kept.push({ name: v.name, why });
       continue;
     }
+    const output = outputOf(sim, v);
     sim.getState().force(v.name, v.input);
     preparedValues.getState().discard(v.name);
-    done.push(v.name);
+    if (output) asked.push(`${v.name} (${output})`);
+    else done.push(v.name);
   }
-  return { done, kept };
+  return { done, kept, asked };
 }
 
 /** The status line after writing or forcing. */
 export function preparedMessage(verb: 'Wrote' | 'Forced', outcome: PreparedOutcome): string {
-  if (outcome.done.length === 0 && outcome.kept.length === 0)
+  const asked = outcome.asked ?? [];
+  if (outcome.done.length === 0 && outcome.kept.length === 0 && asked.length === 0)
     return `No prepared values: type one in the Watch table's "Prepared value" column, then press ${verb === 'Wrote' ? 'Ctrl+F7' : 'F7'}.`;
   const done = outcome.done.length ? `${verb} ${outcome.done.join(', ')}.` : '';
   const kept = outcome.kept.map((k) => `${k.name} not ${verb === 'Wrote' ? 'written' : 'forced'}: ${k.why}.`).join(' ');
-  return [done, kept].filter(Boolean).join(' ');
+  const ask = asked.length ? `${asked.join(', ')}: a real output, ${verb === 'Wrote' ? 'written' : 'forced'} only when you confirm it.` : '';
+  return [done, ask, kept].filter(Boolean).join(' ');
 }
