@@ -555,22 +555,22 @@ export const intersection: PlantModel<IntersectionState> = {
     let shortReds = s.shortReds;
     let lastShortYellow = s.lastShortYellow;
     let lastShortRed = s.lastShortRed;
+    /** A road's clearance just worked out (`clear`): a yellow too short is counted. */
+    const countShortYellow = (): void => {
+      if (!clearance.shortYellow) return;
+      shortYellows++;
+      lastShortYellow = clearance.shortYellow;
+    };
     clear('main', lamps, s.lamps, s.mainYellowMs, s.mainRedMs, s.mainFromGo, dtMs);
     const mainYellowMs = clearance.yellowMs;
     const mainRedMs = clearance.redMs;
     const mainFromGo = clearance.fromGo;
-    if (clearance.shortYellow) {
-      shortYellows++;
-      lastShortYellow = clearance.shortYellow;
-    }
+    countShortYellow();
     clear('side', lamps, s.lamps, s.sideYellowMs, s.sideRedMs, s.sideFromGo, dtMs);
     const sideYellowMs = clearance.yellowMs;
     const sideRedMs = clearance.redMs;
     const sideFromGo = clearance.fromGo;
-    if (clearance.shortYellow) {
-      shortYellows++;
-      lastShortYellow = clearance.shortYellow;
-    }
+    countShortYellow();
     // A green that lights: the other road, red after its own green or yellow, must have been red long enough.
     // (The other road going until this very step: its red is 0 s old.)
     for (const [road, G, other, otherGo, otherRedMs, otherFromGo] of [

@@ -34,25 +34,22 @@ afterEach(async () => {
 
 type Status = Extract<GatewayMessage, { t: 'status' }>;
 
+type Point = { address: string; hold?: boolean; count?: number };
+/** The gateway started with the pymodbus server at `modbusPort` as its device "plant", with these points. */
+async function startBeside(modbusPort: number, points: Point[], watchdogMs?: number): Promise<RunningGateway> {
+  const config = resolveConfig({
+    ...(watchdogMs !== undefined ? { watchdogMs } : {}),
+    devices: [{ id: 'plant', host: '127.0.0.1', port: modbusPort, pollMs: POLL_MS, timeoutMs: 300, points }],
+  });
+  return startGateway({ port: 0, config, distDir: null });
+}
+
 async function rig() {
   const modbusPort = await freeLoopbackPort();
   const log = join(mkdtempSync(join(tmpdir(), 'rungsmith-hold-')), 'writes.log');
   plant = await PyModbusServer.start(modbusPort, log);
-  const config = resolveConfig({
-    watchdogMs: 1000,
-    devices: [
-      {
-        id: 'plant',
-        host: '127.0.0.1',
-        port: modbusPort,
-        pollMs: POLL_MS,
-        timeoutMs: 300,
-        // %QX0.0 a motor (OFF in the safe state), %QX0.1 a valve that must not move (hold).
-        points: [{ address: '%IX0.0' }, { address: '%QX0.0' }, { address: '%QX0.1', hold: true }],
-      },
-    ],
-  });
-  gw = await startGateway({ port: 0, config, distDir: null });
+  // %QX0.0 a motor (OFF in the safe state), %QX0.1 a valve that must not move (hold).
+  gw = await startBeside(modbusPort, [{ address: '%IX0.0' }, { address: '%QX0.0' }, { address: '%QX0.1', hold: true }], 1000);
   return { modbusPort, log };
 }
 
@@ -122,22 +119,7 @@ it('a gateway started next to a held valve leaves it as the device holds it; the
   const modbusPort = await freeLoopbackPort();
   plant = await PyModbusServer.start(modbusPort);
   await plant.set('co', 0, [1, 1]); // what a previous run left
-  gw = await startGateway({
-    port: 0,
-    config: resolveConfig({
-      devices: [
-        {
-          id: 'plant',
-          host: '127.0.0.1',
-          port: modbusPort,
-          pollMs: POLL_MS,
-          timeoutMs: 300,
-          points: [{ address: '%QX0.0' }, { address: '%QX0.1', hold: true }],
-        },
-      ],
-    }),
-    distDir: null,
-  });
+  gw = await startBeside(modbusPort, [{ address: '%QX0.0' }, { address: '%QX0.1', hold: true }]);
   const o = await TestClient.hello(gw.port, gw.token, 'observer');
   clients.push(o);
   await o.waitFor((m): m is Status => m.t === 'status' && m.devices[0]?.outputs === 'safe', 10_000);
@@ -147,22 +129,7 @@ it('a gateway started next to a held valve leaves it as the device holds it; the
 it('an online change that moves the valve (hold) and the motor off their outputs: the motor output goes OFF, the held valve keeps its value, as in the safe state', async () => {
   const modbusPort = await freeLoopbackPort();
   plant = await PyModbusServer.start(modbusPort);
-  gw = await startGateway({
-    port: 0,
-    config: resolveConfig({
-      devices: [
-        {
-          id: 'plant',
-          host: '127.0.0.1',
-          port: modbusPort,
-          pollMs: POLL_MS,
-          timeoutMs: 300,
-          points: [{ address: '%QX0.0' }, { address: '%QX0.1', hold: true }, { address: '%QX0.2', count: 2 }],
-        },
-      ],
-    }),
-    distDir: null,
-  });
+  gw = await startBeside(modbusPort, [{ address: '%QX0.0' }, { address: '%QX0.1', hold: true }, { address: '%QX0.2', count: 2 }]);
   // The worker's relay and the page's transport to it, as the simulator's worker and host join them.
   const listeners = new Set<(m: WorkerMessage) => void>();
   const relay = new GatewayRelay(
@@ -254,22 +221,7 @@ it('a slow device (1.5 s per answer, timeout 300 ms) with a hold output still ge
   plant = await PyModbusServer.start(modbusPort);
   await plant.set('co', 0, [1, 1]); // what a previous run left: motor and valve ON
   await plant.mode('slow', 1500);
-  gw = await startGateway({
-    port: 0,
-    config: resolveConfig({
-      devices: [
-        {
-          id: 'plant',
-          host: '127.0.0.1',
-          port: modbusPort,
-          pollMs: POLL_MS,
-          timeoutMs: 300,
-          points: [{ address: '%QX0.0' }, { address: '%QX0.1', hold: true }],
-        },
-      ],
-    }),
-    distDir: null,
-  });
+  gw = await startBeside(modbusPort, [{ address: '%QX0.0' }, { address: '%QX0.1', hold: true }]);
   const o = await TestClient.hello(gw.port, gw.token, 'observer');
   clients.push(o);
   await o.waitFor((m): m is Status => m.t === 'status' && m.devices[0]?.outputs === 'safe', 30_000);
