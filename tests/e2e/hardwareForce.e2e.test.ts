@@ -19,6 +19,9 @@ const browser = useChromium();
 
 /** Scans the page shows, to let some pass. */
 const scan = async (page: Page) => Number(await page.getByTestId('sim-scan').textContent());
+/** How many variables the simulator holds forced. */
+const forcedCount = (page: Page) =>
+  page.evaluate(() => (window.rungsmith!.simStore as { getState(): { forced: Map<string, unknown> } }).getState().forced.size);
 async function scansPass(page: Page, n: number) {
   const from = await scan(page);
   await expect.poll(() => scan(page), { timeout: 30_000 }).toBeGreaterThan(from + n);
@@ -71,13 +74,7 @@ describe('forcing a real output asks to confirm', () => {
     await expect.poll(() => dialog.count()).toBe(0);
     await scansPass(page, 20);
     expect(await sim.value('Motor')).toBe(false);
-    expect(
-      await page.evaluate(
-        () =>
-          (window.rungsmith!.simStore as { getState(): { forced: Map<string, unknown> } }).getState().forced
-            .size,
-      ),
-    ).toBe(0);
+    expect(await forcedCount(page)).toBe(0);
     expect((await coils())[0]).toBe(0);
 
     await forceTrue();
@@ -89,15 +86,7 @@ describe('forcing a real output asks to confirm', () => {
     // PLC would) until Stop is pressed on the device.
     await page.mouse.click(coil.x, coil.y, { button: 'right' });
     await page.getByTestId('sim-context-menu').getByRole('menuitem', { name: 'Unforce' }).click();
-    await expect
-      .poll(() =>
-        page.evaluate(
-          () =>
-            (window.rungsmith!.simStore as { getState(): { forced: Map<string, unknown> } }).getState().forced
-              .size,
-        ),
-      )
-      .toBe(0);
+    await expect.poll(() => forcedCount(page)).toBe(0);
     expect((await coils())[0]).toBe(1);
     await deviceInput(1, true);
     await eventually(async () => (await coils())[0] === 0, 10_000, 'Motor OFF on the device after Stop');
@@ -133,13 +122,7 @@ describe('forcing a real output asks to confirm', () => {
 
     await scansPass(page, 20);
     expect(await sim.value('Motor')).toBe(false);
-    expect(
-      await page.evaluate(
-        () =>
-          (window.rungsmith!.simStore as { getState(): { forced: Map<string, unknown> } }).getState().forced
-            .size,
-      ),
-    ).toBe(0);
+    expect(await forcedCount(page)).toBe(0);
     for (let i = 0; i < 5; i++) expect((await coils())[0]).toBe(0);
     expect(errors).toEqual([]);
   });
